@@ -1,0 +1,30 @@
+#pragma once
+// A look-at perspective camera. GL-free: widgets edit it, the renderer consumes it.
+
+#include <glm/vec3.hpp>
+
+namespace sdfwb::renderer {
+
+struct Camera {
+    glm::vec3 position{2.6f, 1.5f, 1.9f};  // front (+X) three-quarter view from above
+    glm::vec3 target{0.0f, 0.0f, 0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};        // world up; the basis is re-orthogonalised
+    float fovYDegrees = 40.0f;             // vertical field of view
+    float nearPlane = 0.01f;               // rays start no closer than this
+    float farPlane = 100.0f;               // and end no farther
+};
+
+struct CameraBasis {
+    glm::vec3 right, up, forward;  // orthonormal, right-handed (forward = -Z in view space)
+};
+
+// Fails only when position == target or forward is parallel to up; then a fixed basis is used.
+CameraBasis cameraBasis(const Camera& camera);
+
+// Orbits `camera` about its target by yaw (around world up) and pitch (clamped short of the poles).
+void orbit(Camera& camera, float yawRadians, float pitchRadians);
+
+// Moves the camera towards (factor < 1) or away from (factor > 1) its target.
+void dolly(Camera& camera, float factor);
+
+} // namespace sdfwb::renderer

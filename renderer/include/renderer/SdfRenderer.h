@@ -1,0 +1,61 @@
+#pragma once
+// Sphere-traces an SDF into the currently bound draw framebuffer. The same object serves the
+// Qt viewport (Qt's context) and headless rendering (EGL). Every method needs the GL context that
+// was current at the first call to be current now; call releaseGl() before that context goes away.
+//
+// Programs are specialised per scene (shading mode and other features become defines) and cached,
+// so switching back to a variant is instant. A shader that fails to compile leaves the last good
+// program in place.
+
+#include <renderer/Camera.h>
+#include <renderer/RenderSettings.h>
+#include <shaders/Diagnostic.h>
+#include <shaders/SdfSource.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace sdfwb::renderer {
+
+struct FrameStats {
+    double cpuMilliseconds = 0.0;  // time spent in render(), including glFinish when asked
+};
+
+class SdfRenderer {
+public:
+    SdfRenderer();
+    ~SdfRenderer();
+    SdfRenderer(const SdfRenderer&) = delete;
+    SdfRenderer& operator=(const SdfRenderer&) = delete;
+
+    // Compiles the SDF for the current settings. On failure returns the diagnostics (resolver,
+    // compiler or linker, mapped to the user's files) and keeps drawing the last good SDF.
+    std::vector<shaders::Diagnostic> setSdf(const shaders::PreparedSdf& sdf);
+
+    // Changing settings may compile a new variant (cached). Returns its diagnostics, if any.
+    std::vector<shaders::Diagnostic> setShading(const ShadingSettings& shading);
+    void setTrace(const TraceSettings& trace) { m_trace = trace; }
+
+    const ShadingSettings& shading() const { return m_shading; }
+    const TraceSettings& trace() const { return m_trace; }
+    bool hasProgram() const;
+
+    // The composed fragment source of the current variant (for tests and the log).
+    const std::string& fragmentSource() const;
+
+    // Draws a width x height frame into the bound framebuffer. Without a good program, clears to
+    // the background. `finish` waits for the GPU so the stats measure the whole frame.
+    FrameStats render(int width, int height, const Camera& camera, float time, bool finish = false);
+
+    // Frees every GL object; the context must be current. The renderer can be used again later.
+    void releaseGl();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+    ShadingSettings m_shading;
+    TraceSettings m_trace;
+};
+
+} // namespace sdfwb::renderer

@@ -1,0 +1,40 @@
+#include <renderer/Camera.h>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sdfwb::renderer {
+
+CameraBasis cameraBasis(const Camera& camera) {
+    glm::vec3 forward = camera.target - camera.position;
+    float length = glm::length(forward);
+    forward = length > 0.0f ? forward / length : glm::vec3(0.0f, 0.0f, -1.0f);
+    glm::vec3 right = glm::cross(forward, camera.up);
+    if (glm::length(right) < 1e-6f) right = glm::cross(forward, glm::vec3(1.0f, 0.0f, 0.0f));
+    right = glm::normalize(right);
+    glm::vec3 up = glm::cross(right, forward);
+    return {right, up, forward};
+}
+
+void orbit(Camera& camera, float yawRadians, float pitchRadians) {
+    glm::vec3 offset = camera.position - camera.target;
+    float radius = glm::length(offset);
+    if (radius <= 0.0f) return;
+    float yaw = std::atan2(offset.x, offset.z) + yawRadians;
+    float pitch = std::asin(std::clamp(offset.y / radius, -1.0f, 1.0f)) + pitchRadians;
+    const float limit = glm::radians(89.0f);
+    pitch = std::clamp(pitch, -limit, limit);
+    camera.position = camera.target + radius * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
+                                                         std::cos(pitch) * std::cos(yaw));
+}
+
+void dolly(Camera& camera, float factor) {
+    glm::vec3 offset = camera.position - camera.target;
+    float radius = std::clamp(glm::length(offset) * factor, 0.05f, 1000.0f);
+    camera.position = camera.target + glm::normalize(offset) * radius;
+}
+
+} // namespace sdfwb::renderer

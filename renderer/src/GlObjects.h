@@ -1,0 +1,51 @@
+#pragma once
+// Move-only owners of GL names. Private to renderer/: other modules see plain integers at most.
+// A default-constructed object owns nothing ("not created yet"). Destroy or reset() them while
+// their context is current; release() forgets the name without a GL call (context already gone).
+
+#include <epoxy/gl.h>
+
+#include <utility>
+
+namespace sdfwb::renderer {
+
+template <void (*Delete)(GLuint)>
+class GlName {
+public:
+    GlName() = default;
+    explicit GlName(GLuint id) : m_id(id) {}
+    ~GlName() { reset(); }
+    GlName(GlName&& other) noexcept : m_id(std::exchange(other.m_id, 0)) {}
+    GlName& operator=(GlName&& other) noexcept {
+        if (this != &other) { reset(); m_id = std::exchange(other.m_id, 0); }
+        return *this;
+    }
+    GlName(const GlName&) = delete;
+    GlName& operator=(const GlName&) = delete;
+
+    GLuint id() const { return m_id; }
+    explicit operator bool() const { return m_id != 0; }
+    void reset() { if (m_id) Delete(m_id); m_id = 0; }
+    void release() { m_id = 0; }
+
+private:
+    GLuint m_id = 0;
+};
+
+void deleteProgram(GLuint id);
+void deleteShader(GLuint id);
+void deleteVertexArray(GLuint id);
+void deleteFramebuffer(GLuint id);
+void deleteRenderbuffer(GLuint id);
+void deleteTexture(GLuint id);
+void deleteBuffer(GLuint id);
+
+using GlProgram = GlName<deleteProgram>;
+using GlShader = GlName<deleteShader>;
+using GlVertexArray = GlName<deleteVertexArray>;
+using GlFramebuffer = GlName<deleteFramebuffer>;
+using GlRenderbuffer = GlName<deleteRenderbuffer>;
+using GlTexture = GlName<deleteTexture>;
+using GlBuffer = GlName<deleteBuffer>;
+
+} // namespace sdfwb::renderer

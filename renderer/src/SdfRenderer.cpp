@@ -1,0 +1,232 @@
+#include <renderer/SdfRenderer.h>
+
+#include "GlObjects.h"
+
+#include <core/Log.h>
+#include <shaders/DiagnosticParser.h>
+#include <shaders/ShaderComposer.h>
+
+#include <glm/trigonometric.hpp>
+
+#include <chrono>
+#include <map>
+#include <optional>
+#include <unordered_map>
+
+namespace sdfwb::renderer {
+namespace {
+
+using shaders::Diagnostic;
+
+const char* const kVertexStage = "tracer/fullscreen.vert";
+const char* const kFragmentStage = "tracer/trace.frag";
+constexpr std::size_t kMaxCachedVariants = 16;
+
+struct CompiledShader {
+    GlShader shader;
+    std::vector<Diagnostic> diagnostics;
+};
+
+CompiledShader compileShader(GLenum type, const shaders::ComposedShader& composed) {
+    CompiledShader result;
+    result.shader = GlShader(glCreateShader(type));
+    const char* text = composed.text.c_str();
+    glShaderSource(result.shader.id(), 1, &text, nullptr);
+    glCompileShader(result.shader.id());
+    GLint status = 0, logLength = 0;
+    glGetShaderiv(result.shader.id(), GL_COMPILE_STATUS, &status);
+    glGetShaderiv(result.shader.id(), GL_INFO_LOG_LENGTH, &logLength);
+    if (logLength > 1) {
+        std::string log(std::size_t(logLength), '\0');
+        glGetShaderInfoLog(result.shader.id(), logLength, nullptr, log.data());
+        result.diagnostics = shaders::parseInfoLog(log, composed.map);
+        if (!status && !shaders::hasErrors(result.diagnostics))
+            result.diagnostics.push_back({composed.map.fileName(0), 0, 0, shaders::Severity::Error, "driver: " + log});
+    } else if (!status) {
+        result.diagnostics.push_back({composed.map.fileName(0), 0, 0, shaders::Severity::Error,
+                                      std::string("driver rejected the ") + shaders::stageName(composed.stage) + " shader without a message"});
+    }
+    return result;
+}
+
+} // namespace
+
+struct Variant {
+    GlProgram program;
+    std::string fragmentSource;
+    std::unordered_map<std::string, GLint> uniforms;
+    std::uint64_t lastUse = 0;
+
+    GLint location(const char* name) {
+        auto it = uniforms.find(name);
+        if (it != uniforms.end()) return it->second;
+        GLint found = glGetUniformLocation(program.id(), name);
+        uniforms.emplace(name, found);
+        return found;
+    }
+};
+
+struct SdfRenderer::Impl {
+    std::optional<shaders::PreparedSdf> sdf;  // the last SDF that compiled
+    std::map<std::string, Variant> cache;     // by composed fragment text
+    Variant* current = nullptr;
+    GlVertexArray vertexArray;
+    std::uint64_t clock = 0;
+    std::string empty;
+
+    shaders::FeatureDefines features(const ShadingSettings& shading) const {
+        shaders::FeatureDefines defines;
+        switch (shading.mode) {
+        case ShadingMode::Normals: defines["SDFWB_SHADING_NORMALS"] = "1"; break;
+        }
+        return defines;
+    }
+
+    // Builds (or finds) the program for `sdf` with `defines`. Null on failure, with diagnostics.
+    Variant* build(const shaders::PreparedSdf& prepared, const shaders::FeatureDefines& defines, std::vector<Diagnostic>& diagnostics) {
+        auto fragment = shaders::composeSdfShader(prepared, shaders::Stage::Fragment, kFragmentStage, defines);
+        if (!fragment) {
+            diagnostics.push_back({"<sdfwb>", 0, 0, shaders::Severity::Error, fragment.error().message});
+            return nullptr;
+        }
+        if (auto it = cache.find(fragment->text); it != cache.end()) {
+            it->second.lastUse = ++clock;
+            return &it->second;
+        }
+        auto vertex = shaders::composeBuiltinShader(shaders::Stage::Vertex, kVertexStage, {});
+        if (!vertex) {
+            diagnostics.push_back({"<sdfwb>", 0, 0, shaders::Severity::Error, vertex.error().message});
+            return nullptr;
+        }
+        auto start = std::chrono::steady_clock::now();
+        CompiledShader vs = compileShader(GL_VERTEX_SHADER, *vertex);
+        CompiledShader fs = compileShader(GL_FRAGMENT_SHADER, *fragment);
+        diagnostics.insert(diagnostics.end(), vs.diagnostics.begin(), vs.diagnostics.end());
+        diagnostics.insert(diagnostics.end(), fs.diagnostics.begin(), fs.diagnostics.end());
+        if (shaders::hasErrors(diagnostics)) return nullptr;
+
+        GlProgram program(glCreateProgram());
+        glAttachShader(program.id(), vs.shader.id());
+        glAttachShader(program.id(), fs.shader.id());
+        glLinkProgram(program.id());
+        GLint linked = 0;
+        glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
+        if (!linked) {
+            GLint logLength = 0;
+            glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &logLength);
+            std::string log(std::size_t(std::max(logLength, 1)), '\0');
+            glGetProgramInfoLog(program.id(), logLength, nullptr, log.data());
+            auto linkDiagnostics = shaders::parseInfoLog(log, fragment->map);
+            if (!shaders::hasErrors(linkDiagnostics))
+                linkDiagnostics.push_back({fragment->map.fileName(0), 0, 0, shaders::Severity::Error, "link failed: " + log});
+            diagnostics.insert(diagnostics.end(), linkDiagnostics.begin(), linkDiagnostics.end());
+            return nullptr;
+        }
+        double milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        log::info("shaders", "compiled " + prepared.source.map.fileName(0) + " (" + std::to_string(defines.size()) +
+                                 " feature defines) in " + std::to_string(int(milliseconds)) + " ms");
+
+        evictIfFull();
+        Variant& variant = cache[fragment->text];
+        variant.program = std::move(program);
+        variant.fragmentSource = fragment->text;
+        variant.lastUse = ++clock;
+        return &variant;
+    }
+
+    void evictIfFull() {
+        while (cache.size() >= kMaxCachedVariants) {
+            auto oldest = cache.end();
+            for (auto it = cache.begin(); it != cache.end(); ++it)
+                if (&it->second != current && (oldest == cache.end() || it->second.lastUse < oldest->second.lastUse)) oldest = it;
+            if (oldest == cache.end()) return;
+            cache.erase(oldest);
+        }
+    }
+};
+
+SdfRenderer::SdfRenderer() : m_impl(std::make_unique<Impl>()) {}
+
+SdfRenderer::~SdfRenderer() {
+    // GL names cannot be freed without the context; the owner calls releaseGl() first.
+    for (auto& [text, variant] : m_impl->cache) variant.program.release();
+    m_impl->vertexArray.release();
+}
+
+std::vector<Diagnostic> SdfRenderer::setSdf(const shaders::PreparedSdf& sdf) {
+    std::vector<Diagnostic> diagnostics = sdf.diagnostics;
+    if (shaders::hasErrors(diagnostics)) return diagnostics;
+    Variant* variant = m_impl->build(sdf, m_impl->features(m_shading), diagnostics);
+    if (!variant) return diagnostics;
+    m_impl->sdf = sdf;
+    m_impl->current = variant;
+    return diagnostics;
+}
+
+std::vector<Diagnostic> SdfRenderer::setShading(const ShadingSettings& shading) {
+    m_shading = shading;
+    std::vector<Diagnostic> diagnostics;
+    if (!m_impl->sdf) return diagnostics;
+    if (Variant* variant = m_impl->build(*m_impl->sdf, m_impl->features(m_shading), diagnostics)) m_impl->current = variant;
+    return diagnostics;
+}
+
+bool SdfRenderer::hasProgram() const { return m_impl->current != nullptr; }
+
+const std::string& SdfRenderer::fragmentSource() const {
+    return m_impl->current ? m_impl->current->fragmentSource : m_impl->empty;
+}
+
+FrameStats SdfRenderer::render(int width, int height, const Camera& camera, float time, bool finish) {
+    auto start = std::chrono::steady_clock::now();
+    glViewport(0, 0, width, height);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glClearColor(m_shading.background.r, m_shading.background.g, m_shading.background.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    if (!m_impl->current && m_impl->sdf) {
+        // After releaseGl() (a new context): rebuild the last good variant.
+        std::vector<Diagnostic> ignored;
+        m_impl->current = m_impl->build(*m_impl->sdf, m_impl->features(m_shading), ignored);
+    }
+    if (Variant* v = m_impl->current) {
+        if (!m_impl->vertexArray) {
+            GLuint id = 0;
+            glGenVertexArrays(1, &id);
+            m_impl->vertexArray = GlVertexArray(id);
+        }
+        CameraBasis basis = cameraBasis(camera);
+        glUseProgram(v->program.id());
+        glUniform2f(v->location("u_resolution"), float(width), float(height));
+        glUniform3f(v->location("u_cameraPosition"), camera.position.x, camera.position.y, camera.position.z);
+        glUniform3f(v->location("u_cameraRight"), basis.right.x, basis.right.y, basis.right.z);
+        glUniform3f(v->location("u_cameraUp"), basis.up.x, basis.up.y, basis.up.z);
+        glUniform3f(v->location("u_cameraForward"), basis.forward.x, basis.forward.y, basis.forward.z);
+        glUniform1f(v->location("u_tanHalfFovY"), std::tan(glm::radians(camera.fovYDegrees) * 0.5f));
+        glUniform1f(v->location("u_nearPlane"), camera.nearPlane);
+        glUniform1f(v->location("u_farPlane"), camera.farPlane);
+        glUniform1i(v->location("u_maxSteps"), m_trace.maxSteps);
+        glUniform1f(v->location("u_stepFactor"), m_trace.stepFactor);
+        glUniform1f(v->location("u_epsilonScale"), m_trace.epsilonScale);
+        glUniform1f(v->location("u_boxMargin"), m_trace.boxMargin);
+        glUniform3f(v->location("u_background"), m_shading.background.r, m_shading.background.g, m_shading.background.b);
+        if (GLint location = v->location("u_time"); location >= 0) glUniform1f(location, time);
+        if (GLint location = v->location("g3d_SceneTime"); location >= 0) glUniform1f(location, time);
+        glBindVertexArray(m_impl->vertexArray.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindVertexArray(0);
+        glUseProgram(0);
+    }
+    if (finish) glFinish();
+    FrameStats stats;
+    stats.cpuMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+}
+
+void SdfRenderer::releaseGl() {
+    m_impl->current = nullptr;
+    m_impl->cache.clear();
+    m_impl->vertexArray.reset();
+}
+
+} // namespace sdfwb::renderer

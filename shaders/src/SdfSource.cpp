@@ -1,0 +1,112 @@
+#include <shaders/SdfSource.h>
+
+#include <core/TextFile.h>
+
+#include <algorithm>
+#include <regex>
+
+namespace sdfwb::shaders {
+
+std::string stripComments(const std::string& text) {
+    std::string out = text;
+    enum class State { Code, Line, Block } state = State::Code;
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        char c = out[i];
+        char next = i + 1 < out.size() ? out[i + 1] : '\0';
+        switch (state) {
+        case State::Code:
+            if (c == '/' && next == '/') { state = State::Line; out[i] = ' '; }
+            else if (c == '/' && next == '*') { state = State::Block; out[i] = ' '; out[++i] = ' '; }
+            break;
+        case State::Line:
+            if (c == '\n') state = State::Code;
+            else out[i] = ' ';
+            break;
+        case State::Block:
+            if (c == '*' && next == '/') { out[i] = ' '; out[++i] = ' '; state = State::Code; }
+            else if (c != '\n') out[i] = ' ';
+            break;
+        }
+    }
+    return out;
+}
+
+SdfSignature detectSignature(const std::string& stripped) {
+    // A definition (with a body), not a prototype. vec3 synonyms of the G3D dialect count.
+    static const std::regex definition(
+        R"(\bfloat\s+sdf\s*\(\s*((?:in\s+|const\s+|highp\s+|mediump\s+)*)(vec3|Point3|Vector3|float3)\s+\w+\s*)"
+        R"((,\s*((?:in\s+|const\s+|highp\s+)*)float\s+\w+\s*)?\)\s*\{)");
+    SdfSignature signature;
+    for (auto it = std::sregex_iterator(stripped.begin(), stripped.end(), definition); it != std::sregex_iterator(); ++it) {
+        signature.found = true;
+        if ((*it)[3].matched) signature.animated = true;
+    }
+    return signature;
+}
+
+bool CompatNeeds::usesSceneTime() const {
+    return std::find(symbols.begin(), symbols.end(), "g3d_SceneTime") != symbols.end();
+}
+
+CompatNeeds detectCompatNeeds(const std::string& stripped) {
+    static const char* const candidates[] = {
+        "pi", "saturate", "lerp", "square", "frac", "lengthSquared", "Point3", "Vector3", "Color3",
+        "Radiance3", "float2", "float3", "float4", "g3d_SceneTime", "g3d_uniformRandom"};
+    CompatNeeds needs;
+    for (const char* symbol : candidates) {
+        const std::string name(symbol);
+        if (!std::regex_search(stripped, std::regex("\\b" + name + "\\b"))) continue;
+        // Declared by the file itself: a macro, a variable, a function or a struct of that name.
+        const std::regex declared("(#\\s*define\\s+" + name + "\\b)|(\\b(const\\s+)?(float|int|vec[234]|bool|struct|uniform\\s+\\w+)\\s+" + name +
+                                  "\\s*[=;(\\[{])");
+        if (std::regex_search(stripped, declared)) continue;
+        needs.symbols.push_back(name);
+    }
+    return needs;
+}
+
+namespace {
+
+// Points at a function named sdf whose parameters are wrong, if any, else at line 1.
+Diagnostic missingSdfDiagnostic(const ResolvedSource& source) {
+    const std::string& root = source.map.files.front().text;
+    std::string stripped = stripComments(root);
+    static const std::regex anySdf(R"(\b\w+\s+sdf\s*\([^)]*\))");
+    std::smatch match;
+    if (std::regex_search(stripped, match, anySdf)) {
+        int line = 1 + int(std::count(stripped.begin(), stripped.begin() + match.position(0), '\n'));
+        std::size_t lineStart = stripped.rfind('\n', std::size_t(match.position(0)));
+        int column = int(std::size_t(match.position(0)) - (lineStart == std::string::npos ? 0 : lineStart + 1)) + 1;
+        return {source.map.files.front().name, line, column, Severity::Error,
+                "sdf() must be declared as `float sdf(vec3 p)` or `float sdf(vec3 p, float time)`; found `" + match.str(0) + "`"};
+    }
+    return {source.map.files.front().name, 1, 1, Severity::Error,
+            "no SDF here: define `float sdf(vec3 p)` or `float sdf(vec3 p, float time)`"};
+}
+
+} // namespace
+
+PreparedSdf prepareSdf(const std::string& text, const std::string& name, const std::filesystem::path& path,
+                       const IncludeOptions& options) {
+    PreparedSdf prepared;
+    prepared.source = resolveIncludes(text, name, path, options);
+    prepared.diagnostics = prepared.source.diagnostics;
+    std::string stripped = stripComments(prepared.source.text);
+    prepared.signature = detectSignature(stripped);
+    prepared.compat = detectCompatNeeds(stripped);
+    if (!prepared.signature.found) prepared.diagnostics.push_back(missingSdfDiagnostic(prepared.source));
+    return prepared;
+}
+
+PreparedSdf prepareSdfFile(const std::filesystem::path& path, const IncludeOptions& options) {
+    auto text = readTextFile(path);
+    if (!text) {
+        PreparedSdf failed;
+        failed.source.map.files.push_back({path.string(), ""});
+        failed.diagnostics.push_back({path.string(), 0, 0, Severity::Error, text.error().message});
+        return failed;
+    }
+    return prepareSdf(*text, path.string(), path, options);
+}
+
+} // namespace sdfwb::shaders

@@ -1,0 +1,80 @@
+#include <shaders/ShaderComposer.h>
+
+#include <shaders/BuiltinShaders.h>
+
+namespace sdfwb::shaders {
+namespace {
+
+const char* const kVersionLine = "#version 430 core\n";
+
+std::string lineDirective(int line, std::size_t fileIndex) {
+    return "#line " + std::to_string(line) + " " + std::to_string(fileIndex) + "\n";
+}
+
+// Adds `text` as a new source file and appends it to the composed text.
+void appendFile(ComposedShader& shader, const std::string& name, const std::string& text) {
+    std::size_t index = shader.map.files.size();
+    shader.map.files.push_back({name, text});
+    shader.text += lineDirective(1, index);
+    shader.text += text;
+    if (!text.empty() && text.back() != '\n') shader.text += '\n';
+}
+
+void appendDefines(ComposedShader& shader, const FeatureDefines& features) {
+    std::size_t index = shader.map.files.size();
+    std::string defines;
+    for (const auto& [name, value] : features) defines += "#define " + name + (value.empty() ? "" : " " + value) + "\n";
+    shader.map.files.push_back({"<sdfwb feature defines>", defines});
+    shader.text += lineDirective(1, index);
+    shader.text += defines;
+}
+
+} // namespace
+
+const char* stageName(Stage stage) {
+    switch (stage) {
+    case Stage::Vertex: return "vertex";
+    case Stage::Fragment: return "fragment";
+    case Stage::Compute: return "compute";
+    }
+    return "?";
+}
+
+Expected<ComposedShader> composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::string& stageFile,
+                                          const FeatureDefines& features) {
+    auto stageText = builtinShader(stageFile);
+    if (!stageText) return stageText.error();
+
+    FeatureDefines all = features;
+    if (sdf.signature.animated) all["SDFWB_ANIMATED"] = "1";
+    if (sdf.usesTime()) all["SDFWB_USES_TIME"] = "1";
+    for (const std::string& symbol : sdf.compat.symbols) all["SDFWB_COMPAT_" + symbol] = "1";
+
+    ComposedShader shader;
+    shader.stage = stage;
+    // The resolved SDF text numbers its files from 0 with #line directives; keep those indices.
+    shader.map = sdf.source.map;
+    shader.text = kVersionLine;
+    appendDefines(shader, all);
+    if (sdf.compat.any()) {
+        auto compat = builtinShader("prelude/g3d_compat.glsl");
+        if (!compat) return compat.error();
+        appendFile(shader, "sdfwb:prelude/g3d_compat.glsl", *compat);
+    }
+    shader.text += sdf.source.text;
+    appendFile(shader, "sdfwb:" + stageFile, *stageText);
+    return shader;
+}
+
+Expected<ComposedShader> composeBuiltinShader(Stage stage, const std::string& stageFile, const FeatureDefines& features) {
+    auto stageText = builtinShader(stageFile);
+    if (!stageText) return stageText.error();
+    ComposedShader shader;
+    shader.stage = stage;
+    shader.text = kVersionLine;
+    appendDefines(shader, features);
+    appendFile(shader, "sdfwb:" + stageFile, *stageText);
+    return shader;
+}
+
+} // namespace sdfwb::shaders
