@@ -33,9 +33,8 @@ std::vector<Diagnostic> checkWithGlslang(const ComposedShader& composed) {
     glslang::TShader shader(language);
     const char* text = composed.text.c_str();
     shader.setStrings(&text, 1);
-    shader.setEnvInput(glslang::EShSourceGlsl, language, glslang::EShClientOpenGL, 100);
-    shader.setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
-    shader.setEnvTarget(glslang::EShTargetNone, glslang::EShTargetSpv_1_0);
+    // No client/target environment: plain desktop GLSL rules, as a GL driver applies them
+    // (an OpenGL/SPIR-V environment would demand explicit uniform locations).
     // Cascading errors: report every error, not just the first.
     auto messages = static_cast<EShMessages>(EShMsgDefault | EShMsgCascadingErrors);
     bool parsed = shader.parse(GetDefaultResources(), 430, ECoreProfile, false, false, messages);

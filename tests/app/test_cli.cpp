@@ -1,1 +1,125 @@
+// The command line as a user meets it: bad input gives one clear line, a non-zero exit and no file.
+// These runs fail before any GL work, so they need no GL context.
+
 #include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <sys/wait.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+    int exitCode = -1;
+    std::string output;  // stdout and stderr
+};
+
+Result run(const std::string& arguments) {
+    std::string command = "env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM " + std::string(SDFWB_BINARY) + " " + arguments + " 2>&1";
+    Result result;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return result;
+    std::array<char, 4096> buffer;
+    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) result.output.append(buffer.data(), n);
+    int status = pclose(pipe);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+std::string corpus(const std::string& name) { return (fs::path(SDFWB_SOURCE_DIR) / "tests" / "shaders" / "files" / name).string(); }
+
+fs::path outputPath(const std::string& name) {
+    fs::path path = fs::temp_directory_path() / ("sdfwb-cli-" + name);
+    fs::remove(path);
+    return path;
+}
+
+int lineCount(const std::string& text) {
+    int lines = 0;
+    for (char c : text) lines += c == '\n';
+    return lines;
+}
+
+} // namespace
+
+TEST(CommandLine, MissingSdfFileNamesIt) {
+    fs::path out = outputPath("missing.png");
+    Result r = run("--batch render --sdf /nonexistent/shape.glsl --output " + out.string());
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("/nonexistent/shape.glsl"), std::string::npos) << r.output;
+    EXPECT_EQ(lineCount(r.output), 1) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(CommandLine, FileWithoutSdfNamesFileAndLine) {
+    fs::path out = outputPath("nosdf.png");
+    Result r = run("--batch render --sdf " + corpus("no_sdf.glsl") + " --output " + out.string());
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find(corpus("no_sdf.glsl") + ":1:1: error:"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(CommandLine, UnknownOptionIsNamed) {
+    fs::path out = outputPath("unknown.png");
+    Result r = run("--batch render --sdf sphere --output " + out.string() + " --frobnicate 3");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("--frobnicate"), std::string::npos) << r.output;
+    EXPECT_EQ(lineCount(r.output), 1) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(CommandLine, MalformedSizeIsNamed) {
+    fs::path out = outputPath("size.png");
+    for (const char* size : {"640by360", "0x10", "640x", "99999x2", "-3x4"}) {
+        Result r = run(std::string("--batch render --sdf sphere --output ") + out.string() + " --size " + size);
+        EXPECT_EQ(r.exitCode, 2) << size << ": " << r.output;
+        EXPECT_NE(r.output.find("--size"), std::string::npos) << r.output;
+        EXPECT_EQ(lineCount(r.output), 1) << r.output;
+    }
+    EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(CommandLine, UnsupportedImageTypeAndMissingFolder) {
+    Result r = run("--batch render --sdf sphere --output /tmp/sdfwb-cli-image.xyz");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find(".xyz"), std::string::npos) << r.output;
+    r = run("--batch render --sdf sphere --output /nonexistent-folder/out.png");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("/nonexistent-folder"), std::string::npos) << r.output;
+}
+
+TEST(CommandLine, UnknownBatchCommandAndTopLevelOption) {
+    Result r = run("--batch paint");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("'paint'"), std::string::npos) << r.output;
+    r = run("--turbo");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("'--turbo'"), std::string::npos) << r.output;
+}
+
+TEST(CommandLine, HelpListsWhatTheCodeAccepts) {
+    Result r = run("--help");
+    EXPECT_EQ(r.exitCode, 0);
+    for (const char* word : {"--batch", "render", "list", "exit codes"}) EXPECT_NE(r.output.find(word), std::string::npos) << word;
+    r = run("--batch render --help");
+    EXPECT_EQ(r.exitCode, 0);
+    for (const char* option : {"--sdf", "--output", "--size", "--time", "--shading", "--camera", "--fov", "--quiet", "--json"})
+        EXPECT_NE(r.output.find(option), std::string::npos) << option;
+}
+
+TEST(CommandLine, WorkbenchWithoutDisplaySaysSo) {
+    Result r = run("");
+    EXPECT_EQ(r.exitCode, 3) << r.output;
+    EXPECT_NE(r.output.find("DISPLAY"), std::string::npos) << r.output;
+}
+
+TEST(CommandLine, ListFindsTheDataset) {
+    Result r = run("--batch list --json");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("\"name\": \"Torus\""), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("\"declared_type\""), std::string::npos) << r.output;
+}

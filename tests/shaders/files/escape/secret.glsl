@@ -1,0 +1,1 @@
+float secret() { return 42.0; }

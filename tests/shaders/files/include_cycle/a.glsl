@@ -1,0 +1,2 @@
+#include "b.glsl"
+float sdf(vec3 p) { return length(p) - 0.5; }

@@ -1,0 +1,5 @@
+// helper.glsl
+
+float helperDistance(vec3 p) {
+    return length(p) - undefinedRadius;
+}

@@ -1,0 +1,4 @@
+float sdf(vec3 p) {
+    float r = 0.5;
+    return length(p) - radius;
+}
