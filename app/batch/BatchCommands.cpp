@@ -9,11 +9,18 @@
 #include <renderer/SdfRenderer.h>
 #include <shaders/SdfSource.h>
 
+#include <renderer/SampleCompute.h>
+#include <sampling/Sampler.h>
+#include <sampling/SamplerLibrary.h>
+
 #include <nlohmann/json.hpp>
 
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <iostream>
+#include <unistd.h>
 
 namespace sdfwb::app {
 namespace fs = std::filesystem;
@@ -31,6 +38,65 @@ shaders::IncludeOptions includeOptions() {
 void printDiagnostics(const std::vector<shaders::Diagnostic>& diagnostics) {
     for (const shaders::Diagnostic& d : diagnostics) std::fprintf(stderr, "%s\n", shaders::formatDiagnostic(d).c_str());
 }
+
+// A one-line progress bar on a terminal's stderr, redrawn at most 10 times a second.
+class ProgressBar {
+public:
+    explicit ProgressBar(bool enabled) : m_enabled(enabled && ::isatty(STDERR_FILENO)) {}
+    ~ProgressBar() { finish(); }
+
+    void update(std::uint64_t done, std::uint64_t total) {
+        if (!m_enabled || total == 0) return;
+        auto now = std::chrono::steady_clock::now();
+        if (done < total && now - m_lastDraw < std::chrono::milliseconds(100)) return;
+        m_lastDraw = now;
+        double seconds = std::chrono::duration<double>(now - m_start).count();
+        double fraction = double(done) / double(total);
+        int filled = int(fraction * 30.0);
+        std::string bar(std::size_t(filled), '#');
+        bar.append(std::size_t(30 - filled), ' ');
+        double rate = seconds > 0.0 ? double(done) / seconds : 0.0;
+        std::fprintf(stderr, "\r%5.1f%% [%s] %llu/%llu  %.2f M samples/s ", 100.0 * fraction, bar.c_str(), (unsigned long long)done,
+                     (unsigned long long)total, rate / 1e6);
+        m_drawn = true;
+    }
+
+    void finish() {
+        if (m_drawn) std::fprintf(stderr, "\n");
+        m_drawn = false;
+    }
+
+private:
+    bool m_enabled;
+    bool m_drawn = false;
+    std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
+    std::chrono::steady_clock::time_point m_lastDraw{};
+};
+
+// Ctrl-C cancels the running job cleanly (the writer removes its temporary file).
+std::atomic<CancelToken*> g_interruptToken{nullptr};
+
+extern "C" void onInterrupt(int) {
+    if (CancelToken* token = g_interruptToken.load()) token->cancel();
+}
+
+class InterruptScope {
+public:
+    explicit InterruptScope(CancelToken& token) {
+        g_interruptToken.store(&token);
+        m_previousInt = std::signal(SIGINT, onInterrupt);
+        m_previousTerm = std::signal(SIGTERM, onInterrupt);
+    }
+    ~InterruptScope() {
+        std::signal(SIGINT, m_previousInt);
+        std::signal(SIGTERM, m_previousTerm);
+        g_interruptToken.store(nullptr);
+    }
+
+private:
+    void (*m_previousInt)(int);
+    void (*m_previousTerm)(int);
+};
 
 } // namespace
 
@@ -110,6 +176,123 @@ int runList(const OutputOptions& output) {
         if (!output.quiet) std::printf("%zu SDFs in %s\n", catalogue.entries().size(), paths::datasetRoot().string().c_str());
     }
     return catalogue.entries().empty() ? kExitFailure : kExitOk;
+}
+
+} // namespace sdfwb::app
+
+namespace sdfwb::app {
+
+int runSample(const SampleCommand& command, const OutputOptions& output) {
+    dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
+    auto sdfPath = dataset::resolveSdfArgument(command.sdf, catalogue);
+    if (!sdfPath) { printError("--sdf: " + sdfPath.error().message); return kExitUsage; }
+    auto sampler = sampling::findSampler(command.pattern, sampling::samplerFolders());
+    if (!sampler) { printError("--pattern: " + sampler.error().message); return kExitUsage; }
+    std::optional<sampling::SampleFormat> format =
+        command.format.empty() ? sampling::formatFromPath(command.output) : sampling::parseFormat(command.format);
+    if (!format) {
+        if (command.format.empty())
+            printError("--output: '" + command.output + "': unknown sample file type (use .bin, .npz or .ply, or --format)");
+        else
+            printError("--format: unknown format '" + command.format + "' (bin, npz, ply)");
+        return kExitUsage;
+    }
+    sampling::SamplingJob job;
+    job.count = command.count;
+    job.seed = command.seed;
+    job.time = command.time;
+    job.shardIndex = command.shardIndex;
+    job.shardCount = command.shardCount;
+    job.chunkSize = command.chunkSize;
+    job.gradientStep = command.gradientStep;
+    if (auto ok = sampling::validate(job); !ok) { printError(ok.error().message); return kExitUsage; }
+    if (job.rows() > sampling::maxRows(*format)) {
+        printError("-n: " + std::to_string(job.rows()) + " rows exceed the ." + sampling::formatName(*format) + " limit of " +
+                   std::to_string(sampling::maxRows(*format)));
+        return kExitUsage;
+    }
+    std::error_code ec;
+    std::filesystem::path outputPath(command.output);
+    std::filesystem::path folder = outputPath.parent_path().empty() ? std::filesystem::path(".") : outputPath.parent_path();
+    if (!std::filesystem::is_directory(folder, ec)) {
+        printError("--output: '" + command.output + "': folder '" + folder.string() + "' does not exist");
+        return kExitUsage;
+    }
+
+    shaders::PreparedSdf sdf = shaders::prepareSdfFile(*sdfPath, includeOptions());
+    if (!sdf.ok()) {
+        printDiagnostics(sdf.diagnostics);
+        printError("sample: " + sdfPath->string() + " has errors; nothing written");
+        return kExitFailure;
+    }
+    auto context = renderer::HeadlessContext::create();
+    if (!context) { printError(context.error().message); return kExitNoGl; }
+    renderer::SampleCompute compute;
+    auto diagnostics = compute.build(sdf, *sampler);
+    if (shaders::hasErrors(diagnostics)) {
+        printDiagnostics(diagnostics);
+        printError("sample: " + sdfPath->string() + " with pattern '" + command.pattern + "' does not compile; nothing written");
+        return kExitFailure;
+    }
+
+    sampling::SampleMetadata metadata;
+    metadata.sdf = command.sdf;
+    metadata.pattern = command.pattern;
+    metadata.version = SDFWB_VERSION;
+    CancelToken cancel;
+    ProgressBar bar(!output.quiet && !output.json);
+    ProgressSink progress{[&](std::uint64_t done, std::uint64_t total) { bar.update(done, total); }, &cancel};
+    Expected<sampling::SamplingReport> report = [&] {
+        InterruptScope interrupts(cancel);
+        return sampling::sampleToFile(compute, job, outputPath, *format, metadata, progress);
+    }();
+    bar.finish();
+    compute.releaseGl();
+    if (!report) { printError(report.error().message); return kExitFailure; }
+    if (report->cancelled) {
+        printError("sample: cancelled after " + std::to_string(report->rows) + " of " + std::to_string(job.rows()) + " samples; nothing written");
+        return kExitCancelled;
+    }
+    double rate = report->seconds > 0.0 ? double(report->rows) / report->seconds : 0.0;
+    if (output.json) {
+        nlohmann::json json = {{"output", outputPath.string()}, {"format", sampling::formatName(*format)}, {"sdf", command.sdf},
+                               {"pattern", command.pattern}, {"n", job.count}, {"rows", report->rows},
+                               {"first_index", report->firstIndex}, {"seed", job.seed}, {"time", job.time},
+                               {"bad_rows", report->badRows}, {"seconds", report->seconds}, {"samples_per_second", rate},
+                               {"gl_renderer", context.value()->info().renderer}};
+        std::cout << json.dump(2) << "\n";
+    } else if (!output.quiet) {
+        std::printf("wrote %s: %llu samples (%s, seed %llu, rows %llu..%llu of %llu), %llu bad rows, %.2f s (%.2f M samples/s)\n",
+                    outputPath.string().c_str(), (unsigned long long)report->rows, command.pattern.c_str(), (unsigned long long)job.seed,
+                    (unsigned long long)report->firstIndex, (unsigned long long)(report->firstIndex + report->rows),
+                    (unsigned long long)job.count, (unsigned long long)report->badRows, report->seconds, rate / 1e6);
+    }
+    if (report->badRows > 0 && !output.quiet && !output.json)
+        std::fprintf(stderr, "sdfwb: note: %llu rows are NaN/Inf (rays that missed for surface/near, or a field that is not finite)\n",
+                     (unsigned long long)report->badRows);
+    return kExitOk;
+}
+
+int runMerge(const std::string& outputFile, const std::string& formatName, const std::vector<std::string>& parts, const OutputOptions& output) {
+    std::optional<sampling::SampleFormat> format =
+        formatName.empty() ? sampling::formatFromPath(outputFile) : sampling::parseFormat(formatName);
+    if (!format) {
+        printError(formatName.empty() ? "--output: '" + outputFile + "': unknown sample file type (use .bin, .npz or .ply, or --format)"
+                                      : "--format: unknown format '" + formatName + "' (bin, npz, ply)");
+        return kExitUsage;
+    }
+    std::vector<std::filesystem::path> paths(parts.begin(), parts.end());
+    auto start = std::chrono::steady_clock::now();
+    auto report = sampling::mergeSampleFiles(outputFile, *format, paths);
+    if (!report) { printError(report.error().message); return kExitFailure; }
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (output.json) {
+        nlohmann::json json = {{"output", outputFile}, {"rows", report->rows}, {"parts", report->parts}, {"seconds", seconds}};
+        std::cout << json.dump(2) << "\n";
+    } else if (!output.quiet) {
+        std::printf("wrote %s: %llu samples from %zu parts in %.2f s\n", outputFile.c_str(), (unsigned long long)report->rows, report->parts, seconds);
+    }
+    return kExitOk;
 }
 
 } // namespace sdfwb::app

@@ -5,7 +5,9 @@
 #include <renderer/Camera.h>
 #include <renderer/RenderSettings.h>
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace sdfwb::app {
 
@@ -14,6 +16,7 @@ enum ExitCode : int {
     kExitFailure = 1,       // the work failed: the SDF does not compile, a file cannot be written
     kExitUsage = 2,         // bad arguments: unknown option, malformed value, missing file
     kExitNoGl = 3,          // no OpenGL 4.3 context could be created
+    kExitCancelled = 130,   // interrupted (Ctrl-C); no partial output was left
 };
 
 struct OutputOptions {
@@ -33,6 +36,23 @@ struct RenderJob {
 };
 
 int runRender(const RenderJob& job, const OutputOptions& output);
+
+struct SampleCommand {
+    std::string sdf;           // dataset name or path
+    std::string pattern;       // built-in name or sampler path
+    std::uint64_t count = 0;
+    std::string output;
+    std::string format;        // empty: from the output's extension
+    std::uint64_t seed = 0;
+    float time = 0.0f;
+    std::uint32_t shardIndex = 0;
+    std::uint32_t shardCount = 1;
+    std::uint32_t chunkSize = 1u << 18;
+    float gradientStep = 1e-3f;
+};
+
+int runSample(const SampleCommand& command, const OutputOptions& output);
+int runMerge(const std::string& outputFile, const std::string& format, const std::vector<std::string>& parts, const OutputOptions& output);
 int runList(const OutputOptions& output);
 
 // Prints "sdfwb: <message>" to stderr.

@@ -40,11 +40,14 @@ const char* stageName(Stage stage) {
     return "?";
 }
 
-Expected<ComposedShader> composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::string& stageFile,
-                                          const FeatureDefines& features) {
-    auto stageText = builtinShader(stageFile);
-    if (!stageText) return stageText.error();
+Expected<ShaderPiece> builtinPiece(const std::string& relativePath) {
+    auto text = builtinShader(relativePath);
+    if (!text) return text.error();
+    return ShaderPiece{"sdfwb:" + relativePath, std::move(*text)};
+}
 
+ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::vector<ShaderPiece>& pieces,
+                                const FeatureDefines& features) {
     FeatureDefines all = features;
     if (sdf.signature.animated) all["SDFWB_ANIMATED"] = "1";
     if (sdf.usesTime()) all["SDFWB_USES_TIME"] = "1";
@@ -58,12 +61,19 @@ Expected<ComposedShader> composeSdfShader(const PreparedSdf& sdf, Stage stage, c
     appendDefines(shader, all);
     if (sdf.compat.any()) {
         auto compat = builtinShader("prelude/g3d_compat.glsl");
-        if (!compat) return compat.error();
-        appendFile(shader, "sdfwb:prelude/g3d_compat.glsl", *compat);
+        // Embedded at build time, so it cannot be missing unless the build is broken.
+        appendFile(shader, "sdfwb:prelude/g3d_compat.glsl", compat ? *compat : std::string("#error g3d_compat.glsl missing\n"));
     }
     shader.text += sdf.source.text;
-    appendFile(shader, "sdfwb:" + stageFile, *stageText);
+    for (const ShaderPiece& piece : pieces) appendFile(shader, piece.name, piece.text);
     return shader;
+}
+
+Expected<ComposedShader> composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::string& stageFile,
+                                          const FeatureDefines& features) {
+    auto piece = builtinPiece(stageFile);
+    if (!piece) return piece.error();
+    return composeSdfShader(sdf, stage, std::vector<ShaderPiece>{std::move(*piece)}, features);
 }
 
 Expected<ComposedShader> composeBuiltinShader(Stage stage, const std::string& stageFile, const FeatureDefines& features) {

@@ -11,6 +11,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace sdfwb::shaders {
 
@@ -24,6 +25,20 @@ struct ComposedShader {
     std::string text;
     SourceMap map;  // source-string number -> file, for diagnostics
 };
+
+// A piece of GLSL composed after the SDF: a helper file, a sampler, the stage's main().
+struct ShaderPiece {
+    std::string name;  // shown in diagnostics ("sdfwb:samplers/rand.glsl", or a user's path)
+    std::string text;
+};
+
+// Composes the SDF followed by `pieces` in order. Adds SDFWB_ANIMATED when the SDF takes time,
+// SDFWB_USES_TIME when it needs a time value, and SDFWB_COMPAT_<SYMBOL> for each compat symbol.
+ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::vector<ShaderPiece>& pieces,
+                                const FeatureDefines& features);
+
+// Loads a built-in file as a piece named "sdfwb:<path>".
+Expected<ShaderPiece> builtinPiece(const std::string& relativePath);
 
 // Composes the SDF with a stage file (path relative to shaders/). Adds SDFWB_ANIMATED when the SDF
 // takes time and SDFWB_COMPAT_<SYMBOL> for each compat symbol it uses.

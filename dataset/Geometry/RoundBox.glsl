@@ -1,0 +1,21 @@
+/* sdfwb
+name: Round Box
+category: Geometry
+type: exact
+animated: no
+author: sdfwb authors
+license: CC0-1.0
+notes: Box with rounded edges and corners, half extents (0.85, 0.55, 0.65), rounding radius 0.15.
+  Built as the exact distance to a core box shrunk by the rounding radius, minus that radius.
+  The rounded box is the core box grown by a ball, and growing a convex solid by a ball shifts
+  its exact signed distance by the ball radius, inside as well as outside, so the field stays exact.
+*/
+float sdf(vec3 p) {
+    const vec3 halfSize = vec3(0.85, 0.55, 0.65);
+    const float rounding = 0.15;
+    // Exact signed distance to the core box; q is the overshoot past each face.
+    vec3 q = abs(p) - (halfSize - rounding);
+    float outsideCore = length(max(q, 0.0));
+    float insideCore = min(max(q.x, max(q.y, q.z)), 0.0);
+    return outsideCore + insideCore - rounding;
+}

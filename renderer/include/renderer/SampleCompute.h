@@ -1,0 +1,56 @@
+#pragma once
+// Runs a sampler (a GLSL file defining samplePosition()) composed with an SDF as a compute
+// shader, one invocation per sample, and reads the rows back. Needs a current GL 4.3 context
+// for every call, including destruction (or call releaseGl() first).
+
+#include <core/Expected.h>
+#include <shaders/Diagnostic.h>
+#include <shaders/SdfSource.h>
+#include <shaders/ShaderComposer.h>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace sdfwb::renderer {
+
+struct SampleUniforms {
+    std::uint32_t sampleCount = 0;  // N of the whole run
+    std::uint64_t seed = 0;
+    float time = 0.0f;
+    float gradientStep = 1e-3f;     // central-difference step of the written gradient
+};
+
+class SampleCompute {
+public:
+    // Largest chunk one dispatch may take (65535 work groups of 64).
+    static constexpr std::uint32_t kMaxChunk = 65535u * 64u;
+
+    SampleCompute();
+    ~SampleCompute();
+    SampleCompute(const SampleCompute&) = delete;
+    SampleCompute& operator=(const SampleCompute&) = delete;
+
+    // Composes and compiles SDF + sampler; diagnostics name the user's files.
+    std::vector<shaders::Diagnostic> build(const shaders::PreparedSdf& sdf, const shaders::ShaderPiece& sampler);
+
+    // Samples global indices [first, first + count) into the given arrays (3*count, count,
+    // 3*count floats). count <= kMaxChunk. Fails on GL errors (e.g. out of memory) with a message.
+    Expected<void> run(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, float* positions,
+                       float* distances, float* gradients);
+
+    // The composed compute source (for tests and the log).
+    const std::string& source() const;
+
+    void releaseGl();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+// Smallest n with n^3 >= count, and with n^2 >= count (exact integer arithmetic).
+std::uint32_t cubeSide(std::uint64_t count);
+std::uint32_t squareSide(std::uint64_t count);
+
+} // namespace sdfwb::renderer

@@ -1,0 +1,11 @@
+#pragma once
+// Shader storage binding points of the sampling compute stage, mirroring
+// shaders/sampling/bindings.glsl (a unit test compares the two).
+
+namespace sdfwb::renderer {
+
+inline constexpr int kBindingPositions = 0;
+inline constexpr int kBindingDistances = 1;
+inline constexpr int kBindingGradients = 2;
+
+} // namespace sdfwb::renderer

@@ -1,0 +1,171 @@
+#include <renderer/SampleCompute.h>
+
+#include "GlObjects.h"
+
+#include <core/Log.h>
+#include <renderer/SamplingBindings.h>
+#include <shaders/DiagnosticParser.h>
+
+#include <chrono>
+#include <cmath>
+
+namespace sdfwb::renderer {
+namespace {
+
+std::string glErrorName(GLenum error) {
+    switch (error) {
+    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+    default: return "GL error " + std::to_string(error);
+    }
+}
+
+} // namespace
+
+std::uint32_t cubeSide(std::uint64_t count) {
+    std::uint64_t n = std::uint64_t(std::cbrt(double(count)));
+    while (n * n * n < count) ++n;
+    while (n > 1 && (n - 1) * (n - 1) * (n - 1) >= count) --n;
+    return std::uint32_t(std::max<std::uint64_t>(n, 1));
+}
+
+std::uint32_t squareSide(std::uint64_t count) {
+    std::uint64_t n = std::uint64_t(std::sqrt(double(count)));
+    while (n * n < count) ++n;
+    while (n > 1 && (n - 1) * (n - 1) >= count) --n;
+    return std::uint32_t(std::max<std::uint64_t>(n, 1));
+}
+
+struct SampleCompute::Impl {
+    GlProgram program;
+    GlBuffer buffers[3];
+    std::uint32_t capacity = 0;
+    std::string source;
+    GLint location(const char* name) const { return glGetUniformLocation(program.id(), name); }
+};
+
+SampleCompute::SampleCompute() : m_impl(std::make_unique<Impl>()) {}
+
+SampleCompute::~SampleCompute() {
+    m_impl->program.release();
+    for (GlBuffer& buffer : m_impl->buffers) buffer.release();
+}
+
+const std::string& SampleCompute::source() const { return m_impl->source; }
+
+std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf& sdf, const shaders::ShaderPiece& sampler) {
+    std::vector<shaders::Diagnostic> diagnostics = sdf.diagnostics;
+    if (shaders::hasErrors(diagnostics)) return diagnostics;
+    std::vector<shaders::ShaderPiece> pieces;
+    for (const char* file : {"sampling/bindings.glsl", "sampling/common.glsl"}) {
+        auto piece = shaders::builtinPiece(file);
+        if (!piece) return {{"<sdfwb>", 0, 0, shaders::Severity::Error, piece.error().message}};
+        pieces.push_back(std::move(*piece));
+    }
+    pieces.push_back(sampler);
+    auto stage = shaders::builtinPiece("sampling/sample.comp");
+    if (!stage) return {{"<sdfwb>", 0, 0, shaders::Severity::Error, stage.error().message}};
+    pieces.push_back(std::move(*stage));
+    shaders::ComposedShader composed = shaders::composeSdfShader(sdf, shaders::Stage::Compute, pieces, {});
+
+    auto start = std::chrono::steady_clock::now();
+    GlShader shader(glCreateShader(GL_COMPUTE_SHADER));
+    const char* text = composed.text.c_str();
+    glShaderSource(shader.id(), 1, &text, nullptr);
+    glCompileShader(shader.id());
+    GLint status = 0, logLength = 0;
+    glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &status);
+    glGetShaderiv(shader.id(), GL_INFO_LOG_LENGTH, &logLength);
+    if (logLength > 1) {
+        std::string log(std::size_t(logLength), '\0');
+        glGetShaderInfoLog(shader.id(), logLength, nullptr, log.data());
+        auto parsed = shaders::parseInfoLog(log, composed.map);
+        diagnostics.insert(diagnostics.end(), parsed.begin(), parsed.end());
+        if (!status && !shaders::hasErrors(diagnostics))
+            diagnostics.push_back({composed.map.fileName(0), 0, 0, shaders::Severity::Error, "driver: " + log});
+    }
+    if (!status) {
+        if (!shaders::hasErrors(diagnostics))
+            diagnostics.push_back({composed.map.fileName(0), 0, 0, shaders::Severity::Error, "driver rejected the compute shader"});
+        return diagnostics;
+    }
+    GlProgram program(glCreateProgram());
+    glAttachShader(program.id(), shader.id());
+    glLinkProgram(program.id());
+    GLint linked = 0;
+    glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
+    if (!linked) {
+        GLint length = 0;
+        glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
+        std::string log(std::size_t(std::max(length, 1)), '\0');
+        glGetProgramInfoLog(program.id(), length, nullptr, log.data());
+        diagnostics.push_back({composed.map.fileName(0), 0, 0, shaders::Severity::Error, "link failed: " + log});
+        return diagnostics;
+    }
+    double milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    log::info("sampling", "compiled " + sdf.source.map.fileName(0) + " with " + sampler.name + " in " + std::to_string(int(milliseconds)) + " ms");
+    m_impl->program = std::move(program);
+    m_impl->source = std::move(composed.text);
+    return diagnostics;
+}
+
+Expected<void> SampleCompute::run(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, float* positions,
+                                  float* distances, float* gradients) {
+    if (!m_impl->program) return makeError("sampling: no compiled sampler");
+    if (count == 0) return {};
+    if (count > kMaxChunk) return makeError("sampling: chunk of " + std::to_string(count) + " exceeds " + std::to_string(kMaxChunk));
+    while (glGetError() != GL_NO_ERROR) {}
+    if (count > m_impl->capacity) {
+        const GLsizeiptr sizes[3] = {GLsizeiptr(count) * 12, GLsizeiptr(count) * 4, GLsizeiptr(count) * 12};
+        for (int i = 0; i < 3; ++i) {
+            GLuint id = 0;
+            glGenBuffers(1, &id);
+            m_impl->buffers[i] = GlBuffer(id);
+            glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
+            glBufferData(GL_SHADER_STORAGE_BUFFER, sizes[i], nullptr, GL_DYNAMIC_READ);
+        }
+        if (GLenum error = glGetError(); error != GL_NO_ERROR) {
+            for (GlBuffer& buffer : m_impl->buffers) buffer.reset();
+            m_impl->capacity = 0;
+            return makeError("sampling: cannot allocate buffers for " + std::to_string(count) + " samples (" + glErrorName(error) +
+                             "); try a smaller --chunk");
+        }
+        m_impl->capacity = count;
+    }
+    glUseProgram(m_impl->program.id());
+    glUniform1ui(m_impl->location("u_sampleCount"), uniforms.sampleCount);
+    glUniform2ui(m_impl->location("u_seed"), GLuint(uniforms.seed & 0xffffffffu), GLuint(uniforms.seed >> 32));
+    glUniform1f(m_impl->location("u_gradientStep"), uniforms.gradientStep);
+    glUniform1ui(m_impl->location("u_cubeSide"), cubeSide(uniforms.sampleCount));
+    glUniform1ui(m_impl->location("u_squareSide"), squareSide(uniforms.sampleCount));
+    if (GLint location = m_impl->location("u_time"); location >= 0) glUniform1f(location, uniforms.time);
+    if (GLint location = m_impl->location("g3d_SceneTime"); location >= 0) glUniform1f(location, uniforms.time);
+    glUniform1ui(m_impl->location("u_chunkFirst"), first);
+    glUniform1ui(m_impl->location("u_chunkCount"), count);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingPositions, m_impl->buffers[0].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingDistances, m_impl->buffers[1].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingGradients, m_impl->buffers[2].id());
+    glDispatchCompute((count + 63u) / 64u, 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    float* targets[3] = {positions, distances, gradients};
+    const GLsizeiptr sizes[3] = {GLsizeiptr(count) * 12, GLsizeiptr(count) * 4, GLsizeiptr(count) * 12};
+    for (int i = 0; i < 3; ++i) {
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, m_impl->buffers[i].id());
+        glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizes[i], targets[i]);
+    }
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    glUseProgram(0);
+    if (GLenum error = glGetError(); error != GL_NO_ERROR)
+        return makeError("sampling: dispatch of " + std::to_string(count) + " samples failed (" + glErrorName(error) + "); try a smaller --chunk");
+    return {};
+}
+
+void SampleCompute::releaseGl() {
+    m_impl->program.reset();
+    for (GlBuffer& buffer : m_impl->buffers) buffer.reset();
+    m_impl->capacity = 0;
+}
+
+} // namespace sdfwb::renderer

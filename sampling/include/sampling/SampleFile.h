@@ -1,0 +1,106 @@
+#pragma once
+// Sample files: .bin (the paper's Table 2), .npz (NumPy, readable with allow_pickle=False) and
+// .ply (binary little-endian, gradient and distance as vertex properties). Writers stream rows in
+// chunks into a temporary file beside the target and rename it into place on commit(), so a
+// failed or cancelled run leaves no partial file and keeps an existing one. Readers reject corrupt
+// files with a message naming the file and what is wrong, and read any row range without loading
+// the whole file (except deflate-compressed .npz entries, which are inflated once).
+
+#include <core/Expected.h>
+#include <sampling/SampleSet.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace sdfwb::sampling {
+
+enum class SampleFormat { Bin, Npz, Ply };
+
+const char* formatName(SampleFormat format);
+std::optional<SampleFormat> parseFormat(std::string_view name);           // "bin" | "npz" | "ply"
+std::optional<SampleFormat> formatFromPath(const std::filesystem::path& path);  // by extension
+
+// Where rows came from. .npz stores every field as an array, .ply as header comments; .bin has
+// no room for metadata.
+struct SampleMetadata {
+    std::string sdf;               // as the user named it (dataset name or path)
+    std::string pattern;
+    std::uint64_t seed = 0;
+    float time = 0.0f;
+    std::uint64_t firstIndex = 0;  // global index of the file's first row (non-zero for shards)
+    std::uint64_t totalCount = 0;  // N of the whole run the rows belong to
+    std::string version;           // sdfwb version that wrote the file
+};
+
+// Largest row count a format can hold (.bin stores N as uint32).
+std::uint64_t maxRows(SampleFormat format);
+
+class SampleWriter {
+public:
+    struct Options {
+        bool forceZip64 = false;  // .npz: use ZIP64 records even when not needed (for tests)
+    };
+
+    // Opens a temporary file for `rows` rows. Fails before writing anything when rows exceeds
+    // maxRows(format) or the folder is not writable.
+    static Expected<std::unique_ptr<SampleWriter>> create(const std::filesystem::path& path, SampleFormat format,
+                                                          std::uint64_t rows, const SampleMetadata& metadata,
+                                                          const Options& options);
+    static Expected<std::unique_ptr<SampleWriter>> create(const std::filesystem::path& path, SampleFormat format,
+                                                          std::uint64_t rows, const SampleMetadata& metadata) {
+        return create(path, format, rows, metadata, Options{});
+    }
+
+    // Removes the temporary file unless commit() succeeded.
+    virtual ~SampleWriter();
+
+    // Appends the next n rows: 3n positions, n distances, 3n gradients.
+    virtual Expected<void> append(const float* positions, const float* distances, const float* gradients, std::size_t n) = 0;
+
+    // After exactly `rows` rows: finishes the file, flushes it to disk and renames it into place.
+    virtual Expected<void> commit() = 0;
+
+protected:
+    SampleWriter() = default;
+};
+
+class SampleReader {
+public:
+    static Expected<std::unique_ptr<SampleReader>> open(const std::filesystem::path& path);
+    virtual ~SampleReader();
+
+    std::uint64_t rows() const { return m_rows; }
+    SampleFormat format() const { return m_format; }
+    // Metadata when the file carries it (.npz, .ply written by sdfwb).
+    const std::optional<SampleMetadata>& metadata() const { return m_metadata; }
+
+    // Reads rows [first, first + n) into the arrays (3n, n, 3n floats).
+    virtual Expected<void> read(std::uint64_t first, std::size_t n, float* positions, float* distances, float* gradients) = 0;
+
+protected:
+    SampleReader() = default;
+    std::uint64_t m_rows = 0;
+    SampleFormat m_format = SampleFormat::Bin;
+    std::optional<SampleMetadata> m_metadata;
+};
+
+// Whole-file conveniences (the Python module's load/save, tests).
+Expected<SampleSet> readSamples(const std::filesystem::path& path, std::optional<SampleMetadata>* metadata = nullptr);
+Expected<void> writeSamples(const std::filesystem::path& path, SampleFormat format, const SampleSet& samples,
+                            const SampleMetadata& metadata);
+
+// Joins shard files into the file one run would have written. Parts with metadata (.npz, .ply)
+// are ordered by their first index and must be contiguous slices of the same run; .bin parts are
+// taken in the order given.
+struct MergeReport {
+    std::uint64_t rows = 0;
+    std::size_t parts = 0;
+};
+Expected<MergeReport> mergeSampleFiles(const std::filesystem::path& output, SampleFormat format,
+                                       const std::vector<std::filesystem::path>& parts);
+
+} // namespace sdfwb::sampling

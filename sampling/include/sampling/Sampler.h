@@ -1,0 +1,52 @@
+#pragma once
+// Runs a sampling job in chunks through renderer::SampleCompute (which must be built and whose
+// GL context must be current on the calling thread). Rows depend only on (seed, global index),
+// so any chunk size and any sharding give the same rows.
+
+#include <core/Expected.h>
+#include <core/Progress.h>
+#include <sampling/SampleFile.h>
+
+#include <cstdint>
+#include <filesystem>
+
+namespace sdfwb::renderer {
+class SampleCompute;
+}
+
+namespace sdfwb::sampling {
+
+struct SamplingJob {
+    std::uint64_t count = 0;          // N of the whole run
+    std::uint64_t seed = 0;
+    float time = 0.0f;                // for animated SDFs
+    std::uint32_t shardIndex = 0;     // this run writes slice shardIndex (0-based) of shardCount
+    std::uint32_t shardCount = 1;
+    std::uint32_t chunkSize = 1u << 18;  // samples per dispatch (bounded memory: 28 bytes each)
+    float gradientStep = 1e-3f;       // central-difference step of the written gradient
+
+    std::uint64_t firstIndex() const { return count * shardIndex / shardCount; }
+    std::uint64_t rows() const { return count * (shardIndex + 1ull) / shardCount - firstIndex(); }
+};
+
+// Fails with a message naming the offending value (N, shard, chunk).
+Expected<void> validate(const SamplingJob& job);
+
+struct SamplingReport {
+    std::uint64_t rows = 0;        // rows produced (this shard)
+    std::uint64_t firstIndex = 0;
+    std::uint64_t badRows = 0;     // rows with NaN or Inf anywhere (misses of surface/near, broken fields)
+    double seconds = 0.0;
+    bool cancelled = false;
+};
+
+// Writes rows into caller-owned arrays of job.rows() rows (3n, n, 3n floats): no copies.
+Expected<SamplingReport> sampleInto(renderer::SampleCompute& compute, const SamplingJob& job, float* positions, float* distances,
+                                    float* gradients, const ProgressSink& progress);
+
+// Streams rows into `path` (atomic: nothing appears unless the run completes). A cancelled run
+// returns a report with cancelled = true and leaves no file.
+Expected<SamplingReport> sampleToFile(renderer::SampleCompute& compute, const SamplingJob& job, const std::filesystem::path& path,
+                                      SampleFormat format, const SampleMetadata& metadata, const ProgressSink& progress);
+
+} // namespace sdfwb::sampling

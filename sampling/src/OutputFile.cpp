@@ -1,0 +1,98 @@
+#include "OutputFile.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace sdfwb::sampling::detail {
+namespace fs = std::filesystem;
+
+Expected<OutputFile> OutputFile::create(const fs::path& target) {
+    fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec)) return makeError(target.string() + ": folder '" + folder.string() + "' does not exist");
+    if (fs::is_directory(target, ec)) return makeError(target.string() + ": is a folder, not a file");
+    std::string pattern = (folder / ("." + target.filename().string() + ".partial-XXXXXX")).string();
+    int fd = ::mkstemp(pattern.data());
+    if (fd < 0) return makeError(target.string() + ": cannot create a file in '" + folder.string() + "': " + std::strerror(errno));
+    ::fchmod(fd, 0644);
+    return OutputFile(target, pattern, fd);
+}
+
+OutputFile::OutputFile(OutputFile&& other) noexcept
+    : m_target(std::move(other.m_target)), m_temporary(std::move(other.m_temporary)), m_fd(other.m_fd), m_committed(other.m_committed) {
+    other.m_fd = -1;
+    other.m_committed = true;
+}
+
+OutputFile::~OutputFile() {
+    if (m_fd >= 0) ::close(m_fd);
+    if (!m_committed && !m_temporary.empty()) ::unlink(m_temporary.c_str());
+}
+
+Expected<void> OutputFile::writeAt(std::uint64_t offset, const void* data, std::size_t size) {
+    const char* bytes = static_cast<const char*>(data);
+    while (size > 0) {
+        ssize_t written = ::pwrite(m_fd, bytes, size, off_t(offset));
+        if (written < 0) {
+            if (errno == EINTR) continue;
+            return makeError(m_target.string() + ": write failed: " + std::strerror(errno));
+        }
+        bytes += written;
+        offset += std::uint64_t(written);
+        size -= std::size_t(written);
+    }
+    return {};
+}
+
+Expected<void> OutputFile::commit() {
+    if (::fsync(m_fd) != 0) return makeError(m_target.string() + ": flushing to disk failed: " + std::strerror(errno));
+    int fd = m_fd;
+    m_fd = -1;
+    if (::close(fd) != 0) return makeError(m_target.string() + ": close failed: " + std::strerror(errno));
+    if (::rename(m_temporary.c_str(), m_target.c_str()) != 0)
+        return makeError(m_target.string() + ": cannot move the finished file into place: " + std::strerror(errno));
+    m_committed = true;
+    return {};
+}
+
+Expected<InputFile> InputFile::open(const fs::path& path) {
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) return makeError(path.string() + ": is a folder, not a file");
+    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return makeError(path.string() + ": cannot open: " + std::strerror(errno));
+    struct stat status {};
+    if (::fstat(fd, &status) != 0) {
+        ::close(fd);
+        return makeError(path.string() + ": cannot stat: " + std::strerror(errno));
+    }
+    return InputFile(path.string(), fd, std::uint64_t(status.st_size));
+}
+
+InputFile::InputFile(InputFile&& other) noexcept : m_name(std::move(other.m_name)), m_fd(other.m_fd), m_size(other.m_size) { other.m_fd = -1; }
+
+InputFile::~InputFile() {
+    if (m_fd >= 0) ::close(m_fd);
+}
+
+Expected<void> InputFile::readAt(std::uint64_t offset, void* data, std::size_t size) const {
+    if (offset > m_size || size > m_size - offset)
+        return makeError(m_name + ": truncated: needs bytes up to " + std::to_string(offset + size) + " but has " + std::to_string(m_size));
+    char* bytes = static_cast<char*>(data);
+    while (size > 0) {
+        ssize_t got = ::pread(m_fd, bytes, size, off_t(offset));
+        if (got < 0) {
+            if (errno == EINTR) continue;
+            return makeError(m_name + ": read failed: " + std::strerror(errno));
+        }
+        if (got == 0) return makeError(m_name + ": unexpected end of file");
+        bytes += got;
+        offset += std::uint64_t(got);
+        size -= std::size_t(got);
+    }
+    return {};
+}
+
+} // namespace sdfwb::sampling::detail

@@ -1,0 +1,54 @@
+#pragma once
+// A file written at known offsets into a temporary beside its target, renamed into place on
+// commit(); removed on destruction unless committed. Private to sampling/.
+
+#include <core/Expected.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+namespace sdfwb::sampling::detail {
+
+class OutputFile {
+public:
+    static Expected<OutputFile> create(const std::filesystem::path& target);
+    OutputFile(OutputFile&& other) noexcept;
+    OutputFile& operator=(OutputFile&&) = delete;
+    OutputFile(const OutputFile&) = delete;
+    ~OutputFile();
+
+    Expected<void> writeAt(std::uint64_t offset, const void* data, std::size_t size);
+    // fsync, close, rename over the target.
+    Expected<void> commit();
+    const std::filesystem::path& target() const { return m_target; }
+
+private:
+    OutputFile(std::filesystem::path target, std::string temporary, int fd)
+        : m_target(std::move(target)), m_temporary(std::move(temporary)), m_fd(fd) {}
+    std::filesystem::path m_target;
+    std::string m_temporary;
+    int m_fd = -1;
+    bool m_committed = false;
+};
+
+// A read-only file with positional reads; errors name the file.
+class InputFile {
+public:
+    static Expected<InputFile> open(const std::filesystem::path& path);
+    InputFile(InputFile&& other) noexcept;
+    InputFile(const InputFile&) = delete;
+    ~InputFile();
+    std::uint64_t size() const { return m_size; }
+    const std::string& name() const { return m_name; }
+    // Reads exactly `size` bytes at `offset` or fails ("file.npz: truncated at byte 1234").
+    Expected<void> readAt(std::uint64_t offset, void* data, std::size_t size) const;
+
+private:
+    InputFile(std::string name, int fd, std::uint64_t size) : m_name(std::move(name)), m_fd(fd), m_size(size) {}
+    std::string m_name;
+    int m_fd = -1;
+    std::uint64_t m_size = 0;
+};
+
+} // namespace sdfwb::sampling::detail

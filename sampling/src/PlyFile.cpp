@@ -1,0 +1,228 @@
+// .ply, binary little-endian: one vertex per sample with float properties
+// x y z distance gx gy gz; run metadata as `comment sdfwb <key> <value>` header lines.
+
+#include "Formats.h"
+
+#include <cstdio>
+#include <sstream>
+#include <vector>
+
+namespace sdfwb::sampling::detail {
+namespace {
+
+constexpr std::size_t kRowBytes = 28;
+const char* const kProperties[7] = {"x", "y", "z", "distance", "gx", "gy", "gz"};
+
+std::string singleLine(std::string text) {
+    for (char& c : text)
+        if (c == '\n' || c == '\r') c = ' ';
+    return text;
+}
+
+std::string header(std::uint64_t rows, const SampleMetadata& m) {
+    char time[32];
+    std::snprintf(time, sizeof time, "%.9g", double(m.time));
+    std::string out = "ply\nformat binary_little_endian 1.0\n";
+    out += "comment sdfwb sdf " + singleLine(m.sdf) + "\n";
+    out += "comment sdfwb pattern " + singleLine(m.pattern) + "\n";
+    out += "comment sdfwb seed " + std::to_string(m.seed) + "\n";
+    out += "comment sdfwb time " + std::string(time) + "\n";
+    out += "comment sdfwb first_index " + std::to_string(m.firstIndex) + "\n";
+    out += "comment sdfwb total_count " + std::to_string(m.totalCount) + "\n";
+    out += "comment sdfwb version " + singleLine(m.version) + "\n";
+    out += "element vertex " + std::to_string(rows) + "\n";
+    for (const char* property : kProperties) out += std::string("property float ") + property + "\n";
+    out += "end_header\n";
+    return out;
+}
+
+class PlyWriter final : public SampleWriter {
+public:
+    PlyWriter(OutputFile file, std::uint64_t rows, std::string header)
+        : m_file(std::move(file)), m_rows(rows), m_dataOffset(header.size()), m_header(std::move(header)) {}
+
+    Expected<void> append(const float* positions, const float* distances, const float* gradients, std::size_t n) override {
+        if (m_written + n > m_rows) return makeError(m_file.target().string() + ": more rows than announced");
+        m_buffer.resize(n * 7);
+        for (std::size_t i = 0; i < n; ++i) {
+            float* row = m_buffer.data() + 7 * i;
+            row[0] = positions[3 * i];
+            row[1] = positions[3 * i + 1];
+            row[2] = positions[3 * i + 2];
+            row[3] = distances[i];
+            row[4] = gradients[3 * i];
+            row[5] = gradients[3 * i + 1];
+            row[6] = gradients[3 * i + 2];
+        }
+        if (auto ok = m_file.writeAt(m_dataOffset + kRowBytes * m_written, m_buffer.data(), kRowBytes * n); !ok) return ok;
+        m_written += n;
+        return {};
+    }
+
+    Expected<void> commit() override {
+        if (m_written != m_rows)
+            return makeError(m_file.target().string() + ": " + std::to_string(m_written) + " of " + std::to_string(m_rows) + " rows written");
+        if (auto ok = m_file.writeAt(0, m_header.data(), m_header.size()); !ok) return ok;
+        return m_file.commit();
+    }
+
+private:
+    OutputFile m_file;
+    std::uint64_t m_rows;
+    std::uint64_t m_dataOffset;
+    std::string m_header;
+    std::vector<float> m_buffer;
+    std::uint64_t m_written = 0;
+};
+
+class PlyReader final : public SampleReader {
+public:
+    PlyReader(InputFile file, std::uint64_t rows, std::uint64_t dataOffset, std::size_t stride, const int (&offsets)[7],
+              std::optional<SampleMetadata> metadata)
+        : m_file(std::move(file)), m_dataOffset(dataOffset), m_stride(stride) {
+        m_rows = rows;
+        m_format = SampleFormat::Ply;
+        m_metadata = std::move(metadata);
+        for (int i = 0; i < 7; ++i) m_offsets[i] = offsets[i];
+    }
+
+    Expected<void> read(std::uint64_t first, std::size_t n, float* positions, float* distances, float* gradients) override {
+        if (first + n > m_rows) return makeError(m_file.name() + ": rows out of range");
+        std::vector<char> buffer;
+        for (std::size_t done = 0; done < n;) {
+            std::size_t count = std::min(kCopyChunkRows, n - done);
+            buffer.resize(count * m_stride);
+            if (auto ok = m_file.readAt(m_dataOffset + (first + done) * m_stride, buffer.data(), buffer.size()); !ok) return ok;
+            for (std::size_t i = 0; i < count; ++i) {
+                const char* row = buffer.data() + i * m_stride;
+                std::size_t r = done + i;
+                positions[3 * r] = get<float>(row + m_offsets[0]);
+                positions[3 * r + 1] = get<float>(row + m_offsets[1]);
+                positions[3 * r + 2] = get<float>(row + m_offsets[2]);
+                distances[r] = get<float>(row + m_offsets[3]);
+                gradients[3 * r] = get<float>(row + m_offsets[4]);
+                gradients[3 * r + 1] = get<float>(row + m_offsets[5]);
+                gradients[3 * r + 2] = get<float>(row + m_offsets[6]);
+            }
+            done += count;
+        }
+        return {};
+    }
+
+private:
+    InputFile m_file;
+    std::uint64_t m_dataOffset;
+    std::size_t m_stride;
+    int m_offsets[7];
+};
+
+int typeSize(const std::string& type) {
+    if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+    if (type == "int" || type == "uint" || type == "float" || type == "int32" || type == "uint32" || type == "float32") return 4;
+    if (type == "double" || type == "float64") return 8;
+    return 0;
+}
+
+} // namespace
+
+Expected<std::unique_ptr<SampleWriter>> createPlyWriter(OutputFile file, std::uint64_t rows, const SampleMetadata& metadata) {
+    return std::unique_ptr<SampleWriter>(new PlyWriter(std::move(file), rows, header(rows, metadata)));
+}
+
+Expected<std::unique_ptr<SampleReader>> openPlyReader(InputFile file) {
+    // The header is text up to "end_header\n"; 64 KiB is far more than any sane header.
+    std::string head(std::size_t(std::min<std::uint64_t>(file.size(), 65536)), '\0');
+    if (auto ok = file.readAt(0, head.data(), head.size()); !ok) return ok.error();
+    const std::string& name = file.name();
+    if (head.rfind("ply\n", 0) != 0) return makeError(name + ": not a PLY file (no 'ply' magic line)");
+    std::size_t end = head.find("end_header\n");
+    if (end == std::string::npos) return makeError(name + ": PLY header has no end_header line within 64 KiB");
+    std::istringstream lines(head.substr(0, end));
+    std::string line;
+    int lineNumber = 0;
+    bool inVertex = false, sawVertex = false, binaryLittle = false;
+    std::uint64_t rows = 0;
+    std::size_t stride = 0;
+    int offsets[7] = {-1, -1, -1, -1, -1, -1, -1};
+    SampleMetadata metadata;
+    bool hasMetadata = false;
+    while (std::getline(lines, line)) {
+        ++lineNumber;
+        std::istringstream words(line);
+        std::string keyword;
+        words >> keyword;
+        auto where = [&] { return name + ": header line " + std::to_string(lineNumber) + ": "; };
+        if (keyword == "format") {
+            std::string format, version;
+            words >> format >> version;
+            if (format != "binary_little_endian") return makeError(where() + "format '" + format + "' is not supported (binary_little_endian only)");
+            binaryLittle = true;
+        } else if (keyword == "comment") {
+            std::string tag, key;
+            words >> tag >> key;
+            if (tag != "sdfwb") continue;
+            std::string value;
+            std::getline(words >> std::ws, value);
+            hasMetadata = true;
+            try {
+                if (key == "sdf") metadata.sdf = value;
+                else if (key == "pattern") metadata.pattern = value;
+                else if (key == "seed") metadata.seed = std::stoull(value);
+                else if (key == "time") metadata.time = std::stof(value);
+                else if (key == "first_index") metadata.firstIndex = std::stoull(value);
+                else if (key == "total_count") metadata.totalCount = std::stoull(value);
+                else if (key == "version") metadata.version = value;
+            } catch (const std::exception&) {
+                return makeError(where() + "malformed sdfwb " + key + " value '" + value + "'");
+            }
+        } else if (keyword == "element") {
+            std::string element;
+            std::string countText;
+            words >> element >> countText;
+            if (sawVertex && inVertex) inVertex = false;
+            if (element == "vertex") {
+                if (sawVertex) return makeError(where() + "second vertex element");
+                try {
+                    rows = std::stoull(countText);
+                } catch (const std::exception&) {
+                    return makeError(where() + "malformed vertex count '" + countText + "'");
+                }
+                sawVertex = inVertex = true;
+            } else if (!sawVertex) {
+                return makeError(where() + "element '" + element + "' before the vertex element is not supported");
+            }
+        } else if (keyword == "property") {
+            if (!inVertex) continue;
+            std::string type, property;
+            words >> type;
+            if (type == "list") return makeError(where() + "list properties in the vertex element are not supported");
+            words >> property;
+            int size = typeSize(type);
+            if (size == 0) return makeError(where() + "unknown property type '" + type + "'");
+            for (int i = 0; i < 7; ++i)
+                if (property == kProperties[i]) {
+                    if (type != "float" && type != "float32") return makeError(where() + "property '" + property + "' must be float, is " + type);
+                    offsets[i] = int(stride);
+                }
+            stride += std::size_t(size);
+        } else if (keyword == "ply" || keyword == "obj_info" || keyword.empty()) {
+            continue;
+        } else {
+            return makeError(where() + "unknown keyword '" + keyword + "'");
+        }
+    }
+    if (!binaryLittle) return makeError(name + ": PLY header lacks 'format binary_little_endian 1.0'");
+    if (!sawVertex) return makeError(name + ": PLY file has no vertex element");
+    for (int i = 0; i < 7; ++i)
+        if (offsets[i] < 0) return makeError(name + ": PLY vertices lack the float property '" + kProperties[i] + "'");
+    const std::uint64_t dataOffset = end + std::string("end_header\n").size();
+    if (stride == 0 || rows > (file.size() - dataOffset) / stride)
+        return makeError(name + ": " + std::to_string(rows) + " vertices of " + std::to_string(stride) + " bytes do not fit in the file's " +
+                         std::to_string(file.size() - dataOffset) + " bytes of data");
+    std::optional<SampleMetadata> found;
+    if (hasMetadata) found = metadata;
+    return std::unique_ptr<SampleReader>(new PlyReader(std::move(file), rows, dataOffset, stride, offsets, std::move(found)));
+}
+
+} // namespace sdfwb::sampling::detail

@@ -1,0 +1,105 @@
+#include <sampling/Sampler.h>
+
+#include <renderer/SampleCompute.h>
+
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+namespace sdfwb::sampling {
+namespace {
+
+std::uint64_t countBadRows(const float* positions, const float* distances, const float* gradients, std::size_t n) {
+    std::uint64_t bad = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        bool finite = std::isfinite(distances[i]);
+        for (int c = 0; c < 3 && finite; ++c)
+            finite = std::isfinite(positions[3 * i + std::size_t(c)]) && std::isfinite(gradients[3 * i + std::size_t(c)]);
+        bad += !finite;
+    }
+    return bad;
+}
+
+// Runs the job chunk by chunk; `consume` receives each chunk's rows in order.
+template <class Target, class Consume>
+Expected<SamplingReport> run(renderer::SampleCompute& compute, const SamplingJob& job, Target target, Consume consume,
+                             const ProgressSink& progress) {
+    if (auto ok = validate(job); !ok) return ok.error();
+    auto start = std::chrono::steady_clock::now();
+    SamplingReport report;
+    report.firstIndex = job.firstIndex();
+    const std::uint64_t rows = job.rows();
+    const std::uint32_t chunk = std::min(job.chunkSize, renderer::SampleCompute::kMaxChunk);
+    renderer::SampleUniforms uniforms{std::uint32_t(job.count), job.seed, job.time, job.gradientStep};
+    progress(0, rows);
+    for (std::uint64_t done = 0; done < rows;) {
+        if (progress.isCancelled()) {
+            report.cancelled = true;
+            break;
+        }
+        std::uint32_t count = std::uint32_t(std::min<std::uint64_t>(chunk, rows - done));
+        auto [positions, distances, gradients] = target(done, count);
+        if (auto ok = compute.run(uniforms, std::uint32_t(report.firstIndex + done), count, positions, distances, gradients); !ok) return ok.error();
+        report.badRows += countBadRows(positions, distances, gradients, count);
+        if (auto ok = consume(positions, distances, gradients, count); !ok) return ok.error();
+        done += count;
+        report.rows = done;
+        progress(done, rows);
+    }
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report;
+}
+
+struct Pointers {
+    float* positions;
+    float* distances;
+    float* gradients;
+};
+
+} // namespace
+
+Expected<void> validate(const SamplingJob& job) {
+    if (job.count == 0) return makeError("-n: the sample count must be at least 1");
+    if (job.count > 0xffffffffull) return makeError("-n: " + std::to_string(job.count) + " samples exceed the limit of 4294967295 per run (shard larger jobs into several runs with different seeds)");
+    if (job.shardCount == 0 || job.shardIndex >= job.shardCount)
+        return makeError("--shard: " + std::to_string(job.shardIndex) + "/" + std::to_string(job.shardCount) + " is not a slice (0 <= K < COUNT)");
+    if (job.chunkSize == 0) return makeError("--chunk: must be at least 1");
+    if (!(job.gradientStep > 0.0f) || !std::isfinite(job.gradientStep)) return makeError("--gradient-step: must be positive");
+    return {};
+}
+
+Expected<SamplingReport> sampleInto(renderer::SampleCompute& compute, const SamplingJob& job, float* positions, float* distances,
+                                    float* gradients, const ProgressSink& progress) {
+    auto target = [&](std::uint64_t done, std::uint32_t) {
+        return Pointers{positions + 3 * done, distances + done, gradients + 3 * done};
+    };
+    auto consume = [](const float*, const float*, const float*, std::size_t) -> Expected<void> { return {}; };
+    return run(compute, job, target, consume, progress);
+}
+
+Expected<SamplingReport> sampleToFile(renderer::SampleCompute& compute, const SamplingJob& job, const std::filesystem::path& path,
+                                      SampleFormat format, const SampleMetadata& metadata, const ProgressSink& progress) {
+    if (auto ok = validate(job); !ok) return ok.error();
+    SampleMetadata full = metadata;
+    full.seed = job.seed;
+    full.time = job.time;
+    full.firstIndex = job.firstIndex();
+    full.totalCount = job.count;
+    auto writer = SampleWriter::create(path, format, job.rows(), full);
+    if (!writer) return writer.error();
+    std::vector<float> positions, distances, gradients;
+    auto target = [&](std::uint64_t, std::uint32_t count) {
+        positions.resize(3 * std::size_t(count));
+        distances.resize(count);
+        gradients.resize(3 * std::size_t(count));
+        return Pointers{positions.data(), distances.data(), gradients.data()};
+    };
+    auto consume = [&](const float* p, const float* d, const float* g, std::size_t n) { return (*writer)->append(p, d, g, n); };
+    auto report = run(compute, job, target, consume, progress);
+    if (!report) return report;
+    if (!report->cancelled)
+        if (auto ok = (*writer)->commit(); !ok) return ok.error();
+    return report;  // a cancelled writer is dropped here: its temporary file is removed
+}
+
+} // namespace sdfwb::sampling

@@ -1,0 +1,5 @@
+// Shader storage binding points of the sampling compute stage. Mirrored in C++ by
+// renderer/include/renderer/SamplingBindings.h; a unit test checks that the two agree.
+#define SDFWB_BINDING_POSITIONS 0
+#define SDFWB_BINDING_DISTANCES 1
+#define SDFWB_BINDING_GRADIENTS 2

@@ -1,0 +1,117 @@
+// Helpers every sampler file can use. Composed after the user's SDF and before the sampler.
+//
+// Randomness is counter-based: random01(index, stream) depends only on the run's seed, the
+// sample's global index and a stream number the sampler chooses. No state is carried between
+// samples, so a run gives the same numbers whatever the chunk size or shard.
+
+uniform uint u_sampleCount;   // N of the whole run (not of this chunk or shard)
+uniform uvec2 u_seed;         // 64-bit seed, low and high words
+uniform float u_gradientStep; // central-difference step of the written gradient
+uniform uint u_cubeSide;      // smallest n with n^3 >= N (computed exactly on the CPU)
+uniform uint u_squareSide;    // smallest n with n^2 >= N
+#ifdef SDFWB_USES_TIME
+uniform float u_time;
+#endif
+
+float map(vec3 p) {
+#ifdef SDFWB_ANIMATED
+    return sdf(p, u_time);
+#else
+    return sdf(p);
+#endif
+}
+
+// Raw gradient by 6-tap central differences (not normalised: its length shows the field's
+// Lipschitz behaviour).
+vec3 gradientAt(vec3 p, float h) {
+    return vec3(map(p + vec3(h, 0.0, 0.0)) - map(p - vec3(h, 0.0, 0.0)),
+                map(p + vec3(0.0, h, 0.0)) - map(p - vec3(0.0, h, 0.0)),
+                map(p + vec3(0.0, 0.0, h)) - map(p - vec3(0.0, 0.0, h))) / (2.0 * h);
+}
+
+// 32-bit integer finaliser: xorshift-multiply rounds. The multipliers are the "lowbias32"
+// constants found by Chris Wellons' hash-prospector search (public domain), which give near-ideal
+// avalanche: every input bit flips every output bit with probability ~1/2.
+uint scramble(uint x) {
+    x ^= x >> 16u;
+    x *= 0x7feb352du;
+    x ^= x >> 15u;
+    x *= 0x846ca68bu;
+    x ^= x >> 16u;
+    return x;
+}
+
+// Four independent uniform numbers in [0, 1) for (sample index, stream), chained through the
+// seed so that different seeds give unrelated sequences. Exactly representable (24 random bits
+// times 2^-24), so the positions come out the same on every IEEE-754 device.
+vec4 random4(uint index, uint stream) {
+    uint seedKey = scramble(u_seed.y ^ scramble(u_seed.x));
+    uint sampleKey = scramble(index ^ seedKey);
+    uint streamKey = scramble(stream * 0x9e3779b9u + sampleKey);
+    uvec4 bits = uvec4(scramble(streamKey), scramble(streamKey + 0x9e3779b9u), scramble(streamKey + 0x3c6ef372u),
+                       scramble(streamKey + 0xdaa66d2bu));
+    return vec4(bits >> 8u) * (1.0 / 16777216.0);
+}
+
+float random01(uint index, uint stream) { return random4(index, stream).x; }
+
+// Uniform in the cube [-1, 1]^3.
+vec3 randomInCube(uint index, uint stream) { return random4(index, stream).xyz * 2.0 - 1.0; }
+
+// Uniform on the unit sphere.
+vec3 randomDirection(uint index, uint stream) {
+    vec4 u = random4(index, stream);
+    float z = u.x * 2.0 - 1.0;
+    float azimuth = 6.28318530718 * u.y;
+    float ring = sqrt(max(0.0, 1.0 - z * z));
+    return vec3(ring * cos(azimuth), ring * sin(azimuth), z);
+}
+
+// Standard normal variate (Box-Muller); u.x is kept away from 0 so log() stays finite.
+float randomGaussian(uint index, uint stream) {
+    vec4 u = random4(index, stream);
+    float radius = sqrt(-2.0 * log(max(u.x, 1e-7)));
+    return radius * cos(6.28318530718 * u.y);
+}
+
+// Three independent standard normal variates (two Box-Muller pairs, one value unused).
+vec3 randomGaussian3(uint index, uint stream) {
+    vec4 u = random4(index, stream);
+    vec2 radius = sqrt(-2.0 * log(max(u.xz, vec2(1e-7))));
+    vec2 angle = 6.28318530718 * u.yw;
+    return vec3(radius.x * cos(angle.x), radius.x * sin(angle.x), radius.y * cos(angle.y));
+}
+
+// Coordinate of lattice point k of n evenly spaced points covering [-1, 1] (ends included).
+float latticeCoordinate(uint k, uint n) { return n > 1u ? -1.0 + 2.0 * float(k) / float(n - 1u) : 0.0; }
+
+// Sphere-traces from `origin` along unit `direction` through the [-1,1]^3 box (with a margin).
+// On a hit, `hit` is the point with |f| < 1e-5 (refined by a few Newton-like steps).
+bool traceRay(vec3 origin, vec3 direction, out vec3 hit) {
+    const float margin = 0.05;
+    vec3 inverse = 1.0 / direction;
+    vec3 t0 = (vec3(-1.0 - margin) - origin) * inverse;
+    vec3 t1 = (vec3(1.0 + margin) - origin) * inverse;
+    vec3 tMin = min(t0, t1), tMax = max(t0, t1);
+    float t = max(max(max(tMin.x, tMin.y), tMin.z), 0.0);
+    float tEnd = min(min(tMax.x, tMax.y), tMax.z);
+    hit = vec3(0.0);
+    for (int step = 0; step < 512 && t <= tEnd; ++step) {
+        float d = map(origin + t * direction);
+        if (isnan(d) || isinf(d)) return false;
+        if (abs(d) < 1e-5) {
+            hit = origin + t * direction;
+            return true;
+        }
+        t += d;
+    }
+    return false;
+}
+
+// One sample's ray attempt: a random point in the cube seen from a random direction outside it.
+bool traceRandomRay(uint index, uint attempt, out vec3 hit) {
+    vec3 target = randomInCube(index, 2u * attempt) * 0.9;
+    vec3 direction = randomDirection(index, 2u * attempt + 1u);
+    vec3 origin = target - 3.0 * direction;
+    return traceRay(origin, direction, hit);
+}

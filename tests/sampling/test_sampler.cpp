@@ -1,0 +1,326 @@
+// The 8 sampling patterns through the real compute path (EGL, llvmpipe without a GPU), checked
+// against closed forms on a sphere, plus determinism across chunk sizes, shards and merges.
+
+#include <renderer/HeadlessContext.h>
+#include <renderer/SampleCompute.h>
+#include <renderer/SamplingBindings.h>
+#include <sampling/Sampler.h>
+#include <sampling/SamplerLibrary.h>
+
+#include <gtest/gtest.h>
+
+#include <glm/vec3.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace sdfwb;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr float kRadius = 0.5f;
+
+class SamplerTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        auto created = renderer::HeadlessContext::create();
+        ASSERT_TRUE(created.hasValue()) << created.error().message;
+        s_context = std::move(created.value()).release();
+    }
+    static void TearDownTestSuite() {
+        delete s_context;
+        s_context = nullptr;
+    }
+    void SetUp() override { ASSERT_TRUE(s_context && s_context->makeCurrent()); }
+
+    static shaders::PreparedSdf prepare(const std::string& text) { return shaders::prepareSdf(text, "<test>", {}, shaders::IncludeOptions{}); }
+
+    // Builds `pattern` on `sdfText` and samples job.rows() rows into `out`.
+    static sampling::SamplingReport sample(const std::string& sdfText, const std::string& pattern, const sampling::SamplingJob& job,
+                                           sampling::SampleSet& out) {
+        renderer::SampleCompute compute;
+        auto sampler = sampling::findSampler(pattern, {});
+        EXPECT_TRUE(sampler.hasValue()) << (sampler ? "" : sampler.error().message);
+        auto diagnostics = compute.build(prepare(sdfText), *sampler);
+        EXPECT_FALSE(shaders::hasErrors(diagnostics)) << (diagnostics.empty() ? "" : shaders::formatDiagnostic(diagnostics[0]));
+        out.resize(std::size_t(job.rows()));
+        auto report = sampling::sampleInto(compute, job, out.positions.data(), out.distances.data(), out.gradients.data(), {});
+        EXPECT_TRUE(report.hasValue()) << (report ? "" : report.error().message);
+        compute.releaseGl();
+        return report ? *report : sampling::SamplingReport{};
+    }
+
+    static renderer::HeadlessContext* s_context;
+};
+
+renderer::HeadlessContext* SamplerTest::s_context = nullptr;
+
+const char* const kSphere = "float sdf(vec3 p) { return length(p) - 0.5; }\n";
+
+sampling::SamplingJob job(std::uint64_t n, std::uint64_t seed = 7) {
+    sampling::SamplingJob j;
+    j.count = n;
+    j.seed = seed;
+    return j;
+}
+
+glm::vec3 at(const std::vector<float>& v, std::size_t i) { return {v[3 * i], v[3 * i + 1], v[3 * i + 2]}; }
+
+std::string fileBytes(const fs::path& path) {
+    std::ifstream stream(path, std::ios::binary);
+    std::stringstream buffer;
+    buffer << stream.rdbuf();
+    return buffer.str();
+}
+
+} // namespace
+
+TEST(SamplingBindings, CppConstantsMatchTheGlslFile) {
+    std::ifstream file(fs::path(SDFWB_SOURCE_DIR) / "shaders" / "sampling" / "bindings.glsl");
+    std::stringstream text;
+    text << file.rdbuf();
+    EXPECT_NE(text.str().find("SDFWB_BINDING_POSITIONS " + std::to_string(renderer::kBindingPositions)), std::string::npos);
+    EXPECT_NE(text.str().find("SDFWB_BINDING_DISTANCES " + std::to_string(renderer::kBindingDistances)), std::string::npos);
+    EXPECT_NE(text.str().find("SDFWB_BINDING_GRADIENTS " + std::to_string(renderer::kBindingGradients)), std::string::npos);
+}
+
+TEST_F(SamplerTest, EveryPatternMatchesTheSpheresClosedForm) {
+    for (const std::string& pattern : sampling::builtinPatterns()) {
+        sampling::SampleSet samples;
+        auto report = sample(kSphere, pattern, job(4000), samples);
+        EXPECT_EQ(report.rows, 4000u) << pattern;
+        EXPECT_EQ(report.badRows, 0u) << pattern;
+        double maxDistanceError = 0.0, maxGradientError = 0.0;
+        for (std::size_t i = 0; i < samples.size(); ++i) {
+            glm::vec3 p = at(samples.positions, i);
+            float r = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
+            maxDistanceError = std::max(maxDistanceError, double(std::abs(samples.distances[i] - (r - kRadius))));
+            if (r > 0.01f) {
+                glm::vec3 g = at(samples.gradients, i);
+                maxGradientError = std::max({maxGradientError, double(std::abs(g.x - p.x / r)), double(std::abs(g.y - p.y / r)),
+                                             double(std::abs(g.z - p.z / r))});
+            }
+        }
+        EXPECT_LT(maxDistanceError, 1e-6) << pattern;
+        EXPECT_LT(maxGradientError, 2e-3) << pattern << ": the raw gradient of a distance field has unit length";
+    }
+}
+
+TEST_F(SamplerTest, GridAndImageTakeTheFirstNOfTheRoundedUpLattice) {
+    sampling::SampleSet grid;
+    sample(kSphere, "grid", job(30), grid);  // 4^3 = 64 >= 30: side 4, coordinates -1, -1/3, 1/3, 1
+    EXPECT_FLOAT_EQ(grid.positions[0], -1.0f);
+    glm::vec3 p5 = at(grid.positions, 5);  // (1, 1, 0) in lattice units: x = 5 % 4 = 1, y = 5 / 4 = 1
+    EXPECT_NEAR(p5.x, -1.0f / 3.0f, 1e-6);
+    EXPECT_NEAR(p5.y, -1.0f / 3.0f, 1e-6);
+    EXPECT_NEAR(p5.z, -1.0f, 1e-6);
+    glm::vec3 p29 = at(grid.positions, 29);  // 29 = 1 + 3*4 + 1*16
+    EXPECT_NEAR(p29.x, -1.0f / 3.0f, 1e-6);
+    EXPECT_NEAR(p29.y, 1.0f, 1e-6);
+    EXPECT_NEAR(p29.z, -1.0f / 3.0f, 1e-6);
+
+    sampling::SampleSet image;
+    sample(kSphere, "image", job(10), image);  // 4^2 = 16 >= 10: rows from y = +1 down
+    for (std::size_t i = 0; i < image.size(); ++i) EXPECT_EQ(image.positions[3 * i + 2], 0.0f);
+    EXPECT_NEAR(at(image.positions, 0).y, 1.0f, 1e-6);
+    EXPECT_NEAR(at(image.positions, 4).y, 1.0f / 3.0f, 1e-6);
+    EXPECT_NEAR(at(image.positions, 7).x, 1.0f, 1e-6);
+}
+
+TEST_F(SamplerTest, JitterStaysWithinHalfACellAndRandFillsTheCube) {
+    sampling::SampleSet jitter, grid, uniform;
+    sample(kSphere, "jitter", job(1000), jitter);
+    sample(kSphere, "grid", job(1000), grid);
+    const float halfCell = 1.0f / 9.0f;  // side 10: cell 2/9
+    float largest = 0.0f;
+    for (std::size_t i = 0; i < 3 * jitter.size(); ++i) largest = std::max(largest, std::abs(jitter.positions[i] - grid.positions[i]));
+    EXPECT_LE(largest, halfCell + 1e-6f);
+    EXPECT_GT(largest, 0.8f * halfCell) << "jitter should use most of the half cell";
+
+    sample(kSphere, "rand", job(20000), uniform);
+    double mean = 0.0, inside = 0.0;
+    for (std::size_t i = 0; i < uniform.size(); ++i) {
+        glm::vec3 p = at(uniform.positions, i);
+        EXPECT_LE(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}), 1.0f);
+        mean += p.x;
+        inside += uniform.distances[i] < 0.0f;
+    }
+    EXPECT_NEAR(mean / 20000.0, 0.0, 0.02);
+    // The sphere takes (4/3 pi 0.5^3) / 8 = 6.5 % of the cube.
+    EXPECT_NEAR(inside / 20000.0, 0.0654, 0.006);
+}
+
+TEST_F(SamplerTest, SurfaceIsOnTheZeroSetAndNearIsAGaussianShell) {
+    sampling::SampleSet surface, near;
+    sample(kSphere, "surface", job(5000), surface);
+    float worst = 0.0f;
+    for (float d : surface.distances) worst = std::max(worst, std::abs(d));
+    EXPECT_LT(worst, 1e-5f);
+
+    sample(kSphere, "near", job(20000), near);
+    double sum = 0.0, squares = 0.0;
+    for (float d : near.distances) {
+        EXPECT_LE(std::abs(d), 0.3f);
+        sum += d;
+        squares += double(d) * d;
+    }
+    double mean = sum / 20000.0, deviation = std::sqrt(squares / 20000.0 - mean * mean);
+    EXPECT_NEAR(mean, 0.0, 2e-4);
+    EXPECT_NEAR(deviation, 0.005, 0.0003);
+}
+
+TEST_F(SamplerTest, MetropolisConcentratesOnTheZeroSet) {
+    sampling::SampleSet chain, uniform;
+    sample(kSphere, "metropolis", job(20000), chain);
+    sample(kSphere, "rand", job(20000), uniform);
+    auto within = [](const sampling::SampleSet& s, float band) {
+        double count = 0;
+        for (float d : s.distances) count += std::abs(d) < band;
+        return count / double(s.size());
+    };
+    // The target exp(-|f|/0.01) puts 1 - e^-3 = 95 % of its mass within 0.03 of the surface
+    // (slightly less: the shell's area grows with |f|).
+    EXPECT_GT(within(chain, 0.03f), 0.85);
+    EXPECT_LT(within(uniform, 0.03f), 0.10);
+}
+
+TEST_F(SamplerTest, CurvatureWeightingPrefersCurvedParts) {
+    // A box with rounded edges: the edges (radius 0.05, curvature 10) take a small share of the
+    // surface but should take a large share of metropolis_curvature's samples.
+    const char* roundBox = "float sdf(vec3 p) { vec3 q = abs(p) - vec3(0.45); return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0) - 0.05; }\n";
+    auto edgeShare = [](const sampling::SampleSet& s) {
+        double edges = 0;
+        for (std::size_t i = 0; i < s.size(); ++i) {
+            glm::vec3 p = at(s.positions, i);
+            int outside = (std::abs(p.x) > 0.45f) + (std::abs(p.y) > 0.45f) + (std::abs(p.z) > 0.45f);
+            edges += outside >= 2;
+        }
+        return edges / double(s.size());
+    };
+    sampling::SampleSet plain, curved;
+    sample(roundBox, "metropolis", job(20000), plain);
+    sample(roundBox, "metropolis_curvature", job(20000), curved);
+    EXPECT_GT(edgeShare(curved), 2.0 * edgeShare(plain)) << "plain " << edgeShare(plain) << ", curved " << edgeShare(curved);
+}
+
+TEST_F(SamplerTest, MissesBecomeNanRowsAndAreCounted) {
+    sampling::SampleSet samples;
+    auto report = sample("float sdf(vec3 p) { return 1.0; }\n", "surface", job(300), samples);
+    EXPECT_EQ(report.badRows, 300u);
+    EXPECT_TRUE(std::isnan(samples.distances[0]) && std::isnan(samples.positions[0]) && std::isnan(samples.gradients[0]));
+}
+
+TEST_F(SamplerTest, SameSeedSameRowsWhateverTheChunkSize) {
+    for (const char* pattern : {"rand", "near", "metropolis"}) {
+        sampling::SampleSet a, b, c;
+        sampling::SamplingJob j = job(5000, 42);
+        j.chunkSize = 5000;
+        sample(kSphere, pattern, j, a);
+        j.chunkSize = 777;
+        sample(kSphere, pattern, j, b);
+        EXPECT_EQ(a.positions, b.positions) << pattern;
+        EXPECT_EQ(a.distances, b.distances) << pattern;
+        EXPECT_EQ(a.gradients, b.gradients) << pattern;
+        sample(kSphere, pattern, job(5000, 43), c);
+        EXPECT_NE(a.positions, c.positions) << pattern << ": another seed must give other points";
+    }
+}
+
+TEST_F(SamplerTest, AnimatedSdfsUseTheTime) {
+    const char* pulsing = "float sdf(vec3 p, float t) { return length(p) - 0.5 - 0.2 * sin(t); }\n";
+    sampling::SampleSet early, late;
+    sampling::SamplingJob j = job(100);
+    sample(pulsing, "rand", j, early);
+    j.time = 1.5f;
+    sample(pulsing, "rand", j, late);
+    EXPECT_EQ(early.positions, late.positions);
+    EXPECT_NEAR(early.distances[0] - late.distances[0], 0.2 * std::sin(1.5), 1e-5);
+}
+
+TEST_F(SamplerTest, ShardsMergeIntoTheSingleRunsFileByteForByte) {
+    renderer::SampleCompute compute;
+    auto sampler = sampling::findSampler("near", {});
+    ASSERT_TRUE(sampler.hasValue());
+    ASSERT_FALSE(shaders::hasErrors(compute.build(prepare(kSphere), *sampler)));
+    sampling::SampleMetadata metadata;
+    metadata.sdf = "sphere";
+    metadata.pattern = "near";
+    metadata.version = "test";
+    for (sampling::SampleFormat format : {sampling::SampleFormat::Bin, sampling::SampleFormat::Npz, sampling::SampleFormat::Ply}) {
+        std::string ext = std::string(".") + sampling::formatName(format);
+        fs::path single = fs::temp_directory_path() / ("sdfwb-test-single" + ext);
+        sampling::SamplingJob j = job(10007, 5);
+        j.chunkSize = 4096;
+        ASSERT_TRUE(sampling::sampleToFile(compute, j, single, format, metadata, {}).hasValue());
+        std::vector<fs::path> parts;
+        for (std::uint32_t k = 0; k < 3; ++k) {
+            sampling::SamplingJob shard = j;
+            shard.shardIndex = k;
+            shard.shardCount = 3;
+            shard.chunkSize = 1000;
+            parts.push_back(fs::temp_directory_path() / ("sdfwb-test-shard" + std::to_string(k) + ext));
+            auto report = sampling::sampleToFile(compute, shard, parts.back(), format, metadata, {});
+            ASSERT_TRUE(report.hasValue());
+            EXPECT_EQ(report->firstIndex, 10007u * k / 3);
+        }
+        fs::path merged = fs::temp_directory_path() / ("sdfwb-test-merged" + ext);
+        auto report = sampling::mergeSampleFiles(merged, format, parts);
+        ASSERT_TRUE(report.hasValue()) << report.error().message;
+        EXPECT_EQ(fileBytes(merged), fileBytes(single)) << ext;
+        for (const fs::path& p : parts) fs::remove(p);
+        fs::remove(single);
+        fs::remove(merged);
+    }
+    compute.releaseGl();
+}
+
+TEST_F(SamplerTest, CancellingLeavesNoFile) {
+    renderer::SampleCompute compute;
+    auto sampler = sampling::findSampler("rand", {});
+    ASSERT_FALSE(shaders::hasErrors(compute.build(prepare(kSphere), *sampler)));
+    fs::path path = fs::temp_directory_path() / "sdfwb-test-cancelled.npz";
+    fs::remove(path);
+    CancelToken cancel;
+    ProgressSink progress{[&](std::uint64_t done, std::uint64_t) { if (done > 0) cancel.cancel(); }, &cancel};
+    sampling::SamplingJob j = job(100000);
+    j.chunkSize = 1000;
+    auto report = sampling::sampleToFile(compute, j, path, sampling::SampleFormat::Npz, {}, progress);
+    ASSERT_TRUE(report.hasValue());
+    EXPECT_TRUE(report->cancelled);
+    EXPECT_LT(report->rows, 100000u);
+    EXPECT_FALSE(fs::exists(path));
+    for (const auto& entry : fs::directory_iterator(fs::temp_directory_path()))
+        EXPECT_EQ(entry.path().filename().string().find(".sdfwb-test-cancelled.npz.partial"), std::string::npos);
+    compute.releaseGl();
+}
+
+TEST_F(SamplerTest, UserSamplerFilesWorkAndBadOnesAreNamed) {
+    fs::path folder = fs::temp_directory_path() / "sdfwb-test-samplers";
+    fs::create_directories(folder);
+    std::ofstream(folder / "diagonal.glsl") << "bool samplePosition(uint index, out vec3 position) {\n"
+                                               "    float t = float(index) / float(max(u_sampleCount, 2u) - 1u) * 2.0 - 1.0;\n"
+                                               "    position = vec3(t);\n    return true;\n}\n";
+    std::ofstream(folder / "broken.glsl") << "vec3 somethingElse(uint i) { return vec3(0.0); }\n";
+    auto byName = sampling::findSampler("diagonal", {folder});
+    ASSERT_TRUE(byName.hasValue()) << byName.error().message;
+    renderer::SampleCompute compute;
+    ASSERT_FALSE(shaders::hasErrors(compute.build(prepare(kSphere), *byName)));
+    sampling::SampleSet out;
+    out.resize(3);
+    ASSERT_TRUE(sampling::sampleInto(compute, job(3), out.positions.data(), out.distances.data(), out.gradients.data(), {}).hasValue());
+    EXPECT_FLOAT_EQ(out.positions[0], -1.0f);
+    EXPECT_FLOAT_EQ(out.positions[3], 0.0f);
+    compute.releaseGl();
+
+    auto broken = sampling::findSampler((folder / "broken.glsl").string(), {});
+    ASSERT_FALSE(broken.hasValue());
+    EXPECT_NE(broken.error().message.find("samplePosition"), std::string::npos);
+    auto unknown = sampling::findSampler("spiral", {folder});
+    ASSERT_FALSE(unknown.hasValue());
+    EXPECT_NE(unknown.error().message.find("'spiral'"), std::string::npos);
+    fs::remove_all(folder);
+}
