@@ -5,23 +5,14 @@ type: conservative
 animated: no
 author: sdfwb authors
 license: CC0-1.0
-notes: A tortoise walking towards +X: a domed shell covered in raised plates (a ring of
-  bumps blended onto the dome with a tight smooth union, so creases show between plates)
-  above a flat rim and belly plate, a head on a neck, four stubby legs and a short tail.
+notes: A tortoise walking towards +X: a domed shell divided into plates by shallow grooves
+  (thin slabs carved only near the dome's surface), above a flat rim and belly plate, a head on a neck, four stubby legs and a short tail.
   Ellipsoid bounds, unions and smooth unions: conservative.
 */
 #include "../lib/modelling.glsl"
 
 const vec3 DOME_CENTRE = vec3(-0.05, -0.2, 0.0);
 const vec3 DOME_RADII = vec3(0.64, 0.5, 0.52);
-
-// A shell plate: a flattened bump sitting on the dome above (x, z).
-float plate(vec3 p, float x, float z) {
-    vec2 u = vec2(x, z) / DOME_RADII.xz;
-    float y = DOME_RADII.y * sqrt(max(1.0 - dot(u, u), 0.0));
-    vec3 c = DOME_CENTRE + vec3(x, y - 0.05, z);
-    return sdEllipsoid(p - c, vec3(0.18, 0.08, 0.18));
-}
 
 float sdf(vec3 p) {
     // Shell: the upper half of an ellipsoid on a flat rim.
@@ -30,11 +21,14 @@ float sdf(vec3 p) {
     float rim = sdEllipsoid(p - DOME_CENTRE, vec3(0.68, 0.07, 0.56));
     float belly = sdEllipsoid(p - DOME_CENTRE - vec3(0.0, -0.06, 0.0), vec3(0.56, 0.1, 0.44));
 
-    // Plates: a row of three along the spine and three down each flank.
-    float plates = min(plate(p, -0.28, 0.0), min(plate(p, 0.0, 0.0), plate(p, 0.28, 0.0)));
+    // Plates: shallow grooves cut into the dome along four vertical planes and one level ring
+    // split it into scutes. A groove removes the part of a thin slab that lies within `depth`
+    // of the dome's surface.
     vec3 m = vec3(p.x, p.y, abs(p.z));
-    plates = min(plates, min(plate(m, -0.3, 0.26), min(plate(m, 0.0, 0.3), plate(m, 0.3, 0.26))));
-    float shell = smoothMin(dome, plates, 0.02);
+    float slabs = min(abs(abs(p.x + 0.04) - 0.2), abs(m.z - 0.19));
+    slabs = min(slabs, abs(p.y + 0.02)) - 0.012;
+    float groove = max(slabs, -dome - 0.025);
+    float shell = smoothSubtract(dome, groove, 0.01);
     shell = smoothMin(shell, min(rim, belly), 0.04);
 
     // Head and neck poking out in front, with eyes.

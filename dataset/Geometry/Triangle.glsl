@@ -28,8 +28,8 @@ float triangleDistance(vec3 p, vec3 a, vec3 b, vec3 c) {
 
 float sdf(vec3 p) {
     const float halfThickness = 0.05;
-    const vec3 top = vec3(-0.15, 0.85, -0.25);
-    const vec3 lowerLeft = vec3(0.35, -0.75, 0.85);
-    const vec3 lowerRight = vec3(-0.35, -0.6, -0.85);
+    const vec3 top = vec3(-0.09, 0.86, -0.18);
+    const vec3 lowerLeft = vec3(-0.42, -0.66, 0.85);
+    const vec3 lowerRight = vec3(0.62, -0.58, -0.72);
     return triangleDistance(p, top, lowerLeft, lowerRight) - halfThickness;
 }

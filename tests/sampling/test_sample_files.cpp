@@ -230,3 +230,21 @@ TEST(Merge, ShardsInAnyOrderGiveTheSingleRunsFile) {
         fs::remove(merged);
     }
 }
+
+TEST(SampleFiles, Zip64NpzIsReadByNumpyAndByUs) {
+    fs::path path = temporary("zip64.npz");
+    SampleSet samples = makeSamples(100);
+    SampleWriter::Options options;
+    options.forceZip64 = true;
+    auto writer = SampleWriter::create(path, SampleFormat::Npz, 100, makeMetadata(0, 100), options);
+    ASSERT_TRUE(writer.hasValue());
+    ASSERT_TRUE((*writer)->append(samples.positions.data(), samples.distances.data(), samples.gradients.data(), 100).hasValue());
+    ASSERT_TRUE((*writer)->commit().hasValue());
+    auto read = readSamples(path);
+    ASSERT_TRUE(read.hasValue()) << read.error().message;
+    EXPECT_EQ(read->gradients, samples.gradients);
+    std::string check = "/usr/bin/python3 -c \"import numpy as np; z = np.load('" + path.string() +
+                        "', allow_pickle=False); assert z['position'].shape == (100, 3); assert float(z['distance'][99]) == 49.5\"";
+    EXPECT_EQ(std::system(check.c_str()), 0) << "numpy could not read the ZIP64 archive";
+    fs::remove(path);
+}

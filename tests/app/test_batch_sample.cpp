@@ -1,0 +1,160 @@
+// `sdfwb --batch sample` as a user runs it: the paper's --sample form, job files, Ctrl-C, and
+// bounded memory for N = 50 million. Runs the real binary without a display (EGL).
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+    int exitCode = -1;
+    std::string output;
+};
+
+Result run(const std::string& arguments) {
+    std::string command = "env -u DISPLAY " + std::string(SDFWB_BINARY) + " " + arguments + " 2>&1";
+    Result result;
+    FILE* pipe = popen(command.c_str(), "r");
+    std::array<char, 4096> buffer;
+    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) result.output.append(buffer.data(), n);
+    int status = pclose(pipe);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+fs::path scratch(const std::string& name) {
+    fs::path folder = fs::temp_directory_path() / "sdfwb-batch-sample-test";
+    fs::create_directories(folder);
+    fs::remove(folder / name);
+    return folder / name;
+}
+
+bool partialFilesIn(const fs::path& folder) {
+    for (const auto& entry : fs::directory_iterator(folder))
+        if (entry.path().filename().string().find(".partial-") != std::string::npos) return true;
+    return false;
+}
+
+// Runs the binary directly (no shell) and returns its exit status and peak resident memory.
+std::pair<int, long> runMeasured(const std::vector<std::string>& arguments, int interruptAfterMilliseconds = -1) {
+    pid_t child = fork();
+    if (child == 0) {
+        unsetenv("DISPLAY");
+        std::vector<char*> argv;
+        std::string binary = SDFWB_BINARY;
+        argv.push_back(binary.data());
+        std::vector<std::string> copy = arguments;
+        for (std::string& a : copy) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        execv(binary.c_str(), argv.data());
+        _exit(127);
+    }
+    if (interruptAfterMilliseconds >= 0) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(interruptAfterMilliseconds));
+        kill(child, SIGINT);
+    }
+    int status = 0;
+    struct rusage usage {};
+    wait4(child, &status, 0, &usage);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, usage.ru_maxrss};
+}
+
+} // namespace
+
+TEST(BatchSample, PaperFormWritesTheBinLayout) {
+    fs::path out = scratch("paper.bin");
+    Result r = run("--sample rand 1000 sphere " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(fs::file_size(out), 4u + 28u * 1000u);
+    fs::path noExtension = scratch("paper_output");
+    r = run("--sample grid 27 Sphere " + noExtension.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(fs::file_size(noExtension), 4u + 28u * 27u) << "the original wrote .bin whatever the name";
+}
+
+TEST(BatchSample, BadArgumentsAreNamedAndWriteNothing) {
+    fs::path out = scratch("bad.npz");
+    struct Case {
+        std::string arguments, culprit;
+    } cases[] = {{"--sdf sphere --pattern rand -n 0 --output " + out.string(), "-n"},
+                 {"--sdf sphere --pattern spiral -n 10 --output " + out.string(), "'spiral'"},
+                 {"--sdf sphere --pattern rand -n 10 --output " + out.string() + " --shard 3/3", "--shard"},
+                 {"--sdf sphere --pattern rand -n 10 --output " + out.string() + " --shard x", "--shard"},
+                 {"--sdf sphere --pattern rand -n 10 --output " + out.string() + " --format hdf5", "--format"},
+                 {"--sdf sphere --pattern rand -n 10 --output " + scratch("bad.xyz").string(), ".bin, .npz or .ply"},
+                 {"--sdf nowhere --pattern rand -n 10 --output " + out.string(), "'nowhere'"},
+                 {"--sdf sphere --pattern rand -n 5000000000 --output " + scratch("big.bin").string(), "limit"}};
+    for (const Case& c : cases) {
+        Result r = run("--batch sample " + c.arguments);
+        EXPECT_EQ(r.exitCode, 2) << c.arguments << "\n" << r.output;
+        EXPECT_NE(r.output.find(c.culprit), std::string::npos) << c.arguments << "\n" << r.output;
+    }
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_FALSE(fs::exists(scratch("big.bin")));
+}
+
+TEST(BatchSample, JobFileRunsEveryStepAndStopsAtTheFirstFailure) {
+    fs::path job = scratch("jobs.txt");
+    fs::path a = scratch("job-a.npz"), b = scratch("job-b.png"), merged = scratch("job-merged.npz");
+    fs::path s0 = scratch("job-s0.npz"), s1 = scratch("job-s1.npz");
+    std::ofstream(job) << "# sample, render, shard and merge in one file\n"
+                       << "sample --sdf torus --pattern surface -n 2000 --output '" << a.string() << "' --quiet\n\n"
+                       << "render --sdf box --output " << b.string() << " --size 64x36 --quiet   # a comment\n"
+                       << "sample --sdf torus --pattern surface -n 2000 --output " << s0.string() << " --shard 0/2 -q\n"
+                       << "sample --sdf torus --pattern surface -n 2000 --output " << s1.string() << " --shard 1/2 -q\n"
+                       << "merge --output " << merged.string() << " " << s1.string() << " " << s0.string() << " -q\n";
+    Result r = run("--batch " + job.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(fs::exists(a) && fs::exists(b));
+    std::ifstream left(a, std::ios::binary), right(merged, std::ios::binary);
+    std::string leftBytes((std::istreambuf_iterator<char>(left)), {}), rightBytes((std::istreambuf_iterator<char>(right)), {});
+    EXPECT_EQ(leftBytes, rightBytes) << "merged shards must equal the single run";
+
+    std::ofstream(job) << "list -q\nsample --sdf torus --pattern rand -n 10 --output " << scratch("never.npz").string() << " --bogus\n";
+    r = run("--batch " + job.string());
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("jobs.txt:2"), std::string::npos) << r.output;
+    std::ofstream(job) << "sample --sdf 'unterminated\n";
+    r = run("--batch " + job.string());
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("jobs.txt:1: unterminated"), std::string::npos) << r.output;
+    std::ofstream(job) << "rm -rf /tmp/x\n";
+    r = run("--batch " + job.string());
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("unknown command 'rm'"), std::string::npos) << r.output;
+}
+
+TEST(BatchSample, CtrlCLeavesNoPartialFile) {
+    fs::path out = scratch("interrupted.npz");
+    // Long enough to be interrupted: 200 M metropolis samples would take minutes.
+    auto [exitCode, peak] = runMeasured({"--batch", "sample", "--sdf", "torus", "--pattern", "metropolis", "-n", "200000000",
+                                         "--output", out.string(), "--chunk", "65536", "--quiet"},
+                                        1500);
+    EXPECT_EQ(exitCode, 130);
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_FALSE(partialFilesIn(out.parent_path()));
+}
+
+TEST(BatchSample, FiftyMillionSamplesStayUnder512MiB) {
+    fs::path out = scratch("fifty-million.bin");
+    auto [exitCode, peakKiB] =
+        runMeasured({"--batch", "sample", "--sdf", "sphere", "--pattern", "rand", "-n", "50000000", "--output", out.string(), "--quiet"});
+    ASSERT_EQ(exitCode, 0);
+    EXPECT_EQ(fs::file_size(out), 4u + 28u * 50000000u);
+    EXPECT_LT(peakKiB, 512 * 1024) << "peak resident memory " << peakKiB / 1024 << " MiB";
+    std::printf("peak resident memory for N = 5e7: %ld MiB\n", peakKiB / 1024);
+    fs::remove(out);
+}
