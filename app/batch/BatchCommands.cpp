@@ -241,7 +241,11 @@ int runSample(const SampleCommand& command, const OutputOptions& output) {
     metadata.version = SDFWB_VERSION;
     CancelToken cancel;
     ProgressBar bar(!output.quiet && !output.json);
-    ProgressSink progress{[&](std::uint64_t done, std::uint64_t total) { bar.update(done, total); }, &cancel};
+    ProgressSink progress{[&](std::uint64_t done, std::uint64_t total) {
+                              bar.update(done, total);
+                              if (output.progressLines) std::fprintf(stderr, "progress %llu %llu\n", (unsigned long long)done, (unsigned long long)total);
+                          },
+                          &cancel};
     Expected<sampling::SamplingReport> report = [&] {
         InterruptScope interrupts(cancel);
         return sampling::sampleToFile(compute, job, outputPath, *format, metadata, progress);

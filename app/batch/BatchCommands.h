@@ -20,8 +20,9 @@ enum ExitCode : int {
 };
 
 struct OutputOptions {
-    bool quiet = false;  // only errors
-    bool json = false;   // machine-readable report on stdout
+    bool quiet = false;          // only errors
+    bool json = false;           // machine-readable report on stdout
+    bool progressLines = false;  // "progress DONE TOTAL" lines on stderr, for front ends (the GUI)
 };
 
 struct RenderJob {

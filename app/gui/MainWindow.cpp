@@ -1,5 +1,6 @@
 #include "MainWindow.h"
 
+#include "SamplingController.h"
 #include "SdfDocument.h"
 
 #include <core/Log.h>
@@ -60,6 +61,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_viewport, &widgets::ViewportWidget::frameRendered, this,
             [this](double milliseconds) { m_frameTime->setText(tr("frame %1 ms").arg(milliseconds, 0, 'f', 1)); });
 
+    m_sampling = new SamplingController(this, [this] { return m_document->path(); }, this);
+
     createMenus();
     restoreLayout();
     updateTitle();
@@ -93,6 +96,10 @@ void MainWindow::createMenus() {
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
+
+    QMenu* tools = menuBar()->addMenu(tr("&Tools"));
+    QAction* sample = tools->addAction(tr("&Sample SDF..."), m_sampling, &SamplingController::showDialog);
+    sample->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(m_editorDock->toggleViewAction());

@@ -14,6 +14,7 @@ class ViewportWidget;
 
 namespace sdfwb::app {
 
+class SamplingController;
 class SdfDocument;
 
 class MainWindow : public QMainWindow {
@@ -28,6 +29,7 @@ public:
     widgets::ViewportWidget* viewport() const { return m_viewport; }
     widgets::GlslEditor* editor() const { return m_editor; }
     SdfDocument* document() const { return m_document; }
+    SamplingController* sampling() const { return m_sampling; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -44,6 +46,7 @@ private:
     QLabel* m_frameTime = nullptr;
     QLabel* m_diagnosticSummary = nullptr;
     SdfDocument* m_document = nullptr;
+    SamplingController* m_sampling = nullptr;
 };
 
 } // namespace sdfwb::app

@@ -2,7 +2,9 @@
 // renderer as the batch path, and a typed error shows a diagnostic while the last good shape stays.
 
 #include <gui/MainWindow.h>
+#include <gui/SamplingController.h>
 #include <gui/SdfDocument.h>
+#include <widgets/SamplingDialog.h>
 #include <widgets/GlslEditor.h>
 #include <widgets/ViewportWidget.h>
 
@@ -11,6 +13,9 @@
 #include <QApplication>
 #include <QDir>
 #include <QElapsedTimer>
+#include <QFile>
+#include <QLabel>
+#include <QPushButton>
 #include <QImage>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
@@ -96,6 +101,51 @@ TEST(MainWindow, TypedErrorShowsADiagnosticAndKeepsTheLastGoodShape) {
     long after = foreground(window.viewport()->grabFramebuffer(), kBackground);
     EXPECT_NEAR(double(after), double(before), double(before) * 0.01) << "the last good shape must stay on screen";
     window.grab().save(QDir::temp().filePath("sdfwb-gui-diagnostic.png"));
+}
+
+TEST(SamplingDialog, SamplesTheOpenSdfAndCancelsCleanly) {
+    app::MainWindow window;
+    window.show();
+    ASSERT_TRUE(window.openFile(datasetFile("Geometry/Torus.glsl")));
+    app::SamplingController* sampling = window.sampling();
+    sampling->setExecutable(SDFWB_BINARY);
+    sampling->showDialog();
+    widgets::SamplingDialog* dialog = sampling->dialog();
+    ASSERT_NE(dialog, nullptr);
+
+    QString output = QDir::temp().filePath("sdfwb-gui-samples.npz");
+    QFile::remove(output);
+    widgets::SamplingSettings settings;
+    settings.pattern = "near";
+    settings.count = 20000;
+    settings.output = output;
+    dialog->setSettings(settings);
+    bool done = false, ok = false;
+    QObject::connect(sampling, &app::SamplingController::finished, [&](bool success, const QString&) { done = true; ok = success; });
+    dialog->findChild<QPushButton*>("start")->click();
+    ASSERT_TRUE(waitFor([&] { return done; }, 60000));
+    EXPECT_TRUE(ok) << dialog->findChild<QLabel*>("message")->text().toStdString();
+    EXPECT_TRUE(QFile::exists(output));
+    EXPECT_TRUE(dialog->findChild<QLabel*>("message")->text().contains("20000 samples"));
+    dialog->grab().save(QDir::temp().filePath("sdfwb-gui-sampling-dialog.png"));
+
+    // A long run, cancelled: no file.
+    QString cancelled = QDir::temp().filePath("sdfwb-gui-cancelled.npz");
+    QFile::remove(cancelled);
+    settings.pattern = "metropolis";
+    settings.count = 400000000;
+    settings.output = cancelled;
+    dialog->setSettings(settings);
+    done = false;
+    dialog->findChild<QPushButton*>("start")->click();
+    ASSERT_TRUE(waitFor([&] { return sampling->isRunning(); }));
+    QThread::msleep(1500);
+    dialog->findChild<QPushButton*>("cancel")->click();
+    ASSERT_TRUE(waitFor([&] { return done; }, 30000));
+    EXPECT_FALSE(ok);
+    EXPECT_TRUE(dialog->findChild<QLabel*>("message")->text().contains("Cancelled"));
+    EXPECT_FALSE(QFile::exists(cancelled));
+    QFile::remove(output);
 }
 
 int main(int argc, char** argv) {

@@ -1,0 +1,62 @@
+#pragma once
+// The sampling dialog: pattern, count, seed, time, output file and format, with progress and
+// Cancel. It only collects settings and shows progress; the controller that owns it runs the job.
+// UI thread only.
+
+#include <QDialog>
+#include <QString>
+
+#include <cstdint>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+
+namespace sdfwb::widgets {
+
+struct SamplingSettings {
+    QString pattern = "surface";  // built-in name or a sampler file path
+    std::uint64_t count = 1000000;
+    std::uint64_t seed = 0;
+    double time = 0.0;
+    QString output;               // .bin, .npz or .ply
+    QString format;               // empty: from the extension
+};
+
+class SamplingDialog : public QDialog {
+    Q_OBJECT
+public:
+    SamplingDialog(const QStringList& patterns, QWidget* parent = nullptr);
+
+    void setSdfName(const QString& name);
+    SamplingSettings settings() const;
+    void setSettings(const SamplingSettings& settings);
+
+    // Controller feedback.
+    void setRunning(bool running);
+    void setProgress(std::uint64_t done, std::uint64_t total);
+    void setMessage(const QString& message, bool error);
+
+signals:
+    void startRequested(const sdfwb::widgets::SamplingSettings& settings);
+    void cancelRequested();
+
+private:
+    QLabel* m_sdf = nullptr;
+    QComboBox* m_pattern = nullptr;
+    QLineEdit* m_count = nullptr;
+    QLineEdit* m_seed = nullptr;
+    QDoubleSpinBox* m_time = nullptr;
+    QLineEdit* m_output = nullptr;
+    QComboBox* m_format = nullptr;
+    QProgressBar* m_progress = nullptr;
+    QLabel* m_message = nullptr;
+    QPushButton* m_start = nullptr;
+    QPushButton* m_cancel = nullptr;
+};
+
+} // namespace sdfwb::widgets

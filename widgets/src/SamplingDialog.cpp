@@ -1,0 +1,131 @@
+#include <widgets/SamplingDialog.h>
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QRegularExpressionValidator>
+#include <QVBoxLayout>
+
+namespace sdfwb::widgets {
+
+SamplingDialog::SamplingDialog(const QStringList& patterns, QWidget* parent) : QDialog(parent) {
+    setWindowTitle(tr("Sample SDF"));
+    setObjectName("SamplingDialog");
+    auto* form = new QFormLayout;
+    m_sdf = new QLabel;
+    form->addRow(tr("SDF:"), m_sdf);
+    m_pattern = new QComboBox;
+    m_pattern->setEditable(true);  // a sampler file path may be typed too
+    m_pattern->addItems(patterns);
+    m_pattern->setObjectName("pattern");
+    form->addRow(tr("Pattern:"), m_pattern);
+    auto* digits = new QRegularExpressionValidator(QRegularExpression("[0-9]{1,19}"), this);
+    m_count = new QLineEdit("1000000");
+    m_count->setValidator(digits);
+    m_count->setObjectName("count");
+    form->addRow(tr("Samples (N):"), m_count);
+    m_seed = new QLineEdit("0");
+    m_seed->setValidator(digits);
+    m_seed->setObjectName("seed");
+    form->addRow(tr("Seed:"), m_seed);
+    m_time = new QDoubleSpinBox;
+    m_time->setRange(-1e6, 1e6);
+    m_time->setDecimals(3);
+    m_time->setSuffix(" s");
+    form->addRow(tr("Time:"), m_time);
+    auto* outputRow = new QHBoxLayout;
+    m_output = new QLineEdit;
+    m_output->setObjectName("output");
+    auto* browse = new QPushButton(tr("Browse..."));
+    outputRow->addWidget(m_output, 1);
+    outputRow->addWidget(browse);
+    form->addRow(tr("Output file:"), outputRow);
+    m_format = new QComboBox;
+    m_format->addItems({tr("from extension"), "bin", "npz", "ply"});
+    form->addRow(tr("Format:"), m_format);
+
+    m_progress = new QProgressBar;
+    m_progress->setRange(0, 1000);
+    m_progress->setValue(0);
+    m_message = new QLabel;
+    m_message->setWordWrap(true);
+    m_message->setObjectName("message");
+
+    auto* buttons = new QDialogButtonBox;
+    m_start = buttons->addButton(tr("Sample"), QDialogButtonBox::AcceptRole);
+    m_start->setObjectName("start");
+    m_cancel = buttons->addButton(tr("Cancel run"), QDialogButtonBox::ActionRole);
+    m_cancel->setObjectName("cancel");
+    m_cancel->setEnabled(false);
+    QPushButton* close = buttons->addButton(QDialogButtonBox::Close);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addWidget(m_progress);
+    layout->addWidget(m_message);
+    layout->addWidget(buttons);
+
+    connect(browse, &QPushButton::clicked, this, [this] {
+        QString path = QFileDialog::getSaveFileName(this, tr("Samples file"), m_output->text(), tr("Samples (*.npz *.bin *.ply)"));
+        if (!path.isEmpty()) m_output->setText(path);
+    });
+    connect(m_start, &QPushButton::clicked, this, [this] {
+        if (m_output->text().trimmed().isEmpty()) {
+            setMessage(tr("Choose an output file (.npz, .bin or .ply)."), true);
+            return;
+        }
+        emit startRequested(settings());
+    });
+    connect(m_cancel, &QPushButton::clicked, this, &SamplingDialog::cancelRequested);
+    connect(close, &QPushButton::clicked, this, [this] {
+        if (m_cancel->isEnabled()) emit cancelRequested();
+        reject();
+    });
+}
+
+void SamplingDialog::setSdfName(const QString& name) { m_sdf->setText(name); }
+
+SamplingSettings SamplingDialog::settings() const {
+    SamplingSettings s;
+    s.pattern = m_pattern->currentText().trimmed();
+    s.count = m_count->text().toULongLong();
+    s.seed = m_seed->text().toULongLong();
+    s.time = m_time->value();
+    s.output = m_output->text().trimmed();
+    s.format = m_format->currentIndex() == 0 ? QString() : m_format->currentText();
+    return s;
+}
+
+void SamplingDialog::setSettings(const SamplingSettings& s) {
+    m_pattern->setCurrentText(s.pattern);
+    m_count->setText(QString::number(s.count));
+    m_seed->setText(QString::number(s.seed));
+    m_time->setValue(s.time);
+    m_output->setText(s.output);
+    int format = m_format->findText(s.format);
+    m_format->setCurrentIndex(format < 0 ? 0 : format);
+}
+
+void SamplingDialog::setRunning(bool running) {
+    m_start->setEnabled(!running);
+    m_cancel->setEnabled(running);
+    if (running) m_progress->setValue(0);
+}
+
+void SamplingDialog::setProgress(std::uint64_t done, std::uint64_t total) {
+    m_progress->setValue(total ? int(1000.0 * double(done) / double(total)) : 0);
+}
+
+void SamplingDialog::setMessage(const QString& message, bool error) {
+    m_message->setText(message);
+    m_message->setStyleSheet(error ? "color: #b00020;" : "");
+}
+
+} // namespace sdfwb::widgets
