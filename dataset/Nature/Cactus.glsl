@@ -24,11 +24,11 @@ float sdf(vec3 p) {
     float trunk = ribbedColumn(p, -0.82, 0.55, 0.2);
 
     // Right arm (towards +X): out, then up.
-    float elbowR = sdCapsule(p, vec3(0.0, -0.12, 0.0), vec3(0.34, -0.12, 0.0), 0.11);
-    float armR = ribbedColumn(p - vec3(0.36, 0.0, 0.0), -0.12, 0.3, 0.12);
+    float elbowR = sdCapsule(p, vec3(0.0, -0.12, 0.0), vec3(0.42, -0.12, 0.0), 0.11);
+    float armR = ribbedColumn(p - vec3(0.44, 0.0, 0.0), -0.12, 0.3, 0.12);
     // Left arm (towards -X), higher and shorter.
-    float elbowL = sdCapsule(p, vec3(0.0, 0.1, 0.0), vec3(-0.3, 0.1, 0.0), 0.1);
-    float armL = ribbedColumn(p - vec3(-0.32, 0.0, 0.0), 0.1, 0.42, 0.11);
+    float elbowL = sdCapsule(p, vec3(0.0, 0.1, 0.0), vec3(-0.38, 0.1, 0.0), 0.1);
+    float armL = ribbedColumn(p - vec3(-0.4, 0.0, 0.0), 0.1, 0.42, 0.11);
     float arms = min(smoothMin(elbowR, armR, 0.06), smoothMin(elbowL, armL, 0.06));
 
     float cactus = smoothMin(trunk, arms, 0.06);

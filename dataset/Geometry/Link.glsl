@@ -1,0 +1,28 @@
+/* sdfwb
+name: Link
+category: Geometry
+type: exact
+animated: no
+author: sdfwb authors
+license: CC0-1.0
+notes: Chain link standing upright, its plane turned 30 degrees from +X towards +Z. The core
+  curve is a stadium (two half circles of radius 0.42 joined by straight runs of length 0.64) and
+  the tube radius is 0.16. Clamping the vertical coordinate into the straight run maps a point to
+  where it sees a plain circle, and for a convex stadium that gives the exact distance to the curve
+  (the straight runs are nearest beside them, the half circles above and below). The radius is
+  below the curve's radius of curvature, so subtracting it stays exact inside the tube.
+*/
+float sdf(vec3 p) {
+    const float loopRadius = 0.42;     // radius of the two half circles of the core curve
+    const float halfStraight = 0.32;   // half length of the straight runs
+    const float tubeRadius = 0.16;
+    // Rotate about Y: the link's plane is spanned by `across` and Y, with normal `facing`.
+    const vec3 facing = vec3(0.8660254, 0.0, 0.5);
+    const vec3 across = vec3(-0.5, 0.0, 0.8660254);
+    vec3 local = vec3(dot(p, across), p.y, dot(p, facing));
+
+    // Remove the straight run: inside it the nearest curve point is level with the point.
+    vec2 inPlane = vec2(local.x, max(abs(local.y) - halfStraight, 0.0));
+    vec2 toCurve = vec2(length(inPlane) - loopRadius, local.z);
+    return length(toCurve) - tubeRadius;
+}
