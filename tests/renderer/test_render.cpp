@@ -120,7 +120,7 @@ TEST_F(RendererTest, EveryDatasetShapeRenders) {
     dataset::Catalogue catalogue = dataset::Catalogue::scan(fs::path(SDFWB_SOURCE_DIR) / "dataset");
     ASSERT_FALSE(catalogue.entries().empty());
     shaders::IncludeOptions options;
-    options.libraryRoots = {fs::path(SDFWB_SOURCE_DIR) / "shaders" / "lib"};
+    options.libraryRoots = {fs::path(SDFWB_SOURCE_DIR) / "shaders" / "lib", fs::path(SDFWB_SOURCE_DIR) / "dataset"};
     renderer::OffscreenRenderer offscreen;
     for (const dataset::Entry& entry : catalogue.entries()) {
         renderer::SdfRenderer sdfRenderer;
