@@ -124,7 +124,7 @@ int runRender(const RenderJob& job, const OutputOptions& output) {
     if (!context) { printError(context.error().message); return kExitNoGl; }
 
     renderer::SdfRenderer sdfRenderer;
-    sdfRenderer.setTrace(job.trace);
+    (void)sdfRenderer.setTrace(job.trace);
     (void)sdfRenderer.setShading(job.shading);
     auto diagnostics = sdfRenderer.setSdf(sdf);
     if (shaders::hasErrors(diagnostics)) {

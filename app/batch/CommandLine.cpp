@@ -103,6 +103,9 @@ int runRenderCommand(const Arguments& arguments) {
     app.add_option("--fov", job.camera.fovYDegrees, "vertical field of view in degrees")->capture_default_str()->check(CLI::Range(1.0f, 179.0f));
     app.add_option("--max-steps", job.trace.maxSteps, "sphere-tracing step budget per ray")->capture_default_str()->check(CLI::Range(1, 100000));
     app.add_option("--step-factor", job.trace.stepFactor, "scale each step (1/L for an L-Lipschitz field)")->capture_default_str()->check(CLI::Range(0.01f, 2.0f));
+    app.add_option("--relaxation", job.trace.overRelaxation, "over-relaxation factor (1 = off; 1.2-1.9 takes longer steps, with fallback)")->capture_default_str()->check(CLI::Range(1.0f, 1.95f));
+    app.add_flag("--ao", job.shading.ambientOcclusion, "ambient occlusion");
+    app.add_option("--matcap", job.shading.matcap, "matcap for --shading matcap: clay, chrome, jade, wax, or an image path")->capture_default_str();
     addOutputFlags(app, output);
     if (auto exit = parse(app, "--batch render", arguments)) return *exit;
 

@@ -2,7 +2,7 @@
 
 #include <core/Paths.h>
 #include <shaders/GlslChecker.h>
-#include <shaders/ShaderComposer.h>
+#include <shaders/TracerComposer.h>
 #include <widgets/ViewportWidget.h>
 
 #include <QCoreApplication>
@@ -39,7 +39,7 @@ void SdfDocument::startCheck(const QString& text) {
         shaders::PreparedSdf prepared = shaders::prepareSdf(source, path.empty() ? "<editor>" : path, path, options);
         std::vector<shaders::Diagnostic> diagnostics = prepared.diagnostics;
         if (prepared.ok()) {
-            auto composed = shaders::composeSdfShader(prepared, shaders::Stage::Fragment, "tracer/trace.frag", {{"SDFWB_SHADING_NORMALS", "1"}});
+            auto composed = shaders::composeTracer(prepared, shaders::TracerFeatures{});
             if (composed) {
                 auto found = shaders::checkWithGlslang(*composed);
                 diagnostics.insert(diagnostics.end(), found.begin(), found.end());

@@ -3,10 +3,16 @@
 #include "GlObjects.h"
 
 #include <core/Log.h>
+#include <core/Paths.h>
+#include <renderer/ImageIO.h>
 #include <shaders/DiagnosticParser.h>
 #include <shaders/ShaderComposer.h>
+#include <shaders/TracerComposer.h>
 
+#include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
+
+#include <filesystem>
 
 #include <chrono>
 #include <map>
@@ -18,8 +24,6 @@ namespace {
 
 using shaders::Diagnostic;
 
-const char* const kVertexStage = "tracer/fullscreen.vert";
-const char* const kFragmentStage = "tracer/trace.frag";
 constexpr std::size_t kMaxCachedVariants = 16;
 
 struct CompiledShader {
@@ -74,17 +78,49 @@ struct SdfRenderer::Impl {
     std::uint64_t clock = 0;
     std::string empty;
 
-    shaders::FeatureDefines features(const ShadingSettings& shading) const {
-        shaders::FeatureDefines defines;
-        switch (shading.mode) {
-        case ShadingMode::Normals: defines["SDFWB_SHADING_NORMALS"] = "1"; break;
-        }
-        return defines;
+    GlTexture matcap;
+    std::string matcapName;
+
+    static shaders::TracerFeatures features(const ShadingSettings& shading, const TraceSettings& trace) {
+        shaders::TracerFeatures features;
+        features.shading = shading.mode;
+        features.ambientOcclusion = shading.ambientOcclusion;
+        features.overRelaxation = trace.overRelaxation > 1.0f;
+        return features;
     }
 
-    // Builds (or finds) the program for `sdf` with `defines`. Null on failure, with diagnostics.
-    Variant* build(const shaders::PreparedSdf& prepared, const shaders::FeatureDefines& defines, std::vector<Diagnostic>& diagnostics) {
-        auto fragment = shaders::composeSdfShader(prepared, shaders::Stage::Fragment, kFragmentStage, defines);
+    // Loads the matcap image (a name in resources/matcaps or a path) into a texture, once.
+    void ensureMatcap(const std::string& name) {
+        if (matcap && matcapName == name) return;
+        std::filesystem::path path = name;
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(path, ec)) path = paths::dataRoot() / "resources" / "matcaps" / (name + ".png");
+        Image image;
+        auto loaded = readImage(path);
+        if (loaded) {
+            image = std::move(*loaded);
+        } else {
+            log::warning("render", "matcap '" + name + "': " + loaded.error().message + "; using grey");
+            image.width = image.height = 1;
+            image.rgba = {160, 160, 160, 255};
+        }
+        GLuint id = 0;
+        glGenTextures(1, &id);
+        matcap = GlTexture(id);
+        glBindTexture(GL_TEXTURE_2D, id);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        matcapName = name;
+    }
+
+    // Builds (or finds) the program for `sdf` with `features`. Null on failure, with diagnostics.
+    Variant* build(const shaders::PreparedSdf& prepared, const shaders::TracerFeatures& tracerFeatures, std::vector<Diagnostic>& diagnostics) {
+        auto fragment = shaders::composeTracer(prepared, tracerFeatures);
         if (!fragment) {
             diagnostics.push_back({"<sdfwb>", 0, 0, shaders::Severity::Error, fragment.error().message});
             return nullptr;
@@ -93,7 +129,7 @@ struct SdfRenderer::Impl {
             it->second.lastUse = ++clock;
             return &it->second;
         }
-        auto vertex = shaders::composeBuiltinShader(shaders::Stage::Vertex, kVertexStage, {});
+        auto vertex = shaders::composeTracerVertex();
         if (!vertex) {
             diagnostics.push_back({"<sdfwb>", 0, 0, shaders::Severity::Error, vertex.error().message});
             return nullptr;
@@ -123,8 +159,8 @@ struct SdfRenderer::Impl {
             return nullptr;
         }
         double milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        log::info("shaders", "compiled " + prepared.source.map.fileName(0) + " (" + std::to_string(defines.size()) +
-                                 " feature defines) in " + std::to_string(int(milliseconds)) + " ms");
+        log::info("shaders", "compiled " + prepared.source.map.fileName(0) + " (" + shaders::shadingModeName(tracerFeatures.shading) +
+                                 (tracerFeatures.ambientOcclusion ? ", AO" : "") + ") in " + std::to_string(int(milliseconds)) + " ms");
 
         evictIfFull();
         Variant& variant = cache[fragment->text];
@@ -151,12 +187,13 @@ SdfRenderer::~SdfRenderer() {
     // GL names cannot be freed without the context; the owner calls releaseGl() first.
     for (auto& [text, variant] : m_impl->cache) variant.program.release();
     m_impl->vertexArray.release();
+    m_impl->matcap.release();
 }
 
 std::vector<Diagnostic> SdfRenderer::setSdf(const shaders::PreparedSdf& sdf) {
     std::vector<Diagnostic> diagnostics = sdf.diagnostics;
     if (shaders::hasErrors(diagnostics)) return diagnostics;
-    Variant* variant = m_impl->build(sdf, m_impl->features(m_shading), diagnostics);
+    Variant* variant = m_impl->build(sdf, Impl::features(m_shading, m_trace), diagnostics);
     if (!variant) return diagnostics;
     m_impl->sdf = sdf;
     m_impl->current = variant;
@@ -167,7 +204,7 @@ std::vector<Diagnostic> SdfRenderer::setShading(const ShadingSettings& shading) 
     m_shading = shading;
     std::vector<Diagnostic> diagnostics;
     if (!m_impl->sdf) return diagnostics;
-    if (Variant* variant = m_impl->build(*m_impl->sdf, m_impl->features(m_shading), diagnostics)) m_impl->current = variant;
+    if (Variant* variant = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace), diagnostics)) m_impl->current = variant;
     return diagnostics;
 }
 
@@ -187,7 +224,7 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
     if (!m_impl->current && m_impl->sdf) {
         // After releaseGl() (a new context): rebuild the last good variant.
         std::vector<Diagnostic> ignored;
-        m_impl->current = m_impl->build(*m_impl->sdf, m_impl->features(m_shading), ignored);
+        m_impl->current = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace), ignored);
     }
     if (Variant* v = m_impl->current) {
         if (!m_impl->vertexArray) {
@@ -212,6 +249,18 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
         glUniform3f(v->location("u_background"), m_shading.background.r, m_shading.background.g, m_shading.background.b);
         if (GLint location = v->location("u_time"); location >= 0) glUniform1f(location, time);
         if (GLint location = v->location("g3d_SceneTime"); location >= 0) glUniform1f(location, time);
+        if (GLint location = v->location("u_relaxation"); location >= 0) glUniform1f(location, m_trace.overRelaxation);
+        if (GLint location = v->location("u_lightDirection"); location >= 0) {
+            glm::vec3 light = glm::normalize(m_shading.lightDirection);
+            glUniform3f(location, light.x, light.y, light.z);
+        }
+        if (GLint location = v->location("u_curvatureScale"); location >= 0) glUniform1f(location, m_shading.curvatureScale);
+        if (GLint location = v->location("u_matcap"); location >= 0) {
+            m_impl->ensureMatcap(m_shading.matcap);
+            glActiveTexture(GL_TEXTURE0);
+            glBindTexture(GL_TEXTURE_2D, m_impl->matcap.id());
+            glUniform1i(location, 0);
+        }
         glBindVertexArray(m_impl->vertexArray.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindVertexArray(0);
@@ -227,6 +276,16 @@ void SdfRenderer::releaseGl() {
     m_impl->current = nullptr;
     m_impl->cache.clear();
     m_impl->vertexArray.reset();
+    m_impl->matcap.reset();
+}
+
+std::vector<Diagnostic> SdfRenderer::setTrace(const TraceSettings& trace) {
+    bool variantChanges = (trace.overRelaxation > 1.0f) != (m_trace.overRelaxation > 1.0f);
+    m_trace = trace;
+    std::vector<Diagnostic> diagnostics;
+    if (!variantChanges || !m_impl->sdf) return diagnostics;
+    if (Variant* variant = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace), diagnostics)) m_impl->current = variant;
+    return diagnostics;
 }
 
 } // namespace sdfwb::renderer

@@ -3,6 +3,7 @@
 #include <shaders/BuiltinShaders.h>
 #include <shaders/GlslChecker.h>
 #include <shaders/ShaderComposer.h>
+#include <shaders/TracerComposer.h>
 
 #include <gtest/gtest.h>
 
@@ -19,7 +20,7 @@ PreparedSdf prepare(const std::string& text) { return prepareSdf(text, "<test>",
 TEST(Composer, PlainSdfGetsNoCompatPreludeAndNoTime) {
     PreparedSdf sdf = prepare("float sdf(vec3 p) { return length(p) - 0.5; }\n");
     ASSERT_TRUE(sdf.ok());
-    auto composed = composeSdfShader(sdf, Stage::Fragment, "tracer/trace.frag", {{"SDFWB_SHADING_NORMALS", "1"}});
+    auto composed = composeTracer(sdf, TracerFeatures{});
     ASSERT_TRUE(composed.hasValue());
     EXPECT_EQ(composed->text.rfind("#version 430 core\n", 0), 0u);
     EXPECT_EQ(composed->text.find("g3d"), std::string::npos);
@@ -31,7 +32,7 @@ TEST(Composer, PlainSdfGetsNoCompatPreludeAndNoTime) {
 TEST(Composer, G3dFileGetsOnlyWhatItUses) {
     PreparedSdf sdf = prepare("float sdf(Point3 X) { return length(X) - 0.5 * pi; }\n");
     ASSERT_TRUE(sdf.ok());
-    auto composed = composeSdfShader(sdf, Stage::Fragment, "tracer/trace.frag", {});
+    auto composed = composeTracer(sdf, TracerFeatures{});
     ASSERT_TRUE(composed.hasValue());
     EXPECT_NE(composed->text.find("#define SDFWB_COMPAT_pi 1"), std::string::npos);
     EXPECT_NE(composed->text.find("#define SDFWB_COMPAT_Point3 1"), std::string::npos);
@@ -43,16 +44,37 @@ TEST(Composer, G3dFileGetsOnlyWhatItUses) {
 TEST(Composer, AnimatedSdfIsCalledWithTime) {
     PreparedSdf sdf = prepare("float sdf(vec3 p, float t) { return length(p) - 0.5 + 0.1 * sin(t); }\n");
     ASSERT_TRUE(sdf.signature.animated);
-    auto composed = composeSdfShader(sdf, Stage::Fragment, "tracer/trace.frag", {});
+    auto composed = composeTracer(sdf, TracerFeatures{});
     ASSERT_TRUE(composed.hasValue());
     EXPECT_NE(composed->text.find("#define SDFWB_ANIMATED 1"), std::string::npos);
     EXPECT_FALSE(hasErrors(checkWithGlslang(*composed)));
 }
 
+TEST(Composer, FeaturesThatAreOffAreNotInTheSource) {
+    PreparedSdf sdf = prepare("float sdf(vec3 p) { return length(p) - 0.5; }\n");
+    TracerFeatures plain;
+    auto bare = composeTracer(sdf, plain);
+    ASSERT_TRUE(bare.hasValue());
+    EXPECT_EQ(bare->text.find("ambientOcclusion(vec3"), std::string::npos) << "AO off: no AO function";
+    EXPECT_EQ(bare->text.find("u_matcap"), std::string::npos) << "normals mode: no matcap sampler";
+    EXPECT_EQ(bare->text.find("#define SDFWB_OVERRELAX"), std::string::npos);
+    EXPECT_EQ(bare->text.find("u_time"), std::string::npos) << "static SDF: no time uniform";
+    TracerFeatures rich;
+    rich.shading = ShadingMode::Matcap;
+    rich.ambientOcclusion = true;
+    rich.overRelaxation = true;
+    auto full = composeTracer(sdf, rich);
+    ASSERT_TRUE(full.hasValue());
+    EXPECT_NE(full->text.find("float ambientOcclusion(vec3"), std::string::npos);
+    EXPECT_NE(full->text.find("uniform sampler2D u_matcap"), std::string::npos);
+    EXPECT_NE(full->text.find("#define SDFWB_OVERRELAX 1"), std::string::npos);
+    EXPECT_FALSE(hasErrors(checkWithGlslang(*full)));
+}
+
 TEST(Composer, EqualFeatureSetsGiveEqualText) {
     PreparedSdf sdf = prepare("float sdf(vec3 p) { return length(p) - 0.5; }\n");
-    auto a = composeSdfShader(sdf, Stage::Fragment, "tracer/trace.frag", {{"B", "1"}, {"A", "2"}});
-    auto b = composeSdfShader(sdf, Stage::Fragment, "tracer/trace.frag", {{"A", "2"}, {"B", "1"}});
+    auto a = composeSdfShader(sdf, Stage::Fragment, "tracer/trace_core.glsl", {{"B", "1"}, {"A", "2"}});
+    auto b = composeSdfShader(sdf, Stage::Fragment, "tracer/trace_core.glsl", {{"A", "2"}, {"B", "1"}});
     ASSERT_TRUE(a.hasValue() && b.hasValue());
     EXPECT_EQ(a->text, b->text);
 }
@@ -76,7 +98,8 @@ TEST(BuiltinShaders, EveryEmbeddedFileCompilesWithGlslangInItsStage) {
     ASSERT_TRUE(vertex.hasValue());
     EXPECT_FALSE(hasErrors(checkWithGlslang(*vertex)));
     covered.insert("tracer/fullscreen.vert");
-    check(Stage::Fragment, {"tracer/trace.frag"});
+    for (const char* mode : {"normals", "gooch", "matcap", "curvature", "steps"})
+        check(Stage::Fragment, {"tracer/trace_core.glsl", std::string("tracer/shading_") + mode + ".glsl", "tracer/ao.glsl", "tracer/trace_main.frag"});
     for (const std::string& path : builtinShaderPaths())
         if (path.rfind("samplers/", 0) == 0)
             check(Stage::Compute, {"sampling/bindings.glsl", "sampling/common.glsl", path, "sampling/sample.comp"});

@@ -3,7 +3,7 @@
 #include <shaders/DiagnosticParser.h>
 #include <shaders/GlslChecker.h>
 #include <shaders/SdfSource.h>
-#include <shaders/ShaderComposer.h>
+#include <shaders/TracerComposer.h>
 
 #include <gtest/gtest.h>
 
@@ -20,7 +20,7 @@ fs::path corpus(const std::string& name) { return fs::path(SDFWB_TEST_FILES) / "
 std::vector<Diagnostic> diagnose(const fs::path& file) {
     PreparedSdf sdf = prepareSdfFile(file, IncludeOptions{});
     if (!sdf.ok()) return sdf.diagnostics;
-    auto composed = composeSdfShader(sdf, Stage::Fragment, "tracer/trace.frag", {{"SDFWB_SHADING_NORMALS", "1"}});
+    auto composed = composeTracer(sdf, TracerFeatures{});
     EXPECT_TRUE(composed.hasValue());
     return checkWithGlslang(*composed);
 }

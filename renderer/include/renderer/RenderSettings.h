@@ -1,31 +1,34 @@
 #pragma once
 // GL-free settings that widgets and the CLI edit and the renderer consumes.
 
+#include <shaders/TracerComposer.h>
+
 #include <glm/vec3.hpp>
 
-#include <optional>
 #include <string>
-#include <string_view>
 
 namespace sdfwb::renderer {
 
-enum class ShadingMode { Normals };
+using shaders::ShadingMode;
+using shaders::parseShadingMode;
+using shaders::shadingModeName;
+using shaders::shadingModeNames;
 
 struct TraceSettings {
     int maxSteps = 256;          // step budget per ray; a ray that runs out counts as a miss
     float stepFactor = 1.0f;     // multiply each step; 1/L for an L-Lipschitz field
     float epsilonScale = 0.5f;   // hit when |f| < epsilonScale * (pixel footprint at the hit distance)
     float boxMargin = 0.05f;     // rays are clipped to [-1-margin, 1+margin]^3 before marching
+    float overRelaxation = 1.0f; // omega > 1 enables over-relaxed steps with fallback (e.g. 1.6)
 };
 
 struct ShadingSettings {
     ShadingMode mode = ShadingMode::Normals;
-    glm::vec3 background{0.16f, 0.17f, 0.19f};  // linear RGB in [0,1]
+    bool ambientOcclusion = false;
+    glm::vec3 background{0.16f, 0.17f, 0.19f};     // linear RGB in [0,1]
+    glm::vec3 lightDirection{-0.05f, 0.87f, 0.49f}; // towards the key light (Gooch): upper left of the default view
+    float curvatureScale = 5.0f;                   // |mean curvature| drawn full red
+    std::string matcap = "clay";                   // name in resources/matcaps or a path to an image
 };
-
-const char* shadingModeName(ShadingMode mode);
-std::optional<ShadingMode> parseShadingMode(std::string_view name);
-// "normals" (the names accepted by parseShadingMode, '|'-separated, for help texts)
-std::string shadingModeNames();
 
 } // namespace sdfwb::renderer

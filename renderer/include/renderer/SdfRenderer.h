@@ -35,7 +35,8 @@ public:
 
     // Changing settings may compile a new variant (cached). Returns its diagnostics, if any.
     std::vector<shaders::Diagnostic> setShading(const ShadingSettings& shading);
-    void setTrace(const TraceSettings& trace) { m_trace = trace; }
+    // Over-relaxation on/off selects another variant; the other fields are uniforms.
+    std::vector<shaders::Diagnostic> setTrace(const TraceSettings& trace);
 
     const ShadingSettings& shading() const { return m_shading; }
     const TraceSettings& trace() const { return m_trace; }

@@ -1,0 +1,32 @@
+#pragma once
+// Composes the sphere tracer's fragment shader for one scene. Only the pieces a scene uses are
+// composed: the shading mode's file, ao.glsl when ambient occlusion is on, over-relaxation when
+// asked; a scene without a feature has none of its code in the source the driver sees.
+
+#include <core/Expected.h>
+#include <shaders/ShaderComposer.h>
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace sdfwb::shaders {
+
+enum class ShadingMode { Normals, Gooch, Matcap, Curvature, Steps };
+
+const char* shadingModeName(ShadingMode mode);
+std::optional<ShadingMode> parseShadingMode(std::string_view name);
+std::string shadingModeNames();  // "normals|gooch|matcap|curvature|steps"
+
+struct TracerFeatures {
+    ShadingMode shading = ShadingMode::Normals;
+    bool ambientOcclusion = false;
+    bool overRelaxation = false;
+};
+
+Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatures& features);
+
+// The tracer's vertex stage (a full-screen triangle).
+Expected<ComposedShader> composeTracerVertex();
+
+} // namespace sdfwb::shaders

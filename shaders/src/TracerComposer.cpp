@@ -1,0 +1,57 @@
+#include <shaders/TracerComposer.h>
+
+namespace sdfwb::shaders {
+
+namespace {
+constexpr ShadingMode kModes[] = {ShadingMode::Normals, ShadingMode::Gooch, ShadingMode::Matcap, ShadingMode::Curvature, ShadingMode::Steps};
+}
+
+const char* shadingModeName(ShadingMode mode) {
+    switch (mode) {
+    case ShadingMode::Normals: return "normals";
+    case ShadingMode::Gooch: return "gooch";
+    case ShadingMode::Matcap: return "matcap";
+    case ShadingMode::Curvature: return "curvature";
+    case ShadingMode::Steps: return "steps";
+    }
+    return "?";
+}
+
+std::optional<ShadingMode> parseShadingMode(std::string_view name) {
+    for (ShadingMode mode : kModes)
+        if (name == shadingModeName(mode)) return mode;
+    return std::nullopt;
+}
+
+std::string shadingModeNames() {
+    std::string names;
+    for (ShadingMode mode : kModes) names += (names.empty() ? "" : "|") + std::string(shadingModeName(mode));
+    return names;
+}
+
+Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatures& features) {
+    FeatureDefines defines;
+    std::string mode = shadingModeName(features.shading);
+    std::string upper;
+    for (char c : mode) upper += char(std::toupper(static_cast<unsigned char>(c)));
+    defines["SDFWB_SHADING_" + upper] = "1";
+    std::vector<std::string> files = {"tracer/trace_core.glsl", "tracer/shading_" + mode + ".glsl"};
+    // The heat map shows tracing cost only: no lighting terms.
+    if (features.ambientOcclusion && features.shading != ShadingMode::Steps) {
+        defines["SDFWB_AO"] = "1";
+        files.push_back("tracer/ao.glsl");
+    }
+    if (features.overRelaxation) defines["SDFWB_OVERRELAX"] = "1";
+    files.push_back("tracer/trace_main.frag");
+    std::vector<ShaderPiece> pieces;
+    for (const std::string& file : files) {
+        auto piece = builtinPiece(file);
+        if (!piece) return piece.error();
+        pieces.push_back(std::move(*piece));
+    }
+    return composeSdfShader(sdf, Stage::Fragment, pieces, defines);
+}
+
+Expected<ComposedShader> composeTracerVertex() { return composeBuiltinShader(Stage::Vertex, "tracer/fullscreen.vert", {}); }
+
+} // namespace sdfwb::shaders

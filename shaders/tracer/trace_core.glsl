@@ -1,0 +1,117 @@
+// Sphere tracer core: uniforms, map(), ray set-up, marching, normals. Composed after the SDF;
+// a shading piece, optional feature pieces (ao.glsl, ...) and trace_main.frag follow.
+// Feature defines: SDFWB_ANIMATED / SDFWB_USES_TIME (time), SDFWB_OVERRELAX (relaxed steps).
+
+uniform vec2 u_resolution;        // framebuffer size in pixels
+uniform vec3 u_cameraPosition;
+uniform vec3 u_cameraRight;       // unit camera basis
+uniform vec3 u_cameraUp;
+uniform vec3 u_cameraForward;
+uniform float u_tanHalfFovY;      // tan(vertical field of view / 2)
+uniform float u_nearPlane;
+uniform float u_farPlane;
+uniform int u_maxSteps;           // step budget per ray
+uniform float u_stepFactor;       // < 1 for fields that are not 1-Lipschitz
+uniform float u_epsilonScale;     // hit when |f| < epsilonScale * pixel footprint at t
+uniform float u_boxMargin;        // rays are clipped to [-1-margin, 1+margin]^3
+uniform vec3 u_background;
+#ifdef SDFWB_OVERRELAX
+uniform float u_relaxation;       // over-relaxation factor omega in (1, 2)
+#endif
+#ifdef SDFWB_USES_TIME
+uniform float u_time;
+#endif
+
+float map(vec3 p) {
+#ifdef SDFWB_ANIMATED
+    return sdf(p, u_time);
+#else
+    return sdf(p);
+#endif
+}
+
+struct Hit {
+    bool found;
+    float t;        // distance along the ray
+    int steps;      // steps taken (the budget when it ran out)
+    vec3 position;
+};
+
+// Ray against the axis-aligned box [-b, b]^3; returns (tNear, tFar), tNear > tFar when missed.
+vec2 intersectBox(vec3 origin, vec3 direction, float b) {
+    vec3 inverse = 1.0 / direction;
+    vec3 t0 = (vec3(-b) - origin) * inverse;
+    vec3 t1 = (vec3(b) - origin) * inverse;
+    vec3 tMin = min(t0, t1);
+    vec3 tMax = max(t0, t1);
+    return vec2(max(max(tMin.x, tMin.y), tMin.z), min(min(tMax.x, tMax.y), tMax.z));
+}
+
+// Angle one pixel spans: hit tolerances and normal steps grow with distance like a pixel's footprint.
+float pixelAngle() { return 2.0 * u_tanHalfFovY / u_resolution.y; }
+
+vec3 primaryRay(vec2 fragment) {
+    vec2 ndc = (fragment / u_resolution) * 2.0 - 1.0;
+    float aspect = u_resolution.x / u_resolution.y;
+    return normalize(u_cameraForward + ndc.x * aspect * u_tanHalfFovY * u_cameraRight + ndc.y * u_tanHalfFovY * u_cameraUp);
+}
+
+Hit traceRay(vec3 origin, vec3 direction) {
+    Hit hit = Hit(false, 0.0, 0, origin);
+    vec2 span = intersectBox(origin, direction, 1.0 + u_boxMargin);
+    float t = max(span.x, u_nearPlane);
+    float tEnd = min(span.y, u_farPlane);
+    if (t > tEnd) return hit;
+    float footprint = u_epsilonScale * pixelAngle();
+#ifdef SDFWB_OVERRELAX
+    // Over-relaxed sphere tracing: step omega * d while consecutive unbounding spheres overlap;
+    // when they do not, the step may have passed the surface: go back and continue with omega = 1.
+    float omega = u_relaxation;
+    float previousRadius = 0.0;
+    float stepLength = 0.0;
+#endif
+    for (int step = 0; step < u_maxSteps; ++step) {
+        hit.steps = step + 1;
+        float d = map(origin + t * direction) * u_stepFactor;
+        if (isnan(d) || isinf(d)) break;
+        float radius = abs(d);
+#ifdef SDFWB_OVERRELAX
+        if (omega > 1.0 && radius + previousRadius < stepLength) {
+            t -= stepLength - stepLength / omega;  // undo the relaxed part of the last step
+            omega = 1.0;
+            previousRadius = 0.0;
+            stepLength = 0.0;
+            continue;
+        }
+        if (radius < footprint * t) { hit.found = true; break; }
+        stepLength = d * omega;
+        previousRadius = radius;
+        t += stepLength;
+#else
+        if (radius < footprint * t) { hit.found = true; break; }
+        t += d;
+#endif
+        if (t > tEnd) break;
+    }
+    if (hit.found) {
+        // Refine: two more plain steps shrink |f| well below the footprint for exact fields.
+        for (int k = 0; k < 2; ++k) t += map(origin + t * direction) * u_stepFactor;
+    }
+    hit.t = t;
+    hit.position = origin + t * direction;
+    return hit;
+}
+
+// Tetrahedral 4-tap gradient with step h; raw (not normalised).
+vec3 gradientAt(vec3 p, float h) {
+    const vec2 k = vec2(1.0, -1.0);
+    return (k.xyy * map(p + k.xyy * h) + k.yyx * map(p + k.yyx * h) + k.yxy * map(p + k.yxy * h) + k.xxx * map(p + k.xxx * h)) / (4.0 * h);
+}
+
+// Normal with a step matched to the hit distance (a pixel's footprint), never below float noise.
+vec3 normalAt(vec3 p, float t, vec3 direction) {
+    float h = max(pixelAngle() * t, 1e-5 * max(1.0, length(p)));
+    vec3 gradient = gradientAt(p, h);
+    float length2 = dot(gradient, gradient);
+    return length2 > 0.0 && !isinf(length2) ? gradient * inversesqrt(length2) : -direction;
+}

@@ -1,0 +1,25 @@
+// Fragment main of the sphere tracer: trace, then shade with the composed shading piece, which
+// defines vec3 shade(vec3 position, vec3 normal, vec3 direction, Hit hit).
+
+out vec4 o_color;
+
+void main() {
+    vec3 direction = primaryRay(gl_FragCoord.xy);
+    Hit hit = traceRay(u_cameraPosition, direction);
+#ifdef SDFWB_SHADING_STEPS
+    // The heat map shows the work of every pixel, misses included.
+    o_color = vec4(stepsColor(hit), 1.0);
+    return;
+#else
+    if (!hit.found) {
+        o_color = vec4(u_background, 1.0);
+        return;
+    }
+    vec3 normal = normalAt(hit.position, hit.t, direction);
+    vec3 color = shade(hit.position, normal, direction, hit);
+#ifdef SDFWB_AO
+    color *= ambientOcclusion(hit.position, normal);
+#endif
+    o_color = vec4(color, 1.0);
+#endif
+}
