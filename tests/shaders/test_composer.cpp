@@ -58,7 +58,7 @@ TEST(Composer, FeaturesThatAreOffAreNotInTheSource) {
     EXPECT_EQ(bare->text.find("ambientOcclusion(vec3"), std::string::npos) << "AO off: no AO function";
     EXPECT_EQ(bare->text.find("u_matcap"), std::string::npos) << "normals mode: no matcap sampler";
     EXPECT_EQ(bare->text.find("#define SDFWB_OVERRELAX"), std::string::npos);
-    EXPECT_EQ(bare->text.find("u_time"), std::string::npos) << "static SDF: no time uniform";
+    EXPECT_EQ(bare->text.find("#define SDFWB_USES_TIME"), std::string::npos) << "static SDF: time is compiled out";
     TracerFeatures rich;
     rich.shading = ShadingMode::Matcap;
     rich.ambientOcclusion = true;
@@ -98,8 +98,18 @@ TEST(BuiltinShaders, EveryEmbeddedFileCompilesWithGlslangInItsStage) {
     ASSERT_TRUE(vertex.hasValue());
     EXPECT_FALSE(hasErrors(checkWithGlslang(*vertex)));
     covered.insert("tracer/fullscreen.vert");
-    for (const char* mode : {"normals", "gooch", "matcap", "curvature", "steps"})
-        check(Stage::Fragment, {"tracer/trace_core.glsl", std::string("tracer/shading_") + mode + ".glsl", "tracer/ao.glsl", "tracer/trace_main.frag"});
+    for (const char* mode : {"normals", "gooch", "matcap", "curvature", "steps"}) {
+        TracerFeatures features;
+        features.shading = *parseShadingMode(mode);
+        features.ambientOcclusion = true;
+        features.overRelaxation = true;
+        auto composed = composeTracer(sdf, features);
+        ASSERT_TRUE(composed.hasValue());
+        auto diagnostics = checkWithGlslang(*composed);
+        EXPECT_FALSE(hasErrors(diagnostics)) << mode << ": " << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
+        for (const char* file : {"tracer/trace_core.glsl", "tracer/ao.glsl", "tracer/trace_main.frag"}) covered.insert(file);
+        covered.insert(std::string("tracer/shading_") + mode + ".glsl");
+    }
     for (const std::string& path : builtinShaderPaths())
         if (path.rfind("samplers/", 0) == 0)
             check(Stage::Compute, {"sampling/bindings.glsl", "sampling/common.glsl", path, "sampling/sample.comp"});
