@@ -10,6 +10,7 @@
 #include <shaders/SdfSource.h>
 
 #include <renderer/SampleCompute.h>
+#include <renderer/VideoWriter.h>
 #include <sampling/Sampler.h>
 #include <sampling/SamplerLibrary.h>
 
@@ -295,6 +296,86 @@ int runMerge(const std::string& outputFile, const std::string& formatName, const
         std::cout << json.dump(2) << "\n";
     } else if (!output.quiet) {
         std::printf("wrote %s: %llu samples from %zu parts in %.2f s\n", outputFile.c_str(), (unsigned long long)report->rows, report->parts, seconds);
+    }
+    return kExitOk;
+}
+
+} // namespace sdfwb::app
+
+namespace sdfwb::app {
+
+int runAnimate(const AnimateJob& job, const OutputOptions& output) {
+    auto start = std::chrono::steady_clock::now();
+    dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
+    auto sdfPath = dataset::resolveSdfArgument(job.frame.sdf, catalogue);
+    if (!sdfPath) { printError("--sdf: " + sdfPath.error().message); return kExitUsage; }
+    std::filesystem::path outputPath(job.frame.output);
+    if (outputPath.extension() != ".mp4") {
+        printError("--output: '" + job.frame.output + "': animations are written as .mp4 (H.264)");
+        return kExitUsage;
+    }
+    if (!(job.seconds > 0.0f) || job.seconds > 3600.0f) { printError("--seconds: must be in (0, 3600]"); return kExitUsage; }
+    if (job.framesPerSecond < 1 || job.framesPerSecond > 240) { printError("--fps: must be 1..240"); return kExitUsage; }
+    shaders::PreparedSdf sdf = shaders::prepareSdfFile(*sdfPath, includeOptions());
+    if (!sdf.ok()) {
+        printDiagnostics(sdf.diagnostics);
+        printError("animate: " + sdfPath->string() + " has errors; nothing written");
+        return kExitFailure;
+    }
+    if (!job.turntable && !sdf.usesTime() && !output.quiet)
+        std::fprintf(stderr, "sdfwb: note: %s is not animated and --turntable is off: every frame is the same\n", sdfPath->string().c_str());
+    auto context = renderer::HeadlessContext::create();
+    if (!context) { printError(context.error().message); return kExitNoGl; }
+    renderer::SdfRenderer sdfRenderer;
+    (void)sdfRenderer.setTrace(job.frame.trace);
+    (void)sdfRenderer.setShading(job.frame.shading);
+    auto diagnostics = sdfRenderer.setSdf(sdf);
+    if (shaders::hasErrors(diagnostics)) {
+        printDiagnostics(diagnostics);
+        printError("animate: the driver rejected " + sdfPath->string() + "; nothing written");
+        return kExitFailure;
+    }
+    auto writer = renderer::VideoWriter::open(outputPath, job.frame.width, job.frame.height, job.framesPerSecond);
+    if (!writer) { printError(writer.error().message); return kExitFailure; }
+
+    const int frames = std::max(1, int(std::lround(double(job.seconds) * job.framesPerSecond)));
+    CancelToken cancel;
+    ProgressBar bar(!output.quiet && !output.json);
+    double renderSeconds = 0.0;
+    {
+        InterruptScope interrupts(cancel);
+        renderer::OffscreenRenderer offscreen;
+        for (int i = 0; i < frames; ++i) {
+            if (cancel.isCancelled()) break;
+            renderer::Camera camera = job.frame.camera;
+            if (job.turntable) renderer::orbit(camera, float(2.0 * 3.14159265358979 * i / frames), 0.0f);
+            float time = job.frame.time + float(i) / float(job.framesPerSecond);
+            renderer::FrameStats stats;
+            renderer::Image image = offscreen.render(sdfRenderer, job.frame.width, job.frame.height, camera, time, &stats);
+            renderSeconds += stats.cpuMilliseconds / 1000.0;
+            if (auto ok = (*writer)->addFrame(image); !ok) {
+                printError(ok.error().message);
+                return kExitFailure;
+            }
+            bar.update(std::uint64_t(i + 1), std::uint64_t(frames));
+        }
+    }
+    bar.finish();
+    sdfRenderer.releaseGl();
+    if (cancel.isCancelled()) {
+        printError("animate: cancelled; nothing written");
+        return kExitCancelled;
+    }
+    if (auto ok = (*writer)->finish(); !ok) { printError(ok.error().message); return kExitFailure; }
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (output.json) {
+        nlohmann::json report = {{"output", outputPath.string()}, {"frames", frames}, {"fps", job.framesPerSecond},
+                                 {"width", job.frame.width & ~1}, {"height", job.frame.height & ~1}, {"render_seconds", renderSeconds},
+                                 {"seconds", seconds}};
+        std::cout << report.dump(2) << "\n";
+    } else if (!output.quiet) {
+        std::printf("wrote %s (%d frames at %d fps, %dx%d, H.264; rendering %.2f s, total %.2f s)\n", outputPath.string().c_str(), frames,
+                    job.framesPerSecond, job.frame.width & ~1, job.frame.height & ~1, renderSeconds, seconds);
     }
     return kExitOk;
 }

@@ -38,6 +38,15 @@ struct RenderJob {
 
 int runRender(const RenderJob& job, const OutputOptions& output);
 
+struct AnimateJob {
+    RenderJob frame;            // SDF, output (.mp4), size, shading, camera; frame.time is the start time
+    float seconds = 4.0f;
+    int framesPerSecond = 30;
+    bool turntable = false;     // orbit the camera once around the Y axis over the clip
+};
+
+int runAnimate(const AnimateJob& job, const OutputOptions& output);
+
 struct SampleCommand {
     std::string sdf;           // dataset name or path
     std::string pattern;       // built-in name or sampler path

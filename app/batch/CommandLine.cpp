@@ -32,6 +32,7 @@ const char* const kOverview =
     "\n"
     "batch commands:\n"
     "  render   sphere-trace an SDF into an image (.png, .jpg, .exr)\n"
+    "  animate  render an MP4 (H.264) over time and/or as a turntable\n"
     "  sample   write N (position, distance, gradient) samples to .bin, .npz or .ply\n"
     "  merge    join --shard outputs into the file one run would have written\n"
     "  list     list the dataset (name, category, declared type, animated)\n"
@@ -88,46 +89,77 @@ std::optional<int> parse(CLI::App& app, const std::string& context, Arguments ar
     return std::nullopt;
 }
 
-int runRenderCommand(const Arguments& arguments) {
-    CLI::App app("Sphere-trace an SDF into an image, without a display.", "sdfwb --batch render");
-    RenderJob job;
-    OutputOptions output;
+// Options shared by render and animate; `finish` validates the strings into `job`.
+struct FrameOptions {
     std::string size = "1280x720", shading = "normals", camera, target;
+};
+
+void addFrameOptions(CLI::App& app, RenderJob& job, FrameOptions& options) {
     app.add_option("--sdf", job.sdf, "dataset name or path to a .glsl file")->required();
-    app.add_option("--output", job.output, "image file: .png, .jpg or .exr")->required();
-    app.add_option("--size", size, "image size WxH")->capture_default_str();
-    app.add_option("--time", job.time, "time in seconds for animated SDFs")->capture_default_str();
-    app.add_option("--shading", shading, "shading mode: " + renderer::shadingModeNames())->capture_default_str();
-    app.add_option("--camera", camera, "camera position X,Y,Z");
-    app.add_option("--target", target, "point the camera looks at X,Y,Z (default 0,0,0)");
+    app.add_option("--size", options.size, "image size WxH")->capture_default_str();
+    app.add_option("--time", job.time, "time in seconds for animated SDFs (start time for animate)")->capture_default_str();
+    app.add_option("--shading", options.shading, "shading mode: " + renderer::shadingModeNames())->capture_default_str();
+    app.add_flag("--ao", job.shading.ambientOcclusion, "ambient occlusion");
+    app.add_option("--matcap", job.shading.matcap, "matcap for --shading matcap: clay, chrome, jade, wax, or an image path")->capture_default_str();
+    app.add_option("--camera", options.camera, "camera position X,Y,Z");
+    app.add_option("--target", options.target, "point the camera looks at X,Y,Z (default 0,0,0)");
     app.add_option("--fov", job.camera.fovYDegrees, "vertical field of view in degrees")->capture_default_str()->check(CLI::Range(1.0f, 179.0f));
     app.add_option("--max-steps", job.trace.maxSteps, "sphere-tracing step budget per ray")->capture_default_str()->check(CLI::Range(1, 100000));
     app.add_option("--step-factor", job.trace.stepFactor, "scale each step (1/L for an L-Lipschitz field)")->capture_default_str()->check(CLI::Range(0.01f, 2.0f));
     app.add_option("--relaxation", job.trace.overRelaxation, "over-relaxation factor (1 = off; 1.2-1.9 takes longer steps, with fallback)")->capture_default_str()->check(CLI::Range(1.0f, 1.95f));
-    app.add_flag("--ao", job.shading.ambientOcclusion, "ambient occlusion");
-    app.add_option("--matcap", job.shading.matcap, "matcap for --shading matcap: clay, chrome, jade, wax, or an image path")->capture_default_str();
-    addOutputFlags(app, output);
-    if (auto exit = parse(app, "--batch render", arguments)) return *exit;
+}
 
-    auto parsedSize = parseSize(size);
-    if (!parsedSize) { printError("--size: expected WxH with integers from 1 to 16384, got '" + size + "'"); return kExitUsage; }
+// Returns an exit code when an option is malformed.
+std::optional<int> finishFrameOptions(RenderJob& job, const FrameOptions& options) {
+    auto parsedSize = parseSize(options.size);
+    if (!parsedSize) { printError("--size: expected WxH with integers from 1 to 16384, got '" + options.size + "'"); return kExitUsage; }
     job.width = parsedSize->width;
     job.height = parsedSize->height;
-    auto mode = renderer::parseShadingMode(shading);
-    if (!mode) { printError("--shading: unknown mode '" + shading + "' (" + renderer::shadingModeNames() + ")"); return kExitUsage; }
+    auto mode = renderer::parseShadingMode(options.shading);
+    if (!mode) { printError("--shading: unknown mode '" + options.shading + "' (" + renderer::shadingModeNames() + ")"); return kExitUsage; }
     job.shading.mode = *mode;
-    if (!camera.empty()) {
-        auto position = parseVec3(camera);
-        if (!position) { printError("--camera: expected X,Y,Z, got '" + camera + "'"); return kExitUsage; }
+    if (!options.camera.empty()) {
+        auto position = parseVec3(options.camera);
+        if (!position) { printError("--camera: expected X,Y,Z, got '" + options.camera + "'"); return kExitUsage; }
         job.camera.position = *position;
     }
-    if (!target.empty()) {
-        auto point = parseVec3(target);
-        if (!point) { printError("--target: expected X,Y,Z, got '" + target + "'"); return kExitUsage; }
+    if (!options.target.empty()) {
+        auto point = parseVec3(options.target);
+        if (!point) { printError("--target: expected X,Y,Z, got '" + options.target + "'"); return kExitUsage; }
         job.camera.target = *point;
     }
+    return std::nullopt;
+}
+
+int runRenderCommand(const Arguments& arguments) {
+    CLI::App app("Sphere-trace an SDF into an image, without a display.", "sdfwb --batch render");
+    RenderJob job;
+    OutputOptions output;
+    FrameOptions options;
+    addFrameOptions(app, job, options);
+    app.add_option("--output", job.output, "image file: .png, .jpg or .exr")->required();
+    addOutputFlags(app, output);
+    if (auto exit = parse(app, "--batch render", arguments)) return *exit;
+    if (auto exit = finishFrameOptions(job, options)) return *exit;
     if (output.quiet) log::setMinimumLevel(log::Level::Warning);
     return runRender(job, output);
+}
+
+int runAnimateCommand(const Arguments& arguments) {
+    CLI::App app("Render an MP4 (H.264) of an SDF: over time, as a turntable, or both.", "sdfwb --batch animate");
+    AnimateJob job;
+    OutputOptions output;
+    FrameOptions options;
+    addFrameOptions(app, job.frame, options);
+    app.add_option("--output", job.frame.output, "video file: .mp4")->required();
+    app.add_option("--seconds", job.seconds, "length of the clip")->capture_default_str();
+    app.add_option("--fps", job.framesPerSecond, "frames per second")->capture_default_str();
+    app.add_flag("--turntable", job.turntable, "orbit the camera once around the Y axis");
+    addOutputFlags(app, output);
+    if (auto exit = parse(app, "--batch animate", arguments)) return *exit;
+    if (auto exit = finishFrameOptions(job.frame, options)) return *exit;
+    if (output.quiet || output.json) log::setMinimumLevel(log::Level::Warning);
+    return runAnimate(job, output);
 }
 
 int runListCommand(const Arguments& arguments) {
@@ -239,7 +271,7 @@ int runJobFile(const std::string& path) {
     std::vector<std::pair<int, Arguments>> steps;
     std::string line;
     int lineNumber = 0;
-    const std::vector<std::string> commands = {"render", "sample", "merge", "list"};
+    const std::vector<std::string> commands = {"render", "animate", "sample", "merge", "list"};
     while (std::getline(file, line)) {
         ++lineNumber;
         std::string error;
@@ -250,7 +282,7 @@ int runJobFile(const std::string& path) {
         }
         if (words->empty()) continue;
         if (std::find(commands.begin(), commands.end(), words->front()) == commands.end()) {
-            printError(path + ":" + std::to_string(lineNumber) + ": unknown command '" + words->front() + "' (render, sample, merge, list)");
+            printError(path + ":" + std::to_string(lineNumber) + ": unknown command '" + words->front() + "' (render, animate, sample, merge, list)");
             return kExitUsage;
         }
         steps.emplace_back(lineNumber, std::move(*words));
@@ -272,10 +304,11 @@ int runJobFile(const std::string& path) {
 
 int runBatchCommand(const std::string& command, const Arguments& arguments) {
     if (command == "render") return runRenderCommand(arguments);
+    if (command == "animate") return runAnimateCommand(arguments);
     if (command == "sample") return runSampleCommand(arguments);
     if (command == "merge") return runMergeCommand(arguments);
     if (command == "list") return runListCommand(arguments);
-    printError("--batch: unknown command '" + command + "' (render, sample, merge, list, or a job file); see sdfwb --help");
+    printError("--batch: unknown command '" + command + "' (render, animate, sample, merge, list, or a job file); see sdfwb --help");
     return kExitUsage;
 }
 
@@ -287,11 +320,11 @@ std::optional<int> runCommandLine(int argc, char** argv) {
     if (first == "--help" || first == "-h") { std::printf("%s", kOverview); return kExitOk; }
     if (first == "--version") { std::printf("sdfwb %s\n", SDFWB_VERSION); return kExitOk; }
     if (first == "--batch") {
-        if (argc < 3) { printError("--batch: missing command (render, sample, merge, list) or job file; see sdfwb --help"); return kExitUsage; }
+        if (argc < 3) { printError("--batch: missing command (render, animate, sample, merge, list) or job file; see sdfwb --help"); return kExitUsage; }
         const std::string command = argv[2];
         if (command == "--help" || command == "-h") { std::printf("%s", kOverview); return kExitOk; }
         Arguments arguments(argv + 3, argv + argc);
-        const std::vector<std::string> commands = {"render", "sample", "merge", "list"};
+        const std::vector<std::string> commands = {"render", "animate", "sample", "merge", "list"};
         std::error_code ec;
         if (std::find(commands.begin(), commands.end(), command) == commands.end() && std::filesystem::is_regular_file(command, ec)) {
             if (!arguments.empty()) { printError("--batch " + command + ": a job file takes no further arguments"); return kExitUsage; }

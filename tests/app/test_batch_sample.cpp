@@ -158,3 +158,23 @@ TEST(BatchSample, FiftyMillionSamplesStayUnder512MiB) {
     std::printf("peak resident memory for N = 5e7: %ld MiB\n", peakKiB / 1024);
     fs::remove(out);
 }
+
+TEST(BatchAnimate, WritesAnH264Mp4WithTheRightFrames) {
+    fs::path out = scratch("turntable.mp4");
+    Result r = run("--batch animate --sdf torus --output " + out.string() + " --size 161x91 --seconds 1 --fps 12 --turntable --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    Result probe;
+    {
+        std::string command = "ffprobe -v error -count_frames -show_entries stream=codec_name,width,height,nb_read_frames -of csv=p=0 " + out.string();
+        FILE* pipe = popen(command.c_str(), "r");
+        std::array<char, 256> buffer{};
+        while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) probe.output.append(buffer.data(), n);
+        probe.exitCode = pclose(pipe);
+    }
+    EXPECT_EQ(probe.output, "h264,160,90,12\n") << "odd sizes round down to even for 4:2:0";
+
+    Result wrongType = run("--batch animate --sdf torus --output " + scratch("clip.avi").string());
+    EXPECT_EQ(wrongType.exitCode, 2);
+    EXPECT_NE(wrongType.output.find(".mp4"), std::string::npos) << wrongType.output;
+    EXPECT_FALSE(fs::exists(scratch("clip.avi")));
+}
