@@ -358,6 +358,7 @@ int runAnimate(const AnimateJob& job, const OutputOptions& output) {
                 return kExitFailure;
             }
             bar.update(std::uint64_t(i + 1), std::uint64_t(frames));
+            if (output.progressLines) std::fprintf(stderr, "progress %d %d\n", i + 1, frames);
         }
     }
     bar.finish();

@@ -155,6 +155,7 @@ int runAnimateCommand(const Arguments& arguments) {
     app.add_option("--seconds", job.seconds, "length of the clip")->capture_default_str();
     app.add_option("--fps", job.framesPerSecond, "frames per second")->capture_default_str();
     app.add_flag("--turntable", job.turntable, "orbit the camera once around the Y axis");
+    app.add_flag("--progress-lines", output.progressLines, "print 'progress DONE TOTAL' lines on stderr (for front ends)");
     addOutputFlags(app, output);
     if (auto exit = parse(app, "--batch animate", arguments)) return *exit;
     if (auto exit = finishFrameOptions(job.frame, options)) return *exit;

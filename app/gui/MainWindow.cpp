@@ -1,14 +1,20 @@
 #include "MainWindow.h"
 
+#include "ExportController.h"
+#include "PlaybackController.h"
 #include "SamplingController.h"
 #include "SdfDocument.h"
 
 #include <core/Log.h>
 #include <core/TextFile.h>
+#include <dataset/Metadata.h>
+#include <widgets/CameraPanel.h>
 #include <widgets/GlslEditor.h>
+#include <widgets/TimeBar.h>
 #include <widgets/ViewportWidget.h>
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -20,27 +26,50 @@
 
 namespace sdfwb::app {
 
+namespace {
+
+const renderer::ShadingMode kModes[] = {renderer::ShadingMode::Gooch, renderer::ShadingMode::Matcap, renderer::ShadingMode::Normals,
+                                        renderer::ShadingMode::Curvature, renderer::ShadingMode::Steps};
+
+QString modeLabel(renderer::ShadingMode mode) {
+    switch (mode) {
+    case renderer::ShadingMode::Gooch: return QObject::tr("&Gooch (warm/cool)");
+    case renderer::ShadingMode::Matcap: return QObject::tr("&Matcap");
+    case renderer::ShadingMode::Normals: return QObject::tr("&Normals as RGB");
+    case renderer::ShadingMode::Curvature: return QObject::tr("&Curvature |H|");
+    case renderer::ShadingMode::Steps: return QObject::tr("&Step-count heat map");
+    }
+    return {};
+}
+
+} // namespace
+
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setObjectName("MainWindow");
     setDockNestingEnabled(true);
-    resize(1400, 820);
+    resize(1400, 860);
 
     m_viewport = new widgets::ViewportWidget;
     m_viewport->setObjectName("Viewport");
-    m_viewportDock = new QDockWidget(tr("Viewport"), this);
-    m_viewportDock->setObjectName("ViewportDock");
-    m_viewportDock->setWidget(m_viewport);
-    addDockWidget(Qt::RightDockWidgetArea, m_viewportDock);
-
     m_editor = new widgets::GlslEditor;
     m_editor->setObjectName("Editor");
-    m_editorDock = new QDockWidget(tr("Editor"), this);
-    m_editorDock->setObjectName("EditorDock");
-    m_editorDock->setWidget(m_editor);
-    addDockWidget(Qt::LeftDockWidgetArea, m_editorDock);
+    m_cameraPanel = new widgets::CameraPanel;
+    m_timeBar = new widgets::TimeBar;
+    m_viewportDock = addDock(tr("Viewport"), "ViewportDock", m_viewport, Qt::RightDockWidgetArea);
+    m_editorDock = addDock(tr("Editor"), "EditorDock", m_editor, Qt::LeftDockWidgetArea);
+    m_cameraDock = addDock(tr("Camera"), "CameraDock", m_cameraPanel, Qt::LeftDockWidgetArea);
+    m_timeDock = addDock(tr("Time"), "TimeDock", m_timeBar, Qt::RightDockWidgetArea);
+    m_timeBar->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
+    splitDockWidget(m_viewportDock, m_timeDock, Qt::Vertical);
+    tabifyDockWidget(m_editorDock, m_cameraDock);
+    m_editorDock->raise();
     resizeDocks({m_editorDock, m_viewportDock}, {560, 840}, Qt::Horizontal);
 
     m_document = new SdfDocument(m_viewport, this);
+    m_sampling = new SamplingController(this, [this] { return m_document->path(); }, this);
+    m_exports = new ExportController(this, m_viewport, [this] { return m_document->path(); }, this);
+    m_playback = new PlaybackController(m_timeBar, m_viewport, this);
+
     connect(m_editor, &QsciScintilla::textChanged, this, [this] {
         m_document->textEdited(m_editor->text());
         updateTitle();
@@ -53,22 +82,34 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         m_diagnosticSummary->setText(errors ? tr("%1 error(s), %2 warning(s): showing the last good shader").arg(errors).arg(warnings)
                                             : tr("%1 warning(s)").arg(warnings));
     });
+    connect(m_document, &SdfDocument::sdfApplied, this, &MainWindow::updateOverlay);
+    connect(m_cameraPanel, &widgets::CameraPanel::cameraEdited, m_viewport, &widgets::ViewportWidget::setCamera);
+    connect(m_cameraPanel, &widgets::CameraPanel::resetRequested, m_viewport, &widgets::ViewportWidget::resetCamera);
+    connect(m_viewport, &widgets::ViewportWidget::cameraChanged, m_cameraPanel, &widgets::CameraPanel::setCamera);
 
     m_frameTime = new QLabel(this);
     m_diagnosticSummary = new QLabel(this);
     statusBar()->addWidget(m_diagnosticSummary, 1);
     statusBar()->addPermanentWidget(m_frameTime);
-    connect(m_viewport, &widgets::ViewportWidget::frameRendered, this,
-            [this](double milliseconds) { m_frameTime->setText(tr("frame %1 ms").arg(milliseconds, 0, 'f', 1)); });
-
-    m_sampling = new SamplingController(this, [this] { return m_document->path(); }, this);
+    connect(m_viewport, &widgets::ViewportWidget::frameRendered, this, [this](double milliseconds, float scale) {
+        m_frameTime->setText(scale < 1.0f ? tr("frame %1 ms at %2 % resolution (moving)").arg(milliseconds, 0, 'f', 1).arg(int(scale * 100.0f))
+                                          : tr("frame %1 ms").arg(milliseconds, 0, 'f', 1));
+    });
 
     createMenus();
-    restoreLayout();
+    restoreSession();
     updateTitle();
 }
 
 MainWindow::~MainWindow() = default;
+
+QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWidget* widget, Qt::DockWidgetArea area) {
+    auto* dock = new QDockWidget(title, this);
+    dock->setObjectName(name);
+    dock->setWidget(widget);
+    addDockWidget(area, dock);
+    return dock;
+}
 
 bool MainWindow::openFile(const QString& path) {
     auto text = readTextFile(path.toStdString());
@@ -86,6 +127,20 @@ bool MainWindow::openFile(const QString& path) {
     return true;
 }
 
+void MainWindow::setShadingMode(renderer::ShadingMode mode) {
+    renderer::ShadingSettings shading = m_viewport->shading();
+    shading.mode = mode;
+    m_viewport->setShading(shading);
+    for (QAction* action : m_shadingGroup->actions()) action->setChecked(action->data().toInt() == int(mode));
+}
+
+void MainWindow::setAmbientOcclusion(bool enabled) {
+    renderer::ShadingSettings shading = m_viewport->shading();
+    shading.ambientOcclusion = enabled;
+    m_viewport->setShading(shading);
+    m_aoAction->setChecked(enabled);
+}
+
 void MainWindow::createMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     QAction* open = file->addAction(tr("&Open..."), this, [this] {
@@ -94,30 +149,120 @@ void MainWindow::createMenus() {
     });
     open->setShortcut(QKeySequence::Open);
     file->addSeparator();
+    QAction* screenshot = file->addAction(tr("Save &screenshot..."), m_exports, &ExportController::showScreenshotDialog);
+    screenshot->setShortcut(Qt::Key_F4);
+    QAction* video = file->addAction(tr("Export &animation (MP4)..."), m_exports, &ExportController::showVideoDialog);
+    video->setShortcut(Qt::Key_F6);
+    file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    QMenu* shadingMenu = view->addMenu(tr("&Shading"));
+    m_shadingGroup = new QActionGroup(this);
+    for (renderer::ShadingMode mode : kModes) {
+        QAction* action = shadingMenu->addAction(modeLabel(mode));
+        action->setCheckable(true);
+        action->setData(int(mode));
+        action->setObjectName(QString("shading_") + shaders::shadingModeName(mode));
+        m_shadingGroup->addAction(action);
+        connect(action, &QAction::triggered, this, [this, mode] { setShadingMode(mode); });
+    }
+    QMenu* matcaps = shadingMenu->addMenu(tr("Matcap &material"));
+    for (const char* name : {"clay", "chrome", "jade", "wax"}) {
+        matcaps->addAction(QString(name), this, [this, name] {
+            renderer::ShadingSettings shading = m_viewport->shading();
+            shading.matcap = name;
+            m_viewport->setShading(shading);
+            setShadingMode(renderer::ShadingMode::Matcap);
+        });
+    }
+    m_aoAction = view->addAction(tr("&Ambient occlusion"), this, &MainWindow::setAmbientOcclusion);
+    m_aoAction->setCheckable(true);
+    m_aoAction->setObjectName("ambient_occlusion");
+    QAction* relaxation = view->addAction(tr("Over-&relaxed tracing"), this, [this](bool on) {
+        renderer::TraceSettings trace = m_viewport->trace();
+        trace.overRelaxation = on ? 1.6f : 1.0f;
+        m_viewport->setTrace(trace);
+    });
+    relaxation->setCheckable(true);
+    m_overlayAction = view->addAction(tr("Show name, author and &license"), this, [this] { updateOverlay(); });
+    m_overlayAction->setCheckable(true);
+    view->addSeparator();
+    view->addAction(m_editorDock->toggleViewAction());
+    view->addAction(m_viewportDock->toggleViewAction());
+    view->addAction(m_cameraDock->toggleViewAction());
+    view->addAction(m_timeDock->toggleViewAction());
+    view->addSeparator();
+    QAction* reset = view->addAction(tr("&Reset camera"), m_viewport, &widgets::ViewportWidget::resetCamera);
+    reset->setShortcut(Qt::Key_Home);
+    QAction* play = view->addAction(tr("&Play / pause"), this, [this] { m_playback->setPlaying(!m_playback->isPlaying()); });
+    play->setShortcut(Qt::Key_F8);
 
     QMenu* tools = menuBar()->addMenu(tr("&Tools"));
     QAction* sample = tools->addAction(tr("&Sample SDF..."), m_sampling, &SamplingController::showDialog);
     sample->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
-
-    QMenu* view = menuBar()->addMenu(tr("&View"));
-    view->addAction(m_editorDock->toggleViewAction());
-    view->addAction(m_viewportDock->toggleViewAction());
-    view->addSeparator();
-    view->addAction(tr("&Reset camera"), m_viewport, &widgets::ViewportWidget::resetCamera);
 }
 
-void MainWindow::restoreLayout() {
+void MainWindow::updateOverlay() {
+    if (!m_overlayAction->isChecked()) {
+        m_viewport->setOverlayText({});
+        return;
+    }
+    auto metadata = dataset::parseMetadata(m_editor->text().toStdString(), m_document->path().toStdString());
+    if (!metadata) {
+        m_viewport->setOverlayText(tr("(no metadata block)"));
+        return;
+    }
+    m_viewport->setOverlayText(QString::fromStdString(metadata->name + "\n" + metadata->author + " - " + metadata->license));
+}
+
+void MainWindow::restoreSession() {
     QSettings settings;
     restoreGeometry(settings.value("window/geometry").toByteArray());
     restoreState(settings.value("window/state").toByteArray());
+    renderer::Camera camera;
+    auto readVector = [&](const char* key, glm::vec3& value) {
+        QList<QVariant> list = settings.value(key).toList();
+        if (list.size() == 3)
+            for (int i = 0; i < 3; ++i) value[i] = list[i].toFloat();
+    };
+    readVector("camera/position", camera.position);
+    readVector("camera/target", camera.target);
+    camera.fovYDegrees = settings.value("camera/fov", camera.fovYDegrees).toFloat();
+    camera.nearPlane = settings.value("camera/near", camera.nearPlane).toFloat();
+    camera.farPlane = settings.value("camera/far", camera.farPlane).toFloat();
+    m_viewport->setCamera(camera);
+    m_cameraPanel->setCamera(camera);
+    renderer::ShadingSettings shading = m_viewport->shading();
+    shading.mode = renderer::parseShadingMode(settings.value("shading/mode", "gooch").toString().toStdString()).value_or(renderer::ShadingMode::Gooch);
+    shading.ambientOcclusion = settings.value("shading/ao", false).toBool();
+    shading.matcap = settings.value("shading/matcap", "clay").toString().toStdString();
+    m_viewport->setShading(shading);
+    setShadingMode(shading.mode);
+    m_aoAction->setChecked(shading.ambientOcclusion);
+    m_overlayAction->setChecked(settings.value("view/overlay", false).toBool());
 }
 
-void MainWindow::closeEvent(QCloseEvent* event) {
+void MainWindow::saveSession() {
     QSettings settings;
     settings.setValue("window/geometry", saveGeometry());
     settings.setValue("window/state", saveState());
+    const renderer::Camera& camera = m_viewport->camera();
+    auto vector = [](const glm::vec3& v) { return QList<QVariant>{v.x, v.y, v.z}; };
+    settings.setValue("camera/position", vector(camera.position));
+    settings.setValue("camera/target", vector(camera.target));
+    settings.setValue("camera/fov", camera.fovYDegrees);
+    settings.setValue("camera/near", camera.nearPlane);
+    settings.setValue("camera/far", camera.farPlane);
+    settings.setValue("shading/mode", shaders::shadingModeName(m_viewport->shading().mode));
+    settings.setValue("shading/ao", m_viewport->shading().ambientOcclusion);
+    settings.setValue("shading/matcap", QString::fromStdString(m_viewport->shading().matcap));
+    settings.setValue("view/overlay", m_overlayAction->isChecked());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    saveSession();
     event->accept();
 }
 

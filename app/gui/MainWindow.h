@@ -1,19 +1,27 @@
 #pragma once
-// The workbench window: docks for the editor and the viewport, menus, the status bar.
-// It lays out widgets and wires them to the SdfDocument controller; the work happens elsewhere.
+// The workbench window: docks (editor, viewport, camera, time), menus, status bar, and the
+// session (layout, camera, shading) saved on close and restored on start. It lays widgets out and
+// wires them to controllers; the work happens in the controllers and below.
+
+#include <renderer/RenderSettings.h>
 
 #include <QMainWindow>
 
+class QActionGroup;
 class QDockWidget;
 class QLabel;
 
 namespace sdfwb::widgets {
+class CameraPanel;
 class GlslEditor;
+class TimeBar;
 class ViewportWidget;
 }
 
 namespace sdfwb::app {
 
+class ExportController;
+class PlaybackController;
 class SamplingController;
 class SdfDocument;
 
@@ -28,25 +36,44 @@ public:
 
     widgets::ViewportWidget* viewport() const { return m_viewport; }
     widgets::GlslEditor* editor() const { return m_editor; }
+    widgets::CameraPanel* cameraPanel() const { return m_cameraPanel; }
+    widgets::TimeBar* timeBar() const { return m_timeBar; }
     SdfDocument* document() const { return m_document; }
     SamplingController* sampling() const { return m_sampling; }
+    ExportController* exports() const { return m_exports; }
+    PlaybackController* playback() const { return m_playback; }
+
+    void setShadingMode(renderer::ShadingMode mode);
+    void setAmbientOcclusion(bool enabled);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    QDockWidget* addDock(const QString& title, const QString& name, QWidget* widget, Qt::DockWidgetArea area);
     void createMenus();
-    void restoreLayout();
+    void restoreSession();
+    void saveSession();
     void updateTitle();
+    void updateOverlay();
 
     widgets::GlslEditor* m_editor = nullptr;
     widgets::ViewportWidget* m_viewport = nullptr;
+    widgets::CameraPanel* m_cameraPanel = nullptr;
+    widgets::TimeBar* m_timeBar = nullptr;
     QDockWidget* m_editorDock = nullptr;
     QDockWidget* m_viewportDock = nullptr;
+    QDockWidget* m_cameraDock = nullptr;
+    QDockWidget* m_timeDock = nullptr;
     QLabel* m_frameTime = nullptr;
     QLabel* m_diagnosticSummary = nullptr;
+    QActionGroup* m_shadingGroup = nullptr;
+    QAction* m_aoAction = nullptr;
+    QAction* m_overlayAction = nullptr;
     SdfDocument* m_document = nullptr;
     SamplingController* m_sampling = nullptr;
+    ExportController* m_exports = nullptr;
+    PlaybackController* m_playback = nullptr;
 };
 
 } // namespace sdfwb::app

@@ -1,14 +1,10 @@
 #pragma once
-// Runs sampling jobs for the workbench. Each job is a child `sdfwb --batch sample` process: the
-// headless EGL path stays out of the GUI's GL context, a crash in a driver cannot take the
-// editor down, and Cancel is a signal the batch command already handles (no partial file).
+// Runs sampling jobs for the workbench through a BatchProcess (`sdfwb --batch sample` as a child).
 
 #include <QObject>
 #include <QString>
 
 #include <functional>
-
-class QProcess;
 
 namespace sdfwb::widgets {
 class SamplingDialog;
@@ -17,16 +13,15 @@ struct SamplingSettings;
 
 namespace sdfwb::app {
 
+class BatchProcess;
+
 class SamplingController : public QObject {
     Q_OBJECT
 public:
     // `currentSdf` returns the path of the SDF to sample (empty when the text was never saved).
     SamplingController(QWidget* window, std::function<QString()> currentSdf, QObject* parent = nullptr);
-    ~SamplingController() override;
 
-    // The sdfwb binary that runs the jobs (default: this executable).
-    void setExecutable(const QString& path) { m_executable = path; }
-
+    void setExecutable(const QString& path);
     void showDialog();
     widgets::SamplingDialog* dialog() const { return m_dialog; }
     bool isRunning() const;
@@ -36,16 +31,11 @@ signals:
 
 private:
     void start(const widgets::SamplingSettings& settings);
-    void cancel();
-    void readProgress();
 
     QWidget* m_window;
     std::function<QString()> m_currentSdf;
-    QString m_executable;
+    BatchProcess* m_process;
     widgets::SamplingDialog* m_dialog = nullptr;
-    QProcess* m_process = nullptr;
-    QString m_errors;
-    QByteArray m_pendingStderr;
 };
 
 } // namespace sdfwb::app

@@ -37,4 +37,23 @@ void dolly(Camera& camera, float factor) {
     camera.position = camera.target + glm::normalize(offset) * radius;
 }
 
+void turn(Camera& camera, float yawRadians, float pitchRadians) {
+    glm::vec3 offset = camera.target - camera.position;
+    float distance = glm::length(offset);
+    if (distance <= 0.0f) return;
+    glm::vec3 direction = offset / distance;
+    float yaw = std::atan2(direction.x, direction.z) + yawRadians;
+    const float limit = glm::radians(89.0f);
+    float pitch = std::clamp(std::asin(std::clamp(direction.y, -1.0f, 1.0f)) + pitchRadians, -limit, limit);
+    direction = glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
+    camera.target = camera.position + distance * direction;
+}
+
+void fly(Camera& camera, glm::vec3 rightUpForward) {
+    CameraBasis basis = cameraBasis(camera);
+    glm::vec3 move = rightUpForward.x * basis.right + rightUpForward.y * glm::vec3(0.0f, 1.0f, 0.0f) + rightUpForward.z * basis.forward;
+    camera.position += move;
+    camera.target += move;
+}
+
 } // namespace sdfwb::renderer

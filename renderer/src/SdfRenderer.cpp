@@ -15,6 +15,7 @@
 #include <filesystem>
 
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <unordered_map>
@@ -80,6 +81,9 @@ struct SdfRenderer::Impl {
 
     GlTexture matcap;
     std::string matcapName;
+    GlFramebuffer lowFramebuffer;
+    GlTexture lowColor;
+    int lowWidth = 0, lowHeight = 0;
 
     static shaders::TracerFeatures features(const ShadingSettings& shading, const TraceSettings& trace) {
         shaders::TracerFeatures features;
@@ -188,6 +192,8 @@ SdfRenderer::~SdfRenderer() {
     for (auto& [text, variant] : m_impl->cache) variant.program.release();
     m_impl->vertexArray.release();
     m_impl->matcap.release();
+    m_impl->lowFramebuffer.release();
+    m_impl->lowColor.release();
 }
 
 std::vector<Diagnostic> SdfRenderer::setSdf(const shaders::PreparedSdf& sdf) {
@@ -272,7 +278,47 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
     return stats;
 }
 
+FrameStats SdfRenderer::renderScaled(int width, int height, float scale, const Camera& camera, float time, bool finish) {
+    if (scale >= 0.999f) return render(width, height, camera, time, finish);
+    auto start = std::chrono::steady_clock::now();
+    int lowWidth = std::max(1, int(std::lround(width * scale)));
+    int lowHeight = std::max(1, int(std::lround(height * scale)));
+    GLint target = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+    Impl& impl = *m_impl;
+    if (!impl.lowFramebuffer || impl.lowWidth != lowWidth || impl.lowHeight != lowHeight) {
+        GLuint id = 0;
+        glGenTextures(1, &id);
+        impl.lowColor = GlTexture(id);
+        glBindTexture(GL_TEXTURE_2D, id);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, lowWidth, lowHeight, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        glGenFramebuffers(1, &id);
+        impl.lowFramebuffer = GlFramebuffer(id);
+        glBindFramebuffer(GL_FRAMEBUFFER, id);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, impl.lowColor.id(), 0);
+        impl.lowWidth = lowWidth;
+        impl.lowHeight = lowHeight;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, impl.lowFramebuffer.id());
+    render(lowWidth, lowHeight, camera, time, false);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, impl.lowFramebuffer.id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(target));
+    glViewport(0, 0, width, height);
+    glBlitFramebuffer(0, 0, lowWidth, lowHeight, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
+    if (finish) glFinish();
+    FrameStats stats;
+    stats.cpuMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+}
+
 void SdfRenderer::releaseGl() {
+    m_impl->lowFramebuffer.reset();
+    m_impl->lowColor.reset();
+    m_impl->lowWidth = m_impl->lowHeight = 0;
     m_impl->current = nullptr;
     m_impl->cache.clear();
     m_impl->vertexArray.reset();

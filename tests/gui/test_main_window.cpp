@@ -1,11 +1,17 @@
 // The workbench window under a real X server (Xvfb): the default SDF is drawn by the same
 // renderer as the batch path, and a typed error shows a diagnostic while the last good shape stays.
 
+#include <gui/ExportController.h>
 #include <gui/MainWindow.h>
+#include <gui/PlaybackController.h>
 #include <gui/SamplingController.h>
 #include <gui/SdfDocument.h>
 #include <widgets/SamplingDialog.h>
+#include <renderer/ImageIO.h>
+#include <widgets/CameraPanel.h>
+#include <widgets/ExportDialog.h>
 #include <widgets/GlslEditor.h>
+#include <widgets/TimeBar.h>
 #include <widgets/ViewportWidget.h>
 
 #include <gtest/gtest.h>
@@ -14,7 +20,9 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QDoubleSpinBox>
 #include <QLabel>
+#include <QMouseEvent>
 #include <QPushButton>
 #include <QImage>
 #include <QStandardPaths>
@@ -146,6 +154,184 @@ TEST(SamplingDialog, SamplesTheOpenSdfAndCancelsCleanly) {
     EXPECT_TRUE(dialog->findChild<QLabel*>("message")->text().contains("Cancelled"));
     EXPECT_FALSE(QFile::exists(cancelled));
     QFile::remove(output);
+}
+
+namespace {
+
+// Opens `file` and waits until the viewport shows it.
+bool openAndWait(app::MainWindow& window, const char* file) {
+    bool applied = false;
+    auto connection = QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
+    bool ok = window.openFile(datasetFile(file)) && waitFor([&] { return applied; });
+    QObject::disconnect(connection);
+    return ok && waitFor([&] { return window.viewport()->lastFrameMilliseconds() > 0.0; });
+}
+
+QImage frameOf(app::MainWindow& window) {
+    window.viewport()->update();
+    return window.viewport()->grabFramebuffer();
+}
+
+double meanDifference(const QImage& a, const QImage& b) {
+    if (a.size() != b.size()) return 255.0;
+    double sum = 0.0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) {
+            QColor p = a.pixelColor(x, y), q = b.pixelColor(x, y);
+            sum += std::abs(p.red() - q.red()) + std::abs(p.green() - q.green()) + std::abs(p.blue() - q.blue());
+        }
+    return sum / (3.0 * a.width() * a.height());
+}
+
+} // namespace
+
+TEST(Viewport, EveryShadingModeDrawsSomethingDifferent) {
+    app::MainWindow window;
+    window.resize(1000, 600);
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
+    std::vector<QImage> frames;
+    for (renderer::ShadingMode mode : {renderer::ShadingMode::Normals, renderer::ShadingMode::Gooch, renderer::ShadingMode::Matcap,
+                                       renderer::ShadingMode::Curvature, renderer::ShadingMode::Steps}) {
+        window.setShadingMode(mode);
+        frames.push_back(frameOf(window));
+        frames.back().save(QDir::temp().filePath(QString("sdfwb-gui-mode-%1.png").arg(shaders::shadingModeName(mode))));
+    }
+    for (std::size_t i = 0; i < frames.size(); ++i)
+        for (std::size_t j = i + 1; j < frames.size(); ++j) EXPECT_GT(meanDifference(frames[i], frames[j]), 1.0) << i << " vs " << j;
+}
+
+TEST(Viewport, AmbientOcclusionDarkensCreases) {
+    // A ball resting on a plate: the crease where they meet must get darker with AO on.
+    QString path = QDir::temp().filePath("sdfwb-gui-ball-on-plate.glsl");
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write("float sdf(vec3 p) {\n"
+               "    vec3 q = abs(p - vec3(0.0, -0.5, 0.0)) - vec3(0.9, 0.05, 0.9);\n"
+               "    float plate = length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0);\n"
+               "    return min(plate, length(p - vec3(0.0, -0.05, 0.0)) - 0.4);\n}\n");
+    file.close();
+    app::MainWindow window;
+    window.show();
+    bool applied = false;
+    QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
+    ASSERT_TRUE(window.openFile(path));
+    ASSERT_TRUE(waitFor([&] { return applied; }));
+    window.setShadingMode(renderer::ShadingMode::Gooch);
+    window.setAmbientOcclusion(false);
+    QImage plain = frameOf(window);
+    window.setAmbientOcclusion(true);
+    QImage occluded = frameOf(window);
+    occluded.save(QDir::temp().filePath("sdfwb-gui-ao.png"));
+    EXPECT_GT(meanDifference(plain, occluded), 0.2);
+    window.setAmbientOcclusion(false);
+}
+
+TEST(Viewport, MovingRendersCheaplyThenRefines) {
+    app::MainWindow window;
+    window.resize(1000, 600);
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
+    widgets::ViewportWidget* viewport = window.viewport();
+    viewport->setFrameBudget(0.5);  // unreachable on purpose: the scale must drop while moving
+    renderer::Camera before = viewport->camera();
+    QPoint start(300, 300);
+    QMouseEvent press(QEvent::MouseButtonPress, start, viewport->mapToGlobal(start), Qt::LeftButton, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(viewport, &press);
+    for (int i = 1; i <= 5; ++i) {
+        QPoint at = start + QPoint(10 * i, 0);
+        QMouseEvent move(QEvent::MouseMove, at, viewport->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(viewport, &move);
+        viewport->grabFramebuffer();
+    }
+    EXPECT_TRUE(viewport->isInteracting());
+    EXPECT_LT(viewport->lastFrameScale(), 1.0f);
+    EXPECT_NE(viewport->camera().position.x, before.position.x) << "left drag orbits";
+    EXPECT_NEAR(window.cameraPanel()->camera().position.x, viewport->camera().position.x, 1e-3) << "the camera panel follows";
+    ASSERT_TRUE(waitFor([&] { return !viewport->isInteracting(); }, 3000));
+    viewport->grabFramebuffer();
+    EXPECT_EQ(viewport->lastFrameScale(), 1.0f) << "a full-resolution frame follows when still";
+}
+
+TEST(Viewport, CameraPanelMovesTheCameraAndTheSessionKeepsIt) {
+    renderer::Camera edited;
+    {
+        app::MainWindow window;
+        window.show();
+        ASSERT_TRUE(openAndWait(window, "Geometry/Box.glsl"));
+        QImage before = frameOf(window);
+        window.cameraPanel()->findChild<QDoubleSpinBox*>("position_y")->setValue(-2.5);
+        window.cameraPanel()->findChild<QDoubleSpinBox*>("fov")->setValue(30.0);
+        edited = window.viewport()->camera();
+        EXPECT_FLOAT_EQ(edited.position.y, -2.5f);
+        EXPECT_FLOAT_EQ(edited.fovYDegrees, 30.0f);
+        EXPECT_GT(meanDifference(before, frameOf(window)), 1.0);
+        window.close();  // saves the session
+    }
+    app::MainWindow again;
+    EXPECT_FLOAT_EQ(again.viewport()->camera().position.y, -2.5f);
+    EXPECT_FLOAT_EQ(again.viewport()->camera().fovYDegrees, 30.0f);
+    again.viewport()->resetCamera();
+    EXPECT_FLOAT_EQ(again.cameraPanel()->camera().position.y, renderer::Camera{}.position.y);
+    again.close();
+}
+
+TEST(Viewport, TimeScrubsAnimatedSdfs) {
+    QString path = QDir::temp().filePath("sdfwb-gui-pulse.glsl");
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write("float sdf(vec3 p, float t) { return length(p) - 0.4 - 0.3 * sin(t); }\n");
+    file.close();
+    app::MainWindow window;
+    window.show();
+    bool applied = false;
+    QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
+    ASSERT_TRUE(window.openFile(path));
+    ASSERT_TRUE(waitFor([&] { return applied; }));
+    window.timeBar()->setTime(0.0);
+    window.viewport()->setTime(0.0f);
+    long small = foreground(frameOf(window), kBackground);
+    window.viewport()->setTime(1.5f);
+    long large = foreground(frameOf(window), kBackground);
+    EXPECT_GT(large, small * 2) << "sin(1.5) grows the sphere from 0.4 to 0.7";
+    window.playback()->setPlaying(true);
+    float startTime = window.viewport()->time();
+    QThread::msleep(300);
+    ASSERT_TRUE(waitFor([&] { return window.viewport()->time() > startTime + 0.2f; }, 3000));
+    window.playback()->setPlaying(false);
+    EXPECT_NEAR(window.timeBar()->time(), window.viewport()->time(), 1e-3);
+}
+
+TEST(Export, ScreenshotAtAChosenSizeAndAnMp4) {
+    app::MainWindow window;
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
+    QString png = QDir::temp().filePath("sdfwb-gui-screenshot.png");
+    QFile::remove(png);
+    EXPECT_EQ(window.exports()->saveScreenshot(png, 640, 400), QString());
+    auto image = renderer::readImage(png.toStdString());
+    ASSERT_TRUE(image.hasValue());
+    EXPECT_EQ(image->width, 640);
+    EXPECT_EQ(image->height, 400);
+
+    window.exports()->setExecutable(SDFWB_BINARY);
+    window.exports()->showVideoDialog();
+    QString mp4 = QDir::temp().filePath("sdfwb-gui-turntable.mp4");
+    QFile::remove(mp4);
+    widgets::ExportSettings settings;
+    settings.output = mp4;
+    settings.width = 160;
+    settings.height = 90;
+    settings.seconds = 1.0;
+    settings.framesPerSecond = 10;
+    window.exports()->videoDialog()->setSettings(settings);
+    bool done = false, ok = false;
+    QObject::connect(window.exports(), &app::ExportController::videoFinished, [&](bool success, const QString&) { done = true; ok = success; });
+    window.exports()->videoDialog()->findChild<QPushButton*>("start")->click();
+    ASSERT_TRUE(waitFor([&] { return done; }, 60000));
+    EXPECT_TRUE(ok) << window.exports()->videoDialog()->findChild<QLabel*>("message")->text().toStdString();
+    EXPECT_TRUE(QFile::exists(mp4));
+    window.grab().save(QDir::temp().filePath("sdfwb-gui-window.png"));
 }
 
 int main(int argc, char** argv) {

@@ -2,12 +2,17 @@
 
 #include <core/Log.h>
 #include <renderer/GlInfo.h>
+#include <renderer/OffscreenRenderer.h>
 #include <renderer/SdfRenderer.h>
 
+#include <QGuiApplication>
+#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QPainter>
 #include <QWheelEvent>
 
+#include <algorithm>
 #include <cmath>
 
 namespace sdfwb::widgets {
@@ -16,6 +21,14 @@ ViewportWidget::ViewportWidget(QWidget* parent)
     : QOpenGLWidget(parent), m_renderer(std::make_unique<renderer::SdfRenderer>()) {
     setMinimumSize(64, 64);
     setFocusPolicy(Qt::StrongFocus);
+    m_refineTimer.setSingleShot(true);
+    m_refineTimer.setInterval(200);
+    connect(&m_refineTimer, &QTimer::timeout, this, [this] {
+        m_interacting = false;
+        update();
+    });
+    m_flyTimer.setInterval(16);
+    connect(&m_flyTimer, &QTimer::timeout, this, &ViewportWidget::flyStep);
 }
 
 ViewportWidget::~ViewportWidget() {
@@ -44,7 +57,17 @@ void ViewportWidget::setShading(const renderer::ShadingSettings& shading) {
     m_shading = shading;
     if (context() && isValid()) {
         makeCurrent();
-        (void)m_renderer->setShading(shading);
+        for (const auto& d : m_renderer->setShading(shading)) log::warning("shaders", shaders::formatDiagnostic(d));
+        doneCurrent();
+    }
+    update();
+}
+
+void ViewportWidget::setTrace(const renderer::TraceSettings& trace) {
+    m_trace = trace;
+    if (context() && isValid()) {
+        makeCurrent();
+        for (const auto& d : m_renderer->setTrace(trace)) log::warning("shaders", shaders::formatDiagnostic(d));
         doneCurrent();
     }
     update();
@@ -55,7 +78,32 @@ void ViewportWidget::setCamera(const renderer::Camera& camera) {
     update();
 }
 
-void ViewportWidget::resetCamera() { setCamera(renderer::Camera{}); }
+void ViewportWidget::resetCamera() {
+    setCamera(renderer::Camera{});
+    emit cameraChanged(m_camera);
+}
+
+void ViewportWidget::setTime(float seconds) {
+    m_time = seconds;
+    update();
+}
+
+void ViewportWidget::setOverlayText(const QString& text) {
+    m_overlay = text;
+    update();
+}
+
+renderer::Image ViewportWidget::renderImage(int width, int height) {
+    if (!context() || !isValid()) return {};
+    makeCurrent();
+    renderer::Image image;
+    {
+        renderer::OffscreenRenderer offscreen;
+        image = offscreen.render(*m_renderer, width, height, m_camera, m_time);
+    }
+    doneCurrent();
+    return image;
+}
 
 void ViewportWidget::initializeGL() {
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, [this] {
@@ -68,6 +116,7 @@ void ViewportWidget::initializeGL() {
     log::info("gl", "viewport context: " + renderer::describe(info));
     if (auto ok = renderer::requireGl43(info); !ok) log::error("gl", ok.error().message);
     (void)m_renderer->setShading(m_shading);
+    (void)m_renderer->setTrace(m_trace);
     if (m_pendingSdf) {
         auto diagnostics = m_renderer->setSdf(*m_pendingSdf);
         for (const auto& d : diagnostics) log::warning("shaders", shaders::formatDiagnostic(d));
@@ -80,15 +129,58 @@ void ViewportWidget::paintGL() {
     const qreal ratio = devicePixelRatioF();
     int width = int(std::lround(this->width() * ratio));
     int height = int(std::lround(this->height() * ratio));
-    // finish: the status bar shows what the frame really cost, not the time to queue it.
-    renderer::FrameStats stats = m_renderer->render(width, height, m_camera, 0.0f, true);
+    float scale = m_interacting ? m_scale : 1.0f;
+    // finish: the status bar and the scale choice see what the frame really cost.
+    renderer::FrameStats stats = m_renderer->renderScaled(width, height, scale, m_camera, m_time, true);
     m_lastFrameMilliseconds = stats.cpuMilliseconds;
-    emit frameRendered(stats.cpuMilliseconds);
+    m_lastScale = scale;
+    if (scale >= 1.0f) {
+        m_fullFrameMilliseconds = stats.cpuMilliseconds;
+    } else if (stats.cpuMilliseconds > 0.0) {
+        // Cost grows with the pixel count, i.e. with scale^2: aim at 80 % of the budget.
+        float next = scale * float(std::sqrt(0.8 * m_frameBudget / stats.cpuMilliseconds));
+        m_scale = std::clamp(0.5f * (m_scale + next), 0.1f, 1.0f);
+    }
+    if (!m_overlay.isEmpty()) {
+        QPainter painter(this);
+        painter.setRenderHint(QPainter::TextAntialiasing);
+        QFont font = painter.font();
+        font.setPointSizeF(9.0);
+        painter.setFont(font);
+        QRect box = painter.fontMetrics().boundingRect(QRect(0, 0, this->width() - 16, 200), Qt::TextWordWrap, m_overlay);
+        box.moveBottomLeft(QPoint(8, this->height() - 8));
+        painter.fillRect(box.adjusted(-4, -3, 4, 3), QColor(0, 0, 0, 120));
+        painter.setPen(QColor(235, 235, 235));
+        painter.drawText(box, Qt::TextWordWrap, m_overlay);
+    }
+    emit frameRendered(stats.cpuMilliseconds, scale);
 }
 
 void ViewportWidget::releaseGl() { m_renderer->releaseGl(); }
 
-void ViewportWidget::mousePressEvent(QMouseEvent* event) { m_lastMouse = event->position().toPoint(); }
+void ViewportWidget::interacted() {
+    if (!m_interacting) {
+        // Start from the scale the last full frame suggests, so the first moving frame is fast.
+        m_interacting = true;
+        if (m_fullFrameMilliseconds > 0.0)
+            m_scale = std::clamp(float(std::sqrt(0.8 * m_frameBudget / m_fullFrameMilliseconds)), 0.1f, 1.0f);
+    }
+    m_refineTimer.start();
+    update();
+    emit cameraChanged(m_camera);
+}
+
+void ViewportWidget::mousePressEvent(QMouseEvent* event) {
+    m_lastMouse = event->position().toPoint();
+    setFocus();
+}
+
+void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
+    if (event->button() == Qt::RightButton) {
+        m_keys.clear();
+        m_flyTimer.stop();
+    }
+}
 
 void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
     QPoint position = event->position().toPoint();
@@ -96,14 +188,55 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
     m_lastMouse = position;
     if (event->buttons() & Qt::LeftButton) {
         renderer::orbit(m_camera, -float(delta.x()) * 0.01f, float(delta.y()) * 0.01f);
-        update();
+        interacted();
+    } else if (event->buttons() & Qt::RightButton) {
+        renderer::turn(m_camera, -float(delta.x()) * 0.005f, -float(delta.y()) * 0.005f);
+        interacted();
     }
 }
 
 void ViewportWidget::wheelEvent(QWheelEvent* event) {
     float notches = float(event->angleDelta().y()) / 120.0f;
     renderer::dolly(m_camera, std::pow(0.9f, notches));
-    update();
+    interacted();
+}
+
+void ViewportWidget::keyPressEvent(QKeyEvent* event) {
+    static const QSet<int> movement = {Qt::Key_W, Qt::Key_A, Qt::Key_S, Qt::Key_D, Qt::Key_Z, Qt::Key_C};
+    if (!movement.contains(event->key())) return QOpenGLWidget::keyPressEvent(event);
+    m_keys.insert(event->key());
+    if (!m_flyTimer.isActive()) {
+        m_flyClock.start();
+        m_flyTimer.start();
+    }
+}
+
+void ViewportWidget::keyReleaseEvent(QKeyEvent* event) {
+    if (event->isAutoRepeat()) return;
+    m_keys.remove(event->key());
+    if (m_keys.isEmpty()) m_flyTimer.stop();
+}
+
+void ViewportWidget::focusOutEvent(QFocusEvent* event) {
+    m_keys.clear();
+    m_flyTimer.stop();
+    QOpenGLWidget::focusOutEvent(event);
+}
+
+void ViewportWidget::flyStep() {
+    double seconds = std::min(m_flyClock.restart() / 1000.0, 0.1);
+    if (m_keys.isEmpty()) return;
+    Qt::KeyboardModifiers modifiers = QGuiApplication::queryKeyboardModifiers();
+    float speed = 0.8f * (modifiers & Qt::ShiftModifier ? 4.0f : 1.0f) * (modifiers & Qt::AltModifier ? 0.25f : 1.0f);
+    glm::vec3 move(0.0f);
+    if (m_keys.contains(Qt::Key_W)) move.z += 1.0f;
+    if (m_keys.contains(Qt::Key_S)) move.z -= 1.0f;
+    if (m_keys.contains(Qt::Key_D)) move.x += 1.0f;
+    if (m_keys.contains(Qt::Key_A)) move.x -= 1.0f;
+    if (m_keys.contains(Qt::Key_C)) move.y += 1.0f;
+    if (m_keys.contains(Qt::Key_Z)) move.y -= 1.0f;
+    renderer::fly(m_camera, move * speed * float(seconds));
+    interacted();
 }
 
 } // namespace sdfwb::widgets

@@ -27,4 +27,12 @@ void orbit(Camera& camera, float yawRadians, float pitchRadians);
 // Moves the camera towards (factor < 1) or away from (factor > 1) its target.
 void dolly(Camera& camera, float factor);
 
+// First-person look: turns the view direction by yaw (around world up) and pitch, keeping the
+// position; the target moves, at the same distance.
+void turn(Camera& camera, float yawRadians, float pitchRadians);
+
+// First-person move: by (right, up, forward) amounts in the camera's own frame; position and
+// target move together.
+void fly(Camera& camera, glm::vec3 rightUpForward);
+
 } // namespace sdfwb::renderer

@@ -49,6 +49,10 @@ public:
     // the background. `finish` waits for the GPU so the stats measure the whole frame.
     FrameStats render(int width, int height, const Camera& camera, float time, bool finish = false);
 
+    // Renders at `scale` (0 < scale <= 1) of width x height into an internal framebuffer and
+    // stretches the result over the bound framebuffer: cheap frames while the camera moves.
+    FrameStats renderScaled(int width, int height, float scale, const Camera& camera, float time, bool finish = false);
+
     // Frees every GL object; the context must be current. The renderer can be used again later.
     void releaseGl();
 

@@ -1,15 +1,25 @@
 #pragma once
 // Hosts the sphere tracer in a QOpenGLWidget. All drawing is forwarded to renderer::SdfRenderer;
-// this class only turns mouse input into camera moves. UI thread only. The renderer's GL objects
-// are freed when Qt destroys the context (floating a dock re-creates it) and rebuilt lazily.
+// this class turns input into camera moves and decides the frame's resolution. UI thread only.
+// The renderer's GL objects are freed when Qt destroys the context (floating a dock re-creates
+// it) and rebuilt lazily.
+//
+// Camera: left drag orbits, wheel dollies; right drag looks around (first person) and, while the
+// right button is held, W/A/S/D move, Z/C go down/up, Shift is faster, Alt slower.
+// While the camera moves, frames render at a reduced scale chosen to stay within the frame budget;
+// shortly after it stops, a full-resolution frame follows.
 
 #include <renderer/Camera.h>
+#include <renderer/Image.h>
 #include <renderer/RenderSettings.h>
 #include <shaders/Diagnostic.h>
 #include <shaders/SdfSource.h>
 
+#include <QElapsedTimer>
 #include <QOpenGLWidget>
 #include <QPoint>
+#include <QSet>
+#include <QTimer>
 
 #include <memory>
 #include <vector>
@@ -31,34 +41,69 @@ public:
     std::vector<shaders::Diagnostic> setSdf(const shaders::PreparedSdf& sdf);
 
     void setShading(const renderer::ShadingSettings& shading);
+    const renderer::ShadingSettings& shading() const { return m_shading; }
+    void setTrace(const renderer::TraceSettings& trace);
+    const renderer::TraceSettings& trace() const { return m_trace; }
     const renderer::Camera& camera() const { return m_camera; }
     void setCamera(const renderer::Camera& camera);
     void resetCamera();
+    void setTime(float seconds);
+    float time() const { return m_time; }
 
+    // Frames while moving aim to take at most this long (default 33 ms).
+    void setFrameBudget(double milliseconds) { m_frameBudget = milliseconds; }
     double lastFrameMilliseconds() const { return m_lastFrameMilliseconds; }
+    float lastFrameScale() const { return m_lastScale; }
+    bool isInteracting() const { return m_interacting; }
+
+    // Renders one full-quality frame at width x height (screenshots). Empty image without GL.
+    renderer::Image renderImage(int width, int height);
+
+    // Text drawn in the lower-left corner (name, author, license); empty hides it.
+    void setOverlayText(const QString& text);
+
     QString glDescription() const { return m_glDescription; }
 
 signals:
-    void frameRendered(double milliseconds);
+    void frameRendered(double milliseconds, float scale);
+    void cameraChanged(const sdfwb::renderer::Camera& camera);
     void glReady(const QString& description);
 
 protected:
     void initializeGL() override;
     void paintGL() override;
     void mousePressEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+    void keyReleaseEvent(QKeyEvent* event) override;
+    void focusOutEvent(QFocusEvent* event) override;
 
 private:
     void releaseGl();
+    void interacted();  // a camera move happened: render cheaply now, refine later
+    void flyStep();
 
     std::unique_ptr<renderer::SdfRenderer> m_renderer;
     std::unique_ptr<shaders::PreparedSdf> m_pendingSdf;
     renderer::ShadingSettings m_shading;
+    renderer::TraceSettings m_trace;
     renderer::Camera m_camera;
+    float m_time = 0.0f;
     QPoint m_lastMouse;
+    QSet<int> m_keys;
+    QTimer m_flyTimer;
+    QElapsedTimer m_flyClock;
+    QTimer m_refineTimer;
+    bool m_interacting = false;
+    double m_frameBudget = 33.0;
+    double m_fullFrameMilliseconds = 0.0;
+    float m_scale = 1.0f;
+    float m_lastScale = 1.0f;
     double m_lastFrameMilliseconds = 0.0;
     QString m_glDescription;
+    QString m_overlay;
 };
 
 } // namespace sdfwb::widgets

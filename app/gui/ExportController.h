@@ -1,0 +1,50 @@
+#pragma once
+// Screenshots (F4: rendered in the viewport's context at any size, written through OpenImageIO)
+// and animations (F6: `sdfwb --batch animate` as a child process with the viewport's camera and
+// shading, so the UI stays responsive and Cancel leaves no file).
+
+#include <QObject>
+#include <QString>
+
+#include <functional>
+
+namespace sdfwb::widgets {
+class ExportDialog;
+class ViewportWidget;
+struct ExportSettings;
+}
+
+namespace sdfwb::app {
+
+class BatchProcess;
+
+class ExportController : public QObject {
+    Q_OBJECT
+public:
+    ExportController(QWidget* window, widgets::ViewportWidget* viewport, std::function<QString()> currentSdf, QObject* parent = nullptr);
+
+    void setExecutable(const QString& path);
+    void showScreenshotDialog();
+    void showVideoDialog();
+    widgets::ExportDialog* screenshotDialog() const { return m_screenshotDialog; }
+    widgets::ExportDialog* videoDialog() const { return m_videoDialog; }
+
+    // Renders and writes a screenshot; returns an error message, empty on success.
+    QString saveScreenshot(const QString& path, int width, int height);
+    bool isExporting() const;
+
+signals:
+    void videoFinished(bool ok, const QString& message);
+
+private:
+    void startVideo(const widgets::ExportSettings& settings);
+
+    QWidget* m_window;
+    widgets::ViewportWidget* m_viewport;
+    std::function<QString()> m_currentSdf;
+    BatchProcess* m_process;
+    widgets::ExportDialog* m_screenshotDialog = nullptr;
+    widgets::ExportDialog* m_videoDialog = nullptr;
+};
+
+} // namespace sdfwb::app
