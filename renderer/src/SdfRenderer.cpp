@@ -90,6 +90,7 @@ struct SdfRenderer::Impl {
         features.shading = shading.mode;
         features.ambientOcclusion = shading.ambientOcclusion;
         features.overRelaxation = trace.overRelaxation > 1.0f;
+        features.statsOutput = shading.statsOutput;
         return features;
     }
 

@@ -42,6 +42,7 @@ Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatu
         files.push_back("tracer/ao.glsl");
     }
     if (features.overRelaxation) defines["SDFWB_OVERRELAX"] = "1";
+    if (features.statsOutput) defines["SDFWB_OUTPUT_STATS"] = "1";
     files.push_back("tracer/trace_main.frag");
     std::vector<ShaderPiece> pieces;
     for (const std::string& file : files) {

@@ -76,7 +76,8 @@ Hit traceRay(vec3 origin, vec3 direction) {
         if (isnan(d) || isinf(d)) break;
         float radius = abs(d);
 #ifdef SDFWB_OVERRELAX
-        if (omega > 1.0 && radius + previousRadius < stepLength) {
+        // Fall back when the spheres do not overlap, or when the step crossed the surface (d < 0).
+        if (omega > 1.0 && (radius + previousRadius < stepLength || d < 0.0)) {
             t -= stepLength - stepLength / omega;  // undo the relaxed part of the last step
             omega = 1.0;
             previousRadius = 0.0;

@@ -6,6 +6,11 @@ out vec4 o_color;
 void main() {
     vec3 direction = primaryRay(gl_FragCoord.xy);
     Hit hit = traceRay(u_cameraPosition, direction);
+#ifdef SDFWB_OUTPUT_STATS
+    // Measurement output (float target): steps, hit distance (-1 for a miss), |f| at the hit.
+    o_color = vec4(float(hit.steps), hit.found ? hit.t : -1.0, hit.found ? abs(map(hit.position)) : 0.0, 1.0);
+    return;
+#endif
 #ifdef SDFWB_SHADING_STEPS
     // The heat map shows the work of every pixel, misses included.
     o_color = vec4(stepsColor(hit), 1.0);

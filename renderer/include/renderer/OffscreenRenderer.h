@@ -7,6 +7,7 @@
 #include <renderer/SdfRenderer.h>
 
 #include <memory>
+#include <vector>
 
 namespace sdfwb::renderer {
 
@@ -17,8 +18,18 @@ public:
     OffscreenRenderer(const OffscreenRenderer&) = delete;
     OffscreenRenderer& operator=(const OffscreenRenderer&) = delete;
 
-    // Renders one frame of `sdf` at width x height and returns it (top row first).
-    Image render(SdfRenderer& renderer, int width, int height, const Camera& camera, float time, FrameStats* stats = nullptr);
+    // Renders one frame at width x height and returns it (top row first). scale < 1 traces fewer
+    // pixels and stretches them, as the viewport does while the camera moves.
+    Image render(SdfRenderer& renderer, int width, int height, const Camera& camera, float time, FrameStats* stats = nullptr,
+                 float scale = 1.0f);
+
+    // Per-pixel tracing statistics (the renderer's shading must have statsOutput on): for each
+    // pixel, top row first, {steps, hit distance t or -1 for a miss, |f| at the hit}.
+    struct PixelStats {
+        float steps, t, residual;
+    };
+    std::vector<PixelStats> renderStats(SdfRenderer& renderer, int width, int height, const Camera& camera, float time,
+                                        FrameStats* stats = nullptr);
 
 private:
     struct Impl;

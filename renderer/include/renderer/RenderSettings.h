@@ -29,6 +29,7 @@ struct ShadingSettings {
     glm::vec3 lightDirection{-0.05f, 0.87f, 0.49f}; // towards the key light (Gooch): upper left of the default view
     float curvatureScale = 5.0f;                   // |mean curvature| drawn full red
     std::string matcap = "clay";                   // name in resources/matcaps or a path to an image
+    bool statsOutput = false;                      // write (steps, t, |f(hit)|) per pixel: see OffscreenRenderer::renderStats
 };
 
 } // namespace sdfwb::renderer

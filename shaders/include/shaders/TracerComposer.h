@@ -22,6 +22,7 @@ struct TracerFeatures {
     ShadingMode shading = ShadingMode::Normals;
     bool ambientOcclusion = false;
     bool overRelaxation = false;
+    bool statsOutput = false;  // write (steps, t, |f(hit)|) instead of a colour (benchmarks, tests)
 };
 
 Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatures& features);
