@@ -11,6 +11,7 @@
 
 #include <renderer/SampleCompute.h>
 #include <renderer/VideoWriter.h>
+#include <sampling/FieldAudit.h>
 #include <sampling/Sampler.h>
 #include <sampling/SamplerLibrary.h>
 
@@ -127,6 +128,7 @@ int runRender(const RenderJob& job, const OutputOptions& output) {
     renderer::SdfRenderer sdfRenderer;
     (void)sdfRenderer.setTrace(job.trace);
     (void)sdfRenderer.setShading(job.shading);
+    (void)sdfRenderer.setPlane(job.plane);
     auto diagnostics = sdfRenderer.setSdf(sdf);
     if (shaders::hasErrors(diagnostics)) {
         printDiagnostics(diagnostics);
@@ -329,6 +331,7 @@ int runAnimate(const AnimateJob& job, const OutputOptions& output) {
     renderer::SdfRenderer sdfRenderer;
     (void)sdfRenderer.setTrace(job.frame.trace);
     (void)sdfRenderer.setShading(job.frame.shading);
+    (void)sdfRenderer.setPlane(job.frame.plane);
     auto diagnostics = sdfRenderer.setSdf(sdf);
     if (shaders::hasErrors(diagnostics)) {
         printDiagnostics(diagnostics);
@@ -377,6 +380,107 @@ int runAnimate(const AnimateJob& job, const OutputOptions& output) {
     } else if (!output.quiet) {
         std::printf("wrote %s (%d frames at %d fps, %dx%d, H.264; rendering %.2f s, total %.2f s)\n", outputPath.string().c_str(), frames,
                     job.framesPerSecond, job.frame.width & ~1, job.frame.height & ~1, renderSeconds, seconds);
+    }
+    return kExitOk;
+}
+
+} // namespace sdfwb::app
+
+namespace sdfwb::app {
+
+int runAudit(const AuditCommand& command, const OutputOptions& output) {
+    dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
+    auto sdfPath = dataset::resolveSdfArgument(command.sdf, catalogue);
+    if (!sdfPath) { printError("--sdf: " + sdfPath.error().message); return kExitUsage; }
+    if (command.samples < 64 || command.samples > 100000000) { printError("--samples: must be 64..100000000"); return kExitUsage; }
+    shaders::PreparedSdf sdf = shaders::prepareSdfFile(*sdfPath, includeOptions());
+    if (!sdf.ok()) {
+        printDiagnostics(sdf.diagnostics);
+        printError("audit: " + sdfPath->string() + " has errors");
+        return kExitFailure;
+    }
+    auto context = renderer::HeadlessContext::create();
+    if (!context) { printError(context.error().message); return kExitNoGl; }
+
+    if (command.plane) {
+        glm::vec3 normal(command.planeNormal[0], command.planeNormal[1], command.planeNormal[2]);
+        auto readout = sampling::analysePlane(sdf, normal, command.planeOffset, command.resolution, command.time);
+        if (!readout) { printError(readout.error().message); return kExitFailure; }
+        const sampling::PlaneReadout& r = *readout;
+        if (output.json) {
+            nlohmann::json json = {{"sdf", sdfPath->string()}, {"plane", {normal.x, normal.y, normal.z, command.planeOffset}},
+                                   {"resolution", r.resolution}, {"points", r.points}, {"minimum", r.minimum}, {"maximum", r.maximum},
+                                   {"lipschitz_max", r.lipschitzMax}, {"lipschitz_p99", r.lipschitz99}, {"share_above_one", r.shareAboveOne},
+                                   {"truncation_distance", r.truncationDistance ? nlohmann::json(*r.truncationDistance) : nlohmann::json(nullptr)},
+                                   {"discontinuities", r.discontinuities}, {"nan_count", r.nanCount}, {"histogram", r.histogram},
+                                   {"histogram_bin_width", 0.05}, {"safe_step_factor", r.safeStepFactor}, {"seconds", r.seconds}};
+            std::cout << json.dump(2) << "\n";
+        } else if (!output.quiet) {
+            std::printf("plane %.3g,%.3g,%.3g,%.3g of %s: %llu points (%dx%d grid), %.3f s\n", normal.x, normal.y, normal.z, command.planeOffset,
+                        sdfPath->string().c_str(), (unsigned long long)r.points, r.resolution, r.resolution, r.seconds);
+            std::printf("  value range        [%.4g, %.4g]\n", r.minimum, r.maximum);
+            std::printf("  |grad f|           max %.4g, 99th percentile %.4g; %.2f %% of the plane above 1\n", r.lipschitzMax, r.lipschitz99,
+                        100.0 * r.shareAboveOne);
+            std::printf("  safe step factor   %.4g\n", r.safeStepFactor);
+            std::printf("  truncation         %s\n", r.truncationDistance ? std::to_string(*r.truncationDistance).c_str() : "none");
+            std::printf("  discontinuities    %llu points\n  NaN/Inf            %llu points\n", (unsigned long long)r.discontinuities,
+                        (unsigned long long)r.nanCount);
+        }
+        return kExitOk;
+    }
+
+    CancelToken cancel;
+    ProgressBar bar(!output.quiet && !output.json);
+    sampling::AuditOptions options;
+    options.samples = command.samples;
+    options.seed = command.seed;
+    options.time = command.time;
+    Expected<sampling::AuditReport> report = [&] {
+        InterruptScope interrupts(cancel);
+        return sampling::auditField(sdf, options, ProgressSink{[&](std::uint64_t done, std::uint64_t total) { bar.update(done, total); }, &cancel});
+    }();
+    bar.finish();
+    if (cancel.isCancelled()) { printError("audit: cancelled"); return kExitCancelled; }
+    if (!report) { printError(report.error().message); return kExitFailure; }
+    const sampling::AuditReport& r = *report;
+    if (output.json) {
+        nlohmann::json scales = nlohmann::json::array();
+        for (const auto& q : r.scales) scales.push_back({{"scale", q.step}, {"p50", q.p50}, {"p99", q.p99}, {"p999", q.p999}, {"max", q.max}});
+        nlohmann::json convergence = nlohmann::json::array();
+        for (const auto& c : r.convergence)
+            convergence.push_back({{"samples", c.samples}, {"lipschitz", c.lipschitz}, {"exactness_p99", c.exactnessP99}, {"seconds", c.seconds}});
+        nlohmann::json json = {{"sdf", sdfPath->string()}, {"verdict", r.verdict}, {"reason", r.reason}, {"lipschitz", r.lipschitz},
+                               {"lipschitz_max", r.lipschitzMax}, {"lipschitz_uncertainty", r.lipschitzUncertainty},
+                               {"safe_step_factor", r.safeStepFactor},
+                               {"truncation_distance", r.truncationDistance ? nlohmann::json(*r.truncationDistance) : nlohmann::json(nullptr)},
+                               {"nan_fraction", r.nanFraction}, {"nan_fraction_error", r.nanFractionError},
+                               {"discontinuities", r.discontinuities}, {"discontinuity_share", r.discontinuityShare},
+                               {"eikonal_error_mean", r.eikonalMean}, {"eikonal_error_p95", r.eikonalP95},
+                               {"surface_points", r.surfacePoints}, {"surface_spacing", r.surfaceSpacing},
+                               {"exactness_error_p99", r.exactnessP99}, {"exactness_error_max", r.exactnessMax},
+                               {"overestimate_share", r.overestimateShare}, {"samples", r.samples}, {"scales", scales},
+                               {"convergence", convergence}, {"seconds", r.seconds}};
+        std::cout << json.dump(2) << "\n";
+    } else if (!output.quiet) {
+        std::printf("%s: %s\n  %s\n\n", sdfPath->string().c_str(), r.verdict.c_str(), r.reason.c_str());
+        std::printf("  Lipschitz estimate   %.4g (a lower bound of the true constant; largest quotient seen %.4g, spread %.2g)\n",
+                    r.lipschitz, r.lipschitzMax, r.lipschitzUncertainty);
+        std::printf("  safe step factor     %.4g\n", r.safeStepFactor);
+        std::printf("  truncation           %s\n", r.truncationDistance ? std::to_string(*r.truncationDistance).c_str() : "none");
+        std::printf("  NaN/Inf fraction     %.3g +- %.2g\n", r.nanFraction, r.nanFractionError);
+        std::printf("  discontinuities      %llu points (%.3g %%)\n", (unsigned long long)r.discontinuities, 100.0 * r.discontinuityShare);
+        std::printf("  eikonal error        mean %.3g, 95th percentile %.3g (near the surface)\n", r.eikonalMean, r.eikonalP95);
+        std::printf("  exactness            | |f| - true distance |: 99th percentile %.3g, max %.3g; true distance known to +-%.2g\n",
+                    r.exactnessP99, r.exactnessMax, r.surfaceSpacing);
+        std::printf("                       (%llu surface points, k-d tree); %.3g %% of points overestimate it\n",
+                    (unsigned long long)r.surfacePoints, 100.0 * r.overestimateShare);
+        std::printf("\n  difference quotients |Df|      p50      p99    p99.9      max\n");
+        for (const auto& q : r.scales)
+            std::printf("    at scale %-8.2g        %8.4f %8.4f %8.4f %8.4f\n", q.step, q.p50, q.p99, q.p999, q.max);
+        std::printf("\n  error against run time: samples   Lipschitz   exactness p99   seconds\n");
+        for (const auto& c : r.convergence)
+            std::printf("                          %9llu   %9.4f   %13.3g   %7.2f\n", (unsigned long long)c.samples, c.lipschitz, c.exactnessP99,
+                        c.seconds);
     }
     return kExitOk;
 }

@@ -34,6 +34,7 @@ struct RenderJob {
     renderer::ShadingSettings shading;
     renderer::TraceSettings trace;
     renderer::Camera camera;
+    renderer::CuttingPlane plane;
 };
 
 int runRender(const RenderJob& job, const OutputOptions& output);
@@ -62,6 +63,19 @@ struct SampleCommand {
 };
 
 int runSample(const SampleCommand& command, const OutputOptions& output);
+struct AuditCommand {
+    std::string sdf;
+    std::uint64_t samples = 100000;
+    std::uint64_t seed = 0;
+    float time = 0.0f;
+    bool plane = false;        // plane readouts instead of the volume audit
+    float planeNormal[3] = {0.0f, 0.0f, 1.0f};
+    float planeOffset = 0.0f;
+    int resolution = 256;
+};
+
+int runAudit(const AuditCommand& command, const OutputOptions& output);
+
 int runMerge(const std::string& outputFile, const std::string& format, const std::vector<std::string>& parts, const OutputOptions& output);
 int runList(const OutputOptions& output);
 

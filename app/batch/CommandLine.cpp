@@ -35,6 +35,7 @@ const char* const kOverview =
     "  animate  render an MP4 (H.264) over time and/or as a turntable\n"
     "  sample   write N (position, distance, gradient) samples to .bin, .npz or .ply\n"
     "  merge    join --shard outputs into the file one run would have written\n"
+    "  audit    analyse the field: exact, conservative, non-conservative, truncated, discontinuous, nan\n"
     "  list     list the dataset (name, category, declared type, animated)\n"
     "\n"
     "<SDF> arguments take a dataset name (any case) or a path to a .glsl file. <Pattern> takes a\n"
@@ -91,7 +92,8 @@ std::optional<int> parse(CLI::App& app, const std::string& context, Arguments ar
 
 // Options shared by render and animate; `finish` validates the strings into `job`.
 struct FrameOptions {
-    std::string size = "1280x720", shading = "normals", camera, target;
+    std::string size = "1280x720", shading = "normals", camera, target, plane;
+    bool planeNoClip = false;
 };
 
 void addFrameOptions(CLI::App& app, RenderJob& job, FrameOptions& options) {
@@ -107,6 +109,9 @@ void addFrameOptions(CLI::App& app, RenderJob& job, FrameOptions& options) {
     app.add_option("--max-steps", job.trace.maxSteps, "sphere-tracing step budget per ray")->capture_default_str()->check(CLI::Range(1, 100000));
     app.add_option("--step-factor", job.trace.stepFactor, "scale each step (1/L for an L-Lipschitz field)")->capture_default_str()->check(CLI::Range(0.01f, 2.0f));
     app.add_option("--relaxation", job.trace.overRelaxation, "over-relaxation factor (1 = off; 1.2-1.9 takes longer steps, with fallback)")->capture_default_str()->check(CLI::Range(1.0f, 1.95f));
+    app.add_option("--plane", options.plane, "cutting plane NX,NY,NZ,OFFSET (dot(N, p) = OFFSET), drawn with isocontours");
+    app.add_flag("--plane-no-clip", options.planeNoClip, "keep the surface in front of the cutting plane");
+    app.add_option("--contour-spacing", job.plane.contourSpacing, "isocontour spacing on the plane")->capture_default_str()->check(CLI::Range(1e-5f, 10.0f));
 }
 
 // Returns an exit code when an option is malformed.
@@ -122,6 +127,18 @@ std::optional<int> finishFrameOptions(RenderJob& job, const FrameOptions& option
         auto position = parseVec3(options.camera);
         if (!position) { printError("--camera: expected X,Y,Z, got '" + options.camera + "'"); return kExitUsage; }
         job.camera.position = *position;
+    }
+    if (!options.plane.empty()) {
+        float nx, ny, nz, offset;
+        char tail;
+        if (std::sscanf(options.plane.c_str(), " %f , %f , %f , %f %c", &nx, &ny, &nz, &offset, &tail) != 4 || (nx == 0 && ny == 0 && nz == 0)) {
+            printError("--plane: expected NX,NY,NZ,OFFSET with a non-zero normal, got '" + options.plane + "'");
+            return kExitUsage;
+        }
+        job.plane.enabled = true;
+        job.plane.normal = {nx, ny, nz};
+        job.plane.offset = offset;
+        job.plane.clipSurface = !options.planeNoClip;
     }
     if (!options.target.empty()) {
         auto point = parseVec3(options.target);
@@ -222,6 +239,33 @@ int runMergeCommand(const Arguments& arguments) {
     return runMerge(outputFile, format, parts, output);
 }
 
+int runAuditCommand(const Arguments& arguments) {
+    CLI::App app("Analyse an SDF's field: exact, conservative, non-conservative, truncated, discontinuous or NaN?", "sdfwb --batch audit");
+    AuditCommand command;
+    OutputOptions output;
+    std::string plane;
+    app.add_option("--sdf", command.sdf, "dataset name or path to a .glsl file")->required();
+    app.add_option("--samples", command.samples, "random points (as many near-surface and surface points)")->capture_default_str();
+    app.add_option("--seed", command.seed, "random seed")->capture_default_str();
+    app.add_option("--time", command.time, "time in seconds for animated SDFs")->capture_default_str();
+    app.add_option("--plane", plane, "NX,NY,NZ,OFFSET: readouts for this cutting plane instead of the volume audit");
+    app.add_option("--resolution", command.resolution, "grid side on the plane")->capture_default_str()->check(CLI::Range(2, 4096));
+    addOutputFlags(app, output);
+    if (auto exit = parse(app, "--batch audit", arguments)) return *exit;
+    if (!plane.empty()) {
+        char tail;
+        float* n = command.planeNormal;
+        if (std::sscanf(plane.c_str(), " %f , %f , %f , %f %c", &n[0], &n[1], &n[2], &command.planeOffset, &tail) != 4 ||
+            (n[0] == 0 && n[1] == 0 && n[2] == 0)) {
+            printError("--plane: expected NX,NY,NZ,OFFSET with a non-zero normal, got '" + plane + "'");
+            return kExitUsage;
+        }
+        command.plane = true;
+    }
+    if (output.quiet || output.json) log::setMinimumLevel(log::Level::Warning);
+    return runAudit(command, output);
+}
+
 int runBatchCommand(const std::string& command, const Arguments& arguments);
 
 // Splits a job-file line into words: whitespace separates, '...' and "..." quote, \ escapes,
@@ -272,7 +316,7 @@ int runJobFile(const std::string& path) {
     std::vector<std::pair<int, Arguments>> steps;
     std::string line;
     int lineNumber = 0;
-    const std::vector<std::string> commands = {"render", "animate", "sample", "merge", "list"};
+    const std::vector<std::string> commands = {"render", "animate", "sample", "merge", "audit", "list"};
     while (std::getline(file, line)) {
         ++lineNumber;
         std::string error;
@@ -283,7 +327,7 @@ int runJobFile(const std::string& path) {
         }
         if (words->empty()) continue;
         if (std::find(commands.begin(), commands.end(), words->front()) == commands.end()) {
-            printError(path + ":" + std::to_string(lineNumber) + ": unknown command '" + words->front() + "' (render, animate, sample, merge, list)");
+            printError(path + ":" + std::to_string(lineNumber) + ": unknown command '" + words->front() + "' (render, animate, sample, merge, audit, list)");
             return kExitUsage;
         }
         steps.emplace_back(lineNumber, std::move(*words));
@@ -308,8 +352,9 @@ int runBatchCommand(const std::string& command, const Arguments& arguments) {
     if (command == "animate") return runAnimateCommand(arguments);
     if (command == "sample") return runSampleCommand(arguments);
     if (command == "merge") return runMergeCommand(arguments);
+    if (command == "audit") return runAuditCommand(arguments);
     if (command == "list") return runListCommand(arguments);
-    printError("--batch: unknown command '" + command + "' (render, animate, sample, merge, list, or a job file); see sdfwb --help");
+    printError("--batch: unknown command '" + command + "' (render, animate, sample, merge, audit, list, or a job file); see sdfwb --help");
     return kExitUsage;
 }
 
@@ -321,11 +366,11 @@ std::optional<int> runCommandLine(int argc, char** argv) {
     if (first == "--help" || first == "-h") { std::printf("%s", kOverview); return kExitOk; }
     if (first == "--version") { std::printf("sdfwb %s\n", SDFWB_VERSION); return kExitOk; }
     if (first == "--batch") {
-        if (argc < 3) { printError("--batch: missing command (render, animate, sample, merge, list) or job file; see sdfwb --help"); return kExitUsage; }
+        if (argc < 3) { printError("--batch: missing command (render, animate, sample, merge, audit, list) or job file; see sdfwb --help"); return kExitUsage; }
         const std::string command = argv[2];
         if (command == "--help" || command == "-h") { std::printf("%s", kOverview); return kExitOk; }
         Arguments arguments(argv + 3, argv + argc);
-        const std::vector<std::string> commands = {"render", "animate", "sample", "merge", "list"};
+        const std::vector<std::string> commands = {"render", "animate", "sample", "merge", "audit", "list"};
         std::error_code ec;
         if (std::find(commands.begin(), commands.end(), command) == commands.end() && std::filesystem::is_regular_file(command, ec)) {
             if (!arguments.empty()) { printError("--batch " + command + ": a job file takes no further arguments"); return kExitUsage; }

@@ -142,6 +142,7 @@ Expected<void> SampleCompute::run(const SampleUniforms& uniforms, std::uint32_t 
     glUniform1ui(m_impl->location("u_squareSide"), squareSide(uniforms.sampleCount));
     if (GLint location = m_impl->location("u_time"); location >= 0) glUniform1f(location, uniforms.time);
     if (GLint location = m_impl->location("g3d_SceneTime"); location >= 0) glUniform1f(location, uniforms.time);
+    if (GLint location = m_impl->location("u_parameters"); location >= 0) glUniform4fv(location, 4, uniforms.parameters);
     glUniform1ui(m_impl->location("u_chunkFirst"), first);
     glUniform1ui(m_impl->location("u_chunkCount"), count);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingPositions, m_impl->buffers[0].id());

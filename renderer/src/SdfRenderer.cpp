@@ -85,12 +85,15 @@ struct SdfRenderer::Impl {
     GlTexture lowColor;
     int lowWidth = 0, lowHeight = 0;
 
-    static shaders::TracerFeatures features(const ShadingSettings& shading, const TraceSettings& trace) {
+    static shaders::TracerFeatures features(const ShadingSettings& shading, const TraceSettings& trace, const CuttingPlane& plane) {
         shaders::TracerFeatures features;
         features.shading = shading.mode;
         features.ambientOcclusion = shading.ambientOcclusion;
         features.overRelaxation = trace.overRelaxation > 1.0f;
         features.statsOutput = shading.statsOutput;
+        features.cuttingPlane = plane.enabled;
+        features.planeClipsSurface = plane.enabled && plane.clipSurface;
+        features.planeLipschitzOverlay = plane.enabled && plane.lipschitzOverlay;
         return features;
     }
 
@@ -200,7 +203,7 @@ SdfRenderer::~SdfRenderer() {
 std::vector<Diagnostic> SdfRenderer::setSdf(const shaders::PreparedSdf& sdf) {
     std::vector<Diagnostic> diagnostics = sdf.diagnostics;
     if (shaders::hasErrors(diagnostics)) return diagnostics;
-    Variant* variant = m_impl->build(sdf, Impl::features(m_shading, m_trace), diagnostics);
+    Variant* variant = m_impl->build(sdf, Impl::features(m_shading, m_trace, m_plane), diagnostics);
     if (!variant) return diagnostics;
     m_impl->sdf = sdf;
     m_impl->current = variant;
@@ -211,7 +214,7 @@ std::vector<Diagnostic> SdfRenderer::setShading(const ShadingSettings& shading) 
     m_shading = shading;
     std::vector<Diagnostic> diagnostics;
     if (!m_impl->sdf) return diagnostics;
-    if (Variant* variant = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace), diagnostics)) m_impl->current = variant;
+    if (Variant* variant = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace, m_plane), diagnostics)) m_impl->current = variant;
     return diagnostics;
 }
 
@@ -231,7 +234,7 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
     if (!m_impl->current && m_impl->sdf) {
         // After releaseGl() (a new context): rebuild the last good variant.
         std::vector<Diagnostic> ignored;
-        m_impl->current = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace), ignored);
+        m_impl->current = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace, m_plane), ignored);
     }
     if (Variant* v = m_impl->current) {
         if (!m_impl->vertexArray) {
@@ -257,6 +260,15 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
         if (GLint location = v->location("u_time"); location >= 0) glUniform1f(location, time);
         if (GLint location = v->location("g3d_SceneTime"); location >= 0) glUniform1f(location, time);
         if (GLint location = v->location("u_relaxation"); location >= 0) glUniform1f(location, m_trace.overRelaxation);
+        if (m_plane.enabled) {
+            glm::vec3 normal = glm::length(m_plane.normal) > 0.0f ? glm::normalize(m_plane.normal) : glm::vec3(0, 0, 1);
+            for (const char* name : {"u_planeNormal", "u_clipNormal"})
+                if (GLint location = v->location(name); location >= 0) glUniform3f(location, normal.x, normal.y, normal.z);
+            for (const char* name : {"u_planeOffset", "u_clipOffset"})
+                if (GLint location = v->location(name); location >= 0) glUniform1f(location, m_plane.offset);
+            if (GLint location = v->location("u_contourSpacing"); location >= 0) glUniform1f(location, std::max(m_plane.contourSpacing, 1e-6f));
+            if (GLint location = v->location("u_rampDistance"); location >= 0) glUniform1f(location, std::max(m_plane.rampDistance, 1e-6f));
+        }
         if (GLint location = v->location("u_lightDirection"); location >= 0) {
             glm::vec3 light = glm::normalize(m_shading.lightDirection);
             glUniform3f(location, light.x, light.y, light.z);
@@ -326,12 +338,22 @@ void SdfRenderer::releaseGl() {
     m_impl->matcap.reset();
 }
 
+std::vector<Diagnostic> SdfRenderer::setPlane(const CuttingPlane& plane) {
+    bool variantChanges = plane.enabled != m_plane.enabled || plane.clipSurface != m_plane.clipSurface ||
+                          plane.lipschitzOverlay != m_plane.lipschitzOverlay;
+    m_plane = plane;
+    std::vector<Diagnostic> diagnostics;
+    if (!variantChanges || !m_impl->sdf) return diagnostics;
+    if (Variant* variant = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace, m_plane), diagnostics)) m_impl->current = variant;
+    return diagnostics;
+}
+
 std::vector<Diagnostic> SdfRenderer::setTrace(const TraceSettings& trace) {
     bool variantChanges = (trace.overRelaxation > 1.0f) != (m_trace.overRelaxation > 1.0f);
     m_trace = trace;
     std::vector<Diagnostic> diagnostics;
     if (!variantChanges || !m_impl->sdf) return diagnostics;
-    if (Variant* variant = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace), diagnostics)) m_impl->current = variant;
+    if (Variant* variant = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace, m_plane), diagnostics)) m_impl->current = variant;
     return diagnostics;
 }
 

@@ -2,7 +2,9 @@
 
 #include <renderer/SampleCompute.h>
 
+#include <algorithm>
 #include <chrono>
+#include <iterator>
 #include <cmath>
 #include <vector>
 
@@ -30,7 +32,8 @@ Expected<SamplingReport> run(renderer::SampleCompute& compute, const SamplingJob
     report.firstIndex = job.firstIndex();
     const std::uint64_t rows = job.rows();
     const std::uint32_t chunk = std::min(job.chunkSize, renderer::SampleCompute::kMaxChunk);
-    renderer::SampleUniforms uniforms{std::uint32_t(job.count), job.seed, job.time, job.gradientStep};
+    renderer::SampleUniforms uniforms{std::uint32_t(job.count), job.seed, job.time, job.gradientStep, {}};
+    std::copy(std::begin(job.parameters), std::end(job.parameters), uniforms.parameters);
     progress(0, rows);
     for (std::uint64_t done = 0; done < rows;) {
         if (progress.isCancelled()) {

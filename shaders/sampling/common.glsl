@@ -9,6 +9,7 @@ uniform uvec2 u_seed;         // 64-bit seed, low and high words
 uniform float u_gradientStep; // central-difference step of the written gradient
 uniform uint u_cubeSide;      // smallest n with n^3 >= N (computed exactly on the CPU)
 uniform uint u_squareSide;    // smallest n with n^2 >= N
+uniform vec4 u_parameters[4]; // free parameters for samplers driven by the program (plane analysis)
 #ifdef SDFWB_USES_TIME
 uniform float u_time;
 #endif

@@ -35,15 +35,20 @@ Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatu
     std::string upper;
     for (char c : mode) upper += char(std::toupper(static_cast<unsigned char>(c)));
     defines["SDFWB_SHADING_" + upper] = "1";
-    std::vector<std::string> files = {"tracer/trace_core.glsl", "tracer/shading_" + mode + ".glsl"};
+    std::vector<std::string> files = {"tracer/trace_core.glsl", "tracer/shading_" + mode + ".glsl", "tracer/trace_main.frag"};
     // The heat map shows tracing cost only: no lighting terms.
     if (features.ambientOcclusion && features.shading != ShadingMode::Steps) {
         defines["SDFWB_AO"] = "1";
-        files.push_back("tracer/ao.glsl");
+        files.insert(files.end() - 1, "tracer/ao.glsl");
     }
     if (features.overRelaxation) defines["SDFWB_OVERRELAX"] = "1";
+    if (features.cuttingPlane) {
+        defines["SDFWB_PLANE"] = "1";
+        if (features.planeClipsSurface) defines["SDFWB_PLANE_CLIP"] = "1";
+        if (features.planeLipschitzOverlay) defines["SDFWB_PLANE_LIPSCHITZ"] = "1";
+        files.insert(files.end() - 1, "tracer/plane.glsl");
+    }
     if (features.statsOutput) defines["SDFWB_OUTPUT_STATS"] = "1";
-    files.push_back("tracer/trace_main.frag");
     std::vector<ShaderPiece> pieces;
     for (const std::string& file : files) {
         auto piece = builtinPiece(file);

@@ -30,6 +30,16 @@ float map(vec3 p) {
 #endif
 }
 
+#ifdef SDFWB_PLANE_CLIP
+uniform vec3 u_clipNormal;   // the cutting plane; the side it points to is cut away
+uniform float u_clipOffset;
+// The traced scene: the shape intersected with the half-space behind the plane (a conservative
+// bound), so the cross-section shows.
+float sceneMap(vec3 p) { return max(map(p), dot(p, u_clipNormal) - u_clipOffset); }
+#else
+float sceneMap(vec3 p) { return map(p); }
+#endif
+
 struct Hit {
     bool found;
     float t;        // distance along the ray
@@ -72,7 +82,7 @@ Hit traceRay(vec3 origin, vec3 direction) {
 #endif
     for (int step = 0; step < u_maxSteps; ++step) {
         hit.steps = step + 1;
-        float d = map(origin + t * direction) * u_stepFactor;
+        float d = sceneMap(origin + t * direction) * u_stepFactor;
         if (isnan(d) || isinf(d)) break;
         float radius = abs(d);
 #ifdef SDFWB_OVERRELAX
@@ -96,7 +106,7 @@ Hit traceRay(vec3 origin, vec3 direction) {
     }
     if (hit.found) {
         // Refine: two more plain steps shrink |f| well below the footprint for exact fields.
-        for (int k = 0; k < 2; ++k) t += map(origin + t * direction) * u_stepFactor;
+        for (int k = 0; k < 2; ++k) t += sceneMap(origin + t * direction) * u_stepFactor;
     }
     hit.t = t;
     hit.position = origin + t * direction;
@@ -106,7 +116,8 @@ Hit traceRay(vec3 origin, vec3 direction) {
 // Tetrahedral 4-tap gradient with step h; raw (not normalised).
 vec3 gradientAt(vec3 p, float h) {
     const vec2 k = vec2(1.0, -1.0);
-    return (k.xyy * map(p + k.xyy * h) + k.yyx * map(p + k.yyx * h) + k.yxy * map(p + k.yxy * h) + k.xxx * map(p + k.xxx * h)) / (4.0 * h);
+    return (k.xyy * sceneMap(p + k.xyy * h) + k.yyx * sceneMap(p + k.yyx * h) + k.yxy * sceneMap(p + k.yxy * h) +
+            k.xxx * sceneMap(p + k.xxx * h)) / (4.0 * h);
 }
 
 // Normal with a step matched to the hit distance (a pixel's footprint), never below float noise.

@@ -16,6 +16,15 @@ void main() {
     o_color = vec4(stepsColor(hit), 1.0);
     return;
 #else
+#ifdef SDFWB_PLANE
+    // The plane is opaque: it shows wherever it is nearer than the (possibly clipped) surface.
+    float tPlane = intersectPlane(u_cameraPosition, direction);
+    // Hits count a little before the true surface (the hit tolerance): give the plane that margin.
+    if (tPlane > 0.0 && (!hit.found || tPlane <= hit.t + 2.0 * u_epsilonScale * pixelAngle() * tPlane + 1e-5)) {
+        o_color = vec4(planeColor(u_cameraPosition + tPlane * direction), 1.0);
+        return;
+    }
+#endif
     if (!hit.found) {
         o_color = vec4(u_background, 1.0);
         return;

@@ -111,7 +111,7 @@ TEST(BuiltinShaders, EveryEmbeddedFileCompilesWithGlslangInItsStage) {
         covered.insert(std::string("tracer/shading_") + mode + ".glsl");
     }
     for (const std::string& path : builtinShaderPaths())
-        if (path.rfind("samplers/", 0) == 0)
+        if (path.rfind("samplers/", 0) == 0 || path.rfind("analysis/", 0) == 0)
             check(Stage::Compute, {"sampling/bindings.glsl", "sampling/common.glsl", path, "sampling/sample.comp"});
     // The compat prelude is composed when an SDF needs it (tested above); everything else must be
     // reached by one of the stages here, so a new built-in file cannot go unchecked.

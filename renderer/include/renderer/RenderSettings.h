@@ -32,4 +32,15 @@ struct ShadingSettings {
     bool statsOutput = false;                      // write (steps, t, |f(hit)|) per pixel: see OffscreenRenderer::renderStats
 };
 
+// The cutting plane dot(normal, p) = offset and how it is drawn.
+struct CuttingPlane {
+    bool enabled = false;
+    glm::vec3 normal{0.0f, 0.0f, 1.0f};  // normalised on use; the side it points to is cut away when clipping
+    float offset = 0.0f;
+    float contourSpacing = 1.0f / 64.0f; // isocontours every this much distance
+    float rampDistance = 1.0f;           // outside ramp: yellow at 0, blue at this distance
+    bool clipSurface = true;             // cut the surface away in front of the plane
+    bool lipschitzOverlay = true;        // red where |grad f| > 1, grey where ~0 away from the surface
+};
+
 } // namespace sdfwb::renderer

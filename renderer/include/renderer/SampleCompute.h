@@ -19,6 +19,7 @@ struct SampleUniforms {
     std::uint64_t seed = 0;
     float time = 0.0f;
     float gradientStep = 1e-3f;     // central-difference step of the written gradient
+    float parameters[16] = {};      // u_parameters[4] (vec4s) for program-driven samplers
 };
 
 class SampleCompute {

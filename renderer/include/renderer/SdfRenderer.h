@@ -39,6 +39,10 @@ public:
     std::vector<shaders::Diagnostic> setTrace(const TraceSettings& trace);
 
     const ShadingSettings& shading() const { return m_shading; }
+    // Turning the plane, clipping or the overlay on or off selects another variant; the plane's
+    // position and contour spacing are uniforms (no recompile while dragging).
+    std::vector<shaders::Diagnostic> setPlane(const CuttingPlane& plane);
+    const CuttingPlane& plane() const { return m_plane; }
     const TraceSettings& trace() const { return m_trace; }
     bool hasProgram() const;
 
@@ -61,6 +65,7 @@ private:
     std::unique_ptr<Impl> m_impl;
     ShadingSettings m_shading;
     TraceSettings m_trace;
+    CuttingPlane m_plane;
 };
 
 } // namespace sdfwb::renderer

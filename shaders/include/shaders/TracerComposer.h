@@ -23,6 +23,9 @@ struct TracerFeatures {
     bool ambientOcclusion = false;
     bool overRelaxation = false;
     bool statsOutput = false;  // write (steps, t, |f(hit)|) instead of a colour (benchmarks, tests)
+    bool cuttingPlane = false;
+    bool planeClipsSurface = false;  // cut the shape away on the side the plane's normal points to
+    bool planeLipschitzOverlay = false;
 };
 
 Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatures& features);

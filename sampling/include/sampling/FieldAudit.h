@@ -1,0 +1,89 @@
+#pragma once
+// Field analysis: is an SDF exact, conservative, non-conservative, truncated, discontinuous, or
+// does it yield NaN/Inf? Two entry points:
+//   analysePlane: readouts for the cutting plane (value range, |grad f| statistics, truncation,
+//                 discontinuities, NaN/Inf, a histogram, the safe step factor 1/L);
+//   auditField:   the volume audit behind `sdfwb --batch audit` (difference quotients at several
+//                 scales on random and near-surface points, eikonal error, exactness against the
+//                 true distance to a dense set of surface points through a k-d tree, a verdict).
+// Both run on the GPU compute path: the GL context must be current on the calling thread.
+
+#include <core/Expected.h>
+#include <core/Progress.h>
+#include <shaders/SdfSource.h>
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sdfwb::sampling {
+
+struct PlaneReadout {
+    int resolution = 0;                 // grid side on the plane
+    std::uint64_t points = 0;           // grid points inside the [-1,1]^3 box
+    float minimum = 0.0f, maximum = 0.0f;  // f over those points (finite ones)
+    float lipschitzMax = 0.0f;          // max |grad f| (central differences, step 1e-2)
+    float lipschitz99 = 0.0f;           // 99th percentile
+    double shareAboveOne = 0.0;         // fraction of points with |grad f| > 1.02
+    std::optional<float> truncationDistance;  // where the field stops growing, if it does
+    std::uint64_t discontinuities = 0;  // neighbouring grid points whose difference the local slope cannot explain
+    std::uint64_t nanCount = 0;         // NaN or Inf values or gradients
+    std::vector<std::uint64_t> histogram;  // |grad f| in 40 bins over [0, 2), then one bin for >= 2
+    float safeStepFactor = 1.0f;        // 1 / max(1, lipschitzMax)
+    double seconds = 0.0;
+};
+
+// Grid of resolution^2 points over the plane dot(normal, p) = offset within the box.
+Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 normal, float offset, int resolution, float time);
+
+struct AuditOptions {
+    std::uint64_t samples = 100000;  // random points; as many near-surface points and surface points
+    std::uint64_t seed = 0;
+    float time = 0.0f;
+    bool convergence = true;         // also run N/16 and N/4 to show how the estimates tighten
+};
+
+struct QuotientScale {
+    float step = 0.0f;                // the difference quotient's scale (2h for central differences)
+    float p50 = 0, p99 = 0, p999 = 0, max = 0;
+};
+
+struct ConvergencePoint {
+    std::uint64_t samples = 0;
+    float lipschitz = 0.0f;
+    float exactnessP99 = 0.0f;
+    double seconds = 0.0;
+};
+
+struct AuditReport {
+    std::string verdict;              // exact | conservative | non-conservative | truncated | discontinuous | nan
+    std::string reason;               // one sentence: why this verdict
+    float lipschitz = 0.0f;           // estimate: 99.9th percentile of |grad f| over all scales but the largest
+    float lipschitzMax = 0.0f;        // the largest quotient seen (an outlier-prone upper estimate)
+    float lipschitzUncertainty = 0.0f;  // spread between the two (the estimate is a lower bound of the true L)
+    float safeStepFactor = 1.0f;
+    std::optional<float> truncationDistance;
+    double nanFraction = 0.0;
+    double nanFractionError = 0.0;    // binomial standard error
+    std::uint64_t discontinuities = 0;
+    double discontinuityShare = 0.0;
+    float eikonalMean = 0.0f;         // mean of | |grad f| - 1 | near the surface
+    float eikonalP95 = 0.0f;
+    std::uint64_t surfacePoints = 0;  // dense surface set used for the true distance
+    float surfaceSpacing = 0.0f;      // mean nearest-neighbour distance within that set: the true
+                                      // distance is known to about this much
+    float exactnessP99 = 0.0f;        // 99th percentile of | |f| - true distance |
+    float exactnessMax = 0.0f;
+    double overestimateShare = 0.0;   // points where |f| exceeds the true distance beyond tolerance
+    std::vector<QuotientScale> scales;
+    std::vector<ConvergencePoint> convergence;
+    std::uint64_t samples = 0;
+    double seconds = 0.0;
+};
+
+Expected<AuditReport> auditField(const shaders::PreparedSdf& sdf, const AuditOptions& options, const ProgressSink& progress);
+
+} // namespace sdfwb::sampling
