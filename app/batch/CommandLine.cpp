@@ -71,6 +71,7 @@ std::optional<glm::vec3> parseVec3(const std::string& text) {
 void addOutputFlags(CLI::App& app, OutputOptions& output) {
     app.add_flag("--quiet,-q", output.quiet, "print errors only");
     app.add_flag("--json", output.json, "print a machine-readable report on stdout");
+    app.add_flag("--progress-lines", output.progressLines, "print 'progress DONE TOTAL' lines on stderr (for front ends)");
 }
 
 using Arguments = std::vector<std::string>;
@@ -172,7 +173,6 @@ int runAnimateCommand(const Arguments& arguments) {
     app.add_option("--seconds", job.seconds, "length of the clip")->capture_default_str();
     app.add_option("--fps", job.framesPerSecond, "frames per second")->capture_default_str();
     app.add_flag("--turntable", job.turntable, "orbit the camera once around the Y axis");
-    app.add_flag("--progress-lines", output.progressLines, "print 'progress DONE TOTAL' lines on stderr (for front ends)");
     addOutputFlags(app, output);
     if (auto exit = parse(app, "--batch animate", arguments)) return *exit;
     if (auto exit = finishFrameOptions(job.frame, options)) return *exit;
@@ -214,7 +214,6 @@ int runSampleCommand(const Arguments& arguments) {
     app.add_option("--shard", shard, "K/COUNT: write only slice K (0-based) of COUNT equal slices of the N-sample run");
     app.add_option("--chunk", command.chunkSize, "samples per GPU dispatch (memory: 28 bytes each)")->capture_default_str()->check(CLI::Range(1u, 4194240u));
     app.add_option("--gradient-step", command.gradientStep, "central-difference step of the written gradient")->capture_default_str();
-    app.add_flag("--progress-lines", output.progressLines, "print 'progress DONE TOTAL' lines on stderr (for front ends)");
     addOutputFlags(app, output);
     if (auto exit = parse(app, "--batch sample", arguments)) return *exit;
     if (!shard.empty() && !parseShard(shard, command.shardIndex, command.shardCount)) {

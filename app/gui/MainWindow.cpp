@@ -1,6 +1,7 @@
 #include "MainWindow.h"
 
 #include "ExportController.h"
+#include "PlaneController.h"
 #include "PlaybackController.h"
 #include "SamplingController.h"
 #include "SdfDocument.h"
@@ -10,6 +11,7 @@
 #include <dataset/Metadata.h>
 #include <widgets/CameraPanel.h>
 #include <widgets/GlslEditor.h>
+#include <widgets/PlanePanel.h>
 #include <widgets/TimeBar.h>
 #include <widgets/ViewportWidget.h>
 
@@ -55,13 +57,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_editor->setObjectName("Editor");
     m_cameraPanel = new widgets::CameraPanel;
     m_timeBar = new widgets::TimeBar;
+    m_planePanel = new widgets::PlanePanel;
     m_viewportDock = addDock(tr("Viewport"), "ViewportDock", m_viewport, Qt::RightDockWidgetArea);
     m_editorDock = addDock(tr("Editor"), "EditorDock", m_editor, Qt::LeftDockWidgetArea);
     m_cameraDock = addDock(tr("Camera"), "CameraDock", m_cameraPanel, Qt::LeftDockWidgetArea);
     m_timeDock = addDock(tr("Time"), "TimeDock", m_timeBar, Qt::RightDockWidgetArea);
+    m_planeDock = addDock(tr("Cutting plane"), "PlaneDock", m_planePanel, Qt::LeftDockWidgetArea);
     m_timeBar->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
     splitDockWidget(m_viewportDock, m_timeDock, Qt::Vertical);
     tabifyDockWidget(m_editorDock, m_cameraDock);
+    tabifyDockWidget(m_cameraDock, m_planeDock);
     m_editorDock->raise();
     resizeDocks({m_editorDock, m_viewportDock}, {560, 840}, Qt::Horizontal);
 
@@ -69,6 +74,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_sampling = new SamplingController(this, [this] { return m_document->path(); }, this);
     m_exports = new ExportController(this, m_viewport, [this] { return m_document->path(); }, this);
     m_playback = new PlaybackController(m_timeBar, m_viewport, this);
+    m_plane = new PlaneController(m_planePanel, m_viewport, [this] { return m_document->path(); }, this);
 
     connect(m_editor, &QsciScintilla::textChanged, this, [this] {
         m_document->textEdited(m_editor->text());
@@ -83,6 +89,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                                             : tr("%1 warning(s)").arg(warnings));
     });
     connect(m_document, &SdfDocument::sdfApplied, this, &MainWindow::updateOverlay);
+    connect(m_document, &SdfDocument::sdfApplied, m_plane, &PlaneController::refresh);
     connect(m_cameraPanel, &widgets::CameraPanel::cameraEdited, m_viewport, &widgets::ViewportWidget::setCamera);
     connect(m_cameraPanel, &widgets::CameraPanel::resetRequested, m_viewport, &widgets::ViewportWidget::resetCamera);
     connect(m_viewport, &widgets::ViewportWidget::cameraChanged, m_cameraPanel, &widgets::CameraPanel::setCamera);
@@ -193,6 +200,7 @@ void MainWindow::createMenus() {
     view->addAction(m_viewportDock->toggleViewAction());
     view->addAction(m_cameraDock->toggleViewAction());
     view->addAction(m_timeDock->toggleViewAction());
+    view->addAction(m_planeDock->toggleViewAction());
     view->addSeparator();
     QAction* reset = view->addAction(tr("&Reset camera"), m_viewport, &widgets::ViewportWidget::resetCamera);
     reset->setShortcut(Qt::Key_Home);

@@ -14,6 +14,7 @@ class QLabel;
 namespace sdfwb::widgets {
 class CameraPanel;
 class GlslEditor;
+class PlanePanel;
 class TimeBar;
 class ViewportWidget;
 }
@@ -21,6 +22,7 @@ class ViewportWidget;
 namespace sdfwb::app {
 
 class ExportController;
+class PlaneController;
 class PlaybackController;
 class SamplingController;
 class SdfDocument;
@@ -42,6 +44,8 @@ public:
     SamplingController* sampling() const { return m_sampling; }
     ExportController* exports() const { return m_exports; }
     PlaybackController* playback() const { return m_playback; }
+    widgets::PlanePanel* planePanel() const { return m_planePanel; }
+    PlaneController* plane() const { return m_plane; }
 
     void setShadingMode(renderer::ShadingMode mode);
     void setAmbientOcclusion(bool enabled);
@@ -61,6 +65,9 @@ private:
     widgets::ViewportWidget* m_viewport = nullptr;
     widgets::CameraPanel* m_cameraPanel = nullptr;
     widgets::TimeBar* m_timeBar = nullptr;
+    widgets::PlanePanel* m_planePanel = nullptr;
+    QDockWidget* m_planeDock = nullptr;
+    PlaneController* m_plane = nullptr;
     QDockWidget* m_editorDock = nullptr;
     QDockWidget* m_viewportDock = nullptr;
     QDockWidget* m_cameraDock = nullptr;

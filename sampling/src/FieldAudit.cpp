@@ -343,7 +343,7 @@ Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 n
         float slope = gradientLength(sets[1], i);
         slopes.push_back(slope);
         above += slope > 1.02f;
-        readout.histogram[std::min<std::size_t>(40, std::size_t(slope / 0.05f))]++;
+        readout.histogram[std::min<std::size_t>(40, std::size_t(slope / 0.05f + 0.5f))]++;
         float coarse = gradientLength(sets[0], i);
         // A jump between grid neighbours that the local slope cannot explain: for a continuous
         // field |f(a) - f(b)| <= |grad f| * spacing (to first order).

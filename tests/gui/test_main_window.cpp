@@ -3,6 +3,7 @@
 
 #include <gui/ExportController.h>
 #include <gui/MainWindow.h>
+#include <gui/PlaneController.h>
 #include <gui/PlaybackController.h>
 #include <gui/SamplingController.h>
 #include <gui/SdfDocument.h>
@@ -11,6 +12,7 @@
 #include <widgets/CameraPanel.h>
 #include <widgets/ExportDialog.h>
 #include <widgets/GlslEditor.h>
+#include <widgets/PlanePanel.h>
 #include <widgets/TimeBar.h>
 #include <widgets/ViewportWidget.h>
 
@@ -332,6 +334,41 @@ TEST(Export, ScreenshotAtAChosenSizeAndAnMp4) {
     EXPECT_TRUE(ok) << window.exports()->videoDialog()->findChild<QLabel*>("message")->text().toStdString();
     EXPECT_TRUE(QFile::exists(mp4));
     window.grab().save(QDir::temp().filePath("sdfwb-gui-window.png"));
+}
+
+TEST(CuttingPlane, PanelDrawsThePlaneAndShowsReadouts) {
+    app::MainWindow window;
+    window.resize(1200, 700);
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "Geometry/Sphere.glsl"));
+    window.plane()->setExecutable(SDFWB_BINARY);
+    QImage before = frameOf(window);
+    bool readout = false;
+    QObject::connect(window.plane(), &app::PlaneController::readoutUpdated, [&] { readout = true; });
+    window.planePanel()->findChild<QPushButton*>("axis_Z")->click();
+    EXPECT_TRUE(window.viewport()->plane().enabled);
+    QImage with = frameOf(window);
+    EXPECT_GT(meanDifference(before, with), 2.0) << "the plane must show";
+    with.save(QDir::temp().filePath("sdfwb-gui-plane.png"));
+    ASSERT_TRUE(waitFor([&] { return readout; }, 30000)) << window.planePanel()->findChild<QLabel*>("readouts")->text().toStdString();
+    const widgets::PlaneReadoutView& r = window.planePanel()->readout();
+    EXPECT_NEAR(r.minimum, -0.8f, 0.03f);
+    EXPECT_NEAR(r.lipschitzMax, 1.0f, 0.01f);
+    EXPECT_EQ(r.nanCount, 0u);
+
+    // Ctrl + drag moves the plane along its normal, and the panel follows.
+    widgets::ViewportWidget* viewport = window.viewport();
+    QPoint start(400, 300), end(400, 250);
+    QMouseEvent press(QEvent::MouseButtonPress, start, viewport->mapToGlobal(start), Qt::LeftButton, Qt::LeftButton, Qt::ControlModifier);
+    QApplication::sendEvent(viewport, &press);
+    QMouseEvent move(QEvent::MouseMove, end, viewport->mapToGlobal(end), Qt::NoButton, Qt::LeftButton, Qt::ControlModifier);
+    QApplication::sendEvent(viewport, &move);
+    EXPECT_NEAR(viewport->plane().offset, 0.2f, 1e-3f);
+    EXPECT_NEAR(window.planePanel()->plane().offset, 0.2f, 1e-3f);
+
+    window.planePanel()->findChild<QPushButton*>("apply_step_factor")->click();
+    EXPECT_NEAR(viewport->trace().stepFactor, r.safeStepFactor, 1e-6f);
+    window.grab().save(QDir::temp().filePath("sdfwb-gui-plane-window.png"));
 }
 
 int main(int argc, char** argv) {

@@ -73,6 +73,16 @@ void ViewportWidget::setTrace(const renderer::TraceSettings& trace) {
     update();
 }
 
+void ViewportWidget::setPlane(const renderer::CuttingPlane& plane) {
+    m_plane = plane;
+    if (context() && isValid()) {
+        makeCurrent();
+        for (const auto& d : m_renderer->setPlane(plane)) log::warning("shaders", shaders::formatDiagnostic(d));
+        doneCurrent();
+    }
+    update();
+}
+
 void ViewportWidget::setCamera(const renderer::Camera& camera) {
     m_camera = camera;
     update();
@@ -117,6 +127,7 @@ void ViewportWidget::initializeGL() {
     if (auto ok = renderer::requireGl43(info); !ok) log::error("gl", ok.error().message);
     (void)m_renderer->setShading(m_shading);
     (void)m_renderer->setTrace(m_trace);
+    (void)m_renderer->setPlane(m_plane);
     if (m_pendingSdf) {
         auto diagnostics = m_renderer->setSdf(*m_pendingSdf);
         for (const auto& d : diagnostics) log::warning("shaders", shaders::formatDiagnostic(d));
@@ -186,7 +197,11 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
     QPoint position = event->position().toPoint();
     QPoint delta = position - m_lastMouse;
     m_lastMouse = position;
-    if (event->buttons() & Qt::LeftButton) {
+    if ((event->buttons() & Qt::LeftButton) && (event->modifiers() & Qt::ControlModifier) && m_plane.enabled) {
+        m_plane.offset = std::clamp(m_plane.offset - float(delta.y()) * 0.004f, -1.0f, 1.0f);
+        setPlane(m_plane);
+        emit planeDragged(m_plane);
+    } else if (event->buttons() & Qt::LeftButton) {
         renderer::orbit(m_camera, -float(delta.x()) * 0.01f, float(delta.y()) * 0.01f);
         interacted();
     } else if (event->buttons() & Qt::RightButton) {

@@ -31,7 +31,7 @@ struct PlaneReadout {
     std::optional<float> truncationDistance;  // where the field stops growing, if it does
     std::uint64_t discontinuities = 0;  // neighbouring grid points whose difference the local slope cannot explain
     std::uint64_t nanCount = 0;         // NaN or Inf values or gradients
-    std::vector<std::uint64_t> histogram;  // |grad f| in 40 bins over [0, 2), then one bin for >= 2
+    std::vector<std::uint64_t> histogram;  // |grad f| in bins of 0.05 centred on k * 0.05 (bin 20 holds 1 +- 0.025); bin 40 holds >= 1.975
     float safeStepFactor = 1.0f;        // 1 / max(1, lipschitzMax)
     double seconds = 0.0;
 };

@@ -4,7 +4,7 @@
 // The renderer's GL objects are freed when Qt destroys the context (floating a dock re-creates
 // it) and rebuilt lazily.
 //
-// Camera: left drag orbits, wheel dollies; right drag looks around (first person) and, while the
+// Camera: left drag orbits (Ctrl + left drag moves the cutting plane), wheel dollies; right drag looks around (first person) and, while the
 // right button is held, W/A/S/D move, Z/C go down/up, Shift is faster, Alt slower.
 // While the camera moves, frames render at a reduced scale chosen to stay within the frame budget;
 // shortly after it stops, a full-resolution frame follows.
@@ -43,6 +43,9 @@ public:
     void setShading(const renderer::ShadingSettings& shading);
     const renderer::ShadingSettings& shading() const { return m_shading; }
     void setTrace(const renderer::TraceSettings& trace);
+    // Ctrl + left drag moves an enabled plane along its normal.
+    void setPlane(const renderer::CuttingPlane& plane);
+    const renderer::CuttingPlane& plane() const { return m_plane; }
     const renderer::TraceSettings& trace() const { return m_trace; }
     const renderer::Camera& camera() const { return m_camera; }
     void setCamera(const renderer::Camera& camera);
@@ -67,6 +70,7 @@ public:
 signals:
     void frameRendered(double milliseconds, float scale);
     void cameraChanged(const sdfwb::renderer::Camera& camera);
+    void planeDragged(const sdfwb::renderer::CuttingPlane& plane);
     void glReady(const QString& description);
 
 protected:
@@ -89,6 +93,7 @@ private:
     std::unique_ptr<shaders::PreparedSdf> m_pendingSdf;
     renderer::ShadingSettings m_shading;
     renderer::TraceSettings m_trace;
+    renderer::CuttingPlane m_plane;
     renderer::Camera m_camera;
     float m_time = 0.0f;
     QPoint m_lastMouse;

@@ -1,0 +1,41 @@
+#pragma once
+// Keeps the cutting plane of the panel and the viewport in step, and refreshes the plane's
+// readouts after each change (debounced) by running `sdfwb --batch audit --plane ...` as a child
+// process, so the editor and the viewport never wait for the analysis.
+
+#include <QObject>
+#include <QTimer>
+
+#include <functional>
+
+namespace sdfwb::widgets {
+class PlanePanel;
+class ViewportWidget;
+}
+
+namespace sdfwb::app {
+
+class BatchProcess;
+
+class PlaneController : public QObject {
+    Q_OBJECT
+public:
+    PlaneController(widgets::PlanePanel* panel, widgets::ViewportWidget* viewport, std::function<QString()> currentSdf,
+                    QObject* parent = nullptr);
+    void setExecutable(const QString& path);
+    // Recomputes the readouts now (also called when the SDF changes).
+    void refresh();
+
+signals:
+    void readoutUpdated();
+
+private:
+    widgets::PlanePanel* m_panel;
+    widgets::ViewportWidget* m_viewport;
+    std::function<QString()> m_currentSdf;
+    BatchProcess* m_process;
+    QTimer m_debounce;
+    bool m_pending = false;
+};
+
+} // namespace sdfwb::app
