@@ -170,7 +170,7 @@ int runList(const OutputOptions& output) {
             list.push_back({{"name", entry.metadata.name}, {"category", entry.metadata.category},
                             {"declared_type", dataset::declaredTypeName(entry.metadata.type)},
                             {"animated", entry.metadata.animated}, {"path", entry.path.string()},
-                            {"author", entry.metadata.author}, {"license", entry.metadata.license}});
+                            {"author", entry.metadata.author}, {"license", entry.metadata.license}, {"notes", entry.metadata.notes}});
         std::cout << list.dump(2) << "\n";
     } else {
         for (const dataset::Entry& entry : catalogue.entries())

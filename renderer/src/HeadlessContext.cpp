@@ -129,6 +129,8 @@ HeadlessContext::~HeadlessContext() {
     // (another HeadlessContext in the same process) may still use it.
 }
 
+void HeadlessContext::doneCurrent() { eglMakeCurrent(m_display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT); }
+
 bool HeadlessContext::makeCurrent() {
     return eglMakeCurrent(m_display, EGL_NO_SURFACE, EGL_NO_SURFACE, m_context) == EGL_TRUE;
 }

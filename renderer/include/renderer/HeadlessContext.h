@@ -23,6 +23,8 @@ public:
 
     // Makes the context current on the calling thread (one thread at a time).
     bool makeCurrent();
+    // Releases the context from the calling thread, so another thread may make it current.
+    void doneCurrent();
 
     const GlInfo& info() const { return m_info; }
     const std::string& platform() const { return m_platform; }  // "surfaceless" or "device"

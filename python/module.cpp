@@ -1,0 +1,249 @@
+// Python bindings: `import sdfwb`. Headless (EGL), no Qt. Samples land directly in NumPy arrays
+// allocated before the GPU readback, so there is no copy after it; the GIL is released while
+// sampling and auditing.
+
+#include <core/Paths.h>
+#include <dataset/Catalogue.h>
+#include <renderer/HeadlessContext.h>
+#include <renderer/SampleCompute.h>
+#include <sampling/FieldAudit.h>
+#include <sampling/SampleFile.h>
+#include <sampling/Sampler.h>
+#include <sampling/SamplerLibrary.h>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <filesystem>
+#include <memory>
+#include <mutex>
+
+namespace py = pybind11;
+using namespace sdfwb;
+namespace fs = std::filesystem;
+
+namespace {
+
+// One EGL context for the module, created on first use. GL work is serialised by this mutex and
+// the context is made current on whichever Python thread calls.
+std::mutex g_glMutex;
+std::unique_ptr<renderer::HeadlessContext> g_context;
+
+// Each call makes the context current on its own thread and releases it at the end, so the next
+// call may come from another Python thread.
+void releaseContext() {
+    if (g_context) g_context->doneCurrent();
+}
+
+renderer::HeadlessContext& context() {
+    if (!g_context) {
+        auto created = renderer::HeadlessContext::create();
+        if (!created) throw std::runtime_error(created.error().message);
+        g_context = std::move(*created);
+    }
+    if (!g_context->makeCurrent()) throw std::runtime_error("sdfwb: cannot make the EGL context current on this thread");
+    return *g_context;
+}
+
+shaders::IncludeOptions includeOptions() {
+    shaders::IncludeOptions options;
+    options.libraryRoots = {paths::shaderLibraryRoot(), paths::datasetRoot()};
+    return options;
+}
+
+// `sdf` is a dataset name, a path, or GLSL source (anything containing "sdf(" and a brace).
+shaders::PreparedSdf prepare(const std::string& sdf) {
+    shaders::PreparedSdf prepared;
+    if (sdf.find("sdf") != std::string::npos && sdf.find('{') != std::string::npos && sdf.find('(') != std::string::npos) {
+        prepared = shaders::prepareSdf(sdf, "<python source>", {}, includeOptions());
+    } else {
+        dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
+        auto path = dataset::resolveSdfArgument(sdf, catalogue);
+        if (!path) throw py::value_error("sdf: " + path.error().message);
+        prepared = shaders::prepareSdfFile(*path, includeOptions());
+    }
+    if (!prepared.ok()) {
+        std::string message;
+        for (const auto& d : prepared.diagnostics) message += shaders::formatDiagnostic(d) + "\n";
+        throw py::value_error(message);
+    }
+    return prepared;
+}
+
+py::array_t<float> floatArray(std::vector<py::ssize_t> shape) { return py::array_t<float>(shape); }
+
+py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_t n, std::uint64_t seed, float time, float gradientStep,
+                std::uint32_t chunk) {
+    sampling::SamplingJob job;
+    job.count = n;
+    job.seed = seed;
+    job.time = time;
+    job.gradientStep = gradientStep;
+    job.chunkSize = chunk;
+    if (auto ok = sampling::validate(job); !ok) throw py::value_error(ok.error().message);
+    shaders::PreparedSdf prepared = prepare(sdf);
+    auto sampler = sampling::findSampler(pattern, sampling::samplerFolders());
+    if (!sampler) throw py::value_error("pattern: " + sampler.error().message);
+    auto positions = floatArray({py::ssize_t(n), 3});
+    auto distances = floatArray({py::ssize_t(n)});
+    auto gradients = floatArray({py::ssize_t(n), 3});
+    float* p = positions.mutable_data();
+    float* d = distances.mutable_data();
+    float* g = gradients.mutable_data();
+    Expected<sampling::SamplingReport> report = makeError("not run");
+    std::string compileErrors;
+    {
+        py::gil_scoped_release release;
+        std::lock_guard lock(g_glMutex);
+        context();
+        renderer::SampleCompute compute;
+        auto diagnostics = compute.build(prepared, *sampler);
+        if (shaders::hasErrors(diagnostics)) {
+            for (const auto& diagnostic : diagnostics) compileErrors += shaders::formatDiagnostic(diagnostic) + "\n";
+        } else {
+            report = sampling::sampleInto(compute, job, p, d, g, {});
+        }
+        compute.releaseGl();
+        releaseContext();
+    }
+    if (!compileErrors.empty()) throw py::value_error(compileErrors);  // the user's GLSL: a value error
+    if (!report) throw std::runtime_error(report.error().message);
+    py::dict result;
+    result["position"] = positions;
+    result["distance"] = distances;
+    result["gradient"] = gradients;
+    result["bad_rows"] = report->badRows;
+    result["seconds"] = report->seconds;
+    return result;
+}
+
+py::dict load(const std::string& path) {
+    auto reader = sampling::SampleReader::open(path);
+    if (!reader) throw py::value_error(reader.error().message);
+    const auto rows = py::ssize_t((*reader)->rows());
+    auto positions = floatArray({rows, 3});
+    auto distances = floatArray({rows});
+    auto gradients = floatArray({rows, 3});
+    Expected<void> read = makeError("not read");
+    {
+        py::gil_scoped_release release;
+        read = (*reader)->read(0, std::size_t(rows), positions.mutable_data(), distances.mutable_data(), gradients.mutable_data());
+    }
+    if (!read) throw py::value_error(read.error().message);
+    py::dict result;
+    result["position"] = positions;
+    result["distance"] = distances;
+    result["gradient"] = gradients;
+    if (const auto& m = (*reader)->metadata()) {
+        py::dict metadata;
+        metadata["sdf"] = m->sdf;
+        metadata["pattern"] = m->pattern;
+        metadata["seed"] = m->seed;
+        metadata["time"] = m->time;
+        metadata["first_index"] = m->firstIndex;
+        metadata["total_count"] = m->totalCount;
+        metadata["version"] = m->version;
+        result["metadata"] = metadata;
+    }
+    return result;
+}
+
+void save(const std::string& path, py::array_t<float, py::array::c_style | py::array::forcecast> position,
+          py::array_t<float, py::array::c_style | py::array::forcecast> distance,
+          py::array_t<float, py::array::c_style | py::array::forcecast> gradient, const std::string& format, const std::string& sdf,
+          const std::string& pattern, std::uint64_t seed, float time) {
+    if (position.ndim() != 2 || position.shape(1) != 3) throw py::value_error("save: position must have shape (N, 3)");
+    const auto n = position.shape(0);
+    if (distance.ndim() != 1 || distance.shape(0) != n) throw py::value_error("save: distance must have shape (N,) with N = len(position)");
+    if (gradient.ndim() != 2 || gradient.shape(0) != n || gradient.shape(1) != 3) throw py::value_error("save: gradient must have shape (N, 3)");
+    auto chosen = format.empty() ? sampling::formatFromPath(path) : sampling::parseFormat(format);
+    if (!chosen) throw py::value_error("save: '" + path + "': unknown format (use .bin, .npz or .ply, or format=)");
+    sampling::SampleMetadata metadata;
+    metadata.sdf = sdf;
+    metadata.pattern = pattern;
+    metadata.seed = seed;
+    metadata.time = time;
+    metadata.totalCount = std::uint64_t(n);
+    metadata.version = SDFWB_VERSION;
+    Expected<void> written = makeError("not written");
+    {
+        py::gil_scoped_release release;
+        auto writer = sampling::SampleWriter::create(path, *chosen, std::uint64_t(n), metadata);
+        if (!writer) written = writer.error();
+        else if (auto ok = (*writer)->append(position.data(), distance.data(), gradient.data(), std::size_t(n)); !ok) written = ok;
+        else written = (*writer)->commit();
+    }
+    if (!written) throw std::runtime_error(written.error().message);
+}
+
+py::dict audit(const std::string& sdf, std::uint64_t samples, std::uint64_t seed, float time) {
+    shaders::PreparedSdf prepared = prepare(sdf);
+    sampling::AuditOptions options;
+    options.samples = samples;
+    options.seed = seed;
+    options.time = time;
+    Expected<sampling::AuditReport> report = makeError("not run");
+    {
+        py::gil_scoped_release release;
+        std::lock_guard lock(g_glMutex);
+        context();
+        report = sampling::auditField(prepared, options, {});
+        releaseContext();
+    }
+    if (!report) throw std::runtime_error(report.error().message);
+    const auto& r = *report;
+    py::dict result;
+    result["verdict"] = r.verdict;
+    result["reason"] = r.reason;
+    result["lipschitz"] = r.lipschitz;
+    result["lipschitz_max"] = r.lipschitzMax;
+    result["lipschitz_uncertainty"] = r.lipschitzUncertainty;
+    result["safe_step_factor"] = r.safeStepFactor;
+    result["truncation_distance"] = r.truncationDistance ? py::cast(*r.truncationDistance) : py::none();
+    result["nan_fraction"] = r.nanFraction;
+    result["nan_fraction_error"] = r.nanFractionError;
+    result["discontinuities"] = r.discontinuities;
+    result["eikonal_error_mean"] = r.eikonalMean;
+    result["exactness_error_p99"] = r.exactnessP99;
+    result["surface_spacing"] = r.surfaceSpacing;
+    result["samples"] = r.samples;
+    result["seconds"] = r.seconds;
+    return result;
+}
+
+py::list listSdfs() {
+    dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
+    py::list out;
+    for (const dataset::Entry& e : catalogue.entries()) {
+        py::dict item;
+        item["name"] = e.metadata.name;
+        item["category"] = e.metadata.category;
+        item["declared_type"] = dataset::declaredTypeName(e.metadata.type);
+        item["animated"] = e.metadata.animated;
+        item["path"] = e.path.string();
+        item["author"] = e.metadata.author;
+        item["license"] = e.metadata.license;
+        out.append(item);
+    }
+    return out;
+}
+
+} // namespace
+
+PYBIND11_MODULE(sdfwb, m) {
+    m.doc() = "sdfwb: sample, audit and load signed distance functions written in GLSL (headless, EGL).";
+    m.attr("__version__") = SDFWB_VERSION;
+    m.def("sample", &sample, py::arg("sdf"), py::arg("pattern"), py::arg("n"), py::arg("seed") = 0, py::arg("time") = 0.0f,
+          py::arg("gradient_step") = 1e-3f, py::arg("chunk") = 1u << 18,
+          "Samples `n` points of `sdf` (dataset name, path or GLSL source) with `pattern`. Returns a dict of float32 arrays\n"
+          "position (n,3), distance (n,), gradient (n,3) (raw, not normalised) plus bad_rows and seconds. Same seed, same\n"
+          "values as `sdfwb --batch sample`. The GIL is released while sampling.");
+    m.def("load", &load, py::arg("path"), "Reads a .bin, .npz or .ply sample file into a dict of arrays (and its metadata).");
+    m.def("save", &save, py::arg("path"), py::arg("position"), py::arg("distance"), py::arg("gradient"), py::arg("format") = "",
+          py::arg("sdf") = "", py::arg("pattern") = "", py::arg("seed") = 0, py::arg("time") = 0.0f,
+          "Writes arrays to a .bin, .npz or .ply sample file (atomically).");
+    m.def("audit", &audit, py::arg("sdf"), py::arg("samples") = 100000, py::arg("seed") = 0, py::arg("time") = 0.0f,
+          "Field audit: verdict (exact, conservative, non-conservative, truncated, discontinuous, nan) and figures.");
+    m.def("list_sdfs", &listSdfs, "The dataset: one dict per SDF (name, category, declared_type, animated, path, author, license).");
+}

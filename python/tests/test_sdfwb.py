@@ -1,0 +1,147 @@
+"""The Python module as a training pipeline uses it: headless, no Qt, no copies, same bits as the CLI."""
+import gc
+import os
+import resource
+import subprocess
+import tempfile
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import sdfwb
+
+BINARY = os.environ["SDFWB_BINARY"]
+MODULE = os.environ["SDFWB_MODULE"]
+
+
+def cli_sample(sdf, pattern, n, seed, path):
+    env = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
+    subprocess.run([BINARY, "--batch", "sample", "--sdf", sdf, "--pattern", pattern, "-n", str(n), "--seed", str(seed),
+                    "--output", path, "--quiet"], check=True, env=env)
+
+
+def test_runs_without_a_display():
+    assert "DISPLAY" not in os.environ
+    result = sdfwb.sample("sphere", "rand", 10)
+    assert result["position"].shape == (10, 3)
+
+
+def test_module_links_no_qt():
+    libraries = subprocess.run(["ldd", MODULE], capture_output=True, text=True, check=True).stdout
+    assert "Qt" not in libraries and "qscintilla" not in libraries.lower(), libraries
+
+
+def test_arrays_have_the_documented_shapes_and_own_their_memory():
+    result = sdfwb.sample("torus", "near", 5000, seed=3)
+    assert result["position"].shape == (5000, 3) and result["position"].dtype == np.float32
+    assert result["distance"].shape == (5000,) and result["gradient"].shape == (5000, 3)
+    for key in ("position", "distance", "gradient"):
+        assert result[key].flags.owndata and result[key].flags.c_contiguous, key
+    assert result["bad_rows"] == 0
+    assert np.all(np.abs(result["distance"]) <= 0.3)
+
+
+@pytest.mark.parametrize("pattern", ["rand", "near", "metropolis"])
+def test_same_seed_gives_the_clis_file_bit_for_bit(pattern):
+    with tempfile.TemporaryDirectory() as folder:
+        path = os.path.join(folder, "cli.npz")
+        cli_sample("torus", pattern, 20000, 11, path)
+        expected = np.load(path, allow_pickle=False)
+        result = sdfwb.sample("torus", pattern, 20000, seed=11)
+        for key in ("position", "distance", "gradient"):
+            assert np.array_equal(result[key], expected[key], equal_nan=True), key
+
+
+def test_sdf_can_be_a_name_a_path_or_source():
+    by_name = sdfwb.sample("Sphere", "rand", 100, seed=2)
+    path = next(e["path"] for e in sdfwb.list_sdfs() if e["name"] == "Sphere")
+    by_path = sdfwb.sample(path, "rand", 100, seed=2)
+    source = open(path).read()
+    by_source = sdfwb.sample(source, "rand", 100, seed=2)
+    assert np.array_equal(by_name["distance"], by_path["distance"])
+    assert np.array_equal(by_name["distance"], by_source["distance"])
+
+
+def test_errors_are_python_exceptions_with_clear_messages():
+    with pytest.raises(ValueError, match="'spiral'"):
+        sdfwb.sample("torus", "spiral", 10)
+    with pytest.raises(ValueError, match="'no such shape'"):
+        sdfwb.sample("no such shape", "rand", 10)
+    with pytest.raises(ValueError, match=r"<python source>:1:\d+: error: .*radius"):
+        sdfwb.sample("float sdf(vec3 p) { return length(p) - radius; }", "rand", 10)
+    with pytest.raises(ValueError, match="-n"):
+        sdfwb.sample("torus", "rand", 0)
+
+
+def test_the_gil_is_released_while_sampling():
+    ticks = []
+    done = threading.Event()
+
+    def worker():
+        sdfwb.sample("torus", "metropolis", 400000, seed=5)
+        done.set()
+
+    thread = threading.Thread(target=worker)
+    thread.start()
+    while not done.is_set():
+        ticks.append(time.perf_counter())
+        time.sleep(0.005)
+    thread.join()
+    assert len(ticks) > 10, "the main thread could not run while sampling"
+
+
+def test_a_training_loop_keeps_memory_flat():
+    def resident_mib():
+        with open("/proc/self/status") as status:
+            for line in status:
+                if line.startswith("VmRSS:"):
+                    return int(line.split()[1]) / 1024.0
+        return 0.0
+
+    for _ in range(3):
+        sdfwb.sample("torus", "rand", 500000, seed=0)
+    gc.collect()
+    before = resident_mib()
+    for step in range(20):
+        batch = sdfwb.sample("torus", "rand", 500000, seed=step)
+        loss = float(np.mean(batch["distance"] ** 2))  # stands in for a training step
+        del batch
+    gc.collect()
+    assert loss > 0
+    assert resident_mib() - before < 40.0, f"{resident_mib() - before:.1f} MiB more after 20 batches of 500k"
+
+
+@pytest.mark.parametrize("extension", ["bin", "npz", "ply"])
+def test_load_and_save_round_trip(extension):
+    result = sdfwb.sample("box", "surface", 3000, seed=8)
+    with tempfile.TemporaryDirectory() as folder:
+        path = os.path.join(folder, "samples." + extension)
+        sdfwb.save(path, result["position"], result["distance"], result["gradient"], sdf="box", pattern="surface", seed=8)
+        back = sdfwb.load(path)
+        for key in ("position", "distance", "gradient"):
+            assert np.array_equal(back[key], result[key]), key
+        if extension != "bin":
+            assert back["metadata"]["sdf"] == "box" and back["metadata"]["seed"] == 8
+    with pytest.raises(ValueError, match=r"\(N, 3\)"):
+        sdfwb.save("/tmp/x.npz", np.zeros((4, 2)), np.zeros(4), np.zeros((4, 3)))
+
+
+def test_load_rejects_corrupt_files_cleanly():
+    with tempfile.TemporaryDirectory() as folder:
+        path = os.path.join(folder, "broken.npz")
+        with open(path, "wb") as f:
+            f.write(b"PK\x03\x04 this is not a zip file")
+        with pytest.raises(ValueError, match="broken.npz"):
+            sdfwb.load(path)
+
+
+def test_audit_and_list():
+    report = sdfwb.audit("sphere", samples=5000)
+    assert report["verdict"] == "exact"
+    assert abs(report["lipschitz"] - 1.0) < 0.01
+    assert report["truncation_distance"] is None
+    entries = sdfwb.list_sdfs()
+    assert any(e["name"] == "Torus" for e in entries)
+    assert {"name", "category", "declared_type", "animated", "path"} <= set(entries[0])
