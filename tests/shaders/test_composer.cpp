@@ -59,15 +59,26 @@ TEST(Composer, FeaturesThatAreOffAreNotInTheSource) {
     EXPECT_EQ(bare->text.find("u_matcap"), std::string::npos) << "normals mode: no matcap sampler";
     EXPECT_EQ(bare->text.find("#define SDFWB_OVERRELAX"), std::string::npos);
     EXPECT_EQ(bare->text.find("#define SDFWB_USES_TIME"), std::string::npos) << "static SDF: time is compiled out";
+    // The one call site in trace_main.frag sits in an #ifdef SDFWB_PLANE block; the plane's
+    // functions and uniforms are not composed at all.
+    EXPECT_EQ(bare->text.find("vec3 planeColor("), std::string::npos) << "no plane: none of the plane's code";
+    EXPECT_EQ(bare->text.find("uniform vec3 u_planeNormal"), std::string::npos);
+    EXPECT_EQ(bare->text.find("#define SDFWB_PLANE"), std::string::npos);
+    EXPECT_EQ(bare->text.find("sdfwb:tracer/plane.glsl"), std::string::npos);
     TracerFeatures rich;
     rich.shading = ShadingMode::Matcap;
     rich.ambientOcclusion = true;
     rich.overRelaxation = true;
+    rich.cuttingPlane = true;
+    rich.planeClipsSurface = true;
+    rich.planeLipschitzOverlay = true;
     auto full = composeTracer(sdf, rich);
     ASSERT_TRUE(full.hasValue());
     EXPECT_NE(full->text.find("float ambientOcclusion(vec3"), std::string::npos);
     EXPECT_NE(full->text.find("uniform sampler2D u_matcap"), std::string::npos);
     EXPECT_NE(full->text.find("#define SDFWB_OVERRELAX 1"), std::string::npos);
+    EXPECT_NE(full->text.find("vec3 planeColor(vec3 p)"), std::string::npos);
+    EXPECT_NE(full->text.find("#define SDFWB_PLANE_CLIP 1"), std::string::npos);
     EXPECT_FALSE(hasErrors(checkWithGlslang(*full)));
 }
 
@@ -103,11 +114,14 @@ TEST(BuiltinShaders, EveryEmbeddedFileCompilesWithGlslangInItsStage) {
         features.shading = *parseShadingMode(mode);
         features.ambientOcclusion = true;
         features.overRelaxation = true;
+        features.cuttingPlane = true;
+        features.planeClipsSurface = true;
+        features.planeLipschitzOverlay = true;
         auto composed = composeTracer(sdf, features);
         ASSERT_TRUE(composed.hasValue());
         auto diagnostics = checkWithGlslang(*composed);
         EXPECT_FALSE(hasErrors(diagnostics)) << mode << ": " << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
-        for (const char* file : {"tracer/trace_core.glsl", "tracer/ao.glsl", "tracer/trace_main.frag"}) covered.insert(file);
+        for (const char* file : {"tracer/trace_core.glsl", "tracer/ao.glsl", "tracer/plane.glsl", "tracer/trace_main.frag"}) covered.insert(file);
         covered.insert(std::string("tracer/shading_") + mode + ".glsl");
     }
     for (const std::string& path : builtinShaderPaths())
