@@ -9,6 +9,9 @@ notes: A garden snail crawling towards +X. The shell is a tube swept along a log
   spiral (each turn twice the size of the one inside it, the tube radius a fixed fraction of
   the spiral radius, so neighbouring whorls touch), coiled in the XY plane on the snail's back.
   The body is a long tapered foot with a raised head and two eye stalks.
+  The audit measures it as truncated at 0.05: inside the shell's envelope the whorl field is
+  capped at that margin (see BOUNDED_PART), which leaves plateaus of f = 0.05 near the coil
+  axis. Those plateaus are a bound, so the field stays conservative.
   The spiral tube is measured in polar coordinates; the angle term adds at most about 0.6 to
   the gradient, so the tube field is divided by 1.2 (1-Lipschitz, conservative). The open
   end and a core bead are separate candidates so the field stays continuous. Unions and
