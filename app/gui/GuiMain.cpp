@@ -1,5 +1,6 @@
 #include "GuiMain.h"
 
+#include "FileController.h"
 #include "MainWindow.h"
 
 #include <core/Log.h>
@@ -7,6 +8,7 @@
 #include <dataset/Catalogue.h>
 
 #include <QApplication>
+#include <QMessageBox>
 #include <QSurfaceFormat>
 
 #include <cstdio>
@@ -51,6 +53,13 @@ int runGui(int argc, char** argv, const char* file) {
         else log::error("app", "default SDF '" + std::string(dataset::kDefaultSdfName) + "' not found in " + paths::datasetRoot().string());
     }
     if (!path.isEmpty()) window.openFile(path);
+    // Unsaved work from a run that did not end cleanly (a crash, a kill): offer it back.
+    QStringList recovery = FileController::recoveryFiles();
+    if (!recovery.isEmpty()) {
+        auto answer = QMessageBox::question(&window, QObject::tr("sdfwb"),
+                                            QObject::tr("sdfwb did not close cleanly last time. Recover the unsaved text (%1 file(s))?").arg(recovery.size()));
+        if (answer == QMessageBox::Yes) window.files()->restoreRecovery(recovery.first());
+    }
     return application.exec();
 }
 

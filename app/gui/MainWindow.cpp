@@ -1,6 +1,7 @@
 #include "MainWindow.h"
 
 #include "ExportController.h"
+#include "FileController.h"
 #include "PlaneController.h"
 #include "PlaybackController.h"
 #include "SamplingController.h"
@@ -12,6 +13,13 @@
 #include <widgets/CameraPanel.h>
 #include <widgets/GlslEditor.h>
 #include <widgets/PlanePanel.h>
+#include <widgets/ProblemsPanel.h>
+
+#include <core/Paths.h>
+#include <shaders/SdfSource.h>
+
+#include <QDir>
+#include <QInputDialog>
 #include <widgets/TimeBar.h>
 #include <widgets/ViewportWidget.h>
 
@@ -58,11 +66,15 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_cameraPanel = new widgets::CameraPanel;
     m_timeBar = new widgets::TimeBar;
     m_planePanel = new widgets::PlanePanel;
+    m_problems = new widgets::ProblemsPanel;
     m_viewportDock = addDock(tr("Viewport"), "ViewportDock", m_viewport, Qt::RightDockWidgetArea);
     m_editorDock = addDock(tr("Editor"), "EditorDock", m_editor, Qt::LeftDockWidgetArea);
     m_cameraDock = addDock(tr("Camera"), "CameraDock", m_cameraPanel, Qt::LeftDockWidgetArea);
     m_timeDock = addDock(tr("Time"), "TimeDock", m_timeBar, Qt::RightDockWidgetArea);
     m_planeDock = addDock(tr("Cutting plane"), "PlaneDock", m_planePanel, Qt::LeftDockWidgetArea);
+    m_problemsDock = addDock(tr("Problems"), "ProblemsDock", m_problems, Qt::LeftDockWidgetArea);
+    splitDockWidget(m_editorDock, m_problemsDock, Qt::Vertical);
+    resizeDocks({m_editorDock, m_problemsDock}, {640, 120}, Qt::Vertical);
     m_timeBar->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
     splitDockWidget(m_viewportDock, m_timeDock, Qt::Vertical);
     tabifyDockWidget(m_editorDock, m_cameraDock);
@@ -75,6 +87,32 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_exports = new ExportController(this, m_viewport, [this] { return m_document->path(); }, this);
     m_playback = new PlaybackController(m_timeBar, m_viewport, this);
     m_plane = new PlaneController(m_planePanel, m_viewport, [this] { return m_document->path(); }, this);
+    m_files = new FileController(this, m_editor, m_document, m_viewport, this);
+    connect(m_files, &FileController::pathChanged, this, [this] {
+        updateTitle();
+        updateRecentMenu();
+    });
+    connect(m_files, &FileController::message, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+    connect(m_editor, &QsciScintilla::modificationChanged, this, [this] { updateTitle(); });
+    connect(m_problems, &widgets::ProblemsPanel::locationActivated, this, [this](const QString& file, int line, int column) {
+        bool here = file == m_document->path() || (m_document->path().isEmpty() && file == "<editor>");
+        if (!here && QFileInfo::exists(file)) {
+            if (m_editor->isModified() && !m_files->confirmClose()) return;
+            m_files->load(file);
+        }
+        m_editor->goToLine(line, column);
+    });
+    // Completion: the helper libraries' functions once, the file's own after each check.
+    QStringList librarySignatures;
+    for (const QString& folder : {QString::fromStdString(paths::shaderLibraryRoot().string()),
+                                  QString::fromStdString((paths::datasetRoot() / "lib").string())})
+        for (const QFileInfo& info : QDir(folder).entryInfoList({"*.glsl"}, QDir::Files)) {
+            auto text = readTextFile(info.absoluteFilePath().toStdString());
+            if (text)
+                for (const std::string& signature : shaders::functionSignatures(*text)) librarySignatures << QString::fromStdString(signature);
+        }
+    m_librarySignatures = librarySignatures;
+    m_editor->setCompletionFunctions(m_librarySignatures, {});
 
     connect(m_editor, &QsciScintilla::textChanged, this, [this] {
         m_document->textEdited(m_editor->text());
@@ -87,6 +125,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         for (const auto& d : diagnostics) (d.severity == shaders::Severity::Error ? errors : warnings)++;
         m_diagnosticSummary->setText(errors ? tr("%1 error(s), %2 warning(s): showing the last good shader").arg(errors).arg(warnings)
                                             : tr("%1 warning(s)").arg(warnings));
+        m_problems->setDiagnostics(diagnostics);
+        QStringList fileSignatures;
+        for (const std::string& signature : shaders::functionSignatures(m_editor->text().toStdString()))
+            fileSignatures << QString::fromStdString(signature);
+        m_editor->setCompletionFunctions(m_librarySignatures, fileSignatures);
     });
     connect(m_document, &SdfDocument::sdfApplied, this, &MainWindow::updateOverlay);
     connect(m_document, &SdfDocument::sdfApplied, m_plane, &PlaneController::refresh);
@@ -104,6 +147,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     });
 
     createMenus();
+    updateRecentMenu();
     restoreSession();
     updateTitle();
 }
@@ -118,20 +162,20 @@ QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWid
     return dock;
 }
 
-bool MainWindow::openFile(const QString& path) {
-    auto text = readTextFile(path.toStdString());
-    if (!text) {
-        log::error("app", text.error().message);
-        statusBar()->showMessage(QString::fromStdString(text.error().message));
-        return false;
-    }
-    m_document->setPath(path);
-    const QSignalBlocker blocker(m_editor);
-    m_editor->setText(QString::fromStdString(*text));
-    m_editor->setModified(false);
-    m_document->checkNow(m_editor->text());
-    updateTitle();
-    return true;
+bool MainWindow::openFile(const QString& path) { return m_files->load(path); }
+
+void MainWindow::saveAsWithDialog() {
+    QString path = QFileDialog::getSaveFileName(this, tr("Save SDF"), m_document->path(), tr("GLSL (*.glsl)"));
+    if (!path.isEmpty()) m_files->saveAs(path);
+}
+
+void MainWindow::updateRecentMenu() {
+    m_recentMenu->clear();
+    for (const QString& path : m_files->recentFiles())
+        m_recentMenu->addAction(path, this, [this, path] {
+            if (!m_editor->isModified() || m_files->confirmClose()) m_files->load(path);
+        });
+    m_recentMenu->setEnabled(!m_recentMenu->isEmpty());
 }
 
 void MainWindow::setShadingMode(renderer::ShadingMode mode) {
@@ -150,11 +194,25 @@ void MainWindow::setAmbientOcclusion(bool enabled) {
 
 void MainWindow::createMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
+    QAction* create = file->addAction(tr("&New from template"), this, [this] {
+        if (!m_editor->isModified() || m_files->confirmClose()) m_files->newFromTemplate();
+    });
+    create->setShortcut(QKeySequence::New);
     QAction* open = file->addAction(tr("&Open..."), this, [this] {
+        if (m_editor->isModified() && !m_files->confirmClose()) return;
         QString path = QFileDialog::getOpenFileName(this, tr("Open SDF"), QString(), tr("GLSL (*.glsl *.frag *.glslf);;All files (*)"));
         if (!path.isEmpty()) openFile(path);
     });
     open->setShortcut(QKeySequence::Open);
+    m_recentMenu = file->addMenu(tr("Open &recent"));
+    QAction* save = file->addAction(tr("&Save"), this, [this] {
+        if (!m_files->save()) saveAsWithDialog();
+    });
+    save->setShortcut(QKeySequence::Save);
+    QAction* saveAs = file->addAction(tr("Save &as..."), this, &MainWindow::saveAsWithDialog);
+    saveAs->setShortcut(QKeySequence::SaveAs);
+    QAction* reload = file->addAction(tr("&Reload all shaders"), m_files, &FileController::reloadAll);
+    reload->setShortcut(Qt::Key_F5);
     file->addSeparator();
     QAction* screenshot = file->addAction(tr("Save &screenshot..."), m_exports, &ExportController::showScreenshotDialog);
     screenshot->setShortcut(Qt::Key_F4);
@@ -163,6 +221,35 @@ void MainWindow::createMenus() {
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* find = edit->addAction(tr("&Find..."), this, [this] {
+        bool ok = false;
+        QString text = QInputDialog::getText(this, tr("Find"), tr("Find:"), QLineEdit::Normal, m_lastSearch, &ok);
+        if (ok && !text.isEmpty()) {
+            m_lastSearch = text;
+            if (!m_editor->findNext(text)) statusBar()->showMessage(tr("'%1' not found").arg(text), 3000);
+        }
+    });
+    find->setShortcut(QKeySequence::Find);
+    QAction* findNext = edit->addAction(tr("Find &next"), this, [this] {
+        if (!m_lastSearch.isEmpty() && !m_editor->findNext(m_lastSearch)) statusBar()->showMessage(tr("'%1' not found").arg(m_lastSearch), 3000);
+    });
+    findNext->setShortcut(QKeySequence::FindNext);
+    QAction* replace = edit->addAction(tr("&Replace all..."), this, [this] {
+        bool ok = false;
+        QString text = QInputDialog::getText(this, tr("Replace"), tr("Find:"), QLineEdit::Normal, m_lastSearch, &ok);
+        if (!ok || text.isEmpty()) return;
+        QString with = QInputDialog::getText(this, tr("Replace"), tr("Replace '%1' with:").arg(text), QLineEdit::Normal, QString(), &ok);
+        if (ok) statusBar()->showMessage(tr("%1 replacement(s)").arg(m_editor->replaceAll(text, with)), 3000);
+    });
+    replace->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_H));
+    QAction* goTo = edit->addAction(tr("&Go to line..."), this, [this] {
+        bool ok = false;
+        int line = QInputDialog::getInt(this, tr("Go to line"), tr("Line:"), 1, 1, std::max(1, m_editor->lines()), 1, &ok);
+        if (ok) m_editor->goToLine(line);
+    });
+    goTo->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     QMenu* shadingMenu = view->addMenu(tr("&Shading"));
@@ -201,6 +288,7 @@ void MainWindow::createMenus() {
     view->addAction(m_cameraDock->toggleViewAction());
     view->addAction(m_timeDock->toggleViewAction());
     view->addAction(m_planeDock->toggleViewAction());
+    view->addAction(m_problemsDock->toggleViewAction());
     view->addSeparator();
     QAction* reset = view->addAction(tr("&Reset camera"), m_viewport, &widgets::ViewportWidget::resetCamera);
     reset->setShortcut(Qt::Key_Home);
@@ -270,6 +358,10 @@ void MainWindow::saveSession() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!m_files->confirmClose()) {
+        event->ignore();
+        return;
+    }
     saveSession();
     event->accept();
 }

@@ -6,6 +6,7 @@
 #include <renderer/RenderSettings.h>
 
 #include <QMainWindow>
+#include <QStringList>
 
 class QActionGroup;
 class QDockWidget;
@@ -15,6 +16,7 @@ namespace sdfwb::widgets {
 class CameraPanel;
 class GlslEditor;
 class PlanePanel;
+class ProblemsPanel;
 class TimeBar;
 class ViewportWidget;
 }
@@ -22,6 +24,7 @@ class ViewportWidget;
 namespace sdfwb::app {
 
 class ExportController;
+class FileController;
 class PlaneController;
 class PlaybackController;
 class SamplingController;
@@ -46,6 +49,8 @@ public:
     PlaybackController* playback() const { return m_playback; }
     widgets::PlanePanel* planePanel() const { return m_planePanel; }
     PlaneController* plane() const { return m_plane; }
+    FileController* files() const { return m_files; }
+    widgets::ProblemsPanel* problems() const { return m_problems; }
 
     void setShadingMode(renderer::ShadingMode mode);
     void setAmbientOcclusion(bool enabled);
@@ -60,6 +65,8 @@ private:
     void saveSession();
     void updateTitle();
     void updateOverlay();
+    void updateRecentMenu();
+    void saveAsWithDialog();
 
     widgets::GlslEditor* m_editor = nullptr;
     widgets::ViewportWidget* m_viewport = nullptr;
@@ -68,6 +75,12 @@ private:
     widgets::PlanePanel* m_planePanel = nullptr;
     QDockWidget* m_planeDock = nullptr;
     PlaneController* m_plane = nullptr;
+    FileController* m_files = nullptr;
+    widgets::ProblemsPanel* m_problems = nullptr;
+    QDockWidget* m_problemsDock = nullptr;
+    QMenu* m_recentMenu = nullptr;
+    QStringList m_librarySignatures;
+    QString m_lastSearch;
     QDockWidget* m_editorDock = nullptr;
     QDockWidget* m_viewportDock = nullptr;
     QDockWidget* m_cameraDock = nullptr;

@@ -44,6 +44,17 @@ SdfSignature detectSignature(const std::string& stripped) {
     return signature;
 }
 
+std::vector<std::string> functionSignatures(const std::string& text) {
+    static const std::regex definition(R"(\b(?:float|vec[234]|ivec[234]|int|uint|bool|mat[234]|void|Point3|Vector3|Color3|float[234])\s+(\w+)\s*\(([^)]*)\)\s*\{)");
+    std::string stripped = stripComments(text);
+    std::vector<std::string> signatures;
+    for (auto it = std::sregex_iterator(stripped.begin(), stripped.end(), definition); it != std::sregex_iterator(); ++it) {
+        std::string parameters = std::regex_replace((*it)[2].str(), std::regex(R"(\s+)"), " ");
+        signatures.push_back((*it)[1].str() + "(" + parameters + ")");
+    }
+    return signatures;
+}
+
 bool CompatNeeds::usesSceneTime() const {
     return std::find(symbols.begin(), symbols.end(), "g3d_SceneTime") != symbols.end();
 }

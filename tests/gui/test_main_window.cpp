@@ -2,6 +2,7 @@
 // renderer as the batch path, and a typed error shows a diagnostic while the last good shape stays.
 
 #include <gui/ExportController.h>
+#include <gui/FileController.h>
 #include <gui/MainWindow.h>
 #include <gui/PlaneController.h>
 #include <gui/PlaybackController.h>
@@ -13,6 +14,7 @@
 #include <widgets/ExportDialog.h>
 #include <widgets/GlslEditor.h>
 #include <widgets/PlanePanel.h>
+#include <widgets/ProblemsPanel.h>
 #include <widgets/TimeBar.h>
 #include <widgets/ViewportWidget.h>
 
@@ -22,6 +24,7 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QFileInfo>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QMouseEvent>
@@ -369,6 +372,149 @@ TEST(CuttingPlane, PanelDrawsThePlaneAndShowsReadouts) {
     window.planePanel()->findChild<QPushButton*>("apply_step_factor")->click();
     EXPECT_NEAR(viewport->trace().stepFactor, r.safeStepFactor, 1e-6f);
     window.grab().save(QDir::temp().filePath("sdfwb-gui-plane-window.png"));
+}
+
+namespace {
+
+QString writeScratch(const QString& name, const QByteArray& text) {
+    QDir folder(QDir::temp().filePath("sdfwb-gui-files"));
+    folder.mkpath(".");
+    QFile file(folder.filePath(name));
+    file.open(QIODevice::WriteOnly | QIODevice::Truncate);
+    file.write(text);
+    return folder.filePath(name);
+}
+
+QByteArray readAll(const QString& path) {
+    QFile file(path);
+    file.open(QIODevice::ReadOnly);
+    return file.readAll();
+}
+
+} // namespace
+
+TEST(Files, SaveAutosaveRecoverAndPromptOnClose) {
+    QString path = writeScratch("saved.glsl", "float sdf(vec3 p) { return length(p) - 0.5; }\n");
+    for (const QString& stale : app::FileController::recoveryFiles()) QFile::remove(stale);
+    {
+        app::MainWindow window;
+        window.show();
+        ASSERT_TRUE(window.openFile(path));
+        EXPECT_EQ(window.files()->recentFiles().value(0), QFileInfo(path).absoluteFilePath());
+        window.editor()->setText("float sdf(vec3 p) { return length(p) - 0.6; }\n");
+        EXPECT_TRUE(window.editor()->isModified());
+        EXPECT_TRUE(window.windowTitle().contains("*"));
+        // Autosave: the recovery file holds the edit; the real file does not change.
+        window.files()->autosaveNow();
+        ASSERT_TRUE(QFile::exists(window.files()->recoveryPath()));
+        EXPECT_TRUE(readAll(window.files()->recoveryPath()).contains("0.6"));
+        EXPECT_TRUE(readAll(path).contains("0.5"));
+        // Closing asks; Cancel keeps the window and the edit.
+        int asked = 0;
+        window.files()->setPrompt([&](const QString&) { ++asked; return app::FileController::Answer::Cancel; });
+        EXPECT_FALSE(window.close());
+        EXPECT_EQ(asked, 1);
+        EXPECT_TRUE(window.editor()->isModified());
+        // The window goes away without a clean close, as in a crash: the recovery file stays.
+    }
+    QStringList recovery = app::FileController::recoveryFiles();
+    ASSERT_FALSE(recovery.isEmpty());
+    {
+        app::MainWindow window;
+        ASSERT_TRUE(window.files()->restoreRecovery(recovery.first()));
+        EXPECT_TRUE(window.editor()->text().contains("0.6"));
+        EXPECT_EQ(window.document()->path(), QFileInfo(path).absoluteFilePath());
+        EXPECT_TRUE(window.editor()->isModified());
+        // Save writes atomically and clears the recovery file; then closing asks nothing.
+        ASSERT_TRUE(window.files()->save());
+        EXPECT_TRUE(readAll(path).contains("0.6"));
+        EXPECT_FALSE(QFile::exists(window.files()->recoveryPath()));
+        int asked = 0;
+        window.files()->setPrompt([&](const QString&) { ++asked; return app::FileController::Answer::Cancel; });
+        EXPECT_TRUE(window.close());
+        EXPECT_EQ(asked, 0);
+    }
+}
+
+TEST(Files, ReloadsWhenTheFileChangesOnDiskAndAsksWhenEdited) {
+    QString path = writeScratch("watched.glsl", "float sdf(vec3 p) { return length(p) - 0.5; }\n");
+    app::MainWindow window;
+    window.show();
+    ASSERT_TRUE(window.openFile(path));
+    QThread::msleep(50);
+    writeScratch("watched.glsl", "float sdf(vec3 p) { return length(p) - 0.3; }\n");
+    ASSERT_TRUE(waitFor([&] { return window.editor()->text().contains("0.3"); }, 5000)) << "an unmodified file reloads by itself";
+    EXPECT_FALSE(window.editor()->isModified());
+
+    window.editor()->setText("float sdf(vec3 p) { return length(p) - 0.4; } // my edit\n");
+    int asked = 0;
+    window.files()->setPrompt([&](const QString&) { ++asked; return app::FileController::Answer::No; });
+    writeScratch("watched.glsl", "float sdf(vec3 p) { return length(p) - 0.2; }\n");
+    ASSERT_TRUE(waitFor([&] { return asked > 0; }, 5000)) << "local edits: ask before reloading";
+    EXPECT_TRUE(window.editor()->text().contains("my edit")) << "answered no: the edit stays";
+    window.files()->setPrompt([](const QString&) { return app::FileController::Answer::No; });
+    window.editor()->setModified(false);
+}
+
+TEST(Editor, ProblemsListJumpsToTheLineAndOpensIncludedFiles) {
+    QString helper = writeScratch("helper.glsl", "// helper\n\nfloat helperDistance(vec3 p) {\n    return length(p) - missingRadius;\n}\n");
+    QString main = writeScratch("main.glsl", "#include \"helper.glsl\"\nfloat sdf(vec3 p) {\n    return helperDistance(p);\n}\n");
+    app::MainWindow window;
+    window.show();
+    int updates = 0;
+    QObject::connect(window.document(), &app::SdfDocument::diagnosticsChanged, [&] { ++updates; });
+    ASSERT_TRUE(window.openFile(main));
+    ASSERT_TRUE(waitFor([&] { return updates > 0 && window.problems()->count() > 0; }));
+    window.problems()->activate(0);
+    EXPECT_EQ(window.document()->path(), QFileInfo(helper).absoluteFilePath()) << "the included file opens";
+    int line = 0, column = 0;
+    window.editor()->getCursorPosition(&line, &column);
+    EXPECT_EQ(line + 1, 4);
+    window.grab().save(QDir::temp().filePath("sdfwb-gui-problems.png"));
+}
+
+TEST(Editor, FindReplaceGoToAndCompletion) {
+    QString path = writeScratch("edit.glsl", "float bump(vec3 p, float height) { return p.y - height; }\n"
+                                             "float sdf(vec3 p) {\n    return min(bump(p, 0.1), length(p) - 0.5);\n}\n");
+    app::MainWindow window;
+    window.show();
+    int updates = 0;
+    QObject::connect(window.document(), &app::SdfDocument::diagnosticsChanged, [&] { ++updates; });
+    ASSERT_TRUE(window.openFile(path));
+    ASSERT_TRUE(waitFor([&] { return updates > 0; }));
+    EXPECT_TRUE(window.editor()->findNext("length"));
+    EXPECT_EQ(window.editor()->selectedText(), "length");
+    EXPECT_EQ(window.editor()->replaceAll("0.5", "0.45"), 1);
+    EXPECT_TRUE(window.editor()->text().contains("0.45"));
+    window.editor()->goToLine(3, 5);
+    int line = 0, column = 0;
+    window.editor()->getCursorPosition(&line, &column);
+    EXPECT_EQ(line, 2);
+    EXPECT_EQ(column, 4);
+    // Completion knows the file's own functions (with signatures for call tips) and the library's.
+    QStringList names = window.editor()->completionEntries();
+    EXPECT_TRUE(names.contains("bump(vec3 p, float height)"));
+    EXPECT_TRUE(names.contains("sdBox(vec3 p, vec3 halfSize)"));
+    EXPECT_TRUE(names.contains("smoothstep(edge0, edge1, x)"));
+    window.editor()->setModified(false);
+}
+
+TEST(Editor, F5ReloadsIncludesFromDisk) {
+    QString helper = writeScratch("radius.glsl", "const float kRadius = 0.3;\n");
+    QString main = writeScratch("uses_radius.glsl", "#include \"radius.glsl\"\nfloat sdf(vec3 p) { return length(p) - kRadius; }\n");
+    app::MainWindow window;
+    window.show();
+    bool applied = false;
+    QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
+    ASSERT_TRUE(window.openFile(main));
+    ASSERT_TRUE(waitFor([&] { return applied; }));
+    long small = foreground(frameOf(window), kBackground);
+    writeScratch("radius.glsl", "const float kRadius = 0.6;\n");
+    applied = false;
+    window.files()->reloadAll();
+    ASSERT_TRUE(waitFor([&] { return applied; }));
+    long large = foreground(frameOf(window), kBackground);
+    EXPECT_GT(large, 3 * small) << "F5 re-reads the included file";
 }
 
 int main(int argc, char** argv) {

@@ -2,10 +2,13 @@
 
 #include "GlslLexer.h"
 
+#include <Qsci/qsciapis.h>
+
 #include <QColor>
 #include <QFileInfo>
 #include <QFontMetrics>
 
+#include <algorithm>
 #include <map>
 
 namespace sdfwb::widgets {
@@ -43,6 +46,71 @@ GlslEditor::GlslEditor(QWidget* parent) : QsciScintilla(parent) {
     m_warningIndicator = indicatorDefine(SquiggleIndicator, 9);
     setIndicatorForegroundColor(QColor(0xe0, 0xa0, 0x10), m_warningIndicator);
     setAnnotationDisplay(AnnotationBoxed);
+
+    m_apis = new QsciAPIs(m_lexer);
+    setAutoCompletionSource(AcsAll);
+    setAutoCompletionThreshold(2);
+    setAutoCompletionCaseSensitivity(true);
+    setCallTipsStyle(CallTipsNoContext);
+    setCallTipsVisible(0);
+    setCompletionFunctions({}, {});
+}
+
+namespace {
+
+// GLSL built-in functions with their parameters, for completion and call tips.
+const char* const kBuiltins[] = {
+    "abs(x)", "acos(x)", "all(bvec x)", "any(bvec x)", "asin(x)", "atan(y, x)", "atan(y_over_x)", "ceil(x)", "clamp(x, minVal, maxVal)",
+    "cos(x)", "cosh(x)", "cross(vec3 x, vec3 y)", "degrees(radians)", "determinant(m)", "distance(p0, p1)", "dot(x, y)", "exp(x)",
+    "exp2(x)", "faceforward(N, I, Nref)", "floor(x)", "fma(a, b, c)", "fract(x)", "inverse(m)", "inversesqrt(x)", "isinf(x)", "isnan(x)",
+    "length(x)", "log(x)", "log2(x)", "max(x, y)", "min(x, y)", "mix(x, y, a)", "mod(x, y)", "normalize(x)", "pow(x, y)",
+    "radians(degrees)", "reflect(I, N)", "refract(I, N, eta)", "round(x)", "sign(x)", "sin(x)", "sinh(x)", "smoothstep(edge0, edge1, x)",
+    "sqrt(x)", "step(edge, x)", "tan(x)", "tanh(x)", "transpose(m)", "trunc(x)", "texture(sampler, P)", "vec2(x, y)", "vec3(x, y, z)",
+    "vec4(x, y, z, w)", "mat2(...)", "mat3(...)", "mat4(...)", "sdf(vec3 p)", "sdf(vec3 p, float time)"};
+const char* const kKeywords[] = {"float", "vec2", "vec3", "vec4", "int", "uint", "bool", "mat2", "mat3", "mat4", "const", "return",
+                                 "for", "while", "if", "else", "break", "continue", "struct", "uniform", "in", "out", "inout", "true", "false"};
+
+} // namespace
+
+void GlslEditor::setCompletionFunctions(const QStringList& librarySignatures, const QStringList& fileSignatures) {
+    QStringList all;
+    for (const char* builtin : kBuiltins) all << builtin;
+    for (const char* keyword : kKeywords) all << keyword;
+    all << librarySignatures << fileSignatures;
+    all.removeDuplicates();
+    all.sort();
+    if (all == m_completions) return;
+    m_completions = all;
+    m_apis->clear();
+    for (const QString& entry : all) m_apis->add(entry);
+    m_apis->prepare();
+}
+
+bool GlslEditor::findNext(const QString& text, bool caseSensitive) {
+    if (text.isEmpty()) return false;
+    return findFirst(text, false, caseSensitive, false, true, true);
+}
+
+int GlslEditor::replaceAll(const QString& text, const QString& replacement, bool caseSensitive) {
+    if (text.isEmpty()) return 0;
+    int count = 0;
+    beginUndoAction();
+    setCursorPosition(0, 0);
+    bool found = findFirst(text, false, caseSensitive, false, false, true, 0, 0);
+    while (found) {
+        replace(replacement);
+        ++count;
+        found = QsciScintilla::findNext();
+    }
+    endUndoAction();
+    return count;
+}
+
+void GlslEditor::goToLine(int line, int column) {
+    int target = std::clamp(line - 1, 0, std::max(lines() - 1, 0));
+    setCursorPosition(target, std::max(column - 1, 0));
+    ensureLineVisible(target);
+    setFocus();
 }
 
 void GlslEditor::setDiagnostics(const std::vector<shaders::Diagnostic>& diagnostics, const QString& fileName) {

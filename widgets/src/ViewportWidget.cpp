@@ -98,6 +98,15 @@ void ViewportWidget::setTime(float seconds) {
     update();
 }
 
+void ViewportWidget::reloadShaders() {
+    if (context() && isValid()) {
+        makeCurrent();
+        m_renderer->releaseGl();
+        doneCurrent();
+    }
+    update();
+}
+
 void ViewportWidget::setOverlayText(const QString& text) {
     m_overlay = text;
     update();

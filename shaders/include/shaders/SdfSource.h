@@ -39,6 +39,9 @@ struct PreparedSdf {
 std::string stripComments(const std::string& text);
 
 SdfSignature detectSignature(const std::string& strippedText);
+
+// "name(type a, type b)" for every function defined in `text` (for autocompletion and call tips).
+std::vector<std::string> functionSignatures(const std::string& text);
 CompatNeeds detectCompatNeeds(const std::string& strippedText);
 
 // Resolves includes and analyses the text. `name` labels diagnostics for the root text; `path`

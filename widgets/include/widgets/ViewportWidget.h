@@ -51,6 +51,8 @@ public:
     void setCamera(const renderer::Camera& camera);
     void resetCamera();
     void setTime(float seconds);
+    // Drops every compiled variant; the next frame rebuilds from the current SDF (F5).
+    void reloadShaders();
     float time() const { return m_time; }
 
     // Frames while moving aim to take at most this long (default 33 ms).
