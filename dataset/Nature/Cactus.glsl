@@ -32,6 +32,6 @@ float sdf(vec3 p) {
     float arms = min(smoothMin(elbowR, armR, 0.06), smoothMin(elbowL, armL, 0.06));
 
     float cactus = smoothMin(trunk, arms, 0.06);
-    float sand = sdEllipsoid(p - vec3(0.0, -0.9, 0.0), vec3(0.55, 0.12, 0.55));
-    return smoothMin(cactus, sand, 0.06);
+    float sand = sdEllipsoid(p - vec3(0.0, -0.86, 0.0), vec3(0.55, 0.12, 0.55));
+    return max(smoothMin(cactus, sand, 0.06), -0.9 - p.y);   // flat underneath
 }

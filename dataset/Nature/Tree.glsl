@@ -35,10 +35,10 @@ float tree(vec3 p) {
 
 float sdf(vec3 p, float time) {
     // Ground mound: a flattened ellipsoid the tree stands in (does not sway).
-    float mound = sdEllipsoid(p - vec3(0.0, -0.9, 0.0), vec3(0.45, 0.08, 0.45));
+    float mound = sdEllipsoid(p - vec3(0.0, -0.86, 0.0), vec3(0.45, 0.08, 0.45));
     // Bend: a horizontal shift growing with the square of the height above the ground.
     float h = clamp((p.y + 0.86) / 1.8, 0.0, 1.0);
     float shift = 0.12 * sin(6.2831853 * time / 4.0) * h * h;
     float t = tree(vec3(p.x - shift, p.y, p.z)) / 1.14;
-    return smoothMin(t, mound, 0.06);
+    return max(smoothMin(t, mound, 0.06), -0.9 - p.y);      // flat underneath
 }

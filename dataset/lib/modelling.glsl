@@ -67,6 +67,17 @@ float sdTrapezoid2(vec2 q, float r0, float r1, float h) {
     return inside ? -d : d;
 }
 
+// Triangle a, b, c (either winding): distance to the nearest edge, negative inside (exact).
+float sdTriangle2(vec2 p, vec2 a, vec2 b, vec2 c) {
+    float d = min(sdSegment2(p, a, b), min(sdSegment2(p, b, c), sdSegment2(p, c, a)));
+    // Inside when p lies on the same side of all three edges.
+    float s1 = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+    float s2 = (c.x - b.x) * (p.y - b.y) - (c.y - b.y) * (p.x - b.x);
+    float s3 = (a.x - c.x) * (p.y - c.y) - (a.y - c.y) * (p.x - c.x);
+    bool inside = (s1 >= 0.0 && s2 >= 0.0 && s3 >= 0.0) || (s1 <= 0.0 && s2 <= 0.0 && s3 <= 0.0);
+    return inside ? -d : d;
+}
+
 // ---------------------------------------------------------------------------------------------
 // 3D primitives
 
@@ -106,8 +117,11 @@ float roundConeProfile(float x, float y, float len, float ra, float rb) {
 float sdRoundCone(vec3 p, vec3 a, vec3 b, float ra, float rb) {
     vec3 ba = b - a, pa = p - a;
     float len = length(ba);
-    float y = len < 1e-5 ? 0.0 : dot(pa, ba) / len;
-    float x = sqrt(max(dot(pa, pa) - y * y, 0.0));
+    vec3 axis = len < 1e-5 ? vec3(0.0, 1.0, 0.0) : ba / len;
+    float y = dot(pa, axis);
+    // Distance from the axis as the length of the perpendicular part (stable near the axis,
+    // unlike sqrt(|pa|^2 - y^2), which loses precision there).
+    float x = length(pa - axis * y);
     return roundConeProfile(x, y, len, ra, rb);
 }
 
