@@ -126,12 +126,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         m_diagnosticSummary->setText(errors ? tr("%1 error(s), %2 warning(s): showing the last good shader").arg(errors).arg(warnings)
                                             : tr("%1 warning(s)").arg(warnings));
         m_problems->setDiagnostics(diagnostics);
-        QStringList fileSignatures;
-        for (const std::string& signature : shaders::functionSignatures(m_editor->text().toStdString()))
-            fileSignatures << QString::fromStdString(signature);
-        m_editor->setCompletionFunctions(m_librarySignatures, fileSignatures);
     });
     connect(m_document, &SdfDocument::sdfApplied, this, &MainWindow::updateOverlay);
+    connect(m_document, &SdfDocument::signaturesChanged, this,
+            [this](const QStringList& signatures) { m_editor->setCompletionFunctions(m_librarySignatures, signatures); });
     connect(m_document, &SdfDocument::sdfApplied, m_plane, &PlaneController::refresh);
     connect(m_cameraPanel, &widgets::CameraPanel::cameraEdited, m_viewport, &widgets::ViewportWidget::setCamera);
     connect(m_cameraPanel, &widgets::CameraPanel::resetRequested, m_viewport, &widgets::ViewportWidget::resetCamera);

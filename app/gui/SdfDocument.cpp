@@ -14,7 +14,7 @@ namespace sdfwb::app {
 
 SdfDocument::SdfDocument(widgets::ViewportWidget* viewport, QObject* parent) : QObject(parent), m_viewport(viewport) {
     m_debounce.setSingleShot(true);
-    m_debounce.setInterval(150);
+    m_debounce.setInterval(120);
     connect(&m_debounce, &QTimer::timeout, this, [this] { startCheck(m_pendingText); });
 }
 
@@ -48,20 +48,35 @@ void SdfDocument::startCheck(const QString& text) {
         QMetaObject::invokeMethod(QCoreApplication::instance(), [self, generation, prepared = std::move(prepared), diagnostics = std::move(diagnostics)]() mutable {
             if (self) self->finishCheck(generation, std::move(prepared), std::move(diagnostics));
         }, Qt::QueuedConnection);
+        // Autocompletion entries come second: they are not on the path to the diagnostics.
+        QStringList signatures;
+        for (const std::string& signature : shaders::functionSignatures(source)) signatures << QString::fromStdString(signature);
+        QMetaObject::invokeMethod(QCoreApplication::instance(), [self, generation, signatures = std::move(signatures)]() mutable {
+            if (!self || generation != self->m_generation) return;
+            self->m_fileSignatures = std::move(signatures);
+            emit self->signaturesChanged(self->m_fileSignatures);
+        }, Qt::QueuedConnection);
     });
 }
 
 void SdfDocument::finishCheck(std::uint64_t generation, shaders::PreparedSdf prepared, std::vector<shaders::Diagnostic> diagnostics) {
     if (generation != m_generation) return;  // superseded by newer text
-    if (!shaders::hasErrors(diagnostics)) {
-        // The driver may still reject what glslang accepts; its messages join the list.
-        auto driver = m_viewport->setSdf(prepared);
-        for (const auto& d : driver)
-            if (d.severity == shaders::Severity::Error) diagnostics.push_back(d);
-        if (!shaders::hasErrors(driver)) emit sdfApplied();
-    }
+    // glslang's verdict goes on screen at once; the driver compile (on this thread, where the GL
+    // context lives) follows in the next event-loop turn and adds its own errors if it finds any.
     m_diagnostics = std::move(diagnostics);
     emit diagnosticsChanged(m_diagnostics);
+    if (shaders::hasErrors(m_diagnostics)) return;
+    QTimer::singleShot(0, this, [this, generation, prepared = std::move(prepared)] {
+        if (generation != m_generation) return;
+        auto driver = m_viewport->setSdf(prepared);
+        if (shaders::hasErrors(driver)) {
+            for (const auto& d : driver)
+                if (d.severity == shaders::Severity::Error) m_diagnostics.push_back(d);
+            emit diagnosticsChanged(m_diagnostics);
+            return;
+        }
+        emit sdfApplied();
+    });
 }
 
 } // namespace sdfwb::app

@@ -8,6 +8,7 @@
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 #include <QTimer>
 
 #include <atomic>
@@ -34,12 +35,16 @@ public:
 
     const std::vector<shaders::Diagnostic>& diagnostics() const { return m_diagnostics; }
     int debounceMilliseconds() const { return m_debounce.interval(); }
+    // "name(type a, ...)" of the functions the last checked text defines (autocompletion).
+    const QStringList& fileSignatures() const { return m_fileSignatures; }
 
 signals:
     // After each check: diagnostics from the resolver, glslang and the driver.
     void diagnosticsChanged(const std::vector<shaders::Diagnostic>& diagnostics);
     // The viewport now shows the new text.
     void sdfApplied();
+    // The functions the checked text defines changed (for autocompletion).
+    void signaturesChanged(const QStringList& signatures);
 
 private:
     void startCheck(const QString& text);
@@ -51,6 +56,7 @@ private:
     QTimer m_debounce;
     std::uint64_t m_generation = 0;
     std::vector<shaders::Diagnostic> m_diagnostics;
+    QStringList m_fileSignatures;
 };
 
 } // namespace sdfwb::app
