@@ -5,7 +5,7 @@ type: exact
 animated: no
 author: sdfwb authors
 license: CC0-1.0
-notes: Square pyramid, base 1.6 x 1.6 at y = -0.75, apex at y = 0.75; one side faces +X.
+notes: Square pyramid, base 1.44 x 1.44 at y = -0.68, apex at y = 0.68; one side faces +X.
   The pyramid is convex and mirror-symmetric in x and z, so after folding x and z to be positive
   the nearest boundary point lies on the +X face, the +Z face or the base. Outside, the field is
   the least exact distance to those three faces; inside, the distance to the boundary of a convex
@@ -29,8 +29,8 @@ float triangleDistance(vec3 p, vec3 a, vec3 b, vec3 c) {
 }
 
 float sdf(vec3 p) {
-    const float halfBase = 0.8;
-    const float height = 1.5;
+    const float halfBase = 0.72;
+    const float height = 1.36;
     const float baseY = -0.5 * height;
     const vec3 apex = vec3(0.0, 0.5 * height, 0.0);
     vec3 q = vec3(abs(p.x), p.y, abs(p.z));

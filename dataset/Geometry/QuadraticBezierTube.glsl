@@ -33,22 +33,25 @@ float bezierDistance(vec3 p, vec3 start, vec3 control, vec3 end) {
     float b = k2 * (2.0 * k2 * k2 - 9.0 * k1) / 27.0 + k0;
     float discriminant = 0.25 * b * b + a * a * a / 27.0;
 
-    vec3 roots;
+    // Candidate parameters: the local minima of the squared distance (the clamping below also
+    // yields the ends, which is where any minimum over [0, 1] that is not a root must lie).
+    vec2 candidates;
     if (discriminant >= 0.0) {
         // One real root (Cardano).
         float s = sqrt(discriminant);
-        roots = vec3(cubeRoot(-0.5 * b + s) + cubeRoot(-0.5 * b - s));
+        candidates = vec2(cubeRoot(-0.5 * b + s) + cubeRoot(-0.5 * b - s));
     } else {
-        // Three real roots: x = 2m cos(phi/3 - 2 pi k / 3) with m = sqrt(-a/3).
+        // Three real roots 2m cos(phi/3 - 2 pi k/3), m = sqrt(-a/3). The middle one (k = 1) is a
+        // local maximum of the squared distance, so only the largest (k = 0) and smallest (k = 2) count.
         float m = sqrt(-a / 3.0);
         float phi = acos(clamp(-b / (2.0 * max(m * m * m, 1e-30)), -1.0, 1.0));
-        roots = 2.0 * m * cos(vec3(phi, phi - 6.2831853, phi + 6.2831853) / 3.0);
+        candidates = 2.0 * m * cos(vec2(phi, phi + 6.2831853) / 3.0);
     }
-    roots -= k2 / 3.0;
+    candidates -= k2 / 3.0;
 
     float best = 1e10;
-    for (int i = 0; i < 3; ++i) {
-        float t = roots[i];
+    for (int i = 0; i < 2; ++i) {
+        float t = candidates[i];
         // One Newton step on the cubic recovers the precision lost to cancellation.
         float value = ((t + k2) * t + k1) * t + k0;
         float slope = (3.0 * t + 2.0 * k2) * t + k1;
