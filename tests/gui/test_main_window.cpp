@@ -24,6 +24,9 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QProcess>
+
+#include <csignal>
 #include <QFileInfo>
 #include <QDoubleSpinBox>
 #include <QLabel>
@@ -434,6 +437,37 @@ TEST(Files, SaveAutosaveRecoverAndPromptOnClose) {
         EXPECT_TRUE(window.close());
         EXPECT_EQ(asked, 0);
     }
+}
+
+// Not a test of its own: the child process of the test below (hence DISABLED_, which the parent
+// turns on). It edits, lets the real autosave timer fire, then dies by SIGKILL, as a crash would.
+TEST(CrashChild, DISABLED_EditThenDie) {
+    QString path = writeScratch("crashed.glsl", "float sdf(vec3 p) { return length(p) - 0.5; }\n");
+    app::MainWindow window;
+    window.show();
+    ASSERT_TRUE(window.openFile(path));
+    window.files()->setAutosaveInterval(200);
+    window.editor()->setText("float sdf(vec3 p) { return length(p) - 0.25; } // typed before the crash\n");
+    QString recovery = window.files()->recoveryPath();
+    ASSERT_TRUE(waitFor([&] { return QFile::exists(recovery); }, 5000));
+    ::raise(SIGKILL);
+}
+
+TEST(Files, RecoversAfterTheProcessIsKilled) {
+    for (const QString& stale : app::FileController::recoveryFiles()) QFile::remove(stale);
+    QProcess child;
+    child.start(QCoreApplication::applicationFilePath(), {"--gtest_also_run_disabled_tests", "--gtest_filter=CrashChild.DISABLED_EditThenDie"});
+    ASSERT_TRUE(child.waitForFinished(60000));
+    EXPECT_EQ(child.exitStatus(), QProcess::CrashExit) << "the child must have been killed";
+    QStringList recovery = app::FileController::recoveryFiles();
+    ASSERT_EQ(recovery.size(), 1);
+    app::MainWindow window;
+    ASSERT_TRUE(window.files()->restoreRecovery(recovery.first()));
+    EXPECT_TRUE(window.editor()->text().contains("typed before the crash"));
+    EXPECT_TRUE(window.document()->path().endsWith("crashed.glsl"));
+    window.files()->setPrompt([](const QString&) { return app::FileController::Answer::No; });
+    EXPECT_TRUE(window.close());
+    EXPECT_TRUE(app::FileController::recoveryFiles().isEmpty()) << "a clean close (discarding) removes the recovery file";
 }
 
 TEST(Files, ReloadsWhenTheFileChangesOnDiskAndAsksWhenEdited) {
