@@ -173,7 +173,12 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
         ++positive;
         if (gradientLength(random[0], i) < 0.02f) flatValues.push_back(random[0].distances[i]);
     }
-    if (positive > 0 && double(flatValues.size()) > 0.02 * double(positive)) report.truncationDistance = percentile(flatValues, 0.05);
+    // A truncated field saturates at a distance well off the surface; flat spots that hug the
+    // zero set (fractal estimators vanish near their set) are not truncation.
+    if (positive > 0 && double(flatValues.size()) > 0.02 * double(positive)) {
+        float plateau = percentile(flatValues, 0.05);
+        if (plateau > 0.01f) report.truncationDistance = plateau;
+    }
 
     // Eikonal error near the surface.
     std::vector<float> eikonal;
@@ -370,7 +375,10 @@ Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 n
         readout.lipschitz99 = percentile(slopes, 0.99);
         readout.shareAboveOne = double(above) / double(slopes.size());
     }
-    if (positive > 0 && double(flat.size()) > 0.02 * double(positive)) readout.truncationDistance = percentile(flat, 0.05);
+    if (positive > 0 && double(flat.size()) > 0.02 * double(positive)) {
+        float plateau = percentile(flat, 0.05);
+        if (plateau > 0.01f) readout.truncationDistance = plateau;  // as in the volume audit
+    }
     readout.safeStepFactor = 1.0f / std::max(readout.lipschitzMax, 1.0f);
     readout.seconds = secondsSince(start);
     return readout;
