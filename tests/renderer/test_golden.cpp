@@ -8,6 +8,8 @@
 #include <renderer/SdfRenderer.h>
 #include <shaders/SdfSource.h>
 
+#include "GlTestContext.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -30,26 +32,14 @@ std::string caseName(const Case& c) {
     return name;
 }
 
-class GoldenTest : public ::testing::TestWithParam<Case> {
+class GoldenTest : public sdfwb::testing::GlTest, public ::testing::WithParamInterface<Case> {
 protected:
-    static void SetUpTestSuite() {
-        auto created = renderer::HeadlessContext::create();
-        ASSERT_TRUE(created.hasValue()) << created.error().message;
-        s_context = std::move(created.value()).release();
-    }
-    static void TearDownTestSuite() {
-        delete s_context;
-        s_context = nullptr;
-    }
-    static renderer::HeadlessContext* s_context;
 };
 
-renderer::HeadlessContext* GoldenTest::s_context = nullptr;
 
 } // namespace
 
 TEST_P(GoldenTest, MatchesTheReviewedImage) {
-    ASSERT_TRUE(s_context && s_context->makeCurrent());
     const Case& c = GetParam();
     fs::path source = fs::path(SDFWB_SOURCE_DIR) / "dataset" / c.sdf;
     shaders::IncludeOptions options;

@@ -8,6 +8,8 @@
 #include <renderer/SdfRenderer.h>
 #include <shaders/SdfSource.h>
 
+#include "GlTestContext.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,18 +21,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-class RendererTest : public ::testing::Test {
+class RendererTest : public sdfwb::testing::GlTest {
 protected:
-    static void SetUpTestSuite() {
-        auto created = renderer::HeadlessContext::create();
-        ASSERT_TRUE(created.hasValue()) << created.error().message;
-        s_context = std::move(created.value()).release();
-    }
-    static void TearDownTestSuite() {
-        delete s_context;
-        s_context = nullptr;
-    }
-    void SetUp() override { ASSERT_TRUE(s_context && s_context->makeCurrent()); }
 
     static shaders::PreparedSdf prepare(const std::string& text, const std::string& name = "<test>") {
         return shaders::prepareSdf(text, name, {}, shaders::IncludeOptions{});
@@ -48,15 +40,13 @@ protected:
         return count;
     }
 
-    static renderer::HeadlessContext* s_context;
 };
 
-renderer::HeadlessContext* RendererTest::s_context = nullptr;
 
 } // namespace
 
 TEST_F(RendererTest, ContextIsGl43CoreWithCompute) {
-    const renderer::GlInfo& info = s_context->info();
+    const renderer::GlInfo& info = context().info();
     EXPECT_GE(info.major * 10 + info.minor, 43) << info.version;
     EXPECT_TRUE(info.coreProfile);
     EXPECT_TRUE(info.computeShaders);

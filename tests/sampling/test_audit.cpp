@@ -4,6 +4,8 @@
 #include <renderer/HeadlessContext.h>
 #include <sampling/FieldAudit.h>
 
+#include "GlTestContext.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,18 +16,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-class AuditTest : public ::testing::Test {
+class AuditTest : public sdfwb::testing::GlTest {
 protected:
-    static void SetUpTestSuite() {
-        auto created = renderer::HeadlessContext::create();
-        ASSERT_TRUE(created.hasValue()) << created.error().message;
-        s_context = std::move(created.value()).release();
-    }
-    static void TearDownTestSuite() {
-        delete s_context;
-        s_context = nullptr;
-    }
-    void SetUp() override { ASSERT_TRUE(s_context && s_context->makeCurrent()); }
 
     static shaders::PreparedSdf load(const std::string& relative) {
         shaders::IncludeOptions options;
@@ -40,10 +32,8 @@ protected:
         EXPECT_TRUE(report.hasValue()) << (report ? "" : report.error().message);
         return report ? *report : sampling::AuditReport{};
     }
-    static renderer::HeadlessContext* s_context;
 };
 
-renderer::HeadlessContext* AuditTest::s_context = nullptr;
 
 } // namespace
 

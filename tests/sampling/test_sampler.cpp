@@ -7,6 +7,8 @@
 #include <sampling/Sampler.h>
 #include <sampling/SamplerLibrary.h>
 
+#include "GlTestContext.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/vec3.hpp>
@@ -24,18 +26,8 @@ namespace {
 
 constexpr float kRadius = 0.5f;
 
-class SamplerTest : public ::testing::Test {
+class SamplerTest : public sdfwb::testing::GlTest {
 protected:
-    static void SetUpTestSuite() {
-        auto created = renderer::HeadlessContext::create();
-        ASSERT_TRUE(created.hasValue()) << created.error().message;
-        s_context = std::move(created.value()).release();
-    }
-    static void TearDownTestSuite() {
-        delete s_context;
-        s_context = nullptr;
-    }
-    void SetUp() override { ASSERT_TRUE(s_context && s_context->makeCurrent()); }
 
     static shaders::PreparedSdf prepare(const std::string& text) { return shaders::prepareSdf(text, "<test>", {}, shaders::IncludeOptions{}); }
 
@@ -54,10 +46,8 @@ protected:
         return report ? *report : sampling::SamplingReport{};
     }
 
-    static renderer::HeadlessContext* s_context;
 };
 
-renderer::HeadlessContext* SamplerTest::s_context = nullptr;
 
 const char* const kSphere = "float sdf(vec3 p) { return length(p) - 0.5; }\n";
 
