@@ -16,7 +16,8 @@ notes: The power-8 Mandelbulb (the triplex power z -> z^8 + c in spherical coord
   the azimuthal stretch |sin 8 theta / sin theta| of the power map, faded out smoothly for r
   between 0.8 and 1.2 so that escaping orbits stay consistent from one iteration to the next.
   Far from the set r log r grows faster than the distance, so the field is capped by
-  0.5 |p| + 0.1 (positive, so the surface is unchanged). Scaled by 0.45, measured difference
+  0.5 |p| + 0.1; a skin of 0.0005 is subtracted so the flat, barely positive pockets of captured
+  orbits count as inside. Scaled by 0.45, measured difference
   quotients (1e-4 to 0.1 apart, uniform and near-surface samples, out to |p| = 100) stay below
   0.9, so it is a conservative bound in practice; no proof.
 */
@@ -54,6 +55,8 @@ float sdf(vec3 p) {
     float potential = r > 1.0 ? r * log(r) : r - 1.0;
     float estimate = safety * fitScale * 0.5 * potential / dr;
     // Far away r log r outgrows the distance (slope above 1 beyond |p| ~ 25); a gentle positive
-    // cone takes over there. It is positive everywhere, so the surface is unchanged.
-    return min(estimate, 0.5 * length(p) + 0.1);
+    // cone takes over there. The small skin moves the surface out by about 0.001 so that the
+    // flat, barely positive pockets of captured orbits (r just above 1) fall inside.
+    const float skin = 0.0005;
+    return min(estimate, 0.5 * length(p) + 0.1) - skin;
 }

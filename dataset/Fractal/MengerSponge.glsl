@@ -5,7 +5,7 @@ type: conservative
 animated: no
 author: sdfwb authors
 license: CC0-1.0
-notes: Menger sponge of half size 0.85, four levels. Level k removes a cross of three square bars
+notes: Menger sponge of half size 0.78, four levels. Level k removes a cross of three square bars
   (half width one sixth of the cell) through the centre of every cell of size 2 / 3^(k-1); within
   a level the nearest bar always belongs to the point's own cell, so the cell-wrapped exact distance
   to the cross is the exact distance to all crosses of that level. The sponge is the box minus every
@@ -21,7 +21,7 @@ float barDistance(vec2 across, float halfWidth) {
 }
 
 float sdf(vec3 p) {
-    const float halfSize = 0.85;
+    const float halfSize = 0.78;
     const int levels = 4;
     vec3 q = p / halfSize;  // the sponge in [-1, 1]^3
 

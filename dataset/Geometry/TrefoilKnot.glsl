@@ -15,7 +15,7 @@ notes: Tube of radius 0.14 around a trefoil, the (2,3) torus knot ((0.52 + 0.26 
   chord, so chord distances bound the piece distances from both sides: the two pieces with the
   nearest chords are solved, and the others are solved only when their lower bound still beats
   the result (rare). The tube radius is below the spline's smallest curvature radius (about 0.3)
-  and half the closest approach of two strands (about 0.21), so the tube is exact inside too. It is
+  and half the closest approach of two strands (about 0.22), so the tube is exact inside too. It is
   the exact distance to this spline trefoil, a close approximation of the parametric curve.
 */
 
