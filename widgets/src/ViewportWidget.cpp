@@ -131,7 +131,7 @@ void ViewportWidget::initializeGL() {
         doneCurrent();
     }, Qt::DirectConnection);
     renderer::GlInfo info = renderer::queryGlInfo();
-    m_glDescription = QString::fromStdString(renderer::describe(info));
+    m_contextDescription = QString::fromStdString(renderer::describe(info));
     log::info("gl", "viewport context: " + renderer::describe(info));
     if (auto ok = renderer::requireGl43(info); !ok) log::error("gl", ok.error().message);
     (void)m_renderer->setShading(m_shading);
@@ -142,7 +142,7 @@ void ViewportWidget::initializeGL() {
         for (const auto& d : diagnostics) log::warning("shaders", shaders::formatDiagnostic(d));
         m_pendingSdf.reset();
     }
-    emit glReady(m_glDescription);
+    emit contextReady(m_contextDescription);
 }
 
 void ViewportWidget::paintGL() {

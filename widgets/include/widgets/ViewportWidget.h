@@ -67,13 +67,13 @@ public:
     // Text drawn in the lower-left corner (name, author, license); empty hides it.
     void setOverlayText(const QString& text);
 
-    QString glDescription() const { return m_glDescription; }
+    QString contextDescription() const { return m_contextDescription; }
 
 signals:
     void frameRendered(double milliseconds, float scale);
     void cameraChanged(const sdfwb::renderer::Camera& camera);
     void planeDragged(const sdfwb::renderer::CuttingPlane& plane);
-    void glReady(const QString& description);
+    void contextReady(const QString& description);
 
 protected:
     void initializeGL() override;
@@ -109,7 +109,7 @@ private:
     float m_scale = 1.0f;
     float m_lastScale = 1.0f;
     double m_lastFrameMilliseconds = 0.0;
-    QString m_glDescription;
+    QString m_contextDescription;
     QString m_overlay;
 };
 
