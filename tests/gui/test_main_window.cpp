@@ -242,6 +242,9 @@ TEST(Viewport, MovingRendersCheaplyThenRefines) {
     ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
     widgets::ViewportWidget* viewport = window.viewport();
     viewport->setFrameBudget(0.5);  // unreachable on purpose: the scale must drop while moving
+    ASSERT_TRUE(waitFor([&] { return !viewport->isInteracting(); }, 3000));
+    viewport->grabFramebuffer();    // a full-resolution frame: the scale while moving starts from its cost
+    ASSERT_EQ(viewport->lastFrameScale(), 1.0f);
     renderer::Camera before = viewport->camera();
     QPoint start(300, 300);
     QMouseEvent press(QEvent::MouseButtonPress, start, viewport->mapToGlobal(start), Qt::LeftButton, Qt::LeftButton, Qt::NoModifier);

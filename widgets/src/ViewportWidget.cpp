@@ -154,7 +154,7 @@ void ViewportWidget::paintGL() {
     renderer::FrameStats stats = m_renderer->renderScaled(width, height, scale, m_camera, m_time, true);
     m_lastFrameMilliseconds = stats.cpuMilliseconds;
     m_lastScale = scale;
-    if (scale >= 1.0f) {
+    if (!m_interacting) {
         m_fullFrameMilliseconds = stats.cpuMilliseconds;
     } else if (stats.cpuMilliseconds > 0.0) {
         // Cost grows with the pixel count, i.e. with scale^2: aim at 80 % of the budget.
