@@ -12,6 +12,8 @@
 #include <dataset/Metadata.h>
 #include <widgets/CameraPanel.h>
 #include <widgets/GlslEditor.h>
+#include <dataset/Catalogue.h>
+#include <widgets/DatasetBrowser.h>
 #include <widgets/PlanePanel.h>
 #include <widgets/ProblemsPanel.h>
 
@@ -67,18 +69,31 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_timeBar = new widgets::TimeBar;
     m_planePanel = new widgets::PlanePanel;
     m_problems = new widgets::ProblemsPanel;
+    m_browser = new widgets::DatasetBrowser;
     m_viewportDock = addDock(tr("Viewport"), "ViewportDock", m_viewport, Qt::RightDockWidgetArea);
     m_editorDock = addDock(tr("Editor"), "EditorDock", m_editor, Qt::LeftDockWidgetArea);
     m_cameraDock = addDock(tr("Camera"), "CameraDock", m_cameraPanel, Qt::LeftDockWidgetArea);
     m_timeDock = addDock(tr("Time"), "TimeDock", m_timeBar, Qt::RightDockWidgetArea);
     m_planeDock = addDock(tr("Cutting plane"), "PlaneDock", m_planePanel, Qt::LeftDockWidgetArea);
     m_problemsDock = addDock(tr("Problems"), "ProblemsDock", m_problems, Qt::LeftDockWidgetArea);
+    m_browserDock = addDock(tr("Dataset"), "DatasetDock", m_browser, Qt::LeftDockWidgetArea);
+    {
+        QList<widgets::DatasetItem> items;
+        dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
+        for (const dataset::Entry& e : catalogue.entries())
+            items.append({QString::fromStdString(e.metadata.name), QString::fromStdString(e.metadata.category),
+                          dataset::declaredTypeName(e.metadata.type), QString::fromStdString(e.metadata.author),
+                          QString::fromStdString(e.metadata.license), QString::fromStdString(e.metadata.notes),
+                          QString::fromStdString(e.path.string()), e.metadata.animated});
+        m_browser->setItems(items);
+    }
     splitDockWidget(m_editorDock, m_problemsDock, Qt::Vertical);
     resizeDocks({m_editorDock, m_problemsDock}, {640, 120}, Qt::Vertical);
     m_timeBar->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
     splitDockWidget(m_viewportDock, m_timeDock, Qt::Vertical);
     tabifyDockWidget(m_editorDock, m_cameraDock);
     tabifyDockWidget(m_cameraDock, m_planeDock);
+    tabifyDockWidget(m_planeDock, m_browserDock);
     m_editorDock->raise();
     resizeDocks({m_editorDock, m_viewportDock}, {560, 840}, Qt::Horizontal);
 
@@ -94,6 +109,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     });
     connect(m_files, &FileController::message, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
     connect(m_editor, &QsciScintilla::modificationChanged, this, [this] { updateTitle(); });
+    connect(m_browser, &widgets::DatasetBrowser::openRequested, this, [this](const QString& path) {
+        if (!m_editor->isModified() || m_files->confirmClose()) m_files->load(path);
+    });
     connect(m_problems, &widgets::ProblemsPanel::locationActivated, this, [this](const QString& file, int line, int column) {
         bool here = file == m_document->path() || (m_document->path().isEmpty() && file == "<editor>");
         if (!here && QFileInfo::exists(file)) {
@@ -287,6 +305,7 @@ void MainWindow::createMenus() {
     view->addAction(m_timeDock->toggleViewAction());
     view->addAction(m_planeDock->toggleViewAction());
     view->addAction(m_problemsDock->toggleViewAction());
+    view->addAction(m_browserDock->toggleViewAction());
     view->addSeparator();
     QAction* reset = view->addAction(tr("&Reset camera"), m_viewport, &widgets::ViewportWidget::resetCamera);
     reset->setShortcut(Qt::Key_Home);

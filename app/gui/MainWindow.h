@@ -14,6 +14,7 @@ class QLabel;
 
 namespace sdfwb::widgets {
 class CameraPanel;
+class DatasetBrowser;
 class GlslEditor;
 class PlanePanel;
 class ProblemsPanel;
@@ -51,6 +52,7 @@ public:
     PlaneController* plane() const { return m_plane; }
     FileController* files() const { return m_files; }
     widgets::ProblemsPanel* problems() const { return m_problems; }
+    widgets::DatasetBrowser* datasetBrowser() const { return m_browser; }
 
     void setShadingMode(renderer::ShadingMode mode);
     void setAmbientOcclusion(bool enabled);
@@ -77,6 +79,8 @@ private:
     PlaneController* m_plane = nullptr;
     FileController* m_files = nullptr;
     widgets::ProblemsPanel* m_problems = nullptr;
+    widgets::DatasetBrowser* m_browser = nullptr;
+    QDockWidget* m_browserDock = nullptr;
     QDockWidget* m_problemsDock = nullptr;
     QMenu* m_recentMenu = nullptr;
     QStringList m_librarySignatures;

@@ -11,6 +11,7 @@
 #include <widgets/SamplingDialog.h>
 #include <renderer/ImageIO.h>
 #include <widgets/CameraPanel.h>
+#include <widgets/DatasetBrowser.h>
 #include <widgets/ExportDialog.h>
 #include <widgets/GlslEditor.h>
 #include <widgets/PlanePanel.h>
@@ -553,6 +554,18 @@ TEST(Editor, F5ReloadsIncludesFromDisk) {
     ASSERT_TRUE(waitFor([&] { return applied; }));
     long large = foreground(frameOf(window), kBackground);
     EXPECT_GT(large, 3 * small) << "F5 re-reads the included file";
+}
+
+TEST(DatasetBrowser, ListsTheDatasetAndOpensAnEntry) {
+    app::MainWindow window;
+    window.show();
+    EXPECT_GE(window.datasetBrowser()->count(), 63);
+    bool applied = false;
+    QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
+    ASSERT_TRUE(window.datasetBrowser()->activate("menger sponge"));
+    EXPECT_TRUE(window.document()->path().endsWith("Fractal/MengerSponge.glsl"));
+    ASSERT_TRUE(waitFor([&] { return applied; }));
+    EXPECT_FALSE(window.datasetBrowser()->activate("no such shape"));
 }
 
 int main(int argc, char** argv) {
