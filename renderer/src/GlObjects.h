@@ -5,7 +5,11 @@
 
 #include <epoxy/gl.h>
 
+#include <shaders/Diagnostic.h>
+#include <shaders/ShaderComposer.h>
+
 #include <utility>
+#include <vector>
 
 namespace sdfwb::renderer {
 
@@ -47,5 +51,15 @@ using GlFramebuffer = GlName<deleteFramebuffer>;
 using GlRenderbuffer = GlName<deleteRenderbuffer>;
 using GlTexture = GlName<deleteTexture>;
 using GlBuffer = GlName<deleteBuffer>;
+
+// A compiled shader stage and what the driver said about it, mapped to the user's files.
+struct CompiledShader {
+    GlShader shader;
+    std::vector<shaders::Diagnostic> diagnostics;
+};
+
+// Compiles one composed stage (a current context is needed). Failure shows as errors in
+// `diagnostics`, never as a silent empty shader.
+CompiledShader compileShader(GLenum type, const shaders::ComposedShader& composed);
 
 } // namespace sdfwb::renderer

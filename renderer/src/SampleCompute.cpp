@@ -71,26 +71,10 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     shaders::ComposedShader composed = shaders::composeSdfShader(sdf, shaders::Stage::Compute, pieces, {});
 
     auto start = std::chrono::steady_clock::now();
-    GlShader shader(glCreateShader(GL_COMPUTE_SHADER));
-    const char* text = composed.text.c_str();
-    glShaderSource(shader.id(), 1, &text, nullptr);
-    glCompileShader(shader.id());
-    GLint status = 0, logLength = 0;
-    glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &status);
-    glGetShaderiv(shader.id(), GL_INFO_LOG_LENGTH, &logLength);
-    if (logLength > 1) {
-        std::string log(std::size_t(logLength), '\0');
-        glGetShaderInfoLog(shader.id(), logLength, nullptr, log.data());
-        auto parsed = shaders::parseInfoLog(log, composed.map);
-        diagnostics.insert(diagnostics.end(), parsed.begin(), parsed.end());
-        if (!status && !shaders::hasErrors(diagnostics))
-            diagnostics.push_back({composed.map.fileName(0), 0, 0, shaders::Severity::Error, "driver: " + log});
-    }
-    if (!status) {
-        if (!shaders::hasErrors(diagnostics))
-            diagnostics.push_back({composed.map.fileName(0), 0, 0, shaders::Severity::Error, "driver rejected the compute shader"});
-        return diagnostics;
-    }
+    CompiledShader compiled = compileShader(GL_COMPUTE_SHADER, composed);
+    diagnostics.insert(diagnostics.end(), compiled.diagnostics.begin(), compiled.diagnostics.end());
+    if (shaders::hasErrors(diagnostics)) return diagnostics;
+    GlShader& shader = compiled.shader;
     GlProgram program(glCreateProgram());
     glAttachShader(program.id(), shader.id());
     glLinkProgram(program.id());

@@ -27,33 +27,6 @@ using shaders::Diagnostic;
 
 constexpr std::size_t kMaxCachedVariants = 16;
 
-struct CompiledShader {
-    GlShader shader;
-    std::vector<Diagnostic> diagnostics;
-};
-
-CompiledShader compileShader(GLenum type, const shaders::ComposedShader& composed) {
-    CompiledShader result;
-    result.shader = GlShader(glCreateShader(type));
-    const char* text = composed.text.c_str();
-    glShaderSource(result.shader.id(), 1, &text, nullptr);
-    glCompileShader(result.shader.id());
-    GLint status = 0, logLength = 0;
-    glGetShaderiv(result.shader.id(), GL_COMPILE_STATUS, &status);
-    glGetShaderiv(result.shader.id(), GL_INFO_LOG_LENGTH, &logLength);
-    if (logLength > 1) {
-        std::string log(std::size_t(logLength), '\0');
-        glGetShaderInfoLog(result.shader.id(), logLength, nullptr, log.data());
-        result.diagnostics = shaders::parseInfoLog(log, composed.map);
-        if (!status && !shaders::hasErrors(result.diagnostics))
-            result.diagnostics.push_back({composed.map.fileName(0), 0, 0, shaders::Severity::Error, "driver: " + log});
-    } else if (!status) {
-        result.diagnostics.push_back({composed.map.fileName(0), 0, 0, shaders::Severity::Error,
-                                      std::string("driver rejected the ") + shaders::stageName(composed.stage) + " shader without a message"});
-    }
-    return result;
-}
-
 } // namespace
 
 struct Variant {
