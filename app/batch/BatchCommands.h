@@ -79,6 +79,16 @@ int runAudit(const AuditCommand& command, const OutputOptions& output);
 int runMerge(const std::string& outputFile, const std::string& format, const std::vector<std::string>& parts, const OutputOptions& output);
 int runList(const OutputOptions& output);
 
+struct BenchCommand {
+    std::string outputDirectory = "docs/benchmarks";  // benchmarks.md, CSV tables, images/
+    int repeats = 5;
+    bool quick = false;
+    bool noPlots = false;
+};
+
+// Error against run time for the tracer, the samplers, gradients and the audit (bench/Benchmarks.h).
+int runBench(const BenchCommand& command, const OutputOptions& output);
+
 // Prints "sdfwb: <message>" to stderr.
 void printError(const std::string& message);
 

@@ -37,6 +37,7 @@ const char* const kOverview =
     "  merge    join --shard outputs into the file one run would have written\n"
     "  audit    analyse the field: exact, conservative, non-conservative, truncated, discontinuous, nan\n"
     "  list     list the dataset (name, category, declared type, animated)\n"
+    "  bench    measure error against run time (tracer, samplers, gradients, audit) into a report\n"
     "\n"
     "<SDF> arguments take a dataset name (any case) or a path to a .glsl file. <Pattern> takes a\n"
     "built-in pattern (grid, image, jitter, rand, surface, near, metropolis, metropolis_curvature),\n"
@@ -265,6 +266,23 @@ int runAuditCommand(const Arguments& arguments) {
     return runAudit(command, output);
 }
 
+int runBenchCommand(const Arguments& arguments) {
+    CLI::App app("Measure error against run time (sphere tracer, surface/near samplers, gradients, audit) on this "
+                 "machine and write a report: benchmarks.md, CSV tables and plots.",
+                 "sdfwb --batch bench");
+    BenchCommand command;
+    OutputOptions output;
+    app.add_option("--output,-o", command.outputDirectory, "report folder (benchmarks.md, *.csv, images/*.png)")->capture_default_str();
+    app.add_option("--repeats", command.repeats, "timed repeats per configuration (the spread comes from these)")
+        ->capture_default_str()->check(CLI::Range(1, 100));
+    app.add_flag("--quick", command.quick, "fewer and smaller configurations (a smoke run, not for the report)");
+    app.add_flag("--no-plots", command.noPlots, "write the CSV tables and benchmarks.md without running the plotting script");
+    addOutputFlags(app, output);
+    if (auto exit = parse(app, "--batch bench", arguments)) return *exit;
+    if (output.quiet || output.json) log::setMinimumLevel(log::Level::Warning);
+    return runBench(command, output);
+}
+
 int runBatchCommand(const std::string& command, const Arguments& arguments);
 
 // Splits a job-file line into words: whitespace separates, '...' and "..." quote, \ escapes,
@@ -315,7 +333,7 @@ int runJobFile(const std::string& path) {
     std::vector<std::pair<int, Arguments>> steps;
     std::string line;
     int lineNumber = 0;
-    const std::vector<std::string> commands = {"render", "animate", "sample", "merge", "audit", "list"};
+    const std::vector<std::string> commands = {"render", "animate", "sample", "merge", "audit", "list", "bench"};
     while (std::getline(file, line)) {
         ++lineNumber;
         std::string error;
@@ -326,7 +344,7 @@ int runJobFile(const std::string& path) {
         }
         if (words->empty()) continue;
         if (std::find(commands.begin(), commands.end(), words->front()) == commands.end()) {
-            printError(path + ":" + std::to_string(lineNumber) + ": unknown command '" + words->front() + "' (render, animate, sample, merge, audit, list)");
+            printError(path + ":" + std::to_string(lineNumber) + ": unknown command '" + words->front() + "' (render, animate, sample, merge, audit, list, bench)");
             return kExitUsage;
         }
         steps.emplace_back(lineNumber, std::move(*words));
@@ -353,7 +371,8 @@ int runBatchCommand(const std::string& command, const Arguments& arguments) {
     if (command == "merge") return runMergeCommand(arguments);
     if (command == "audit") return runAuditCommand(arguments);
     if (command == "list") return runListCommand(arguments);
-    printError("--batch: unknown command '" + command + "' (render, animate, sample, merge, audit, list, or a job file); see sdfwb --help");
+    if (command == "bench") return runBenchCommand(arguments);
+    printError("--batch: unknown command '" + command + "' (render, animate, sample, merge, audit, list, bench, or a job file); see sdfwb --help");
     return kExitUsage;
 }
 
@@ -365,11 +384,11 @@ std::optional<int> runCommandLine(int argc, char** argv) {
     if (first == "--help" || first == "-h") { std::printf("%s", kOverview); return kExitOk; }
     if (first == "--version") { std::printf("sdfwb %s\n", SDFWB_VERSION); return kExitOk; }
     if (first == "--batch") {
-        if (argc < 3) { printError("--batch: missing command (render, animate, sample, merge, audit, list) or job file; see sdfwb --help"); return kExitUsage; }
+        if (argc < 3) { printError("--batch: missing command (render, animate, sample, merge, audit, list, bench) or job file; see sdfwb --help"); return kExitUsage; }
         const std::string command = argv[2];
         if (command == "--help" || command == "-h") { std::printf("%s", kOverview); return kExitOk; }
         Arguments arguments(argv + 3, argv + argc);
-        const std::vector<std::string> commands = {"render", "animate", "sample", "merge", "audit", "list"};
+        const std::vector<std::string> commands = {"render", "animate", "sample", "merge", "audit", "list", "bench"};
         std::error_code ec;
         if (std::find(commands.begin(), commands.end(), command) == commands.end() && std::filesystem::is_regular_file(command, ec)) {
             if (!arguments.empty()) { printError("--batch " + command + ": a job file takes no further arguments"); return kExitUsage; }
