@@ -458,7 +458,8 @@ int runAudit(const AuditCommand& command, const OutputOptions& output) {
                                {"eikonal_error_mean", r.eikonalMean}, {"eikonal_error_p95", r.eikonalP95},
                                {"surface_points", r.surfacePoints}, {"surface_spacing", r.surfaceSpacing},
                                {"exactness_error_p99", r.exactnessP99}, {"exactness_error_max", r.exactnessMax},
-                               {"overestimate_share", r.overestimateShare}, {"samples", r.samples}, {"scales", scales},
+                               {"overestimate_share", r.overestimateShare}, {"surface_gradient", r.surfaceGradient},
+                               {"noise_floor", r.noiseFloor}, {"samples", r.samples}, {"scales", scales},
                                {"convergence", convergence}, {"seconds", r.seconds}};
         std::cout << json.dump(2) << "\n";
     } else if (!output.quiet) {
@@ -474,6 +475,8 @@ int runAudit(const AuditCommand& command, const OutputOptions& output) {
                     r.exactnessP99, r.exactnessMax, r.surfaceSpacing);
         std::printf("                       (%llu surface points, k-d tree); %.3g %% of points overestimate it\n",
                     (unsigned long long)r.surfacePoints, 100.0 * r.overestimateShare);
+        std::printf("  |grad f| at surface  %.3g (median; 1 for a distance, ~0 when the gradient vanishes there)\n", r.surfaceGradient);
+        std::printf("  precision floor      %.2g (rounding noise in f; float32 spacing at |p| = 1 is 1.2e-07)\n", r.noiseFloor);
         std::printf("\n  difference quotients |Df|      p50      p99    p99.9      max\n");
         for (const auto& q : r.scales)
             std::printf("    at scale %-8.2g        %8.4f %8.4f %8.4f %8.4f\n", q.step, q.p50, q.p99, q.p999, q.max);

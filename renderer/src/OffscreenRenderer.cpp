@@ -85,7 +85,7 @@ std::vector<OffscreenRenderer::PixelStats> OffscreenRenderer::renderStats(SdfRen
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             const float* p = raw.data() + (std::size_t(height - 1 - y) * std::size_t(width) + std::size_t(x)) * 4;
-            out[std::size_t(y) * std::size_t(width) + std::size_t(x)] = {p[0], p[1], p[2]};
+            out[std::size_t(y) * std::size_t(width) + std::size_t(x)] = {p[0], p[1], p[2], p[3]};
         }
     return out;
 }

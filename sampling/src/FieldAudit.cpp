@@ -79,6 +79,58 @@ struct Scales {
     static constexpr float kSteps[3] = {1e-2f, 1e-3f, 1e-4f};
 };
 
+// Rounding noise in f: along short straight runs of 16 points (spacing 1e-3, 0.015 long) a
+// smooth field is a quadratic up to terms far below float32 noise; the residual of a least-squares
+// quadratic is the noise. For uniform rounding with step q the residual's RMS is q / sqrt(12), so
+// the floor reported is sqrt(12) x RMS: the rounding step of the values, median over the runs
+// (runs that cross a crease or an edge are the minority and do not move the median).
+Expected<float> measureNoiseFloor(const shaders::PreparedSdf& sdf, const AuditOptions& options, std::uint64_t samples) {
+    constexpr int kRun = 16;
+    constexpr float kSpacing = 1e-3f;
+    Runner runner;
+    if (auto ok = runner.build(sdf, "analysis/noise_lines.glsl"); !ok) return ok.error();
+    SamplingJob job;
+    const std::uint64_t runs = std::clamp<std::uint64_t>(samples / 16, 64, 8192);
+    job.count = runs * kRun;
+    job.seed = options.seed + 2;
+    job.time = options.time;
+    job.parameters[0] = kSpacing;
+    auto rows = runner.run(job);
+    if (!rows) return rows.error();
+    // Least squares on x = -7.5 .. 7.5 (symmetric, so the linear term decouples): fit the
+    // constant + quadratic by their 2x2 normal equations, the slope on its own.
+    double sx2 = 0, sx4 = 0;
+    for (int k = 0; k < kRun; ++k) {
+        double x = k - (kRun - 1) / 2.0;
+        sx2 += x * x;
+        sx4 += x * x * x * x;
+    }
+    std::vector<float> floors;
+    for (std::uint64_t r = 0; r < runs; ++r) {
+        const float* f = rows->distances.data() + r * kRun;
+        bool finite = true;
+        double s0 = 0, s1 = 0, s2 = 0;
+        for (int k = 0; k < kRun; ++k) {
+            finite = finite && std::isfinite(f[k]);
+            double x = k - (kRun - 1) / 2.0;
+            s0 += f[k];
+            s1 += x * f[k];
+            s2 += x * x * f[k];
+        }
+        if (!finite) continue;
+        const double det = kRun * sx4 - sx2 * sx2;
+        const double a = (s0 * sx4 - s2 * sx2) / det, c = (kRun * s2 - sx2 * s0) / det, b = s1 / sx2;
+        double residual = 0;
+        for (int k = 0; k < kRun; ++k) {
+            double x = k - (kRun - 1) / 2.0;
+            double e = f[k] - (a + b * x + c * x * x);
+            residual += e * e;
+        }
+        floors.push_back(float(std::sqrt(12.0 * residual / (kRun - 3))));
+    }
+    return floors.empty() ? 0.0f : percentile(floors, 0.5);
+}
+
 // The audit at one sample count (no convergence runs).
 Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOptions& options, const ProgressSink& progress) {
     auto start = std::chrono::steady_clock::now();
@@ -114,6 +166,9 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
     auto surface = surfaceRunner.run(job);
     if (!surface) return surface.error();
     progress(std::uint64_t(++step), totalSteps);
+    auto noise = measureNoiseFloor(sdf, options, n);
+    if (!noise) return noise.error();
+    report.noiseFloor = *noise;
 
     // NaN / Inf: over random points, at the middle scale.
     std::uint64_t bad = 0;
@@ -197,6 +252,12 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
         if (finiteRow(*surface, i))
             for (int c = 0; c < 3; ++c) surfacePoints.push_back(surface->positions[3 * i + std::size_t(c)]);
     report.surfacePoints = surfacePoints.size() / 3;
+    {
+        std::vector<float> lengths;
+        for (std::size_t i = 0; i < surface->size(); ++i)
+            if (finiteRow(*surface, i)) lengths.push_back(gradientLength(*surface, i));
+        report.surfaceGradient = lengths.empty() ? 0.0f : percentile(lengths, 0.5);
+    }
     std::vector<float> errors;
     std::uint64_t over = 0;
     if (report.surfacePoints >= 16) {
@@ -239,6 +300,14 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
     const bool jumpGrowth = report.scales[3].max > 2.0f && report.scales[3].max > 3.0f * report.scales[1].max &&
                             report.scales[2].max > 1.5f * report.scales[1].max;
 
+    float minimum = INFINITY, maximum = -INFINITY;
+    for (std::size_t i = 0; i < n; ++i)
+        if (std::isfinite(random[1].distances[i])) {
+            minimum = std::min(minimum, random[1].distances[i]);
+            maximum = std::max(maximum, random[1].distances[i]);
+        }
+    const bool hasSignChange = minimum <= 0.0f && maximum >= 0.0f;
+
     // The verdict, most serious first.
     // The nearest surface sample overestimates the true distance by up to about the sample spacing.
     const float exactTolerance = 3.0f * report.surfaceSpacing + 2e-3f;
@@ -252,6 +321,10 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
                       "difference quotients grow as the step shrinks (largest %.3g at scale 0.02, %.3g at 0.002, %.3g at 0.0002; %llu points)",
                       double(report.scales[1].max), double(report.scales[2].max), double(report.scales[3].max),
                       (unsigned long long)report.discontinuities);
+    } else if (report.surfacePoints == 0 && !hasSignChange) {
+        report.verdict = "no-surface";
+        std::snprintf(text, sizeof text, "f never changes sign (%.4g to %.4g over %llu points) and no ray finds a surface", double(minimum),
+                      double(maximum), (unsigned long long)n);
     } else if (report.truncationDistance) {
         report.verdict = "truncated";
         std::snprintf(text, sizeof text, "the field stops growing at about %.4g (|grad f| < 0.02 there)", double(*report.truncationDistance));
@@ -273,6 +346,21 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
                       double(report.exactnessP99), double(report.exactnessMax), double(exactTolerance), double(2.0f * exactTolerance));
     }
     report.reason = text;
+    // Warnings that go with any verdict.
+    if (report.surfacePoints >= 16 && report.surfaceGradient < 0.1f) {
+        std::snprintf(text, sizeof text,
+                      "; |grad f| vanishes at the surface (median %.2g): hits and surface samples with a small |f| can still lie "
+                      "|f| / |grad f| away from it",
+                      double(report.surfaceGradient));
+        report.reason += text;
+    }
+    if (report.noiseFloor > 1e-5f) {
+        std::snprintf(text, sizeof text,
+                      "; float32 precision floor: f carries rounding noise of %.2g (large coordinates in the SDF's arithmetic), "
+                      "so features, hit tolerances and sample distances below that are noise",
+                      double(report.noiseFloor));
+        report.reason += text;
+    }
     report.seconds = secondsSince(start);
     return report;
 }

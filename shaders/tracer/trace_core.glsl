@@ -40,11 +40,18 @@ float sceneMap(vec3 p) { return max(map(p), dot(p, u_clipNormal) - u_clipOffset)
 float sceneMap(vec3 p) { return map(p); }
 #endif
 
+// Why a ray ended: a hit, or one of three honest kinds of miss.
+const int kRayHit = 0;
+const int kRayLeftBox = 1;    // passed the far side of the box (or the far plane): nothing there
+const int kRayOutOfSteps = 2; // the step budget ran out before |f| fell below the tolerance
+const int kRayNotFinite = 3;  // f was NaN or Inf along the ray
+
 struct Hit {
     bool found;
     float t;        // distance along the ray
     int steps;      // steps taken (the budget when it ran out)
     vec3 position;
+    int status;     // kRayHit, kRayLeftBox, kRayOutOfSteps or kRayNotFinite
 };
 
 // Ray against the axis-aligned box [-b, b]^3; returns (tNear, tFar), tNear > tFar when missed.
@@ -67,11 +74,16 @@ vec3 primaryRay(vec2 fragment) {
 }
 
 Hit traceRay(vec3 origin, vec3 direction) {
-    Hit hit = Hit(false, 0.0, 0, origin);
+    Hit hit = Hit(false, 0.0, 0, origin, kRayLeftBox);
     vec2 span = intersectBox(origin, direction, 1.0 + u_boxMargin);
-    float t = max(span.x, u_nearPlane);
+    float tStart = max(span.x, u_nearPlane);
     float tEnd = min(span.y, u_farPlane);
-    if (t > tEnd) return hit;
+    if (tStart > tEnd) return hit;
+    // March from the box entry point: far from the origin (a camera at 1e4) the ray parameter t
+    // is ~1e4 and float32 cannot add steps below ~1e-3 to it; s counts from the entry instead.
+    vec3 entry = origin + tStart * direction;
+    float s = 0.0;
+    float sEnd = tEnd - tStart;
     float footprint = u_epsilonScale * pixelAngle();
 #ifdef SDFWB_OVERRELAX
     // Over-relaxed sphere tracing: step omega * d while consecutive unbounding spheres overlap;
@@ -80,36 +92,46 @@ Hit traceRay(vec3 origin, vec3 direction) {
     float previousRadius = 0.0;
     float stepLength = 0.0;
 #endif
+    hit.status = kRayOutOfSteps;
     for (int step = 0; step < u_maxSteps; ++step) {
         hit.steps = step + 1;
-        float d = sceneMap(origin + t * direction) * u_stepFactor;
-        if (isnan(d) || isinf(d)) break;
+        float d = sceneMap(entry + s * direction) * u_stepFactor;
+        if (isnan(d) || isinf(d)) { hit.status = kRayNotFinite; break; }
         float radius = abs(d);
 #ifdef SDFWB_OVERRELAX
         // Fall back when the spheres do not overlap, or when the step crossed the surface (d < 0).
         if (omega > 1.0 && (radius + previousRadius < stepLength || d < 0.0)) {
-            t -= stepLength - stepLength / omega;  // undo the relaxed part of the last step
+            s -= stepLength - stepLength / omega;  // undo the relaxed part of the last step
             omega = 1.0;
             previousRadius = 0.0;
             stepLength = 0.0;
             continue;
         }
-        if (radius < footprint * t) { hit.found = true; break; }
+        if (radius < footprint * (tStart + s)) { hit.found = true; break; }
         stepLength = d * omega;
         previousRadius = radius;
-        t += stepLength;
+        s += stepLength;
 #else
-        if (radius < footprint * t) { hit.found = true; break; }
-        t += d;
+        if (radius < footprint * (tStart + s)) { hit.found = true; break; }
+        s += d;
 #endif
-        if (t > tEnd) break;
+        if (s > sEnd) { hit.status = kRayLeftBox; break; }
     }
     if (hit.found) {
-        // Refine: two more plain steps shrink |f| well below the footprint for exact fields.
-        for (int k = 0; k < 2; ++k) t += sceneMap(origin + t * direction) * u_stepFactor;
+        hit.status = kRayHit;
+        // Refine: up to two more plain steps shrink |f| well below the footprint for exact
+        // fields. A step is kept only when |f| shrinks: for a field steeper than the step factor
+        // assumes (or a broken one) the step would overshoot, and the hit stays where it was.
+        float d = sceneMap(entry + s * direction) * u_stepFactor;
+        for (int k = 0; k < 2; ++k) {
+            float next = sceneMap(entry + (s + d) * direction) * u_stepFactor;
+            if (!(abs(next) < abs(d))) break;
+            s += d;
+            d = next;
+        }
     }
-    hit.t = t;
-    hit.position = origin + t * direction;
+    hit.t = tStart + s;
+    hit.position = entry + s * direction;
     return hit;
 }
 
@@ -121,8 +143,17 @@ vec3 gradientAt(vec3 p, float h) {
 }
 
 // Normal with a step matched to the hit distance (a pixel's footprint), never below float noise.
+// A feature thinner than the step (a paper-thin shell, a blade) would let the taps straddle it:
+// their differences cancel and the gradient points anywhere. A probe 2h further along the ray
+// tells: inside a solid at least that thick f is negative there; if it is not, the step shrinks
+// eightfold (at most five times, to 1/32768 of the footprint, never below the float floor).
 vec3 normalAt(vec3 p, float t, vec3 direction) {
-    float h = max(pixelAngle() * t, 1e-5 * max(1.0, length(p)));
+    float floorStep = 1e-5 * max(1.0, length(p));
+    float h = max(pixelAngle() * t, floorStep);
+    for (int k = 0; k < 5 && h > floorStep; ++k) {
+        if (sceneMap(p + 2.0 * h * direction) < 0.0) break;
+        h = max(h * 0.125, floorStep);
+    }
     vec3 gradient = gradientAt(p, h);
     float length2 = dot(gradient, gradient);
     return length2 > 0.0 && !isinf(length2) ? gradient * inversesqrt(length2) : -direction;

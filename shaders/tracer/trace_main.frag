@@ -7,8 +7,15 @@ void main() {
     vec3 direction = primaryRay(gl_FragCoord.xy);
     Hit hit = traceRay(u_cameraPosition, direction);
 #ifdef SDFWB_OUTPUT_STATS
-    // Measurement output (float target): steps, hit distance (-1 for a miss), |f| at the hit.
-    o_color = vec4(float(hit.steps), hit.found ? hit.t : -1.0, hit.found ? abs(map(hit.position)) : 0.0, 1.0);
+    // Measurement output (float target): steps; the hit distance, or for a miss minus its kind
+    // (-1 left the box, -2 out of steps, -3 NaN/Inf); |f| at the hit; the length of the shading
+    // normal (1 unless it went NaN).
+    if (hit.found) {
+        vec3 normal = normalAt(hit.position, hit.t, direction);
+        o_color = vec4(float(hit.steps), hit.t, abs(map(hit.position)), length(normal));
+    } else {
+        o_color = vec4(float(hit.steps), -float(hit.status), 0.0, 0.0);
+    }
     return;
 #endif
 #ifdef SDFWB_SHADING_STEPS

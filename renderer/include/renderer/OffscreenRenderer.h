@@ -24,9 +24,14 @@ public:
                  float scale = 1.0f);
 
     // Per-pixel tracing statistics (the renderer's shading must have statsOutput on): for each
-    // pixel, top row first, {steps, hit distance t or -1 for a miss, |f| at the hit}.
+    // pixel, top row first, {steps, hit distance t, |f| at the hit, length of the shading normal}.
+    // A miss has t < 0 telling why: kLeftBox, kOutOfSteps or kNotFinite.
     struct PixelStats {
-        float steps, t, residual;
+        float steps, t, residual, normalLength;
+        static constexpr float kLeftBox = -1.0f;     // passed through the box: nothing there
+        static constexpr float kOutOfSteps = -2.0f;  // the step budget ran out
+        static constexpr float kNotFinite = -3.0f;   // f was NaN or Inf along the ray
+        bool hit() const { return t >= 0.0f; }
     };
     std::vector<PixelStats> renderStats(SdfRenderer& renderer, int width, int height, const Camera& camera, float time,
                                         FrameStats* stats = nullptr);

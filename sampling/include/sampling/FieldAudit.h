@@ -59,7 +59,7 @@ struct ConvergencePoint {
 };
 
 struct AuditReport {
-    std::string verdict;              // exact | conservative | non-conservative | truncated | discontinuous | nan
+    std::string verdict;              // exact | conservative | non-conservative | truncated | discontinuous | nan | no-surface
     std::string reason;               // one sentence: why this verdict
     float lipschitz = 0.0f;           // estimate: 99.9th percentile of |grad f| over all scales but the largest
     float lipschitzMax = 0.0f;        // the largest quotient seen (an outlier-prone upper estimate)
@@ -78,6 +78,11 @@ struct AuditReport {
     float exactnessP99 = 0.0f;        // 99th percentile of | |f| - true distance |
     float exactnessMax = 0.0f;
     double overestimateShare = 0.0;   // points where |f| exceeds the true distance beyond tolerance
+    float surfaceGradient = 0.0f;     // median |grad f| at the surface points (1 for a distance;
+                                      // near 0 when the gradient vanishes there, as for f = d^3)
+    float noiseFloor = 0.0f;          // the precision floor: rounding noise in f itself (median over
+                                      // short straight runs of what a quadratic cannot fit, times
+                                      // sqrt 12: the size of a float32 rounding step of the values)
     std::vector<QuotientScale> scales;
     std::vector<ConvergencePoint> convergence;
     std::uint64_t samples = 0;
