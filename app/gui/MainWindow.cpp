@@ -156,10 +156,15 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_frameTime = new QLabel(this);
     m_diagnosticSummary = new QLabel(this);
     statusBar()->addWidget(m_diagnosticSummary, 1);
+    m_precision = new QLabel(this);
+    m_precision->setObjectName("precision");
+    statusBar()->addPermanentWidget(m_precision);
     statusBar()->addPermanentWidget(m_frameTime);
+    connect(m_viewport, &widgets::ViewportWidget::cameraChanged, this, &MainWindow::updatePrecision);
     connect(m_viewport, &widgets::ViewportWidget::frameRendered, this, [this](double milliseconds, float scale) {
         m_frameTime->setText(scale < 1.0f ? tr("frame %1 ms at %2 % resolution (moving)").arg(milliseconds, 0, 'f', 1).arg(int(scale * 100.0f))
                                           : tr("frame %1 ms").arg(milliseconds, 0, 'f', 1));
+        updatePrecision();
     });
 
     createMenus();
@@ -169,6 +174,21 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 }
 
 MainWindow::~MainWindow() = default;
+
+void MainWindow::updatePrecision() {
+    const auto floor = renderer::precisionFloor(m_viewport->camera(), m_viewport->trace().epsilonScale, std::max(m_viewport->height(), 1));
+    if (floor.exceeded) {
+        m_precision->setText(tr("<span style='color:#e04040'>below float32 precision: positions known to %1, hit tolerance %2 "
+                                "(surface noise; bring the camera nearer the origin)</span>")
+                                 .arg(double(floor.positionFloor), 0, 'g', 2)
+                                 .arg(double(floor.hitTolerance), 0, 'g', 2));
+    } else {
+        m_precision->setText(tr("float32 floor %1 / hit tolerance %2").arg(double(floor.positionFloor), 0, 'g', 2).arg(double(floor.hitTolerance), 0, 'g', 2));
+    }
+    m_precision->setToolTip(tr("Float32 spacing of positions at this camera distance, against the sphere tracer's hit tolerance "
+                               "(half a pixel's footprint at the target). When the first reaches half the second, the surface "
+                               "shows rounding noise. The audit (sdfwb --batch audit) measures the noise in the SDF's own values."));
+}
 
 QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWidget* widget, Qt::DockWidgetArea area) {
     auto* dock = new QDockWidget(title, this);

@@ -66,6 +66,7 @@ private:
     void restoreSession();
     void saveSession();
     void updateTitle();
+    void updatePrecision();
     void updateOverlay();
     void updateRecentMenu();
     void saveAsWithDialog();
@@ -90,6 +91,7 @@ private:
     QDockWidget* m_cameraDock = nullptr;
     QDockWidget* m_timeDock = nullptr;
     QLabel* m_frameTime = nullptr;
+    QLabel* m_precision = nullptr;  // float32 floor against the hit tolerance of the current view
     QLabel* m_diagnosticSummary = nullptr;
     QActionGroup* m_shadingGroup = nullptr;
     QAction* m_aoAction = nullptr;

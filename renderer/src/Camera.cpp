@@ -8,6 +8,16 @@
 
 namespace sdfwb::renderer {
 
+PrecisionFloor precisionFloor(const Camera& camera, float epsilonScale, int heightPixels) {
+    PrecisionFloor floor;
+    const float magnitude = std::max({std::abs(camera.position.x), std::abs(camera.position.y), std::abs(camera.position.z), 1.0f});
+    floor.positionFloor = std::ldexp(magnitude, -23);
+    const float pixelAngle = 2.0f * std::tan(glm::radians(camera.fovYDegrees) / 2.0f) / float(std::max(heightPixels, 1));
+    floor.hitTolerance = epsilonScale * pixelAngle * glm::length(camera.target - camera.position);
+    floor.exceeded = floor.positionFloor > 0.5f * floor.hitTolerance;
+    return floor;
+}
+
 CameraBasis cameraBasis(const Camera& camera) {
     glm::vec3 forward = camera.target - camera.position;
     float length = glm::length(forward);

@@ -288,6 +288,26 @@ TEST(Viewport, CameraPanelMovesTheCameraAndTheSessionKeepsIt) {
     again.close();
 }
 
+TEST(Viewport, StatusBarShowsTheFloat32PrecisionFloor) {
+    app::MainWindow window;
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "Geometry/Sphere.glsl"));
+    auto* label = window.findChild<QLabel*>("precision");
+    ASSERT_NE(label, nullptr);
+    window.viewport()->resetCamera();
+    EXPECT_TRUE(label->text().startsWith("float32 floor")) << label->text().toStdString();
+    // 1e4 away with a 0.001 degree lens: positions are known to ~1e-3, far coarser than a pixel.
+    renderer::Camera far;
+    far.position = {0.0f, 0.0f, 1e4f};
+    far.fovYDegrees = 0.001f;
+    far.farPlane = 2e4f;
+    window.viewport()->setCamera(far);  // the next frame updates the readout
+    EXPECT_TRUE(waitFor([&] { return label->text().contains("below float32 precision"); }, 10000)) << label->text().toStdString();
+    window.viewport()->resetCamera();
+    EXPECT_TRUE(waitFor([&] { return !label->text().contains("below"); }, 10000)) << label->text().toStdString();
+    window.close();
+}
+
 TEST(Viewport, TimeScrubsAnimatedSdfs) {
     QString path = QDir::temp().filePath("sdfwb-gui-pulse.glsl");
     QFile file(path);

@@ -18,6 +18,17 @@ struct CameraBasis {
     glm::vec3 right, up, forward;  // orthonormal, right-handed (forward = -Z in view space)
 };
 
+// What float32 can resolve in a view. The tracer computes points as (box entry) + s * direction,
+// and the entry is rounded at the camera's distance from the origin: positions are known to about
+// positionFloor. Hits count within hitTolerance (epsilonScale x a pixel's footprint at the target).
+// When the floor reaches half the tolerance the surface shows rounding noise, not geometry.
+struct PrecisionFloor {
+    float positionFloor = 0.0f;  // float32 spacing at max(|camera|, 1): 2^-23 of it
+    float hitTolerance = 0.0f;   // at the target distance, for a viewport `heightPixels` tall
+    bool exceeded = false;       // positionFloor > hitTolerance / 2
+};
+PrecisionFloor precisionFloor(const Camera& camera, float epsilonScale, int heightPixels);
+
 // Fails only when position == target or forward is parallel to up; then a fixed basis is used.
 CameraBasis cameraBasis(const Camera& camera);
 
