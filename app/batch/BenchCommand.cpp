@@ -1,11 +1,77 @@
-// `sdfwb --batch bench`: runs the measurements of bench/ (sdfwb::bench) and writes the report.
+// `sdfwb --batch bench`: runs the measurements of bench/ (sdfwb::bench) and writes the report,
+// then draws the plots with bench/plot_benchmarks.py (matplotlib), started without a shell.
 #include "BatchCommands.h"
 
-namespace sdfwb::app {
+#include <Benchmarks.h>
+#include <core/Log.h>
+#include <core/Paths.h>
+#include <renderer/GlInfo.h>
+#include <renderer/HeadlessContext.h>
 
-int runBench(const BenchCommand&, const OutputOptions&) {
-    printError("--batch bench: not built yet");
-    return kExitFailure;
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+extern char** environ;
+
+namespace sdfwb::app {
+namespace {
+
+// Runs argv[0] (looked up on PATH) with the arguments; returns its exit status, -1 if it could not start.
+int runProgram(const std::vector<std::string>& arguments) {
+    std::vector<char*> argv;
+    for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    if (posix_spawnp(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return -1;
+    int status = 0;
+    if (waitpid(pid, &status, 0) < 0) return -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+} // namespace
+
+int runBench(const BenchCommand& command, const OutputOptions& output) {
+    auto context = renderer::HeadlessContext::create();
+    if (!context) {
+        printError(context.error().message);
+        return kExitNoGl;
+    }
+    bench::BenchOptions options;
+    options.outputDirectory = command.outputDirectory;
+    options.repeats = command.repeats;
+    options.quick = command.quick;
+    options.glDescription = renderer::describe(context.value()->info());
+    options.commandLine = "sdfwb --batch bench" + std::string(command.quick ? " --quick" : "") + " --repeats " + std::to_string(command.repeats);
+    const char* names[] = {"sphere tracer", "samplers", "gradients", "audit"};
+    if (!output.quiet) std::fprintf(stderr, "bench: %s ...\n", names[0]);
+    auto files = bench::runBenchmarks(options, ProgressSink{[&](std::uint64_t done, std::uint64_t total) {
+                                                                if (output.progressLines) std::fprintf(stderr, "progress %llu %llu\n", (unsigned long long)done, (unsigned long long)total);
+                                                                if (!output.quiet && done < total) std::fprintf(stderr, "bench: %s ...\n", names[done]);
+                                                            },
+                                                            nullptr});
+    if (!files) {
+        printError(files.error().message);
+        return kExitFailure;
+    }
+    if (!command.noPlots) {
+        const std::filesystem::path script = paths::dataRoot() / "bench" / "plot_benchmarks.py";
+        // Debian's interpreter has matplotlib; a pyenv one first on PATH may not.
+        const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+        int status = runProgram({python, script.string(), files->csvDirectory.string(), files->imageDirectory.string()});
+        if (status != 0) {
+            printError("bench: the plots were not made ('" + python + " " + script.string() + "' " +
+                       (status < 0 ? std::string("could not start") : "exited with " + std::to_string(status)) +
+                       "; it needs python3-matplotlib); the tables are in " + files->markdown.string());
+            return kExitFailure;
+        }
+    }
+    if (!output.quiet) std::printf("wrote %s (tables in %s, plots in %s)\n", files->markdown.c_str(), files->csvDirectory.c_str(), files->imageDirectory.c_str());
+    return kExitOk;
 }
 
 } // namespace sdfwb::app

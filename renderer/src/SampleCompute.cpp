@@ -127,6 +127,8 @@ Expected<void> SampleCompute::run(const SampleUniforms& uniforms, std::uint32_t 
     if (GLint location = m_impl->location("u_time"); location >= 0) glUniform1f(location, uniforms.time);
     if (GLint location = m_impl->location("g3d_SceneTime"); location >= 0) glUniform1f(location, uniforms.time);
     if (GLint location = m_impl->location("u_parameters"); location >= 0) glUniform4fv(location, 4, uniforms.parameters);
+    if (GLint location = m_impl->location("u_surfaceTolerance"); location >= 0) glUniform1f(location, uniforms.surfaceTolerance);
+    if (GLint location = m_impl->location("u_tetrahedralGradient"); location >= 0) glUniform1i(location, uniforms.tetrahedralGradient ? 1 : 0);
     glUniform1ui(m_impl->location("u_chunkFirst"), first);
     glUniform1ui(m_impl->location("u_chunkCount"), count);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingPositions, m_impl->buffers[0].id());

@@ -204,7 +204,13 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
     for (int s = 0; s < 3; ++s) report.scales.push_back(summarise(2.0f * Scales::kSteps[s], perScale[s]));
     // Estimate from the scales float32 resolves well (the smallest step is noisier and is kept
     // for the discontinuity test).
-    report.lipschitz = std::max({report.scales[0].p999, report.scales[1].p999, report.scales[2].p999});
+    // Rounding noise with steps of q (the precision floor) moves a quotient over `step` by about
+    // q / step, and its tails (the 99.9th percentile; each tap rounds on its own) by up to ~3 q /
+    // step: that much is taken off, so a far-from-the-origin field is judged by its shape, not its
+    // noise. For a field computed near the origin q ~ 1e-7 and nothing changes.
+    auto noiseSlope = [&](std::size_t s) { return 3.0f * report.noiseFloor / report.scales[s].step; };
+    report.lipschitz = std::max({report.scales[0].p999 - noiseSlope(0), report.scales[1].p999 - noiseSlope(1),
+                                 report.scales[2].p999 - noiseSlope(2)});
     report.lipschitzMax = std::max({report.scales[0].max, report.scales[1].max, report.scales[2].max});
     report.lipschitzUncertainty = report.lipschitzMax - report.lipschitz;
     report.safeStepFactor = 1.0f / std::max(report.lipschitz, 1.0f);
@@ -216,7 +222,7 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
             if (!finiteRow((*sets)[0], i) || !finiteRow((*sets)[2], i)) continue;
             ++tested;
             float coarse = gradientLength((*sets)[0], i), fine = gradientLength((*sets)[2], i);
-            if (fine > 3.0f * std::max(coarse, 0.1f) && fine > 2.0f) ++report.discontinuities;
+            if (fine > 3.0f * std::max(coarse, 0.1f) && fine > 2.0f && fine > coarse + noiseSlope(3)) ++report.discontinuities;
         }
     report.discontinuityShare = tested ? double(report.discontinuities) / double(tested) : 0.0;
 
@@ -297,8 +303,8 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
 
     // A jump of height J shows as J / (2h) at step h: the largest quotient grows tenfold per scale.
     // A Lipschitz field's largest quotient stays put (up to float noise at the finest scale).
-    const bool jumpGrowth = report.scales[3].max > 2.0f && report.scales[3].max > 3.0f * report.scales[1].max &&
-                            report.scales[2].max > 1.5f * report.scales[1].max;
+    const bool jumpGrowth = report.scales[3].max > 2.0f && report.scales[3].max - noiseSlope(3) > 3.0f * report.scales[1].max &&
+                            report.scales[2].max - noiseSlope(2) > 1.5f * report.scales[1].max;
 
     float minimum = INFINITY, maximum = -INFINITY;
     for (std::size_t i = 0; i < n; ++i)

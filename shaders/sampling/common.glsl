@@ -10,6 +10,8 @@ uniform float u_gradientStep; // central-difference step of the written gradient
 uniform uint u_cubeSide;      // smallest n with n^3 >= N (computed exactly on the CPU)
 uniform uint u_squareSide;    // smallest n with n^2 >= N
 uniform vec4 u_parameters[4]; // free parameters for samplers driven by the program (plane analysis)
+uniform float u_surfaceTolerance = 1e-5;  // traceRay() hits at |f| below this
+uniform bool u_tetrahedralGradient = false;  // gradientAt(): the tracer's 4-tap scheme (benchmarks)
 #ifdef SDFWB_USES_TIME
 uniform float u_time;
 #endif
@@ -25,6 +27,12 @@ float map(vec3 p) {
 // Raw gradient by 6-tap central differences (not normalised: its length shows the field's
 // Lipschitz behaviour).
 vec3 gradientAt(vec3 p, float h) {
+    if (u_tetrahedralGradient) {
+        // 4 taps at the corners of a tetrahedron, as the sphere tracer's normals use.
+        const vec2 k = vec2(1.0, -1.0);
+        return (k.xyy * map(p + k.xyy * h) + k.yyx * map(p + k.yyx * h) + k.yxy * map(p + k.yxy * h) + k.xxx * map(p + k.xxx * h)) /
+               (4.0 * h);
+    }
     return vec3(map(p + vec3(h, 0.0, 0.0)) - map(p - vec3(h, 0.0, 0.0)),
                 map(p + vec3(0.0, h, 0.0)) - map(p - vec3(0.0, h, 0.0)),
                 map(p + vec3(0.0, 0.0, h)) - map(p - vec3(0.0, 0.0, h))) / (2.0 * h);
@@ -87,7 +95,7 @@ vec3 randomGaussian3(uint index, uint stream) {
 float latticeCoordinate(uint k, uint n) { return n > 1u ? -1.0 + 2.0 * float(k) / float(n - 1u) : 0.0; }
 
 // Sphere-traces from `origin` along unit `direction` through the [-1,1]^3 box (with a margin).
-// On a hit, `hit` is the point with |f| < 1e-5 (refined by a few Newton-like steps).
+// On a hit, `hit` is the point with |f| < u_surfaceTolerance (1e-5 unless set).
 bool traceRay(vec3 origin, vec3 direction, out vec3 hit) {
     const float margin = 0.05;
     vec3 inverse = 1.0 / direction;
@@ -100,7 +108,7 @@ bool traceRay(vec3 origin, vec3 direction, out vec3 hit) {
     for (int step = 0; step < 512 && t <= tEnd; ++step) {
         float d = map(origin + t * direction);
         if (isnan(d) || isinf(d)) return false;
-        if (abs(d) < 1e-5) {
+        if (abs(d) < u_surfaceTolerance) {
             hit = origin + t * direction;
             return true;
         }

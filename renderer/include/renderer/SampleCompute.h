@@ -20,6 +20,8 @@ struct SampleUniforms {
     float time = 0.0f;
     float gradientStep = 1e-3f;     // central-difference step of the written gradient
     float parameters[16] = {};      // u_parameters[4] (vec4s) for program-driven samplers
+    float surfaceTolerance = 1e-5f; // traceRay() (surface, near, metropolis) stops at |f| below this
+    bool tetrahedralGradient = false;  // written gradient by the tracer's 4-tap scheme, not 6-tap central
 };
 
 class SampleCompute {

@@ -25,6 +25,7 @@ struct SamplingJob {
     std::uint32_t chunkSize = 1u << 18;  // samples per dispatch (bounded memory: 28 bytes each)
     float gradientStep = 1e-3f;       // central-difference step of the written gradient
     float parameters[16] = {};        // u_parameters for program-driven samplers (plane analysis)
+    float surfaceTolerance = 1e-5f;   // |f| at which surface/near/metropolis rays stop (accuracy against time)
 
     std::uint64_t firstIndex() const { return count * shardIndex / shardCount; }
     std::uint64_t rows() const { return count * (shardIndex + 1ull) / shardCount - firstIndex(); }
