@@ -161,6 +161,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     statusBar()->addPermanentWidget(m_precision);
     statusBar()->addPermanentWidget(m_frameTime);
     connect(m_viewport, &widgets::ViewportWidget::cameraChanged, this, &MainWindow::updatePrecision);
+    connect(m_viewport, &widgets::ViewportWidget::performanceWarning, this, [this](const QString& message) {
+        log::warning("viewport", message.toStdString());
+        statusBar()->showMessage(message, 20000);
+    });
     connect(m_viewport, &widgets::ViewportWidget::frameRendered, this, [this](double milliseconds, float scale) {
         m_frameTime->setText(scale < 1.0f ? tr("frame %1 ms at %2 % resolution (moving)").arg(milliseconds, 0, 'f', 1).arg(int(scale * 100.0f))
                                           : tr("frame %1 ms").arg(milliseconds, 0, 'f', 1));

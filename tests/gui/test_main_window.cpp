@@ -25,6 +25,7 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QTemporaryDir>
 #include <QProcess>
 
 #include <csignal>
@@ -305,6 +306,51 @@ TEST(Viewport, StatusBarShowsTheFloat32PrecisionFloor) {
     EXPECT_TRUE(waitFor([&] { return label->text().contains("below float32 precision"); }, 10000)) << label->text().toStdString();
     window.viewport()->resetCamera();
     EXPECT_TRUE(waitFor([&] { return !label->text().contains("below"); }, 10000)) << label->text().toStdString();
+    window.close();
+}
+
+// A shader with a long loop (llvmpipe cuts loops near 65 000 iterations, so this one costs
+// ~80 us a pixel: over a minute for a full frame) must not freeze the window.
+const char* const kRunawayLoop =
+    "float sdf(vec3 p) { float d = 0.0; for (int i = 0; i < 100000000; ++i) d += sin(float(i)) * 1e-9; return length(p) - 0.5 + d; }\n";
+
+TEST(Viewport, SlowShaderIsCappedThenRevertedNeverFreezesTheWindow) {
+    QTemporaryDir folder;
+    const QString loop = folder.filePath("loop.glsl");
+    {
+        QFile file(loop);
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+        file.write(kRunawayLoop);
+    }
+    app::MainWindow window;
+    window.resize(900, 650);
+    window.show();
+    QStringList warnings;
+    QObject::connect(window.viewport(), &widgets::ViewportWidget::performanceWarning, [&](const QString& m) { warnings << m; });
+    ASSERT_TRUE(openAndWait(window, "Geometry/Sphere.glsl"));
+    const QImage sphere = frameOf(window);
+
+    // Limit 1.5 s: the probe frame (5 % resolution) predicts a minute-long frame; the cap keeps
+    // every frame near the limit.
+    ASSERT_TRUE(window.openFile(loop));
+    ASSERT_TRUE(waitFor([&] { return !warnings.isEmpty(); }, 60000)) << "no warning for a minute-long frame";
+    EXPECT_TRUE(warnings.back().contains("resolution")) << warnings.back().toStdString();
+    EXPECT_LT(window.viewport()->resolutionCap(), 0.5f);
+    QElapsedTimer timer;
+    timer.start();
+    frameOf(window);
+    EXPECT_LT(timer.elapsed(), 4000) << "a capped frame must stay near the 1.5 s limit";
+
+    // Limit 20 ms: even the probe is too slow, so the last good SDF (the sphere) comes back.
+    ASSERT_TRUE(openAndWait(window, "Geometry/Sphere.glsl"));
+    window.viewport()->setStallLimit(20.0);
+    warnings.clear();
+    ASSERT_TRUE(window.openFile(loop));
+    ASSERT_TRUE(waitFor([&] { return !warnings.isEmpty(); }, 60000));
+    EXPECT_TRUE(warnings.back().contains("previous SDF")) << warnings.back().toStdString();
+    // (the corner overlay names the open file, so a small difference remains)
+    EXPECT_LT(meanDifference(sphere, frameOf(window)), 5.0) << "the sphere is back on screen";
+    window.viewport()->setStallLimit(1500.0);
     window.close();
 }
 

@@ -49,6 +49,11 @@ std::vector<shaders::Diagnostic> ViewportWidget::setSdf(const shaders::PreparedS
     makeCurrent();
     auto diagnostics = m_renderer->setSdf(sdf);
     doneCurrent();
+    if (!shaders::hasErrors(diagnostics)) {
+        m_currentSdf = std::make_unique<shaders::PreparedSdf>(sdf);
+        m_needsProbe = true;
+        m_maxScale = 1.0f;
+    }
     update();
     return diagnostics;
 }
@@ -140,6 +145,11 @@ void ViewportWidget::initializeGL() {
     if (m_pendingSdf) {
         auto diagnostics = m_renderer->setSdf(*m_pendingSdf);
         for (const auto& d : diagnostics) log::warning("shaders", shaders::formatDiagnostic(d));
+        if (!shaders::hasErrors(diagnostics)) {
+            m_currentSdf = std::move(m_pendingSdf);
+            m_needsProbe = true;
+            m_maxScale = 1.0f;
+        }
         m_pendingSdf.reset();
     }
     emit contextReady(m_contextDescription);
@@ -149,9 +159,16 @@ void ViewportWidget::paintGL() {
     const qreal ratio = devicePixelRatioF();
     int width = int(std::lround(this->width() * ratio));
     int height = int(std::lround(this->height() * ratio));
-    float scale = m_interacting ? m_scale : 1.0f;
+    if (m_needsProbe && probeNewSdf(width, height)) return;
+    float scale = std::min(m_interacting ? m_scale : 1.0f, m_maxScale);
     // finish: the status bar and the scale choice see what the frame really cost.
     renderer::FrameStats stats = m_renderer->renderScaled(width, height, scale, m_camera, m_time, true);
+    if (!m_interacting && stats.cpuMilliseconds > m_stallLimit) {
+        // A view that became expensive (camera, time, plane): cap the next frames.
+        m_maxScale = std::clamp(scale * float(std::sqrt(0.8 * m_stallLimit / stats.cpuMilliseconds)), kProbeScale, 1.0f);
+        emit performanceWarning(tr("A full frame took %1 s: frames are drawn at %2 % resolution from now on").arg(stats.cpuMilliseconds / 1000.0, 0, 'f', 1)
+                                    .arg(int(m_maxScale * 100.0f)));
+    }
     m_lastFrameMilliseconds = stats.cpuMilliseconds;
     m_lastScale = scale;
     if (!m_interacting) {
@@ -174,6 +191,47 @@ void ViewportWidget::paintGL() {
         painter.drawText(box, Qt::TextWordWrap, m_overlay);
     }
     emit frameRendered(stats.cpuMilliseconds, scale);
+}
+
+bool ViewportWidget::probeNewSdf(int width, int height) {
+    m_needsProbe = false;
+    // 5 % of the side, 0.25 % of the pixels: cheap even for a shader that loops for long. The
+    // first draw of a program includes the driver's code generation (llvmpipe compiles lazily):
+    // draw twice and time the second.
+    renderer::FrameStats probe = m_renderer->renderScaled(width, height, kProbeScale, m_camera, m_time, true);
+    if (probe.cpuMilliseconds <= m_stallLimit) probe = m_renderer->renderScaled(width, height, kProbeScale, m_camera, m_time, true);
+    double estimate = probe.cpuMilliseconds / double(kProbeScale * kProbeScale);
+    if (estimate > m_stallLimit && probe.cpuMilliseconds <= m_stallLimit) {
+        // Small frames are dominated by fixed costs (stretching, synchronisation): measure at 3x
+        // the side too and extrapolate from the cost per pixel.
+        constexpr float kLarger = 3.0f * kProbeScale;
+        renderer::FrameStats larger = m_renderer->renderScaled(width, height, kLarger, m_camera, m_time, true);
+        const double perArea = std::max(0.0, larger.cpuMilliseconds - probe.cpuMilliseconds) / double(kLarger * kLarger - kProbeScale * kProbeScale);
+        estimate = probe.cpuMilliseconds + perArea * double(1.0f - kProbeScale * kProbeScale);
+        probe = larger;
+    }
+    if (probe.cpuMilliseconds > m_stallLimit && m_lastGoodSdf) {
+        // Even the probe is over the limit: this SDF cannot be drawn interactively here.
+        (void)m_renderer->setSdf(*m_lastGoodSdf);
+        m_currentSdf.reset();
+        m_maxScale = 1.0f;
+        emit performanceWarning(tr("The new SDF needs %1 s for a frame at 5 % resolution (a runaway loop?): the previous SDF is "
+                                   "back on screen; fix the loop or render it with sdfwb --batch render")
+                                    .arg(probe.cpuMilliseconds / 1000.0, 0, 'f', 1));
+        update();
+        return true;
+    }
+    m_lastGoodSdf = std::move(m_currentSdf);
+    if (estimate > m_stallLimit) {
+        m_maxScale = std::clamp(float(std::sqrt(0.8 * m_stallLimit / estimate)), kProbeScale, 1.0f);
+        emit performanceWarning(tr("A full frame of this SDF would take about %1 s: drawn at %2 % resolution (screenshots and "
+                                   "exports still render in full)")
+                                    .arg(estimate / 1000.0, 0, 'f', 1)
+                                    .arg(int(m_maxScale * 100.0f)));
+    }
+    update();  // the real frame follows
+    emit frameRendered(probe.cpuMilliseconds, kProbeScale);
+    return true;
 }
 
 void ViewportWidget::releaseGl() { m_renderer->releaseGl(); }

@@ -57,6 +57,12 @@ public:
 
     // Frames while moving aim to take at most this long (default 33 ms).
     void setFrameBudget(double milliseconds) { m_frameBudget = milliseconds; }
+    // No frame may hold the UI longer than about this (default 1500 ms). A new SDF is first drawn
+    // at 5 % resolution; if the full frame would exceed the limit (a runaway loop, a huge
+    // fractal), frames are capped at the resolution that fits, and if even the probe frame is
+    // over it the previous SDF comes back. performanceWarning() says which.
+    void setStallLimit(double milliseconds) { m_stallLimit = milliseconds; }
+    float resolutionCap() const { return m_maxScale; }
     double lastFrameMilliseconds() const { return m_lastFrameMilliseconds; }
     float lastFrameScale() const { return m_lastScale; }
     bool isInteracting() const { return m_interacting; }
@@ -74,6 +80,8 @@ signals:
     void cameraChanged(const sdfwb::renderer::Camera& camera);
     void planeDragged(const sdfwb::renderer::CuttingPlane& plane);
     void contextReady(const QString& description);
+    // A frame would take too long: `message` says what was done (resolution capped, SDF reverted).
+    void performanceWarning(const QString& message);
 
 protected:
     void initializeGL() override;
@@ -87,12 +95,20 @@ protected:
     void focusOutEvent(QFocusEvent* event) override;
 
 private:
+    static constexpr float kProbeScale = 0.05f;
+    // Draws the first frame of a new SDF at kProbeScale and sets the resolution cap (or reverts).
+    bool probeNewSdf(int width, int height);
     void releaseGl();
     void interacted();  // a camera move happened: render cheaply now, refine later
     void flyStep();
 
     std::unique_ptr<renderer::SdfRenderer> m_renderer;
     std::unique_ptr<shaders::PreparedSdf> m_pendingSdf;
+    std::unique_ptr<shaders::PreparedSdf> m_currentSdf;   // compiled, waiting for its probe frame
+    std::unique_ptr<shaders::PreparedSdf> m_lastGoodSdf;  // passed its probe frame
+    bool m_needsProbe = false;
+    double m_stallLimit = 1500.0;
+    float m_maxScale = 1.0f;  // resolution cap from the probe or a slow full frame
     renderer::ShadingSettings m_shading;
     renderer::TraceSettings m_trace;
     renderer::CuttingPlane m_plane;

@@ -1,0 +1,110 @@
+// Hostile and broken SDF sources: each gets a clear diagnostic at the user's own file and line
+// before any compiler runs (or is accepted when it is harmless), never a crash or a hang.
+
+#include <shaders/GlslChecker.h>
+#include <shaders/SdfSource.h>
+#include <shaders/TracerComposer.h>
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <unistd.h>
+
+using namespace sdfwb;
+namespace fs = std::filesystem;
+
+namespace {
+
+shaders::PreparedSdf prepare(const std::string& text, const fs::path& path = {}) {
+    return shaders::prepareSdf(text, path.empty() ? "hostile.glsl" : path.string(), path, shaders::IncludeOptions{});
+}
+
+// The first error, or an empty diagnostic.
+shaders::Diagnostic firstError(const shaders::PreparedSdf& sdf) {
+    for (const auto& d : sdf.diagnostics)
+        if (d.severity == shaders::Severity::Error) return d;
+    return {};
+}
+
+} // namespace
+
+TEST(Hostile, OwnMainIsRefusedAtItsLine) {
+    auto sdf = prepare("float sdf(vec3 p) { return length(p) - 0.5; }\n\nvoid main() { }\n");
+    auto error = firstError(sdf);
+    EXPECT_EQ(error.line, 3);
+    EXPECT_EQ(error.column, 6);
+    EXPECT_NE(error.message.find("main()"), std::string::npos) << error.message;
+}
+
+TEST(Hostile, NamesThatShadowTheWorkbenchsShadersAreNamed) {
+    auto sdf = prepare("float map(vec3 p) { return length(p) - 0.5; }\n"
+                       "uniform float u_time;\n"
+                       "struct Hit { float t; };\n"
+                       "float sdf(vec3 p) { return map(p); }\n");
+    ASSERT_GE(sdf.diagnostics.size(), 3u);
+    EXPECT_EQ(sdf.diagnostics[0].line, 1);
+    EXPECT_NE(sdf.diagnostics[0].message.find("'map(vec3)'"), std::string::npos) << sdf.diagnostics[0].message;
+    EXPECT_EQ(sdf.diagnostics[1].line, 2);
+    EXPECT_NE(sdf.diagnostics[1].message.find("'u_time'"), std::string::npos);
+    EXPECT_EQ(sdf.diagnostics[2].line, 3);
+    EXPECT_NE(sdf.diagnostics[2].message.find("'Hit'"), std::string::npos);
+    // An overload with other parameter types does not clash, nor does a local variable.
+    auto fine = prepare("float map(vec2 p) { return length(p); }\nfloat sdf(vec3 p) { float map3 = 1.0; vec3 u_x = p; return length(u_x) - map3; }\n");
+    EXPECT_TRUE(fine.ok()) << (fine.diagnostics.empty() ? "" : fine.diagnostics.front().message);
+}
+
+TEST(Hostile, NonAsciiBytesInCodeAreRefusedButCommentsMayHoldAnything) {
+    auto bad = prepare("float sdf(vec3 p) {\n  return length(p) - 0.5\xe9;\n}\n");
+    auto error = firstError(bad);
+    EXPECT_EQ(error.line, 2);
+    EXPECT_EQ(error.column, 25);
+    EXPECT_NE(error.message.find("0xE9"), std::string::npos) << error.message;
+    auto zero = prepare(std::string("float sdf(vec3 p) { return length(p) - 0.5; }\n\0\0garbage", 55));
+    EXPECT_FALSE(zero.ok()) << "NUL bytes are binary data";
+    auto comment = prepare("// caf\xc3\xa9 \xff\xfe Latin-1 and broken UTF-8 in a comment\nfloat sdf(vec3 p) { return length(p) - 0.5; } /* \x80 */\n");
+    EXPECT_TRUE(comment.ok());
+}
+
+TEST(Hostile, OwnVersionLineIsAcceptedAndTheCheckerStillPasses) {
+    auto sdf = prepare("#version 330 core\nfloat sdf(vec3 p) { return length(p) - 0.5; }\n");
+    EXPECT_TRUE(sdf.ok());
+    auto composed = shaders::composeTracer(sdf, shaders::TracerFeatures{});
+    ASSERT_TRUE(composed.hasValue());
+    auto diagnostics = shaders::checkWithGlslang(*composed);
+    EXPECT_FALSE(shaders::hasErrors(diagnostics)) << (diagnostics.empty() ? "" : diagnostics.front().message);
+}
+
+TEST(Hostile, DeepIncludeChainStopsWithTheFileThatWentTooDeep) {
+    const fs::path folder = fs::temp_directory_path() / ("sdfwb-deep-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    for (int i = 0; i < 200; ++i)
+        std::ofstream(folder / ("inc" + std::to_string(i) + ".glsl"))
+            << (i < 199 ? "#include \"inc" + std::to_string(i + 1) + ".glsl\"\n" : std::string("float base(vec3 p) { return length(p) - 0.5; }\n"));
+    auto sdf = shaders::prepareSdf("#include \"inc0.glsl\"\nfloat sdf(vec3 p) { return base(p); }\n", (folder / "deep.glsl").string(),
+                                   folder / "deep.glsl", shaders::IncludeOptions{});
+    auto error = firstError(sdf);
+    EXPECT_NE(error.message.find("deeper"), std::string::npos) << error.message;
+    EXPECT_NE(error.file.find("inc"), std::string::npos) << error.file;
+    fs::remove_all(folder);
+}
+
+TEST(Hostile, HugeSourceIsRefusedQuicklyWithItsSize) {
+    std::string filler;
+    filler.reserve(11u << 20);
+    for (int i = 0; filler.size() < (10u << 20); ++i) filler += "float f" + std::to_string(i) + "(float x) { return x * 2.0; }\n";
+    auto start = std::chrono::steady_clock::now();
+    auto sdf = prepare(filler + "float sdf(vec3 p) { return length(p) - 0.5; }\n");
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    auto error = firstError(sdf);
+    EXPECT_NE(error.message.find("MB of code"), std::string::npos) << error.message;
+    EXPECT_EQ(error.line, 1);
+    EXPECT_LT(seconds, 60.0);
+    // 10 MB of comments is not code: accepted.
+    std::string comments;
+    for (int i = 0; comments.size() < (10u << 20); ++i) comments += "// a long comment line that takes room but is no code at all ......\n";
+    EXPECT_TRUE(prepare(comments + "float sdf(vec3 p) { return length(p) - 0.5; }\n").ok());
+}
