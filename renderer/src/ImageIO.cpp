@@ -1,9 +1,11 @@
 #include <renderer/ImageIO.h>
 
+#include <core/TextFile.h>
+
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <cstdio>
-#include <random>
 
 namespace sdfwb::renderer {
 namespace fs = std::filesystem;
@@ -19,38 +21,29 @@ bool canWriteImageExtension(const std::string& extension) {
 Expected<void> writeImage(const fs::path& path, const Image& image) {
     if (image.width <= 0 || image.height <= 0 || image.rgba.size() != std::size_t(image.width) * std::size_t(image.height) * 4)
         return makeError(path.string() + ": refusing to write an empty or inconsistent image");
-    fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-    std::random_device random;
-    // Same extension as the target, so OpenImageIO picks the same format.
-    fs::path temporary = folder / ("." + path.stem().string() + ".tmp" + std::to_string(random()) + path.extension().string());
-    auto output = OIIO::ImageOutput::create(temporary.string());
+    auto output = OIIO::ImageOutput::create(path.string());
     if (!output) return makeError(path.string() + ": no image writer for extension '" + path.extension().string() + "' (use .png, .jpg or .exr)");
+    if (!output->supports("ioproxy"))
+        return makeError(path.string() + ": the image writer for '" + path.extension().string() + "' cannot encode to memory (use .png, .jpg or .exr)");
     bool exr = path.extension() == ".exr";
     // EXR keeps alpha and stores half floats; PNG and JPEG get RGB.
     int channels = exr ? 4 : 3;
     OIIO::ImageSpec spec(image.width, image.height, channels, exr ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::UINT8);
-    if (!output->open(temporary.string(), spec)) {
-        std::string error = output->geterror();
-        std::error_code ec;
-        fs::remove(temporary, ec);
-        return makeError(path.string() + ": cannot write: " + error);
-    }
+    // Encode into memory, then write the bytes atomically (temporary file, every write checked,
+    // fsync, rename): the image libraries do not all report a failed write (libpng ignores a
+    // full disk), and a half-written file must never replace a good one.
+    std::vector<unsigned char> encoded;
+    OIIO::Filesystem::IOVecOutput memory(encoded);
+    if (!output->set_ioproxy(&memory) || !output->open(path.string(), spec))
+        return makeError(path.string() + ": cannot encode: " + output->geterror());
     std::vector<std::uint8_t> pixels(std::size_t(image.width) * std::size_t(image.height) * std::size_t(channels));
     for (std::size_t i = 0, n = std::size_t(image.width) * std::size_t(image.height); i < n; ++i)
         for (int c = 0; c < channels; ++c) pixels[i * std::size_t(channels) + std::size_t(c)] = image.rgba[i * 4 + std::size_t(c)];
-    bool ok = output->write_image(OIIO::TypeDesc::UINT8, pixels.data()) && output->close();
-    if (!ok) {
-        std::string error = output->geterror();
-        std::error_code ec;
-        fs::remove(temporary, ec);
-        return makeError(path.string() + ": write failed: " + error);
-    }
-    std::error_code ec;
-    fs::rename(temporary, path, ec);
-    if (ec) {
-        fs::remove(temporary, ec);
-        return makeError(path.string() + ": cannot move the finished image into place: " + ec.message());
-    }
+    if (!(output->write_image(OIIO::TypeDesc::UINT8, pixels.data()) && output->close()))
+        return makeError(path.string() + ": cannot encode: " + output->geterror());
+    output.reset();
+    if (auto ok = writeFileAtomically(path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size())); !ok)
+        return ok.error();
     return {};
 }
 

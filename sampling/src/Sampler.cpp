@@ -1,5 +1,7 @@
 #include <sampling/Sampler.h>
 
+#include <core/Log.h>
+
 #include <renderer/SampleCompute.h>
 
 #include <algorithm>
@@ -22,6 +24,8 @@ std::uint64_t countBadRows(const float* positions, const float* distances, const
     return bad;
 }
 
+constexpr std::uint32_t kSmallestChunk = 4096;
+
 // Runs the job chunk by chunk; `consume` receives each chunk's rows in order.
 template <class Target, class Consume>
 Expected<SamplingReport> run(renderer::SampleCompute& compute, const SamplingJob& job, Target target, Consume consume,
@@ -31,7 +35,7 @@ Expected<SamplingReport> run(renderer::SampleCompute& compute, const SamplingJob
     SamplingReport report;
     report.firstIndex = job.firstIndex();
     const std::uint64_t rows = job.rows();
-    const std::uint32_t chunk = std::min(job.chunkSize, renderer::SampleCompute::kMaxChunk);
+    std::uint32_t chunk = std::min(job.chunkSize, renderer::SampleCompute::kMaxChunk);
     renderer::SampleUniforms uniforms{std::uint32_t(job.count), job.seed, job.time, job.gradientStep, {}};
     std::copy(std::begin(job.parameters), std::end(job.parameters), uniforms.parameters);
     uniforms.surfaceTolerance = job.surfaceTolerance;
@@ -42,8 +46,28 @@ Expected<SamplingReport> run(renderer::SampleCompute& compute, const SamplingJob
             break;
         }
         std::uint32_t count = std::uint32_t(std::min<std::uint64_t>(chunk, rows - done));
-        auto [positions, distances, gradients] = target(done, count);
-        if (auto ok = compute.run(uniforms, std::uint32_t(report.firstIndex + done), count, positions, distances, gradients); !ok) return ok.error();
+        float *positions = nullptr, *distances = nullptr, *gradients = nullptr;
+        Expected<void> ok;
+        try {
+            auto pointers = target(done, count);
+            positions = pointers.positions;
+            distances = pointers.distances;
+            gradients = pointers.gradients;
+            ok = compute.run(uniforms, std::uint32_t(report.firstIndex + done), count, positions, distances, gradients);
+        } catch (const std::bad_alloc&) {
+            ok = makeError("sampling: out of memory for a chunk of " + std::to_string(count) + " samples (" +
+                           std::to_string(std::uint64_t(count) * 28u >> 20) + " MiB on the host)");
+        }
+        if (!ok) {
+            // Out of GPU/driver memory (or another failed dispatch): rows depend only on their
+            // index, so the same rows can be made in smaller pieces. Halve down to 4096.
+            if (count <= kSmallestChunk) return ok.error();
+            chunk = std::max(kSmallestChunk, count / 2);
+            std::string message = ok.error().message;
+            if (message.rfind("sampling: ", 0) == 0) message.erase(0, 10);
+            log::warning("sampling", message + "; continuing in chunks of " + std::to_string(chunk) + " samples");
+            continue;
+        }
         report.badRows += countBadRows(positions, distances, gradients, count);
         if (auto ok = consume(positions, distances, gradients, count); !ok) return ok.error();
         done += count;
@@ -93,9 +117,11 @@ Expected<SamplingReport> sampleToFile(renderer::SampleCompute& compute, const Sa
     if (!writer) return writer.error();
     std::vector<float> positions, distances, gradients;
     auto target = [&](std::uint64_t, std::uint32_t count) {
-        positions.resize(3 * std::size_t(count));
-        distances.resize(count);
-        gradients.resize(3 * std::size_t(count));
+        for (std::vector<float>* v : {&positions, &distances, &gradients}) {
+            const std::size_t size = (v == &distances ? 1 : 3) * std::size_t(count);
+            v->resize(size);
+            if (v->capacity() > 2 * size) v->shrink_to_fit();  // after a failed larger chunk: give the memory back
+        }
         return Pointers{positions.data(), distances.data(), gradients.data()};
     };
     auto consume = [&](const float* p, const float* d, const float* g, std::size_t n) { return (*writer)->append(p, d, g, n); };

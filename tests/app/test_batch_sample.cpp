@@ -15,6 +15,14 @@
 #include <thread>
 #include <unistd.h>
 
+#include <csignal>
+#include <fstream>
+#include <iterator>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -72,7 +80,109 @@ std::pair<int, long> runMeasured(const std::vector<std::string>& arguments, int 
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, usage.ru_maxrss};
 }
 
+// Runs the binary directly with one resource limit set (and SIGXFSZ ignored, so a file-size
+// limit turns into failing writes, as a full disk does); returns the exit status and the output.
+Result runLimited(const std::vector<std::string>& arguments, int resource, rlim_t limit) {
+    int fds[2];
+    if (pipe(fds) != 0) return {};
+    pid_t child = fork();
+    if (child == 0) {
+        dup2(fds[1], 1);
+        dup2(fds[1], 2);
+        close(fds[0]);
+        unsetenv("DISPLAY");
+        signal(SIGXFSZ, SIG_IGN);
+        struct rlimit value {limit, limit};
+        setrlimit(resource, &value);
+        std::vector<char*> argv;
+        std::string binary = SDFWB_BINARY;
+        argv.push_back(binary.data());
+        std::vector<std::string> copy = arguments;
+        for (std::string& a : copy) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        execv(binary.c_str(), argv.data());
+        _exit(127);
+    }
+    close(fds[1]);
+    Result result;
+    std::array<char, 4096> buffer;
+    ssize_t n;
+    while ((n = read(fds[0], buffer.data(), buffer.size())) > 0) result.output.append(buffer.data(), std::size_t(n));
+    close(fds[0]);
+    int status = 0;
+    waitpid(child, &status, 0);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    return result;
+}
+
+std::string readAll(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
 } // namespace
+
+TEST(ResourceLimits, DiskFullFailsCleanlyAndKeepsTheOldFile) {
+    const fs::path out = scratch("full.npz");
+    { std::ofstream(out) << "the previous results"; }
+    for (const char* extension : {".npz", ".bin", ".ply"}) {
+        const fs::path target = out.parent_path() / (std::string("full") + extension);
+        { std::ofstream(target) << "the previous results"; }
+        // 64 KiB per file: the writer's first large write fails with EFBIG, as on a full disk.
+        Result r = runLimited({"--batch", "sample", "--sdf", "sphere", "--pattern", "rand", "-n", "200000", "--output", target.string()},
+                              RLIMIT_FSIZE, 64 * 1024);
+        EXPECT_EQ(r.exitCode, 1) << r.output;
+        EXPECT_NE(r.output.find(target.string()), std::string::npos) << "the message names the file: " << r.output;
+        EXPECT_NE(r.output.find("write failed"), std::string::npos) << r.output;
+        EXPECT_TRUE(readAll(target) == "the previous results") << extension << ": the old file was replaced";
+        EXPECT_FALSE(partialFilesIn(out.parent_path())) << extension;
+    }
+    // A render too: the PNG writer fails, the old image stays.
+    const fs::path image = scratch("full.png");
+    { std::ofstream(image) << "the previous image"; }
+    Result r = runLimited({"--batch", "render", "--sdf", "torus", "--size", "1024x1024", "--output", image.string()}, RLIMIT_FSIZE, 4 * 1024);
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find(image.string()), std::string::npos) << r.output;
+    EXPECT_TRUE(readAll(image) == "the previous image") << "the old image was replaced (" << fs::file_size(image) << " bytes)";
+    EXPECT_FALSE(partialFilesIn(image.parent_path()));
+}
+
+TEST(ResourceLimits, UnwritableOutputIsNamedBeforeAnyWork) {
+    // /proc refuses new files even to root; a folder that does not exist refuses them to everyone.
+    for (const std::string& target : {std::string("/proc/sdfwb-test.bin"), scratch("no-such-folder").string() + "/x.npz"}) {
+        Result r = run("--batch sample --sdf sphere --pattern rand -n 1000 --output " + target);
+        EXPECT_NE(r.exitCode, 0) << target;
+        EXPECT_NE(r.output.find(target), std::string::npos) << r.output;
+        EXPECT_EQ(r.output.find("wrote"), std::string::npos) << r.output;
+    }
+    Result r = run("--batch render --sdf sphere --size 64x64 --output /proc/sdfwb-test.png");
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.output.find("/proc/sdfwb-test.png"), std::string::npos) << r.output;
+}
+
+TEST(ResourceLimits, OutOfMemoryContinuesInSmallerChunksWithTheSameRows) {
+    // Reference rows with small chunks, no limit.
+    const fs::path reference = scratch("oom-reference.bin");
+    ASSERT_EQ(run("--batch sample --sdf sphere --pattern rand -n 4194240 --chunk 65536 -q --output " + reference.string()).exitCode, 0);
+    // One dispatch of 4 194 240 samples needs ~117 MB of buffers in llvmpipe: under an address
+    // space limit it fails with GL_OUT_OF_MEMORY. The run halves its chunks and goes on; the rows
+    // depend only on their index, so the file is the same. The limit that shows it depends on the
+    // driver's own footprint, so a few are tried; none may crash.
+    bool continued = false;
+    for (rlim_t megabytes : {1200, 1100, 1300, 1000, 1400}) {
+        const fs::path out = scratch("oom.bin");
+        Result r = runLimited({"--batch", "sample", "--sdf", "sphere", "--pattern", "rand", "-n", "4194240", "--chunk", "4194240", "--output",
+                               out.string()},
+                              RLIMIT_AS, megabytes << 20);
+        EXPECT_TRUE(r.exitCode == 0 || r.exitCode == 1 || r.exitCode == 3) << megabytes << " MB: " << r.output;
+        if (r.exitCode == 0 && r.output.find("continuing in chunks") != std::string::npos) {
+            EXPECT_EQ(readAll(out), readAll(reference)) << megabytes << " MB";
+            continued = true;
+            break;
+        }
+    }
+    EXPECT_TRUE(continued) << "no address-space limit between 1.0 and 1.4 GB made the big dispatch fail and the run continue";
+}
 
 TEST(BatchSample, PaperFormWritesTheBinLayout) {
     fs::path out = scratch("paper.bin");
