@@ -3,6 +3,7 @@
 #include "BatchCommands.h"
 
 #include <core/Log.h>
+#include <core/Regex.h>
 
 #include <CLI/CLI.hpp>
 
@@ -53,7 +54,7 @@ struct Size {
 
 // "640x360" -> 640, 360 (1..16384 each).
 std::optional<Size> parseSize(const std::string& text) {
-    static const std::regex pattern(R"(^\s*(\d{1,5})\s*[xX]\s*(\d{1,5})\s*$)");
+    static const std::regex pattern(R"(^\s*(\d{1,5})\s*[xX]\s*(\d{1,5})\s*$)", kLinearRegex);
     std::smatch match;
     if (!std::regex_match(text, match, pattern)) return std::nullopt;
     Size size{std::stoi(match[1].str()), std::stoi(match[2].str())};
@@ -192,7 +193,7 @@ int runListCommand(const Arguments& arguments) {
 
 // "3/8" -> 3, 8
 bool parseShard(const std::string& text, std::uint32_t& index, std::uint32_t& count) {
-    static const std::regex pattern(R"(^\s*(\d{1,9})\s*/\s*(\d{1,9})\s*$)");
+    static const std::regex pattern(R"(^\s*(\d{1,9})\s*/\s*(\d{1,9})\s*$)", kLinearRegex);
     std::smatch match;
     if (!std::regex_match(text, match, pattern)) return false;
     index = std::uint32_t(std::stoul(match[1].str()));
@@ -403,7 +404,7 @@ std::optional<int> runCommandLine(int argc, char** argv) {
         command.pattern = argv[2];
         command.sdf = argv[4];
         command.output = argv[5];
-        static const std::regex digits(R"(^\d{1,19}$)");
+        static const std::regex digits(R"(^\d{1,19}$)", kLinearRegex);
         if (!std::regex_match(std::string(argv[3]), digits)) { printError("--sample: <N> must be a positive integer, got '" + std::string(argv[3]) + "'"); return kExitUsage; }
         command.count = std::stoull(argv[3]);
         // The original wrote .bin whatever the name; keep that unless the name asks for npz/ply.

@@ -5,6 +5,8 @@
 
 #include "Formats.h"
 
+#include <core/Regex.h>
+
 #include <zlib.h>
 
 #include <algorithm>
@@ -344,9 +346,9 @@ Expected<NpyArray> parseNpy(const InputFile& file, const ZipEntry& entry, const 
     if (headerLength > 65536) return makeError(file.name() + ": " + name + ": .npy header too long");
     std::string header(std::size_t(headerLength), '\0');
     if (auto ok = readBytes(headerStart, header.data(), header.size()); !ok) return ok.error();
-    static const std::regex descr(R"('descr'\s*:\s*'([^']*)')");
-    static const std::regex fortran(R"('fortran_order'\s*:\s*(True|False))");
-    static const std::regex shape(R"('shape'\s*:\s*\(([^)]*)\))");
+    static const std::regex descr(R"('descr'\s*:\s*'([^']*)')", kLinearRegex);
+    static const std::regex fortran(R"('fortran_order'\s*:\s*(True|False))", kLinearRegex);
+    static const std::regex shape(R"('shape'\s*:\s*\(([^)]*)\))", kLinearRegex);
     std::smatch match;
     if (!std::regex_search(header, match, descr)) return makeError(file.name() + ": " + name + ": .npy header lacks 'descr'");
     array.descr = match[1].str();
@@ -354,7 +356,7 @@ Expected<NpyArray> parseNpy(const InputFile& file, const ZipEntry& entry, const 
     if (match[1].str() == "True") return makeError(file.name() + ": " + name + ": Fortran-ordered arrays are not supported");
     if (!std::regex_search(header, match, shape)) return makeError(file.name() + ": " + name + ": .npy header lacks 'shape'");
     std::string dims = match[1].str();
-    static const std::regex number(R"(\d+)");
+    static const std::regex number(R"(\d+)", kLinearRegex);
     for (auto it = std::sregex_iterator(dims.begin(), dims.end(), number); it != std::sregex_iterator(); ++it) {
         if (it->str().size() > 15) return makeError(file.name() + ": " + name + ": absurd array dimension");
         array.shape.push_back(std::stoull(it->str()));

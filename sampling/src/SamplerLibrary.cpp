@@ -1,5 +1,6 @@
 #include <sampling/SamplerLibrary.h>
 
+#include <core/Regex.h>
 #include <core/TextFile.h>
 #include <shaders/BuiltinShaders.h>
 #include <shaders/SdfSource.h>
@@ -32,7 +33,7 @@ std::vector<fs::path> samplerFolders() {
 namespace {
 
 Expected<shaders::ShaderPiece> checked(shaders::ShaderPiece piece) {
-    static const std::regex definition(R"(\bbool\s+samplePosition\s*\(\s*(in\s+)?uint\s+\w+\s*,\s*out\s+vec3\s+\w+\s*\)\s*\{)");
+    static const std::regex definition(R"(\bbool\s+samplePosition\s*\(\s*(in\s+)?uint\s+\w+\s*,\s*out\s+vec3\s+\w+\s*\)\s*\{)", kLinearRegex);
     if (!std::regex_search(shaders::stripComments(piece.text), definition))
         return makeError(piece.name + ": not a sampler: it must define `bool samplePosition(uint index, out vec3 position)`");
     return piece;

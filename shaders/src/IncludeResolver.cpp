@@ -1,6 +1,7 @@
 #include <shaders/IncludeResolver.h>
 
 #include <core/Paths.h>
+#include <core/Regex.h>
 #include <core/TextFile.h>
 
 #include <algorithm>
@@ -89,10 +90,10 @@ private:
         if (!canonicalPath.empty()) m_stack.push_back(canonicalPath);
         m_out.text += "#line 1 " + std::to_string(fileIndex) + "\n";
 
-        static const std::regex includeQuoted(R"re(^\s*#\s*include\s+"([^"]*)"\s*(//.*)?$)re");
-        static const std::regex includeAny(R"(^\s*#\s*include\b.*$)");
-        static const std::regex versionLine(R"(^\s*#\s*version\b.*$)");
-        static const std::regex pragmaOnce(R"(^\s*#\s*pragma\s+once\s*$)");
+        static const std::regex includeQuoted(R"re(^\s*#\s*include\s+"([^"]*)"\s*(//.*)?$)re", kLinearRegex);
+        static const std::regex includeAny(R"(^\s*#\s*include\b.*$)", kLinearRegex);
+        static const std::regex versionLine(R"(^\s*#\s*version\b.*$)", kLinearRegex);
+        static const std::regex pragmaOnce(R"(^\s*#\s*pragma\s+once\s*$)", kLinearRegex);
 
         bool inBlockComment = false;
         std::vector<std::string_view> lines = splitLines(text);
@@ -157,7 +158,8 @@ private:
 
         auto text = readTextFile(found);
         if (!text) return report("#include \"" + target + "\": " + text.error().message);
-        if (std::regex_search(*text, std::regex(R"((^|\n)\s*#\s*pragma\s+once\s*(\r?\n|$))"))) m_onceFiles.insert(found);
+        static const std::regex pragmaOnceInFile(R"((^|\n)\s*#\s*pragma\s+once\s*(\r?\n|$))", kLinearRegex);
+        if (std::regex_search(*text, pragmaOnceInFile)) m_onceFiles.insert(found);
 
         int index = int(m_out.map.files.size());
         m_out.map.files.push_back({found.string(), std::move(*text)});
