@@ -45,7 +45,7 @@ public:
     }
 
     Expected<void> read(std::uint64_t first, std::size_t n, float* positions, float* distances, float* gradients) override {
-        if (first + n > m_rows) return makeError(m_file.name() + ": rows " + std::to_string(first) + "+" + std::to_string(n) + " out of range");
+        if (first > m_rows || n > m_rows - first) return makeError(m_file.name() + ": rows " + std::to_string(first) + "+" + std::to_string(n) + " out of range");
         const std::uint64_t N = m_rows;
         if (auto ok = m_file.readAt(4 + 12 * first, positions, 12 * n); !ok) return ok;
         if (auto ok = m_file.readAt(4 + 12 * N + 4 * first, distances, 4 * n); !ok) return ok;

@@ -390,7 +390,7 @@ public:
     }
 
     Expected<void> read(std::uint64_t first, std::size_t n, float* positions, float* distances, float* gradients) override {
-        if (first + n > m_rows) return makeError(m_file.name() + ": rows out of range");
+        if (first > m_rows || n > m_rows - first) return makeError(m_file.name() + ": rows out of range");
         float* targets[3] = {positions, distances, gradients};
         const std::uint64_t rowBytes[3] = {12, 4, 12};
         for (int i = 0; i < 3; ++i) {

@@ -71,7 +71,17 @@ Expected<InputFile> InputFile::open(const fs::path& path) {
     return InputFile(path.string(), fd, std::uint64_t(status.st_size));
 }
 
-InputFile::InputFile(InputFile&& other) noexcept : m_name(std::move(other.m_name)), m_fd(other.m_fd), m_size(other.m_size) { other.m_fd = -1; }
+InputFile InputFile::fromBytes(std::string name, std::string bytes) {
+    InputFile file(std::move(name), -1, bytes.size());
+    file.m_bytes = std::move(bytes);
+    return file;
+}
+
+InputFile::InputFile(InputFile&& other) noexcept
+    : m_name(std::move(other.m_name)), m_fd(other.m_fd), m_size(other.m_size), m_bytes(std::move(other.m_bytes)) {
+    other.m_fd = -1;
+    other.m_size = 0;  // a moved-from file reads nothing
+}
 
 InputFile::~InputFile() {
     if (m_fd >= 0) ::close(m_fd);
@@ -81,6 +91,10 @@ Expected<void> InputFile::readAt(std::uint64_t offset, void* data, std::size_t s
     if (offset > m_size || size > m_size - offset)
         return makeError(m_name + ": truncated: needs bytes up to " + std::to_string(offset + size) + " but has " + std::to_string(m_size));
     char* bytes = static_cast<char*>(data);
+    if (m_fd < 0) {
+        if (size > 0) std::memcpy(bytes, m_bytes.data() + offset, size);
+        return {};
+    }
     while (size > 0) {
         ssize_t got = ::pread(m_fd, bytes, size, off_t(offset));
         if (got < 0) {

@@ -32,10 +32,12 @@ private:
     bool m_committed = false;
 };
 
-// A read-only file with positional reads; errors name the file.
+// A read-only file with positional reads; errors name the file. fromBytes() serves the same
+// reads from memory (SampleReader::openBytes), so the format readers have one code path.
 class InputFile {
 public:
     static Expected<InputFile> open(const std::filesystem::path& path);
+    static InputFile fromBytes(std::string name, std::string bytes);
     InputFile(InputFile&& other) noexcept;
     InputFile(const InputFile&) = delete;
     ~InputFile();
@@ -47,8 +49,9 @@ public:
 private:
     InputFile(std::string name, int fd, std::uint64_t size) : m_name(std::move(name)), m_fd(fd), m_size(size) {}
     std::string m_name;
-    int m_fd = -1;
+    int m_fd = -1;          // -1 when the bytes are in memory
     std::uint64_t m_size = 0;
+    std::string m_bytes;    // fromBytes()
 };
 
 } // namespace sdfwb::sampling::detail

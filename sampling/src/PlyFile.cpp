@@ -87,7 +87,7 @@ public:
     }
 
     Expected<void> read(std::uint64_t first, std::size_t n, float* positions, float* distances, float* gradients) override {
-        if (first + n > m_rows) return makeError(m_file.name() + ": rows out of range");
+        if (first > m_rows || n > m_rows - first) return makeError(m_file.name() + ": rows out of range");
         std::vector<char> buffer;
         for (std::size_t done = 0; done < n;) {
             std::size_t count = std::min(kCopyChunkRows, n - done);

@@ -70,6 +70,16 @@ Expected<std::unique_ptr<SampleReader>> SampleReader::open(const fs::path& path)
     return makeError("sampling: unknown format");
 }
 
+Expected<std::unique_ptr<SampleReader>> SampleReader::openBytes(std::string bytes, SampleFormat format, const std::string& name) {
+    detail::InputFile file = detail::InputFile::fromBytes(name, std::move(bytes));
+    switch (format) {
+    case SampleFormat::Bin: return detail::openBinReader(std::move(file));
+    case SampleFormat::Npz: return detail::openNpzReader(std::move(file));
+    case SampleFormat::Ply: return detail::openPlyReader(std::move(file));
+    }
+    return makeError("sampling: unknown format");
+}
+
 Expected<SampleSet> readSamples(const fs::path& path, std::optional<SampleMetadata>* metadata) {
     auto reader = SampleReader::open(path);
     if (!reader) return reader.error();

@@ -71,6 +71,9 @@ protected:
 class SampleReader {
 public:
     static Expected<std::unique_ptr<SampleReader>> open(const std::filesystem::path& path);
+    // The same reader over a file's bytes already in memory (fuzzing, archives); `name` labels
+    // the errors as a path would.
+    static Expected<std::unique_ptr<SampleReader>> openBytes(std::string bytes, SampleFormat format, const std::string& name);
     virtual ~SampleReader();
 
     std::uint64_t rows() const { return m_rows; }
@@ -78,7 +81,8 @@ public:
     // Metadata when the file carries it (.npz, .ply written by sdfwb).
     const std::optional<SampleMetadata>& metadata() const { return m_metadata; }
 
-    // Reads rows [first, first + n) into the arrays (3n, n, 3n floats).
+    // Reads rows [first, first + n) into the arrays (3n, n, 3n floats); a range past rows() is
+    // an error.
     virtual Expected<void> read(std::uint64_t first, std::size_t n, float* positions, float* distances, float* gradients) = 0;
 
 protected:
