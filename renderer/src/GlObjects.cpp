@@ -1,10 +1,32 @@
 #include "GlObjects.h"
 
+#include <renderer/GlInfo.h>
 #include <shaders/DiagnosticParser.h>
+#include <core/Log.h>
+
+#include <atomic>
+#include <cstdio>
 
 #include <string>
 
 namespace sdfwb::renderer {
+
+namespace {
+std::atomic<long> g_liveObjects{0};
+}
+
+void countGlObject(int delta) { g_liveObjects += delta; }
+long liveGlObjects() { return g_liveObjects.load(); }
+
+void logGlErrors(const char* where) {
+    for (int i = 0; i < 8; ++i) {  // a lost context can report errors forever: stop after a few
+        GLenum error = glGetError();
+        if (error == GL_NO_ERROR) return;
+        char text[96];
+        std::snprintf(text, sizeof text, "GL error 0x%04X after %s", unsigned(error), where);
+        log::error("gl", text);
+    }
+}
 
 void deleteProgram(GLuint id) { glDeleteProgram(id); }
 void deleteShader(GLuint id) { glDeleteShader(id); }

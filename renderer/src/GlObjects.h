@@ -13,11 +13,14 @@
 
 namespace sdfwb::renderer {
 
+// Live names owned through GlName, process-wide (renderer::liveGlObjects() reads it).
+void countGlObject(int delta);
+
 template <void (*Delete)(GLuint)>
 class GlName {
 public:
     GlName() = default;
-    explicit GlName(GLuint id) : m_id(id) {}
+    explicit GlName(GLuint id) : m_id(id) { if (m_id) countGlObject(1); }
     ~GlName() { reset(); }
     GlName(GlName&& other) noexcept : m_id(std::exchange(other.m_id, 0)) {}
     GlName& operator=(GlName&& other) noexcept {
@@ -29,8 +32,17 @@ public:
 
     GLuint id() const { return m_id; }
     explicit operator bool() const { return m_id != 0; }
-    void reset() { if (m_id) Delete(m_id); m_id = 0; }
-    void release() { m_id = 0; }
+    void reset() {
+        if (m_id) {
+            Delete(m_id);
+            countGlObject(-1);
+        }
+        m_id = 0;
+    }
+    void release() {  // the context is gone, and the name with it
+        if (m_id) countGlObject(-1);
+        m_id = 0;
+    }
 
 private:
     GLuint m_id = 0;

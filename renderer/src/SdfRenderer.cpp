@@ -4,6 +4,7 @@
 
 #include <core/Log.h>
 #include <core/Paths.h>
+#include <renderer/GlInfo.h>
 #include <renderer/ImageIO.h>
 #include <shaders/DiagnosticParser.h>
 #include <shaders/ShaderComposer.h>
@@ -259,6 +260,7 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
         glUseProgram(0);
     }
     if (finish) glFinish();
+    logGlErrors("a frame");
     FrameStats stats;
     stats.cpuMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return stats;

@@ -52,7 +52,7 @@ std::vector<shaders::Diagnostic> ViewportWidget::setSdf(const shaders::PreparedS
     if (!shaders::hasErrors(diagnostics)) {
         m_currentSdf = std::make_unique<shaders::PreparedSdf>(sdf);
         m_needsProbe = true;
-        m_maxScale = 1.0f;
+        m_maxPixels = 0.0;
     }
     update();
     return diagnostics;
@@ -148,7 +148,7 @@ void ViewportWidget::initializeGL() {
         if (!shaders::hasErrors(diagnostics)) {
             m_currentSdf = std::move(m_pendingSdf);
             m_needsProbe = true;
-            m_maxScale = 1.0f;
+            m_maxPixels = 0.0;
         }
         m_pendingSdf.reset();
     }
@@ -160,14 +160,20 @@ void ViewportWidget::paintGL() {
     int width = int(std::lround(this->width() * ratio));
     int height = int(std::lround(this->height() * ratio));
     if (m_needsProbe && probeNewSdf(width, height)) return;
-    float scale = std::min(m_interacting ? m_scale : 1.0f, m_maxScale);
+    // The cap is a pixel count, so it holds after a resize (a 4K window gets a lower scale).
+    const float cap = m_maxPixels > 0.0 ? std::clamp(float(std::sqrt(m_maxPixels / (double(width) * height))), kProbeScale, 1.0f) : 1.0f;
+    float scale = std::min(m_interacting ? m_scale : 1.0f, cap);
     // finish: the status bar and the scale choice see what the frame really cost.
     renderer::FrameStats stats = m_renderer->renderScaled(width, height, scale, m_camera, m_time, true);
-    if (!m_interacting && stats.cpuMilliseconds > m_stallLimit) {
+    const double traced = double(width) * height * scale * scale;
+    const bool overLimit = !m_interacting && stats.cpuMilliseconds > m_stallLimit;
+    // The pixel budget follows the last full frame's cost per pixel (so a resize to 4K lowers the
+    // scale before the slow frame, not after it).
+    if (!m_interacting && stats.cpuMilliseconds > 0.0) m_maxPixels = traced * 0.8 * m_stallLimit / stats.cpuMilliseconds;
+    if (overLimit) {
         // A view that became expensive (camera, time, plane): cap the next frames.
-        m_maxScale = std::clamp(scale * float(std::sqrt(0.8 * m_stallLimit / stats.cpuMilliseconds)), kProbeScale, 1.0f);
         emit performanceWarning(tr("A full frame took %1 s: frames are drawn at %2 % resolution from now on").arg(stats.cpuMilliseconds / 1000.0, 0, 'f', 1)
-                                    .arg(int(m_maxScale * 100.0f)));
+                                    .arg(int(resolutionCap() * 100.0f)));
     }
     m_lastFrameMilliseconds = stats.cpuMilliseconds;
     m_lastScale = scale;
@@ -193,6 +199,13 @@ void ViewportWidget::paintGL() {
     emit frameRendered(stats.cpuMilliseconds, scale);
 }
 
+float ViewportWidget::resolutionCap() const {
+    if (m_maxPixels <= 0.0) return 1.0f;
+    const qreal ratio = devicePixelRatioF();
+    const double pixels = std::max(1.0, double(std::lround(width() * ratio)) * double(std::lround(height() * ratio)));
+    return std::clamp(float(std::sqrt(m_maxPixels / pixels)), kProbeScale, 1.0f);
+}
+
 bool ViewportWidget::probeNewSdf(int width, int height) {
     m_needsProbe = false;
     // 5 % of the side, 0.25 % of the pixels: cheap even for a shader that loops for long. The
@@ -214,7 +227,7 @@ bool ViewportWidget::probeNewSdf(int width, int height) {
         // Even the probe is over the limit: this SDF cannot be drawn interactively here.
         (void)m_renderer->setSdf(*m_lastGoodSdf);
         m_currentSdf.reset();
-        m_maxScale = 1.0f;
+        m_maxPixels = 0.0;
         emit performanceWarning(tr("The new SDF needs %1 s for a frame at 5 % resolution (a runaway loop?): the previous SDF is "
                                    "back on screen; fix the loop or render it with sdfwb --batch render")
                                     .arg(probe.cpuMilliseconds / 1000.0, 0, 'f', 1));
@@ -223,11 +236,11 @@ bool ViewportWidget::probeNewSdf(int width, int height) {
     }
     m_lastGoodSdf = std::move(m_currentSdf);
     if (estimate > m_stallLimit) {
-        m_maxScale = std::clamp(float(std::sqrt(0.8 * m_stallLimit / estimate)), kProbeScale, 1.0f);
+        m_maxPixels = double(width) * height * 0.8 * m_stallLimit / estimate;
         emit performanceWarning(tr("A full frame of this SDF would take about %1 s: drawn at %2 % resolution (screenshots and "
                                    "exports still render in full)")
                                     .arg(estimate / 1000.0, 0, 'f', 1)
-                                    .arg(int(m_maxScale * 100.0f)));
+                                    .arg(int(resolutionCap() * 100.0f)));
     }
     update();  // the real frame follows
     emit frameRendered(probe.cpuMilliseconds, kProbeScale);

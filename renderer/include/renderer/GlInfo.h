@@ -29,4 +29,11 @@ Expected<void> requireGl43(const GlInfo& info);
 // "llvmpipe (LLVM 15.0.6, 256 bits) / Mesa / 4.5 (Core Profile) Mesa 22.3.6"
 std::string describe(const GlInfo& info);
 
+// GL objects (programs, shaders, buffers, textures, framebuffers, vertex arrays) the renderer
+// holds right now, over all contexts: a count that keeps growing is a leak.
+long liveGlObjects();
+
+// Logs every pending glGetError() as an error in category "gl", naming `where`.
+void logGlErrors(const char* where);
+
 } // namespace sdfwb::renderer

@@ -62,7 +62,8 @@ public:
     // fractal), frames are capped at the resolution that fits, and if even the probe frame is
     // over it the previous SDF comes back. performanceWarning() says which.
     void setStallLimit(double milliseconds) { m_stallLimit = milliseconds; }
-    float resolutionCap() const { return m_maxScale; }
+    // The largest scale frames are drawn at now (1 without a cap).
+    float resolutionCap() const;
     double lastFrameMilliseconds() const { return m_lastFrameMilliseconds; }
     float lastFrameScale() const { return m_lastScale; }
     bool isInteracting() const { return m_interacting; }
@@ -108,7 +109,7 @@ private:
     std::unique_ptr<shaders::PreparedSdf> m_lastGoodSdf;  // passed its probe frame
     bool m_needsProbe = false;
     double m_stallLimit = 1500.0;
-    float m_maxScale = 1.0f;  // resolution cap from the probe or a slow full frame
+    double m_maxPixels = 0.0;  // pixels a frame may trace within the stall limit (0: no cap)
     renderer::ShadingSettings m_shading;
     renderer::TraceSettings m_trace;
     renderer::CuttingPlane m_plane;
