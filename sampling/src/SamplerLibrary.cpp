@@ -1,5 +1,6 @@
 #include <sampling/SamplerLibrary.h>
 
+#include <core/Paths.h>
 #include <core/Regex.h>
 #include <core/TextFile.h>
 #include <shaders/BuiltinShaders.h>
@@ -58,6 +59,11 @@ Expected<shaders::ShaderPiece> findSampler(const std::string& pattern, const std
     for (const fs::path& folder : folders) {
         fs::path candidate = folder / (pattern + ".glsl");
         if (!fs::is_regular_file(candidate, ec)) continue;
+        // A name looks only inside the sampler folders: a symlink out of them is refused (an
+        // explicit path, above, is the user's own choice).
+        if (!paths::isInsideRoots(candidate, {folder}))
+            return makeError("'" + pattern + "': " + candidate.string() + " leads outside the sampler folder " + folder.string() +
+                             " (a symlink?); refused");
         auto text = readTextFile(candidate);
         if (!text) return text.error();
         return checked({candidate.string(), std::move(*text)});

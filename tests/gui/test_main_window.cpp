@@ -22,6 +22,7 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include "common/NetworkSockets.h"
 #include <Qsci/qsciscintilla.h>
 #include <core/Log.h>
 #include <renderer/GlInfo.h>
@@ -448,6 +449,8 @@ TEST(Abuse, AMinuteOfSwitchingDockingResizingDialogsAndTyping) {
     EXPECT_TRUE(glErrors.empty()) << glErrors.size() << " GL errors, first: " << glErrors.front();
     EXPECT_LE(renderer::liveGlObjects(), baseline + 8) << "GL objects pile up";
     EXPECT_GT(foreground(last, kBackground), 1000) << "the torus is still drawn";
+    auto sockets = sdfwb::testing::networkSockets("self");
+    EXPECT_TRUE(sockets.empty()) << "the workbench opened a network socket: " << sockets.front();
     window.close();
 }
 

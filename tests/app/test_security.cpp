@@ -1,0 +1,102 @@
+// Security: sampler names stay inside their folders (symlinks included), job files run no
+// commands, and the batch path opens no network socket. (Include escapes: tests/shaders.)
+
+#include <sampling/SamplerLibrary.h>
+
+#include "common/NetworkSockets.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+using namespace sdfwb;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path freshFolder(const std::string& name) {
+    fs::path folder = fs::temp_directory_path() / ("sdfwb-security-" + name + "-" + std::to_string(::getpid()));
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    return folder;
+}
+
+int runSdfwb(const std::string& arguments, std::string* output = nullptr) {
+    FILE* pipe = popen(("env -u DISPLAY " + std::string(SDFWB_BINARY) + " " + arguments + " 2>&1").c_str(), "r");
+    char buffer[4096];
+    std::string text;
+    while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) text.append(buffer, n);
+    int status = pclose(pipe);
+    if (output) *output = text;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+} // namespace
+
+TEST(Security, SamplerNamesCannotLeaveTheirFolderThroughASymlink) {
+    fs::path root = freshFolder("samplers");
+    fs::create_directories(root / "samplers");
+    fs::create_directories(root / "elsewhere");
+    const char* sampler = "bool samplePosition(uint index, out vec3 position) { position = vec3(0.0); return true; }\n";
+    std::ofstream(root / "elsewhere" / "secret.glsl") << sampler;
+    std::ofstream(root / "samplers" / "mine.glsl") << sampler;
+    fs::create_symlink(root / "elsewhere" / "secret.glsl", root / "samplers" / "escape.glsl");
+    EXPECT_TRUE(sampling::findSampler("mine", {root / "samplers"}).hasValue());
+    auto escaped = sampling::findSampler("escape", {root / "samplers"});
+    ASSERT_FALSE(escaped.hasValue());
+    EXPECT_NE(escaped.error().message.find("outside the sampler folder"), std::string::npos) << escaped.error().message;
+    fs::remove_all(root);
+}
+
+TEST(Security, JobFilesRunNoCommands) {
+    fs::path folder = freshFolder("jobs");
+    const fs::path marker = folder / "marker";
+    const std::string lines[] = {"list $(touch " + marker.string() + ")", "list `touch " + marker.string() + "`",
+                                 "list; touch " + marker.string(), "list | touch " + marker.string(), "list && touch " + marker.string()};
+    for (const std::string& line : lines) {
+        fs::path job = folder / "job.txt";
+        std::ofstream(job) << line << "\n";
+        std::string output;
+        int code = runSdfwb("--batch " + job.string(), &output);
+        EXPECT_EQ(code, 2) << line << "\n" << output;  // the extra words are unknown arguments of `list`
+        EXPECT_NE(output.find("job.txt:1"), std::string::npos) << output;
+        EXPECT_FALSE(fs::exists(marker)) << "a job file ran a command: " << line;
+    }
+    fs::remove_all(folder);
+}
+
+TEST(Security, BatchRunsOpenNoNetworkSocket) {
+    // A sampling run long enough to look at its sockets while it works.
+    fs::path folder = freshFolder("sockets");
+    pid_t child = fork();
+    if (child == 0) {
+        unsetenv("DISPLAY");
+        execl(SDFWB_BINARY, SDFWB_BINARY, "--batch", "sample", "--sdf", "mandelbulb", "--pattern", "surface", "-n", "2000000", "-q", "--output",
+              (folder / "out.npz").c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+    auto sockets = sdfwb::testing::networkSockets(std::to_string(child));
+    kill(child, SIGTERM);
+    int status = 0;
+    waitpid(child, &status, 0);
+    EXPECT_TRUE(sockets.empty()) << sockets.front();
+    // And the binary does not link Qt's networking.
+    FILE* pipe = popen(("ldd " + std::string(SDFWB_BINARY)).c_str(), "r");
+    char buffer[8192];
+    std::string libraries;
+    while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) libraries.append(buffer, n);
+    pclose(pipe);
+    EXPECT_NE(libraries.find("libQt6Widgets"), std::string::npos) << "ldd output looks wrong:\n" << libraries;
+    // (libcurl and libssl come in through FFmpeg's and OpenImageIO's own dependencies, unused.)
+    EXPECT_EQ(libraries.find("libQt6Network"), std::string::npos);
+    fs::remove_all(folder);
+}
