@@ -115,6 +115,16 @@ Result runLimited(const std::vector<std::string>& arguments, int resource, rlim_
     return result;
 }
 
+// Hidden temporary files a writer left next to `target` (".full.npz.partial-*", ".full.png.*",
+// ".full.partial*.mp4", whatever the writer's pattern).
+bool temporariesNextTo(const fs::path& target) {
+    for (const auto& entry : fs::directory_iterator(target.parent_path())) {
+        const std::string name = entry.path().filename().string();
+        if (name.size() > 1 && name[0] == '.' && name.find(target.stem().string()) != std::string::npos) return true;
+    }
+    return false;
+}
+
 std::string readAll(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
@@ -135,7 +145,7 @@ TEST(ResourceLimits, DiskFullFailsCleanlyAndKeepsTheOldFile) {
         EXPECT_NE(r.output.find(target.string()), std::string::npos) << "the message names the file: " << r.output;
         EXPECT_NE(r.output.find("write failed"), std::string::npos) << r.output;
         EXPECT_TRUE(readAll(target) == "the previous results") << extension << ": the old file was replaced";
-        EXPECT_FALSE(partialFilesIn(out.parent_path())) << extension;
+        EXPECT_FALSE(temporariesNextTo(target)) << extension;
     }
     // A render too: the PNG writer fails, the old image stays.
     const fs::path image = scratch("full.png");
@@ -144,7 +154,16 @@ TEST(ResourceLimits, DiskFullFailsCleanlyAndKeepsTheOldFile) {
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find(image.string()), std::string::npos) << r.output;
     EXPECT_TRUE(readAll(image) == "the previous image") << "the old image was replaced (" << fs::file_size(image) << " bytes)";
-    EXPECT_FALSE(partialFilesIn(image.parent_path()));
+    EXPECT_FALSE(temporariesNextTo(image));
+    // And an MP4.
+    const fs::path video = scratch("full.mp4");
+    { std::ofstream(video) << "the previous video"; }
+    r = runLimited({"--batch", "animate", "--sdf", "torus", "--size", "320x240", "--seconds", "2", "--turntable", "--output", video.string()},
+                   RLIMIT_FSIZE, 20 * 1024);
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find(video.string()), std::string::npos) << r.output;
+    EXPECT_TRUE(readAll(video) == "the previous video");
+    EXPECT_FALSE(temporariesNextTo(video));
 }
 
 TEST(ResourceLimits, UnwritableOutputIsNamedBeforeAnyWork) {

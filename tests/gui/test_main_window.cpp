@@ -311,6 +311,8 @@ TEST(Viewport, StatusBarShowsTheFloat32PrecisionFloor) {
     far.farPlane = 2e4f;
     window.viewport()->setCamera(far);  // the next frame updates the readout
     EXPECT_TRUE(waitFor([&] { return label->text().contains("below float32 precision"); }, 10000)) << label->text().toStdString();
+    // SDFWB_SCREENSHOT_DIR=folder keeps a picture of the window to look at.
+    if (const char* folder = std::getenv("SDFWB_SCREENSHOT_DIR")) window.grab().save(QDir(folder).filePath("precision_floor.png"));
     window.viewport()->resetCamera();
     EXPECT_TRUE(waitFor([&] { return !label->text().contains("below"); }, 10000)) << label->text().toStdString();
     window.close();
