@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include <cstdio>
 #include <cstring>
@@ -77,6 +78,9 @@ void addOutputFlags(CLI::App& app, OutputOptions& output) {
 }
 
 using Arguments = std::vector<std::string>;
+
+// Run does the work; Check stops where the work would start (checkCommandLine, checkJobFile).
+enum class Mode { Run, Check };
 
 // Runs CLI11 on the arguments; returns an exit code when parsing ends the run (help or error).
 std::optional<int> parse(CLI::App& app, const std::string& context, Arguments arguments) {
@@ -151,7 +155,7 @@ std::optional<int> finishFrameOptions(RenderJob& job, const FrameOptions& option
     return std::nullopt;
 }
 
-int runRenderCommand(const Arguments& arguments) {
+int runRenderCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Sphere-trace an SDF into an image, without a display.", "sdfwb --batch render");
     RenderJob job;
     OutputOptions output;
@@ -161,11 +165,12 @@ int runRenderCommand(const Arguments& arguments) {
     addOutputFlags(app, output);
     if (auto exit = parse(app, "--batch render", arguments)) return *exit;
     if (auto exit = finishFrameOptions(job, options)) return *exit;
+    if (mode == Mode::Check) return kExitOk;
     if (output.quiet) log::setMinimumLevel(log::Level::Warning);
     return runRender(job, output);
 }
 
-int runAnimateCommand(const Arguments& arguments) {
+int runAnimateCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Render an MP4 (H.264) of an SDF: over time, as a turntable, or both.", "sdfwb --batch animate");
     AnimateJob job;
     OutputOptions output;
@@ -178,15 +183,17 @@ int runAnimateCommand(const Arguments& arguments) {
     addOutputFlags(app, output);
     if (auto exit = parse(app, "--batch animate", arguments)) return *exit;
     if (auto exit = finishFrameOptions(job.frame, options)) return *exit;
+    if (mode == Mode::Check) return kExitOk;
     if (output.quiet || output.json) log::setMinimumLevel(log::Level::Warning);
     return runAnimate(job, output);
 }
 
-int runListCommand(const Arguments& arguments) {
+int runListCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("List the dataset's SDFs.", "sdfwb --batch list");
     OutputOptions output;
     addOutputFlags(app, output);
     if (auto exit = parse(app, "--batch list", arguments)) return *exit;
+    if (mode == Mode::Check) return kExitOk;
     if (output.quiet || output.json) log::setMinimumLevel(log::Level::Warning);
     return runList(output);
 }
@@ -201,7 +208,7 @@ bool parseShard(const std::string& text, std::uint32_t& index, std::uint32_t& co
     return count > 0 && index < count;
 }
 
-int runSampleCommand(const Arguments& arguments) {
+int runSampleCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Sample an SDF: N rows of (position, distance, raw gradient).", "sdfwb --batch sample");
     SampleCommand command;
     OutputOptions output;
@@ -222,11 +229,12 @@ int runSampleCommand(const Arguments& arguments) {
         printError("--shard: expected K/COUNT with 0 <= K < COUNT, got '" + shard + "'");
         return kExitUsage;
     }
+    if (mode == Mode::Check) return kExitOk;
     if (output.quiet || output.json) log::setMinimumLevel(log::Level::Warning);
     return runSample(command, output);
 }
 
-int runMergeCommand(const Arguments& arguments) {
+int runMergeCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Join shard files (from --shard K/COUNT) into the file the single run writes.", "sdfwb --batch merge");
     std::string outputFile, format;
     std::vector<std::string> parts;
@@ -236,11 +244,12 @@ int runMergeCommand(const Arguments& arguments) {
     app.add_option("parts", parts, "shard files (.npz/.ply are ordered by their metadata, .bin as given)")->required();
     addOutputFlags(app, output);
     if (auto exit = parse(app, "--batch merge", arguments)) return *exit;
+    if (mode == Mode::Check) return kExitOk;
     if (output.quiet || output.json) log::setMinimumLevel(log::Level::Warning);
     return runMerge(outputFile, format, parts, output);
 }
 
-int runAuditCommand(const Arguments& arguments) {
+int runAuditCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Analyse an SDF's field: exact, conservative, non-conservative, truncated, discontinuous or NaN?", "sdfwb --batch audit");
     AuditCommand command;
     OutputOptions output;
@@ -263,11 +272,12 @@ int runAuditCommand(const Arguments& arguments) {
         }
         command.plane = true;
     }
+    if (mode == Mode::Check) return kExitOk;
     if (output.quiet || output.json) log::setMinimumLevel(log::Level::Warning);
     return runAudit(command, output);
 }
 
-int runBenchCommand(const Arguments& arguments) {
+int runBenchCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Measure error against run time (sphere tracer, surface/near samplers, gradients, audit) on this "
                  "machine and write a report: benchmarks.md, CSV tables and plots.",
                  "sdfwb --batch bench");
@@ -280,11 +290,12 @@ int runBenchCommand(const Arguments& arguments) {
     app.add_flag("--no-plots", command.noPlots, "write the CSV tables and benchmarks.md without running the plotting script");
     addOutputFlags(app, output);
     if (auto exit = parse(app, "--batch bench", arguments)) return *exit;
+    if (mode == Mode::Check) return kExitOk;
     if (output.quiet || output.json) log::setMinimumLevel(log::Level::Warning);
     return runBench(command, output);
 }
 
-int runBatchCommand(const std::string& command, const Arguments& arguments);
+int runBatchCommand(const std::string& command, const Arguments& arguments, Mode mode);
 
 // Splits a job-file line into words: whitespace separates, '...' and "..." quote, \ escapes,
 // '#' at the start of a word begins a comment. Nothing is expanded or executed.
@@ -324,12 +335,9 @@ std::optional<Arguments> splitWords(const std::string& line, std::string& error)
     return words;
 }
 
-int runJobFile(const std::string& path) {
-    std::ifstream file(path);
-    if (!file) {
-        printError("'" + path + "': cannot read the job file");
-        return kExitUsage;
-    }
+// Runs (or checks) the job file `text`; `name` labels the messages.
+int runJobText(const std::string& text, const std::string& name, Mode mode) {
+    std::istringstream file(text);
     // Check every line before running any, so a typo on line 9 does not waste lines 1-8.
     std::vector<std::pair<int, Arguments>> steps;
     std::string line;
@@ -340,87 +348,108 @@ int runJobFile(const std::string& path) {
         std::string error;
         auto words = splitWords(line, error);
         if (!words) {
-            printError(path + ":" + std::to_string(lineNumber) + ": " + error);
+            printError(name + ":" + std::to_string(lineNumber) + ": " + error);
             return kExitUsage;
         }
         if (words->empty()) continue;
         if (std::find(commands.begin(), commands.end(), words->front()) == commands.end()) {
-            printError(path + ":" + std::to_string(lineNumber) + ": unknown command '" + words->front() + "' (render, animate, sample, merge, audit, list, bench)");
+            printError(name + ":" + std::to_string(lineNumber) + ": unknown command '" + words->front() + "' (render, animate, sample, merge, audit, list, bench)");
             return kExitUsage;
         }
         steps.emplace_back(lineNumber, std::move(*words));
     }
     if (steps.empty()) {
-        printError(path + ": the job file has no steps");
+        printError(name + ": the job file has no steps");
         return kExitUsage;
     }
     for (const auto& [number, words] : steps) {
         Arguments arguments(words.begin() + 1, words.end());
-        int exitCode = runBatchCommand(words.front(), arguments);
+        int exitCode = runBatchCommand(words.front(), arguments, mode);
         if (exitCode != kExitOk) {
-            printError(path + ":" + std::to_string(number) + ": step '" + words.front() + "' failed (exit code " + std::to_string(exitCode) + "); later steps not run");
+            printError(name + ":" + std::to_string(number) + ": step '" + words.front() + "' failed (exit code " + std::to_string(exitCode) + "); later steps not run");
             return exitCode;
         }
     }
     return kExitOk;
 }
 
-int runBatchCommand(const std::string& command, const Arguments& arguments) {
-    if (command == "render") return runRenderCommand(arguments);
-    if (command == "animate") return runAnimateCommand(arguments);
-    if (command == "sample") return runSampleCommand(arguments);
-    if (command == "merge") return runMergeCommand(arguments);
-    if (command == "audit") return runAuditCommand(arguments);
-    if (command == "list") return runListCommand(arguments);
-    if (command == "bench") return runBenchCommand(arguments);
+int runJobFile(const std::string& path, Mode mode) {
+    std::ifstream file(path, std::ios::binary);
+    if (!file) {
+        printError("'" + path + "': cannot read the job file");
+        return kExitUsage;
+    }
+    std::ostringstream text;
+    text << file.rdbuf();
+    return runJobText(text.str(), path, mode);
+}
+
+int runBatchCommand(const std::string& command, const Arguments& arguments, Mode mode) {
+    if (command == "render") return runRenderCommand(arguments, mode);
+    if (command == "animate") return runAnimateCommand(arguments, mode);
+    if (command == "sample") return runSampleCommand(arguments, mode);
+    if (command == "merge") return runMergeCommand(arguments, mode);
+    if (command == "audit") return runAuditCommand(arguments, mode);
+    if (command == "list") return runListCommand(arguments, mode);
+    if (command == "bench") return runBenchCommand(arguments, mode);
     printError("--batch: unknown command '" + command + "' (render, animate, sample, merge, audit, list, bench, or a job file); see sdfwb --help");
     return kExitUsage;
 }
 
-} // namespace
-
-std::optional<int> runCommandLine(int argc, char** argv) {
-    if (argc < 2) return std::nullopt;
-    const std::string first = argv[1];
+// `arguments` are argv[1..].
+std::optional<int> commandLine(const Arguments& arguments, Mode mode) {
+    if (arguments.empty()) return std::nullopt;
+    const std::string& first = arguments[0];
     if (first == "--help" || first == "-h") { std::printf("%s", kOverview); return kExitOk; }
     if (first == "--version") { std::printf("sdfwb %s\n", SDFWB_VERSION); return kExitOk; }
     if (first == "--batch") {
-        if (argc < 3) { printError("--batch: missing command (render, animate, sample, merge, audit, list, bench) or job file; see sdfwb --help"); return kExitUsage; }
-        const std::string command = argv[2];
+        if (arguments.size() < 2) { printError("--batch: missing command (render, animate, sample, merge, audit, list, bench) or job file; see sdfwb --help"); return kExitUsage; }
+        const std::string& command = arguments[1];
         if (command == "--help" || command == "-h") { std::printf("%s", kOverview); return kExitOk; }
-        Arguments arguments(argv + 3, argv + argc);
+        const Arguments rest(arguments.begin() + 2, arguments.end());
         const std::vector<std::string> commands = {"render", "animate", "sample", "merge", "audit", "list", "bench"};
         std::error_code ec;
         if (std::find(commands.begin(), commands.end(), command) == commands.end() && std::filesystem::is_regular_file(command, ec)) {
-            if (!arguments.empty()) { printError("--batch " + command + ": a job file takes no further arguments"); return kExitUsage; }
-            return runJobFile(command);
+            if (!rest.empty()) { printError("--batch " + command + ": a job file takes no further arguments"); return kExitUsage; }
+            return runJobFile(command, mode);
         }
-        return runBatchCommand(command, arguments);
+        return runBatchCommand(command, rest, mode);
     }
     if (first == "--sample") {
         // The paper's interface: sdfwb --sample <Pattern> <N> <SDF> <outfile>
-        if (argc != 6) { printError("--sample: expected <Pattern> <N> <SDF> <outfile>; see sdfwb --help"); return kExitUsage; }
+        if (arguments.size() != 5) { printError("--sample: expected <Pattern> <N> <SDF> <outfile>; see sdfwb --help"); return kExitUsage; }
         SampleCommand command;
-        command.pattern = argv[2];
-        command.sdf = argv[4];
-        command.output = argv[5];
+        command.pattern = arguments[1];
+        command.sdf = arguments[3];
+        command.output = arguments[4];
         static const std::regex digits(R"(^\d{1,19}$)", kLinearRegex);
-        if (!std::regex_match(std::string(argv[3]), digits)) { printError("--sample: <N> must be a positive integer, got '" + std::string(argv[3]) + "'"); return kExitUsage; }
-        command.count = std::stoull(argv[3]);
+        if (!std::regex_match(arguments[2], digits)) { printError("--sample: <N> must be a positive integer, got '" + arguments[2] + "'"); return kExitUsage; }
+        command.count = std::stoull(arguments[2]);
         // The original wrote .bin whatever the name; keep that unless the name asks for npz/ply.
         std::string extension = std::filesystem::path(command.output).extension().string();
         if (extension != ".npz" && extension != ".ply") command.format = "bin";
+        if (mode == Mode::Check) return kExitOk;
         return runSample(command, OutputOptions{});
     }
     if (first.rfind("-", 0) == 0) {
         printError("unknown option '" + first + "'; see sdfwb --help");
         return kExitUsage;
     }
-    if (argc > 2) {
-        printError("unexpected argument '" + std::string(argv[2]) + "': the workbench opens one file; see sdfwb --help");
+    if (arguments.size() > 1) {
+        printError("unexpected argument '" + arguments[1] + "': the workbench opens one file; see sdfwb --help");
         return kExitUsage;
     }
     return std::nullopt;  // the workbench, on argv[1]
 }
+
+} // namespace
+
+std::optional<int> runCommandLine(int argc, char** argv) {
+    return commandLine(Arguments(argv + std::min(argc, 1), argv + argc), Mode::Run);
+}
+
+std::optional<int> checkCommandLine(const std::vector<std::string>& arguments) { return commandLine(arguments, Mode::Check); }
+
+int checkJobFile(const std::string& text, const std::string& name) { return runJobText(text, name, Mode::Check); }
 
 } // namespace sdfwb::app
