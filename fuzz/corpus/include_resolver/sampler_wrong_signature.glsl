@@ -1,0 +1,1 @@
+/* not a sampler */ bool samplePosition(int index, out vec3 position) { return false; }

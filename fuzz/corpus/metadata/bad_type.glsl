@@ -1,0 +1,5 @@
+/* sdfwb
+name: X
+category: Misc
+type: exactish
+*/

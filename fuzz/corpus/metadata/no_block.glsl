@@ -1,0 +1,1 @@
+float sdf(vec3 p) { return length(p) - 1.0; }

@@ -1,0 +1,4 @@
+/* sdfwb
+name: X
+name: Y
+*/

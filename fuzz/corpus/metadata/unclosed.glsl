@@ -1,0 +1,3 @@
+/* sdfwb
+name: X
+category: Misc
