@@ -74,13 +74,14 @@ shaders::PreparedSdf prepare(const std::string& sdf) {
 py::array_t<float> floatArray(std::vector<py::ssize_t> shape) { return py::array_t<float>(shape); }
 
 py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_t n, std::uint64_t seed, float time, float gradientStep,
-                std::uint32_t chunk) {
+                std::uint32_t chunk, float surfaceTolerance) {
     sampling::SamplingJob job;
     job.count = n;
     job.seed = seed;
     job.time = time;
     job.gradientStep = gradientStep;
     job.chunkSize = chunk;
+    job.surfaceTolerance = surfaceTolerance;
     if (auto ok = sampling::validate(job); !ok) throw py::value_error(ok.error().message);
     shaders::PreparedSdf prepared = prepare(sdf);
     auto sampler = sampling::findSampler(pattern, sampling::samplerFolders());
@@ -235,10 +236,11 @@ PYBIND11_MODULE(sdfwb, m) {
     m.doc() = "sdfwb: sample, audit and load signed distance functions written in GLSL (headless, EGL).";
     m.attr("__version__") = SDFWB_VERSION;
     m.def("sample", &sample, py::arg("sdf"), py::arg("pattern"), py::arg("n"), py::arg("seed") = 0, py::arg("time") = 0.0f,
-          py::arg("gradient_step") = 1e-3f, py::arg("chunk") = 1u << 18,
+          py::arg("gradient_step") = 1e-3f, py::arg("chunk") = 1u << 18, py::arg("surface_tolerance") = 1e-5f,
           "Samples `n` points of `sdf` (dataset name, path or GLSL source) with `pattern`. Returns a dict of float32 arrays\n"
           "position (n,3), distance (n,), gradient (n,3) (raw, not normalised) plus bad_rows and seconds. Same seed, same\n"
-          "values as `sdfwb --batch sample`. The GIL is released while sampling.");
+          "values as `sdfwb --batch sample`. surface_tolerance: |f| at which the rays of surface/near/metropolis stop\n"
+          "(accuracy against time; see docs/benchmarks.md). The GIL is released while sampling.");
     m.def("load", &load, py::arg("path"), "Reads a .bin, .npz or .ply sample file into a dict of arrays (and its metadata).");
     m.def("save", &save, py::arg("path"), py::arg("position"), py::arg("distance"), py::arg("gradient"), py::arg("format") = "",
           py::arg("sdf") = "", py::arg("pattern") = "", py::arg("seed") = 0, py::arg("time") = 0.0f,

@@ -145,3 +145,17 @@ def test_audit_and_list():
     entries = sdfwb.list_sdfs()
     assert any(e["name"] == "Torus" for e in entries)
     assert {"name", "category", "declared_type", "animated", "path"} <= set(entries[0])
+
+
+def test_surface_tolerance_trades_accuracy_for_time():
+    # Sphere of radius 0.8 (dataset "sphere"): the exact distance of a surface sample is | |p| - 0.8 |.
+    errors = {}
+    for tolerance in (1e-2, 1e-5):
+        rows = sdfwb.sample("sphere", "surface", 4096, seed=3, surface_tolerance=tolerance)
+        assert rows["bad_rows"] == 0
+        error = np.abs(np.linalg.norm(rows["position"].astype(np.float64), axis=1) - 0.8)
+        assert error.max() <= tolerance * 1.01 + 1e-6, (tolerance, error.max())
+        errors[tolerance] = np.median(error)
+    assert errors[1e-5] < errors[1e-2] / 100
+    with pytest.raises(ValueError, match="surface-tolerance"):
+        sdfwb.sample("sphere", "surface", 16, surface_tolerance=0.0)

@@ -93,6 +93,7 @@ Expected<void> validate(const SamplingJob& job) {
         return makeError("--shard: " + std::to_string(job.shardIndex) + "/" + std::to_string(job.shardCount) + " is not a slice (0 <= K < COUNT)");
     if (job.chunkSize == 0) return makeError("--chunk: must be at least 1");
     if (!(job.gradientStep > 0.0f) || !std::isfinite(job.gradientStep)) return makeError("--gradient-step: must be positive");
+    if (!(job.surfaceTolerance > 0.0f) || !std::isfinite(job.surfaceTolerance)) return makeError("--surface-tolerance: must be positive");
     return {};
 }
 
