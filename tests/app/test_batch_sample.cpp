@@ -6,6 +6,7 @@
 #include <array>
 #include <chrono>
 #include <csignal>
+#include <functional>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -56,11 +57,12 @@ bool partialFilesIn(const fs::path& folder) {
     return false;
 }
 
-// Runs the binary directly (no shell) and returns its exit status and peak resident memory.
-std::pair<int, long> runMeasured(const std::vector<std::string>& arguments, int interruptAfterMilliseconds = -1) {
+// Starts the binary directly (no shell, no DISPLAY); `prepare` runs in the child before exec.
+pid_t spawnSdfwb(const std::vector<std::string>& arguments, const std::function<void()>& prepare) {
     pid_t child = fork();
     if (child == 0) {
         unsetenv("DISPLAY");
+        prepare();
         std::vector<char*> argv;
         std::string binary = SDFWB_BINARY;
         argv.push_back(binary.data());
@@ -70,6 +72,12 @@ std::pair<int, long> runMeasured(const std::vector<std::string>& arguments, int 
         execv(binary.c_str(), argv.data());
         _exit(127);
     }
+    return child;
+}
+
+// Runs the binary directly (no shell) and returns its exit status and peak resident memory.
+std::pair<int, long> runMeasured(const std::vector<std::string>& arguments, int interruptAfterMilliseconds = -1) {
+    pid_t child = spawnSdfwb(arguments, [] {});
     if (interruptAfterMilliseconds >= 0) {
         std::this_thread::sleep_for(std::chrono::milliseconds(interruptAfterMilliseconds));
         kill(child, SIGINT);
@@ -85,24 +93,14 @@ std::pair<int, long> runMeasured(const std::vector<std::string>& arguments, int 
 Result runLimited(const std::vector<std::string>& arguments, int resource, rlim_t limit) {
     int fds[2];
     if (pipe(fds) != 0) return {};
-    pid_t child = fork();
-    if (child == 0) {
+    pid_t child = spawnSdfwb(arguments, [&] {
         dup2(fds[1], 1);
         dup2(fds[1], 2);
         close(fds[0]);
-        unsetenv("DISPLAY");
         signal(SIGXFSZ, SIG_IGN);
         struct rlimit value {limit, limit};
         setrlimit(resource, &value);
-        std::vector<char*> argv;
-        std::string binary = SDFWB_BINARY;
-        argv.push_back(binary.data());
-        std::vector<std::string> copy = arguments;
-        for (std::string& a : copy) argv.push_back(a.data());
-        argv.push_back(nullptr);
-        execv(binary.c_str(), argv.data());
-        _exit(127);
-    }
+    });
     close(fds[1]);
     Result result;
     std::array<char, 4096> buffer;

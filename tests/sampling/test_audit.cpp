@@ -5,6 +5,7 @@
 #include <sampling/FieldAudit.h>
 
 #include "GlTestContext.h"
+#include "common/SourceSdfs.h"
 
 #include <gtest/gtest.h>
 
@@ -19,18 +20,9 @@ namespace {
 class AuditTest : public sdfwb::testing::GlTest {
 protected:
 
-    static shaders::PreparedSdf load(const std::string& relative) {
-        shaders::IncludeOptions options;
-        options.libraryRoots = {fs::path(SDFWB_SOURCE_DIR) / "shaders" / "lib", fs::path(SDFWB_SOURCE_DIR) / "dataset"};
-        return shaders::prepareSdfFile(fs::path(SDFWB_SOURCE_DIR) / relative, options);
-    }
+    static shaders::PreparedSdf load(const std::string& relative) { return sdfwb::testing::loadSourceSdf(relative); }
     static sampling::AuditReport audit(const std::string& relative, std::uint64_t samples = 20000) {
-        sampling::AuditOptions options;
-        options.samples = samples;
-        options.convergence = false;
-        auto report = sampling::auditField(load(relative), options, {});
-        EXPECT_TRUE(report.hasValue()) << (report ? "" : report.error().message);
-        return report ? *report : sampling::AuditReport{};
+        return sdfwb::testing::auditSourceSdf(relative, samples);
     }
 };
 

@@ -12,6 +12,7 @@
 #include <shaders/SdfSource.h>
 
 #include "GlTestContext.h"
+#include "common/SourceSdfs.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -38,13 +39,7 @@ struct TraceSummary {
 
 class StabilityTest : public sdfwb::testing::GlTest {
 protected:
-    static shaders::PreparedSdf load(const std::string& relative) {
-        shaders::IncludeOptions options;
-        options.libraryRoots = {fs::path(SDFWB_SOURCE_DIR) / "shaders" / "lib", fs::path(SDFWB_SOURCE_DIR) / "dataset"};
-        auto sdf = shaders::prepareSdfFile(fs::path(SDFWB_SOURCE_DIR) / relative, options);
-        EXPECT_TRUE(sdf.ok()) << relative;
-        return sdf;
-    }
+    static shaders::PreparedSdf load(const std::string& relative) { return sdfwb::testing::loadSourceSdf(relative); }
 
     static renderer::Camera frontCamera(float distance = 3.0f) {
         renderer::Camera camera;
@@ -157,13 +152,8 @@ protected:
         return run;
     }
 
-    static sampling::AuditReport audit(const std::string& file, std::uint64_t samples = 20000) {
-        sampling::AuditOptions options;
-        options.samples = samples;
-        options.convergence = false;
-        auto report = sampling::auditField(load(file), options, {});
-        EXPECT_TRUE(report.hasValue()) << (report ? "" : report.error().message);
-        return report ? *report : sampling::AuditReport{};
+    static sampling::AuditReport audit(const std::string& relative, std::uint64_t samples = 20000) {
+        return sdfwb::testing::auditSourceSdf(relative, samples);
     }
 };
 
