@@ -15,6 +15,7 @@
 #include <sampling/Sampler.h>
 #include <sampling/SamplerLibrary.h>
 
+#include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include <atomic>
@@ -124,6 +125,21 @@ int runRender(const RenderJob& job, const OutputOptions& output) {
     }
     auto context = renderer::HeadlessContext::create();
     if (!context) { printError(context.error().message); return kExitNoGl; }
+    if (auto floor = renderer::precisionFloor(job.camera, job.trace.epsilonScale, job.height); floor.exceeded) {
+        char text[256];
+        std::snprintf(text, sizeof text,
+                      "below float32 precision: positions are known to %.2g at this camera distance, the hit tolerance is %.2g (expect "
+                      "surface noise; bring the camera nearer the origin or widen --fov)",
+                      double(floor.positionFloor), double(floor.hitTolerance));
+        log::warning("render", text);
+    }
+    if (const float distance = glm::length(job.camera.position); distance - 1.05f * std::sqrt(3.0f) > job.camera.farPlane) {
+        char text[256];
+        std::snprintf(text, sizeof text,
+                      "the camera is %.4g from the origin, beyond the far plane (%.4g): the [-1,1]^3 box is out of view, nothing will be drawn",
+                      double(distance), double(job.camera.farPlane));
+        log::warning("render", text);
+    }
 
     renderer::SdfRenderer sdfRenderer;
     (void)sdfRenderer.setTrace(job.trace);
