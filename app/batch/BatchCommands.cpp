@@ -224,6 +224,7 @@ int runSample(const SampleCommand& command, const OutputOptions& output) {
     job.shardCount = command.shardCount;
     job.chunkSize = command.chunkSize;
     job.gradientStep = command.gradientStep;
+    job.surfaceTolerance = command.surfaceTolerance;
     if (auto ok = sampling::validate(job); !ok) { printError(ok.error().message); return kExitUsage; }
     if (job.rows() > sampling::maxRows(*format)) {
         printError("-n: " + std::to_string(job.rows()) + " rows exceed the ." + sampling::formatName(*format) + " limit of " +

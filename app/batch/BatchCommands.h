@@ -60,6 +60,7 @@ struct SampleCommand {
     std::uint32_t shardCount = 1;
     std::uint32_t chunkSize = 1u << 18;
     float gradientStep = 1e-3f;
+    float surfaceTolerance = 1e-5f;  // |f| at which surface/near/metropolis rays stop
 };
 
 int runSample(const SampleCommand& command, const OutputOptions& output);

@@ -223,6 +223,9 @@ int runSampleCommand(const Arguments& arguments, Mode mode) {
     app.add_option("--shard", shard, "K/COUNT: write only slice K (0-based) of COUNT equal slices of the N-sample run");
     app.add_option("--chunk", command.chunkSize, "samples per GPU dispatch (memory: 28 bytes each)")->capture_default_str()->check(CLI::Range(1u, 4194240u));
     app.add_option("--gradient-step", command.gradientStep, "central-difference step of the written gradient")->capture_default_str();
+    app.add_option("--surface-tolerance", command.surfaceTolerance,
+                   "|f| at which the rays of surface, near and metropolis stop (accuracy against time: docs/benchmarks.md)")
+        ->capture_default_str();
     addOutputFlags(app, output);
     if (auto exit = parse(app, "--batch sample", arguments)) return *exit;
     if (!shard.empty() && !parseShard(shard, command.shardIndex, command.shardCount)) {

@@ -223,7 +223,8 @@ TEST(BatchSample, BadArgumentsAreNamedAndWriteNothing) {
                  {"--sdf sphere --pattern rand -n 10 --output " + out.string() + " --format hdf5", "--format"},
                  {"--sdf sphere --pattern rand -n 10 --output " + scratch("bad.xyz").string(), ".bin, .npz or .ply"},
                  {"--sdf nowhere --pattern rand -n 10 --output " + out.string(), "'nowhere'"},
-                 {"--sdf sphere --pattern rand -n 5000000000 --output " + scratch("big.bin").string(), "limit"}};
+                 {"--sdf sphere --pattern rand -n 5000000000 --output " + scratch("big.bin").string(), "limit"},
+                 {"--sdf sphere --pattern surface -n 10 --surface-tolerance 0 --output " + out.string(), "--surface-tolerance"}};
     for (const Case& c : cases) {
         Result r = run("--batch sample " + c.arguments);
         EXPECT_EQ(r.exitCode, 2) << c.arguments << "\n" << r.output;
