@@ -106,7 +106,10 @@ private:
         for (std::size_t i = 0; i < lines.size(); ++i) {
             const std::string line(lines[i]);
             const int lineNumber = int(i) + 1;
-            bool directiveAllowed = startsOutsideComment(lines[i], inBlockComment);
+            // Directives start with '#' after blanks; other lines skip the four regexes.
+            const std::size_t firstCharacter = line.find_first_not_of(" \t\v\f\r");
+            bool directiveAllowed = startsOutsideComment(lines[i], inBlockComment) && firstCharacter != std::string::npos &&
+                                    line[firstCharacter] == '#';
             std::smatch match;
             if (directiveAllowed && std::regex_match(line, match, includeQuoted)) {
                 int column = int(line.find('"')) + 1;

@@ -11,6 +11,23 @@
 #include <string_view>
 
 namespace sdfwb::shaders {
+namespace {
+
+bool isWordCharacter(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+}
+
+// What `\s` matches.
+bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r'; }
+
+// A regex match that starts exactly at `at`, seeing the character before it for `\b`.
+bool matchAt(const std::string& text, std::size_t at, const std::regex& pattern, std::smatch& match) {
+    auto flags = std::regex_constants::match_continuous;
+    if (at > 0) flags |= std::regex_constants::match_prev_avail;
+    return std::regex_search(text.begin() + std::ptrdiff_t(at), text.end(), match, pattern, flags);
+}
+
+} // namespace
 
 std::string stripComments(const std::string& text) {
     std::string out = text;
@@ -41,10 +58,18 @@ SdfSignature detectSignature(const std::string& stripped) {
     static const std::regex definition(
         R"(\bfloat\s+sdf\s*\(\s*((?:in\s+|const\s+|highp\s+|mediump\s+)*)(vec3|Point3|Vector3|float3)\s+\w+\s*)"
         R"((,\s*((?:in\s+|const\s+|highp\s+)*)float\s+\w+\s*)?\)\s*\{)", kLinearRegex);
+    // Matched only where `float` + blanks + `sdf` starts: searching from every position of a long
+    // text was the slow part of preparing one (1.8 s for 10 MB, 3.7 s with the linear executor).
     SdfSignature signature;
-    for (auto it = std::sregex_iterator(stripped.begin(), stripped.end(), definition); it != std::sregex_iterator(); ++it) {
+    std::smatch match;
+    for (std::size_t at = stripped.find("float"); at != std::string::npos; at = stripped.find("float", at + 5)) {
+        if (at > 0 && isWordCharacter(stripped[at - 1])) continue;
+        std::size_t name = at + 5;
+        while (name < stripped.size() && isBlank(stripped[name])) ++name;
+        if (name == at + 5 || stripped.compare(name, 3, "sdf") != 0) continue;
+        if (!matchAt(stripped, at, definition, match)) continue;
         signature.found = true;
-        if ((*it)[3].matched) signature.animated = true;
+        if (match[3].matched) signature.animated = true;
     }
     return signature;
 }
@@ -60,14 +85,6 @@ std::vector<std::string> functionSignatures(const std::string& text) {
     }
     return signatures;
 }
-
-namespace {
-
-bool isWordCharacter(char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
-}
-
-} // namespace
 
 bool CompatNeeds::usesSceneTime() const {
     return std::find(symbols.begin(), symbols.end(), "g3d_SceneTime") != symbols.end();
@@ -115,11 +132,17 @@ Diagnostic missingSdfDiagnostic(const ResolvedSource& source) {
     const std::string& root = source.map.files.front().text;
     std::string stripped = stripComments(root);
     static const std::regex anySdf(R"(\b\w+\s+sdf\s*\([^)]*\))", kLinearRegex);
+    // The first match, tried only at the word before each blank-preceded `sdf` (see detectSignature).
     std::smatch match;
-    if (std::regex_search(stripped, match, anySdf)) {
-        int line = 1 + int(std::count(stripped.begin(), stripped.begin() + match.position(0), '\n'));
-        std::size_t lineStart = stripped.rfind('\n', std::size_t(match.position(0)));
-        int column = int(std::size_t(match.position(0)) - (lineStart == std::string::npos ? 0 : lineStart + 1)) + 1;
+    for (std::size_t at = stripped.find("sdf"); at != std::string::npos; at = stripped.find("sdf", at + 3)) {
+        std::size_t start = at;
+        while (start > 0 && isBlank(stripped[start - 1])) --start;
+        if (start == at || start == 0 || !isWordCharacter(stripped[start - 1])) continue;
+        while (start > 0 && isWordCharacter(stripped[start - 1])) --start;
+        if (!matchAt(stripped, start, anySdf, match)) continue;
+        int line = 1 + int(std::count(stripped.begin(), stripped.begin() + std::ptrdiff_t(start), '\n'));
+        std::size_t lineStart = stripped.rfind('\n', start);
+        int column = int(start - (lineStart == std::string::npos ? 0 : lineStart + 1)) + 1;
         return {source.map.files.front().name, line, column, Severity::Error,
                 "sdf() must be declared as `float sdf(vec3 p)` or `float sdf(vec3 p, float time)`; found `" + match.str(0) + "`"};
     }
