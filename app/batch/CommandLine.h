@@ -15,9 +15,10 @@ std::optional<int> runCommandLine(int argc, char** argv);
 // Parse-only twins of runCommandLine and of `--batch JOBFILE`, for tests and fuzzing: the same
 // parsing and validation, with the same messages and exit codes, stopping where the work would
 // start. They run no command: no GL, no dataset scan, no file written (a `--batch JOBFILE`
-// argument is still read). kExitOk means the real run would go on to the work; the work's own
-// checks (does the SDF exist, is the output folder there) are not made. Not thread-safe: the
-// messages go to stdout/stderr as in the real run.
+// argument is still read). kExitOk means the real run would go on to the run*() functions of
+// BatchCommands.h, whose own checks are not made: value ranges such as --fps or --samples,
+// whether the SDF and the output folder exist. Not thread-safe: the messages go to
+// stdout/stderr as in the real run.
 // `arguments` are argv[1..], without the program name.
 std::optional<int> checkCommandLine(const std::vector<std::string>& arguments);
 // `text` is a job file's content; `name` labels the messages as its path would.
