@@ -8,6 +8,8 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -71,6 +73,20 @@ std::optional<glm::vec3> parseVec3(const std::string& text) {
     return glm::vec3(x, y, z);
 }
 
+// Numbers that must be finite (times) or positive and finite (steps, tolerances): checked while
+// parsing, so `nan`, `inf` and 0 are usage errors before any work (and in checkCommandLine).
+CLI::Validator numberCheck(bool positive) {
+    return CLI::Validator(
+        [positive](std::string& text) -> std::string {
+            char* end = nullptr;
+            const double value = std::strtod(text.c_str(), &end);
+            if (end == text.c_str() || *end != '\0' || !std::isfinite(value)) return "expected a finite number, got '" + text + "'";
+            if (positive && !(value > 0.0)) return "must be positive, got '" + text + "'";
+            return {};
+        },
+        positive ? "POSITIVE" : "FINITE");
+}
+
 void addOutputFlags(CLI::App& app, OutputOptions& output) {
     app.add_flag("--quiet,-q", output.quiet, "print errors only");
     app.add_flag("--json", output.json, "print a machine-readable report on stdout");
@@ -106,7 +122,7 @@ struct FrameOptions {
 void addFrameOptions(CLI::App& app, RenderJob& job, FrameOptions& options) {
     app.add_option("--sdf", job.sdf, "dataset name or path to a .glsl file")->required();
     app.add_option("--size", options.size, "image size WxH")->capture_default_str();
-    app.add_option("--time", job.time, "time in seconds for animated SDFs (start time for animate)")->capture_default_str();
+    app.add_option("--time", job.time, "time in seconds for animated SDFs (start time for animate)")->capture_default_str()->check(numberCheck(false));
     app.add_option("--shading", options.shading, "shading mode: " + renderer::shadingModeNames())->capture_default_str();
     app.add_flag("--ao", job.shading.ambientOcclusion, "ambient occlusion");
     app.add_option("--matcap", job.shading.matcap, "matcap for --shading matcap: clay, chrome, jade, wax, or an image path")->capture_default_str();
@@ -177,8 +193,8 @@ int runAnimateCommand(const Arguments& arguments, Mode mode) {
     FrameOptions options;
     addFrameOptions(app, job.frame, options);
     app.add_option("--output", job.frame.output, "video file: .mp4")->required();
-    app.add_option("--seconds", job.seconds, "length of the clip")->capture_default_str();
-    app.add_option("--fps", job.framesPerSecond, "frames per second")->capture_default_str();
+    app.add_option("--seconds", job.seconds, "length of the clip (up to 3600)")->capture_default_str()->check(numberCheck(true))->check(CLI::Range(0.0f, 3600.0f));
+    app.add_option("--fps", job.framesPerSecond, "frames per second")->capture_default_str()->check(CLI::Range(1, 240));
     app.add_flag("--turntable", job.turntable, "orbit the camera once around the Y axis");
     addOutputFlags(app, output);
     if (auto exit = parse(app, "--batch animate", arguments)) return *exit;
@@ -219,13 +235,14 @@ int runSampleCommand(const Arguments& arguments, Mode mode) {
     app.add_option("--output,-o", command.output, "output file: .bin, .npz or .ply")->required();
     app.add_option("--format", command.format, "bin, npz or ply (default: from the output's extension)");
     app.add_option("--seed", command.seed, "random seed (same seed, same file, bit for bit)")->capture_default_str();
-    app.add_option("--time", command.time, "time in seconds for animated SDFs")->capture_default_str();
+    app.add_option("--time", command.time, "time in seconds for animated SDFs")->capture_default_str()->check(numberCheck(false));
     app.add_option("--shard", shard, "K/COUNT: write only slice K (0-based) of COUNT equal slices of the N-sample run");
     app.add_option("--chunk", command.chunkSize, "samples per GPU dispatch (memory: 28 bytes each)")->capture_default_str()->check(CLI::Range(1u, 4194240u));
-    app.add_option("--gradient-step", command.gradientStep, "central-difference step of the written gradient")->capture_default_str();
+    app.add_option("--gradient-step", command.gradientStep, "central-difference step of the written gradient")->capture_default_str()->check(numberCheck(true));
     app.add_option("--surface-tolerance", command.surfaceTolerance,
                    "|f| at which the rays of surface, near and metropolis stop (accuracy against time: docs/benchmarks.md)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(numberCheck(true));
     addOutputFlags(app, output);
     if (auto exit = parse(app, "--batch sample", arguments)) return *exit;
     if (!shard.empty() && !parseShard(shard, command.shardIndex, command.shardCount)) {
@@ -258,9 +275,9 @@ int runAuditCommand(const Arguments& arguments, Mode mode) {
     OutputOptions output;
     std::string plane;
     app.add_option("--sdf", command.sdf, "dataset name or path to a .glsl file")->required();
-    app.add_option("--samples", command.samples, "random points (as many near-surface and surface points)")->capture_default_str();
+    app.add_option("--samples", command.samples, "random points (as many near-surface and surface points)")->capture_default_str()->check(CLI::Range(std::uint64_t(64), std::uint64_t(100000000)));
     app.add_option("--seed", command.seed, "random seed")->capture_default_str();
-    app.add_option("--time", command.time, "time in seconds for animated SDFs")->capture_default_str();
+    app.add_option("--time", command.time, "time in seconds for animated SDFs")->capture_default_str()->check(numberCheck(false));
     app.add_option("--plane", plane, "NX,NY,NZ,OFFSET: readouts for this cutting plane instead of the volume audit");
     app.add_option("--resolution", command.resolution, "grid side on the plane")->capture_default_str()->check(CLI::Range(2, 4096));
     addOutputFlags(app, output);

@@ -16,8 +16,9 @@ std::optional<int> runCommandLine(int argc, char** argv);
 // parsing and validation, with the same messages and exit codes, stopping where the work would
 // start. They run no command: no GL, no dataset scan, no file written (a `--batch JOBFILE`
 // argument is still read). kExitOk means the real run would go on to the run*() functions of
-// BatchCommands.h, whose own checks are not made: value ranges such as --fps or --samples,
-// whether the SDF and the output folder exist. Not thread-safe: the messages go to
+// BatchCommands.h, whose own checks are not made: whether the SDF and the output folder exist,
+// the sample count against the format's limit. (Value ranges such as --fps, --samples, --time
+// and the steps and tolerances are checked while parsing.) Not thread-safe: the messages go to
 // stdout/stderr as in the real run.
 // `arguments` are argv[1..], without the program name.
 std::optional<int> checkCommandLine(const std::vector<std::string>& arguments);

@@ -83,6 +83,27 @@ TEST(CommandLine, MalformedSizeIsNamed) {
     EXPECT_FALSE(fs::exists(out));
 }
 
+TEST(CommandLine, NonFiniteAndOutOfRangeNumbersAreRefusedWhileParsing) {
+    fs::path out = outputPath("numbers.png");
+    struct Case {
+        std::string arguments, culprit;
+    } cases[] = {{"render --sdf sphere --time nan --output " + out.string(), "--time"},
+                 {"render --sdf sphere --time inf --output " + out.string(), "--time"},
+                 {"animate --sdf sphere --fps 0 --output " + outputPath("numbers.mp4").string(), "--fps"},
+                 {"animate --sdf sphere --seconds 0 --output " + outputPath("numbers.mp4").string(), "--seconds"},
+                 {"audit --sdf sphere --samples 1", "--samples"},
+                 {"sample --sdf sphere -p rand -n 10 --gradient-step 0 -o " + outputPath("n.bin").string(), "--gradient-step"},
+                 {"sample --sdf sphere -p surface -n 10 --surface-tolerance -1 -o " + outputPath("n.bin").string(), "--surface-tolerance"},
+                 {"sample --sdf sphere -p rand -n 10 --time nan -o " + outputPath("n.bin").string(), "--time"}};
+    for (const Case& c : cases) {
+        Result r = run("--batch " + c.arguments);
+        EXPECT_EQ(r.exitCode, 2) << c.arguments << ": " << r.output;
+        EXPECT_NE(r.output.find(c.culprit), std::string::npos) << r.output;
+        EXPECT_EQ(lineCount(r.output), 1) << r.output;
+    }
+    EXPECT_FALSE(fs::exists(out));
+}
+
 TEST(CommandLine, UnsupportedImageTypeAndMissingFolder) {
     Result r = run("--batch render --sdf sphere --output /tmp/sdfwb-cli-image.xyz");
     EXPECT_EQ(r.exitCode, 2) << r.output;
