@@ -337,3 +337,27 @@ TEST_F(StabilityTest, VanishingGradientAtTheSurfaceIsFlagged) {
     auto sphere = audit("dataset/Geometry/Sphere.glsl");
     EXPECT_NEAR(sphere.surfaceGradient, 1.0f, 0.01f);
 }
+
+TEST_F(StabilityTest, EveryCaseCountsItsBadRowsAndGetsItsVerdict) {
+    // Every file of tests/stability/: the samplers' bad-row count is exactly the NaN rows they
+    // wrote, and the audit names what the file is. (The textbook Mandelbulb estimate jumps where
+    // orbits escape at different iterations: discontinuous is its right verdict.)
+    struct Case {
+        const char* file;
+        const char* verdict;  // nullptr: not asserted here (see the tests above)
+    } cases[] = {{"steep_sphere", "non-conservative"}, {"thin_shell", "exact"},         {"far_from_origin", "exact"},
+                 {"grazing_plane", nullptr},           {"deep_mandelbulb", "discontinuous"}, {"nan_region", "nan"},
+                 {"truncated", "truncated"},           {"discontinuous", "discontinuous"}, {"constant", "no-surface"},
+                 {"cubed_sphere", "non-conservative"}, {"union_of_spheres", "conservative"}};
+    for (const Case& c : cases) {
+        const std::string file = std::string("tests/stability/") + c.file + ".glsl";
+        for (const char* pattern : {"rand", "surface"}) {
+            auto rows = sample(file, pattern, 2048);
+            EXPECT_EQ(rows.report.badRows, rows.nanRows) << file << " " << pattern;
+        }
+        if (c.verdict) {
+            auto report = audit(file, 8000);
+            EXPECT_EQ(report.verdict, c.verdict) << file << ": " << report.reason;
+        }
+    }
+}
