@@ -94,7 +94,8 @@ vec3 randomGaussian3(uint index, uint stream) {
 // Coordinate of lattice point k of n evenly spaced points covering [-1, 1] (ends included).
 float latticeCoordinate(uint k, uint n) { return n > 1u ? -1.0 + 2.0 * float(k) / float(n - 1u) : 0.0; }
 
-// Sphere-traces from `origin` along unit `direction` through the [-1,1]^3 box (with a margin).
+// Sphere-traces from `origin` along unit `direction` through the [-1,1]^3 box (with a margin):
+// the first surface crossing inside the box, whichever side of it the ray enters on.
 // On a hit, `hit` is the point with |f| < u_surfaceTolerance (1e-5 unless set).
 bool traceRay(vec3 origin, vec3 direction, out vec3 hit) {
     const float margin = 0.05;
@@ -112,7 +113,9 @@ bool traceRay(vec3 origin, vec3 direction, out vec3 hit) {
             hit = origin + t * direction;
             return true;
         }
-        t += d;
+        // |d|: a ray whose box entry lies inside the solid (a ground plane, a shape cut by the
+        // box) marches forward to where it leaves it, instead of backwards out of the box.
+        t += abs(d);
     }
     return false;
 }
