@@ -90,8 +90,6 @@ Expected<Report> tracerBenchmark(const BenchOptions& options) {
     const Method methods[] = {{"plain", 1.0f, 1.0f}, {"over-relaxed 1.6", 1.6f, 1.0f}, {"step factor 0.7", 1.0f, 0.7f}};
     std::vector<float> tolerances = options.quick ? std::vector<float>{2.0f, 0.5f} : std::vector<float>{4.0f, 2.0f, 1.0f, 0.5f, 0.25f, 0.1f, 0.05f};
     const renderer::Camera camera;
-    const renderer::CameraBasis basis = renderer::cameraBasis(camera);
-    const double tanHalf = std::tan(glm::radians(double(camera.fovYDegrees)) / 2.0);
 
     Report report;
     report.csv = "sdf,method,epsilon_scale,steps_hits,steps_all,error_p50,error_p99,error_max,missed_pixels,hit_pixels,ms_median,ms_min,ms_max\n";
@@ -109,11 +107,7 @@ Expected<Report> tracerBenchmark(const BenchOptions& options) {
         std::vector<double> reference(std::size_t(width) * std::size_t(height), -1.0);
         for (int y = 0; y < height; ++y)
             for (int x = 0; x < width; ++x) {
-                const double fx = (x + 0.5) / width * 2.0 - 1.0;
-                const double fy = (height - 1 - y + 0.5) / height * 2.0 - 1.0;  // stats rows are top first
-                const double aspect = double(width) / height;
-                glm::dvec3 direction = glm::normalize(glm::dvec3(basis.forward) + fx * aspect * tanHalf * glm::dvec3(basis.right) +
-                                                      fy * tanHalf * glm::dvec3(basis.up));
+                const glm::dvec3 direction = renderer::primaryRayDirection(camera, x, y, width, height);
                 if (auto t = intersect(shape.shape, glm::dvec3(camera.position), direction)) reference[std::size_t(y * width + x)] = *t;
             }
         for (const Method& method : methods)

@@ -18,6 +18,14 @@ PrecisionFloor precisionFloor(const Camera& camera, float epsilonScale, int heig
     return floor;
 }
 
+glm::dvec3 primaryRayDirection(const Camera& camera, int x, int row, int width, int height) {
+    const CameraBasis basis = cameraBasis(camera);
+    const double tanHalf = std::tan(glm::radians(double(camera.fovYDegrees)) / 2.0);
+    const double u = ((x + 0.5) / width * 2.0 - 1.0) * double(width) / height * tanHalf;
+    const double v = ((height - 1 - row + 0.5) / height * 2.0 - 1.0) * tanHalf;  // GL rows count from the bottom
+    return glm::normalize(glm::dvec3(basis.forward) + u * glm::dvec3(basis.right) + v * glm::dvec3(basis.up));
+}
+
 CameraBasis cameraBasis(const Camera& camera) {
     glm::vec3 forward = camera.target - camera.position;
     float length = glm::length(forward);

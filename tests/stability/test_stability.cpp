@@ -3,6 +3,7 @@
 // and label every miss (left the box, out of steps, NaN/Inf), report only hits whose |f| is below
 // the pixel tolerance, keep normals finite, count bad sample rows exactly, and get its verdict.
 
+#include <renderer/Camera.h>
 #include <renderer/OffscreenRenderer.h>
 #include <renderer/SampleCompute.h>
 #include <renderer/SdfRenderer.h>
@@ -85,18 +86,12 @@ protected:
 
     // Pixels whose primary ray meets a sphere of `radius` at the origin (the analytic silhouette).
     static int analyticSphereHits(const renderer::Camera& camera, float radius) {
-        const glm::vec3 forward = glm::normalize(camera.target - camera.position);
-        const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
-        const glm::vec3 up = glm::cross(right, forward);
-        const float tanHalf = std::tan(glm::radians(camera.fovYDegrees) / 2.0f);
+        const glm::dvec3 o(camera.position);
         int hits = 0;
         for (int y = 0; y < kHeight; ++y)
             for (int x = 0; x < kWidth; ++x) {
-                double u = ((x + 0.5) / kWidth * 2.0 - 1.0) * double(kWidth) / kHeight * tanHalf;
-                double v = ((y + 0.5) / kHeight * 2.0 - 1.0) * tanHalf;
-                glm::dvec3 d = glm::normalize(glm::dvec3(forward) + u * glm::dvec3(right) + v * glm::dvec3(up));
-                glm::dvec3 o(camera.position);
-                double b = glm::dot(o, d), c = glm::dot(o, o) - double(radius) * radius;
+                const glm::dvec3 d = renderer::primaryRayDirection(camera, x, y, kWidth, kHeight);
+                const double b = glm::dot(o, d), c = glm::dot(o, o) - double(radius) * radius;
                 hits += b * b - c > 0.0;
             }
         return hits;

@@ -32,6 +32,11 @@ PrecisionFloor precisionFloor(const Camera& camera, float epsilonScale, int heig
 // Fails only when position == target or forward is parallel to up; then a fixed basis is used.
 CameraBasis cameraBasis(const Camera& camera);
 
+// The unit direction of the primary ray through the centre of pixel (x, row) of a width x height
+// frame, rows counted from the top, in double precision: what the tracer's primaryRay() computes
+// (for reference intersections in tests and benchmarks).
+glm::dvec3 primaryRayDirection(const Camera& camera, int x, int row, int width, int height);
+
 // Orbits `camera` about its target by yaw (around world up) and pitch (clamped short of the poles).
 void orbit(Camera& camera, float yawRadians, float pitchRadians);
 
