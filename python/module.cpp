@@ -52,16 +52,17 @@ shaders::IncludeOptions includeOptions() {
     return options;
 }
 
-// `sdf` is a dataset name, a path, or GLSL source (anything containing "sdf(" and a brace).
-shaders::PreparedSdf prepare(const std::string& sdf) {
+// `sdf` is a dataset name, a path, or GLSL source (anything with a brace and a parenthesis, which
+// names and paths of SDF files do not have). `entry` names the SDF's function (empty: the default).
+shaders::PreparedSdf prepare(const std::string& sdf, const std::string& entry) {
     shaders::PreparedSdf prepared;
-    if (sdf.find("sdf") != std::string::npos && sdf.find('{') != std::string::npos && sdf.find('(') != std::string::npos) {
-        prepared = shaders::prepareSdf(sdf, "<python source>", {}, includeOptions());
+    if (sdf.find('{') != std::string::npos && sdf.find('(') != std::string::npos) {
+        prepared = shaders::prepareSdf(sdf, "<python source>", {}, includeOptions(), entry);
     } else {
         dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
         auto path = dataset::resolveSdfArgument(sdf, catalogue);
         if (!path) throw py::value_error("sdf: " + path.error().message);
-        prepared = shaders::prepareSdfFile(*path, includeOptions());
+        prepared = shaders::prepareSdfFile(*path, includeOptions(), entry);
     }
     if (!prepared.ok()) {
         std::string message;
@@ -74,7 +75,7 @@ shaders::PreparedSdf prepare(const std::string& sdf) {
 py::array_t<float> floatArray(std::vector<py::ssize_t> shape) { return py::array_t<float>(shape); }
 
 py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_t n, std::uint64_t seed, float time, float gradientStep,
-                std::uint32_t chunk, float surfaceTolerance) {
+                std::uint32_t chunk, float surfaceTolerance, const std::string& entry) {
     sampling::SamplingJob job;
     job.count = n;
     job.seed = seed;
@@ -83,7 +84,7 @@ py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_
     job.chunkSize = chunk;
     job.surfaceTolerance = surfaceTolerance;
     if (auto ok = sampling::validate(job); !ok) throw py::value_error(ok.error().message);
-    shaders::PreparedSdf prepared = prepare(sdf);
+    shaders::PreparedSdf prepared = prepare(sdf, entry);
     auto sampler = sampling::findSampler(pattern, sampling::samplerFolders());
     if (!sampler) throw py::value_error("pattern: " + sampler.error().message);
     auto positions = floatArray({py::ssize_t(n), 3});
@@ -178,8 +179,8 @@ void save(const std::string& path, py::array_t<float, py::array::c_style | py::a
     if (!written) throw std::runtime_error(written.error().message);
 }
 
-py::dict audit(const std::string& sdf, std::uint64_t samples, std::uint64_t seed, float time) {
-    shaders::PreparedSdf prepared = prepare(sdf);
+py::dict audit(const std::string& sdf, std::uint64_t samples, std::uint64_t seed, float time, const std::string& entry) {
+    shaders::PreparedSdf prepared = prepare(sdf, entry);
     sampling::AuditOptions options;
     options.samples = samples;
     options.seed = seed;
@@ -237,15 +238,18 @@ PYBIND11_MODULE(sdfwb, m) {
     m.attr("__version__") = SDFWB_VERSION;
     m.def("sample", &sample, py::arg("sdf"), py::arg("pattern"), py::arg("n"), py::arg("seed") = 0, py::arg("time") = 0.0f,
           py::arg("gradient_step") = 1e-3f, py::arg("chunk") = 1u << 18, py::arg("surface_tolerance") = 1e-5f,
+          py::arg("entry") = "",
           "Samples `n` points of `sdf` (dataset name, path or GLSL source) with `pattern`. Returns a dict of float32 arrays\n"
           "position (n,3), distance (n,), gradient (n,3) (raw, not normalised) plus bad_rows and seconds. Same seed, same\n"
           "values as `sdfwb --batch sample`. surface_tolerance: |f| at which the rays of surface/near/metropolis stop\n"
-          "(accuracy against time; see docs/benchmarks.md). The GIL is released while sampling.");
+          "(accuracy against time; see docs/benchmarks.md). entry: the SDF's function when it is not sdf (e.g. 'map';\n"
+          "vec2/vec4 returns give the distance in .x). The GIL is released while sampling.");
     m.def("load", &load, py::arg("path"), "Reads a .bin, .npz or .ply sample file into a dict of arrays (and its metadata).");
     m.def("save", &save, py::arg("path"), py::arg("position"), py::arg("distance"), py::arg("gradient"), py::arg("format") = "",
           py::arg("sdf") = "", py::arg("pattern") = "", py::arg("seed") = 0, py::arg("time") = 0.0f,
           "Writes arrays to a .bin, .npz or .ply sample file (atomically).");
     m.def("audit", &audit, py::arg("sdf"), py::arg("samples") = 100000, py::arg("seed") = 0, py::arg("time") = 0.0f,
+          py::arg("entry") = "",
           "Field audit: verdict (exact, conservative, non-conservative, truncated, discontinuous, nan) and figures.");
     m.def("list_sdfs", &listSdfs, "The dataset: one dict per SDF (name, category, declared_type, animated, path, author, license).");
 }

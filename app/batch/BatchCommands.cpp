@@ -117,7 +117,7 @@ int runRender(const RenderJob& job, const OutputOptions& output) {
     fs::path folder = outputPath.parent_path().empty() ? fs::path(".") : outputPath.parent_path();
     if (!fs::is_directory(folder, ec)) { printError("--output: '" + job.output + "': folder '" + folder.string() + "' does not exist"); return kExitUsage; }
 
-    shaders::PreparedSdf sdf = shaders::prepareSdfFile(*sdfPath, includeOptions());
+    shaders::PreparedSdf sdf = shaders::prepareSdfFile(*sdfPath, includeOptions(), job.entry);
     if (!sdf.ok()) {
         printDiagnostics(sdf.diagnostics);
         printError("render: " + sdfPath->string() + " has errors; nothing written");
@@ -239,7 +239,7 @@ int runSample(const SampleCommand& command, const OutputOptions& output) {
         return kExitUsage;
     }
 
-    shaders::PreparedSdf sdf = shaders::prepareSdfFile(*sdfPath, includeOptions());
+    shaders::PreparedSdf sdf = shaders::prepareSdfFile(*sdfPath, includeOptions(), command.entry);
     if (!sdf.ok()) {
         printDiagnostics(sdf.diagnostics);
         printError("sample: " + sdfPath->string() + " has errors; nothing written");
@@ -335,7 +335,7 @@ int runAnimate(const AnimateJob& job, const OutputOptions& output) {
     }
     if (!(job.seconds > 0.0f) || job.seconds > 3600.0f) { printError("--seconds: must be in (0, 3600]"); return kExitUsage; }
     if (job.framesPerSecond < 1 || job.framesPerSecond > 240) { printError("--fps: must be 1..240"); return kExitUsage; }
-    shaders::PreparedSdf sdf = shaders::prepareSdfFile(*sdfPath, includeOptions());
+    shaders::PreparedSdf sdf = shaders::prepareSdfFile(*sdfPath, includeOptions(), job.frame.entry);
     if (!sdf.ok()) {
         printDiagnostics(sdf.diagnostics);
         printError("animate: " + sdfPath->string() + " has errors; nothing written");
@@ -410,7 +410,7 @@ int runAudit(const AuditCommand& command, const OutputOptions& output) {
     auto sdfPath = dataset::resolveSdfArgument(command.sdf, catalogue);
     if (!sdfPath) { printError("--sdf: " + sdfPath.error().message); return kExitUsage; }
     if (command.samples < 64 || command.samples > 100000000) { printError("--samples: must be 64..100000000"); return kExitUsage; }
-    shaders::PreparedSdf sdf = shaders::prepareSdfFile(*sdfPath, includeOptions());
+    shaders::PreparedSdf sdf = shaders::prepareSdfFile(*sdfPath, includeOptions(), command.entry);
     if (!sdf.ok()) {
         printDiagnostics(sdf.diagnostics);
         printError("audit: " + sdfPath->string() + " has errors");

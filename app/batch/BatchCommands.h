@@ -27,6 +27,7 @@ struct OutputOptions {
 
 struct RenderJob {
     std::string sdf;      // dataset name or path
+    std::string entry;    // the SDF's function; empty: metadata `entry:`, sdf, or a conventional name
     std::string output;   // .png, .jpg or .exr
     int width = 1280;
     int height = 720;
@@ -50,6 +51,7 @@ int runAnimate(const AnimateJob& job, const OutputOptions& output);
 
 struct SampleCommand {
     std::string sdf;           // dataset name or path
+    std::string entry;         // as in RenderJob
     std::string pattern;       // built-in name or sampler path
     std::uint64_t count = 0;
     std::string output;
@@ -66,6 +68,7 @@ struct SampleCommand {
 int runSample(const SampleCommand& command, const OutputOptions& output);
 struct AuditCommand {
     std::string sdf;
+    std::string entry;         // as in RenderJob
     std::uint64_t samples = 100000;
     std::uint64_t seed = 0;
     float time = 0.0f;

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -87,6 +88,28 @@ CLI::Validator numberCheck(bool positive) {
         positive ? "POSITIVE" : "FINITE");
 }
 
+// --entry NAME: a GLSL identifier that is not reserved (main, gl_*, sdfwb_*).
+CLI::Validator entryCheck() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            static const std::regex identifier(R"([A-Za-z_][A-Za-z0-9_]*)");
+            if (!std::regex_match(text, identifier)) return "expected a GLSL function name, got '" + text + "'";
+            std::string lower = text;
+            for (char& c : lower) c = char(std::tolower(static_cast<unsigned char>(c)));
+            if (lower == "main" || lower.rfind("gl_", 0) == 0 || lower.rfind("sdfwb_", 0) == 0)
+                return "'" + text + "' is reserved (main, gl_*, sdfwb_*): name your own function";
+            return {};
+        },
+        "NAME");
+}
+
+void addEntryOption(CLI::App& app, std::string& entry) {
+    app.add_option("--entry", entry,
+                   "the SDF's function: float NAME(vec3 p) or NAME(vec3 p, float time), or vec2/vec4 NAME(...) with the distance in .x "
+                   "(default: the file's `entry:` metadata, else sdf, else map, scene, sceneSDF, sdScene, de or DE)")
+        ->check(entryCheck());
+}
+
 void addOutputFlags(CLI::App& app, OutputOptions& output) {
     app.add_flag("--quiet,-q", output.quiet, "print errors only");
     app.add_flag("--json", output.json, "print a machine-readable report on stdout");
@@ -121,6 +144,7 @@ struct FrameOptions {
 
 void addFrameOptions(CLI::App& app, RenderJob& job, FrameOptions& options) {
     app.add_option("--sdf", job.sdf, "dataset name or path to a .glsl file")->required();
+    addEntryOption(app, job.entry);
     app.add_option("--size", options.size, "image size WxH")->capture_default_str();
     app.add_option("--time", job.time, "time in seconds for animated SDFs (start time for animate)")->capture_default_str()->check(numberCheck(false));
     app.add_option("--shading", options.shading, "shading mode: " + renderer::shadingModeNames())->capture_default_str();
@@ -230,6 +254,7 @@ int runSampleCommand(const Arguments& arguments, Mode mode) {
     OutputOptions output;
     std::string shard;
     app.add_option("--sdf", command.sdf, "dataset name or path to a .glsl file")->required();
+    addEntryOption(app, command.entry);
     app.add_option("--pattern,-p", command.pattern, "grid, image, jitter, rand, surface, near, metropolis, metropolis_curvature, or a sampler file")->required();
     app.add_option("-n,--count", command.count, "number of samples N of the whole run")->required();
     app.add_option("--output,-o", command.output, "output file: .bin, .npz or .ply")->required();
@@ -275,6 +300,7 @@ int runAuditCommand(const Arguments& arguments, Mode mode) {
     OutputOptions output;
     std::string plane;
     app.add_option("--sdf", command.sdf, "dataset name or path to a .glsl file")->required();
+    addEntryOption(app, command.entry);
     app.add_option("--samples", command.samples, "random points (as many near-surface and surface points)")->capture_default_str()->check(CLI::Range(std::uint64_t(64), std::uint64_t(100000000)));
     app.add_option("--seed", command.seed, "random seed")->capture_default_str();
     app.add_option("--time", command.time, "time in seconds for animated SDFs")->capture_default_str()->check(numberCheck(false));

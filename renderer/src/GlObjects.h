@@ -74,4 +74,8 @@ struct CompiledShader {
 // `diagnostics`, never as a silent empty shader.
 CompiledShader compileShader(GLenum type, const shaders::ComposedShader& composed);
 
+// When `program` reads the G3D noise texture (g3d_uniformRandom), makes `texture` once (see
+// NoiseTexture.h) and binds it to shaders::kNoiseTextureUnit. Needs a current context.
+void bindNoiseTextureIfUsed(GLuint program, GlTexture& texture);
+
 } // namespace sdfwb::renderer

@@ -41,6 +41,7 @@ std::uint32_t squareSide(std::uint64_t count) {
 struct SampleCompute::Impl {
     GlProgram program;
     GlBuffer buffers[3];
+    GlTexture noise;  // g3d_uniformRandom, made when the program reads it
     std::uint32_t capacity = 0;
     std::string source;
     GLint location(const char* name) const { return glGetUniformLocation(program.id(), name); }
@@ -51,6 +52,7 @@ SampleCompute::SampleCompute() : m_impl(std::make_unique<Impl>()) {}
 SampleCompute::~SampleCompute() {
     m_impl->program.release();
     for (GlBuffer& buffer : m_impl->buffers) buffer.release();
+    m_impl->noise.release();
 }
 
 const std::string& SampleCompute::source() const { return m_impl->source; }
@@ -119,18 +121,19 @@ Expected<void> SampleCompute::run(const SampleUniforms& uniforms, std::uint32_t 
         m_impl->capacity = count;
     }
     glUseProgram(m_impl->program.id());
-    glUniform1ui(m_impl->location("u_sampleCount"), uniforms.sampleCount);
-    glUniform2ui(m_impl->location("u_seed"), GLuint(uniforms.seed & 0xffffffffu), GLuint(uniforms.seed >> 32));
-    glUniform1f(m_impl->location("u_gradientStep"), uniforms.gradientStep);
-    glUniform1ui(m_impl->location("u_cubeSide"), cubeSide(uniforms.sampleCount));
-    glUniform1ui(m_impl->location("u_squareSide"), squareSide(uniforms.sampleCount));
-    if (GLint location = m_impl->location("u_time"); location >= 0) glUniform1f(location, uniforms.time);
-    if (GLint location = m_impl->location("g3d_SceneTime"); location >= 0) glUniform1f(location, uniforms.time);
-    if (GLint location = m_impl->location("u_parameters"); location >= 0) glUniform4fv(location, 4, uniforms.parameters);
-    if (GLint location = m_impl->location("u_surfaceTolerance"); location >= 0) glUniform1f(location, uniforms.surfaceTolerance);
-    if (GLint location = m_impl->location("u_tetrahedralGradient"); location >= 0) glUniform1i(location, uniforms.tetrahedralGradient ? 1 : 0);
-    glUniform1ui(m_impl->location("u_chunkFirst"), first);
-    glUniform1ui(m_impl->location("u_chunkCount"), count);
+    glUniform1ui(m_impl->location("sdfwb_sampleCount"), uniforms.sampleCount);
+    glUniform2ui(m_impl->location("sdfwb_seed"), GLuint(uniforms.seed & 0xffffffffu), GLuint(uniforms.seed >> 32));
+    glUniform1f(m_impl->location("sdfwb_gradientStep"), uniforms.gradientStep);
+    glUniform1ui(m_impl->location("sdfwb_cubeSide"), cubeSide(uniforms.sampleCount));
+    glUniform1ui(m_impl->location("sdfwb_squareSide"), squareSide(uniforms.sampleCount));
+    if (GLint location = m_impl->location("sdfwb_time"); location >= 0) glUniform1f(location, uniforms.time);
+    if (GLint location = m_impl->location("g3d_SceneTime"); location >= 0) glUniform1f(location, uniforms.time);  // declared by the file
+    bindNoiseTextureIfUsed(m_impl->program.id(), m_impl->noise);
+    if (GLint location = m_impl->location("sdfwb_parameters"); location >= 0) glUniform4fv(location, 4, uniforms.parameters);
+    if (GLint location = m_impl->location("sdfwb_surfaceTolerance"); location >= 0) glUniform1f(location, uniforms.surfaceTolerance);
+    if (GLint location = m_impl->location("sdfwb_tetrahedralGradient"); location >= 0) glUniform1i(location, uniforms.tetrahedralGradient ? 1 : 0);
+    glUniform1ui(m_impl->location("sdfwb_chunkFirst"), first);
+    glUniform1ui(m_impl->location("sdfwb_chunkCount"), count);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingPositions, m_impl->buffers[0].id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingDistances, m_impl->buffers[1].id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingGradients, m_impl->buffers[2].id());
@@ -152,6 +155,7 @@ Expected<void> SampleCompute::run(const SampleUniforms& uniforms, std::uint32_t 
 void SampleCompute::releaseGl() {
     m_impl->program.reset();
     for (GlBuffer& buffer : m_impl->buffers) buffer.reset();
+    m_impl->noise.reset();
     m_impl->capacity = 0;
 }
 

@@ -54,6 +54,7 @@ struct SdfRenderer::Impl {
     std::string empty;
 
     GlTexture matcap;
+    GlTexture noise;  // g3d_uniformRandom, made when a program reads it
     std::string matcapName;
     GlFramebuffer lowFramebuffer;
     GlTexture lowColor;
@@ -170,6 +171,7 @@ SdfRenderer::~SdfRenderer() {
     for (auto& [text, variant] : m_impl->cache) variant.program.release();
     m_impl->vertexArray.release();
     m_impl->matcap.release();
+    m_impl->noise.release();
     m_impl->lowFramebuffer.release();
     m_impl->lowColor.release();
 }
@@ -218,37 +220,38 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
         }
         CameraBasis basis = cameraBasis(camera);
         glUseProgram(v->program.id());
-        glUniform2f(v->location("u_resolution"), float(width), float(height));
-        glUniform3f(v->location("u_cameraPosition"), camera.position.x, camera.position.y, camera.position.z);
-        glUniform3f(v->location("u_cameraRight"), basis.right.x, basis.right.y, basis.right.z);
-        glUniform3f(v->location("u_cameraUp"), basis.up.x, basis.up.y, basis.up.z);
-        glUniform3f(v->location("u_cameraForward"), basis.forward.x, basis.forward.y, basis.forward.z);
-        glUniform1f(v->location("u_tanHalfFovY"), std::tan(glm::radians(camera.fovYDegrees) * 0.5f));
-        glUniform1f(v->location("u_nearPlane"), camera.nearPlane);
-        glUniform1f(v->location("u_farPlane"), camera.farPlane);
-        glUniform1i(v->location("u_maxSteps"), m_trace.maxSteps);
-        glUniform1f(v->location("u_stepFactor"), m_trace.stepFactor);
-        glUniform1f(v->location("u_epsilonScale"), m_trace.epsilonScale);
-        glUniform1f(v->location("u_boxMargin"), m_trace.boxMargin);
-        glUniform3f(v->location("u_background"), m_shading.background.r, m_shading.background.g, m_shading.background.b);
-        if (GLint location = v->location("u_time"); location >= 0) glUniform1f(location, time);
-        if (GLint location = v->location("g3d_SceneTime"); location >= 0) glUniform1f(location, time);
-        if (GLint location = v->location("u_relaxation"); location >= 0) glUniform1f(location, m_trace.overRelaxation);
+        glUniform2f(v->location("sdfwb_resolution"), float(width), float(height));
+        glUniform3f(v->location("sdfwb_cameraPosition"), camera.position.x, camera.position.y, camera.position.z);
+        glUniform3f(v->location("sdfwb_cameraRight"), basis.right.x, basis.right.y, basis.right.z);
+        glUniform3f(v->location("sdfwb_cameraUp"), basis.up.x, basis.up.y, basis.up.z);
+        glUniform3f(v->location("sdfwb_cameraForward"), basis.forward.x, basis.forward.y, basis.forward.z);
+        glUniform1f(v->location("sdfwb_tanHalfFovY"), std::tan(glm::radians(camera.fovYDegrees) * 0.5f));
+        glUniform1f(v->location("sdfwb_nearPlane"), camera.nearPlane);
+        glUniform1f(v->location("sdfwb_farPlane"), camera.farPlane);
+        glUniform1i(v->location("sdfwb_maxSteps"), m_trace.maxSteps);
+        glUniform1f(v->location("sdfwb_stepFactor"), m_trace.stepFactor);
+        glUniform1f(v->location("sdfwb_epsilonScale"), m_trace.epsilonScale);
+        glUniform1f(v->location("sdfwb_boxMargin"), m_trace.boxMargin);
+        glUniform3f(v->location("sdfwb_background"), m_shading.background.r, m_shading.background.g, m_shading.background.b);
+        if (GLint location = v->location("sdfwb_time"); location >= 0) glUniform1f(location, time);
+        if (GLint location = v->location("g3d_SceneTime"); location >= 0) glUniform1f(location, time);  // declared by the file
+        bindNoiseTextureIfUsed(v->program.id(), m_impl->noise);
+        if (GLint location = v->location("sdfwb_relaxation"); location >= 0) glUniform1f(location, m_trace.overRelaxation);
         if (m_plane.enabled) {
             glm::vec3 normal = glm::length(m_plane.normal) > 0.0f ? glm::normalize(m_plane.normal) : glm::vec3(0, 0, 1);
-            for (const char* name : {"u_planeNormal", "u_clipNormal"})
+            for (const char* name : {"sdfwb_planeNormal", "sdfwb_clipNormal"})
                 if (GLint location = v->location(name); location >= 0) glUniform3f(location, normal.x, normal.y, normal.z);
-            for (const char* name : {"u_planeOffset", "u_clipOffset"})
+            for (const char* name : {"sdfwb_planeOffset", "sdfwb_clipOffset"})
                 if (GLint location = v->location(name); location >= 0) glUniform1f(location, m_plane.offset);
-            if (GLint location = v->location("u_contourSpacing"); location >= 0) glUniform1f(location, std::max(m_plane.contourSpacing, 1e-6f));
-            if (GLint location = v->location("u_rampDistance"); location >= 0) glUniform1f(location, std::max(m_plane.rampDistance, 1e-6f));
+            if (GLint location = v->location("sdfwb_contourSpacing"); location >= 0) glUniform1f(location, std::max(m_plane.contourSpacing, 1e-6f));
+            if (GLint location = v->location("sdfwb_rampDistance"); location >= 0) glUniform1f(location, std::max(m_plane.rampDistance, 1e-6f));
         }
-        if (GLint location = v->location("u_lightDirection"); location >= 0) {
+        if (GLint location = v->location("sdfwb_lightDirection"); location >= 0) {
             glm::vec3 light = glm::normalize(m_shading.lightDirection);
             glUniform3f(location, light.x, light.y, light.z);
         }
-        if (GLint location = v->location("u_curvatureScale"); location >= 0) glUniform1f(location, m_shading.curvatureScale);
-        if (GLint location = v->location("u_matcap"); location >= 0) {
+        if (GLint location = v->location("sdfwb_curvatureScale"); location >= 0) glUniform1f(location, m_shading.curvatureScale);
+        if (GLint location = v->location("sdfwb_matcap"); location >= 0) {
             m_impl->ensureMatcap(m_shading.matcap);
             glActiveTexture(GL_TEXTURE0);
             glBindTexture(GL_TEXTURE_2D, m_impl->matcap.id());
@@ -311,6 +314,7 @@ void SdfRenderer::releaseGl() {
     m_impl->cache.clear();
     m_impl->vertexArray.reset();
     m_impl->matcap.reset();
+    m_impl->noise.reset();
 }
 
 std::vector<Diagnostic> SdfRenderer::setPlane(const CuttingPlane& plane) {

@@ -1,4 +1,5 @@
-// Compatibility with SDF files written for the original sdf-explorer (G3D shading dialect).
+// Compatibility with SDF files written for the original sdf-explorer (G3D shading dialect), and
+// Shadertoy's iTime.
 // The composer defines SDFWB_COMPAT_<symbol> only for symbols the file uses and does not
 // declare itself, so nothing here can collide with a file's own definitions.
 
@@ -55,10 +56,18 @@ float lengthSquared(vec3 v) { return dot(v, v); }
 float lengthSquared(vec4 v) { return dot(v, v); }
 #endif
 
+// The scene time: the composer declares `uniform float sdfwb_time` before this prelude.
 #ifdef SDFWB_COMPAT_g3d_SceneTime
-uniform float g3d_SceneTime;
+#define g3d_SceneTime sdfwb_time
+#endif
+// Shadertoy's time uniform, which its code uses without declaring.
+#ifdef SDFWB_COMPAT_iTime
+#define iTime sdfwb_time
 #endif
 
+// A 256 x 256 RGBA texture of independent uniform values in [0, 1], the same on every run
+// (renderer/NoiseTexture.h makes it from a hash), repeating, linearly filtered; bound to the
+// unit below by the renderer and the sampler runner.
 #ifdef SDFWB_COMPAT_g3d_uniformRandom
-uniform sampler2D g3d_uniformRandom;
+layout(binding = SDFWB_NOISE_TEXTURE_UNIT) uniform sampler2D g3d_uniformRandom;
 #endif

@@ -3,11 +3,11 @@
 bool samplePosition(uint index, out vec3 position) {
     vec3 hit;
     for (uint attempt = 0u; attempt < 100u; ++attempt) {
-        if (!traceRandomRay(index, attempt, hit)) continue;
-        vec3 gradient = gradientAt(hit, 1e-4);
+        if (!sdfwb_traceRandomRay(index, attempt, hit)) continue;
+        vec3 gradient = sdfwb_gradientAt(hit, 1e-4);
         float length2 = dot(gradient, gradient);
         vec3 normal = length2 > 0.0 ? gradient * inversesqrt(length2) : vec3(0.0);
-        float offset = clamp(0.005 * randomGaussian(index, 1000u), -0.3, 0.3);
+        float offset = clamp(0.005 * sdfwb_randomGaussian(index, 1000u), -0.3, 0.3);
         position = hit + offset * normal;
         return true;
     }

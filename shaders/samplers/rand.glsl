@@ -1,5 +1,5 @@
 // rand: points uniformly at random in the cube [-1,1]^3.
 bool samplePosition(uint index, out vec3 position) {
-    position = randomInCube(index, 0u);
+    position = sdfwb_randomInCube(index, 0u);
     return true;
 }

@@ -2,6 +2,6 @@
 // cube, seen from a random direction). Up to 100 rays per sample; when all miss, the row is NaN.
 bool samplePosition(uint index, out vec3 position) {
     for (uint attempt = 0u; attempt < 100u; ++attempt)
-        if (traceRandomRay(index, attempt, position)) return true;
+        if (sdfwb_traceRandomRay(index, attempt, position)) return true;
     return false;
 }

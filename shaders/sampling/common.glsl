@@ -1,47 +1,37 @@
 // Helpers every sampler file can use. Composed after the user's SDF and before the sampler.
+// Every name here carries the reserved prefix sdfwb_, so nothing in the user's SDF can clash with it.
 //
-// Randomness is counter-based: random01(index, stream) depends only on the run's seed, the
+// Randomness is counter-based: sdfwb_random01(index, stream) depends only on the run's seed, the
 // sample's global index and a stream number the sampler chooses. No state is carried between
 // samples, so a run gives the same numbers whatever the chunk size or shard.
 
-uniform uint u_sampleCount;   // N of the whole run (not of this chunk or shard)
-uniform uvec2 u_seed;         // 64-bit seed, low and high words
-uniform float u_gradientStep; // central-difference step of the written gradient
-uniform uint u_cubeSide;      // smallest n with n^3 >= N (computed exactly on the CPU)
-uniform uint u_squareSide;    // smallest n with n^2 >= N
-uniform vec4 u_parameters[4]; // free parameters for samplers driven by the program (plane analysis)
-uniform float u_surfaceTolerance = 1e-5;  // traceRay() hits at |f| below this
-uniform bool u_tetrahedralGradient = false;  // gradientAt(): the tracer's 4-tap scheme (benchmarks)
-#ifdef SDFWB_USES_TIME
-uniform float u_time;
-#endif
-
-float map(vec3 p) {
-#ifdef SDFWB_ANIMATED
-    return sdf(p, u_time);
-#else
-    return sdf(p);
-#endif
-}
+uniform uint sdfwb_sampleCount;   // N of the whole run (not of this chunk or shard)
+uniform uvec2 sdfwb_seed;         // 64-bit seed, low and high words
+uniform float sdfwb_gradientStep; // central-difference step of the written gradient
+uniform uint sdfwb_cubeSide;      // smallest n with n^3 >= N (computed exactly on the CPU)
+uniform uint sdfwb_squareSide;    // smallest n with n^2 >= N
+uniform vec4 sdfwb_parameters[4]; // free parameters for samplers driven by the program (plane analysis)
+uniform float sdfwb_surfaceTolerance = 1e-5;  // sdfwb_traceRay() hits at |f| below this
+uniform bool sdfwb_tetrahedralGradient = false;  // sdfwb_gradientAt(): the tracer's 4-tap scheme (benchmarks)
 
 // Raw gradient by 6-tap central differences (not normalised: its length shows the field's
 // Lipschitz behaviour).
-vec3 gradientAt(vec3 p, float h) {
-    if (u_tetrahedralGradient) {
+vec3 sdfwb_gradientAt(vec3 p, float h) {
+    if (sdfwb_tetrahedralGradient) {
         // 4 taps at the corners of a tetrahedron, as the sphere tracer's normals use.
         const vec2 k = vec2(1.0, -1.0);
-        return (k.xyy * map(p + k.xyy * h) + k.yyx * map(p + k.yyx * h) + k.yxy * map(p + k.yxy * h) + k.xxx * map(p + k.xxx * h)) /
+        return (k.xyy * sdfwb_sdf(p + k.xyy * h) + k.yyx * sdfwb_sdf(p + k.yyx * h) + k.yxy * sdfwb_sdf(p + k.yxy * h) + k.xxx * sdfwb_sdf(p + k.xxx * h)) /
                (4.0 * h);
     }
-    return vec3(map(p + vec3(h, 0.0, 0.0)) - map(p - vec3(h, 0.0, 0.0)),
-                map(p + vec3(0.0, h, 0.0)) - map(p - vec3(0.0, h, 0.0)),
-                map(p + vec3(0.0, 0.0, h)) - map(p - vec3(0.0, 0.0, h))) / (2.0 * h);
+    return vec3(sdfwb_sdf(p + vec3(h, 0.0, 0.0)) - sdfwb_sdf(p - vec3(h, 0.0, 0.0)),
+                sdfwb_sdf(p + vec3(0.0, h, 0.0)) - sdfwb_sdf(p - vec3(0.0, h, 0.0)),
+                sdfwb_sdf(p + vec3(0.0, 0.0, h)) - sdfwb_sdf(p - vec3(0.0, 0.0, h))) / (2.0 * h);
 }
 
 // 32-bit integer finaliser: xorshift-multiply rounds. The multipliers are the "lowbias32"
 // constants found by Chris Wellons' hash-prospector search (public domain), which give near-ideal
 // avalanche: every input bit flips every output bit with probability ~1/2.
-uint scramble(uint x) {
+uint sdfwb_scramble(uint x) {
     x ^= x >> 16u;
     x *= 0x7feb352du;
     x ^= x >> 15u;
@@ -53,23 +43,23 @@ uint scramble(uint x) {
 // Four independent uniform numbers in [0, 1) for (sample index, stream), chained through the
 // seed so that different seeds give unrelated sequences. Exactly representable (24 random bits
 // times 2^-24), so the positions come out the same on every IEEE-754 device.
-vec4 random4(uint index, uint stream) {
-    uint seedKey = scramble(u_seed.y ^ scramble(u_seed.x));
-    uint sampleKey = scramble(index ^ seedKey);
-    uint streamKey = scramble(stream * 0x9e3779b9u + sampleKey);
-    uvec4 bits = uvec4(scramble(streamKey), scramble(streamKey + 0x9e3779b9u), scramble(streamKey + 0x3c6ef372u),
-                       scramble(streamKey + 0xdaa66d2bu));
+vec4 sdfwb_random4(uint index, uint stream) {
+    uint seedKey = sdfwb_scramble(sdfwb_seed.y ^ sdfwb_scramble(sdfwb_seed.x));
+    uint sampleKey = sdfwb_scramble(index ^ seedKey);
+    uint streamKey = sdfwb_scramble(stream * 0x9e3779b9u + sampleKey);
+    uvec4 bits = uvec4(sdfwb_scramble(streamKey), sdfwb_scramble(streamKey + 0x9e3779b9u), sdfwb_scramble(streamKey + 0x3c6ef372u),
+                       sdfwb_scramble(streamKey + 0xdaa66d2bu));
     return vec4(bits >> 8u) * (1.0 / 16777216.0);
 }
 
-float random01(uint index, uint stream) { return random4(index, stream).x; }
+float sdfwb_random01(uint index, uint stream) { return sdfwb_random4(index, stream).x; }
 
 // Uniform in the cube [-1, 1]^3.
-vec3 randomInCube(uint index, uint stream) { return random4(index, stream).xyz * 2.0 - 1.0; }
+vec3 sdfwb_randomInCube(uint index, uint stream) { return sdfwb_random4(index, stream).xyz * 2.0 - 1.0; }
 
 // Uniform on the unit sphere.
-vec3 randomDirection(uint index, uint stream) {
-    vec4 u = random4(index, stream);
+vec3 sdfwb_randomDirection(uint index, uint stream) {
+    vec4 u = sdfwb_random4(index, stream);
     float z = u.x * 2.0 - 1.0;
     float azimuth = 6.28318530718 * u.y;
     float ring = sqrt(max(0.0, 1.0 - z * z));
@@ -77,27 +67,27 @@ vec3 randomDirection(uint index, uint stream) {
 }
 
 // Standard normal variate (Box-Muller); u.x is kept away from 0 so log() stays finite.
-float randomGaussian(uint index, uint stream) {
-    vec4 u = random4(index, stream);
+float sdfwb_randomGaussian(uint index, uint stream) {
+    vec4 u = sdfwb_random4(index, stream);
     float radius = sqrt(-2.0 * log(max(u.x, 1e-7)));
     return radius * cos(6.28318530718 * u.y);
 }
 
 // Three independent standard normal variates (two Box-Muller pairs, one value unused).
-vec3 randomGaussian3(uint index, uint stream) {
-    vec4 u = random4(index, stream);
+vec3 sdfwb_randomGaussian3(uint index, uint stream) {
+    vec4 u = sdfwb_random4(index, stream);
     vec2 radius = sqrt(-2.0 * log(max(u.xz, vec2(1e-7))));
     vec2 angle = 6.28318530718 * u.yw;
     return vec3(radius.x * cos(angle.x), radius.x * sin(angle.x), radius.y * cos(angle.y));
 }
 
 // Coordinate of lattice point k of n evenly spaced points covering [-1, 1] (ends included).
-float latticeCoordinate(uint k, uint n) { return n > 1u ? -1.0 + 2.0 * float(k) / float(n - 1u) : 0.0; }
+float sdfwb_latticeCoordinate(uint k, uint n) { return n > 1u ? -1.0 + 2.0 * float(k) / float(n - 1u) : 0.0; }
 
 // Sphere-traces from `origin` along unit `direction` through the [-1,1]^3 box (with a margin):
 // the first surface crossing inside the box, whichever side of it the ray enters on.
-// On a hit, `hit` is the point with |f| < u_surfaceTolerance (1e-5 unless set).
-bool traceRay(vec3 origin, vec3 direction, out vec3 hit) {
+// On a hit, `hit` is the point with |f| < sdfwb_surfaceTolerance (1e-5 unless set).
+bool sdfwb_traceRay(vec3 origin, vec3 direction, out vec3 hit) {
     const float margin = 0.05;
     vec3 inverse = 1.0 / direction;
     vec3 t0 = (vec3(-1.0 - margin) - origin) * inverse;
@@ -107,9 +97,9 @@ bool traceRay(vec3 origin, vec3 direction, out vec3 hit) {
     float tEnd = min(min(tMax.x, tMax.y), tMax.z);
     hit = vec3(0.0);
     for (int step = 0; step < 512 && t <= tEnd; ++step) {
-        float d = map(origin + t * direction);
+        float d = sdfwb_sdf(origin + t * direction);
         if (isnan(d) || isinf(d)) return false;
-        if (abs(d) < u_surfaceTolerance) {
+        if (abs(d) < sdfwb_surfaceTolerance) {
             hit = origin + t * direction;
             return true;
         }
@@ -121,9 +111,14 @@ bool traceRay(vec3 origin, vec3 direction, out vec3 hit) {
 }
 
 // One sample's ray attempt: a random point in the cube seen from a random direction outside it.
-bool traceRandomRay(uint index, uint attempt, out vec3 hit) {
-    vec3 target = randomInCube(index, 2u * attempt) * 0.9;
-    vec3 direction = randomDirection(index, 2u * attempt + 1u);
+bool sdfwb_traceRandomRay(uint index, uint attempt, out vec3 hit) {
+    vec3 target = sdfwb_randomInCube(index, 2u * attempt) * 0.9;
+    vec3 direction = sdfwb_randomDirection(index, 2u * attempt + 1u);
     vec3 origin = target - 3.0 * direction;
-    return traceRay(origin, direction, hit);
+    return sdfwb_traceRay(origin, direction, hit);
 }
+
+// The sampler file composed next defines samplePosition(): the macro gives its definition our
+// prefix, so an SDF that defines a function of that name (composed before) does not clash with it.
+// sample.comp calls sdfwb_samplePosition() and #undefs the macro.
+#define samplePosition sdfwb_samplePosition

@@ -53,25 +53,88 @@ std::string stripComments(const std::string& text) {
     return out;
 }
 
-SdfSignature detectSignature(const std::string& stripped) {
-    // A definition (with a body), not a prototype. vec3 synonyms of the G3D dialect count.
-    static const std::regex definition(
-        R"(\bfloat\s+sdf\s*\(\s*((?:in\s+|const\s+|highp\s+|mediump\s+)*)(vec3|Point3|Vector3|float3)\s+\w+\s*)"
-        R"((,\s*((?:in\s+|const\s+|highp\s+)*)float\s+\w+\s*)?\)\s*\{)", kLinearRegex);
-    // Matched only where `float` + blanks + `sdf` starts: searching from every position of a long
-    // text was the slow part of preparing one (1.8 s for 10 MB, 3.7 s with the linear executor).
+namespace {
+
+bool isIdentifier(const std::string& name) {
+    if (name.empty() || (name[0] >= '0' && name[0] <= '9')) return false;
+    return std::all_of(name.begin(), name.end(), isWordCharacter);
+}
+
+// Start of the word that ends right before the blanks in front of `at`, or npos.
+std::size_t previousWord(const std::string& text, std::size_t at) {
+    std::size_t end = at;
+    while (end > 0 && isBlank(text[end - 1])) --end;
+    if (end == at || end == 0 || !isWordCharacter(text[end - 1])) return std::string::npos;
+    std::size_t start = end;
+    while (start > 0 && isWordCharacter(text[start - 1])) --start;
+    return start;
+}
+
+} // namespace
+
+SdfSignature detectSignature(const std::string& stripped, const std::string& entry) {
     SdfSignature signature;
+    signature.entry = entry;
+    if (!isIdentifier(entry)) return signature;
+    // A definition (with a body), not a prototype. vec3 synonyms of the G3D dialect count.
+    const std::regex definition(
+        R"(\b(float|vec2|vec3|vec4)\s+)" + entry + R"(\s*\(\s*((?:in\s+|const\s+|highp\s+|mediump\s+)*)(vec3|Point3|Vector3|float3)\s+\w+\s*)"
+        R"((,\s*((?:in\s+|const\s+|highp\s+)*)float\s+\w+\s*)?\)\s*\{)", kLinearRegex);
+    // Tried only at the word before each occurrence of the name: searching from every position of
+    // a long text was the slow part of preparing one (1.8 s for 10 MB).
     std::smatch match;
-    for (std::size_t at = stripped.find("float"); at != std::string::npos; at = stripped.find("float", at + 5)) {
-        if (at > 0 && isWordCharacter(stripped[at - 1])) continue;
-        std::size_t name = at + 5;
-        while (name < stripped.size() && isBlank(stripped[name])) ++name;
-        if (name == at + 5 || stripped.compare(name, 3, "sdf") != 0) continue;
-        if (!matchAt(stripped, at, definition, match)) continue;
+    for (std::size_t at = stripped.find(entry); at != std::string::npos; at = stripped.find(entry, at + entry.size())) {
+        if ((at > 0 && isWordCharacter(stripped[at - 1])) ||
+            (at + entry.size() < stripped.size() && isWordCharacter(stripped[at + entry.size()])))
+            continue;
+        std::size_t type = previousWord(stripped, at);
+        if (type == std::string::npos || !matchAt(stripped, type, definition, match)) continue;
         signature.found = true;
-        if (match[3].matched) signature.animated = true;
+        signature.returnType = match[1].str();
+        if (match[4].matched) signature.animated = true;
     }
     return signature;
+}
+
+std::string metadataEntry(const std::string& text) {
+    std::size_t start = text.find_first_not_of(" \t\r\n");
+    if (start == std::string::npos || text.compare(start, 8, "/* sdfwb") != 0) return {};
+    std::size_t end = text.find("*/", start);
+    if (end == std::string::npos) return {};
+    static const std::regex line(R"((?:^|\n)[ \t]*entry[ \t]*:[ \t]*(\w+)[ \t]*\r?(?=\n|$))", kLinearRegex);
+    const std::string block = text.substr(start, end - start);
+    std::smatch match;
+    return std::regex_search(block, match, line) ? match[1].str() : std::string();
+}
+
+const std::vector<std::string>& conventionalEntries() {
+    static const std::vector<std::string> names = {"map", "scene", "sceneSDF", "sdScene", "de", "DE"};
+    return names;
+}
+
+std::vector<std::string> definedMacros(const std::string& stripped) {
+    std::vector<std::string> names;
+    std::set<std::string, std::less<>> seen;
+    for (std::size_t lineStart = 0; lineStart < stripped.size();) {
+        std::size_t lineEnd = stripped.find('\n', lineStart);
+        if (lineEnd == std::string::npos) lineEnd = stripped.size();
+        std::size_t i = lineStart;
+        while (i < lineEnd && (stripped[i] == ' ' || stripped[i] == '\t')) ++i;
+        if (i < lineEnd && stripped[i] == '#') {
+            ++i;
+            while (i < lineEnd && (stripped[i] == ' ' || stripped[i] == '\t')) ++i;
+            if (stripped.compare(i, 6, "define") == 0 && i + 6 < lineEnd && (stripped[i + 6] == ' ' || stripped[i + 6] == '\t')) {
+                std::size_t name = i + 6;
+                while (name < lineEnd && (stripped[name] == ' ' || stripped[name] == '\t')) ++name;
+                std::size_t nameEnd = name;
+                while (nameEnd < lineEnd && isWordCharacter(stripped[nameEnd])) ++nameEnd;
+                std::string word = stripped.substr(name, nameEnd - name);
+                if (isIdentifier(word) && seen.insert(word).second) names.push_back(std::move(word));
+            }
+        }
+        lineStart = lineEnd + 1;
+    }
+    return names;
 }
 
 std::vector<std::string> functionSignatures(const std::string& text) {
@@ -86,14 +149,16 @@ std::vector<std::string> functionSignatures(const std::string& text) {
     return signatures;
 }
 
-bool CompatNeeds::usesSceneTime() const {
-    return std::find(symbols.begin(), symbols.end(), "g3d_SceneTime") != symbols.end();
+bool CompatNeeds::usesTimeSymbol() const {
+    return std::find_if(symbols.begin(), symbols.end(), [](const std::string& s) { return s == "g3d_SceneTime" || s == "iTime"; }) !=
+           symbols.end();
 }
 
 CompatNeeds detectCompatNeeds(const std::string& stripped) {
     static const char* const candidates[] = {
         "pi", "saturate", "lerp", "square", "frac", "lengthSquared", "Point3", "Vector3", "Color3",
-        "Radiance3", "float2", "float3", "float4", "g3d_SceneTime", "g3d_uniformRandom"};
+        "Radiance3", "float2", "float3", "float4", "g3d_SceneTime", "g3d_uniformRandom",
+        "iTime"};  // Shadertoy's time uniform, which its code uses without declaring
     // Declared by the file itself: a macro, a variable, a function or a struct of that name.
     // Compiled once: building 15 regexes per call cost more than the searches.
     static const std::vector<std::regex> declared = [] {
@@ -127,45 +192,87 @@ CompatNeeds detectCompatNeeds(const std::string& stripped) {
 
 namespace {
 
-// Points at a function named sdf whose parameters are wrong, if any, else at line 1.
-Diagnostic missingSdfDiagnostic(const ResolvedSource& source) {
+// Points at a function named `entry` whose parameters are wrong, if any, else at line 1.
+Diagnostic missingEntryDiagnostic(const ResolvedSource& source, const std::string& entry, bool requested) {
     const std::string& root = source.map.files.front().text;
+    const std::string form = "`float " + entry + "(vec3 p)` or `float " + entry +
+                             "(vec3 p, float time)` (vec2/vec3/vec4 returns give the distance in .x)";
     std::string stripped = stripComments(root);
-    static const std::regex anySdf(R"(\b\w+\s+sdf\s*\([^)]*\))", kLinearRegex);
-    // The first match, tried only at the word before each blank-preceded `sdf` (see detectSignature).
+    const std::regex anyDefinition(R"(\b\w+\s+)" + entry + R"(\s*\([^)]*\))", kLinearRegex);
     std::smatch match;
-    for (std::size_t at = stripped.find("sdf"); at != std::string::npos; at = stripped.find("sdf", at + 3)) {
-        std::size_t start = at;
-        while (start > 0 && isBlank(stripped[start - 1])) --start;
-        if (start == at || start == 0 || !isWordCharacter(stripped[start - 1])) continue;
-        while (start > 0 && isWordCharacter(stripped[start - 1])) --start;
-        if (!matchAt(stripped, start, anySdf, match)) continue;
+    for (std::size_t at = stripped.find(entry); isIdentifier(entry) && at != std::string::npos; at = stripped.find(entry, at + entry.size())) {
+        if (at > 0 && isWordCharacter(stripped[at - 1])) continue;
+        std::size_t start = previousWord(stripped, at);
+        if (start == std::string::npos || !matchAt(stripped, start, anyDefinition, match)) continue;
         int line = 1 + int(std::count(stripped.begin(), stripped.begin() + std::ptrdiff_t(start), '\n'));
         std::size_t lineStart = stripped.rfind('\n', start);
         int column = int(start - (lineStart == std::string::npos ? 0 : lineStart + 1)) + 1;
         return {source.map.files.front().name, line, column, Severity::Error,
-                "sdf() must be declared as `float sdf(vec3 p)` or `float sdf(vec3 p, float time)`; found `" + match.str(0) + "`"};
+                entry + "() must be declared as " + form + "; found `" + match.str(0) + "`"};
     }
+    if (requested)
+        return {source.map.files.front().name, 1, 1, Severity::Error,
+                "entry point '" + entry + "' not found: define " + form + " (or name another function)"};
+    std::string conventional;
+    for (const std::string& name : conventionalEntries()) conventional += (conventional.empty() ? "" : ", ") + name;
     return {source.map.files.front().name, 1, 1, Severity::Error,
-            "no SDF here: define `float sdf(vec3 p)` or `float sdf(vec3 p, float time)`"};
+            "no SDF here: define `float sdf(vec3 p)` or `float sdf(vec3 p, float time)`, one of " + conventional +
+                " with that form, or name your function with --entry NAME or an `entry: NAME` metadata line"};
 }
 
 } // namespace
 
 PreparedSdf prepareSdf(const std::string& text, const std::string& name, const std::filesystem::path& path,
-                       const IncludeOptions& options) {
+                       const IncludeOptions& options, const std::string& entry) {
     PreparedSdf prepared;
     prepared.source = resolveIncludes(text, name, path, options);
     prepared.diagnostics = prepared.source.diagnostics;
     for (Diagnostic& d : checkSourceFiles(prepared.source)) prepared.diagnostics.push_back(std::move(d));
     std::string stripped = stripComments(prepared.source.text);
-    prepared.signature = detectSignature(stripped);
     prepared.compat = detectCompatNeeds(stripped);
-    if (!prepared.signature.found) prepared.diagnostics.push_back(missingSdfDiagnostic(prepared.source));
+    prepared.macros = definedMacros(stripped);
+    std::string chosen = entry;
+    prepared.entrySource = EntrySource::Requested;
+    if (chosen.empty()) {
+        chosen = metadataEntry(text);
+        prepared.entrySource = EntrySource::Metadata;
+    }
+    if (chosen.empty()) {
+        chosen = "sdf";
+        prepared.entrySource = EntrySource::Default;
+    }
+    auto refuse = [&](const std::string& why) {
+        prepared.signature.entry = chosen;
+        prepared.diagnostics.push_back({prepared.source.map.files.front().name, 1, 1, Severity::Error, why});
+    };
+    if (!isIdentifier(chosen)) {
+        refuse("entry point '" + chosen + "' is not a GLSL identifier");
+        return prepared;
+    }
+    if (chosen == "main" || chosen.rfind("gl_", 0) == 0 || (chosen.size() >= 6 && [&] {
+            std::string head = chosen.substr(0, 6);
+            for (char& c : head) c = char(std::tolower(static_cast<unsigned char>(c)));
+            return head == "sdfwb_";
+        }())) {
+        refuse("entry point '" + chosen + "' is reserved (main, gl_*, sdfwb_*): name your own function");
+        return prepared;
+    }
+    prepared.signature = detectSignature(stripped, chosen);
+    if (!prepared.signature.found && prepared.entrySource == EntrySource::Default) {
+        for (const std::string& conventional : conventionalEntries()) {
+            SdfSignature candidate = detectSignature(stripped, conventional);
+            if (!candidate.found) continue;
+            prepared.signature = candidate;
+            prepared.entrySource = EntrySource::Convention;
+            break;
+        }
+    }
+    if (!prepared.signature.found)
+        prepared.diagnostics.push_back(missingEntryDiagnostic(prepared.source, chosen, prepared.entrySource != EntrySource::Default));
     return prepared;
 }
 
-PreparedSdf prepareSdfFile(const std::filesystem::path& path, const IncludeOptions& options) {
+PreparedSdf prepareSdfFile(const std::filesystem::path& path, const IncludeOptions& options, const std::string& entry) {
     auto text = readTextFile(path);
     if (!text) {
         PreparedSdf failed;
@@ -173,7 +280,7 @@ PreparedSdf prepareSdfFile(const std::filesystem::path& path, const IncludeOptio
         failed.diagnostics.push_back({path.string(), 0, 0, Severity::Error, text.error().message});
         return failed;
     }
-    return prepareSdf(*text, path.string(), path, options);
+    return prepareSdf(*text, path.string(), path, options, entry);
 }
 
 } // namespace sdfwb::shaders

@@ -20,16 +20,27 @@ void appendFile(ComposedShader& shader, const std::string& name, const std::stri
     if (!text.empty() && text.back() != '\n') shader.text += '\n';
 }
 
-void appendDefines(ComposedShader& shader, const FeatureDefines& features) {
+void appendDefines(ComposedShader& shader, const FeatureDefines& features, bool timeUniform = false) {
     std::size_t index = shader.map.files.size();
     std::string defines;
     for (const auto& [name, value] : features) defines += "#define " + name + (value.empty() ? "" : " " + value) + "\n";
+    // Declared before the SDF so that the compat prelude can map g3d_SceneTime and iTime onto it.
+    if (timeUniform) defines += "uniform float sdfwb_time;\n";
     shader.map.files.push_back({"<sdfwb feature defines>", defines});
     shader.text += lineDirective(1, index);
     shader.text += defines;
 }
 
 } // namespace
+
+std::string entryWrapper(const PreparedSdf& sdf) {
+    const SdfSignature& signature = sdf.signature;
+    std::string text = "float sdfwb_sdf(vec3 p) { return " + signature.entry + (signature.animated ? "(p, sdfwb_time)" : "(p)") +
+                       (signature.returnType == "float" ? "" : ".x") + "; }\n";
+    // The user's macros end with the user's code: what follows is the workbench's.
+    for (const std::string& macro : sdf.macros) text += "#undef " + macro + "\n";
+    return text;
+}
 
 const char* stageName(Stage stage) {
     switch (stage) {
@@ -52,19 +63,22 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
     if (sdf.signature.animated) all["SDFWB_ANIMATED"] = "1";
     if (sdf.usesTime()) all["SDFWB_USES_TIME"] = "1";
     for (const std::string& symbol : sdf.compat.symbols) all["SDFWB_COMPAT_" + symbol] = "1";
+    if (all.count("SDFWB_COMPAT_g3d_uniformRandom")) all["SDFWB_NOISE_TEXTURE_UNIT"] = std::to_string(kNoiseTextureUnit);
 
     ComposedShader shader;
     shader.stage = stage;
     // The resolved SDF text numbers its files from 0 with #line directives; keep those indices.
     shader.map = sdf.source.map;
     shader.text = kVersionLine;
-    appendDefines(shader, all);
+    appendDefines(shader, all, sdf.usesTime());
     if (sdf.compat.any()) {
         auto compat = builtinShader("prelude/g3d_compat.glsl");
         // Embedded at build time, so it cannot be missing unless the build is broken.
         appendFile(shader, "sdfwb:prelude/g3d_compat.glsl", compat ? *compat : std::string("#error g3d_compat.glsl missing\n"));
     }
     shader.text += sdf.source.text;
+    if (!sdf.source.text.empty() && sdf.source.text.back() != '\n') shader.text += '\n';
+    appendFile(shader, "<sdfwb entry point>", entryWrapper(sdf));
     for (const ShaderPiece& piece : pieces) appendFile(shader, piece.name, piece.text);
     return shader;
 }

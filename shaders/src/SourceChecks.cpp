@@ -1,13 +1,15 @@
 #include <shaders/SourceChecks.h>
 
-#include <shaders/BuiltinShaders.h>
 #include <shaders/SdfSource.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace sdfwb::shaders {
@@ -101,29 +103,56 @@ std::vector<Found> topLevelDeclarations(const std::string& stripped) {
     return found;
 }
 
-struct Declarations {
-    std::map<std::string, std::string> functions;  // "name(types)" -> the built-in file
-    std::map<std::string, std::string> names;      // uniforms and structs -> the built-in file
-};
+// The reserved prefix, in any letter case ("sdfwb_", "SDFWB_", "Sdfwb_", ...).
+bool hasReservedPrefix(std::string_view word) {
+    static constexpr std::string_view prefix = "sdfwb_";
+    if (word.size() < prefix.size()) return false;
+    for (std::size_t i = 0; i < prefix.size(); ++i)
+        if (char(std::tolower(static_cast<unsigned char>(word[i]))) != prefix[i]) return false;
+    return true;
+}
 
-// What the tracer's and the samplers' pieces declare (computed once from the embedded files).
-const Declarations& builtinDeclarations() {
-    static const Declarations declarations = [] {
-        Declarations d;
-        for (const std::string& path : builtinShaderPaths()) {
-            if (path.rfind("tracer/", 0) != 0 && path.rfind("sampling/", 0) != 0 && path.rfind("samplers/", 0) != 0 &&
-                path.rfind("analysis/", 0) != 0)
-                continue;
-            auto text = builtinShader(path);
-            if (!text) continue;
-            for (const Found& f : topLevelDeclarations(stripComments(*text))) {
-                if (f.name == "main") continue;
-                (f.function ? d.functions : d.names).emplace(f.key, path);
+// Words that may stand before a name without declaring it ("return sdfwb_x", "else sdfwb_x").
+bool isStatementKeyword(const std::string& word) {
+    static const std::set<std::string> keywords = {"return", "else", "case", "do", "discard", "break", "continue"};
+    return keywords.count(word) != 0;
+}
+
+// Offsets of every name with the reserved prefix that `stripped` defines: after a type, a
+// qualifier, `struct` or `]` (a declaration), or as the name of a #define / #undef.
+std::vector<std::size_t> reservedDefinitions(const std::string& stripped) {
+    std::vector<std::size_t> found;
+    // Macros: "# define NAME" at the start of a line.
+    for (std::size_t lineStart = 0; lineStart < stripped.size();) {
+        std::size_t lineEnd = stripped.find('\n', lineStart);
+        if (lineEnd == std::string::npos) lineEnd = stripped.size();
+        std::size_t i = lineStart;
+        while (i < lineEnd && (stripped[i] == ' ' || stripped[i] == '\t')) ++i;
+        if (i < lineEnd && stripped[i] == '#') {
+            ++i;
+            while (i < lineEnd && (stripped[i] == ' ' || stripped[i] == '\t')) ++i;
+            std::size_t wordEnd = i;
+            while (wordEnd < lineEnd && isWord(stripped[wordEnd])) ++wordEnd;
+            const std::string_view directive(stripped.data() + i, wordEnd - i);
+            if (directive == "define" || directive == "undef") {
+                std::size_t name = wordEnd;
+                while (name < lineEnd && (stripped[name] == ' ' || stripped[name] == '\t')) ++name;
+                std::size_t nameEnd = name;
+                while (nameEnd < lineEnd && isWord(stripped[nameEnd])) ++nameEnd;
+                if (hasReservedPrefix(std::string_view(stripped.data() + name, nameEnd - name))) found.push_back(name);
             }
         }
-        return d;
-    }();
-    return declarations;
+        lineStart = lineEnd + 1;
+    }
+    const std::vector<Token> tokens = tokenize(stripped);
+    for (std::size_t i = 1; i < tokens.size(); ++i) {
+        if (!hasReservedPrefix(tokens[i].text)) continue;
+        const std::string& before = tokens[i - 1].text;
+        const bool afterName = isWord(before[0]) && !(before[0] >= '0' && before[0] <= '9') && !isStatementKeyword(before);
+        if (afterName || before == "]") found.push_back(tokens[i].offset);
+    }
+    std::sort(found.begin(), found.end());
+    return found;
 }
 
 // 1-based line and column of byte `offset` in `text`.
@@ -170,7 +199,6 @@ std::vector<Diagnostic> checkSourceFiles(const ResolvedSource& source) {
         out.push_back({source.map.files.front().name, 1, 1, Severity::Error, text});
         return out;
     }
-    const Declarations& builtin = builtinDeclarations();
     for (std::size_t index = 0; index < source.map.files.size(); ++index) {
         const SourceFile& file = source.map.files[index];
         const std::string& stripped = strippedFiles[index];
@@ -191,18 +219,15 @@ std::vector<Diagnostic> checkSourceFiles(const ResolvedSource& source) {
                 break;  // one per file: the rest is usually more of the same
             }
         }
-        for (const Found& f : topLevelDeclarations(stripped)) {
-            if (f.function && f.name == "main") {
+        for (const Found& f : topLevelDeclarations(stripped))
+            if (f.function && f.name == "main")
                 report(f.offset, "main() is written by the workbench (the tracer's and the samplers' own); an SDF file defines "
                                  "float sdf(vec3 p) and its helpers: remove this main()");
-            } else if (f.function) {
-                if (auto hit = builtin.functions.find(f.key); hit != builtin.functions.end())
-                    report(f.offset, "'" + f.key + "' is also defined by the workbench (sdfwb:" + hit->second +
-                                         "), which would clash when composed: rename yours (e.g. " + f.name + "Scene)");
-            } else if (auto hit = builtin.names.find(f.key); hit != builtin.names.end()) {
-                report(f.offset, "'" + f.name + "' is also declared by the workbench (sdfwb:" + hit->second +
-                                     "), which would clash when composed: rename yours");
-            }
+        for (std::size_t offset : reservedDefinitions(stripped)) {
+            std::size_t end = offset;
+            while (end < stripped.size() && isWord(stripped[end])) ++end;
+            report(offset, "'" + stripped.substr(offset, end - offset) + "': names beginning with sdfwb_ (in any letter case) are "
+                           "reserved for the workbench's own shader code; every other name is yours: rename this one");
         }
     }
     return out;

@@ -1,32 +1,32 @@
 // Cutting plane: dot(n, p) = offset, drawn as in the paper: a thick black zero contour, thin
-// isocontours every u_contourSpacing, outside a yellow-to-blue ramp with distance, inside solid
+// isocontours every sdfwb_contourSpacing, outside a yellow-to-blue ramp with distance, inside solid
 // orange. Lines are anti-aliased with screen-space derivatives, so they keep a constant width.
 // Overlays (SDFWB_PLANE_LIPSCHITZ): red where |grad f| > 1 beyond tolerance, grey where it is ~0
 // away from the surface; NaN/Inf is always magenta.
 
-uniform vec3 u_planeNormal;       // unit
-uniform float u_planeOffset;
-uniform float u_contourSpacing;   // isocontour spacing (1/64 by default)
-uniform float u_rampDistance;     // distance at which the outside ramp reaches full blue
+uniform vec3 sdfwb_planeNormal;       // unit
+uniform float sdfwb_planeOffset;
+uniform float sdfwb_contourSpacing;   // isocontour spacing (1/64 by default)
+uniform float sdfwb_rampDistance;     // distance at which the outside ramp reaches full blue
 
 // Coverage in [0, 1] of a line of `widthPixels` at the zeros of `value` (value's units change by
 // fwidth(value) per pixel).
-float lineCoverage(float value, float widthPixels) {
+float sdfwb_lineCoverage(float value, float widthPixels) {
     float perPixel = max(fwidth(value), 1e-9);
     return 1.0 - smoothstep(0.5 * widthPixels - 0.5, 0.5 * widthPixels + 0.5, abs(value) / perPixel);
 }
 
-vec3 planeColor(vec3 p) {
-    float f = map(p);
+vec3 sdfwb_planeColor(vec3 p) {
+    float f = sdfwb_sdf(p);
     if (isnan(f) || isinf(f)) return vec3(1.0, 0.0, 1.0);
     vec3 color;
     if (f < 0.0) {
         color = vec3(0.93, 0.55, 0.18);  // inside: solid orange
     } else {
-        float x = clamp(f / u_rampDistance, 0.0, 1.0);
+        float x = clamp(f / sdfwb_rampDistance, 0.0, 1.0);
         color = mix(vec3(0.98, 0.9, 0.35), vec3(0.15, 0.3, 0.75), sqrt(x));
         // isocontours every spacing (outside only, as in the paper)
-        float phase = f / u_contourSpacing;
+        float phase = f / sdfwb_contourSpacing;
         float contour = phase - floor(phase + 0.5);
         float perPixel = max(fwidth(phase), 1e-9);
         float thin = 1.0 - smoothstep(0.25, 1.0, abs(contour) / perPixel);
@@ -36,24 +36,24 @@ vec3 planeColor(vec3 p) {
     }
 #ifdef SDFWB_PLANE_LIPSCHITZ
     const float h = 1e-3;
-    vec3 g = vec3(map(p + vec3(h, 0, 0)) - map(p - vec3(h, 0, 0)), map(p + vec3(0, h, 0)) - map(p - vec3(0, h, 0)),
-                  map(p + vec3(0, 0, h)) - map(p - vec3(0, 0, h))) / (2.0 * h);
+    vec3 g = vec3(sdfwb_sdf(p + vec3(h, 0, 0)) - sdfwb_sdf(p - vec3(h, 0, 0)), sdfwb_sdf(p + vec3(0, h, 0)) - sdfwb_sdf(p - vec3(0, h, 0)),
+                  sdfwb_sdf(p + vec3(0, 0, h)) - sdfwb_sdf(p - vec3(0, 0, h))) / (2.0 * h);
     float slope = length(g);
     if (isnan(slope) || isinf(slope)) return vec3(1.0, 0.0, 1.0);
     if (slope > 1.02) color = mix(color, vec3(0.9, 0.05, 0.05), clamp((slope - 1.02) * 4.0 + 0.35, 0.0, 0.85));
-    else if (slope < 0.05 && abs(f) > 4.0 * u_contourSpacing) color = mix(color, vec3(0.55), 0.8);
+    else if (slope < 0.05 && abs(f) > 4.0 * sdfwb_contourSpacing) color = mix(color, vec3(0.55), 0.8);
 #endif
     // the zero contour: thick and black
-    color = mix(color, vec3(0.0), lineCoverage(f, 3.0));
+    color = mix(color, vec3(0.0), sdfwb_lineCoverage(f, 3.0));
     return color;
 }
 
 // Distance along the ray to the plane inside the [-1,1]^3 box, or -1.
-float intersectPlane(vec3 origin, vec3 direction) {
-    float denominator = dot(direction, u_planeNormal);
+float sdfwb_intersectPlane(vec3 origin, vec3 direction) {
+    float denominator = dot(direction, sdfwb_planeNormal);
     if (abs(denominator) < 1e-8) return -1.0;
-    float t = (u_planeOffset - dot(origin, u_planeNormal)) / denominator;
+    float t = (sdfwb_planeOffset - dot(origin, sdfwb_planeNormal)) / denominator;
     if (t <= 0.0) return -1.0;
     vec3 p = origin + t * direction;
-    return all(lessThanEqual(abs(p), vec3(1.0 + u_boxMargin))) ? t : -1.0;
+    return all(lessThanEqual(abs(p), vec3(1.0 + sdfwb_boxMargin))) ? t : -1.0;
 }

@@ -1,8 +1,8 @@
 // Matcap: the view-space normal looks up a sphere image (a material captured as a lit sphere).
-uniform sampler2D u_matcap;
+uniform sampler2D sdfwb_matcap;
 
-vec3 shade(vec3 position, vec3 normal, vec3 direction, Hit hit) {
-    vec3 viewNormal = vec3(dot(normal, u_cameraRight), dot(normal, u_cameraUp), dot(normal, -u_cameraForward));
+vec3 sdfwb_shade(vec3 position, vec3 normal, vec3 direction, sdfwb_Hit hit) {
+    vec3 viewNormal = vec3(dot(normal, sdfwb_cameraRight), dot(normal, sdfwb_cameraUp), dot(normal, -sdfwb_cameraForward));
     vec2 uv = viewNormal.xy * 0.49 + 0.5;
-    return texture(u_matcap, vec2(uv.x, 1.0 - uv.y)).rgb;
+    return texture(sdfwb_matcap, vec2(uv.x, 1.0 - uv.y)).rgb;
 }

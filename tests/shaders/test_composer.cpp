@@ -55,14 +55,14 @@ TEST(Composer, FeaturesThatAreOffAreNotInTheSource) {
     TracerFeatures plain;
     auto bare = composeTracer(sdf, plain);
     ASSERT_TRUE(bare.hasValue());
-    EXPECT_EQ(bare->text.find("ambientOcclusion(vec3"), std::string::npos) << "AO off: no AO function";
-    EXPECT_EQ(bare->text.find("u_matcap"), std::string::npos) << "normals mode: no matcap sampler";
+    EXPECT_EQ(bare->text.find("sdfwb_ambientOcclusion(vec3"), std::string::npos) << "AO off: no AO function";
+    EXPECT_EQ(bare->text.find("sdfwb_matcap"), std::string::npos) << "normals mode: no matcap sampler";
     EXPECT_EQ(bare->text.find("#define SDFWB_OVERRELAX"), std::string::npos);
     EXPECT_EQ(bare->text.find("#define SDFWB_USES_TIME"), std::string::npos) << "static SDF: time is compiled out";
     // The one call site in trace_main.frag sits in an #ifdef SDFWB_PLANE block; the plane's
     // functions and uniforms are not composed at all.
-    EXPECT_EQ(bare->text.find("vec3 planeColor("), std::string::npos) << "no plane: none of the plane's code";
-    EXPECT_EQ(bare->text.find("uniform vec3 u_planeNormal"), std::string::npos);
+    EXPECT_EQ(bare->text.find("vec3 sdfwb_planeColor("), std::string::npos) << "no plane: none of the plane's code";
+    EXPECT_EQ(bare->text.find("uniform vec3 sdfwb_planeNormal"), std::string::npos);
     EXPECT_EQ(bare->text.find("#define SDFWB_PLANE"), std::string::npos);
     EXPECT_EQ(bare->text.find("sdfwb:tracer/plane.glsl"), std::string::npos);
     TracerFeatures rich;
@@ -74,10 +74,10 @@ TEST(Composer, FeaturesThatAreOffAreNotInTheSource) {
     rich.planeLipschitzOverlay = true;
     auto full = composeTracer(sdf, rich);
     ASSERT_TRUE(full.hasValue());
-    EXPECT_NE(full->text.find("float ambientOcclusion(vec3"), std::string::npos);
-    EXPECT_NE(full->text.find("uniform sampler2D u_matcap"), std::string::npos);
+    EXPECT_NE(full->text.find("float sdfwb_ambientOcclusion(vec3"), std::string::npos);
+    EXPECT_NE(full->text.find("uniform sampler2D sdfwb_matcap"), std::string::npos);
     EXPECT_NE(full->text.find("#define SDFWB_OVERRELAX 1"), std::string::npos);
-    EXPECT_NE(full->text.find("vec3 planeColor(vec3 p)"), std::string::npos);
+    EXPECT_NE(full->text.find("vec3 sdfwb_planeColor(vec3 p)"), std::string::npos);
     EXPECT_NE(full->text.find("#define SDFWB_PLANE_CLIP 1"), std::string::npos);
     EXPECT_FALSE(hasErrors(checkWithGlslang(*full)));
 }

@@ -11,45 +11,68 @@
 
 namespace sdfwb::shaders {
 
+// The SDF's entry point: `sdf` unless the user names another function (--entry, an `entry:` line in
+// the metadata block, the GUI's entry field, Python's entry=), or, when the file defines no sdf(),
+// the first of the names public ray-marching code uses for it (map, scene, sceneSDF, sdScene, de,
+// DE). It returns float, or vec2/vec3/vec4 with the distance in .x (Shadertoy's material ids).
 struct SdfSignature {
-    bool found = false;     // a definition of sdf(vec3) or sdf(vec3, float) exists
-    bool animated = false;  // sdf(vec3 p, float time)
+    bool found = false;     // a definition of ENTRY(vec3) or ENTRY(vec3, float) exists
+    bool animated = false;  // ENTRY(vec3 p, float time)
+    std::string entry = "sdf";
+    std::string returnType = "float";  // float | vec2 | vec3 | vec4
 };
+
+enum class EntrySource { Default, Requested, Metadata, Convention };
 
 // Symbols of the original sdf-explorer's G3D dialect that the text uses without declaring them.
 // Each becomes a `#define SDFWB_COMPAT_<NAME>` that selects a section of prelude/g3d_compat.glsl.
 struct CompatNeeds {
     std::vector<std::string> symbols;  // e.g. "pi", "saturate", "float3", "g3d_SceneTime"
     bool any() const { return !symbols.empty(); }
-    bool usesSceneTime() const;
+    bool usesTimeSymbol() const;  // g3d_SceneTime or Shadertoy's iTime
 };
 
 struct PreparedSdf {
     ResolvedSource source;
     SdfSignature signature;
     CompatNeeds compat;
-    std::vector<Diagnostic> diagnostics;  // resolver errors + a missing/ill-typed sdf()
+    std::vector<Diagnostic> diagnostics;  // resolver errors + a missing/ill-typed entry point
+    EntrySource entrySource = EntrySource::Default;
+    // Names the file (with its includes) #defines. The composer #undefs them after the SDF, so a
+    // user's `#define normal ...` cannot reach the workbench's code composed after it.
+    std::vector<std::string> macros;
 
     bool ok() const { return !hasErrors(diagnostics); }
     // Needs a time value each frame: sdf(vec3, float) or the G3D scene time uniform.
-    bool usesTime() const { return signature.animated || compat.usesSceneTime(); }
+    bool usesTime() const { return signature.animated || compat.usesTimeSymbol(); }
 };
 
 // Returns `text` with comments replaced by spaces (newlines kept, so line numbers still match).
 std::string stripComments(const std::string& text);
 
-SdfSignature detectSignature(const std::string& strippedText);
+// Finds a definition of `entry` taking (vec3) or (vec3, float) and returning float or vec2-4.
+SdfSignature detectSignature(const std::string& strippedText, const std::string& entry = "sdf");
+
+// The `entry:` value of the leading `/* sdfwb ... */` metadata block, or "" when it has none.
+std::string metadataEntry(const std::string& text);
+
+// The conventional entry names tried, in order, when a file defines no sdf() and names none.
+const std::vector<std::string>& conventionalEntries();
+
+// Names of the macros `strippedText` #defines, each once, in order of first definition.
+std::vector<std::string> definedMacros(const std::string& strippedText);
 
 // "name(type a, type b)" for every function defined in `text` (for autocompletion and call tips).
 std::vector<std::string> functionSignatures(const std::string& text);
 CompatNeeds detectCompatNeeds(const std::string& strippedText);
 
 // Resolves includes and analyses the text. `name` labels diagnostics for the root text; `path`
-// may be empty for unsaved text.
+// may be empty for unsaved text. `entry` names the SDF's function; empty: the metadata block's
+// `entry:`, else `sdf`, else a conventional name (see SdfSignature).
 PreparedSdf prepareSdf(const std::string& text, const std::string& name, const std::filesystem::path& path,
-                       const IncludeOptions& options);
+                       const IncludeOptions& options, const std::string& entry = {});
 
 // Reads `path` and prepares it; an unreadable file gives a diagnostic naming it.
-PreparedSdf prepareSdfFile(const std::filesystem::path& path, const IncludeOptions& options);
+PreparedSdf prepareSdfFile(const std::filesystem::path& path, const IncludeOptions& options, const std::string& entry = {});
 
 } // namespace sdfwb::shaders

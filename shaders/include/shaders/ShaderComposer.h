@@ -1,7 +1,11 @@
 #pragma once
 // Builds the GLSL string handed to glslang and the driver:
-//   #version 430 core, feature defines, the G3D compat prelude (only the parts the SDF uses),
-//   the SDF with includes expanded and #line-mapped, then the stage file (tracer, sampler, ...).
+//   #version 430 core, feature defines (and `uniform float sdfwb_time` when the SDF needs time),
+//   the compat prelude (only the parts the SDF uses), the SDF with includes expanded and
+//   #line-mapped, the entry wrapper `float sdfwb_sdf(vec3)` followed by an #undef of every macro
+//   the SDF defined, then the stage pieces (tracer, sampler, ...), which call sdfwb_sdf() only.
+// Every name the workbench adds carries the prefix sdfwb_ (SDFWB_ for macros): the user's names
+// cannot clash with them, and the user's macros cannot reach them.
 // Features that are off are not compiled in: the stage files test the defines with #ifdef.
 // Pure function: no GL, no I/O beyond reading built-in shader files.
 
@@ -17,6 +21,10 @@ namespace sdfwb::shaders {
 
 enum class Stage { Vertex, Fragment, Compute };
 
+// Texture unit of the G3D noise texture g3d_uniformRandom (SDFWB_NOISE_TEXTURE_UNIT in GLSL); the
+// matcap uses unit 0.
+constexpr int kNoiseTextureUnit = 7;
+
 // Feature switches, written as `#define NAME VALUE` in name order (so equal sets give equal text).
 using FeatureDefines = std::map<std::string, std::string>;
 
@@ -31,6 +39,10 @@ struct ShaderPiece {
     std::string name;  // shown in diagnostics ("sdfwb:samplers/rand.glsl", or a user's path)
     std::string text;
 };
+
+// `float sdfwb_sdf(vec3 p)` calling the SDF's entry point (with sdfwb_time when it takes time,
+// .x of a vector return), then `#undef NAME` for each macro the SDF defines.
+std::string entryWrapper(const PreparedSdf& sdf);
 
 // Composes the SDF followed by `pieces` in order. Adds SDFWB_ANIMATED when the SDF takes time,
 // SDFWB_USES_TIME when it needs a time value, and SDFWB_COMPAT_<SYMBOL> for each compat symbol.
