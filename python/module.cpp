@@ -179,12 +179,40 @@ void save(const std::string& path, py::array_t<float, py::array::c_style | py::a
     if (!written) throw std::runtime_error(written.error().message);
 }
 
-py::dict audit(const std::string& sdf, std::uint64_t samples, std::uint64_t seed, float time, const std::string& entry) {
+py::list flagsList(const std::vector<sampling::AuditFlag>& flags) {
+    py::list list;
+    for (const sampling::AuditFlag& f : flags) {
+        py::dict item;
+        item["flag"] = f.name;
+        item["evidence"] = f.evidence;
+        item["share"] = f.share;
+        item["count"] = f.count;
+        py::list examples;
+        for (const glm::vec3& e : f.examples) examples.append(py::make_tuple(e.x, e.y, e.z));
+        item["examples"] = examples;
+        if (f.name == "truncated") {
+            item["value"] = f.value;
+            item["start"] = f.start;
+        } else if (f.name == "discontinuous") {
+            item["jump"] = f.value;
+            item["jump_max"] = f.maximum;
+        } else if (f.name == "non-conservative") {
+            item["lipschitz"] = f.value;
+            item["lipschitz_max"] = f.maximum;
+        }
+        list.append(item);
+    }
+    return list;
+}
+
+py::dict audit(const std::string& sdf, std::uint64_t samples, std::uint64_t seed, float time, const std::string& entry, float probeDistance) {
     shaders::PreparedSdf prepared = prepare(sdf, entry);
     sampling::AuditOptions options;
     options.samples = samples;
     options.seed = seed;
     options.time = time;
+    if (!(probeDistance >= 0.1f && probeDistance <= 100.0f)) throw py::value_error("probe_distance: must be 0.1..100");
+    options.probeDistance = probeDistance;
     Expected<sampling::AuditReport> report = makeError("not run");
     {
         py::gil_scoped_release release;
@@ -210,6 +238,8 @@ py::dict audit(const std::string& sdf, std::uint64_t samples, std::uint64_t seed
     result["exactness_error_p99"] = r.exactnessP99;
     result["surface_spacing"] = r.surfaceSpacing;
     result["samples"] = r.samples;
+    result["flags"] = flagsList(r.flags);
+    result["entry"] = prepared.signature.entry;
     result["seconds"] = r.seconds;
     return result;
 }
@@ -249,7 +279,8 @@ PYBIND11_MODULE(sdfwb, m) {
           py::arg("sdf") = "", py::arg("pattern") = "", py::arg("seed") = 0, py::arg("time") = 0.0f,
           "Writes arrays to a .bin, .npz or .ply sample file (atomically).");
     m.def("audit", &audit, py::arg("sdf"), py::arg("samples") = 100000, py::arg("seed") = 0, py::arg("time") = 0.0f,
-          py::arg("entry") = "",
-          "Field audit: verdict (exact, conservative, non-conservative, truncated, discontinuous, nan) and figures.");
+          py::arg("entry") = "", py::arg("probe_distance") = 3.0f,
+          "Field audit: verdict (the most severe finding: exact, conservative, non-conservative, truncated, discontinuous,\n"
+          "nan), flags (every finding with its evidence and up to 16 example points) and figures.");
     m.def("list_sdfs", &listSdfs, "The dataset: one dict per SDF (name, category, declared_type, animated, path, author, license).");
 }

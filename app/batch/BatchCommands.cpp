@@ -418,6 +418,39 @@ int runAudit(const AuditCommand& command, const OutputOptions& output) {
     }
     auto context = renderer::HeadlessContext::create();
     if (!context) { printError(context.error().message); return kExitNoGl; }
+    // Every finding with its evidence: JSON objects, and text lines.
+    auto flagsJson = [](const std::vector<sampling::AuditFlag>& flags) {
+        nlohmann::json list = nlohmann::json::array();
+        for (const sampling::AuditFlag& f : flags) {
+            nlohmann::json examples = nlohmann::json::array();
+            for (const glm::vec3& e : f.examples) examples.push_back({e.x, e.y, e.z});
+            nlohmann::json item = {{"flag", f.name}, {"evidence", f.evidence}, {"share", f.share}, {"count", f.count}, {"examples", examples}};
+            if (f.name == "truncated") {
+                item["value"] = f.value;
+                item["start"] = f.start;
+            } else if (f.name == "discontinuous") {
+                item["jump"] = f.value;
+                item["jump_max"] = f.maximum;
+            } else if (f.name == "non-conservative") {
+                item["lipschitz"] = f.value;
+                item["lipschitz_max"] = f.maximum;
+            }
+            list.push_back(std::move(item));
+        }
+        return list;
+    };
+    auto printFlags = [](const std::vector<sampling::AuditFlag>& flags) {
+        if (flags.empty()) std::printf("  findings           none (no NaN/Inf, jump, plateau or |grad f| > 1.05 found)\n");
+        for (const sampling::AuditFlag& f : flags) {
+            std::printf("  %-18s %s\n", f.name.c_str(), f.evidence.c_str());
+            if (!f.examples.empty()) {
+                std::printf("  %-18s", "");
+                for (std::size_t k = 0; k < f.examples.size() && k < 4; ++k)
+                    std::printf(" (%.4g, %.4g, %.4g)", f.examples[k].x, f.examples[k].y, f.examples[k].z);
+                std::printf("%s\n", f.examples.size() > 4 ? " ... (all in --json)" : "");
+            }
+        }
+    };
 
     if (command.plane) {
         glm::vec3 normal(command.planeNormal[0], command.planeNormal[1], command.planeNormal[2]);
@@ -430,7 +463,8 @@ int runAudit(const AuditCommand& command, const OutputOptions& output) {
                                    {"lipschitz_max", r.lipschitzMax}, {"lipschitz_p99", r.lipschitz99}, {"share_above_one", r.shareAboveOne},
                                    {"truncation_distance", r.truncationDistance ? nlohmann::json(*r.truncationDistance) : nlohmann::json(nullptr)},
                                    {"discontinuities", r.discontinuities}, {"nan_count", r.nanCount}, {"histogram", r.histogram},
-                                   {"histogram_bin_width", 0.05}, {"safe_step_factor", r.safeStepFactor}, {"seconds", r.seconds}};
+                                   {"histogram_bin_width", 0.05}, {"safe_step_factor", r.safeStepFactor},
+                                   {"flags", flagsJson(r.flags)}, {"entry", sdf.signature.entry}, {"seconds", r.seconds}};
             std::cout << json.dump(2) << "\n";
         } else if (!output.quiet) {
             std::printf("plane %.3g,%.3g,%.3g,%.3g of %s: %llu points (%dx%d grid), %.3f s\n", normal.x, normal.y, normal.z, command.planeOffset,
@@ -442,6 +476,7 @@ int runAudit(const AuditCommand& command, const OutputOptions& output) {
             std::printf("  truncation         %s\n", r.truncationDistance ? std::to_string(*r.truncationDistance).c_str() : "none");
             std::printf("  discontinuities    %llu points\n  NaN/Inf            %llu points\n", (unsigned long long)r.discontinuities,
                         (unsigned long long)r.nanCount);
+            printFlags(r.flags);
         }
         return kExitOk;
     }
@@ -452,6 +487,7 @@ int runAudit(const AuditCommand& command, const OutputOptions& output) {
     options.samples = command.samples;
     options.seed = command.seed;
     options.time = command.time;
+    options.probeDistance = command.probeDistance;
     Expected<sampling::AuditReport> report = [&] {
         InterruptScope interrupts(cancel);
         return sampling::auditField(sdf, options, ProgressSink{[&](std::uint64_t done, std::uint64_t total) { bar.update(done, total); }, &cancel});
@@ -477,10 +513,13 @@ int runAudit(const AuditCommand& command, const OutputOptions& output) {
                                {"exactness_error_p99", r.exactnessP99}, {"exactness_error_max", r.exactnessMax},
                                {"overestimate_share", r.overestimateShare}, {"surface_gradient", r.surfaceGradient},
                                {"noise_floor", r.noiseFloor}, {"samples", r.samples}, {"scales", scales},
-                               {"convergence", convergence}, {"seconds", r.seconds}};
+                               {"convergence", convergence}, {"flags", flagsJson(r.flags)}, {"entry", sdf.signature.entry},
+                               {"probe_distance", options.probeDistance}, {"seconds", r.seconds}};
         std::cout << json.dump(2) << "\n";
     } else if (!output.quiet) {
         std::printf("%s: %s\n  %s\n\n", sdfPath->string().c_str(), r.verdict.c_str(), r.reason.c_str());
+        printFlags(r.flags);
+        std::printf("\n");
         std::printf("  Lipschitz estimate   %.4g (a lower bound of the true constant; largest quotient seen %.4g, spread %.2g)\n",
                     r.lipschitz, r.lipschitzMax, r.lipschitzUncertainty);
         std::printf("  safe step factor     %.4g\n", r.safeStepFactor);

@@ -76,6 +76,7 @@ struct AuditCommand {
     float planeNormal[3] = {0.0f, 0.0f, 1.0f};
     float planeOffset = 0.0f;
     int resolution = 256;
+    float probeDistance = 3.0f;  // truncation: probe outward from the surface this far
 };
 
 int runAudit(const AuditCommand& command, const OutputOptions& output);

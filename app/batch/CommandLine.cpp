@@ -306,6 +306,8 @@ int runAuditCommand(const Arguments& arguments, Mode mode) {
     app.add_option("--time", command.time, "time in seconds for animated SDFs")->capture_default_str()->check(numberCheck(false));
     app.add_option("--plane", plane, "NX,NY,NZ,OFFSET: readouts for this cutting plane instead of the volume audit");
     app.add_option("--resolution", command.resolution, "grid side on the plane")->capture_default_str()->check(CLI::Range(2, 4096));
+    app.add_option("--probe-distance", command.probeDistance, "truncation: probe outward from the surface this far (plateaus beyond the cube count)")
+        ->capture_default_str()->check(numberCheck(true))->check(CLI::Range(0.1f, 100.0f));
     addOutputFlags(app, output);
     if (auto exit = parse(app, "--batch audit", arguments)) return *exit;
     if (!plane.empty()) {

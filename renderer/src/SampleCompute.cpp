@@ -41,6 +41,7 @@ std::uint32_t squareSide(std::uint64_t count) {
 struct SampleCompute::Impl {
     GlProgram program;
     GlBuffer buffers[3];
+    GlBuffer inputs;  // caller's points (analysis/points.glsl)
     GlTexture noise;  // g3d_uniformRandom, made when the program reads it
     std::uint32_t capacity = 0;
     std::string source;
@@ -52,6 +53,7 @@ SampleCompute::SampleCompute() : m_impl(std::make_unique<Impl>()) {}
 SampleCompute::~SampleCompute() {
     m_impl->program.release();
     for (GlBuffer& buffer : m_impl->buffers) buffer.release();
+    m_impl->inputs.release();
     m_impl->noise.release();
 }
 
@@ -137,6 +139,16 @@ Expected<void> SampleCompute::run(const SampleUniforms& uniforms, std::uint32_t 
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingPositions, m_impl->buffers[0].id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingDistances, m_impl->buffers[1].id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingGradients, m_impl->buffers[2].id());
+    if (uniforms.inputPoints) {
+        if (!m_impl->inputs) {
+            GLuint id = 0;
+            glGenBuffers(1, &id);
+            m_impl->inputs = GlBuffer(id);
+        }
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, m_impl->inputs.id());
+        glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(count) * 12, uniforms.inputPoints + 3 * std::size_t(first), GL_STREAM_DRAW);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingInputs, m_impl->inputs.id());
+    }
     glDispatchCompute((count + 63u) / 64u, 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     float* targets[3] = {positions, distances, gradients};
@@ -155,6 +167,7 @@ Expected<void> SampleCompute::run(const SampleUniforms& uniforms, std::uint32_t 
 void SampleCompute::releaseGl() {
     m_impl->program.reset();
     for (GlBuffer& buffer : m_impl->buffers) buffer.reset();
+    m_impl->inputs.reset();
     m_impl->noise.reset();
     m_impl->capacity = 0;
 }

@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <optional>
 
 namespace sdfwb::sampling {
 namespace {
@@ -131,6 +133,127 @@ Expected<float> measureNoiseFloor(const shaders::PreparedSdf& sdf, const AuditOp
     return floors.empty() ? 0.0f : percentile(floors, 0.5);
 }
 
+// Runs the analysis/points.glsl sampler over `points` (xyz triples): f and its gradient at each.
+Expected<SampleSet> evaluateAt(const shaders::PreparedSdf& sdf, const AuditOptions& options, const std::vector<float>& points,
+                               float gradientStep) {
+    Runner runner;
+    if (auto ok = runner.build(sdf, "analysis/points.glsl"); !ok) return ok.error();
+    SamplingJob job;
+    job.count = points.size() / 3;
+    job.time = options.time;
+    job.gradientStep = gradientStep;
+    job.inputPoints = points.data();
+    return runner.run(job);
+}
+
+struct JumpCandidate {
+    glm::vec3 position;
+    glm::vec3 across;  // unit: the finest-step gradient's direction, which crosses the jump
+};
+
+// Measures the jump at each candidate: f on both sides, 3e-4 away along `across` (the candidate
+// lies within ~1e-4 of the jump, so the two straddle it), less what the slope on either side
+// (from two more points per side) accounts for. Jumps within 4x the noise floor are rounding.
+Expected<AuditFlag> measureJumps(const shaders::PreparedSdf& sdf, const AuditOptions& options, const std::vector<JumpCandidate>& candidates,
+                                 float noiseFloor) {
+    AuditFlag flag;
+    flag.name = "discontinuous";
+    const std::size_t used = std::min<std::size_t>(candidates.size(), 512);
+    if (used == 0) return flag;
+    constexpr float kOffsets[4] = {-6e-4f, -3e-4f, 3e-4f, 6e-4f};
+    std::vector<float> points;
+    for (std::size_t c = 0; c < used; ++c)
+        for (float offset : kOffsets) {
+            glm::vec3 q = candidates[c].position + offset * candidates[c].across;
+            points.insert(points.end(), {q.x, q.y, q.z});
+        }
+    auto values = evaluateAt(sdf, options, points, 1e-3f);
+    if (!values) return values.error();
+    std::vector<float> jumps;
+    for (std::size_t c = 0; c < used; ++c) {
+        const float* f = &values->distances[4 * c];
+        if (!std::isfinite(f[0]) || !std::isfinite(f[1]) || !std::isfinite(f[2]) || !std::isfinite(f[3])) continue;
+        const float slope = std::max(std::abs(f[1] - f[0]), std::abs(f[3] - f[2])) / 3e-4f;
+        const float jump = std::abs(f[2] - f[1]) - 6e-4f * slope;
+        if (!(jump > 4.0f * noiseFloor + 1e-5f)) continue;
+        jumps.push_back(jump);
+        if (flag.examples.size() < kMaxExamples) flag.examples.push_back(candidates[c].position);
+    }
+    flag.count = jumps.size();
+    if (!jumps.empty()) {
+        flag.value = percentile(jumps, 0.5);
+        flag.maximum = *std::max_element(jumps.begin(), jumps.end());
+    }
+    return flag;
+}
+
+// Probes along rays from surface points outward (along the normalised gradient), at distances
+// growing quadratically from 0.01 to options.probeDistance. A ray ends on a plateau when, from
+// some probe on, f stays put (changes by less than 0.02 per unit of distance, up to noise) at a
+// positive value: the field has stopped growing. Returns a "truncated" flag whose count is the
+// number of rays that end on one (0: none).
+Expected<AuditFlag> probeOutward(const shaders::PreparedSdf& sdf, const AuditOptions& options, const SampleSet& surface, float noiseFloor) {
+    AuditFlag flag;
+    flag.name = "truncated";
+    constexpr int kProbes = 32;
+    const float reach = std::max(options.probeDistance, 0.1f);
+    float distances[kProbes];
+    for (int k = 0; k < kProbes; ++k) distances[k] = 0.01f + (reach - 0.01f) * float(k * k) / float((kProbes - 1) * (kProbes - 1));
+    std::vector<float> points;
+    std::vector<glm::vec3> origins, normals;
+    for (std::size_t i = 0; i < surface.size() && origins.size() < 2048; ++i) {
+        if (!finiteRow(surface, i)) continue;
+        glm::vec3 g(surface.gradients[3 * i], surface.gradients[3 * i + 1], surface.gradients[3 * i + 2]);
+        if (!(glm::length(g) > 1e-6f)) continue;
+        origins.push_back(glm::vec3(surface.positions[3 * i], surface.positions[3 * i + 1], surface.positions[3 * i + 2]));
+        normals.push_back(glm::normalize(g));
+    }
+    if (origins.empty()) return flag;
+    for (std::size_t r = 0; r < origins.size(); ++r)
+        for (float d : distances) {
+            glm::vec3 q = origins[r] + d * normals[r];
+            points.insert(points.end(), {q.x, q.y, q.z});
+        }
+    auto values = evaluateAt(sdf, options, points, 1e-3f);
+    if (!values) return values.error();
+    std::vector<float> plateauValues, starts;
+    for (std::size_t r = 0; r < origins.size(); ++r) {
+        const float* f = &values->distances[std::size_t(kProbes) * r];
+        // Walk back from the far end while the profile stays flat.
+        int first = kProbes - 1;
+        if (!std::isfinite(f[first]) || f[first] <= 0.0f) continue;
+        while (first > 0) {
+            const float previous = f[first - 1];
+            if (!std::isfinite(previous)) break;
+            // Flat from each probe to the next and from here to the end.
+            const float noise = 8.0f * noiseFloor + 1e-6f;
+            if (std::abs(previous - f[first]) > 0.02f * (distances[first] - distances[first - 1]) + noise) break;
+            if (std::abs(previous - f[kProbes - 1]) > 0.02f * (distances[kProbes - 1] - distances[first - 1]) + noise) break;
+            --first;
+        }
+        // At least the last three probes, and a stretch of at least 10 % of the reach.
+        if (first > kProbes - 3 || distances[kProbes - 1] - distances[first] < 0.1f * reach || f[first] <= 0.0f) continue;
+        plateauValues.push_back(f[kProbes - 1]);
+        starts.push_back(distances[first]);
+        if (flag.examples.size() < kMaxExamples) flag.examples.push_back(origins[r] + distances[first] * normals[r]);
+    }
+    flag.count = plateauValues.size();
+    flag.share = double(plateauValues.size()) / double(origins.size());
+    if (!plateauValues.empty()) {
+        flag.value = percentile(plateauValues, 0.5);
+        flag.maximum = *std::max_element(plateauValues.begin(), plateauValues.end());
+        flag.start = percentile(starts, 0.5);
+        char text[320];
+        std::snprintf(text, sizeof text,
+                      "the field stops growing at %.4g: %llu of %llu rays probed outward from the surface (to distance %.3g) end on a "
+                      "plateau (|f| changes < 0.02 per unit) that starts %.3g from the surface (median)",
+                      double(flag.value), (unsigned long long)flag.count, (unsigned long long)origins.size(), double(reach),
+                      double(flag.start));
+        flag.evidence = text;
+    }
+    return flag;
+}
+
 // The audit at one sample count (no convergence runs).
 Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOptions& options, const ProgressSink& progress) {
     auto start = std::chrono::steady_clock::now();
@@ -202,44 +325,138 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
     };
     report.scales.push_back(summarise(1.0f, wide));
     for (int s = 0; s < 3; ++s) report.scales.push_back(summarise(2.0f * Scales::kSteps[s], perScale[s]));
-    // Estimate from the scales float32 resolves well (the smallest step is noisier and is kept
-    // for the discontinuity test).
     // Rounding noise with steps of q (the precision floor) moves a quotient over `step` by about
     // q / step, and its tails (the 99.9th percentile; each tap rounds on its own) by up to ~3 q /
     // step: that much is taken off, so a far-from-the-origin field is judged by its shape, not its
     // noise. For a field computed near the origin q ~ 1e-7 and nothing changes.
     auto noiseSlope = [&](std::size_t s) { return 3.0f * report.noiseFloor / report.scales[s].step; };
-    report.lipschitz = std::max({report.scales[0].p999 - noiseSlope(0), report.scales[1].p999 - noiseSlope(1),
-                                 report.scales[2].p999 - noiseSlope(2)});
-    report.lipschitzMax = std::max({report.scales[0].max, report.scales[1].max, report.scales[2].max});
-    report.lipschitzUncertainty = report.lipschitzMax - report.lipschitz;
-    report.safeStepFactor = 1.0f / std::max(report.lipschitz, 1.0f);
 
-    // Discontinuities: the quotient grows as the step shrinks (a jump of J gives J / 2h).
+    // Discontinuities: the quotient grows as the step shrinks (a jump of J gives J / 2h), at
+    // points within the finest step of the jump.
     std::uint64_t tested = 0;
+    std::vector<JumpCandidate> candidates;
     for (const std::vector<SampleSet>* sets : {&random, &near})
         for (std::size_t i = 0; i < n; ++i) {
             if (!finiteRow((*sets)[0], i) || !finiteRow((*sets)[2], i)) continue;
             ++tested;
             float coarse = gradientLength((*sets)[0], i), fine = gradientLength((*sets)[2], i);
-            if (fine > 3.0f * std::max(coarse, 0.1f) && fine > 2.0f && fine > coarse + noiseSlope(3)) ++report.discontinuities;
+            if (fine > 3.0f * std::max(coarse, 0.1f) && fine > 2.0f && fine > coarse + noiseSlope(3)) {
+                ++report.discontinuities;
+                const float* g = &(*sets)[2].gradients[3 * i];
+                candidates.push_back({glm::vec3((*sets)[2].positions[3 * i], (*sets)[2].positions[3 * i + 1], (*sets)[2].positions[3 * i + 2]),
+                                      glm::vec3(g[0], g[1], g[2]) / fine});
+            }
         }
     report.discontinuityShare = tested ? double(report.discontinuities) / double(tested) : 0.0;
+    // A jump of height J shows as J / (2h) at step h: the largest quotient grows tenfold per scale.
+    // A Lipschitz field's largest quotient stays put (up to float noise at the finest scale).
+    const bool jumpGrowth = report.scales[3].max > 2.0f && report.scales[3].max - noiseSlope(3) > 3.0f * report.scales[1].max &&
+                            report.scales[2].max - noiseSlope(2) > 1.5f * report.scales[1].max;
+    std::optional<AuditFlag> discontinuous;
+    if (report.discontinuityShare > 5e-4 || jumpGrowth) {
+        auto jumps = measureJumps(sdf, options, candidates, report.noiseFloor);
+        if (!jumps) return jumps.error();
+        if (jumps->count > 0 || candidates.empty()) {
+            discontinuous = std::move(*jumps);
+            discontinuous->share = report.discontinuityShare;
+            if (candidates.empty()) {
+                // Only the growth of the largest quotients shows it: J ~ max quotient x 2h.
+                discontinuous->value = discontinuous->maximum = report.scales[3].max * report.scales[3].step;
+            }
+            char text[320];
+            std::snprintf(text, sizeof text,
+                          "f jumps by %.3g (median; largest %.3g) at %llu of %llu probed points: difference quotients grow as the step "
+                          "shrinks (largest %.3g at scale 0.02, %.3g at 0.002, %.3g at 0.0002)",
+                          double(discontinuous->value), double(discontinuous->maximum), (unsigned long long)report.discontinuities,
+                          (unsigned long long)tested, double(report.scales[1].max), double(report.scales[2].max), double(report.scales[3].max));
+            discontinuous->evidence = text;
+        }
+    }
 
-    // Truncation: outside points where the field has stopped growing.
+    // The Lipschitz estimate, from points a jump does not explain: near a jump of J the quotient at
+    // step h is J / 2h while at the finest step it is the field's slope; a steep but continuous field
+    // has the same quotient at every step. The quotient between distant points is used only when
+    // no jump was found (across a jump it is J / distance).
+    {
+        std::vector<float> unaffected[2];
+        std::vector<std::pair<float, glm::vec3>> steepest;
+        std::uint64_t above = 0, counted = 0;
+        for (const std::vector<SampleSet>* sets : {&random, &near})
+            for (std::size_t i = 0; i < n; ++i) {
+                if (!finiteRow((*sets)[0], i) || !finiteRow((*sets)[1], i) || !finiteRow((*sets)[2], i)) continue;
+                const float q0 = gradientLength((*sets)[0], i), q1 = gradientLength((*sets)[1], i), q2 = gradientLength((*sets)[2], i);
+                const float allowed = 1.5f * q2 + noiseSlope(3) + 0.05f;
+                if (q0 > allowed || q1 > allowed) continue;
+                unaffected[0].push_back(q0);
+                unaffected[1].push_back(q1);
+                ++counted;
+                if (q1 > 1.05f + noiseSlope(2)) {
+                    ++above;
+                    steepest.push_back({q1, glm::vec3((*sets)[1].positions[3 * i], (*sets)[1].positions[3 * i + 1], (*sets)[1].positions[3 * i + 2])});
+                }
+            }
+        report.lipschitz = std::max(percentile(unaffected[0], 0.999) - noiseSlope(1), percentile(unaffected[1], 0.999) - noiseSlope(2));
+        if (!discontinuous) report.lipschitz = std::max(report.lipschitz, report.scales[0].p999 - noiseSlope(0));
+        report.lipschitzMax = std::max({report.scales[0].max, report.scales[1].max, report.scales[2].max});
+        report.lipschitzUncertainty = report.lipschitzMax - report.lipschitz;
+        report.safeStepFactor = 1.0f / std::max(report.lipschitz, 1.0f);
+        if (report.lipschitz > 1.05f) {
+            AuditFlag flag;
+            flag.name = "non-conservative";
+            flag.value = report.lipschitz;
+            flag.maximum = report.lipschitzMax;
+            flag.count = above;
+            flag.share = counted ? double(above) / double(counted) : 0.0;
+            std::sort(steepest.begin(), steepest.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+            for (std::size_t k = 0; k < steepest.size() && k < kMaxExamples; ++k) flag.examples.push_back(steepest[k].second);
+            char text[256];
+            std::snprintf(text, sizeof text,
+                          "|grad f| reaches %.4g > 1 (99.9th percentile; largest %.4g) at %.3g %% of probed points: sphere tracing needs a "
+                          "step factor of %.3g",
+                          double(report.lipschitz), double(report.lipschitzMax), 100.0 * flag.share, double(report.safeStepFactor));
+            flag.evidence = text;
+            report.flags.push_back(std::move(flag));
+        }
+    }
+
+    // Truncation: outside points where the field has stopped growing, in the cube...
     std::uint64_t positive = 0;
     std::vector<float> flatValues;
+    std::vector<glm::vec3> flatPoints;
     for (std::size_t i = 0; i < n; ++i) {
         if (!finiteRow(random[0], i) || random[0].distances[i] <= 0.0f) continue;
         ++positive;
-        if (gradientLength(random[0], i) < 0.02f) flatValues.push_back(random[0].distances[i]);
+        if (gradientLength(random[0], i) < 0.02f) {
+            flatValues.push_back(random[0].distances[i]);
+            if (flatPoints.size() < kMaxExamples)
+                flatPoints.push_back(glm::vec3(random[0].positions[3 * i], random[0].positions[3 * i + 1], random[0].positions[3 * i + 2]));
+        }
     }
+    // ...and along rays from the surface outward, to options.probeDistance: a plateau that lies
+    // mostly beyond the cube shows there.
+    auto plateau = probeOutward(sdf, options, *surface, report.noiseFloor);
+    if (!plateau) return plateau.error();
     // A truncated field saturates at a distance well off the surface; flat spots that hug the
     // zero set (fractal estimators vanish near their set) are not truncation.
-    if (positive > 0 && double(flatValues.size()) > 0.02 * double(positive)) {
-        float plateau = percentile(flatValues, 0.05);
-        if (plateau > 0.01f) report.truncationDistance = plateau;
+    if (plateau->count > 0 && plateau->share >= 0.05 && plateau->value > 0.01f) {
+        report.truncationDistance = plateau->value;
+        report.flags.push_back(std::move(*plateau));
+    } else if (positive > 0 && double(flatValues.size()) > 0.02 * double(positive) && percentile(flatValues, 0.05) > 0.01f) {
+        AuditFlag flag;
+        flag.name = "truncated";
+        flag.value = percentile(flatValues, 0.05);
+        flag.maximum = percentile(flatValues, 0.95);
+        flag.count = flatValues.size();
+        flag.share = double(flatValues.size()) / double(positive);
+        flag.examples = flatPoints;
+        char text[256];
+        std::snprintf(text, sizeof text, "the field stops growing at about %.4g: |grad f| < 0.02 at %.3g %% of the cube's outside points",
+                      double(flag.value), 100.0 * flag.share);
+        flag.evidence = text;
+        report.truncationDistance = flag.value;
+        report.flags.push_back(std::move(flag));
     }
+    if (discontinuous) report.flags.push_back(std::move(*discontinuous));
 
     // Eikonal error near the surface.
     std::vector<float> eikonal;
@@ -301,11 +518,6 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
         report.overestimateShare = errors.empty() ? 0.0 : double(over) / double(errors.size());
     }
 
-    // A jump of height J shows as J / (2h) at step h: the largest quotient grows tenfold per scale.
-    // A Lipschitz field's largest quotient stays put (up to float noise at the finest scale).
-    const bool jumpGrowth = report.scales[3].max > 2.0f && report.scales[3].max - noiseSlope(3) > 3.0f * report.scales[1].max &&
-                            report.scales[2].max - noiseSlope(2) > 1.5f * report.scales[1].max;
-
     float minimum = INFINITY, maximum = -INFINITY;
     for (std::size_t i = 0; i < n; ++i)
         if (std::isfinite(random[1].distances[i])) {
@@ -314,44 +526,61 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
         }
     const bool hasSignChange = minimum <= 0.0f && maximum >= 0.0f;
 
-    // The verdict, most serious first.
+    // NaN / Inf, with where.
+    if (bad > 0) {
+        AuditFlag flag;
+        flag.name = "nan";
+        flag.count = bad;
+        flag.share = report.nanFraction;
+        for (std::size_t i = 0; i < n && flag.examples.size() < kMaxExamples; ++i)
+            if (!finiteRow(random[1], i))
+                flag.examples.push_back(glm::vec3(random[1].positions[3 * i], random[1].positions[3 * i + 1], random[1].positions[3 * i + 2]));
+        char text[160];
+        std::snprintf(text, sizeof text, "%.3g %% of random points (%llu of %llu) give NaN or Inf", 100.0 * report.nanFraction,
+                      (unsigned long long)bad, (unsigned long long)n);
+        flag.evidence = text;
+        report.flags.push_back(std::move(flag));
+    }
+    // Most severe first: the verdict is the first.
+    static const char* const severity[] = {"nan", "discontinuous", "truncated", "non-conservative"};
+    std::stable_sort(report.flags.begin(), report.flags.end(), [](const AuditFlag& a, const AuditFlag& b) {
+        auto rank = [](const std::string& name) { return std::find(std::begin(severity), std::end(severity), name) - std::begin(severity); };
+        return rank(a.name) < rank(b.name);
+    });
+
+    // The verdict: the most severe finding (no-surface ranks below discontinuities, above the rest).
     // The nearest surface sample overestimates the true distance by up to about the sample spacing.
     const float exactTolerance = 3.0f * report.surfaceSpacing + 2e-3f;
     char text[256];
-    if (report.nanFraction > 0.0) {
-        report.verdict = "nan";
-        std::snprintf(text, sizeof text, "%.3g %% of random points give NaN or Inf", 100.0 * report.nanFraction);
-    } else if (report.discontinuityShare > 5e-4 || jumpGrowth) {
-        report.verdict = "discontinuous";
-        std::snprintf(text, sizeof text,
-                      "difference quotients grow as the step shrinks (largest %.3g at scale 0.02, %.3g at 0.002, %.3g at 0.0002; %llu points)",
-                      double(report.scales[1].max), double(report.scales[2].max), double(report.scales[3].max),
-                      (unsigned long long)report.discontinuities);
+    const AuditFlag* worst = report.flags.empty() ? nullptr : &report.flags.front();
+    if (worst && (worst->name == "nan" || worst->name == "discontinuous")) {
+        report.verdict = worst->name;
+        report.reason = worst->evidence;
     } else if (report.surfacePoints == 0 && !hasSignChange) {
         report.verdict = "no-surface";
         std::snprintf(text, sizeof text, "f never changes sign (%.4g to %.4g over %llu points) and no ray finds a surface", double(minimum),
                       double(maximum), (unsigned long long)n);
-    } else if (report.truncationDistance) {
-        report.verdict = "truncated";
-        std::snprintf(text, sizeof text, "the field stops growing at about %.4g (|grad f| < 0.02 there)", double(*report.truncationDistance));
-    } else if (report.lipschitz > 1.05f) {
-        report.verdict = "non-conservative";
-        std::snprintf(text, sizeof text, "|grad f| reaches %.4g > 1: sphere tracing needs a step factor of %.3g", double(report.lipschitz),
-                      double(report.safeStepFactor));
+        report.reason = text;
+    } else if (worst) {
+        report.verdict = worst->name;
+        report.reason = worst->evidence;
     } else if (report.surfacePoints < 16) {
         report.verdict = "conservative";
         std::snprintf(text, sizeof text, "1-Lipschitz, but too few surface points (%llu) to test exactness",
                       (unsigned long long)report.surfacePoints);
+        report.reason = text;
     } else if (report.exactnessP99 <= exactTolerance && report.exactnessMax <= 2.0f * exactTolerance) {
         report.verdict = "exact";
         std::snprintf(text, sizeof text, "|f| matches the distance to the surface within %.2g (99th percentile; sampling allows %.2g)",
                       double(report.exactnessP99), double(exactTolerance));
+        report.reason = text;
     } else {
         report.verdict = "conservative";
         std::snprintf(text, sizeof text, "1-Lipschitz and |f| underestimates the distance (error 99th percentile %.2g, max %.2g; exact allows %.2g, %.2g)",
                       double(report.exactnessP99), double(report.exactnessMax), double(exactTolerance), double(2.0f * exactTolerance));
+        report.reason = text;
     }
-    report.reason = text;
+    for (std::size_t k = 1; k < report.flags.size(); ++k) report.reason += "; also " + report.flags[k].name + ": " + report.flags[k].evidence;
     // Warnings that go with any verdict.
     if (report.surfacePoints >= 16 && report.surfaceGradient < 0.1f) {
         std::snprintf(text, sizeof text,
@@ -372,6 +601,12 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
 }
 
 } // namespace
+
+const AuditFlag* findFlag(const std::vector<AuditFlag>& flags, const std::string& name) {
+    for (const AuditFlag& flag : flags)
+        if (flag.name == name) return &flag;
+    return nullptr;
+}
 
 Expected<AuditReport> auditField(const shaders::PreparedSdf& sdf, const AuditOptions& options, const ProgressSink& progress) {
     if (!sdf.ok()) return makeError("audit: the SDF has errors");
@@ -427,13 +662,17 @@ Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 n
     readout.maximum = -std::numeric_limits<float>::infinity();
     std::vector<float> slopes;
     std::uint64_t positive = 0, above = 0;
-    std::vector<float> flat;
+    std::vector<float> flat, jumps;
+    std::vector<glm::vec3> flatPoints, jumpPoints, nanPoints;
+    std::vector<std::pair<float, glm::vec3>> steep;
+    auto pointAt = [](const SampleSet& set, std::size_t i) { return glm::vec3(set.positions[3 * i], set.positions[3 * i + 1], set.positions[3 * i + 2]); };
     for (std::size_t i = 0; i < sets[1].size(); ++i) {
         const float* p = &sets[1].positions[3 * i];
         if (std::max({std::abs(p[0]), std::abs(p[1]), std::abs(p[2])}) > 1.0f) continue;
         ++readout.points;
         if (!finiteRow(sets[1], i) || !finiteRow(sets[0], i)) {
             ++readout.nanCount;
+            if (nanPoints.size() < kMaxExamples) nanPoints.push_back(glm::vec3(p[0], p[1], p[2]));
             continue;
         }
         float f = sets[1].distances[i];
@@ -442,6 +681,7 @@ Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 n
         float slope = gradientLength(sets[1], i);
         slopes.push_back(slope);
         above += slope > 1.02f;
+        if (slope > 1.05f) steep.push_back({slope, pointAt(sets[1], i)});
         readout.histogram[std::min<std::size_t>(40, std::size_t(slope / 0.05f + 0.5f))]++;
         float coarse = gradientLength(sets[0], i);
         // A jump between grid neighbours that the local slope cannot explain: for a continuous
@@ -455,11 +695,18 @@ Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 n
             // The finest step sees the slope on either side of a jump, not the jump itself.
             float slope = std::max(gradientLength(sets[2], i), gradientLength(sets[2], neighbour));
             float difference = std::abs(sets[2].distances[neighbour] - sets[2].distances[i]);
-            if (difference > 1.5f * spacing * std::max(slope, 0.1f) + 1e-5f) ++readout.discontinuities;
+            if (difference > 1.5f * spacing * std::max(slope, 0.1f) + 1e-5f) {
+                ++readout.discontinuities;
+                jumps.push_back(difference - spacing * slope);
+                if (jumpPoints.size() < kMaxExamples) jumpPoints.push_back(0.5f * (pointAt(sets[2], i) + pointAt(sets[2], neighbour)));
+            }
         }
         if (f > 0.0f) {
             ++positive;
-            if (coarse < 0.02f) flat.push_back(f);
+            if (coarse < 0.02f) {
+                flat.push_back(f);
+                if (flatPoints.size() < kMaxExamples) flatPoints.push_back(pointAt(sets[1], i));
+            }
         }
     }
     if (slopes.empty()) {
@@ -474,6 +721,41 @@ Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 n
         if (plateau > 0.01f) readout.truncationDistance = plateau;  // as in the volume audit
     }
     readout.safeStepFactor = 1.0f / std::max(readout.lipschitzMax, 1.0f);
+    // The findings, as the volume audit's (most severe first).
+    char text[256];
+    if (readout.nanCount > 0) {
+        AuditFlag flag{"nan", "", 0.0f, 0.0f, 0.0f, double(readout.nanCount) / double(std::max<std::uint64_t>(readout.points, 1)),
+                       readout.nanCount, nanPoints};
+        std::snprintf(text, sizeof text, "%llu of %llu plane points give NaN or Inf", (unsigned long long)readout.nanCount,
+                      (unsigned long long)readout.points);
+        flag.evidence = text;
+        readout.flags.push_back(std::move(flag));
+    }
+    if (!jumps.empty()) {
+        AuditFlag flag{"discontinuous", "", percentile(jumps, 0.5), *std::max_element(jumps.begin(), jumps.end()), 0.0f,
+                       double(jumps.size()) / double(std::max<std::size_t>(slopes.size(), 1)), jumps.size(), jumpPoints};
+        std::snprintf(text, sizeof text, "f jumps by %.3g (median; largest %.3g) between %llu pairs of neighbouring grid points",
+                      double(flag.value), double(flag.maximum), (unsigned long long)flag.count);
+        flag.evidence = text;
+        readout.flags.push_back(std::move(flag));
+    }
+    if (readout.truncationDistance) {
+        AuditFlag flag{"truncated", "", *readout.truncationDistance, percentile(flat, 0.95), 0.0f, double(flat.size()) / double(positive),
+                       flat.size(), flatPoints};
+        std::snprintf(text, sizeof text, "the field stops growing at about %.4g: |grad f| < 0.02 on %.3g %% of the plane outside the shape",
+                      double(flag.value), 100.0 * flag.share);
+        flag.evidence = text;
+        readout.flags.push_back(std::move(flag));
+    }
+    if (readout.lipschitz99 > 1.05f) {
+        std::sort(steep.begin(), steep.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+        AuditFlag flag{"non-conservative", "", readout.lipschitz99, readout.lipschitzMax, 0.0f, readout.shareAboveOne, steep.size(), {}};
+        for (std::size_t k = 0; k < steep.size() && k < kMaxExamples; ++k) flag.examples.push_back(steep[k].second);
+        std::snprintf(text, sizeof text, "|grad f| reaches %.4g (99th percentile; largest %.4g) on the plane: step factor %.3g",
+                      double(flag.value), double(flag.maximum), double(readout.safeStepFactor));
+        flag.evidence = text;
+        readout.flags.push_back(std::move(flag));
+    }
     readout.seconds = secondsSince(start);
     return readout;
 }

@@ -39,6 +39,7 @@ Expected<SamplingReport> run(renderer::SampleCompute& compute, const SamplingJob
     renderer::SampleUniforms uniforms{std::uint32_t(job.count), job.seed, job.time, job.gradientStep, {}};
     std::copy(std::begin(job.parameters), std::end(job.parameters), uniforms.parameters);
     uniforms.surfaceTolerance = job.surfaceTolerance;
+    uniforms.inputPoints = job.inputPoints;
     progress(0, rows);
     for (std::uint64_t done = 0; done < rows;) {
         if (progress.isCancelled()) {

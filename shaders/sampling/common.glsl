@@ -12,6 +12,7 @@ uniform uint sdfwb_cubeSide;      // smallest n with n^3 >= N (computed exactly 
 uniform uint sdfwb_squareSide;    // smallest n with n^2 >= N
 uniform vec4 sdfwb_parameters[4]; // free parameters for samplers driven by the program (plane analysis)
 uniform float sdfwb_surfaceTolerance = 1e-5;  // sdfwb_traceRay() hits at |f| below this
+uniform uint sdfwb_chunkFirst;     // global index of this chunk's first sample
 uniform bool sdfwb_tetrahedralGradient = false;  // sdfwb_gradientAt(): the tracer's 4-tap scheme (benchmarks)
 
 // Raw gradient by 6-tap central differences (not normalised: its length shows the field's

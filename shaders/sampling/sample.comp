@@ -9,7 +9,6 @@ layout(std430, binding = SDFWB_BINDING_POSITIONS) writeonly buffer sdfwb_Positio
 layout(std430, binding = SDFWB_BINDING_DISTANCES) writeonly buffer sdfwb_Distances { float sdfwb_distances[]; };
 layout(std430, binding = SDFWB_BINDING_GRADIENTS) writeonly buffer sdfwb_Gradients { float sdfwb_gradients[]; };
 
-uniform uint sdfwb_chunkFirst;  // global index of this chunk's first sample
 uniform uint sdfwb_chunkCount;  // samples in this chunk
 
 void main() {

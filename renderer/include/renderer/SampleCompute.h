@@ -22,6 +22,9 @@ struct SampleUniforms {
     float parameters[16] = {};      // u_parameters[4] (vec4s) for program-driven samplers
     float surfaceTolerance = 1e-5f; // traceRay() (surface, near, metropolis) stops at |f| below this
     bool tetrahedralGradient = false;  // written gradient by the tracer's 4-tap scheme, not 6-tap central
+    // Points given by the caller (3 floats per sample, sampleCount of them, indexed globally), read
+    // by the analysis/points.glsl sampler through sdfwb_inputPoint(); null for every other sampler.
+    const float* inputPoints = nullptr;
 };
 
 class SampleCompute {

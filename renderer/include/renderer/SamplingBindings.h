@@ -7,5 +7,6 @@ namespace sdfwb::renderer {
 inline constexpr int kBindingPositions = 0;
 inline constexpr int kBindingDistances = 1;
 inline constexpr int kBindingGradients = 2;
+inline constexpr int kBindingInputs = 3;
 
 } // namespace sdfwb::renderer

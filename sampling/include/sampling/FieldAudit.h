@@ -21,6 +21,32 @@
 
 namespace sdfwb::sampling {
 
+// One finding of the audit, with its evidence. `name` is one of
+//   non-conservative  |grad f| > 1.05 somewhere: value = the Lipschitz estimate, share = of the probed
+//                     points above 1.05, examples = where the quotient is largest;
+//   truncated         the field stops growing away from the surface: value = the plateau's f,
+//                     start = its distance from the surface, share = of the outward probe rays (or
+//                     of the plane's outside points) that end on it, examples = where it starts;
+//   discontinuous     f jumps: value = the median jump |delta f| (jumps below the float noise floor
+//                     do not count), maximum = the largest, count = points found at a jump,
+//                     examples = points on the jump;
+//   nan               f or its gradient is NaN/Inf: share and count of points, examples = where.
+struct AuditFlag {
+    std::string name;
+    std::string evidence;            // one sentence with the figures
+    float value = 0.0f;
+    float maximum = 0.0f;
+    float start = 0.0f;
+    double share = 0.0;
+    std::uint64_t count = 0;
+    std::vector<glm::vec3> examples;  // at most kMaxExamples
+};
+
+inline constexpr std::size_t kMaxExamples = 16;
+
+// The flag named `name`, or null.
+const AuditFlag* findFlag(const std::vector<AuditFlag>& flags, const std::string& name);
+
 struct PlaneReadout {
     int resolution = 0;                 // grid side on the plane
     std::uint64_t points = 0;           // grid points inside the [-1,1]^3 box
@@ -33,6 +59,7 @@ struct PlaneReadout {
     std::uint64_t nanCount = 0;         // NaN or Inf values or gradients
     std::vector<std::uint64_t> histogram;  // |grad f| in bins of 0.05 centred on k * 0.05 (bin 20 holds 1 +- 0.025); bin 40 holds >= 1.975
     float safeStepFactor = 1.0f;        // 1 / max(1, lipschitzMax)
+    std::vector<AuditFlag> flags;       // as the volume audit's, from the plane's grid
     double seconds = 0.0;
 };
 
@@ -44,6 +71,8 @@ struct AuditOptions {
     std::uint64_t seed = 0;
     float time = 0.0f;
     bool convergence = true;         // also run N/16 and N/4 to show how the estimates tighten
+    float probeDistance = 3.0f;      // truncation: probe outward from the surface this far (plateaus
+                                     // beyond the unit cube are found too)
 };
 
 struct QuotientScale {
@@ -60,7 +89,9 @@ struct ConvergencePoint {
 
 struct AuditReport {
     std::string verdict;              // exact | conservative | non-conservative | truncated | discontinuous | nan | no-surface
+                                      // (the most severe finding)
     std::string reason;               // one sentence: why this verdict
+    std::vector<AuditFlag> flags;     // every finding, most severe first
     float lipschitz = 0.0f;           // estimate: 99.9th percentile of |grad f| over all scales but the largest
     float lipschitzMax = 0.0f;        // the largest quotient seen (an outlier-prone upper estimate)
     float lipschitzUncertainty = 0.0f;  // spread between the two (the estimate is a lower bound of the true L)

@@ -1,15 +1,15 @@
 ////////////////////////////////////////////////////////////////
 //
-//                  hg_style.glsl
+//                     hg_style.glsl
 //
-//  A small signed-distance library written for sdfwb's tests in
-//  the manner of the Mercury demogroup's hg_sdf: constants as
-//  #defines, f* for primitives, p* for domain operators that
-//  change p in place (inout) and return a cell index, fOp* for
-//  combinations. It is not the original library, only its style.
+//  A small distance-function library written for sdfwb's tests,
+//  in the manner of the Mercury demogroup's hg_sdf: constants as
+//  #defines, f* primitives, p* domain operators that modify p in
+//  place (inout) and return a cell index, fOp* combinations.
+//  Same naming and calling conventions, our own code.
 //
-//  This file is included by several tests/foreign/*.glsl files;
-//  it is not an SDF on its own.
+//  Included by several tests/foreign/*.glsl; not an SDF itself
+//  (there is no sdf()/map() here).
 //
 ////////////////////////////////////////////////////////////////
 
@@ -17,54 +17,35 @@
 #define TAU (2*PI)
 #define PHI (sqrt(5)*0.5 + 0.5)
 
-// Clamp to [0,1] - a macro, as in the original, not a function.
+// [0,1] clamp as a macro (hg style), not a function.
 #define saturate(x) clamp(x, 0., 1.)
 
-// Sign function that doesn't return 0
+// sign() that never answers 0
 float sgn(float x) {
-	return (x<0.)?-1.:1.;
+	return (x < 0.) ? -1. : 1.;
 }
 
 vec2 sgn(vec2 v) {
-	return vec2((v.x<0.)?-1.:1., (v.y<0.)?-1.:1.);
+	return vec2(sgn(v.x), sgn(v.y));
 }
 
-float square (float x) {
-	return x*x;
-}
-
-vec2 square (vec2 x) {
-	return x*x;
-}
-
-vec3 square (vec3 x) {
-	return x*x;
-}
+float square (float x) { return x*x; }
+vec2  square (vec2 x)  { return x*x; }
+vec3  square (vec3 x)  { return x*x; }
 
 float lengthSqr(vec3 x) {
 	return dot(x, x);
 }
 
-// Maximum/minimum elements of a vector
-float vmax(vec2 v) {
-	return max(v.x, v.y);
-}
-
-float vmax(vec3 v) {
-	return max(max(v.x, v.y), v.z);
-}
-
-float vmin(vec2 v) {
-	return min(v.x, v.y);
-}
-
-float vmin(vec3 v) {
-	return min(min(v.x, v.y), v.z);
-}
+// Largest / smallest component
+float vmax(vec2 v) { return max(v.x, v.y); }
+float vmax(vec3 v) { return max(v.x, max(v.y, v.z)); }
+float vmin(vec2 v) { return min(v.x, v.y); }
+float vmin(vec3 v) { return min(v.x, min(v.y, v.z)); }
 
 ////////////////////////////////////////////////////////////////
 //
-//             PRIMITIVE DISTANCE FUNCTIONS
+//                       PRIMITIVES
 //
 ////////////////////////////////////////////////////////////////
 
@@ -72,172 +53,170 @@ float fSphere(vec3 p, float r) {
 	return length(p) - r;
 }
 
-// Plane with normal n (n is normalized) at some distance from the origin
+// Half-space below a plane: unit normal n, offset from the origin
 float fPlane(vec3 p, vec3 n, float distanceFromOrigin) {
 	return dot(p, n) + distanceFromOrigin;
 }
 
-// Cheap box: distance to corners is overestimated (a bound, 1-Lipschitz)
+// Box bound: exact on the faces, too small near edges and corners
 float fBoxCheap(vec3 p, vec3 b) {
 	return vmax(abs(p) - b);
 }
 
-// Box: correct distance to corners
+// Box, exact everywhere
 float fBox(vec3 p, vec3 b) {
-	vec3 d = abs(p) - b;
-	return length(max(d, vec3(0))) + vmax(min(d, vec3(0)));
+	vec3 e = abs(p) - b;
+	float outside = length(max(e, vec3(0)));
+	float inside = vmax(min(e, vec3(0)));
+	return outside + inside;
 }
 
-// Same as above, but in two dimensions (an endless box)
+// 2D box (a bar endless along the third axis)
 float fBox2(vec2 p, vec2 b) {
-	vec2 d = abs(p) - b;
-	return length(max(d, vec2(0))) + vmax(min(d, vec2(0)));
+	vec2 e = abs(p) - b;
+	return length(max(e, vec2(0))) + vmax(min(e, vec2(0)));
 }
 
-// Cylinder standing upright on the xz plane
+// Upright cylinder (axis y), half height <height>; a bound at the rims
 float fCylinder(vec3 p, float r, float height) {
-	float d = length(p.xz) - r;
-	d = max(d, abs(p.y) - height);
-	return d;
+	float side = length(p.xz) - r;
+	float caps = abs(p.y) - height;
+	return max(side, caps);
 }
 
-// Capsule: a cylinder with round caps on both sides
+// Upright capsule: segment from y=-c to y=c, radius r
 float fCapsule(vec3 p, float r, float c) {
-	return mix(length(p.xz) - r, length(vec3(p.x, abs(p.y) - c, p.z)) - r, step(c, abs(p.y)));
+	float ySeg = abs(p.y) - c;
+	vec3 q = vec3(p.x, max(ySeg, 0.), p.z);
+	return length(q) - r;
 }
 
-// Distance to line segment between <a> and <b>, used for fCapsule() version 2 below
+// Distance to the segment <a>-<b>
 float fLineSegment(vec3 p, vec3 a, vec3 b) {
 	vec3 ab = b - a;
-	float t = saturate(dot(p - a, ab) / dot(ab, ab));
-	return length((ab*t + a) - p);
+	float s = saturate(dot(p - a, ab)/dot(ab, ab));
+	return length(p - (a + ab*s));
 }
 
-// Capsule version 2: between two end points <a> and <b> with radius r
+// Capsule between two points
 float fCapsule(vec3 p, vec3 a, vec3 b, float r) {
 	return fLineSegment(p, a, b) - r;
 }
 
-// Torus in the XZ-plane
+// Torus lying in the xz plane
 float fTorus(vec3 p, float smallRadius, float largeRadius) {
-	return length(vec2(length(p.xz) - largeRadius, p.y)) - smallRadius;
+	vec2 q = vec2(length(p.xz) - largeRadius, p.y);
+	return length(q) - smallRadius;
 }
 
-// Hexagonal prism, circumcircle variant (a bound)
+// Hexagonal prism along y, measured at the circumcircle (a bound)
 float fHexagonCircumcircle(vec3 p, vec2 h) {
 	vec3 q = abs(p);
-	return max(q.y - h.y, max(q.x*sqrt(3.)*0.5 + q.z*0.5, q.z) - h.x);
+	float across = max(dot(q.xz, vec2(sqrt(3.)*0.5, 0.5)), q.z);
+	return max(q.y - h.y, across - h.x);
 }
 
 ////////////////////////////////////////////////////////////////
 //
-//                DOMAIN MANIPULATION OPERATORS
+//                 DOMAIN OPERATORS (p is inout)
 //
 ////////////////////////////////////////////////////////////////
 
-// Rotate around a coordinate axis (i.e. in a plane perpendicular to that axis) by angle <a>.
-// Read like this: R(p.xz, a) rotates "x towards z".
+// Rotation in a coordinate plane; pR(p.xz, a) turns x towards z.
 void pR(inout vec2 p, float a) {
-	p = cos(a)*p + sin(a)*vec2(p.y, -p.x);
+	float c = cos(a), s = sin(a);
+	p = vec2(c*p.x + s*p.y, c*p.y - s*p.x);
 }
 
-// Shortcut for 45-degrees rotation
 void pR45(inout vec2 p) {
-	p = (p + vec2(p.y, -p.x))*sqrt(0.5);
+	p = sqrt(0.5)*vec2(p.x + p.y, p.y - p.x);
 }
 
-// Repeat space along one axis. Use like this to repeat along the x axis:
-// <float cell = pMod1(p.x,5);> - using the return value is optional.
+// Endless repetition along one axis with cells of width <size>
+// centred on multiples of <size>. Returns the cell index.
 float pMod1(inout float p, float size) {
-	float halfsize = size*0.5;
-	float c = floor((p + halfsize)/size);
-	p = mod(p + halfsize, size) - halfsize;
-	return c;
+	float h = 0.5*size;
+	float cell = floor((p + h)/size);
+	p = mod(p + h, size) - h;
+	return cell;
 }
 
-// Same, but mirror every second cell so they match at the boundaries
+// As pMod1, every second cell mirrored so neighbours agree at the seams
 float pModMirror1(inout float p, float size) {
-	float halfsize = size*0.5;
-	float c = floor((p + halfsize)/size);
-	p = mod(p + halfsize,size) - halfsize;
-	p *= mod(c, 2.0)*2. - 1.;
-	return c;
+	float cell = pMod1(p, size);
+	if (mod(cell, 2.) < 0.5) p = -p;
+	return cell;
 }
 
-// Repeat only a few times: from indices <start> to <stop> (similar to above, but more flexible)
+// Repetition limited to the cells <start>..<stop>; the end cells
+// extend to infinity.
 float pModInterval1(inout float p, float size, float start, float stop) {
-	float halfsize = size*0.5;
-	float c = floor((p + halfsize)/size);
-	p = mod(p+halfsize, size) - halfsize;
-	if (c > stop) { // yes, this might not be the best thing numerically.
-		p += size*(c - stop);
-		c = stop;
-	}
-	if (c < start) {
-		p += size*(c - start);
-		c = start;
-	}
-	return c;
+	float h = 0.5*size;
+	float cell = floor((p + h)/size);
+	p = mod(p + h, size) - h;
+	float clamped = clamp(cell, start, stop);
+	p += size*(cell - clamped);
+	return clamped;
 }
 
-// Repeat around the origin by a fixed angle.
-// For easier use, num of repetitions is use to specify the angle.
+// Angular repetition around the origin: <repetitions> sectors, the
+// first one centred on +x. Returns the sector index.
 float pModPolar(inout vec2 p, float repetitions) {
-	float angle = 2.*PI/repetitions;
-	float a = atan(p.y, p.x) + angle/2.;
+	float sector = TAU/repetitions;
+	float a = atan(p.y, p.x) + 0.5*sector;
 	float r = length(p);
-	float c = floor(a/angle);
-	a = mod(a,angle) - angle/2.;
-	p = vec2(cos(a), sin(a))*r;
-	// For an odd number of repetitions, fix cell index of the cell in -x direction
-	// (cell index would be e.g. -5 and 5 in the two halves of the cell):
-	if (abs(c) >= (repetitions/2.)) c = abs(c);
-	return c;
+	float cell = floor(a/sector);
+	a = mod(a, sector) - 0.5*sector;
+	p = r*vec2(cos(a), sin(a));
+	if (abs(cell) >= 0.5*repetitions) cell = abs(cell);
+	return cell;
 }
 
-// Repeat in two dimensions
+// Repetition in a plane
 vec2 pMod2(inout vec2 p, vec2 size) {
-	vec2 c = floor((p + size*0.5)/size);
-	p = mod(p + size*0.5,size) - size*0.5;
-	return c;
+	vec2 h = 0.5*size;
+	vec2 cell = floor((p + h)/size);
+	p = mod(p + h, size) - h;
+	return cell;
 }
 
-// Mirror at an axis-aligned plane which is at a specified distance <dist> from the origin.
+// Mirror at the plane |p| = dist; returns which side p was on
 float pMirror (inout float p, float dist) {
-	float s = sgn(p);
-	p = abs(p)-dist;
-	return s;
+	float side = sgn(p);
+	p = abs(p) - dist;
+	return side;
 }
 
 ////////////////////////////////////////////////////////////////
 //
-//             OBJECT COMBINATION OPERATORS
+//                     COMBINATIONS
 //
 ////////////////////////////////////////////////////////////////
 
-// The "Chamfer" flavour makes a 45-degree chamfered edge (the diagonal of a square of size <r>):
+// Union with a 45-degree chamfer of size r
 float fOpUnionChamfer(float a, float b, float r) {
-	return min(min(a, b), (a - r + b)*sqrt(0.5));
+	float chamfer = (a + b - r)*sqrt(0.5);
+	return min(min(a, b), chamfer);
 }
 
-// The "Round" variant uses a quarter-circle to join the two objects smoothly:
+// Union with a quarter-circle fillet of radius r
 float fOpUnionRound(float a, float b, float r) {
-	vec2 u = max(vec2(r - a,r - b), vec2(0));
-	return max(r, min (a, b)) - length(u);
+	vec2 u = max(vec2(r) - vec2(a, b), vec2(0));
+	return max(r, min(a, b)) - length(u);
 }
 
+// Intersection with a rounded edge of radius r
 float fOpIntersectionRound(float a, float b, float r) {
-	vec2 u = max(vec2(r + a,r + b), vec2(0));
-	return min(-r, max (a, b)) + length(u);
+	vec2 u = max(vec2(r) + vec2(a, b), vec2(0));
+	return min(-r, max(a, b)) + length(u);
 }
 
 float fOpDifferenceRound (float a, float b, float r) {
 	return fOpIntersectionRound(a, -b, r);
 }
 
-// Similar to fOpUnionRound, but more lipschitz-y at acute angles
-// (and less so at 90 degrees). Useful when fudging around too much
+// Quadratic soft union
 float fOpUnionSoft(float a, float b, float r) {
 	float e = max(r - abs(a - b), 0.);
-	return min(a, b) - e*e*0.25/r;
+	return min(a, b) - 0.25*e*e/r;
 }
