@@ -148,36 +148,72 @@ Expected<SampleSet> evaluateAt(const shaders::PreparedSdf& sdf, const AuditOptio
 
 struct JumpCandidate {
     glm::vec3 position;
-    glm::vec3 across;  // unit: the finest-step gradient's direction, which crosses the jump
+    glm::vec3 across;  // unit: the gradient's direction at the step that saw the jump, which crosses it
+    float step;        // that difference step: the jump lies within about this distance
 };
 
-// Measures the jump at each candidate: f on both sides, 3e-4 away along `across` (the candidate
-// lies within ~1e-4 of the jump, so the two straddle it), less what the slope on either side
-// (from two more points per side) accounts for. Jumps within 4x the noise floor are rounding.
+// Largest rise between consecutive values beyond the typical one (the field's own slope), and
+// where: between samples k and k + 1 of `f`. Negative when a value is not finite.
+std::pair<float, int> largestStep(const float* f, int count) {
+    std::vector<float> differences;
+    int at = 0;
+    for (int k = 0; k + 1 < count; ++k) {
+        if (!std::isfinite(f[k]) || !std::isfinite(f[k + 1])) return {-1.0f, 0};
+        differences.push_back(std::abs(f[k + 1] - f[k]));
+        if (differences.back() > differences[std::size_t(at)]) at = k;
+    }
+    const float largest = differences[std::size_t(at)];
+    return {largest - percentile(differences, 0.5), at};
+}
+
+// Confirms and measures jumps by line searches across each candidate: 64 points over 3 steps along
+// `across` find the largest rise; 64 points across that one interval must show (at least half of)
+// the same rise. A continuous field's rise shrinks with the interval (even an infinitely steep one
+// like sqrt near 0 shrinks 8-fold here); a jump does not. Rises within 4x the noise floor are
+// rounding. Examples are the midpoints of the final intervals: on the jump, within 1/63 of it.
 Expected<AuditFlag> measureJumps(const shaders::PreparedSdf& sdf, const AuditOptions& options, const std::vector<JumpCandidate>& candidates,
                                  float noiseFloor) {
+    constexpr int kLine = 64;
     AuditFlag flag;
     flag.name = "discontinuous";
-    const std::size_t used = std::min<std::size_t>(candidates.size(), 512);
-    if (used == 0) return flag;
-    constexpr float kOffsets[4] = {-6e-4f, -3e-4f, 3e-4f, 6e-4f};
+    const std::size_t used = std::min<std::size_t>(candidates.size(), 1024);
     std::vector<float> points;
-    for (std::size_t c = 0; c < used; ++c)
-        for (float offset : kOffsets) {
-            glm::vec3 q = candidates[c].position + offset * candidates[c].across;
+    auto line = [&](glm::vec3 from, glm::vec3 to) {
+        for (int k = 0; k < kLine; ++k) {
+            glm::vec3 q = from + (to - from) * (float(k) / float(kLine - 1));
             points.insert(points.end(), {q.x, q.y, q.z});
         }
-    auto values = evaluateAt(sdf, options, points, 1e-3f);
-    if (!values) return values.error();
-    std::vector<float> jumps;
+    };
     for (std::size_t c = 0; c < used; ++c) {
-        const float* f = &values->distances[4 * c];
-        if (!std::isfinite(f[0]) || !std::isfinite(f[1]) || !std::isfinite(f[2]) || !std::isfinite(f[3])) continue;
-        const float slope = std::max(std::abs(f[1] - f[0]), std::abs(f[3] - f[2])) / 3e-4f;
-        const float jump = std::abs(f[2] - f[1]) - 6e-4f * slope;
-        if (!(jump > 4.0f * noiseFloor + 1e-5f)) continue;
-        jumps.push_back(jump);
-        if (flag.examples.size() < kMaxExamples) flag.examples.push_back(candidates[c].position);
+        const float reach = 1.5f * candidates[c].step;
+        line(candidates[c].position - reach * candidates[c].across, candidates[c].position + reach * candidates[c].across);
+    }
+    auto coarse = evaluateAt(sdf, options, points, 1e-3f);
+    if (!coarse) return coarse.error();
+    struct Interval {
+        glm::vec3 from, to;
+        float rise;
+    };
+    std::vector<Interval> intervals;
+    const float floor = 4.0f * noiseFloor + 1e-5f;
+    for (std::size_t c = 0; c < used; ++c) {
+        auto [rise, k] = largestStep(&coarse->distances[std::size_t(kLine) * c], kLine);
+        if (!(rise > floor)) continue;
+        const float* p = &points[3 * (std::size_t(kLine) * c + std::size_t(k))];
+        intervals.push_back({glm::vec3(p[0], p[1], p[2]), glm::vec3(p[3], p[4], p[5]), rise});
+    }
+    if (intervals.empty()) return flag;
+    points.clear();
+    for (const Interval& interval : intervals) line(interval.from, interval.to);
+    auto fine = evaluateAt(sdf, options, points, 1e-3f);
+    if (!fine) return fine.error();
+    std::vector<float> jumps;
+    for (std::size_t c = 0; c < intervals.size(); ++c) {
+        auto [rise, k] = largestStep(&fine->distances[std::size_t(kLine) * c], kLine);
+        if (!(rise > floor) || rise < 0.5f * intervals[c].rise) continue;
+        jumps.push_back(rise);
+        const float* p = &points[3 * (std::size_t(kLine) * c + std::size_t(k))];
+        if (flag.examples.size() < kMaxExamples) flag.examples.push_back(0.5f * (glm::vec3(p[0], p[1], p[2]) + glm::vec3(p[3], p[4], p[5])));
     }
     flag.count = jumps.size();
     if (!jumps.empty()) {
@@ -335,40 +371,44 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
     // points within the finest step of the jump.
     std::uint64_t tested = 0;
     std::vector<JumpCandidate> candidates;
+    std::uint64_t suspects = 0;  // points whose quotient at a coarser step outgrows the finest one
     for (const std::vector<SampleSet>* sets : {&random, &near})
         for (std::size_t i = 0; i < n; ++i) {
-            if (!finiteRow((*sets)[0], i) || !finiteRow((*sets)[2], i)) continue;
+            if (!finiteRow((*sets)[0], i) || !finiteRow((*sets)[1], i) || !finiteRow((*sets)[2], i)) continue;
             ++tested;
-            float coarse = gradientLength((*sets)[0], i), fine = gradientLength((*sets)[2], i);
-            if (fine > 3.0f * std::max(coarse, 0.1f) && fine > 2.0f && fine > coarse + noiseSlope(3)) {
+            const float q[3] = {gradientLength((*sets)[0], i), gradientLength((*sets)[1], i), gradientLength((*sets)[2], i)};
+            const glm::vec3 position((*sets)[0].positions[3 * i], (*sets)[0].positions[3 * i + 1], (*sets)[0].positions[3 * i + 2]);
+            // Within the finest step of a jump: that quotient is J / 2h, far above the coarse one.
+            if (q[2] > 3.0f * std::max(q[0], 0.1f) && q[2] > 2.0f && q[2] > q[0] + noiseSlope(3)) {
                 ++report.discontinuities;
                 const float* g = &(*sets)[2].gradients[3 * i];
-                candidates.push_back({glm::vec3((*sets)[2].positions[3 * i], (*sets)[2].positions[3 * i + 1], (*sets)[2].positions[3 * i + 2]),
-                                      glm::vec3(g[0], g[1], g[2]) / fine});
+                candidates.push_back({position, glm::vec3(g[0], g[1], g[2]) / q[2], 2.0f * Scales::kSteps[2]});
+                continue;
             }
+            // Within a coarser step of a jump (100 times more points): that quotient outgrows the finest.
+            for (int s = 0; s < 2; ++s)
+                if (q[s] > 3.0f * std::max(q[2], 0.1f) + noiseSlope(std::size_t(s) + 1) && q[s] > 2.0f) {
+                    ++suspects;
+                    const float* g = &(*sets)[std::size_t(s)].gradients[3 * i];
+                    if (candidates.size() < 4096) candidates.push_back({position, glm::vec3(g[0], g[1], g[2]) / q[s], 2.0f * Scales::kSteps[s]});
+                    break;
+                }
         }
     report.discontinuityShare = tested ? double(report.discontinuities) / double(tested) : 0.0;
-    // A jump of height J shows as J / (2h) at step h: the largest quotient grows tenfold per scale.
-    // A Lipschitz field's largest quotient stays put (up to float noise at the finest scale).
-    const bool jumpGrowth = report.scales[3].max > 2.0f && report.scales[3].max - noiseSlope(3) > 3.0f * report.scales[1].max &&
-                            report.scales[2].max - noiseSlope(2) > 1.5f * report.scales[1].max;
     std::optional<AuditFlag> discontinuous;
-    if (report.discontinuityShare > 5e-4 || jumpGrowth) {
+    if (!candidates.empty()) {
         auto jumps = measureJumps(sdf, options, candidates, report.noiseFloor);
         if (!jumps) return jumps.error();
-        if (jumps->count > 0 || candidates.empty()) {
+        if (jumps->count > 0) {
             discontinuous = std::move(*jumps);
-            discontinuous->share = report.discontinuityShare;
-            if (candidates.empty()) {
-                // Only the growth of the largest quotients shows it: J ~ max quotient x 2h.
-                discontinuous->value = discontinuous->maximum = report.scales[3].max * report.scales[3].step;
-            }
+            discontinuous->share = double(discontinuous->count) / double(std::max<std::uint64_t>(tested, 1));
             char text[320];
             std::snprintf(text, sizeof text,
-                          "f jumps by %.3g (median; largest %.3g) at %llu of %llu probed points: difference quotients grow as the step "
-                          "shrinks (largest %.3g at scale 0.02, %.3g at 0.002, %.3g at 0.0002)",
-                          double(discontinuous->value), double(discontinuous->maximum), (unsigned long long)report.discontinuities,
-                          (unsigned long long)tested, double(report.scales[1].max), double(report.scales[2].max), double(report.scales[3].max));
+                          "f jumps by %.3g (median; largest %.3g): %llu jumps confirmed by line searches from %llu of %llu probed points "
+                          "whose difference quotients grow as the step shrinks (largest %.3g at scale 0.02, %.3g at 0.0002)",
+                          double(discontinuous->value), double(discontinuous->maximum), (unsigned long long)discontinuous->count,
+                          (unsigned long long)(report.discontinuities + suspects), (unsigned long long)tested, double(report.scales[1].max),
+                          double(report.scales[3].max));
             discontinuous->evidence = text;
         }
     }
@@ -386,16 +426,20 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
                 if (!finiteRow((*sets)[0], i) || !finiteRow((*sets)[1], i) || !finiteRow((*sets)[2], i)) continue;
                 const float q0 = gradientLength((*sets)[0], i), q1 = gradientLength((*sets)[1], i), q2 = gradientLength((*sets)[2], i);
                 const float allowed = 1.5f * q2 + noiseSlope(3) + 0.05f;
-                if (q0 > allowed || q1 > allowed) continue;
-                unaffected[0].push_back(q0);
+                if (q0 > allowed || q1 > allowed) continue;  // a jump within the coarser steps
+                if (q2 > 3.0f * std::max(q0, 0.1f) && q2 > 2.0f) continue;  // a jump within the finest step
+                // Beside a jump, a small one (where the two sides nearly agree) still lifts the
+                // coarser quotients a little: there the per-point estimate takes the smaller.
+                unaffected[0].push_back(discontinuous ? std::min(q0 - noiseSlope(1), q1 - noiseSlope(2)) + noiseSlope(1) : q0);
                 unaffected[1].push_back(q1);
                 ++counted;
-                if (q1 > 1.05f + noiseSlope(2)) {
+                if (std::min(q0, q1) > 1.05f + noiseSlope(2)) {
                     ++above;
                     steepest.push_back({q1, glm::vec3((*sets)[1].positions[3 * i], (*sets)[1].positions[3 * i + 1], (*sets)[1].positions[3 * i + 2])});
                 }
             }
-        report.lipschitz = std::max(percentile(unaffected[0], 0.999) - noiseSlope(1), percentile(unaffected[1], 0.999) - noiseSlope(2));
+        report.lipschitz = percentile(unaffected[0], 0.999) - noiseSlope(1);
+        if (!discontinuous) report.lipschitz = std::max(report.lipschitz, percentile(unaffected[1], 0.999) - noiseSlope(2));
         if (!discontinuous) report.lipschitz = std::max(report.lipschitz, report.scales[0].p999 - noiseSlope(0));
         report.lipschitzMax = std::max({report.scales[0].max, report.scales[1].max, report.scales[2].max});
         report.lipschitzUncertainty = report.lipschitzMax - report.lipschitz;

@@ -1,6 +1,6 @@
 // Imitates: hg_sdf-based demo code -- the library #included, pMod1 on a
-// component, fBox/vmax helpers, and a terse entry called `f` as in quick
-// forum snippets (no sdf() in this file).
+// component, fBoxCheap/vmax helpers, and the entry named `sdScene`, as in
+// some tutorials (no sdf() in this file).
 //
 // Why discontinuous: pMod1 repeats space in x with cells 0.4 wide, but the
 // bar drawn in each cell is centred 0.1 off the cell centre and has radius
@@ -11,11 +11,11 @@
 // box (|x| < 0.8, |z| < 0.7, faces at x = +-0.2 and +-0.6). A centred
 // (mirror-symmetric) bar would not jump even if it were too wide; the
 // offset is what breaks it. Otherwise 1-Lipschitz, finite and bounded.
-// expect: entry=f flags=discontinuous animated=no
+// expect: entry=sdScene flags=discontinuous animated=no
 
 #include "lib/hg_style.glsl"
 
-float f(vec3 p) {
+float sdScene(vec3 p) {
 	vec3 q = p;
 	pMod1(q.x, 0.4);
 	// bar along z, off-centre in its cell

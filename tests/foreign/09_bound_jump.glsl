@@ -4,12 +4,12 @@
 // object is a ball of radius 0.5 when far away).
 //
 // Why discontinuous: at |p| = 0.9 the code switches from the detailed
-// field (three crossed bars, each 0.7 long and 0.15 thick, plus a centre
-// ball) to length(p) - 0.5 = 0.4. The detailed field there is 0.2 on the
-// axes (0.9 - 0.7) and about 0.5 on the diagonals; it equals 0.4 only on
-// a curve, so the field jumps by up to 0.2 across most of the
-// sphere |p| = 0.9, which lies inside the cube. Both pieces are
-// 1-Lipschitz and finite; only the switch is wrong.
+// field (three crossed bars reaching 0.7 from the centre, 0.3 thick, plus
+// a centre ball) to length(p) - 0.5 = 0.4. The detailed field there ranges
+// from about 0.17 (near the bar ends) to about 0.52 (on the diagonals) and
+// equals 0.4 only on curves, so the field jumps, by up to ~0.23, across
+// almost all of the sphere |p| = 0.9, which lies inside the cube. Both
+// pieces are 1-Lipschitz and finite; only the switch is wrong.
 // expect: entry=de flags=discontinuous animated=no
 
 #define BOUND 0.9

@@ -4,9 +4,10 @@
 // floor at y = 0, so the author only abs()'d x and z -- y was "always
 // positive".
 //
-// Why NaN: pow(x, 2.5) is undefined for x < 0 and evaluates to NaN on
-// GPUs (exp2(2.5 * log2(x)) with log2 of a negative). p.y is passed to
-// pow() without abs(), so every point with y < 0 -- half of the cube --
+// Why NaN: a softening term sqrt(y) added last; sqrt of a negative is NaN on
+// IEEE hardware (llvmpipe, NVIDIA; GLSL leaves it undefined; pow() of a
+// negative base would not do: Mesa returns it finite). p.y goes into it
+// without abs(), so every point with y < 0 -- half of the cube --
 // gets NaN, which nothing afterwards filters out (no min/max that could
 // swallow it). Where y >= 0 the field is ||p||_2.5 - 0.6; for a p-norm with
 // p >= 2 the Euclidean length of the gradient is <= 1, so that half is
@@ -18,7 +19,9 @@ const float N = 2.5;
 float lengthN(vec3 p, float n)
 {
     vec3 a = vec3(abs(p.x), p.y, abs(p.z));   // y >= 0 on the floor anyway
-    return pow(pow(a.x, n) + pow(a.y, n) + pow(a.z, n), 1.0/n);
+    vec3 b = pow(abs(a), vec3(n));
+    // the floor contact 'softening', written for y >= 0: sqrt(y) below the shape
+    return pow(b.x + b.y + b.z, 1.0/n) + 0.001 * sqrt(a.y);
 }
 
 float map(vec3 p)

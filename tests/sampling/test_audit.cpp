@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -108,4 +109,105 @@ TEST_F(AuditTest, PlaneReadouts) {
     auto broken = sampling::analysePlane(load("tests/stability/nan_region.glsl"), {0, 0, 1}, 0.0f, 64, 0.0f);
     ASSERT_TRUE(broken.hasValue());
     EXPECT_NEAR(double(broken->nanCount) / double(broken->points), 0.2, 0.03);
+}
+
+namespace {
+
+sampling::AuditReport auditText(const std::string& glsl, std::uint64_t samples = 20000, float probeDistance = 3.0f) {
+    auto sdf = shaders::prepareSdf(glsl, "known.glsl", {}, shaders::IncludeOptions{});
+    EXPECT_TRUE(sdf.ok()) << glsl;
+    sampling::AuditOptions options;
+    options.samples = samples;
+    options.seed = 7;
+    options.convergence = false;
+    options.probeDistance = probeDistance;
+    auto report = sampling::auditField(sdf, options, {});
+    EXPECT_TRUE(report.hasValue()) << (report ? "" : report.error().message);
+    return report ? *report : sampling::AuditReport{};
+}
+
+std::vector<std::string> flagNames(const sampling::AuditReport& r) {
+    std::vector<std::string> names;
+    for (const auto& f : r.flags) names.push_back(f.name);
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+using Names = std::vector<std::string>;
+
+} // namespace
+
+// Issue 14, point 6: fields whose construction fixes the findings, with a fixed seed.
+TEST_F(AuditTest, KnownFieldsGiveKnownFlagSets) {
+    // The paper's snake (its Figure 13): steeper than a distance and capped. Both are reported.
+    auto snake = auditText("float sdf(vec3 p) { return min(1.0, 1.9 * (length(p) - 0.5)); }");
+    EXPECT_EQ(flagNames(snake), (Names{"non-conservative", "truncated"})) << snake.reason;
+    EXPECT_EQ(snake.verdict, "truncated");
+    const auto* cap = sampling::findFlag(snake.flags, "truncated");
+    ASSERT_TRUE(cap);
+    EXPECT_NEAR(cap->value, 1.0f, 1e-3f);
+    EXPECT_NEAR(cap->start, 1.0f / 1.9f, 0.08f) << "the plateau starts where 1.9 d reaches 1";
+    EXPECT_GT(cap->share, 0.9);
+    const auto* steep = sampling::findFlag(snake.flags, "non-conservative");
+    ASSERT_TRUE(steep);
+    EXPECT_NEAR(steep->value, 1.9f, 0.02f);
+    ASSERT_FALSE(steep->examples.empty());
+    EXPECT_NEAR(snake.truncationDistance.value_or(0.0f), 1.0f, 1e-3f);
+
+    auto capped = auditText("float sdf(vec3 p) { return min(0.1, length(p) - 0.5); }");
+    EXPECT_EQ(flagNames(capped), (Names{"truncated"})) << capped.reason;
+    ASSERT_TRUE(sampling::findFlag(capped.flags, "truncated"));
+    EXPECT_NEAR(sampling::findFlag(capped.flags, "truncated")->value, 0.1f, 1e-3f);
+    EXPECT_NEAR(sampling::findFlag(capped.flags, "truncated")->start, 0.1f, 0.05f);
+
+    // A plateau beyond the unit cube (f reaches 2 at 2.5 from the origin) is found by probing outward.
+    auto far = auditText("float sdf(vec3 p) { return min(2.0, length(p) - 0.5); }");
+    EXPECT_EQ(flagNames(far), (Names{"truncated"})) << far.reason;
+    auto shortReach = auditText("float sdf(vec3 p) { return min(2.0, length(p) - 0.5); }", 20000, 1.0f);
+    EXPECT_EQ(flagNames(shortReach), Names{}) << "probing only to 1: the plateau at 2 is out of reach";
+
+    // A jump of 0.2 across the plane z = 0.2, located there.
+    auto jump = auditText("float sdf(vec3 p) { return length(p) - 0.5 + (p.z > 0.2 ? 0.2 : 0.0); }");
+    EXPECT_EQ(flagNames(jump), (Names{"discontinuous"})) << jump.reason;
+    const auto* step = sampling::findFlag(jump.flags, "discontinuous");
+    ASSERT_TRUE(step);
+    EXPECT_NEAR(step->value, 0.2f, 0.01f);
+    ASSERT_FALSE(step->examples.empty());
+    EXPECT_LE(step->examples.size(), sampling::kMaxExamples);
+    for (const glm::vec3& e : step->examples) EXPECT_NEAR(e.z, 0.2f, 1e-3f) << "example off the jump plane";
+
+    // Domain repetition whose cell cuts an off-centre sphere: f jumps at the cell walls (x = +-0.25, ...).
+    auto repeated = auditText("float sdf(vec3 p) { vec3 q = mod(p + 0.25, 0.5) - 0.25; return length(q - vec3(0.1, 0.0, 0.0)) - 0.2; }");
+    EXPECT_EQ(flagNames(repeated), (Names{"discontinuous"})) << repeated.reason;
+    for (const glm::vec3& e : sampling::findFlag(repeated.flags, "discontinuous")->examples) {
+        const float wall = std::abs(std::fmod(std::abs(e.x) + 0.25f, 0.5f));  // 0 or 0.5 on a wall x = 0.25 + 0.5 k
+        EXPECT_LT(std::min(wall, 0.5f - wall), 2e-3f) << e.x;
+    }
+
+    // Two spheres' max: a crease, not a jump, and 1-Lipschitz.
+    auto kinked = auditText("float sdf(vec3 p) { return max(length(p - vec3(0.2, 0, 0)) - 0.5, length(p + vec3(0.2, 0, 0)) - 0.5); }");
+    EXPECT_EQ(flagNames(kinked), Names{}) << kinked.reason;
+
+    // NaN where x > 0.5, with the examples there.
+    auto broken = auditText("float sdf(vec3 p) { return p.x > 0.5 ? sqrt(-1.0 - p.x) : length(p) - 0.4; }");
+    EXPECT_EQ(flagNames(broken), (Names{"nan"})) << broken.reason;
+    EXPECT_NEAR(sampling::findFlag(broken.flags, "nan")->share, 0.25, 0.02);
+    for (const glm::vec3& e : sampling::findFlag(broken.flags, "nan")->examples) EXPECT_GT(e.x, 0.5f);
+}
+
+TEST_F(AuditTest, PlaneReadoutsGiveTheSameFlags) {
+    auto snake = shaders::prepareSdf("float sdf(vec3 p) { return min(0.3, 1.9 * (length(p) - 0.5)); }", "snake.glsl", {}, {});
+    auto r = sampling::analysePlane(snake, {0, 0, 1}, 0.0f, 128, 0.0f);
+    ASSERT_TRUE(r.hasValue());
+    std::vector<std::string> names;
+    for (const auto& f : r->flags) names.push_back(f.name);
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(names, (Names{"non-conservative", "truncated"}));
+    auto jump = shaders::prepareSdf("float sdf(vec3 p) { return length(p) - 0.5 + (p.x > 0.2 ? 0.2 : 0.0); }", "jump.glsl", {}, {});
+    auto j = sampling::analysePlane(jump, {0, 0, 1}, 0.0f, 128, 0.0f);
+    ASSERT_TRUE(j.hasValue());
+    const auto* flag = sampling::findFlag(j->flags, "discontinuous");
+    ASSERT_TRUE(flag);
+    EXPECT_NEAR(flag->value, 0.2f, 0.03f);
+    for (const glm::vec3& e : flag->examples) EXPECT_NEAR(e.x, 0.2f, 0.03f);
 }

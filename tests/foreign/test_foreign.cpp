@@ -1,0 +1,325 @@
+// SDF code in the styles of public code (tests/foreign/, written here; see its README): every file
+// opens unmodified (its entry point found, or named where it is not a conventional one), renders,
+// samples (near, 1e5) and gets exactly the audit flags its construction implies (its `expect:` line,
+// explained in its comments). Also: a file that defines the names public SDF code uses most (as
+// functions, constants, structs, uniforms and macros) composes with every tracer variant and every
+// sampler, and each program compiles and runs.
+
+#include <renderer/Camera.h>
+#include <renderer/NoiseTexture.h>
+#include <renderer/OffscreenRenderer.h>
+#include <renderer/SampleCompute.h>
+#include <renderer/SdfRenderer.h>
+#include <sampling/FieldAudit.h>
+#include <sampling/Sampler.h>
+#include <sampling/SamplerLibrary.h>
+#include <shaders/BuiltinShaders.h>
+#include <shaders/SdfSource.h>
+
+#include "GlTestContext.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <regex>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <unistd.h>
+
+using namespace sdfwb;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kFolder = fs::path(SDFWB_SOURCE_DIR) / "tests" / "foreign";
+
+struct Expectation {
+    std::string entry;
+    std::vector<std::string> flags;  // sorted
+    bool animated = false;
+};
+
+Expectation readExpectation(const fs::path& file) {
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    static const std::regex line(R"(// expect: entry=(\w+) flags=([a-z,-]+) animated=(yes|no))");
+    std::smatch match;
+    const std::string content = text.str();
+    Expectation e;
+    if (!std::regex_search(content, match, line)) {
+        ADD_FAILURE() << file << ": no `// expect:` line";
+        return e;
+    }
+    e.entry = match[1].str();
+    std::stringstream flags(match[2].str());
+    for (std::string flag; std::getline(flags, flag, ',');)
+        if (flag != "none") e.flags.push_back(flag);
+    std::sort(e.flags.begin(), e.flags.end());
+    e.animated = match[3].str() == "yes";
+    return e;
+}
+
+std::vector<std::string> corpusFiles() {
+    std::vector<std::string> names;
+    for (const auto& item : fs::directory_iterator(kFolder))
+        if (item.path().extension() == ".glsl" && std::isdigit(static_cast<unsigned char>(item.path().filename().string()[0])))
+            names.push_back(item.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+shaders::PreparedSdf prepare(const fs::path& file, const std::string& entry = {}) {
+    shaders::IncludeOptions options;
+    options.libraryRoots = {fs::path(SDFWB_SOURCE_DIR) / "shaders" / "lib"};
+    return shaders::prepareSdfFile(file, options, entry);
+}
+
+std::string firstError(const shaders::PreparedSdf& sdf) {
+    for (const auto& d : sdf.diagnostics)
+        if (d.severity == shaders::Severity::Error) return shaders::formatDiagnostic(d);
+    return {};
+}
+
+class ForeignCode : public sdfwb::testing::GlTest, public ::testing::WithParamInterface<std::string> {};
+
+} // namespace
+
+TEST(ForeignCorpus, HasTheStylesTheIssueAsksFor) {
+    const auto files = corpusFiles();
+    EXPECT_GE(files.size(), 25u);
+    std::set<std::string> flags, entries;
+    int includes = 0, animated = 0;
+    for (const std::string& name : files) {
+        Expectation e = readExpectation(kFolder / name);
+        flags.insert(e.flags.begin(), e.flags.end());
+        entries.insert(e.entry);
+        animated += e.animated;
+        std::ifstream in(kFolder / name);
+        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        includes += text.find("#include") != std::string::npos;
+    }
+    EXPECT_EQ(flags, (std::set<std::string>{"discontinuous", "nan", "non-conservative", "truncated"}));
+    EXPECT_GE(entries.size(), 4u) << "sdf, map and other entry names";
+    EXPECT_GE(includes, 3);
+    EXPECT_GE(animated, 3);
+}
+
+TEST_P(ForeignCode, OpensRendersSamplesAndGetsItsFlags) {
+    const fs::path file = kFolder / GetParam();
+    const Expectation expected = readExpectation(file);
+    // Opens unmodified: `sdf` and the conventional names are found without being named.
+    const auto& conventional = shaders::conventionalEntries();
+    const bool findable = expected.entry == "sdf" || std::find(conventional.begin(), conventional.end(), expected.entry) != conventional.end();
+    shaders::PreparedSdf sdf = prepare(file, findable ? std::string() : expected.entry);
+    ASSERT_TRUE(sdf.ok()) << firstError(sdf);
+    EXPECT_EQ(sdf.signature.entry, expected.entry);
+    EXPECT_EQ(sdf.usesTime(), expected.animated);
+
+    // Renders: the shape is in view.
+    renderer::SdfRenderer sdfRenderer;
+    renderer::ShadingSettings shading;
+    shading.statsOutput = true;
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
+    auto diagnostics = sdfRenderer.setSdf(sdf);
+    ASSERT_FALSE(shaders::hasErrors(diagnostics)) << (diagnostics.empty() ? "" : shaders::formatDiagnostic(diagnostics.front()));
+    renderer::Camera camera;
+    camera.position = {1.8f, 1.4f, 2.6f};
+    camera.target = {0.0f, 0.0f, 0.0f};
+    renderer::OffscreenRenderer offscreen;
+    auto pixels = offscreen.renderStats(sdfRenderer, 64, 48, camera, 0.5f);
+    sdfRenderer.releaseGl();
+    const auto hits = std::count_if(pixels.begin(), pixels.end(), [](const auto& p) { return p.hit(); });
+    EXPECT_GT(hits, 64) << "fewer than 64 of 3072 pixels hit the shape";
+
+    // Samples near the surface: rows land near the zero set.
+    auto sampler = sampling::findSampler("near", {});
+    ASSERT_TRUE(sampler.hasValue());
+    renderer::SampleCompute compute;
+    ASSERT_FALSE(shaders::hasErrors(compute.build(sdf, *sampler)));
+    sampling::SamplingJob job;
+    job.count = 100000;
+    job.time = 0.5f;
+    std::vector<float> positions(3 * job.count), distances(job.count), gradients(3 * job.count);
+    auto report = sampling::sampleInto(compute, job, positions.data(), distances.data(), gradients.data(), {});
+    compute.releaseGl();
+    ASSERT_TRUE(report.hasValue()) << report.error().message;
+    EXPECT_EQ(report->rows, job.count);
+    std::vector<float> finite;
+    for (float d : distances)
+        if (std::isfinite(d)) finite.push_back(std::abs(d));
+    const bool hasNan = std::count(expected.flags.begin(), expected.flags.end(), "nan") != 0;
+    if (!hasNan) EXPECT_LT(double(report->badRows), 0.05 * double(job.count)) << "near: rows without a surface";
+    ASSERT_FALSE(finite.empty());
+    std::nth_element(finite.begin(), finite.begin() + long(finite.size() / 2), finite.end());
+    EXPECT_LT(finite[finite.size() / 2], 0.05f) << "near samples are not near the surface";
+
+    // Audited: exactly the findings the construction implies.
+    sampling::AuditOptions options;
+    options.samples = 20000;
+    options.convergence = false;
+    options.time = 0.5f;
+    auto audit = sampling::auditField(sdf, options, {});
+    ASSERT_TRUE(audit.hasValue()) << audit.error().message;
+    std::vector<std::string> flags;
+    for (const auto& f : audit->flags) flags.push_back(f.name);
+    std::sort(flags.begin(), flags.end());
+    EXPECT_EQ(flags, expected.flags) << GetParam() << ": " << audit->verdict << ": " << audit->reason;
+    if (!expected.flags.empty()) EXPECT_EQ(audit->verdict, audit->flags.front().name);
+}
+
+INSTANTIATE_TEST_SUITE_P(Corpus, ForeignCode, ::testing::ValuesIn(corpusFiles()), [](const auto& info) {
+    std::string name = fs::path(info.param).stem().string();
+    for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    return name;
+});
+
+namespace {
+class UserNames : public sdfwb::testing::GlTest {};
+}
+
+// Issue 14, point 1: the user's names are the user's. common_names.glsl defines the names public
+// SDF code uses most, macros included; every tracer variant and every sampler composes with it,
+// compiles, links and runs.
+TEST_F(UserNames, EveryVariantAndSamplerCompilesAndRunsWithCommonNames) {
+    const fs::path file = kFolder / "common_names.glsl";
+    shaders::PreparedSdf sdf = prepare(file);
+    ASSERT_TRUE(sdf.ok()) << firstError(sdf);
+    // The file defines at least 60 distinct names, at least 15 of them as macros.
+    {
+        std::ifstream in(file);
+        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        const std::string stripped = shaders::stripComments(text);
+        static const std::regex declaration(R"((?:^|[;{}\n])\s*(?:const\s+|uniform\s+)?(?:float|int|bool|vec[234]|mat[234]|struct|void|[A-Z]\w*)\s+([A-Za-z_]\w*)\s*[=;(\[{])");
+        std::set<std::string> names;
+        for (auto it = std::sregex_iterator(stripped.begin(), stripped.end(), declaration); it != std::sregex_iterator(); ++it)
+            names.insert((*it)[1].str());
+        const auto macros = shaders::definedMacros(stripped);
+        names.insert(macros.begin(), macros.end());
+        EXPECT_GE(names.size(), 60u);
+        EXPECT_GE(macros.size(), 15u);
+        for (const char* common : {"map", "calcNormal", "hash", "smin", "sdBox", "PI", "EPS", "MAX_STEPS", "rot"})
+            EXPECT_TRUE(names.count(common)) << common;
+    }
+    renderer::Camera camera;
+    camera.position = {1.5f, 1.2f, 2.5f};
+    int programs = 0;
+    for (renderer::ShadingMode mode : {renderer::ShadingMode::Normals, renderer::ShadingMode::Gooch, renderer::ShadingMode::Matcap,
+                                        renderer::ShadingMode::Curvature, renderer::ShadingMode::Steps})
+        for (int ao = 0; ao < 2; ++ao)
+            for (int plane = 0; plane < 4; ++plane)  // off, on, clipping, clipping + Lipschitz overlay
+                for (int relax = 0; relax < 2; ++relax)
+                    for (int stats = 0; stats < 2; ++stats) {
+                        if (stats && mode != renderer::ShadingMode::Normals) continue;
+                        renderer::SdfRenderer sdfRenderer;
+                        renderer::ShadingSettings shading;
+                        shading.mode = mode;
+                        shading.ambientOcclusion = ao;
+                        shading.statsOutput = stats;
+                        renderer::TraceSettings trace;
+                        trace.overRelaxation = relax ? 1.5f : 1.0f;
+                        renderer::CuttingPlane cut;
+                        cut.enabled = plane > 0;
+                        cut.clipSurface = plane > 1;
+                        cut.lipschitzOverlay = plane > 2;
+                        ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
+                        ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
+                        ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setPlane(cut)));
+                        auto diagnostics = sdfRenderer.setSdf(sdf);
+                        ASSERT_FALSE(shaders::hasErrors(diagnostics))
+                            << shadingModeName(mode) << " ao " << ao << " plane " << plane << " relax " << relax << ": "
+                            << (diagnostics.empty() ? "" : shaders::formatDiagnostic(diagnostics.front()));
+                        ASSERT_TRUE(sdfRenderer.hasProgram());
+                        renderer::OffscreenRenderer offscreen;
+                        renderer::Image image = offscreen.render(sdfRenderer, 32, 24, camera, 0.25f);
+                        sdfRenderer.releaseGl();
+                        ASSERT_EQ(image.width, 32);
+                        // Runs: some pixel differs from the background (the shape or the plane shows).
+                        const std::uint8_t* corner = image.pixel(0, 0);
+                        bool varied = false;
+                        for (int y = 0; y < image.height && !varied; ++y)
+                            for (int x = 0; x < image.width && !varied; ++x)
+                                varied = !std::equal(corner, corner + 3, image.pixel(x, y));
+                        EXPECT_TRUE(varied) << shadingModeName(mode) << " ao " << ao << " plane " << plane;
+                        ++programs;
+                    }
+    // Every built-in sampler and analysis piece.
+    std::vector<shaders::ShaderPiece> pieces;
+    for (const char* pattern : {"grid", "image", "jitter", "rand", "surface", "near", "metropolis", "metropolis_curvature"}) {
+        auto piece = sampling::findSampler(pattern, {});
+        ASSERT_TRUE(piece.hasValue()) << pattern;
+        pieces.push_back(*piece);
+    }
+    for (const char* analysis : {"analysis/noise_lines.glsl", "analysis/plane_grid.glsl"}) pieces.push_back(*shaders::builtinPiece(analysis));
+    for (const auto& piece : pieces) {
+        renderer::SampleCompute compute;
+        auto diagnostics = compute.build(sdf, piece);
+        ASSERT_FALSE(shaders::hasErrors(diagnostics)) << piece.name << ": " << shaders::formatDiagnostic(diagnostics.front());
+        sampling::SamplingJob job;
+        job.count = 256;
+        job.parameters[0] = 1e-3f;
+        job.parameters[3] = 2.0f;
+        job.parameters[4] = 1.0f;
+        job.parameters[9] = 1.0f;
+        std::vector<float> positions(3 * job.count), distances(job.count), gradients(3 * job.count);
+        auto report = sampling::sampleInto(compute, job, positions.data(), distances.data(), gradients.data(), {});
+        compute.releaseGl();
+        ASSERT_TRUE(report.hasValue()) << piece.name;
+        EXPECT_LT(report->badRows, job.count / 4) << piece.name;
+        ++programs;
+    }
+    EXPECT_EQ(programs, 5 * 2 * 4 * 2 + 2 * 4 * 2 + 10);
+}
+
+// Issue 14, point 3: `pi` used only deep inside a helper of an included file brings the prelude in;
+// g3d_uniformRandom is a real, bound, deterministic noise texture.
+TEST_F(UserNames, CompatDialectIsDetectedByUseAndTheNoiseTextureIsReal) {
+    const fs::path folder = fs::temp_directory_path() / ("sdfwb-compat-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    std::ofstream(folder / "helpers.glsl") << "#ifndef HELPERS_GLSL\n#define HELPERS_GLSL\nfloat wave(float x) {\n    float k = 2.0;\n"
+                                              "    return sin(k * pi * x);\n}\n#endif\n";
+    std::ofstream(folder / "shape.glsl") << "#include \"helpers.glsl\"\nfloat sdf(vec3 p) { return length(p) - 0.5 + 0.01 * wave(p.x); }\n";
+    auto sdf = prepare(folder / "shape.glsl");
+    ASSERT_TRUE(sdf.ok()) << firstError(sdf);
+    EXPECT_EQ(sdf.compat.symbols, std::vector<std::string>{"pi"});
+    renderer::SampleCompute compute;
+    ASSERT_FALSE(shaders::hasErrors(compute.build(sdf, *sampling::findSampler("rand", {}))));
+    compute.releaseGl();
+
+    // f is the noise texture's red channel at texel (i, j) for p = ((i + 0.5) / 256, (j + 0.5) / 256, 0).
+    std::ofstream(folder / "noise.glsl") << "float sdf(vec3 p) { return texture(g3d_uniformRandom, p.xy).r; }\n";
+    auto noisy = prepare(folder / "noise.glsl");
+    ASSERT_TRUE(noisy.ok()) << firstError(noisy);
+    const int n = renderer::kNoiseTextureSize;
+    std::vector<float> points;
+    for (int j = 0; j < 8; ++j)
+        for (int i = 0; i < n; ++i) points.insert(points.end(), {(float(i) + 0.5f) / float(n), (float(j) + 0.5f) / float(n), 0.0f});
+    auto run = [&] {
+        renderer::SampleCompute compute;
+        EXPECT_FALSE(shaders::hasErrors(compute.build(noisy, *shaders::builtinPiece("analysis/points.glsl"))));
+        sampling::SamplingJob job;
+        job.count = points.size() / 3;
+        job.inputPoints = points.data();
+        std::vector<float> positions(3 * job.count), distances(job.count), gradients(3 * job.count);
+        EXPECT_TRUE(sampling::sampleInto(compute, job, positions.data(), distances.data(), gradients.data(), {}).hasValue());
+        compute.releaseGl();
+        return distances;
+    };
+    const std::vector<float> first = run(), second = run();
+    EXPECT_EQ(first, second) << "the same texture on every run";
+    const std::vector<std::uint8_t> texels = renderer::noiseTexels();
+    int matching = 0;
+    double mean = 0.0;
+    for (std::size_t k = 0; k < first.size(); ++k) {
+        matching += std::abs(first[k] - float(texels[4 * k]) / 255.0f) < 1.0f / 512.0f;
+        mean += first[k];
+    }
+    EXPECT_EQ(matching, int(first.size())) << "the bound texture is noiseTexels(), not the matcap or nothing";
+    EXPECT_NEAR(mean / double(first.size()), 0.5, 0.05) << "uniform values in [0, 1]";
+    fs::remove_all(folder);
+}
