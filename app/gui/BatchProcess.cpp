@@ -44,7 +44,8 @@ bool BatchProcess::start(const QStringList& arguments) {
         else if (!ok && message.isEmpty()) message = tr("Failed (exit code %1).").arg(exitCode);
         emit finished(ok, cancelled, report, message);
     });
-    m_process->start(m_executable, QStringList{"--batch"} + arguments + QStringList{"--json", "--progress-lines"});
+    const QStringList sdfArguments = m_sdfArguments && arguments.contains("--sdf") ? m_sdfArguments() : QStringList{};
+    m_process->start(m_executable, QStringList{"--batch"} + arguments + sdfArguments + QStringList{"--json", "--progress-lines"});
     return true;
 }
 

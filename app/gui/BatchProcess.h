@@ -8,6 +8,8 @@
 #include <QString>
 #include <QStringList>
 
+#include <functional>
+
 class QProcess;
 
 namespace sdfwb::app {
@@ -24,6 +26,8 @@ public:
 
     // Starts `sdfwb --batch <arguments> --json --progress-lines`. False when one is running.
     bool start(const QStringList& arguments);
+    // Arguments added to every command that names an SDF (--sdf): the document's --entry.
+    void setSdfArguments(std::function<QStringList()> provider) { m_sdfArguments = std::move(provider); }
     void cancel();
     bool isRunning() const;
 
@@ -36,6 +40,7 @@ private:
     void readStandardError();
 
     QString m_executable;
+    std::function<QStringList()> m_sdfArguments;
     QProcess* m_process = nullptr;
     QString m_errors;
     QByteArray m_pending;

@@ -29,6 +29,8 @@ ExportController::ExportController(QWidget* window, widgets::ViewportWidget* vie
 }
 
 void ExportController::setExecutable(const QString& path) { m_process->setExecutable(path); }
+
+void ExportController::setSdfArguments(std::function<QStringList()> provider) { m_process->setSdfArguments(std::move(provider)); }
 bool ExportController::isExporting() const { return m_process->isRunning(); }
 
 QString ExportController::saveScreenshot(const QString& path, int width, int height) {

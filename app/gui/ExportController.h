@@ -24,6 +24,10 @@ public:
     ExportController(QWidget* window, widgets::ViewportWidget* viewport, std::function<QString()> currentSdf, QObject* parent = nullptr);
 
     void setExecutable(const QString& path);
+
+    // Extra arguments for commands that name the SDF (the entry point).
+
+    void setSdfArguments(std::function<QStringList()> provider);
     void showScreenshotDialog();
     void showVideoDialog();
     widgets::ExportDialog* screenshotDialog() const { return m_screenshotDialog; }

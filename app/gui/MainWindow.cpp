@@ -32,6 +32,9 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QLabel>
+#include <QRegularExpressionValidator>
+#include <QToolBar>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QSettings>
 #include <QStatusBar>
@@ -103,6 +106,29 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_playback = new PlaybackController(m_timeBar, m_viewport, this);
     m_plane = new PlaneController(m_planePanel, m_viewport, [this] { return m_document->path(); }, this);
     m_files = new FileController(this, m_editor, m_document, m_viewport, this);
+    // The entry point: every child job (plane readouts, sampling, video) gets the document's --entry.
+    auto entryArguments = [this] { return m_document->entry().isEmpty() ? QStringList{} : QStringList{"--entry", m_document->entry()}; };
+    m_sampling->setSdfArguments(entryArguments);
+    m_exports->setSdfArguments(entryArguments);
+    m_plane->setSdfArguments(entryArguments);
+    {
+        QToolBar* bar = addToolBar(tr("SDF"));
+        bar->setObjectName("SdfToolBar");
+        bar->addWidget(new QLabel(tr(" Entry point: ")));
+        m_entry = new QLineEdit;
+        m_entry->setObjectName("entry");
+        m_entry->setMaximumWidth(220);
+        m_entry->setPlaceholderText(tr("automatic"));
+        m_entry->setToolTip(tr("The function that is the SDF: float NAME(vec3 p) or NAME(vec3 p, float time), or vec2/vec4 NAME(...) with the "
+                               "distance in .x. Empty: the file's `entry:` metadata, else sdf, else map, scene, sceneSDF, sdScene, de or DE."));
+        m_entry->setValidator(new QRegularExpressionValidator(QRegularExpression("[A-Za-z_][A-Za-z0-9_]*"), m_entry));
+        bar->addWidget(m_entry);
+        connect(m_entry, &QLineEdit::editingFinished, this, [this] {
+            if (m_entry->text() == m_document->entry()) return;
+            m_document->setEntry(m_entry->text());
+            m_document->checkNow(m_editor->text());
+        });
+    }
     connect(m_files, &FileController::pathChanged, this, [this] {
         updateTitle();
         updateRecentMenu();
@@ -146,6 +172,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         m_problems->setDiagnostics(diagnostics);
     });
     connect(m_document, &SdfDocument::sdfApplied, this, &MainWindow::updateOverlay);
+    connect(m_document, &SdfDocument::sdfApplied, this, [this] {
+        // Shows what "automatic" chose, and how its value is read.
+        const shaders::SdfSignature& s = m_document->signature();
+        m_entry->setPlaceholderText(tr("automatic: %1%2").arg(QString::fromStdString(s.entry), s.returnType == "float" ? QString() : QString(" (.x)")));
+    });
     connect(m_document, &SdfDocument::signaturesChanged, this,
             [this](const QStringList& signatures) { m_editor->setCompletionFunctions(m_librarySignatures, signatures); });
     connect(m_document, &SdfDocument::sdfApplied, m_plane, &PlaneController::refresh);

@@ -7,6 +7,8 @@
 
 #include <QJsonArray>
 
+#include <glm/geometric.hpp>
+
 namespace sdfwb::app {
 
 PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWidget* viewport, std::function<QString()> currentSdf,
@@ -28,6 +30,19 @@ PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWi
         trace.stepFactor = std::clamp(factor, 0.01f, 1.0f);
         m_viewport->setTrace(trace);
     });
+    // Show where: ring the examples, move the plane through the first (the readouts follow).
+    connect(m_panel, &widgets::PlanePanel::showWhere, this, [this](const std::vector<glm::vec3>& examples) {
+        if (examples.empty()) return;
+        renderer::ShadingSettings shading = m_viewport->shading();
+        shading.markers = examples;
+        m_viewport->setShading(shading);
+        renderer::CuttingPlane plane = m_viewport->plane();
+        plane.offset = glm::dot(glm::normalize(plane.normal), examples.front());
+        m_panel->setPlane(plane);
+        m_viewport->setPlane(plane);
+        m_debounce.start();
+        emit markersShown(int(examples.size()));
+    });
     connect(m_process, &BatchProcess::finished, this, [this](bool ok, bool, const QJsonObject& report, const QString& message) {
         if (!ok) {
             m_panel->setReadoutMessage(message);
@@ -45,6 +60,16 @@ PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWi
             for (const QJsonValue& bin : report["histogram"].toArray()) view.histogram.push_back(quint64(bin.toInteger()));
             view.safeStepFactor = float(report["safe_step_factor"].toDouble());
             view.seconds = report["seconds"].toDouble();
+            for (const QJsonValue& item : report["flags"].toArray()) {
+                widgets::FindingView finding;
+                finding.name = item["flag"].toString();
+                finding.evidence = item["evidence"].toString();
+                for (const QJsonValue& point : item["examples"].toArray()) {
+                    const QJsonArray xyz = point.toArray();
+                    finding.examples.push_back(glm::vec3(float(xyz[0].toDouble()), float(xyz[1].toDouble()), float(xyz[2].toDouble())));
+                }
+                view.findings.push_back(std::move(finding));
+            }
             m_panel->setReadout(view);
             emit readoutUpdated();
         }
@@ -56,6 +81,8 @@ PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWi
 }
 
 void PlaneController::setExecutable(const QString& path) { m_process->setExecutable(path); }
+
+void PlaneController::setSdfArguments(std::function<QStringList()> provider) { m_process->setSdfArguments(std::move(provider)); }
 
 void PlaneController::refresh() {
     renderer::CuttingPlane plane = m_viewport->plane();

@@ -23,11 +23,14 @@ public:
     PlaneController(widgets::PlanePanel* panel, widgets::ViewportWidget* viewport, std::function<QString()> currentSdf,
                     QObject* parent = nullptr);
     void setExecutable(const QString& path);
+    // Extra arguments for commands that name the SDF (the entry point).
+    void setSdfArguments(std::function<QStringList()> provider);
     // Recomputes the readouts now (also called when the SDF changes).
     void refresh();
 
 signals:
     void readoutUpdated();
+    void markersShown(int count);
 
 private:
     widgets::PlanePanel* m_panel;

@@ -22,6 +22,10 @@ public:
     SamplingController(QWidget* window, std::function<QString()> currentSdf, QObject* parent = nullptr);
 
     void setExecutable(const QString& path);
+
+    // Extra arguments for commands that name the SDF (the entry point).
+
+    void setSdfArguments(std::function<QStringList()> provider);
     void showDialog();
     widgets::SamplingDialog* dialog() const { return m_dialog; }
     bool isRunning() const;

@@ -32,11 +32,12 @@ void SdfDocument::startCheck(const QString& text) {
     std::uint64_t generation = ++m_generation;
     std::string source = text.toStdString();
     std::string path = m_path.toStdString();
+    std::string entry = m_entry.toStdString();
     QPointer<SdfDocument> self(this);
-    QThreadPool::globalInstance()->start([self, generation, source = std::move(source), path = std::move(path)] {
+    QThreadPool::globalInstance()->start([self, generation, source = std::move(source), path = std::move(path), entry = std::move(entry)] {
         shaders::IncludeOptions options;
         options.libraryRoots = {paths::shaderLibraryRoot(), paths::datasetRoot()};
-        shaders::PreparedSdf prepared = shaders::prepareSdf(source, path.empty() ? "<editor>" : path, path, options);
+        shaders::PreparedSdf prepared = shaders::prepareSdf(source, path.empty() ? "<editor>" : path, path, options, entry);
         std::vector<shaders::Diagnostic> diagnostics = prepared.diagnostics;
         if (prepared.ok()) {
             auto composed = shaders::composeTracer(prepared, shaders::TracerFeatures{});
@@ -75,6 +76,7 @@ void SdfDocument::finishCheck(std::uint64_t generation, shaders::PreparedSdf pre
             emit diagnosticsChanged(m_diagnostics);
             return;
         }
+        m_signature = prepared.signature;
         emit sdfApplied();
     });
 }

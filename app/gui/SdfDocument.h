@@ -33,6 +33,12 @@ public:
     // Checks `text` now (still off the UI thread).
     void checkNow(const QString& text);
 
+    // The entry point asked for (empty: metadata `entry:`, sdf, or a conventional name); takes
+    // effect at the next check. `signature()` is what the last good check found.
+    void setEntry(const QString& entry) { m_entry = entry; }
+    const QString& entry() const { return m_entry; }
+    const shaders::SdfSignature& signature() const { return m_signature; }
+
     const std::vector<shaders::Diagnostic>& diagnostics() const { return m_diagnostics; }
     int debounceMilliseconds() const { return m_debounce.interval(); }
     // "name(type a, ...)" of the functions the last checked text defines (autocompletion).
@@ -53,6 +59,8 @@ private:
     widgets::ViewportWidget* m_viewport;
     QString m_path;
     QString m_pendingText;
+    QString m_entry;
+    shaders::SdfSignature m_signature;
     QTimer m_debounce;
     std::uint64_t m_generation = 0;
     std::vector<shaders::Diagnostic> m_diagnostics;

@@ -37,7 +37,7 @@ Expected<Metadata> parseMetadata(const std::string& text, const std::string& fil
     if (end == std::string::npos) return makeError(fileName + ":1: metadata block is not closed with `*/`");
 
     Metadata metadata;
-    bool seen[7] = {};
+    bool seen[8] = {};
     std::string* lastValue = nullptr;
     int lineNumber = 1 + int(std::count(text.begin(), text.begin() + long(start), '\n'));
     std::istringstream block(text.substr(start, end - start));
@@ -55,11 +55,11 @@ Expected<Metadata> parseMetadata(const std::string& text, const std::string& fil
         if (colon == std::string::npos) return makeError(where() + "expected `key: value`, got `" + trim(line) + "`");
         std::string key = lower(trim(line.substr(0, colon)));
         std::string value = trim(line.substr(colon + 1));
-        static const char* const keys[] = {"name", "category", "type", "animated", "author", "license", "notes"};
+        static const char* const keys[] = {"name", "category", "type", "animated", "author", "license", "notes", "entry"};
         int keyIndex = -1;
-        for (int i = 0; i < 7; ++i)
+        for (int i = 0; i < 8; ++i)
             if (key == keys[i]) keyIndex = i;
-        if (keyIndex < 0) return makeError(where() + "unknown metadata key '" + key + "' (name, category, type, animated, author, license, notes)");
+        if (keyIndex < 0) return makeError(where() + "unknown metadata key '" + key + "' (name, category, type, animated, author, license, notes, entry)");
         if (seen[keyIndex]) return makeError(where() + "metadata key '" + key + "' given twice");
         seen[keyIndex] = true;
         lastValue = nullptr;
@@ -79,6 +79,14 @@ Expected<Metadata> parseMetadata(const std::string& text, const std::string& fil
         case 4: metadata.author = value; lastValue = &metadata.author; break;
         case 5: metadata.license = value; lastValue = &metadata.license; break;
         case 6: metadata.notes = value; lastValue = &metadata.notes; break;
+        case 7: {
+            // The SDF's function when it is not sdf(); shaders::metadataEntry reads the same line.
+            bool identifier = !value.empty() && !std::isdigit(static_cast<unsigned char>(value[0]));
+            for (char c : value) identifier = identifier && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+            if (!identifier) return makeError(where() + "entry must be a GLSL function name, got '" + value + "'");
+            metadata.entry = value;
+            break;
+        }
         }
     }
     static const char* const required[] = {"name", "category", "type", "animated", "author", "license"};

@@ -159,3 +159,31 @@ def test_surface_tolerance_trades_accuracy_for_time():
     assert errors[1e-5] < errors[1e-2] / 100
     with pytest.raises(ValueError, match="surface-tolerance"):
         sdfwb.sample("sphere", "surface", 16, surface_tolerance=0.0)
+
+
+SHADERTOY = """
+#define EPS 0.001
+vec2 map(vec3 p) { return vec2(length(p) - 0.5, 1.0); }
+float snake(vec3 p) { return min(1.0, 1.9 * (length(p) - 0.5)); }
+vec3 calcNormal(vec3 p) { vec2 e = vec2(EPS, 0.0); return normalize(vec3(map(p + e.xyy).x - map(p - e.xyy).x, 0.0, 0.0)); }
+"""
+
+
+def test_foreign_code_entry_points_and_audit_flags():
+    found = sdfwb.sample(SHADERTOY, "rand", 1000, seed=3)  # map() by convention: its .x
+    expected = np.linalg.norm(found["position"], axis=1) - 0.5
+    assert np.allclose(found["distance"], expected, atol=1e-6)
+    snake = sdfwb.sample(SHADERTOY, "rand", 1000, seed=3, entry="snake")
+    assert np.allclose(snake["distance"], np.minimum(1.0, 1.9 * expected), atol=1e-5)
+    report = sdfwb.audit(SHADERTOY, samples=5000, entry="snake")
+    assert report["entry"] == "snake"
+    flags = {f["flag"]: f for f in report["flags"]}
+    assert set(flags) == {"non-conservative", "truncated"}
+    assert report["verdict"] == "truncated"
+    assert abs(flags["truncated"]["value"] - 1.0) < 1e-3
+    assert abs(flags["non-conservative"]["lipschitz"] - 1.9) < 0.02
+    assert 0 < len(flags["truncated"]["examples"]) <= 16
+    with pytest.raises(ValueError, match="entry point 'nothere' not found"):
+        sdfwb.audit(SHADERTOY, entry="nothere")
+    with pytest.raises(ValueError, match="probe_distance"):
+        sdfwb.audit(SHADERTOY, entry="snake", probe_distance=0.0)

@@ -66,6 +66,7 @@ struct SdfRenderer::Impl {
         features.ambientOcclusion = shading.ambientOcclusion;
         features.overRelaxation = trace.overRelaxation > 1.0f;
         features.statsOutput = shading.statsOutput;
+        features.markers = !shading.markers.empty();
         features.cuttingPlane = plane.enabled;
         features.planeClipsSurface = plane.enabled && plane.clipSurface;
         features.planeLipschitzOverlay = plane.enabled && plane.lipschitzOverlay;
@@ -251,6 +252,11 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
             glUniform3f(location, light.x, light.y, light.z);
         }
         if (GLint location = v->location("sdfwb_curvatureScale"); location >= 0) glUniform1f(location, m_shading.curvatureScale);
+        if (GLint location = v->location("sdfwb_markers"); location >= 0) {
+            const GLsizei count = GLsizei(std::min<std::size_t>(m_shading.markers.size(), 16));
+            if (count > 0) glUniform3fv(location, count, &m_shading.markers[0].x);
+            glUniform1i(v->location("sdfwb_markerCount"), count);
+        }
         if (GLint location = v->location("sdfwb_matcap"); location >= 0) {
             m_impl->ensureMatcap(m_shading.matcap);
             glActiveTexture(GL_TEXTURE0);

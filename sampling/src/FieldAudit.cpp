@@ -716,7 +716,7 @@ Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 n
         ++readout.points;
         if (!finiteRow(sets[1], i) || !finiteRow(sets[0], i)) {
             ++readout.nanCount;
-            if (nanPoints.size() < kMaxExamples) nanPoints.push_back(glm::vec3(p[0], p[1], p[2]));
+            nanPoints.push_back(glm::vec3(p[0], p[1], p[2]));
             continue;
         }
         float f = sets[1].distances[i];
@@ -742,14 +742,14 @@ Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 n
             if (difference > 1.5f * spacing * std::max(slope, 0.1f) + 1e-5f) {
                 ++readout.discontinuities;
                 jumps.push_back(difference - spacing * slope);
-                if (jumpPoints.size() < kMaxExamples) jumpPoints.push_back(0.5f * (pointAt(sets[2], i) + pointAt(sets[2], neighbour)));
+                jumpPoints.push_back(0.5f * (pointAt(sets[2], i) + pointAt(sets[2], neighbour)));
             }
         }
         if (f > 0.0f) {
             ++positive;
             if (coarse < 0.02f) {
                 flat.push_back(f);
-                if (flatPoints.size() < kMaxExamples) flatPoints.push_back(pointAt(sets[1], i));
+                flatPoints.push_back(pointAt(sets[1], i));
             }
         }
     }
@@ -765,7 +765,17 @@ Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 n
         if (plateau > 0.01f) readout.truncationDistance = plateau;  // as in the volume audit
     }
     readout.safeStepFactor = 1.0f / std::max(readout.lipschitzMax, 1.0f);
-    // The findings, as the volume audit's (most severe first).
+    // The findings, as the volume audit's (most severe first). Examples spread over the grid, not
+    // the first rows of it.
+    auto spread = [](std::vector<glm::vec3>& points) {
+        if (points.size() <= kMaxExamples) return;
+        std::vector<glm::vec3> chosen;
+        for (std::size_t k = 0; k < kMaxExamples; ++k) chosen.push_back(points[k * (points.size() - 1) / (kMaxExamples - 1)]);
+        points = std::move(chosen);
+    };
+    spread(nanPoints);
+    spread(jumpPoints);
+    spread(flatPoints);
     char text[256];
     if (readout.nanCount > 0) {
         AuditFlag flag{"nan", "", 0.0f, 0.0f, 0.0f, double(readout.nanCount) / double(std::max<std::uint64_t>(readout.points, 1)),

@@ -49,6 +49,10 @@ Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatu
         files.insert(files.end() - 1, "tracer/plane.glsl");
     }
     if (features.statsOutput) defines["SDFWB_OUTPUT_STATS"] = "1";
+    if (features.markers && !features.statsOutput) {
+        defines["SDFWB_MARKERS"] = "1";
+        files.insert(files.end() - 1, "tracer/markers.glsl");
+    }
     std::vector<ShaderPiece> pieces;
     for (const std::string& file : files) {
         auto piece = builtinPiece(file);

@@ -1,10 +1,10 @@
 // Fragment main of the sphere tracer: trace, then shade with the composed shading piece, which
-// defines vec3 sdfwb_shade(vec3 position, vec3 normal, vec3 direction, sdfwb_Hit hit).
+// defines vec3 sdfwb_shade(vec3 position, vec3 normal, vec3 direction, sdfwb_Hit hit); markers
+// (markers.glsl, SDFWB_MARKERS) are drawn over the result.
 
 out vec4 sdfwb_color;
 
-void main() {
-    vec3 direction = sdfwb_primaryRay(gl_FragCoord.xy);
+vec4 sdfwb_pixel(vec3 direction) {
     sdfwb_Hit hit = sdfwb_traceRay(sdfwb_cameraPosition, direction);
 #ifdef SDFWB_OUTPUT_STATS
     // Measurement output (float target): steps; the hit distance, or for a miss minus its kind
@@ -12,35 +12,35 @@ void main() {
     // normal (1 unless it went NaN).
     if (hit.found) {
         vec3 normal = sdfwb_normalAt(hit.position, hit.t, direction);
-        sdfwb_color = vec4(float(hit.steps), hit.t, abs(sdfwb_sdf(hit.position)), length(normal));
-    } else {
-        sdfwb_color = vec4(float(hit.steps), -float(hit.status), 0.0, 0.0);
+        return vec4(float(hit.steps), hit.t, abs(sdfwb_sdf(hit.position)), length(normal));
     }
-    return;
-#endif
+    return vec4(float(hit.steps), -float(hit.status), 0.0, 0.0);
+#else
 #ifdef SDFWB_SHADING_STEPS
     // The heat map shows the work of every pixel, misses included.
-    sdfwb_color = vec4(sdfwb_stepsColor(hit), 1.0);
-    return;
+    return vec4(sdfwb_stepsColor(hit), 1.0);
 #else
 #ifdef SDFWB_PLANE
     // The plane is opaque: it shows wherever it is nearer than the (possibly clipped) surface.
     float tPlane = sdfwb_intersectPlane(sdfwb_cameraPosition, direction);
     // Hits count a little before the true surface (the hit tolerance): give the plane that margin.
-    if (tPlane > 0.0 && (!hit.found || tPlane <= hit.t + 2.0 * sdfwb_epsilonScale * sdfwb_pixelAngle() * tPlane + 1e-5)) {
-        sdfwb_color = vec4(sdfwb_planeColor(sdfwb_cameraPosition + tPlane * direction), 1.0);
-        return;
-    }
+    if (tPlane > 0.0 && (!hit.found || tPlane <= hit.t + 2.0 * sdfwb_epsilonScale * sdfwb_pixelAngle() * tPlane + 1e-5))
+        return vec4(sdfwb_planeColor(sdfwb_cameraPosition + tPlane * direction), 1.0);
 #endif
-    if (!hit.found) {
-        sdfwb_color = vec4(sdfwb_background, 1.0);
-        return;
-    }
+    if (!hit.found) return vec4(sdfwb_background, 1.0);
     vec3 normal = sdfwb_normalAt(hit.position, hit.t, direction);
     vec3 color = sdfwb_shade(hit.position, normal, direction, hit);
 #ifdef SDFWB_AO
     color *= sdfwb_ambientOcclusion(hit.position, normal);
 #endif
-    sdfwb_color = vec4(color, 1.0);
+    return vec4(color, 1.0);
+#endif
+#endif
+}
+
+void main() {
+    sdfwb_color = sdfwb_pixel(sdfwb_primaryRay(gl_FragCoord.xy));
+#if defined(SDFWB_MARKERS) && !defined(SDFWB_OUTPUT_STATS)
+    sdfwb_color.rgb = sdfwb_drawMarkers(sdfwb_color.rgb);
 #endif
 }

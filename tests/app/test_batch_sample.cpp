@@ -17,7 +17,6 @@
 #include <unistd.h>
 
 #include <csignal>
-#include <fstream>
 #include <iterator>
 
 #include <sys/resource.h>
@@ -305,4 +304,49 @@ TEST(BatchAnimate, WritesAnH264Mp4WithTheRightFrames) {
     EXPECT_EQ(wrongType.exitCode, 2);
     EXPECT_NE(wrongType.output.find(".mp4"), std::string::npos) << wrongType.output;
     EXPECT_FALSE(fs::exists(scratch("clip.avi")));
+}
+
+// Issue 14: foreign code through every batch command, --entry, and the audit's flags in JSON and text.
+TEST(BatchForeign, EntryOnEveryCommandAndFlagsInTheReports) {
+    const fs::path folder = fs::temp_directory_path() / "sdfwb-batch-sample-test";
+    fs::create_directories(folder);
+    const fs::path shadertoy = folder / "toy.glsl";
+    std::ofstream(shadertoy) << "#define EPS 0.001\nfloat hash(float n) { return fract(sin(n) * 43758.5453); }\n"
+                                "vec2 map(vec3 p) { return vec2(length(p) - 0.5, 1.0); }\n"
+                                "float shape(vec3 p, float t) { return min(1.0, 1.9 * (length(p) - 0.4 - 0.05 * sin(t))); }\n";
+    // map() is found by convention; --entry picks another function on every command.
+    fs::path out = scratch("toy.npz");
+    Result r = run("--batch sample --sdf " + shadertoy.string() + " --pattern near -n 2000 --output " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    r = run("--batch sample --sdf " + shadertoy.string() + " --entry shape --time 1 --pattern rand -n 100 --output " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    r = run("--batch render --sdf " + shadertoy.string() + " --entry shape --size 64x48 --output " + scratch("toy.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    r = run("--batch animate --sdf " + shadertoy.string() + " --entry shape --size 64x48 --seconds 0.2 --fps 10 --output " +
+            scratch("toy.mp4").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    r = run("--batch audit --sdf " + shadertoy.string() + " --entry shape --samples 5000 --json --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const std::size_t json = r.output.find('{');
+    ASSERT_NE(json, std::string::npos) << r.output;
+    const std::string report = r.output.substr(json);
+    EXPECT_NE(report.find("\"verdict\": \"truncated\""), std::string::npos) << report;
+    EXPECT_NE(report.find("\"flag\": \"non-conservative\""), std::string::npos) << report;
+    EXPECT_NE(report.find("\"flag\": \"truncated\""), std::string::npos) << report;
+    EXPECT_NE(report.find("\"entry\": \"shape\""), std::string::npos) << report;
+    r = run("--batch audit --sdf " + shadertoy.string() + " --entry shape --samples 5000");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("  truncated          the field stops growing at 1"), std::string::npos) << r.output;
+    // Bad entries: named, exit 2 (usage) before any work; a missing one: the file's diagnostic, exit non-zero.
+    for (const char* entry : {"main", "sdfwb_sdf", "9lives", "a.b"}) {
+        r = run("--batch sample --sdf " + shadertoy.string() + " --entry " + entry + " --pattern rand -n 10 --output " + out.string());
+        EXPECT_EQ(r.exitCode, 2) << entry << "\n" << r.output;
+        EXPECT_NE(r.output.find("--entry"), std::string::npos) << r.output;
+    }
+    r = run("--batch audit --sdf " + shadertoy.string() + " --entry nothere");
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.output.find("entry point 'nothere' not found"), std::string::npos) << r.output;
+    r = run("--batch audit --sdf " + shadertoy.string() + " --probe-distance 0");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("--probe-distance"), std::string::npos) << r.output;
 }

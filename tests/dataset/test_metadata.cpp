@@ -81,3 +81,13 @@ TEST(Catalogue, SdfArgumentErrorsSayWhatWasMissing) {
     ASSERT_TRUE(byName.hasValue());
     EXPECT_EQ(byName->filename(), "Sphere.glsl");
 }
+
+TEST(Metadata, EntryNamesTheSdfFunction) {
+    const std::string head = "/* sdfwb\nname: N\ncategory: C\ntype: exact\nanimated: no\nauthor: a\nlicense: l\n";
+    auto parsed = sdfwb::dataset::parseMetadata(head + "entry: map\n*/\n", "e.glsl");
+    ASSERT_TRUE(parsed.hasValue()) << parsed.error().message;
+    EXPECT_EQ(parsed->entry, "map");
+    auto bad = sdfwb::dataset::parseMetadata(head + "entry: not a name\n*/\n", "e.glsl");
+    ASSERT_FALSE(bad.hasValue());
+    EXPECT_NE(bad.error().message.find("e.glsl:8: entry must be a GLSL function name"), std::string::npos) << bad.error().message;
+}

@@ -153,7 +153,9 @@ TEST_P(ForeignCode, OpensRendersSamplesAndGetsItsFlags) {
     for (float d : distances)
         if (std::isfinite(d)) finite.push_back(std::abs(d));
     const bool hasNan = std::count(expected.flags.begin(), expected.flags.end(), "nan") != 0;
-    if (!hasNan) EXPECT_LT(double(report->badRows), 0.05 * double(job.count)) << "near: rows without a surface";
+    if (!hasNan) {
+        EXPECT_LT(double(report->badRows), 0.05 * double(job.count)) << "near: rows without a surface";
+    }
     ASSERT_FALSE(finite.empty());
     std::nth_element(finite.begin(), finite.begin() + long(finite.size() / 2), finite.end());
     EXPECT_LT(finite[finite.size() / 2], 0.05f) << "near samples are not near the surface";
@@ -169,7 +171,9 @@ TEST_P(ForeignCode, OpensRendersSamplesAndGetsItsFlags) {
     for (const auto& f : audit->flags) flags.push_back(f.name);
     std::sort(flags.begin(), flags.end());
     EXPECT_EQ(flags, expected.flags) << GetParam() << ": " << audit->verdict << ": " << audit->reason;
-    if (!expected.flags.empty()) EXPECT_EQ(audit->verdict, audit->flags.front().name);
+    if (!expected.flags.empty()) {
+        EXPECT_EQ(audit->verdict, audit->flags.front().name);
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, ForeignCode, ::testing::ValuesIn(corpusFiles()), [](const auto& info) {

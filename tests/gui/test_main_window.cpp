@@ -39,6 +39,9 @@
 #include <QFileInfo>
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QComboBox>
+#include <QKeyEvent>
+#include <QLineEdit>
 #include <QMouseEvent>
 #include <QPushButton>
 #include <QImage>
@@ -47,6 +50,8 @@
 #include <QThread>
 
 #include <functional>
+
+#include <glm/geometric.hpp>
 
 using namespace sdfwb;
 
@@ -547,6 +552,90 @@ TEST(CuttingPlane, PanelDrawsThePlaneAndShowsReadouts) {
     window.planePanel()->findChild<QPushButton*>("apply_step_factor")->click();
     EXPECT_NEAR(viewport->trace().stepFactor, r.safeStepFactor, 1e-6f);
     window.grab().save(QDir::temp().filePath("sdfwb-gui-plane-window.png"));
+}
+
+// Issue 14: foreign code in the workbench: a Shadertoy map() opens as it is, the entry field picks
+// another function, and "show where" rings the audit's example points and moves the plane there.
+TEST(ForeignCode, EntryFieldAndShowWhere) {
+    QDir folder(QDir::temp().filePath("sdfwb-gui-foreign"));
+    folder.mkpath(".");
+    const QString file = folder.filePath("toy.glsl");
+    {
+        QFile out(file);
+        ASSERT_TRUE(out.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        out.write("// Shadertoy style: map() with a material id; the ball jumps by 0.2 across x = 0.2\n"
+                  "#define PI 3.14159265\n"
+                  "mat2 rot(float a) { return mat2(cos(a), -sin(a), sin(a), cos(a)); }\n"
+                  "vec2 map(vec3 p) { return vec2(length(p) - 0.5 + (p.x > 0.2 ? 0.2 : 0.0), 1.0); }\n"
+                  "// the paper's snake in small: steeper than a distance, capped at 0.25\n"
+                  "float snake(vec3 p) { p.xz *= rot(PI / 8.0); return min(0.25, 1.9 * (length(vec3(p.x, p.y * 1.6, p.z)) - 0.45)); }\n");
+    }
+    app::MainWindow window;
+    window.resize(1400, 800);
+    window.show();
+    bool applied = false;
+    QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
+    ASSERT_TRUE(window.openFile(file));
+    ASSERT_TRUE(waitFor([&] { return applied; })) << "map() was not taken as the entry point";
+    EXPECT_EQ(window.document()->signature().entry, "map");
+    auto* entry = window.findChild<QLineEdit*>("entry");
+    ASSERT_TRUE(entry);
+    EXPECT_TRUE(entry->placeholderText().contains("map")) << entry->placeholderText().toStdString();
+    window.plane()->setExecutable(SDFWB_BINARY);
+    int readouts = 0;
+    QObject::connect(window.plane(), &app::PlaneController::readoutUpdated, [&] { ++readouts; });
+    auto findingsNamed = [&](const char* name) {
+        for (const auto& f : window.planePanel()->readout().findings)
+            if (f.name == name) return true;
+        return false;
+    };
+    window.planePanel()->findChild<QPushButton*>("axis_Z")->click();
+    ASSERT_TRUE(waitFor([&] { return readouts > 0 && findingsNamed("discontinuous"); }, 30000))
+        << window.planePanel()->findChild<QLabel*>("readouts")->text().toStdString();
+    auto* findings = window.planePanel()->findChild<QComboBox*>("findings");
+    auto* showWhere = window.planePanel()->findChild<QPushButton*>("show_where");
+    ASSERT_TRUE(findings && showWhere && showWhere->isEnabled());
+    findings->setCurrentIndex(findings->findText("discontinuous"));
+    auto showAndCheck = [&](const char* name, const char* screenshot) {
+        std::vector<glm::vec3> examples;
+        for (const auto& f : window.planePanel()->readout().findings)
+            if (f.name == name) examples = f.examples;
+        ASSERT_FALSE(examples.empty());
+        const QImage before = window.viewport()->grabFramebuffer();
+        const int seen = readouts;
+        showWhere->click();
+        EXPECT_EQ(window.viewport()->shading().markers, examples);
+        const renderer::CuttingPlane plane = window.viewport()->plane();
+        EXPECT_NEAR(glm::dot(glm::normalize(plane.normal), examples.front()), plane.offset, 1e-4f) << "the plane goes through the first point";
+        EXPECT_NEAR(window.planePanel()->plane().offset, plane.offset, 1e-3f);
+        EXPECT_GT(meanDifference(before, window.viewport()->grabFramebuffer()), 0.05) << "the rings show";
+        ASSERT_TRUE(waitFor([&] { return readouts > seen; }, 30000)) << "readouts for the moved plane";
+        if (auto* dock = qobject_cast<QDockWidget*>(window.planePanel()->parentWidget())) dock->raise();
+        if (const char* folder = std::getenv("SDFWB_SCREENSHOT_DIR")) window.grab().save(QDir(folder).filePath(screenshot));
+    };
+    showAndCheck("discontinuous", "foreign_discontinuity.png");
+    for (const auto& e : window.viewport()->shading().markers) EXPECT_NEAR(e.x, 0.2f, 0.03f) << "on the jump";
+
+    // The entry field: typed, Return; the viewport and the readouts follow the new function.
+    applied = false;
+    entry->setFocus();
+    for (QChar c : QString("snake")) {
+        QKeyEvent press(QEvent::KeyPress, 0, Qt::NoModifier, QString(c));
+        QApplication::sendEvent(entry, &press);
+    }
+    QKeyEvent enter(QEvent::KeyPress, Qt::Key_Return, Qt::NoModifier);
+    QApplication::sendEvent(entry, &enter);
+    EXPECT_EQ(entry->text(), "snake");
+    ASSERT_TRUE(waitFor([&] { return applied; }));
+    EXPECT_EQ(window.document()->signature().entry, "snake");
+    renderer::CuttingPlane throughOrigin = window.viewport()->plane();
+    throughOrigin.offset = 0.0f;
+    window.planePanel()->setPlane(throughOrigin);
+    window.planePanel()->findChild<QPushButton*>("axis_Z")->click();  // emits the panel's plane: z = 0
+    ASSERT_TRUE(waitFor([&] { return findingsNamed("truncated") && findingsNamed("non-conservative"); }, 30000))
+        << window.planePanel()->findChild<QLabel*>("readouts")->text().toStdString();
+    findings->setCurrentIndex(findings->findText("truncated"));
+    showAndCheck("truncated", "foreign_truncated.png");
 }
 
 namespace {

@@ -138,3 +138,75 @@ TEST(BuiltinShaders, UnknownNameIsAnError) {
     ASSERT_FALSE(missing.hasValue());
     EXPECT_NE(missing.error().message.find("no/such.frag"), std::string::npos);
 }
+
+// Issue 14, point 2: any entry point.
+TEST(EntryPoint, ShadertoyMapWithMaterialIsFoundAndItsDistanceUsed) {
+    PreparedSdf sdf = prepare("#define PI 3.14159\n#define normal(p) calcNormal(p)\n"
+                              "vec2 map(vec3 p) { return vec2(length(p) - 0.5, 1.0); }\n"
+                              "vec3 calcNormal(vec3 p) { return normalize(p); }\n");
+    ASSERT_TRUE(sdf.ok()) << sdf.diagnostics.front().message;
+    EXPECT_EQ(sdf.signature.entry, "map");
+    EXPECT_EQ(sdf.signature.returnType, "vec2");
+    EXPECT_EQ(sdf.entrySource, EntrySource::Convention);
+    EXPECT_EQ(sdf.macros, (std::vector<std::string>{"PI", "normal"}));
+    const std::string wrapper = entryWrapper(sdf);
+    EXPECT_NE(wrapper.find("float sdfwb_sdf(vec3 p) { return map(p).x; }"), std::string::npos) << wrapper;
+    EXPECT_NE(wrapper.find("#undef PI\n#undef normal\n"), std::string::npos) << wrapper;
+    // With the macros gone, the tracer's own code (a local `normal`, ...) compiles after them.
+    for (ShadingMode mode : {ShadingMode::Normals, ShadingMode::Gooch, ShadingMode::Curvature}) {
+        TracerFeatures features;
+        features.shading = mode;
+        features.ambientOcclusion = true;
+        auto composed = composeTracer(sdf, features);
+        ASSERT_TRUE(composed.hasValue());
+        auto diagnostics = checkWithGlslang(*composed);
+        EXPECT_FALSE(hasErrors(diagnostics)) << (diagnostics.empty() ? "" : diagnostics.front().message);
+    }
+}
+
+TEST(EntryPoint, RequestedMetadataAndTimeDependentEntries) {
+    // Requested by name, with time: animated, the wrapper passes sdfwb_time.
+    PreparedSdf timed = prepareSdf("float shape(in vec3 q, float t) { return length(q) - 0.4 - 0.1 * sin(t); }\n", "<test>", {}, {}, "shape");
+    ASSERT_TRUE(timed.ok());
+    EXPECT_TRUE(timed.signature.animated);
+    EXPECT_TRUE(timed.usesTime());
+    EXPECT_EQ(timed.entrySource, EntrySource::Requested);
+    EXPECT_NE(entryWrapper(timed).find("shape(p, sdfwb_time)"), std::string::npos);
+    auto composed = composeTracer(timed, TracerFeatures{});
+    ASSERT_TRUE(composed.hasValue());
+    EXPECT_NE(composed->text.find("uniform float sdfwb_time;"), std::string::npos);
+    EXPECT_FALSE(hasErrors(checkWithGlslang(*composed)));
+
+    // From the metadata block; it wins over a plain sdf() in the same file.
+    PreparedSdf fromMetadata = prepare("/* sdfwb\nname: Two\ncategory: Misc\ntype: exact\nanimated: no\nauthor: a\nlicense: CC0-1.0\n"
+                                       "entry: scene\n*/\nvec4 scene(vec3 p) { return vec4(length(p) - 0.5); }\n"
+                                       "float sdf(vec3 p) { return 1.0; }\n");
+    ASSERT_TRUE(fromMetadata.ok());
+    EXPECT_EQ(fromMetadata.signature.entry, "scene");
+    EXPECT_EQ(fromMetadata.signature.returnType, "vec4");
+    EXPECT_EQ(fromMetadata.entrySource, EntrySource::Metadata);
+
+    // Shadertoy's undeclared iTime makes a file time-dependent; a declared one does not.
+    PreparedSdf shadertoy = prepare("float map(vec3 p) { return length(p) - 0.5 + 0.1 * sin(iTime); }\n");
+    ASSERT_TRUE(shadertoy.ok());
+    EXPECT_TRUE(shadertoy.usesTime());
+    EXPECT_FALSE(shadertoy.signature.animated);
+    EXPECT_FALSE(prepare("uniform float iTime;\nfloat map(vec3 p) { return length(p) - 0.5 + 0.1 * sin(iTime); }\n").usesTime());
+}
+
+TEST(EntryPoint, MissingWrongAndReservedEntriesAreNamed) {
+    PreparedSdf missing = prepareSdf("float map(vec3 p) { return length(p); }\n", "<test>", {}, {}, "shape");
+    ASSERT_FALSE(missing.ok());
+    EXPECT_NE(missing.diagnostics.back().message.find("entry point 'shape' not found"), std::string::npos) << missing.diagnostics.back().message;
+    PreparedSdf wrongType = prepareSdf("float shape(vec2 p) { return length(p); }\n", "<test>", {}, {}, "shape");
+    ASSERT_FALSE(wrongType.ok());
+    EXPECT_EQ(wrongType.diagnostics.back().line, 1);
+    EXPECT_NE(wrongType.diagnostics.back().message.find("found `float shape(vec2 p)`"), std::string::npos);
+    for (const char* reserved : {"main", "sdfwb_sdf", "SDFWB_x", "gl_Position", "1abc", "a-b"}) {
+        PreparedSdf refused = prepareSdf("float sdf(vec3 p) { return length(p); }\n", "<test>", {}, {}, reserved);
+        EXPECT_FALSE(refused.ok()) << reserved;
+    }
+    PreparedSdf none = prepare("float shape(vec3 p) { return length(p); }\n");
+    ASSERT_FALSE(none.ok());
+    EXPECT_NE(none.diagnostics.back().message.find("--entry"), std::string::npos) << "the message says how to name the entry";
+}

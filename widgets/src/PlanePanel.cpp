@@ -1,6 +1,7 @@
 #include <widgets/PlanePanel.h>
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -121,6 +122,23 @@ PlanePanel::PlanePanel(QWidget* parent) : QWidget(parent) {
     m_readoutText->setWordWrap(true);
     m_readoutText->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addWidget(m_readoutText);
+    {
+        auto* row = new QHBoxLayout;
+        m_findings = new QComboBox;
+        m_findings->setObjectName("findings");
+        m_findings->setEnabled(false);
+        m_showWhere = new QPushButton(tr("Show where"));
+        m_showWhere->setObjectName("show_where");
+        m_showWhere->setToolTip(tr("Ring the finding's example points in the viewport and move the plane through the first"));
+        m_showWhere->setEnabled(false);
+        row->addWidget(m_findings, 1);
+        row->addWidget(m_showWhere);
+        layout->addLayout(row);
+        connect(m_showWhere, &QPushButton::clicked, this, [this] {
+            const int index = m_findings->currentIndex();
+            if (index >= 0 && std::size_t(index) < m_readout.findings.size()) emit showWhere(m_readout.findings[std::size_t(index)].examples);
+        });
+    }
     m_histogram = new HistogramView;
     layout->addWidget(m_histogram);
     m_apply = new QPushButton(tr("Apply the safe step factor to the tracer"));
@@ -160,6 +178,18 @@ renderer::CuttingPlane PlanePanel::plane() const {
     return plane;
 }
 
+namespace {
+
+// Every finding with its evidence, most severe first; "no findings" when there are none.
+QString findingsHtml(const std::vector<FindingView>& findings) {
+    if (findings.empty()) return QObject::tr("<p>No findings: no NaN/Inf, jump, plateau or |grad f| &gt; 1.05 on the plane.</p>");
+    QString html = "<p>";
+    for (const FindingView& finding : findings) html += "<b>" + finding.name.toHtmlEscaped() + "</b>: " + finding.evidence.toHtmlEscaped() + "<br>";
+    return html + "</p>";
+}
+
+} // namespace
+
 void PlanePanel::setReadout(const PlaneReadoutView& r) {
     m_readout = r;
     QString truncation = r.truncationDistance ? QString::number(*r.truncationDistance, 'g', 4) : tr("none");
@@ -171,7 +201,7 @@ void PlanePanel::setReadout(const PlaneReadoutView& r) {
                               "<tr><td>discontinuities</td><td>%7</td></tr>"
                               "<tr><td>NaN / Inf</td><td>%8 of %9 points</td></tr>"
                               "<tr><td>safe step factor 1/L</td><td>%10</td></tr>"
-                              "</table><small>%11 s</small>")
+                              "</table>%12<small>%11 s</small>")
                                .arg(r.minimum, 0, 'g', 4)
                                .arg(r.maximum, 0, 'g', 4)
                                .arg(r.lipschitzMax, 0, 'g', 4)
@@ -182,7 +212,12 @@ void PlanePanel::setReadout(const PlaneReadoutView& r) {
                                .arg(r.nanCount)
                                .arg(r.points)
                                .arg(r.safeStepFactor, 0, 'g', 4)
-                               .arg(r.seconds, 0, 'f', 2));
+                               .arg(r.seconds, 0, 'f', 2)
+                               .arg(findingsHtml(r.findings)));
+    m_findings->clear();
+    for (const FindingView& finding : r.findings) m_findings->addItem(finding.name);
+    m_findings->setEnabled(!r.findings.empty());
+    m_showWhere->setEnabled(!r.findings.empty());
     m_histogram->setBins(r.histogram);
     m_apply->setEnabled(true);
 }

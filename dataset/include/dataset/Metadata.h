@@ -9,6 +9,7 @@
 //   author: sdfwb authors
 //   license: CC0-1.0
 //   notes: free text; lines indented by two spaces continue the value
+//   entry: map             (optional: the SDF's function when it is not sdf)
 //   */
 //
 // One parser, used by the dataset browser, the CLI and the reports.
@@ -29,6 +30,7 @@ struct Metadata {
     std::string author;
     std::string license;
     std::string notes;
+    std::string entry;  // empty: sdf (or a conventional name; see shaders::SdfSignature)
 };
 
 // Parses the leading `/* sdfwb ... */` block of `text`. `fileName` names the file in errors,

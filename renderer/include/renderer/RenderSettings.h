@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 
 #include <string>
+#include <vector>
 
 namespace sdfwb::renderer {
 
@@ -30,6 +31,7 @@ struct ShadingSettings {
     float curvatureScale = 5.0f;                   // |mean curvature| drawn full red
     std::string matcap = "clay";                   // name in resources/matcaps or a path to an image
     bool statsOutput = false;                      // write (steps, t, |f(hit)|) per pixel: see OffscreenRenderer::renderStats
+    std::vector<glm::vec3> markers;                // points ringed over the picture (at most 16; "show where")
 };
 
 // The cutting plane dot(normal, p) = offset and how it is drawn.

@@ -6,6 +6,7 @@
 
 #include <renderer/RenderSettings.h>
 
+#include <QString>
 #include <QWidget>
 
 #include <cstdint>
@@ -13,6 +14,7 @@
 #include <vector>
 
 class QCheckBox;
+class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
@@ -22,6 +24,13 @@ namespace sdfwb::widgets {
 
 class HistogramView;
 
+// One of the audit's findings on the plane (non-conservative, truncated, discontinuous, nan).
+struct FindingView {
+    QString name;
+    QString evidence;
+    std::vector<glm::vec3> examples;  // where it holds (at most 16 points)
+};
+
 struct PlaneReadoutView {
     float minimum = 0, maximum = 0, lipschitzMax = 0, lipschitz99 = 0;
     double shareAboveOne = 0;
@@ -29,6 +38,7 @@ struct PlaneReadoutView {
     std::uint64_t discontinuities = 0, nanCount = 0, points = 0;
     std::vector<std::uint64_t> histogram;
     float safeStepFactor = 1;
+    std::vector<FindingView> findings;  // most severe first
     double seconds = 0;
 };
 
@@ -45,6 +55,8 @@ public:
 signals:
     void planeEdited(const sdfwb::renderer::CuttingPlane& plane);
     void applyStepFactor(float factor);
+    // "Show where": the example points of the finding chosen in the list.
+    void showWhere(const std::vector<glm::vec3>& examples);
 
 private:
     void emitEdited();
@@ -59,6 +71,8 @@ private:
     QLabel* m_readoutText = nullptr;
     HistogramView* m_histogram = nullptr;
     QPushButton* m_apply = nullptr;
+    QComboBox* m_findings = nullptr;
+    QPushButton* m_showWhere = nullptr;
     bool m_updating = false;
     PlaneReadoutView m_readout;
 };
