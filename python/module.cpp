@@ -190,16 +190,7 @@ py::list flagsList(const std::vector<sampling::AuditFlag>& flags) {
         py::list examples;
         for (const glm::vec3& e : f.examples) examples.append(py::make_tuple(e.x, e.y, e.z));
         item["examples"] = examples;
-        if (f.name == "truncated") {
-            item["value"] = f.value;
-            item["start"] = f.start;
-        } else if (f.name == "discontinuous") {
-            item["jump"] = f.value;
-            item["jump_max"] = f.maximum;
-        } else if (f.name == "non-conservative") {
-            item["lipschitz"] = f.value;
-            item["lipschitz_max"] = f.maximum;
-        }
+        for (const auto& [name, value] : sampling::namedFigures(f)) item[name] = value;
         list.append(item);
     }
     return list;

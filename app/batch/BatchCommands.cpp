@@ -425,16 +425,7 @@ int runAudit(const AuditCommand& command, const OutputOptions& output) {
             nlohmann::json examples = nlohmann::json::array();
             for (const glm::vec3& e : f.examples) examples.push_back({e.x, e.y, e.z});
             nlohmann::json item = {{"flag", f.name}, {"evidence", f.evidence}, {"share", f.share}, {"count", f.count}, {"examples", examples}};
-            if (f.name == "truncated") {
-                item["value"] = f.value;
-                item["start"] = f.start;
-            } else if (f.name == "discontinuous") {
-                item["jump"] = f.value;
-                item["jump_max"] = f.maximum;
-            } else if (f.name == "non-conservative") {
-                item["lipschitz"] = f.value;
-                item["lipschitz_max"] = f.maximum;
-            }
+            for (const auto& [name, value] : sampling::namedFigures(f)) item[name] = value;
             list.push_back(std::move(item));
         }
         return list;

@@ -646,6 +646,13 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
 
 } // namespace
 
+std::vector<std::pair<const char*, float>> namedFigures(const AuditFlag& flag) {
+    if (flag.name == "truncated") return {{"value", flag.value}, {"start", flag.start}};
+    if (flag.name == "discontinuous") return {{"jump", flag.value}, {"jump_max", flag.maximum}};
+    if (flag.name == "non-conservative") return {{"lipschitz", flag.value}, {"lipschitz_max", flag.maximum}};
+    return {};
+}
+
 const AuditFlag* findFlag(const std::vector<AuditFlag>& flags, const std::string& name) {
     for (const AuditFlag& flag : flags)
         if (flag.name == name) return &flag;

@@ -112,9 +112,8 @@ const std::vector<std::string>& conventionalEntries() {
     return names;
 }
 
-std::vector<std::string> definedMacros(const std::string& stripped) {
-    std::vector<std::string> names;
-    std::set<std::string, std::less<>> seen;
+std::vector<MacroDirective> macroDirectives(const std::string& stripped) {
+    std::vector<MacroDirective> found;
     for (std::size_t lineStart = 0; lineStart < stripped.size();) {
         std::size_t lineEnd = stripped.find('\n', lineStart);
         if (lineEnd == std::string::npos) lineEnd = stripped.size();
@@ -123,17 +122,28 @@ std::vector<std::string> definedMacros(const std::string& stripped) {
         if (i < lineEnd && stripped[i] == '#') {
             ++i;
             while (i < lineEnd && (stripped[i] == ' ' || stripped[i] == '\t')) ++i;
-            if (stripped.compare(i, 6, "define") == 0 && i + 6 < lineEnd && (stripped[i + 6] == ' ' || stripped[i + 6] == '\t')) {
-                std::size_t name = i + 6;
+            std::size_t wordEnd = i;
+            while (wordEnd < lineEnd && isWordCharacter(stripped[wordEnd])) ++wordEnd;
+            const std::string_view directive(stripped.data() + i, wordEnd - i);
+            if (directive == "define" || directive == "undef") {
+                std::size_t name = wordEnd;
                 while (name < lineEnd && (stripped[name] == ' ' || stripped[name] == '\t')) ++name;
                 std::size_t nameEnd = name;
                 while (nameEnd < lineEnd && isWordCharacter(stripped[nameEnd])) ++nameEnd;
                 std::string word = stripped.substr(name, nameEnd - name);
-                if (isIdentifier(word) && seen.insert(word).second) names.push_back(std::move(word));
+                if (name > wordEnd && isIdentifier(word)) found.push_back({std::move(word), name, directive == "undef"});
             }
         }
         lineStart = lineEnd + 1;
     }
+    return found;
+}
+
+std::vector<std::string> definedMacros(const std::string& stripped) {
+    std::vector<std::string> names;
+    std::set<std::string, std::less<>> seen;
+    for (MacroDirective& d : macroDirectives(stripped))
+        if (!d.undefine && seen.insert(d.name).second) names.push_back(std::move(d.name));
     return names;
 }
 

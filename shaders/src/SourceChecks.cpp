@@ -122,28 +122,8 @@ bool isStatementKeyword(const std::string& word) {
 // qualifier, `struct` or `]` (a declaration), or as the name of a #define / #undef.
 std::vector<std::size_t> reservedDefinitions(const std::string& stripped) {
     std::vector<std::size_t> found;
-    // Macros: "# define NAME" at the start of a line.
-    for (std::size_t lineStart = 0; lineStart < stripped.size();) {
-        std::size_t lineEnd = stripped.find('\n', lineStart);
-        if (lineEnd == std::string::npos) lineEnd = stripped.size();
-        std::size_t i = lineStart;
-        while (i < lineEnd && (stripped[i] == ' ' || stripped[i] == '\t')) ++i;
-        if (i < lineEnd && stripped[i] == '#') {
-            ++i;
-            while (i < lineEnd && (stripped[i] == ' ' || stripped[i] == '\t')) ++i;
-            std::size_t wordEnd = i;
-            while (wordEnd < lineEnd && isWord(stripped[wordEnd])) ++wordEnd;
-            const std::string_view directive(stripped.data() + i, wordEnd - i);
-            if (directive == "define" || directive == "undef") {
-                std::size_t name = wordEnd;
-                while (name < lineEnd && (stripped[name] == ' ' || stripped[name] == '\t')) ++name;
-                std::size_t nameEnd = name;
-                while (nameEnd < lineEnd && isWord(stripped[nameEnd])) ++nameEnd;
-                if (hasReservedPrefix(std::string_view(stripped.data() + name, nameEnd - name))) found.push_back(name);
-            }
-        }
-        lineStart = lineEnd + 1;
-    }
+    for (const MacroDirective& d : macroDirectives(stripped))
+        if (hasReservedPrefix(d.name)) found.push_back(d.offset);
     const std::vector<Token> tokens = tokenize(stripped);
     for (std::size_t i = 1; i < tokens.size(); ++i) {
         if (!hasReservedPrefix(tokens[i].text)) continue;

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <regex>
 #include <set>
 
 using namespace sdfwb::shaders;
@@ -117,11 +118,13 @@ TEST(BuiltinShaders, EveryEmbeddedFileCompilesWithGlslangInItsStage) {
         features.cuttingPlane = true;
         features.planeClipsSurface = true;
         features.planeLipschitzOverlay = true;
+        features.markers = true;
         auto composed = composeTracer(sdf, features);
         ASSERT_TRUE(composed.hasValue());
         auto diagnostics = checkWithGlslang(*composed);
         EXPECT_FALSE(hasErrors(diagnostics)) << mode << ": " << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
-        for (const char* file : {"tracer/trace_core.glsl", "tracer/ao.glsl", "tracer/plane.glsl", "tracer/trace_main.frag"}) covered.insert(file);
+        for (const char* file : {"tracer/trace_core.glsl", "tracer/ao.glsl", "tracer/plane.glsl", "tracer/markers.glsl", "tracer/trace_main.frag"})
+            covered.insert(file);
         covered.insert(std::string("tracer/shading_") + mode + ".glsl");
     }
     for (const std::string& path : builtinShaderPaths())
@@ -209,4 +212,32 @@ TEST(EntryPoint, MissingWrongAndReservedEntriesAreNamed) {
     PreparedSdf none = prepare("float shape(vec3 p) { return length(p); }\n");
     ASSERT_FALSE(none.ok());
     EXPECT_NE(none.diagnostics.back().message.find("--entry"), std::string::npos) << "the message says how to name the entry";
+}
+
+// Issue 14, point 1: every name the workbench's own GLSL declares at file scope carries the
+// reserved prefix, so no user name can clash with it. (The compat prelude declares the G3D
+// dialect's names on purpose, and only those a file uses without defining; samplers define
+// samplePosition, which common.glsl renames to sdfwb_samplePosition.)
+TEST(BuiltinShaders, EveryNameTheWorkbenchDeclaresIsPrefixed) {
+    const std::regex declaration(
+        R"((?:^|\n)(?:#\s*define\s+(\w+)|(?:uniform|const|out|in)\s+\w+\s+(\w+)|struct\s+(\w+)|(?:\w+)\s+(\w+)\s*\([^)]*\)\s*\{))");
+    const std::regex buffer(R"(buffer\s+(\w+)\s*\{\s*\w+\s+(\w+)\s*\[)");
+    int names = 0;
+    for (const std::string& path : builtinShaderPaths()) {
+        if (path.rfind("prelude/", 0) == 0) continue;
+        const std::string text = stripComments(*builtinShader(path));
+        auto checkName = [&](const std::string& name) {
+            ++names;
+            if (name == "main" || name == "samplePosition") return;
+            EXPECT_TRUE(name.rfind("sdfwb_", 0) == 0 || name.rfind("SDFWB_", 0) == 0) << path << ": '" << name << "'";
+        };
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), declaration); it != std::sregex_iterator(); ++it)
+            for (int group = 1; group <= 4; ++group)
+                if ((*it)[group].matched) checkName((*it)[group].str());
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), buffer); it != std::sregex_iterator(); ++it) {
+            checkName((*it)[1].str());
+            checkName((*it)[2].str());
+        }
+    }
+    EXPECT_GT(names, 80) << "the pattern stopped finding declarations";
 }

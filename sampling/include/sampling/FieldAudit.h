@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sdfwb::sampling {
@@ -43,6 +44,10 @@ struct AuditFlag {
 };
 
 inline constexpr std::size_t kMaxExamples = 16;
+
+// The figures particular to a flag's kind, by the names reports use: truncated: value, start;
+// discontinuous: jump, jump_max; non-conservative: lipschitz, lipschitz_max; nan: none.
+std::vector<std::pair<const char*, float>> namedFigures(const AuditFlag& flag);
 
 // The flag named `name`, or null.
 const AuditFlag* findFlag(const std::vector<AuditFlag>& flags, const std::string& name);

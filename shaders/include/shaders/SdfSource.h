@@ -59,6 +59,14 @@ std::string metadataEntry(const std::string& text);
 // The conventional entry names tried, in order, when a file defines no sdf() and names none.
 const std::vector<std::string>& conventionalEntries();
 
+// Every `#define NAME` and `#undef NAME` of `strippedText`: the name and its byte offset.
+struct MacroDirective {
+    std::string name;
+    std::size_t offset = 0;
+    bool undefine = false;
+};
+std::vector<MacroDirective> macroDirectives(const std::string& strippedText);
+
 // Names of the macros `strippedText` #defines, each once, in order of first definition.
 std::vector<std::string> definedMacros(const std::string& strippedText);
 
