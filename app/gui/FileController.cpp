@@ -62,6 +62,8 @@ bool FileController::load(const QString& path) {
         return false;
     }
     QString canonical = QFileInfo(path).absoluteFilePath();
+    // Another file: its own entry point (automatic until chosen); a reload keeps the choice.
+    if (canonical != m_document->path()) m_document->setEntry(QString());
     m_document->setPath(canonical);
     {
         const QSignalBlocker blocker(m_editor);

@@ -130,6 +130,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         });
     }
     connect(m_files, &FileController::pathChanged, this, [this] {
+        m_entry->setText(m_document->entry());
         updateTitle();
         updateRecentMenu();
     });

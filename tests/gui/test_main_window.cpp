@@ -636,6 +636,13 @@ TEST(ForeignCode, EntryFieldAndShowWhere) {
         << window.planePanel()->findChild<QLabel*>("readouts")->text().toStdString();
     findings->setCurrentIndex(findings->findText("truncated"));
     showAndCheck("truncated", "foreign_truncated.png");
+
+    // Another file gets its own entry point: the field clears and sdf() is found.
+    applied = false;
+    ASSERT_TRUE(window.openFile(datasetFile("Geometry/Sphere.glsl")));
+    ASSERT_TRUE(waitFor([&] { return applied; }));
+    EXPECT_TRUE(entry->text().isEmpty());
+    EXPECT_EQ(window.document()->signature().entry, "sdf");
 }
 
 namespace {
