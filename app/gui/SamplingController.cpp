@@ -11,6 +11,7 @@ SamplingController::SamplingController(QWidget* window, std::function<QString()>
     : QObject(parent), m_window(window), m_currentSdf(std::move(currentSdf)), m_process(new BatchProcess(this)) {
     connect(m_process, &BatchProcess::progress, this, [this](quint64 done, quint64 total) {
         if (m_dialog) m_dialog->setProgress(done, total);
+        emit progress(done, total);
     });
     connect(m_process, &BatchProcess::finished, this, [this](bool ok, bool, const QJsonObject& report, const QString& error) {
         QString message = error;

@@ -32,6 +32,8 @@ public:
 
 signals:
     void finished(bool ok, const QString& message);
+    // Samples written so far by the running job (its progress lines).
+    void progress(quint64 done, quint64 total);
 
 private:
     void start(const widgets::SamplingSettings& settings);

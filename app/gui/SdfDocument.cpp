@@ -3,6 +3,7 @@
 #include <core/Paths.h>
 #include <shaders/GlslChecker.h>
 #include <shaders/TracerComposer.h>
+#include <renderer/SdfRenderer.h>
 #include <widgets/ViewportWidget.h>
 
 #include <QCoreApplication>
@@ -33,14 +34,16 @@ void SdfDocument::startCheck(const QString& text) {
     std::string source = text.toStdString();
     std::string path = m_path.toStdString();
     std::string entry = m_entry.toStdString();
+    // glslang checks the variant the viewport will compile (shading, AO, plane, markers, ...).
+    const shaders::TracerFeatures features = renderer::tracerFeatures(m_viewport->shading(), m_viewport->trace(), m_viewport->plane());
     QPointer<SdfDocument> self(this);
-    QThreadPool::globalInstance()->start([self, generation, source = std::move(source), path = std::move(path), entry = std::move(entry)] {
+    QThreadPool::globalInstance()->start([self, generation, source = std::move(source), path = std::move(path), entry = std::move(entry), features] {
         shaders::IncludeOptions options;
         options.libraryRoots = {paths::shaderLibraryRoot(), paths::datasetRoot()};
         shaders::PreparedSdf prepared = shaders::prepareSdf(source, path.empty() ? "<editor>" : path, path, options, entry);
         std::vector<shaders::Diagnostic> diagnostics = prepared.diagnostics;
         if (prepared.ok()) {
-            auto composed = shaders::composeTracer(prepared, shaders::TracerFeatures{});
+            auto composed = shaders::composeTracer(prepared, features);
             if (composed) {
                 auto found = shaders::checkWithGlslang(*composed);
                 diagnostics.insert(diagnostics.end(), found.begin(), found.end());

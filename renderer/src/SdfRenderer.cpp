@@ -61,16 +61,7 @@ struct SdfRenderer::Impl {
     int lowWidth = 0, lowHeight = 0;
 
     static shaders::TracerFeatures features(const ShadingSettings& shading, const TraceSettings& trace, const CuttingPlane& plane) {
-        shaders::TracerFeatures features;
-        features.shading = shading.mode;
-        features.ambientOcclusion = shading.ambientOcclusion;
-        features.overRelaxation = trace.overRelaxation > 1.0f;
-        features.statsOutput = shading.statsOutput;
-        features.markers = !shading.markers.empty();
-        features.cuttingPlane = plane.enabled;
-        features.planeClipsSurface = plane.enabled && plane.clipSurface;
-        features.planeLipschitzOverlay = plane.enabled && plane.lipschitzOverlay;
-        return features;
+        return tracerFeatures(shading, trace, plane);
     }
 
     // Loads the matcap image (a name in resources/matcaps or a path) into a texture, once.
@@ -164,6 +155,19 @@ struct SdfRenderer::Impl {
         }
     }
 };
+
+shaders::TracerFeatures tracerFeatures(const ShadingSettings& shading, const TraceSettings& trace, const CuttingPlane& plane) {
+    shaders::TracerFeatures features;
+    features.shading = shading.mode;
+    features.ambientOcclusion = shading.ambientOcclusion;
+    features.overRelaxation = trace.overRelaxation > 1.0f;
+    features.statsOutput = shading.statsOutput;
+    features.markers = !shading.markers.empty();
+    features.cuttingPlane = plane.enabled;
+    features.planeClipsSurface = plane.enabled && plane.clipSurface;
+    features.planeLipschitzOverlay = plane.enabled && plane.lipschitzOverlay;
+    return features;
+}
 
 SdfRenderer::SdfRenderer() : m_impl(std::make_unique<Impl>()) {}
 

@@ -3,6 +3,7 @@
 
 #include <sampling/SamplerLibrary.h>
 
+#include "common/ChildProcess.h"
 #include "common/NetworkSockets.h"
 
 #include <gtest/gtest.h>
@@ -75,18 +76,29 @@ TEST(Security, JobFilesRunNoCommands) {
 
 TEST(Security, BatchRunsOpenNoNetworkSocket) {
     // A sampling run long enough to look at its sockets while it works.
+    // Its sockets are read once it reports progress (its GL context is up and it is sampling), and
+    // only while it still runs.
     fs::path folder = freshFolder("sockets");
+    int fds[2];
+    ASSERT_EQ(pipe(fds), 0);
     pid_t child = fork();
     if (child == 0) {
         unsetenv("DISPLAY");
-        execl(SDFWB_BINARY, SDFWB_BINARY, "--batch", "sample", "--sdf", "mandelbulb", "--pattern", "surface", "-n", "2000000", "-q", "--output",
-              (folder / "out.npz").c_str(), static_cast<char*>(nullptr));
+        dup2(fds[1], 2);
+        close(fds[0]);
+        execl(SDFWB_BINARY, SDFWB_BINARY, "--batch", "sample", "--sdf", "mandelbulb", "--pattern", "surface", "-n", "2000000", "--chunk", "16384",
+              "--progress-lines", "--output", (folder / "out.npz").c_str(), static_cast<char*>(nullptr));
         _exit(127);
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+    close(fds[1]);
+    const std::string errors = sdfwb::testing::readUntil(fds[0], "progress ", std::chrono::seconds(120));
+    ASSERT_NE(errors.find("progress "), std::string::npos) << "no progress line within 120 s:\n" << errors;
+    int status = 0;
+    ASSERT_EQ(waitpid(child, &status, WNOHANG), 0) << "the run ended before its sockets were read";
     auto sockets = sdfwb::testing::networkSockets(std::to_string(child));
     kill(child, SIGTERM);
-    int status = 0;
+    sdfwb::testing::drain(fds[0]);
+    close(fds[0]);
     waitpid(child, &status, 0);
     EXPECT_TRUE(sockets.empty()) << sockets.front();
     // And the binary does not link Qt's networking.

@@ -167,9 +167,12 @@ TEST(SamplingDialog, SamplesTheOpenSdfAndCancelsCleanly) {
     settings.output = cancelled;
     dialog->setSettings(settings);
     done = false;
+    quint64 written = 0;
+    QObject::connect(sampling, &app::SamplingController::progress, [&](quint64 d, quint64) { written = d; });
     dialog->findChild<QPushButton*>("start")->click();
-    ASSERT_TRUE(waitFor([&] { return sampling->isRunning(); }));
-    QThread::msleep(1500);
+    // Cancel once the child has written samples (its output is open), while it still runs.
+    ASSERT_TRUE(waitFor([&] { return written > 0; }, 60000)) << "no progress from the sampling child";
+    ASSERT_TRUE(sampling->isRunning()) << "the job ended before Cancel";
     dialog->findChild<QPushButton*>("cancel")->click();
     ASSERT_TRUE(waitFor([&] { return done; }, 30000));
     EXPECT_FALSE(ok);
@@ -481,7 +484,6 @@ TEST(Viewport, TimeScrubsAnimatedSdfs) {
     EXPECT_GT(large, small * 2) << "sin(1.5) grows the sphere from 0.4 to 0.7";
     window.playback()->setPlaying(true);
     float startTime = window.viewport()->time();
-    QThread::msleep(300);
     ASSERT_TRUE(waitFor([&] { return window.viewport()->time() > startTime + 0.2f; }, 3000));
     window.playback()->setPlaying(false);
     EXPECT_NEAR(window.timeBar()->time(), window.viewport()->time(), 1e-3);
@@ -743,7 +745,6 @@ TEST(Files, ReloadsWhenTheFileChangesOnDiskAndAsksWhenEdited) {
     app::MainWindow window;
     window.show();
     ASSERT_TRUE(window.openFile(path));
-    QThread::msleep(50);
     writeScratch("watched.glsl", "float sdf(vec3 p) { return length(p) - 0.3; }\n");
     ASSERT_TRUE(waitFor([&] { return window.editor()->text().contains("0.3"); }, 5000)) << "an unmodified file reloads by itself";
     EXPECT_FALSE(window.editor()->isModified());

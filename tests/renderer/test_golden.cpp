@@ -79,14 +79,15 @@ TEST_P(GoldenTest, MatchesTheReviewedImage) {
     // Silhouette pixels may flip between drivers (GPU vs llvmpipe): allow a few strong differences,
     // but the average must stay tiny.
     EXPECT_LE(mean, 1.5) << caseName(c) << ": mean channel difference " << mean;
-    EXPECT_LE(worst, 255) << caseName(c);
     long strong = 0;
     for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
         int d = std::max({std::abs(int(image.rgba[i]) - int(expected->rgba[i])), std::abs(int(image.rgba[i + 1]) - int(expected->rgba[i + 1])),
                           std::abs(int(image.rgba[i + 2]) - int(expected->rgba[i + 2]))});
         strong += d > 24;
     }
-    EXPECT_LE(strong, long(image.width * image.height) / 200) << caseName(c) << ": " << strong << " pixels differ by more than 24";
+    // The worst single difference is reported, not bounded: a flipped silhouette pixel may differ fully.
+    EXPECT_LE(strong, long(image.width * image.height) / 200)
+        << caseName(c) << ": " << strong << " pixels differ by more than 24 (worst channel difference " << worst << ")";
     if (HasFailure()) renderer::writeImage(fs::temp_directory_path() / ("sdfwb-golden-actual-" + caseName(c) + ".png"), image).hasValue();
 }
 

@@ -22,6 +22,10 @@ struct FrameStats {
     double cpuMilliseconds = 0.0;  // time spent in render(), including glFinish when asked
 };
 
+// The tracer variant these settings select (what SdfRenderer composes and the driver compiles), so
+// a checker can run glslang on exactly that text.
+shaders::TracerFeatures tracerFeatures(const ShadingSettings& shading, const TraceSettings& trace, const CuttingPlane& plane);
+
 class SdfRenderer {
 public:
     SdfRenderer();
