@@ -1,6 +1,7 @@
 #include <sampling/FieldAudit.h>
 
 #include <renderer/SampleCompute.h>
+#include <sampling/AuditStatistics.h>
 #include <sampling/SampleSet.h>
 #include <sampling/Sampler.h>
 #include <sampling/SamplerLibrary.h>
@@ -20,13 +21,6 @@ namespace {
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-float percentile(std::vector<float> values, double q) {
-    if (values.empty()) return 0.0f;
-    std::size_t k = std::min(values.size() - 1, std::size_t(q * double(values.size() - 1) + 0.5));
-    std::nth_element(values.begin(), values.begin() + long(k), values.end());
-    return values[k];
 }
 
 bool finiteRow(const SampleSet& s, std::size_t i) {
@@ -99,36 +93,10 @@ Expected<float> measureNoiseFloor(const shaders::PreparedSdf& sdf, const AuditOp
     job.parameters[0] = kSpacing;
     auto rows = runner.run(job);
     if (!rows) return rows.error();
-    // Least squares on x = -7.5 .. 7.5 (symmetric, so the linear term decouples): fit the
-    // constant + quadratic by their 2x2 normal equations, the slope on its own.
-    double sx2 = 0, sx4 = 0;
-    for (int k = 0; k < kRun; ++k) {
-        double x = k - (kRun - 1) / 2.0;
-        sx2 += x * x;
-        sx4 += x * x * x * x;
-    }
     std::vector<float> floors;
     for (std::uint64_t r = 0; r < runs; ++r) {
-        const float* f = rows->distances.data() + r * kRun;
-        bool finite = true;
-        double s0 = 0, s1 = 0, s2 = 0;
-        for (int k = 0; k < kRun; ++k) {
-            finite = finite && std::isfinite(f[k]);
-            double x = k - (kRun - 1) / 2.0;
-            s0 += f[k];
-            s1 += x * f[k];
-            s2 += x * x * f[k];
-        }
-        if (!finite) continue;
-        const double det = kRun * sx4 - sx2 * sx2;
-        const double a = (s0 * sx4 - s2 * sx2) / det, c = (kRun * s2 - sx2 * s0) / det, b = s1 / sx2;
-        double residual = 0;
-        for (int k = 0; k < kRun; ++k) {
-            double x = k - (kRun - 1) / 2.0;
-            double e = f[k] - (a + b * x + c * x * x);
-            residual += e * e;
-        }
-        floors.push_back(float(std::sqrt(12.0 * residual / (kRun - 3))));
+        const float floor = quadraticResidualStep(rows->distances.data() + r * kRun, kRun);
+        if (std::isfinite(floor)) floors.push_back(floor);
     }
     return floors.empty() ? 0.0f : percentile(floors, 0.5);
 }
@@ -151,20 +119,6 @@ struct JumpCandidate {
     glm::vec3 across;  // unit: the gradient's direction at the step that saw the jump, which crosses it
     float step;        // that difference step: the jump lies within about this distance
 };
-
-// Largest rise between consecutive values beyond the typical one (the field's own slope), and
-// where: between samples k and k + 1 of `f`. Negative when a value is not finite.
-std::pair<float, int> largestStep(const float* f, int count) {
-    std::vector<float> differences;
-    int at = 0;
-    for (int k = 0; k + 1 < count; ++k) {
-        if (!std::isfinite(f[k]) || !std::isfinite(f[k + 1])) return {-1.0f, 0};
-        differences.push_back(std::abs(f[k + 1] - f[k]));
-        if (differences.back() > differences[std::size_t(at)]) at = k;
-    }
-    const float largest = differences[std::size_t(at)];
-    return {largest - percentile(differences, 0.5), at};
-}
 
 // Confirms and measures jumps by line searches across each candidate: 64 points over 3 steps along
 // `across` find the largest rise; 64 points across that one interval must show (at least half of)
@@ -255,20 +209,8 @@ Expected<AuditFlag> probeOutward(const shaders::PreparedSdf& sdf, const AuditOpt
     std::vector<float> plateauValues, starts;
     for (std::size_t r = 0; r < origins.size(); ++r) {
         const float* f = &values->distances[std::size_t(kProbes) * r];
-        // Walk back from the far end while the profile stays flat.
-        int first = kProbes - 1;
-        if (!std::isfinite(f[first]) || f[first] <= 0.0f) continue;
-        while (first > 0) {
-            const float previous = f[first - 1];
-            if (!std::isfinite(previous)) break;
-            // Flat from each probe to the next and from here to the end.
-            const float noise = 8.0f * noiseFloor + 1e-6f;
-            if (std::abs(previous - f[first]) > 0.02f * (distances[first] - distances[first - 1]) + noise) break;
-            if (std::abs(previous - f[kProbes - 1]) > 0.02f * (distances[kProbes - 1] - distances[first - 1]) + noise) break;
-            --first;
-        }
-        // At least the last three probes, and a stretch of at least 10 % of the reach.
-        if (first > kProbes - 3 || distances[kProbes - 1] - distances[first] < 0.1f * reach || f[first] <= 0.0f) continue;
+        const int first = plateauStart(f, distances, kProbes, 8.0f * noiseFloor + 1e-6f);
+        if (first < 0) continue;
         plateauValues.push_back(f[kProbes - 1]);
         starts.push_back(distances[first]);
         if (flag.examples.size() < kMaxExamples) flag.examples.push_back(origins[r] + distances[first] * normals[r]);
