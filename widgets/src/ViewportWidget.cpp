@@ -52,7 +52,7 @@ std::vector<shaders::Diagnostic> ViewportWidget::setSdf(const shaders::PreparedS
     if (!shaders::hasErrors(diagnostics)) {
         m_currentSdf = std::make_unique<shaders::PreparedSdf>(sdf);
         m_needsProbe = true;
-        m_maxPixels = 0.0;
+        m_scaler.clearCap();
     }
     update();
     return diagnostics;
@@ -148,7 +148,7 @@ void ViewportWidget::initializeGL() {
         if (!shaders::hasErrors(diagnostics)) {
             m_currentSdf = std::move(m_pendingSdf);
             m_needsProbe = true;
-            m_maxPixels = 0.0;
+            m_scaler.clearCap();
         }
         m_pendingSdf.reset();
     }
@@ -160,30 +160,16 @@ void ViewportWidget::paintGL() {
     int width = int(std::lround(this->width() * ratio));
     int height = int(std::lround(this->height() * ratio));
     if (m_needsProbe && probeNewSdf(width, height)) return;
-    // The cap is a pixel count, so it holds after a resize (a 4K window gets a lower scale).
-    const float cap = m_maxPixels > 0.0 ? std::clamp(float(std::sqrt(m_maxPixels / (double(width) * height))), kProbeScale, 1.0f) : 1.0f;
-    float scale = std::min(m_interacting ? m_scale : 1.0f, cap);
+    const float scale = m_scaler.scaleFor(width, height, m_interacting);
     // finish: the status bar and the scale choice see what the frame really cost.
     renderer::FrameStats stats = m_renderer->renderScaled(width, height, scale, m_camera, m_time, true);
-    const double traced = double(width) * height * scale * scale;
-    const bool overLimit = !m_interacting && stats.cpuMilliseconds > m_stallLimit;
-    // The pixel budget follows the last full frame's cost per pixel (so a resize to 4K lowers the
-    // scale before the slow frame, not after it).
-    if (!m_interacting && stats.cpuMilliseconds > 0.0) m_maxPixels = traced * 0.8 * m_stallLimit / stats.cpuMilliseconds;
-    if (overLimit) {
-        // A view that became expensive (camera, time, plane): cap the next frames.
+    if (m_scaler.frameDone(width, height, scale, stats.cpuMilliseconds, m_interacting)) {
+        // A view that became expensive (camera, time, plane): the next frames are capped.
         emit performanceWarning(tr("A full frame took %1 s: frames are drawn at %2 % resolution from now on").arg(stats.cpuMilliseconds / 1000.0, 0, 'f', 1)
                                     .arg(int(resolutionCap() * 100.0f)));
     }
     m_lastFrameMilliseconds = stats.cpuMilliseconds;
     m_lastScale = scale;
-    if (!m_interacting) {
-        m_fullFrameMilliseconds = stats.cpuMilliseconds;
-    } else if (stats.cpuMilliseconds > 0.0) {
-        // Cost grows with the pixel count, i.e. with scale^2: aim at 80 % of the budget.
-        float next = scale * float(std::sqrt(0.8 * m_frameBudget / stats.cpuMilliseconds));
-        m_scale = std::clamp(0.5f * (m_scale + next), 0.1f, 1.0f);
-    }
     if (!m_overlay.isEmpty()) {
         QPainter painter(this);
         painter.setRenderHint(QPainter::TextAntialiasing);
@@ -200,10 +186,8 @@ void ViewportWidget::paintGL() {
 }
 
 float ViewportWidget::resolutionCap() const {
-    if (m_maxPixels <= 0.0) return 1.0f;
     const qreal ratio = devicePixelRatioF();
-    const double pixels = std::max(1.0, double(std::lround(width() * ratio)) * double(std::lround(height() * ratio)));
-    return std::clamp(float(std::sqrt(m_maxPixels / pixels)), kProbeScale, 1.0f);
+    return m_scaler.cap(int(std::lround(width() * ratio)), int(std::lround(height() * ratio)));
 }
 
 bool ViewportWidget::probeNewSdf(int width, int height) {
@@ -211,23 +195,24 @@ bool ViewportWidget::probeNewSdf(int width, int height) {
     // 5 % of the side, 0.25 % of the pixels: cheap even for a shader that loops for long. The
     // first draw of a program includes the driver's code generation (llvmpipe compiles lazily):
     // draw twice and time the second.
+    constexpr float kProbeScale = renderer::FrameScaler::kProbeScale;
+    const double stallLimit = m_scaler.stallLimit();
     renderer::FrameStats probe = m_renderer->renderScaled(width, height, kProbeScale, m_camera, m_time, true);
-    if (probe.cpuMilliseconds <= m_stallLimit) probe = m_renderer->renderScaled(width, height, kProbeScale, m_camera, m_time, true);
-    double estimate = probe.cpuMilliseconds / double(kProbeScale * kProbeScale);
-    if (estimate > m_stallLimit && probe.cpuMilliseconds <= m_stallLimit) {
+    if (probe.cpuMilliseconds <= stallLimit) probe = m_renderer->renderScaled(width, height, kProbeScale, m_camera, m_time, true);
+    double estimate = renderer::FrameScaler::estimateFullFrame(probe.cpuMilliseconds);
+    if (estimate > stallLimit && probe.cpuMilliseconds <= stallLimit) {
         // Small frames are dominated by fixed costs (stretching, synchronisation): measure at 3x
         // the side too and extrapolate from the cost per pixel.
         constexpr float kLarger = 3.0f * kProbeScale;
         renderer::FrameStats larger = m_renderer->renderScaled(width, height, kLarger, m_camera, m_time, true);
-        const double perArea = std::max(0.0, larger.cpuMilliseconds - probe.cpuMilliseconds) / double(kLarger * kLarger - kProbeScale * kProbeScale);
-        estimate = probe.cpuMilliseconds + perArea * double(1.0f - kProbeScale * kProbeScale);
+        estimate = renderer::FrameScaler::estimateFullFrame(probe.cpuMilliseconds, std::pair{kLarger, larger.cpuMilliseconds});
         probe = larger;
     }
-    if (probe.cpuMilliseconds > m_stallLimit && m_lastGoodSdf) {
+    if (probe.cpuMilliseconds > stallLimit && m_lastGoodSdf) {
         // Even the probe is over the limit: this SDF cannot be drawn interactively here.
         (void)m_renderer->setSdf(*m_lastGoodSdf);
         m_currentSdf.reset();
-        m_maxPixels = 0.0;
+        m_scaler.clearCap();
         emit performanceWarning(tr("The new SDF needs %1 s for a frame at 5 % resolution (a runaway loop?): the previous SDF is "
                                    "back on screen; fix the loop or render it with sdfwb --batch render")
                                     .arg(probe.cpuMilliseconds / 1000.0, 0, 'f', 1));
@@ -235,8 +220,8 @@ bool ViewportWidget::probeNewSdf(int width, int height) {
         return true;
     }
     m_lastGoodSdf = std::move(m_currentSdf);
-    if (estimate > m_stallLimit) {
-        m_maxPixels = double(width) * height * 0.8 * m_stallLimit / estimate;
+    if (estimate > stallLimit) {
+        m_scaler.capFromEstimate(width, height, estimate);
         emit performanceWarning(tr("A full frame of this SDF would take about %1 s: drawn at %2 % resolution (screenshots and "
                                    "exports still render in full)")
                                     .arg(estimate / 1000.0, 0, 'f', 1)
@@ -251,10 +236,8 @@ void ViewportWidget::releaseGl() { m_renderer->releaseGl(); }
 
 void ViewportWidget::interacted() {
     if (!m_interacting) {
-        // Start from the scale the last full frame suggests, so the first moving frame is fast.
         m_interacting = true;
-        if (m_fullFrameMilliseconds > 0.0)
-            m_scale = std::clamp(float(std::sqrt(0.8 * m_frameBudget / m_fullFrameMilliseconds)), 0.1f, 1.0f);
+        m_scaler.startInteraction();
     }
     m_refineTimer.start();
     update();

@@ -11,6 +11,7 @@
 
 #include <renderer/Camera.h>
 #include <renderer/Image.h>
+#include <renderer/FrameScaler.h>
 #include <renderer/RenderSettings.h>
 #include <shaders/Diagnostic.h>
 #include <shaders/SdfSource.h>
@@ -56,12 +57,12 @@ public:
     float time() const { return m_time; }
 
     // Frames while moving aim to take at most this long (default 33 ms).
-    void setFrameBudget(double milliseconds) { m_frameBudget = milliseconds; }
+    void setFrameBudget(double milliseconds) { m_scaler.setFrameBudget(milliseconds); }
     // No frame may hold the UI longer than about this (default 1500 ms). A new SDF is first drawn
     // at 5 % resolution; if the full frame would exceed the limit (a runaway loop, a huge
     // fractal), frames are capped at the resolution that fits, and if even the probe frame is
     // over it the previous SDF comes back. performanceWarning() says which.
-    void setStallLimit(double milliseconds) { m_stallLimit = milliseconds; }
+    void setStallLimit(double milliseconds) { m_scaler.setStallLimit(milliseconds); }
     // The largest scale frames are drawn at now (1 without a cap).
     float resolutionCap() const;
     double lastFrameMilliseconds() const { return m_lastFrameMilliseconds; }
@@ -96,7 +97,6 @@ protected:
     void focusOutEvent(QFocusEvent* event) override;
 
 private:
-    static constexpr float kProbeScale = 0.05f;
     // Draws the first frame of a new SDF at kProbeScale and sets the resolution cap (or reverts).
     bool probeNewSdf(int width, int height);
     void releaseGl();
@@ -108,8 +108,7 @@ private:
     std::unique_ptr<shaders::PreparedSdf> m_currentSdf;   // compiled, waiting for its probe frame
     std::unique_ptr<shaders::PreparedSdf> m_lastGoodSdf;  // passed its probe frame
     bool m_needsProbe = false;
-    double m_stallLimit = 1500.0;
-    double m_maxPixels = 0.0;  // pixels a frame may trace within the stall limit (0: no cap)
+    renderer::FrameScaler m_scaler;  // resolution while moving, and the cap for slow SDFs
     renderer::ShadingSettings m_shading;
     renderer::TraceSettings m_trace;
     renderer::CuttingPlane m_plane;
@@ -121,9 +120,6 @@ private:
     QElapsedTimer m_flyClock;
     QTimer m_refineTimer;
     bool m_interacting = false;
-    double m_frameBudget = 33.0;
-    double m_fullFrameMilliseconds = 0.0;
-    float m_scale = 1.0f;
     float m_lastScale = 1.0f;
     double m_lastFrameMilliseconds = 0.0;
     QString m_contextDescription;
