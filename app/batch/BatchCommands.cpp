@@ -43,6 +43,28 @@ void printDiagnostics(const std::vector<shaders::Diagnostic>& diagnostics) {
 }
 
 // A one-line progress bar on a terminal's stderr, redrawn at most 10 times a second.
+// The shared "open the SDF" step of every command that takes --sdf, in its two halves: first the
+// name is resolved (a dataset name or a path; nothing found is a usage error, exit 2, before any
+// work), then, after the command's own checks, the file is prepared with its entry point (errors
+// are printed with their file and line; the caller exits 1).
+std::optional<fs::path> resolveSdf(const std::string& argument) {
+    dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
+    auto path = dataset::resolveSdfArgument(argument, catalogue);
+    if (!path) {
+        printError("--sdf: " + path.error().message);
+        return std::nullopt;
+    }
+    return *path;
+}
+
+std::optional<shaders::PreparedSdf> openSdf(const fs::path& path, const std::string& entry, const std::string& failure) {
+    shaders::PreparedSdf sdf = shaders::prepareSdfFile(path, includeOptions(), entry);
+    if (sdf.ok()) return sdf;
+    printDiagnostics(sdf.diagnostics);
+    printError(failure);
+    return std::nullopt;
+}
+
 class ProgressBar {
 public:
     explicit ProgressBar(bool enabled) : m_enabled(enabled && ::isatty(STDERR_FILENO)) {}
@@ -105,9 +127,8 @@ private:
 
 int runRender(const RenderJob& job, const OutputOptions& output) {
     auto start = std::chrono::steady_clock::now();
-    dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
-    auto sdfPath = dataset::resolveSdfArgument(job.sdf, catalogue);
-    if (!sdfPath) { printError("--sdf: " + sdfPath.error().message); return kExitUsage; }
+    auto sdfPath = resolveSdf(job.sdf);
+    if (!sdfPath) return kExitUsage;
     fs::path outputPath(job.output);
     if (!renderer::canWriteImageExtension(outputPath.extension().string())) {
         printError("--output: '" + job.output + "': unsupported image type '" + outputPath.extension().string() + "' (use .png, .jpg or .exr)");
@@ -117,12 +138,9 @@ int runRender(const RenderJob& job, const OutputOptions& output) {
     fs::path folder = outputPath.parent_path().empty() ? fs::path(".") : outputPath.parent_path();
     if (!fs::is_directory(folder, ec)) { printError("--output: '" + job.output + "': folder '" + folder.string() + "' does not exist"); return kExitUsage; }
 
-    shaders::PreparedSdf sdf = shaders::prepareSdfFile(*sdfPath, includeOptions(), job.entry);
-    if (!sdf.ok()) {
-        printDiagnostics(sdf.diagnostics);
-        printError("render: " + sdfPath->string() + " has errors; nothing written");
-        return kExitFailure;
-    }
+    auto opened = openSdf(*sdfPath, job.entry, "render: " + sdfPath->string() + " has errors; nothing written");
+    if (!opened) return kExitFailure;
+    const shaders::PreparedSdf& sdf = *opened;
     auto context = renderer::HeadlessContext::create();
     if (!context) { printError(context.error().message); return kExitNoGl; }
     if (auto floor = renderer::precisionFloor(job.camera, job.trace.epsilonScale, job.height); floor.exceeded) {
@@ -202,9 +220,8 @@ int runList(const OutputOptions& output) {
 namespace sdfwb::app {
 
 int runSample(const SampleCommand& command, const OutputOptions& output) {
-    dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
-    auto sdfPath = dataset::resolveSdfArgument(command.sdf, catalogue);
-    if (!sdfPath) { printError("--sdf: " + sdfPath.error().message); return kExitUsage; }
+    auto sdfPath = resolveSdf(command.sdf);
+    if (!sdfPath) return kExitUsage;
     auto sampler = sampling::findSampler(command.pattern, sampling::samplerFolders());
     if (!sampler) { printError("--pattern: " + sampler.error().message); return kExitUsage; }
     std::optional<sampling::SampleFormat> format =
@@ -239,12 +256,9 @@ int runSample(const SampleCommand& command, const OutputOptions& output) {
         return kExitUsage;
     }
 
-    shaders::PreparedSdf sdf = shaders::prepareSdfFile(*sdfPath, includeOptions(), command.entry);
-    if (!sdf.ok()) {
-        printDiagnostics(sdf.diagnostics);
-        printError("sample: " + sdfPath->string() + " has errors; nothing written");
-        return kExitFailure;
-    }
+    auto opened = openSdf(*sdfPath, command.entry, "sample: " + sdfPath->string() + " has errors; nothing written");
+    if (!opened) return kExitFailure;
+    const shaders::PreparedSdf& sdf = *opened;
     auto context = renderer::HeadlessContext::create();
     if (!context) { printError(context.error().message); return kExitNoGl; }
     renderer::SampleCompute compute;
@@ -325,9 +339,8 @@ namespace sdfwb::app {
 
 int runAnimate(const AnimateJob& job, const OutputOptions& output) {
     auto start = std::chrono::steady_clock::now();
-    dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
-    auto sdfPath = dataset::resolveSdfArgument(job.frame.sdf, catalogue);
-    if (!sdfPath) { printError("--sdf: " + sdfPath.error().message); return kExitUsage; }
+    auto sdfPath = resolveSdf(job.frame.sdf);
+    if (!sdfPath) return kExitUsage;
     std::filesystem::path outputPath(job.frame.output);
     if (outputPath.extension() != ".mp4") {
         printError("--output: '" + job.frame.output + "': animations are written as .mp4 (H.264)");
@@ -335,12 +348,9 @@ int runAnimate(const AnimateJob& job, const OutputOptions& output) {
     }
     if (!(job.seconds > 0.0f) || job.seconds > 3600.0f) { printError("--seconds: must be in (0, 3600]"); return kExitUsage; }
     if (job.framesPerSecond < 1 || job.framesPerSecond > 240) { printError("--fps: must be 1..240"); return kExitUsage; }
-    shaders::PreparedSdf sdf = shaders::prepareSdfFile(*sdfPath, includeOptions(), job.frame.entry);
-    if (!sdf.ok()) {
-        printDiagnostics(sdf.diagnostics);
-        printError("animate: " + sdfPath->string() + " has errors; nothing written");
-        return kExitFailure;
-    }
+    auto opened = openSdf(*sdfPath, job.frame.entry, "animate: " + sdfPath->string() + " has errors; nothing written");
+    if (!opened) return kExitFailure;
+    const shaders::PreparedSdf& sdf = *opened;
     if (!job.turntable && !sdf.usesTime() && !output.quiet)
         std::fprintf(stderr, "sdfwb: note: %s is not animated and --turntable is off: every frame is the same\n", sdfPath->string().c_str());
     auto context = renderer::HeadlessContext::create();
@@ -406,16 +416,12 @@ int runAnimate(const AnimateJob& job, const OutputOptions& output) {
 namespace sdfwb::app {
 
 int runAudit(const AuditCommand& command, const OutputOptions& output) {
-    dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
-    auto sdfPath = dataset::resolveSdfArgument(command.sdf, catalogue);
-    if (!sdfPath) { printError("--sdf: " + sdfPath.error().message); return kExitUsage; }
+    auto sdfPath = resolveSdf(command.sdf);
+    if (!sdfPath) return kExitUsage;
     if (command.samples < 64 || command.samples > 100000000) { printError("--samples: must be 64..100000000"); return kExitUsage; }
-    shaders::PreparedSdf sdf = shaders::prepareSdfFile(*sdfPath, includeOptions(), command.entry);
-    if (!sdf.ok()) {
-        printDiagnostics(sdf.diagnostics);
-        printError("audit: " + sdfPath->string() + " has errors");
-        return kExitFailure;
-    }
+    auto opened = openSdf(*sdfPath, command.entry, "audit: " + sdfPath->string() + " has errors");
+    if (!opened) return kExitFailure;
+    const shaders::PreparedSdf& sdf = *opened;
     auto context = renderer::HeadlessContext::create();
     if (!context) { printError(context.error().message); return kExitNoGl; }
     // Every finding with its evidence: JSON objects, and text lines.

@@ -343,6 +343,29 @@ int runBenchCommand(const Arguments& arguments, Mode mode) {
     return runBench(command, output);
 }
 
+// Every batch command, once: the dispatch, the job-file check and the messages read this table.
+struct BatchCommandEntry {
+    const char* name;
+    int (*run)(const Arguments& arguments, Mode mode);
+};
+constexpr BatchCommandEntry kBatchCommands[] = {
+    {"render", runRenderCommand}, {"animate", runAnimateCommand}, {"sample", runSampleCommand}, {"merge", runMergeCommand},
+    {"audit", runAuditCommand},   {"list", runListCommand},       {"bench", runBenchCommand},
+};
+
+const BatchCommandEntry* findBatchCommand(const std::string& name) {
+    for (const BatchCommandEntry& entry : kBatchCommands)
+        if (name == entry.name) return &entry;
+    return nullptr;
+}
+
+// "render, animate, sample, merge, audit, list, bench"
+std::string batchCommandNames() {
+    std::string names;
+    for (const BatchCommandEntry& entry : kBatchCommands) names += (names.empty() ? "" : ", ") + std::string(entry.name);
+    return names;
+}
+
 int runBatchCommand(const std::string& command, const Arguments& arguments, Mode mode);
 
 // Splits a job-file line into words: whitespace separates, '...' and "..." quote, \ escapes,
@@ -390,7 +413,6 @@ int runJobText(const std::string& text, const std::string& name, Mode mode) {
     std::vector<std::pair<int, Arguments>> steps;
     std::string line;
     int lineNumber = 0;
-    const std::vector<std::string> commands = {"render", "animate", "sample", "merge", "audit", "list", "bench"};
     while (std::getline(file, line)) {
         ++lineNumber;
         std::string error;
@@ -400,8 +422,8 @@ int runJobText(const std::string& text, const std::string& name, Mode mode) {
             return kExitUsage;
         }
         if (words->empty()) continue;
-        if (std::find(commands.begin(), commands.end(), words->front()) == commands.end()) {
-            printError(name + ":" + std::to_string(lineNumber) + ": unknown command '" + words->front() + "' (render, animate, sample, merge, audit, list, bench)");
+        if (!findBatchCommand(words->front())) {
+            printError(name + ":" + std::to_string(lineNumber) + ": unknown command '" + words->front() + "' (" + batchCommandNames() + ")");
             return kExitUsage;
         }
         steps.emplace_back(lineNumber, std::move(*words));
@@ -433,14 +455,8 @@ int runJobFile(const std::string& path, Mode mode) {
 }
 
 int runBatchCommand(const std::string& command, const Arguments& arguments, Mode mode) {
-    if (command == "render") return runRenderCommand(arguments, mode);
-    if (command == "animate") return runAnimateCommand(arguments, mode);
-    if (command == "sample") return runSampleCommand(arguments, mode);
-    if (command == "merge") return runMergeCommand(arguments, mode);
-    if (command == "audit") return runAuditCommand(arguments, mode);
-    if (command == "list") return runListCommand(arguments, mode);
-    if (command == "bench") return runBenchCommand(arguments, mode);
-    printError("--batch: unknown command '" + command + "' (render, animate, sample, merge, audit, list, bench, or a job file); see sdfwb --help");
+    if (const BatchCommandEntry* entry = findBatchCommand(command)) return entry->run(arguments, mode);
+    printError("--batch: unknown command '" + command + "' (" + batchCommandNames() + ", or a job file); see sdfwb --help");
     return kExitUsage;
 }
 
@@ -451,13 +467,12 @@ std::optional<int> commandLine(const Arguments& arguments, Mode mode) {
     if (first == "--help" || first == "-h") { std::printf("%s", kOverview); return kExitOk; }
     if (first == "--version") { std::printf("sdfwb %s\n", SDFWB_VERSION); return kExitOk; }
     if (first == "--batch") {
-        if (arguments.size() < 2) { printError("--batch: missing command (render, animate, sample, merge, audit, list, bench) or job file; see sdfwb --help"); return kExitUsage; }
+        if (arguments.size() < 2) { printError("--batch: missing command (" + batchCommandNames() + ") or job file; see sdfwb --help"); return kExitUsage; }
         const std::string& command = arguments[1];
         if (command == "--help" || command == "-h") { std::printf("%s", kOverview); return kExitOk; }
         const Arguments rest(arguments.begin() + 2, arguments.end());
-        const std::vector<std::string> commands = {"render", "animate", "sample", "merge", "audit", "list", "bench"};
         std::error_code ec;
-        if (std::find(commands.begin(), commands.end(), command) == commands.end() && std::filesystem::is_regular_file(command, ec)) {
+        if (!findBatchCommand(command) && std::filesystem::is_regular_file(command, ec)) {
             if (!rest.empty()) { printError("--batch " + command + ": a job file takes no further arguments"); return kExitUsage; }
             return runJobFile(command, mode);
         }
