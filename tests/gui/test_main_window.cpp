@@ -476,11 +476,21 @@ TEST(Viewport, TimeScrubsAnimatedSdfs) {
     QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
     ASSERT_TRUE(window.openFile(path));
     ASSERT_TRUE(waitFor([&] { return applied; }));
+    // A new SDF's first frame is a 5 % probe: compare full-resolution frames only.
+    float lastScale = 0.0f;
+    QObject::connect(window.viewport(), &widgets::ViewportWidget::frameRendered, [&](double, float scale) { lastScale = scale; });
+    auto fullFrame = [&] {
+        QImage frame = frameOf(window);
+        for (int k = 0; k < 10 && lastScale < 1.0f; ++k) frame = frameOf(window);
+        EXPECT_EQ(lastScale, 1.0f) << "no full-resolution frame";
+        return frame;
+    };
+    window.viewport()->resetCamera();  // not a camera restored from an earlier test's session
     window.timeBar()->setTime(0.0);
     window.viewport()->setTime(0.0f);
-    long small = foreground(frameOf(window), kBackground);
+    long small = foreground(fullFrame(), kBackground);
     window.viewport()->setTime(1.5f);
-    long large = foreground(frameOf(window), kBackground);
+    long large = foreground(fullFrame(), kBackground);
     EXPECT_GT(large, small * 2) << "sin(1.5) grows the sphere from 0.4 to 0.7";
     window.playback()->setPlaying(true);
     float startTime = window.viewport()->time();
