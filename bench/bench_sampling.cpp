@@ -7,6 +7,7 @@
 //
 //   build/bench/bench_sampling [N]      (default N = 4,000,000)
 
+#include <core/Hash.h>
 #include <renderer/HeadlessContext.h>
 #include <renderer/SampleCompute.h>
 #include <sampling/Sampler.h>
@@ -81,22 +82,13 @@ double seconds(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The samplers' integer finaliser and counter-based random numbers (shaders/sampling/common.glsl):
-// the reference evaluates exactly the points the rand sampler does.
-std::uint32_t scramble(std::uint32_t x) {
-    x ^= x >> 16u;
-    x *= 0x7feb352du;
-    x ^= x >> 15u;
-    x *= 0x846ca68bu;
-    x ^= x >> 16u;
-    return x;
-}
-
+// The samplers' counter-based random numbers (shaders/sampling/common.glsl, with the same
+// finaliser, core/Hash.h): the reference evaluates exactly the points the rand sampler does.
 glm::vec3 randomInCube(std::uint64_t seed, std::uint32_t index) {
-    const std::uint32_t seedKey = scramble(std::uint32_t(seed >> 32) ^ scramble(std::uint32_t(seed)));
-    const std::uint32_t sampleKey = scramble(index ^ seedKey);
-    const std::uint32_t streamKey = scramble(0u * 0x9e3779b9u + sampleKey);
-    const std::uint32_t bits[3] = {scramble(streamKey), scramble(streamKey + 0x9e3779b9u), scramble(streamKey + 0x3c6ef372u)};
+    const std::uint32_t seedKey = scramble32(std::uint32_t(seed >> 32) ^ scramble32(std::uint32_t(seed)));
+    const std::uint32_t sampleKey = scramble32(index ^ seedKey);
+    const std::uint32_t streamKey = scramble32(sampleKey);  // stream 0: 0 * 0x9e3779b9 + sampleKey
+    const std::uint32_t bits[3] = {scramble32(streamKey), scramble32(streamKey + 0x9e3779b9u), scramble32(streamKey + 0x3c6ef372u)};
     glm::vec3 p;
     for (int c = 0; c < 3; ++c) p[c] = float(bits[c] >> 8u) * (1.0f / 16777216.0f) * 2.0f - 1.0f;
     return p;

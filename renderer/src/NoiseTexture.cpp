@@ -2,27 +2,15 @@
 
 #include "GlObjects.h"
 
+#include <core/Hash.h>
 #include <shaders/ShaderComposer.h>
 
 namespace sdfwb::renderer {
-namespace {
 
-// The samplers' integer finaliser (shaders/sampling/common.glsl): every input bit flips every
-// output bit with probability ~1/2, so consecutive texels are unrelated.
-std::uint32_t scramble(std::uint32_t x) {
-    x ^= x >> 16u;
-    x *= 0x7feb352du;
-    x ^= x >> 15u;
-    x *= 0x846ca68bu;
-    x ^= x >> 16u;
-    return x;
-}
-
-} // namespace
-
+// Each byte a hash of its index, with the samplers' finaliser: consecutive texels are unrelated.
 std::vector<std::uint8_t> noiseTexels() {
     std::vector<std::uint8_t> texels(std::size_t(kNoiseTextureSize) * kNoiseTextureSize * 4);
-    for (std::size_t i = 0; i < texels.size(); ++i) texels[i] = std::uint8_t(scramble(std::uint32_t(i) ^ 0x5bd1e995u) >> 24);
+    for (std::size_t i = 0; i < texels.size(); ++i) texels[i] = std::uint8_t(scramble32(std::uint32_t(i) ^ 0x5bd1e995u) >> 24);
     return texels;
 }
 

@@ -58,8 +58,7 @@ struct Found {
 
 // Top-level (brace depth 0) function definitions "TYPE NAME ( ... ) {", uniforms
 // "uniform TYPE NAME" and structs "struct NAME".
-std::vector<Found> topLevelDeclarations(const std::string& stripped) {
-    const std::vector<Token> tokens = tokenize(stripped);
+std::vector<Found> topLevelDeclarations(const std::vector<Token>& tokens) {
     std::vector<Found> found;
     int depth = 0;
     auto isIdentifier = [](const std::string& t) { return !t.empty() && isWord(t[0]) && !(t[0] >= '0' && t[0] <= '9'); };
@@ -120,11 +119,10 @@ bool isStatementKeyword(const std::string& word) {
 
 // Offsets of every name with the reserved prefix that `stripped` defines: after a type, a
 // qualifier, `struct` or `]` (a declaration), or as the name of a #define / #undef.
-std::vector<std::size_t> reservedDefinitions(const std::string& stripped) {
+std::vector<std::size_t> reservedDefinitions(const std::string& stripped, const std::vector<Token>& tokens) {
     std::vector<std::size_t> found;
     for (const MacroDirective& d : macroDirectives(stripped))
         if (hasReservedPrefix(d.name)) found.push_back(d.offset);
-    const std::vector<Token> tokens = tokenize(stripped);
     for (std::size_t i = 1; i < tokens.size(); ++i) {
         if (!hasReservedPrefix(tokens[i].text)) continue;
         const std::string& before = tokens[i - 1].text;
@@ -199,11 +197,12 @@ std::vector<Diagnostic> checkSourceFiles(const ResolvedSource& source) {
                 break;  // one per file: the rest is usually more of the same
             }
         }
-        for (const Found& f : topLevelDeclarations(stripped))
+        const std::vector<Token> tokens = tokenize(stripped);  // once, for both checks
+        for (const Found& f : topLevelDeclarations(tokens))
             if (f.function && f.name == "main")
                 report(f.offset, "main() is written by the workbench (the tracer's and the samplers' own); an SDF file defines "
                                  "float sdf(vec3 p) and its helpers: remove this main()");
-        for (std::size_t offset : reservedDefinitions(stripped)) {
+        for (std::size_t offset : reservedDefinitions(stripped, tokens)) {
             std::size_t end = offset;
             while (end < stripped.size() && isWord(stripped[end])) ++end;
             report(offset, "'" + stripped.substr(offset, end - offset) + "': names beginning with sdfwb_ (in any letter case) are "
