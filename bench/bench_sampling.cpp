@@ -16,12 +16,12 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <algorithm>
-#include <cstdint>
 #include <thread>
 #include <vector>
 
@@ -87,8 +87,9 @@ double seconds(std::chrono::steady_clock::time_point start) {
 glm::vec3 randomInCube(std::uint64_t seed, std::uint32_t index) {
     const std::uint32_t seedKey = scramble32(std::uint32_t(seed >> 32) ^ scramble32(std::uint32_t(seed)));
     const std::uint32_t sampleKey = scramble32(index ^ seedKey);
-    const std::uint32_t streamKey = scramble32(sampleKey);  // stream 0: 0 * 0x9e3779b9 + sampleKey
-    const std::uint32_t bits[3] = {scramble32(streamKey), scramble32(streamKey + 0x9e3779b9u), scramble32(streamKey + 0x3c6ef372u)};
+    const std::uint32_t streamKey = scramble32(sampleKey); // stream 0: 0 * 0x9e3779b9 + sampleKey
+    const std::uint32_t bits[3] = {scramble32(streamKey), scramble32(streamKey + 0x9e3779b9u),
+                                   scramble32(streamKey + 0x3c6ef372u)};
     glm::vec3 p;
     for (int c = 0; c < 3; ++c) p[c] = float(bits[c] >> 8u) * (1.0f / 16777216.0f) * 2.0f - 1.0f;
     return p;
@@ -96,8 +97,7 @@ glm::vec3 randomInCube(std::uint64_t seed, std::uint32_t index) {
 
 // Reference: value + 6-tap gradient at the rand sampler's points; each thread a contiguous block
 // of the output. `field` is a callable the compiler inlines. Returns samples per second.
-template <class F>
-double referenceRate(F field, std::size_t n, std::vector<float>& distances, std::vector<float>& gradients) {
+template <class F> double referenceRate(F field, std::size_t n, std::vector<float>& distances, std::vector<float>& gradients) {
     const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
     auto start = std::chrono::steady_clock::now();
     std::vector<std::thread> workers;
@@ -122,8 +122,7 @@ struct Rates {
 };
 
 // Median (and range) of `runs` calls of `measure`, which returns a rate.
-template <class M>
-Rates repeated(M measure, int runs = 5) {
+template <class M> Rates repeated(M measure, int runs = 5) {
     std::vector<double> rates;
     for (int k = 0; k < runs; ++k) rates.push_back(measure());
     std::sort(rates.begin(), rates.end());
@@ -139,10 +138,14 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "bench_sampling: %s\n", context.error().message.c_str());
         return 3;
     }
-    std::printf("sampling throughput, N = %zu per field (Mandelbulb N/8), pattern rand, value + 6-tap gradient; median [min, max] of 5 runs\n", n);
-    std::printf("GL: %s; reference: C++/GLM on %u threads, build type %s, this file built with %s\n\n", context.value()->info().renderer.c_str(),
-                std::max(1u, std::thread::hardware_concurrency()), SDFWB_BUILD_TYPE, SDFWB_BENCH_FLAGS);
-    std::printf("| field | sdfwb compute (samples/s) | first dispatch incl. JIT (s) | C++ reference (samples/s) | ratio | f difference p99 / max |\n");
+    std::printf("sampling throughput, N = %zu per field (Mandelbulb N/8), pattern rand, value + 6-tap gradient; median [min, "
+                "max] of 5 runs\n",
+                n);
+    std::printf("GL: %s; reference: C++/GLM on %u threads, build type %s, this file built with %s\n\n",
+                context.value()->info().renderer.c_str(), std::max(1u, std::thread::hardware_concurrency()), SDFWB_BUILD_TYPE,
+                SDFWB_BENCH_FLAGS);
+    std::printf("| field | sdfwb compute (samples/s) | first dispatch incl. JIT (s) | C++ reference (samples/s) | ratio | f "
+                "difference p99 / max |\n");
     std::printf("|---|---|---|---|---|---|\n");
     auto sampler = sampling::findSampler("rand", {});
     int fieldIndex = 0;
@@ -180,12 +183,13 @@ int main(int argc, char** argv) {
         // (Iterated fractals amplify llvmpipe's acos error: compare them by percentile.)
         std::vector<float> differences;
         for (std::size_t i = 0; i < fieldN; ++i)
-            if (std::isfinite(distances[i]) && std::isfinite(cpuDistances[i])) differences.push_back(std::abs(distances[i] - cpuDistances[i]));
+            if (std::isfinite(distances[i]) && std::isfinite(cpuDistances[i]))
+                differences.push_back(std::abs(distances[i] - cpuDistances[i]));
         std::sort(differences.begin(), differences.end());
         const float p99 = differences.empty() ? 0.0f : differences[differences.size() * 99 / 100];
         const float worst = differences.empty() ? 0.0f : differences.back();
-        std::printf("| %s | %.3g [%.3g, %.3g] | %.3f | %.3g [%.3g, %.3g] | %.2f | %.2g / %.2g |\n", field.name, gpu.median, gpu.low, gpu.high,
-                    jit, cpu.median, cpu.low, cpu.high, gpu.median / cpu.median, double(p99), double(worst));
+        std::printf("| %s | %.3g [%.3g, %.3g] | %.3f | %.3g [%.3g, %.3g] | %.2f | %.2g / %.2g |\n", field.name, gpu.median,
+                    gpu.low, gpu.high, jit, cpu.median, cpu.low, cpu.high, gpu.median / cpu.median, double(p99), double(worst));
         compute.releaseGl();
         ++fieldIndex;
     }

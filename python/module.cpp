@@ -74,8 +74,8 @@ shaders::PreparedSdf prepare(const std::string& sdf, const std::string& entry) {
 
 py::array_t<float> floatArray(std::vector<py::ssize_t> shape) { return py::array_t<float>(shape); }
 
-py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_t n, std::uint64_t seed, float time, float gradientStep,
-                std::uint32_t chunk, float surfaceTolerance, const std::string& entry) {
+py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_t n, std::uint64_t seed, float time,
+                float gradientStep, std::uint32_t chunk, float surfaceTolerance, const std::string& entry) {
     sampling::SamplingJob job;
     job.count = n;
     job.seed = seed;
@@ -196,7 +196,8 @@ py::list flagsList(const std::vector<sampling::AuditFlag>& flags) {
     return list;
 }
 
-py::dict audit(const std::string& sdf, std::uint64_t samples, std::uint64_t seed, float time, const std::string& entry, float probeDistance) {
+py::dict audit(const std::string& sdf, std::uint64_t samples, std::uint64_t seed, float time, const std::string& entry,
+               float probeDistance) {
     shaders::PreparedSdf prepared = prepare(sdf, entry);
     sampling::AuditOptions options;
     options.samples = samples;

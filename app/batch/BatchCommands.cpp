@@ -430,7 +430,8 @@ int runAudit(const AuditCommand& command, const OutputOptions& output) {
         for (const sampling::AuditFlag& f : flags) {
             nlohmann::json examples = nlohmann::json::array();
             for (const glm::vec3& e : f.examples) examples.push_back({e.x, e.y, e.z});
-            nlohmann::json item = {{"flag", f.name}, {"evidence", f.evidence}, {"share", f.share}, {"count", f.count}, {"examples", examples}};
+            nlohmann::json item = {
+                {"flag", f.name}, {"evidence", f.evidence}, {"share", f.share}, {"count", f.count}, {"examples", examples}};
             for (const auto& [name, value] : sampling::namedFigures(f)) item[name] = value;
             list.push_back(std::move(item));
         }
@@ -455,13 +456,25 @@ int runAudit(const AuditCommand& command, const OutputOptions& output) {
         if (!readout) { printError(readout.error().message); return kExitFailure; }
         const sampling::PlaneReadout& r = *readout;
         if (output.json) {
-            nlohmann::json json = {{"sdf", sdfPath->string()}, {"plane", {normal.x, normal.y, normal.z, command.planeOffset}},
-                                   {"resolution", r.resolution}, {"points", r.points}, {"minimum", r.minimum}, {"maximum", r.maximum},
-                                   {"lipschitz_max", r.lipschitzMax}, {"lipschitz_p99", r.lipschitz99}, {"share_above_one", r.shareAboveOne},
-                                   {"truncation_distance", r.truncationDistance ? nlohmann::json(*r.truncationDistance) : nlohmann::json(nullptr)},
-                                   {"discontinuities", r.discontinuities}, {"nan_count", r.nanCount}, {"histogram", r.histogram},
-                                   {"histogram_bin_width", 0.05}, {"safe_step_factor", r.safeStepFactor},
-                                   {"flags", flagsJson(r.flags)}, {"entry", sdf.signature.entry}, {"seconds", r.seconds}};
+            nlohmann::json json = {
+                {"sdf", sdfPath->string()},
+                {"plane", {normal.x, normal.y, normal.z, command.planeOffset}},
+                {"resolution", r.resolution},
+                {"points", r.points},
+                {"minimum", r.minimum},
+                {"maximum", r.maximum},
+                {"lipschitz_max", r.lipschitzMax},
+                {"lipschitz_p99", r.lipschitz99},
+                {"share_above_one", r.shareAboveOne},
+                {"truncation_distance", r.truncationDistance ? nlohmann::json(*r.truncationDistance) : nlohmann::json(nullptr)},
+                {"discontinuities", r.discontinuities},
+                {"nan_count", r.nanCount},
+                {"histogram", r.histogram},
+                {"histogram_bin_width", 0.05},
+                {"safe_step_factor", r.safeStepFactor},
+                {"flags", flagsJson(r.flags)},
+                {"entry", sdf.signature.entry},
+                {"seconds", r.seconds}};
             std::cout << json.dump(2) << "\n";
         } else if (!output.quiet) {
             std::printf("plane %.3g,%.3g,%.3g,%.3g of %s: %llu points (%dx%d grid), %.3f s\n", normal.x, normal.y, normal.z, command.planeOffset,
@@ -499,19 +512,35 @@ int runAudit(const AuditCommand& command, const OutputOptions& output) {
         nlohmann::json convergence = nlohmann::json::array();
         for (const auto& c : r.convergence)
             convergence.push_back({{"samples", c.samples}, {"lipschitz", c.lipschitz}, {"exactness_p99", c.exactnessP99}, {"seconds", c.seconds}});
-        nlohmann::json json = {{"sdf", sdfPath->string()}, {"verdict", r.verdict}, {"reason", r.reason}, {"lipschitz", r.lipschitz},
-                               {"lipschitz_max", r.lipschitzMax}, {"lipschitz_uncertainty", r.lipschitzUncertainty},
-                               {"safe_step_factor", r.safeStepFactor},
-                               {"truncation_distance", r.truncationDistance ? nlohmann::json(*r.truncationDistance) : nlohmann::json(nullptr)},
-                               {"nan_fraction", r.nanFraction}, {"nan_fraction_error", r.nanFractionError},
-                               {"discontinuities", r.discontinuities}, {"discontinuity_share", r.discontinuityShare},
-                               {"eikonal_error_mean", r.eikonalMean}, {"eikonal_error_p95", r.eikonalP95},
-                               {"surface_points", r.surfacePoints}, {"surface_spacing", r.surfaceSpacing},
-                               {"exactness_error_p99", r.exactnessP99}, {"exactness_error_max", r.exactnessMax},
-                               {"overestimate_share", r.overestimateShare}, {"surface_gradient", r.surfaceGradient},
-                               {"noise_floor", r.noiseFloor}, {"samples", r.samples}, {"scales", scales},
-                               {"convergence", convergence}, {"flags", flagsJson(r.flags)}, {"entry", sdf.signature.entry},
-                               {"probe_distance", options.probeDistance}, {"seconds", r.seconds}};
+        nlohmann::json json = {
+            {"sdf", sdfPath->string()},
+            {"verdict", r.verdict},
+            {"reason", r.reason},
+            {"lipschitz", r.lipschitz},
+            {"lipschitz_max", r.lipschitzMax},
+            {"lipschitz_uncertainty", r.lipschitzUncertainty},
+            {"safe_step_factor", r.safeStepFactor},
+            {"truncation_distance", r.truncationDistance ? nlohmann::json(*r.truncationDistance) : nlohmann::json(nullptr)},
+            {"nan_fraction", r.nanFraction},
+            {"nan_fraction_error", r.nanFractionError},
+            {"discontinuities", r.discontinuities},
+            {"discontinuity_share", r.discontinuityShare},
+            {"eikonal_error_mean", r.eikonalMean},
+            {"eikonal_error_p95", r.eikonalP95},
+            {"surface_points", r.surfacePoints},
+            {"surface_spacing", r.surfaceSpacing},
+            {"exactness_error_p99", r.exactnessP99},
+            {"exactness_error_max", r.exactnessMax},
+            {"overestimate_share", r.overestimateShare},
+            {"surface_gradient", r.surfaceGradient},
+            {"noise_floor", r.noiseFloor},
+            {"samples", r.samples},
+            {"scales", scales},
+            {"convergence", convergence},
+            {"flags", flagsJson(r.flags)},
+            {"entry", sdf.signature.entry},
+            {"probe_distance", options.probeDistance},
+            {"seconds", r.seconds}};
         std::cout << json.dump(2) << "\n";
     } else if (!output.quiet) {
         std::printf("%s: %s\n  %s\n\n", sdfPath->string().c_str(), r.verdict.c_str(), r.reason.c_str());

@@ -68,7 +68,7 @@ struct SampleCommand {
 int runSample(const SampleCommand& command, const OutputOptions& output);
 struct AuditCommand {
     std::string sdf;
-    std::string entry;         // as in RenderJob
+    std::string entry; // as in RenderJob
     std::uint64_t samples = 100000;
     std::uint64_t seed = 0;
     float time = 0.0f;
@@ -76,7 +76,7 @@ struct AuditCommand {
     float planeNormal[3] = {0.0f, 0.0f, 1.0f};
     float planeOffset = 0.0f;
     int resolution = 256;
-    float probeDistance = 3.0f;  // truncation: probe outward from the surface this far
+    float probeDistance = 3.0f; // truncation: probe outward from the surface this far
 };
 
 int runAudit(const AuditCommand& command, const OutputOptions& output);

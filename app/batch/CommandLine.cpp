@@ -104,9 +104,10 @@ CLI::Validator entryCheck() {
 }
 
 void addEntryOption(CLI::App& app, std::string& entry) {
-    app.add_option("--entry", entry,
-                   "the SDF's function: float NAME(vec3 p) or NAME(vec3 p, float time), or vec2/vec4 NAME(...) with the distance in .x "
-                   "(default: the file's `entry:` metadata, else sdf, else map, scene, sceneSDF, sdScene, de or DE)")
+    app.add_option(
+           "--entry", entry,
+           "the SDF's function: float NAME(vec3 p) or NAME(vec3 p, float time), or vec2/vec4 NAME(...) with the distance in .x "
+           "(default: the file's `entry:` metadata, else sdf, else map, scene, sceneSDF, sdScene, de or DE)")
         ->check(entryCheck());
 }
 
@@ -306,8 +307,11 @@ int runAuditCommand(const Arguments& arguments, Mode mode) {
     app.add_option("--time", command.time, "time in seconds for animated SDFs")->capture_default_str()->check(numberCheck(false));
     app.add_option("--plane", plane, "NX,NY,NZ,OFFSET: readouts for this cutting plane instead of the volume audit");
     app.add_option("--resolution", command.resolution, "grid side on the plane")->capture_default_str()->check(CLI::Range(2, 4096));
-    app.add_option("--probe-distance", command.probeDistance, "truncation: probe outward from the surface this far (plateaus beyond the cube count)")
-        ->capture_default_str()->check(numberCheck(true))->check(CLI::Range(0.1f, 100.0f));
+    app.add_option("--probe-distance", command.probeDistance,
+                   "truncation: probe outward from the surface this far (plateaus beyond the cube count)")
+        ->capture_default_str()
+        ->check(numberCheck(true))
+        ->check(CLI::Range(0.1f, 100.0f));
     addOutputFlags(app, output);
     if (auto exit = parse(app, "--batch audit", arguments)) return *exit;
     if (!plane.empty()) {
@@ -423,7 +427,8 @@ int runJobText(const std::string& text, const std::string& name, Mode mode) {
         }
         if (words->empty()) continue;
         if (!findBatchCommand(words->front())) {
-            printError(name + ":" + std::to_string(lineNumber) + ": unknown command '" + words->front() + "' (" + batchCommandNames() + ")");
+            printError(name + ":" + std::to_string(lineNumber) + ": unknown command '" + words->front() + "' (" +
+                       batchCommandNames() + ")");
             return kExitUsage;
         }
         steps.emplace_back(lineNumber, std::move(*words));
@@ -467,7 +472,10 @@ std::optional<int> commandLine(const Arguments& arguments, Mode mode) {
     if (first == "--help" || first == "-h") { std::printf("%s", kOverview); return kExitOk; }
     if (first == "--version") { std::printf("sdfwb %s\n", SDFWB_VERSION); return kExitOk; }
     if (first == "--batch") {
-        if (arguments.size() < 2) { printError("--batch: missing command (" + batchCommandNames() + ") or job file; see sdfwb --help"); return kExitUsage; }
+        if (arguments.size() < 2) {
+            printError("--batch: missing command (" + batchCommandNames() + ") or job file; see sdfwb --help");
+            return kExitUsage;
+        }
         const std::string& command = arguments[1];
         if (command == "--help" || command == "-h") { std::printf("%s", kOverview); return kExitOk; }
         const Arguments rest(arguments.begin() + 2, arguments.end());

@@ -32,12 +32,12 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QLabel>
-#include <QRegularExpressionValidator>
-#include <QToolBar>
 #include <QLineEdit>
 #include <QMenuBar>
+#include <QRegularExpressionValidator>
 #include <QSettings>
 #include <QStatusBar>
+#include <QToolBar>
 
 namespace sdfwb::app {
 
@@ -107,7 +107,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_plane = new PlaneController(m_planePanel, m_viewport, [this] { return m_document->path(); }, this);
     m_files = new FileController(this, m_editor, m_document, m_viewport, this);
     // The entry point: every child job (plane readouts, sampling, video) gets the document's --entry.
-    auto entryArguments = [this] { return m_document->entry().isEmpty() ? QStringList{} : QStringList{"--entry", m_document->entry()}; };
+    auto entryArguments = [this] {
+        return m_document->entry().isEmpty() ? QStringList{} : QStringList{"--entry", m_document->entry()};
+    };
     m_sampling->setSdfArguments(entryArguments);
     m_exports->setSdfArguments(entryArguments);
     m_plane->setSdfArguments(entryArguments);
@@ -119,8 +121,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         m_entry->setObjectName("entry");
         m_entry->setMaximumWidth(220);
         m_entry->setPlaceholderText(tr("automatic"));
-        m_entry->setToolTip(tr("The function that is the SDF: float NAME(vec3 p) or NAME(vec3 p, float time), or vec2/vec4 NAME(...) with the "
-                               "distance in .x. Empty: the file's `entry:` metadata, else sdf, else map, scene, sceneSDF, sdScene, de or DE."));
+        m_entry->setToolTip(
+            tr("The function that is the SDF: float NAME(vec3 p) or NAME(vec3 p, float time), or vec2/vec4 NAME(...) with the "
+               "distance in .x. Empty: the file's `entry:` metadata, else sdf, else map, scene, sceneSDF, sdScene, de or DE."));
         m_entry->setValidator(new QRegularExpressionValidator(QRegularExpression("[A-Za-z_][A-Za-z0-9_]*"), m_entry));
         bar->addWidget(m_entry);
         connect(m_entry, &QLineEdit::editingFinished, this, [this] {
@@ -176,7 +179,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_document, &SdfDocument::sdfApplied, this, [this] {
         // Shows what "automatic" chose, and how its value is read.
         const shaders::SdfSignature& s = m_document->signature();
-        m_entry->setPlaceholderText(tr("automatic: %1%2").arg(QString::fromStdString(s.entry), s.returnType == "float" ? QString() : QString(" (.x)")));
+        m_entry->setPlaceholderText(
+            tr("automatic: %1%2").arg(QString::fromStdString(s.entry), s.returnType == "float" ? QString() : QString(" (.x)")));
     });
     connect(m_document, &SdfDocument::signaturesChanged, this,
             [this](const QStringList& signatures) { m_editor->setCompletionFunctions(m_librarySignatures, signatures); });

@@ -94,7 +94,7 @@ private:
     QLabel* m_frameTime = nullptr;
     QLabel* m_precision = nullptr;  // float32 floor against the hit tolerance of the current view
     QLabel* m_diagnosticSummary = nullptr;
-    QLineEdit* m_entry = nullptr;  // the SDF's function (--entry); empty: automatic
+    QLineEdit* m_entry = nullptr; // the SDF's function (--entry); empty: automatic
     QActionGroup* m_shadingGroup = nullptr;
     QAction* m_aoAction = nullptr;
     QAction* m_overlayAction = nullptr;

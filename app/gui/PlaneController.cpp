@@ -66,7 +66,8 @@ PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWi
                 finding.evidence = item["evidence"].toString();
                 for (const QJsonValue& point : item["examples"].toArray()) {
                     const QJsonArray xyz = point.toArray();
-                    finding.examples.push_back(glm::vec3(float(xyz[0].toDouble()), float(xyz[1].toDouble()), float(xyz[2].toDouble())));
+                    finding.examples.push_back(
+                        glm::vec3(float(xyz[0].toDouble()), float(xyz[1].toDouble()), float(xyz[2].toDouble())));
                 }
                 view.findings.push_back(std::move(finding));
             }

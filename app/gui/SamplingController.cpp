@@ -33,7 +33,9 @@ SamplingController::SamplingController(QWidget* window, std::function<QString()>
 
 void SamplingController::setExecutable(const QString& path) { m_process->setExecutable(path); }
 
-void SamplingController::setSdfArguments(std::function<QStringList()> provider) { m_process->setSdfArguments(std::move(provider)); }
+void SamplingController::setSdfArguments(std::function<QStringList()> provider) {
+    m_process->setSdfArguments(std::move(provider));
+}
 
 bool SamplingController::isRunning() const { return m_process->isRunning(); }
 

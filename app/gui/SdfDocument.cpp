@@ -1,9 +1,9 @@
 #include "SdfDocument.h"
 
 #include <core/Paths.h>
+#include <renderer/SdfRenderer.h>
 #include <shaders/GlslChecker.h>
 #include <shaders/TracerComposer.h>
-#include <renderer/SdfRenderer.h>
 #include <widgets/ViewportWidget.h>
 
 #include <QCoreApplication>
@@ -35,9 +35,11 @@ void SdfDocument::startCheck(const QString& text) {
     std::string path = m_path.toStdString();
     std::string entry = m_entry.toStdString();
     // glslang checks the variant the viewport will compile (shading, AO, plane, markers, ...).
-    const shaders::TracerFeatures features = renderer::tracerFeatures(m_viewport->shading(), m_viewport->trace(), m_viewport->plane());
+    const shaders::TracerFeatures features =
+        renderer::tracerFeatures(m_viewport->shading(), m_viewport->trace(), m_viewport->plane());
     QPointer<SdfDocument> self(this);
-    QThreadPool::globalInstance()->start([self, generation, source = std::move(source), path = std::move(path), entry = std::move(entry), features] {
+    QThreadPool::globalInstance()->start([self, generation, source = std::move(source), path = std::move(path),
+                                          entry = std::move(entry), features] {
         shaders::IncludeOptions options;
         options.libraryRoots = {paths::shaderLibraryRoot(), paths::datasetRoot()};
         shaders::PreparedSdf prepared = shaders::prepareSdf(source, path.empty() ? "<editor>" : path, path, options, entry);

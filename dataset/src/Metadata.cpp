@@ -59,7 +59,9 @@ Expected<Metadata> parseMetadata(const std::string& text, const std::string& fil
         int keyIndex = -1;
         for (int i = 0; i < 8; ++i)
             if (key == keys[i]) keyIndex = i;
-        if (keyIndex < 0) return makeError(where() + "unknown metadata key '" + key + "' (name, category, type, animated, author, license, notes, entry)");
+        if (keyIndex < 0)
+            return makeError(where() + "unknown metadata key '" + key +
+                             "' (name, category, type, animated, author, license, notes, entry)");
         if (seen[keyIndex]) return makeError(where() + "metadata key '" + key + "' given twice");
         seen[keyIndex] = true;
         lastValue = nullptr;

@@ -34,7 +34,8 @@ bool FrameScaler::frameDone(int width, int height, float scale, double milliseco
 }
 
 void FrameScaler::startInteraction() {
-    if (m_fullFrameMilliseconds > 0.0) m_scale = std::clamp(float(std::sqrt(0.8 * m_frameBudget / m_fullFrameMilliseconds)), kMinimumScale, 1.0f);
+    if (m_fullFrameMilliseconds > 0.0)
+        m_scale = std::clamp(float(std::sqrt(0.8 * m_frameBudget / m_fullFrameMilliseconds)), kMinimumScale, 1.0f);
 }
 
 double FrameScaler::estimateFullFrame(double probeMilliseconds, std::optional<std::pair<float, double>> larger) {

@@ -23,7 +23,8 @@ void bindNoiseTextureIfUsed(GLuint program, GlTexture& texture) {
         glBindTexture(GL_TEXTURE_2D, id);
         const std::vector<std::uint8_t> texels = noiseTexels();
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kNoiseTextureSize, kNoiseTextureSize, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kNoiseTextureSize, kNoiseTextureSize, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                     texels.data());
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);

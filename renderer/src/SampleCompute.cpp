@@ -41,8 +41,8 @@ std::uint32_t squareSide(std::uint64_t count) {
 struct SampleCompute::Impl {
     GlProgram program;
     GlBuffer buffers[3];
-    GlBuffer inputs;  // caller's points (analysis/points.glsl)
-    GlTexture noise;  // g3d_uniformRandom, made when the program reads it
+    GlBuffer inputs; // caller's points (analysis/points.glsl)
+    GlTexture noise; // g3d_uniformRandom, made when the program reads it
     std::uint32_t capacity = 0;
     std::string source;
     GLint location(const char* name) const { return glGetUniformLocation(program.id(), name); }
@@ -129,11 +129,14 @@ Expected<void> SampleCompute::run(const SampleUniforms& uniforms, std::uint32_t 
     glUniform1ui(m_impl->location("sdfwb_cubeSide"), cubeSide(uniforms.sampleCount));
     glUniform1ui(m_impl->location("sdfwb_squareSide"), squareSide(uniforms.sampleCount));
     if (GLint location = m_impl->location("sdfwb_time"); location >= 0) glUniform1f(location, uniforms.time);
-    if (GLint location = m_impl->location("g3d_SceneTime"); location >= 0) glUniform1f(location, uniforms.time);  // declared by the file
+    if (GLint location = m_impl->location("g3d_SceneTime"); location >= 0)
+        glUniform1f(location, uniforms.time); // declared by the file
     bindNoiseTextureIfUsed(m_impl->program.id(), m_impl->noise);
     if (GLint location = m_impl->location("sdfwb_parameters"); location >= 0) glUniform4fv(location, 4, uniforms.parameters);
-    if (GLint location = m_impl->location("sdfwb_surfaceTolerance"); location >= 0) glUniform1f(location, uniforms.surfaceTolerance);
-    if (GLint location = m_impl->location("sdfwb_tetrahedralGradient"); location >= 0) glUniform1i(location, uniforms.tetrahedralGradient ? 1 : 0);
+    if (GLint location = m_impl->location("sdfwb_surfaceTolerance"); location >= 0)
+        glUniform1f(location, uniforms.surfaceTolerance);
+    if (GLint location = m_impl->location("sdfwb_tetrahedralGradient"); location >= 0)
+        glUniform1i(location, uniforms.tetrahedralGradient ? 1 : 0);
     glUniform1ui(m_impl->location("sdfwb_chunkFirst"), first);
     glUniform1ui(m_impl->location("sdfwb_chunkCount"), count);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingPositions, m_impl->buffers[0].id());
@@ -146,7 +149,8 @@ Expected<void> SampleCompute::run(const SampleUniforms& uniforms, std::uint32_t 
             m_impl->inputs = GlBuffer(id);
         }
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, m_impl->inputs.id());
-        glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(count) * 12, uniforms.inputPoints + 3 * std::size_t(first), GL_STREAM_DRAW);
+        glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(count) * 12, uniforms.inputPoints + 3 * std::size_t(first),
+                     GL_STREAM_DRAW);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingInputs, m_impl->inputs.id());
     }
     glDispatchCompute((count + 63u) / 64u, 1, 1);

@@ -54,7 +54,7 @@ struct SdfRenderer::Impl {
     std::string empty;
 
     GlTexture matcap;
-    GlTexture noise;  // g3d_uniformRandom, made when a program reads it
+    GlTexture noise; // g3d_uniformRandom, made when a program reads it
     std::string matcapName;
     GlFramebuffer lowFramebuffer;
     GlTexture lowColor;
@@ -239,7 +239,7 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
         glUniform1f(v->location("sdfwb_boxMargin"), m_trace.boxMargin);
         glUniform3f(v->location("sdfwb_background"), m_shading.background.r, m_shading.background.g, m_shading.background.b);
         if (GLint location = v->location("sdfwb_time"); location >= 0) glUniform1f(location, time);
-        if (GLint location = v->location("g3d_SceneTime"); location >= 0) glUniform1f(location, time);  // declared by the file
+        if (GLint location = v->location("g3d_SceneTime"); location >= 0) glUniform1f(location, time); // declared by the file
         bindNoiseTextureIfUsed(v->program.id(), m_impl->noise);
         if (GLint location = v->location("sdfwb_relaxation"); location >= 0) glUniform1f(location, m_trace.overRelaxation);
         if (m_plane.enabled) {
@@ -248,8 +248,10 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
                 if (GLint location = v->location(name); location >= 0) glUniform3f(location, normal.x, normal.y, normal.z);
             for (const char* name : {"sdfwb_planeOffset", "sdfwb_clipOffset"})
                 if (GLint location = v->location(name); location >= 0) glUniform1f(location, m_plane.offset);
-            if (GLint location = v->location("sdfwb_contourSpacing"); location >= 0) glUniform1f(location, std::max(m_plane.contourSpacing, 1e-6f));
-            if (GLint location = v->location("sdfwb_rampDistance"); location >= 0) glUniform1f(location, std::max(m_plane.rampDistance, 1e-6f));
+            if (GLint location = v->location("sdfwb_contourSpacing"); location >= 0)
+                glUniform1f(location, std::max(m_plane.contourSpacing, 1e-6f));
+            if (GLint location = v->location("sdfwb_rampDistance"); location >= 0)
+                glUniform1f(location, std::max(m_plane.rampDistance, 1e-6f));
         }
         if (GLint location = v->location("sdfwb_lightDirection"); location >= 0) {
             glm::vec3 light = glm::normalize(m_shading.lightDirection);

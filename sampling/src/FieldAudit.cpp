@@ -116,8 +116,8 @@ Expected<SampleSet> evaluateAt(const shaders::PreparedSdf& sdf, const AuditOptio
 
 struct JumpCandidate {
     glm::vec3 position;
-    glm::vec3 across;  // unit: the gradient's direction at the step that saw the jump, which crosses it
-    float step;        // that difference step: the jump lies within about this distance
+    glm::vec3 across; // unit: the gradient's direction at the step that saw the jump, which crosses it
+    float step;       // that difference step: the jump lies within about this distance
 };
 
 // Confirms and measures jumps by line searches across each candidate: 64 points over 3 steps along
@@ -125,8 +125,8 @@ struct JumpCandidate {
 // the same rise. A continuous field's rise shrinks with the interval (even an infinitely steep one
 // like sqrt near 0 shrinks 8-fold here); a jump does not. Rises within 4x the noise floor are
 // rounding. Examples are the midpoints of the final intervals: on the jump, within 1/63 of it.
-Expected<AuditFlag> measureJumps(const shaders::PreparedSdf& sdf, const AuditOptions& options, const std::vector<JumpCandidate>& candidates,
-                                 float noiseFloor) {
+Expected<AuditFlag> measureJumps(const shaders::PreparedSdf& sdf, const AuditOptions& options,
+                                 const std::vector<JumpCandidate>& candidates, float noiseFloor) {
     constexpr int kLine = 64;
     AuditFlag flag;
     flag.name = "discontinuous";
@@ -167,7 +167,8 @@ Expected<AuditFlag> measureJumps(const shaders::PreparedSdf& sdf, const AuditOpt
         if (!(rise > floor) || rise < 0.5f * intervals[c].rise) continue;
         jumps.push_back(rise);
         const float* p = &points[3 * (std::size_t(kLine) * c + std::size_t(k))];
-        if (flag.examples.size() < kMaxExamples) flag.examples.push_back(0.5f * (glm::vec3(p[0], p[1], p[2]) + glm::vec3(p[3], p[4], p[5])));
+        if (flag.examples.size() < kMaxExamples)
+            flag.examples.push_back(0.5f * (glm::vec3(p[0], p[1], p[2]) + glm::vec3(p[3], p[4], p[5])));
     }
     flag.count = jumps.size();
     if (!jumps.empty()) {
@@ -182,13 +183,15 @@ Expected<AuditFlag> measureJumps(const shaders::PreparedSdf& sdf, const AuditOpt
 // some probe on, f stays put (changes by less than 0.02 per unit of distance, up to noise) at a
 // positive value: the field has stopped growing. Returns a "truncated" flag whose count is the
 // number of rays that end on one (0: none).
-Expected<AuditFlag> probeOutward(const shaders::PreparedSdf& sdf, const AuditOptions& options, const SampleSet& surface, float noiseFloor) {
+Expected<AuditFlag> probeOutward(const shaders::PreparedSdf& sdf, const AuditOptions& options, const SampleSet& surface,
+                                 float noiseFloor) {
     AuditFlag flag;
     flag.name = "truncated";
     constexpr int kProbes = 32;
     const float reach = std::max(options.probeDistance, 0.1f);
     float distances[kProbes];
-    for (int k = 0; k < kProbes; ++k) distances[k] = 0.01f + (reach - 0.01f) * float(k * k) / float((kProbes - 1) * (kProbes - 1));
+    for (int k = 0; k < kProbes; ++k)
+        distances[k] = 0.01f + (reach - 0.01f) * float(k * k) / float((kProbes - 1) * (kProbes - 1));
     std::vector<float> points;
     std::vector<glm::vec3> origins, normals;
     for (std::size_t i = 0; i < surface.size() && origins.size() < 2048; ++i) {
@@ -222,11 +225,12 @@ Expected<AuditFlag> probeOutward(const shaders::PreparedSdf& sdf, const AuditOpt
         flag.maximum = *std::max_element(plateauValues.begin(), plateauValues.end());
         flag.start = percentile(starts, 0.5);
         char text[320];
-        std::snprintf(text, sizeof text,
-                      "the field stops growing at %.4g: %llu of %llu rays probed outward from the surface (to distance %.3g) end on a "
-                      "plateau (|f| changes < 0.02 per unit) that starts %.3g from the surface (median)",
-                      double(flag.value), (unsigned long long)flag.count, (unsigned long long)origins.size(), double(reach),
-                      double(flag.start));
+        std::snprintf(
+            text, sizeof text,
+            "the field stops growing at %.4g: %llu of %llu rays probed outward from the surface (to distance %.3g) end on a "
+            "plateau (|f| changes < 0.02 per unit) that starts %.3g from the surface (median)",
+            double(flag.value), (unsigned long long)flag.count, (unsigned long long)origins.size(), double(reach),
+            double(flag.start));
         flag.evidence = text;
     }
     return flag;
@@ -313,13 +317,14 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
     // points within the finest step of the jump.
     std::uint64_t tested = 0;
     std::vector<JumpCandidate> candidates;
-    std::uint64_t suspects = 0;  // points whose quotient at a coarser step outgrows the finest one
+    std::uint64_t suspects = 0; // points whose quotient at a coarser step outgrows the finest one
     for (const std::vector<SampleSet>* sets : {&random, &near})
         for (std::size_t i = 0; i < n; ++i) {
             if (!finiteRow((*sets)[0], i) || !finiteRow((*sets)[1], i) || !finiteRow((*sets)[2], i)) continue;
             ++tested;
             const float q[3] = {gradientLength((*sets)[0], i), gradientLength((*sets)[1], i), gradientLength((*sets)[2], i)};
-            const glm::vec3 position((*sets)[0].positions[3 * i], (*sets)[0].positions[3 * i + 1], (*sets)[0].positions[3 * i + 2]);
+            const glm::vec3 position((*sets)[0].positions[3 * i], (*sets)[0].positions[3 * i + 1],
+                                     (*sets)[0].positions[3 * i + 2]);
             // Within the finest step of a jump: that quotient is J / 2h, far above the coarse one.
             if (q[2] > 3.0f * std::max(q[0], 0.1f) && q[2] > 2.0f && q[2] > q[0] + noiseSlope(3)) {
                 ++report.discontinuities;
@@ -332,7 +337,8 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
                 if (q[s] > 3.0f * std::max(q[2], 0.1f) + noiseSlope(std::size_t(s) + 1) && q[s] > 2.0f) {
                     ++suspects;
                     const float* g = &(*sets)[std::size_t(s)].gradients[3 * i];
-                    if (candidates.size() < 4096) candidates.push_back({position, glm::vec3(g[0], g[1], g[2]) / q[s], 2.0f * Scales::kSteps[s]});
+                    if (candidates.size() < 4096)
+                        candidates.push_back({position, glm::vec3(g[0], g[1], g[2]) / q[s], 2.0f * Scales::kSteps[s]});
                     break;
                 }
         }
@@ -345,12 +351,13 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
             discontinuous = std::move(*jumps);
             discontinuous->share = double(discontinuous->count) / double(std::max<std::uint64_t>(tested, 1));
             char text[320];
-            std::snprintf(text, sizeof text,
-                          "f jumps by %.3g (median; largest %.3g): %llu jumps confirmed by line searches from %llu of %llu probed points "
-                          "whose difference quotients grow as the step shrinks (largest %.3g at scale 0.02, %.3g at 0.0002)",
-                          double(discontinuous->value), double(discontinuous->maximum), (unsigned long long)discontinuous->count,
-                          (unsigned long long)(report.discontinuities + suspects), (unsigned long long)tested, double(report.scales[1].max),
-                          double(report.scales[3].max));
+            std::snprintf(
+                text, sizeof text,
+                "f jumps by %.3g (median; largest %.3g): %llu jumps confirmed by line searches from %llu of %llu probed points "
+                "whose difference quotients grow as the step shrinks (largest %.3g at scale 0.02, %.3g at 0.0002)",
+                double(discontinuous->value), double(discontinuous->maximum), (unsigned long long)discontinuous->count,
+                (unsigned long long)(report.discontinuities + suspects), (unsigned long long)tested, double(report.scales[1].max),
+                double(report.scales[3].max));
             discontinuous->evidence = text;
         }
     }
@@ -366,10 +373,11 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
         for (const std::vector<SampleSet>* sets : {&random, &near})
             for (std::size_t i = 0; i < n; ++i) {
                 if (!finiteRow((*sets)[0], i) || !finiteRow((*sets)[1], i) || !finiteRow((*sets)[2], i)) continue;
-                const float q0 = gradientLength((*sets)[0], i), q1 = gradientLength((*sets)[1], i), q2 = gradientLength((*sets)[2], i);
+                const float q0 = gradientLength((*sets)[0], i), q1 = gradientLength((*sets)[1], i),
+                            q2 = gradientLength((*sets)[2], i);
                 const float allowed = 1.5f * q2 + noiseSlope(3) + 0.05f;
-                if (q0 > allowed || q1 > allowed) continue;  // a jump within the coarser steps
-                if (q2 > 3.0f * std::max(q0, 0.1f) && q2 > 2.0f) continue;  // a jump within the finest step
+                if (q0 > allowed || q1 > allowed) continue;                // a jump within the coarser steps
+                if (q2 > 3.0f * std::max(q0, 0.1f) && q2 > 2.0f) continue; // a jump within the finest step
                 // Beside a jump, a small one (where the two sides nearly agree) still lifts the
                 // coarser quotients a little: there the per-point estimate takes the smaller.
                 unaffected[0].push_back(discontinuous ? std::min(q0 - noiseSlope(1), q1 - noiseSlope(2)) + noiseSlope(1) : q0);
@@ -377,7 +385,8 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
                 ++counted;
                 if (std::min(q0, q1) > 1.05f + noiseSlope(2)) {
                     ++above;
-                    steepest.push_back({q1, glm::vec3((*sets)[1].positions[3 * i], (*sets)[1].positions[3 * i + 1], (*sets)[1].positions[3 * i + 2])});
+                    steepest.push_back({q1, glm::vec3((*sets)[1].positions[3 * i], (*sets)[1].positions[3 * i + 1],
+                                                      (*sets)[1].positions[3 * i + 2])});
                 }
             }
         report.lipschitz = percentile(unaffected[0], 0.999) - noiseSlope(1);
@@ -396,10 +405,11 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
             std::sort(steepest.begin(), steepest.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
             for (std::size_t k = 0; k < steepest.size() && k < kMaxExamples; ++k) flag.examples.push_back(steepest[k].second);
             char text[256];
-            std::snprintf(text, sizeof text,
-                          "|grad f| reaches %.4g > 1 (99.9th percentile; largest %.4g) at %.3g %% of probed points: sphere tracing needs a "
-                          "step factor of %.3g",
-                          double(report.lipschitz), double(report.lipschitzMax), 100.0 * flag.share, double(report.safeStepFactor));
+            std::snprintf(
+                text, sizeof text,
+                "|grad f| reaches %.4g > 1 (99.9th percentile; largest %.4g) at %.3g %% of probed points: sphere tracing needs a "
+                "step factor of %.3g",
+                double(report.lipschitz), double(report.lipschitzMax), 100.0 * flag.share, double(report.safeStepFactor));
             flag.evidence = text;
             report.flags.push_back(std::move(flag));
         }
@@ -415,7 +425,8 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
         if (gradientLength(random[0], i) < 0.02f) {
             flatValues.push_back(random[0].distances[i]);
             if (flatPoints.size() < kMaxExamples)
-                flatPoints.push_back(glm::vec3(random[0].positions[3 * i], random[0].positions[3 * i + 1], random[0].positions[3 * i + 2]));
+                flatPoints.push_back(
+                    glm::vec3(random[0].positions[3 * i], random[0].positions[3 * i + 1], random[0].positions[3 * i + 2]));
         }
     }
     // ...and along rays from the surface outward, to options.probeDistance: a plateau that lies
@@ -436,7 +447,8 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
         flag.share = double(flatValues.size()) / double(positive);
         flag.examples = flatPoints;
         char text[256];
-        std::snprintf(text, sizeof text, "the field stops growing at about %.4g: |grad f| < 0.02 at %.3g %% of the cube's outside points",
+        std::snprintf(text, sizeof text,
+                      "the field stops growing at about %.4g: |grad f| < 0.02 at %.3g %% of the cube's outside points",
                       double(flag.value), 100.0 * flag.share);
         flag.evidence = text;
         report.truncationDistance = flag.value;
@@ -520,7 +532,8 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
         flag.share = report.nanFraction;
         for (std::size_t i = 0; i < n && flag.examples.size() < kMaxExamples; ++i)
             if (!finiteRow(random[1], i))
-                flag.examples.push_back(glm::vec3(random[1].positions[3 * i], random[1].positions[3 * i + 1], random[1].positions[3 * i + 2]));
+                flag.examples.push_back(
+                    glm::vec3(random[1].positions[3 * i], random[1].positions[3 * i + 1], random[1].positions[3 * i + 2]));
         char text[160];
         std::snprintf(text, sizeof text, "%.3g %% of random points (%llu of %llu) give NaN or Inf", 100.0 * report.nanFraction,
                       (unsigned long long)bad, (unsigned long long)n);
@@ -530,7 +543,9 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
     // Most severe first: the verdict is the first.
     static const char* const severity[] = {"nan", "discontinuous", "truncated", "non-conservative"};
     std::stable_sort(report.flags.begin(), report.flags.end(), [](const AuditFlag& a, const AuditFlag& b) {
-        auto rank = [](const std::string& name) { return std::find(std::begin(severity), std::end(severity), name) - std::begin(severity); };
+        auto rank = [](const std::string& name) {
+            return std::find(std::begin(severity), std::end(severity), name) - std::begin(severity);
+        };
         return rank(a.name) < rank(b.name);
     });
 
@@ -566,7 +581,8 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
                       double(report.exactnessP99), double(report.exactnessMax), double(exactTolerance), double(2.0f * exactTolerance));
         report.reason = text;
     }
-    for (std::size_t k = 1; k < report.flags.size(); ++k) report.reason += "; also " + report.flags[k].name + ": " + report.flags[k].evidence;
+    for (std::size_t k = 1; k < report.flags.size(); ++k)
+        report.reason += "; also " + report.flags[k].name + ": " + report.flags[k].evidence;
     // Warnings that go with any verdict.
     if (report.surfacePoints >= 16 && report.surfaceGradient < 0.1f) {
         std::snprintf(text, sizeof text,
@@ -658,7 +674,9 @@ Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 n
     std::vector<float> flat, jumps;
     std::vector<glm::vec3> flatPoints, jumpPoints, nanPoints;
     std::vector<std::pair<float, glm::vec3>> steep;
-    auto pointAt = [](const SampleSet& set, std::size_t i) { return glm::vec3(set.positions[3 * i], set.positions[3 * i + 1], set.positions[3 * i + 2]); };
+    auto pointAt = [](const SampleSet& set, std::size_t i) {
+        return glm::vec3(set.positions[3 * i], set.positions[3 * i + 1], set.positions[3 * i + 2]);
+    };
     for (std::size_t i = 0; i < sets[1].size(); ++i) {
         const float* p = &sets[1].positions[3 * i];
         if (std::max({std::abs(p[0]), std::abs(p[1]), std::abs(p[2])}) > 1.0f) continue;
@@ -727,32 +745,52 @@ Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 n
     spread(flatPoints);
     char text[256];
     if (readout.nanCount > 0) {
-        AuditFlag flag{"nan", "", 0.0f, 0.0f, 0.0f, double(readout.nanCount) / double(std::max<std::uint64_t>(readout.points, 1)),
-                       readout.nanCount, nanPoints};
+        AuditFlag flag{"nan",
+                       "",
+                       0.0f,
+                       0.0f,
+                       0.0f,
+                       double(readout.nanCount) / double(std::max<std::uint64_t>(readout.points, 1)),
+                       readout.nanCount,
+                       nanPoints};
         std::snprintf(text, sizeof text, "%llu of %llu plane points give NaN or Inf", (unsigned long long)readout.nanCount,
                       (unsigned long long)readout.points);
         flag.evidence = text;
         readout.flags.push_back(std::move(flag));
     }
     if (!jumps.empty()) {
-        AuditFlag flag{"discontinuous", "", percentile(jumps, 0.5), *std::max_element(jumps.begin(), jumps.end()), 0.0f,
-                       double(jumps.size()) / double(std::max<std::size_t>(slopes.size(), 1)), jumps.size(), jumpPoints};
+        AuditFlag flag{"discontinuous",
+                       "",
+                       percentile(jumps, 0.5),
+                       *std::max_element(jumps.begin(), jumps.end()),
+                       0.0f,
+                       double(jumps.size()) / double(std::max<std::size_t>(slopes.size(), 1)),
+                       jumps.size(),
+                       jumpPoints};
         std::snprintf(text, sizeof text, "f jumps by %.3g (median; largest %.3g) between %llu pairs of neighbouring grid points",
                       double(flag.value), double(flag.maximum), (unsigned long long)flag.count);
         flag.evidence = text;
         readout.flags.push_back(std::move(flag));
     }
     if (readout.truncationDistance) {
-        AuditFlag flag{"truncated", "", *readout.truncationDistance, percentile(flat, 0.95), 0.0f, double(flat.size()) / double(positive),
-                       flat.size(), flatPoints};
-        std::snprintf(text, sizeof text, "the field stops growing at about %.4g: |grad f| < 0.02 on %.3g %% of the plane outside the shape",
+        AuditFlag flag{"truncated",
+                       "",
+                       *readout.truncationDistance,
+                       percentile(flat, 0.95),
+                       0.0f,
+                       double(flat.size()) / double(positive),
+                       flat.size(),
+                       flatPoints};
+        std::snprintf(text, sizeof text,
+                      "the field stops growing at about %.4g: |grad f| < 0.02 on %.3g %% of the plane outside the shape",
                       double(flag.value), 100.0 * flag.share);
         flag.evidence = text;
         readout.flags.push_back(std::move(flag));
     }
     if (readout.lipschitz99 > 1.05f) {
         std::sort(steep.begin(), steep.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-        AuditFlag flag{"non-conservative", "", readout.lipschitz99, readout.lipschitzMax, 0.0f, readout.shareAboveOne, steep.size(), {}};
+        AuditFlag flag{"non-conservative", "", readout.lipschitz99, readout.lipschitzMax, 0.0f, readout.shareAboveOne,
+                       steep.size(),       {}};
         for (std::size_t k = 0; k < steep.size() && k < kMaxExamples; ++k) flag.examples.push_back(steep[k].second);
         std::snprintf(text, sizeof text, "|grad f| reaches %.4g (99th percentile; largest %.4g) on the plane: step factor %.3g",
                       double(flag.value), double(flag.maximum), double(readout.safeStepFactor));

@@ -77,9 +77,10 @@ SdfSignature detectSignature(const std::string& stripped, const std::string& ent
     signature.entry = entry;
     if (!isIdentifier(entry)) return signature;
     // A definition (with a body), not a prototype. vec3 synonyms of the G3D dialect count.
-    const std::regex definition(
-        R"(\b(float|vec2|vec3|vec4)\s+)" + entry + R"(\s*\(\s*((?:in\s+|const\s+|highp\s+|mediump\s+)*)(vec3|Point3|Vector3|float3)\s+\w+\s*)"
-        R"((,\s*((?:in\s+|const\s+|highp\s+)*)float\s+\w+\s*)?\)\s*\{)", kLinearRegex);
+    const std::regex definition(R"(\b(float|vec2|vec3|vec4)\s+)" + entry +
+                                    R"(\s*\(\s*((?:in\s+|const\s+|highp\s+|mediump\s+)*)(vec3|Point3|Vector3|float3)\s+\w+\s*)"
+                                    R"((,\s*((?:in\s+|const\s+|highp\s+)*)float\s+\w+\s*)?\)\s*\{)",
+                                kLinearRegex);
     // Tried only at the word before each occurrence of the name: searching from every position of
     // a long text was the slow part of preparing one (1.8 s for 10 MB).
     std::smatch match;
@@ -160,15 +161,17 @@ std::vector<std::string> functionSignatures(const std::string& text) {
 }
 
 bool CompatNeeds::usesTimeSymbol() const {
-    return std::find_if(symbols.begin(), symbols.end(), [](const std::string& s) { return s == "g3d_SceneTime" || s == "iTime"; }) !=
-           symbols.end();
+    return std::find_if(symbols.begin(), symbols.end(),
+                        [](const std::string& s) { return s == "g3d_SceneTime" || s == "iTime"; }) != symbols.end();
 }
 
 CompatNeeds detectCompatNeeds(const std::string& stripped) {
-    static const char* const candidates[] = {
-        "pi", "saturate", "lerp", "square", "frac", "lengthSquared", "Point3", "Vector3", "Color3",
-        "Radiance3", "float2", "float3", "float4", "g3d_SceneTime", "g3d_uniformRandom",
-        "iTime"};  // Shadertoy's time uniform, which its code uses without declaring
+    static const char* const candidates[] = {"pi",        "saturate",      "lerp",
+                                             "square",    "frac",          "lengthSquared",
+                                             "Point3",    "Vector3",       "Color3",
+                                             "Radiance3", "float2",        "float3",
+                                             "float4",    "g3d_SceneTime", "g3d_uniformRandom",
+                                             "iTime"}; // Shadertoy's time uniform, which its code uses without declaring
     // Declared by the file itself: a macro, a variable, a function or a struct of that name.
     // Compiled once: building 15 regexes per call cost more than the searches.
     static const std::vector<std::regex> declared = [] {
@@ -210,7 +213,8 @@ Diagnostic missingEntryDiagnostic(const ResolvedSource& source, const std::strin
     std::string stripped = stripComments(root);
     const std::regex anyDefinition(R"(\b\w+\s+)" + entry + R"(\s*\([^)]*\))", kLinearRegex);
     std::smatch match;
-    for (std::size_t at = stripped.find(entry); isIdentifier(entry) && at != std::string::npos; at = stripped.find(entry, at + entry.size())) {
+    for (std::size_t at = stripped.find(entry); isIdentifier(entry) && at != std::string::npos;
+         at = stripped.find(entry, at + entry.size())) {
         if (at > 0 && isWordCharacter(stripped[at - 1])) continue;
         std::size_t start = previousWord(stripped, at);
         if (start == std::string::npos || !matchAt(stripped, start, anyDefinition, match)) continue;
@@ -278,7 +282,8 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
         }
     }
     if (!prepared.signature.found)
-        prepared.diagnostics.push_back(missingEntryDiagnostic(prepared.source, chosen, prepared.entrySource != EntrySource::Default));
+        prepared.diagnostics.push_back(
+            missingEntryDiagnostic(prepared.source, chosen, prepared.entrySource != EntrySource::Default));
     return prepared;
 }
 

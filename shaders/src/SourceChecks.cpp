@@ -197,7 +197,7 @@ std::vector<Diagnostic> checkSourceFiles(const ResolvedSource& source) {
                 break;  // one per file: the rest is usually more of the same
             }
         }
-        const std::vector<Token> tokens = tokenize(stripped);  // once, for both checks
+        const std::vector<Token> tokens = tokenize(stripped); // once, for both checks
         for (const Found& f : topLevelDeclarations(tokens))
             if (f.function && f.name == "main")
                 report(f.offset, "main() is written by the workbench (the tracer's and the samplers' own); an SDF file defines "
@@ -205,8 +205,9 @@ std::vector<Diagnostic> checkSourceFiles(const ResolvedSource& source) {
         for (std::size_t offset : reservedDefinitions(stripped, tokens)) {
             std::size_t end = offset;
             while (end < stripped.size() && isWord(stripped[end])) ++end;
-            report(offset, "'" + stripped.substr(offset, end - offset) + "': names beginning with sdfwb_ (in any letter case) are "
-                           "reserved for the workbench's own shader code; every other name is yours: rename this one");
+            report(offset, "'" + stripped.substr(offset, end - offset) +
+                               "': names beginning with sdfwb_ (in any letter case) are "
+                               "reserved for the workbench's own shader code; every other name is yours: rename this one");
         }
     }
     return out;

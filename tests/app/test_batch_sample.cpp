@@ -335,7 +335,8 @@ TEST(BatchForeign, EntryOnEveryCommandAndFlagsInTheReports) {
     fs::path out = scratch("toy.npz");
     Result r = run("--batch sample --sdf " + shadertoy.string() + " --pattern near -n 2000 --output " + out.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    r = run("--batch sample --sdf " + shadertoy.string() + " --entry shape --time 1 --pattern rand -n 100 --output " + out.string());
+    r = run("--batch sample --sdf " + shadertoy.string() + " --entry shape --time 1 --pattern rand -n 100 --output " +
+            out.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     r = run("--batch render --sdf " + shadertoy.string() + " --entry shape --size 64x48 --output " + scratch("toy.png").string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -356,7 +357,8 @@ TEST(BatchForeign, EntryOnEveryCommandAndFlagsInTheReports) {
     EXPECT_NE(r.output.find("  truncated          the field stops growing at 1"), std::string::npos) << r.output;
     // Bad entries: named, exit 2 (usage) before any work; a missing one: the file's diagnostic, exit non-zero.
     for (const char* entry : {"main", "sdfwb_sdf", "9lives", "a.b"}) {
-        r = run("--batch sample --sdf " + shadertoy.string() + " --entry " + entry + " --pattern rand -n 10 --output " + out.string());
+        r = run("--batch sample --sdf " + shadertoy.string() + " --entry " + entry + " --pattern rand -n 10 --output " +
+                out.string());
         EXPECT_EQ(r.exitCode, 2) << entry << "\n" << r.output;
         EXPECT_NE(r.output.find("--entry"), std::string::npos) << r.output;
     }

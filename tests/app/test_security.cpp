@@ -86,8 +86,8 @@ TEST(Security, BatchRunsOpenNoNetworkSocket) {
         unsetenv("DISPLAY");
         dup2(fds[1], 2);
         close(fds[0]);
-        execl(SDFWB_BINARY, SDFWB_BINARY, "--batch", "sample", "--sdf", "mandelbulb", "--pattern", "surface", "-n", "2000000", "--chunk", "16384",
-              "--progress-lines", "--output", (folder / "out.npz").c_str(), static_cast<char*>(nullptr));
+        execl(SDFWB_BINARY, SDFWB_BINARY, "--batch", "sample", "--sdf", "mandelbulb", "--pattern", "surface", "-n", "2000000",
+              "--chunk", "16384", "--progress-lines", "--output", (folder / "out.npz").c_str(), static_cast<char*>(nullptr));
         _exit(127);
     }
     close(fds[1]);

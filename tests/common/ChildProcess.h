@@ -29,8 +29,7 @@ inline std::string readUntil(int fd, const std::string& text, std::chrono::secon
 // Reads and drops the rest of `fd` until it closes, so a child never blocks on a full pipe.
 inline void drain(int fd) {
     char buffer[512];
-    while (::read(fd, buffer, sizeof buffer) > 0) {
-    }
+    while (::read(fd, buffer, sizeof buffer) > 0) {}
 }
 
 } // namespace sdfwb::testing

@@ -23,8 +23,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <regex>
 #include <fstream>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -39,7 +39,7 @@ const fs::path kFolder = fs::path(SDFWB_SOURCE_DIR) / "tests" / "foreign";
 
 struct Expectation {
     std::string entry;
-    std::vector<std::string> flags;  // sorted
+    std::vector<std::string> flags; // sorted
     bool animated = false;
 };
 
@@ -114,7 +114,8 @@ TEST_P(ForeignCode, OpensRendersSamplesAndGetsItsFlags) {
     const Expectation expected = readExpectation(file);
     // Opens unmodified: `sdf` and the conventional names are found without being named.
     const auto& conventional = shaders::conventionalEntries();
-    const bool findable = expected.entry == "sdf" || std::find(conventional.begin(), conventional.end(), expected.entry) != conventional.end();
+    const bool findable =
+        expected.entry == "sdf" || std::find(conventional.begin(), conventional.end(), expected.entry) != conventional.end();
     shaders::PreparedSdf sdf = prepare(file, findable ? std::string() : expected.entry);
     ASSERT_TRUE(sdf.ok()) << firstError(sdf);
     EXPECT_EQ(sdf.signature.entry, expected.entry);
@@ -153,9 +154,7 @@ TEST_P(ForeignCode, OpensRendersSamplesAndGetsItsFlags) {
     for (float d : distances)
         if (std::isfinite(d)) finite.push_back(std::abs(d));
     const bool hasNan = std::count(expected.flags.begin(), expected.flags.end(), "nan") != 0;
-    if (!hasNan) {
-        EXPECT_LT(double(report->badRows), 0.05 * double(job.count)) << "near: rows without a surface";
-    }
+    if (!hasNan) { EXPECT_LT(double(report->badRows), 0.05 * double(job.count)) << "near: rows without a surface"; }
     ASSERT_FALSE(finite.empty());
     std::nth_element(finite.begin(), finite.begin() + long(finite.size() / 2), finite.end());
     EXPECT_LT(finite[finite.size() / 2], 0.05f) << "near samples are not near the surface";
@@ -171,9 +170,7 @@ TEST_P(ForeignCode, OpensRendersSamplesAndGetsItsFlags) {
     for (const auto& f : audit->flags) flags.push_back(f.name);
     std::sort(flags.begin(), flags.end());
     EXPECT_EQ(flags, expected.flags) << GetParam() << ": " << audit->verdict << ": " << audit->reason;
-    if (!expected.flags.empty()) {
-        EXPECT_EQ(audit->verdict, audit->flags.front().name);
-    }
+    if (!expected.flags.empty()) { EXPECT_EQ(audit->verdict, audit->flags.front().name); }
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, ForeignCode, ::testing::ValuesIn(corpusFiles()), [](const auto& info) {
@@ -185,7 +182,7 @@ INSTANTIATE_TEST_SUITE_P(Corpus, ForeignCode, ::testing::ValuesIn(corpusFiles())
 
 namespace {
 class UserNames : public sdfwb::testing::GlTest {};
-}
+} // namespace
 
 // Issue 14, point 1: the user's names are the user's. common_names.glsl defines the names public
 // SDF code uses most, macros included; every tracer variant and every sampler composes with it,
@@ -199,7 +196,8 @@ TEST_F(UserNames, EveryVariantAndSamplerCompilesAndRunsWithCommonNames) {
         std::ifstream in(file);
         std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         const std::string stripped = shaders::stripComments(text);
-        static const std::regex declaration(R"((?:^|[;{}\n])\s*(?:const\s+|uniform\s+)?(?:float|int|bool|vec[234]|mat[234]|struct|void|[A-Z]\w*)\s+([A-Za-z_]\w*)\s*[=;(\[{])");
+        static const std::regex declaration(
+            R"((?:^|[;{}\n])\s*(?:const\s+|uniform\s+)?(?:float|int|bool|vec[234]|mat[234]|struct|void|[A-Z]\w*)\s+([A-Za-z_]\w*)\s*[=;(\[{])");
         std::set<std::string> names;
         for (auto it = std::sregex_iterator(stripped.begin(), stripped.end(), declaration); it != std::sregex_iterator(); ++it)
             names.insert((*it)[1].str());
@@ -213,10 +211,11 @@ TEST_F(UserNames, EveryVariantAndSamplerCompilesAndRunsWithCommonNames) {
     renderer::Camera camera;
     camera.position = {1.5f, 1.2f, 2.5f};
     int programs = 0;
-    for (renderer::ShadingMode mode : {renderer::ShadingMode::Normals, renderer::ShadingMode::Gooch, renderer::ShadingMode::Matcap,
-                                        renderer::ShadingMode::Curvature, renderer::ShadingMode::Steps})
+    for (renderer::ShadingMode mode :
+         {renderer::ShadingMode::Normals, renderer::ShadingMode::Gooch, renderer::ShadingMode::Matcap,
+          renderer::ShadingMode::Curvature, renderer::ShadingMode::Steps})
         for (int ao = 0; ao < 2; ++ao)
-            for (int plane = 0; plane < 4; ++plane)  // off, on, clipping, clipping + Lipschitz overlay
+            for (int plane = 0; plane < 4; ++plane) // off, on, clipping, clipping + Lipschitz overlay
                 for (int relax = 0; relax < 2; ++relax)
                     for (int stats = 0; stats < 2; ++stats) {
                         if (stats && mode != renderer::ShadingMode::Normals) continue;
@@ -259,7 +258,8 @@ TEST_F(UserNames, EveryVariantAndSamplerCompilesAndRunsWithCommonNames) {
         ASSERT_TRUE(piece.hasValue()) << pattern;
         pieces.push_back(*piece);
     }
-    for (const char* analysis : {"analysis/noise_lines.glsl", "analysis/plane_grid.glsl"}) pieces.push_back(*shaders::builtinPiece(analysis));
+    for (const char* analysis : {"analysis/noise_lines.glsl", "analysis/plane_grid.glsl"})
+        pieces.push_back(*shaders::builtinPiece(analysis));
     for (const auto& piece : pieces) {
         renderer::SampleCompute compute;
         auto diagnostics = compute.build(sdf, piece);
@@ -285,9 +285,11 @@ TEST_F(UserNames, EveryVariantAndSamplerCompilesAndRunsWithCommonNames) {
 TEST_F(UserNames, CompatDialectIsDetectedByUseAndTheNoiseTextureIsReal) {
     const fs::path folder = fs::temp_directory_path() / ("sdfwb-compat-" + std::to_string(::getpid()));
     fs::create_directories(folder);
-    std::ofstream(folder / "helpers.glsl") << "#ifndef HELPERS_GLSL\n#define HELPERS_GLSL\nfloat wave(float x) {\n    float k = 2.0;\n"
-                                              "    return sin(k * pi * x);\n}\n#endif\n";
-    std::ofstream(folder / "shape.glsl") << "#include \"helpers.glsl\"\nfloat sdf(vec3 p) { return length(p) - 0.5 + 0.01 * wave(p.x); }\n";
+    std::ofstream(folder / "helpers.glsl")
+        << "#ifndef HELPERS_GLSL\n#define HELPERS_GLSL\nfloat wave(float x) {\n    float k = 2.0;\n"
+           "    return sin(k * pi * x);\n}\n#endif\n";
+    std::ofstream(folder / "shape.glsl")
+        << "#include \"helpers.glsl\"\nfloat sdf(vec3 p) { return length(p) - 0.5 + 0.01 * wave(p.x); }\n";
     auto sdf = prepare(folder / "shape.glsl");
     ASSERT_TRUE(sdf.ok()) << firstError(sdf);
     EXPECT_EQ(sdf.compat.symbols, std::vector<std::string>{"pi"});
@@ -302,7 +304,8 @@ TEST_F(UserNames, CompatDialectIsDetectedByUseAndTheNoiseTextureIsReal) {
     const int n = renderer::kNoiseTextureSize;
     std::vector<float> points;
     for (int j = 0; j < 8; ++j)
-        for (int i = 0; i < n; ++i) points.insert(points.end(), {(float(i) + 0.5f) / float(n), (float(j) + 0.5f) / float(n), 0.0f});
+        for (int i = 0; i < n; ++i)
+            points.insert(points.end(), {(float(i) + 0.5f) / float(n), (float(j) + 0.5f) / float(n), 0.0f});
     auto run = [&] {
         renderer::SampleCompute compute;
         EXPECT_FALSE(shaders::hasErrors(compute.build(noisy, *shaders::builtinPiece("analysis/points.glsl"))));

@@ -35,19 +35,19 @@
 #include <QTemporaryDir>
 #include <QProcess>
 
-#include <csignal>
-#include <QFileInfo>
-#include <QDoubleSpinBox>
-#include <QLabel>
 #include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFileInfo>
+#include <QImage>
 #include <QKeyEvent>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMouseEvent>
 #include <QPushButton>
-#include <QImage>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
 #include <QThread>
+#include <csignal>
 
 #include <functional>
 
@@ -492,7 +492,7 @@ TEST(Viewport, TimeScrubsAnimatedSdfs) {
         EXPECT_EQ(lastScale, 1.0f) << "no full-resolution frame";
         return frame;
     };
-    window.viewport()->resetCamera();  // not a camera restored from an earlier test's session
+    window.viewport()->resetCamera(); // not a camera restored from an earlier test's session
     window.timeBar()->setTime(0.0);
     window.viewport()->setTime(0.0f);
     long small = foreground(fullFrame(), kBackground);
@@ -587,7 +587,8 @@ TEST(ForeignCode, EntryFieldAndShowWhere) {
                   "mat2 rot(float a) { return mat2(cos(a), -sin(a), sin(a), cos(a)); }\n"
                   "vec2 map(vec3 p) { return vec2(length(p) - 0.5 + (p.x > 0.2 ? 0.2 : 0.0), 1.0); }\n"
                   "// the paper's snake in small: steeper than a distance, capped at 0.25\n"
-                  "float snake(vec3 p) { p.xz *= rot(PI / 8.0); return min(0.25, 1.9 * (length(vec3(p.x, p.y * 1.6, p.z)) - 0.45)); }\n");
+                  "float snake(vec3 p) { p.xz *= rot(PI / 8.0); return min(0.25, 1.9 * (length(vec3(p.x, p.y * 1.6, p.z)) - "
+                  "0.45)); }\n");
     }
     app::MainWindow window;
     window.resize(1400, 800);
@@ -625,7 +626,8 @@ TEST(ForeignCode, EntryFieldAndShowWhere) {
         showWhere->click();
         EXPECT_EQ(window.viewport()->shading().markers, examples);
         const renderer::CuttingPlane plane = window.viewport()->plane();
-        EXPECT_NEAR(glm::dot(glm::normalize(plane.normal), examples.front()), plane.offset, 1e-4f) << "the plane goes through the first point";
+        EXPECT_NEAR(glm::dot(glm::normalize(plane.normal), examples.front()), plane.offset, 1e-4f)
+            << "the plane goes through the first point";
         EXPECT_NEAR(window.planePanel()->plane().offset, plane.offset, 1e-3f);
         EXPECT_GT(meanDifference(before, window.viewport()->grabFramebuffer()), 0.05) << "the rings show";
         ASSERT_TRUE(waitFor([&] { return readouts > seen; }, 30000)) << "readouts for the moved plane";
@@ -650,7 +652,7 @@ TEST(ForeignCode, EntryFieldAndShowWhere) {
     renderer::CuttingPlane throughOrigin = window.viewport()->plane();
     throughOrigin.offset = 0.0f;
     window.planePanel()->setPlane(throughOrigin);
-    window.planePanel()->findChild<QPushButton*>("axis_Z")->click();  // emits the panel's plane: z = 0
+    window.planePanel()->findChild<QPushButton*>("axis_Z")->click(); // emits the panel's plane: z = 0
     ASSERT_TRUE(waitFor([&] { return findingsNamed("truncated") && findingsNamed("non-conservative"); }, 30000))
         << window.planePanel()->findChild<QLabel*>("readouts")->text().toStdString();
     findings->setCurrentIndex(findings->findText("truncated"));

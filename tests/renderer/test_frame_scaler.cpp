@@ -27,7 +27,7 @@ TEST(FrameScaler, AtRestFullResolutionUntilAFrameIsTooSlow) {
 TEST(FrameScaler, WhileMovingTheScaleAimsAtTheFrameBudget) {
     FrameScaler scaler;
     scaler.setFrameBudget(33.0);
-    EXPECT_FALSE(scaler.frameDone(1280, 720, 1.0f, 132.0, false));  // a full frame: 4x the budget
+    EXPECT_FALSE(scaler.frameDone(1280, 720, 1.0f, 132.0, false)); // a full frame: 4x the budget
     scaler.startInteraction();
     const float first = scaler.scaleFor(1280, 720, true);
     EXPECT_NEAR(first, std::sqrt(0.8f * 33.0f / 132.0f), 1e-4f) << "the first moving frame starts from the full frame's cost";
@@ -49,7 +49,7 @@ TEST(FrameScaler, WhileMovingTheScaleAimsAtTheFrameBudget) {
 
 TEST(FrameScaler, ProbeEstimateSubtractsFixedCosts) {
     // 2 ms at 5 % of the side: 800 ms for the whole frame if all of it were per pixel.
-    EXPECT_NEAR(FrameScaler::estimateFullFrame(2.0), 2.0 / (0.05 * 0.05), 1e-3);  // kProbeScale is a float
+    EXPECT_NEAR(FrameScaler::estimateFullFrame(2.0), 2.0 / (0.05 * 0.05), 1e-3); // kProbeScale is a float
     // 2 ms at 5 %, 3 ms at 15 %: 1 ms per 0.02 of area; fixed costs do not grow with the area.
     const double estimate = FrameScaler::estimateFullFrame(2.0, std::pair{0.15f, 3.0});
     EXPECT_NEAR(estimate, 2.0 + 1.0 / (0.15 * 0.15 - 0.05 * 0.05) * (1.0 - 0.05 * 0.05), 1e-3);

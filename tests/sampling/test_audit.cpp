@@ -177,15 +177,17 @@ TEST_F(AuditTest, KnownFieldsGiveKnownFlagSets) {
     for (const glm::vec3& e : step->examples) EXPECT_NEAR(e.z, 0.2f, 1e-3f) << "example off the jump plane";
 
     // Domain repetition whose cell cuts an off-centre sphere: f jumps at the cell walls (x = +-0.25, ...).
-    auto repeated = auditText("float sdf(vec3 p) { vec3 q = mod(p + 0.25, 0.5) - 0.25; return length(q - vec3(0.1, 0.0, 0.0)) - 0.2; }");
+    auto repeated =
+        auditText("float sdf(vec3 p) { vec3 q = mod(p + 0.25, 0.5) - 0.25; return length(q - vec3(0.1, 0.0, 0.0)) - 0.2; }");
     EXPECT_EQ(flagNames(repeated), (Names{"discontinuous"})) << repeated.reason;
     for (const glm::vec3& e : sampling::findFlag(repeated.flags, "discontinuous")->examples) {
-        const float wall = std::abs(std::fmod(std::abs(e.x) + 0.25f, 0.5f));  // 0 or 0.5 on a wall x = 0.25 + 0.5 k
+        const float wall = std::abs(std::fmod(std::abs(e.x) + 0.25f, 0.5f)); // 0 or 0.5 on a wall x = 0.25 + 0.5 k
         EXPECT_LT(std::min(wall, 0.5f - wall), 2e-3f) << e.x;
     }
 
     // Two spheres' max: a crease, not a jump, and 1-Lipschitz.
-    auto kinked = auditText("float sdf(vec3 p) { return max(length(p - vec3(0.2, 0, 0)) - 0.5, length(p + vec3(0.2, 0, 0)) - 0.5); }");
+    auto kinked =
+        auditText("float sdf(vec3 p) { return max(length(p - vec3(0.2, 0, 0)) - 0.5, length(p + vec3(0.2, 0, 0)) - 0.5); }");
     EXPECT_EQ(flagNames(kinked), Names{}) << kinked.reason;
 
     // NaN where x > 0.5, with the examples there.
@@ -203,7 +205,8 @@ TEST_F(AuditTest, PlaneReadoutsGiveTheSameFlags) {
     for (const auto& f : r->flags) names.push_back(f.name);
     std::sort(names.begin(), names.end());
     EXPECT_EQ(names, (Names{"non-conservative", "truncated"}));
-    auto jump = shaders::prepareSdf("float sdf(vec3 p) { return length(p) - 0.5 + (p.x > 0.2 ? 0.2 : 0.0); }", "jump.glsl", {}, {});
+    auto jump =
+        shaders::prepareSdf("float sdf(vec3 p) { return length(p) - 0.5 + (p.x > 0.2 ? 0.2 : 0.0); }", "jump.glsl", {}, {});
     auto j = sampling::analysePlane(jump, {0, 0, 1}, 0.0f, 128, 0.0f);
     ASSERT_TRUE(j.hasValue());
     const auto* flag = sampling::findFlag(j->flags, "discontinuous");

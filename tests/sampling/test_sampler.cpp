@@ -292,9 +292,10 @@ TEST_F(SamplerTest, CancellingLeavesNoFile) {
 TEST_F(SamplerTest, UserSamplerFilesWorkAndBadOnesAreNamed) {
     fs::path folder = fs::temp_directory_path() / "sdfwb-test-samplers";
     fs::create_directories(folder);
-    std::ofstream(folder / "diagonal.glsl") << "bool samplePosition(uint index, out vec3 position) {\n"
-                                               "    float t = float(index) / float(max(sdfwb_sampleCount, 2u) - 1u) * 2.0 - 1.0;\n"
-                                               "    position = vec3(t);\n    return true;\n}\n";
+    std::ofstream(folder / "diagonal.glsl")
+        << "bool samplePosition(uint index, out vec3 position) {\n"
+           "    float t = float(index) / float(max(sdfwb_sampleCount, 2u) - 1u) * 2.0 - 1.0;\n"
+           "    position = vec3(t);\n    return true;\n}\n";
     std::ofstream(folder / "broken.glsl") << "vec3 somethingElse(uint i) { return vec3(0.0); }\n";
     auto byName = sampling::findSampler("diagonal", {folder});
     ASSERT_TRUE(byName.hasValue()) << byName.error().message;

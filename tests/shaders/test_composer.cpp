@@ -123,7 +123,8 @@ TEST(BuiltinShaders, EveryEmbeddedFileCompilesWithGlslangInItsStage) {
         ASSERT_TRUE(composed.hasValue());
         auto diagnostics = checkWithGlslang(*composed);
         EXPECT_FALSE(hasErrors(diagnostics)) << mode << ": " << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
-        for (const char* file : {"tracer/trace_core.glsl", "tracer/ao.glsl", "tracer/plane.glsl", "tracer/markers.glsl", "tracer/trace_main.frag"})
+        for (const char* file :
+             {"tracer/trace_core.glsl", "tracer/ao.glsl", "tracer/plane.glsl", "tracer/markers.glsl", "tracer/trace_main.frag"})
             covered.insert(file);
         covered.insert(std::string("tracer/shading_") + mode + ".glsl");
     }
@@ -169,7 +170,8 @@ TEST(EntryPoint, ShadertoyMapWithMaterialIsFoundAndItsDistanceUsed) {
 
 TEST(EntryPoint, RequestedMetadataAndTimeDependentEntries) {
     // Requested by name, with time: animated, the wrapper passes sdfwb_time.
-    PreparedSdf timed = prepareSdf("float shape(in vec3 q, float t) { return length(q) - 0.4 - 0.1 * sin(t); }\n", "<test>", {}, {}, "shape");
+    PreparedSdf timed =
+        prepareSdf("float shape(in vec3 q, float t) { return length(q) - 0.4 - 0.1 * sin(t); }\n", "<test>", {}, {}, "shape");
     ASSERT_TRUE(timed.ok());
     EXPECT_TRUE(timed.signature.animated);
     EXPECT_TRUE(timed.usesTime());
@@ -181,9 +183,10 @@ TEST(EntryPoint, RequestedMetadataAndTimeDependentEntries) {
     EXPECT_FALSE(hasErrors(checkWithGlslang(*composed)));
 
     // From the metadata block; it wins over a plain sdf() in the same file.
-    PreparedSdf fromMetadata = prepare("/* sdfwb\nname: Two\ncategory: Misc\ntype: exact\nanimated: no\nauthor: a\nlicense: CC0-1.0\n"
-                                       "entry: scene\n*/\nvec4 scene(vec3 p) { return vec4(length(p) - 0.5); }\n"
-                                       "float sdf(vec3 p) { return 1.0; }\n");
+    PreparedSdf fromMetadata =
+        prepare("/* sdfwb\nname: Two\ncategory: Misc\ntype: exact\nanimated: no\nauthor: a\nlicense: CC0-1.0\n"
+                "entry: scene\n*/\nvec4 scene(vec3 p) { return vec4(length(p) - 0.5); }\n"
+                "float sdf(vec3 p) { return 1.0; }\n");
     ASSERT_TRUE(fromMetadata.ok());
     EXPECT_EQ(fromMetadata.signature.entry, "scene");
     EXPECT_EQ(fromMetadata.signature.returnType, "vec4");
@@ -200,7 +203,8 @@ TEST(EntryPoint, RequestedMetadataAndTimeDependentEntries) {
 TEST(EntryPoint, MissingWrongAndReservedEntriesAreNamed) {
     PreparedSdf missing = prepareSdf("float map(vec3 p) { return length(p); }\n", "<test>", {}, {}, "shape");
     ASSERT_FALSE(missing.ok());
-    EXPECT_NE(missing.diagnostics.back().message.find("entry point 'shape' not found"), std::string::npos) << missing.diagnostics.back().message;
+    EXPECT_NE(missing.diagnostics.back().message.find("entry point 'shape' not found"), std::string::npos)
+        << missing.diagnostics.back().message;
     PreparedSdf wrongType = prepareSdf("float shape(vec2 p) { return length(p); }\n", "<test>", {}, {}, "shape");
     ASSERT_FALSE(wrongType.ok());
     EXPECT_EQ(wrongType.diagnostics.back().line, 1);

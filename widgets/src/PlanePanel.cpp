@@ -136,7 +136,8 @@ PlanePanel::PlanePanel(QWidget* parent) : QWidget(parent) {
         layout->addLayout(row);
         connect(m_showWhere, &QPushButton::clicked, this, [this] {
             const int index = m_findings->currentIndex();
-            if (index >= 0 && std::size_t(index) < m_readout.findings.size()) emit showWhere(m_readout.findings[std::size_t(index)].examples);
+            if (index >= 0 && std::size_t(index) < m_readout.findings.size())
+                emit showWhere(m_readout.findings[std::size_t(index)].examples);
         });
     }
     m_histogram = new HistogramView;
@@ -184,7 +185,8 @@ namespace {
 QString findingsHtml(const std::vector<FindingView>& findings) {
     if (findings.empty()) return QObject::tr("<p>No findings: no NaN/Inf, jump, plateau or |grad f| &gt; 1.05 on the plane.</p>");
     QString html = "<p>";
-    for (const FindingView& finding : findings) html += "<b>" + finding.name.toHtmlEscaped() + "</b>: " + finding.evidence.toHtmlEscaped() + "<br>";
+    for (const FindingView& finding : findings)
+        html += "<b>" + finding.name.toHtmlEscaped() + "</b>: " + finding.evidence.toHtmlEscaped() + "<br>";
     return html + "</p>";
 }
 

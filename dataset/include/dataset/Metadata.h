@@ -30,7 +30,7 @@ struct Metadata {
     std::string author;
     std::string license;
     std::string notes;
-    std::string entry;  // empty: sdf (or a conventional name; see shaders::SdfSignature)
+    std::string entry; // empty: sdf (or a conventional name; see shaders::SdfSignature)
 };
 
 // Parses the leading `/* sdfwb ... */` block of `text`. `fileName` names the file in errors,

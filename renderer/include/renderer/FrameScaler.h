@@ -13,7 +13,7 @@ namespace sdfwb::renderer {
 class FrameScaler {
 public:
     static constexpr float kProbeScale = 0.05f;  // side of the probe frame: 0.25 % of the pixels
-    static constexpr float kMinimumScale = 0.1f;  // while moving
+    static constexpr float kMinimumScale = 0.1f; // while moving
 
     void setFrameBudget(double milliseconds) { m_frameBudget = milliseconds; }
     void setStallLimit(double milliseconds) { m_stallLimit = milliseconds; }
@@ -40,9 +40,9 @@ public:
 private:
     double m_frameBudget = 33.0;
     double m_stallLimit = 1500.0;
-    double m_maxPixels = 0.0;  // pixels a frame may trace within the stall limit (0: no cap)
+    double m_maxPixels = 0.0; // pixels a frame may trace within the stall limit (0: no cap)
     double m_fullFrameMilliseconds = 0.0;
-    float m_scale = 1.0f;  // while moving
+    float m_scale = 1.0f; // while moving
 };
 
 } // namespace sdfwb::renderer

@@ -34,13 +34,13 @@ namespace sdfwb::sampling {
 //   nan               f or its gradient is NaN/Inf: share and count of points, examples = where.
 struct AuditFlag {
     std::string name;
-    std::string evidence;            // one sentence with the figures
+    std::string evidence; // one sentence with the figures
     float value = 0.0f;
     float maximum = 0.0f;
     float start = 0.0f;
     double share = 0.0;
     std::uint64_t count = 0;
-    std::vector<glm::vec3> examples;  // at most kMaxExamples
+    std::vector<glm::vec3> examples; // at most kMaxExamples
 };
 
 inline constexpr std::size_t kMaxExamples = 16;

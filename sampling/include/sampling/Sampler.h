@@ -26,7 +26,7 @@ struct SamplingJob {
     float gradientStep = 1e-3f;       // central-difference step of the written gradient
     float parameters[16] = {};        // u_parameters for program-driven samplers (plane analysis)
     float surfaceTolerance = 1e-5f;   // |f| at which surface/near/metropolis rays stop (accuracy against time)
-    const float* inputPoints = nullptr;  // 3 * count floats for the analysis/points.glsl sampler (not owned)
+    const float* inputPoints = nullptr; // 3 * count floats for the analysis/points.glsl sampler (not owned)
 
     std::uint64_t firstIndex() const { return count * shardIndex / shardCount; }
     std::uint64_t rows() const { return count * (shardIndex + 1ull) / shardCount - firstIndex(); }

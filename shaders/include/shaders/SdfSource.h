@@ -16,10 +16,10 @@ namespace sdfwb::shaders {
 // the first of the names public ray-marching code uses for it (map, scene, sceneSDF, sdScene, de,
 // DE). It returns float, or vec2/vec3/vec4 with the distance in .x (Shadertoy's material ids).
 struct SdfSignature {
-    bool found = false;     // a definition of ENTRY(vec3) or ENTRY(vec3, float) exists
-    bool animated = false;  // ENTRY(vec3 p, float time)
+    bool found = false;    // a definition of ENTRY(vec3) or ENTRY(vec3, float) exists
+    bool animated = false; // ENTRY(vec3 p, float time)
     std::string entry = "sdf";
-    std::string returnType = "float";  // float | vec2 | vec3 | vec4
+    std::string returnType = "float"; // float | vec2 | vec3 | vec4
 };
 
 enum class EntrySource { Default, Requested, Metadata, Convention };
@@ -29,14 +29,14 @@ enum class EntrySource { Default, Requested, Metadata, Convention };
 struct CompatNeeds {
     std::vector<std::string> symbols;  // e.g. "pi", "saturate", "float3", "g3d_SceneTime"
     bool any() const { return !symbols.empty(); }
-    bool usesTimeSymbol() const;  // g3d_SceneTime or Shadertoy's iTime
+    bool usesTimeSymbol() const; // g3d_SceneTime or Shadertoy's iTime
 };
 
 struct PreparedSdf {
     ResolvedSource source;
     SdfSignature signature;
     CompatNeeds compat;
-    std::vector<Diagnostic> diagnostics;  // resolver errors + a missing/ill-typed entry point
+    std::vector<Diagnostic> diagnostics; // resolver errors + a missing/ill-typed entry point
     EntrySource entrySource = EntrySource::Default;
     // Names the file (with its includes) #defines. The composer #undefs them after the SDF, so a
     // user's `#define normal ...` cannot reach the workbench's code composed after it.

@@ -26,7 +26,7 @@ struct TracerFeatures {
     bool cuttingPlane = false;
     bool planeClipsSurface = false;  // cut the shape away on the side the plane's normal points to
     bool planeLipschitzOverlay = false;
-    bool markers = false;  // ring marked points (markers.glsl)
+    bool markers = false; // ring marked points (markers.glsl)
 };
 
 Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatures& features);

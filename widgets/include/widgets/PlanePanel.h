@@ -28,7 +28,7 @@ class HistogramView;
 struct FindingView {
     QString name;
     QString evidence;
-    std::vector<glm::vec3> examples;  // where it holds (at most 16 points)
+    std::vector<glm::vec3> examples; // where it holds (at most 16 points)
 };
 
 struct PlaneReadoutView {
@@ -38,7 +38,7 @@ struct PlaneReadoutView {
     std::uint64_t discontinuities = 0, nanCount = 0, points = 0;
     std::vector<std::uint64_t> histogram;
     float safeStepFactor = 1;
-    std::vector<FindingView> findings;  // most severe first
+    std::vector<FindingView> findings; // most severe first
     double seconds = 0;
 };
 

@@ -10,8 +10,8 @@
 // shortly after it stops, a full-resolution frame follows.
 
 #include <renderer/Camera.h>
-#include <renderer/Image.h>
 #include <renderer/FrameScaler.h>
+#include <renderer/Image.h>
 #include <renderer/RenderSettings.h>
 #include <shaders/Diagnostic.h>
 #include <shaders/SdfSource.h>
@@ -108,7 +108,7 @@ private:
     std::unique_ptr<shaders::PreparedSdf> m_currentSdf;   // compiled, waiting for its probe frame
     std::unique_ptr<shaders::PreparedSdf> m_lastGoodSdf;  // passed its probe frame
     bool m_needsProbe = false;
-    renderer::FrameScaler m_scaler;  // resolution while moving, and the cap for slow SDFs
+    renderer::FrameScaler m_scaler; // resolution while moving, and the cap for slow SDFs
     renderer::ShadingSettings m_shading;
     renderer::TraceSettings m_trace;
     renderer::CuttingPlane m_plane;
