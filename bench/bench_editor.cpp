@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
             QApplication::processEvents(QEventLoop::AllEvents, 1);
             if (timer.elapsed() > 20000) break;
         }
-        QApplication::processEvents();  // the frame that shows the diagnostics
+        QApplication::processEvents(); // the frame that shows the diagnostics
         latencies.push_back(timer.nsecsElapsed() / 1e6);
         QThread::msleep(50);
     }
@@ -102,7 +102,8 @@ int main(int argc, char** argv) {
     std::printf("| debounce (fixed) | %d |\n", window.document()->debounceMilliseconds());
     std::printf("| include resolution + glslang, in-thread reference (median of 5) | %.1f |\n", median(direct));
     std::printf("| keystroke to diagnostics on screen (median of 15) | %.1f |\n", median(latencies));
-    std::printf("| keystroke to diagnostics on screen (worst of 15) | %.1f |\n", *std::max_element(latencies.begin(), latencies.end()));
+    std::printf("| keystroke to diagnostics on screen (worst of 15) | %.1f |\n",
+                *std::max_element(latencies.begin(), latencies.end()));
     window.editor()->setModified(false);
     return 0;
 }

@@ -26,7 +26,8 @@ namespace {
 double median3(double a, double b, double c) { return std::max(std::min(a, b), std::min(std::max(a, b), c)); }
 
 // Median frame time over 3 frames, after one warm-up frame.
-double frameMilliseconds(renderer::OffscreenRenderer& offscreen, renderer::SdfRenderer& sdfRenderer, int width, int height, float scale) {
+double frameMilliseconds(renderer::OffscreenRenderer& offscreen, renderer::SdfRenderer& sdfRenderer, int width, int height,
+                         float scale) {
     renderer::FrameStats stats;
     offscreen.render(sdfRenderer, width, height, renderer::Camera{}, 0.0f, &stats, scale);
     double t[3];
@@ -46,7 +47,8 @@ shaders::IncludeOptions includeOptions() {
 void datasetReport() {
     dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
     std::printf("## Interactive rendering, 1280x720, Gooch shading, default camera\n\n");
-    std::printf("| SDF | full-resolution frame (ms) | moving: scale | moving frame (ms) | steps/pixel (all) | steps/pixel (hits) |\n");
+    std::printf(
+        "| SDF | full-resolution frame (ms) | moving: scale | moving frame (ms) | steps/pixel (all) | steps/pixel (hits) |\n");
     std::printf("|---|---|---|---|---|---|\n");
     renderer::OffscreenRenderer offscreen;
     for (const dataset::Entry& entry : catalogue.entries()) {

@@ -33,7 +33,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     const std::optional<int> exitCode = sdfwb::app::checkCommandLine(arguments);
     // 0 (would run, or help), 2 (bad arguments); nullopt only for the workbench's [FILE] form.
-    if (exitCode) require(*exitCode == 0 || *exitCode == 2, "an exit code other than 0 or 2 from parsing alone");
-    else require(arguments.size() <= 1, "the workbench was chosen for more than one argument");
+    if (exitCode)
+        require(*exitCode == 0 || *exitCode == 2, "an exit code other than 0 or 2 from parsing alone");
+    else
+        require(arguments.size() <= 1, "the workbench was chosen for more than one argument");
     return 0;
 }

@@ -50,7 +50,8 @@ struct Workspace {
         fs::create_directories(folder / "root" / "sub");
         fs::create_directories(folder / "lib");
         writeFile(folder / "root" / "shape.glsl", "#pragma once\nfloat shape(vec3 p) { return length(p) - 0.5; }\n");
-        writeFile(folder / "root" / "sub" / "up.glsl", "#include \"../shape.glsl\"\nfloat up(vec3 p) { return shape(p - vec3(0, 1, 0)); }\n");
+        writeFile(folder / "root" / "sub" / "up.glsl",
+                  "#include \"../shape.glsl\"\nfloat up(vec3 p) { return shape(p - vec3(0, 1, 0)); }\n");
         for (int i = 1; i <= 5; ++i)
             writeFile(folder / "lib" / ("chain" + std::to_string(i) + ".glsl"),
                       i < 5 ? "#include \"chain" + std::to_string(i + 1) + ".glsl\"\n" : std::string("float chainEnd;\n"));
@@ -74,7 +75,8 @@ std::vector<std::string> splitFiles(const std::string& input) {
     while (start <= input.size()) {
         std::size_t end = input.find('\n', start);
         std::string_view line = std::string_view(input).substr(start, end == std::string::npos ? std::string::npos : end - start);
-        if (line == "%%" && files.size() < 5) files.emplace_back();
+        if (line == "%%" && files.size() < 5)
+            files.emplace_back();
         else {
             files.back() += line;
             if (end != std::string::npos) files.back() += '\n';
@@ -92,7 +94,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::vector<std::string> files = splitFiles(std::string(reinterpret_cast<const char*>(data), size));
     for (int i = 1; i <= 4; ++i) {
         const fs::path path = space.folder / "lib" / ("f" + std::to_string(i) + ".glsl");
-        if (std::size_t(i) < files.size()) writeFile(path, files[std::size_t(i)]);
+        if (std::size_t(i) < files.size())
+            writeFile(path, files[std::size_t(i)]);
         else {
             std::error_code ec;
             fs::remove(path, ec);
@@ -123,6 +126,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const fs::path samplerPath = space.folder / "root" / "sampler.glsl";
     writeFile(samplerPath, root);
     auto sampler = sdfwb::sampling::findSampler(samplerPath.string(), {});
-    if (!sampler) require(sampler.error().message.rfind(samplerPath.string() + ":", 0) == 0, "a sampler error does not name the file");
+    if (!sampler)
+        require(sampler.error().message.rfind(samplerPath.string() + ":", 0) == 0, "a sampler error does not name the file");
     return 0;
 }

@@ -35,7 +35,9 @@ void readEverything(SampleReader& reader) {
         require(ok.hasValue(), "an accepted file failed to read its own rows");
     }
     // Ranges past the end, including ones whose end overflows, are errors, not reads.
-    const std::uint64_t past[][2] = {{rows, 1}, {rows + 1, 0}, {std::numeric_limits<std::uint64_t>::max(), 2},
+    const std::uint64_t past[][2] = {{rows, 1},
+                                     {rows + 1, 0},
+                                     {std::numeric_limits<std::uint64_t>::max(), 2},
                                      {std::numeric_limits<std::uint64_t>::max() / 4, 8}};
     for (const auto& range : past) {
         auto ok = reader.read(range[0], std::size_t(range[1]), positions.data(), distances.data(), gradients.data());

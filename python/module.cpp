@@ -109,7 +109,7 @@ py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_
         compute.releaseGl();
         releaseContext();
     }
-    if (!compileErrors.empty()) throw py::value_error(compileErrors);  // the user's GLSL: a value error
+    if (!compileErrors.empty()) throw py::value_error(compileErrors); // the user's GLSL: a value error
     if (!report) throw std::runtime_error(report.error().message);
     py::dict result;
     result["position"] = positions;
@@ -130,7 +130,8 @@ py::dict load(const std::string& path) {
     Expected<void> read = makeError("not read");
     {
         py::gil_scoped_release release;
-        read = (*reader)->read(0, std::size_t(rows), positions.mutable_data(), distances.mutable_data(), gradients.mutable_data());
+        read =
+            (*reader)->read(0, std::size_t(rows), positions.mutable_data(), distances.mutable_data(), gradients.mutable_data());
     }
     if (!read) throw py::value_error(read.error().message);
     py::dict result;
@@ -153,12 +154,14 @@ py::dict load(const std::string& path) {
 
 void save(const std::string& path, py::array_t<float, py::array::c_style | py::array::forcecast> position,
           py::array_t<float, py::array::c_style | py::array::forcecast> distance,
-          py::array_t<float, py::array::c_style | py::array::forcecast> gradient, const std::string& format, const std::string& sdf,
-          const std::string& pattern, std::uint64_t seed, float time) {
+          py::array_t<float, py::array::c_style | py::array::forcecast> gradient, const std::string& format,
+          const std::string& sdf, const std::string& pattern, std::uint64_t seed, float time) {
     if (position.ndim() != 2 || position.shape(1) != 3) throw py::value_error("save: position must have shape (N, 3)");
     const auto n = position.shape(0);
-    if (distance.ndim() != 1 || distance.shape(0) != n) throw py::value_error("save: distance must have shape (N,) with N = len(position)");
-    if (gradient.ndim() != 2 || gradient.shape(0) != n || gradient.shape(1) != 3) throw py::value_error("save: gradient must have shape (N, 3)");
+    if (distance.ndim() != 1 || distance.shape(0) != n)
+        throw py::value_error("save: distance must have shape (N,) with N = len(position)");
+    if (gradient.ndim() != 2 || gradient.shape(0) != n || gradient.shape(1) != 3)
+        throw py::value_error("save: gradient must have shape (N, 3)");
     auto chosen = format.empty() ? sampling::formatFromPath(path) : sampling::parseFormat(format);
     if (!chosen) throw py::value_error("save: '" + path + "': unknown format (use .bin, .npz or .ply, or format=)");
     sampling::SampleMetadata metadata;
@@ -172,9 +175,12 @@ void save(const std::string& path, py::array_t<float, py::array::c_style | py::a
     {
         py::gil_scoped_release release;
         auto writer = sampling::SampleWriter::create(path, *chosen, std::uint64_t(n), metadata);
-        if (!writer) written = writer.error();
-        else if (auto ok = (*writer)->append(position.data(), distance.data(), gradient.data(), std::size_t(n)); !ok) written = ok;
-        else written = (*writer)->commit();
+        if (!writer)
+            written = writer.error();
+        else if (auto ok = (*writer)->append(position.data(), distance.data(), gradient.data(), std::size_t(n)); !ok)
+            written = ok;
+        else
+            written = (*writer)->commit();
     }
     if (!written) throw std::runtime_error(written.error().message);
 }
@@ -274,5 +280,6 @@ PYBIND11_MODULE(sdfwb, m) {
           py::arg("entry") = "", py::arg("probe_distance") = 3.0f,
           "Field audit: verdict (the most severe finding: exact, conservative, non-conservative, truncated, discontinuous,\n"
           "nan), flags (every finding with its evidence and up to 16 example points) and figures.");
-    m.def("list_sdfs", &listSdfs, "The dataset: one dict per SDF (name, category, declared_type, animated, path, author, license).");
+    m.def("list_sdfs", &listSdfs,
+          "The dataset: one dict per SDF (name, category, declared_type, animated, path, author, license).");
 }

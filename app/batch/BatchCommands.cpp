@@ -81,8 +81,8 @@ public:
         std::string bar(std::size_t(filled), '#');
         bar.append(std::size_t(30 - filled), ' ');
         double rate = seconds > 0.0 ? double(done) / seconds : 0.0;
-        std::fprintf(stderr, "\r%5.1f%% [%s] %llu/%llu  %.2f M samples/s ", 100.0 * fraction, bar.c_str(), (unsigned long long)done,
-                     (unsigned long long)total, rate / 1e6);
+        std::fprintf(stderr, "\r%5.1f%% [%s] %llu/%llu  %.2f M samples/s ", 100.0 * fraction, bar.c_str(),
+                     (unsigned long long)done, (unsigned long long)total, rate / 1e6);
         m_drawn = true;
     }
 
@@ -131,30 +131,39 @@ int runRender(const RenderJob& job, const OutputOptions& output) {
     if (!sdfPath) return kExitUsage;
     fs::path outputPath(job.output);
     if (!renderer::canWriteImageExtension(outputPath.extension().string())) {
-        printError("--output: '" + job.output + "': unsupported image type '" + outputPath.extension().string() + "' (use .png, .jpg or .exr)");
+        printError("--output: '" + job.output + "': unsupported image type '" + outputPath.extension().string() +
+                   "' (use .png, .jpg or .exr)");
         return kExitUsage;
     }
     std::error_code ec;
     fs::path folder = outputPath.parent_path().empty() ? fs::path(".") : outputPath.parent_path();
-    if (!fs::is_directory(folder, ec)) { printError("--output: '" + job.output + "': folder '" + folder.string() + "' does not exist"); return kExitUsage; }
+    if (!fs::is_directory(folder, ec)) {
+        printError("--output: '" + job.output + "': folder '" + folder.string() + "' does not exist");
+        return kExitUsage;
+    }
 
     auto opened = openSdf(*sdfPath, job.entry, "render: " + sdfPath->string() + " has errors; nothing written");
     if (!opened) return kExitFailure;
     const shaders::PreparedSdf& sdf = *opened;
     auto context = renderer::HeadlessContext::create();
-    if (!context) { printError(context.error().message); return kExitNoGl; }
+    if (!context) {
+        printError(context.error().message);
+        return kExitNoGl;
+    }
     if (auto floor = renderer::precisionFloor(job.camera, job.trace.epsilonScale, job.height); floor.exceeded) {
         char text[256];
-        std::snprintf(text, sizeof text,
-                      "below float32 precision: positions are known to %.2g at this camera distance, the hit tolerance is %.2g (expect "
-                      "surface noise; bring the camera nearer the origin or widen --fov)",
-                      double(floor.positionFloor), double(floor.hitTolerance));
+        std::snprintf(
+            text, sizeof text,
+            "below float32 precision: positions are known to %.2g at this camera distance, the hit tolerance is %.2g (expect "
+            "surface noise; bring the camera nearer the origin or widen --fov)",
+            double(floor.positionFloor), double(floor.hitTolerance));
         log::warning("render", text);
     }
     if (const float distance = glm::length(job.camera.position); distance - 1.05f * std::sqrt(3.0f) > job.camera.farPlane) {
         char text[256];
         std::snprintf(text, sizeof text,
-                      "the camera is %.4g from the origin, beyond the far plane (%.4g): the [-1,1]^3 box is out of view, nothing will be drawn",
+                      "the camera is %.4g from the origin, beyond the far plane (%.4g): the [-1,1]^3 box is out of view, nothing "
+                      "will be drawn",
                       double(distance), double(job.camera.farPlane));
         log::warning("render", text);
     }
@@ -182,15 +191,18 @@ int runRender(const RenderJob& job, const OutputOptions& output) {
     }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (output.json) {
-        nlohmann::json report = {{"output", outputPath.string()}, {"sdf", sdfPath->string()},
-                                 {"width", job.width}, {"height", job.height},
+        nlohmann::json report = {{"output", outputPath.string()},
+                                 {"sdf", sdfPath->string()},
+                                 {"width", job.width},
+                                 {"height", job.height},
                                  {"shading", renderer::shadingModeName(job.shading.mode)},
-                                 {"frame_ms", stats.cpuMilliseconds}, {"seconds", seconds},
+                                 {"frame_ms", stats.cpuMilliseconds},
+                                 {"seconds", seconds},
                                  {"gl_renderer", context.value()->info().renderer}};
         std::cout << report.dump(2) << "\n";
     } else if (!output.quiet) {
-        std::printf("wrote %s (%dx%d, %s shading, frame %.1f ms, total %.2f s)\n", outputPath.string().c_str(), job.width, job.height,
-                    renderer::shadingModeName(job.shading.mode), stats.cpuMilliseconds, seconds);
+        std::printf("wrote %s (%dx%d, %s shading, frame %.1f ms, total %.2f s)\n", outputPath.string().c_str(), job.width,
+                    job.height, renderer::shadingModeName(job.shading.mode), stats.cpuMilliseconds, seconds);
     }
     return kExitOk;
 }
@@ -201,10 +213,14 @@ int runList(const OutputOptions& output) {
     if (output.json) {
         nlohmann::json list = nlohmann::json::array();
         for (const dataset::Entry& entry : catalogue.entries())
-            list.push_back({{"name", entry.metadata.name}, {"category", entry.metadata.category},
+            list.push_back({{"name", entry.metadata.name},
+                            {"category", entry.metadata.category},
                             {"declared_type", dataset::declaredTypeName(entry.metadata.type)},
-                            {"animated", entry.metadata.animated}, {"path", entry.path.string()},
-                            {"author", entry.metadata.author}, {"license", entry.metadata.license}, {"notes", entry.metadata.notes}});
+                            {"animated", entry.metadata.animated},
+                            {"path", entry.path.string()},
+                            {"author", entry.metadata.author},
+                            {"license", entry.metadata.license},
+                            {"notes", entry.metadata.notes}});
         std::cout << list.dump(2) << "\n";
     } else {
         for (const dataset::Entry& entry : catalogue.entries())
@@ -223,7 +239,10 @@ int runSample(const SampleCommand& command, const OutputOptions& output) {
     auto sdfPath = resolveSdf(command.sdf);
     if (!sdfPath) return kExitUsage;
     auto sampler = sampling::findSampler(command.pattern, sampling::samplerFolders());
-    if (!sampler) { printError("--pattern: " + sampler.error().message); return kExitUsage; }
+    if (!sampler) {
+        printError("--pattern: " + sampler.error().message);
+        return kExitUsage;
+    }
     std::optional<sampling::SampleFormat> format =
         command.format.empty() ? sampling::formatFromPath(command.output) : sampling::parseFormat(command.format);
     if (!format) {
@@ -242,7 +261,10 @@ int runSample(const SampleCommand& command, const OutputOptions& output) {
     job.chunkSize = command.chunkSize;
     job.gradientStep = command.gradientStep;
     job.surfaceTolerance = command.surfaceTolerance;
-    if (auto ok = sampling::validate(job); !ok) { printError(ok.error().message); return kExitUsage; }
+    if (auto ok = sampling::validate(job); !ok) {
+        printError(ok.error().message);
+        return kExitUsage;
+    }
     if (job.rows() > sampling::maxRows(*format)) {
         printError("-n: " + std::to_string(job.rows()) + " rows exceed the ." + sampling::formatName(*format) + " limit of " +
                    std::to_string(sampling::maxRows(*format)));
@@ -260,7 +282,10 @@ int runSample(const SampleCommand& command, const OutputOptions& output) {
     if (!opened) return kExitFailure;
     const shaders::PreparedSdf& sdf = *opened;
     auto context = renderer::HeadlessContext::create();
-    if (!context) { printError(context.error().message); return kExitNoGl; }
+    if (!context) {
+        printError(context.error().message);
+        return kExitNoGl;
+    }
     renderer::SampleCompute compute;
     auto diagnostics = compute.build(sdf, *sampler);
     if (shaders::hasErrors(diagnostics)) {
@@ -277,7 +302,9 @@ int runSample(const SampleCommand& command, const OutputOptions& output) {
     ProgressBar bar(!output.quiet && !output.json);
     ProgressSink progress{[&](std::uint64_t done, std::uint64_t total) {
                               bar.update(done, total);
-                              if (output.progressLines) std::fprintf(stderr, "progress %llu %llu\n", (unsigned long long)done, (unsigned long long)total);
+                              if (output.progressLines)
+                                  std::fprintf(stderr, "progress %llu %llu\n", (unsigned long long)done,
+                                               (unsigned long long)total);
                           },
                           &cancel};
     Expected<sampling::SamplingReport> report = [&] {
@@ -286,49 +313,69 @@ int runSample(const SampleCommand& command, const OutputOptions& output) {
     }();
     bar.finish();
     compute.releaseGl();
-    if (!report) { printError(report.error().message); return kExitFailure; }
+    if (!report) {
+        printError(report.error().message);
+        return kExitFailure;
+    }
     if (report->cancelled) {
-        printError("sample: cancelled after " + std::to_string(report->rows) + " of " + std::to_string(job.rows()) + " samples; nothing written");
+        printError("sample: cancelled after " + std::to_string(report->rows) + " of " + std::to_string(job.rows()) +
+                   " samples; nothing written");
         return kExitCancelled;
     }
     double rate = report->seconds > 0.0 ? double(report->rows) / report->seconds : 0.0;
     if (output.json) {
-        nlohmann::json json = {{"output", outputPath.string()}, {"format", sampling::formatName(*format)}, {"sdf", command.sdf},
-                               {"pattern", command.pattern}, {"n", job.count}, {"rows", report->rows},
-                               {"first_index", report->firstIndex}, {"seed", job.seed}, {"time", job.time},
-                               {"bad_rows", report->badRows}, {"seconds", report->seconds}, {"samples_per_second", rate},
+        nlohmann::json json = {{"output", outputPath.string()},
+                               {"format", sampling::formatName(*format)},
+                               {"sdf", command.sdf},
+                               {"pattern", command.pattern},
+                               {"n", job.count},
+                               {"rows", report->rows},
+                               {"first_index", report->firstIndex},
+                               {"seed", job.seed},
+                               {"time", job.time},
+                               {"bad_rows", report->badRows},
+                               {"seconds", report->seconds},
+                               {"samples_per_second", rate},
                                {"gl_renderer", context.value()->info().renderer}};
         std::cout << json.dump(2) << "\n";
     } else if (!output.quiet) {
         std::printf("wrote %s: %llu samples (%s, seed %llu, rows %llu..%llu of %llu), %llu bad rows, %.2f s (%.2f M samples/s)\n",
-                    outputPath.string().c_str(), (unsigned long long)report->rows, command.pattern.c_str(), (unsigned long long)job.seed,
-                    (unsigned long long)report->firstIndex, (unsigned long long)(report->firstIndex + report->rows),
-                    (unsigned long long)job.count, (unsigned long long)report->badRows, report->seconds, rate / 1e6);
+                    outputPath.string().c_str(), (unsigned long long)report->rows, command.pattern.c_str(),
+                    (unsigned long long)job.seed, (unsigned long long)report->firstIndex,
+                    (unsigned long long)(report->firstIndex + report->rows), (unsigned long long)job.count,
+                    (unsigned long long)report->badRows, report->seconds, rate / 1e6);
     }
     if (report->badRows > 0 && !output.quiet && !output.json)
-        std::fprintf(stderr, "sdfwb: note: %llu rows are NaN/Inf (rays that missed for surface/near, or a field that is not finite)\n",
+        std::fprintf(stderr,
+                     "sdfwb: note: %llu rows are NaN/Inf (rays that missed for surface/near, or a field that is not finite)\n",
                      (unsigned long long)report->badRows);
     return kExitOk;
 }
 
-int runMerge(const std::string& outputFile, const std::string& formatName, const std::vector<std::string>& parts, const OutputOptions& output) {
+int runMerge(const std::string& outputFile, const std::string& formatName, const std::vector<std::string>& parts,
+             const OutputOptions& output) {
     std::optional<sampling::SampleFormat> format =
         formatName.empty() ? sampling::formatFromPath(outputFile) : sampling::parseFormat(formatName);
     if (!format) {
-        printError(formatName.empty() ? "--output: '" + outputFile + "': unknown sample file type (use .bin, .npz or .ply, or --format)"
-                                      : "--format: unknown format '" + formatName + "' (bin, npz, ply)");
+        printError(formatName.empty()
+                       ? "--output: '" + outputFile + "': unknown sample file type (use .bin, .npz or .ply, or --format)"
+                       : "--format: unknown format '" + formatName + "' (bin, npz, ply)");
         return kExitUsage;
     }
     std::vector<std::filesystem::path> paths(parts.begin(), parts.end());
     auto start = std::chrono::steady_clock::now();
     auto report = sampling::mergeSampleFiles(outputFile, *format, paths);
-    if (!report) { printError(report.error().message); return kExitFailure; }
+    if (!report) {
+        printError(report.error().message);
+        return kExitFailure;
+    }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (output.json) {
         nlohmann::json json = {{"output", outputFile}, {"rows", report->rows}, {"parts", report->parts}, {"seconds", seconds}};
         std::cout << json.dump(2) << "\n";
     } else if (!output.quiet) {
-        std::printf("wrote %s: %llu samples from %zu parts in %.2f s\n", outputFile.c_str(), (unsigned long long)report->rows, report->parts, seconds);
+        std::printf("wrote %s: %llu samples from %zu parts in %.2f s\n", outputFile.c_str(), (unsigned long long)report->rows,
+                    report->parts, seconds);
     }
     return kExitOk;
 }
@@ -346,15 +393,25 @@ int runAnimate(const AnimateJob& job, const OutputOptions& output) {
         printError("--output: '" + job.frame.output + "': animations are written as .mp4 (H.264)");
         return kExitUsage;
     }
-    if (!(job.seconds > 0.0f) || job.seconds > 3600.0f) { printError("--seconds: must be in (0, 3600]"); return kExitUsage; }
-    if (job.framesPerSecond < 1 || job.framesPerSecond > 240) { printError("--fps: must be 1..240"); return kExitUsage; }
+    if (!(job.seconds > 0.0f) || job.seconds > 3600.0f) {
+        printError("--seconds: must be in (0, 3600]");
+        return kExitUsage;
+    }
+    if (job.framesPerSecond < 1 || job.framesPerSecond > 240) {
+        printError("--fps: must be 1..240");
+        return kExitUsage;
+    }
     auto opened = openSdf(*sdfPath, job.frame.entry, "animate: " + sdfPath->string() + " has errors; nothing written");
     if (!opened) return kExitFailure;
     const shaders::PreparedSdf& sdf = *opened;
     if (!job.turntable && !sdf.usesTime() && !output.quiet)
-        std::fprintf(stderr, "sdfwb: note: %s is not animated and --turntable is off: every frame is the same\n", sdfPath->string().c_str());
+        std::fprintf(stderr, "sdfwb: note: %s is not animated and --turntable is off: every frame is the same\n",
+                     sdfPath->string().c_str());
     auto context = renderer::HeadlessContext::create();
-    if (!context) { printError(context.error().message); return kExitNoGl; }
+    if (!context) {
+        printError(context.error().message);
+        return kExitNoGl;
+    }
     renderer::SdfRenderer sdfRenderer;
     (void)sdfRenderer.setTrace(job.frame.trace);
     (void)sdfRenderer.setShading(job.frame.shading);
@@ -366,7 +423,10 @@ int runAnimate(const AnimateJob& job, const OutputOptions& output) {
         return kExitFailure;
     }
     auto writer = renderer::VideoWriter::open(outputPath, job.frame.width, job.frame.height, job.framesPerSecond);
-    if (!writer) { printError(writer.error().message); return kExitFailure; }
+    if (!writer) {
+        printError(writer.error().message);
+        return kExitFailure;
+    }
 
     const int frames = std::max(1, int(std::lround(double(job.seconds) * job.framesPerSecond)));
     CancelToken cancel;
@@ -397,16 +457,23 @@ int runAnimate(const AnimateJob& job, const OutputOptions& output) {
         printError("animate: cancelled; nothing written");
         return kExitCancelled;
     }
-    if (auto ok = (*writer)->finish(); !ok) { printError(ok.error().message); return kExitFailure; }
+    if (auto ok = (*writer)->finish(); !ok) {
+        printError(ok.error().message);
+        return kExitFailure;
+    }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (output.json) {
-        nlohmann::json report = {{"output", outputPath.string()}, {"frames", frames}, {"fps", job.framesPerSecond},
-                                 {"width", job.frame.width & ~1}, {"height", job.frame.height & ~1}, {"render_seconds", renderSeconds},
+        nlohmann::json report = {{"output", outputPath.string()},
+                                 {"frames", frames},
+                                 {"fps", job.framesPerSecond},
+                                 {"width", job.frame.width & ~1},
+                                 {"height", job.frame.height & ~1},
+                                 {"render_seconds", renderSeconds},
                                  {"seconds", seconds}};
         std::cout << report.dump(2) << "\n";
     } else if (!output.quiet) {
-        std::printf("wrote %s (%d frames at %d fps, %dx%d, H.264; rendering %.2f s, total %.2f s)\n", outputPath.string().c_str(), frames,
-                    job.framesPerSecond, job.frame.width & ~1, job.frame.height & ~1, renderSeconds, seconds);
+        std::printf("wrote %s (%d frames at %d fps, %dx%d, H.264; rendering %.2f s, total %.2f s)\n", outputPath.string().c_str(),
+                    frames, job.framesPerSecond, job.frame.width & ~1, job.frame.height & ~1, renderSeconds, seconds);
     }
     return kExitOk;
 }
@@ -418,12 +485,18 @@ namespace sdfwb::app {
 int runAudit(const AuditCommand& command, const OutputOptions& output) {
     auto sdfPath = resolveSdf(command.sdf);
     if (!sdfPath) return kExitUsage;
-    if (command.samples < 64 || command.samples > 100000000) { printError("--samples: must be 64..100000000"); return kExitUsage; }
+    if (command.samples < 64 || command.samples > 100000000) {
+        printError("--samples: must be 64..100000000");
+        return kExitUsage;
+    }
     auto opened = openSdf(*sdfPath, command.entry, "audit: " + sdfPath->string() + " has errors");
     if (!opened) return kExitFailure;
     const shaders::PreparedSdf& sdf = *opened;
     auto context = renderer::HeadlessContext::create();
-    if (!context) { printError(context.error().message); return kExitNoGl; }
+    if (!context) {
+        printError(context.error().message);
+        return kExitNoGl;
+    }
     // Every finding with its evidence: JSON objects, and text lines.
     auto flagsJson = [](const std::vector<sampling::AuditFlag>& flags) {
         nlohmann::json list = nlohmann::json::array();
@@ -453,7 +526,10 @@ int runAudit(const AuditCommand& command, const OutputOptions& output) {
     if (command.plane) {
         glm::vec3 normal(command.planeNormal[0], command.planeNormal[1], command.planeNormal[2]);
         auto readout = sampling::analysePlane(sdf, normal, command.planeOffset, command.resolution, command.time);
-        if (!readout) { printError(readout.error().message); return kExitFailure; }
+        if (!readout) {
+            printError(readout.error().message);
+            return kExitFailure;
+        }
         const sampling::PlaneReadout& r = *readout;
         if (output.json) {
             nlohmann::json json = {
@@ -477,15 +553,17 @@ int runAudit(const AuditCommand& command, const OutputOptions& output) {
                 {"seconds", r.seconds}};
             std::cout << json.dump(2) << "\n";
         } else if (!output.quiet) {
-            std::printf("plane %.3g,%.3g,%.3g,%.3g of %s: %llu points (%dx%d grid), %.3f s\n", normal.x, normal.y, normal.z, command.planeOffset,
-                        sdfPath->string().c_str(), (unsigned long long)r.points, r.resolution, r.resolution, r.seconds);
+            std::printf("plane %.3g,%.3g,%.3g,%.3g of %s: %llu points (%dx%d grid), %.3f s\n", normal.x, normal.y, normal.z,
+                        command.planeOffset, sdfPath->string().c_str(), (unsigned long long)r.points, r.resolution, r.resolution,
+                        r.seconds);
             std::printf("  value range        [%.4g, %.4g]\n", r.minimum, r.maximum);
-            std::printf("  |grad f|           max %.4g, 99th percentile %.4g; %.2f %% of the plane above 1\n", r.lipschitzMax, r.lipschitz99,
-                        100.0 * r.shareAboveOne);
+            std::printf("  |grad f|           max %.4g, 99th percentile %.4g; %.2f %% of the plane above 1\n", r.lipschitzMax,
+                        r.lipschitz99, 100.0 * r.shareAboveOne);
             std::printf("  safe step factor   %.4g\n", r.safeStepFactor);
-            std::printf("  truncation         %s\n", r.truncationDistance ? std::to_string(*r.truncationDistance).c_str() : "none");
-            std::printf("  discontinuities    %llu points\n  NaN/Inf            %llu points\n", (unsigned long long)r.discontinuities,
-                        (unsigned long long)r.nanCount);
+            std::printf("  truncation         %s\n",
+                        r.truncationDistance ? std::to_string(*r.truncationDistance).c_str() : "none");
+            std::printf("  discontinuities    %llu points\n  NaN/Inf            %llu points\n",
+                        (unsigned long long)r.discontinuities, (unsigned long long)r.nanCount);
             printFlags(r.flags);
         }
         return kExitOk;
@@ -500,18 +578,27 @@ int runAudit(const AuditCommand& command, const OutputOptions& output) {
     options.probeDistance = command.probeDistance;
     Expected<sampling::AuditReport> report = [&] {
         InterruptScope interrupts(cancel);
-        return sampling::auditField(sdf, options, ProgressSink{[&](std::uint64_t done, std::uint64_t total) { bar.update(done, total); }, &cancel});
+        return sampling::auditField(
+            sdf, options, ProgressSink{[&](std::uint64_t done, std::uint64_t total) { bar.update(done, total); }, &cancel});
     }();
     bar.finish();
-    if (cancel.isCancelled()) { printError("audit: cancelled"); return kExitCancelled; }
-    if (!report) { printError(report.error().message); return kExitFailure; }
+    if (cancel.isCancelled()) {
+        printError("audit: cancelled");
+        return kExitCancelled;
+    }
+    if (!report) {
+        printError(report.error().message);
+        return kExitFailure;
+    }
     const sampling::AuditReport& r = *report;
     if (output.json) {
         nlohmann::json scales = nlohmann::json::array();
-        for (const auto& q : r.scales) scales.push_back({{"scale", q.step}, {"p50", q.p50}, {"p99", q.p99}, {"p999", q.p999}, {"max", q.max}});
+        for (const auto& q : r.scales)
+            scales.push_back({{"scale", q.step}, {"p50", q.p50}, {"p99", q.p99}, {"p999", q.p999}, {"max", q.max}});
         nlohmann::json convergence = nlohmann::json::array();
         for (const auto& c : r.convergence)
-            convergence.push_back({{"samples", c.samples}, {"lipschitz", c.lipschitz}, {"exactness_p99", c.exactnessP99}, {"seconds", c.seconds}});
+            convergence.push_back(
+                {{"samples", c.samples}, {"lipschitz", c.lipschitz}, {"exactness_p99", c.exactnessP99}, {"seconds", c.seconds}});
         nlohmann::json json = {
             {"sdf", sdfPath->string()},
             {"verdict", r.verdict},
@@ -551,21 +638,24 @@ int runAudit(const AuditCommand& command, const OutputOptions& output) {
         std::printf("  safe step factor     %.4g\n", r.safeStepFactor);
         std::printf("  truncation           %s\n", r.truncationDistance ? std::to_string(*r.truncationDistance).c_str() : "none");
         std::printf("  NaN/Inf fraction     %.3g +- %.2g\n", r.nanFraction, r.nanFractionError);
-        std::printf("  discontinuities      %llu points (%.3g %%)\n", (unsigned long long)r.discontinuities, 100.0 * r.discontinuityShare);
+        std::printf("  discontinuities      %llu points (%.3g %%)\n", (unsigned long long)r.discontinuities,
+                    100.0 * r.discontinuityShare);
         std::printf("  eikonal error        mean %.3g, 95th percentile %.3g (near the surface)\n", r.eikonalMean, r.eikonalP95);
-        std::printf("  exactness            | |f| - true distance |: 99th percentile %.3g, max %.3g; true distance known to +-%.2g\n",
-                    r.exactnessP99, r.exactnessMax, r.surfaceSpacing);
+        std::printf(
+            "  exactness            | |f| - true distance |: 99th percentile %.3g, max %.3g; true distance known to +-%.2g\n",
+            r.exactnessP99, r.exactnessMax, r.surfaceSpacing);
         std::printf("                       (%llu surface points, k-d tree); %.3g %% of points overestimate it\n",
                     (unsigned long long)r.surfacePoints, 100.0 * r.overestimateShare);
-        std::printf("  |grad f| at surface  %.3g (median; 1 for a distance, ~0 when the gradient vanishes there)\n", r.surfaceGradient);
+        std::printf("  |grad f| at surface  %.3g (median; 1 for a distance, ~0 when the gradient vanishes there)\n",
+                    r.surfaceGradient);
         std::printf("  precision floor      %.2g (rounding noise in f; float32 spacing at |p| = 1 is 1.2e-07)\n", r.noiseFloor);
         std::printf("\n  difference quotients |Df|      p50      p99    p99.9      max\n");
         for (const auto& q : r.scales)
             std::printf("    at scale %-8.2g        %8.4f %8.4f %8.4f %8.4f\n", q.step, q.p50, q.p99, q.p999, q.max);
         std::printf("\n  error against run time: samples   Lipschitz   exactness p99   seconds\n");
         for (const auto& c : r.convergence)
-            std::printf("                          %9llu   %9.4f   %13.3g   %7.2f\n", (unsigned long long)c.samples, c.lipschitz, c.exactnessP99,
-                        c.seconds);
+            std::printf("                          %9llu   %9.4f   %13.3g   %7.2f\n", (unsigned long long)c.samples, c.lipschitz,
+                        c.exactnessP99, c.seconds);
     }
     return kExitOk;
 }

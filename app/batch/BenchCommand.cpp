@@ -46,14 +46,19 @@ int runBench(const BenchCommand& command, const OutputOptions& output) {
     options.repeats = command.repeats;
     options.quick = command.quick;
     options.glDescription = renderer::describe(context.value()->info());
-    options.commandLine = "sdfwb --batch bench" + std::string(command.quick ? " --quick" : "") + " --repeats " + std::to_string(command.repeats);
+    options.commandLine =
+        "sdfwb --batch bench" + std::string(command.quick ? " --quick" : "") + " --repeats " + std::to_string(command.repeats);
     const char* names[] = {"sphere tracer", "samplers", "gradients", "audit"};
     if (!output.quiet) std::fprintf(stderr, "bench: %s ...\n", names[0]);
-    auto files = bench::runBenchmarks(options, ProgressSink{[&](std::uint64_t done, std::uint64_t total) {
-                                                                if (output.progressLines) std::fprintf(stderr, "progress %llu %llu\n", (unsigned long long)done, (unsigned long long)total);
-                                                                if (!output.quiet && done < total) std::fprintf(stderr, "bench: %s ...\n", names[done]);
-                                                            },
-                                                            nullptr});
+    auto files =
+        bench::runBenchmarks(options, ProgressSink{[&](std::uint64_t done, std::uint64_t total) {
+                                                       if (output.progressLines)
+                                                           std::fprintf(stderr, "progress %llu %llu\n", (unsigned long long)done,
+                                                                        (unsigned long long)total);
+                                                       if (!output.quiet && done < total)
+                                                           std::fprintf(stderr, "bench: %s ...\n", names[done]);
+                                                   },
+                                                   nullptr});
     if (!files) {
         printError(files.error().message);
         return kExitFailure;
@@ -70,7 +75,9 @@ int runBench(const BenchCommand& command, const OutputOptions& output) {
             return kExitFailure;
         }
     }
-    if (!output.quiet) std::printf("wrote %s (tables in %s, plots in %s)\n", files->markdown.c_str(), files->csvDirectory.c_str(), files->imageDirectory.c_str());
+    if (!output.quiet)
+        std::printf("wrote %s (tables in %s, plots in %s)\n", files->markdown.c_str(), files->csvDirectory.c_str(),
+                    files->imageDirectory.c_str());
     return kExitOk;
 }
 

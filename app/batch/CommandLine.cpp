@@ -81,7 +81,8 @@ CLI::Validator numberCheck(bool positive) {
         [positive](std::string& text) -> std::string {
             char* end = nullptr;
             const double value = std::strtod(text.c_str(), &end);
-            if (end == text.c_str() || *end != '\0' || !std::isfinite(value)) return "expected a finite number, got '" + text + "'";
+            if (end == text.c_str() || *end != '\0' || !std::isfinite(value))
+                return "expected a finite number, got '" + text + "'";
             if (positive && !(value > 0.0)) return "must be positive, got '" + text + "'";
             return {};
         },
@@ -124,7 +125,7 @@ enum class Mode { Run, Check };
 
 // Runs CLI11 on the arguments; returns an exit code when parsing ends the run (help or error).
 std::optional<int> parse(CLI::App& app, const std::string& context, Arguments arguments) {
-    std::reverse(arguments.begin(), arguments.end());  // CLI11 takes them last first
+    std::reverse(arguments.begin(), arguments.end()); // CLI11 takes them last first
     try {
         app.parse(arguments);
     } catch (const CLI::CallForHelp&) {
@@ -147,39 +148,63 @@ void addFrameOptions(CLI::App& app, RenderJob& job, FrameOptions& options) {
     app.add_option("--sdf", job.sdf, "dataset name or path to a .glsl file")->required();
     addEntryOption(app, job.entry);
     app.add_option("--size", options.size, "image size WxH")->capture_default_str();
-    app.add_option("--time", job.time, "time in seconds for animated SDFs (start time for animate)")->capture_default_str()->check(numberCheck(false));
+    app.add_option("--time", job.time, "time in seconds for animated SDFs (start time for animate)")
+        ->capture_default_str()
+        ->check(numberCheck(false));
     app.add_option("--shading", options.shading, "shading mode: " + renderer::shadingModeNames())->capture_default_str();
     app.add_flag("--ao", job.shading.ambientOcclusion, "ambient occlusion");
-    app.add_option("--matcap", job.shading.matcap, "matcap for --shading matcap: clay, chrome, jade, wax, or an image path")->capture_default_str();
+    app.add_option("--matcap", job.shading.matcap, "matcap for --shading matcap: clay, chrome, jade, wax, or an image path")
+        ->capture_default_str();
     app.add_option("--camera", options.camera, "camera position X,Y,Z");
     app.add_option("--target", options.target, "point the camera looks at X,Y,Z (default 0,0,0)");
-    app.add_option("--fov", job.camera.fovYDegrees, "vertical field of view in degrees")->capture_default_str()->check(CLI::Range(1.0f, 179.0f));
-    app.add_option("--max-steps", job.trace.maxSteps, "sphere-tracing step budget per ray")->capture_default_str()->check(CLI::Range(1, 100000));
-    app.add_option("--step-factor", job.trace.stepFactor, "scale each step (1/L for an L-Lipschitz field)")->capture_default_str()->check(CLI::Range(0.01f, 2.0f));
-    app.add_option("--relaxation", job.trace.overRelaxation, "over-relaxation factor (1 = off; 1.2-1.9 takes longer steps, with fallback)")->capture_default_str()->check(CLI::Range(1.0f, 1.95f));
+    app.add_option("--fov", job.camera.fovYDegrees, "vertical field of view in degrees")
+        ->capture_default_str()
+        ->check(CLI::Range(1.0f, 179.0f));
+    app.add_option("--max-steps", job.trace.maxSteps, "sphere-tracing step budget per ray")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 100000));
+    app.add_option("--step-factor", job.trace.stepFactor, "scale each step (1/L for an L-Lipschitz field)")
+        ->capture_default_str()
+        ->check(CLI::Range(0.01f, 2.0f));
+    app.add_option("--relaxation", job.trace.overRelaxation,
+                   "over-relaxation factor (1 = off; 1.2-1.9 takes longer steps, with fallback)")
+        ->capture_default_str()
+        ->check(CLI::Range(1.0f, 1.95f));
     app.add_option("--plane", options.plane, "cutting plane NX,NY,NZ,OFFSET (dot(N, p) = OFFSET), drawn with isocontours");
     app.add_flag("--plane-no-clip", options.planeNoClip, "keep the surface in front of the cutting plane");
-    app.add_option("--contour-spacing", job.plane.contourSpacing, "isocontour spacing on the plane")->capture_default_str()->check(CLI::Range(1e-5f, 10.0f));
+    app.add_option("--contour-spacing", job.plane.contourSpacing, "isocontour spacing on the plane")
+        ->capture_default_str()
+        ->check(CLI::Range(1e-5f, 10.0f));
 }
 
 // Returns an exit code when an option is malformed.
 std::optional<int> finishFrameOptions(RenderJob& job, const FrameOptions& options) {
     auto parsedSize = parseSize(options.size);
-    if (!parsedSize) { printError("--size: expected WxH with integers from 1 to 16384, got '" + options.size + "'"); return kExitUsage; }
+    if (!parsedSize) {
+        printError("--size: expected WxH with integers from 1 to 16384, got '" + options.size + "'");
+        return kExitUsage;
+    }
     job.width = parsedSize->width;
     job.height = parsedSize->height;
     auto mode = renderer::parseShadingMode(options.shading);
-    if (!mode) { printError("--shading: unknown mode '" + options.shading + "' (" + renderer::shadingModeNames() + ")"); return kExitUsage; }
+    if (!mode) {
+        printError("--shading: unknown mode '" + options.shading + "' (" + renderer::shadingModeNames() + ")");
+        return kExitUsage;
+    }
     job.shading.mode = *mode;
     if (!options.camera.empty()) {
         auto position = parseVec3(options.camera);
-        if (!position) { printError("--camera: expected X,Y,Z, got '" + options.camera + "'"); return kExitUsage; }
+        if (!position) {
+            printError("--camera: expected X,Y,Z, got '" + options.camera + "'");
+            return kExitUsage;
+        }
         job.camera.position = *position;
     }
     if (!options.plane.empty()) {
         float nx, ny, nz, offset;
         char tail;
-        if (std::sscanf(options.plane.c_str(), " %f , %f , %f , %f %c", &nx, &ny, &nz, &offset, &tail) != 4 || (nx == 0 && ny == 0 && nz == 0)) {
+        if (std::sscanf(options.plane.c_str(), " %f , %f , %f , %f %c", &nx, &ny, &nz, &offset, &tail) != 4 ||
+            (nx == 0 && ny == 0 && nz == 0)) {
             printError("--plane: expected NX,NY,NZ,OFFSET with a non-zero normal, got '" + options.plane + "'");
             return kExitUsage;
         }
@@ -190,7 +215,10 @@ std::optional<int> finishFrameOptions(RenderJob& job, const FrameOptions& option
     }
     if (!options.target.empty()) {
         auto point = parseVec3(options.target);
-        if (!point) { printError("--target: expected X,Y,Z, got '" + options.target + "'"); return kExitUsage; }
+        if (!point) {
+            printError("--target: expected X,Y,Z, got '" + options.target + "'");
+            return kExitUsage;
+        }
         job.camera.target = *point;
     }
     return std::nullopt;
@@ -218,7 +246,10 @@ int runAnimateCommand(const Arguments& arguments, Mode mode) {
     FrameOptions options;
     addFrameOptions(app, job.frame, options);
     app.add_option("--output", job.frame.output, "video file: .mp4")->required();
-    app.add_option("--seconds", job.seconds, "length of the clip (up to 3600)")->capture_default_str()->check(numberCheck(true))->check(CLI::Range(0.0f, 3600.0f));
+    app.add_option("--seconds", job.seconds, "length of the clip (up to 3600)")
+        ->capture_default_str()
+        ->check(numberCheck(true))
+        ->check(CLI::Range(0.0f, 3600.0f));
     app.add_option("--fps", job.framesPerSecond, "frames per second")->capture_default_str()->check(CLI::Range(1, 240));
     app.add_flag("--turntable", job.turntable, "orbit the camera once around the Y axis");
     addOutputFlags(app, output);
@@ -256,15 +287,21 @@ int runSampleCommand(const Arguments& arguments, Mode mode) {
     std::string shard;
     app.add_option("--sdf", command.sdf, "dataset name or path to a .glsl file")->required();
     addEntryOption(app, command.entry);
-    app.add_option("--pattern,-p", command.pattern, "grid, image, jitter, rand, surface, near, metropolis, metropolis_curvature, or a sampler file")->required();
+    app.add_option("--pattern,-p", command.pattern,
+                   "grid, image, jitter, rand, surface, near, metropolis, metropolis_curvature, or a sampler file")
+        ->required();
     app.add_option("-n,--count", command.count, "number of samples N of the whole run")->required();
     app.add_option("--output,-o", command.output, "output file: .bin, .npz or .ply")->required();
     app.add_option("--format", command.format, "bin, npz or ply (default: from the output's extension)");
     app.add_option("--seed", command.seed, "random seed (same seed, same file, bit for bit)")->capture_default_str();
     app.add_option("--time", command.time, "time in seconds for animated SDFs")->capture_default_str()->check(numberCheck(false));
     app.add_option("--shard", shard, "K/COUNT: write only slice K (0-based) of COUNT equal slices of the N-sample run");
-    app.add_option("--chunk", command.chunkSize, "samples per GPU dispatch (memory: 28 bytes each)")->capture_default_str()->check(CLI::Range(1u, 4194240u));
-    app.add_option("--gradient-step", command.gradientStep, "central-difference step of the written gradient")->capture_default_str()->check(numberCheck(true));
+    app.add_option("--chunk", command.chunkSize, "samples per GPU dispatch (memory: 28 bytes each)")
+        ->capture_default_str()
+        ->check(CLI::Range(1u, 4194240u));
+    app.add_option("--gradient-step", command.gradientStep, "central-difference step of the written gradient")
+        ->capture_default_str()
+        ->check(numberCheck(true));
     app.add_option("--surface-tolerance", command.surfaceTolerance,
                    "|f| at which the rays of surface, near and metropolis stop (accuracy against time: docs/benchmarks.md)")
         ->capture_default_str()
@@ -296,17 +333,22 @@ int runMergeCommand(const Arguments& arguments, Mode mode) {
 }
 
 int runAuditCommand(const Arguments& arguments, Mode mode) {
-    CLI::App app("Analyse an SDF's field: exact, conservative, non-conservative, truncated, discontinuous or NaN?", "sdfwb --batch audit");
+    CLI::App app("Analyse an SDF's field: exact, conservative, non-conservative, truncated, discontinuous or NaN?",
+                 "sdfwb --batch audit");
     AuditCommand command;
     OutputOptions output;
     std::string plane;
     app.add_option("--sdf", command.sdf, "dataset name or path to a .glsl file")->required();
     addEntryOption(app, command.entry);
-    app.add_option("--samples", command.samples, "random points (as many near-surface and surface points)")->capture_default_str()->check(CLI::Range(std::uint64_t(64), std::uint64_t(100000000)));
+    app.add_option("--samples", command.samples, "random points (as many near-surface and surface points)")
+        ->capture_default_str()
+        ->check(CLI::Range(std::uint64_t(64), std::uint64_t(100000000)));
     app.add_option("--seed", command.seed, "random seed")->capture_default_str();
     app.add_option("--time", command.time, "time in seconds for animated SDFs")->capture_default_str()->check(numberCheck(false));
     app.add_option("--plane", plane, "NX,NY,NZ,OFFSET: readouts for this cutting plane instead of the volume audit");
-    app.add_option("--resolution", command.resolution, "grid side on the plane")->capture_default_str()->check(CLI::Range(2, 4096));
+    app.add_option("--resolution", command.resolution, "grid side on the plane")
+        ->capture_default_str()
+        ->check(CLI::Range(2, 4096));
     app.add_option("--probe-distance", command.probeDistance,
                    "truncation: probe outward from the surface this far (plateaus beyond the cube count)")
         ->capture_default_str()
@@ -335,9 +377,11 @@ int runBenchCommand(const Arguments& arguments, Mode mode) {
                  "sdfwb --batch bench");
     BenchCommand command;
     OutputOptions output;
-    app.add_option("--output,-o", command.outputDirectory, "report folder (benchmarks.md, *.csv, images/*.png)")->capture_default_str();
+    app.add_option("--output,-o", command.outputDirectory, "report folder (benchmarks.md, *.csv, images/*.png)")
+        ->capture_default_str();
     app.add_option("--repeats", command.repeats, "timed repeats per configuration (the spread comes from these)")
-        ->capture_default_str()->check(CLI::Range(1, 100));
+        ->capture_default_str()
+        ->check(CLI::Range(1, 100));
     app.add_flag("--quick", command.quick, "fewer and smaller configurations (a smoke run, not for the report)");
     app.add_flag("--no-plots", command.noPlots, "write the CSV tables and benchmarks.md without running the plotting script");
     addOutputFlags(app, output);
@@ -382,9 +426,12 @@ std::optional<Arguments> splitWords(const std::string& line, std::string& error)
     for (std::size_t i = 0; i < line.size(); ++i) {
         char c = line[i];
         if (quote) {
-            if (c == quote) quote = 0;
-            else if (c == '\\' && quote == '"' && i + 1 < line.size()) word += line[++i];
-            else word += c;
+            if (c == quote)
+                quote = 0;
+            else if (c == '\\' && quote == '"' && i + 1 < line.size())
+                word += line[++i];
+            else
+                word += c;
         } else if (c == '\'' || c == '"') {
             quote = c;
             inWord = true;
@@ -441,7 +488,8 @@ int runJobText(const std::string& text, const std::string& name, Mode mode) {
         Arguments arguments(words.begin() + 1, words.end());
         int exitCode = runBatchCommand(words.front(), arguments, mode);
         if (exitCode != kExitOk) {
-            printError(name + ":" + std::to_string(number) + ": step '" + words.front() + "' failed (exit code " + std::to_string(exitCode) + "); later steps not run");
+            printError(name + ":" + std::to_string(number) + ": step '" + words.front() + "' failed (exit code " +
+                       std::to_string(exitCode) + "); later steps not run");
             return exitCode;
         }
     }
@@ -469,32 +517,50 @@ int runBatchCommand(const std::string& command, const Arguments& arguments, Mode
 std::optional<int> commandLine(const Arguments& arguments, Mode mode) {
     if (arguments.empty()) return std::nullopt;
     const std::string& first = arguments[0];
-    if (first == "--help" || first == "-h") { std::printf("%s", kOverview); return kExitOk; }
-    if (first == "--version") { std::printf("sdfwb %s\n", SDFWB_VERSION); return kExitOk; }
+    if (first == "--help" || first == "-h") {
+        std::printf("%s", kOverview);
+        return kExitOk;
+    }
+    if (first == "--version") {
+        std::printf("sdfwb %s\n", SDFWB_VERSION);
+        return kExitOk;
+    }
     if (first == "--batch") {
         if (arguments.size() < 2) {
             printError("--batch: missing command (" + batchCommandNames() + ") or job file; see sdfwb --help");
             return kExitUsage;
         }
         const std::string& command = arguments[1];
-        if (command == "--help" || command == "-h") { std::printf("%s", kOverview); return kExitOk; }
+        if (command == "--help" || command == "-h") {
+            std::printf("%s", kOverview);
+            return kExitOk;
+        }
         const Arguments rest(arguments.begin() + 2, arguments.end());
         std::error_code ec;
         if (!findBatchCommand(command) && std::filesystem::is_regular_file(command, ec)) {
-            if (!rest.empty()) { printError("--batch " + command + ": a job file takes no further arguments"); return kExitUsage; }
+            if (!rest.empty()) {
+                printError("--batch " + command + ": a job file takes no further arguments");
+                return kExitUsage;
+            }
             return runJobFile(command, mode);
         }
         return runBatchCommand(command, rest, mode);
     }
     if (first == "--sample") {
         // The paper's interface: sdfwb --sample <Pattern> <N> <SDF> <outfile>
-        if (arguments.size() != 5) { printError("--sample: expected <Pattern> <N> <SDF> <outfile>; see sdfwb --help"); return kExitUsage; }
+        if (arguments.size() != 5) {
+            printError("--sample: expected <Pattern> <N> <SDF> <outfile>; see sdfwb --help");
+            return kExitUsage;
+        }
         SampleCommand command;
         command.pattern = arguments[1];
         command.sdf = arguments[3];
         command.output = arguments[4];
         static const std::regex digits(R"(^\d{1,19}$)", kLinearRegex);
-        if (!std::regex_match(arguments[2], digits)) { printError("--sample: <N> must be a positive integer, got '" + arguments[2] + "'"); return kExitUsage; }
+        if (!std::regex_match(arguments[2], digits)) {
+            printError("--sample: <N> must be a positive integer, got '" + arguments[2] + "'");
+            return kExitUsage;
+        }
         command.count = std::stoull(arguments[2]);
         // The original wrote .bin whatever the name; keep that unless the name asks for npz/ply.
         std::string extension = std::filesystem::path(command.output).extension().string();
@@ -510,7 +576,7 @@ std::optional<int> commandLine(const Arguments& arguments, Mode mode) {
         printError("unexpected argument '" + arguments[1] + "': the workbench opens one file; see sdfwb --help");
         return kExitUsage;
     }
-    return std::nullopt;  // the workbench, on argv[1]
+    return std::nullopt; // the workbench, on argv[1]
 }
 
 } // namespace

@@ -39,9 +39,12 @@ bool BatchProcess::start(const QStringList& arguments) {
         bool cancelled = status == QProcess::NormalExit && exitCode == 130;
         QJsonObject report = QJsonDocument::fromJson(process->readAllStandardOutput()).object();
         QString message = m_errors.trimmed();
-        if (cancelled) message = tr("Cancelled; nothing was written.");
-        else if (status == QProcess::CrashExit) message = tr("The batch process crashed; nothing was written.");
-        else if (!ok && message.isEmpty()) message = tr("Failed (exit code %1).").arg(exitCode);
+        if (cancelled)
+            message = tr("Cancelled; nothing was written.");
+        else if (status == QProcess::CrashExit)
+            message = tr("The batch process crashed; nothing was written.");
+        else if (!ok && message.isEmpty())
+            message = tr("Failed (exit code %1).").arg(exitCode);
         emit finished(ok, cancelled, report, message);
     });
     const QStringList sdfArguments = m_sdfArguments && arguments.contains("--sdf") ? m_sdfArguments() : QStringList{};
@@ -50,7 +53,7 @@ bool BatchProcess::start(const QStringList& arguments) {
 }
 
 void BatchProcess::cancel() {
-    if (isRunning()) m_process->terminate();  // SIGTERM: the batch command cancels and cleans up
+    if (isRunning()) m_process->terminate(); // SIGTERM: the batch command cancels and cleans up
 }
 
 void BatchProcess::readStandardError() {

@@ -12,7 +12,7 @@ namespace sdfwb::widgets {
 class ExportDialog;
 class ViewportWidget;
 struct ExportSettings;
-}
+} // namespace sdfwb::widgets
 
 namespace sdfwb::app {
 
@@ -21,7 +21,8 @@ class BatchProcess;
 class ExportController : public QObject {
     Q_OBJECT
 public:
-    ExportController(QWidget* window, widgets::ViewportWidget* viewport, std::function<QString()> currentSdf, QObject* parent = nullptr);
+    ExportController(QWidget* window, widgets::ViewportWidget* viewport, std::function<QString()> currentSdf,
+                     QObject* parent = nullptr);
 
     void setExecutable(const QString& path);
 

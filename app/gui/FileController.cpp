@@ -41,11 +41,12 @@ QString recoveryFolder() { return QStandardPaths::writableLocation(QStandardPath
 
 } // namespace
 
-FileController::FileController(QWidget* window, widgets::GlslEditor* editor, SdfDocument* document, widgets::ViewportWidget* viewport,
-                               QObject* parent)
+FileController::FileController(QWidget* window, widgets::GlslEditor* editor, SdfDocument* document,
+                               widgets::ViewportWidget* viewport, QObject* parent)
     : QObject(parent), m_window(window), m_editor(editor), m_document(document), m_viewport(viewport) {
     m_prompt = [this](const QString& question) {
-        auto answer = QMessageBox::question(m_window, tr("sdfwb"), question, QMessageBox::Yes | QMessageBox::No | QMessageBox::Cancel);
+        auto answer =
+            QMessageBox::question(m_window, tr("sdfwb"), question, QMessageBox::Yes | QMessageBox::No | QMessageBox::Cancel);
         return answer == QMessageBox::Yes ? Answer::Yes : answer == QMessageBox::No ? Answer::No : Answer::Cancel;
     };
     m_autosave.setInterval(5000);
@@ -86,7 +87,7 @@ void FileController::newFromTemplate() {
 }
 
 bool FileController::save() {
-    if (m_document->path().isEmpty()) return false;  // the caller asks for a name (save as)
+    if (m_document->path().isEmpty()) return false; // the caller asks for a name (save as)
     return saveAs(m_document->path());
 }
 
@@ -105,7 +106,7 @@ bool FileController::saveAs(const QString& path) {
     m_editor->setModified(false);
     watch(canonical);
     addRecent(canonical);
-    m_document->checkNow(m_editor->text());  // includes resolve relative to the new folder
+    m_document->checkNow(m_editor->text()); // includes resolve relative to the new folder
     emit pathChanged(canonical);
     emit message(tr("Saved %1").arg(canonical));
     return true;
@@ -162,7 +163,8 @@ bool FileController::restoreRecovery(const QString& recoveryFile) {
 
 bool FileController::confirmClose() {
     if (m_editor->isModified()) {
-        Answer answer = m_prompt(tr("%1 has unsaved edits. Save them?").arg(m_document->path().isEmpty() ? tr("The new SDF") : m_document->path()));
+        Answer answer = m_prompt(
+            tr("%1 has unsaved edits. Save them?").arg(m_document->path().isEmpty() ? tr("The new SDF") : m_document->path()));
         if (answer == Answer::Cancel) return false;
         if (answer == Answer::Yes && !save()) return false;
     }
@@ -196,8 +198,7 @@ void FileController::fileChangedOnDisk(const QString& path) {
         watch(path);
         auto text = readTextFile(path.toStdString());
         if (!text || QString::fromStdString(*text) == m_editor->text()) return;
-        if (m_editor->isModified() &&
-            m_prompt(tr("%1 changed on disk. Reload it and lose your edits?").arg(path)) != Answer::Yes)
+        if (m_editor->isModified() && m_prompt(tr("%1 changed on disk. Reload it and lose your edits?").arg(path)) != Answer::Yes)
             return;
         const QSignalBlocker blocker(m_editor);
         m_editor->setText(QString::fromStdString(*text));

@@ -15,7 +15,7 @@
 namespace sdfwb::widgets {
 class GlslEditor;
 class ViewportWidget;
-}
+} // namespace sdfwb::widgets
 
 namespace sdfwb::app {
 

@@ -49,15 +49,19 @@ int runGui(int argc, char** argv, const char* file) {
         path = QString::fromLocal8Bit(file);
     } else {
         dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
-        if (const dataset::Entry* entry = catalogue.find(dataset::kDefaultSdfName)) path = QString::fromStdString(entry->path.string());
-        else log::error("app", "default SDF '" + std::string(dataset::kDefaultSdfName) + "' not found in " + paths::datasetRoot().string());
+        if (const dataset::Entry* entry = catalogue.find(dataset::kDefaultSdfName))
+            path = QString::fromStdString(entry->path.string());
+        else
+            log::error("app", "default SDF '" + std::string(dataset::kDefaultSdfName) + "' not found in " +
+                                  paths::datasetRoot().string());
     }
     if (!path.isEmpty()) window.openFile(path);
     // Unsaved work from a run that did not end cleanly (a crash, a kill): offer it back.
     QStringList recovery = FileController::recoveryFiles();
     if (!recovery.isEmpty()) {
-        auto answer = QMessageBox::question(&window, QObject::tr("sdfwb"),
-                                            QObject::tr("sdfwb did not close cleanly last time. Recover the unsaved text (%1 file(s))?").arg(recovery.size()));
+        auto answer = QMessageBox::question(
+            &window, QObject::tr("sdfwb"),
+            QObject::tr("sdfwb did not close cleanly last time. Recover the unsaved text (%1 file(s))?").arg(recovery.size()));
         if (answer == QMessageBox::Yes) window.files()->restoreRecovery(recovery.first());
     }
     return application.exec();

@@ -9,11 +9,11 @@
 
 #include <core/Log.h>
 #include <core/TextFile.h>
+#include <dataset/Catalogue.h>
 #include <dataset/Metadata.h>
 #include <widgets/CameraPanel.h>
-#include <widgets/GlslEditor.h>
-#include <dataset/Catalogue.h>
 #include <widgets/DatasetBrowser.h>
+#include <widgets/GlslEditor.h>
 #include <widgets/PlanePanel.h>
 #include <widgets/ProblemsPanel.h>
 
@@ -43,16 +43,22 @@ namespace sdfwb::app {
 
 namespace {
 
-const renderer::ShadingMode kModes[] = {renderer::ShadingMode::Gooch, renderer::ShadingMode::Matcap, renderer::ShadingMode::Normals,
-                                        renderer::ShadingMode::Curvature, renderer::ShadingMode::Steps};
+const renderer::ShadingMode kModes[] = {renderer::ShadingMode::Gooch, renderer::ShadingMode::Matcap,
+                                        renderer::ShadingMode::Normals, renderer::ShadingMode::Curvature,
+                                        renderer::ShadingMode::Steps};
 
 QString modeLabel(renderer::ShadingMode mode) {
     switch (mode) {
-    case renderer::ShadingMode::Gooch: return QObject::tr("&Gooch (warm/cool)");
-    case renderer::ShadingMode::Matcap: return QObject::tr("&Matcap");
-    case renderer::ShadingMode::Normals: return QObject::tr("&Normals as RGB");
-    case renderer::ShadingMode::Curvature: return QObject::tr("&Curvature |H|");
-    case renderer::ShadingMode::Steps: return QObject::tr("&Step-count heat map");
+    case renderer::ShadingMode::Gooch:
+        return QObject::tr("&Gooch (warm/cool)");
+    case renderer::ShadingMode::Matcap:
+        return QObject::tr("&Matcap");
+    case renderer::ShadingMode::Normals:
+        return QObject::tr("&Normals as RGB");
+    case renderer::ShadingMode::Curvature:
+        return QObject::tr("&Curvature |H|");
+    case renderer::ShadingMode::Steps:
+        return QObject::tr("&Step-count heat map");
     }
     return {};
 }
@@ -101,10 +107,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     resizeDocks({m_editorDock, m_viewportDock}, {560, 840}, Qt::Horizontal);
 
     m_document = new SdfDocument(m_viewport, this);
-    m_sampling = new SamplingController(this, [this] { return m_document->path(); }, this);
-    m_exports = new ExportController(this, m_viewport, [this] { return m_document->path(); }, this);
+    m_sampling = new SamplingController(
+        this, [this] { return m_document->path(); }, this);
+    m_exports = new ExportController(
+        this, m_viewport, [this] { return m_document->path(); }, this);
     m_playback = new PlaybackController(m_timeBar, m_viewport, this);
-    m_plane = new PlaneController(m_planePanel, m_viewport, [this] { return m_document->path(); }, this);
+    m_plane = new PlaneController(
+        m_planePanel, m_viewport, [this] { return m_document->path(); }, this);
     m_files = new FileController(this, m_editor, m_document, m_viewport, this);
     // The entry point: every child job (plane readouts, sampling, video) gets the document's --entry.
     auto entryArguments = [this] {
@@ -157,7 +166,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         for (const QFileInfo& info : QDir(folder).entryInfoList({"*.glsl"}, QDir::Files)) {
             auto text = readTextFile(info.absoluteFilePath().toStdString());
             if (text)
-                for (const std::string& signature : shaders::functionSignatures(*text)) librarySignatures << QString::fromStdString(signature);
+                for (const std::string& signature : shaders::functionSignatures(*text))
+                    librarySignatures << QString::fromStdString(signature);
         }
     m_librarySignatures = librarySignatures;
     m_editor->setCompletionFunctions(m_librarySignatures, {});
@@ -171,8 +181,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         m_editor->setDiagnostics(diagnostics, path);
         int errors = 0, warnings = 0;
         for (const auto& d : diagnostics) (d.severity == shaders::Severity::Error ? errors : warnings)++;
-        m_diagnosticSummary->setText(errors ? tr("%1 error(s), %2 warning(s): showing the last good shader").arg(errors).arg(warnings)
-                                            : tr("%1 warning(s)").arg(warnings));
+        m_diagnosticSummary->setText(
+            errors ? tr("%1 error(s), %2 warning(s): showing the last good shader").arg(errors).arg(warnings)
+                   : tr("%1 warning(s)").arg(warnings));
         m_problems->setDiagnostics(diagnostics);
     });
     connect(m_document, &SdfDocument::sdfApplied, this, &MainWindow::updateOverlay);
@@ -202,8 +213,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         statusBar()->showMessage(message, 20000);
     });
     connect(m_viewport, &widgets::ViewportWidget::frameRendered, this, [this](double milliseconds, float scale) {
-        m_frameTime->setText(scale < 1.0f ? tr("frame %1 ms at %2 % resolution (moving)").arg(milliseconds, 0, 'f', 1).arg(int(scale * 100.0f))
-                                          : tr("frame %1 ms").arg(milliseconds, 0, 'f', 1));
+        m_frameTime->setText(
+            scale < 1.0f ? tr("frame %1 ms at %2 % resolution (moving)").arg(milliseconds, 0, 'f', 1).arg(int(scale * 100.0f))
+                         : tr("frame %1 ms").arg(milliseconds, 0, 'f', 1));
         updatePrecision();
     });
 
@@ -216,18 +228,22 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 MainWindow::~MainWindow() = default;
 
 void MainWindow::updatePrecision() {
-    const auto floor = renderer::precisionFloor(m_viewport->camera(), m_viewport->trace().epsilonScale, std::max(m_viewport->height(), 1));
+    const auto floor =
+        renderer::precisionFloor(m_viewport->camera(), m_viewport->trace().epsilonScale, std::max(m_viewport->height(), 1));
     if (floor.exceeded) {
         m_precision->setText(tr("<span style='color:#e04040'>below float32 precision: positions known to %1, hit tolerance %2 "
                                 "(surface noise; bring the camera nearer the origin)</span>")
                                  .arg(double(floor.positionFloor), 0, 'g', 2)
                                  .arg(double(floor.hitTolerance), 0, 'g', 2));
     } else {
-        m_precision->setText(tr("float32 floor %1 / hit tolerance %2").arg(double(floor.positionFloor), 0, 'g', 2).arg(double(floor.hitTolerance), 0, 'g', 2));
+        m_precision->setText(tr("float32 floor %1 / hit tolerance %2")
+                                 .arg(double(floor.positionFloor), 0, 'g', 2)
+                                 .arg(double(floor.hitTolerance), 0, 'g', 2));
     }
-    m_precision->setToolTip(tr("Float32 spacing of positions at this camera distance, against the sphere tracer's hit tolerance "
-                               "(half a pixel's footprint at the target). When the first reaches half the second, the surface "
-                               "shows rounding noise. The audit (sdfwb --batch audit) measures the noise in the SDF's own values."));
+    m_precision->setToolTip(
+        tr("Float32 spacing of positions at this camera distance, against the sphere tracer's hit tolerance "
+           "(half a pixel's footprint at the target). When the first reaches half the second, the surface "
+           "shows rounding noise. The audit (sdfwb --batch audit) measures the noise in the SDF's own values."));
 }
 
 QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWidget* widget, Qt::DockWidgetArea area) {
@@ -276,7 +292,8 @@ void MainWindow::createMenus() {
     create->setShortcut(QKeySequence::New);
     QAction* open = file->addAction(tr("&Open..."), this, [this] {
         if (m_editor->isModified() && !m_files->confirmClose()) return;
-        QString path = QFileDialog::getOpenFileName(this, tr("Open SDF"), QString(), tr("GLSL (*.glsl *.frag *.glslf);;All files (*)"));
+        QString path =
+            QFileDialog::getOpenFileName(this, tr("Open SDF"), QString(), tr("GLSL (*.glsl *.frag *.glslf);;All files (*)"));
         if (!path.isEmpty()) openFile(path);
     });
     open->setShortcut(QKeySequence::Open);
@@ -309,14 +326,16 @@ void MainWindow::createMenus() {
     });
     find->setShortcut(QKeySequence::Find);
     QAction* findNext = edit->addAction(tr("Find &next"), this, [this] {
-        if (!m_lastSearch.isEmpty() && !m_editor->findNext(m_lastSearch)) statusBar()->showMessage(tr("'%1' not found").arg(m_lastSearch), 3000);
+        if (!m_lastSearch.isEmpty() && !m_editor->findNext(m_lastSearch))
+            statusBar()->showMessage(tr("'%1' not found").arg(m_lastSearch), 3000);
     });
     findNext->setShortcut(QKeySequence::FindNext);
     QAction* replace = edit->addAction(tr("&Replace all..."), this, [this] {
         bool ok = false;
         QString text = QInputDialog::getText(this, tr("Replace"), tr("Find:"), QLineEdit::Normal, m_lastSearch, &ok);
         if (!ok || text.isEmpty()) return;
-        QString with = QInputDialog::getText(this, tr("Replace"), tr("Replace '%1' with:").arg(text), QLineEdit::Normal, QString(), &ok);
+        QString with =
+            QInputDialog::getText(this, tr("Replace"), tr("Replace '%1' with:").arg(text), QLineEdit::Normal, QString(), &ok);
         if (ok) statusBar()->showMessage(tr("%1 replacement(s)").arg(m_editor->replaceAll(text, with)), 3000);
     });
     replace->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_H));
@@ -408,7 +427,8 @@ void MainWindow::restoreSession() {
     m_viewport->setCamera(camera);
     m_cameraPanel->setCamera(camera);
     renderer::ShadingSettings shading = m_viewport->shading();
-    shading.mode = renderer::parseShadingMode(settings.value("shading/mode", "gooch").toString().toStdString()).value_or(renderer::ShadingMode::Gooch);
+    shading.mode = renderer::parseShadingMode(settings.value("shading/mode", "gooch").toString().toStdString())
+                       .value_or(renderer::ShadingMode::Gooch);
     shading.ambientOcclusion = settings.value("shading/ao", false).toBool();
     shading.matcap = settings.value("shading/matcap", "clay").toString().toStdString();
     m_viewport->setShading(shading);

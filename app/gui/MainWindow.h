@@ -21,7 +21,7 @@ class PlanePanel;
 class ProblemsPanel;
 class TimeBar;
 class ViewportWidget;
-}
+} // namespace sdfwb::widgets
 
 namespace sdfwb::app {
 
@@ -92,7 +92,7 @@ private:
     QDockWidget* m_cameraDock = nullptr;
     QDockWidget* m_timeDock = nullptr;
     QLabel* m_frameTime = nullptr;
-    QLabel* m_precision = nullptr;  // float32 floor against the hit tolerance of the current view
+    QLabel* m_precision = nullptr; // float32 floor against the hit tolerance of the current view
     QLabel* m_diagnosticSummary = nullptr;
     QLineEdit* m_entry = nullptr; // the SDF's function (--entry); empty: automatic
     QActionGroup* m_shadingGroup = nullptr;

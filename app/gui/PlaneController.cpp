@@ -11,9 +11,10 @@
 
 namespace sdfwb::app {
 
-PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWidget* viewport, std::function<QString()> currentSdf,
-                                 QObject* parent)
-    : QObject(parent), m_panel(panel), m_viewport(viewport), m_currentSdf(std::move(currentSdf)), m_process(new BatchProcess(this)) {
+PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWidget* viewport,
+                                 std::function<QString()> currentSdf, QObject* parent)
+    : QObject(parent), m_panel(panel), m_viewport(viewport), m_currentSdf(std::move(currentSdf)),
+      m_process(new BatchProcess(this)) {
     m_debounce.setSingleShot(true);
     m_debounce.setInterval(250);
     connect(&m_debounce, &QTimer::timeout, this, &PlaneController::refresh);
@@ -53,7 +54,8 @@ PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWi
             view.lipschitzMax = float(report["lipschitz_max"].toDouble());
             view.lipschitz99 = float(report["lipschitz_p99"].toDouble());
             view.shareAboveOne = report["share_above_one"].toDouble();
-            if (report["truncation_distance"].isDouble()) view.truncationDistance = float(report["truncation_distance"].toDouble());
+            if (report["truncation_distance"].isDouble())
+                view.truncationDistance = float(report["truncation_distance"].toDouble());
             view.discontinuities = quint64(report["discontinuities"].toInteger());
             view.nanCount = quint64(report["nan_count"].toInteger());
             view.points = quint64(report["points"].toInteger());
@@ -94,12 +96,16 @@ void PlaneController::refresh() {
         return;
     }
     if (m_process->isRunning()) {
-        m_pending = true;  // one more run with the newest plane when this one ends
+        m_pending = true; // one more run with the newest plane when this one ends
         return;
     }
-    QString spec = QString("%1,%2,%3,%4").arg(plane.normal.x, 0, 'g', 9).arg(plane.normal.y, 0, 'g', 9).arg(plane.normal.z, 0, 'g', 9)
+    QString spec = QString("%1,%2,%3,%4")
+                       .arg(plane.normal.x, 0, 'g', 9)
+                       .arg(plane.normal.y, 0, 'g', 9)
+                       .arg(plane.normal.z, 0, 'g', 9)
                        .arg(plane.offset, 0, 'g', 9);
-    m_process->start({"audit", "--sdf", sdf, "--plane", spec, "--resolution", "192", "--time", QString::number(m_viewport->time(), 'g', 9)});
+    m_process->start(
+        {"audit", "--sdf", sdf, "--plane", spec, "--resolution", "192", "--time", QString::number(m_viewport->time(), 'g', 9)});
 }
 
 } // namespace sdfwb::app

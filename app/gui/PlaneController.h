@@ -11,7 +11,7 @@
 namespace sdfwb::widgets {
 class PlanePanel;
 class ViewportWidget;
-}
+} // namespace sdfwb::widgets
 
 namespace sdfwb::app {
 

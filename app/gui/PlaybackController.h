@@ -9,7 +9,7 @@
 namespace sdfwb::widgets {
 class TimeBar;
 class ViewportWidget;
-}
+} // namespace sdfwb::widgets
 
 namespace sdfwb::app {
 

@@ -59,9 +59,19 @@ void SamplingController::start(const widgets::SamplingSettings& settings) {
         m_dialog->setMessage(tr("The SDF has never been saved: save it first, sampling reads the file."), true);
         return;
     }
-    QStringList arguments = {"sample", "--sdf", sdf, "--pattern", settings.pattern, "-n", QString::number(settings.count),
-                             "--seed", QString::number(settings.seed), "--time", QString::number(settings.time, 'g', 9),
-                             "--output", settings.output};
+    QStringList arguments = {"sample",
+                             "--sdf",
+                             sdf,
+                             "--pattern",
+                             settings.pattern,
+                             "-n",
+                             QString::number(settings.count),
+                             "--seed",
+                             QString::number(settings.seed),
+                             "--time",
+                             QString::number(settings.time, 'g', 9),
+                             "--output",
+                             settings.output};
     if (!settings.format.isEmpty()) arguments << "--format" << settings.format;
     m_dialog->setRunning(true);
     m_dialog->setMessage(tr("Sampling..."), false);

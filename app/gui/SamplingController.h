@@ -9,7 +9,7 @@
 namespace sdfwb::widgets {
 class SamplingDialog;
 struct SamplingSettings;
-}
+} // namespace sdfwb::widgets
 
 namespace sdfwb::app {
 

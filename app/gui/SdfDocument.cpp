@@ -38,35 +38,43 @@ void SdfDocument::startCheck(const QString& text) {
     const shaders::TracerFeatures features =
         renderer::tracerFeatures(m_viewport->shading(), m_viewport->trace(), m_viewport->plane());
     QPointer<SdfDocument> self(this);
-    QThreadPool::globalInstance()->start([self, generation, source = std::move(source), path = std::move(path),
-                                          entry = std::move(entry), features] {
-        shaders::IncludeOptions options;
-        options.libraryRoots = {paths::shaderLibraryRoot(), paths::datasetRoot()};
-        shaders::PreparedSdf prepared = shaders::prepareSdf(source, path.empty() ? "<editor>" : path, path, options, entry);
-        std::vector<shaders::Diagnostic> diagnostics = prepared.diagnostics;
-        if (prepared.ok()) {
-            auto composed = shaders::composeTracer(prepared, features);
-            if (composed) {
-                auto found = shaders::checkWithGlslang(*composed);
-                diagnostics.insert(diagnostics.end(), found.begin(), found.end());
+    QThreadPool::globalInstance()->start(
+        [self, generation, source = std::move(source), path = std::move(path), entry = std::move(entry), features] {
+            shaders::IncludeOptions options;
+            options.libraryRoots = {paths::shaderLibraryRoot(), paths::datasetRoot()};
+            shaders::PreparedSdf prepared = shaders::prepareSdf(source, path.empty() ? "<editor>" : path, path, options, entry);
+            std::vector<shaders::Diagnostic> diagnostics = prepared.diagnostics;
+            if (prepared.ok()) {
+                auto composed = shaders::composeTracer(prepared, features);
+                if (composed) {
+                    auto found = shaders::checkWithGlslang(*composed);
+                    diagnostics.insert(diagnostics.end(), found.begin(), found.end());
+                }
             }
-        }
-        QMetaObject::invokeMethod(QCoreApplication::instance(), [self, generation, prepared = std::move(prepared), diagnostics = std::move(diagnostics)]() mutable {
-            if (self) self->finishCheck(generation, std::move(prepared), std::move(diagnostics));
-        }, Qt::QueuedConnection);
-        // Autocompletion entries come second: they are not on the path to the diagnostics.
-        QStringList signatures;
-        for (const std::string& signature : shaders::functionSignatures(source)) signatures << QString::fromStdString(signature);
-        QMetaObject::invokeMethod(QCoreApplication::instance(), [self, generation, signatures = std::move(signatures)]() mutable {
-            if (!self || generation != self->m_generation) return;
-            self->m_fileSignatures = std::move(signatures);
-            emit self->signaturesChanged(self->m_fileSignatures);
-        }, Qt::QueuedConnection);
-    });
+            QMetaObject::invokeMethod(
+                QCoreApplication::instance(),
+                [self, generation, prepared = std::move(prepared), diagnostics = std::move(diagnostics)]() mutable {
+                    if (self) self->finishCheck(generation, std::move(prepared), std::move(diagnostics));
+                },
+                Qt::QueuedConnection);
+            // Autocompletion entries come second: they are not on the path to the diagnostics.
+            QStringList signatures;
+            for (const std::string& signature : shaders::functionSignatures(source))
+                signatures << QString::fromStdString(signature);
+            QMetaObject::invokeMethod(
+                QCoreApplication::instance(),
+                [self, generation, signatures = std::move(signatures)]() mutable {
+                    if (!self || generation != self->m_generation) return;
+                    self->m_fileSignatures = std::move(signatures);
+                    emit self->signaturesChanged(self->m_fileSignatures);
+                },
+                Qt::QueuedConnection);
+        });
 }
 
-void SdfDocument::finishCheck(std::uint64_t generation, shaders::PreparedSdf prepared, std::vector<shaders::Diagnostic> diagnostics) {
-    if (generation != m_generation) return;  // superseded by newer text
+void SdfDocument::finishCheck(std::uint64_t generation, shaders::PreparedSdf prepared,
+                              std::vector<shaders::Diagnostic> diagnostics) {
+    if (generation != m_generation) return; // superseded by newer text
     // glslang's verdict goes on screen at once; the driver compile (on this thread, where the GL
     // context lives) follows in the next event-loop turn and adds its own errors if it finds any.
     m_diagnostics = std::move(diagnostics);

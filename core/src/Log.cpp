@@ -24,10 +24,14 @@ State& state() {
 
 const char* levelName(Level level) {
     switch (level) {
-    case Level::Debug: return "debug";
-    case Level::Info: return "info";
-    case Level::Warning: return "warning";
-    case Level::Error: return "error";
+    case Level::Debug:
+        return "debug";
+    case Level::Info:
+        return "info";
+    case Level::Warning:
+        return "warning";
+    case Level::Error:
+        return "error";
     }
     return "?";
 }
@@ -69,8 +73,8 @@ void write(Level level, std::string_view category, std::string_view message) {
     std::lock_guard lock(s.mutex);
     if (level < s.minimum) return;
     if (s.stderrEnabled)
-        std::fprintf(stderr, "[%s] %.*s: %.*s\n", levelName(level), int(category.size()), category.data(),
-                     int(message.size()), message.data());
+        std::fprintf(stderr, "[%s] %.*s: %.*s\n", levelName(level), int(category.size()), category.data(), int(message.size()),
+                     message.data());
     for (auto& [id, sink] : s.sinks) sink(level, category, message);
 }
 

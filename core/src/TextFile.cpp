@@ -3,9 +3,9 @@
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
-#include <sys/stat.h>
 #include <fstream>
 #include <sstream>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace sdfwb {
@@ -27,7 +27,8 @@ Expected<void> writeFileAtomically(const fs::path& path, std::string_view bytes)
     fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
     std::string pattern = (folder / ("." + path.filename().string() + ".XXXXXX")).string();
     int fd = ::mkstemp(pattern.data());
-    if (fd < 0) return makeError(path.string() + ": cannot create a temporary file in " + folder.string() + ": " + std::strerror(errno));
+    if (fd < 0)
+        return makeError(path.string() + ": cannot create a temporary file in " + folder.string() + ": " + std::strerror(errno));
     auto fail = [&](const char* what) {
         int code = errno;
         ::close(fd);

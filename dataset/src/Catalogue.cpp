@@ -25,16 +25,26 @@ Catalogue Catalogue::scan(const fs::path& root) {
         return catalogue;
     }
     std::vector<fs::path> files;
-    for (auto it = fs::recursive_directory_iterator(root, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
-        if (it->is_directory() && it->path().filename() == "lib") { it.disable_recursion_pending(); continue; }
+    for (auto it = fs::recursive_directory_iterator(root, ec); !ec && it != fs::recursive_directory_iterator();
+         it.increment(ec)) {
+        if (it->is_directory() && it->path().filename() == "lib") {
+            it.disable_recursion_pending();
+            continue;
+        }
         if (it->is_regular_file() && it->path().extension() == ".glsl") files.push_back(it->path());
     }
     std::sort(files.begin(), files.end());
     for (const fs::path& file : files) {
         auto text = readTextFile(file);
-        if (!text) { catalogue.m_problems.push_back(text.error().message); continue; }
+        if (!text) {
+            catalogue.m_problems.push_back(text.error().message);
+            continue;
+        }
         auto metadata = parseMetadata(*text, file.string());
-        if (!metadata) { catalogue.m_problems.push_back(metadata.error().message); continue; }
+        if (!metadata) {
+            catalogue.m_problems.push_back(metadata.error().message);
+            continue;
+        }
         catalogue.m_entries.push_back({std::move(*metadata), file});
     }
     return catalogue;

@@ -23,8 +23,10 @@ std::string lower(std::string s) {
 
 const char* declaredTypeName(DeclaredType type) {
     switch (type) {
-    case DeclaredType::Exact: return "exact";
-    case DeclaredType::Conservative: return "conservative";
+    case DeclaredType::Exact:
+        return "exact";
+    case DeclaredType::Conservative:
+        return "conservative";
     }
     return "?";
 }
@@ -42,13 +44,13 @@ Expected<Metadata> parseMetadata(const std::string& text, const std::string& fil
     int lineNumber = 1 + int(std::count(text.begin(), text.begin() + long(start), '\n'));
     std::istringstream block(text.substr(start, end - start));
     std::string line;
-    std::getline(block, line);  // "/* sdfwb"
+    std::getline(block, line); // "/* sdfwb"
     while (std::getline(block, line)) {
         ++lineNumber;
         if (trim(line).empty()) continue;
         auto where = [&] { return fileName + ":" + std::to_string(lineNumber) + ": "; };
         if ((line.rfind("  ", 0) == 0 || line.rfind("\t", 0) == 0) && lastValue) {
-            *lastValue += " " + trim(line);  // continuation
+            *lastValue += " " + trim(line); // continuation
             continue;
         }
         std::size_t colon = line.find(':');
@@ -66,21 +68,41 @@ Expected<Metadata> parseMetadata(const std::string& text, const std::string& fil
         seen[keyIndex] = true;
         lastValue = nullptr;
         switch (keyIndex) {
-        case 0: metadata.name = value; lastValue = &metadata.name; break;
-        case 1: metadata.category = value; break;
+        case 0:
+            metadata.name = value;
+            lastValue = &metadata.name;
+            break;
+        case 1:
+            metadata.category = value;
+            break;
         case 2:
-            if (lower(value) == "exact") metadata.type = DeclaredType::Exact;
-            else if (lower(value) == "conservative") metadata.type = DeclaredType::Conservative;
-            else return makeError(where() + "unknown type '" + value + "' (exact|conservative)");
+            if (lower(value) == "exact")
+                metadata.type = DeclaredType::Exact;
+            else if (lower(value) == "conservative")
+                metadata.type = DeclaredType::Conservative;
+            else
+                return makeError(where() + "unknown type '" + value + "' (exact|conservative)");
             break;
         case 3:
-            if (lower(value) == "yes" || lower(value) == "true") metadata.animated = true;
-            else if (lower(value) == "no" || lower(value) == "false") metadata.animated = false;
-            else return makeError(where() + "animated must be yes or no, got '" + value + "'");
+            if (lower(value) == "yes" || lower(value) == "true")
+                metadata.animated = true;
+            else if (lower(value) == "no" || lower(value) == "false")
+                metadata.animated = false;
+            else
+                return makeError(where() + "animated must be yes or no, got '" + value + "'");
             break;
-        case 4: metadata.author = value; lastValue = &metadata.author; break;
-        case 5: metadata.license = value; lastValue = &metadata.license; break;
-        case 6: metadata.notes = value; lastValue = &metadata.notes; break;
+        case 4:
+            metadata.author = value;
+            lastValue = &metadata.author;
+            break;
+        case 5:
+            metadata.license = value;
+            lastValue = &metadata.license;
+            break;
+        case 6:
+            metadata.notes = value;
+            lastValue = &metadata.notes;
+            break;
         case 7: {
             // The SDF's function when it is not sdf(); shaders::metadataEntry reads the same line.
             bool identifier = !value.empty() && !std::isdigit(static_cast<unsigned char>(value[0]));

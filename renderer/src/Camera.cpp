@@ -10,7 +10,8 @@ namespace sdfwb::renderer {
 
 PrecisionFloor precisionFloor(const Camera& camera, float epsilonScale, int heightPixels) {
     PrecisionFloor floor;
-    const float magnitude = std::max({std::abs(camera.position.x), std::abs(camera.position.y), std::abs(camera.position.z), 1.0f});
+    const float magnitude =
+        std::max({std::abs(camera.position.x), std::abs(camera.position.y), std::abs(camera.position.z), 1.0f});
     floor.positionFloor = std::ldexp(magnitude, -23);
     const float pixelAngle = 2.0f * std::tan(glm::radians(camera.fovYDegrees) / 2.0f) / float(std::max(heightPixels, 1));
     floor.hitTolerance = epsilonScale * pixelAngle * glm::length(camera.target - camera.position);
@@ -22,7 +23,7 @@ glm::dvec3 primaryRayDirection(const Camera& camera, int x, int row, int width, 
     const CameraBasis basis = cameraBasis(camera);
     const double tanHalf = std::tan(glm::radians(double(camera.fovYDegrees)) / 2.0);
     const double u = ((x + 0.5) / width * 2.0 - 1.0) * double(width) / height * tanHalf;
-    const double v = ((height - 1 - row + 0.5) / height * 2.0 - 1.0) * tanHalf;  // GL rows count from the bottom
+    const double v = ((height - 1 - row + 0.5) / height * 2.0 - 1.0) * tanHalf; // GL rows count from the bottom
     return glm::normalize(glm::dvec3(basis.forward) + u * glm::dvec3(basis.right) + v * glm::dvec3(basis.up));
 }
 
@@ -45,8 +46,8 @@ void orbit(Camera& camera, float yawRadians, float pitchRadians) {
     float pitch = std::asin(std::clamp(offset.y / radius, -1.0f, 1.0f)) + pitchRadians;
     const float limit = glm::radians(89.0f);
     pitch = std::clamp(pitch, -limit, limit);
-    camera.position = camera.target + radius * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
-                                                         std::cos(pitch) * std::cos(yaw));
+    camera.position =
+        camera.target + radius * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
 }
 
 void dolly(Camera& camera, float factor) {
@@ -69,7 +70,8 @@ void turn(Camera& camera, float yawRadians, float pitchRadians) {
 
 void fly(Camera& camera, glm::vec3 rightUpForward) {
     CameraBasis basis = cameraBasis(camera);
-    glm::vec3 move = rightUpForward.x * basis.right + rightUpForward.y * glm::vec3(0.0f, 1.0f, 0.0f) + rightUpForward.z * basis.forward;
+    glm::vec3 move =
+        rightUpForward.x * basis.right + rightUpForward.y * glm::vec3(0.0f, 1.0f, 0.0f) + rightUpForward.z * basis.forward;
     camera.position += move;
     camera.target += move;
 }

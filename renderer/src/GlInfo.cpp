@@ -18,7 +18,7 @@ GlInfo queryGlInfo() {
     info.renderer = glString(GL_RENDERER);
     info.version = glString(GL_VERSION);
     info.glslVersion = glString(GL_SHADING_LANGUAGE_VERSION);
-    int version = epoxy_gl_version();  // e.g. 45
+    int version = epoxy_gl_version(); // e.g. 45
     info.major = version / 10;
     info.minor = version % 10;
     if (version >= 32) {
@@ -38,16 +38,16 @@ GlInfo queryGlInfo() {
 
 Expected<void> requireGl43(const GlInfo& info) {
     if (info.major * 10 + info.minor < 43)
-        return makeError("renderer: OpenGL 4.3 core is required (compute shaders, SSBOs), but this context is " +
-                         info.version + " on " + info.renderer + " (" + info.vendor + ")");
+        return makeError("renderer: OpenGL 4.3 core is required (compute shaders, SSBOs), but this context is " + info.version +
+                         " on " + info.renderer + " (" + info.vendor + ")");
     if (!info.computeShaders)
         return makeError("renderer: compute shaders are not available on " + info.renderer + " (" + info.version + ")");
     return {};
 }
 
 std::string describe(const GlInfo& info) {
-    return info.renderer + " / " + info.vendor + " / " + info.version + (info.coreProfile ? " [core]" : "") +
-           " / GLSL " + info.glslVersion + (info.computeShaders ? " / compute" : " / no compute");
+    return info.renderer + " / " + info.vendor + " / " + info.version + (info.coreProfile ? " [core]" : "") + " / GLSL " +
+           info.glslVersion + (info.computeShaders ? " / compute" : " / no compute");
 }
 
 } // namespace sdfwb::renderer

@@ -1,8 +1,8 @@
 #include "GlObjects.h"
 
+#include <core/Log.h>
 #include <renderer/GlInfo.h>
 #include <shaders/DiagnosticParser.h>
-#include <core/Log.h>
 
 #include <atomic>
 #include <cstdio>
@@ -19,7 +19,7 @@ void countGlObject(int delta) { g_liveObjects += delta; }
 long liveGlObjects() { return g_liveObjects.load(); }
 
 void logGlErrors(const char* where) {
-    for (int i = 0; i < 8; ++i) {  // a lost context can report errors forever: stop after a few
+    for (int i = 0; i < 8; ++i) { // a lost context can report errors forever: stop after a few
         GLenum error = glGetError();
         if (error == GL_NO_ERROR) return;
         char text[96];
@@ -52,11 +52,11 @@ CompiledShader compileShader(GLenum type, const shaders::ComposedShader& compose
         if (!status && !shaders::hasErrors(result.diagnostics))
             result.diagnostics.push_back({composed.map.fileName(0), 0, 0, shaders::Severity::Error, "driver: " + log});
     } else if (!status) {
-        result.diagnostics.push_back({composed.map.fileName(0), 0, 0, shaders::Severity::Error,
-                                      std::string("driver rejected the ") + shaders::stageName(composed.stage) + " shader without a message"});
+        result.diagnostics.push_back(
+            {composed.map.fileName(0), 0, 0, shaders::Severity::Error,
+             std::string("driver rejected the ") + shaders::stageName(composed.stage) + " shader without a message"});
     }
     return result;
 }
-
 
 } // namespace sdfwb::renderer

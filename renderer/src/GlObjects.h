@@ -16,15 +16,19 @@ namespace sdfwb::renderer {
 // Live names owned through GlName, process-wide (renderer::liveGlObjects() reads it).
 void countGlObject(int delta);
 
-template <void (*Delete)(GLuint)>
-class GlName {
+template <void (*Delete)(GLuint)> class GlName {
 public:
     GlName() = default;
-    explicit GlName(GLuint id) : m_id(id) { if (m_id) countGlObject(1); }
+    explicit GlName(GLuint id) : m_id(id) {
+        if (m_id) countGlObject(1);
+    }
     ~GlName() { reset(); }
     GlName(GlName&& other) noexcept : m_id(std::exchange(other.m_id, 0)) {}
     GlName& operator=(GlName&& other) noexcept {
-        if (this != &other) { reset(); m_id = std::exchange(other.m_id, 0); }
+        if (this != &other) {
+            reset();
+            m_id = std::exchange(other.m_id, 0);
+        }
         return *this;
     }
     GlName(const GlName&) = delete;
@@ -39,7 +43,7 @@ public:
         }
         m_id = 0;
     }
-    void release() {  // the context is gone, and the name with it
+    void release() { // the context is gone, and the name with it
         if (m_id) countGlObject(-1);
         m_id = 0;
     }

@@ -28,7 +28,8 @@ std::string eglErrorText() {
 
 // A hardware EGL device (not Mesa's software device), or EGL_NO_DEVICE_EXT.
 EGLDeviceEXT findHardwareDevice(const char* clientExtensions) {
-    if (!hasExtension(clientExtensions, "EGL_EXT_device_enumeration") || !hasExtension(clientExtensions, "EGL_EXT_platform_device"))
+    if (!hasExtension(clientExtensions, "EGL_EXT_device_enumeration") ||
+        !hasExtension(clientExtensions, "EGL_EXT_platform_device"))
         return EGL_NO_DEVICE_EXT;
     EGLint count = 0;
     if (!eglQueryDevicesEXT(0, nullptr, &count) || count <= 0) return EGL_NO_DEVICE_EXT;
@@ -67,7 +68,8 @@ Expected<std::unique_ptr<HeadlessContext>> HeadlessContext::create() {
         display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
         platform = "surfaceless";
     }
-    if (display == EGL_NO_DISPLAY) return makeError("renderer: eglGetPlatformDisplay(" + platform + ") failed: " + eglErrorText());
+    if (display == EGL_NO_DISPLAY)
+        return makeError("renderer: eglGetPlatformDisplay(" + platform + ") failed: " + eglErrorText());
 
     EGLint eglMajor = 0, eglMinor = 0;
     if (!eglInitialize(display, &eglMajor, &eglMinor))
@@ -87,8 +89,9 @@ Expected<std::unique_ptr<HeadlessContext>> HeadlessContext::create() {
             return makeError("renderer: no EGL config for desktop OpenGL on the " + platform + " platform");
         }
     }
-    const EGLint contextAttributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 3,
-                                        EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    const EGLint contextAttributes[] = {
+        EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 3, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
     EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, contextAttributes);
     if (context == EGL_NO_CONTEXT) {
         std::string error = eglErrorText();
@@ -116,7 +119,8 @@ Expected<std::unique_ptr<HeadlessContext>> HeadlessContext::create() {
     result->m_context = context;
     result->m_platform = platform;
     result->m_info = queryGlInfo();
-    log::info("gl", "EGL " + std::to_string(eglMajor) + "." + std::to_string(eglMinor) + " " + platform + ": " + describe(result->m_info));
+    log::info("gl", "EGL " + std::to_string(eglMajor) + "." + std::to_string(eglMinor) + " " + platform + ": " +
+                        describe(result->m_info));
     if (auto ok = requireGl43(result->m_info); !ok) return ok.error();
     return result;
 }
@@ -131,8 +135,6 @@ HeadlessContext::~HeadlessContext() {
 
 void HeadlessContext::doneCurrent() { eglMakeCurrent(m_display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT); }
 
-bool HeadlessContext::makeCurrent() {
-    return eglMakeCurrent(m_display, EGL_NO_SURFACE, EGL_NO_SURFACE, m_context) == EGL_TRUE;
-}
+bool HeadlessContext::makeCurrent() { return eglMakeCurrent(m_display, EGL_NO_SURFACE, EGL_NO_SURFACE, m_context) == EGL_TRUE; }
 
 } // namespace sdfwb::renderer

@@ -22,9 +22,12 @@ Expected<void> writeImage(const fs::path& path, const Image& image) {
     if (image.width <= 0 || image.height <= 0 || image.rgba.size() != std::size_t(image.width) * std::size_t(image.height) * 4)
         return makeError(path.string() + ": refusing to write an empty or inconsistent image");
     auto output = OIIO::ImageOutput::create(path.string());
-    if (!output) return makeError(path.string() + ": no image writer for extension '" + path.extension().string() + "' (use .png, .jpg or .exr)");
+    if (!output)
+        return makeError(path.string() + ": no image writer for extension '" + path.extension().string() +
+                         "' (use .png, .jpg or .exr)");
     if (!output->supports("ioproxy"))
-        return makeError(path.string() + ": the image writer for '" + path.extension().string() + "' cannot encode to memory (use .png, .jpg or .exr)");
+        return makeError(path.string() + ": the image writer for '" + path.extension().string() +
+                         "' cannot encode to memory (use .png, .jpg or .exr)");
     bool exr = path.extension() == ".exr";
     // EXR keeps alpha and stores half floats; PNG and JPEG get RGB.
     int channels = exr ? 4 : 3;
@@ -38,7 +41,8 @@ Expected<void> writeImage(const fs::path& path, const Image& image) {
         return makeError(path.string() + ": cannot encode: " + output->geterror());
     std::vector<std::uint8_t> pixels(std::size_t(image.width) * std::size_t(image.height) * std::size_t(channels));
     for (std::size_t i = 0, n = std::size_t(image.width) * std::size_t(image.height); i < n; ++i)
-        for (int c = 0; c < channels; ++c) pixels[i * std::size_t(channels) + std::size_t(c)] = image.rgba[i * 4 + std::size_t(c)];
+        for (int c = 0; c < channels; ++c)
+            pixels[i * std::size_t(channels) + std::size_t(c)] = image.rgba[i * 4 + std::size_t(c)];
     if (!(output->write_image(OIIO::TypeDesc::UINT8, pixels.data()) && output->close()))
         return makeError(path.string() + ": cannot encode: " + output->geterror());
     output.reset();
@@ -61,7 +65,7 @@ Expected<Image> readImage(const fs::path& path) {
     for (std::size_t i = 0, n = std::size_t(spec.width) * std::size_t(spec.height); i < n; ++i)
         for (int c = 0; c < std::min(spec.nchannels, 4); ++c)
             image.rgba[i * 4 + std::size_t(c)] = pixels[i * std::size_t(spec.nchannels) + std::size_t(c)];
-    if (spec.nchannels < 3)  // grey: replicate
+    if (spec.nchannels < 3) // grey: replicate
         for (std::size_t i = 0, n = std::size_t(spec.width) * std::size_t(spec.height); i < n; ++i)
             image.rgba[i * 4 + 1] = image.rgba[i * 4 + 2] = image.rgba[i * 4];
     return image;

@@ -51,7 +51,7 @@ OffscreenRenderer::OffscreenRenderer() : m_impl(std::make_unique<Impl>()) {}
 OffscreenRenderer::~OffscreenRenderer() = default;
 
 Image OffscreenRenderer::render(SdfRenderer& renderer, int width, int height, const Camera& camera, float time, FrameStats* stats,
-                               float scale) {
+                                float scale) {
     m_impl->ensureSize(width, height);
     glBindFramebuffer(GL_FRAMEBUFFER, m_impl->framebuffer.id());
     FrameStats frame = renderer.renderScaled(width, height, scale, camera, time, true);
@@ -67,12 +67,13 @@ Image OffscreenRenderer::render(SdfRenderer& renderer, int width, int height, co
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     const std::size_t rowBytes = std::size_t(width) * 4;
     for (int y = 0; y < height; ++y)
-        std::memcpy(image.rgba.data() + std::size_t(y) * rowBytes, bottomUp.data() + std::size_t(height - 1 - y) * rowBytes, rowBytes);
+        std::memcpy(image.rgba.data() + std::size_t(y) * rowBytes, bottomUp.data() + std::size_t(height - 1 - y) * rowBytes,
+                    rowBytes);
     return image;
 }
 
-std::vector<OffscreenRenderer::PixelStats> OffscreenRenderer::renderStats(SdfRenderer& renderer, int width, int height, const Camera& camera,
-                                                                          float time, FrameStats* stats) {
+std::vector<OffscreenRenderer::PixelStats> OffscreenRenderer::renderStats(SdfRenderer& renderer, int width, int height,
+                                                                          const Camera& camera, float time, FrameStats* stats) {
     m_impl->ensureFloatSize(width, height);
     glBindFramebuffer(GL_FRAMEBUFFER, m_impl->floatFramebuffer.id());
     FrameStats frame = renderer.render(width, height, camera, time, true);

@@ -14,11 +14,16 @@ namespace {
 
 std::string glErrorName(GLenum error) {
     switch (error) {
-    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
-    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
-    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
-    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
-    default: return "GL error " + std::to_string(error);
+    case GL_OUT_OF_MEMORY:
+        return "GL_OUT_OF_MEMORY";
+    case GL_INVALID_VALUE:
+        return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION:
+        return "GL_INVALID_OPERATION";
+    case GL_INVALID_ENUM:
+        return "GL_INVALID_ENUM";
+    default:
+        return "GL error " + std::to_string(error);
     }
 }
 
@@ -93,7 +98,8 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
         return diagnostics;
     }
     double milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    log::info("sampling", "compiled " + sdf.source.map.fileName(0) + " with " + sampler.name + " in " + std::to_string(int(milliseconds)) + " ms");
+    log::info("sampling", "compiled " + sdf.source.map.fileName(0) + " with " + sampler.name + " in " +
+                              std::to_string(int(milliseconds)) + " ms");
     m_impl->program = std::move(program);
     m_impl->source = std::move(composed.text);
     return diagnostics;
@@ -103,7 +109,8 @@ Expected<void> SampleCompute::run(const SampleUniforms& uniforms, std::uint32_t 
                                   float* distances, float* gradients) {
     if (!m_impl->program) return makeError("sampling: no compiled sampler");
     if (count == 0) return {};
-    if (count > kMaxChunk) return makeError("sampling: chunk of " + std::to_string(count) + " exceeds " + std::to_string(kMaxChunk));
+    if (count > kMaxChunk)
+        return makeError("sampling: chunk of " + std::to_string(count) + " exceeds " + std::to_string(kMaxChunk));
     while (glGetError() != GL_NO_ERROR) {}
     if (count > m_impl->capacity) {
         const GLsizeiptr sizes[3] = {GLsizeiptr(count) * 12, GLsizeiptr(count) * 4, GLsizeiptr(count) * 12};
@@ -117,8 +124,8 @@ Expected<void> SampleCompute::run(const SampleUniforms& uniforms, std::uint32_t 
         if (GLenum error = glGetError(); error != GL_NO_ERROR) {
             for (GlBuffer& buffer : m_impl->buffers) buffer.reset();
             m_impl->capacity = 0;
-            return makeError("sampling: cannot allocate buffers for " + std::to_string(count) + " samples (" + glErrorName(error) +
-                             "); try a smaller --chunk");
+            return makeError("sampling: cannot allocate buffers for " + std::to_string(count) + " samples (" +
+                             glErrorName(error) + "); try a smaller --chunk");
         }
         m_impl->capacity = count;
     }
@@ -164,7 +171,8 @@ Expected<void> SampleCompute::run(const SampleUniforms& uniforms, std::uint32_t 
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     glUseProgram(0);
     if (GLenum error = glGetError(); error != GL_NO_ERROR)
-        return makeError("sampling: dispatch of " + std::to_string(count) + " samples failed (" + glErrorName(error) + "); try a smaller --chunk");
+        return makeError("sampling: dispatch of " + std::to_string(count) + " samples failed (" + glErrorName(error) +
+                         "); try a smaller --chunk");
     return {};
 }
 

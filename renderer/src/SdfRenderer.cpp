@@ -46,8 +46,8 @@ struct Variant {
 };
 
 struct SdfRenderer::Impl {
-    std::optional<shaders::PreparedSdf> sdf;  // the last SDF that compiled
-    std::map<std::string, Variant> cache;     // by composed fragment text
+    std::optional<shaders::PreparedSdf> sdf; // the last SDF that compiled
+    std::map<std::string, Variant> cache;    // by composed fragment text
     Variant* current = nullptr;
     GlVertexArray vertexArray;
     std::uint64_t clock = 0;
@@ -60,7 +60,8 @@ struct SdfRenderer::Impl {
     GlTexture lowColor;
     int lowWidth = 0, lowHeight = 0;
 
-    static shaders::TracerFeatures features(const ShadingSettings& shading, const TraceSettings& trace, const CuttingPlane& plane) {
+    static shaders::TracerFeatures features(const ShadingSettings& shading, const TraceSettings& trace,
+                                            const CuttingPlane& plane) {
         return tracerFeatures(shading, trace, plane);
     }
 
@@ -94,7 +95,8 @@ struct SdfRenderer::Impl {
     }
 
     // Builds (or finds) the program for `sdf` with `features`. Null on failure, with diagnostics.
-    Variant* build(const shaders::PreparedSdf& prepared, const shaders::TracerFeatures& tracerFeatures, std::vector<Diagnostic>& diagnostics) {
+    Variant* build(const shaders::PreparedSdf& prepared, const shaders::TracerFeatures& tracerFeatures,
+                   std::vector<Diagnostic>& diagnostics) {
         auto fragment = shaders::composeTracer(prepared, tracerFeatures);
         if (!fragment) {
             diagnostics.push_back({"<sdfwb>", 0, 0, shaders::Severity::Error, fragment.error().message});
@@ -134,8 +136,9 @@ struct SdfRenderer::Impl {
             return nullptr;
         }
         double milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        log::info("shaders", "compiled " + prepared.source.map.fileName(0) + " (" + shaders::shadingModeName(tracerFeatures.shading) +
-                                 (tracerFeatures.ambientOcclusion ? ", AO" : "") + ") in " + std::to_string(int(milliseconds)) + " ms");
+        log::info("shaders",
+                  "compiled " + prepared.source.map.fileName(0) + " (" + shaders::shadingModeName(tracerFeatures.shading) +
+                      (tracerFeatures.ambientOcclusion ? ", AO" : "") + ") in " + std::to_string(int(milliseconds)) + " ms");
 
         evictIfFull();
         Variant& variant = cache[fragment->text];
@@ -195,7 +198,8 @@ std::vector<Diagnostic> SdfRenderer::setShading(const ShadingSettings& shading) 
     m_shading = shading;
     std::vector<Diagnostic> diagnostics;
     if (!m_impl->sdf) return diagnostics;
-    if (Variant* variant = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace, m_plane), diagnostics)) m_impl->current = variant;
+    if (Variant* variant = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace, m_plane), diagnostics))
+        m_impl->current = variant;
     return diagnostics;
 }
 
@@ -335,7 +339,8 @@ std::vector<Diagnostic> SdfRenderer::setPlane(const CuttingPlane& plane) {
     m_plane = plane;
     std::vector<Diagnostic> diagnostics;
     if (!variantChanges || !m_impl->sdf) return diagnostics;
-    if (Variant* variant = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace, m_plane), diagnostics)) m_impl->current = variant;
+    if (Variant* variant = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace, m_plane), diagnostics))
+        m_impl->current = variant;
     return diagnostics;
 }
 
@@ -344,7 +349,8 @@ std::vector<Diagnostic> SdfRenderer::setTrace(const TraceSettings& trace) {
     m_trace = trace;
     std::vector<Diagnostic> diagnostics;
     if (!variantChanges || !m_impl->sdf) return diagnostics;
-    if (Variant* variant = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace, m_plane), diagnostics)) m_impl->current = variant;
+    if (Variant* variant = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace, m_plane), diagnostics))
+        m_impl->current = variant;
     return diagnostics;
 }
 

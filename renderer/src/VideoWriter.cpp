@@ -83,7 +83,7 @@ Expected<std::unique_ptr<VideoWriter>> VideoWriter::open(const fs::path& path, i
     std::random_device random;
     v.temporary = folder / ("." + path.stem().string() + ".partial" + std::to_string(random()) + ".mp4");
 
-    av_log_set_level(AV_LOG_ERROR);  // the encoder's statistics are noise on a terminal
+    av_log_set_level(AV_LOG_ERROR); // the encoder's statistics are noise on a terminal
     const AVCodec* encoder = avcodec_find_encoder_by_name("libx264");
     if (!encoder) encoder = avcodec_find_encoder(AV_CODEC_ID_H264);
     if (!encoder) return makeError(path.string() + ": this FFmpeg has no H.264 encoder");
@@ -102,8 +102,10 @@ Expected<std::unique_ptr<VideoWriter>> VideoWriter::open(const fs::path& path, i
     if (v.format->oformat->flags & AVFMT_GLOBALHEADER) v.codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
     av_opt_set(v.codec->priv_data, "preset", "medium", 0);
     av_opt_set(v.codec->priv_data, "crf", "18", 0);
-    if ((result = avcodec_open2(v.codec, encoder, nullptr)) < 0) return makeError(path.string() + ": cannot open the H.264 encoder: " + ffmpegError(result));
-    if ((result = avcodec_parameters_from_context(v.stream->codecpar, v.codec)) < 0) return makeError(path.string() + ": " + ffmpegError(result));
+    if ((result = avcodec_open2(v.codec, encoder, nullptr)) < 0)
+        return makeError(path.string() + ": cannot open the H.264 encoder: " + ffmpegError(result));
+    if ((result = avcodec_parameters_from_context(v.stream->codecpar, v.codec)) < 0)
+        return makeError(path.string() + ": " + ffmpegError(result));
     v.stream->time_base = v.codec->time_base;
     if ((result = avio_open(&v.format->pb, v.temporary.c_str(), AVIO_FLAG_WRITE)) < 0)
         return makeError(path.string() + ": cannot write in " + folder.string() + ": " + ffmpegError(result));
@@ -115,8 +117,8 @@ Expected<std::unique_ptr<VideoWriter>> VideoWriter::open(const fs::path& path, i
     v.frame->width = v.codec->width;
     v.frame->height = v.codec->height;
     if ((result = av_frame_get_buffer(v.frame, 0)) < 0) return makeError(path.string() + ": " + ffmpegError(result));
-    v.scaler = sws_getContext(width, height, AV_PIX_FMT_RGBA, v.codec->width, v.codec->height, AV_PIX_FMT_YUV420P, SWS_BICUBIC, nullptr,
-                              nullptr, nullptr);
+    v.scaler = sws_getContext(width, height, AV_PIX_FMT_RGBA, v.codec->width, v.codec->height, AV_PIX_FMT_YUV420P, SWS_BICUBIC,
+                              nullptr, nullptr, nullptr);
     if (!v.scaler) return makeError(path.string() + ": cannot set up colour conversion");
     return writer;
 }
@@ -124,8 +126,8 @@ Expected<std::unique_ptr<VideoWriter>> VideoWriter::open(const fs::path& path, i
 Expected<void> VideoWriter::addFrame(const Image& image) {
     Impl& v = *m_impl;
     if (image.width != v.sourceWidth || image.height != v.sourceHeight)
-        return makeError(v.target.string() + ": frame is " + std::to_string(image.width) + "x" + std::to_string(image.height) + ", the video " +
-                         std::to_string(v.sourceWidth) + "x" + std::to_string(v.sourceHeight));
+        return makeError(v.target.string() + ": frame is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                         ", the video " + std::to_string(v.sourceWidth) + "x" + std::to_string(v.sourceHeight));
     int result = av_frame_make_writable(v.frame);
     if (result < 0) return makeError(v.target.string() + ": " + ffmpegError(result));
     const std::uint8_t* source[1] = {image.rgba.data()};

@@ -25,7 +25,8 @@ public:
 
     Expected<void> commit() override {
         if (m_written != m_rows)
-            return makeError(m_file.target().string() + ": " + std::to_string(m_written) + " of " + std::to_string(m_rows) + " rows written");
+            return makeError(m_file.target().string() + ": " + std::to_string(m_written) + " of " + std::to_string(m_rows) +
+                             " rows written");
         const std::uint32_t count = std::uint32_t(m_rows);
         if (auto ok = m_file.writeAt(0, &count, 4); !ok) return ok;
         return m_file.commit();
@@ -45,7 +46,8 @@ public:
     }
 
     Expected<void> read(std::uint64_t first, std::size_t n, float* positions, float* distances, float* gradients) override {
-        if (first > m_rows || n > m_rows - first) return makeError(m_file.name() + ": rows " + std::to_string(first) + "+" + std::to_string(n) + " out of range");
+        if (first > m_rows || n > m_rows - first)
+            return makeError(m_file.name() + ": rows " + std::to_string(first) + "+" + std::to_string(n) + " out of range");
         const std::uint64_t N = m_rows;
         if (auto ok = m_file.readAt(4 + 12 * first, positions, 12 * n); !ok) return ok;
         if (auto ok = m_file.readAt(4 + 12 * N + 4 * first, distances, 4 * n); !ok) return ok;
@@ -64,7 +66,8 @@ Expected<std::unique_ptr<SampleWriter>> createBinWriter(OutputFile file, std::ui
 
 Expected<std::unique_ptr<SampleReader>> openBinReader(InputFile file) {
     if (file.size() < 4)
-        return makeError(file.name() + ": not a .bin sample file: " + std::to_string(file.size()) + " bytes, the header alone needs 4");
+        return makeError(file.name() + ": not a .bin sample file: " + std::to_string(file.size()) +
+                         " bytes, the header alone needs 4");
     std::uint32_t count = 0;
     if (auto ok = file.readAt(0, &count, 4); !ok) return ok.error();
     const std::uint64_t expected = 4 + 28ull * count;

@@ -26,7 +26,8 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 bool finiteRow(const SampleSet& s, std::size_t i) {
     if (!std::isfinite(s.distances[i])) return false;
     for (int c = 0; c < 3; ++c)
-        if (!std::isfinite(s.positions[3 * i + std::size_t(c)]) || !std::isfinite(s.gradients[3 * i + std::size_t(c)])) return false;
+        if (!std::isfinite(s.positions[3 * i + std::size_t(c)]) || !std::isfinite(s.gradients[3 * i + std::size_t(c)]))
+            return false;
     return true;
 }
 
@@ -66,8 +67,7 @@ struct PointCloud {
     const std::vector<float>& points;
     std::size_t kdtree_get_point_count() const { return points.size() / 3; }
     float kdtree_get_pt(std::size_t i, std::size_t d) const { return points[3 * i + d]; }
-    template <class Box>
-    bool kdtree_get_bbox(Box&) const { return false; }
+    template <class Box> bool kdtree_get_bbox(Box&) const { return false; }
 };
 using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, PointCloud>, PointCloud, 3>;
 
@@ -267,7 +267,7 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
         if (progress.isCancelled()) return makeError("audit: cancelled");
     }
     job.gradientStep = 1e-3f;
-    job.seed = options.seed + 1;  // surface points independent of the query points
+    job.seed = options.seed + 1; // surface points independent of the query points
     auto surface = surfaceRunner.run(job);
     if (!surface) return surface.error();
     progress(std::uint64_t(++step), totalSteps);
@@ -559,8 +559,8 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
         report.reason = worst->evidence;
     } else if (report.surfacePoints == 0 && !hasSignChange) {
         report.verdict = "no-surface";
-        std::snprintf(text, sizeof text, "f never changes sign (%.4g to %.4g over %llu points) and no ray finds a surface", double(minimum),
-                      double(maximum), (unsigned long long)n);
+        std::snprintf(text, sizeof text, "f never changes sign (%.4g to %.4g over %llu points) and no ray finds a surface",
+                      double(minimum), double(maximum), (unsigned long long)n);
         report.reason = text;
     } else if (worst) {
         report.verdict = worst->name;
@@ -572,13 +572,16 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
         report.reason = text;
     } else if (report.exactnessP99 <= exactTolerance && report.exactnessMax <= 2.0f * exactTolerance) {
         report.verdict = "exact";
-        std::snprintf(text, sizeof text, "|f| matches the distance to the surface within %.2g (99th percentile; sampling allows %.2g)",
+        std::snprintf(text, sizeof text,
+                      "|f| matches the distance to the surface within %.2g (99th percentile; sampling allows %.2g)",
                       double(report.exactnessP99), double(exactTolerance));
         report.reason = text;
     } else {
         report.verdict = "conservative";
-        std::snprintf(text, sizeof text, "1-Lipschitz and |f| underestimates the distance (error 99th percentile %.2g, max %.2g; exact allows %.2g, %.2g)",
-                      double(report.exactnessP99), double(report.exactnessMax), double(exactTolerance), double(2.0f * exactTolerance));
+        std::snprintf(
+            text, sizeof text,
+            "1-Lipschitz and |f| underestimates the distance (error 99th percentile %.2g, max %.2g; exact allows %.2g, %.2g)",
+            double(report.exactnessP99), double(report.exactnessMax), double(exactTolerance), double(2.0f * exactTolerance));
         report.reason = text;
     }
     for (std::size_t k = 1; k < report.flags.size(); ++k)
@@ -729,7 +732,7 @@ Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 n
     }
     if (positive > 0 && double(flat.size()) > 0.02 * double(positive)) {
         float plateau = percentile(flat, 0.05);
-        if (plateau > 0.01f) readout.truncationDistance = plateau;  // as in the volume audit
+        if (plateau > 0.01f) readout.truncationDistance = plateau; // as in the volume audit
     }
     readout.safeStepFactor = 1.0f / std::max(readout.lipschitzMax, 1.0f);
     // The findings, as the volume audit's (most severe first). Examples spread over the grid, not

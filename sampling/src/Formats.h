@@ -12,7 +12,8 @@ namespace sdfwb::sampling::detail {
 
 Expected<std::unique_ptr<SampleWriter>> createBinWriter(OutputFile file, std::uint64_t rows);
 Expected<std::unique_ptr<SampleReader>> openBinReader(InputFile file);
-Expected<std::unique_ptr<SampleWriter>> createNpzWriter(OutputFile file, std::uint64_t rows, const SampleMetadata& metadata, bool forceZip64);
+Expected<std::unique_ptr<SampleWriter>> createNpzWriter(OutputFile file, std::uint64_t rows, const SampleMetadata& metadata,
+                                                        bool forceZip64);
 Expected<std::unique_ptr<SampleReader>> openNpzReader(InputFile file);
 Expected<std::unique_ptr<SampleWriter>> createPlyWriter(OutputFile file, std::uint64_t rows, const SampleMetadata& metadata);
 Expected<std::unique_ptr<SampleReader>> openPlyReader(InputFile file);
@@ -21,8 +22,7 @@ Expected<std::unique_ptr<SampleReader>> openPlyReader(InputFile file);
 inline void put16(std::string& out, std::uint16_t v) { out.append(reinterpret_cast<const char*>(&v), 2); }
 inline void put32(std::string& out, std::uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); }
 inline void put64(std::string& out, std::uint64_t v) { out.append(reinterpret_cast<const char*>(&v), 8); }
-template <class T>
-T get(const char* data) {
+template <class T> T get(const char* data) {
     T value;
     std::memcpy(&value, data, sizeof(T));
     return value;

@@ -22,7 +22,7 @@ constexpr std::uint32_t kCentralSignature = 0x02014b50;
 constexpr std::uint32_t kEndSignature = 0x06054b50;
 constexpr std::uint32_t kZip64EndSignature = 0x06064b50;
 constexpr std::uint32_t kZip64LocatorSignature = 0x07064b50;
-constexpr std::uint16_t kDosDate = (0 << 9) | (1 << 5) | 1;  // 1980-01-01: fixed for reproducible files
+constexpr std::uint16_t kDosDate = (0 << 9) | (1 << 5) | 1; // 1980-01-01: fixed for reproducible files
 constexpr std::uint32_t kMax32 = 0xffffffffu;
 
 std::string npyHeader(const std::string& descr, const std::string& shape) {
@@ -63,11 +63,22 @@ std::u32string utf8ToUtf32(const std::string& text) {
 std::string utf32ToUtf8(const std::u32string& text) {
     std::string out;
     for (char32_t c : text) {
-        if (c == 0) break;  // numpy pads fixed-width strings with NULs
-        if (c < 0x80) out += char(c);
-        else if (c < 0x800) { out += char(0xc0 | (c >> 6)); out += char(0x80 | (c & 0x3f)); }
-        else if (c < 0x10000) { out += char(0xe0 | (c >> 12)); out += char(0x80 | ((c >> 6) & 0x3f)); out += char(0x80 | (c & 0x3f)); }
-        else { out += char(0xf0 | (c >> 18)); out += char(0x80 | ((c >> 12) & 0x3f)); out += char(0x80 | ((c >> 6) & 0x3f)); out += char(0x80 | (c & 0x3f)); }
+        if (c == 0) break; // numpy pads fixed-width strings with NULs
+        if (c < 0x80)
+            out += char(c);
+        else if (c < 0x800) {
+            out += char(0xc0 | (c >> 6));
+            out += char(0x80 | (c & 0x3f));
+        } else if (c < 0x10000) {
+            out += char(0xe0 | (c >> 12));
+            out += char(0x80 | ((c >> 6) & 0x3f));
+            out += char(0x80 | (c & 0x3f));
+        } else {
+            out += char(0xf0 | (c >> 18));
+            out += char(0x80 | ((c >> 12) & 0x3f));
+            out += char(0x80 | ((c >> 6) & 0x3f));
+            out += char(0x80 | (c & 0x3f));
+        }
     }
     return out;
 }
@@ -75,7 +86,7 @@ std::string utf32ToUtf8(const std::u32string& text) {
 // A small array kept in memory (metadata).
 struct SmallEntry {
     std::string name;
-    std::string bytes;  // npy header + data
+    std::string bytes; // npy header + data
 };
 
 SmallEntry stringArray(const std::string& name, const std::string& value) {
@@ -86,8 +97,7 @@ SmallEntry stringArray(const std::string& name, const std::string& value) {
     return {name, bytes};
 }
 
-template <class T>
-SmallEntry scalarArray(const std::string& name, const char* descr, T value) {
+template <class T> SmallEntry scalarArray(const std::string& name, const char* descr, T value) {
     std::string bytes = npyHeader(descr, "()");
     bytes.append(reinterpret_cast<const char*>(&value), sizeof(T));
     return {name, bytes};
@@ -95,8 +105,8 @@ SmallEntry scalarArray(const std::string& name, const char* descr, T value) {
 
 struct EntryRecord {
     std::string name;
-    std::uint64_t offset = 0;  // of the local header
-    std::uint64_t size = 0;    // stored = uncompressed
+    std::uint64_t offset = 0; // of the local header
+    std::uint64_t size = 0;   // stored = uncompressed
     std::uint32_t crc = 0;
 };
 
@@ -104,9 +114,9 @@ std::string localHeader(const EntryRecord& e, bool zip64) {
     std::string out;
     put32(out, kLocalSignature);
     put16(out, zip64 ? 45 : 20);
-    put16(out, 0);  // flags
-    put16(out, 0);  // stored
-    put16(out, 0);  // time
+    put16(out, 0); // flags
+    put16(out, 0); // stored
+    put16(out, 0); // time
     put16(out, kDosDate);
     put32(out, e.crc);
     put32(out, zip64 ? kMax32 : std::uint32_t(e.size));
@@ -126,8 +136,8 @@ std::string localHeader(const EntryRecord& e, bool zip64) {
 std::string centralHeader(const EntryRecord& e, bool zip64) {
     std::string out;
     put32(out, kCentralSignature);
-    put16(out, zip64 ? 45 : 20);  // made by
-    put16(out, zip64 ? 45 : 20);  // needed
+    put16(out, zip64 ? 45 : 20); // made by
+    put16(out, zip64 ? 45 : 20); // needed
     put16(out, 0);
     put16(out, 0);
     put16(out, 0);
@@ -137,10 +147,10 @@ std::string centralHeader(const EntryRecord& e, bool zip64) {
     put32(out, zip64 ? kMax32 : std::uint32_t(e.size));
     put16(out, std::uint16_t(e.name.size()));
     put16(out, zip64 ? 28 : 0);
-    put16(out, 0);  // comment
-    put16(out, 0);  // disk
-    put16(out, 0);  // internal attributes
-    put32(out, 0);  // external attributes
+    put16(out, 0); // comment
+    put16(out, 0); // disk
+    put16(out, 0); // internal attributes
+    put32(out, 0); // external attributes
     put32(out, zip64 ? kMax32 : std::uint32_t(e.offset));
     out += e.name;
     if (zip64) {
@@ -158,7 +168,8 @@ public:
     NpzWriter(OutputFile file, std::uint64_t rows, const SampleMetadata& metadata, bool forceZip64)
         : m_file(std::move(file)), m_rows(rows) {
         const std::string n = std::to_string(rows);
-        const std::string headers[3] = {npyHeader("<f4", "(" + n + ", 3)"), npyHeader("<f4", "(" + n + ",)"), npyHeader("<f4", "(" + n + ", 3)")};
+        const std::string headers[3] = {npyHeader("<f4", "(" + n + ", 3)"), npyHeader("<f4", "(" + n + ",)"),
+                                        npyHeader("<f4", "(" + n + ", 3)")};
         const char* names[3] = {"position.npy", "distance.npy", "gradient.npy"};
         const std::uint64_t rowBytes[3] = {12, 4, 12};
         std::uint64_t bigBytes = 0;
@@ -207,7 +218,8 @@ public:
 
     Expected<void> commit() override {
         if (m_written != m_rows)
-            return makeError(m_file.target().string() + ": " + std::to_string(m_written) + " of " + std::to_string(m_rows) + " rows written");
+            return makeError(m_file.target().string() + ": " + std::to_string(m_written) + " of " + std::to_string(m_rows) +
+                             " rows written");
         std::vector<EntryRecord> records(m_big, m_big + 3);
         for (int i = 0; i < 3; ++i) {
             std::string head = localHeader(m_big[i], m_zip64) + m_headers[i];
@@ -280,9 +292,9 @@ struct ZipEntry {
 struct NpyArray {
     std::string descr;
     std::vector<std::uint64_t> shape;
-    std::uint64_t dataOffset = 0;  // in the file, or in `inflated`
+    std::uint64_t dataOffset = 0; // in the file, or in `inflated`
     std::uint64_t dataSize = 0;
-    std::string inflated;          // non-empty for deflated entries
+    std::string inflated; // non-empty for deflated entries
     bool isInflated = false;
 };
 
@@ -317,7 +329,8 @@ Expected<NpyArray> parseNpy(const InputFile& file, const ZipEntry& entry, const 
         array.isInflated = true;
         base = 0;
     } else if (entry.method != 0) {
-        return makeError(file.name() + ": " + name + ": compression method " + std::to_string(entry.method) + " is not supported");
+        return makeError(file.name() + ": " + name + ": compression method " + std::to_string(entry.method) +
+                         " is not supported");
     } else if (entry.compressedSize != entry.size) {
         return makeError(file.name() + ": " + name + ": stored entry with differing sizes");
     }
@@ -352,7 +365,8 @@ Expected<NpyArray> parseNpy(const InputFile& file, const ZipEntry& entry, const 
     std::smatch match;
     if (!std::regex_search(header, match, descr)) return makeError(file.name() + ": " + name + ": .npy header lacks 'descr'");
     array.descr = match[1].str();
-    if (!std::regex_search(header, match, fortran)) return makeError(file.name() + ": " + name + ": .npy header lacks 'fortran_order'");
+    if (!std::regex_search(header, match, fortran))
+        return makeError(file.name() + ": " + name + ": .npy header lacks 'fortran_order'");
     if (match[1].str() == "True") return makeError(file.name() + ": " + name + ": Fortran-ordered arrays are not supported");
     if (!std::regex_search(header, match, shape)) return makeError(file.name() + ": " + name + ": .npy header lacks 'shape'");
     std::string dims = match[1].str();
@@ -371,18 +385,18 @@ std::uint64_t elementSize(const std::string& descr) {
     if (descr.size() >= 3 && descr[0] == '<' && descr[1] == 'U') {
         try {
             return 4 * std::stoull(descr.substr(2));
-        } catch (const std::exception&) {
-            return 0;
-        }
+        } catch (const std::exception&) { return 0; }
     }
-    static const std::map<std::string, std::uint64_t> sizes = {{"<f4", 4}, {"<f8", 8}, {"<u8", 8}, {"<i8", 8}, {"<u4", 4}, {"<i4", 4}};
+    static const std::map<std::string, std::uint64_t> sizes = {{"<f4", 4}, {"<f8", 8}, {"<u8", 8},
+                                                               {"<i8", 8}, {"<u4", 4}, {"<i4", 4}};
     auto it = sizes.find(descr);
     return it == sizes.end() ? 0 : it->second;
 }
 
 class NpzReader final : public SampleReader {
 public:
-    NpzReader(InputFile file, std::uint64_t rows, NpyArray arrays[3], std::optional<SampleMetadata> metadata) : m_file(std::move(file)) {
+    NpzReader(InputFile file, std::uint64_t rows, NpyArray arrays[3], std::optional<SampleMetadata> metadata)
+        : m_file(std::move(file)) {
         m_rows = rows;
         m_format = SampleFormat::Npz;
         m_metadata = std::move(metadata);
@@ -397,8 +411,10 @@ public:
             const NpyArray& array = m_arrays[i];
             std::uint64_t offset = array.dataOffset + rowBytes[i] * first;
             std::size_t size = std::size_t(rowBytes[i] * n);
-            if (array.isInflated) std::memcpy(targets[i], array.inflated.data() + offset, size);
-            else if (auto ok = m_file.readAt(offset, targets[i], size); !ok) return ok;
+            if (array.isInflated)
+                std::memcpy(targets[i], array.inflated.data() + offset, size);
+            else if (auto ok = m_file.readAt(offset, targets[i], size); !ok)
+                return ok;
         }
         return {};
     }
@@ -410,7 +426,8 @@ private:
 
 } // namespace
 
-Expected<std::unique_ptr<SampleWriter>> createNpzWriter(OutputFile file, std::uint64_t rows, const SampleMetadata& metadata, bool forceZip64) {
+Expected<std::unique_ptr<SampleWriter>> createNpzWriter(OutputFile file, std::uint64_t rows, const SampleMetadata& metadata,
+                                                        bool forceZip64) {
     return std::unique_ptr<SampleWriter>(new NpzWriter(std::move(file), rows, metadata, forceZip64));
 }
 
@@ -423,7 +440,10 @@ Expected<std::unique_ptr<SampleReader>> openNpzReader(InputFile file) {
     if (auto ok = file.readAt(tailStart, tail.data(), tail.size()); !ok) return ok.error();
     std::size_t end = std::string::npos;
     for (std::size_t i = tail.size() - 22 + 1; i-- > 0;)
-        if (get<std::uint32_t>(tail.data() + i) == kEndSignature) { end = i; break; }
+        if (get<std::uint32_t>(tail.data() + i) == kEndSignature) {
+            end = i;
+            break;
+        }
     if (end == std::string::npos) return makeError(name + ": not an .npz file (no ZIP end record)");
     std::uint64_t entries = get<std::uint16_t>(tail.data() + end + 10);
     std::uint64_t centralSize = get<std::uint32_t>(tail.data() + end + 12);
@@ -438,7 +458,8 @@ Expected<std::unique_ptr<SampleReader>> openNpzReader(InputFile file) {
         centralOffset = get<std::uint64_t>(record + 48);
     }
     if (entries > 4096 || centralSize > (1u << 24) || centralOffset > file.size() || centralSize > file.size() - centralOffset)
-        return makeError(name + ": corrupt ZIP central directory (" + std::to_string(entries) + " entries at " + std::to_string(centralOffset) + ")");
+        return makeError(name + ": corrupt ZIP central directory (" + std::to_string(entries) + " entries at " +
+                         std::to_string(centralOffset) + ")");
     std::string central(std::size_t(centralSize), '\0');
     if (auto ok = file.readAt(centralOffset, central.data(), central.size()); !ok) return ok.error();
 
@@ -453,9 +474,11 @@ Expected<std::unique_ptr<SampleReader>> openNpzReader(InputFile file) {
         entry.method = get<std::uint16_t>(h + 10);
         entry.compressedSize = get<std::uint32_t>(h + 20);
         entry.size = get<std::uint32_t>(h + 24);
-        std::uint16_t nameLength = get<std::uint16_t>(h + 28), extraLength = get<std::uint16_t>(h + 30), commentLength = get<std::uint16_t>(h + 32);
+        std::uint16_t nameLength = get<std::uint16_t>(h + 28), extraLength = get<std::uint16_t>(h + 30),
+                      commentLength = get<std::uint16_t>(h + 32);
         std::uint64_t localOffset = get<std::uint32_t>(h + 42);
-        if (cursor + 46 + nameLength + extraLength + commentLength > central.size()) return makeError(name + ": corrupt ZIP central directory");
+        if (cursor + 46 + nameLength + extraLength + commentLength > central.size())
+            return makeError(name + ": corrupt ZIP central directory");
         std::string entryName(h + 46, nameLength);
         // ZIP64 extra: the 64-bit values of the fields that hold 0xffffffff, in order.
         for (std::size_t e = 0; e + 4 <= extraLength;) {
@@ -465,7 +488,10 @@ Expected<std::unique_ptr<SampleReader>> openNpzReader(InputFile file) {
             if (id == 0x0001) {
                 std::size_t k = 4;
                 auto next = [&](std::uint64_t& field) {
-                    if (field == kMax32 && k + 8 <= std::size_t(size) + 4) { field = get<std::uint64_t>(extra + k); k += 8; }
+                    if (field == kMax32 && k + 8 <= std::size_t(size) + 4) {
+                        field = get<std::uint64_t>(extra + k);
+                        k += 8;
+                    }
                 };
                 next(entry.size);
                 next(entry.compressedSize);
@@ -489,17 +515,21 @@ Expected<std::unique_ptr<SampleReader>> openNpzReader(InputFile file) {
     std::uint64_t rows = 0;
     for (int i = 0; i < 3; ++i) {
         auto it = found.find(std::string(required[i]) + ".npy");
-        if (it == found.end()) return makeError(name + ": no '" + required[i] + "' array (expected position, distance, gradient)");
+        if (it == found.end())
+            return makeError(name + ": no '" + required[i] + "' array (expected position, distance, gradient)");
         auto array = parseNpy(file, it->second, required[i]);
         if (!array) return array.error();
         if (array->descr != "<f4")
             return makeError(name + ": '" + required[i] + "' has dtype '" + array->descr + "'; float32 ('<f4') expected");
         bool vector = i != 1;
         if (array->shape.size() != (vector ? 2u : 1u) || (vector && array->shape[1] != 3))
-            return makeError(name + ": '" + required[i] + "' has the wrong shape (expected " + (vector ? "(N, 3)" : "(N,)") + ")");
-        if (i == 0) rows = array->shape[0];
+            return makeError(name + ": '" + required[i] + "' has the wrong shape (expected " + (vector ? "(N, 3)" : "(N,)") +
+                             ")");
+        if (i == 0)
+            rows = array->shape[0];
         else if (array->shape[0] != rows)
-            return makeError(name + ": '" + required[i] + "' has " + std::to_string(array->shape[0]) + " rows, 'position' has " + std::to_string(rows));
+            return makeError(name + ": '" + required[i] + "' has " + std::to_string(array->shape[0]) + " rows, 'position' has " +
+                             std::to_string(rows));
         if (rows > array->dataSize / (vector ? 12 : 4)) return makeError(name + ": '" + required[i] + "' is truncated");
         arrays[i] = std::move(*array);
     }
@@ -515,8 +545,10 @@ Expected<std::unique_ptr<SampleReader>> openNpzReader(InputFile file) {
         std::uint64_t size = elementSize(array->descr);
         if (size == 0 || size > array->dataSize || size > 4096) return false;
         bytes.resize(std::size_t(size));
-        if (array->isInflated) std::memcpy(bytes.data(), array->inflated.data() + array->dataOffset, bytes.size());
-        else if (!file.readAt(array->dataOffset, bytes.data(), bytes.size())) return false;
+        if (array->isInflated)
+            std::memcpy(bytes.data(), array->inflated.data() + array->dataOffset, bytes.size());
+        else if (!file.readAt(array->dataOffset, bytes.data(), bytes.size()))
+            return false;
         descr = array->descr;
         any = true;
         return true;
@@ -541,8 +573,10 @@ Expected<std::unique_ptr<SampleReader>> openNpzReader(InputFile file) {
     {
         std::string bytes, descr;
         if (readSmall("time", bytes, descr)) {
-            if (descr == "<f4") metadata.time = get<float>(bytes.data());
-            else if (descr == "<f8") metadata.time = float(get<double>(bytes.data()));
+            if (descr == "<f4")
+                metadata.time = get<float>(bytes.data());
+            else if (descr == "<f8")
+                metadata.time = float(get<double>(bytes.data()));
         }
     }
     std::optional<SampleMetadata> optional;

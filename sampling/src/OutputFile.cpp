@@ -16,13 +16,15 @@ Expected<OutputFile> OutputFile::create(const fs::path& target) {
     if (fs::is_directory(target, ec)) return makeError(target.string() + ": is a folder, not a file");
     std::string pattern = (folder / ("." + target.filename().string() + ".partial-XXXXXX")).string();
     int fd = ::mkstemp(pattern.data());
-    if (fd < 0) return makeError(target.string() + ": cannot create a file in '" + folder.string() + "': " + std::strerror(errno));
+    if (fd < 0)
+        return makeError(target.string() + ": cannot create a file in '" + folder.string() + "': " + std::strerror(errno));
     ::fchmod(fd, 0644);
     return OutputFile(target, pattern, fd);
 }
 
 OutputFile::OutputFile(OutputFile&& other) noexcept
-    : m_target(std::move(other.m_target)), m_temporary(std::move(other.m_temporary)), m_fd(other.m_fd), m_committed(other.m_committed) {
+    : m_target(std::move(other.m_target)), m_temporary(std::move(other.m_temporary)), m_fd(other.m_fd),
+      m_committed(other.m_committed) {
     other.m_fd = -1;
     other.m_committed = true;
 }
@@ -80,7 +82,7 @@ InputFile InputFile::fromBytes(std::string name, std::string bytes) {
 InputFile::InputFile(InputFile&& other) noexcept
     : m_name(std::move(other.m_name)), m_fd(other.m_fd), m_size(other.m_size), m_bytes(std::move(other.m_bytes)) {
     other.m_fd = -1;
-    other.m_size = 0;  // a moved-from file reads nothing
+    other.m_size = 0; // a moved-from file reads nothing
 }
 
 InputFile::~InputFile() {
@@ -89,7 +91,8 @@ InputFile::~InputFile() {
 
 Expected<void> InputFile::readAt(std::uint64_t offset, void* data, std::size_t size) const {
     if (offset > m_size || size > m_size - offset)
-        return makeError(m_name + ": truncated: needs bytes up to " + std::to_string(offset + size) + " but has " + std::to_string(m_size));
+        return makeError(m_name + ": truncated: needs bytes up to " + std::to_string(offset + size) + " but has " +
+                         std::to_string(m_size));
     char* bytes = static_cast<char*>(data);
     if (m_fd < 0) {
         if (size > 0) std::memcpy(bytes, m_bytes.data() + offset, size);

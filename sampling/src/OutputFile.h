@@ -49,9 +49,9 @@ public:
 private:
     InputFile(std::string name, int fd, std::uint64_t size) : m_name(std::move(name)), m_fd(fd), m_size(size) {}
     std::string m_name;
-    int m_fd = -1;          // -1 when the bytes are in memory
+    int m_fd = -1; // -1 when the bytes are in memory
     std::uint64_t m_size = 0;
-    std::string m_bytes;    // fromBytes()
+    std::string m_bytes; // fromBytes()
 };
 
 } // namespace sdfwb::sampling::detail

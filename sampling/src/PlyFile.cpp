@@ -61,7 +61,8 @@ public:
 
     Expected<void> commit() override {
         if (m_written != m_rows)
-            return makeError(m_file.target().string() + ": " + std::to_string(m_written) + " of " + std::to_string(m_rows) + " rows written");
+            return makeError(m_file.target().string() + ": " + std::to_string(m_written) + " of " + std::to_string(m_rows) +
+                             " rows written");
         if (auto ok = m_file.writeAt(0, m_header.data(), m_header.size()); !ok) return ok;
         return m_file.commit();
     }
@@ -156,7 +157,8 @@ Expected<std::unique_ptr<SampleReader>> openPlyReader(InputFile file) {
         if (keyword == "format") {
             std::string format, version;
             words >> format >> version;
-            if (format != "binary_little_endian") return makeError(where() + "format '" + format + "' is not supported (binary_little_endian only)");
+            if (format != "binary_little_endian")
+                return makeError(where() + "format '" + format + "' is not supported (binary_little_endian only)");
             binaryLittle = true;
         } else if (keyword == "comment") {
             std::string tag, key;
@@ -166,16 +168,21 @@ Expected<std::unique_ptr<SampleReader>> openPlyReader(InputFile file) {
             std::getline(words >> std::ws, value);
             hasMetadata = true;
             try {
-                if (key == "sdf") metadata.sdf = value;
-                else if (key == "pattern") metadata.pattern = value;
-                else if (key == "seed") metadata.seed = std::stoull(value);
-                else if (key == "time") metadata.time = std::stof(value);
-                else if (key == "first_index") metadata.firstIndex = std::stoull(value);
-                else if (key == "total_count") metadata.totalCount = std::stoull(value);
-                else if (key == "version") metadata.version = value;
-            } catch (const std::exception&) {
-                return makeError(where() + "malformed sdfwb " + key + " value '" + value + "'");
-            }
+                if (key == "sdf")
+                    metadata.sdf = value;
+                else if (key == "pattern")
+                    metadata.pattern = value;
+                else if (key == "seed")
+                    metadata.seed = std::stoull(value);
+                else if (key == "time")
+                    metadata.time = std::stof(value);
+                else if (key == "first_index")
+                    metadata.firstIndex = std::stoull(value);
+                else if (key == "total_count")
+                    metadata.totalCount = std::stoull(value);
+                else if (key == "version")
+                    metadata.version = value;
+            } catch (const std::exception&) { return makeError(where() + "malformed sdfwb " + key + " value '" + value + "'"); }
         } else if (keyword == "element") {
             std::string element;
             std::string countText;
@@ -185,9 +192,7 @@ Expected<std::unique_ptr<SampleReader>> openPlyReader(InputFile file) {
                 if (sawVertex) return makeError(where() + "second vertex element");
                 try {
                     rows = std::stoull(countText);
-                } catch (const std::exception&) {
-                    return makeError(where() + "malformed vertex count '" + countText + "'");
-                }
+                } catch (const std::exception&) { return makeError(where() + "malformed vertex count '" + countText + "'"); }
                 sawVertex = inVertex = true;
             } else if (!sawVertex) {
                 return makeError(where() + "element '" + element + "' before the vertex element is not supported");
@@ -202,7 +207,8 @@ Expected<std::unique_ptr<SampleReader>> openPlyReader(InputFile file) {
             if (size == 0) return makeError(where() + "unknown property type '" + type + "'");
             for (int i = 0; i < 7; ++i)
                 if (property == kProperties[i]) {
-                    if (type != "float" && type != "float32") return makeError(where() + "property '" + property + "' must be float, is " + type);
+                    if (type != "float" && type != "float32")
+                        return makeError(where() + "property '" + property + "' must be float, is " + type);
                     offsets[i] = int(stride);
                 }
             stride += std::size_t(size);
@@ -218,8 +224,8 @@ Expected<std::unique_ptr<SampleReader>> openPlyReader(InputFile file) {
         if (offsets[i] < 0) return makeError(name + ": PLY vertices lack the float property '" + kProperties[i] + "'");
     const std::uint64_t dataOffset = end + std::string("end_header\n").size();
     if (stride == 0 || rows > (file.size() - dataOffset) / stride)
-        return makeError(name + ": " + std::to_string(rows) + " vertices of " + std::to_string(stride) + " bytes do not fit in the file's " +
-                         std::to_string(file.size() - dataOffset) + " bytes of data");
+        return makeError(name + ": " + std::to_string(rows) + " vertices of " + std::to_string(stride) +
+                         " bytes do not fit in the file's " + std::to_string(file.size() - dataOffset) + " bytes of data");
     std::optional<SampleMetadata> found;
     if (hasMetadata) found = metadata;
     return std::unique_ptr<SampleReader>(new PlyReader(std::move(file), rows, dataOffset, stride, offsets, std::move(found)));

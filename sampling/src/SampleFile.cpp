@@ -10,9 +10,12 @@ namespace fs = std::filesystem;
 
 const char* formatName(SampleFormat format) {
     switch (format) {
-    case SampleFormat::Bin: return "bin";
-    case SampleFormat::Npz: return "npz";
-    case SampleFormat::Ply: return "ply";
+    case SampleFormat::Bin:
+        return "bin";
+    case SampleFormat::Npz:
+        return "npz";
+    case SampleFormat::Ply:
+        return "ply";
     }
     return "?";
 }
@@ -32,9 +35,11 @@ std::optional<SampleFormat> formatFromPath(const fs::path& path) {
 
 std::uint64_t maxRows(SampleFormat format) {
     switch (format) {
-    case SampleFormat::Bin: return 0xffffffffull;  // N is a uint32
+    case SampleFormat::Bin:
+        return 0xffffffffull; // N is a uint32
     case SampleFormat::Npz:
-    case SampleFormat::Ply: return 0xffffffffull;  // sdfwb indexes samples with 32 bits on the GPU
+    case SampleFormat::Ply:
+        return 0xffffffffull; // sdfwb indexes samples with 32 bits on the GPU
     }
     return 0;
 }
@@ -43,29 +48,36 @@ SampleWriter::~SampleWriter() = default;
 SampleReader::~SampleReader() = default;
 
 Expected<std::unique_ptr<SampleWriter>> SampleWriter::create(const fs::path& path, SampleFormat format, std::uint64_t rows,
-                                                              const SampleMetadata& metadata, const Options& options) {
+                                                             const SampleMetadata& metadata, const Options& options) {
     if (rows > maxRows(format))
         return makeError(path.string() + ": " + std::to_string(rows) + " rows exceed the ." + formatName(format) + " limit of " +
                          std::to_string(maxRows(format)));
     auto file = detail::OutputFile::create(path);
     if (!file) return file.error();
     switch (format) {
-    case SampleFormat::Bin: return detail::createBinWriter(std::move(*file), rows);
-    case SampleFormat::Npz: return detail::createNpzWriter(std::move(*file), rows, metadata, options.forceZip64);
-    case SampleFormat::Ply: return detail::createPlyWriter(std::move(*file), rows, metadata);
+    case SampleFormat::Bin:
+        return detail::createBinWriter(std::move(*file), rows);
+    case SampleFormat::Npz:
+        return detail::createNpzWriter(std::move(*file), rows, metadata, options.forceZip64);
+    case SampleFormat::Ply:
+        return detail::createPlyWriter(std::move(*file), rows, metadata);
     }
     return makeError("sampling: unknown format");
 }
 
 Expected<std::unique_ptr<SampleReader>> SampleReader::open(const fs::path& path) {
     auto format = formatFromPath(path);
-    if (!format) return makeError(path.string() + ": unknown sample file type '" + path.extension().string() + "' (.bin, .npz or .ply)");
+    if (!format)
+        return makeError(path.string() + ": unknown sample file type '" + path.extension().string() + "' (.bin, .npz or .ply)");
     auto file = detail::InputFile::open(path);
     if (!file) return file.error();
     switch (*format) {
-    case SampleFormat::Bin: return detail::openBinReader(std::move(*file));
-    case SampleFormat::Npz: return detail::openNpzReader(std::move(*file));
-    case SampleFormat::Ply: return detail::openPlyReader(std::move(*file));
+    case SampleFormat::Bin:
+        return detail::openBinReader(std::move(*file));
+    case SampleFormat::Npz:
+        return detail::openNpzReader(std::move(*file));
+    case SampleFormat::Ply:
+        return detail::openPlyReader(std::move(*file));
     }
     return makeError("sampling: unknown format");
 }
@@ -73,9 +85,12 @@ Expected<std::unique_ptr<SampleReader>> SampleReader::open(const fs::path& path)
 Expected<std::unique_ptr<SampleReader>> SampleReader::openBytes(std::string bytes, SampleFormat format, const std::string& name) {
     detail::InputFile file = detail::InputFile::fromBytes(name, std::move(bytes));
     switch (format) {
-    case SampleFormat::Bin: return detail::openBinReader(std::move(file));
-    case SampleFormat::Npz: return detail::openNpzReader(std::move(file));
-    case SampleFormat::Ply: return detail::openPlyReader(std::move(file));
+    case SampleFormat::Bin:
+        return detail::openBinReader(std::move(file));
+    case SampleFormat::Npz:
+        return detail::openNpzReader(std::move(file));
+    case SampleFormat::Ply:
+        return detail::openPlyReader(std::move(file));
     }
     return makeError("sampling: unknown format");
 }
@@ -85,7 +100,9 @@ Expected<SampleSet> readSamples(const fs::path& path, std::optional<SampleMetada
     if (!reader) return reader.error();
     SampleSet samples;
     samples.resize(std::size_t((*reader)->rows()));
-    if (auto ok = (*reader)->read(0, samples.size(), samples.positions.data(), samples.distances.data(), samples.gradients.data()); !ok)
+    if (auto ok =
+            (*reader)->read(0, samples.size(), samples.positions.data(), samples.distances.data(), samples.gradients.data());
+        !ok)
         return ok.error();
     if (metadata) *metadata = (*reader)->metadata();
     return samples;
@@ -96,7 +113,9 @@ Expected<void> writeSamples(const fs::path& path, SampleFormat format, const Sam
         return makeError(path.string() + ": inconsistent sample arrays");
     auto writer = SampleWriter::create(path, format, samples.size(), metadata);
     if (!writer) return writer.error();
-    if (auto ok = (*writer)->append(samples.positions.data(), samples.distances.data(), samples.gradients.data(), samples.size()); !ok) return ok;
+    if (auto ok = (*writer)->append(samples.positions.data(), samples.distances.data(), samples.gradients.data(), samples.size());
+        !ok)
+        return ok;
     return (*writer)->commit();
 }
 
@@ -126,16 +145,18 @@ Expected<MergeReport> mergeSampleFiles(const fs::path& output, SampleFormat form
         for (std::size_t i : order) {
             const SampleMetadata& m = *readers[i]->metadata();
             const std::string& name = parts[i].string();
-            if (m.sdf != first.sdf || m.pattern != first.pattern || m.seed != first.seed || m.time != first.time || m.totalCount != first.totalCount)
-                return makeError("merge: " + name + " belongs to a different run (sdf, pattern, seed, time or N differ from " + parts[order[0]].string() + ")");
+            if (m.sdf != first.sdf || m.pattern != first.pattern || m.seed != first.seed || m.time != first.time ||
+                m.totalCount != first.totalCount)
+                return makeError("merge: " + name + " belongs to a different run (sdf, pattern, seed, time or N differ from " +
+                                 parts[order[0]].string() + ")");
             if (m.firstIndex != expected)
-                return makeError("merge: " + name + " starts at sample " + std::to_string(m.firstIndex) + ", expected " + std::to_string(expected) +
-                                 " (a shard is missing or repeated)");
+                return makeError("merge: " + name + " starts at sample " + std::to_string(m.firstIndex) + ", expected " +
+                                 std::to_string(expected) + " (a shard is missing or repeated)");
             expected += readers[i]->rows();
         }
         if (expected != first.totalCount)
-            return makeError("merge: the parts hold " + std::to_string(expected) + " of the run's " + std::to_string(first.totalCount) +
-                             " samples (a shard is missing)");
+            return makeError("merge: the parts hold " + std::to_string(expected) + " of the run's " +
+                             std::to_string(first.totalCount) + " samples (a shard is missing)");
         merged = first;
         merged.firstIndex = 0;
     } else {
@@ -149,8 +170,12 @@ Expected<MergeReport> mergeSampleFiles(const fs::path& output, SampleFormat form
         for (std::uint64_t done = 0; done < reader.rows();) {
             std::size_t count = std::size_t(std::min<std::uint64_t>(detail::kCopyChunkRows, reader.rows() - done));
             buffer.resize(count);
-            if (auto ok = reader.read(done, count, buffer.positions.data(), buffer.distances.data(), buffer.gradients.data()); !ok) return ok.error();
-            if (auto ok = (*writer)->append(buffer.positions.data(), buffer.distances.data(), buffer.gradients.data(), count); !ok) return ok.error();
+            if (auto ok = reader.read(done, count, buffer.positions.data(), buffer.distances.data(), buffer.gradients.data());
+                !ok)
+                return ok.error();
+            if (auto ok = (*writer)->append(buffer.positions.data(), buffer.distances.data(), buffer.gradients.data(), count);
+                !ok)
+                return ok.error();
             done += count;
         }
     }

@@ -6,8 +6,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <iterator>
 #include <cmath>
+#include <iterator>
 #include <vector>
 
 namespace sdfwb::sampling {
@@ -89,12 +89,17 @@ struct Pointers {
 
 Expected<void> validate(const SamplingJob& job) {
     if (job.count == 0) return makeError("-n: the sample count must be at least 1");
-    if (job.count > 0xffffffffull) return makeError("-n: " + std::to_string(job.count) + " samples exceed the limit of 4294967295 per run (shard larger jobs into several runs with different seeds)");
+    if (job.count > 0xffffffffull)
+        return makeError(
+            "-n: " + std::to_string(job.count) +
+            " samples exceed the limit of 4294967295 per run (shard larger jobs into several runs with different seeds)");
     if (job.shardCount == 0 || job.shardIndex >= job.shardCount)
-        return makeError("--shard: " + std::to_string(job.shardIndex) + "/" + std::to_string(job.shardCount) + " is not a slice (0 <= K < COUNT)");
+        return makeError("--shard: " + std::to_string(job.shardIndex) + "/" + std::to_string(job.shardCount) +
+                         " is not a slice (0 <= K < COUNT)");
     if (job.chunkSize == 0) return makeError("--chunk: must be at least 1");
     if (!(job.gradientStep > 0.0f) || !std::isfinite(job.gradientStep)) return makeError("--gradient-step: must be positive");
-    if (!(job.surfaceTolerance > 0.0f) || !std::isfinite(job.surfaceTolerance)) return makeError("--surface-tolerance: must be positive");
+    if (!(job.surfaceTolerance > 0.0f) || !std::isfinite(job.surfaceTolerance))
+        return makeError("--surface-tolerance: must be positive");
     return {};
 }
 
@@ -122,7 +127,7 @@ Expected<SamplingReport> sampleToFile(renderer::SampleCompute& compute, const Sa
         for (std::vector<float>* v : {&positions, &distances, &gradients}) {
             const std::size_t size = (v == &distances ? 1 : 3) * std::size_t(count);
             v->resize(size);
-            if (v->capacity() > 2 * size) v->shrink_to_fit();  // after a failed larger chunk: give the memory back
+            if (v->capacity() > 2 * size) v->shrink_to_fit(); // after a failed larger chunk: give the memory back
         }
         return Pointers{positions.data(), distances.data(), gradients.data()};
     };
@@ -131,7 +136,7 @@ Expected<SamplingReport> sampleToFile(renderer::SampleCompute& compute, const Sa
     if (!report) return report;
     if (!report->cancelled)
         if (auto ok = (*writer)->commit(); !ok) return ok.error();
-    return report;  // a cancelled writer is dropped here: its temporary file is removed
+    return report; // a cancelled writer is dropped here: its temporary file is removed
 }
 
 } // namespace sdfwb::sampling

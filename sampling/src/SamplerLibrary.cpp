@@ -14,7 +14,8 @@ namespace sdfwb::sampling {
 namespace fs = std::filesystem;
 
 const std::vector<std::string>& builtinPatterns() {
-    static const std::vector<std::string> patterns = {"grid", "image", "jitter", "rand", "surface", "near", "metropolis", "metropolis_curvature"};
+    static const std::vector<std::string> patterns = {"grid",    "image", "jitter",     "rand",
+                                                      "surface", "near",  "metropolis", "metropolis_curvature"};
     return patterns;
 }
 
@@ -26,15 +27,18 @@ std::vector<fs::path> samplerFolders() {
         while (std::getline(stream, folder, ':'))
             if (!folder.empty()) folders.emplace_back(folder);
     }
-    if (const char* data = std::getenv("XDG_DATA_HOME"); data && *data) folders.push_back(fs::path(data) / "sdfwb" / "samplers");
-    else if (const char* home = std::getenv("HOME"); home && *home) folders.push_back(fs::path(home) / ".local" / "share" / "sdfwb" / "samplers");
+    if (const char* data = std::getenv("XDG_DATA_HOME"); data && *data)
+        folders.push_back(fs::path(data) / "sdfwb" / "samplers");
+    else if (const char* home = std::getenv("HOME"); home && *home)
+        folders.push_back(fs::path(home) / ".local" / "share" / "sdfwb" / "samplers");
     return folders;
 }
 
 namespace {
 
 Expected<shaders::ShaderPiece> checked(shaders::ShaderPiece piece) {
-    static const std::regex definition(R"(\bbool\s+samplePosition\s*\(\s*(in\s+)?uint\s+\w+\s*,\s*out\s+vec3\s+\w+\s*\)\s*\{)", kLinearRegex);
+    static const std::regex definition(R"(\bbool\s+samplePosition\s*\(\s*(in\s+)?uint\s+\w+\s*,\s*out\s+vec3\s+\w+\s*\)\s*\{)",
+                                       kLinearRegex);
     if (!std::regex_search(shaders::stripComments(piece.text), definition))
         return makeError(piece.name + ": not a sampler: it must define `bool samplePosition(uint index, out vec3 position)`");
     return piece;

@@ -9,11 +9,20 @@ namespace {
 
 // glslang's grammar token names, as a person would write them.
 std::string prettyTokens(std::string message) {
-    static const std::pair<const char*, const char*> names[] = {
-        {"SEMICOLON", "';'"}, {"COMMA", "','"}, {"RIGHT_BRACE", "'}'"}, {"LEFT_BRACE", "'{'"},
-        {"RIGHT_PAREN", "')'"}, {"LEFT_PAREN", "'('"}, {"RIGHT_BRACKET", "']'"}, {"LEFT_BRACKET", "'['"},
-        {"EQUAL", "'='"}, {"DOT", "'.'"}, {"COLON", "':'"}, {"IDENTIFIER", "identifier"},
-        {"FLOATCONSTANT", "number"}, {"INTCONSTANT", "number"}};
+    static const std::pair<const char*, const char*> names[] = {{"SEMICOLON", "';'"},
+                                                                {"COMMA", "','"},
+                                                                {"RIGHT_BRACE", "'}'"},
+                                                                {"LEFT_BRACE", "'{'"},
+                                                                {"RIGHT_PAREN", "')'"},
+                                                                {"LEFT_PAREN", "'('"},
+                                                                {"RIGHT_BRACKET", "']'"},
+                                                                {"LEFT_BRACKET", "'['"},
+                                                                {"EQUAL", "'='"},
+                                                                {"DOT", "'.'"},
+                                                                {"COLON", "':'"},
+                                                                {"IDENTIFIER", "identifier"},
+                                                                {"FLOATCONSTANT", "number"},
+                                                                {"INTCONSTANT", "number"}};
     for (const auto& [token, pretty] : names) {
         std::regex word(std::string("\\b") + token + "\\b");
         message = std::regex_replace(message, word, pretty);
@@ -58,8 +67,8 @@ Severity severityFromWord(std::string word) {
     return Severity::Error;
 }
 
-void addDiagnostic(std::vector<Diagnostic>& out, const SourceMap& map, int fileIndex, int line, int column,
-                   Severity severity, std::string token, std::string message) {
+void addDiagnostic(std::vector<Diagnostic>& out, const SourceMap& map, int fileIndex, int line, int column, Severity severity,
+                   std::string token, std::string message) {
     // glslang reports what it could not parse, not what is missing: for a missing ';' the
     // culprit is the end of the previous statement.
     bool missingSemicolon = message.find("expecting") != std::string::npos && message.find("SEMICOLON") != std::string::npos;
@@ -71,7 +80,8 @@ void addDiagnostic(std::vector<Diagnostic>& out, const SourceMap& map, int fileI
         bool atLineStart = firstCode == std::string_view::npos || column == 0 || int(firstCode) + 1 >= column;
         if (atLineStart) {
             int previous = line - 1;
-            while (previous >= 1 && isBlank(map.lineText(fileIndex, previous).substr(0, std::size_t(codeEnd(map.lineText(fileIndex, previous))))))
+            while (previous >= 1 &&
+                   isBlank(map.lineText(fileIndex, previous).substr(0, std::size_t(codeEnd(map.lineText(fileIndex, previous))))))
                 --previous;
             if (previous >= 1) {
                 line = previous;
@@ -111,7 +121,8 @@ std::vector<Diagnostic> parseInfoLog(std::string_view log, const SourceMap& map)
             addDiagnostic(out, map, std::stoi(m[1].str()), std::stoi(m[2].str()), std::stoi(m[3].str()),
                           severityFromWord(m[4].str()), "", m[5].str());
         } else if (std::regex_match(line, m, nvidia)) {
-            addDiagnostic(out, map, std::stoi(m[1].str()), std::stoi(m[2].str()), 0, severityFromWord(m[3].str()), "", m[4].str());
+            addDiagnostic(out, map, std::stoi(m[1].str()), std::stoi(m[2].str()), 0, severityFromWord(m[3].str()), "",
+                          m[4].str());
         } else if (line.rfind("ERROR: ", 0) == 0 && line.find("compilation errors") == std::string::npos &&
                    line.find("No code generated") == std::string::npos) {
             // An error without location (e.g. a link error): keep it, attributed to the root file.

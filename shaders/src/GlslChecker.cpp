@@ -18,9 +18,12 @@ void ensureGlslangInitialised() {
 
 EShLanguage toLanguage(Stage stage) {
     switch (stage) {
-    case Stage::Vertex: return EShLangVertex;
-    case Stage::Fragment: return EShLangFragment;
-    case Stage::Compute: return EShLangCompute;
+    case Stage::Vertex:
+        return EShLangVertex;
+    case Stage::Fragment:
+        return EShLangFragment;
+    case Stage::Compute:
+        return EShLangCompute;
     }
     return EShLangFragment;
 }
@@ -48,7 +51,8 @@ std::vector<Diagnostic> checkWithGlslang(const ComposedShader& composed) {
             diagnostics.insert(diagnostics.end(), linkDiagnostics.begin(), linkDiagnostics.end());
         }
     } else if (!hasErrors(diagnostics)) {
-        diagnostics.push_back({composed.map.fileName(0), 0, 0, Severity::Error, std::string("glslang rejected the shader: ") + shader.getInfoLog()});
+        diagnostics.push_back({composed.map.fileName(0), 0, 0, Severity::Error,
+                               std::string("glslang rejected the shader: ") + shader.getInfoLog()});
     }
     return diagnostics;
 }

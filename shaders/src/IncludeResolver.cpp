@@ -56,10 +56,16 @@ bool startsOutsideComment(std::string_view line, bool& inBlockComment) {
     bool outside = !inBlockComment;
     for (std::size_t i = 0; i < line.size(); ++i) {
         if (inBlockComment) {
-            if (line[i] == '*' && i + 1 < line.size() && line[i + 1] == '/') { inBlockComment = false; ++i; }
+            if (line[i] == '*' && i + 1 < line.size() && line[i + 1] == '/') {
+                inBlockComment = false;
+                ++i;
+            }
         } else if (line[i] == '/' && i + 1 < line.size()) {
             if (line[i + 1] == '/') break;
-            if (line[i + 1] == '*') { inBlockComment = true; ++i; }
+            if (line[i + 1] == '*') {
+                inBlockComment = true;
+                ++i;
+            }
         }
     }
     return outside;
@@ -120,7 +126,7 @@ private:
                                              "malformed #include: expected #include \"file.glsl\""});
                 m_out.text += "\n";
             } else if (directiveAllowed && (std::regex_match(line, versionLine) || std::regex_match(line, pragmaOnce))) {
-                m_out.text += "\n";  // the composer writes #version; #pragma once is handled here
+                m_out.text += "\n"; // the composer writes #version; #pragma once is handled here
             } else {
                 m_out.text += line;
                 m_out.text += "\n";
@@ -129,8 +135,8 @@ private:
         if (!canonicalPath.empty()) m_stack.pop_back();
     }
 
-    void includeFile(const std::string& target, const std::string& includer, int line, int column,
-                     const fs::path& includerPath, int depth) {
+    void includeFile(const std::string& target, const std::string& includer, int line, int column, const fs::path& includerPath,
+                     int depth) {
         auto report = [&](std::string message) {
             m_out.diagnostics.push_back({includer, line, column, Severity::Error, std::move(message)});
         };
@@ -149,7 +155,10 @@ private:
             if (!fs::is_regular_file(candidate, ec)) continue;
             fs::path canonical = fs::weakly_canonical(candidate, ec);
             if (ec) continue;
-            if (!paths::isInsideRoots(canonical, m_roots)) { escaped = true; continue; }
+            if (!paths::isInsideRoots(canonical, m_roots)) {
+                escaped = true;
+                continue;
+            }
             found = canonical;
             break;
         }
@@ -167,8 +176,9 @@ private:
         if (m_out.map.files.size() > kMaxIncludedFiles || m_out.text.size() > kMaxExpandedBytes) {
             if (m_limitReported) return;
             m_limitReported = true;
-            return report("#include \"" + target + "\": too many includes (over " + std::to_string(kMaxIncludedFiles) + " files or " +
-                          std::to_string(kMaxExpandedBytes >> 20) + " MiB expanded); is a file included repeatedly without #pragma once?");
+            return report("#include \"" + target + "\": too many includes (over " + std::to_string(kMaxIncludedFiles) +
+                          " files or " + std::to_string(kMaxExpandedBytes >> 20) +
+                          " MiB expanded); is a file included repeatedly without #pragma once?");
         }
 
         auto text = readTextFile(found);

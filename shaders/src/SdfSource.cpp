@@ -13,9 +13,7 @@
 namespace sdfwb::shaders {
 namespace {
 
-bool isWordCharacter(char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
-}
+bool isWordCharacter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; }
 
 // What `\s` matches.
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r'; }
@@ -37,16 +35,28 @@ std::string stripComments(const std::string& text) {
         char next = i + 1 < out.size() ? out[i + 1] : '\0';
         switch (state) {
         case State::Code:
-            if (c == '/' && next == '/') { state = State::Line; out[i] = ' '; }
-            else if (c == '/' && next == '*') { state = State::Block; out[i] = ' '; out[++i] = ' '; }
+            if (c == '/' && next == '/') {
+                state = State::Line;
+                out[i] = ' ';
+            } else if (c == '/' && next == '*') {
+                state = State::Block;
+                out[i] = ' ';
+                out[++i] = ' ';
+            }
             break;
         case State::Line:
-            if (c == '\n') state = State::Code;
-            else out[i] = ' ';
+            if (c == '\n')
+                state = State::Code;
+            else
+                out[i] = ' ';
             break;
         case State::Block:
-            if (c == '*' && next == '/') { out[i] = ' '; out[++i] = ' '; state = State::Code; }
-            else if (c != '\n') out[i] = ' ';
+            if (c == '*' && next == '/') {
+                out[i] = ' ';
+                out[++i] = ' ';
+                state = State::Code;
+            } else if (c != '\n')
+                out[i] = ' ';
             break;
         }
     }
@@ -149,7 +159,9 @@ std::vector<std::string> definedMacros(const std::string& stripped) {
 }
 
 std::vector<std::string> functionSignatures(const std::string& text) {
-    static const std::regex definition(R"(\b(?:float|vec[234]|ivec[234]|int|uint|bool|mat[234]|void|Point3|Vector3|Color3|float[234])\s+(\w+)\s*\(([^)]*)\)\s*\{)", kLinearRegex);
+    static const std::regex definition(
+        R"(\b(?:float|vec[234]|ivec[234]|int|uint|bool|mat[234]|void|Point3|Vector3|Color3|float[234])\s+(\w+)\s*\(([^)]*)\)\s*\{)",
+        kLinearRegex);
     static const std::regex whitespace(R"(\s+)", kLinearRegex);
     std::string stripped = stripComments(text);
     std::vector<std::string> signatures;
@@ -178,8 +190,10 @@ CompatNeeds detectCompatNeeds(const std::string& stripped) {
         std::vector<std::regex> patterns;
         for (const char* symbol : candidates) {
             const std::string name(symbol);
-            patterns.emplace_back("(#\\s*define\\s+" + name + "\\b)|(\\b(const\\s+)?(float|int|vec[234]|bool|struct|uniform\\s+\\w+)\\s+" + name +
-                                  "\\s*[=;(\\[{])", kLinearRegex);
+            patterns.emplace_back("(#\\s*define\\s+" + name +
+                                      "\\b)|(\\b(const\\s+)?(float|int|vec[234]|bool|struct|uniform\\s+\\w+)\\s+" + name +
+                                      "\\s*[=;(\\[{])",
+                                  kLinearRegex);
         }
         return patterns;
     }();
@@ -188,7 +202,10 @@ CompatNeeds detectCompatNeeds(const std::string& stripped) {
     std::set<std::string_view> words;
     const std::string_view text(stripped);
     for (std::size_t i = 0; i < text.size();) {
-        if (!isWordCharacter(text[i])) { ++i; continue; }
+        if (!isWordCharacter(text[i])) {
+            ++i;
+            continue;
+        }
         std::size_t end = i;
         while (end < text.size() && isWordCharacter(text[end])) ++end;
         words.insert(text.substr(i, end - i));

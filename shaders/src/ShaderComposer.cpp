@@ -44,9 +44,12 @@ std::string entryWrapper(const PreparedSdf& sdf) {
 
 const char* stageName(Stage stage) {
     switch (stage) {
-    case Stage::Vertex: return "vertex";
-    case Stage::Fragment: return "fragment";
-    case Stage::Compute: return "compute";
+    case Stage::Vertex:
+        return "vertex";
+    case Stage::Fragment:
+        return "fragment";
+    case Stage::Compute:
+        return "compute";
     }
     return "?";
 }

@@ -18,8 +18,8 @@ namespace {
 bool isWord(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; }
 
 struct Token {
-    std::string text;    // an identifier, or one punctuation character
-    std::size_t offset;  // in the scanned text
+    std::string text;   // an identifier, or one punctuation character
+    std::size_t offset; // in the scanned text
 };
 
 // Identifiers and single punctuation characters; numbers count as identifiers, whitespace and
@@ -29,9 +29,16 @@ std::vector<Token> tokenize(const std::string& text) {
     bool lineStart = true;
     for (std::size_t i = 0; i < text.size();) {
         const char c = text[i];
-        if (c == '\n') { lineStart = true; ++i; continue; }
-        if (c == ' ' || c == '\t' || c == '\r') { ++i; continue; }
-        if (c == '#' && lineStart) {  // a directive: skip to the end of the line
+        if (c == '\n') {
+            lineStart = true;
+            ++i;
+            continue;
+        }
+        if (c == ' ' || c == '\t' || c == '\r') {
+            ++i;
+            continue;
+        }
+        if (c == '#' && lineStart) { // a directive: skip to the end of the line
             while (i < text.size() && text[i] != '\n') ++i;
             continue;
         }
@@ -51,8 +58,8 @@ std::vector<Token> tokenize(const std::string& text) {
 
 struct Found {
     std::string name;
-    std::string key;     // functions: "name(type,type)"; declarations: the name
-    std::size_t offset;  // of the name
+    std::string key;    // functions: "name(type,type)"; declarations: the name
+    std::size_t offset; // of the name
     bool function;
 };
 
@@ -64,8 +71,14 @@ std::vector<Found> topLevelDeclarations(const std::vector<Token>& tokens) {
     auto isIdentifier = [](const std::string& t) { return !t.empty() && isWord(t[0]) && !(t[0] >= '0' && t[0] <= '9'); };
     for (std::size_t i = 0; i < tokens.size(); ++i) {
         const std::string& t = tokens[i].text;
-        if (t == "{") { ++depth; continue; }
-        if (t == "}") { depth = depth > 0 ? depth - 1 : 0; continue; }
+        if (t == "{") {
+            ++depth;
+            continue;
+        }
+        if (t == "}") {
+            depth = depth > 0 ? depth - 1 : 0;
+            continue;
+        }
         if (depth != 0) continue;
         if (t == "struct" && i + 1 < tokens.size() && isIdentifier(tokens[i + 1].text)) {
             found.push_back({tokens[i + 1].text, tokens[i + 1].text, tokens[i + 1].offset, false});
@@ -79,7 +92,8 @@ std::vector<Found> topLevelDeclarations(const std::vector<Token>& tokens) {
             std::size_t j = i + 3;
             bool closed = false;
             auto flush = [&] {
-                static const std::set<std::string> qualifiers = {"in", "out", "inout", "const", "highp", "mediump", "lowp", "precise"};
+                static const std::set<std::string> qualifiers = {"in",    "out",     "inout", "const",
+                                                                 "highp", "mediump", "lowp",  "precise"};
                 std::vector<std::string> words;
                 for (const std::string& w : group)
                     if (!qualifiers.count(w)) words.push_back(w);
@@ -88,15 +102,20 @@ std::vector<Found> topLevelDeclarations(const std::vector<Token>& tokens) {
             };
             for (; j < tokens.size(); ++j) {
                 const std::string& p = tokens[j].text;
-                if (p == ")") { closed = true; break; }
+                if (p == ")") {
+                    closed = true;
+                    break;
+                }
                 if (p == "(" || p == "{" || p == "}" || p == ";") break;
-                if (p == ",") flush();
-                else if (isIdentifier(p)) group.push_back(p);
+                if (p == ",")
+                    flush();
+                else if (isIdentifier(p))
+                    group.push_back(p);
             }
             if (!closed || j + 1 >= tokens.size() || tokens[j + 1].text != "{") continue;
             flush();
             found.push_back({tokens[i + 1].text, tokens[i + 1].text + "(" + types + ")", tokens[i + 1].offset, true});
-            i = j;  // the body's "{" comes next
+            i = j; // the body's "{" comes next
         }
     }
     return found;
@@ -170,10 +189,11 @@ std::vector<Diagnostic> checkSourceFiles(const ResolvedSource& source) {
     }
     if (code > maximumCodeBytes()) {
         char text[256];
-        std::snprintf(text, sizeof text,
-                      "the SDF with its includes holds %.1f MB of code (comments and blanks not counted); sdfwb compiles at most %.1f MB "
-                      "(set SDFWB_MAX_SOURCE_BYTES to raise the limit; expect minutes of compile time)",
-                      double(code) / 1048576.0, double(maximumCodeBytes()) / 1048576.0);
+        std::snprintf(
+            text, sizeof text,
+            "the SDF with its includes holds %.1f MB of code (comments and blanks not counted); sdfwb compiles at most %.1f MB "
+            "(set SDFWB_MAX_SOURCE_BYTES to raise the limit; expect minutes of compile time)",
+            double(code) / 1048576.0, double(maximumCodeBytes()) / 1048576.0);
         out.push_back({source.map.files.front().name, 1, 1, Severity::Error, text});
         return out;
     }
@@ -194,7 +214,7 @@ std::vector<Diagnostic> checkSourceFiles(const ResolvedSource& source) {
                               "non-UTF-8 file or binary data?)",
                               unsigned(byte));
                 report(i, text);
-                break;  // one per file: the rest is usually more of the same
+                break; // one per file: the rest is usually more of the same
             }
         }
         const std::vector<Token> tokens = tokenize(stripped); // once, for both checks

@@ -3,16 +3,22 @@
 namespace sdfwb::shaders {
 
 namespace {
-constexpr ShadingMode kModes[] = {ShadingMode::Normals, ShadingMode::Gooch, ShadingMode::Matcap, ShadingMode::Curvature, ShadingMode::Steps};
+constexpr ShadingMode kModes[] = {ShadingMode::Normals, ShadingMode::Gooch, ShadingMode::Matcap, ShadingMode::Curvature,
+                                  ShadingMode::Steps};
 }
 
 const char* shadingModeName(ShadingMode mode) {
     switch (mode) {
-    case ShadingMode::Normals: return "normals";
-    case ShadingMode::Gooch: return "gooch";
-    case ShadingMode::Matcap: return "matcap";
-    case ShadingMode::Curvature: return "curvature";
-    case ShadingMode::Steps: return "steps";
+    case ShadingMode::Normals:
+        return "normals";
+    case ShadingMode::Gooch:
+        return "gooch";
+    case ShadingMode::Matcap:
+        return "matcap";
+    case ShadingMode::Curvature:
+        return "curvature";
+    case ShadingMode::Steps:
+        return "steps";
     }
     return "?";
 }

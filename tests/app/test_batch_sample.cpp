@@ -8,10 +8,10 @@
 #include <array>
 #include <chrono>
 #include <csignal>
-#include <functional>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -99,7 +99,9 @@ Result runLimited(const std::vector<std::string>& arguments, int resource, rlim_
         dup2(fds[1], 2);
         close(fds[0]);
         signal(SIGXFSZ, SIG_IGN);
-        struct rlimit value {limit, limit};
+        struct rlimit value {
+            limit, limit
+        };
         setrlimit(resource, &value);
     });
     close(fds[1]);
@@ -138,8 +140,9 @@ TEST(ResourceLimits, DiskFullFailsCleanlyAndKeepsTheOldFile) {
         const fs::path target = out.parent_path() / (std::string("full") + extension);
         { std::ofstream(target) << "the previous results"; }
         // 64 KiB per file: the writer's first large write fails with EFBIG, as on a full disk.
-        Result r = runLimited({"--batch", "sample", "--sdf", "sphere", "--pattern", "rand", "-n", "200000", "--output", target.string()},
-                              RLIMIT_FSIZE, 64 * 1024);
+        Result r =
+            runLimited({"--batch", "sample", "--sdf", "sphere", "--pattern", "rand", "-n", "200000", "--output", target.string()},
+                       RLIMIT_FSIZE, 64 * 1024);
         EXPECT_EQ(r.exitCode, 1) << r.output;
         EXPECT_NE(r.output.find(target.string()), std::string::npos) << "the message names the file: " << r.output;
         EXPECT_NE(r.output.find("write failed"), std::string::npos) << r.output;
@@ -149,7 +152,8 @@ TEST(ResourceLimits, DiskFullFailsCleanlyAndKeepsTheOldFile) {
     // A render too: the PNG writer fails, the old image stays.
     const fs::path image = scratch("full.png");
     { std::ofstream(image) << "the previous image"; }
-    Result r = runLimited({"--batch", "render", "--sdf", "torus", "--size", "1024x1024", "--output", image.string()}, RLIMIT_FSIZE, 4 * 1024);
+    Result r = runLimited({"--batch", "render", "--sdf", "torus", "--size", "1024x1024", "--output", image.string()},
+                          RLIMIT_FSIZE, 4 * 1024);
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find(image.string()), std::string::npos) << r.output;
     EXPECT_TRUE(readAll(image) == "the previous image") << "the old image was replaced (" << fs::file_size(image) << " bytes)";
@@ -157,7 +161,8 @@ TEST(ResourceLimits, DiskFullFailsCleanlyAndKeepsTheOldFile) {
     // And an MP4.
     const fs::path video = scratch("full.mp4");
     { std::ofstream(video) << "the previous video"; }
-    r = runLimited({"--batch", "animate", "--sdf", "torus", "--size", "320x240", "--seconds", "2", "--turntable", "--output", video.string()},
+    r = runLimited({"--batch", "animate", "--sdf", "torus", "--size", "320x240", "--seconds", "2", "--turntable", "--output",
+                    video.string()},
                    RLIMIT_FSIZE, 20 * 1024);
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find(video.string()), std::string::npos) << r.output;
@@ -181,7 +186,8 @@ TEST(ResourceLimits, UnwritableOutputIsNamedBeforeAnyWork) {
 TEST(ResourceLimits, OutOfMemoryContinuesInSmallerChunksWithTheSameRows) {
     // Reference rows with small chunks, no limit.
     const fs::path reference = scratch("oom-reference.bin");
-    ASSERT_EQ(run("--batch sample --sdf sphere --pattern rand -n 4194240 --chunk 65536 -q --output " + reference.string()).exitCode, 0);
+    ASSERT_EQ(
+        run("--batch sample --sdf sphere --pattern rand -n 4194240 --chunk 65536 -q --output " + reference.string()).exitCode, 0);
     // One dispatch of 4 194 240 samples needs ~117 MB of buffers in llvmpipe: under an address
     // space limit it fails with GL_OUT_OF_MEMORY. The run halves its chunks and goes on; the rows
     // depend only on their index, so the file is the same. The limit that shows it depends on the
@@ -189,8 +195,8 @@ TEST(ResourceLimits, OutOfMemoryContinuesInSmallerChunksWithTheSameRows) {
     bool continued = false;
     for (rlim_t megabytes : {1200, 1100, 1300, 1000, 1400}) {
         const fs::path out = scratch("oom.bin");
-        Result r = runLimited({"--batch", "sample", "--sdf", "sphere", "--pattern", "rand", "-n", "4194240", "--chunk", "4194240", "--output",
-                               out.string()},
+        Result r = runLimited({"--batch", "sample", "--sdf", "sphere", "--pattern", "rand", "-n", "4194240", "--chunk", "4194240",
+                               "--output", out.string()},
                               RLIMIT_AS, megabytes << 20);
         EXPECT_TRUE(r.exitCode == 0 || r.exitCode == 1 || r.exitCode == 3) << megabytes << " MB: " << r.output;
         if (r.exitCode == 0 && r.output.find("continuing in chunks") != std::string::npos) {
@@ -252,7 +258,8 @@ TEST(BatchSample, JobFileRunsEveryStepAndStopsAtTheFirstFailure) {
     std::string leftBytes((std::istreambuf_iterator<char>(left)), {}), rightBytes((std::istreambuf_iterator<char>(right)), {});
     EXPECT_EQ(leftBytes, rightBytes) << "merged shards must equal the single run";
 
-    std::ofstream(job) << "list -q\nsample --sdf torus --pattern rand -n 10 --output " << scratch("never.npz").string() << " --bogus\n";
+    std::ofstream(job) << "list -q\nsample --sdf torus --pattern rand -n 10 --output " << scratch("never.npz").string()
+                       << " --bogus\n";
     r = run("--batch " + job.string());
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("jobs.txt:2"), std::string::npos) << r.output;
@@ -296,8 +303,8 @@ TEST(BatchSample, CtrlCLeavesNoPartialFile) {
 
 TEST(BatchSample, FiftyMillionSamplesStayUnder512MiB) {
     fs::path out = scratch("fifty-million.bin");
-    auto [exitCode, peakKiB] =
-        runMeasured({"--batch", "sample", "--sdf", "sphere", "--pattern", "rand", "-n", "50000000", "--output", out.string(), "--quiet"});
+    auto [exitCode, peakKiB] = runMeasured(
+        {"--batch", "sample", "--sdf", "sphere", "--pattern", "rand", "-n", "50000000", "--output", out.string(), "--quiet"});
     ASSERT_EQ(exitCode, 0);
     EXPECT_EQ(fs::file_size(out), 4u + 28u * 50000000u);
     EXPECT_LT(peakKiB, 512 * 1024) << "peak resident memory " << peakKiB / 1024 << " MiB";
@@ -307,11 +314,14 @@ TEST(BatchSample, FiftyMillionSamplesStayUnder512MiB) {
 
 TEST(BatchAnimate, WritesAnH264Mp4WithTheRightFrames) {
     fs::path out = scratch("turntable.mp4");
-    Result r = run("--batch animate --sdf torus --output " + out.string() + " --size 161x91 --seconds 1 --fps 12 --turntable --quiet");
+    Result r =
+        run("--batch animate --sdf torus --output " + out.string() + " --size 161x91 --seconds 1 --fps 12 --turntable --quiet");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     Result probe;
     {
-        std::string command = "ffprobe -v error -count_frames -show_entries stream=codec_name,width,height,nb_read_frames -of csv=p=0 " + out.string();
+        std::string command =
+            "ffprobe -v error -count_frames -show_entries stream=codec_name,width,height,nb_read_frames -of csv=p=0 " +
+            out.string();
         FILE* pipe = popen(command.c_str(), "r");
         std::array<char, 256> buffer{};
         while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) probe.output.append(buffer.data(), n);

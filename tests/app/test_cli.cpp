@@ -15,11 +15,12 @@ namespace {
 
 struct Result {
     int exitCode = -1;
-    std::string output;  // stdout and stderr
+    std::string output; // stdout and stderr
 };
 
 Result run(const std::string& arguments) {
-    std::string command = "env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM " + std::string(SDFWB_BINARY) + " " + arguments + " 2>&1";
+    std::string command =
+        "env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM " + std::string(SDFWB_BINARY) + " " + arguments + " 2>&1";
     Result result;
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return result;
@@ -30,7 +31,9 @@ Result run(const std::string& arguments) {
     return result;
 }
 
-std::string corpus(const std::string& name) { return (fs::path(SDFWB_SOURCE_DIR) / "tests" / "shaders" / "files" / name).string(); }
+std::string corpus(const std::string& name) {
+    return (fs::path(SDFWB_SOURCE_DIR) / "tests" / "shaders" / "files" / name).string();
+}
 
 fs::path outputPath(const std::string& name) {
     fs::path path = fs::temp_directory_path() / ("sdfwb-cli-" + name);
@@ -87,14 +90,15 @@ TEST(CommandLine, NonFiniteAndOutOfRangeNumbersAreRefusedWhileParsing) {
     fs::path out = outputPath("numbers.png");
     struct Case {
         std::string arguments, culprit;
-    } cases[] = {{"render --sdf sphere --time nan --output " + out.string(), "--time"},
-                 {"render --sdf sphere --time inf --output " + out.string(), "--time"},
-                 {"animate --sdf sphere --fps 0 --output " + outputPath("numbers.mp4").string(), "--fps"},
-                 {"animate --sdf sphere --seconds 0 --output " + outputPath("numbers.mp4").string(), "--seconds"},
-                 {"audit --sdf sphere --samples 1", "--samples"},
-                 {"sample --sdf sphere -p rand -n 10 --gradient-step 0 -o " + outputPath("n.bin").string(), "--gradient-step"},
-                 {"sample --sdf sphere -p surface -n 10 --surface-tolerance -1 -o " + outputPath("n.bin").string(), "--surface-tolerance"},
-                 {"sample --sdf sphere -p rand -n 10 --time nan -o " + outputPath("n.bin").string(), "--time"}};
+    } cases[] = {
+        {"render --sdf sphere --time nan --output " + out.string(), "--time"},
+        {"render --sdf sphere --time inf --output " + out.string(), "--time"},
+        {"animate --sdf sphere --fps 0 --output " + outputPath("numbers.mp4").string(), "--fps"},
+        {"animate --sdf sphere --seconds 0 --output " + outputPath("numbers.mp4").string(), "--seconds"},
+        {"audit --sdf sphere --samples 1", "--samples"},
+        {"sample --sdf sphere -p rand -n 10 --gradient-step 0 -o " + outputPath("n.bin").string(), "--gradient-step"},
+        {"sample --sdf sphere -p surface -n 10 --surface-tolerance -1 -o " + outputPath("n.bin").string(), "--surface-tolerance"},
+        {"sample --sdf sphere -p rand -n 10 --time nan -o " + outputPath("n.bin").string(), "--time"}};
     for (const Case& c : cases) {
         Result r = run("--batch " + c.arguments);
         EXPECT_EQ(r.exitCode, 2) << c.arguments << ": " << r.output;
@@ -125,7 +129,8 @@ TEST(CommandLine, UnknownBatchCommandAndTopLevelOption) {
 TEST(CommandLine, HelpListsWhatTheCodeAccepts) {
     Result r = run("--help");
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* word : {"--batch", "render", "list", "exit codes"}) EXPECT_NE(r.output.find(word), std::string::npos) << word;
+    for (const char* word : {"--batch", "render", "list", "exit codes"})
+        EXPECT_NE(r.output.find(word), std::string::npos) << word;
     r = run("--batch render --help");
     EXPECT_EQ(r.exitCode, 0);
     for (const char* option : {"--sdf", "--output", "--size", "--time", "--shading", "--camera", "--fov", "--quiet", "--json"})

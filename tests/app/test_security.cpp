@@ -61,13 +61,14 @@ TEST(Security, JobFilesRunNoCommands) {
     fs::path folder = freshFolder("jobs");
     const fs::path marker = folder / "marker";
     const std::string lines[] = {"list $(touch " + marker.string() + ")", "list `touch " + marker.string() + "`",
-                                 "list; touch " + marker.string(), "list | touch " + marker.string(), "list && touch " + marker.string()};
+                                 "list; touch " + marker.string(), "list | touch " + marker.string(),
+                                 "list && touch " + marker.string()};
     for (const std::string& line : lines) {
         fs::path job = folder / "job.txt";
         std::ofstream(job) << line << "\n";
         std::string output;
         int code = runSdfwb("--batch " + job.string(), &output);
-        EXPECT_EQ(code, 2) << line << "\n" << output;  // the extra words are unknown arguments of `list`
+        EXPECT_EQ(code, 2) << line << "\n" << output; // the extra words are unknown arguments of `list`
         EXPECT_NE(output.find("job.txt:1"), std::string::npos) << output;
         EXPECT_FALSE(fs::exists(marker)) << "a job file ran a command: " << line;
     }

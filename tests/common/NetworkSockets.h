@@ -24,7 +24,7 @@ inline std::vector<std::string> networkSockets(const std::string& pid) {
     for (const char* table : {"tcp", "tcp6", "udp", "udp6"}) {
         std::ifstream in(std::string("/proc/net/") + table);
         std::string line;
-        std::getline(in, line);  // header
+        std::getline(in, line); // header
         while (std::getline(in, line)) {
             std::istringstream fields(line);
             std::string slot, local, remote, state, queues, timer, retransmits, uid, timeout, inode;

@@ -8,7 +8,6 @@
 #include <gui/PlaybackController.h>
 #include <gui/SamplingController.h>
 #include <gui/SdfDocument.h>
-#include <widgets/SamplingDialog.h>
 #include <renderer/ImageIO.h>
 #include <widgets/CameraPanel.h>
 #include <widgets/DatasetBrowser.h>
@@ -16,24 +15,25 @@
 #include <widgets/GlslEditor.h>
 #include <widgets/PlanePanel.h>
 #include <widgets/ProblemsPanel.h>
+#include <widgets/SamplingDialog.h>
 #include <widgets/TimeBar.h>
 #include <widgets/ViewportWidget.h>
 
 #include <gtest/gtest.h>
 
-#include <QApplication>
 #include "common/NetworkSockets.h"
-#include <Qsci/qsciscintilla.h>
-#include <core/Log.h>
-#include <renderer/GlInfo.h>
-#include <mutex>
+#include <QApplication>
 #include <QDialog>
-#include <QDockWidget>
 #include <QDir>
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFile>
-#include <QTemporaryDir>
 #include <QProcess>
+#include <QTemporaryDir>
+#include <Qsci/qsciscintilla.h>
+#include <core/Log.h>
+#include <mutex>
+#include <renderer/GlInfo.h>
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -120,7 +120,7 @@ TEST(MainWindow, TypedErrorShowsADiagnosticAndKeepsTheLastGoodShape) {
     int updates = diagnosticUpdates;
     QString text = window.editor()->text();
     text.replace("return length(p) - 0.8;", "return length(p) - radius;");
-    window.editor()->setText(text);  // as if typed: goes through the debounce and the worker
+    window.editor()->setText(text); // as if typed: goes through the debounce and the worker
     ASSERT_TRUE(waitFor([&] { return diagnosticUpdates > updates; }));
     EXPECT_GE(window.editor()->diagnosticCount(), 1);
     ASSERT_FALSE(window.document()->diagnostics().empty());
@@ -151,7 +151,10 @@ TEST(SamplingDialog, SamplesTheOpenSdfAndCancelsCleanly) {
     settings.output = output;
     dialog->setSettings(settings);
     bool done = false, ok = false;
-    QObject::connect(sampling, &app::SamplingController::finished, [&](bool success, const QString&) { done = true; ok = success; });
+    QObject::connect(sampling, &app::SamplingController::finished, [&](bool success, const QString&) {
+        done = true;
+        ok = success;
+    });
     dialog->findChild<QPushButton*>("start")->click();
     ASSERT_TRUE(waitFor([&] { return done; }, 60000));
     EXPECT_TRUE(ok) << dialog->findChild<QLabel*>("message")->text().toStdString();
@@ -216,14 +219,16 @@ TEST(Viewport, EveryShadingModeDrawsSomethingDifferent) {
     window.show();
     ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
     std::vector<QImage> frames;
-    for (renderer::ShadingMode mode : {renderer::ShadingMode::Normals, renderer::ShadingMode::Gooch, renderer::ShadingMode::Matcap,
-                                       renderer::ShadingMode::Curvature, renderer::ShadingMode::Steps}) {
+    for (renderer::ShadingMode mode :
+         {renderer::ShadingMode::Normals, renderer::ShadingMode::Gooch, renderer::ShadingMode::Matcap,
+          renderer::ShadingMode::Curvature, renderer::ShadingMode::Steps}) {
         window.setShadingMode(mode);
         frames.push_back(frameOf(window));
         frames.back().save(QDir::temp().filePath(QString("sdfwb-gui-mode-%1.png").arg(shaders::shadingModeName(mode))));
     }
     for (std::size_t i = 0; i < frames.size(); ++i)
-        for (std::size_t j = i + 1; j < frames.size(); ++j) EXPECT_GT(meanDifference(frames[i], frames[j]), 1.0) << i << " vs " << j;
+        for (std::size_t j = i + 1; j < frames.size(); ++j)
+            EXPECT_GT(meanDifference(frames[i], frames[j]), 1.0) << i << " vs " << j;
 }
 
 TEST(Viewport, AmbientOcclusionDarkensCreases) {
@@ -258,13 +263,14 @@ TEST(Viewport, MovingRendersCheaplyThenRefines) {
     window.show();
     ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
     widgets::ViewportWidget* viewport = window.viewport();
-    viewport->setFrameBudget(0.5);  // unreachable on purpose: the scale must drop while moving
+    viewport->setFrameBudget(0.5); // unreachable on purpose: the scale must drop while moving
     ASSERT_TRUE(waitFor([&] { return !viewport->isInteracting(); }, 3000));
-    viewport->grabFramebuffer();    // a full-resolution frame: the scale while moving starts from its cost
+    viewport->grabFramebuffer(); // a full-resolution frame: the scale while moving starts from its cost
     ASSERT_EQ(viewport->lastFrameScale(), 1.0f);
     renderer::Camera before = viewport->camera();
     QPoint start(300, 300);
-    QMouseEvent press(QEvent::MouseButtonPress, start, viewport->mapToGlobal(start), Qt::LeftButton, Qt::LeftButton, Qt::NoModifier);
+    QMouseEvent press(QEvent::MouseButtonPress, start, viewport->mapToGlobal(start), Qt::LeftButton, Qt::LeftButton,
+                      Qt::NoModifier);
     QApplication::sendEvent(viewport, &press);
     for (int i = 1; i <= 5; ++i) {
         QPoint at = start + QPoint(10 * i, 0);
@@ -294,7 +300,7 @@ TEST(Viewport, CameraPanelMovesTheCameraAndTheSessionKeepsIt) {
         EXPECT_FLOAT_EQ(edited.position.y, -2.5f);
         EXPECT_FLOAT_EQ(edited.fovYDegrees, 30.0f);
         EXPECT_GT(meanDifference(before, frameOf(window)), 1.0);
-        window.close();  // saves the session
+        window.close(); // saves the session
     }
     app::MainWindow again;
     EXPECT_FLOAT_EQ(again.viewport()->camera().position.y, -2.5f);
@@ -317,10 +323,11 @@ TEST(Viewport, StatusBarShowsTheFloat32PrecisionFloor) {
     far.position = {0.0f, 0.0f, 1e4f};
     far.fovYDegrees = 0.001f;
     far.farPlane = 2e4f;
-    window.viewport()->setCamera(far);  // the next frame updates the readout
+    window.viewport()->setCamera(far); // the next frame updates the readout
     EXPECT_TRUE(waitFor([&] { return label->text().contains("below float32 precision"); }, 10000)) << label->text().toStdString();
     // SDFWB_SCREENSHOT_DIR=folder keeps a picture of the window to look at.
-    if (const char* folder = std::getenv("SDFWB_SCREENSHOT_DIR")) window.grab().save(QDir(folder).filePath("precision_floor.png"));
+    if (const char* folder = std::getenv("SDFWB_SCREENSHOT_DIR"))
+        window.grab().save(QDir(folder).filePath("precision_floor.png"));
     window.viewport()->resetCamera();
     EXPECT_TRUE(waitFor([&] { return !label->text().contains("below"); }, 10000)) << label->text().toStdString();
     window.close();
@@ -328,8 +335,8 @@ TEST(Viewport, StatusBarShowsTheFloat32PrecisionFloor) {
 
 // A shader with a long loop (llvmpipe cuts loops near 65 000 iterations, so this one costs
 // ~80 us a pixel: over a minute for a full frame) must not freeze the window.
-const char* const kRunawayLoop =
-    "float sdf(vec3 p) { float d = 0.0; for (int i = 0; i < 100000000; ++i) d += sin(float(i)) * 1e-9; return length(p) - 0.5 + d; }\n";
+const char* const kRunawayLoop = "float sdf(vec3 p) { float d = 0.0; for (int i = 0; i < 100000000; ++i) d += sin(float(i)) * "
+                                 "1e-9; return length(p) - 0.5 + d; }\n";
 
 TEST(Viewport, SlowShaderIsCappedThenRevertedNeverFreezesTheWindow) {
     QTemporaryDir folder;
@@ -391,15 +398,17 @@ TEST(Abuse, AMinuteOfSwitchingDockingResizingDialogsAndTyping) {
         glErrors.emplace_back(message);
     });
     app::MainWindow window;
-    window.files()->setPrompt([](const QString&) { return app::FileController::Answer::No; });  // discard typed edits
+    window.files()->setPrompt([](const QString&) { return app::FileController::Answer::No; }); // discard typed edits
     window.resize(1000, 700);
     window.show();
     ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
     auto* dock = window.findChild<QDockWidget*>("ViewportDock");
     ASSERT_NE(dock, nullptr);
-    const char* files[] = {"Geometry/Box.glsl", "Animal/Cat.glsl", "Fractal/Mandelbulb.glsl", "Geometry/Capsule.glsl", "Geometry/Torus.glsl"};
-    const renderer::ShadingMode modes[] = {renderer::ShadingMode::Gooch, renderer::ShadingMode::Matcap, renderer::ShadingMode::Curvature,
-                                           renderer::ShadingMode::Steps, renderer::ShadingMode::Normals};
+    const char* files[] = {"Geometry/Box.glsl", "Animal/Cat.glsl", "Fractal/Mandelbulb.glsl", "Geometry/Capsule.glsl",
+                           "Geometry/Torus.glsl"};
+    const renderer::ShadingMode modes[] = {renderer::ShadingMode::Gooch, renderer::ShadingMode::Matcap,
+                                           renderer::ShadingMode::Curvature, renderer::ShadingMode::Steps,
+                                           renderer::ShadingMode::Normals};
     const char* keystrokes[] = {" ", "+", "0", ".", "1", ")", ";", "\n", "x", "(", "/", "*"};
     int actions = 0, typed = 0, docked = 0, dialogs = 0;
     auto settle = [] {
@@ -414,8 +423,12 @@ TEST(Abuse, AMinuteOfSwitchingDockingResizingDialogsAndTyping) {
             ++typed;
         }
         switch (i % 6) {
-        case 0: window.openFile(datasetFile(files[(i / 6) % 5])); break;
-        case 1: window.setShadingMode(modes[(i / 6) % 5]); break;
+        case 0:
+            window.openFile(datasetFile(files[(i / 6) % 5]));
+            break;
+        case 1:
+            window.setShadingMode(modes[(i / 6) % 5]);
+            break;
         case 2:
             dock->setFloating(true);
             settle();
@@ -424,7 +437,9 @@ TEST(Abuse, AMinuteOfSwitchingDockingResizingDialogsAndTyping) {
             dock->setFloating(false);
             ++docked;
             break;
-        case 3: window.resize(i % 12 == 3 ? QSize(1, 1) : QSize(3840, 2160)); break;
+        case 3:
+            window.resize(i % 12 == 3 ? QSize(1, 1) : QSize(3840, 2160));
+            break;
         case 4: {
             // As the menu does: the controllers create their dialogs on first use (modeless).
             QDialog* dialog = nullptr;
@@ -441,13 +456,15 @@ TEST(Abuse, AMinuteOfSwitchingDockingResizingDialogsAndTyping) {
             ++dialogs;
             break;
         }
-        case 5: window.resize(1000, 700); break;
+        case 5:
+            window.resize(1000, 700);
+            break;
         }
         window.viewport()->update();
         settle();
         ++actions;
     };
-    for (int i = 0; i < 12; ++i) act(i);  // warm-up: every action twice, every variant cached once
+    for (int i = 0; i < 12; ++i) act(i); // warm-up: every action twice, every variant cached once
     ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
     const long baseline = renderer::liveGlObjects();
     QElapsedTimer clock;
@@ -459,8 +476,8 @@ TEST(Abuse, AMinuteOfSwitchingDockingResizingDialogsAndTyping) {
     window.setShadingMode(renderer::ShadingMode::Normals);
     const QImage last = frameOf(window);
     log::removeSink(sink);
-    std::printf("abuse: %d actions (%d keystrokes, %d float/re-docks, %d dialogs) in %.0f s; GL objects %ld -> %ld\n", actions, typed, docked,
-                dialogs, clock.elapsed() / 1000.0, baseline, renderer::liveGlObjects());
+    std::printf("abuse: %d actions (%d keystrokes, %d float/re-docks, %d dialogs) in %.0f s; GL objects %ld -> %ld\n", actions,
+                typed, docked, dialogs, clock.elapsed() / 1000.0, baseline, renderer::liveGlObjects());
     EXPECT_GT(actions, 60);
     EXPECT_GT(docked, 10);
     EXPECT_TRUE(glErrors.empty()) << glErrors.size() << " GL errors, first: " << glErrors.front();
@@ -530,7 +547,10 @@ TEST(Export, ScreenshotAtAChosenSizeAndAnMp4) {
     settings.framesPerSecond = 10;
     window.exports()->videoDialog()->setSettings(settings);
     bool done = false, ok = false;
-    QObject::connect(window.exports(), &app::ExportController::videoFinished, [&](bool success, const QString&) { done = true; ok = success; });
+    QObject::connect(window.exports(), &app::ExportController::videoFinished, [&](bool success, const QString&) {
+        done = true;
+        ok = success;
+    });
     window.exports()->videoDialog()->findChild<QPushButton*>("start")->click();
     ASSERT_TRUE(waitFor([&] { return done; }, 60000));
     EXPECT_TRUE(ok) << window.exports()->videoDialog()->findChild<QLabel*>("message")->text().toStdString();
@@ -552,7 +572,8 @@ TEST(CuttingPlane, PanelDrawsThePlaneAndShowsReadouts) {
     QImage with = frameOf(window);
     EXPECT_GT(meanDifference(before, with), 2.0) << "the plane must show";
     with.save(QDir::temp().filePath("sdfwb-gui-plane.png"));
-    ASSERT_TRUE(waitFor([&] { return readout; }, 30000)) << window.planePanel()->findChild<QLabel*>("readouts")->text().toStdString();
+    ASSERT_TRUE(waitFor([&] { return readout; }, 30000))
+        << window.planePanel()->findChild<QLabel*>("readouts")->text().toStdString();
     const widgets::PlaneReadoutView& r = window.planePanel()->readout();
     EXPECT_NEAR(r.minimum, -0.8f, 0.03f);
     EXPECT_NEAR(r.lipschitzMax, 1.0f, 0.01f);
@@ -561,7 +582,8 @@ TEST(CuttingPlane, PanelDrawsThePlaneAndShowsReadouts) {
     // Ctrl + drag moves the plane along its normal, and the panel follows.
     widgets::ViewportWidget* viewport = window.viewport();
     QPoint start(400, 300), end(400, 250);
-    QMouseEvent press(QEvent::MouseButtonPress, start, viewport->mapToGlobal(start), Qt::LeftButton, Qt::LeftButton, Qt::ControlModifier);
+    QMouseEvent press(QEvent::MouseButtonPress, start, viewport->mapToGlobal(start), Qt::LeftButton, Qt::LeftButton,
+                      Qt::ControlModifier);
     QApplication::sendEvent(viewport, &press);
     QMouseEvent move(QEvent::MouseMove, end, viewport->mapToGlobal(end), Qt::NoButton, Qt::LeftButton, Qt::ControlModifier);
     QApplication::sendEvent(viewport, &move);
@@ -703,7 +725,10 @@ TEST(Files, SaveAutosaveRecoverAndPromptOnClose) {
         EXPECT_TRUE(readAll(path).contains("0.5"));
         // Closing asks; Cancel keeps the window and the edit.
         int asked = 0;
-        window.files()->setPrompt([&](const QString&) { ++asked; return app::FileController::Answer::Cancel; });
+        window.files()->setPrompt([&](const QString&) {
+            ++asked;
+            return app::FileController::Answer::Cancel;
+        });
         EXPECT_FALSE(window.close());
         EXPECT_EQ(asked, 1);
         EXPECT_TRUE(window.editor()->isModified());
@@ -722,7 +747,10 @@ TEST(Files, SaveAutosaveRecoverAndPromptOnClose) {
         EXPECT_TRUE(readAll(path).contains("0.6"));
         EXPECT_FALSE(QFile::exists(window.files()->recoveryPath()));
         int asked = 0;
-        window.files()->setPrompt([&](const QString&) { ++asked; return app::FileController::Answer::Cancel; });
+        window.files()->setPrompt([&](const QString&) {
+            ++asked;
+            return app::FileController::Answer::Cancel;
+        });
         EXPECT_TRUE(window.close());
         EXPECT_EQ(asked, 0);
     }
@@ -745,7 +773,8 @@ TEST(CrashChild, DISABLED_EditThenDie) {
 TEST(Files, RecoversAfterTheProcessIsKilled) {
     for (const QString& stale : app::FileController::recoveryFiles()) QFile::remove(stale);
     QProcess child;
-    child.start(QCoreApplication::applicationFilePath(), {"--gtest_also_run_disabled_tests", "--gtest_filter=CrashChild.DISABLED_EditThenDie"});
+    child.start(QCoreApplication::applicationFilePath(),
+                {"--gtest_also_run_disabled_tests", "--gtest_filter=CrashChild.DISABLED_EditThenDie"});
     ASSERT_TRUE(child.waitForFinished(60000));
     EXPECT_EQ(child.exitStatus(), QProcess::CrashExit) << "the child must have been killed";
     QStringList recovery = app::FileController::recoveryFiles();
@@ -770,7 +799,10 @@ TEST(Files, ReloadsWhenTheFileChangesOnDiskAndAsksWhenEdited) {
 
     window.editor()->setText("float sdf(vec3 p) { return length(p) - 0.4; } // my edit\n");
     int asked = 0;
-    window.files()->setPrompt([&](const QString&) { ++asked; return app::FileController::Answer::No; });
+    window.files()->setPrompt([&](const QString&) {
+        ++asked;
+        return app::FileController::Answer::No;
+    });
     writeScratch("watched.glsl", "float sdf(vec3 p) { return length(p) - 0.2; }\n");
     ASSERT_TRUE(waitFor([&] { return asked > 0; }, 5000)) << "local edits: ask before reloading";
     EXPECT_TRUE(window.editor()->text().contains("my edit")) << "answered no: the edit stays";
@@ -779,7 +811,8 @@ TEST(Files, ReloadsWhenTheFileChangesOnDiskAndAsksWhenEdited) {
 }
 
 TEST(Editor, ProblemsListJumpsToTheLineAndOpensIncludedFiles) {
-    QString helper = writeScratch("helper.glsl", "// helper\n\nfloat helperDistance(vec3 p) {\n    return length(p) - missingRadius;\n}\n");
+    QString helper =
+        writeScratch("helper.glsl", "// helper\n\nfloat helperDistance(vec3 p) {\n    return length(p) - missingRadius;\n}\n");
     QString main = writeScratch("main.glsl", "#include \"helper.glsl\"\nfloat sdf(vec3 p) {\n    return helperDistance(p);\n}\n");
     app::MainWindow window;
     window.show();
@@ -824,7 +857,8 @@ TEST(Editor, FindReplaceGoToAndCompletion) {
 
 TEST(Editor, F5ReloadsIncludesFromDisk) {
     QString helper = writeScratch("radius.glsl", "const float kRadius = 0.3;\n");
-    QString main = writeScratch("uses_radius.glsl", "#include \"radius.glsl\"\nfloat sdf(vec3 p) { return length(p) - kRadius; }\n");
+    QString main =
+        writeScratch("uses_radius.glsl", "#include \"radius.glsl\"\nfloat sdf(vec3 p) { return length(p) - kRadius; }\n");
     app::MainWindow window;
     window.show();
     bool applied = false;
@@ -853,7 +887,7 @@ TEST(DatasetBrowser, ListsTheDatasetAndOpensAnEntry) {
 }
 
 int main(int argc, char** argv) {
-    QStandardPaths::setTestModeEnabled(true);  // no user settings read or written
+    QStandardPaths::setTestModeEnabled(true); // no user settings read or written
     QSurfaceFormat format;
     format.setVersion(4, 3);
     format.setProfile(QSurfaceFormat::CoreProfile);

@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 namespace {
 
 struct Case {
-    const char* sdf;       // dataset file
+    const char* sdf; // dataset file
     const char* mode;
     bool ao;
 };
@@ -35,7 +35,6 @@ std::string caseName(const Case& c) {
 class GoldenTest : public sdfwb::testing::GlTest, public ::testing::WithParamInterface<Case> {
 protected:
 };
-
 
 } // namespace
 
@@ -81,21 +80,24 @@ TEST_P(GoldenTest, MatchesTheReviewedImage) {
     EXPECT_LE(mean, 1.5) << caseName(c) << ": mean channel difference " << mean;
     long strong = 0;
     for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
-        int d = std::max({std::abs(int(image.rgba[i]) - int(expected->rgba[i])), std::abs(int(image.rgba[i + 1]) - int(expected->rgba[i + 1])),
+        int d = std::max({std::abs(int(image.rgba[i]) - int(expected->rgba[i])),
+                          std::abs(int(image.rgba[i + 1]) - int(expected->rgba[i + 1])),
                           std::abs(int(image.rgba[i + 2]) - int(expected->rgba[i + 2]))});
         strong += d > 24;
     }
     // The worst single difference is reported, not bounded: a flipped silhouette pixel may differ fully.
     EXPECT_LE(strong, long(image.width * image.height) / 200)
         << caseName(c) << ": " << strong << " pixels differ by more than 24 (worst channel difference " << worst << ")";
-    if (HasFailure()) renderer::writeImage(fs::temp_directory_path() / ("sdfwb-golden-actual-" + caseName(c) + ".png"), image).hasValue();
+    if (HasFailure())
+        renderer::writeImage(fs::temp_directory_path() / ("sdfwb-golden-actual-" + caseName(c) + ".png"), image).hasValue();
 }
 
-INSTANTIATE_TEST_SUITE_P(ShadingModes, GoldenTest,
-                         ::testing::Values(Case{"Geometry/Torus.glsl", "normals", false}, Case{"Geometry/Torus.glsl", "gooch", false},
-                                           Case{"Geometry/Torus.glsl", "gooch", true}, Case{"Geometry/Torus.glsl", "matcap", false},
-                                           Case{"Geometry/Torus.glsl", "curvature", false}, Case{"Geometry/Torus.glsl", "steps", false},
-                                           Case{"Geometry/Box.glsl", "normals", false}, Case{"Geometry/Box.glsl", "gooch", false},
-                                           Case{"Geometry/Box.glsl", "gooch", true}, Case{"Geometry/Box.glsl", "matcap", false},
-                                           Case{"Geometry/Box.glsl", "curvature", false}, Case{"Geometry/Box.glsl", "steps", false}),
-                         [](const ::testing::TestParamInfo<Case>& info) { return caseName(info.param); });
+INSTANTIATE_TEST_SUITE_P(
+    ShadingModes, GoldenTest,
+    ::testing::Values(Case{"Geometry/Torus.glsl", "normals", false}, Case{"Geometry/Torus.glsl", "gooch", false},
+                      Case{"Geometry/Torus.glsl", "gooch", true}, Case{"Geometry/Torus.glsl", "matcap", false},
+                      Case{"Geometry/Torus.glsl", "curvature", false}, Case{"Geometry/Torus.glsl", "steps", false},
+                      Case{"Geometry/Box.glsl", "normals", false}, Case{"Geometry/Box.glsl", "gooch", false},
+                      Case{"Geometry/Box.glsl", "gooch", true}, Case{"Geometry/Box.glsl", "matcap", false},
+                      Case{"Geometry/Box.glsl", "curvature", false}, Case{"Geometry/Box.glsl", "steps", false}),
+    [](const ::testing::TestParamInfo<Case>& info) { return caseName(info.param); });

@@ -23,7 +23,6 @@ namespace {
 
 class RendererTest : public sdfwb::testing::GlTest {
 protected:
-
     static shaders::PreparedSdf prepare(const std::string& text, const std::string& name = "<test>") {
         return shaders::prepareSdf(text, name, {}, shaders::IncludeOptions{});
     }
@@ -31,7 +30,8 @@ protected:
     // Pixels that differ from the background colour.
     static long foreground(const renderer::Image& image, const glm::vec3& background) {
         long count = 0;
-        const int r = int(std::lround(background.r * 255)), g = int(std::lround(background.g * 255)), b = int(std::lround(background.b * 255));
+        const int r = int(std::lround(background.r * 255)), g = int(std::lround(background.g * 255)),
+                  b = int(std::lround(background.b * 255));
         for (int y = 0; y < image.height; ++y)
             for (int x = 0; x < image.width; ++x) {
                 const std::uint8_t* p = image.pixel(x, y);
@@ -39,9 +39,7 @@ protected:
             }
         return count;
     }
-
 };
-
 
 } // namespace
 
@@ -96,7 +94,8 @@ TEST_F(RendererTest, BrokenSdfKeepsTheLastGoodProgramAndMapsDriverErrors) {
     ASSERT_GT(before, 500);
 
     // glslang is bypassed here: the driver's own log must still land on the user's line.
-    auto diagnostics = sdfRenderer.setSdf(prepare("float sdf(vec3 p) {\n    return length(p) - missingRadius;\n}\n", "broken.glsl"));
+    auto diagnostics =
+        sdfRenderer.setSdf(prepare("float sdf(vec3 p) {\n    return length(p) - missingRadius;\n}\n", "broken.glsl"));
     ASSERT_FALSE(diagnostics.empty());
     EXPECT_EQ(diagnostics[0].file, "broken.glsl");
     EXPECT_EQ(diagnostics[0].line, 2);
@@ -127,8 +126,8 @@ TEST_F(RendererTest, EveryDatasetShapeRenders) {
 TEST(BatchRender, WritesAPngWithoutADisplay) {
     fs::path out = fs::temp_directory_path() / "sdfwb-batch-render.png";
     fs::remove(out);
-    std::string command = "env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(SDFWB_BINARY) + " --batch render --sdf torus --output " +
-                          out.string() + " --size 640x360 --quiet";
+    std::string command = "env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(SDFWB_BINARY) +
+                          " --batch render --sdf torus --output " + out.string() + " --size 640x360 --quiet";
     ASSERT_EQ(std::system(command.c_str()), 0);
     auto image = renderer::readImage(out);
     ASSERT_TRUE(image.hasValue()) << image.error().message;

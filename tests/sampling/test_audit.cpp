@@ -20,13 +20,11 @@ namespace {
 
 class AuditTest : public sdfwb::testing::GlTest {
 protected:
-
     static shaders::PreparedSdf load(const std::string& relative) { return sdfwb::testing::loadSourceSdf(relative); }
     static sampling::AuditReport audit(const std::string& relative, std::uint64_t samples = 20000) {
         return sdfwb::testing::auditSourceSdf(relative, samples);
     }
 };
-
 
 } // namespace
 
@@ -85,8 +83,8 @@ TEST_F(AuditTest, PlaneReadouts) {
     auto sphere = sampling::analysePlane(load("dataset/Geometry/Sphere.glsl"), {0, 0, 1}, 0.0f, 128, 0.0f);
     ASSERT_TRUE(sphere.hasValue()) << sphere.error().message;
     EXPECT_GT(sphere->points, 128u * 128u / 4);
-    EXPECT_NEAR(sphere->minimum, -0.8f, 0.02f);  // the centre of a radius-0.8 sphere
-    EXPECT_NEAR(sphere->maximum, std::sqrt(2.0f) - 0.8f, 0.02f);  // the plane's corner (1, 1, 0)
+    EXPECT_NEAR(sphere->minimum, -0.8f, 0.02f);                  // the centre of a radius-0.8 sphere
+    EXPECT_NEAR(sphere->maximum, std::sqrt(2.0f) - 0.8f, 0.02f); // the plane's corner (1, 1, 0)
     EXPECT_NEAR(sphere->lipschitzMax, 1.0f, 0.01f);
     EXPECT_EQ(sphere->shareAboveOne, 0.0);
     EXPECT_FALSE(sphere->truncationDistance.has_value());

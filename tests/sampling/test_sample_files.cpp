@@ -29,7 +29,7 @@ SampleSet makeSamples(std::size_t n, float offset = 0.0f) {
 
 SampleMetadata makeMetadata(std::uint64_t first, std::uint64_t total) {
     SampleMetadata m;
-    m.sdf = "Torus \xc3\xa9";  // non-ASCII survives
+    m.sdf = "Torus \xc3\xa9"; // non-ASCII survives
     m.pattern = "rand";
     m.seed = 1234567890123ull;
     m.time = 1.5f;
@@ -73,11 +73,11 @@ TEST(BinFile, LayoutIsTheTableTwoOfThePaper) {
     std::memcpy(&n, bytes.data(), 4);
     EXPECT_EQ(n, 3u);
     float value = 0.0f;
-    std::memcpy(&value, bytes.data() + 4 + 4 * 4, 4);  // position[1].y
+    std::memcpy(&value, bytes.data() + 4 + 4 * 4, 4); // position[1].y
     EXPECT_FLOAT_EQ(value, 1.1f);
-    std::memcpy(&value, bytes.data() + 4 + 36 + 4 * 2, 4);  // distance[2]
+    std::memcpy(&value, bytes.data() + 4 + 36 + 4 * 2, 4); // distance[2]
     EXPECT_FLOAT_EQ(value, 1.0f);
-    std::memcpy(&value, bytes.data() + 4 + 48 + 4 * 5, 4);  // gradient[1].z
+    std::memcpy(&value, bytes.data() + 4 + 48 + 4 * 5, 4); // gradient[1].z
     EXPECT_FLOAT_EQ(value, -1.4f);
     fs::remove(path);
 }
@@ -117,7 +117,9 @@ TEST(SampleFiles, StreamingInChunksGivesTheSameBytesAsOneWrite) {
         ASSERT_TRUE(writer.hasValue());
         for (std::size_t first = 0; first < 1001; first += 97) {
             std::size_t n = std::min<std::size_t>(97, 1001 - first);
-            ASSERT_TRUE((*writer)->append(&samples.positions[3 * first], &samples.distances[first], &samples.gradients[3 * first], n).hasValue());
+            ASSERT_TRUE((*writer)
+                            ->append(&samples.positions[3 * first], &samples.distances[first], &samples.gradients[3 * first], n)
+                            .hasValue());
         }
         ASSERT_TRUE((*writer)->commit().hasValue());
         EXPECT_EQ(readBytes(whole), readBytes(chunked)) << formatName(format);
@@ -160,7 +162,7 @@ TEST(SampleFiles, CorruptFilesAreRejectedWithTheirName) {
     ASSERT_FALSE(truncated.hasValue());
     EXPECT_NE(truncated.error().message.find(bin.string()), std::string::npos);
     EXPECT_NE(truncated.error().message.find("N = 5"), std::string::npos) << truncated.error().message;
-    bytes[3] = char(0x7f);  // N ~ 2e9: refused, not allocated
+    bytes[3] = char(0x7f); // N ~ 2e9: refused, not allocated
     writeBytes(bin, bytes);
     EXPECT_FALSE(readSamples(bin).hasValue());
 
@@ -171,14 +173,12 @@ TEST(SampleFiles, CorruptFilesAreRejectedWithTheirName) {
         writeBytes(npz, zip.substr(0, cut));
         auto read = readSamples(npz);
         EXPECT_FALSE(read.hasValue()) << "cut at " << cut;
-        if (!read) {
-            EXPECT_NE(read.error().message.find(npz.string()), std::string::npos);
-        }
+        if (!read) { EXPECT_NE(read.error().message.find(npz.string()), std::string::npos); }
     }
     std::string wrongType = zip;
     std::size_t descr = wrongType.find("'descr': '<f4'");
     ASSERT_NE(descr, std::string::npos);
-    wrongType[descr + 12] = '8';  // <f8: same header length, wrong dtype
+    wrongType[descr + 12] = '8'; // <f8: same header length, wrong dtype
     writeBytes(npz, wrongType);
     auto typed = readSamples(npz);
     ASSERT_FALSE(typed.hasValue());
@@ -189,8 +189,9 @@ TEST(SampleFiles, CorruptFilesAreRejectedWithTheirName) {
     auto ascii = readSamples(ply);
     ASSERT_FALSE(ascii.hasValue());
     EXPECT_NE(ascii.error().message.find("ascii"), std::string::npos);
-    writeBytes(ply, "ply\nformat binary_little_endian 1.0\nelement vertex 1000\nproperty float x\nproperty float y\nproperty float z\n"
-                    "property float distance\nproperty float gx\nproperty float gy\nproperty float gz\nend_header\nxx");
+    writeBytes(ply,
+               "ply\nformat binary_little_endian 1.0\nelement vertex 1000\nproperty float x\nproperty float y\nproperty float z\n"
+               "property float distance\nproperty float gx\nproperty float gy\nproperty float gz\nend_header\nxx");
     auto short_ = readSamples(ply);
     ASSERT_FALSE(short_.hasValue());
     EXPECT_NE(short_.error().message.find("do not fit"), std::string::npos) << short_.error().message;
@@ -243,8 +244,9 @@ TEST(SampleFiles, Zip64NpzIsReadByNumpyAndByUs) {
     auto read = readSamples(path);
     ASSERT_TRUE(read.hasValue()) << read.error().message;
     EXPECT_EQ(read->gradients, samples.gradients);
-    std::string check = "/usr/bin/python3 -c \"import numpy as np; z = np.load('" + path.string() +
-                        "', allow_pickle=False); assert z['position'].shape == (100, 3); assert float(z['distance'][99]) == 49.5\"";
+    std::string check =
+        "/usr/bin/python3 -c \"import numpy as np; z = np.load('" + path.string() +
+        "', allow_pickle=False); assert z['position'].shape == (100, 3); assert float(z['distance'][99]) == 49.5\"";
     EXPECT_EQ(std::system(check.c_str()), 0) << "numpy could not read the ZIP64 archive";
     fs::remove(path);
 }

@@ -28,12 +28,13 @@ constexpr float kRadius = 0.5f;
 
 class SamplerTest : public sdfwb::testing::GlTest {
 protected:
-
-    static shaders::PreparedSdf prepare(const std::string& text) { return shaders::prepareSdf(text, "<test>", {}, shaders::IncludeOptions{}); }
+    static shaders::PreparedSdf prepare(const std::string& text) {
+        return shaders::prepareSdf(text, "<test>", {}, shaders::IncludeOptions{});
+    }
 
     // Builds `pattern` on `sdfText` and samples job.rows() rows into `out`.
-    static sampling::SamplingReport sample(const std::string& sdfText, const std::string& pattern, const sampling::SamplingJob& job,
-                                           sampling::SampleSet& out) {
+    static sampling::SamplingReport sample(const std::string& sdfText, const std::string& pattern,
+                                           const sampling::SamplingJob& job, sampling::SampleSet& out) {
         renderer::SampleCompute compute;
         auto sampler = sampling::findSampler(pattern, {});
         EXPECT_TRUE(sampler.hasValue()) << (sampler ? "" : sampler.error().message);
@@ -45,9 +46,7 @@ protected:
         compute.releaseGl();
         return report ? *report : sampling::SamplingReport{};
     }
-
 };
-
 
 const char* const kSphere = "float sdf(vec3 p) { return length(p) - 0.5; }\n";
 
@@ -103,19 +102,19 @@ TEST_F(SamplerTest, EveryPatternMatchesTheSpheresClosedForm) {
 
 TEST_F(SamplerTest, GridAndImageTakeTheFirstNOfTheRoundedUpLattice) {
     sampling::SampleSet grid;
-    sample(kSphere, "grid", job(30), grid);  // 4^3 = 64 >= 30: side 4, coordinates -1, -1/3, 1/3, 1
+    sample(kSphere, "grid", job(30), grid); // 4^3 = 64 >= 30: side 4, coordinates -1, -1/3, 1/3, 1
     EXPECT_FLOAT_EQ(grid.positions[0], -1.0f);
-    glm::vec3 p5 = at(grid.positions, 5);  // (1, 1, 0) in lattice units: x = 5 % 4 = 1, y = 5 / 4 = 1
+    glm::vec3 p5 = at(grid.positions, 5); // (1, 1, 0) in lattice units: x = 5 % 4 = 1, y = 5 / 4 = 1
     EXPECT_NEAR(p5.x, -1.0f / 3.0f, 1e-6);
     EXPECT_NEAR(p5.y, -1.0f / 3.0f, 1e-6);
     EXPECT_NEAR(p5.z, -1.0f, 1e-6);
-    glm::vec3 p29 = at(grid.positions, 29);  // 29 = 1 + 3*4 + 1*16
+    glm::vec3 p29 = at(grid.positions, 29); // 29 = 1 + 3*4 + 1*16
     EXPECT_NEAR(p29.x, -1.0f / 3.0f, 1e-6);
     EXPECT_NEAR(p29.y, 1.0f, 1e-6);
     EXPECT_NEAR(p29.z, -1.0f / 3.0f, 1e-6);
 
     sampling::SampleSet image;
-    sample(kSphere, "image", job(10), image);  // 4^2 = 16 >= 10: rows from y = +1 down
+    sample(kSphere, "image", job(10), image); // 4^2 = 16 >= 10: rows from y = +1 down
     for (std::size_t i = 0; i < image.size(); ++i) EXPECT_EQ(image.positions[3 * i + 2], 0.0f);
     EXPECT_NEAR(at(image.positions, 0).y, 1.0f, 1e-6);
     EXPECT_NEAR(at(image.positions, 4).y, 1.0f / 3.0f, 1e-6);
@@ -126,9 +125,10 @@ TEST_F(SamplerTest, JitterStaysWithinHalfACellAndRandFillsTheCube) {
     sampling::SampleSet jitter, grid, uniform;
     sample(kSphere, "jitter", job(1000), jitter);
     sample(kSphere, "grid", job(1000), grid);
-    const float halfCell = 1.0f / 9.0f;  // side 10: cell 2/9
+    const float halfCell = 1.0f / 9.0f; // side 10: cell 2/9
     float largest = 0.0f;
-    for (std::size_t i = 0; i < 3 * jitter.size(); ++i) largest = std::max(largest, std::abs(jitter.positions[i] - grid.positions[i]));
+    for (std::size_t i = 0; i < 3 * jitter.size(); ++i)
+        largest = std::max(largest, std::abs(jitter.positions[i] - grid.positions[i]));
     EXPECT_LE(largest, halfCell + 1e-6f);
     EXPECT_GT(largest, 0.8f * halfCell) << "jitter should use most of the half cell";
 
@@ -182,7 +182,8 @@ TEST_F(SamplerTest, MetropolisConcentratesOnTheZeroSet) {
 TEST_F(SamplerTest, CurvatureWeightingPrefersCurvedParts) {
     // A box with rounded edges: the edges (radius 0.05, curvature 10) take a small share of the
     // surface but should take a large share of metropolis_curvature's samples.
-    const char* roundBox = "float sdf(vec3 p) { vec3 q = abs(p) - vec3(0.45); return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0) - 0.05; }\n";
+    const char* roundBox = "float sdf(vec3 p) { vec3 q = abs(p) - vec3(0.45); return length(max(q, 0.0)) + min(max(q.x, max(q.y, "
+                           "q.z)), 0.0) - 0.05; }\n";
     auto edgeShare = [](const sampling::SampleSet& s) {
         double edges = 0;
         for (std::size_t i = 0; i < s.size(); ++i) {
@@ -241,7 +242,8 @@ TEST_F(SamplerTest, ShardsMergeIntoTheSingleRunsFileByteForByte) {
     metadata.sdf = "sphere";
     metadata.pattern = "near";
     metadata.version = "test";
-    for (sampling::SampleFormat format : {sampling::SampleFormat::Bin, sampling::SampleFormat::Npz, sampling::SampleFormat::Ply}) {
+    for (sampling::SampleFormat format :
+         {sampling::SampleFormat::Bin, sampling::SampleFormat::Npz, sampling::SampleFormat::Ply}) {
         std::string ext = std::string(".") + sampling::formatName(format);
         fs::path single = fs::temp_directory_path() / ("sdfwb-test-single" + ext);
         sampling::SamplingJob j = job(10007, 5);
@@ -276,7 +278,10 @@ TEST_F(SamplerTest, CancellingLeavesNoFile) {
     fs::path path = fs::temp_directory_path() / "sdfwb-test-cancelled.npz";
     fs::remove(path);
     CancelToken cancel;
-    ProgressSink progress{[&](std::uint64_t done, std::uint64_t) { if (done > 0) cancel.cancel(); }, &cancel};
+    ProgressSink progress{[&](std::uint64_t done, std::uint64_t) {
+                              if (done > 0) cancel.cancel();
+                          },
+                          &cancel};
     sampling::SamplingJob j = job(100000);
     j.chunkSize = 1000;
     auto report = sampling::sampleToFile(compute, j, path, sampling::SampleFormat::Npz, {}, progress);
@@ -303,7 +308,8 @@ TEST_F(SamplerTest, UserSamplerFilesWorkAndBadOnesAreNamed) {
     ASSERT_FALSE(shaders::hasErrors(compute.build(prepare(kSphere), *byName)));
     sampling::SampleSet out;
     out.resize(3);
-    ASSERT_TRUE(sampling::sampleInto(compute, job(3), out.positions.data(), out.distances.data(), out.gradients.data(), {}).hasValue());
+    ASSERT_TRUE(
+        sampling::sampleInto(compute, job(3), out.positions.data(), out.distances.data(), out.gradients.data(), {}).hasValue());
     EXPECT_FLOAT_EQ(out.positions[0], -1.0f);
     EXPECT_FLOAT_EQ(out.positions[3], 0.0f);
     compute.releaseGl();

@@ -104,7 +104,8 @@ TEST(BuiltinShaders, EveryEmbeddedFileCompilesWithGlslangInItsStage) {
         }
         ComposedShader composed = composeSdfShader(sdf, stage, pieces, {});
         auto diagnostics = checkWithGlslang(composed);
-        EXPECT_FALSE(hasErrors(diagnostics)) << files.back() << ": " << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
+        EXPECT_FALSE(hasErrors(diagnostics))
+            << files.back() << ": " << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
     };
     auto vertex = composeBuiltinShader(Stage::Vertex, "tracer/fullscreen.vert", {});
     ASSERT_TRUE(vertex.hasValue());
@@ -134,7 +135,8 @@ TEST(BuiltinShaders, EveryEmbeddedFileCompilesWithGlslangInItsStage) {
     // The compat prelude is composed when an SDF needs it (tested above); everything else must be
     // reached by one of the stages here, so a new built-in file cannot go unchecked.
     covered.insert("prelude/g3d_compat.glsl");
-    for (const std::string& path : builtinShaderPaths()) EXPECT_TRUE(covered.count(path)) << path << " is not compiled by any test";
+    for (const std::string& path : builtinShaderPaths())
+        EXPECT_TRUE(covered.count(path)) << path << " is not compiled by any test";
 }
 
 TEST(BuiltinShaders, UnknownNameIsAnError) {

@@ -46,7 +46,7 @@ TEST(Diagnostics, MissingSemicolonPointsAtTheStatementThatLacksIt) {
     Diagnostic d = firstError(diagnostics);
     EXPECT_EQ(d.file, corpus("missing_semicolon.glsl").string()) << dump(diagnostics);
     EXPECT_EQ(d.line, 3) << dump(diagnostics);
-    EXPECT_EQ(d.column, 23) << dump(diagnostics);  // just after "0.5"
+    EXPECT_EQ(d.column, 23) << dump(diagnostics); // just after "0.5"
     EXPECT_NE(d.message.find("';'"), std::string::npos) << d.message;
 }
 
@@ -119,7 +119,8 @@ TEST(Diagnostics, LineNumbersSurviveIncludes) {
     Diagnostic d = firstError(diagnostics);
     EXPECT_EQ(d.file, corpus("pragma_once/main.glsl").string()) << dump(diagnostics);
     EXPECT_EQ(d.line, 8) << dump(diagnostics);
-    EXPECT_EQ(diagnostics.size(), 1u) << "the second include of a #pragma once file must not redefine shape():\n" << dump(diagnostics);
+    EXPECT_EQ(diagnostics.size(), 1u) << "the second include of a #pragma once file must not redefine shape():\n"
+                                      << dump(diagnostics);
 }
 
 TEST(Diagnostics, ValidFilesHaveNoErrors) {

@@ -73,7 +73,8 @@ TEST(Hostile, NonAsciiBytesInCodeAreRefusedButCommentsMayHoldAnything) {
     EXPECT_NE(error.message.find("0xE9"), std::string::npos) << error.message;
     auto zero = prepare(std::string("float sdf(vec3 p) { return length(p) - 0.5; }\n\0\0garbage", 55));
     EXPECT_FALSE(zero.ok()) << "NUL bytes are binary data";
-    auto comment = prepare("// caf\xc3\xa9 \xff\xfe Latin-1 and broken UTF-8 in a comment\nfloat sdf(vec3 p) { return length(p) - 0.5; } /* \x80 */\n");
+    auto comment = prepare("// caf\xc3\xa9 \xff\xfe Latin-1 and broken UTF-8 in a comment\nfloat sdf(vec3 p) { return length(p) "
+                           "- 0.5; } /* \x80 */\n");
     EXPECT_TRUE(comment.ok());
 }
 
@@ -91,9 +92,10 @@ TEST(Hostile, DeepIncludeChainStopsWithTheFileThatWentTooDeep) {
     fs::create_directories(folder);
     for (int i = 0; i < 200; ++i)
         std::ofstream(folder / ("inc" + std::to_string(i) + ".glsl"))
-            << (i < 199 ? "#include \"inc" + std::to_string(i + 1) + ".glsl\"\n" : std::string("float base(vec3 p) { return length(p) - 0.5; }\n"));
-    auto sdf = shaders::prepareSdf("#include \"inc0.glsl\"\nfloat sdf(vec3 p) { return base(p); }\n", (folder / "deep.glsl").string(),
-                                   folder / "deep.glsl", shaders::IncludeOptions{});
+            << (i < 199 ? "#include \"inc" + std::to_string(i + 1) + ".glsl\"\n"
+                        : std::string("float base(vec3 p) { return length(p) - 0.5; }\n"));
+    auto sdf = shaders::prepareSdf("#include \"inc0.glsl\"\nfloat sdf(vec3 p) { return base(p); }\n",
+                                   (folder / "deep.glsl").string(), folder / "deep.glsl", shaders::IncludeOptions{});
     auto error = firstError(sdf);
     EXPECT_NE(error.message.find("deeper"), std::string::npos) << error.message;
     EXPECT_NE(error.file.find("inc"), std::string::npos) << error.file;
@@ -113,6 +115,7 @@ TEST(Hostile, HugeSourceIsRefusedQuicklyWithItsSize) {
     EXPECT_LT(seconds, 60.0);
     // 10 MB of comments is not code: accepted.
     std::string comments;
-    for (int i = 0; comments.size() < (10u << 20); ++i) comments += "// a long comment line that takes room but is no code at all ......\n";
+    for (int i = 0; comments.size() < (10u << 20); ++i)
+        comments += "// a long comment line that takes room but is no code at all ......\n";
     EXPECT_TRUE(prepare(comments + "float sdf(vec3 p) { return length(p) - 0.5; }\n").ok());
 }

@@ -16,8 +16,8 @@ namespace {
 class TemporaryFolder {
 public:
     TemporaryFolder() {
-        m_path = fs::temp_directory_path() / ("sdfwb-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "-" +
-                                             ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        m_path = fs::temp_directory_path() / ("sdfwb-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                                              "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(m_path);
         fs::create_directories(m_path);
     }
@@ -66,7 +66,8 @@ TEST(Includes, SymlinkOutOfTheRootsIsRefused) {
 }
 
 TEST(Includes, DirectivesInCommentsAreIgnoredAndVersionLinesBlanked) {
-    std::string text = "#version 330\n/*\n#include \"nothing.glsl\"\n*/\n// #include \"nothing.glsl\"\nfloat sdf(vec3 p) { return 0.0; }\n";
+    std::string text =
+        "#version 330\n/*\n#include \"nothing.glsl\"\n*/\n// #include \"nothing.glsl\"\nfloat sdf(vec3 p) { return 0.0; }\n";
     ResolvedSource resolved = resolveIncludes(text, "<editor>", {}, IncludeOptions{});
     EXPECT_TRUE(resolved.diagnostics.empty());
     EXPECT_EQ(resolved.text.find("#version"), std::string::npos);
@@ -75,7 +76,8 @@ TEST(Includes, DirectivesInCommentsAreIgnoredAndVersionLinesBlanked) {
 
 TEST(Includes, DeepChainsStopAtTheLimit) {
     TemporaryFolder folder;
-    for (int i = 0; i < 40; ++i) folder.write("f" + std::to_string(i) + ".glsl", "#include \"f" + std::to_string(i + 1) + ".glsl\"\n");
+    for (int i = 0; i < 40; ++i)
+        folder.write("f" + std::to_string(i) + ".glsl", "#include \"f" + std::to_string(i + 1) + ".glsl\"\n");
     folder.write("f40.glsl", "float leaf() { return 0.0; }\n");
     fs::path main = folder.path() / "f0.glsl";
     IncludeOptions options;

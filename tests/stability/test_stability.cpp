@@ -8,8 +8,8 @@
 #include <renderer/SampleCompute.h>
 #include <renderer/SdfRenderer.h>
 #include <sampling/FieldAudit.h>
-#include <sampling/SamplerLibrary.h>
 #include <sampling/Sampler.h>
+#include <sampling/SamplerLibrary.h>
 #include <shaders/SdfSource.h>
 
 #include "GlTestContext.h"
@@ -33,8 +33,8 @@ constexpr int kWidth = 96, kHeight = 72;
 struct TraceSummary {
     int hits = 0, leftBox = 0, outOfSteps = 0, notFinite = 0, other = 0;
     float maxSteps = 0;
-    float worstResidualRatio = 0;  // max over hits of |f| / (pixel tolerance at t)
-    int badNormals = 0;            // hits whose normal is not a finite unit vector
+    float worstResidualRatio = 0; // max over hits of |f| / (pixel tolerance at t)
+    int badNormals = 0;           // hits whose normal is not a finite unit vector
     std::vector<PixelStats> pixels;
 };
 
@@ -99,7 +99,8 @@ protected:
 
     // The silhouette of a sphere of `radius`: hits count within the hit tolerance (half a pixel's
     // footprint by default), so the traced disc lies between the sphere's and one grown by that much.
-    static void expectSphereSilhouette(int hits, const renderer::Camera& camera, float radius, const renderer::TraceSettings& settings) {
+    static void expectSphereSilhouette(int hits, const renderer::Camera& camera, float radius,
+                                       const renderer::TraceSettings& settings) {
         const float pixelAngle = 2.0f * std::tan(glm::radians(camera.fovYDegrees) / 2.0f) / float(kHeight);
         const float distance = glm::length(camera.position - camera.target);
         const int inner = analyticSphereHits(camera, radius);
@@ -120,7 +121,7 @@ protected:
 
     struct SampleRun {
         sampling::SamplingReport report;
-        std::uint64_t nanRows = 0;  // counted here, independently of the report
+        std::uint64_t nanRows = 0; // counted here, independently of the report
         std::vector<float> positions, distances, gradients;
     };
     static SampleRun sample(const std::string& file, const std::string& pattern, std::uint64_t count) {
@@ -140,7 +141,8 @@ protected:
         if (report) run.report = *report;
         for (std::uint64_t i = 0; i < count; ++i) {
             bool finite = std::isfinite(run.distances[i]);
-            for (int c = 0; c < 3; ++c) finite = finite && std::isfinite(run.positions[3 * i + c]) && std::isfinite(run.gradients[3 * i + c]);
+            for (int c = 0; c < 3; ++c)
+                finite = finite && std::isfinite(run.positions[3 * i + c]) && std::isfinite(run.gradients[3 * i + c]);
             run.nanRows += !finite;
         }
         compute.releaseGl();
@@ -175,7 +177,8 @@ TEST_F(StabilityTest, SteepFieldMissesHonestlyAtStepOneAndHitsWithItsStepFactor)
     auto rows = sample("tests/stability/steep_sphere.glsl", "surface", 4096);
     EXPECT_EQ(rows.report.badRows, rows.nanRows);
     std::uint64_t off = 0;
-    for (std::size_t i = 0; i < rows.distances.size(); ++i) off += std::isfinite(rows.distances[i]) && std::abs(rows.distances[i]) > 1e-3f;
+    for (std::size_t i = 0; i < rows.distances.size(); ++i)
+        off += std::isfinite(rows.distances[i]) && std::abs(rows.distances[i]) > 1e-3f;
     EXPECT_EQ(off, 0u);
 }
 
@@ -197,7 +200,7 @@ TEST_F(StabilityTest, ThinShellIsFoundWithFiniteNormalsFacingTheCamera) {
         for (int x = 0; x < kWidth; ++x) {
             if (!traced.pixels[std::size_t(y * kWidth + x)].hit()) continue;
             const std::uint8_t* p = image.pixel(x, y);
-            float nz = p[2] / 255.0f * 2.0f - 1.0f;  // camera on +Z: a front-facing normal has nz > 0
+            float nz = p[2] / 255.0f * 2.0f - 1.0f; // camera on +Z: a front-facing normal has nz > 0
             (nz > 0.0f ? facing : away)++;
         }
     sdfRenderer.releaseGl();
@@ -339,11 +342,13 @@ TEST_F(StabilityTest, EveryCaseCountsItsBadRowsAndGetsItsVerdict) {
     // orbits escape at different iterations: discontinuous is its right verdict.)
     struct Case {
         const char* file;
-        const char* verdict;  // nullptr: not asserted here (see the tests above)
-    } cases[] = {{"steep_sphere", "non-conservative"}, {"thin_shell", "exact"},         {"far_from_origin", "exact"},
-                 {"grazing_plane", "exact"},          {"deep_mandelbulb", "discontinuous"}, {"nan_region", "nan"},
-                 {"truncated", "truncated"},           {"discontinuous", "discontinuous"}, {"constant", "no-surface"},
-                 {"cubed_sphere", "non-conservative"}, {"union_of_spheres", "conservative"}};
+        const char* verdict; // nullptr: not asserted here (see the tests above)
+    } cases[] = {{"steep_sphere", "non-conservative"}, {"thin_shell", "exact"},
+                 {"far_from_origin", "exact"},         {"grazing_plane", "exact"},
+                 {"deep_mandelbulb", "discontinuous"}, {"nan_region", "nan"},
+                 {"truncated", "truncated"},           {"discontinuous", "discontinuous"},
+                 {"constant", "no-surface"},           {"cubed_sphere", "non-conservative"},
+                 {"union_of_spheres", "conservative"}};
     for (const Case& c : cases) {
         const std::string file = std::string("tests/stability/") + c.file + ".glsl";
         for (const char* pattern : {"rand", "surface"}) {

@@ -52,7 +52,8 @@ CameraPanel::CameraPanel(QWidget* parent) : QWidget(parent) {
         m_camera = camera();
         emit cameraEdited(m_camera);
     };
-    for (QDoubleSpinBox* box : {m_position[0], m_position[1], m_position[2], m_target[0], m_target[1], m_target[2], m_fov, m_near, m_far})
+    for (QDoubleSpinBox* box :
+         {m_position[0], m_position[1], m_position[2], m_target[0], m_target[1], m_target[2], m_fov, m_near, m_far})
         connect(box, &QDoubleSpinBox::valueChanged, this, edited);
     setCamera(renderer::Camera{});
 }

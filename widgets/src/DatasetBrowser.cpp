@@ -24,7 +24,8 @@ DatasetBrowser::DatasetBrowser(QWidget* parent) : QWidget(parent) {
         int index = item ? item->data(0, Qt::UserRole).toInt() : -1;
         if (index < 0 || index >= m_items.size()) return m_details->clear();
         const DatasetItem& d = m_items[index];
-        m_details->setText(tr("<b>%1</b> (%2, %3)<br>%4 - %5<br><small>%6</small>").arg(d.name, d.category, d.type, d.author, d.license, d.notes));
+        m_details->setText(tr("<b>%1</b> (%2, %3)<br>%4 - %5<br><small>%6</small>")
+                               .arg(d.name, d.category, d.type, d.author, d.license, d.notes));
     });
     connect(m_tree, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem* item) {
         int index = item->data(0, Qt::UserRole).toInt();

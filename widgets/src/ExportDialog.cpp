@@ -113,7 +113,9 @@ void ExportDialog::setRunning(bool running) {
     if (running) m_progress->setValue(0);
 }
 
-void ExportDialog::setProgress(quint64 done, quint64 total) { m_progress->setValue(total ? int(1000.0 * double(done) / double(total)) : 0); }
+void ExportDialog::setProgress(quint64 done, quint64 total) {
+    m_progress->setValue(total ? int(1000.0 * double(done) / double(total)) : 0);
+}
 
 void ExportDialog::setMessage(const QString& message, bool error) {
     m_message->setText(message);

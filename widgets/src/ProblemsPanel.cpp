@@ -21,7 +21,8 @@ void ProblemsPanel::setDiagnostics(const std::vector<shaders::Diagnostic>& diagn
     m_list->clear();
     for (const shaders::Diagnostic& d : diagnostics) {
         auto* item = new QListWidgetItem(QString::fromStdString(shaders::formatDiagnostic(d)));
-        item->setIcon(style()->standardIcon(d.severity == shaders::Severity::Error ? QStyle::SP_MessageBoxCritical : QStyle::SP_MessageBoxWarning));
+        item->setIcon(style()->standardIcon(d.severity == shaders::Severity::Error ? QStyle::SP_MessageBoxCritical
+                                                                                   : QStyle::SP_MessageBoxWarning));
         m_list->addItem(item);
     }
 }

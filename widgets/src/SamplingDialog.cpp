@@ -22,7 +22,7 @@ SamplingDialog::SamplingDialog(const QStringList& patterns, QWidget* parent) : Q
     m_sdf = new QLabel;
     form->addRow(tr("SDF:"), m_sdf);
     m_pattern = new QComboBox;
-    m_pattern->setEditable(true);  // a sampler file path may be typed too
+    m_pattern->setEditable(true); // a sampler file path may be typed too
     m_pattern->addItems(patterns);
     m_pattern->setObjectName("pattern");
     form->addRow(tr("Pattern:"), m_pattern);
@@ -73,7 +73,8 @@ SamplingDialog::SamplingDialog(const QStringList& patterns, QWidget* parent) : Q
     layout->addWidget(buttons);
 
     connect(browse, &QPushButton::clicked, this, [this] {
-        QString path = QFileDialog::getSaveFileName(this, tr("Samples file"), m_output->text(), tr("Samples (*.npz *.bin *.ply)"));
+        QString path =
+            QFileDialog::getSaveFileName(this, tr("Samples file"), m_output->text(), tr("Samples (*.npz *.bin *.ply)"));
         if (!path.isEmpty()) m_output->setText(path);
     });
     connect(m_start, &QPushButton::clicked, this, [this] {

@@ -17,8 +17,7 @@
 
 namespace sdfwb::widgets {
 
-ViewportWidget::ViewportWidget(QWidget* parent)
-    : QOpenGLWidget(parent), m_renderer(std::make_unique<renderer::SdfRenderer>()) {
+ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent), m_renderer(std::make_unique<renderer::SdfRenderer>()) {
     setMinimumSize(64, 64);
     setFocusPolicy(Qt::StrongFocus);
     m_refineTimer.setSingleShot(true);
@@ -130,11 +129,14 @@ renderer::Image ViewportWidget::renderImage(int width, int height) {
 }
 
 void ViewportWidget::initializeGL() {
-    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, [this] {
-        makeCurrent();
-        releaseGl();
-        doneCurrent();
-    }, Qt::DirectConnection);
+    connect(
+        context(), &QOpenGLContext::aboutToBeDestroyed, this,
+        [this] {
+            makeCurrent();
+            releaseGl();
+            doneCurrent();
+        },
+        Qt::DirectConnection);
     renderer::GlInfo info = renderer::queryGlInfo();
     m_contextDescription = QString::fromStdString(renderer::describe(info));
     log::info("gl", "viewport context: " + renderer::describe(info));
@@ -165,7 +167,8 @@ void ViewportWidget::paintGL() {
     renderer::FrameStats stats = m_renderer->renderScaled(width, height, scale, m_camera, m_time, true);
     if (m_scaler.frameDone(width, height, scale, stats.cpuMilliseconds, m_interacting)) {
         // A view that became expensive (camera, time, plane): the next frames are capped.
-        emit performanceWarning(tr("A full frame took %1 s: frames are drawn at %2 % resolution from now on").arg(stats.cpuMilliseconds / 1000.0, 0, 'f', 1)
+        emit performanceWarning(tr("A full frame took %1 s: frames are drawn at %2 % resolution from now on")
+                                    .arg(stats.cpuMilliseconds / 1000.0, 0, 'f', 1)
                                     .arg(int(resolutionCap() * 100.0f)));
     }
     m_lastFrameMilliseconds = stats.cpuMilliseconds;
@@ -227,7 +230,7 @@ bool ViewportWidget::probeNewSdf(int width, int height) {
                                     .arg(estimate / 1000.0, 0, 'f', 1)
                                     .arg(int(resolutionCap() * 100.0f)));
     }
-    update();  // the real frame follows
+    update(); // the real frame follows
     emit frameRendered(probe.cpuMilliseconds, kProbeScale);
     return true;
 }

@@ -14,8 +14,7 @@ struct Error {
     std::string message;
 };
 
-template <class T>
-class [[nodiscard]] Expected {
+template <class T> class [[nodiscard]] Expected {
 public:
     Expected(T value) : m_storage(std::in_place_index<0>, std::move(value)) {}
     Expected(Error error) : m_storage(std::in_place_index<1>, std::move(error)) {}
@@ -23,30 +22,44 @@ public:
     bool hasValue() const { return m_storage.index() == 0; }
     explicit operator bool() const { return hasValue(); }
 
-    T& value() & { assert(hasValue()); return std::get<0>(m_storage); }
-    const T& value() const& { assert(hasValue()); return std::get<0>(m_storage); }
-    T&& value() && { assert(hasValue()); return std::get<0>(std::move(m_storage)); }
+    T& value() & {
+        assert(hasValue());
+        return std::get<0>(m_storage);
+    }
+    const T& value() const& {
+        assert(hasValue());
+        return std::get<0>(m_storage);
+    }
+    T&& value() && {
+        assert(hasValue());
+        return std::get<0>(std::move(m_storage));
+    }
     T* operator->() { return &value(); }
     const T* operator->() const { return &value(); }
     T& operator*() & { return value(); }
     const T& operator*() const& { return value(); }
 
-    const Error& error() const { assert(!hasValue()); return std::get<1>(m_storage); }
+    const Error& error() const {
+        assert(!hasValue());
+        return std::get<1>(m_storage);
+    }
 
 private:
     std::variant<T, Error> m_storage;
 };
 
 // Expected<void>: success or an Error.
-template <>
-class [[nodiscard]] Expected<void> {
+template <> class [[nodiscard]] Expected<void> {
 public:
     Expected() = default;
     Expected(Error error) : m_error(std::move(error)), m_failed(true) {}
 
     bool hasValue() const { return !m_failed; }
     explicit operator bool() const { return hasValue(); }
-    const Error& error() const { assert(m_failed); return m_error; }
+    const Error& error() const {
+        assert(m_failed);
+        return m_error;
+    }
 
 private:
     Error m_error;

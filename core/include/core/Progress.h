@@ -22,8 +22,8 @@ private:
 using ProgressFunction = std::function<void(std::uint64_t done, std::uint64_t total)>;
 
 struct ProgressSink {
-    ProgressFunction report;              // may be empty
-    const CancelToken* cancel = nullptr;  // may be null: not cancellable
+    ProgressFunction report;             // may be empty
+    const CancelToken* cancel = nullptr; // may be null: not cancellable
 
     void operator()(std::uint64_t done, std::uint64_t total) const {
         if (report) report(done, total);

@@ -6,16 +6,17 @@
 namespace sdfwb::renderer {
 
 struct Camera {
-    glm::vec3 position{2.6f, 1.5f, 1.9f};  // front (+X) three-quarter view from above
+    glm::vec3 position{2.6f, 1.5f, 1.9f}; // front (+X) three-quarter view from above
     glm::vec3 target{0.0f, 0.0f, 0.0f};
-    glm::vec3 up{0.0f, 1.0f, 0.0f};        // world up; the basis is re-orthogonalised
-    float fovYDegrees = 40.0f;             // vertical field of view
-    float nearPlane = 0.01f;               // rays start no closer than this
-    float farPlane = 100.0f;               // and end no farther
+    glm::vec3 up{0.0f, 1.0f, 0.0f}; // world up; the basis is re-orthogonalised
+    float fovYDegrees = 40.0f;      // vertical field of view
+    float nearPlane = 0.01f;        // rays start no closer than this
+    float farPlane = 100.0f;        // and end no farther
+    bool operator==(const Camera&) const = default;
 };
 
 struct CameraBasis {
-    glm::vec3 right, up, forward;  // orthonormal, right-handed (forward = -Z in view space)
+    glm::vec3 right, up, forward; // orthonormal, right-handed (forward = -Z in view space)
 };
 
 // What float32 can resolve in a view. The tracer computes points as (box entry) + s * direction,
@@ -23,9 +24,9 @@ struct CameraBasis {
 // positionFloor. Hits count within hitTolerance (epsilonScale x a pixel's footprint at the target).
 // When the floor reaches half the tolerance the surface shows rounding noise, not geometry.
 struct PrecisionFloor {
-    float positionFloor = 0.0f;  // float32 spacing at max(|camera|, 1): 2^-23 of it
-    float hitTolerance = 0.0f;   // at the target distance, for a viewport `heightPixels` tall
-    bool exceeded = false;       // positionFloor > hitTolerance / 2
+    float positionFloor = 0.0f; // float32 spacing at max(|camera|, 1): 2^-23 of it
+    float hitTolerance = 0.0f;  // at the target distance, for a viewport `heightPixels` tall
+    bool exceeded = false;      // positionFloor > hitTolerance / 2
 };
 PrecisionFloor precisionFloor(const Camera& camera, float epsilonScale, int heightPixels);
 

@@ -10,13 +10,13 @@ namespace sdfwb::renderer {
 struct GlInfo {
     std::string vendor;
     std::string renderer;
-    std::string version;       // GL_VERSION string
-    std::string glslVersion;   // GL_SHADING_LANGUAGE_VERSION
+    std::string version;     // GL_VERSION string
+    std::string glslVersion; // GL_SHADING_LANGUAGE_VERSION
     int major = 0;
     int minor = 0;
     bool coreProfile = false;
-    bool computeShaders = false;  // GL 4.3 or ARB_compute_shader, and a non-zero work group limit
-    int maxComputeWorkGroupCount = 0;  // in X
+    bool computeShaders = false;      // GL 4.3 or ARB_compute_shader, and a non-zero work group limit
+    int maxComputeWorkGroupCount = 0; // in X
 };
 
 // Needs a current context (loaded through libepoxy).

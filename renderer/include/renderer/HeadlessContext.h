@@ -27,7 +27,7 @@ public:
     void doneCurrent();
 
     const GlInfo& info() const { return m_info; }
-    const std::string& platform() const { return m_platform; }  // "surfaceless" or "device"
+    const std::string& platform() const { return m_platform; } // "surfaceless" or "device"
 
 private:
     HeadlessContext() = default;

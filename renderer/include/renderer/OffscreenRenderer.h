@@ -28,9 +28,9 @@ public:
     // A miss has t < 0 telling why: kLeftBox, kOutOfSteps or kNotFinite.
     struct PixelStats {
         float steps, t, residual, normalLength;
-        static constexpr float kLeftBox = -1.0f;     // passed through the box: nothing there
-        static constexpr float kOutOfSteps = -2.0f;  // the step budget ran out
-        static constexpr float kNotFinite = -3.0f;   // f was NaN or Inf along the ray
+        static constexpr float kLeftBox = -1.0f;    // passed through the box: nothing there
+        static constexpr float kOutOfSteps = -2.0f; // the step budget ran out
+        static constexpr float kNotFinite = -3.0f;  // f was NaN or Inf along the ray
         bool hit() const { return t >= 0.0f; }
     };
     std::vector<PixelStats> renderStats(SdfRenderer& renderer, int width, int height, const Camera& camera, float time,

@@ -10,8 +10,8 @@
 
 namespace sdfwb::renderer {
 
-using shaders::ShadingMode;
 using shaders::parseShadingMode;
+using shaders::ShadingMode;
 using shaders::shadingModeName;
 using shaders::shadingModeNames;
 
@@ -21,28 +21,31 @@ struct TraceSettings {
     float epsilonScale = 0.5f;   // hit when |f| < epsilonScale * (pixel footprint at the hit distance)
     float boxMargin = 0.05f;     // rays are clipped to [-1-margin, 1+margin]^3 before marching
     float overRelaxation = 1.0f; // omega > 1 enables over-relaxed steps with fallback (e.g. 1.6)
+    bool operator==(const TraceSettings&) const = default;
 };
 
 struct ShadingSettings {
     ShadingMode mode = ShadingMode::Normals;
     bool ambientOcclusion = false;
-    glm::vec3 background{0.16f, 0.17f, 0.19f};     // linear RGB in [0,1]
+    glm::vec3 background{0.16f, 0.17f, 0.19f};      // linear RGB in [0,1]
     glm::vec3 lightDirection{-0.05f, 0.87f, 0.49f}; // towards the key light (Gooch): upper left of the default view
-    float curvatureScale = 5.0f;                   // |mean curvature| drawn full red
-    std::string matcap = "clay";                   // name in resources/matcaps or a path to an image
-    bool statsOutput = false;                      // write (steps, t, |f(hit)|) per pixel: see OffscreenRenderer::renderStats
-    std::vector<glm::vec3> markers;                // points ringed over the picture (at most 16; "show where")
+    float curvatureScale = 5.0f;                    // |mean curvature| drawn full red
+    std::string matcap = "clay";                    // name in resources/matcaps or a path to an image
+    bool statsOutput = false;                       // write (steps, t, |f(hit)|) per pixel: see OffscreenRenderer::renderStats
+    std::vector<glm::vec3> markers;                 // points ringed over the picture (at most 16; "show where")
+    bool operator==(const ShadingSettings&) const = default;
 };
 
 // The cutting plane dot(normal, p) = offset and how it is drawn.
 struct CuttingPlane {
     bool enabled = false;
-    glm::vec3 normal{0.0f, 0.0f, 1.0f};  // normalised on use; the side it points to is cut away when clipping
+    glm::vec3 normal{0.0f, 0.0f, 1.0f}; // normalised on use; the side it points to is cut away when clipping
     float offset = 0.0f;
     float contourSpacing = 1.0f / 64.0f; // isocontours every this much distance
     float rampDistance = 1.0f;           // outside ramp: yellow at 0, blue at this distance
     bool clipSurface = true;             // cut the surface away in front of the plane
     bool lipschitzOverlay = true;        // red where |grad f| > 1, grey where ~0 away from the surface
+    bool operator==(const CuttingPlane&) const = default;
 };
 
 } // namespace sdfwb::renderer

@@ -15,13 +15,13 @@
 namespace sdfwb::renderer {
 
 struct SampleUniforms {
-    std::uint32_t sampleCount = 0;  // N of the whole run
+    std::uint32_t sampleCount = 0; // N of the whole run
     std::uint64_t seed = 0;
     float time = 0.0f;
-    float gradientStep = 1e-3f;     // central-difference step of the written gradient
-    float parameters[16] = {};      // u_parameters[4] (vec4s) for program-driven samplers
-    float surfaceTolerance = 1e-5f; // traceRay() (surface, near, metropolis) stops at |f| below this
-    bool tetrahedralGradient = false;  // written gradient by the tracer's 4-tap scheme, not 6-tap central
+    float gradientStep = 1e-3f;       // central-difference step of the written gradient
+    float parameters[16] = {};        // u_parameters[4] (vec4s) for program-driven samplers
+    float surfaceTolerance = 1e-5f;   // traceRay() (surface, near, metropolis) stops at |f| below this
+    bool tetrahedralGradient = false; // written gradient by the tracer's 4-tap scheme, not 6-tap central
     // Points given by the caller (3 floats per sample, sampleCount of them, indexed globally), read
     // by the analysis/points.glsl sampler through sdfwb_inputPoint(); null for every other sampler.
     const float* inputPoints = nullptr;

@@ -19,7 +19,7 @@
 namespace sdfwb::renderer {
 
 struct FrameStats {
-    double cpuMilliseconds = 0.0;  // time spent in render(), including glFinish when asked
+    double cpuMilliseconds = 0.0; // time spent in render(), including glFinish when asked
 };
 
 // The tracer variant these settings select (what SdfRenderer composes and the driver compiles), so

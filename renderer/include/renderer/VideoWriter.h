@@ -14,7 +14,8 @@ namespace sdfwb::renderer {
 class VideoWriter {
 public:
     // width and height are rounded down to even numbers (4:2:0 chroma needs them even).
-    static Expected<std::unique_ptr<VideoWriter>> open(const std::filesystem::path& path, int width, int height, int framesPerSecond);
+    static Expected<std::unique_ptr<VideoWriter>> open(const std::filesystem::path& path, int width, int height,
+                                                       int framesPerSecond);
     ~VideoWriter();
     VideoWriter(const VideoWriter&) = delete;
     VideoWriter& operator=(const VideoWriter&) = delete;

@@ -53,18 +53,19 @@ std::vector<std::pair<const char*, float>> namedFigures(const AuditFlag& flag);
 const AuditFlag* findFlag(const std::vector<AuditFlag>& flags, const std::string& name);
 
 struct PlaneReadout {
-    int resolution = 0;                 // grid side on the plane
-    std::uint64_t points = 0;           // grid points inside the [-1,1]^3 box
-    float minimum = 0.0f, maximum = 0.0f;  // f over those points (finite ones)
-    float lipschitzMax = 0.0f;          // max |grad f| (central differences, step 1e-2)
-    float lipschitz99 = 0.0f;           // 99th percentile
-    double shareAboveOne = 0.0;         // fraction of points with |grad f| > 1.02
-    std::optional<float> truncationDistance;  // where the field stops growing, if it does
-    std::uint64_t discontinuities = 0;  // neighbouring grid points whose difference the local slope cannot explain
-    std::uint64_t nanCount = 0;         // NaN or Inf values or gradients
-    std::vector<std::uint64_t> histogram;  // |grad f| in bins of 0.05 centred on k * 0.05 (bin 20 holds 1 +- 0.025); bin 40 holds >= 1.975
-    float safeStepFactor = 1.0f;        // 1 / max(1, lipschitzMax)
-    std::vector<AuditFlag> flags;       // as the volume audit's, from the plane's grid
+    int resolution = 0;                      // grid side on the plane
+    std::uint64_t points = 0;                // grid points inside the [-1,1]^3 box
+    float minimum = 0.0f, maximum = 0.0f;    // f over those points (finite ones)
+    float lipschitzMax = 0.0f;               // max |grad f| (central differences, step 1e-2)
+    float lipschitz99 = 0.0f;                // 99th percentile
+    double shareAboveOne = 0.0;              // fraction of points with |grad f| > 1.02
+    std::optional<float> truncationDistance; // where the field stops growing, if it does
+    std::uint64_t discontinuities = 0;       // neighbouring grid points whose difference the local slope cannot explain
+    std::uint64_t nanCount = 0;              // NaN or Inf values or gradients
+    std::vector<std::uint64_t>
+        histogram;                // |grad f| in bins of 0.05 centred on k * 0.05 (bin 20 holds 1 +- 0.025); bin 40 holds >= 1.975
+    float safeStepFactor = 1.0f;  // 1 / max(1, lipschitzMax)
+    std::vector<AuditFlag> flags; // as the volume audit's, from the plane's grid
     double seconds = 0.0;
 };
 
@@ -72,16 +73,16 @@ struct PlaneReadout {
 Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 normal, float offset, int resolution, float time);
 
 struct AuditOptions {
-    std::uint64_t samples = 100000;  // random points; as many near-surface points and surface points
+    std::uint64_t samples = 100000; // random points; as many near-surface points and surface points
     std::uint64_t seed = 0;
     float time = 0.0f;
-    bool convergence = true;         // also run N/16 and N/4 to show how the estimates tighten
-    float probeDistance = 3.0f;      // truncation: probe outward from the surface this far (plateaus
-                                     // beyond the unit cube are found too)
+    bool convergence = true;    // also run N/16 and N/4 to show how the estimates tighten
+    float probeDistance = 3.0f; // truncation: probe outward from the surface this far (plateaus
+                                // beyond the unit cube are found too)
 };
 
 struct QuotientScale {
-    float step = 0.0f;                // the difference quotient's scale (2h for central differences)
+    float step = 0.0f; // the difference quotient's scale (2h for central differences)
     float p50 = 0, p99 = 0, p999 = 0, max = 0;
 };
 
@@ -93,32 +94,32 @@ struct ConvergencePoint {
 };
 
 struct AuditReport {
-    std::string verdict;              // exact | conservative | non-conservative | truncated | discontinuous | nan | no-surface
-                                      // (the most severe finding)
-    std::string reason;               // one sentence: why this verdict
-    std::vector<AuditFlag> flags;     // every finding, most severe first
-    float lipschitz = 0.0f;           // estimate: 99.9th percentile of |grad f| over all scales but the largest
-    float lipschitzMax = 0.0f;        // the largest quotient seen (an outlier-prone upper estimate)
-    float lipschitzUncertainty = 0.0f;  // spread between the two (the estimate is a lower bound of the true L)
+    std::string verdict;               // exact | conservative | non-conservative | truncated | discontinuous | nan | no-surface
+                                       // (the most severe finding)
+    std::string reason;                // one sentence: why this verdict
+    std::vector<AuditFlag> flags;      // every finding, most severe first
+    float lipschitz = 0.0f;            // estimate: 99.9th percentile of |grad f| over all scales but the largest
+    float lipschitzMax = 0.0f;         // the largest quotient seen (an outlier-prone upper estimate)
+    float lipschitzUncertainty = 0.0f; // spread between the two (the estimate is a lower bound of the true L)
     float safeStepFactor = 1.0f;
     std::optional<float> truncationDistance;
     double nanFraction = 0.0;
-    double nanFractionError = 0.0;    // binomial standard error
+    double nanFractionError = 0.0; // binomial standard error
     std::uint64_t discontinuities = 0;
     double discontinuityShare = 0.0;
-    float eikonalMean = 0.0f;         // mean of | |grad f| - 1 | near the surface
+    float eikonalMean = 0.0f; // mean of | |grad f| - 1 | near the surface
     float eikonalP95 = 0.0f;
-    std::uint64_t surfacePoints = 0;  // dense surface set used for the true distance
-    float surfaceSpacing = 0.0f;      // mean nearest-neighbour distance within that set: the true
-                                      // distance is known to about this much
-    float exactnessP99 = 0.0f;        // 99th percentile of | |f| - true distance |
+    std::uint64_t surfacePoints = 0; // dense surface set used for the true distance
+    float surfaceSpacing = 0.0f;     // mean nearest-neighbour distance within that set: the true
+                                     // distance is known to about this much
+    float exactnessP99 = 0.0f;       // 99th percentile of | |f| - true distance |
     float exactnessMax = 0.0f;
-    double overestimateShare = 0.0;   // points where |f| exceeds the true distance beyond tolerance
-    float surfaceGradient = 0.0f;     // median |grad f| at the surface points (1 for a distance;
-                                      // near 0 when the gradient vanishes there, as for f = d^3)
-    float noiseFloor = 0.0f;          // the precision floor: rounding noise in f itself (median over
-                                      // short straight runs of what a quadratic cannot fit, times
-                                      // sqrt 12: the size of a float32 rounding step of the values)
+    double overestimateShare = 0.0; // points where |f| exceeds the true distance beyond tolerance
+    float surfaceGradient = 0.0f;   // median |grad f| at the surface points (1 for a distance;
+                                    // near 0 when the gradient vanishes there, as for f = d^3)
+    float noiseFloor = 0.0f;        // the precision floor: rounding noise in f itself (median over
+                                    // short straight runs of what a quadratic cannot fit, times
+                                    // sqrt 12: the size of a float32 rounding step of the values)
     std::vector<QuotientScale> scales;
     std::vector<ConvergencePoint> convergence;
     std::uint64_t samples = 0;

@@ -21,19 +21,19 @@ namespace sdfwb::sampling {
 enum class SampleFormat { Bin, Npz, Ply };
 
 const char* formatName(SampleFormat format);
-std::optional<SampleFormat> parseFormat(std::string_view name);           // "bin" | "npz" | "ply"
-std::optional<SampleFormat> formatFromPath(const std::filesystem::path& path);  // by extension
+std::optional<SampleFormat> parseFormat(std::string_view name);                // "bin" | "npz" | "ply"
+std::optional<SampleFormat> formatFromPath(const std::filesystem::path& path); // by extension
 
 // Where rows came from. .npz stores every field as an array, .ply as header comments; .bin has
 // no room for metadata.
 struct SampleMetadata {
-    std::string sdf;               // as the user named it (dataset name or path)
+    std::string sdf; // as the user named it (dataset name or path)
     std::string pattern;
     std::uint64_t seed = 0;
     float time = 0.0f;
-    std::uint64_t firstIndex = 0;  // global index of the file's first row (non-zero for shards)
-    std::uint64_t totalCount = 0;  // N of the whole run the rows belong to
-    std::string version;           // sdfwb version that wrote the file
+    std::uint64_t firstIndex = 0; // global index of the file's first row (non-zero for shards)
+    std::uint64_t totalCount = 0; // N of the whole run the rows belong to
+    std::string version;          // sdfwb version that wrote the file
 };
 
 // Largest row count a format can hold (.bin stores N as uint32).
@@ -42,7 +42,7 @@ std::uint64_t maxRows(SampleFormat format);
 class SampleWriter {
 public:
     struct Options {
-        bool forceZip64 = false;  // .npz: use ZIP64 records even when not needed (for tests)
+        bool forceZip64 = false; // .npz: use ZIP64 records even when not needed (for tests)
     };
 
     // Opens a temporary file for `rows` rows. Fails before writing anything when rows exceeds

@@ -8,9 +8,9 @@
 namespace sdfwb::sampling {
 
 struct SampleSet {
-    std::vector<float> positions;  // 3N: x0 y0 z0 x1 ...
-    std::vector<float> distances;  // N
-    std::vector<float> gradients;  // 3N, raw: |gradient| shows the Lipschitz behaviour
+    std::vector<float> positions; // 3N: x0 y0 z0 x1 ...
+    std::vector<float> distances; // N
+    std::vector<float> gradients; // 3N, raw: |gradient| shows the Lipschitz behaviour
 
     std::size_t size() const { return distances.size(); }
     void resize(std::size_t n) {

@@ -17,15 +17,15 @@ class SampleCompute;
 namespace sdfwb::sampling {
 
 struct SamplingJob {
-    std::uint64_t count = 0;          // N of the whole run
+    std::uint64_t count = 0; // N of the whole run
     std::uint64_t seed = 0;
-    float time = 0.0f;                // for animated SDFs
-    std::uint32_t shardIndex = 0;     // this run writes slice shardIndex (0-based) of shardCount
+    float time = 0.0f;            // for animated SDFs
+    std::uint32_t shardIndex = 0; // this run writes slice shardIndex (0-based) of shardCount
     std::uint32_t shardCount = 1;
-    std::uint32_t chunkSize = 1u << 18;  // samples per dispatch (bounded memory: 28 bytes each)
-    float gradientStep = 1e-3f;       // central-difference step of the written gradient
-    float parameters[16] = {};        // u_parameters for program-driven samplers (plane analysis)
-    float surfaceTolerance = 1e-5f;   // |f| at which surface/near/metropolis rays stop (accuracy against time)
+    std::uint32_t chunkSize = 1u << 18; // samples per dispatch (bounded memory: 28 bytes each)
+    float gradientStep = 1e-3f;         // central-difference step of the written gradient
+    float parameters[16] = {};          // u_parameters for program-driven samplers (plane analysis)
+    float surfaceTolerance = 1e-5f;     // |f| at which surface/near/metropolis rays stop (accuracy against time)
     const float* inputPoints = nullptr; // 3 * count floats for the analysis/points.glsl sampler (not owned)
 
     std::uint64_t firstIndex() const { return count * shardIndex / shardCount; }
@@ -36,9 +36,9 @@ struct SamplingJob {
 Expected<void> validate(const SamplingJob& job);
 
 struct SamplingReport {
-    std::uint64_t rows = 0;        // rows produced (this shard)
+    std::uint64_t rows = 0; // rows produced (this shard)
     std::uint64_t firstIndex = 0;
-    std::uint64_t badRows = 0;     // rows with NaN or Inf anywhere (misses of surface/near, broken fields)
+    std::uint64_t badRows = 0; // rows with NaN or Inf anywhere (misses of surface/near, broken fields)
     double seconds = 0.0;
     bool cancelled = false;
 };

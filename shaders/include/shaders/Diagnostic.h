@@ -10,11 +10,11 @@ namespace sdfwb::shaders {
 enum class Severity { Error, Warning, Note };
 
 struct Diagnostic {
-    std::string file;      // path as the user knows it ("<editor>" for unsaved text)
-    int line = 0;          // 1-based; 0 when the message has no line
-    int column = 0;        // 1-based; 0 when unknown
+    std::string file; // path as the user knows it ("<editor>" for unsaved text)
+    int line = 0;     // 1-based; 0 when the message has no line
+    int column = 0;   // 1-based; 0 when unknown
     Severity severity = Severity::Error;
-    std::string message;   // without file/line prefix
+    std::string message; // without file/line prefix
 };
 
 const char* severityName(Severity severity);

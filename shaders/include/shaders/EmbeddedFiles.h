@@ -8,7 +8,7 @@
 namespace sdfwb::shaders::detail {
 
 struct EmbeddedFile {
-    std::string_view path;  // relative to shaders/, e.g. "tracer/trace.frag"
+    std::string_view path; // relative to shaders/, e.g. "tracer/trace.frag"
     std::string_view text;
 };
 

@@ -17,18 +17,18 @@ namespace sdfwb::shaders {
 struct IncludeOptions {
     // Folders includes may be read from. The root file's own folder is added automatically.
     std::vector<std::filesystem::path> libraryRoots;
-    int maxDepth = 32;  // longest include chain accepted
+    int maxDepth = 32; // longest include chain accepted
 };
 
 struct ResolvedSource {
-    std::string text;                     // expanded text; starts with `#line 1 0`
-    SourceMap map;                        // files[0] is the root text
-    std::vector<Diagnostic> diagnostics;  // resolver errors (missing, cycle, escape, depth)
+    std::string text;                    // expanded text; starts with `#line 1 0`
+    SourceMap map;                       // files[0] is the root text
+    std::vector<Diagnostic> diagnostics; // resolver errors (missing, cycle, escape, depth)
 };
 
 // `name` is shown in diagnostics for the root text; `path` (may be empty for unsaved text) gives
 // the folder that relative includes start from.
-ResolvedSource resolveIncludes(const std::string& text, const std::string& name,
-                               const std::filesystem::path& path, const IncludeOptions& options);
+ResolvedSource resolveIncludes(const std::string& text, const std::string& name, const std::filesystem::path& path,
+                               const IncludeOptions& options);
 
 } // namespace sdfwb::shaders

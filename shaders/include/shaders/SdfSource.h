@@ -27,7 +27,7 @@ enum class EntrySource { Default, Requested, Metadata, Convention };
 // Symbols of the original sdf-explorer's G3D dialect that the text uses without declaring them.
 // Each becomes a `#define SDFWB_COMPAT_<NAME>` that selects a section of prelude/g3d_compat.glsl.
 struct CompatNeeds {
-    std::vector<std::string> symbols;  // e.g. "pi", "saturate", "float3", "g3d_SceneTime"
+    std::vector<std::string> symbols; // e.g. "pi", "saturate", "float3", "g3d_SceneTime"
     bool any() const { return !symbols.empty(); }
     bool usesTimeSymbol() const; // g3d_SceneTime or Shadertoy's iTime
 };

@@ -31,12 +31,12 @@ using FeatureDefines = std::map<std::string, std::string>;
 struct ComposedShader {
     Stage stage = Stage::Fragment;
     std::string text;
-    SourceMap map;  // source-string number -> file, for diagnostics
+    SourceMap map; // source-string number -> file, for diagnostics
 };
 
 // A piece of GLSL composed after the SDF: a helper file, a sampler, the stage's main().
 struct ShaderPiece {
-    std::string name;  // shown in diagnostics ("sdfwb:samplers/rand.glsl", or a user's path)
+    std::string name; // shown in diagnostics ("sdfwb:samplers/rand.glsl", or a user's path)
     std::string text;
 };
 

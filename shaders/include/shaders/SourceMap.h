@@ -10,8 +10,8 @@
 namespace sdfwb::shaders {
 
 struct SourceFile {
-    std::string name;  // shown in diagnostics: a path, "<editor>", or "sdfwb:tracer/trace.frag"
-    std::string text;  // original text, used to find columns
+    std::string name; // shown in diagnostics: a path, "<editor>", or "sdfwb:tracer/trace.frag"
+    std::string text; // original text, used to find columns
 };
 
 struct SourceMap {

@@ -16,15 +16,15 @@ enum class ShadingMode { Normals, Gooch, Matcap, Curvature, Steps };
 
 const char* shadingModeName(ShadingMode mode);
 std::optional<ShadingMode> parseShadingMode(std::string_view name);
-std::string shadingModeNames();  // "normals|gooch|matcap|curvature|steps"
+std::string shadingModeNames(); // "normals|gooch|matcap|curvature|steps"
 
 struct TracerFeatures {
     ShadingMode shading = ShadingMode::Normals;
     bool ambientOcclusion = false;
     bool overRelaxation = false;
-    bool statsOutput = false;  // write (steps, t, |f(hit)|) instead of a colour (benchmarks, tests)
+    bool statsOutput = false; // write (steps, t, |f(hit)|) instead of a colour (benchmarks, tests)
     bool cuttingPlane = false;
-    bool planeClipsSurface = false;  // cut the shape away on the side the plane's normal points to
+    bool planeClipsSurface = false; // cut the shape away on the side the plane's normal points to
     bool planeLipschitzOverlay = false;
     bool markers = false; // ring marked points (markers.glsl)
 };

@@ -46,7 +46,7 @@ class PlanePanel : public QWidget {
     Q_OBJECT
 public:
     explicit PlanePanel(QWidget* parent = nullptr);
-    void setPlane(const renderer::CuttingPlane& plane);  // no signal
+    void setPlane(const renderer::CuttingPlane& plane); // no signal
     renderer::CuttingPlane plane() const;
     void setReadout(const PlaneReadoutView& readout);
     void setReadoutMessage(const QString& message);

@@ -19,12 +19,12 @@ class QSpinBox;
 namespace sdfwb::widgets {
 
 struct SamplingSettings {
-    QString pattern = "surface";  // built-in name or a sampler file path
+    QString pattern = "surface"; // built-in name or a sampler file path
     std::uint64_t count = 1000000;
     std::uint64_t seed = 0;
     double time = 0.0;
-    QString output;               // .bin, .npz or .ply
-    QString format;               // empty: from the extension
+    QString output; // .bin, .npz or .ply
+    QString format; // empty: from the extension
 };
 
 class SamplingDialog : public QDialog {

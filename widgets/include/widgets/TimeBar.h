@@ -15,10 +15,10 @@ class TimeBar : public QWidget {
 public:
     explicit TimeBar(QWidget* parent = nullptr);
 
-    void setTime(double seconds);  // no signal
+    void setTime(double seconds); // no signal
     double time() const { return m_time; }
     double duration() const;
-    void setPlaying(bool playing);  // no signal
+    void setPlaying(bool playing); // no signal
 
 signals:
     void timeEdited(double seconds);

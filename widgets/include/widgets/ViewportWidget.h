@@ -4,10 +4,9 @@
 // The renderer's GL objects are freed when Qt destroys the context (floating a dock re-creates
 // it) and rebuilt lazily.
 //
-// Camera: left drag orbits (Ctrl + left drag moves the cutting plane), wheel dollies; right drag looks around (first person) and, while the
-// right button is held, W/A/S/D move, Z/C go down/up, Shift is faster, Alt slower.
-// While the camera moves, frames render at a reduced scale chosen to stay within the frame budget;
-// shortly after it stops, a full-resolution frame follows.
+// Camera: left drag orbits (Ctrl + left drag moves the cutting plane), wheel dollies; right drag looks around (first person) and,
+// while the right button is held, W/A/S/D move, Z/C go down/up, Shift is faster, Alt slower. While the camera moves, frames
+// render at a reduced scale chosen to stay within the frame budget; shortly after it stops, a full-resolution frame follows.
 
 #include <renderer/Camera.h>
 #include <renderer/FrameScaler.h>
@@ -100,13 +99,13 @@ private:
     // Draws the first frame of a new SDF at kProbeScale and sets the resolution cap (or reverts).
     bool probeNewSdf(int width, int height);
     void releaseGl();
-    void interacted();  // a camera move happened: render cheaply now, refine later
+    void interacted(); // a camera move happened: render cheaply now, refine later
     void flyStep();
 
     std::unique_ptr<renderer::SdfRenderer> m_renderer;
     std::unique_ptr<shaders::PreparedSdf> m_pendingSdf;
-    std::unique_ptr<shaders::PreparedSdf> m_currentSdf;   // compiled, waiting for its probe frame
-    std::unique_ptr<shaders::PreparedSdf> m_lastGoodSdf;  // passed its probe frame
+    std::unique_ptr<shaders::PreparedSdf> m_currentSdf;  // compiled, waiting for its probe frame
+    std::unique_ptr<shaders::PreparedSdf> m_lastGoodSdf; // passed its probe frame
     bool m_needsProbe = false;
     renderer::FrameScaler m_scaler; // resolution while moving, and the cap for slow SDFs
     renderer::ShadingSettings m_shading;
