@@ -1,10 +1,13 @@
 // Sphere tracer benchmark: every dataset SDF at 1280x720 (Gooch shading): time to the
 // full-resolution frame, the frame time while moving (at the scale the viewport picks for a 33 ms
-// budget), steps per pixel. Timings are medians of 3 frames after a warm-up frame (shader JIT
-// excluded). Error against run time (hit error, samplers, gradients, audit) is `sdfwb --batch
-// bench` (bench/Benchmarks.cpp).
+// budget), steps per pixel, and, measured in the same run on the same context, the frame time of
+// a minimal reference tracer doing the same work (textbook sphere tracing in the same [-1,1]^3 box
+// with the same step budget and hit tolerance, a 4-tap normal and the same Gooch formula; none of
+// our refinement, thin-feature probe, miss reasons or feature switches). Timings are medians of 3
+// frames after a warm-up frame (shader JIT excluded), draw to glFinish for both. Error against run time (hit error, samplers,
+// gradients, audit) is `sdfwb --batch bench` (jobs/src/Benchmarks.cpp).
 //
-//   build/bench/bench_tracer
+//   build/bench/bench_tracer [NAME ...]     (dataset names; default: every SDF)
 
 #include <core/Paths.h>
 #include <dataset/Catalogue.h>
@@ -12,8 +15,12 @@
 #include <renderer/OffscreenRenderer.h>
 #include <renderer/SdfRenderer.h>
 #include <shaders/SdfSource.h>
+#include <shaders/ShaderComposer.h>
+
+#include <epoxy/gl.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -38,30 +45,136 @@ double frameMilliseconds(renderer::OffscreenRenderer& offscreen, renderer::SdfRe
     return median3(t[0], t[1], t[2]);
 }
 
+// The reference: the textbook loop, nothing else.
+const char* const kReferenceMain = R"(
+out vec4 ref_color;
+uniform vec2 ref_resolution;
+uniform vec3 ref_origin, ref_right, ref_up, ref_forward;
+uniform float ref_tanHalfFov;
+void main() {
+    vec2 ndc = gl_FragCoord.xy / ref_resolution * 2.0 - 1.0;
+    vec3 d = normalize(ref_forward + ndc.x * (ref_resolution.x / ref_resolution.y) * ref_tanHalfFov * ref_right + ndc.y * ref_tanHalfFov * ref_up);
+    vec3 inv = 1.0 / d;
+    vec3 t0 = (vec3(-1.05) - ref_origin) * inv, t1 = (vec3(1.05) - ref_origin) * inv;
+    vec3 lo = min(t0, t1), hi = max(t0, t1);
+    float t = max(max(max(lo.x, lo.y), lo.z), 0.01), tEnd = min(min(min(hi.x, hi.y), hi.z), 100.0);
+    float footprint = 0.5 * 2.0 * ref_tanHalfFov / ref_resolution.y;
+    bool hit = false;
+    for (int i = 0; i < 256 && t <= tEnd; ++i) {
+        float f = sdfwb_sdf(ref_origin + t * d);
+        if (abs(f) < footprint * t) { hit = true; break; }
+        t += f;
+    }
+    if (!hit) { ref_color = vec4(0.16, 0.17, 0.19, 1.0); return; }
+    vec3 p = ref_origin + t * d;
+    float h = footprint * t;
+    const vec2 k = vec2(1.0, -1.0);
+    vec3 n = normalize(k.xyy * sdfwb_sdf(p + k.xyy * h) + k.yyx * sdfwb_sdf(p + k.yyx * h) + k.yxy * sdfwb_sdf(p + k.yxy * h) + k.xxx * sdfwb_sdf(p + k.xxx * h));
+    vec3 light = normalize(vec3(-0.05, 0.87, 0.49));
+    vec3 color = mix(vec3(0.12, 0.22, 0.48) + 0.124, vec3(0.85, 0.55, 0.25) + 0.186, 0.5 + 0.5 * dot(n, light));
+    color += 0.25 * pow(max(dot(n, normalize(light - d)), 0.0), 40.0) + 0.15 * pow(1.0 - max(dot(n, -d), 0.0), 3.0);
+    ref_color = vec4(clamp(color, 0.0, 1.0), 1.0);
+}
+)";
+
+GLuint compileStage(GLenum type, const std::string& text) {
+    GLuint shader = glCreateShader(type);
+    const char* source = text.c_str();
+    glShaderSource(shader, 1, &source, nullptr);
+    glCompileShader(shader);
+    GLint ok = 0;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        glDeleteShader(shader);
+        return 0;
+    }
+    return shader;
+}
+
+// Frame time of the reference tracer at width x height (median of 3 after a warm-up), or < 0
+// when it does not compile.
+double referenceMilliseconds(const shaders::PreparedSdf& sdf, int width, int height) {
+    auto vertex = shaders::composeBuiltinShader(shaders::Stage::Vertex, "tracer/fullscreen.vert", {});
+    auto fragment = shaders::composeSdfShader(sdf, shaders::Stage::Fragment, {{"bench:reference", kReferenceMain}}, {});
+    if (!vertex) return -1.0;
+    GLuint vs = compileStage(GL_VERTEX_SHADER, vertex->text), fs = compileStage(GL_FRAGMENT_SHADER, fragment.text);
+    GLuint program = glCreateProgram();
+    if (vs && fs) {
+        glAttachShader(program, vs);
+        glAttachShader(program, fs);
+        glLinkProgram(program);
+    }
+    GLint linked = 0;
+    glGetProgramiv(program, GL_LINK_STATUS, &linked);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    if (!linked) {
+        glDeleteProgram(program);
+        return -1.0;
+    }
+    GLuint texture = 0, framebuffer = 0, vertexArray = 0;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glGenFramebuffers(1, &framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+    glGenVertexArrays(1, &vertexArray);
+    const renderer::Camera camera;
+    const renderer::CameraBasis basis = renderer::cameraBasis(camera);
+    auto frame = [&] {
+        const auto start = std::chrono::steady_clock::now();
+        glViewport(0, 0, width, height);
+        glUseProgram(program);
+        glUniform2f(glGetUniformLocation(program, "ref_resolution"), float(width), float(height));
+        glUniform3f(glGetUniformLocation(program, "ref_origin"), camera.position.x, camera.position.y, camera.position.z);
+        glUniform3f(glGetUniformLocation(program, "ref_right"), basis.right.x, basis.right.y, basis.right.z);
+        glUniform3f(glGetUniformLocation(program, "ref_up"), basis.up.x, basis.up.y, basis.up.z);
+        glUniform3f(glGetUniformLocation(program, "ref_forward"), basis.forward.x, basis.forward.y, basis.forward.z);
+        glUniform1f(glGetUniformLocation(program, "ref_tanHalfFov"), std::tan(camera.fovYDegrees * 3.14159265f / 360.0f));
+        glBindVertexArray(vertexArray);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glFinish();
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    };
+    frame();
+    const double a = frame(), b = frame(), c = frame();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteVertexArrays(1, &vertexArray);
+    glDeleteFramebuffers(1, &framebuffer);
+    glDeleteTextures(1, &texture);
+    glDeleteProgram(program);
+    return median3(a, b, c);
+}
+
 shaders::IncludeOptions includeOptions() {
     shaders::IncludeOptions options;
     options.libraryRoots = {paths::shaderLibraryRoot(), paths::datasetRoot()};
     return options;
 }
 
-void datasetReport() {
+void datasetReport(const std::vector<std::string>& names) {
     dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
-    std::printf("## Interactive rendering, 1280x720, Gooch shading, default camera\n\n");
     std::printf(
-        "| SDF | full-resolution frame (ms) | moving: scale | moving frame (ms) | steps/pixel (all) | steps/pixel (hits) |\n");
-    std::printf("|---|---|---|---|---|---|\n");
+        "| SDF | full-resolution frame (ms) | reference tracer (ms) | ours / reference | moving: scale | moving frame (ms) | "
+        "steps/pixel (all) | steps/pixel (hits) |\n");
+    std::printf("|---|---|---|---|---|---|---|---|\n");
     renderer::OffscreenRenderer offscreen;
+    std::vector<double> ratios, movingFrames;
     for (const dataset::Entry& entry : catalogue.entries()) {
+        if (!names.empty() && std::find(names.begin(), names.end(), entry.metadata.name) == names.end()) continue;
         renderer::SdfRenderer sdfRenderer;
         renderer::ShadingSettings shading;
         shading.mode = renderer::ShadingMode::Gooch;
         (void)sdfRenderer.setShading(shading);
-        auto diagnostics = sdfRenderer.setSdf(shaders::prepareSdfFile(entry.path, includeOptions()));
+        const shaders::PreparedSdf prepared = shaders::prepareSdfFile(entry.path, includeOptions());
+        auto diagnostics = sdfRenderer.setSdf(prepared);
         if (shaders::hasErrors(diagnostics)) {
-            std::printf("| %s | does not compile | | | | |\n", entry.metadata.name.c_str());
+            std::printf("| %s | does not compile | | | | | | |\n", entry.metadata.name.c_str());
             continue;
         }
         double full = frameMilliseconds(offscreen, sdfRenderer, 1280, 720, 1.0f);
+        const double reference = referenceMilliseconds(prepared, 1280, 720);
         // The viewport's rule: start from the full frame's cost, then adapt frame by frame.
         float scale = std::clamp(float(std::sqrt(0.8 * 33.0 / full)), 0.1f, 1.0f);
         double moving = 0.0;
@@ -85,23 +198,33 @@ void datasetReport() {
                 ++hits;
             }
         }
-        std::printf("| %s | %.1f | %.0f %% | %.1f | %.1f | %.1f |\n", entry.metadata.name.c_str(), full, scale * 100.0f, moving,
-                    steps / double(stats.size()), hits ? hitSteps / double(hits) : 0.0);
+        if (reference > 0.0) ratios.push_back(full / reference);
+        movingFrames.push_back(moving);
+        std::printf("| %s | %.1f | %.1f | %.2f | %.0f %% | %.1f | %.1f | %.1f |\n", entry.metadata.name.c_str(), full, reference,
+                    reference > 0.0 ? full / reference : 0.0, scale * 100.0f, moving, steps / double(stats.size()),
+                    hits ? hitSteps / double(hits) : 0.0);
         std::fflush(stdout);
         sdfRenderer.releaseGl();
     }
     std::printf("\n");
+    if (ratios.empty()) return;
+    std::sort(ratios.begin(), ratios.end());
+    std::sort(movingFrames.begin(), movingFrames.end());
+    std::printf("Summary over %zu SDFs: full-resolution frame / reference tracer: median %.2f (range %.2f to %.2f); "
+                "moving frames %.1f to %.1f ms (median %.1f).\n",
+                ratios.size(), ratios[ratios.size() / 2], ratios.front(), ratios.back(), movingFrames.front(),
+                movingFrames.back(), movingFrames[movingFrames.size() / 2]);
 }
 
 } // namespace
 
-int main() {
+int main(int argc, char** argv) {
     auto context = renderer::HeadlessContext::create();
     if (!context) {
         std::fprintf(stderr, "bench_tracer: %s\n", context.error().message.c_str());
         return 3;
     }
     std::printf("GL: %s\n\n", renderer::describe(context.value()->info()).c_str());
-    datasetReport();
+    datasetReport(std::vector<std::string>(argv + 1, argv + argc));
     return 0;
 }

@@ -4,6 +4,8 @@
 
 #include <core/Paths.h>
 #include <dataset/Catalogue.h>
+#include <jobs/JobJson.h>
+#include <jobs/Jobs.h>
 #include <renderer/HeadlessContext.h>
 #include <renderer/SampleCompute.h>
 #include <sampling/FieldAudit.h>
@@ -46,45 +48,46 @@ renderer::HeadlessContext& context() {
     return *g_context;
 }
 
-shaders::IncludeOptions includeOptions() {
-    shaders::IncludeOptions options;
-    options.libraryRoots = {paths::shaderLibraryRoot(), paths::datasetRoot()};
-    return options;
-}
-
 // `sdf` is a dataset name, a path, or GLSL source (anything with a brace and a parenthesis, which
 // names and paths of SDF files do not have). `entry` names the SDF's function (empty: the default).
-shaders::PreparedSdf prepare(const std::string& sdf, const std::string& entry) {
-    shaders::PreparedSdf prepared;
-    if (sdf.find('{') != std::string::npos && sdf.find('(') != std::string::npos) {
-        prepared = shaders::prepareSdf(sdf, "<python source>", {}, includeOptions(), entry);
-    } else {
-        dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
-        auto path = dataset::resolveSdfArgument(sdf, catalogue);
-        if (!path) throw py::value_error("sdf: " + path.error().message);
-        prepared = shaders::prepareSdfFile(*path, includeOptions(), entry);
-    }
-    if (!prepared.ok()) {
-        std::string message;
-        for (const auto& d : prepared.diagnostics) message += shaders::formatDiagnostic(d) + "\n";
-        throw py::value_error(message);
-    }
-    return prepared;
+jobs::SdfInput sdfInput(const std::string& sdf, const std::string& entry) {
+    if (sdf.find('{') != std::string::npos && sdf.find('(') != std::string::npos) return {"", entry, sdf};
+    return {sdf, entry, ""};
 }
+
+[[noreturn]] void raise(const jobs::JobError& error) {
+    std::string message;
+    for (const auto& d : error.diagnostics) message += shaders::formatDiagnostic(d) + "\n";
+    message += error.message;
+    if (error.failure == jobs::Failure::Usage || !error.diagnostics.empty()) throw py::value_error(message);
+    throw std::runtime_error(message);
+}
+
+shaders::PreparedSdf prepare(const jobs::SdfInput& input) {
+    auto opened = jobs::openSdf(input, "sdfwb");
+    if (!opened) raise(opened.error);
+    return opened.report->prepared;
+}
+
+// The report's JSON (jobs/JobJson.h) as Python objects: the same keys `--json` prints.
+py::object fromJson(const std::string& json) { return py::module_::import("json").attr("loads")(json); }
 
 py::array_t<float> floatArray(std::vector<py::ssize_t> shape) { return py::array_t<float>(shape); }
 
 py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_t n, std::uint64_t seed, float time,
                 float gradientStep, std::uint32_t chunk, float surfaceTolerance, const std::string& entry) {
-    sampling::SamplingJob job;
-    job.count = n;
-    job.seed = seed;
-    job.time = time;
-    job.gradientStep = gradientStep;
-    job.chunkSize = chunk;
-    job.surfaceTolerance = surfaceTolerance;
-    if (auto ok = sampling::validate(job); !ok) throw py::value_error(ok.error().message);
-    shaders::PreparedSdf prepared = prepare(sdf, entry);
+    jobs::SampleRequest request;
+    request.sdf = sdfInput(sdf, entry);
+    request.pattern = pattern;
+    request.count = n;
+    request.seed = seed;
+    request.time = time;
+    request.gradientStep = gradientStep;
+    request.chunkSize = chunk;
+    request.surfaceTolerance = surfaceTolerance;
+    if (auto error = jobs::validate(request)) raise(*error);
+    const sampling::SamplingJob job = jobs::samplingJob(request);
+    shaders::PreparedSdf prepared = prepare(request.sdf);
     auto sampler = sampling::findSampler(pattern, sampling::samplerFolders());
     if (!sampler) throw py::value_error("pattern: " + sampler.error().message);
     auto positions = floatArray({py::ssize_t(n), 3});
@@ -185,61 +188,61 @@ void save(const std::string& path, py::array_t<float, py::array::c_style | py::a
     if (!written) throw std::runtime_error(written.error().message);
 }
 
-py::list flagsList(const std::vector<sampling::AuditFlag>& flags) {
-    py::list list;
-    for (const sampling::AuditFlag& f : flags) {
-        py::dict item;
-        item["flag"] = f.name;
-        item["evidence"] = f.evidence;
-        item["share"] = f.share;
-        item["count"] = f.count;
-        py::list examples;
-        for (const glm::vec3& e : f.examples) examples.append(py::make_tuple(e.x, e.y, e.z));
-        item["examples"] = examples;
-        for (const auto& [name, value] : sampling::namedFigures(f)) item[name] = value;
-        list.append(item);
-    }
-    return list;
-}
-
-py::dict audit(const std::string& sdf, std::uint64_t samples, std::uint64_t seed, float time, const std::string& entry,
-               float probeDistance) {
-    shaders::PreparedSdf prepared = prepare(sdf, entry);
-    sampling::AuditOptions options;
-    options.samples = samples;
-    options.seed = seed;
-    options.time = time;
-    if (!(probeDistance >= 0.1f && probeDistance <= 100.0f)) throw py::value_error("probe_distance: must be 0.1..100");
-    options.probeDistance = probeDistance;
-    Expected<sampling::AuditReport> report = makeError("not run");
+py::object audit(const std::string& sdf, std::uint64_t samples, std::uint64_t seed, float time, const std::string& entry,
+                 float probeDistance) {
+    jobs::AuditRequest request;
+    request.sdf = sdfInput(sdf, entry);
+    request.samples = samples;
+    request.seed = seed;
+    request.time = time;
+    request.probeDistance = probeDistance;
+    if (auto error = jobs::validate(request)) raise(*error);
+    std::optional<jobs::JobResult<jobs::AuditJobReport>> result;
     {
         py::gil_scoped_release release;
         std::lock_guard lock(g_glMutex);
         context();
-        report = sampling::auditField(prepared, options, {});
+        result.emplace(jobs::run(request, {}));
         releaseContext();
     }
-    if (!report) throw std::runtime_error(report.error().message);
-    const auto& r = *report;
-    py::dict result;
-    result["verdict"] = r.verdict;
-    result["reason"] = r.reason;
-    result["lipschitz"] = r.lipschitz;
-    result["lipschitz_max"] = r.lipschitzMax;
-    result["lipschitz_uncertainty"] = r.lipschitzUncertainty;
-    result["safe_step_factor"] = r.safeStepFactor;
-    result["truncation_distance"] = r.truncationDistance ? py::cast(*r.truncationDistance) : py::none();
-    result["nan_fraction"] = r.nanFraction;
-    result["nan_fraction_error"] = r.nanFractionError;
-    result["discontinuities"] = r.discontinuities;
-    result["eikonal_error_mean"] = r.eikonalMean;
-    result["exactness_error_p99"] = r.exactnessP99;
-    result["surface_spacing"] = r.surfaceSpacing;
-    result["samples"] = r.samples;
-    result["flags"] = flagsList(r.flags);
-    result["entry"] = prepared.signature.entry;
-    result["seconds"] = r.seconds;
-    return result;
+    if (!*result) raise(result->error);
+    return fromJson(jobs::toJson(**result));
+}
+
+// Any request, as a dict or its JSON text (what `sdfwb --batch CMD ... --print-request` prints);
+// returns its report as `--json` prints it.
+py::object run(const py::object& given) {
+    const std::string text = py::isinstance<py::str>(given)
+                                 ? given.cast<std::string>()
+                                 : py::module_::import("json").attr("dumps")(given).cast<std::string>();
+    auto request = jobs::requestFromJson(text);
+    if (!request) throw py::value_error(request.error().message);
+    std::string report;
+    std::optional<jobs::JobError> failure;
+    {
+        py::gil_scoped_release release;
+        std::unique_lock lock(g_glMutex, std::defer_lock);
+        if (jobs::needsGl(*request)) {
+            lock.lock();
+            context();
+        }
+        std::visit(
+            [&](const auto& r) {
+                if (auto error = jobs::validate(r)) {
+                    failure = *error;
+                    return;
+                }
+                auto result = jobs::run(r, {});
+                if (result)
+                    report = jobs::toJson(*result);
+                else
+                    failure = result.error;
+            },
+            *request);
+        if (lock.owns_lock()) releaseContext();
+    }
+    if (failure) raise(*failure);
+    return fromJson(report);
 }
 
 py::list listSdfs() {
@@ -280,6 +283,10 @@ PYBIND11_MODULE(sdfwb, m) {
           py::arg("entry") = "", py::arg("probe_distance") = 3.0f,
           "Field audit: verdict (the most severe finding: exact, conservative, non-conservative, truncated, discontinuous,\n"
           "nan), flags (every finding with its evidence and up to 16 example points) and figures.");
+    m.def("run", &run, py::arg("request"),
+          "Runs one request (a dict, or its JSON text) of any kind: render, animate, sample, audit, merge, list, bench.\n"
+          "The keys are those `sdfwb --batch CMD ... --print-request` prints; absent keys keep their defaults, unknown keys\n"
+          "are errors. Returns the report as a dict, with the keys `--json` prints. The GIL is released while it runs.");
     m.def("list_sdfs", &listSdfs,
           "The dataset: one dict per SDF (name, category, declared_type, animated, path, author, license).");
 }

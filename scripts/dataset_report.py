@@ -37,7 +37,7 @@ def run(*arguments):
     return result.stdout
 
 
-entries = json.loads(run("list", "--json"))
+entries = json.loads(run("list", "--json"))["sdfs"]
 work = tempfile.mkdtemp(prefix="sdfwb-report-")
 gl = ""
 rows = []

@@ -2,6 +2,8 @@
 
 #include "BatchCommands.h"
 
+#include <jobs/JobJson.h>
+
 #include <core/Log.h>
 #include <core/Regex.h>
 
@@ -13,6 +15,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 #include <cstdio>
@@ -43,12 +46,15 @@ const char* const kOverview =
     "  audit    analyse the field: exact, conservative, non-conservative, truncated, discontinuous, nan\n"
     "  list     list the dataset (name, category, declared type, animated)\n"
     "  bench    measure error against run time (tracer, samplers, gradients, audit) into a report\n"
+    "  request  run one request given as JSON (FILE or - for stdin); every command's --print-request\n"
+    "           prints the JSON its options make\n"
     "\n"
     "<SDF> arguments take a dataset name (any case) or a path to a .glsl file. <Pattern> takes a\n"
     "built-in pattern (grid, image, jitter, rand, surface, near, metropolis, metropolis_curvature),\n"
     "a path to a sampler .glsl file, or the name of one in $SDFWB_SAMPLER_PATH or\n"
     "~/.local/share/sdfwb/samplers. A job file holds one batch command per line, as typed after\n"
-    "--batch ('#' starts a comment); it runs no shell and stops at the first failing step.\n"
+    "--batch, or one JSON request per line ('#' starts a comment); it runs no shell and stops at the\n"
+    "first failing step.\n"
     "exit codes: 0 success, 1 the work failed, 2 bad arguments, 3 no OpenGL 4.3 context,\n"
     "130 interrupted (no partial file is left)\n";
 
@@ -112,7 +118,16 @@ void addEntryOption(CLI::App& app, std::string& entry) {
         ->check(entryCheck());
 }
 
-void addOutputFlags(CLI::App& app, OutputOptions& output) {
+// How a parsed command ends: its output flags, and --print-request (the request as JSON, no work).
+struct Ending {
+    OutputOptions output;
+    bool printRequest = false;
+};
+
+void addOutputFlags(CLI::App& app, Ending& ending) {
+    OutputOptions& output = ending.output;
+    app.add_flag("--print-request", ending.printRequest,
+                 "print the request as JSON (for `sdfwb --batch request`, job files and Python's sdfwb.run) and stop");
     app.add_flag("--quiet,-q", output.quiet, "print errors only");
     app.add_flag("--json", output.json, "print a machine-readable report on stdout");
     app.add_flag("--progress-lines", output.progressLines, "print 'progress DONE TOTAL' lines on stderr (for front ends)");
@@ -144,9 +159,9 @@ struct FrameOptions {
     bool planeNoClip = false;
 };
 
-void addFrameOptions(CLI::App& app, RenderJob& job, FrameOptions& options) {
-    app.add_option("--sdf", job.sdf, "dataset name or path to a .glsl file")->required();
-    addEntryOption(app, job.entry);
+void addFrameOptions(CLI::App& app, jobs::FrameRequest& job, FrameOptions& options) {
+    app.add_option("--sdf", job.sdf.sdf, "dataset name or path to a .glsl file")->required();
+    addEntryOption(app, job.sdf.entry);
     app.add_option("--size", options.size, "image size WxH")->capture_default_str();
     app.add_option("--time", job.time, "time in seconds for animated SDFs (start time for animate)")
         ->capture_default_str()
@@ -178,7 +193,7 @@ void addFrameOptions(CLI::App& app, RenderJob& job, FrameOptions& options) {
 }
 
 // Returns an exit code when an option is malformed.
-std::optional<int> finishFrameOptions(RenderJob& job, const FrameOptions& options) {
+std::optional<int> finishFrameOptions(jobs::FrameRequest& job, const FrameOptions& options) {
     auto parsedSize = parseSize(options.size);
     if (!parsedSize) {
         printError("--size: expected WxH with integers from 1 to 16384, got '" + options.size + "'");
@@ -224,50 +239,56 @@ std::optional<int> finishFrameOptions(RenderJob& job, const FrameOptions& option
     return std::nullopt;
 }
 
+// The common end of every command: print the request, stop (Check), or run it.
+int finish(const jobs::Request& request, const Ending& ending, Mode mode) {
+    if (ending.printRequest) {
+        std::printf("%s\n", jobs::toJson(request, 2).c_str());
+        return kExitOk;
+    }
+    if (mode == Mode::Check) return kExitOk;
+    if (ending.output.quiet || (ending.output.json && !std::holds_alternative<jobs::RenderRequest>(request)))
+        log::setMinimumLevel(log::Level::Warning);
+    return runRequest(request, ending.output);
+}
+
 int runRenderCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Sphere-trace an SDF into an image, without a display.", "sdfwb --batch render");
-    RenderJob job;
-    OutputOptions output;
+    jobs::RenderRequest request;
+    Ending ending;
     FrameOptions options;
-    addFrameOptions(app, job, options);
-    app.add_option("--output", job.output, "image file: .png, .jpg or .exr")->required();
-    addOutputFlags(app, output);
+    addFrameOptions(app, request.frame, options);
+    app.add_option("--output", request.output, "image file: .png, .jpg or .exr")->required();
+    addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch render", arguments)) return *exit;
-    if (auto exit = finishFrameOptions(job, options)) return *exit;
-    if (mode == Mode::Check) return kExitOk;
-    if (output.quiet) log::setMinimumLevel(log::Level::Warning);
-    return runRender(job, output);
+    if (auto exit = finishFrameOptions(request.frame, options)) return *exit;
+    return finish(request, ending, mode);
 }
 
 int runAnimateCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Render an MP4 (H.264) of an SDF: over time, as a turntable, or both.", "sdfwb --batch animate");
-    AnimateJob job;
-    OutputOptions output;
+    jobs::AnimateRequest request;
+    Ending ending;
     FrameOptions options;
-    addFrameOptions(app, job.frame, options);
-    app.add_option("--output", job.frame.output, "video file: .mp4")->required();
-    app.add_option("--seconds", job.seconds, "length of the clip (up to 3600)")
+    addFrameOptions(app, request.frame, options);
+    app.add_option("--output", request.output, "video file: .mp4")->required();
+    app.add_option("--seconds", request.seconds, "length of the clip (up to 3600)")
         ->capture_default_str()
         ->check(numberCheck(true))
         ->check(CLI::Range(0.0f, 3600.0f));
-    app.add_option("--fps", job.framesPerSecond, "frames per second")->capture_default_str()->check(CLI::Range(1, 240));
-    app.add_flag("--turntable", job.turntable, "orbit the camera once around the Y axis");
-    addOutputFlags(app, output);
+    app.add_option("--fps", request.framesPerSecond, "frames per second")->capture_default_str()->check(CLI::Range(1, 240));
+    app.add_flag("--turntable", request.turntable, "orbit the camera once around the Y axis");
+    addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch animate", arguments)) return *exit;
-    if (auto exit = finishFrameOptions(job.frame, options)) return *exit;
-    if (mode == Mode::Check) return kExitOk;
-    if (output.quiet || output.json) log::setMinimumLevel(log::Level::Warning);
-    return runAnimate(job, output);
+    if (auto exit = finishFrameOptions(request.frame, options)) return *exit;
+    return finish(request, ending, mode);
 }
 
 int runListCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("List the dataset's SDFs.", "sdfwb --batch list");
-    OutputOptions output;
-    addOutputFlags(app, output);
+    Ending ending;
+    addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch list", arguments)) return *exit;
-    if (mode == Mode::Check) return kExitOk;
-    if (output.quiet || output.json) log::setMinimumLevel(log::Level::Warning);
-    return runList(output);
+    return finish(jobs::ListRequest{}, ending, mode);
 }
 
 // "3/8" -> 3, 8
@@ -282,11 +303,11 @@ bool parseShard(const std::string& text, std::uint32_t& index, std::uint32_t& co
 
 int runSampleCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Sample an SDF: N rows of (position, distance, raw gradient).", "sdfwb --batch sample");
-    SampleCommand command;
-    OutputOptions output;
+    jobs::SampleRequest command;
+    Ending ending;
     std::string shard;
-    app.add_option("--sdf", command.sdf, "dataset name or path to a .glsl file")->required();
-    addEntryOption(app, command.entry);
+    app.add_option("--sdf", command.sdf.sdf, "dataset name or path to a .glsl file")->required();
+    addEntryOption(app, command.sdf.entry);
     app.add_option("--pattern,-p", command.pattern,
                    "grid, image, jitter, rand, surface, near, metropolis, metropolis_curvature, or a sampler file")
         ->required();
@@ -306,40 +327,35 @@ int runSampleCommand(const Arguments& arguments, Mode mode) {
                    "|f| at which the rays of surface, near and metropolis stop (accuracy against time: docs/benchmarks.md)")
         ->capture_default_str()
         ->check(numberCheck(true));
-    addOutputFlags(app, output);
+    addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch sample", arguments)) return *exit;
     if (!shard.empty() && !parseShard(shard, command.shardIndex, command.shardCount)) {
         printError("--shard: expected K/COUNT with 0 <= K < COUNT, got '" + shard + "'");
         return kExitUsage;
     }
-    if (mode == Mode::Check) return kExitOk;
-    if (output.quiet || output.json) log::setMinimumLevel(log::Level::Warning);
-    return runSample(command, output);
+    return finish(command, ending, mode);
 }
 
 int runMergeCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Join shard files (from --shard K/COUNT) into the file the single run writes.", "sdfwb --batch merge");
-    std::string outputFile, format;
-    std::vector<std::string> parts;
-    OutputOptions output;
-    app.add_option("--output,-o", outputFile, "merged file: .bin, .npz or .ply")->required();
-    app.add_option("--format", format, "bin, npz or ply (default: from the output's extension)");
-    app.add_option("parts", parts, "shard files (.npz/.ply are ordered by their metadata, .bin as given)")->required();
-    addOutputFlags(app, output);
+    jobs::MergeRequest command;
+    Ending ending;
+    app.add_option("--output,-o", command.output, "merged file: .bin, .npz or .ply")->required();
+    app.add_option("--format", command.format, "bin, npz or ply (default: from the output's extension)");
+    app.add_option("parts", command.parts, "shard files (.npz/.ply are ordered by their metadata, .bin as given)")->required();
+    addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch merge", arguments)) return *exit;
-    if (mode == Mode::Check) return kExitOk;
-    if (output.quiet || output.json) log::setMinimumLevel(log::Level::Warning);
-    return runMerge(outputFile, format, parts, output);
+    return finish(command, ending, mode);
 }
 
 int runAuditCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Analyse an SDF's field: exact, conservative, non-conservative, truncated, discontinuous or NaN?",
                  "sdfwb --batch audit");
-    AuditCommand command;
-    OutputOptions output;
+    jobs::AuditRequest command;
+    Ending ending;
     std::string plane;
-    app.add_option("--sdf", command.sdf, "dataset name or path to a .glsl file")->required();
-    addEntryOption(app, command.entry);
+    app.add_option("--sdf", command.sdf.sdf, "dataset name or path to a .glsl file")->required();
+    addEntryOption(app, command.sdf.entry);
     app.add_option("--samples", command.samples, "random points (as many near-surface and surface points)")
         ->capture_default_str()
         ->check(CLI::Range(std::uint64_t(64), std::uint64_t(100000000)));
@@ -354,29 +370,28 @@ int runAuditCommand(const Arguments& arguments, Mode mode) {
         ->capture_default_str()
         ->check(numberCheck(true))
         ->check(CLI::Range(0.1f, 100.0f));
-    addOutputFlags(app, output);
+    addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch audit", arguments)) return *exit;
     if (!plane.empty()) {
         char tail;
-        float* n = command.planeNormal;
-        if (std::sscanf(plane.c_str(), " %f , %f , %f , %f %c", &n[0], &n[1], &n[2], &command.planeOffset, &tail) != 4 ||
-            (n[0] == 0 && n[1] == 0 && n[2] == 0)) {
+        jobs::PlaneSpec spec;
+        glm::vec3& n = spec.normal;
+        if (std::sscanf(plane.c_str(), " %f , %f , %f , %f %c", &n.x, &n.y, &n.z, &spec.offset, &tail) != 4 ||
+            n == glm::vec3(0.0f)) {
             printError("--plane: expected NX,NY,NZ,OFFSET with a non-zero normal, got '" + plane + "'");
             return kExitUsage;
         }
-        command.plane = true;
+        command.plane = spec;
     }
-    if (mode == Mode::Check) return kExitOk;
-    if (output.quiet || output.json) log::setMinimumLevel(log::Level::Warning);
-    return runAudit(command, output);
+    return finish(command, ending, mode);
 }
 
 int runBenchCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Measure error against run time (sphere tracer, surface/near samplers, gradients, audit) on this "
                  "machine and write a report: benchmarks.md, CSV tables and plots.",
                  "sdfwb --batch bench");
-    BenchCommand command;
-    OutputOptions output;
+    jobs::BenchRequest command;
+    Ending ending;
     app.add_option("--output,-o", command.outputDirectory, "report folder (benchmarks.md, *.csv, images/*.png)")
         ->capture_default_str();
     app.add_option("--repeats", command.repeats, "timed repeats per configuration (the spread comes from these)")
@@ -384,11 +399,43 @@ int runBenchCommand(const Arguments& arguments, Mode mode) {
         ->check(CLI::Range(1, 100));
     app.add_flag("--quick", command.quick, "fewer and smaller configurations (a smoke run, not for the report)");
     app.add_flag("--no-plots", command.noPlots, "write the CSV tables and benchmarks.md without running the plotting script");
-    addOutputFlags(app, output);
+    addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch bench", arguments)) return *exit;
-    if (mode == Mode::Check) return kExitOk;
-    if (output.quiet || output.json) log::setMinimumLevel(log::Level::Warning);
-    return runBench(command, output);
+    return finish(command, ending, mode);
+}
+
+// Reads a request's JSON from a file, or from stdin for "-".
+std::optional<std::string> readRequestText(const std::string& source) {
+    std::ostringstream text;
+    if (source == "-") {
+        text << std::cin.rdbuf();
+    } else {
+        std::ifstream file(source, std::ios::binary);
+        if (!file) {
+            printError("request: '" + source + "': cannot read the file");
+            return std::nullopt;
+        }
+        text << file.rdbuf();
+    }
+    return text.str();
+}
+
+int runRequestCommand(const Arguments& arguments, Mode mode) {
+    CLI::App app("Run one request given as JSON (what --print-request prints; the workbench starts its jobs this way).",
+                 "sdfwb --batch request");
+    std::string source;
+    Ending ending;
+    app.add_option("file", source, "a .json file holding one request, or - for stdin")->required();
+    addOutputFlags(app, ending);
+    if (auto exit = parse(app, "--batch request", arguments)) return *exit;
+    auto text = readRequestText(source);
+    if (!text) return kExitUsage;
+    auto request = jobs::requestFromJson(*text);
+    if (!request) {
+        printError((source == "-" ? std::string("<stdin>") : source) + ": " + request.error().message);
+        return kExitUsage;
+    }
+    return finish(*request, ending, mode);
 }
 
 // Every batch command, once: the dispatch, the job-file check and the messages read this table.
@@ -398,7 +445,7 @@ struct BatchCommandEntry {
 };
 constexpr BatchCommandEntry kBatchCommands[] = {
     {"render", runRenderCommand}, {"animate", runAnimateCommand}, {"sample", runSampleCommand}, {"merge", runMergeCommand},
-    {"audit", runAuditCommand},   {"list", runListCommand},       {"bench", runBenchCommand},
+    {"audit", runAuditCommand},   {"list", runListCommand},       {"bench", runBenchCommand},   {"request", runRequestCommand},
 };
 
 const BatchCommandEntry* findBatchCommand(const std::string& name) {
@@ -461,34 +508,52 @@ std::optional<Arguments> splitWords(const std::string& line, std::string& error)
 int runJobText(const std::string& text, const std::string& name, Mode mode) {
     std::istringstream file(text);
     // Check every line before running any, so a typo on line 9 does not waste lines 1-8.
-    std::vector<std::pair<int, Arguments>> steps;
+    struct Step {
+        int line = 0;
+        Arguments words;                      // a command as typed after --batch
+        std::optional<jobs::Request> request; // or a request's JSON on one line
+        std::string name() const { return request ? jobs::kindName(*request) : words.front(); }
+    };
+    std::vector<Step> steps;
     std::string line;
     int lineNumber = 0;
     while (std::getline(file, line)) {
         ++lineNumber;
+        const std::string where = name + ":" + std::to_string(lineNumber) + ": ";
+        if (const auto first = line.find_first_not_of(" \t\r"); first != std::string::npos && line[first] == '{') {
+            auto request = jobs::requestFromJson(line);
+            if (!request) {
+                printError(where + request.error().message);
+                return kExitUsage;
+            }
+            steps.push_back({lineNumber, {}, std::move(*request)});
+            continue;
+        }
         std::string error;
         auto words = splitWords(line, error);
         if (!words) {
-            printError(name + ":" + std::to_string(lineNumber) + ": " + error);
+            printError(where + error);
             return kExitUsage;
         }
         if (words->empty()) continue;
         if (!findBatchCommand(words->front())) {
-            printError(name + ":" + std::to_string(lineNumber) + ": unknown command '" + words->front() + "' (" +
-                       batchCommandNames() + ")");
+            printError(where + "unknown command '" + words->front() + "' (" + batchCommandNames() + ", or a JSON request)");
             return kExitUsage;
         }
-        steps.emplace_back(lineNumber, std::move(*words));
+        steps.push_back({lineNumber, std::move(*words), std::nullopt});
     }
     if (steps.empty()) {
         printError(name + ": the job file has no steps");
         return kExitUsage;
     }
-    for (const auto& [number, words] : steps) {
-        Arguments arguments(words.begin() + 1, words.end());
-        int exitCode = runBatchCommand(words.front(), arguments, mode);
+    for (const Step& step : steps) {
+        int exitCode = kExitOk;
+        if (step.request)
+            exitCode = mode == Mode::Check ? kExitOk : runRequest(*step.request, OutputOptions{});
+        else
+            exitCode = runBatchCommand(step.words.front(), Arguments(step.words.begin() + 1, step.words.end()), mode);
         if (exitCode != kExitOk) {
-            printError(name + ":" + std::to_string(number) + ": step '" + words.front() + "' failed (exit code " +
+            printError(name + ":" + std::to_string(step.line) + ": step '" + step.name() + "' failed (exit code " +
                        std::to_string(exitCode) + "); later steps not run");
             return exitCode;
         }
@@ -552,9 +617,9 @@ std::optional<int> commandLine(const Arguments& arguments, Mode mode) {
             printError("--sample: expected <Pattern> <N> <SDF> <outfile>; see sdfwb --help");
             return kExitUsage;
         }
-        SampleCommand command;
+        jobs::SampleRequest command;
         command.pattern = arguments[1];
-        command.sdf = arguments[3];
+        command.sdf.sdf = arguments[3];
         command.output = arguments[4];
         static const std::regex digits(R"(^\d{1,19}$)", kLinearRegex);
         if (!std::regex_match(arguments[2], digits)) {

@@ -1,7 +1,8 @@
 #include "BatchProcess.h"
 
+#include <jobs/JobJson.h>
+
 #include <QCoreApplication>
-#include <QJsonDocument>
 #include <QProcess>
 
 namespace sdfwb::app {
@@ -17,7 +18,7 @@ BatchProcess::~BatchProcess() {
 
 bool BatchProcess::isRunning() const { return m_process && m_process->state() != QProcess::NotRunning; }
 
-bool BatchProcess::start(const QStringList& arguments) {
+bool BatchProcess::start(const jobs::Request& request) {
     if (isRunning()) return false;
     m_process = new QProcess(this);
     m_errors.clear();
@@ -37,7 +38,7 @@ bool BatchProcess::start(const QStringList& arguments) {
         process->deleteLater();
         bool ok = status == QProcess::NormalExit && exitCode == 0;
         bool cancelled = status == QProcess::NormalExit && exitCode == 130;
-        QJsonObject report = QJsonDocument::fromJson(process->readAllStandardOutput()).object();
+        const std::string report = process->readAllStandardOutput().toStdString();
         QString message = m_errors.trimmed();
         if (cancelled)
             message = tr("Cancelled; nothing was written.");
@@ -47,8 +48,10 @@ bool BatchProcess::start(const QStringList& arguments) {
             message = tr("Failed (exit code %1).").arg(exitCode);
         emit finished(ok, cancelled, report, message);
     });
-    const QStringList sdfArguments = m_sdfArguments && arguments.contains("--sdf") ? m_sdfArguments() : QStringList{};
-    m_process->start(m_executable, QStringList{"--batch"} + arguments + sdfArguments + QStringList{"--json", "--progress-lines"});
+    m_process->start(m_executable, {"--batch", "request", "-", "--json", "--progress-lines"});
+    const std::string json = jobs::toJson(request);
+    m_process->write(json.data(), qint64(json.size()));
+    m_process->closeWriteChannel();
     return true;
 }
 

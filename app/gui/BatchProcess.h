@@ -1,14 +1,15 @@
 #pragma once
-// Runs one `sdfwb --batch ...` command as a child process for the workbench: long jobs (sampling,
-// video export) stay off the UI thread and out of the GUI's GL context, and Cancel is a signal
-// the batch commands already handle (they leave no partial file).
+// Runs one job (a typed request, jobs/Requests.h) as a child process for the workbench:
+// `sdfwb --batch request - --json --progress-lines` with the request's JSON on stdin, so long jobs
+// stay off the UI thread and out of the GUI's GL context, and Cancel is a signal the batch
+// commands already handle (they leave no partial file). The report comes back as its JSON.
 
-#include <QJsonObject>
+#include <jobs/Requests.h>
+
 #include <QObject>
 #include <QString>
-#include <QStringList>
 
-#include <functional>
+#include <string>
 
 class QProcess;
 
@@ -24,23 +25,21 @@ public:
     void setExecutable(const QString& path) { m_executable = path; }
     const QString& executable() const { return m_executable; }
 
-    // Starts `sdfwb --batch <arguments> --json --progress-lines`. False when one is running.
-    bool start(const QStringList& arguments);
-    // Arguments added to every command that names an SDF (--sdf): the document's --entry.
-    void setSdfArguments(std::function<QStringList()> provider) { m_sdfArguments = std::move(provider); }
+    // Starts the request in a child. False when one is running.
+    bool start(const jobs::Request& request);
     void cancel();
     bool isRunning() const;
 
 signals:
     void progress(quint64 done, quint64 total);
-    // ok: exit code 0; report: the command's --json output; message: its error lines, or why it stopped.
-    void finished(bool ok, bool cancelled, const QJsonObject& report, const QString& message);
+    // ok: exit code 0; report: the report's JSON (read it with jobs::reportFromJson); message: the
+    // child's error lines, or why it stopped.
+    void finished(bool ok, bool cancelled, const std::string& report, const QString& message);
 
 private:
     void readStandardError();
 
     QString m_executable;
-    std::function<QStringList()> m_sdfArguments;
     QProcess* m_process = nullptr;
     QString m_errors;
     QByteArray m_pending;

@@ -3,6 +3,7 @@
 #include "BatchProcess.h"
 
 #include <core/Log.h>
+#include <jobs/JobJson.h>
 #include <renderer/ImageIO.h>
 #include <widgets/ExportDialog.h>
 #include <widgets/ViewportWidget.h>
@@ -11,19 +12,25 @@
 
 namespace sdfwb::app {
 
-ExportController::ExportController(QWidget* window, widgets::ViewportWidget* viewport, std::function<QString()> currentSdf,
+ExportController::ExportController(QWidget* window, widgets::ViewportWidget* viewport, std::function<jobs::SdfInput()> currentSdf,
                                    QObject* parent)
     : QObject(parent), m_window(window), m_viewport(viewport), m_currentSdf(std::move(currentSdf)),
       m_process(new BatchProcess(this)) {
     connect(m_process, &BatchProcess::progress, this, [this](quint64 done, quint64 total) {
         if (m_videoDialog) m_videoDialog->setProgress(done, total);
     });
-    connect(m_process, &BatchProcess::finished, this, [this](bool ok, bool, const QJsonObject& report, const QString& error) {
-        QString message = ok ? tr("Wrote %1: %2 frames at %3 fps.")
-                                   .arg(report["output"].toString())
-                                   .arg(report["frames"].toInt())
-                                   .arg(report["fps"].toInt())
-                             : error;
+    connect(m_process, &BatchProcess::finished, this, [this](bool ok, bool, const std::string& json, const QString& error) {
+        QString message = error;
+        auto report = ok ? jobs::reportFromJson<jobs::AnimateReport>(json) : Expected<jobs::AnimateReport>(makeError(""));
+        if (ok && !report) {
+            ok = false;
+            message = QString::fromStdString(report.error().message);
+        }
+        if (ok)
+            message = tr("Wrote %1: %2 frames at %3 fps.")
+                          .arg(QString::fromStdString(report->output))
+                          .arg(report->frames)
+                          .arg(report->framesPerSecond);
         if (m_videoDialog) {
             m_videoDialog->setRunning(false);
             m_videoDialog->setMessage(message, !ok);
@@ -35,7 +42,6 @@ ExportController::ExportController(QWidget* window, widgets::ViewportWidget* vie
 
 void ExportController::setExecutable(const QString& path) { m_process->setExecutable(path); }
 
-void ExportController::setSdfArguments(std::function<QStringList()> provider) { m_process->setSdfArguments(std::move(provider)); }
 bool ExportController::isExporting() const { return m_process->isRunning(); }
 
 QString ExportController::saveScreenshot(const QString& path, int width, int height) {
@@ -82,43 +88,28 @@ void ExportController::showVideoDialog() {
     m_videoDialog->raise();
 }
 
+jobs::AnimateRequest ExportController::videoRequest(const widgets::ExportSettings& s) const {
+    jobs::AnimateRequest request;
+    jobs::FrameRequest& frame = request.frame;
+    frame.sdf = m_currentSdf();
+    frame.width = s.width;
+    frame.height = s.height;
+    frame.time = m_viewport->time();
+    frame.shading = m_viewport->shading();
+    frame.trace = m_viewport->trace();
+    frame.camera = m_viewport->camera();
+    frame.plane = m_viewport->plane();
+    request.output = s.output.toStdString();
+    request.seconds = float(s.seconds);
+    request.framesPerSecond = s.framesPerSecond;
+    request.turntable = s.turntable;
+    return request;
+}
+
 void ExportController::startVideo(const widgets::ExportSettings& s) {
-    QString sdf = m_currentSdf();
-    if (sdf.isEmpty()) {
-        m_videoDialog->setMessage(tr("Save the SDF first: the export reads the file."), true);
-        return;
-    }
-    const renderer::Camera& camera = m_viewport->camera();
-    const renderer::ShadingSettings& shading = m_viewport->shading();
-    auto vec = [](const glm::vec3& v) { return QString("%1,%2,%3").arg(v.x, 0, 'g', 9).arg(v.y, 0, 'g', 9).arg(v.z, 0, 'g', 9); };
-    QStringList arguments = {"animate",
-                             "--sdf",
-                             sdf,
-                             "--output",
-                             s.output,
-                             "--size",
-                             QString("%1x%2").arg(s.width).arg(s.height),
-                             "--seconds",
-                             QString::number(s.seconds, 'g', 9),
-                             "--fps",
-                             QString::number(s.framesPerSecond),
-                             "--shading",
-                             shaders::shadingModeName(shading.mode),
-                             "--matcap",
-                             QString::fromStdString(shading.matcap),
-                             "--camera",
-                             vec(camera.position),
-                             "--target",
-                             vec(camera.target),
-                             "--fov",
-                             QString::number(camera.fovYDegrees, 'g', 9),
-                             "--time",
-                             QString::number(m_viewport->time(), 'g', 9)};
-    if (s.turntable) arguments << "--turntable";
-    if (shading.ambientOcclusion) arguments << "--ao";
     m_videoDialog->setRunning(true);
     m_videoDialog->setMessage(tr("Exporting..."), false);
-    m_process->start(arguments);
+    m_process->start(videoRequest(s));
 }
 
 } // namespace sdfwb::app

@@ -3,6 +3,8 @@
 // and animations (F6: `sdfwb --batch animate` as a child process with the viewport's camera and
 // shading, so the UI stays responsive and Cancel leaves no file).
 
+#include <jobs/Requests.h>
+
 #include <QObject>
 #include <QString>
 
@@ -21,14 +23,11 @@ class BatchProcess;
 class ExportController : public QObject {
     Q_OBJECT
 public:
-    ExportController(QWidget* window, widgets::ViewportWidget* viewport, std::function<QString()> currentSdf,
+    ExportController(QWidget* window, widgets::ViewportWidget* viewport, std::function<jobs::SdfInput()> currentSdf,
                      QObject* parent = nullptr);
 
     void setExecutable(const QString& path);
 
-    // Extra arguments for commands that name the SDF (the entry point).
-
-    void setSdfArguments(std::function<QStringList()> provider);
     void showScreenshotDialog();
     void showVideoDialog();
     widgets::ExportDialog* screenshotDialog() const { return m_screenshotDialog; }
@@ -37,6 +36,9 @@ public:
     // Renders and writes a screenshot; returns an error message, empty on success.
     QString saveScreenshot(const QString& path, int width, int height);
     bool isExporting() const;
+    // The animate request an export with `settings` starts: the viewport's whole state (camera,
+    // shading, trace settings, cutting plane, markers, time) and the document's current text.
+    jobs::AnimateRequest videoRequest(const widgets::ExportSettings& settings) const;
 
 signals:
     void videoFinished(bool ok, const QString& message);
@@ -46,7 +48,7 @@ private:
 
     QWidget* m_window;
     widgets::ViewportWidget* m_viewport;
-    std::function<QString()> m_currentSdf;
+    std::function<jobs::SdfInput()> m_currentSdf;
     BatchProcess* m_process;
     widgets::ExportDialog* m_screenshotDialog = nullptr;
     widgets::ExportDialog* m_videoDialog = nullptr;

@@ -107,21 +107,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     resizeDocks({m_editorDock, m_viewportDock}, {560, 840}, Qt::Horizontal);
 
     m_document = new SdfDocument(m_viewport, this);
-    m_sampling = new SamplingController(
-        this, [this] { return m_document->path(); }, this);
-    m_exports = new ExportController(
-        this, m_viewport, [this] { return m_document->path(); }, this);
+    // Every job (sampling, video, plane readouts) runs on the document's input: the text the
+    // viewport shows (saved or not), its path for includes, and its entry point.
+    auto currentSdf = [this] { return m_document->input(); };
+    m_sampling = new SamplingController(this, currentSdf, this);
+    m_exports = new ExportController(this, m_viewport, currentSdf, this);
     m_playback = new PlaybackController(m_timeBar, m_viewport, this);
-    m_plane = new PlaneController(
-        m_planePanel, m_viewport, [this] { return m_document->path(); }, this);
+    m_plane = new PlaneController(m_planePanel, m_viewport, currentSdf, this);
     m_files = new FileController(this, m_editor, m_document, m_viewport, this);
-    // The entry point: every child job (plane readouts, sampling, video) gets the document's --entry.
-    auto entryArguments = [this] {
-        return m_document->entry().isEmpty() ? QStringList{} : QStringList{"--entry", m_document->entry()};
-    };
-    m_sampling->setSdfArguments(entryArguments);
-    m_exports->setSdfArguments(entryArguments);
-    m_plane->setSdfArguments(entryArguments);
     {
         QToolBar* bar = addToolBar(tr("SDF"));
         bar->setObjectName("SdfToolBar");

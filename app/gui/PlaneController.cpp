@@ -5,14 +5,14 @@
 #include <widgets/PlanePanel.h>
 #include <widgets/ViewportWidget.h>
 
-#include <QJsonArray>
+#include <jobs/JobJson.h>
 
 #include <glm/geometric.hpp>
 
 namespace sdfwb::app {
 
 PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWidget* viewport,
-                                 std::function<QString()> currentSdf, QObject* parent)
+                                 std::function<jobs::SdfInput()> currentSdf, QObject* parent)
     : QObject(parent), m_panel(panel), m_viewport(viewport), m_currentSdf(std::move(currentSdf)),
       m_process(new BatchProcess(this)) {
     m_debounce.setSingleShot(true);
@@ -44,35 +44,30 @@ PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWi
         m_debounce.start();
         emit markersShown(int(examples.size()));
     });
-    connect(m_process, &BatchProcess::finished, this, [this](bool ok, bool, const QJsonObject& report, const QString& message) {
-        if (!ok) {
-            m_panel->setReadoutMessage(message);
+    connect(m_process, &BatchProcess::finished, this, [this](bool ok, bool, const std::string& json, const QString& message) {
+        auto report = ok ? jobs::reportFromJson<jobs::AuditJobReport>(json)
+                         : Expected<jobs::AuditJobReport>(makeError(message.toStdString()));
+        if (report && !report->readout) report = makeError("plane readouts: the report holds no readout");
+        if (!report) {
+            m_panel->setReadoutMessage(QString::fromStdString(report.error().message));
         } else {
+            const sampling::PlaneReadout& r = *report->readout;
             widgets::PlaneReadoutView view;
-            view.minimum = float(report["minimum"].toDouble());
-            view.maximum = float(report["maximum"].toDouble());
-            view.lipschitzMax = float(report["lipschitz_max"].toDouble());
-            view.lipschitz99 = float(report["lipschitz_p99"].toDouble());
-            view.shareAboveOne = report["share_above_one"].toDouble();
-            if (report["truncation_distance"].isDouble())
-                view.truncationDistance = float(report["truncation_distance"].toDouble());
-            view.discontinuities = quint64(report["discontinuities"].toInteger());
-            view.nanCount = quint64(report["nan_count"].toInteger());
-            view.points = quint64(report["points"].toInteger());
-            for (const QJsonValue& bin : report["histogram"].toArray()) view.histogram.push_back(quint64(bin.toInteger()));
-            view.safeStepFactor = float(report["safe_step_factor"].toDouble());
-            view.seconds = report["seconds"].toDouble();
-            for (const QJsonValue& item : report["flags"].toArray()) {
-                widgets::FindingView finding;
-                finding.name = item["flag"].toString();
-                finding.evidence = item["evidence"].toString();
-                for (const QJsonValue& point : item["examples"].toArray()) {
-                    const QJsonArray xyz = point.toArray();
-                    finding.examples.push_back(
-                        glm::vec3(float(xyz[0].toDouble()), float(xyz[1].toDouble()), float(xyz[2].toDouble())));
-                }
-                view.findings.push_back(std::move(finding));
-            }
+            view.minimum = r.minimum;
+            view.maximum = r.maximum;
+            view.lipschitzMax = r.lipschitzMax;
+            view.lipschitz99 = r.lipschitz99;
+            view.shareAboveOne = r.shareAboveOne;
+            view.truncationDistance = r.truncationDistance;
+            view.discontinuities = r.discontinuities;
+            view.nanCount = r.nanCount;
+            view.points = r.points;
+            view.histogram.assign(r.histogram.begin(), r.histogram.end());
+            view.safeStepFactor = r.safeStepFactor;
+            view.seconds = r.seconds;
+            for (const sampling::AuditFlag& flag : r.flags)
+                view.findings.push_back(
+                    {QString::fromStdString(flag.name), QString::fromStdString(flag.evidence), flag.examples});
             m_panel->setReadout(view);
             emit readoutUpdated();
         }
@@ -85,27 +80,19 @@ PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWi
 
 void PlaneController::setExecutable(const QString& path) { m_process->setExecutable(path); }
 
-void PlaneController::setSdfArguments(std::function<QStringList()> provider) { m_process->setSdfArguments(std::move(provider)); }
-
 void PlaneController::refresh() {
     renderer::CuttingPlane plane = m_viewport->plane();
     if (!plane.enabled) return;
-    QString sdf = m_currentSdf();
-    if (sdf.isEmpty()) {
-        m_panel->setReadoutMessage(tr("Save the SDF to get plane readouts."));
-        return;
-    }
     if (m_process->isRunning()) {
         m_pending = true; // one more run with the newest plane when this one ends
         return;
     }
-    QString spec = QString("%1,%2,%3,%4")
-                       .arg(plane.normal.x, 0, 'g', 9)
-                       .arg(plane.normal.y, 0, 'g', 9)
-                       .arg(plane.normal.z, 0, 'g', 9)
-                       .arg(plane.offset, 0, 'g', 9);
-    m_process->start(
-        {"audit", "--sdf", sdf, "--plane", spec, "--resolution", "192", "--time", QString::number(m_viewport->time(), 'g', 9)});
+    jobs::AuditRequest request;
+    request.sdf = m_currentSdf();
+    request.plane = jobs::PlaneSpec{plane.normal, plane.offset};
+    request.resolution = 192;
+    request.time = m_viewport->time();
+    m_process->start(request);
 }
 
 } // namespace sdfwb::app

@@ -3,6 +3,8 @@
 // readouts after each change (debounced) by running `sdfwb --batch audit --plane ...` as a child
 // process, so the editor and the viewport never wait for the analysis.
 
+#include <jobs/Requests.h>
+
 #include <QObject>
 #include <QTimer>
 
@@ -20,11 +22,10 @@ class BatchProcess;
 class PlaneController : public QObject {
     Q_OBJECT
 public:
-    PlaneController(widgets::PlanePanel* panel, widgets::ViewportWidget* viewport, std::function<QString()> currentSdf,
+    PlaneController(widgets::PlanePanel* panel, widgets::ViewportWidget* viewport, std::function<jobs::SdfInput()> currentSdf,
                     QObject* parent = nullptr);
     void setExecutable(const QString& path);
     // Extra arguments for commands that name the SDF (the entry point).
-    void setSdfArguments(std::function<QStringList()> provider);
     // Recomputes the readouts now (also called when the SDF changes).
     void refresh();
 
@@ -35,7 +36,7 @@ signals:
 private:
     widgets::PlanePanel* m_panel;
     widgets::ViewportWidget* m_viewport;
-    std::function<QString()> m_currentSdf;
+    std::function<jobs::SdfInput()> m_currentSdf;
     BatchProcess* m_process;
     QTimer m_debounce;
     bool m_pending = false;

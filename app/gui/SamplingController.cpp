@@ -3,25 +3,31 @@
 #include "BatchProcess.h"
 
 #include <core/Log.h>
+#include <jobs/JobJson.h>
 #include <widgets/SamplingDialog.h>
 
 namespace sdfwb::app {
 
-SamplingController::SamplingController(QWidget* window, std::function<QString()> currentSdf, QObject* parent)
+SamplingController::SamplingController(QWidget* window, std::function<jobs::SdfInput()> currentSdf, QObject* parent)
     : QObject(parent), m_window(window), m_currentSdf(std::move(currentSdf)), m_process(new BatchProcess(this)) {
     connect(m_process, &BatchProcess::progress, this, [this](quint64 done, quint64 total) {
         if (m_dialog) m_dialog->setProgress(done, total);
         emit progress(done, total);
     });
-    connect(m_process, &BatchProcess::finished, this, [this](bool ok, bool, const QJsonObject& report, const QString& error) {
+    connect(m_process, &BatchProcess::finished, this, [this](bool ok, bool, const std::string& json, const QString& error) {
         QString message = error;
+        auto report = ok ? jobs::reportFromJson<jobs::SampleReport>(json) : Expected<jobs::SampleReport>(makeError(""));
+        if (ok && !report) {
+            ok = false;
+            message = QString::fromStdString(report.error().message);
+        }
         if (ok) {
             message = tr("Wrote %1: %2 samples, %3 bad rows, %4 s (%5 M samples/s).")
-                          .arg(report["output"].toString())
-                          .arg(report["rows"].toInteger())
-                          .arg(report["bad_rows"].toInteger())
-                          .arg(report["seconds"].toDouble(), 0, 'f', 2)
-                          .arg(report["samples_per_second"].toDouble() / 1e6, 0, 'f', 2);
+                          .arg(QString::fromStdString(report->output))
+                          .arg(report->rows)
+                          .arg(report->badRows)
+                          .arg(report->seconds, 0, 'f', 2)
+                          .arg(report->samplesPerSecond / 1e6, 0, 'f', 2);
             m_dialog->setProgress(1, 1);
         }
         m_dialog->setRunning(false);
@@ -33,10 +39,6 @@ SamplingController::SamplingController(QWidget* window, std::function<QString()>
 
 void SamplingController::setExecutable(const QString& path) { m_process->setExecutable(path); }
 
-void SamplingController::setSdfArguments(std::function<QStringList()> provider) {
-    m_process->setSdfArguments(std::move(provider));
-}
-
 bool SamplingController::isRunning() const { return m_process->isRunning(); }
 
 void SamplingController::showDialog() {
@@ -46,36 +48,25 @@ void SamplingController::showDialog() {
         connect(m_dialog, &widgets::SamplingDialog::startRequested, this, &SamplingController::start);
         connect(m_dialog, &widgets::SamplingDialog::cancelRequested, m_process, &BatchProcess::cancel);
     }
-    QString sdf = m_currentSdf();
-    m_dialog->setSdfName(sdf.isEmpty() ? tr("(save the SDF first)") : sdf);
+    const jobs::SdfInput sdf = m_currentSdf();
+    m_dialog->setSdfName(sdf.sdf.empty() ? tr("untitled (the editor's text)") : QString::fromStdString(sdf.sdf));
     m_dialog->show();
     m_dialog->raise();
 }
 
 void SamplingController::start(const widgets::SamplingSettings& settings) {
     if (isRunning()) return;
-    QString sdf = m_currentSdf();
-    if (sdf.isEmpty()) {
-        m_dialog->setMessage(tr("The SDF has never been saved: save it first, sampling reads the file."), true);
-        return;
-    }
-    QStringList arguments = {"sample",
-                             "--sdf",
-                             sdf,
-                             "--pattern",
-                             settings.pattern,
-                             "-n",
-                             QString::number(settings.count),
-                             "--seed",
-                             QString::number(settings.seed),
-                             "--time",
-                             QString::number(settings.time, 'g', 9),
-                             "--output",
-                             settings.output};
-    if (!settings.format.isEmpty()) arguments << "--format" << settings.format;
+    jobs::SampleRequest request;
+    request.sdf = m_currentSdf();
+    request.pattern = settings.pattern.toStdString();
+    request.count = settings.count;
+    request.seed = settings.seed;
+    request.time = float(settings.time);
+    request.output = settings.output.toStdString();
+    request.format = settings.format.toStdString();
     m_dialog->setRunning(true);
     m_dialog->setMessage(tr("Sampling..."), false);
-    m_process->start(arguments);
+    m_process->start(request);
 }
 
 } // namespace sdfwb::app

@@ -1,6 +1,8 @@
 #pragma once
 // Runs sampling jobs for the workbench through a BatchProcess (`sdfwb --batch sample` as a child).
 
+#include <jobs/Requests.h>
+
 #include <QObject>
 #include <QString>
 
@@ -18,14 +20,11 @@ class BatchProcess;
 class SamplingController : public QObject {
     Q_OBJECT
 public:
-    // `currentSdf` returns the path of the SDF to sample (empty when the text was never saved).
-    SamplingController(QWidget* window, std::function<QString()> currentSdf, QObject* parent = nullptr);
+    // `currentSdf` gives the SDF as the viewport shows it (saved or not).
+    SamplingController(QWidget* window, std::function<jobs::SdfInput()> currentSdf, QObject* parent = nullptr);
 
     void setExecutable(const QString& path);
 
-    // Extra arguments for commands that name the SDF (the entry point).
-
-    void setSdfArguments(std::function<QStringList()> provider);
     void showDialog();
     widgets::SamplingDialog* dialog() const { return m_dialog; }
     bool isRunning() const;
@@ -39,7 +38,7 @@ private:
     void start(const widgets::SamplingSettings& settings);
 
     QWidget* m_window;
-    std::function<QString()> m_currentSdf;
+    std::function<jobs::SdfInput()> m_currentSdf;
     BatchProcess* m_process;
     widgets::SamplingDialog* m_dialog = nullptr;
 };

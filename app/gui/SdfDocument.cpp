@@ -19,18 +19,25 @@ SdfDocument::SdfDocument(widgets::ViewportWidget* viewport, QObject* parent) : Q
     connect(&m_debounce, &QTimer::timeout, this, [this] { startCheck(m_pendingText); });
 }
 
+jobs::SdfInput SdfDocument::input() const {
+    return {m_path.toStdString(), m_entry.toStdString(), (m_goodText.isEmpty() ? m_text : m_goodText).toStdString()};
+}
+
 void SdfDocument::textEdited(const QString& text) {
+    m_text = text;
     m_pendingText = text;
     m_debounce.start();
 }
 
 void SdfDocument::checkNow(const QString& text) {
+    m_text = text;
     m_debounce.stop();
     startCheck(text);
 }
 
 void SdfDocument::startCheck(const QString& text) {
     std::uint64_t generation = ++m_generation;
+    m_checkedText = text;
     std::string source = text.toStdString();
     std::string path = m_path.toStdString();
     std::string entry = m_entry.toStdString();
@@ -90,6 +97,8 @@ void SdfDocument::finishCheck(std::uint64_t generation, shaders::PreparedSdf pre
             return;
         }
         m_signature = prepared.signature;
+        m_goodText = m_checkedText;
+        m_goodSource = prepared;
         emit sdfApplied();
     });
 }

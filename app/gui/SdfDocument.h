@@ -1,8 +1,12 @@
 #pragma once
-// The SDF being edited: its file, its text, and the checking pipeline. Edits are debounced and
-// checked off the UI thread (include resolution + glslang); good text goes to the viewport, whose
-// driver compile may add diagnostics. Owns its worker threads; never blocks the UI thread.
+// The SDF being edited, the one place that holds it: its file, its text, the last text that
+// compiled (what the viewport shows), the entry point, and the checking pipeline. Edits are
+// debounced and checked off the UI thread (include resolution + glslang on the exact tracer
+// variant the viewport compiles); good text goes to the viewport, whose driver compile may add
+// diagnostics. Jobs (sampling, exports, plane readouts) take `input()`: the shown text, not the
+// file on disk. Owns its worker threads; never blocks the UI thread.
 
+#include <jobs/Requests.h>
 #include <shaders/Diagnostic.h>
 #include <shaders/SdfSource.h>
 
@@ -26,7 +30,19 @@ public:
     SdfDocument(widgets::ViewportWidget* viewport, QObject* parent = nullptr);
 
     const QString& path() const { return m_path; }
-    void setPath(const QString& path) { m_path = path; }
+    // A new file: the last good text was another file's.
+    void setPath(const QString& path) {
+        if (path != m_path) m_goodText.clear();
+        m_path = path;
+    }
+
+    // The editor's latest text, and the last text that compiled and went to the viewport.
+    const QString& text() const { return m_text; }
+    const QString& lastGoodText() const { return m_goodText; }
+    const shaders::PreparedSdf& lastGoodSource() const { return m_goodSource; }
+    // What a job runs on: the path (for includes and labels), the entry, and the viewport's text
+    // (the editor's text until something has compiled).
+    jobs::SdfInput input() const;
 
     // Schedules a check of `text` after the debounce delay; newer text supersedes older.
     void textEdited(const QString& text);
@@ -59,6 +75,10 @@ private:
     widgets::ViewportWidget* m_viewport;
     QString m_path;
     QString m_pendingText;
+    QString m_text;
+    QString m_checkedText; // the text of the newest check
+    QString m_goodText;
+    shaders::PreparedSdf m_goodSource;
     QString m_entry;
     shaders::SdfSignature m_signature;
     QTimer m_debounce;

@@ -1,5 +1,6 @@
 """The Python module as a training pipeline uses it: headless, no Qt, no copies, same bits as the CLI."""
 import gc
+import json
 import os
 import resource
 import subprocess
@@ -69,7 +70,7 @@ def test_errors_are_python_exceptions_with_clear_messages():
         sdfwb.sample("torus", "spiral", 10)
     with pytest.raises(ValueError, match="'no such shape'"):
         sdfwb.sample("no such shape", "rand", 10)
-    with pytest.raises(ValueError, match=r"<python source>:1:\d+: error: .*radius"):
+    with pytest.raises(ValueError, match=r"<source>:1:\d+: error: .*radius"):
         sdfwb.sample("float sdf(vec3 p) { return length(p) - radius; }", "rand", 10)
     with pytest.raises(ValueError, match="-n"):
         sdfwb.sample("torus", "rand", 0)
@@ -185,5 +186,46 @@ def test_foreign_code_entry_points_and_audit_flags():
     assert 0 < len(flags["truncated"]["examples"]) <= 16
     with pytest.raises(ValueError, match="entry point 'nothere' not found"):
         sdfwb.audit(SHADERTOY, entry="nothere")
-    with pytest.raises(ValueError, match="probe_distance"):
+    with pytest.raises(ValueError, match="probe.distance"):
         sdfwb.audit(SHADERTOY, entry="snake", probe_distance=0.0)
+
+
+def cli_json(*arguments):
+    env = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
+    result = subprocess.run([BINARY, "--batch", *arguments], capture_output=True, text=True, env=env)
+    assert result.returncode == 0, result.stderr
+    return json.loads(result.stdout)
+
+
+def without_timings(report):
+    return {k: v for k, v in report.items() if k not in ("seconds", "frame_ms", "render_seconds", "samples_per_second")}
+
+
+def test_requests_are_the_clis_json_and_reports_match_it():
+    # The request the CLI's options make, run from Python as a dict: the same report, figure for figure.
+    request = cli_json("audit", "--sdf", "Sphere", "--plane", "0,0,1,0.25", "--resolution", "48", "--print-request")
+    assert request["kind"] == "audit" and request["plane"] == [0.0, 0.0, 1.0, 0.25]
+    ours = sdfwb.run(request)
+    theirs = cli_json("audit", "--sdf", "Sphere", "--plane", "0,0,1,0.25", "--resolution", "48", "--json")
+    assert without_timings(ours) == without_timings(theirs)
+    assert abs(ours["minimum"] + 0.55) < 0.02 and ours["points"] > 0
+    # audit() keywords build the same request; its report has the CLI's keys.
+    report = sdfwb.audit("Sphere", samples=2000, seed=4)
+    cli = cli_json("audit", "--sdf", "Sphere", "--samples", "2000", "--seed", "4", "--json")
+    assert set(cli) <= set(report)
+    assert report["verdict"] == cli["verdict"] and report["lipschitz"] == cli["lipschitz"]
+
+
+def test_run_renders_from_a_json_string_and_names_bad_keys():
+    with tempfile.TemporaryDirectory() as folder:
+        output = os.path.join(folder, "box.png")
+        source = "float map(vec3 p) { vec3 q = abs(p) - 0.5; return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0); }"
+        report = sdfwb.run(json.dumps({"kind": "render", "source": source, "output": output, "width": 64, "height": 48,
+                                       "shading": {"mode": "steps"}}))
+        assert report["entry"] == "map" and report["width"] == 64 and os.path.getsize(output) > 0
+    with pytest.raises(ValueError, match="'shading.mod': unknown key"):
+        sdfwb.run({"kind": "render", "sdf": "Sphere", "output": "x.png", "shading": {"mod": "steps"}})
+    with pytest.raises(ValueError, match="--fps"):
+        sdfwb.run({"kind": "animate", "sdf": "Sphere", "output": "x.mp4", "fps": 0})
+    listing = sdfwb.run({"kind": "list"})
+    assert any(item["name"] == "Torus" for item in listing["sdfs"])

@@ -58,6 +58,9 @@ struct VideoWriter::Impl {
             result = avcodec_receive_packet(codec, packet);
             if (result == AVERROR(EAGAIN) || result == AVERROR_EOF) return {};
             if (result < 0) return makeError(target.string() + ": encoding failed: " + ffmpegError(result));
+            // Every frame lasts one frame period. Without a duration the MP4 muxer gives the last
+            // packet none, and players (and FFmpeg's own decoder) drop the last frame.
+            if (packet->duration <= 0) packet->duration = 1;
             av_packet_rescale_ts(packet, codec->time_base, stream->time_base);
             packet->stream_index = stream->index;
             result = av_interleaved_write_frame(format, packet);

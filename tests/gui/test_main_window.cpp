@@ -8,6 +8,7 @@
 #include <gui/PlaybackController.h>
 #include <gui/SamplingController.h>
 #include <gui/SdfDocument.h>
+#include <jobs/Requests.h>
 #include <renderer/ImageIO.h>
 #include <widgets/CameraPanel.h>
 #include <widgets/DatasetBrowser.h>
@@ -593,6 +594,129 @@ TEST(CuttingPlane, PanelDrawsThePlaneAndShowsReadouts) {
     window.planePanel()->findChild<QPushButton*>("apply_step_factor")->click();
     EXPECT_NEAR(viewport->trace().stepFactor, r.safeStepFactor, 1e-6f);
     window.grab().save(QDir::temp().filePath("sdfwb-gui-plane-window.png"));
+}
+
+// Issue 15: the video export is a typed request built from the viewport's whole state and the
+// document's current text, so its frame is the screenshot of the same state (up to H.264's loss).
+TEST(Export, Mp4FrameEqualsAScreenshotOfTheSameUnsavedState) {
+    app::MainWindow window;
+    window.resize(1000, 640);
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "Geometry/Sphere.glsl"));
+    // State the old argument list dropped: trace settings, the cutting plane, markers; and an
+    // unsaved edit (the sphere becomes a box).
+    bool applied = false;
+    QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
+    QString text = window.editor()->text();
+    text.replace("return length(p) - 0.8;",
+                 "vec3 q = abs(p) - vec3(0.55); return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0);");
+    window.editor()->setText(text);
+    ASSERT_TRUE(waitFor([&] { return applied; }));
+    ASSERT_TRUE(window.editor()->isModified());
+    renderer::ShadingSettings shading = window.viewport()->shading();
+    shading.mode = renderer::ShadingMode::Gooch;
+    shading.markers = {{0.55f, 0.55f, 0.55f}};
+    window.viewport()->setShading(shading);
+    renderer::TraceSettings trace = window.viewport()->trace();
+    trace.maxSteps = 24; // few steps: the box's silhouette shows the budget
+    trace.stepFactor = 0.6f;
+    window.viewport()->setTrace(trace);
+    renderer::CuttingPlane plane = window.viewport()->plane();
+    plane.enabled = true;
+    plane.normal = {0.3f, 0.2f, 1.0f};
+    plane.offset = 0.2f;
+    window.viewport()->setPlane(plane);
+
+    widgets::ExportSettings settings;
+    settings.output = QDir::temp().filePath(QString("sdfwb-gui-state-%1.mp4").arg(QCoreApplication::applicationPid()));
+    QFile::remove(settings.output);
+    settings.width = 320;
+    settings.height = 200;
+    settings.seconds = 0.1;
+    settings.framesPerSecond = 10;
+    const jobs::AnimateRequest request = window.exports()->videoRequest(settings);
+    EXPECT_TRUE(request.frame.trace == trace);
+    EXPECT_TRUE(request.frame.plane == plane);
+    EXPECT_TRUE(request.frame.shading == shading);
+    EXPECT_TRUE(request.frame.camera == window.viewport()->camera());
+    EXPECT_NE(request.frame.sdf.source.find("vec3(0.55)"), std::string::npos) << "the export must run the editor's text";
+
+    window.exports()->setExecutable(SDFWB_BINARY);
+    window.exports()->showVideoDialog();
+    window.exports()->videoDialog()->setSettings(settings);
+    bool done = false, ok = false;
+    QObject::connect(window.exports(), &app::ExportController::videoFinished, [&](bool success, const QString&) {
+        done = true;
+        ok = success;
+    });
+    window.exports()->videoDialog()->findChild<QPushButton*>("start")->click();
+    ASSERT_TRUE(waitFor([&] { return done; }, 60000));
+    ASSERT_TRUE(ok) << window.exports()->videoDialog()->findChild<QLabel*>("message")->text().toStdString();
+
+    // The video's first frame, decoded by the real FFmpeg.
+    const QString decoded = settings.output + ".png";
+    QProcess ffmpeg;
+    ffmpeg.start("ffmpeg", {"-v", "error", "-y", "-i", settings.output, "-frames:v", "1", decoded});
+    ASSERT_TRUE(ffmpeg.waitForFinished(30000));
+    ASSERT_EQ(ffmpeg.exitCode(), 0) << ffmpeg.readAllStandardError().toStdString();
+    QImage frame(decoded);
+    ASSERT_EQ(frame.size(), QSize(320, 200));
+
+    auto screenshot = [&](const QString& name) {
+        const QString path = QDir::temp().filePath(name);
+        EXPECT_EQ(window.exports()->saveScreenshot(path, 320, 200), QString());
+        return QImage(path).convertToFormat(QImage::Format_RGB32);
+    };
+    const QImage same = screenshot("sdfwb-gui-state-same.png");
+    plane.enabled = false;
+    window.viewport()->setPlane(plane);
+    const QImage withoutPlane = screenshot("sdfwb-gui-state-noplane.png");
+    window.viewport()->setTrace(renderer::TraceSettings{});
+    shading.mode = renderer::ShadingMode::Normals;
+    window.viewport()->setShading(shading);
+    const QImage defaults = screenshot("sdfwb-gui-state-defaults.png");
+
+    const double error = meanDifference(frame.convertToFormat(QImage::Format_RGB32), same);
+    const double planeEffect = meanDifference(same, withoutPlane);
+    const double settingsEffect = meanDifference(same, defaults);
+    std::printf("mp4 frame vs screenshot: mean |difference| %.2f / 255; the plane alone changes %.2f, the settings %.2f\n", error,
+                planeEffect, settingsEffect);
+    EXPECT_LT(error, 3.0) << "the video frame differs from the screenshot of the same state";
+    EXPECT_GT(planeEffect, 4.0 * error) << "the comparison cannot tell the plane apart";
+    EXPECT_GT(settingsEffect, 4.0 * error) << "the comparison cannot tell the settings apart";
+    QFile::remove(settings.output);
+    QFile::remove(decoded);
+}
+
+// Issue 15: the plane readouts describe the text on screen, not the file on disk.
+TEST(CuttingPlane, AnUnsavedEditChangesTheReadouts) {
+    app::MainWindow window;
+    window.resize(1000, 640);
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "Geometry/Sphere.glsl"));
+    window.plane()->setExecutable(SDFWB_BINARY);
+    int readouts = 0;
+    QObject::connect(window.plane(), &app::PlaneController::readoutUpdated, [&] { ++readouts; });
+    window.planePanel()->findChild<QPushButton*>("axis_Z")->click();
+    ASSERT_TRUE(waitFor([&] { return readouts > 0; }, 30000))
+        << window.planePanel()->findChild<QLabel*>("readouts")->text().toStdString();
+    EXPECT_NEAR(window.planePanel()->readout().minimum, -0.8f, 0.03f);
+
+    const QByteArray onDisk = [] {
+        QFile file(datasetFile("Geometry/Sphere.glsl"));
+        return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+    }();
+    QString text = window.editor()->text();
+    text.replace("return length(p) - 0.8;", "return length(p) - 0.4;");
+    const int before = readouts;
+    window.editor()->setText(text); // not saved
+    ASSERT_TRUE(waitFor([&] { return readouts > before && window.planePanel()->readout().minimum > -0.5f; }, 30000))
+        << "readouts still describe the file on disk: minimum " << window.planePanel()->readout().minimum;
+    EXPECT_NEAR(window.planePanel()->readout().minimum, -0.4f, 0.03f);
+    EXPECT_TRUE(window.editor()->isModified());
+    QFile file(datasetFile("Geometry/Sphere.glsl"));
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    EXPECT_EQ(file.readAll(), onDisk) << "the file on disk must be untouched";
 }
 
 // Issue 14: foreign code in the workbench: a Shadertoy map() opens as it is, the entry field picks

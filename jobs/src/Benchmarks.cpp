@@ -1,4 +1,4 @@
-#include "Benchmarks.h"
+#include <jobs/Benchmarks.h>
 
 #include "References.h"
 
@@ -28,7 +28,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double millisecondsSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
+double millisecondsSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
 
 // Median, minimum and maximum of repeated measurements.
 struct Spread {
@@ -70,10 +72,14 @@ struct BenchShape {
 
 const BenchShape kShapes[] = {
     {"sphere", "float sdf(vec3 p) { return length(p) - 0.6; }\n", {Shape::Sphere, 0.6, 0.0}},
-    {"torus", "float sdf(vec3 p) { vec2 q = vec2(length(p.xz) - 0.6, p.y); return length(q) - 0.25; }\n", {Shape::Torus, 0.6, 0.25}},
+    {"torus",
+     "float sdf(vec3 p) { vec2 q = vec2(length(p.xz) - 0.6, p.y); return length(q) - 0.25; }\n",
+     {Shape::Torus, 0.6, 0.25}},
 };
 
-shaders::PreparedSdf prepare(const char* glsl, const char* name) { return shaders::prepareSdf(glsl, name, {}, shaders::IncludeOptions{}); }
+shaders::PreparedSdf prepare(const char* glsl, const char* name) {
+    return shaders::prepareSdf(glsl, name, {}, shaders::IncludeOptions{});
+}
 
 struct Report {
     std::string markdown;
@@ -88,19 +94,22 @@ Expected<Report> tracerBenchmark(const BenchOptions& options) {
         float relaxation, stepFactor;
     };
     const Method methods[] = {{"plain", 1.0f, 1.0f}, {"over-relaxed 1.6", 1.6f, 1.0f}, {"step factor 0.7", 1.0f, 0.7f}};
-    std::vector<float> tolerances = options.quick ? std::vector<float>{2.0f, 0.5f} : std::vector<float>{4.0f, 2.0f, 1.0f, 0.5f, 0.25f, 0.1f, 0.05f};
+    std::vector<float> tolerances =
+        options.quick ? std::vector<float>{2.0f, 0.5f} : std::vector<float>{4.0f, 2.0f, 1.0f, 0.5f, 0.25f, 0.1f, 0.05f};
     const renderer::Camera camera;
 
     Report report;
-    report.csv = "sdf,method,epsilon_scale,steps_hits,steps_all,error_p50,error_p99,error_max,missed_pixels,hit_pixels,ms_median,ms_min,ms_max\n";
-    report.markdown = format("### Sphere tracer: hit error against steps and time\n\n"
-                             "%dx%d, default camera, step budget 512. Error = |t - t*| along the ray, in scene units, where t* is the "
-                             "exact first intersection (References.cpp, double precision), over the pixels both hit; steps per hit "
-                             "pixel are means; frame time is the median [min, max] of %d frames after a warm-up frame. The hit "
-                             "tolerance is in pixels: a hit when |f| < tolerance x the pixel footprint at t.\n\n"
-                             "| SDF | method | tolerance (px) | steps/hit | error p50 | error p99 | missed | frame ms |\n"
-                             "|---|---|---|---|---|---|---|---|\n",
-                             width, height, options.repeats);
+    report.csv = "sdf,method,epsilon_scale,steps_hits,steps_all,error_p50,error_p99,error_max,missed_pixels,hit_pixels,ms_median,"
+                 "ms_min,ms_max\n";
+    report.markdown =
+        format("### Sphere tracer: hit error against steps and time\n\n"
+               "%dx%d, default camera, step budget 512. Error = |t - t*| along the ray, in scene units, where t* is the "
+               "exact first intersection (References.cpp, double precision), over the pixels both hit; steps per hit "
+               "pixel are means; frame time is the median [min, max] of %d frames after a warm-up frame. The hit "
+               "tolerance is in pixels: a hit when |f| < tolerance x the pixel footprint at t.\n\n"
+               "| SDF | method | tolerance (px) | steps/hit | error p50 | error p99 | missed | frame ms |\n"
+               "|---|---|---|---|---|---|---|---|\n",
+               width, height, options.repeats);
     renderer::OffscreenRenderer offscreen;
     for (const BenchShape& shape : kShapes) {
         // The reference intersection of every pixel's ray, as the shader builds it.
@@ -108,7 +117,8 @@ Expected<Report> tracerBenchmark(const BenchOptions& options) {
         for (int y = 0; y < height; ++y)
             for (int x = 0; x < width; ++x) {
                 const glm::dvec3 direction = renderer::primaryRayDirection(camera, x, y, width, height);
-                if (auto t = intersect(shape.shape, glm::dvec3(camera.position), direction)) reference[std::size_t(y * width + x)] = *t;
+                if (auto t = intersect(shape.shape, glm::dvec3(camera.position), direction))
+                    reference[std::size_t(y * width + x)] = *t;
             }
         for (const Method& method : methods)
             for (float tolerance : tolerances) {
@@ -125,7 +135,7 @@ Expected<Report> tracerBenchmark(const BenchOptions& options) {
                 if (auto d = sdfRenderer.setSdf(prepare(shape.glsl, shape.name)); shaders::hasErrors(d))
                     return makeError("bench: the tracer benchmark's " + std::string(shape.name) + " does not compile");
                 renderer::FrameStats frame;
-                offscreen.renderStats(sdfRenderer, width, height, camera, 0.0f, &frame);  // warm-up (JIT)
+                offscreen.renderStats(sdfRenderer, width, height, camera, 0.0f, &frame); // warm-up (JIT)
                 std::vector<double> times;
                 std::vector<renderer::OffscreenRenderer::PixelStats> stats;
                 for (int r = 0; r < options.repeats; ++r) {
@@ -150,10 +160,11 @@ Expected<Report> tracerBenchmark(const BenchOptions& options) {
                 const double p50 = quantile(errors, 0.5), p99 = quantile(errors, 0.99);
                 const double worst = errors.empty() ? 0.0 : *std::max_element(errors.begin(), errors.end());
                 const double perHit = hits ? stepsHits / double(hits) : 0.0;
-                report.csv += format("%s,%s,%g,%.3f,%.3f,%.4g,%.4g,%.4g,%ld,%ld,%.4g,%.4g,%.4g\n", shape.name, method.name, double(tolerance), perHit,
-                                     stepsAll / double(stats.size()), p50, p99, worst, missed, hits, ms.median, ms.minimum, ms.maximum);
-                report.markdown += format("| %s | %s | %g | %.1f | %.2e | %.2e | %ld | %s |\n", shape.name, method.name, double(tolerance), perHit,
-                                          p50, p99, missed, spreadText(ms).c_str());
+                report.csv += format("%s,%s,%g,%.3f,%.3f,%.4g,%.4g,%.4g,%ld,%ld,%.4g,%.4g,%.4g\n", shape.name, method.name,
+                                     double(tolerance), perHit, stepsAll / double(stats.size()), p50, p99, worst, missed, hits,
+                                     ms.median, ms.minimum, ms.maximum);
+                report.markdown += format("| %s | %s | %g | %.1f | %.2e | %.2e | %ld | %s |\n", shape.name, method.name,
+                                          double(tolerance), perHit, p50, p99, missed, spreadText(ms).c_str());
             }
     }
     report.markdown += "\n![Sphere tracer: hit error against steps and frame time](images/bench_tracer.png)\n\n";
@@ -163,16 +174,18 @@ Expected<Report> tracerBenchmark(const BenchOptions& options) {
 // 2. Surface and near samplers: accuracy against time over the surface tolerance.
 Expected<Report> samplerBenchmark(const BenchOptions& options) {
     const std::uint32_t count = options.quick ? (1u << 13) : (1u << 18);
-    std::vector<float> tolerances = options.quick ? std::vector<float>{1e-3f, 1e-5f} : std::vector<float>{1e-2f, 1e-3f, 1e-4f, 1e-5f, 1e-6f};
+    std::vector<float> tolerances =
+        options.quick ? std::vector<float>{1e-3f, 1e-5f} : std::vector<float>{1e-2f, 1e-3f, 1e-4f, 1e-5f, 1e-6f};
     Report report;
     report.csv = "sdf,pattern,surface_tolerance,samples,error_p50,error_p99,error_max,bad_rows,ms_median,ms_min,ms_max\n";
-    report.markdown = format("### Surface and near samplers: accuracy against time\n\n"
-                             "%u samples per run; the rays of `surface` and `near` stop when |f| < the surface tolerance "
-                             "(`--surface-tolerance`, default 1e-5). Error for `surface`: the exact distance of each sample to "
-                             "the surface; for `near`: | written f - exact signed distance | at the sample. Time: median [min, max] of "
-                             "%d runs (one dispatch each, read-back included) after a warm-up run.\n\n"
-                             "| SDF | pattern | tolerance | error p50 | error p99 | bad rows | ms | samples/s |\n|---|---|---|---|---|---|---|---|\n",
-                             count, options.repeats);
+    report.markdown = format(
+        "### Surface and near samplers: accuracy against time\n\n"
+        "%u samples per run; the rays of `surface` and `near` stop when |f| < the surface tolerance "
+        "(`--surface-tolerance`, default 1e-5). Error for `surface`: the exact distance of each sample to "
+        "the surface; for `near`: | written f - exact signed distance | at the sample. Time: median [min, max] of "
+        "%d runs (one dispatch each, read-back included) after a warm-up run.\n\n"
+        "| SDF | pattern | tolerance | error p50 | error p99 | bad rows | ms | samples/s |\n|---|---|---|---|---|---|---|---|\n",
+        count, options.repeats);
     std::vector<float> positions(3 * std::size_t(count)), distances(count), gradients(3 * std::size_t(count));
     for (const BenchShape& shape : kShapes)
         for (const char* pattern : {"surface", "near"}) {
@@ -186,11 +199,13 @@ Expected<Report> samplerBenchmark(const BenchOptions& options) {
                 uniforms.sampleCount = count;
                 uniforms.seed = 11;
                 uniforms.surfaceTolerance = tolerance;
-                if (auto ok = compute.run(uniforms, 0, count, positions.data(), distances.data(), gradients.data()); !ok) return ok.error();
+                if (auto ok = compute.run(uniforms, 0, count, positions.data(), distances.data(), gradients.data()); !ok)
+                    return ok.error();
                 std::vector<double> times;
                 for (int r = 0; r < options.repeats; ++r) {
                     auto start = Clock::now();
-                    if (auto ok = compute.run(uniforms, 0, count, positions.data(), distances.data(), gradients.data()); !ok) return ok.error();
+                    if (auto ok = compute.run(uniforms, 0, count, positions.data(), distances.data(), gradients.data()); !ok)
+                        return ok.error();
                     times.push_back(millisecondsSince(start));
                 }
                 std::vector<double> errors;
@@ -202,15 +217,17 @@ Expected<Report> samplerBenchmark(const BenchOptions& options) {
                         continue;
                     }
                     const double exact = distance(shape.shape, p);
-                    errors.push_back(std::string(pattern) == "surface" ? std::abs(exact) : std::abs(double(distances[i]) - exact));
+                    errors.push_back(std::string(pattern) == "surface" ? std::abs(exact)
+                                                                       : std::abs(double(distances[i]) - exact));
                 }
                 const Spread ms = spreadOf(times);
                 const double p50 = quantile(errors, 0.5), p99 = quantile(errors, 0.99);
                 const double worst = errors.empty() ? 0.0 : *std::max_element(errors.begin(), errors.end());
-                report.csv += format("%s,%s,%g,%u,%.4g,%.4g,%.4g,%llu,%.4g,%.4g,%.4g\n", shape.name, pattern, double(tolerance), count, p50, p99, worst,
-                                     (unsigned long long)bad, ms.median, ms.minimum, ms.maximum);
-                report.markdown += format("| %s | %s | %g | %.2e | %.2e | %llu | %s | %.3g |\n", shape.name, pattern, double(tolerance), p50, p99,
-                                          (unsigned long long)bad, spreadText(ms).c_str(), double(count) / (ms.median / 1000.0));
+                report.csv += format("%s,%s,%g,%u,%.4g,%.4g,%.4g,%llu,%.4g,%.4g,%.4g\n", shape.name, pattern, double(tolerance),
+                                     count, p50, p99, worst, (unsigned long long)bad, ms.median, ms.minimum, ms.maximum);
+                report.markdown +=
+                    format("| %s | %s | %g | %.2e | %.2e | %llu | %s | %.3g |\n", shape.name, pattern, double(tolerance), p50,
+                           p99, (unsigned long long)bad, spreadText(ms).c_str(), double(count) / (ms.median / 1000.0));
             }
             compute.releaseGl();
         }
@@ -221,20 +238,22 @@ Expected<Report> samplerBenchmark(const BenchOptions& options) {
 // 3. Gradients: central (6 taps) and tetrahedral (4 taps) differences against the step.
 Expected<Report> gradientBenchmark(const BenchOptions& options) {
     const std::uint32_t count = options.quick ? (1u << 13) : (1u << 18);
-    std::vector<float> steps = options.quick ? std::vector<float>{1e-2f, 1e-4f}
-                                             : std::vector<float>{1e-1f, 3e-2f, 1e-2f, 3e-3f, 1e-3f, 3e-4f, 1e-4f, 3e-5f, 1e-5f, 3e-6f, 1e-6f};
-    const BenchShape& shape = kShapes[1];  // the torus: curvature 1/0.25 across the tube
+    std::vector<float> steps =
+        options.quick ? std::vector<float>{1e-2f, 1e-4f}
+                      : std::vector<float>{1e-1f, 3e-2f, 1e-2f, 3e-3f, 1e-3f, 3e-4f, 1e-4f, 3e-5f, 1e-5f, 3e-6f, 1e-6f};
+    const BenchShape& shape = kShapes[1]; // the torus: curvature 1/0.25 across the tube
     Report report;
     report.csv = "scheme,step,angle_p50_deg,angle_p99_deg,length_error_p50,length_error_p99,ms_median,ms_min,ms_max\n";
-    report.markdown = format("### Gradients: central against tetrahedral differences, against the step\n\n"
-                             "%u points near the torus (R 0.6, r 0.25; the `near` pattern: within ~0.005 of the surface), gradient "
-                             "by 6-tap central differences (the samplers' written gradient) and by the 4-tap tetrahedral scheme (the "
-                             "tracer's normals), against the analytic gradient (References.cpp). Angle error in degrees, length "
-                             "error | |g| - 1 |. Time: the same dispatch on `rand` points (cheap positions, so the taps dominate), "
-                             "median [min, max] of %d runs.\n\n"
-                             "| scheme | step h | angle p50 (deg) | angle p99 (deg) | length error p50 | length error p99 | ms |\n"
-                             "|---|---|---|---|---|---|---|\n",
-                             count, options.repeats);
+    report.markdown =
+        format("### Gradients: central against tetrahedral differences, against the step\n\n"
+               "%u points near the torus (R 0.6, r 0.25; the `near` pattern: within ~0.005 of the surface), gradient "
+               "by 6-tap central differences (the samplers' written gradient) and by the 4-tap tetrahedral scheme (the "
+               "tracer's normals), against the analytic gradient (References.cpp). Angle error in degrees, length "
+               "error | |g| - 1 |. Time: the same dispatch on `rand` points (cheap positions, so the taps dominate), "
+               "median [min, max] of %d runs.\n\n"
+               "| scheme | step h | angle p50 (deg) | angle p99 (deg) | length error p50 | length error p99 | ms |\n"
+               "|---|---|---|---|---|---|---|\n",
+               count, options.repeats);
     std::vector<float> positions(3 * std::size_t(count)), distances(count), gradients(3 * std::size_t(count));
     renderer::SampleCompute nearCompute, randCompute;
     auto nearPiece = sampling::findSampler("near", {});
@@ -250,17 +269,20 @@ Expected<Report> gradientBenchmark(const BenchOptions& options) {
         uniforms.seed = 5;
         uniforms.tetrahedralGradient = tetrahedral;
         uniforms.gradientStep = 1e-3f;
-        if (auto ok = randCompute.run(uniforms, 0, count, positions.data(), distances.data(), gradients.data()); !ok) return ok.error();
+        if (auto ok = randCompute.run(uniforms, 0, count, positions.data(), distances.data(), gradients.data()); !ok)
+            return ok.error();
         std::vector<double> times;
         for (int r = 0; r < options.repeats; ++r) {
             auto start = Clock::now();
-            if (auto ok = randCompute.run(uniforms, 0, count, positions.data(), distances.data(), gradients.data()); !ok) return ok.error();
+            if (auto ok = randCompute.run(uniforms, 0, count, positions.data(), distances.data(), gradients.data()); !ok)
+                return ok.error();
             times.push_back(millisecondsSince(start));
         }
         const Spread ms = spreadOf(times);
         for (float h : steps) {
             uniforms.gradientStep = h;
-            if (auto ok = nearCompute.run(uniforms, 0, count, positions.data(), distances.data(), gradients.data()); !ok) return ok.error();
+            if (auto ok = nearCompute.run(uniforms, 0, count, positions.data(), distances.data(), gradients.data()); !ok)
+                return ok.error();
             std::vector<double> angles, lengths;
             for (std::uint32_t i = 0; i < count; ++i) {
                 const glm::dvec3 p(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
@@ -272,9 +294,12 @@ Expected<Report> gradientBenchmark(const BenchOptions& options) {
                 angles.push_back(glm::degrees(std::acos(cosine)));
                 lengths.push_back(std::abs(length - 1.0));
             }
-            const double a50 = quantile(angles, 0.5), a99 = quantile(angles, 0.99), l50 = quantile(lengths, 0.5), l99 = quantile(lengths, 0.99);
-            report.csv += format("%s,%g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g\n", scheme, double(h), a50, a99, l50, l99, ms.median, ms.minimum, ms.maximum);
-            report.markdown += format("| %s | %g | %.2e | %.2e | %.2e | %.2e | %s |\n", scheme, double(h), a50, a99, l50, l99, spreadText(ms).c_str());
+            const double a50 = quantile(angles, 0.5), a99 = quantile(angles, 0.99), l50 = quantile(lengths, 0.5),
+                         l99 = quantile(lengths, 0.99);
+            report.csv += format("%s,%g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g\n", scheme, double(h), a50, a99, l50, l99, ms.median,
+                                 ms.minimum, ms.maximum);
+            report.markdown += format("| %s | %g | %.2e | %.2e | %.2e | %.2e | %s |\n", scheme, double(h), a50, a99, l50, l99,
+                                      spreadText(ms).c_str());
         }
     }
     nearCompute.releaseGl();
@@ -288,7 +313,7 @@ Expected<Report> auditBenchmark(const BenchOptions& options, const ProgressSink&
     struct Field {
         const char* name;
         const char* glsl;
-        double lipschitz;  // the true constant over the cube [-1, 1]^3
+        double lipschitz; // the true constant over the cube [-1, 1]^3
     };
     // |grad (|p| - 0.5)^3| = 3 (|p| - 0.5)^2, largest at the corners: 3 (sqrt 3 - 0.5)^2.
     const double cubedL = 3.0 * (std::sqrt(3.0) - 0.5) * (std::sqrt(3.0) - 0.5);
@@ -297,19 +322,21 @@ Expected<Report> auditBenchmark(const BenchOptions& options, const ProgressSink&
         {"100 x sphere (L = 100)", "float sdf(vec3 p) { return 100.0 * (length(p) - 0.5); }\n", 100.0},
         {"(|p| - 0.5)^3 (L = 4.55)", "float sdf(vec3 p) { float d = length(p) - 0.5; return d * d * d; }\n", cubedL},
     };
-    std::vector<std::uint64_t> sampleCounts = options.quick ? std::vector<std::uint64_t>{1000, 4000}
-                                                            : std::vector<std::uint64_t>{1000, 4000, 16000, 64000};
-    const int seeds = 3;  // the (|p| - 0.5)^3 audit takes ~30 s at 64000 (its surface rays crawl)
+    std::vector<std::uint64_t> sampleCounts =
+        options.quick ? std::vector<std::uint64_t>{1000, 4000} : std::vector<std::uint64_t>{1000, 4000, 16000, 64000};
+    const int seeds = 3; // the (|p| - 0.5)^3 audit takes ~30 s at 64000 (its surface rays crawl)
     Report report;
-    report.csv = "sdf,true_lipschitz,samples,ratio_median,ratio_min,ratio_max,max_ratio_median,max_ratio_min,max_ratio_max,seconds_median,seconds_min,"
+    report.csv = "sdf,true_lipschitz,samples,ratio_median,ratio_min,ratio_max,max_ratio_median,max_ratio_min,max_ratio_max,"
+                 "seconds_median,seconds_min,"
                  "seconds_max\n";
-    report.markdown = format("### Field audit: Lipschitz estimate against samples and seconds\n\n"
-                             "`sdfwb --batch audit` (no convergence runs) on fields whose Lipschitz constant over the cube is known. "
-                             "Ratio = estimate / true constant (the estimate is a lower bound: the 99.9th percentile of difference "
-                             "quotients), median [min, max] over %d seeds; the largest quotient seen, an upper estimate that is "
-                             "prone to outliers, likewise; seconds likewise.\n\n"
-                             "| field | samples | estimate / true | largest quotient / true | seconds |\n|---|---|---|---|---|\n",
-                             seeds);
+    report.markdown =
+        format("### Field audit: Lipschitz estimate against samples and seconds\n\n"
+               "`sdfwb --batch audit` (no convergence runs) on fields whose Lipschitz constant over the cube is known. "
+               "Ratio = estimate / true constant (the estimate is a lower bound: the 99.9th percentile of difference "
+               "quotients), median [min, max] over %d seeds; the largest quotient seen, an upper estimate that is "
+               "prone to outliers, likewise; seconds likewise.\n\n"
+               "| field | samples | estimate / true | largest quotient / true | seconds |\n|---|---|---|---|---|\n",
+               seeds);
     for (const Field& field : fields) {
         for (std::uint64_t samples : sampleCounts) {
             std::vector<double> ratios, maxRatios, seconds;
@@ -326,11 +353,11 @@ Expected<Report> auditBenchmark(const BenchOptions& options, const ProgressSink&
                 seconds.push_back(r->seconds);
             }
             const Spread ratio = spreadOf(ratios), largest = spreadOf(maxRatios), time = spreadOf(seconds);
-            report.csv += format("%s,%.6g,%llu,%.5g,%.5g,%.5g,%.5g,%.5g,%.5g,%.4g,%.4g,%.4g\n", field.name, field.lipschitz, (unsigned long long)samples,
-                                 ratio.median, ratio.minimum, ratio.maximum, largest.median, largest.minimum, largest.maximum, time.median, time.minimum,
-                                 time.maximum);
-            report.markdown += format("| %s | %llu | %s | %s | %s |\n", field.name, (unsigned long long)samples, spreadText(ratio).c_str(),
-                                      spreadText(largest).c_str(), spreadText(time, " s").c_str());
+            report.csv += format("%s,%.6g,%llu,%.5g,%.5g,%.5g,%.5g,%.5g,%.5g,%.4g,%.4g,%.4g\n", field.name, field.lipschitz,
+                                 (unsigned long long)samples, ratio.median, ratio.minimum, ratio.maximum, largest.median,
+                                 largest.minimum, largest.maximum, time.median, time.minimum, time.maximum);
+            report.markdown += format("| %s | %llu | %s | %s | %s |\n", field.name, (unsigned long long)samples,
+                                      spreadText(ratio).c_str(), spreadText(largest).c_str(), spreadText(time, " s").c_str());
         }
     }
     report.markdown += "\n![Audit: Lipschitz estimate against samples and time](images/bench_audit.png)\n\n";
@@ -382,8 +409,9 @@ Expected<BenchFiles> runBenchmarks(const BenchOptions& options, const ProgressSi
                        "over pixels or samples (50th and 99th percentiles). The tables are also in benchmarks/*.csv; the plots "
                        "are made from them by bench/plot_benchmarks.py (matplotlib). The references (exact intersections, "
                        "distances, gradients in double precision) are in bench/References.cpp.\n\n",
-                       date, options.commandLine.c_str(), millisecondsSince(start) / 1000.0, options.quick ? ", --quick: not for reading" : "",
-                       std::thread::hardware_concurrency(), options.glDescription.c_str());
+                       date, options.commandLine.c_str(), millisecondsSince(start) / 1000.0,
+                       options.quick ? ", --quick: not for reading" : "", std::thread::hardware_concurrency(),
+                       options.glDescription.c_str());
     markdown += body;
     if (auto ok = writeFileAtomically(files.markdown, markdown); !ok) return ok.error();
     return files;

@@ -16,7 +16,8 @@ glm::dvec3 gradient(const Shape& shape, const glm::dvec3& p) {
     if (shape.kind == Shape::Sphere) return glm::normalize(p);
     // From the nearest point of the tube's axis circle towards p.
     const double planar = std::sqrt(p.x * p.x + p.z * p.z);
-    const glm::dvec3 axisPoint = planar > 0.0 ? glm::dvec3(p.x, 0.0, p.z) * (shape.major / planar) : glm::dvec3(shape.major, 0.0, 0.0);
+    const glm::dvec3 axisPoint =
+        planar > 0.0 ? glm::dvec3(p.x, 0.0, p.z) * (shape.major / planar) : glm::dvec3(shape.major, 0.0, 0.0);
     return glm::normalize(p - axisPoint);
 }
 

@@ -10,8 +10,8 @@ namespace sdfwb::bench {
 
 struct Shape {
     enum Kind { Sphere, Torus } kind;
-    double major;  // sphere: radius; torus: distance from the centre to the tube's axis
-    double minor;  // torus: tube radius (unused for the sphere)
+    double major; // sphere: radius; torus: distance from the centre to the tube's axis
+    double minor; // torus: tube radius (unused for the sphere)
 };
 
 // Signed distance and its gradient (unit length wherever it is defined).

@@ -18,11 +18,11 @@
 namespace sdfwb::bench {
 
 struct BenchOptions {
-    std::filesystem::path outputDirectory;  // benchmarks.md, benchmarks/*.csv, images/bench_*.png
-    int repeats = 5;                        // timed repeats per configuration
-    bool quick = false;                     // smaller and fewer configurations (tests)
-    std::string glDescription;              // the GL renderer, for the report's header
-    std::string commandLine;                // how the report was made, for its header
+    std::filesystem::path outputDirectory; // benchmarks.md, benchmarks/*.csv, images/bench_*.png
+    int repeats = 5;                       // timed repeats per configuration
+    bool quick = false;                    // smaller and fewer configurations (tests)
+    std::string glDescription;             // the GL renderer, for the report's header
+    std::string commandLine;               // how the report was made, for its header
 };
 
 struct BenchFiles {

@@ -1,0 +1,108 @@
+#include "Common.h"
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <unistd.h>
+#include <variant>
+
+namespace sdfwb::app {
+
+void printError(const std::string& message) { std::fprintf(stderr, "sdfwb: %s\n", message.c_str()); }
+
+int reportFailure(const jobs::JobError& error) {
+    for (const shaders::Diagnostic& d : error.diagnostics) std::fprintf(stderr, "%s\n", shaders::formatDiagnostic(d).c_str());
+    printError(error.message);
+    switch (error.failure) {
+    case jobs::Failure::Usage:
+        return kExitUsage;
+    case jobs::Failure::Work:
+        return kExitFailure;
+    case jobs::Failure::NoGl:
+        return kExitNoGl;
+    case jobs::Failure::Cancelled:
+        return kExitCancelled;
+    }
+    return kExitFailure;
+}
+
+std::unique_ptr<renderer::HeadlessContext> makeContext() {
+    auto context = renderer::HeadlessContext::create();
+    if (!context) {
+        printError(context.error().message);
+        return nullptr;
+    }
+    return std::move(*context);
+}
+
+namespace {
+
+// Ctrl-C cancels the running job cleanly (the writers remove their temporary files).
+std::atomic<CancelToken*> g_interruptToken{nullptr};
+
+extern "C" void onInterrupt(int) {
+    if (CancelToken* token = g_interruptToken.load()) token->cancel();
+}
+
+} // namespace
+
+JobScope::JobScope(const OutputOptions& output)
+    : m_bar(!output.quiet && !output.json && ::isatty(STDERR_FILENO)),
+      m_lines(output.progressLines), m_sink{[this](std::uint64_t done, std::uint64_t total) { draw(done, total); }, &m_cancel} {
+    g_interruptToken.store(&m_cancel);
+    m_previousInt = std::signal(SIGINT, onInterrupt);
+    m_previousTerm = std::signal(SIGTERM, onInterrupt);
+}
+
+JobScope::~JobScope() {
+    finish();
+    std::signal(SIGINT, m_previousInt);
+    std::signal(SIGTERM, m_previousTerm);
+    g_interruptToken.store(nullptr);
+}
+
+void JobScope::draw(std::uint64_t done, std::uint64_t total) {
+    if (m_lines) std::fprintf(stderr, "progress %llu %llu\n", (unsigned long long)done, (unsigned long long)total);
+    if (!m_bar || total == 0) return;
+    auto now = std::chrono::steady_clock::now();
+    if (done < total && now - m_lastDraw < std::chrono::milliseconds(100)) return;
+    m_lastDraw = now;
+    const double seconds = std::chrono::duration<double>(now - m_start).count();
+    const double fraction = double(done) / double(total);
+    const int filled = int(fraction * 30.0);
+    std::string bar(std::size_t(filled), '#');
+    bar.append(std::size_t(30 - filled), ' ');
+    const double rate = seconds > 0.0 ? double(done) / seconds : 0.0;
+    std::fprintf(stderr, "\r%5.1f%% [%s] %llu/%llu  %.2f M/s ", 100.0 * fraction, bar.c_str(), (unsigned long long)done,
+                 (unsigned long long)total, rate / 1e6);
+    m_drawn = true;
+}
+
+void JobScope::finish() {
+    if (m_drawn) std::fprintf(stderr, "\n");
+    m_drawn = false;
+}
+
+int runRequest(const jobs::Request& request, const OutputOptions& output) {
+    return std::visit(
+        [&](const auto& r) -> int {
+            using T = std::decay_t<decltype(r)>;
+            if constexpr (std::is_same_v<T, jobs::RenderRequest>)
+                return runRender(r, output);
+            else if constexpr (std::is_same_v<T, jobs::AnimateRequest>)
+                return runAnimate(r, output);
+            else if constexpr (std::is_same_v<T, jobs::SampleRequest>)
+                return runSample(r, output);
+            else if constexpr (std::is_same_v<T, jobs::AuditRequest>)
+                return runAudit(r, output);
+            else if constexpr (std::is_same_v<T, jobs::MergeRequest>)
+                return runMerge(r, output);
+            else if constexpr (std::is_same_v<T, jobs::ListRequest>)
+                return runList(r, output);
+            else
+                return runBench(r, output);
+        },
+        request);
+}
+
+} // namespace sdfwb::app

@@ -1,0 +1,25 @@
+// `sdfwb --batch list`: the dataset's SDFs.
+#include "Common.h"
+
+#include <jobs/JobJson.h>
+
+#include <cstdio>
+
+namespace sdfwb::app {
+
+int runList(const jobs::ListRequest& request, const OutputOptions& output) {
+    auto result = jobs::run(request, {});
+    if (!result) return reportFailure(result.error);
+    const jobs::ListReport& r = *result;
+    if (output.json) {
+        std::printf("%s\n", jobs::toJson(r).c_str());
+        return kExitOk;
+    }
+    for (const jobs::ListItem& item : r.items)
+        std::printf("%-28s %-13s %-12s %s\n", item.name.c_str(), item.category.c_str(), item.declaredType.c_str(),
+                    item.animated ? "animated" : "");
+    if (!output.quiet) std::printf("%zu SDFs in %s\n", r.items.size(), r.root.c_str());
+    return kExitOk;
+}
+
+} // namespace sdfwb::app

@@ -1,0 +1,31 @@
+#pragma once
+// The one JSON form of requests and reports (keys in snake_case, as the CLI's options). Requests
+// carry their kind: {"kind": "render", "sdf": "Torus", "output": "t.png", "shading": {...}, ...};
+// absent keys keep their defaults, unknown keys are errors that name them. Reports are what
+// `--json` prints; reading one back ignores keys it does not know (reports grow).
+
+#include <jobs/Requests.h>
+
+#include <core/Expected.h>
+
+#include <string>
+
+namespace sdfwb::jobs {
+
+// One line when `indent` < 0, else pretty-printed with that many spaces.
+std::string toJson(const Request& request, int indent = -1);
+// Any kind, chosen by "kind". Errors name the key: "render request: 'width': expected an integer".
+Expected<Request> requestFromJson(const std::string& text);
+
+std::string toJson(const RenderReport& report, int indent = 2);
+std::string toJson(const AnimateReport& report, int indent = 2);
+std::string toJson(const SampleReport& report, int indent = 2);
+std::string toJson(const MergeReport& report, int indent = 2);
+std::string toJson(const AuditJobReport& report, int indent = 2);
+std::string toJson(const ListReport& report, int indent = 2);
+std::string toJson(const BenchReport& report, int indent = 2);
+
+// Reads a report of type T (one of the reports above) back from toJson's text.
+template <class T> Expected<T> reportFromJson(const std::string& text);
+
+} // namespace sdfwb::jobs

@@ -1,0 +1,81 @@
+#pragma once
+// Runs the typed requests of Requests.h: the one implementation behind the CLI, job files, the
+// workbench's child processes and Python. Each kind has a pure `validate` (no GL, no files written:
+// option ranges, the output's type and folder, whether the SDF name resolves) and a `run`, which
+// validates again, opens the SDF and does the work. Render, animate, sample, audit and bench need
+// a current GL 4.3 context on the calling thread (renderer::HeadlessContext); merge and list none.
+
+#include <jobs/Requests.h>
+
+#include <core/Progress.h>
+#include <shaders/Diagnostic.h>
+#include <shaders/SdfSource.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sdfwb::sampling {
+struct SamplingJob;
+}
+
+namespace sdfwb::jobs {
+
+enum class Failure {
+    Usage,     // the request is malformed: the message names the argument (--output, --sdf, ...)
+    Work,      // the work failed: the SDF does not compile, a file cannot be written
+    NoGl,      // no usable GL context
+    Cancelled, // cancelled through the progress sink; nothing was written
+};
+
+struct JobError {
+    Failure failure = Failure::Work;
+    std::string message;
+    std::vector<shaders::Diagnostic> diagnostics; // the SDF's errors, with file and line
+};
+
+template <class Report> struct JobResult {
+    std::optional<Report> report;
+    JobError error; // when there is no report
+
+    JobResult(Report value) : report(std::move(value)) {}
+    JobResult(JobError failed) : error(std::move(failed)) {}
+    explicit operator bool() const { return report.has_value(); }
+    const Report& operator*() const { return *report; }
+    const Report* operator->() const { return &*report; }
+};
+
+struct OpenedSdf {
+    shaders::PreparedSdf prepared;
+    std::string label; // the resolved path, or the name given with source text ("<source>" without one)
+};
+
+// The shared "open the SDF" step: resolves a dataset name or a path (Usage when neither exists),
+// takes `source` or reads the file, and prepares it with the entry point (Work, with diagnostics,
+// when it has errors). `what` starts the failure message ("render", "audit", ...).
+JobResult<OpenedSdf> openSdf(const SdfInput& input, const std::string& what);
+
+std::optional<JobError> validate(const RenderRequest& request);
+std::optional<JobError> validate(const AnimateRequest& request);
+std::optional<JobError> validate(const SampleRequest& request);
+std::optional<JobError> validate(const AuditRequest& request);
+std::optional<JobError> validate(const MergeRequest& request);
+std::optional<JobError> validate(const BenchRequest& request);
+inline std::optional<JobError> validate(const ListRequest&) { return std::nullopt; }
+
+JobResult<RenderReport> run(const RenderRequest& request, const ProgressSink& progress);
+JobResult<AnimateReport> run(const AnimateRequest& request, const ProgressSink& progress);
+JobResult<SampleReport> run(const SampleRequest& request, const ProgressSink& progress);
+JobResult<AuditJobReport> run(const AuditRequest& request, const ProgressSink& progress);
+JobResult<MergeReport> run(const MergeRequest& request, const ProgressSink& progress);
+JobResult<ListReport> run(const ListRequest& request, const ProgressSink& progress);
+// Writes the report's tables; the plots are drawn by the caller (bench/plot_benchmarks.py).
+JobResult<BenchReport> run(const BenchRequest& request, const ProgressSink& progress);
+
+// The sampling job a request describes (count, seed, time, shard, chunk, steps, tolerance).
+sampling::SamplingJob samplingJob(const SampleRequest& request);
+
+// Whether a request kind needs a GL context.
+bool needsGl(const Request& request);
+
+} // namespace sdfwb::jobs

@@ -1,0 +1,196 @@
+#pragma once
+// The job model: one typed request and one typed report per job kind. The CLI parser fills
+// requests from options, job files and `sdfwb --batch request` read them as JSON (JobJson.h), the
+// workbench writes them as JSON for its child processes, and Python builds them from keyword
+// arguments or dicts; all of them run through Jobs.h. Plain values: no GL, no Qt, no JSON here.
+
+#include <renderer/Camera.h>
+#include <renderer/RenderSettings.h>
+#include <sampling/FieldAudit.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace sdfwb::jobs {
+
+// Which SDF a job runs on. `source`, when set, is compiled instead of the file's content (the
+// workbench's unsaved text; Python's GLSL strings); `sdf` then still names it for includes and
+// messages and may be empty.
+struct SdfInput {
+    std::string sdf;    // dataset name or path
+    std::string entry;  // the SDF's function; empty: metadata `entry:`, sdf, or a conventional name
+    std::string source; // GLSL text to use instead of reading `sdf`
+    bool operator==(const SdfInput&) const = default;
+};
+
+// Everything one picture depends on: the viewport's state.
+struct FrameRequest {
+    SdfInput sdf;
+    int width = 1280;
+    int height = 720;
+    float time = 0.0f; // seconds; the start time for animations
+    renderer::ShadingSettings shading;
+    renderer::TraceSettings trace;
+    renderer::Camera camera;
+    renderer::CuttingPlane plane;
+    bool operator==(const FrameRequest&) const = default;
+};
+
+struct RenderRequest {
+    FrameRequest frame;
+    std::string output; // .png, .jpg or .exr
+    bool operator==(const RenderRequest&) const = default;
+};
+
+struct AnimateRequest {
+    FrameRequest frame;
+    std::string output; // .mp4
+    float seconds = 4.0f;
+    int framesPerSecond = 30;
+    bool turntable = false; // orbit the camera once around the Y axis over the clip
+    bool operator==(const AnimateRequest&) const = default;
+};
+
+struct SampleRequest {
+    SdfInput sdf;
+    std::string pattern; // built-in name or sampler path
+    std::uint64_t count = 0;
+    std::string output;
+    std::string format; // empty: from the output's extension
+    std::uint64_t seed = 0;
+    float time = 0.0f;
+    std::uint32_t shardIndex = 0;
+    std::uint32_t shardCount = 1;
+    std::uint32_t chunkSize = 1u << 18;
+    float gradientStep = 1e-3f;
+    float surfaceTolerance = 1e-5f; // |f| at which surface/near/metropolis rays stop
+    bool operator==(const SampleRequest&) const = default;
+};
+
+// The plane dot(normal, p) = offset.
+struct PlaneSpec {
+    glm::vec3 normal{0.0f, 0.0f, 1.0f};
+    float offset = 0.0f;
+    bool operator==(const PlaneSpec&) const = default;
+};
+
+struct AuditRequest {
+    SdfInput sdf;
+    std::uint64_t samples = 100000;
+    std::uint64_t seed = 0;
+    float time = 0.0f;
+    float probeDistance = 3.0f;     // truncation: probe outward from the surface this far
+    std::optional<PlaneSpec> plane; // set: plane readouts instead of the volume audit
+    int resolution = 256;           // grid side on the plane
+    bool operator==(const AuditRequest&) const = default;
+};
+
+struct MergeRequest {
+    std::string output;
+    std::string format; // empty: from the output's extension
+    std::vector<std::string> parts;
+    bool operator==(const MergeRequest&) const = default;
+};
+
+struct ListRequest {
+    bool operator==(const ListRequest&) const = default;
+};
+
+struct BenchRequest {
+    std::string outputDirectory = "docs/benchmarks"; // benchmarks.md, CSV tables, images/
+    int repeats = 5;
+    bool quick = false;
+    bool noPlots = false;
+    bool operator==(const BenchRequest&) const = default;
+};
+
+using Request = std::variant<RenderRequest, AnimateRequest, SampleRequest, AuditRequest, MergeRequest, ListRequest, BenchRequest>;
+
+// "render", "animate", "sample", "audit", "merge", "list", "bench": the CLI command of each kind.
+const char* kindName(const Request& request);
+
+// ---- reports ----
+
+struct RenderReport {
+    std::string output;
+    std::string sdf;   // the resolved path (or the name given with source text)
+    std::string entry; // the function that was traced
+    int width = 0, height = 0;
+    std::string shading;
+    double frameMilliseconds = 0.0;
+    double seconds = 0.0;
+    std::string glRenderer;
+    std::vector<std::string> warnings;
+    bool operator==(const RenderReport&) const = default;
+};
+
+struct AnimateReport {
+    std::string output;
+    std::string sdf;
+    int frames = 0;
+    int framesPerSecond = 0;
+    int width = 0, height = 0; // as encoded (even)
+    double renderSeconds = 0.0;
+    double seconds = 0.0;
+    std::vector<std::string> warnings;
+    bool operator==(const AnimateReport&) const = default;
+};
+
+struct SampleReport {
+    std::string output;
+    std::string format;
+    std::string sdf;
+    std::string pattern;
+    std::uint64_t count = 0; // N of the whole run
+    std::uint64_t rows = 0;  // written by this run (its shard)
+    std::uint64_t firstIndex = 0;
+    std::uint64_t seed = 0;
+    float time = 0.0f;
+    std::uint64_t badRows = 0;
+    double seconds = 0.0;
+    double samplesPerSecond = 0.0;
+    std::string glRenderer;
+    bool operator==(const SampleReport&) const = default;
+};
+
+struct MergeReport {
+    std::string output;
+    std::uint64_t rows = 0;
+    std::uint64_t parts = 0;
+    double seconds = 0.0;
+    bool operator==(const MergeReport&) const = default;
+};
+
+// The volume audit, or the plane readouts when the request named a plane.
+struct AuditJobReport {
+    std::string sdf;
+    std::string entry;
+    float probeDistance = 0.0f;
+    std::optional<sampling::AuditReport> volume;
+    std::optional<PlaneSpec> plane;
+    std::optional<sampling::PlaneReadout> readout;
+};
+
+struct ListItem {
+    std::string name, category, declaredType, path, author, license, notes;
+    bool animated = false;
+    bool operator==(const ListItem&) const = default;
+};
+
+struct ListReport {
+    std::vector<ListItem> items;
+    std::vector<std::string> problems; // files the catalogue could not read
+    std::string root;
+    bool operator==(const ListReport&) const = default;
+};
+
+struct BenchReport {
+    std::string markdown, csvDirectory, imageDirectory;
+    bool plotted = false;
+    bool operator==(const BenchReport&) const = default;
+};
+
+} // namespace sdfwb::jobs

@@ -1,0 +1,583 @@
+// The JSON form of requests and reports. Each struct is described once, by a `fields` function
+// that names its keys; the same description writes and reads it.
+#include <jobs/JobJson.h>
+
+#include <nlohmann/json.hpp>
+
+#include <charconv>
+#include <cmath>
+#include <concepts>
+#include <cstdlib>
+#include <limits>
+#include <set>
+#include <type_traits>
+
+namespace sdfwb::jobs {
+namespace {
+
+// Keys in the order the descriptions name them ("kind" first), not sorted.
+using json = nlohmann::ordered_json;
+
+// ---- the descriptions ----
+
+template <class V> void fields(V& v, SdfInput& s) {
+    v("sdf", s.sdf);
+    v("entry", s.entry);
+    v("source", s.source);
+}
+
+template <class V> void fields(V& v, renderer::ShadingSettings& s) {
+    v("mode", s.mode);
+    v("ambient_occlusion", s.ambientOcclusion);
+    v("background", s.background);
+    v("light_direction", s.lightDirection);
+    v("curvature_scale", s.curvatureScale);
+    v("matcap", s.matcap);
+    v("markers", s.markers);
+}
+
+template <class V> void fields(V& v, renderer::TraceSettings& t) {
+    v("max_steps", t.maxSteps);
+    v("step_factor", t.stepFactor);
+    v("epsilon_scale", t.epsilonScale);
+    v("box_margin", t.boxMargin);
+    v("over_relaxation", t.overRelaxation);
+}
+
+template <class V> void fields(V& v, renderer::Camera& c) {
+    v("position", c.position);
+    v("target", c.target);
+    v("up", c.up);
+    v("fov", c.fovYDegrees);
+    v("near", c.nearPlane);
+    v("far", c.farPlane);
+}
+
+template <class V> void fields(V& v, renderer::CuttingPlane& p) {
+    v("enabled", p.enabled);
+    v("normal", p.normal);
+    v("offset", p.offset);
+    v("contour_spacing", p.contourSpacing);
+    v("ramp_distance", p.rampDistance);
+    v("clip_surface", p.clipSurface);
+    v("lipschitz_overlay", p.lipschitzOverlay);
+}
+
+template <class V> void fields(V& v, FrameRequest& f) {
+    fields(v, f.sdf);
+    v("width", f.width);
+    v("height", f.height);
+    v("time", f.time);
+    v("shading", f.shading);
+    v("trace", f.trace);
+    v("camera", f.camera);
+    v("plane", f.plane);
+}
+
+template <class V> void fields(V& v, RenderRequest& r) {
+    fields(v, r.frame);
+    v("output", r.output);
+}
+
+template <class V> void fields(V& v, AnimateRequest& r) {
+    fields(v, r.frame);
+    v("output", r.output);
+    v("seconds", r.seconds);
+    v("fps", r.framesPerSecond);
+    v("turntable", r.turntable);
+}
+
+template <class V> void fields(V& v, SampleRequest& r) {
+    fields(v, r.sdf);
+    v("pattern", r.pattern);
+    v("n", r.count);
+    v("output", r.output);
+    v("format", r.format);
+    v("seed", r.seed);
+    v("time", r.time);
+    v("shard_index", r.shardIndex);
+    v("shard_count", r.shardCount);
+    v("chunk", r.chunkSize);
+    v("gradient_step", r.gradientStep);
+    v("surface_tolerance", r.surfaceTolerance);
+}
+
+template <class V> void fields(V& v, AuditRequest& r) {
+    fields(v, r.sdf);
+    v("samples", r.samples);
+    v("seed", r.seed);
+    v("time", r.time);
+    v("probe_distance", r.probeDistance);
+    v("plane", r.plane);
+    v("resolution", r.resolution);
+}
+
+template <class V> void fields(V& v, MergeRequest& r) {
+    v("output", r.output);
+    v("format", r.format);
+    v("parts", r.parts);
+}
+
+template <class V> void fields(V&, ListRequest&) {}
+
+template <class V> void fields(V& v, BenchRequest& r) {
+    v("output", r.outputDirectory);
+    v("repeats", r.repeats);
+    v("quick", r.quick);
+    v("no_plots", r.noPlots);
+}
+
+template <class V> void fields(V& v, RenderReport& r) {
+    v("output", r.output);
+    v("sdf", r.sdf);
+    v("entry", r.entry);
+    v("width", r.width);
+    v("height", r.height);
+    v("shading", r.shading);
+    v("frame_ms", r.frameMilliseconds);
+    v("seconds", r.seconds);
+    v("gl_renderer", r.glRenderer);
+    v("warnings", r.warnings);
+}
+
+template <class V> void fields(V& v, AnimateReport& r) {
+    v("output", r.output);
+    v("sdf", r.sdf);
+    v("frames", r.frames);
+    v("fps", r.framesPerSecond);
+    v("width", r.width);
+    v("height", r.height);
+    v("render_seconds", r.renderSeconds);
+    v("seconds", r.seconds);
+    v("warnings", r.warnings);
+}
+
+template <class V> void fields(V& v, SampleReport& r) {
+    v("output", r.output);
+    v("format", r.format);
+    v("sdf", r.sdf);
+    v("pattern", r.pattern);
+    v("n", r.count);
+    v("rows", r.rows);
+    v("first_index", r.firstIndex);
+    v("seed", r.seed);
+    v("time", r.time);
+    v("bad_rows", r.badRows);
+    v("seconds", r.seconds);
+    v("samples_per_second", r.samplesPerSecond);
+    v("gl_renderer", r.glRenderer);
+}
+
+template <class V> void fields(V& v, MergeReport& r) {
+    v("output", r.output);
+    v("rows", r.rows);
+    v("parts", r.parts);
+    v("seconds", r.seconds);
+}
+
+template <class V> void fields(V& v, sampling::AuditFlag& f) {
+    v("flag", f.name);
+    v("evidence", f.evidence);
+    v("value", f.value);
+    v("maximum", f.maximum);
+    v("start", f.start);
+    v("share", f.share);
+    v("count", f.count);
+    v("examples", f.examples);
+}
+
+template <class V> void fields(V& v, sampling::QuotientScale& q) {
+    v("scale", q.step);
+    v("p50", q.p50);
+    v("p99", q.p99);
+    v("p999", q.p999);
+    v("max", q.max);
+}
+
+template <class V> void fields(V& v, sampling::ConvergencePoint& c) {
+    v("samples", c.samples);
+    v("lipschitz", c.lipschitz);
+    v("exactness_p99", c.exactnessP99);
+    v("seconds", c.seconds);
+}
+
+template <class V> void fields(V& v, sampling::AuditReport& r) {
+    v("verdict", r.verdict);
+    v("reason", r.reason);
+    v("flags", r.flags);
+    v("lipschitz", r.lipschitz);
+    v("lipschitz_max", r.lipschitzMax);
+    v("lipschitz_uncertainty", r.lipschitzUncertainty);
+    v("safe_step_factor", r.safeStepFactor);
+    v("truncation_distance", r.truncationDistance);
+    v("nan_fraction", r.nanFraction);
+    v("nan_fraction_error", r.nanFractionError);
+    v("discontinuities", r.discontinuities);
+    v("discontinuity_share", r.discontinuityShare);
+    v("eikonal_error_mean", r.eikonalMean);
+    v("eikonal_error_p95", r.eikonalP95);
+    v("surface_points", r.surfacePoints);
+    v("surface_spacing", r.surfaceSpacing);
+    v("exactness_error_p99", r.exactnessP99);
+    v("exactness_error_max", r.exactnessMax);
+    v("overestimate_share", r.overestimateShare);
+    v("surface_gradient", r.surfaceGradient);
+    v("noise_floor", r.noiseFloor);
+    v("scales", r.scales);
+    v("convergence", r.convergence);
+    v("samples", r.samples);
+    v("seconds", r.seconds);
+}
+
+template <class V> void fields(V& v, sampling::PlaneReadout& r) {
+    v("resolution", r.resolution);
+    v("points", r.points);
+    v("minimum", r.minimum);
+    v("maximum", r.maximum);
+    v("lipschitz_max", r.lipschitzMax);
+    v("lipschitz_p99", r.lipschitz99);
+    v("share_above_one", r.shareAboveOne);
+    v("truncation_distance", r.truncationDistance);
+    v("discontinuities", r.discontinuities);
+    v("nan_count", r.nanCount);
+    v("histogram", r.histogram);
+    v("safe_step_factor", r.safeStepFactor);
+    v("flags", r.flags);
+    v("seconds", r.seconds);
+}
+
+template <class V> void fields(V& v, ListItem& i) {
+    v("name", i.name);
+    v("category", i.category);
+    v("declared_type", i.declaredType);
+    v("animated", i.animated);
+    v("path", i.path);
+    v("author", i.author);
+    v("license", i.license);
+    v("notes", i.notes);
+}
+
+template <class V> void fields(V& v, ListReport& r) {
+    v("sdfs", r.items);
+    v("problems", r.problems);
+    v("root", r.root);
+}
+
+template <class V> void fields(V& v, BenchReport& r) {
+    v("markdown", r.markdown);
+    v("csv_directory", r.csvDirectory);
+    v("image_directory", r.imageDirectory);
+    v("plotted", r.plotted);
+}
+
+// ---- writing ----
+
+struct Writer;
+template <class T>
+concept Described = requires(Writer& w, T& t) {
+    fields(w, t);
+};
+
+json encode(bool value) { return value; }
+json encode(const std::string& value) { return value; }
+json encode(renderer::ShadingMode mode) { return renderer::shadingModeName(mode); }
+// A float as the shortest decimal that reads back as the same float (0.01f is 0.01, not
+// 0.009999999776482582): written as that double, it parses back to the same float bits.
+json encode(float value) {
+    if (!std::isfinite(value)) return nullptr;
+    char text[32];
+    auto end = std::to_chars(text, text + sizeof text, value).ptr;
+    return std::strtod(std::string(text, end).c_str(), nullptr);
+}
+json encode(const glm::vec3& v) { return json::array({encode(v.x), encode(v.y), encode(v.z)}); }
+json encode(const PlaneSpec& p) {
+    return json::array({encode(p.normal.x), encode(p.normal.y), encode(p.normal.z), encode(p.offset)});
+}
+template <class T>
+requires std::is_arithmetic_v<T> &&(!std::is_same_v<T, float>)json encode(T value) { return value; }
+template <class T> json encode(const std::optional<T>& value);
+template <class T> json encode(const std::vector<T>& values);
+template <Described T> json encode(const T& value);
+
+struct Writer {
+    json& out;
+    template <class T> void operator()(const char* key, const T& value) { out[key] = encode(value); }
+};
+
+template <class T> json encode(const std::optional<T>& value) { return value ? encode(*value) : json(nullptr); }
+template <class T> json encode(const std::vector<T>& values) {
+    json list = json::array();
+    for (const T& value : values) list.push_back(encode(value));
+    return list;
+}
+template <Described T> json encode(const T& value) {
+    json out = json::object();
+    Writer writer{out};
+    fields(writer, const_cast<T&>(value)); // fields() only reads through a Writer
+    return out;
+}
+
+// ---- reading ----
+
+// Reads keys into a struct; the first error (with its key path) wins. Strict readers refuse keys
+// the description does not name.
+struct Reader {
+    const json& in;
+    std::string path;
+    bool strict;
+    std::string& error;
+    std::set<std::string> seen;
+
+    template <class T> void operator()(const char* key, T& value);
+    void finish() {
+        if (!strict || !error.empty() || !in.is_object()) return;
+        for (const auto& [key, item] : in.items())
+            if (!seen.count(key)) {
+                std::string known;
+                for (const std::string& name : seen) known += (known.empty() ? "" : ", ") + name;
+                error = "'" + (path.empty() ? key : path + "." + key) + "': unknown key (known here: " + known + ")";
+                return;
+            }
+    }
+};
+
+std::string describeValue(const json& value) {
+    std::string text = value.dump();
+    return text.size() > 40 ? text.substr(0, 37) + "..." : text;
+}
+
+bool fail(std::string& error, const std::string& path, const std::string& expected, const json& value) {
+    error = "'" + path + "': expected " + expected + ", got " + describeValue(value);
+    return false;
+}
+
+bool decode(const json& in, bool& value, const std::string& path, bool, std::string& error) {
+    if (!in.is_boolean()) return fail(error, path, "true or false", in);
+    value = in.get<bool>();
+    return true;
+}
+
+bool decode(const json& in, std::string& value, const std::string& path, bool, std::string& error) {
+    if (!in.is_string()) return fail(error, path, "a string", in);
+    value = in.get<std::string>();
+    return true;
+}
+
+template <std::integral T> bool decode(const json& in, T& value, const std::string& path, bool, std::string& error) {
+    if (!in.is_number_integer()) return fail(error, path, "an integer", in);
+    if (in.is_number_unsigned()) {
+        const auto n = in.get<std::uint64_t>();
+        if (n > std::uint64_t(std::numeric_limits<T>::max())) return fail(error, path, "an integer in range", in);
+        value = T(n);
+    } else {
+        const auto n = in.get<std::int64_t>();
+        if (n < std::int64_t(std::numeric_limits<T>::min()) ||
+            (n > 0 && std::uint64_t(n) > std::uint64_t(std::numeric_limits<T>::max())))
+            return fail(error, path, std::is_signed_v<T> ? "an integer in range" : "a non-negative integer", in);
+        value = T(n);
+    }
+    return true;
+}
+
+template <std::floating_point T> bool decode(const json& in, T& value, const std::string& path, bool, std::string& error) {
+    if (!in.is_number()) return fail(error, path, "a number", in);
+    value = T(in.get<double>());
+    return true;
+}
+
+bool decode(const json& in, glm::vec3& value, const std::string& path, bool, std::string& error) {
+    if (!in.is_array() || in.size() != 3 || !in[0].is_number() || !in[1].is_number() || !in[2].is_number())
+        return fail(error, path, "[x, y, z]", in);
+    value = glm::vec3(in[0].get<float>(), in[1].get<float>(), in[2].get<float>());
+    return true;
+}
+
+bool decode(const json& in, PlaneSpec& value, const std::string& path, bool, std::string& error) {
+    if (!in.is_array() || in.size() != 4) return fail(error, path, "[nx, ny, nz, offset]", in);
+    for (const json& item : in)
+        if (!item.is_number()) return fail(error, path, "[nx, ny, nz, offset]", in);
+    value.normal = glm::vec3(in[0].get<float>(), in[1].get<float>(), in[2].get<float>());
+    value.offset = in[3].get<float>();
+    return true;
+}
+
+bool decode(const json& in, renderer::ShadingMode& value, const std::string& path, bool, std::string& error) {
+    if (!in.is_string()) return fail(error, path, "a shading mode (" + renderer::shadingModeNames() + ")", in);
+    auto mode = renderer::parseShadingMode(in.get<std::string>());
+    if (!mode) return fail(error, path, "a shading mode (" + renderer::shadingModeNames() + ")", in);
+    value = *mode;
+    return true;
+}
+
+template <class T> bool decode(const json& in, std::optional<T>& value, const std::string& path, bool strict, std::string& error);
+template <class T> bool decode(const json& in, std::vector<T>& values, const std::string& path, bool strict, std::string& error);
+template <Described T> bool decode(const json& in, T& value, const std::string& path, bool strict, std::string& error);
+
+template <class T>
+bool decode(const json& in, std::optional<T>& value, const std::string& path, bool strict, std::string& error) {
+    if (in.is_null()) {
+        value.reset();
+        return true;
+    }
+    T inner{};
+    if (!decode(in, inner, path, strict, error)) return false;
+    value = std::move(inner);
+    return true;
+}
+
+template <class T> bool decode(const json& in, std::vector<T>& values, const std::string& path, bool strict, std::string& error) {
+    if (!in.is_array()) return fail(error, path, "an array", in);
+    values.clear();
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        T value{};
+        if (!decode(in[i], value, path + "[" + std::to_string(i) + "]", strict, error)) return false;
+        values.push_back(std::move(value));
+    }
+    return true;
+}
+
+template <Described T> bool decode(const json& in, T& value, const std::string& path, bool strict, std::string& error) {
+    if (!in.is_object()) return fail(error, path, "an object", in);
+    Reader reader{in, path, strict, error, {}};
+    fields(reader, value);
+    reader.finish();
+    return error.empty();
+}
+
+template <class T> void Reader::operator()(const char* key, T& value) {
+    seen.insert(key);
+    if (!error.empty()) return;
+    auto it = in.find(key);
+    if (it == in.end()) return;
+    decode(*it, value, path.empty() ? std::string(key) : path + "." + key, strict, error);
+}
+
+// Reads the top-level object `in` into `value`, ignoring `skip` (the request's "kind").
+template <class T> Expected<T> readObject(const json& in, bool strict, const char* what) {
+    T value{};
+    std::string error;
+    if (!in.is_object()) return makeError(std::string(what) + ": expected a JSON object");
+    json body = in;
+    body.erase("kind");
+    Reader reader{body, "", strict, error, {}};
+    fields(reader, value);
+    reader.finish();
+    if (!error.empty()) return makeError(std::string(what) + ": " + error);
+    return value;
+}
+
+std::optional<json> parse(const std::string& text, std::string& error) {
+    try {
+        return json::parse(text);
+    } catch (const json::parse_error& e) {
+        error = std::string("not valid JSON: ") + e.what();
+        return std::nullopt;
+    }
+}
+
+std::string dump(const json& value, int indent) { return value.dump(indent, ' ', false, json::error_handler_t::replace); }
+
+} // namespace
+
+std::string toJson(const Request& request, int indent) {
+    json out = {{"kind", kindName(request)}};
+    std::visit([&](const auto& r) { out.update(encode(r)); }, request);
+    return dump(out, indent);
+}
+
+Expected<Request> requestFromJson(const std::string& text) {
+    std::string error;
+    auto in = parse(text, error);
+    if (!in) return makeError("request: " + error);
+    if (!in->is_object()) return makeError("request: expected a JSON object with a \"kind\"");
+    auto kind = in->find("kind");
+    if (kind == in->end() || !kind->is_string())
+        return makeError("request: missing \"kind\" (render, animate, sample, audit, merge, list, bench)");
+    const std::string name = kind->get<std::string>();
+    auto as = [&]<class T>(T*) -> Expected<Request> {
+        auto value = readObject<T>(*in, true, (name + " request").c_str());
+        if (!value) return value.error();
+        return Request(std::move(*value));
+    };
+    if (name == "render") return as((RenderRequest*)nullptr);
+    if (name == "animate") return as((AnimateRequest*)nullptr);
+    if (name == "sample") return as((SampleRequest*)nullptr);
+    if (name == "audit") return as((AuditRequest*)nullptr);
+    if (name == "merge") return as((MergeRequest*)nullptr);
+    if (name == "list") return as((ListRequest*)nullptr);
+    if (name == "bench") return as((BenchRequest*)nullptr);
+    return makeError("request: unknown kind '" + name + "' (render, animate, sample, audit, merge, list, bench)");
+}
+
+namespace {
+
+json encodeAudit(const AuditJobReport& report) {
+    json out = {{"sdf", report.sdf}, {"entry", report.entry}};
+    if (report.readout) {
+        out["plane"] = encode(report.plane.value_or(PlaneSpec{}));
+        out.update(encode(*report.readout));
+        out["histogram_bin_width"] = 0.05;
+    } else if (report.volume) {
+        out["probe_distance"] = report.probeDistance;
+        out.update(encode(*report.volume));
+    }
+    // The figures particular to each flag's kind, by name (namedFigures), next to the generic ones.
+    if (out.contains("flags")) {
+        const auto& flags = report.readout ? report.readout->flags : report.volume->flags;
+        for (std::size_t i = 0; i < flags.size(); ++i)
+            for (const auto& [name, value] : sampling::namedFigures(flags[i])) out["flags"][i][name] = value;
+    }
+    return out;
+}
+
+} // namespace
+
+std::string toJson(const RenderReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const AnimateReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const SampleReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const MergeReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const ListReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const BenchReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const AuditJobReport& report, int indent) { return dump(encodeAudit(report), indent); }
+
+template <class T> Expected<T> reportFromJson(const std::string& text) {
+    std::string error;
+    auto in = parse(text, error);
+    if (!in) return makeError("report: " + error);
+    return readObject<T>(*in, false, "report");
+}
+
+template <> Expected<AuditJobReport> reportFromJson<AuditJobReport>(const std::string& text) {
+    std::string error;
+    auto in = parse(text, error);
+    if (!in) return makeError("report: " + error);
+    if (!in->is_object()) return makeError("report: expected a JSON object");
+    AuditJobReport report;
+    auto read = [&](const char* key, auto& value) {
+        if (auto it = in->find(key); it != in->end() && error.empty()) decode(*it, value, key, false, error);
+    };
+    read("sdf", report.sdf);
+    read("entry", report.entry);
+    if (in->contains("plane")) {
+        read("plane", report.plane);
+        auto readout = readObject<sampling::PlaneReadout>(*in, false, "report");
+        if (!readout) return readout.error();
+        report.readout = std::move(*readout);
+    } else {
+        read("probe_distance", report.probeDistance);
+        auto volume = readObject<sampling::AuditReport>(*in, false, "report");
+        if (!volume) return volume.error();
+        report.volume = std::move(*volume);
+    }
+    if (!error.empty()) return makeError("report: " + error);
+    return report;
+}
+
+template Expected<RenderReport> reportFromJson<RenderReport>(const std::string&);
+template Expected<AnimateReport> reportFromJson<AnimateReport>(const std::string&);
+template Expected<SampleReport> reportFromJson<SampleReport>(const std::string&);
+template Expected<MergeReport> reportFromJson<MergeReport>(const std::string&);
+template Expected<ListReport> reportFromJson<ListReport>(const std::string&);
+template Expected<BenchReport> reportFromJson<BenchReport>(const std::string&);
+
+} // namespace sdfwb::jobs

@@ -1,0 +1,218 @@
+// The shared steps of every job: opening the SDF and the pure checks of each request.
+#include <jobs/Jobs.h>
+
+#include <core/Paths.h>
+#include <dataset/Catalogue.h>
+#include <renderer/ImageIO.h>
+#include <sampling/SampleFile.h>
+#include <sampling/Sampler.h>
+
+#include <cmath>
+#include <filesystem>
+#include <variant>
+
+namespace sdfwb::jobs {
+namespace fs = std::filesystem;
+
+const char* kindName(const Request& request) {
+    struct Names {
+        const char* operator()(const RenderRequest&) const { return "render"; }
+        const char* operator()(const AnimateRequest&) const { return "animate"; }
+        const char* operator()(const SampleRequest&) const { return "sample"; }
+        const char* operator()(const AuditRequest&) const { return "audit"; }
+        const char* operator()(const MergeRequest&) const { return "merge"; }
+        const char* operator()(const ListRequest&) const { return "list"; }
+        const char* operator()(const BenchRequest&) const { return "bench"; }
+    };
+    return std::visit(Names{}, request);
+}
+
+bool needsGl(const Request& request) {
+    return !std::holds_alternative<MergeRequest>(request) && !std::holds_alternative<ListRequest>(request);
+}
+
+namespace {
+
+JobError usage(const std::string& message) { return {Failure::Usage, message, {}}; }
+
+// Resolves `input.sdf` to a file; with source text a name that is not a file is kept as a label.
+Expected<fs::path> resolve(const SdfInput& input) {
+    if (!input.source.empty()) {
+        std::error_code ec;
+        if (input.sdf.empty()) return fs::path();
+        if (fs::is_regular_file(input.sdf, ec)) return fs::path(input.sdf);
+        dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
+        auto path = dataset::resolveSdfArgument(input.sdf, catalogue);
+        return path ? *path : fs::path(input.sdf);
+    }
+    if (input.sdf.empty()) return makeError("--sdf: no SDF given (a dataset name or a path to a .glsl file)");
+    dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
+    auto path = dataset::resolveSdfArgument(input.sdf, catalogue);
+    if (!path) return makeError("--sdf: " + path.error().message);
+    return *path;
+}
+
+std::optional<JobError> checkSdf(const SdfInput& input) {
+    if (!input.entry.empty()) {
+        std::string lower;
+        for (char c : input.entry) lower += char(std::tolower(static_cast<unsigned char>(c)));
+        bool identifier = !input.entry.empty() && !std::isdigit(static_cast<unsigned char>(input.entry[0]));
+        for (char c : input.entry) identifier = identifier && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+        if (!identifier) return usage("--entry: expected a GLSL function name, got '" + input.entry + "'");
+        if (lower == "main" || lower.rfind("gl_", 0) == 0 || lower.rfind("sdfwb_", 0) == 0)
+            return usage("--entry: '" + input.entry + "' is reserved (main, gl_*, sdfwb_*): name your own function");
+    }
+    if (auto path = resolve(input); !path) return usage(path.error().message);
+    return std::nullopt;
+}
+
+std::optional<JobError> checkOutputFolder(const std::string& output) {
+    if (output.empty()) return usage("--output: no output file given");
+    fs::path folder = fs::path(output).parent_path().empty() ? fs::path(".") : fs::path(output).parent_path();
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec))
+        return usage("--output: '" + output + "': folder '" + folder.string() + "' does not exist");
+    return std::nullopt;
+}
+
+bool inRange(double value, double low, double high) { return std::isfinite(value) && value >= low && value <= high; }
+
+std::string text(double value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g", value);
+    return buffer;
+}
+
+std::optional<JobError> checkFrame(const FrameRequest& frame) {
+    if (frame.width < 1 || frame.height < 1 || frame.width > 16384 || frame.height > 16384)
+        return usage("--size: expected WxH with integers from 1 to 16384, got '" + std::to_string(frame.width) + "x" +
+                     std::to_string(frame.height) + "'");
+    if (!std::isfinite(frame.time)) return usage("--time: expected a finite number");
+    if (!inRange(frame.camera.fovYDegrees, 1.0, 179.0))
+        return usage("--fov: must be 1..179, got " + text(frame.camera.fovYDegrees));
+    if (frame.trace.maxSteps < 1 || frame.trace.maxSteps > 100000)
+        return usage("--max-steps: must be 1..100000, got " + std::to_string(frame.trace.maxSteps));
+    if (!inRange(frame.trace.stepFactor, 0.01, 2.0))
+        return usage("--step-factor: must be 0.01..2, got " + text(frame.trace.stepFactor));
+    if (!inRange(frame.trace.overRelaxation, 1.0, 1.95))
+        return usage("--relaxation: must be 1..1.95, got " + text(frame.trace.overRelaxation));
+    if (!inRange(frame.trace.epsilonScale, 1e-6, 100.0)) return usage("trace.epsilon_scale: must be 1e-6..100");
+    if (!inRange(frame.plane.contourSpacing, 1e-5, 10.0))
+        return usage("--contour-spacing: must be 1e-5..10, got " + text(frame.plane.contourSpacing));
+    if (frame.plane.enabled && frame.plane.normal == glm::vec3(0.0f))
+        return usage("--plane: expected NX,NY,NZ,OFFSET with a non-zero normal");
+    for (float c : {frame.camera.position.x, frame.camera.position.y, frame.camera.position.z, frame.camera.target.x,
+                    frame.camera.target.y, frame.camera.target.z, frame.plane.offset})
+        if (!std::isfinite(c)) return usage("--camera/--target/--plane: expected finite numbers");
+    if (frame.shading.markers.size() > 16) return usage("shading.markers: at most 16 points");
+    return checkSdf(frame.sdf);
+}
+
+} // namespace
+
+JobResult<OpenedSdf> openSdf(const SdfInput& input, const std::string& what) {
+    auto path = resolve(input);
+    if (!path) return usage(path.error().message);
+    shaders::IncludeOptions options;
+    options.libraryRoots = {paths::shaderLibraryRoot(), paths::datasetRoot()};
+    shaders::PreparedSdf sdf;
+    if (!input.source.empty()) {
+        const std::string name = path->empty() ? std::string("<source>") : path->filename().string();
+        sdf = shaders::prepareSdf(input.source, name, *path, options, input.entry);
+    } else {
+        sdf = shaders::prepareSdfFile(*path, options, input.entry);
+    }
+    const std::string label = path->empty() ? std::string("<source>") : path->string();
+    if (sdf.ok()) return OpenedSdf{std::move(sdf), label};
+    return JobError{Failure::Work, what + ": " + label + " has errors" + (what == "audit" ? "" : "; nothing written"),
+                    sdf.diagnostics};
+}
+
+std::optional<JobError> validate(const RenderRequest& request) {
+    if (auto error = checkFrame(request.frame)) return error;
+    const std::string extension = fs::path(request.output).extension().string();
+    if (!renderer::canWriteImageExtension(extension))
+        return usage("--output: '" + request.output + "': unsupported image type '" + extension + "' (use .png, .jpg or .exr)");
+    return checkOutputFolder(request.output);
+}
+
+std::optional<JobError> validate(const AnimateRequest& request) {
+    if (auto error = checkFrame(request.frame)) return error;
+    if (fs::path(request.output).extension() != ".mp4")
+        return usage("--output: '" + request.output + "': animations are written as .mp4 (H.264)");
+    if (!(request.seconds > 0.0f) || request.seconds > 3600.0f) return usage("--seconds: must be in (0, 3600]");
+    if (request.framesPerSecond < 1 || request.framesPerSecond > 240) return usage("--fps: must be 1..240");
+    return checkOutputFolder(request.output);
+}
+
+sampling::SamplingJob samplingJob(const SampleRequest& request) {
+    sampling::SamplingJob job;
+    job.count = request.count;
+    job.seed = request.seed;
+    job.time = request.time;
+    job.shardIndex = request.shardIndex;
+    job.shardCount = request.shardCount;
+    job.chunkSize = request.chunkSize;
+    job.gradientStep = request.gradientStep;
+    job.surfaceTolerance = request.surfaceTolerance;
+    return job;
+}
+
+std::optional<JobError> validate(const SampleRequest& request) {
+    if (request.pattern.empty()) return usage("--pattern: no sampling pattern given");
+    if (!std::isfinite(request.time)) return usage("--time: expected a finite number");
+    if (!(request.gradientStep > 0.0f) || !std::isfinite(request.gradientStep)) return usage("--gradient-step: must be positive");
+    if (!(request.surfaceTolerance > 0.0f) || !std::isfinite(request.surfaceTolerance))
+        return usage("--surface-tolerance: must be positive");
+    if (request.shardCount == 0 || request.shardIndex >= request.shardCount)
+        return usage("--shard: expected K/COUNT with 0 <= K < COUNT, got '" + std::to_string(request.shardIndex) + "/" +
+                     std::to_string(request.shardCount) + "'");
+    const sampling::SamplingJob job = samplingJob(request);
+    if (auto ok = sampling::validate(job); !ok) return usage(ok.error().message);
+    if (!request.output.empty()) {
+        std::optional<sampling::SampleFormat> format =
+            request.format.empty() ? sampling::formatFromPath(request.output) : sampling::parseFormat(request.format);
+        if (!format)
+            return usage(request.format.empty() ? "--output: '" + request.output +
+                                                      "': unknown sample file type (use .bin, .npz or .ply, or --format)"
+                                                : "--format: unknown format '" + request.format + "' (bin, npz, ply)");
+        if (job.rows() > sampling::maxRows(*format))
+            return usage("-n: " + std::to_string(job.rows()) + " rows exceed the ." + sampling::formatName(*format) +
+                         " limit of " + std::to_string(sampling::maxRows(*format)));
+        if (auto error = checkOutputFolder(request.output)) return error;
+    }
+    return checkSdf(request.sdf);
+}
+
+std::optional<JobError> validate(const AuditRequest& request) {
+    if (request.samples < 64 || request.samples > 100000000) return usage("--samples: must be 64..100000000");
+    if (!std::isfinite(request.time)) return usage("--time: expected a finite number");
+    if (!inRange(request.probeDistance, 0.1, 100.0)) return usage("--probe-distance: must be 0.1..100");
+    if (request.resolution < 2 || request.resolution > 4096) return usage("--resolution: must be 2..4096");
+    if (request.plane) {
+        const PlaneSpec& plane = *request.plane;
+        if (plane.normal == glm::vec3(0.0f) || !std::isfinite(plane.offset) || !std::isfinite(plane.normal.x) ||
+            !std::isfinite(plane.normal.y) || !std::isfinite(plane.normal.z))
+            return usage("--plane: expected NX,NY,NZ,OFFSET with a non-zero normal");
+    }
+    return checkSdf(request.sdf);
+}
+
+std::optional<JobError> validate(const MergeRequest& request) {
+    std::optional<sampling::SampleFormat> format =
+        request.format.empty() ? sampling::formatFromPath(request.output) : sampling::parseFormat(request.format);
+    if (!format)
+        return usage(request.format.empty()
+                         ? "--output: '" + request.output + "': unknown sample file type (use .bin, .npz or .ply, or --format)"
+                         : "--format: unknown format '" + request.format + "' (bin, npz, ply)");
+    if (request.parts.empty()) return usage("parts: no shard files given");
+    return std::nullopt;
+}
+
+std::optional<JobError> validate(const BenchRequest& request) {
+    if (request.repeats < 1 || request.repeats > 100) return usage("--repeats: must be 1..100");
+    if (request.outputDirectory.empty()) return usage("--output: no report folder given");
+    return std::nullopt;
+}
+
+} // namespace sdfwb::jobs

@@ -1,0 +1,136 @@
+// render and animate: one frame request, traced offscreen, written as an image or an MP4.
+#include <jobs/Jobs.h>
+
+#include <core/Log.h>
+#include <renderer/GlInfo.h>
+#include <renderer/ImageIO.h>
+#include <renderer/OffscreenRenderer.h>
+#include <renderer/SdfRenderer.h>
+#include <renderer/VideoWriter.h>
+
+#include <glm/geometric.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+namespace sdfwb::jobs {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// Warnings about a view that cannot show what the user expects (logged and reported).
+std::vector<std::string> viewWarnings(const FrameRequest& frame) {
+    std::vector<std::string> warnings;
+    char text[256];
+    if (auto floor = renderer::precisionFloor(frame.camera, frame.trace.epsilonScale, frame.height); floor.exceeded) {
+        std::snprintf(
+            text, sizeof text,
+            "below float32 precision: positions are known to %.2g at this camera distance, the hit tolerance is %.2g (expect "
+            "surface noise; bring the camera nearer the origin or widen --fov)",
+            double(floor.positionFloor), double(floor.hitTolerance));
+        warnings.push_back(text);
+    }
+    if (const float distance = glm::length(frame.camera.position); distance - 1.05f * std::sqrt(3.0f) > frame.camera.farPlane) {
+        std::snprintf(
+            text, sizeof text,
+            "the camera is %.4g from the origin, beyond the far plane (%.4g): the [-1,1]^3 box is out of view, nothing will "
+            "be drawn",
+            double(distance), double(frame.camera.farPlane));
+        warnings.push_back(text);
+    }
+    for (const std::string& warning : warnings) log::warning("render", warning);
+    return warnings;
+}
+
+// The tracer set up with the frame's settings and SDF; errors carry the driver's diagnostics.
+std::optional<JobError> setUp(renderer::SdfRenderer& tracer, const FrameRequest& frame, const OpenedSdf& sdf,
+                              const std::string& what) {
+    (void)tracer.setTrace(frame.trace);
+    (void)tracer.setShading(frame.shading);
+    (void)tracer.setPlane(frame.plane);
+    auto diagnostics = tracer.setSdf(sdf.prepared);
+    if (!shaders::hasErrors(diagnostics)) return std::nullopt;
+    return JobError{Failure::Work, what + ": the driver rejected " + sdf.label + "; nothing written", diagnostics};
+}
+
+} // namespace
+
+JobResult<RenderReport> run(const RenderRequest& request, const ProgressSink&) {
+    const auto start = Clock::now();
+    if (auto error = validate(request)) return *error;
+    auto sdf = openSdf(request.frame.sdf, "render");
+    if (!sdf) return sdf.error;
+    RenderReport report;
+    report.warnings = viewWarnings(request.frame);
+    renderer::SdfRenderer tracer;
+    if (auto error = setUp(tracer, request.frame, *sdf, "render")) return *error;
+    renderer::FrameStats stats;
+    renderer::Image image;
+    {
+        renderer::OffscreenRenderer offscreen;
+        image =
+            offscreen.render(tracer, request.frame.width, request.frame.height, request.frame.camera, request.frame.time, &stats);
+    }
+    tracer.releaseGl();
+    if (auto written = renderer::writeImage(request.output, image); !written)
+        return JobError{Failure::Work, written.error().message, {}};
+    report.output = request.output;
+    report.sdf = sdf->label;
+    report.entry = sdf->prepared.signature.entry;
+    report.width = request.frame.width;
+    report.height = request.frame.height;
+    report.shading = renderer::shadingModeName(request.frame.shading.mode);
+    report.frameMilliseconds = stats.cpuMilliseconds;
+    report.glRenderer = renderer::queryGlInfo().renderer;
+    report.seconds = secondsSince(start);
+    return report;
+}
+
+JobResult<AnimateReport> run(const AnimateRequest& request, const ProgressSink& progress) {
+    const auto start = Clock::now();
+    if (auto error = validate(request)) return *error;
+    auto sdf = openSdf(request.frame.sdf, "animate");
+    if (!sdf) return sdf.error;
+    AnimateReport report;
+    report.warnings = viewWarnings(request.frame);
+    if (!request.turntable && !sdf->prepared.usesTime()) {
+        report.warnings.push_back(sdf->label + " is not animated and --turntable is off: every frame is the same");
+        log::warning("animate", report.warnings.back());
+    }
+    renderer::SdfRenderer tracer;
+    if (auto error = setUp(tracer, request.frame, *sdf, "animate")) return *error;
+    const FrameRequest& frame = request.frame;
+    auto writer = renderer::VideoWriter::open(request.output, frame.width, frame.height, request.framesPerSecond);
+    if (!writer) return JobError{Failure::Work, writer.error().message, {}};
+
+    const int frames = std::max(1, int(std::lround(double(request.seconds) * request.framesPerSecond)));
+    {
+        renderer::OffscreenRenderer offscreen;
+        for (int i = 0; i < frames; ++i) {
+            if (progress.isCancelled()) break;
+            renderer::Camera camera = frame.camera;
+            if (request.turntable) renderer::orbit(camera, float(2.0 * 3.14159265358979 * i / frames), 0.0f);
+            const float time = frame.time + float(i) / float(request.framesPerSecond);
+            renderer::FrameStats stats;
+            renderer::Image image = offscreen.render(tracer, frame.width, frame.height, camera, time, &stats);
+            report.renderSeconds += stats.cpuMilliseconds / 1000.0;
+            if (auto ok = (*writer)->addFrame(image); !ok) return JobError{Failure::Work, ok.error().message, {}};
+            progress(std::uint64_t(i + 1), std::uint64_t(frames));
+        }
+    }
+    tracer.releaseGl();
+    if (progress.isCancelled()) return JobError{Failure::Cancelled, "animate: cancelled; nothing written", {}};
+    if (auto ok = (*writer)->finish(); !ok) return JobError{Failure::Work, ok.error().message, {}};
+    report.output = request.output;
+    report.sdf = sdf->label;
+    report.frames = frames;
+    report.framesPerSecond = request.framesPerSecond;
+    report.width = frame.width & ~1;
+    report.height = frame.height & ~1;
+    report.seconds = secondsSince(start);
+    return report;
+}
+
+} // namespace sdfwb::jobs

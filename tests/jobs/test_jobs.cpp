@@ -1,0 +1,367 @@
+// The job model's one JSON form: every request and report survives a round trip, malformed
+// requests are refused naming the key, and the CLI's options make the same requests as JSON.
+#include <jobs/JobJson.h>
+#include <jobs/Jobs.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <unistd.h>
+
+using namespace sdfwb;
+using namespace sdfwb::jobs;
+
+namespace {
+
+// A frame whose every field differs from its default, with floats that have no short decimal.
+FrameRequest unusualFrame() {
+    FrameRequest f;
+    f.sdf = {"Torus", "map", "float map(vec3 p) { return length(p) - 0.1; }\n"};
+    f.width = 333;
+    f.height = 77;
+    f.time = 1.0f / 3.0f;
+    f.shading.mode = renderer::ShadingMode::Gooch;
+    f.shading.ambientOcclusion = true;
+    f.shading.background = {0.1f, 0.2f, 0.30000001f};
+    f.shading.lightDirection = {0.0f, 1.0f, 1e-7f};
+    f.shading.curvatureScale = 7.25f;
+    f.shading.matcap = "jade";
+    f.shading.markers = {{0.1f, -0.2f, 0.3f}, {1.0f / 7.0f, 0.0f, -1.0f}};
+    f.trace.maxSteps = 999;
+    f.trace.stepFactor = 0.7f;
+    f.trace.epsilonScale = 0.125f;
+    f.trace.boxMargin = 0.2f;
+    f.trace.overRelaxation = 1.6f;
+    f.camera.position = {3.0f, -2.0f, 1.0e-3f};
+    f.camera.target = {0.1f, 0.2f, 0.3f};
+    f.camera.up = {0.0f, 0.0f, 1.0f};
+    f.camera.fovYDegrees = 55.5f;
+    f.camera.nearPlane = 0.02f;
+    f.camera.farPlane = 50.0f;
+    f.plane.enabled = true;
+    f.plane.normal = {1.0f, 2.0f, 3.0f};
+    f.plane.offset = -0.25f;
+    f.plane.contourSpacing = 0.03f;
+    f.plane.rampDistance = 2.0f;
+    f.plane.clipSurface = false;
+    f.plane.lipschitzOverlay = false;
+    return f;
+}
+
+std::vector<Request> unusualRequests() {
+    RenderRequest render{unusualFrame(), "/tmp/out.exr"};
+    AnimateRequest animate{unusualFrame(), "clip.mp4", 2.5f, 24, true};
+    SampleRequest sample;
+    sample.sdf = {"a/b c.glsl", "scene", ""};
+    sample.pattern = "metropolis_curvature";
+    sample.count = 12345678901ull;
+    sample.output = "s.npz";
+    sample.format = "npz";
+    sample.seed = 0xFFFFFFFFFFFFFFFFull; // the largest seed survives (no double in between)
+    sample.time = 2.0f;
+    sample.shardIndex = 3;
+    sample.shardCount = 8;
+    sample.chunkSize = 4096;
+    sample.gradientStep = 1e-4f;
+    sample.surfaceTolerance = 3e-6f;
+    AuditRequest audit;
+    audit.sdf = {"Sphere", "", "float sdf(vec3 p) { return length(p) - 0.5; }"};
+    audit.samples = 4096;
+    audit.seed = 9;
+    audit.time = 0.5f;
+    audit.probeDistance = 1.5f;
+    audit.plane = PlaneSpec{{0.0f, 1.0f, 0.0f}, 0.1f};
+    audit.resolution = 64;
+    MergeRequest merge{"all.ply", "ply", {"p0.ply", "p1.ply", "with \"quotes\" and \\.ply"}};
+    BenchRequest bench{"report", 3, true, true};
+    return {render, animate, sample, audit, merge, ListRequest{}, bench};
+}
+
+} // namespace
+
+TEST(JobJson, EveryRequestKindSurvivesARoundTrip) {
+    for (const Request& request : unusualRequests()) {
+        for (int indent : {-1, 2}) {
+            const std::string json = toJson(request, indent);
+            auto back = requestFromJson(json);
+            ASSERT_TRUE(back) << kindName(request) << ": " << back.error().message << "\n" << json;
+            EXPECT_EQ(back->index(), request.index()) << json;
+            EXPECT_TRUE(*back == request) << kindName(request) << " differs after the round trip:\n" << json;
+            EXPECT_EQ(toJson(*back, indent), json);
+        }
+    }
+}
+
+TEST(JobJson, DefaultsFillAbsentKeysAndFloatsAreWrittenShort) {
+    auto request = requestFromJson(R"({"kind": "render", "sdf": "Torus", "output": "t.png"})");
+    ASSERT_TRUE(request) << request.error().message;
+    RenderRequest expected;
+    expected.frame.sdf.sdf = "Torus";
+    expected.output = "t.png";
+    EXPECT_TRUE(std::get<RenderRequest>(*request) == expected);
+    const std::string json = toJson(*request);
+    EXPECT_EQ(json.rfind(R"({"kind":"render")", 0), 0u) << json;       // the kind leads
+    EXPECT_NE(json.find(R"("near":0.01)"), std::string::npos) << json; // not 0.009999999776482582
+}
+
+TEST(JobJson, MalformedRequestsAreRefusedNamingTheKey) {
+    struct Case {
+        const char* json;
+        const char* expected;
+    };
+    const Case cases[] = {
+        {R"({"sdf": "Torus"})", "missing \"kind\""},
+        {R"({"kind": "paint"})", "unknown kind 'paint'"},
+        {R"({"kind": "render", "widht": 3})", "'widht': unknown key"},
+        {R"({"kind": "render", "shading": {"mode": "plaid"}})", "'shading.mode': expected a shading mode"},
+        {R"({"kind": "render", "shading": {"markers": [[1, 2]]}})", "'shading.markers[0]': expected [x, y, z]"},
+        {R"({"kind": "render", "trace": {"max_steps": 2.5}})", "'trace.max_steps': expected an integer"},
+        {R"({"kind": "render", "trace": {"max_steps": 99999999999}})", "'trace.max_steps': expected an integer in range"},
+        {R"({"kind": "sample", "n": -1})", "'n': expected a non-negative integer"},
+        {R"({"kind": "audit", "plane": [0, 0, 1]})", "'plane': expected [nx, ny, nz, offset]"},
+        {R"({"kind": "merge", "parts": "a.ply"})", "'parts': expected an array"},
+        {R"({"kind": "render", "camera": {"fov": "wide"}})", "'camera.fov': expected a number"},
+        {R"({"kind": "render", "plane": {"enabled": 1}})", "'plane.enabled': expected true or false"},
+        {R"([1, 2])", "expected a JSON object"},
+        {R"({"kind": "render", )", "not valid JSON"},
+    };
+    for (const Case& c : cases) {
+        auto request = requestFromJson(c.json);
+        ASSERT_FALSE(request) << c.json;
+        EXPECT_NE(request.error().message.find(c.expected), std::string::npos)
+            << c.json << " -> " << request.error().message << " (expected " << c.expected << ")";
+    }
+}
+
+TEST(JobJson, ReportsSurviveARoundTrip) {
+    RenderReport render{"a.png", "/x/Torus.glsl", "sdf", 640, 360, "gooch", 12.5, 0.75, "llvmpipe", {"below float32 precision"}};
+    auto r = reportFromJson<RenderReport>(toJson(render));
+    ASSERT_TRUE(r) << r.error().message;
+    EXPECT_TRUE(*r == render);
+    SampleReport sample;
+    sample.output = "s.bin";
+    sample.count = 1ull << 40;
+    sample.rows = 5;
+    sample.badRows = 2;
+    sample.time = 0.1f;
+    sample.samplesPerSecond = 1.5e7;
+    auto s = reportFromJson<SampleReport>(toJson(sample));
+    ASSERT_TRUE(s) << s.error().message;
+    EXPECT_TRUE(*s == sample);
+    ListReport list{{{"Torus", "Geometry", "exact", "/d/Torus.glsl", "iq", "MIT", "", false}}, {"bad.glsl: no metadata"}, "/d"};
+    auto l = reportFromJson<ListReport>(toJson(list));
+    ASSERT_TRUE(l) << l.error().message;
+    EXPECT_TRUE(*l == list);
+    // Reports grow: a key this build does not know is skipped, not refused.
+    auto grown = reportFromJson<MergeReport>(R"({"output": "m.bin", "rows": 7, "parts": 2, "seconds": 0.5, "new_figure": 1})");
+    ASSERT_TRUE(grown) << grown.error().message;
+    EXPECT_EQ(grown->rows, 7u);
+}
+
+TEST(JobJson, AuditReportsKeepEveryFindingAndFigure) {
+    AuditJobReport volume;
+    volume.sdf = "broken.glsl";
+    volume.entry = "map";
+    volume.probeDistance = 2.0f;
+    sampling::AuditReport a;
+    a.verdict = "discontinuous";
+    a.reason = "f jumps";
+    a.flags.push_back({"discontinuous", "jumps of 0.2", 0.2f, 0.4f, 0.0f, 0.01, 37, {{0.1f, 0.2f, 0.3f}, {-1.0f, 0.0f, 0.5f}}});
+    a.flags.push_back({"truncated", "plateau at 0.3", 0.3f, 0.0f, 0.25f, 0.5, 0, {}});
+    a.lipschitz = 1.25f;
+    a.truncationDistance = 0.3f;
+    a.scales = {{0.02f, 1.0f, 1.1f, 1.2f, 3.0f}};
+    a.convergence = {{1000, 1.2f, 0.01f, 0.5}};
+    a.samples = 100000;
+    volume.volume = a;
+    const std::string json = toJson(volume);
+    EXPECT_NE(json.find("\"jump_max\": 0.4"), std::string::npos) << json; // the flag's named figures
+    auto back = reportFromJson<AuditJobReport>(json);
+    ASSERT_TRUE(back) << back.error().message;
+    ASSERT_TRUE(back->volume);
+    EXPECT_FALSE(back->readout);
+    EXPECT_EQ(back->volume->flags.size(), 2u);
+    EXPECT_EQ(back->volume->flags[0].examples.size(), 2u);
+    EXPECT_EQ(back->volume->flags[0].count, 37u);
+    EXPECT_EQ(toJson(*back), json);
+
+    AuditJobReport plane;
+    plane.sdf = "Sphere";
+    plane.plane = PlaneSpec{{0.0f, 0.0f, 1.0f}, 0.5f};
+    sampling::PlaneReadout readout;
+    readout.resolution = 64;
+    readout.histogram = {1, 2, 3};
+    readout.flags = a.flags;
+    plane.readout = readout;
+    const std::string planeJson = toJson(plane);
+    auto planeBack = reportFromJson<AuditJobReport>(planeJson);
+    ASSERT_TRUE(planeBack) << planeBack.error().message;
+    ASSERT_TRUE(planeBack->readout);
+    EXPECT_FALSE(planeBack->volume);
+    EXPECT_EQ(planeBack->readout->histogram, readout.histogram);
+    EXPECT_FALSE(planeBack->readout->truncationDistance);
+    EXPECT_EQ(toJson(*planeBack), planeJson);
+}
+
+TEST(Jobs, ValidationNamesTheArgumentBeforeAnyWork) {
+    AnimateRequest animate;
+    animate.frame.sdf.sdf = "Torus";
+    animate.output = "clip.mp4";
+    animate.framesPerSecond = 0;
+    auto error = validate(animate);
+    ASSERT_TRUE(error);
+    EXPECT_EQ(error->failure, Failure::Usage);
+    EXPECT_NE(error->message.find("--fps"), std::string::npos) << error->message;
+
+    RenderRequest render;
+    render.frame.sdf.sdf = "Torus";
+    render.output = "picture.xyz";
+    error = validate(render);
+    ASSERT_TRUE(error);
+    EXPECT_NE(error->message.find("unsupported image type '.xyz'"), std::string::npos) << error->message;
+    render.output = "picture.png";
+    render.frame.plane.enabled = true;
+    render.frame.plane.normal = glm::vec3(0.0f);
+    error = validate(render);
+    ASSERT_TRUE(error);
+    EXPECT_NE(error->message.find("--plane"), std::string::npos) << error->message;
+    render.frame.plane.normal = {0.0f, 0.0f, 1.0f};
+    render.frame.sdf.sdf = "No Such Shape";
+    error = validate(render);
+    ASSERT_TRUE(error);
+    EXPECT_NE(error->message.find("--sdf"), std::string::npos) << error->message;
+    render.frame.sdf.sdf = "Torus";
+    render.frame.sdf.entry = "sdfwb_sdf";
+    error = validate(render);
+    ASSERT_TRUE(error);
+    EXPECT_NE(error->message.find("reserved"), std::string::npos) << error->message;
+    render.frame.sdf.entry = "";
+    EXPECT_FALSE(validate(render)) << validate(render)->message;
+
+    // Source text with no file is valid: the workbench's untitled buffer, Python's strings.
+    AuditRequest audit;
+    audit.sdf.source = "float sdf(vec3 p) { return length(p) - 0.5; }";
+    EXPECT_FALSE(validate(audit));
+    audit.samples = 10;
+    error = validate(audit);
+    ASSERT_TRUE(error);
+    EXPECT_NE(error->message.find("--samples"), std::string::npos) << error->message;
+}
+
+TEST(Jobs, OpenSdfUsesTheGivenTextNotTheFile) {
+    SdfInput input{"Torus", "", "float sdf(vec3 p) { return length(p) - 0.25; }\n"};
+    auto opened = openSdf(input, "test");
+    ASSERT_TRUE(opened) << opened.error.message;
+    EXPECT_NE(opened->label.find("Torus.glsl"), std::string::npos) << opened->label; // labelled by the file
+    EXPECT_NE(opened->prepared.source.text.find("0.25"), std::string::npos);         // but the given text
+    opened = openSdf(SdfInput{"", "nothere", "float sdf(vec3 p) { return 1.0; }"}, "render");
+    ASSERT_FALSE(opened);
+    EXPECT_EQ(opened.error.failure, Failure::Work);
+    EXPECT_FALSE(opened.error.diagnostics.empty());
+    EXPECT_NE(opened.error.message.find("nothing written"), std::string::npos) << opened.error.message;
+}
+
+namespace {
+
+// What `sdfwb ARGUMENTS` prints on stdout.
+std::string standardOutput(const std::string& arguments) {
+    const std::string command = "env -u DISPLAY " + std::string(SDFWB_BINARY) + " " + arguments + " 2>/dev/null";
+    std::string output;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return output;
+    std::array<char, 4096> buffer;
+    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) output.append(buffer.data(), n);
+    pclose(pipe);
+    return output;
+}
+
+} // namespace
+
+// The CLI's options and the JSON form make the same request: what --print-request prints reads
+// back as the request the options describe, field by field.
+TEST(JobJson, CommandLineOptionsMakeTheSameRequestAsJson) {
+    RenderRequest render;
+    render.frame.sdf = {"Torus", "map", ""};
+    render.output = "/tmp/x.png";
+    render.frame.width = 320;
+    render.frame.height = 200;
+    render.frame.time = 1.5f;
+    render.frame.shading.mode = renderer::ShadingMode::Gooch;
+    render.frame.shading.ambientOcclusion = true;
+    render.frame.shading.matcap = "jade";
+    render.frame.camera.position = {3.0f, 2.0f, 1.0f};
+    render.frame.camera.target = {0.1f, 0.0f, 0.0f};
+    render.frame.camera.fovYDegrees = 50.0f;
+    render.frame.trace.maxSteps = 300;
+    render.frame.trace.stepFactor = 0.8f;
+    render.frame.trace.overRelaxation = 1.5f;
+    render.frame.plane.enabled = true;
+    render.frame.plane.normal = {0.0f, 1.0f, 0.0f};
+    render.frame.plane.offset = 0.25f;
+    render.frame.plane.clipSurface = false;
+    render.frame.plane.contourSpacing = 0.05f;
+    auto parsed = requestFromJson(standardOutput(
+        "--batch render --sdf Torus --entry map --output /tmp/x.png --size 320x200 --time 1.5 --shading gooch --ao --matcap jade "
+        "--camera 3,2,1 --target 0.1,0,0 --fov 50 --max-steps 300 --step-factor 0.8 --relaxation 1.5 --plane 0,1,0,0.25 "
+        "--plane-no-clip --contour-spacing 0.05 --print-request"));
+    ASSERT_TRUE(parsed) << parsed.error().message;
+    EXPECT_TRUE(*parsed == Request(render)) << toJson(*parsed, 2) << "\nexpected\n" << toJson(render, 2);
+
+    AnimateRequest animate;
+    animate.frame.sdf.sdf = "Sphere";
+    animate.output = "/tmp/x.mp4";
+    animate.seconds = 0.5f;
+    animate.framesPerSecond = 12;
+    animate.turntable = true;
+    parsed = requestFromJson(
+        standardOutput("--batch animate --sdf Sphere --output /tmp/x.mp4 --seconds 0.5 --fps 12 --turntable --print-request"));
+    ASSERT_TRUE(parsed) << parsed.error().message;
+    EXPECT_TRUE(*parsed == Request(animate)) << toJson(*parsed, 2);
+
+    SampleRequest sample;
+    sample.sdf.sdf = "Sphere";
+    sample.pattern = "near";
+    sample.count = 1000;
+    sample.output = "/tmp/x.npz";
+    sample.seed = 7;
+    sample.time = 0.5f;
+    sample.shardIndex = 1;
+    sample.shardCount = 4;
+    sample.chunkSize = 512;
+    sample.gradientStep = 1e-4f;
+    sample.surfaceTolerance = 1e-6f;
+    parsed = requestFromJson(
+        standardOutput("--batch sample --sdf Sphere --pattern near -n 1000 --output /tmp/x.npz --seed 7 --time 0.5 "
+                       "--shard 1/4 --chunk 512 --gradient-step 1e-4 --surface-tolerance 1e-6 --print-request"));
+    ASSERT_TRUE(parsed) << parsed.error().message;
+    EXPECT_TRUE(*parsed == Request(sample)) << toJson(*parsed, 2);
+
+    AuditRequest audit;
+    audit.sdf = {"Sphere", "sdf", ""};
+    audit.samples = 1000;
+    audit.seed = 3;
+    audit.probeDistance = 2.0f;
+    audit.plane = PlaneSpec{{1.0f, 0.0f, 0.0f}, 0.5f};
+    audit.resolution = 64;
+    parsed = requestFromJson(standardOutput("--batch audit --sdf Sphere --entry sdf --samples 1000 --seed 3 --probe-distance 2 "
+                                            "--plane 1,0,0,0.5 --resolution 64 --print-request"));
+    ASSERT_TRUE(parsed) << parsed.error().message;
+    EXPECT_TRUE(*parsed == Request(audit)) << toJson(*parsed, 2);
+
+    // And back: the printed JSON, given to `--batch request`, prints the same request again.
+    const std::string printed = toJson(Request(audit), 2);
+    const std::filesystem::path file =
+        std::filesystem::temp_directory_path() / ("sdfwb-jobs-" + std::to_string(::getpid()) + ".json");
+    {
+        FILE* out = std::fopen(file.c_str(), "w");
+        ASSERT_TRUE(out);
+        std::fputs(printed.c_str(), out);
+        std::fclose(out);
+    }
+    EXPECT_EQ(standardOutput("--batch request " + file.string() + " --print-request"), printed + "\n");
+    std::filesystem::remove(file);
+}
