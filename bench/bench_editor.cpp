@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
         latencies.push_back(timer.nsecsElapsed() / 1e6);
         QThread::msleep(50);
     }
-    std::printf("editor latency, %d-line SDF (%s)\n", lines, window.document()->path().isEmpty() ? "unsaved text" : "file");
+    std::printf("editor latency, %d-line SDF (%s)\n\n", lines, window.document()->path().isEmpty() ? "unsaved text" : "file");
     std::printf("| measure | ms |\n|---|---|\n");
     std::printf("| debounce (fixed) | %d |\n", window.document()->debounceMilliseconds());
     std::printf("| include resolution + glslang, in-thread reference (median of 5) | %.1f |\n", median(direct));

@@ -12,6 +12,7 @@
 #include <core/Paths.h>
 #include <dataset/Catalogue.h>
 #include <renderer/HeadlessContext.h>
+#include <renderer/ImageIO.h>
 #include <renderer/OffscreenRenderer.h>
 #include <renderer/SdfRenderer.h>
 #include <shaders/SdfSource.h>
@@ -23,6 +24,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -93,7 +96,7 @@ GLuint compileStage(GLenum type, const std::string& text) {
 
 // Frame time of the reference tracer at width x height (median of 3 after a warm-up), or < 0
 // when it does not compile.
-double referenceMilliseconds(const shaders::PreparedSdf& sdf, int width, int height) {
+double referenceMilliseconds(const shaders::PreparedSdf& sdf, const std::string& name, int width, int height) {
     auto vertex = shaders::composeBuiltinShader(shaders::Stage::Vertex, "tracer/fullscreen.vert", {});
     auto fragment = shaders::composeSdfShader(sdf, shaders::Stage::Fragment, {{"bench:reference", kReferenceMain}}, {});
     if (!vertex) return -1.0;
@@ -139,6 +142,16 @@ double referenceMilliseconds(const shaders::PreparedSdf& sdf, int width, int hei
     };
     frame();
     const double a = frame(), b = frame(), c = frame();
+    // SDFWB_REFERENCE_IMAGES=FOLDER writes what the reference drew, to look at.
+    if (const char* folder = std::getenv("SDFWB_REFERENCE_IMAGES")) {
+        renderer::Image image{width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 4)};
+        glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+        for (int y = 0; y < height / 2; ++y) // GL rows run bottom up
+            std::swap_ranges(image.rgba.begin() + std::ptrdiff_t(y) * width * 4,
+                             image.rgba.begin() + std::ptrdiff_t(y + 1) * width * 4,
+                             image.rgba.begin() + std::ptrdiff_t(height - 1 - y) * width * 4);
+        (void)renderer::writeImage(std::filesystem::path(folder) / (name + ".png"), image);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDeleteVertexArrays(1, &vertexArray);
     glDeleteFramebuffers(1, &framebuffer);
@@ -174,7 +187,7 @@ void datasetReport(const std::vector<std::string>& names) {
             continue;
         }
         double full = frameMilliseconds(offscreen, sdfRenderer, 1280, 720, 1.0f);
-        const double reference = referenceMilliseconds(prepared, 1280, 720);
+        const double reference = referenceMilliseconds(prepared, entry.metadata.name, 1280, 720);
         // The viewport's rule: start from the full frame's cost, then adapt frame by frame.
         float scale = std::clamp(float(std::sqrt(0.8 * 33.0 / full)), 0.1f, 1.0f);
         double moving = 0.0;

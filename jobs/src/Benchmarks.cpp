@@ -408,7 +408,7 @@ Expected<BenchFiles> runBenchmarks(const BenchOptions& options, const ProgressSi
                        "Every time is the median [min, max] of repeated runs in that same run; every error is a distribution "
                        "over pixels or samples (50th and 99th percentiles). The tables are also in benchmarks/*.csv; the plots "
                        "are made from them by bench/plot_benchmarks.py (matplotlib). The references (exact intersections, "
-                       "distances, gradients in double precision) are in bench/References.cpp.\n\n",
+                       "distances, gradients in double precision) are in jobs/src/References.cpp.\n\n",
                        date, options.commandLine.c_str(), millisecondsSince(start) / 1000.0,
                        options.quick ? ", --quick: not for reading" : "", std::thread::hardware_concurrency(),
                        options.glDescription.c_str());

@@ -381,7 +381,9 @@ template <std::integral T> bool decode(const json& in, T& value, const std::stri
 
 template <std::floating_point T> bool decode(const json& in, T& value, const std::string& path, bool, std::string& error) {
     if (!in.is_number()) return fail(error, path, "a number", in);
-    value = T(in.get<double>());
+    const T number = T(in.get<double>());
+    if (!std::isfinite(number)) return fail(error, path, "a finite number", in); // 1e39 is no float
+    value = number;
     return true;
 }
 
