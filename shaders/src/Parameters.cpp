@@ -1,0 +1,360 @@
+// The parameter parser: a scan of the comment-stripped text at brace depth 0 for `uniform TYPE
+// NAME = INIT;`, then the `//` comment after the `;` on that line of the original text.
+#include <shaders/Parameters.h>
+
+#include <shaders/SdfSource.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+
+namespace sdfwb::shaders {
+
+const char* parameterTypeName(ParameterType type) {
+    switch (type) {
+    case ParameterType::Float:
+        return "float";
+    case ParameterType::Int:
+        return "int";
+    case ParameterType::Bool:
+        return "bool";
+    case ParameterType::Vec2:
+        return "vec2";
+    case ParameterType::Vec3:
+        return "vec3";
+    case ParameterType::Vec4:
+        return "vec4";
+    }
+    return "float";
+}
+
+int componentCount(ParameterType type) {
+    switch (type) {
+    case ParameterType::Vec2:
+        return 2;
+    case ParameterType::Vec3:
+        return 3;
+    case ParameterType::Vec4:
+        return 4;
+    default:
+        return 1;
+    }
+}
+
+namespace {
+
+bool isIdentifierStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool isIdentifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
+
+std::optional<ParameterType> parseType(const std::string& word) {
+    if (word == "float") return ParameterType::Float;
+    if (word == "int") return ParameterType::Int;
+    if (word == "bool") return ParameterType::Bool;
+    if (word == "vec2") return ParameterType::Vec2;
+    if (word == "vec3") return ParameterType::Vec3;
+    if (word == "vec4") return ParameterType::Vec4;
+    return std::nullopt;
+}
+
+std::string trim(const std::string& text) {
+    std::size_t begin = 0, end = text.size();
+    while (begin < end && isSpace(text[begin])) ++begin;
+    while (end > begin && isSpace(text[end - 1])) --end;
+    return text.substr(begin, end - begin);
+}
+
+// A whole number or floating literal, as GLSL writes them (a trailing f/F allowed), finite.
+std::optional<float> parseNumber(std::string text, bool integerOnly) {
+    text = trim(text);
+    if (text.empty() || text.size() > 64) return std::nullopt;
+    if (!integerOnly && (text.back() == 'f' || text.back() == 'F') && text.find_first_of("xX") == std::string::npos)
+        text.pop_back();
+    const char* begin = text.c_str();
+    char* end = nullptr;
+    double value = 0.0;
+    if (integerOnly) {
+        for (std::size_t i = (text[0] == '-' || text[0] == '+') ? 1 : 0; i < text.size(); ++i)
+            if (!std::isdigit(static_cast<unsigned char>(text[i]))) return std::nullopt;
+        value = std::strtod(begin, &end);
+        if (std::fabs(value) > 2147483647.0) return std::nullopt;
+    } else {
+        if (text.find_first_of("xXnN") != std::string::npos) return std::nullopt; // no hex floats, nan, inf
+        value = std::strtod(begin, &end);
+    }
+    if (end == begin || *end != '\0' || !std::isfinite(value) || !std::isfinite(float(value))) return std::nullopt;
+    return float(value);
+}
+
+struct Scanner {
+    const std::string& original;
+    const std::string& text; // comments blanked, same offsets
+    const std::string& file;
+    std::vector<std::size_t> lineStarts;
+    ParameterScan result;
+
+    std::pair<int, int> position(std::size_t offset) const {
+        auto it = std::upper_bound(lineStarts.begin(), lineStarts.end(), offset);
+        const std::size_t line = std::size_t(it - lineStarts.begin());
+        return {int(line), int(offset - lineStarts[line - 1]) + 1};
+    }
+
+    void report(std::size_t offset, Severity severity, const std::string& message) {
+        auto [line, column] = position(offset);
+        result.diagnostics.push_back({file, line, column, severity, message});
+    }
+
+    std::size_t skipSpace(std::size_t i) const {
+        while (i < text.size() && isSpace(text[i])) ++i;
+        return i;
+    }
+
+    std::string identifierAt(std::size_t& i) const {
+        std::size_t start = i;
+        if (i < text.size() && isIdentifierStart(text[i]))
+            while (i < text.size() && isIdentifierChar(text[i])) ++i;
+        return text.substr(start, i - start);
+    }
+
+    // The initializer `text` into the parameter's default; false after reporting why.
+    bool readInitializer(Parameter& p, const std::string& initializer, std::size_t offset) {
+        const std::string value = trim(initializer);
+        const int n = componentCount(p.type);
+        if (p.type == ParameterType::Bool) {
+            if (value == "true" || value == "false") {
+                p.defaultValue[0] = value == "true" ? 1.0f : 0.0f;
+                return true;
+            }
+            report(offset, Severity::Error,
+                   "parameter '" + p.name + "': a bool's default must be true or false, not '" + value + "'");
+            return false;
+        }
+        if (n == 1) {
+            auto number = parseNumber(value, p.type == ParameterType::Int);
+            if (!number) {
+                report(offset, Severity::Error,
+                       "parameter '" + p.name + "': the default must be a " +
+                           (p.type == ParameterType::Int ? std::string("whole number") : std::string("number")) + ", not '" +
+                           value + "' (parameters take literal defaults)");
+                return false;
+            }
+            p.defaultValue[0] = *number;
+            return true;
+        }
+        const std::string constructor = parameterTypeName(p.type);
+        std::size_t open = value.find('(');
+        if (value.rfind(constructor, 0) != 0 || open == std::string::npos ||
+            trim(value.substr(constructor.size(), open - constructor.size())) != "" || value.back() != ')') {
+            report(offset, Severity::Error,
+                   "parameter '" + p.name + "': the default must be " + constructor + "(...) of numbers, not '" + value + "'");
+            return false;
+        }
+        std::vector<float> numbers;
+        std::string inner = value.substr(open + 1, value.size() - open - 2);
+        std::size_t start = 0;
+        while (true) {
+            std::size_t comma = inner.find(',', start);
+            auto number = parseNumber(inner.substr(start, comma == std::string::npos ? std::string::npos : comma - start), false);
+            if (!number) {
+                report(offset, Severity::Error,
+                       "parameter '" + p.name + "': " + constructor + "(...) must hold numbers, not '" + value + "'");
+                return false;
+            }
+            numbers.push_back(*number);
+            if (comma == std::string::npos) break;
+            start = comma + 1;
+        }
+        if (numbers.size() != 1 && int(numbers.size()) != n) {
+            report(offset, Severity::Error,
+                   "parameter '" + p.name + "': " + constructor + "(...) takes 1 or " + std::to_string(n) + " numbers, not " +
+                       std::to_string(numbers.size()));
+            return false;
+        }
+        for (int k = 0; k < n; ++k) p.defaultValue[std::size_t(k)] = numbers.size() == 1 ? numbers[0] : numbers[std::size_t(k)];
+        return true;
+    }
+
+    // The annotations of the `//` comment starting at `offset` in the original text.
+    void readAnnotations(Parameter& p, std::size_t offset, std::size_t end) {
+        const std::string comment = original.substr(offset, end - offset);
+        std::size_t i = 0;
+        auto word = [&]() {
+            while (i < comment.size() && isSpace(comment[i])) ++i;
+            std::size_t start = i;
+            while (i < comment.size() && !isSpace(comment[i])) ++i;
+            return comment.substr(start, i - start);
+        };
+        while ((i = comment.find('@', i)) != std::string::npos) {
+            const std::size_t at = offset + i;
+            ++i;
+            std::size_t start = i;
+            while (i < comment.size() && isIdentifierChar(comment[i])) ++i;
+            const std::string name = comment.substr(start, i - start);
+            const bool integer = p.type == ParameterType::Int;
+            if (name == "range") {
+                const std::string a = word(), b = word();
+                auto lo = parseNumber(a, integer), hi = parseNumber(b, integer);
+                if (p.type == ParameterType::Bool) {
+                    report(at, Severity::Error, "parameter '" + p.name + "': a bool takes no @range");
+                } else if (!lo || !hi) {
+                    report(at, Severity::Error,
+                           "parameter '" + p.name + "': @range takes two " + (integer ? "whole numbers" : "numbers") +
+                               " (@range MIN MAX), got '" + trim(a + " " + b) + "'");
+                } else if (!(*lo < *hi)) {
+                    report(at, Severity::Error,
+                           "parameter '" + p.name + "': @range " + a + " " + b + " is empty (MIN must be below MAX)");
+                } else {
+                    p.minimum = *lo;
+                    p.maximum = *hi;
+                }
+            } else if (name == "step") {
+                const std::string a = word();
+                auto step = parseNumber(a, false);
+                if (!step || !(*step > 0.0f))
+                    report(at, Severity::Error, "parameter '" + p.name + "': @step takes a positive number, got '" + a + "'");
+                else
+                    p.step = *step;
+            } else if (name == "log") {
+                p.logarithmic = true;
+            } else if (name == "color") {
+                if (p.type != ParameterType::Vec3 && p.type != ParameterType::Vec4)
+                    report(at, Severity::Error,
+                           "parameter '" + p.name + "': @color needs a vec3 or vec4, not a " + parameterTypeName(p.type));
+                else
+                    p.color = true;
+            } else if (name == "label") {
+                while (i < comment.size() && isSpace(comment[i])) ++i;
+                if (i < comment.size() && comment[i] == '"') {
+                    std::size_t close = comment.find('"', i + 1);
+                    if (close == std::string::npos) {
+                        report(at, Severity::Error, "parameter '" + p.name + "': @label's text has no closing quote");
+                        i = comment.size();
+                    } else {
+                        p.label = comment.substr(i + 1, close - i - 1);
+                        i = close + 1;
+                    }
+                } else {
+                    p.label = word();
+                    if (p.label.empty())
+                        report(at, Severity::Error, "parameter '" + p.name + "': @label takes a text (@label \"Radius\")");
+                }
+            } else {
+                report(at, Severity::Warning,
+                       "parameter '" + p.name + "': unknown annotation '@" + name +
+                           "' (known: @range, @step, @log, @label, @color)");
+            }
+        }
+        if (p.logarithmic && (!p.minimum || !(*p.minimum > 0.0f))) {
+            report(offset, Severity::Error, "parameter '" + p.name + "': @log needs a @range with a positive minimum");
+            p.logarithmic = false;
+        }
+        if (p.minimum && p.maximum)
+            for (int k = 0; k < componentCount(p.type); ++k) {
+                const float v = p.defaultValue[std::size_t(k)];
+                if (v < *p.minimum || v > *p.maximum) {
+                    report(offset, Severity::Warning, "parameter '" + p.name + "': the default lies outside its @range");
+                    break;
+                }
+            }
+    }
+
+    void scan() {
+        lineStarts.push_back(0);
+        for (std::size_t i = 0; i < original.size(); ++i)
+            if (original[i] == '\n') lineStarts.push_back(i + 1);
+        int depth = 0;
+        for (std::size_t i = 0; i < text.size();) {
+            const char c = text[i];
+            if (c == '{') ++depth;
+            if (c == '}') depth = std::max(0, depth - 1);
+            if (c == '#') { // a preprocessor line: skip it (with its continuations)
+                while (i < text.size() && text[i] != '\n') i += (text[i] == '\\' && i + 1 < text.size()) ? 2 : 1;
+                continue;
+            }
+            if (!isIdentifierStart(c) || (i > 0 && isIdentifierChar(text[i - 1]))) {
+                ++i;
+                continue;
+            }
+            const std::size_t start = i;
+            const std::string word = identifierAt(i);
+            if (word != "uniform" || depth != 0) continue;
+            declaration(start, i);
+        }
+    }
+
+    // After `uniform` at `start` (ending at `i`).
+    void declaration(std::size_t start, std::size_t& i) {
+        std::size_t j = skipSpace(i);
+        std::string typeWord = identifierAt(j);
+        for (const char* precision : {"lowp", "mediump", "highp"})
+            if (typeWord == precision) {
+                j = skipSpace(j);
+                typeWord = identifierAt(j);
+            }
+        auto type = parseType(typeWord);
+        if (!type) return; // samplers, other types, blocks: not parameters
+        j = skipSpace(j);
+        const std::size_t nameOffset = j;
+        const std::string name = identifierAt(j);
+        if (name.empty()) return;
+        j = skipSpace(j);
+        if (j < text.size() && (text[j] == '[' || text[j] == ',')) return; // arrays and lists are not parameters
+        std::string initializer;
+        bool hasInitializer = false;
+        std::size_t initializerOffset = j;
+        if (j < text.size() && text[j] == '=') {
+            hasInitializer = true;
+            initializerOffset = skipSpace(j + 1);
+            std::size_t k = j + 1;
+            int parens = 0;
+            while (k < text.size() && !(text[k] == ';' && parens == 0) && text[k] != '{' && text[k] != '}') {
+                if (text[k] == '(') ++parens;
+                if (text[k] == ')') --parens;
+                ++k;
+            }
+            initializer = text.substr(j + 1, k - j - 1);
+            j = k;
+        }
+        if (j >= text.size() || text[j] != ';') return; // not a declaration we understand: leave it to the compiler
+        i = j + 1;
+        // The comment on the line of the `;`, in the original text.
+        const std::size_t lineEnd = std::min(original.find('\n', j), original.size());
+        const std::size_t commentStart = original.find("//", j);
+        const bool annotated = commentStart < lineEnd && original.find('@', commentStart) < lineEnd;
+        if (!hasInitializer) {
+            if (annotated)
+                report(nameOffset, Severity::Error,
+                       "parameter '" + name + "': annotated uniforms need a default (uniform " + typeWord + " " + name +
+                           " = ...;)");
+            return;
+        }
+        Parameter p;
+        p.name = name;
+        p.type = *type;
+        auto [line, column] = position(start);
+        p.line = line;
+        p.column = column;
+        if (!readInitializer(p, initializer, initializerOffset)) return;
+        if (annotated) readAnnotations(p, commentStart + 2, lineEnd);
+        for (const Parameter& other : result.parameters)
+            if (other.name == p.name) {
+                report(nameOffset, Severity::Error,
+                       "parameter '" + p.name + "' is declared twice (first at line " + std::to_string(other.line) + ")");
+                return;
+            }
+        result.parameters.push_back(std::move(p));
+    }
+};
+
+} // namespace
+
+ParameterScan parseParameters(const std::string& text, const std::string& file) {
+    const std::string stripped = stripComments(text);
+    Scanner scanner{text, stripped, file, {}, {}};
+    scanner.scan();
+    return std::move(scanner.result);
+}
+
+} // namespace sdfwb::shaders
