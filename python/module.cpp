@@ -245,6 +245,14 @@ py::object run(const py::object& given) {
     return fromJson(report);
 }
 
+py::object params(const std::string& sdf, const std::string& entry) {
+    jobs::ParamsRequest request;
+    request.sdf = sdfInput(sdf, entry);
+    auto result = jobs::run(request, {});
+    if (!result) raise(result.error);
+    return fromJson(jobs::toJson(*result));
+}
+
 py::list listSdfs() {
     dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
     py::list out;
@@ -287,6 +295,10 @@ PYBIND11_MODULE(sdfwb, m) {
           "Runs one request (a dict, or its JSON text) of any kind: render, animate, sample, audit, merge, list, bench.\n"
           "The keys are those `sdfwb --batch CMD ... --print-request` prints; absent keys keep their defaults, unknown keys\n"
           "are errors. Returns the report as a dict, with the keys `--json` prints. The GIL is released while it runs.");
+    m.def("params", &params, py::arg("sdf"), py::arg("entry") = "",
+          "The parameters `sdf` declares (uniforms with a default, annotated // @range MIN MAX @step S @log @label \"...\"\n"
+          "@color): a dict with `parameters` (name, type, default, minimum, maximum, step, log, color, label, line, column)\n"
+          "and `warnings`, as `sdfwb --batch params --json` prints it. Errors raise ValueError with file:line:column.");
     m.def("list_sdfs", &listSdfs,
           "The dataset: one dict per SDF (name, category, declared_type, animated, path, author, license).");
 }

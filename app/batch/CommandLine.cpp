@@ -46,6 +46,7 @@ const char* const kOverview =
     "  audit    analyse the field: exact, conservative, non-conservative, truncated, discontinuous, nan\n"
     "  list     list the dataset (name, category, declared type, animated)\n"
     "  bench    measure error against run time (tracer, samplers, gradients, audit) into a report\n"
+    "  params   list the parameters (annotated uniforms) an SDF declares\n"
     "  request  run one request given as JSON (FILE or - for stdin); every command's --print-request\n"
     "           prints the JSON its options make\n"
     "\n"
@@ -404,6 +405,19 @@ int runBenchCommand(const Arguments& arguments, Mode mode) {
     return finish(command, ending, mode);
 }
 
+int runParamsCommand(const Arguments& arguments, Mode mode) {
+    CLI::App app("List the parameters an SDF declares: uniforms with a default, annotated // @range MIN MAX @step S @log "
+                 "@label \"...\" @color.",
+                 "sdfwb --batch params");
+    jobs::ParamsRequest request;
+    Ending ending;
+    app.add_option("--sdf", request.sdf.sdf, "dataset name or path to a .glsl file")->required();
+    addEntryOption(app, request.sdf.entry);
+    addOutputFlags(app, ending);
+    if (auto exit = parse(app, "--batch params", arguments)) return *exit;
+    return finish(request, ending, mode);
+}
+
 // Reads a request's JSON from a file, or from stdin for "-".
 std::optional<std::string> readRequestText(const std::string& source) {
     std::ostringstream text;
@@ -444,8 +458,9 @@ struct BatchCommandEntry {
     int (*run)(const Arguments& arguments, Mode mode);
 };
 constexpr BatchCommandEntry kBatchCommands[] = {
-    {"render", runRenderCommand}, {"animate", runAnimateCommand}, {"sample", runSampleCommand}, {"merge", runMergeCommand},
-    {"audit", runAuditCommand},   {"list", runListCommand},       {"bench", runBenchCommand},   {"request", runRequestCommand},
+    {"render", runRenderCommand}, {"animate", runAnimateCommand}, {"sample", runSampleCommand},
+    {"merge", runMergeCommand},   {"audit", runAuditCommand},     {"list", runListCommand},
+    {"bench", runBenchCommand},   {"params", runParamsCommand},   {"request", runRequestCommand},
 };
 
 const BatchCommandEntry* findBatchCommand(const std::string& name) {

@@ -120,6 +120,28 @@ template <class V> void fields(V& v, MergeRequest& r) {
 
 template <class V> void fields(V&, ListRequest&) {}
 
+template <class V> void fields(V& v, ParamsRequest& r) { fields(v, r.sdf); }
+
+template <class V> void fields(V& v, ParamItem& p) {
+    v("name", p.name);
+    v("type", p.type);
+    v("default", p.value);
+    v("minimum", p.minimum);
+    v("maximum", p.maximum);
+    v("step", p.step);
+    v("log", p.logarithmic);
+    v("color", p.color);
+    v("label", p.label);
+    v("line", p.line);
+    v("column", p.column);
+}
+
+template <class V> void fields(V& v, ParamsReport& r) {
+    v("sdf", r.sdf);
+    v("parameters", r.parameters);
+    v("warnings", r.warnings);
+}
+
 template <class V> void fields(V& v, BenchRequest& r) {
     v("output", r.outputDirectory);
     v("repeats", r.repeats);
@@ -494,7 +516,7 @@ Expected<Request> requestFromJson(const std::string& text) {
     if (!in->is_object()) return makeError("request: expected a JSON object with a \"kind\"");
     auto kind = in->find("kind");
     if (kind == in->end() || !kind->is_string())
-        return makeError("request: missing \"kind\" (render, animate, sample, audit, merge, list, bench)");
+        return makeError("request: missing \"kind\" (render, animate, sample, audit, merge, list, bench, params)");
     const std::string name = kind->get<std::string>();
     auto as = [&]<class T>(T*) -> Expected<Request> {
         auto value = readObject<T>(*in, true, (name + " request").c_str());
@@ -508,7 +530,8 @@ Expected<Request> requestFromJson(const std::string& text) {
     if (name == "merge") return as((MergeRequest*)nullptr);
     if (name == "list") return as((ListRequest*)nullptr);
     if (name == "bench") return as((BenchRequest*)nullptr);
-    return makeError("request: unknown kind '" + name + "' (render, animate, sample, audit, merge, list, bench)");
+    if (name == "params") return as((ParamsRequest*)nullptr);
+    return makeError("request: unknown kind '" + name + "' (render, animate, sample, audit, merge, list, bench, params)");
 }
 
 namespace {
@@ -540,6 +563,7 @@ std::string toJson(const SampleReport& report, int indent) { return dump(encode(
 std::string toJson(const MergeReport& report, int indent) { return dump(encode(report), indent); }
 std::string toJson(const ListReport& report, int indent) { return dump(encode(report), indent); }
 std::string toJson(const BenchReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const ParamsReport& report, int indent) { return dump(encode(report), indent); }
 std::string toJson(const AuditJobReport& report, int indent) { return dump(encodeAudit(report), indent); }
 
 template <class T> Expected<T> reportFromJson(const std::string& text) {
@@ -581,5 +605,6 @@ template Expected<SampleReport> reportFromJson<SampleReport>(const std::string&)
 template Expected<MergeReport> reportFromJson<MergeReport>(const std::string&);
 template Expected<ListReport> reportFromJson<ListReport>(const std::string&);
 template Expected<BenchReport> reportFromJson<BenchReport>(const std::string&);
+template Expected<ParamsReport> reportFromJson<ParamsReport>(const std::string&);
 
 } // namespace sdfwb::jobs

@@ -2,10 +2,12 @@
 #include <jobs/Jobs.h>
 
 #include <core/Paths.h>
+#include <core/TextFile.h>
 #include <dataset/Catalogue.h>
 #include <renderer/ImageIO.h>
 #include <sampling/SampleFile.h>
 #include <sampling/Sampler.h>
+#include <shaders/Parameters.h>
 
 #include <cmath>
 #include <filesystem>
@@ -23,12 +25,14 @@ const char* kindName(const Request& request) {
         const char* operator()(const MergeRequest&) const { return "merge"; }
         const char* operator()(const ListRequest&) const { return "list"; }
         const char* operator()(const BenchRequest&) const { return "bench"; }
+        const char* operator()(const ParamsRequest&) const { return "params"; }
     };
     return std::visit(Names{}, request);
 }
 
 bool needsGl(const Request& request) {
-    return !std::holds_alternative<MergeRequest>(request) && !std::holds_alternative<ListRequest>(request);
+    return !std::holds_alternative<MergeRequest>(request) && !std::holds_alternative<ListRequest>(request) &&
+           !std::holds_alternative<ParamsRequest>(request);
 }
 
 namespace {
@@ -207,6 +211,43 @@ std::optional<JobError> validate(const MergeRequest& request) {
                          : "--format: unknown format '" + request.format + "' (bin, npz, ply)");
     if (request.parts.empty()) return usage("parts: no shard files given");
     return std::nullopt;
+}
+
+std::optional<JobError> validate(const ParamsRequest& request) { return checkSdf(request.sdf); }
+
+JobResult<ParamsReport> run(const ParamsRequest& request, const ProgressSink&) {
+    if (auto error = validate(request)) return *error;
+    auto path = resolve(request.sdf);
+    if (!path) return usage(path.error().message);
+    const std::string label = path->empty() ? std::string("<source>") : path->string();
+    std::string text = request.sdf.source;
+    if (text.empty()) {
+        auto read = readTextFile(*path);
+        if (!read) return JobError{Failure::Work, read.error().message, {}};
+        text = std::move(*read);
+    }
+    shaders::ParameterScan scan = shaders::parseParameters(text, label);
+    if (shaders::hasErrors(scan.diagnostics))
+        return JobError{Failure::Work, "params: " + label + " declares parameters with errors", scan.diagnostics};
+    ParamsReport report;
+    report.sdf = label;
+    for (const shaders::Diagnostic& d : scan.diagnostics) report.warnings.push_back(shaders::formatDiagnostic(d));
+    for (const shaders::Parameter& p : scan.parameters) {
+        ParamItem item;
+        item.name = p.name;
+        item.type = shaders::parameterTypeName(p.type);
+        item.value.assign(p.defaultValue.begin(), p.defaultValue.begin() + shaders::componentCount(p.type));
+        item.minimum = p.minimum;
+        item.maximum = p.maximum;
+        item.step = p.step;
+        item.logarithmic = p.logarithmic;
+        item.color = p.color;
+        item.label = p.label;
+        item.line = p.line;
+        item.column = p.column;
+        report.parameters.push_back(std::move(item));
+    }
+    return report;
 }
 
 std::optional<JobError> validate(const BenchRequest& request) {

@@ -229,3 +229,17 @@ def test_run_renders_from_a_json_string_and_names_bad_keys():
         sdfwb.run({"kind": "animate", "sdf": "Sphere", "output": "x.mp4", "fps": 0})
     listing = sdfwb.run({"kind": "list"})
     assert any(item["name"] == "Torus" for item in listing["sdfs"])
+
+
+def test_params_lists_annotated_uniforms_and_names_mistakes():
+    source = ("uniform float radius = 0.5; // @range 0.1 1.0 @label \"Radius\"\n"
+              "uniform vec3 tint = vec3(1, 0.5, 0); // @color\n"
+              "float sdf(vec3 p) { return length(p) - radius; }\n")
+    report = sdfwb.params(source)
+    assert [p["name"] for p in report["parameters"]] == ["radius", "tint"]
+    radius = report["parameters"][0]
+    assert radius["default"] == [0.5] and radius["minimum"] == pytest.approx(0.1) and radius["label"] == "Radius"
+    assert report["parameters"][1]["color"] and report["parameters"][1]["default"] == [1.0, 0.5, 0.0]
+    assert sdfwb.run({"kind": "params", "source": source}) == report
+    with pytest.raises(ValueError, match=r"<source>:1:\d+: error: parameter 'radius': @range 1 0 is empty"):
+        sdfwb.params("uniform float radius = 0.5; // @range 1 0\nfloat sdf(vec3 p) { return length(p) - radius; }\n")

@@ -78,7 +78,8 @@ std::vector<Request> unusualRequests() {
     audit.resolution = 64;
     MergeRequest merge{"all.ply", "ply", {"p0.ply", "p1.ply", "with \"quotes\" and \\.ply"}};
     BenchRequest bench{"report", 3, true, true};
-    return {render, animate, sample, audit, merge, ListRequest{}, bench};
+    ParamsRequest params{{"family.glsl", "shape", ""}};
+    return {render, animate, sample, audit, merge, ListRequest{}, bench, params};
 }
 
 } // namespace

@@ -99,6 +99,8 @@ int runRequest(const jobs::Request& request, const OutputOptions& output) {
                 return runMerge(r, output);
             else if constexpr (std::is_same_v<T, jobs::ListRequest>)
                 return runList(r, output);
+            else if constexpr (std::is_same_v<T, jobs::ParamsRequest>)
+                return runParams(r, output);
             else
                 return runBench(r, output);
         },

@@ -107,9 +107,16 @@ struct BenchRequest {
     bool operator==(const BenchRequest&) const = default;
 };
 
-using Request = std::variant<RenderRequest, AnimateRequest, SampleRequest, AuditRequest, MergeRequest, ListRequest, BenchRequest>;
+// The parameters an SDF declares (annotated uniforms, shaders/Parameters.h).
+struct ParamsRequest {
+    SdfInput sdf;
+    bool operator==(const ParamsRequest&) const = default;
+};
 
-// "render", "animate", "sample", "audit", "merge", "list", "bench": the CLI command of each kind.
+using Request = std::variant<RenderRequest, AnimateRequest, SampleRequest, AuditRequest, MergeRequest, ListRequest, BenchRequest,
+                             ParamsRequest>;
+
+// "render", "animate", "sample", "audit", "merge", "list", "bench", "params": the CLI command of each kind.
 const char* kindName(const Request& request);
 
 // ---- reports ----
@@ -185,6 +192,25 @@ struct ListReport {
     std::vector<std::string> problems; // files the catalogue could not read
     std::string root;
     bool operator==(const ListReport&) const = default;
+};
+
+struct ParamItem {
+    std::string name;
+    std::string type;         // float, int, bool, vec2, vec3, vec4
+    std::vector<float> value; // the default, one number per component
+    std::optional<float> minimum, maximum, step;
+    bool logarithmic = false;
+    bool color = false;
+    std::string label;
+    int line = 0, column = 0;
+    bool operator==(const ParamItem&) const = default;
+};
+
+struct ParamsReport {
+    std::string sdf;
+    std::vector<ParamItem> parameters;
+    std::vector<std::string> warnings; // "file:line:column: warning: ..."
+    bool operator==(const ParamsReport&) const = default;
 };
 
 struct BenchReport {
