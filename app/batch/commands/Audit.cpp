@@ -1,8 +1,6 @@
 // `sdfwb --batch audit`: the field audit (verdict, every finding, figures), or one plane's readouts.
 #include "Common.h"
 
-#include <jobs/JobJson.h>
-
 #include <cstdio>
 #include <string>
 
@@ -70,18 +68,7 @@ void printVolume(const jobs::AuditJobReport& report) {
 } // namespace
 
 int runAudit(const jobs::AuditRequest& request, const OutputOptions& output) {
-    if (auto error = jobs::validate(request)) return reportFailure(*error);
-    auto context = makeContext();
-    if (!context) return kExitNoGl;
-    JobScope scope(output);
-    auto result = jobs::run(request, scope.sink());
-    scope.finish();
-    if (!result) return reportFailure(result.error);
-    if (output.json)
-        std::printf("%s\n", jobs::toJson(*result).c_str());
-    else if (!output.quiet)
-        result->readout ? printPlane(*result) : printVolume(*result);
-    return kExitOk;
+    return runWithGl(request, output, [](const jobs::AuditJobReport& r) { r.readout ? printPlane(r) : printVolume(r); });
 }
 
 } // namespace sdfwb::app

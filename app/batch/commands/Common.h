@@ -4,10 +4,12 @@
 
 #include "../BatchCommands.h"
 
+#include <jobs/JobJson.h>
 #include <jobs/Jobs.h>
 #include <renderer/HeadlessContext.h>
 
 #include <chrono>
+#include <cstdio>
 #include <memory>
 
 namespace sdfwb::app {
@@ -45,5 +47,23 @@ private:
     void (*m_previousInt)(int) = nullptr;
     void (*m_previousTerm)(int) = nullptr;
 };
+
+// The common run of a command that needs GL: validate (exit 2 before any work), make the context
+// (exit 3), run with a JobScope, then print the report's JSON (--json) or `printText(report)`.
+template <class Request, class PrintText>
+int runWithGl(const Request& request, const OutputOptions& output, PrintText printText) {
+    if (auto error = jobs::validate(request)) return reportFailure(*error);
+    auto context = makeContext();
+    if (!context) return kExitNoGl;
+    JobScope scope(output);
+    auto result = jobs::run(request, scope.sink());
+    scope.finish();
+    if (!result) return reportFailure(result.error);
+    if (output.json)
+        std::printf("%s\n", jobs::toJson(*result).c_str());
+    else if (!output.quiet)
+        printText(*result);
+    return kExitOk;
+}
 
 } // namespace sdfwb::app

@@ -1,24 +1,10 @@
 // `sdfwb --batch sample`: N rows of (position, distance, raw gradient) into .bin, .npz or .ply.
 #include "Common.h"
 
-#include <jobs/JobJson.h>
-
-#include <cstdio>
-
 namespace sdfwb::app {
 
 int runSample(const jobs::SampleRequest& request, const OutputOptions& output) {
-    if (auto error = jobs::validate(request)) return reportFailure(*error);
-    auto context = makeContext();
-    if (!context) return kExitNoGl;
-    JobScope scope(output);
-    auto result = jobs::run(request, scope.sink());
-    scope.finish();
-    if (!result) return reportFailure(result.error);
-    const jobs::SampleReport& r = *result;
-    if (output.json) {
-        std::printf("%s\n", jobs::toJson(r).c_str());
-    } else if (!output.quiet) {
+    return runWithGl(request, output, [](const jobs::SampleReport& r) {
         std::printf("wrote %s: %llu samples (%s, seed %llu, rows %llu..%llu of %llu), %llu bad rows, %.2f s (%.2f M samples/s)\n",
                     r.output.c_str(), (unsigned long long)r.rows, r.pattern.c_str(), (unsigned long long)r.seed,
                     (unsigned long long)r.firstIndex, (unsigned long long)(r.firstIndex + r.rows), (unsigned long long)r.count,
@@ -27,8 +13,7 @@ int runSample(const jobs::SampleRequest& request, const OutputOptions& output) {
             std::fprintf(
                 stderr, "sdfwb: note: %llu rows are NaN/Inf (rays that missed for surface/near, or a field that is not finite)\n",
                 (unsigned long long)r.badRows);
-    }
-    return kExitOk;
+    });
 }
 
 } // namespace sdfwb::app
