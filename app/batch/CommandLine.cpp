@@ -119,6 +119,64 @@ void addEntryOption(CLI::App& app, std::string& entry) {
         ->check(entryCheck());
 }
 
+// --sdf, --entry and --param NAME=VALUE (repeatable), shared by every command that runs an SDF.
+struct SdfOptions {
+    std::vector<std::string> params;
+};
+
+CLI::Validator parameterCheck() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            auto value = shaders::parseParameterValue(text);
+            return value ? std::string() : value.error().message;
+        },
+        "NAME=VALUE");
+}
+
+void addSdfOptions(CLI::App& app, jobs::SdfInput& input, SdfOptions& options) {
+    app.add_option("--sdf", input.sdf, "dataset name or path to a .glsl file")->required();
+    addEntryOption(app, input.entry);
+    app.add_option("--param", options.params,
+                   "NAME=VALUE: a value for a parameter the SDF declares (vectors as x,y,z, bools true/false; repeatable; "
+                   "`--batch params` lists them)")
+        ->check(parameterCheck());
+}
+
+// The checked --param texts as values (the validator has read each once already).
+std::vector<shaders::ParameterValue> parameterValues(const std::vector<std::string>& texts) {
+    std::vector<shaders::ParameterValue> values;
+    for (const std::string& text : texts)
+        if (auto value = shaders::parseParameterValue(text)) values.push_back(std::move(*value));
+    return values;
+}
+
+// --sweep NAME=FROM:TO:COUNT (repeatable: a grid) and --randomize COUNT: a shape family.
+struct FamilyOptions {
+    std::vector<std::string> sweeps;
+};
+
+void addFamilyOptions(CLI::App& app, jobs::FamilySpec& family, FamilyOptions& options, const char* what) {
+    app.add_option("--sweep", options.sweeps,
+                   std::string("NAME=FROM:TO:COUNT: ") + what +
+                       " at COUNT evenly spaced values of a parameter (vectors as x,y,z at both ends; repeat for a grid)")
+        ->check(CLI::Validator(
+            [](std::string& text) -> std::string {
+                auto sweep = shaders::parseParameterSweep(text);
+                return sweep ? std::string() : sweep.error().message;
+            },
+            "NAME=FROM:TO:COUNT"));
+    app.add_option("--randomize", family.randomize,
+                   std::string("COUNT: ") + what +
+                       " at COUNT random values of every ranged parameter (uniform in its @range, log-uniform with @log; "
+                       "drawn from --seed)")
+        ->check(CLI::Range(1u, 100000u));
+}
+
+void finishFamilyOptions(jobs::FamilySpec& family, const FamilyOptions& options) {
+    for (const std::string& text : options.sweeps)
+        if (auto sweep = shaders::parseParameterSweep(text)) family.sweeps.push_back(std::move(*sweep));
+}
+
 // How a parsed command ends: its output flags, and --print-request (the request as JSON, no work).
 struct Ending {
     OutputOptions output;
@@ -158,11 +216,11 @@ std::optional<int> parse(CLI::App& app, const std::string& context, Arguments ar
 struct FrameOptions {
     std::string size = "1280x720", shading = "normals", camera, target, plane;
     bool planeNoClip = false;
+    SdfOptions sdf;
 };
 
 void addFrameOptions(CLI::App& app, jobs::FrameRequest& job, FrameOptions& options) {
-    app.add_option("--sdf", job.sdf.sdf, "dataset name or path to a .glsl file")->required();
-    addEntryOption(app, job.sdf.entry);
+    addSdfOptions(app, job.sdf, options.sdf);
     app.add_option("--size", options.size, "image size WxH")->capture_default_str();
     app.add_option("--time", job.time, "time in seconds for animated SDFs (start time for animate)")
         ->capture_default_str()
@@ -195,6 +253,7 @@ void addFrameOptions(CLI::App& app, jobs::FrameRequest& job, FrameOptions& optio
 
 // Returns an exit code when an option is malformed.
 std::optional<int> finishFrameOptions(jobs::FrameRequest& job, const FrameOptions& options) {
+    job.sdf.params = parameterValues(options.sdf.params);
     auto parsedSize = parseSize(options.size);
     if (!parsedSize) {
         printError("--size: expected WxH with integers from 1 to 16384, got '" + options.size + "'");
@@ -278,9 +337,15 @@ int runAnimateCommand(const Arguments& arguments, Mode mode) {
         ->check(CLI::Range(0.0f, 3600.0f));
     app.add_option("--fps", request.framesPerSecond, "frames per second")->capture_default_str()->check(CLI::Range(1, 240));
     app.add_flag("--turntable", request.turntable, "orbit the camera once around the Y axis");
+    std::vector<std::string> paramsEnd;
+    app.add_option("--param-end", paramsEnd,
+                   "NAME=VALUE: the parameter's value at the last frame; the clip moves linearly from --param (or the "
+                   "default) to it (repeatable)")
+        ->check(parameterCheck());
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch animate", arguments)) return *exit;
     if (auto exit = finishFrameOptions(request.frame, options)) return *exit;
+    request.paramsEnd = parameterValues(paramsEnd);
     return finish(request, ending, mode);
 }
 
@@ -307,8 +372,9 @@ int runSampleCommand(const Arguments& arguments, Mode mode) {
     jobs::SampleRequest command;
     Ending ending;
     std::string shard;
-    app.add_option("--sdf", command.sdf.sdf, "dataset name or path to a .glsl file")->required();
-    addEntryOption(app, command.sdf.entry);
+    SdfOptions sdf;
+    FamilyOptions family;
+    addSdfOptions(app, command.sdf, sdf);
     app.add_option("--pattern,-p", command.pattern,
                    "grid, image, jitter, rand, surface, near, metropolis, metropolis_curvature, or a sampler file")
         ->required();
@@ -328,8 +394,11 @@ int runSampleCommand(const Arguments& arguments, Mode mode) {
                    "|f| at which the rays of surface, near and metropolis stop (accuracy against time: docs/benchmarks.md)")
         ->capture_default_str()
         ->check(numberCheck(true));
+    addFamilyOptions(app, command.family, family, "one output per instance (OUTPUT_00000.EXT, ...) and an index OUTPUT_index.json,");
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch sample", arguments)) return *exit;
+    command.sdf.params = parameterValues(sdf.params);
+    finishFamilyOptions(command.family, family);
     if (!shard.empty() && !parseShard(shard, command.shardIndex, command.shardCount)) {
         printError("--shard: expected K/COUNT with 0 <= K < COUNT, got '" + shard + "'");
         return kExitUsage;
@@ -355,8 +424,9 @@ int runAuditCommand(const Arguments& arguments, Mode mode) {
     jobs::AuditRequest command;
     Ending ending;
     std::string plane;
-    app.add_option("--sdf", command.sdf.sdf, "dataset name or path to a .glsl file")->required();
-    addEntryOption(app, command.sdf.entry);
+    SdfOptions sdf;
+    FamilyOptions family;
+    addSdfOptions(app, command.sdf, sdf);
     app.add_option("--samples", command.samples, "random points (as many near-surface and surface points)")
         ->capture_default_str()
         ->check(CLI::Range(std::uint64_t(64), std::uint64_t(100000000)));
@@ -371,8 +441,11 @@ int runAuditCommand(const Arguments& arguments, Mode mode) {
         ->capture_default_str()
         ->check(numberCheck(true))
         ->check(CLI::Range(0.1f, 100.0f));
+    addFamilyOptions(app, command.family, family, "the volume audit, one line per instance,");
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch audit", arguments)) return *exit;
+    command.sdf.params = parameterValues(sdf.params);
+    finishFamilyOptions(command.family, family);
     if (!plane.empty()) {
         char tail;
         jobs::PlaneSpec spec;

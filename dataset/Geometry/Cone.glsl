@@ -9,7 +9,11 @@ notes: Solid right circular cone, apex up at y = 0.85, flat base of radius 0.8 a
   In the meridian half-plane (distance from the axis, height) the cone is a right triangle whose
   only real boundary is the slanted side and the base segment (the axis edge is interior). The
   exact distance to those two segments, signed by a point-in-triangle test, is the exact 3D distance.
+  Parameters: base radius (0.1-0.9), half height (0.1-0.9).
 */
+uniform float baseRadius = 0.8;   // @range 0.1 0.9 @step 0.01 @label "Base radius"
+uniform float halfHeight = 0.85;  // @range 0.1 0.9 @step 0.01 @label "Half height"
+
 float segmentDistance2(vec2 p, vec2 a, vec2 b) {
     vec2 ab = b - a;
     float along = clamp(dot(p - a, ab) / dot(ab, ab), 0.0, 1.0);
@@ -17,12 +21,10 @@ float segmentDistance2(vec2 p, vec2 a, vec2 b) {
 }
 
 float sdf(vec3 p) {
-    const float baseRadius = 0.8;
-    const float halfHeight = 0.85;
     vec2 meridian = vec2(length(p.xz), p.y);
-    const vec2 apex = vec2(0.0, halfHeight);
-    const vec2 rim = vec2(baseRadius, -halfHeight);
-    const vec2 baseCentre = vec2(0.0, -halfHeight);
+    vec2 apex = vec2(0.0, halfHeight);
+    vec2 rim = vec2(baseRadius, -halfHeight);
+    vec2 baseCentre = vec2(0.0, -halfHeight);
 
     float toSide = segmentDistance2(meridian, apex, rim);
     float toBase = segmentDistance2(meridian, baseCentre, rim);

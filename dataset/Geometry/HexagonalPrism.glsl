@@ -10,11 +10,13 @@ notes: Upright regular hexagonal prism, apothem 0.78 (a flat side faces +X), hal
   mirror of the shape never moves the nearest boundary point farther, so there the exact 2D
   distance is the distance to one half side. Extruding an exact 2D distance along Y (the
   rectangle rule on (2D distance, |y| - half height)) keeps it exact.
+  Parameters: apothem (0.1-0.8), half height (0.05-0.9).
 */
+uniform float apothem = 0.78;     // @range 0.1 0.8 @step 0.01 @label "Apothem"
+uniform float halfHeight = 0.62;  // @range 0.05 0.9 @step 0.01 @label "Half height"
+
 float sdf(vec3 p) {
-    const float apothem = 0.78;     // centre to the middle of a side
-    const float halfHeight = 0.62;
-    const float halfSide = 0.45033; // apothem * tan(30 deg): half the length of one side
+    float halfSide = apothem * (0.45033 / 0.78);  // apothem * tan(30 deg): half the length of one side
 
     vec2 q = abs(p.xz);
     // Mirror at 60 degrees, then at 30 degrees; each normal points to the side we keep.

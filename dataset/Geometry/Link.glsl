@@ -11,11 +11,13 @@ notes: Chain link standing upright, its plane turned 30 degrees from +X towards 
   where it sees a plain circle, and for a convex stadium that gives the exact distance to the curve
   (the straight runs are nearest beside them, the half circles above and below). The radius is
   below the curve's radius of curvature, so subtracting it stays exact inside the tube.
+  Parameters: loop radius (0.2-0.42), half straight (0-0.35), tube radius (0.04-0.18).
 */
+uniform float loopRadius = 0.42;    // @range 0.2 0.42 @step 0.01 @label "Loop radius"
+uniform float halfStraight = 0.32;  // @range 0.0 0.35 @step 0.01 @label "Half straight length"
+uniform float tubeRadius = 0.16;    // @range 0.04 0.18 @step 0.01 @label "Tube radius"
+
 float sdf(vec3 p) {
-    const float loopRadius = 0.42;     // radius of the two half circles of the core curve
-    const float halfStraight = 0.32;   // half length of the straight runs
-    const float tubeRadius = 0.16;
     // Rotate about Y: the link's plane is spanned by `across` and Y, with normal `facing`.
     const vec3 facing = vec3(0.8660254, 0.0, 0.5);
     const vec3 across = vec3(-0.5, 0.0, 0.8660254);

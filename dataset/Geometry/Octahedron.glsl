@@ -10,8 +10,10 @@ notes: Regular octahedron with its six vertices on the axes at distance 0.92. Fo
   the triangle between the three positive vertices. The exact distance to that triangle, signed by
   the face plane, is the exact distance everywhere (inside a convex solid the nearest boundary
   point lies on the nearest face plane). Not the cheaper plane-only bound, which is only
-  conservative outside.
+  conservative outside. Parameters: vertex distance (0.1-0.95).
 */
+uniform float vertexDistance = 0.92;  // @range 0.1 0.95 @step 0.01 @label "Vertex distance"
+
 float segmentDistance(vec3 p, vec3 a, vec3 b) {
     vec3 ab = b - a;
     float along = clamp(dot(p - a, ab) / dot(ab, ab), 0.0, 1.0);
@@ -30,7 +32,6 @@ float triangleDistance(vec3 p, vec3 a, vec3 b, vec3 c) {
 }
 
 float sdf(vec3 p) {
-    const float vertexDistance = 0.92;
     vec3 q = abs(p);
     // Signed distance to the plane x + y + z = vertexDistance.
     float plane = (q.x + q.y + q.z - vertexDistance) * 0.57735027;

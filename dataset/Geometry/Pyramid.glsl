@@ -10,7 +10,11 @@ notes: Square pyramid, base 1.44 x 1.44 at y = -0.68, apex at y = 0.68; one side
   the nearest boundary point lies on the +X face, the +Z face or the base. Outside, the field is
   the least exact distance to those three faces; inside, the distance to the boundary of a convex
   solid is the distance to the nearest face plane. Both are exact.
+  Parameters: half base (0.1-0.72), height (0.1-1.8).
 */
+uniform float halfBase = 0.72;  // @range 0.1 0.72 @step 0.01 @label "Half base"
+uniform float height = 1.36;    // @range 0.1 1.8 @step 0.01 @label "Height"
+
 float segmentDistance(vec3 p, vec3 a, vec3 b) {
     vec3 ab = b - a;
     float along = clamp(dot(p - a, ab) / dot(ab, ab), 0.0, 1.0);
@@ -29,10 +33,8 @@ float triangleDistance(vec3 p, vec3 a, vec3 b, vec3 c) {
 }
 
 float sdf(vec3 p) {
-    const float halfBase = 0.72;
-    const float height = 1.36;
-    const float baseY = -0.5 * height;
-    const vec3 apex = vec3(0.0, 0.5 * height, 0.0);
+    float baseY = -0.5 * height;
+    vec3 apex = vec3(0.0, 0.5 * height, 0.0);
     vec3 q = vec3(abs(p.x), p.y, abs(p.z));
 
     // Signed distances to the planes of the +X face, the +Z face and the base; the side
@@ -44,9 +46,9 @@ float sdf(vec3 p) {
     float deepest = max(max(planeX, planeZ), planeBase);
     if (deepest <= 0.0) return deepest;  // inside: the nearest face plane
 
-    const vec3 cornerFront = vec3(halfBase, baseY, halfBase);   // +x +z
-    const vec3 cornerBackX = vec3(halfBase, baseY, -halfBase);  // +x -z
-    const vec3 cornerBackZ = vec3(-halfBase, baseY, halfBase);  // -x +z
+    vec3 cornerFront = vec3(halfBase, baseY, halfBase);   // +x +z
+    vec3 cornerBackX = vec3(halfBase, baseY, -halfBase);  // +x -z
+    vec3 cornerBackZ = vec3(-halfBase, baseY, halfBase);  // -x +z
     float faceX = triangleDistance(q, apex, cornerBackX, cornerFront);
     float faceZ = triangleDistance(q, apex, cornerFront, cornerBackZ);
     // The base square, measured directly: overshoot past its edges and height above or below it.

@@ -11,8 +11,10 @@ notes: Tube of radius 0.14 around a quadratic Bezier arch (a parabola arc, so a 
   trigonometric form with three), polished by a Newton step and clamped to [0, 1]; the least of
   the candidate distances is the exact distance to the arc. Subtracting the radius is exact
   inside too because the radius is below the arc's smallest radius of curvature (about 0.36) and the
-  arc never comes back near itself.
+  arc never comes back near itself. Parameters: radius (0.03-0.2).
 */
+uniform float radius = 0.14;  // @range 0.03 0.2 @step 0.01 @label "Tube radius"
+
 
 // Real cube root that accepts negative arguments.
 float cubeRoot(float x) { return sign(x) * pow(abs(x), 1.0 / 3.0); }
@@ -63,7 +65,6 @@ float bezierDistance(vec3 p, vec3 start, vec3 control, vec3 end) {
 }
 
 float sdf(vec3 p) {
-    const float radius = 0.14;
     const vec3 start = vec3(-0.47, -0.73, 0.78);
     const vec3 control = vec3(-0.37, 1.78, 0.03);
     const vec3 end = vec3(0.62, -0.59, -0.66);

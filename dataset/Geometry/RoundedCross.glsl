@@ -11,7 +11,12 @@ notes: Three rounded square bars along X, Y and Z, merged with a small fillet an
   from the fillets, an underestimate inside and in the blend), and intersecting with the ball
   through max() is exact only where the ball or the bars alone decide. The field is 1-Lipschitz
   and never exceeds the true distance.
+  Parameters: bar half width (0.1-0.4), edge rounding (0-0.1), fillet (0.01-0.25).
 */
+uniform float barHalfWidth = 0.26;  // @range 0.1 0.4 @step 0.01 @label "Bar half width"
+uniform float edgeRounding = 0.08;  // @range 0.0 0.1 @step 0.01 @label "Edge rounding"
+uniform float fillet = 0.12;        // @range 0.01 0.25 @step 0.01 @label "Fillet"
+
 float roundBox(vec3 p, vec3 halfSize, float rounding) {
     vec3 q = abs(p) - (halfSize - rounding);
     return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0) - rounding;
@@ -26,9 +31,6 @@ float smoothUnion(float a, float b, float width) {
 
 float sdf(vec3 p) {
     const float barHalfLength = 0.95;
-    const float barHalfWidth = 0.26;
-    const float edgeRounding = 0.08;
-    const float fillet = 0.12;
     float barX = roundBox(p, vec3(barHalfLength, barHalfWidth, barHalfWidth), edgeRounding);
     float barY = roundBox(p, vec3(barHalfWidth, barHalfLength, barHalfWidth), edgeRounding);
     float barZ = roundBox(p, vec3(barHalfWidth, barHalfWidth, barHalfLength), edgeRounding);

@@ -17,7 +17,10 @@ notes: Tube of radius 0.14 around a trefoil, the (2,3) torus knot ((0.52 + 0.26 
   the result (rare). The tube radius is below the spline's smallest curvature radius (about 0.3)
   and half the closest approach of two strands (about 0.22), so the tube is exact inside too. It is
   the exact distance to this spline trefoil, a close approximation of the parametric curve.
+  Parameters: tube radius (0.04-0.17).
 */
+uniform float tubeRadius = 0.14;  // @range 0.04 0.17 @step 0.01 @label "Tube radius"
+
 
 // Real cube root that accepts negative arguments.
 float cubeRoot(float x) { return sign(x) * pow(abs(x), 1.0 / 3.0); }
@@ -99,7 +102,6 @@ const vec3 lastPoint = vec3((majorRadius + minorRadius * cos(-3.0 * stepAngle)) 
 const vec3 firstPoint = vec3(majorRadius + minorRadius, 0.0, 0.0);
 
 float sdf(vec3 p) {
-    const float tubeRadius = 0.14;
     // Knot frame: `axis` is the threefold symmetry axis. The rows are orthonormal (a rotation).
     const vec3 axis = vec3(0.7977694, 0.3390520, 0.4986059);      // (0.8, 0.34, 0.5) normalised
     const vec3 side = vec3(-0.5299989, 0.0, 0.8479983);           // horizontal, perpendicular to axis

@@ -13,10 +13,12 @@ JobResult<AuditJobReport> run(const AuditRequest& request, const ProgressSink& p
     report.sdf = sdf->label;
     report.entry = sdf->prepared.signature.entry;
     report.probeDistance = request.probeDistance;
+    report.warnings = sdf->warnings;
     if (request.plane) {
-        auto readout =
-            sampling::analysePlane(sdf->prepared, request.plane->normal, request.plane->offset, request.resolution, request.time);
+        auto readout = sampling::analysePlane(sdf->prepared, request.plane->normal, request.plane->offset, request.resolution,
+                                              request.time, sdf->parameters);
         if (!readout) return JobError{Failure::Work, readout.error().message, {}};
+        report.parameters = parameterValues(sdf->parameters);
         report.plane = request.plane;
         report.readout = std::move(*readout);
         return report;
@@ -26,10 +28,43 @@ JobResult<AuditJobReport> run(const AuditRequest& request, const ProgressSink& p
     options.seed = request.seed;
     options.time = request.time;
     options.probeDistance = request.probeDistance;
-    auto volume = sampling::auditField(sdf->prepared, options, progress);
-    if (progress.isCancelled()) return JobError{Failure::Cancelled, "audit: cancelled", {}};
-    if (!volume) return JobError{Failure::Work, volume.error().message, {}};
-    report.volume = std::move(*volume);
+    if (request.family.empty()) {
+        options.parameters = sdf->parameters;
+        auto volume = sampling::auditField(sdf->prepared, options, progress);
+        if (progress.isCancelled()) return JobError{Failure::Cancelled, "audit: cancelled", {}};
+        if (!volume) return JobError{Failure::Work, volume.error().message, {}};
+        report.parameters = parameterValues(sdf->parameters);
+        report.volume = std::move(*volume);
+        return report;
+    }
+    // A family: the volume audit of each instance, summarised one line each.
+    auto instances = shaders::familyInstances(sdf->prepared.parameters, request.sdf.params, request.family.sweeps,
+                                              request.family.randomize, request.seed);
+    if (!instances)
+        return JobError{Failure::Usage, (request.family.randomize ? "--randomize: " : "--sweep: ") + instances.error().message, {}};
+    options.convergence = false; // one estimate per instance; the convergence study is the single audit's
+    for (std::size_t k = 0; k < instances->size(); ++k) {
+        auto resolved = shaders::resolveParameters(sdf->prepared.parameters, (*instances)[k]);
+        if (!resolved) return JobError{Failure::Usage, "--param: " + sdf->label + ": " + resolved.error().message, {}};
+        options.parameters = resolved->settings;
+        ProgressSink step{progress.report ? ProgressFunction([&](std::uint64_t, std::uint64_t) { progress(k, instances->size()); })
+                                          : ProgressFunction(),
+                          progress.cancel};
+        auto volume = sampling::auditField(sdf->prepared, options, step);
+        if (progress.isCancelled()) return JobError{Failure::Cancelled, "audit: cancelled", {}};
+        if (!volume) return JobError{Failure::Work, volume.error().message, {}};
+        AuditInstance instance;
+        instance.parameters = parameterValues(resolved->settings);
+        instance.verdict = volume->verdict;
+        instance.reason = volume->reason;
+        for (const sampling::AuditFlag& flag : volume->flags) instance.flags.push_back(flag.name);
+        instance.lipschitz = volume->lipschitz;
+        instance.lipschitzMax = volume->lipschitzMax;
+        instance.exactnessP99 = volume->exactnessP99;
+        instance.seconds = volume->seconds;
+        report.family.push_back(std::move(instance));
+        progress(k + 1, instances->size());
+    }
     return report;
 }
 

@@ -24,6 +24,7 @@ template <class V> void fields(V& v, SdfInput& s) {
     v("sdf", s.sdf);
     v("entry", s.entry);
     v("source", s.source);
+    v("params", s.params);
 }
 
 template <class V> void fields(V& v, renderer::ShadingSettings& s) {
@@ -85,6 +86,7 @@ template <class V> void fields(V& v, AnimateRequest& r) {
     v("seconds", r.seconds);
     v("fps", r.framesPerSecond);
     v("turntable", r.turntable);
+    v("params_end", r.paramsEnd);
 }
 
 template <class V> void fields(V& v, SampleRequest& r) {
@@ -100,6 +102,8 @@ template <class V> void fields(V& v, SampleRequest& r) {
     v("chunk", r.chunkSize);
     v("gradient_step", r.gradientStep);
     v("surface_tolerance", r.surfaceTolerance);
+    v("sweep", r.family.sweeps);
+    v("randomize", r.family.randomize);
 }
 
 template <class V> void fields(V& v, AuditRequest& r) {
@@ -110,6 +114,8 @@ template <class V> void fields(V& v, AuditRequest& r) {
     v("probe_distance", r.probeDistance);
     v("plane", r.plane);
     v("resolution", r.resolution);
+    v("sweep", r.family.sweeps);
+    v("randomize", r.family.randomize);
 }
 
 template <class V> void fields(V& v, MergeRequest& r) {
@@ -188,6 +194,29 @@ template <class V> void fields(V& v, SampleReport& r) {
     v("seconds", r.seconds);
     v("samples_per_second", r.samplesPerSecond);
     v("gl_renderer", r.glRenderer);
+    v("parameters", r.parameters);
+    v("instances", r.instances);
+    v("index", r.index);
+    v("warnings", r.warnings);
+}
+
+template <class V> void fields(V& v, SampleInstance& i) {
+    v("output", i.output);
+    v("parameters", i.parameters);
+    v("rows", i.rows);
+    v("bad_rows", i.badRows);
+    v("seconds", i.seconds);
+}
+
+template <class V> void fields(V& v, AuditInstance& i) {
+    v("parameters", i.parameters);
+    v("verdict", i.verdict);
+    v("reason", i.reason);
+    v("flags", i.flags);
+    v("lipschitz", i.lipschitz);
+    v("lipschitz_max", i.lipschitzMax);
+    v("exactness_error_p99", i.exactnessP99);
+    v("seconds", i.seconds);
 }
 
 template <class V> void fields(V& v, MergeReport& r) {
@@ -312,6 +341,21 @@ json encode(float value) {
     return std::strtod(std::string(text, end).c_str(), nullptr);
 }
 json encode(const glm::vec3& v) { return json::array({encode(v.x), encode(v.y), encode(v.z)}); }
+// Parameter values as an object, {"radius": 0.3, "offset": [1, 2]}; sweeps as their text form.
+json encode(const std::vector<shaders::ParameterValue>& values) {
+    json out = json::object();
+    for (const shaders::ParameterValue& p : values) {
+        if (p.value.size() == 1) {
+            out[p.name] = encode(p.value[0]);
+        } else {
+            json list = json::array();
+            for (float x : p.value) list.push_back(encode(x));
+            out[p.name] = list;
+        }
+    }
+    return out;
+}
+json encode(const shaders::ParameterSweep& sweep) { return shaders::formatParameterSweep(sweep); }
 json encode(const PlaneSpec& p) {
     return json::array({encode(p.normal.x), encode(p.normal.y), encode(p.normal.z), encode(p.offset)});
 }
@@ -409,10 +453,48 @@ template <std::floating_point T> bool decode(const json& in, T& value, const std
     return true;
 }
 
+bool finiteFloat(const json& in) { return in.is_number() && std::isfinite(float(in.get<double>())); }
+
 bool decode(const json& in, glm::vec3& value, const std::string& path, bool, std::string& error) {
-    if (!in.is_array() || in.size() != 3 || !in[0].is_number() || !in[1].is_number() || !in[2].is_number())
-        return fail(error, path, "[x, y, z]", in);
+    if (!in.is_array() || in.size() != 3 || !finiteFloat(in[0]) || !finiteFloat(in[1]) || !finiteFloat(in[2]))
+        return fail(error, path, "[x, y, z] (finite)", in);
     value = glm::vec3(in[0].get<float>(), in[1].get<float>(), in[2].get<float>());
+    return true;
+}
+
+bool decode(const json& in, std::vector<shaders::ParameterValue>& values, const std::string& path, bool, std::string& error) {
+    if (!in.is_object()) return fail(error, path, "an object of parameter values ({\"radius\": 0.3, \"offset\": [1, 2]})", in);
+    values.clear();
+    for (const auto& [name, item] : in.items()) {
+        shaders::ParameterValue value{name, {}};
+        const std::string where = path + "." + name;
+        if (item.is_boolean()) {
+            value.value.push_back(item.get<bool>() ? 1.0f : 0.0f);
+        } else if (finiteFloat(item)) {
+            value.value.push_back(item.get<float>());
+        } else if (item.is_array() && !item.empty() && item.size() <= 4) {
+            for (const json& x : item) {
+                if (!finiteFloat(x)) return fail(error, where, "1 to 4 finite numbers", item);
+                value.value.push_back(x.get<float>());
+            }
+        } else {
+            return fail(error, where, "a finite number, true/false, or 1 to 4 numbers", item);
+        }
+        auto checked = shaders::parseParameterValue(shaders::formatParameterValue(value));
+        if (!checked || !(*checked == value)) return fail(error, where, "a parameter name (a GLSL identifier)", in);
+        values.push_back(std::move(value));
+    }
+    return true;
+}
+
+bool decode(const json& in, shaders::ParameterSweep& value, const std::string& path, bool, std::string& error) {
+    if (!in.is_string()) return fail(error, path, "\"NAME=FROM:TO:COUNT\"", in);
+    auto sweep = shaders::parseParameterSweep(in.get<std::string>());
+    if (!sweep) {
+        error = "'" + path + "': " + sweep.error().message;
+        return false;
+    }
+    value = std::move(*sweep);
     return true;
 }
 
@@ -420,6 +502,8 @@ bool decode(const json& in, PlaneSpec& value, const std::string& path, bool, std
     if (!in.is_array() || in.size() != 4) return fail(error, path, "[nx, ny, nz, offset]", in);
     for (const json& item : in)
         if (!item.is_number()) return fail(error, path, "[nx, ny, nz, offset]", in);
+    for (const json& item : in)
+        if (!finiteFloat(item)) return fail(error, path, "[nx, ny, nz, offset] (finite)", in);
     value.normal = glm::vec3(in[0].get<float>(), in[1].get<float>(), in[2].get<float>());
     value.offset = in[3].get<float>();
     return true;
@@ -493,7 +577,7 @@ template <class T> Expected<T> readObject(const json& in, bool strict, const cha
 std::optional<json> parse(const std::string& text, std::string& error) {
     try {
         return json::parse(text);
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) { // parse_error, and out_of_range for a number like 1e1000
         error = std::string("not valid JSON: ") + e.what();
         return std::nullopt;
     }
@@ -538,7 +622,12 @@ namespace {
 
 json encodeAudit(const AuditJobReport& report) {
     json out = {{"sdf", report.sdf}, {"entry", report.entry}};
-    if (report.readout) {
+    out["parameters"] = encode(report.parameters);
+    out["warnings"] = encode(report.warnings);
+    if (!report.family.empty()) {
+        out["probe_distance"] = report.probeDistance;
+        out["family"] = encode(report.family);
+    } else if (report.readout) {
         out["plane"] = encode(report.plane.value_or(PlaneSpec{}));
         out.update(encode(*report.readout));
         out["histogram_bin_width"] = 0.05;
@@ -584,7 +673,12 @@ template <> Expected<AuditJobReport> reportFromJson<AuditJobReport>(const std::s
     };
     read("sdf", report.sdf);
     read("entry", report.entry);
-    if (in->contains("plane")) {
+    read("parameters", report.parameters);
+    read("warnings", report.warnings);
+    if (in->contains("family")) {
+        read("probe_distance", report.probeDistance);
+        read("family", report.family);
+    } else if (in->contains("plane")) {
         read("plane", report.plane);
         auto readout = readObject<sampling::PlaneReadout>(*in, false, "report");
         if (!readout) return readout.error();

@@ -1,6 +1,7 @@
 // The shared steps of every job: opening the SDF and the pure checks of each request.
 #include <jobs/Jobs.h>
 
+#include <core/Log.h>
 #include <core/Paths.h>
 #include <core/TextFile.h>
 #include <dataset/Catalogue.h>
@@ -66,7 +67,27 @@ std::optional<JobError> checkSdf(const SdfInput& input) {
         if (lower == "main" || lower.rfind("gl_", 0) == 0 || lower.rfind("sdfwb_", 0) == 0)
             return usage("--entry: '" + input.entry + "' is reserved (main, gl_*, sdfwb_*): name your own function");
     }
+    for (const shaders::ParameterValue& p : input.params) {
+        // The text form checks the name and the values (1 to 4 finite numbers).
+        if (auto ok = shaders::parseParameterValue(shaders::formatParameterValue(p)); !ok || !(*ok == p))
+            return usage("--param: '" + shaders::formatParameterValue(p) + "': expected NAME=VALUE with 1 to 4 finite numbers");
+        for (const shaders::ParameterValue& other : input.params)
+            if (&other != &p && other.name == p.name) return usage("--param: '" + p.name + "' is given twice");
+    }
     if (auto path = resolve(input); !path) return usage(path.error().message);
+    return std::nullopt;
+}
+
+std::optional<JobError> checkFamily(const FamilySpec& family) {
+    if (family.randomize > 100000) return usage("--randomize: at most 100000 instances");
+    if (family.randomize > 0 && !family.sweeps.empty()) return usage("--sweep and --randomize cannot be combined");
+    std::uint64_t total = 1;
+    for (const shaders::ParameterSweep& sweep : family.sweeps) {
+        if (auto ok = shaders::parseParameterSweep(shaders::formatParameterSweep(sweep)); !ok || !(*ok == sweep))
+            return usage("--sweep: '" + shaders::formatParameterSweep(sweep) + "': expected NAME=FROM:TO:COUNT");
+        total *= std::uint64_t(sweep.count);
+        if (total > 100000) return usage("--sweep: more than 100000 instances in the grid");
+    }
     return std::nullopt;
 }
 
@@ -127,9 +148,20 @@ JobResult<OpenedSdf> openSdf(const SdfInput& input, const std::string& what) {
         sdf = shaders::prepareSdfFile(*path, options, input.entry);
     }
     const std::string label = path->empty() ? std::string("<source>") : path->string();
-    if (sdf.ok()) return OpenedSdf{std::move(sdf), label};
-    return JobError{Failure::Work, what + ": " + label + " has errors" + (what == "audit" ? "" : "; nothing written"),
-                    sdf.diagnostics};
+    if (!sdf.ok())
+        return JobError{Failure::Work, what + ": " + label + " has errors" + (what == "audit" ? "" : "; nothing written"),
+                        sdf.diagnostics};
+    auto resolved = shaders::resolveParameters(sdf.parameters, input.params);
+    if (!resolved) return usage("--param: " + label + ": " + resolved.error().message);
+    for (const std::string& warning : resolved->warnings) log::warning(what, warning);
+    return OpenedSdf{std::move(sdf), label, std::move(resolved->settings), std::move(resolved->warnings)};
+}
+
+std::vector<shaders::ParameterValue> parameterValues(const std::vector<shaders::ParameterSetting>& settings) {
+    std::vector<shaders::ParameterValue> values;
+    for (const shaders::ParameterSetting& s : settings)
+        values.push_back({s.name, std::vector<float>(s.value.begin(), s.value.begin() + shaders::componentCount(s.type))});
+    return values;
 }
 
 std::optional<JobError> validate(const RenderRequest& request) {
@@ -171,6 +203,8 @@ std::optional<JobError> validate(const SampleRequest& request) {
     if (request.shardCount == 0 || request.shardIndex >= request.shardCount)
         return usage("--shard: expected K/COUNT with 0 <= K < COUNT, got '" + std::to_string(request.shardIndex) + "/" +
                      std::to_string(request.shardCount) + "'");
+    if (auto error = checkFamily(request.family)) return error;
+    if (!request.family.empty() && request.shardCount > 1) return usage("--shard cannot be combined with --sweep or --randomize");
     const sampling::SamplingJob job = samplingJob(request);
     if (auto ok = sampling::validate(job); !ok) return usage(ok.error().message);
     if (!request.output.empty()) {
@@ -199,6 +233,8 @@ std::optional<JobError> validate(const AuditRequest& request) {
             !std::isfinite(plane.normal.y) || !std::isfinite(plane.normal.z))
             return usage("--plane: expected NX,NY,NZ,OFFSET with a non-zero normal");
     }
+    if (auto error = checkFamily(request.family)) return error;
+    if (!request.family.empty() && request.plane) return usage("--plane cannot be combined with --sweep or --randomize");
     return checkSdf(request.sdf);
 }
 

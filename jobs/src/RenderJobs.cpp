@@ -44,12 +44,29 @@ std::vector<std::string> viewWarnings(const FrameRequest& frame) {
     return warnings;
 }
 
+// The values a fraction t of the way from `from` to `to` (same parameters, same order): floats and
+// vectors linearly, ints rounded, bools switching halfway.
+std::vector<shaders::ParameterSetting> interpolateParameters(const std::vector<shaders::ParameterSetting>& from,
+                                                             const std::vector<shaders::ParameterSetting>& to, float t) {
+    std::vector<shaders::ParameterSetting> out = from;
+    for (std::size_t i = 0; i < out.size() && i < to.size(); ++i)
+        for (std::size_t k = 0; k < 4; ++k) {
+            const float a = from[i].value[k], b = to[i].value[k];
+            float v = a + t * (b - a);
+            if (out[i].type == shaders::ParameterType::Int) v = std::round(v);
+            if (out[i].type == shaders::ParameterType::Bool) v = t < 0.5f ? a : b;
+            out[i].value[k] = v;
+        }
+    return out;
+}
+
 // The tracer set up with the frame's settings and SDF; errors carry the driver's diagnostics.
 std::optional<JobError> setUp(renderer::SdfRenderer& tracer, const FrameRequest& frame, const OpenedSdf& sdf,
                               const std::string& what) {
     (void)tracer.setTrace(frame.trace);
     (void)tracer.setShading(frame.shading);
     (void)tracer.setPlane(frame.plane);
+    tracer.setParameters(sdf.parameters);
     auto diagnostics = tracer.setSdf(sdf.prepared);
     if (!shaders::hasErrors(diagnostics)) return std::nullopt;
     return JobError{Failure::Work, what + ": the driver rejected " + sdf.label + "; nothing written", diagnostics};
@@ -64,6 +81,7 @@ JobResult<RenderReport> run(const RenderRequest& request, const ProgressSink&) {
     if (!sdf) return sdf.error;
     RenderReport report;
     report.warnings = viewWarnings(request.frame);
+    report.warnings.insert(report.warnings.end(), sdf->warnings.begin(), sdf->warnings.end());
     renderer::SdfRenderer tracer;
     if (auto error = setUp(tracer, request.frame, *sdf, "render")) return *error;
     renderer::FrameStats stats;
@@ -95,7 +113,17 @@ JobResult<AnimateReport> run(const AnimateRequest& request, const ProgressSink& 
     if (!sdf) return sdf.error;
     AnimateReport report;
     report.warnings = viewWarnings(request.frame);
-    if (!request.turntable && !sdf->prepared.usesTime()) {
+    report.warnings.insert(report.warnings.end(), sdf->warnings.begin(), sdf->warnings.end());
+    std::vector<shaders::ParameterValue> endValues = request.frame.sdf.params;
+    for (const shaders::ParameterValue& value : request.paramsEnd) {
+        std::erase_if(endValues, [&](const shaders::ParameterValue& v) { return v.name == value.name; });
+        endValues.push_back(value);
+    }
+    auto end = shaders::resolveParameters(sdf->prepared.parameters, endValues);
+    if (!end) return JobError{Failure::Usage, "--param-end: " + sdf->label + ": " + end.error().message, {}};
+    report.warnings.insert(report.warnings.end(), end->warnings.begin(), end->warnings.end());
+    const bool keyframed = !request.paramsEnd.empty();
+    if (!request.turntable && !sdf->prepared.usesTime() && !keyframed) {
         report.warnings.push_back(sdf->label + " is not animated and --turntable is off: every frame is the same");
         log::warning("animate", report.warnings.back());
     }
@@ -113,6 +141,8 @@ JobResult<AnimateReport> run(const AnimateRequest& request, const ProgressSink& 
             renderer::Camera camera = frame.camera;
             if (request.turntable) renderer::orbit(camera, float(2.0 * 3.14159265358979 * i / frames), 0.0f);
             const float time = frame.time + float(i) / float(request.framesPerSecond);
+            if (keyframed)
+                tracer.setParameters(interpolateParameters(sdf->parameters, end->settings, frames > 1 ? float(i) / float(frames - 1) : 0.0f));
             renderer::FrameStats stats;
             renderer::Image image = offscreen.render(tracer, frame.width, frame.height, camera, time, &stats);
             report.renderSeconds += stats.cpuMilliseconds / 1000.0;

@@ -4,6 +4,8 @@
 
 #include <core/Log.h>
 #include <core/Paths.h>
+#include <core/TextFile.h>
+#include <jobs/JobJson.h>
 #include <dataset/Catalogue.h>
 #include <renderer/GlInfo.h>
 #include <renderer/SampleCompute.h>
@@ -11,9 +13,29 @@
 #include <sampling/Sampler.h>
 #include <sampling/SamplerLibrary.h>
 
+#include <algorithm>
 #include <chrono>
+#include <filesystem>
 
 namespace sdfwb::jobs {
+
+namespace {
+
+// OUTPUT's stem + _00000 (five digits, more when needed) + its extension, in OUTPUT's folder.
+std::string instancePath(const std::string& output, std::size_t index, std::size_t count) {
+    const std::filesystem::path path(output);
+    std::string number = std::to_string(index);
+    const std::size_t digits = std::max<std::size_t>(5, std::to_string(count - 1).size());
+    number.insert(0, digits - number.size(), '0');
+    return (path.parent_path() / (path.stem().string() + "_" + number + path.extension().string())).string();
+}
+
+std::string indexPath(const std::string& output) {
+    const std::filesystem::path path(output);
+    return (path.parent_path() / (path.stem().string() + "_index.json")).string();
+}
+
+} // namespace
 
 JobResult<SampleReport> run(const SampleRequest& request, const ProgressSink& progress) {
     if (auto error = validate(request)) return *error;
@@ -24,39 +46,91 @@ JobResult<SampleReport> run(const SampleRequest& request, const ProgressSink& pr
         *(request.format.empty() ? sampling::formatFromPath(request.output) : sampling::parseFormat(request.format));
     auto sdf = openSdf(request.sdf, "sample");
     if (!sdf) return sdf.error;
+    // The instances to write: one (the request's values), or the family's.
+    std::vector<std::vector<shaders::ParameterValue>> instances{request.sdf.params};
+    if (!request.family.empty()) {
+        auto family = shaders::familyInstances(sdf->prepared.parameters, request.sdf.params, request.family.sweeps,
+                                               request.family.randomize, request.seed);
+        if (!family) return JobError{Failure::Usage, (request.family.randomize ? "--randomize: " : "--sweep: ") + family.error().message, {}};
+        instances = std::move(*family);
+    }
+    std::vector<std::vector<shaders::ParameterSetting>> settings;
+    SampleReport report;
+    report.warnings = sdf->warnings;
+    for (const auto& values : instances) {
+        auto resolved = shaders::resolveParameters(sdf->prepared.parameters, values);
+        if (!resolved) return JobError{Failure::Usage, "--param: " + sdf->label + ": " + resolved.error().message, {}};
+        settings.push_back(std::move(resolved->settings));
+    }
     renderer::SampleCompute compute;
     auto diagnostics = compute.build(sdf->prepared, *sampler);
     if (shaders::hasErrors(diagnostics))
         return JobError{Failure::Work,
                         "sample: " + sdf->label + " with pattern '" + request.pattern + "' does not compile; nothing written",
                         diagnostics};
-    const sampling::SamplingJob job = samplingJob(request);
+    sampling::SamplingJob job = samplingJob(request);
     sampling::SampleMetadata metadata;
     metadata.sdf = request.sdf.sdf;
     metadata.pattern = request.pattern;
     metadata.version = SDFWB_VERSION;
-    auto written = sampling::sampleToFile(compute, job, request.output, format, metadata, progress);
+    const bool family = !request.family.empty();
+    const std::uint64_t total = job.rows() * instances.size();
+    std::vector<std::string> written;
+    auto removeWritten = [&] {
+        std::error_code ec;
+        for (const std::string& path : written) std::filesystem::remove(path, ec);
+        if (format == sampling::SampleFormat::Bin)
+            for (const std::string& path : written) std::filesystem::remove(path + ".json", ec);
+    };
+    for (std::size_t k = 0; k < instances.size(); ++k) {
+        job.sdfParameters = settings[k];
+        metadata.parameters = shaders::parametersJson(settings[k]);
+        const std::string output = family ? instancePath(request.output, k, instances.size()) : request.output;
+        const std::uint64_t before = job.rows() * k;
+        ProgressSink step{progress.report ? ProgressFunction([&](std::uint64_t done, std::uint64_t) { progress(before + done, total); })
+                                          : ProgressFunction(),
+                          progress.cancel};
+        auto result = sampling::sampleToFile(compute, job, output, format, metadata, step);
+        if (!result) {
+            compute.releaseGl();
+            removeWritten();
+            return JobError{Failure::Work, result.error().message, {}};
+        }
+        if (result->cancelled) {
+            compute.releaseGl();
+            removeWritten();
+            return JobError{Failure::Cancelled,
+                            "sample: cancelled after " + std::to_string(before + result->rows) + " of " + std::to_string(total) +
+                                " samples; nothing written",
+                            {}};
+        }
+        written.push_back(output);
+        report.rows += result->rows;
+        report.badRows += result->badRows;
+        report.seconds += result->seconds;
+        report.firstIndex = result->firstIndex;
+        if (family)
+            report.instances.push_back({output, parameterValues(settings[k]), result->rows, result->badRows, result->seconds});
+        else
+            report.parameters = parameterValues(settings[k]);
+    }
     compute.releaseGl();
-    if (!written) return JobError{Failure::Work, written.error().message, {}};
-    if (written->cancelled)
-        return JobError{Failure::Cancelled,
-                        "sample: cancelled after " + std::to_string(written->rows) + " of " + std::to_string(job.rows()) +
-                            " samples; nothing written",
-                        {}};
-    SampleReport report;
     report.output = request.output;
     report.format = sampling::formatName(format);
     report.sdf = request.sdf.sdf;
     report.pattern = request.pattern;
     report.count = job.count;
-    report.rows = written->rows;
-    report.firstIndex = written->firstIndex;
     report.seed = job.seed;
     report.time = job.time;
-    report.badRows = written->badRows;
-    report.seconds = written->seconds;
-    report.samplesPerSecond = written->seconds > 0.0 ? double(written->rows) / written->seconds : 0.0;
+    report.samplesPerSecond = report.seconds > 0.0 ? double(report.rows) / report.seconds : 0.0;
     report.glRenderer = renderer::queryGlInfo().renderer;
+    if (family) {
+        report.index = indexPath(request.output);
+        if (auto ok = writeFileAtomically(report.index, toJson(report, 2) + "\n"); !ok) {
+            removeWritten();
+            return JobError{Failure::Work, ok.error().message, {}};
+        }
+    }
     return report;
 }
 

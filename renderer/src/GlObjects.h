@@ -6,6 +6,7 @@
 #include <epoxy/gl.h>
 
 #include <shaders/Diagnostic.h>
+#include <shaders/Parameters.h>
 #include <shaders/ShaderComposer.h>
 
 #include <utility>
@@ -81,5 +82,9 @@ CompiledShader compileShader(GLenum type, const shaders::ComposedShader& compose
 // When `program` reads the G3D noise texture (g3d_uniformRandom), makes `texture` once (see
 // NoiseTexture.h) and binds it to shaders::kNoiseTextureUnit. Needs a current context.
 void bindNoiseTextureIfUsed(GLuint program, GlTexture& texture);
+
+// Sets the SDF's parameter uniforms of the program in use (glUseProgram done); a parameter the
+// compiler optimised away has no location and is skipped.
+void applyParameters(GLuint program, const std::vector<shaders::ParameterSetting>& parameters);
 
 } // namespace sdfwb::renderer

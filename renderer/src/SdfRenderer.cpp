@@ -244,6 +244,7 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
         glUniform3f(v->location("sdfwb_background"), m_shading.background.r, m_shading.background.g, m_shading.background.b);
         if (GLint location = v->location("sdfwb_time"); location >= 0) glUniform1f(location, time);
         if (GLint location = v->location("g3d_SceneTime"); location >= 0) glUniform1f(location, time); // declared by the file
+        applyParameters(v->program.id(), m_parameters);
         bindNoiseTextureIfUsed(v->program.id(), m_impl->noise);
         if (GLint location = v->location("sdfwb_relaxation"); location >= 0) glUniform1f(location, m_trace.overRelaxation);
         if (m_plane.enabled) {
@@ -332,6 +333,8 @@ void SdfRenderer::releaseGl() {
     m_impl->matcap.reset();
     m_impl->noise.reset();
 }
+
+void SdfRenderer::setParameters(std::vector<shaders::ParameterSetting> parameters) { m_parameters = std::move(parameters); }
 
 std::vector<Diagnostic> SdfRenderer::setPlane(const CuttingPlane& plane) {
     bool variantChanges = plane.enabled != m_plane.enabled || plane.clipSurface != m_plane.clipSurface ||

@@ -11,7 +11,8 @@ static_assert(std::endian::native == std::endian::little, "sdfwb writes little-e
 
 class BinWriter final : public SampleWriter {
 public:
-    BinWriter(OutputFile file, std::uint64_t rows) : m_file(std::move(file)), m_rows(rows) {}
+    BinWriter(OutputFile file, std::uint64_t rows, const SampleMetadata& metadata)
+        : m_file(std::move(file)), m_rows(rows), m_metadata(metadata) {}
 
     Expected<void> append(const float* positions, const float* distances, const float* gradients, std::size_t n) override {
         if (m_written + n > m_rows) return makeError(m_file.target().string() + ": more rows than announced");
@@ -29,12 +30,20 @@ public:
                              " rows written");
         const std::uint32_t count = std::uint32_t(m_rows);
         if (auto ok = m_file.writeAt(0, &count, 4); !ok) return ok;
+        if (!m_metadata.parameters.empty()) { // the sidecar first: a .bin never appears without it
+            auto sidecar = OutputFile::create(m_file.target().string() + ".json");
+            if (!sidecar) return sidecar.error();
+            const std::string text = metadataJson(m_metadata) + "\n";
+            if (auto ok = sidecar->writeAt(0, text.data(), text.size()); !ok) return ok;
+            if (auto ok = sidecar->commit(); !ok) return ok;
+        }
         return m_file.commit();
     }
 
 private:
     OutputFile m_file;
     std::uint64_t m_rows;
+    SampleMetadata m_metadata;
     std::uint64_t m_written = 0;
 };
 
@@ -60,8 +69,8 @@ private:
 
 } // namespace
 
-Expected<std::unique_ptr<SampleWriter>> createBinWriter(OutputFile file, std::uint64_t rows) {
-    return std::unique_ptr<SampleWriter>(new BinWriter(std::move(file), rows));
+Expected<std::unique_ptr<SampleWriter>> createBinWriter(OutputFile file, std::uint64_t rows, const SampleMetadata& metadata) {
+    return std::unique_ptr<SampleWriter>(new BinWriter(std::move(file), rows, metadata));
 }
 
 Expected<std::unique_ptr<SampleReader>> openBinReader(InputFile file) {

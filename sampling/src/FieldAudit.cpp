@@ -39,7 +39,9 @@ float gradientLength(const SampleSet& s, std::size_t i) {
 // A compiled sampler that can be run with several gradient steps over the same points.
 class Runner {
 public:
-    Expected<void> build(const shaders::PreparedSdf& sdf, const std::string& pattern) {
+    Expected<void> build(const shaders::PreparedSdf& sdf, const std::string& pattern,
+                         const std::vector<shaders::ParameterSetting>& parameters) {
+        m_parameters = parameters;
         auto piece = pattern.rfind("analysis/", 0) == 0 ? shaders::builtinPiece(pattern) : findSampler(pattern, {});
         if (!piece) return piece.error();
         auto diagnostics = m_compute.build(sdf, *piece);
@@ -49,9 +51,10 @@ public:
         }
         return {};
     }
-    Expected<SampleSet> run(const SamplingJob& job) {
+    Expected<SampleSet> run(SamplingJob job) {
         SampleSet out;
         out.resize(std::size_t(job.count));
+        job.sdfParameters = m_parameters;
         auto report = sampleInto(m_compute, job, out.positions.data(), out.distances.data(), out.gradients.data(), {});
         if (!report) return report.error();
         return out;
@@ -60,6 +63,7 @@ public:
 
 private:
     renderer::SampleCompute m_compute;
+    std::vector<shaders::ParameterSetting> m_parameters;
 };
 
 // Points (xyz triples) for nanoflann.
@@ -84,7 +88,7 @@ Expected<float> measureNoiseFloor(const shaders::PreparedSdf& sdf, const AuditOp
     constexpr int kRun = 16;
     constexpr float kSpacing = 1e-3f;
     Runner runner;
-    if (auto ok = runner.build(sdf, "analysis/noise_lines.glsl"); !ok) return ok.error();
+    if (auto ok = runner.build(sdf, "analysis/noise_lines.glsl", options.parameters); !ok) return ok.error();
     SamplingJob job;
     const std::uint64_t runs = std::clamp<std::uint64_t>(samples / 16, 64, 8192);
     job.count = runs * kRun;
@@ -105,7 +109,7 @@ Expected<float> measureNoiseFloor(const shaders::PreparedSdf& sdf, const AuditOp
 Expected<SampleSet> evaluateAt(const shaders::PreparedSdf& sdf, const AuditOptions& options, const std::vector<float>& points,
                                float gradientStep) {
     Runner runner;
-    if (auto ok = runner.build(sdf, "analysis/points.glsl"); !ok) return ok.error();
+    if (auto ok = runner.build(sdf, "analysis/points.glsl", options.parameters); !ok) return ok.error();
     SamplingJob job;
     job.count = points.size() / 3;
     job.time = options.time;
@@ -243,9 +247,9 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
     AuditReport report;
     report.samples = n;
     Runner randomRunner, nearRunner, surfaceRunner;
-    if (auto ok = randomRunner.build(sdf, "rand"); !ok) return ok.error();
-    if (auto ok = nearRunner.build(sdf, "near"); !ok) return ok.error();
-    if (auto ok = surfaceRunner.build(sdf, "surface"); !ok) return ok.error();
+    if (auto ok = randomRunner.build(sdf, "rand", options.parameters); !ok) return ok.error();
+    if (auto ok = nearRunner.build(sdf, "near", options.parameters); !ok) return ok.error();
+    if (auto ok = surfaceRunner.build(sdf, "surface", options.parameters); !ok) return ok.error();
 
     SamplingJob job;
     job.count = n;
@@ -639,7 +643,8 @@ Expected<AuditReport> auditField(const shaders::PreparedSdf& sdf, const AuditOpt
     return report;
 }
 
-Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 normal, float offset, int resolution, float time) {
+Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 normal, float offset, int resolution, float time,
+                                    const std::vector<shaders::ParameterSetting>& sdfParameters) {
     auto start = std::chrono::steady_clock::now();
     if (glm::length(normal) <= 0.0f) return makeError("plane: the normal must not be zero");
     if (resolution < 2 || resolution > 4096) return makeError("plane: resolution must be 2..4096");
@@ -652,7 +657,7 @@ Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 n
     glm::vec3 origin = normal * offset - 0.5f * side * (u + v);
 
     Runner runner;
-    if (auto ok = runner.build(sdf, "analysis/plane_grid.glsl"); !ok) return ok.error();
+    if (auto ok = runner.build(sdf, "analysis/plane_grid.glsl", sdfParameters); !ok) return ok.error();
     SamplingJob job;
     job.count = std::uint64_t(resolution) * std::uint64_t(resolution);
     job.time = time;

@@ -10,7 +10,7 @@
 
 namespace sdfwb::sampling::detail {
 
-Expected<std::unique_ptr<SampleWriter>> createBinWriter(OutputFile file, std::uint64_t rows);
+Expected<std::unique_ptr<SampleWriter>> createBinWriter(OutputFile file, std::uint64_t rows, const SampleMetadata& metadata);
 Expected<std::unique_ptr<SampleReader>> openBinReader(InputFile file);
 Expected<std::unique_ptr<SampleWriter>> createNpzWriter(OutputFile file, std::uint64_t rows, const SampleMetadata& metadata,
                                                         bool forceZip64);

@@ -195,6 +195,7 @@ public:
                    scalarArray<std::uint64_t>("first_index.npy", "<u8", metadata.firstIndex),
                    scalarArray<std::uint64_t>("total_count.npy", "<u8", metadata.totalCount),
                    stringArray("version.npy", metadata.version)};
+        if (!metadata.parameters.empty()) m_small.push_back(stringArray("parameters.npy", metadata.parameters));
     }
 
     Expected<void> append(const float* positions, const float* distances, const float* gradients, std::size_t n) override {
@@ -567,6 +568,7 @@ Expected<std::unique_ptr<SampleReader>> openNpzReader(InputFile file) {
     readString("sdf", metadata.sdf);
     readString("pattern", metadata.pattern);
     readString("version", metadata.version);
+    readString("parameters", metadata.parameters);
     readUnsigned("seed", metadata.seed);
     readUnsigned("first_index", metadata.firstIndex);
     readUnsigned("total_count", metadata.totalCount);

@@ -30,6 +30,7 @@ std::string header(std::uint64_t rows, const SampleMetadata& m) {
     out += "comment sdfwb first_index " + std::to_string(m.firstIndex) + "\n";
     out += "comment sdfwb total_count " + std::to_string(m.totalCount) + "\n";
     out += "comment sdfwb version " + singleLine(m.version) + "\n";
+    if (!m.parameters.empty()) out += "comment sdfwb parameters " + singleLine(m.parameters) + "\n";
     out += "element vertex " + std::to_string(rows) + "\n";
     for (const char* property : kProperties) out += std::string("property float ") + property + "\n";
     out += "end_header\n";
@@ -182,6 +183,8 @@ Expected<std::unique_ptr<SampleReader>> openPlyReader(InputFile file) {
                     metadata.totalCount = std::stoull(value);
                 else if (key == "version")
                     metadata.version = value;
+                else if (key == "parameters")
+                    metadata.parameters = value;
             } catch (const std::exception&) { return makeError(where() + "malformed sdfwb " + key + " value '" + value + "'"); }
         } else if (keyword == "element") {
             std::string element;

@@ -3,6 +3,7 @@
 #include "Formats.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <vector>
 
 namespace sdfwb::sampling {
@@ -33,6 +34,36 @@ std::optional<SampleFormat> formatFromPath(const fs::path& path) {
     return parseFormat(extension.substr(1));
 }
 
+namespace {
+
+std::string jsonString(const std::string& text) {
+    std::string out = "\"";
+    for (unsigned char c : text) {
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += char(c);
+        } else if (c < 0x20) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\u%04x", unsigned(c));
+            out += escaped;
+        } else {
+            out += char(c);
+        }
+    }
+    return out + "\"";
+}
+
+} // namespace
+
+std::string metadataJson(const SampleMetadata& m) {
+    char time[32];
+    std::snprintf(time, sizeof time, "%.9g", double(m.time));
+    return "{\"sdf\": " + jsonString(m.sdf) + ", \"pattern\": " + jsonString(m.pattern) + ", \"seed\": " + std::to_string(m.seed) +
+           ", \"time\": " + time + ", \"first_index\": " + std::to_string(m.firstIndex) +
+           ", \"total_count\": " + std::to_string(m.totalCount) + ", \"version\": " + jsonString(m.version) +
+           ", \"parameters\": " + (m.parameters.empty() ? std::string("{}") : m.parameters) + "}";
+}
+
 std::uint64_t maxRows(SampleFormat format) {
     switch (format) {
     case SampleFormat::Bin:
@@ -56,7 +87,7 @@ Expected<std::unique_ptr<SampleWriter>> SampleWriter::create(const fs::path& pat
     if (!file) return file.error();
     switch (format) {
     case SampleFormat::Bin:
-        return detail::createBinWriter(std::move(*file), rows);
+        return detail::createBinWriter(std::move(*file), rows, metadata);
     case SampleFormat::Npz:
         return detail::createNpzWriter(std::move(*file), rows, metadata, options.forceZip64);
     case SampleFormat::Ply:

@@ -36,10 +36,15 @@ Expected<SamplingReport> run(renderer::SampleCompute& compute, const SamplingJob
     report.firstIndex = job.firstIndex();
     const std::uint64_t rows = job.rows();
     std::uint32_t chunk = std::min(job.chunkSize, renderer::SampleCompute::kMaxChunk);
-    renderer::SampleUniforms uniforms{std::uint32_t(job.count), job.seed, job.time, job.gradientStep, {}};
+    renderer::SampleUniforms uniforms;
+    uniforms.sampleCount = std::uint32_t(job.count);
+    uniforms.seed = job.seed;
+    uniforms.time = job.time;
+    uniforms.gradientStep = job.gradientStep;
     std::copy(std::begin(job.parameters), std::end(job.parameters), uniforms.parameters);
     uniforms.surfaceTolerance = job.surfaceTolerance;
     uniforms.inputPoints = job.inputPoints;
+    uniforms.sdfParameters = job.sdfParameters;
     progress(0, rows);
     for (std::uint64_t done = 0; done < rows;) {
         if (progress.isCancelled()) {

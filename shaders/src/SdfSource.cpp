@@ -259,6 +259,9 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
     prepared.source = resolveIncludes(text, name, path, options);
     prepared.diagnostics = prepared.source.diagnostics;
     for (Diagnostic& d : checkSourceFiles(prepared.source)) prepared.diagnostics.push_back(std::move(d));
+    ParameterScan parameters = parseParameters(text, name);
+    prepared.parameters = std::move(parameters.parameters);
+    for (Diagnostic& d : parameters.diagnostics) prepared.diagnostics.push_back(std::move(d));
     std::string stripped = stripComments(prepared.source.text);
     prepared.compat = detectCompatNeeds(stripped);
     prepared.macros = definedMacros(stripped);

@@ -129,6 +129,7 @@ TEST(JobJson, MalformedRequestsAreRefusedNamingTheKey) {
         {R"({"kind": "render", "plane": {"enabled": 1}})", "'plane.enabled': expected true or false"},
         {R"([1, 2])", "expected a JSON object"},
         {R"({"kind": "render", )", "not valid JSON"},
+        {R"({"kind": "sample", "surface_tolerance": 1e1000})", "not valid JSON"}, // a number beyond double
     };
     for (const Case& c : cases) {
         auto request = requestFromJson(c.json);

@@ -1,6 +1,8 @@
 // `sdfwb --batch audit`: the field audit (verdict, every finding, figures), or one plane's readouts.
 #include "Common.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -36,6 +38,41 @@ void printPlane(const jobs::AuditJobReport& report) {
     printFlags(r.flags);
 }
 
+std::string valuesText(const std::vector<shaders::ParameterValue>& values) {
+    std::string text;
+    for (const shaders::ParameterValue& v : values) text += (text.empty() ? "" : " ") + shaders::formatParameterValue(v);
+    return text;
+}
+
+// One line per instance with a bar of its Lipschitz estimate ('|' marks L = 1: bars past it are
+// not conservative): where along the family the field stops being safe to trace, at a glance.
+void printFamily(const jobs::AuditJobReport& report) {
+    std::printf("%s: %zu instances\n", report.sdf.c_str(), report.family.size());
+    float largest = 2.0f;
+    std::size_t width = 10;
+    for (const jobs::AuditInstance& i : report.family) {
+        largest = std::max(largest, std::isfinite(i.lipschitz) ? i.lipschitz : 0.0f);
+        width = std::max(width, valuesText(i.parameters).size());
+    }
+    constexpr int kBar = 32;
+    const int one = int(std::lround(kBar / largest));
+    std::printf("  %-*s  %-16s %9s  %-*s  %7s  %s\n", int(width), "parameters", "verdict", "L", kBar + 1, "L (| = 1)", "seconds",
+                "flags");
+    double total = 0.0;
+    for (const jobs::AuditInstance& i : report.family) {
+        const int filled = std::isfinite(i.lipschitz) ? int(std::lround(std::min(i.lipschitz, largest) / largest * kBar)) : 0;
+        std::string bar(std::size_t(kBar + 1), ' ');
+        for (int k = 0; k < filled; ++k) bar[std::size_t(k)] = '#';
+        bar[std::size_t(one)] = '|';
+        std::string flags;
+        for (const std::string& f : i.flags) flags += (flags.empty() ? "" : ",") + f;
+        std::printf("  %-*s  %-16s %9.4g  %s  %7.2f  %s\n", int(width), valuesText(i.parameters).c_str(), i.verdict.c_str(),
+                    i.lipschitz, bar.c_str(), i.seconds, flags.empty() ? "-" : flags.c_str());
+        total += i.seconds;
+    }
+    std::printf("  %.2f s in all\n", total);
+}
+
 void printVolume(const jobs::AuditJobReport& report) {
     const sampling::AuditReport& r = *report.volume;
     std::printf("%s: %s\n  %s\n\n", report.sdf.c_str(), r.verdict.c_str(), r.reason.c_str());
@@ -68,7 +105,15 @@ void printVolume(const jobs::AuditJobReport& report) {
 } // namespace
 
 int runAudit(const jobs::AuditRequest& request, const OutputOptions& output) {
-    return runWithGl(request, output, [](const jobs::AuditJobReport& r) { r.readout ? printPlane(r) : printVolume(r); });
+    return runWithGl(request, output, [](const jobs::AuditJobReport& r) {
+        if (!r.family.empty())
+            printFamily(r);
+        else if (r.readout)
+            printPlane(r);
+        else
+            printVolume(r);
+        if (r.family.empty() && !r.parameters.empty()) std::printf("  parameters           %s\n", valuesText(r.parameters).c_str());
+    });
 }
 
 } // namespace sdfwb::app

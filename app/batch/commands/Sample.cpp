@@ -5,10 +5,28 @@ namespace sdfwb::app {
 
 int runSample(const jobs::SampleRequest& request, const OutputOptions& output) {
     return runWithGl(request, output, [](const jobs::SampleReport& r) {
-        std::printf("wrote %s: %llu samples (%s, seed %llu, rows %llu..%llu of %llu), %llu bad rows, %.2f s (%.2f M samples/s)\n",
-                    r.output.c_str(), (unsigned long long)r.rows, r.pattern.c_str(), (unsigned long long)r.seed,
-                    (unsigned long long)r.firstIndex, (unsigned long long)(r.firstIndex + r.rows), (unsigned long long)r.count,
-                    (unsigned long long)r.badRows, r.seconds, r.samplesPerSecond / 1e6);
+        if (!r.instances.empty()) {
+            std::printf("wrote %zu instances of %s: %llu samples each (%s, seed %llu), index %s, %llu bad rows, %.2f s (%.2f M "
+                        "samples/s)\n",
+                        r.instances.size(), r.sdf.c_str(), (unsigned long long)r.count, r.pattern.c_str(),
+                        (unsigned long long)r.seed, r.index.c_str(), (unsigned long long)r.badRows, r.seconds,
+                        r.samplesPerSecond / 1e6);
+            for (std::size_t k = 0; k < r.instances.size(); ++k) {
+                if (k == 8 && r.instances.size() > 10) {
+                    std::printf("  ... (%zu more in the index)\n", r.instances.size() - 9);
+                    k = r.instances.size() - 1;
+                }
+                const jobs::SampleInstance& i = r.instances[k];
+                std::string values;
+                for (const auto& v : i.parameters) values += " " + shaders::formatParameterValue(v);
+                std::printf("  %s:%s\n", i.output.c_str(), values.c_str());
+            }
+        } else {
+            std::printf("wrote %s: %llu samples (%s, seed %llu, rows %llu..%llu of %llu), %llu bad rows, %.2f s (%.2f M samples/s)\n",
+                        r.output.c_str(), (unsigned long long)r.rows, r.pattern.c_str(), (unsigned long long)r.seed,
+                        (unsigned long long)r.firstIndex, (unsigned long long)(r.firstIndex + r.rows), (unsigned long long)r.count,
+                        (unsigned long long)r.badRows, r.seconds, r.samplesPerSecond / 1e6);
+        }
         if (r.badRows > 0)
             std::fprintf(
                 stderr, "sdfwb: note: %llu rows are NaN/Inf (rays that missed for surface/near, or a field that is not finite)\n",

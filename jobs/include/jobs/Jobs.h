@@ -48,11 +48,17 @@ template <class Report> struct JobResult {
 struct OpenedSdf {
     shaders::PreparedSdf prepared;
     std::string label; // the resolved path, or the name given with source text ("<source>" without one)
+    std::vector<shaders::ParameterSetting> parameters; // every declared parameter, with the input's values
+    std::vector<std::string> warnings;                 // values outside a declared @range
 };
+
+// The settings as values (every component of each), for reports and metadata.
+std::vector<shaders::ParameterValue> parameterValues(const std::vector<shaders::ParameterSetting>& settings);
 
 // The shared "open the SDF" step: resolves a dataset name or a path (Usage when neither exists),
 // takes `source` or reads the file, and prepares it with the entry point (Work, with diagnostics,
-// when it has errors). `what` starts the failure message ("render", "audit", ...).
+// when it has errors), then resolves the input's parameter values against the declarations
+// (Usage naming the parameter). `what` starts the failure message ("render", "audit", ...).
 JobResult<OpenedSdf> openSdf(const SdfInput& input, const std::string& what);
 
 std::optional<JobError> validate(const RenderRequest& request);

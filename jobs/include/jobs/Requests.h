@@ -7,6 +7,7 @@
 #include <renderer/Camera.h>
 #include <renderer/RenderSettings.h>
 #include <sampling/FieldAudit.h>
+#include <shaders/Parameters.h>
 
 #include <cstdint>
 #include <optional>
@@ -23,7 +24,18 @@ struct SdfInput {
     std::string sdf;    // dataset name or path
     std::string entry;  // the SDF's function; empty: metadata `entry:`, sdf, or a conventional name
     std::string source; // GLSL text to use instead of reading `sdf`
+    // Values for the SDF's declared parameters (--param NAME=VALUE); the others keep their defaults.
+    std::vector<shaders::ParameterValue> params;
     bool operator==(const SdfInput&) const = default;
+};
+
+// A shape family: the instances of `--sweep NAME=FROM:TO:COUNT` (a grid when repeated) or of
+// `--randomize COUNT` (uniform within the declared ranges, drawn from the request's seed).
+struct FamilySpec {
+    std::vector<shaders::ParameterSweep> sweeps;
+    std::uint32_t randomize = 0;
+    bool empty() const { return sweeps.empty() && randomize == 0; }
+    bool operator==(const FamilySpec&) const = default;
 };
 
 // Everything one picture depends on: the viewport's state.
@@ -51,6 +63,9 @@ struct AnimateRequest {
     float seconds = 4.0f;
     int framesPerSecond = 30;
     bool turntable = false; // orbit the camera once around the Y axis over the clip
+    // Parameter keyframes: the clip moves linearly from the frame's values (frame.sdf.params and
+    // the defaults) at its first frame to these at its last (ints round, bools switch halfway).
+    std::vector<shaders::ParameterValue> paramsEnd;
     bool operator==(const AnimateRequest&) const = default;
 };
 
@@ -67,6 +82,9 @@ struct SampleRequest {
     std::uint32_t chunkSize = 1u << 18;
     float gradientStep = 1e-3f;
     float surfaceTolerance = 1e-5f; // |f| at which surface/near/metropolis rays stop
+    // One output per instance (OUTPUT's stem + _00000, _00001, ...) and an index STEM_index.json;
+    // every instance uses `seed`, so instance k equals a plain run with its --param values.
+    FamilySpec family;
     bool operator==(const SampleRequest&) const = default;
 };
 
@@ -85,6 +103,7 @@ struct AuditRequest {
     float probeDistance = 3.0f;     // truncation: probe outward from the surface this far
     std::optional<PlaneSpec> plane; // set: plane readouts instead of the volume audit
     int resolution = 256;           // grid side on the plane
+    FamilySpec family;              // set: the volume audit of every instance (no plane)
     bool operator==(const AuditRequest&) const = default;
 };
 
@@ -146,6 +165,16 @@ struct AnimateReport {
     bool operator==(const AnimateReport&) const = default;
 };
 
+// One instance of a sampled family.
+struct SampleInstance {
+    std::string output;
+    std::vector<shaders::ParameterValue> parameters; // every declared parameter's value
+    std::uint64_t rows = 0;
+    std::uint64_t badRows = 0;
+    double seconds = 0.0;
+    bool operator==(const SampleInstance&) const = default;
+};
+
 struct SampleReport {
     std::string output;
     std::string format;
@@ -160,6 +189,10 @@ struct SampleReport {
     double seconds = 0.0;
     double samplesPerSecond = 0.0;
     std::string glRenderer;
+    std::vector<shaders::ParameterValue> parameters; // every declared parameter's value (a single run)
+    std::vector<SampleInstance> instances;           // a family: one per output
+    std::string index;                               // a family: the index file (this report as JSON)
+    std::vector<std::string> warnings;               // values outside a declared @range
     bool operator==(const SampleReport&) const = default;
 };
 
@@ -171,14 +204,31 @@ struct MergeReport {
     bool operator==(const MergeReport&) const = default;
 };
 
-// The volume audit, or the plane readouts when the request named a plane.
+// One instance of an audited family: what the volume audit found at these values.
+struct AuditInstance {
+    std::vector<shaders::ParameterValue> parameters; // every declared parameter's value
+    std::string verdict;
+    std::string reason;
+    std::vector<std::string> flags; // the flags' names, most severe first
+    float lipschitz = 0.0f;
+    float lipschitzMax = 0.0f;
+    float exactnessP99 = 0.0f;
+    double seconds = 0.0;
+    bool operator==(const AuditInstance&) const = default;
+};
+
+// The volume audit, the plane readouts when the request named a plane, or one line per instance
+// of a family.
 struct AuditJobReport {
     std::string sdf;
     std::string entry;
     float probeDistance = 0.0f;
+    std::vector<shaders::ParameterValue> parameters; // every declared parameter's value (not a family)
     std::optional<sampling::AuditReport> volume;
     std::optional<PlaneSpec> plane;
     std::optional<sampling::PlaneReadout> readout;
+    std::vector<AuditInstance> family;
+    std::vector<std::string> warnings; // values outside a declared @range
 };
 
 struct ListItem {

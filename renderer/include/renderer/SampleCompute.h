@@ -5,6 +5,7 @@
 
 #include <core/Expected.h>
 #include <shaders/Diagnostic.h>
+#include <shaders/Parameters.h>
 #include <shaders/SdfSource.h>
 #include <shaders/ShaderComposer.h>
 
@@ -25,6 +26,8 @@ struct SampleUniforms {
     // Points given by the caller (3 floats per sample, sampleCount of them, indexed globally), read
     // by the analysis/points.glsl sampler through sdfwb_inputPoint(); null for every other sampler.
     const float* inputPoints = nullptr;
+    // The SDF's parameter values (the others keep their initializers' values).
+    std::vector<shaders::ParameterSetting> sdfParameters;
 };
 
 class SampleCompute {

@@ -10,6 +10,7 @@
 #include <renderer/Camera.h>
 #include <renderer/RenderSettings.h>
 #include <shaders/Diagnostic.h>
+#include <shaders/Parameters.h>
 #include <shaders/SdfSource.h>
 
 #include <memory>
@@ -47,6 +48,10 @@ public:
     // position and contour spacing are uniforms (no recompile while dragging).
     std::vector<shaders::Diagnostic> setPlane(const CuttingPlane& plane);
     const CuttingPlane& plane() const { return m_plane; }
+    // The SDF's parameter values (uniforms: no recompile; a slider drag redraws at frame rate).
+    // Parameters not listed keep the values their initializers give.
+    void setParameters(std::vector<shaders::ParameterSetting> parameters);
+    const std::vector<shaders::ParameterSetting>& parameters() const { return m_parameters; }
     const TraceSettings& trace() const { return m_trace; }
     bool hasProgram() const;
 
@@ -70,6 +75,7 @@ private:
     ShadingSettings m_shading;
     TraceSettings m_trace;
     CuttingPlane m_plane;
+    std::vector<shaders::ParameterSetting> m_parameters;
 };
 
 } // namespace sdfwb::renderer

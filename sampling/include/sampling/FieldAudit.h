@@ -69,8 +69,10 @@ struct PlaneReadout {
     double seconds = 0.0;
 };
 
-// Grid of resolution^2 points over the plane dot(normal, p) = offset within the box.
-Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 normal, float offset, int resolution, float time);
+// Grid of resolution^2 points over the plane dot(normal, p) = offset within the box, with the
+// SDF's parameters at `parameters` (the others at their defaults).
+Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 normal, float offset, int resolution, float time,
+                                    const std::vector<shaders::ParameterSetting>& parameters = {});
 
 struct AuditOptions {
     std::uint64_t samples = 100000; // random points; as many near-surface points and surface points
@@ -79,6 +81,7 @@ struct AuditOptions {
     bool convergence = true;    // also run N/16 and N/4 to show how the estimates tighten
     float probeDistance = 3.0f; // truncation: probe outward from the surface this far (plateaus
                                 // beyond the unit cube are found too)
+    std::vector<shaders::ParameterSetting> parameters; // the SDF's parameter values (others: defaults)
 };
 
 struct QuotientScale {

@@ -34,7 +34,14 @@ struct SampleMetadata {
     std::uint64_t firstIndex = 0; // global index of the file's first row (non-zero for shards)
     std::uint64_t totalCount = 0; // N of the whole run the rows belong to
     std::string version;          // sdfwb version that wrote the file
+    // The SDF's parameter values as a JSON object ({"radius":0.3,"tint":[1,0.5,0]}); empty when
+    // it declares none. npz: a `parameters` string array; PLY: a comment; .bin: a JSON sidecar
+    // FILE.bin.json with all of this metadata (the paper's .bin has no room for it).
+    std::string parameters;
 };
+
+// The metadata as one JSON object (the .bin sidecar's content).
+std::string metadataJson(const SampleMetadata& metadata);
 
 // Largest row count a format can hold (.bin stores N as uint32).
 std::uint64_t maxRows(SampleFormat format);

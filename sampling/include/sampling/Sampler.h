@@ -6,9 +6,11 @@
 #include <core/Expected.h>
 #include <core/Progress.h>
 #include <sampling/SampleFile.h>
+#include <shaders/Parameters.h>
 
 #include <cstdint>
 #include <filesystem>
+#include <vector>
 
 namespace sdfwb::renderer {
 class SampleCompute;
@@ -27,6 +29,7 @@ struct SamplingJob {
     float parameters[16] = {};          // u_parameters for program-driven samplers (plane analysis)
     float surfaceTolerance = 1e-5f;     // |f| at which surface/near/metropolis rays stop (accuracy against time)
     const float* inputPoints = nullptr; // 3 * count floats for the analysis/points.glsl sampler (not owned)
+    std::vector<shaders::ParameterSetting> sdfParameters; // the SDF's parameter values (others: defaults)
 
     std::uint64_t firstIndex() const { return count * shardIndex / shardCount; }
     std::uint64_t rows() const { return count * (shardIndex + 1ull) / shardCount - firstIndex(); }

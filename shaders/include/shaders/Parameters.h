@@ -12,9 +12,11 @@
 // need one) are parameters. One parser, pure (no GL, no I/O); problems are diagnostics with the
 // file, line and column.
 
+#include <core/Expected.h>
 #include <shaders/Diagnostic.h>
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,6 +42,8 @@ struct Parameter {
     std::string label;         // @label "..."; empty: the name
     int line = 0;              // of the declaration, 1-based
     int column = 0;
+    std::size_t initializerOffset = 0; // the initializer's text in the file (for rewriting defaults)
+    std::size_t initializerLength = 0;
 };
 
 struct ParameterScan {
@@ -49,5 +53,70 @@ struct ParameterScan {
 
 // Reads the parameters declared in `text` (one file's text; `file` labels the diagnostics).
 ParameterScan parseParameters(const std::string& text, const std::string& file);
+
+// A value given for a parameter: `--param NAME=VALUE` (vectors as x,y,z; bools true/false), a
+// request's "params" object, Python's params= dict. One number fills every component.
+struct ParameterValue {
+    std::string name;
+    std::vector<float> value;
+    bool operator==(const ParameterValue&) const = default;
+};
+
+// Reads "NAME=VALUE[,VALUE...]" (VALUE: a finite number, true or false); errors quote the text.
+Expected<ParameterValue> parseParameterValue(const std::string& text);
+// "NAME=V" or "NAME=X,Y,Z" (shortest decimals), the form parseParameterValue reads.
+std::string formatParameterValue(const ParameterValue& value);
+
+// One declared parameter's value as the GPU gets it.
+struct ParameterSetting {
+    std::string name;
+    ParameterType type = ParameterType::Float;
+    std::array<float, 4> value{};
+    bool operator==(const ParameterSetting&) const = default;
+};
+
+struct ResolvedParameters {
+    std::vector<ParameterSetting> settings; // every declared parameter, in declaration order
+    std::vector<std::string> warnings;      // values outside a @range
+};
+
+// Every declared parameter with its given value or its default. Errors name the parameter: an
+// unknown name (listing the declared ones), a wrong number of components, an int that is not
+// whole, a bool other than 0 or 1. A value outside the @range is a warning, not an error.
+Expected<ResolvedParameters> resolveParameters(const std::vector<Parameter>& declared, const std::vector<ParameterValue>& given);
+
+// The values as a JSON object, {"radius":0.3,"count":4,"hollow":false,"tint":[1,0.5,0]}, for
+// sample files' metadata; "" when there are none.
+std::string parametersJson(const std::vector<ParameterSetting>& settings);
+
+// The GLSL literal of a value: "0.3", "4", "true", "vec3(1, 0.5, 0)".
+std::string glslLiteral(ParameterType type, const std::array<float, 4>& value);
+
+// `text` with the initializers of the given parameters replaced by their values ("Save values as
+// defaults"); `declared` must come from parseParameters(text, ...).
+std::string withDefaults(const std::string& text, const std::vector<Parameter>& declared, const std::vector<ParameterSetting>& values);
+
+// ---- families ----
+
+// `--sweep NAME=FROM:TO:COUNT`: COUNT evenly spaced values from FROM to TO (both included; vectors
+// as x,y,z at both ends).
+struct ParameterSweep {
+    std::string name;
+    std::vector<float> from, to;
+    int count = 0;
+    bool operator==(const ParameterSweep&) const = default;
+};
+Expected<ParameterSweep> parseParameterSweep(const std::string& text);
+std::string formatParameterSweep(const ParameterSweep& sweep);
+
+// The instances of a family: the grid of every sweep (the first varies slowest), or, with
+// randomize > 0, that many draws uniform within each ranged parameter's @range (log-uniform for
+// @log; bools fair coins; ints whole), deterministic in `seed`. `base` values hold throughout
+// (unless swept or drawn). Each instance lists every parameter it sets. Errors name the sweep or
+// parameter (unknown name, no @range to draw from, more than 100000 instances).
+Expected<std::vector<std::vector<ParameterValue>>> familyInstances(const std::vector<Parameter>& declared,
+                                                                    const std::vector<ParameterValue>& base,
+                                                                    const std::vector<ParameterSweep>& sweeps,
+                                                                    std::uint32_t randomize, std::uint64_t seed);
 
 } // namespace sdfwb::shaders

@@ -4,6 +4,7 @@
 
 #include <shaders/Diagnostic.h>
 #include <shaders/IncludeResolver.h>
+#include <shaders/Parameters.h>
 
 #include <filesystem>
 #include <string>
@@ -41,6 +42,8 @@ struct PreparedSdf {
     // Names the file (with its includes) #defines. The composer #undefs them after the SDF, so a
     // user's `#define normal ...` cannot reach the workbench's code composed after it.
     std::vector<std::string> macros;
+    // The root file's annotated uniforms (Parameters.h); their problems are in `diagnostics`.
+    std::vector<Parameter> parameters;
 
     bool ok() const { return !hasErrors(diagnostics); }
     // Needs a time value each frame: sdf(vec3, float) or the G3D scene time uniform.
