@@ -50,9 +50,29 @@ renderer::HeadlessContext& context() {
 
 // `sdf` is a dataset name, a path, or GLSL source (anything with a brace and a parenthesis, which
 // names and paths of SDF files do not have). `entry` names the SDF's function (empty: the default).
-jobs::SdfInput sdfInput(const std::string& sdf, const std::string& entry) {
-    if (sdf.find('{') != std::string::npos && sdf.find('(') != std::string::npos) return {"", entry, sdf};
-    return {sdf, entry, ""};
+// `params`: None or a dict of parameter values, {"radius": 0.3, "hollow": True, "offset": (1, 2, 0)}.
+jobs::SdfInput sdfInput(const std::string& sdf, const std::string& entry, const py::object& params = py::none()) {
+    jobs::SdfInput input;
+    if (sdf.find('{') != std::string::npos && sdf.find('(') != std::string::npos)
+        input = {"", entry, sdf, {}};
+    else
+        input = {sdf, entry, "", {}};
+    if (params.is_none()) return input;
+    if (!py::isinstance<py::dict>(params)) throw py::type_error("params: expected a dict of parameter values, or None");
+    for (const auto& [key, item] : params.cast<py::dict>()) {
+        shaders::ParameterValue value{py::str(key).cast<std::string>(), {}};
+        if (py::isinstance<py::bool_>(item)) {
+            value.value.push_back(item.cast<bool>() ? 1.0f : 0.0f);
+        } else if (py::isinstance<py::float_>(item) || py::isinstance<py::int_>(item)) {
+            value.value.push_back(item.cast<float>());
+        } else if (py::isinstance<py::sequence>(item) && !py::isinstance<py::str>(item)) {
+            for (const auto& x : item.cast<py::sequence>()) value.value.push_back(x.cast<float>());
+        } else {
+            throw py::type_error("params['" + value.name + "']: expected a number, a bool or a sequence of numbers");
+        }
+        input.params.push_back(std::move(value));
+    }
+    return input;
 }
 
 [[noreturn]] void raise(const jobs::JobError& error) {
@@ -63,10 +83,30 @@ jobs::SdfInput sdfInput(const std::string& sdf, const std::string& entry) {
     throw std::runtime_error(message);
 }
 
-shaders::PreparedSdf prepare(const jobs::SdfInput& input) {
+jobs::OpenedSdf prepare(const jobs::SdfInput& input) {
     auto opened = jobs::openSdf(input, "sdfwb");
     if (!opened) raise(opened.error);
-    return opened.report->prepared;
+    return *opened.report;
+}
+
+// Parameter values as a dict (bools as bools, scalars as floats, vectors as tuples).
+py::dict parameterDict(const std::vector<shaders::ParameterSetting>& settings) {
+    py::dict out;
+    for (const shaders::ParameterSetting& s : settings) {
+        const int n = shaders::componentCount(s.type);
+        if (s.type == shaders::ParameterType::Bool)
+            out[py::str(s.name)] = py::bool_(s.value[0] != 0.0f);
+        else if (s.type == shaders::ParameterType::Int)
+            out[py::str(s.name)] = py::int_(int(s.value[0]));
+        else if (n == 1)
+            out[py::str(s.name)] = s.value[0];
+        else {
+            py::list components;
+            for (int k = 0; k < n; ++k) components.append(s.value[std::size_t(k)]);
+            out[py::str(s.name)] = py::tuple(components);
+        }
+    }
+    return out;
 }
 
 // The report's JSON (jobs/JobJson.h) as Python objects: the same keys `--json` prints.
@@ -75,9 +115,10 @@ py::object fromJson(const std::string& json) { return py::module_::import("json"
 py::array_t<float> floatArray(std::vector<py::ssize_t> shape) { return py::array_t<float>(shape); }
 
 py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_t n, std::uint64_t seed, float time,
-                float gradientStep, std::uint32_t chunk, float surfaceTolerance, const std::string& entry) {
+                float gradientStep, std::uint32_t chunk, float surfaceTolerance, const std::string& entry,
+                const py::object& params) {
     jobs::SampleRequest request;
-    request.sdf = sdfInput(sdf, entry);
+    request.sdf = sdfInput(sdf, entry, params);
     request.pattern = pattern;
     request.count = n;
     request.seed = seed;
@@ -86,8 +127,10 @@ py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_
     request.chunkSize = chunk;
     request.surfaceTolerance = surfaceTolerance;
     if (auto error = jobs::validate(request)) raise(*error);
-    const sampling::SamplingJob job = jobs::samplingJob(request);
-    shaders::PreparedSdf prepared = prepare(request.sdf);
+    sampling::SamplingJob job = jobs::samplingJob(request);
+    const jobs::OpenedSdf opened = prepare(request.sdf);
+    const shaders::PreparedSdf& prepared = opened.prepared;
+    job.sdfParameters = opened.parameters;
     auto sampler = sampling::findSampler(pattern, sampling::samplerFolders());
     if (!sampler) throw py::value_error("pattern: " + sampler.error().message);
     auto positions = floatArray({py::ssize_t(n), 3});
@@ -120,6 +163,7 @@ py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_
     result["gradient"] = gradients;
     result["bad_rows"] = report->badRows;
     result["seconds"] = report->seconds;
+    result["parameters"] = parameterDict(opened.parameters);
     return result;
 }
 
@@ -150,6 +194,7 @@ py::dict load(const std::string& path) {
         metadata["first_index"] = m->firstIndex;
         metadata["total_count"] = m->totalCount;
         metadata["version"] = m->version;
+        if (!m->parameters.empty()) metadata["parameters"] = fromJson(m->parameters);
         result["metadata"] = metadata;
     }
     return result;
@@ -189,9 +234,9 @@ void save(const std::string& path, py::array_t<float, py::array::c_style | py::a
 }
 
 py::object audit(const std::string& sdf, std::uint64_t samples, std::uint64_t seed, float time, const std::string& entry,
-                 float probeDistance) {
+                 float probeDistance, const py::object& params) {
     jobs::AuditRequest request;
-    request.sdf = sdfInput(sdf, entry);
+    request.sdf = sdfInput(sdf, entry, params);
     request.samples = samples;
     request.seed = seed;
     request.time = time;
@@ -277,18 +322,20 @@ PYBIND11_MODULE(sdfwb, m) {
     m.attr("__version__") = SDFWB_VERSION;
     m.def("sample", &sample, py::arg("sdf"), py::arg("pattern"), py::arg("n"), py::arg("seed") = 0, py::arg("time") = 0.0f,
           py::arg("gradient_step") = 1e-3f, py::arg("chunk") = 1u << 18, py::arg("surface_tolerance") = 1e-5f,
-          py::arg("entry") = "",
+          py::arg("entry") = "", py::arg("params") = py::none(),
           "Samples `n` points of `sdf` (dataset name, path or GLSL source) with `pattern`. Returns a dict of float32 arrays\n"
           "position (n,3), distance (n,), gradient (n,3) (raw, not normalised) plus bad_rows and seconds. Same seed, same\n"
           "values as `sdfwb --batch sample`. surface_tolerance: |f| at which the rays of surface/near/metropolis stop\n"
           "(accuracy against time; see docs/benchmarks.md). entry: the SDF's function when it is not sdf (e.g. 'map';\n"
-          "vec2/vec4 returns give the distance in .x). The GIL is released while sampling.");
+          "vec2/vec4 returns give the distance in .x). params: values for the SDF's declared parameters, e.g.\n"
+          "{'radius': 0.3, 'offset': (0, 0.1, 0)} (sdfwb.params(sdf) lists them); the result's `parameters` holds every\n"
+          "parameter's value. The GIL is released while sampling.");
     m.def("load", &load, py::arg("path"), "Reads a .bin, .npz or .ply sample file into a dict of arrays (and its metadata).");
     m.def("save", &save, py::arg("path"), py::arg("position"), py::arg("distance"), py::arg("gradient"), py::arg("format") = "",
           py::arg("sdf") = "", py::arg("pattern") = "", py::arg("seed") = 0, py::arg("time") = 0.0f,
           "Writes arrays to a .bin, .npz or .ply sample file (atomically).");
     m.def("audit", &audit, py::arg("sdf"), py::arg("samples") = 100000, py::arg("seed") = 0, py::arg("time") = 0.0f,
-          py::arg("entry") = "", py::arg("probe_distance") = 3.0f,
+          py::arg("entry") = "", py::arg("probe_distance") = 3.0f, py::arg("params") = py::none(),
           "Field audit: verdict (the most severe finding: exact, conservative, non-conservative, truncated, discontinuous,\n"
           "nan), flags (every finding with its evidence and up to 16 example points) and figures.");
     m.def("run", &run, py::arg("request"),

@@ -9,10 +9,10 @@ notes: Solid right circular cone, apex up at y = 0.85, flat base of radius 0.8 a
   In the meridian half-plane (distance from the axis, height) the cone is a right triangle whose
   only real boundary is the slanted side and the base segment (the axis edge is interior). The
   exact distance to those two segments, signed by a point-in-triangle test, is the exact 3D distance.
-  Parameters: base radius (0.1-0.9), half height (0.1-0.9).
+  Parameters: base radius (0.1-0.8), half height (0.1-0.85).
 */
-uniform float baseRadius = 0.8;   // @range 0.1 0.9 @step 0.01 @label "Base radius"
-uniform float halfHeight = 0.85;  // @range 0.1 0.9 @step 0.01 @label "Half height"
+uniform float baseRadius = 0.8;   // @range 0.1 0.8 @step 0.01 @label "Base radius"
+uniform float halfHeight = 0.85;  // @range 0.1 0.85 @step 0.01 @label "Half height"
 
 float segmentDistance2(vec2 p, vec2 a, vec2 b) {
     vec2 ab = b - a;

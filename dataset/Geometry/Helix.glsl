@@ -14,9 +14,9 @@ notes: Tube of radius 0.13 around a three-turn helix of radius 0.68 about the Y 
   to float precision); windows whose height range alone is farther than the best distance so far
   are skipped, and the two ends are checked too, so the least value is the exact distance to the
   curve. The tube radius is far below the curvature radius (about 0.69) and half the coil spacing
-  (about 0.22), so the tube is exact inside too. Parameters: tube radius (0.03-0.2).
+  (about 0.22), so the tube is exact inside too. Parameters: tube radius (0.03-0.18).
 */
-uniform float tubeRadius = 0.13;  // @range 0.03 0.2 @step 0.01 @label "Tube radius"
+uniform float tubeRadius = 0.13;  // @range 0.03 0.18 @step 0.01 @label "Tube radius"
 
 float sdf(vec3 p) {
     const float coilRadius = 0.68;

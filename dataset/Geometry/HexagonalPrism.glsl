@@ -10,10 +10,10 @@ notes: Upright regular hexagonal prism, apothem 0.78 (a flat side faces +X), hal
   mirror of the shape never moves the nearest boundary point farther, so there the exact 2D
   distance is the distance to one half side. Extruding an exact 2D distance along Y (the
   rectangle rule on (2D distance, |y| - half height)) keeps it exact.
-  Parameters: apothem (0.1-0.8), half height (0.05-0.9).
+  Parameters: apothem (0.1-0.78), half height (0.05-0.62).
 */
-uniform float apothem = 0.78;     // @range 0.1 0.8 @step 0.01 @label "Apothem"
-uniform float halfHeight = 0.62;  // @range 0.05 0.9 @step 0.01 @label "Half height"
+uniform float apothem = 0.78;     // @range 0.1 0.78 @step 0.01 @label "Apothem"
+uniform float halfHeight = 0.62;  // @range 0.05 0.62 @step 0.01 @label "Half height"
 
 float sdf(vec3 p) {
     float halfSide = apothem * (0.45033 / 0.78);  // apothem * tan(30 deg): half the length of one side

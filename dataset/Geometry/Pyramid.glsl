@@ -10,10 +10,10 @@ notes: Square pyramid, base 1.44 x 1.44 at y = -0.68, apex at y = 0.68; one side
   the nearest boundary point lies on the +X face, the +Z face or the base. Outside, the field is
   the least exact distance to those three faces; inside, the distance to the boundary of a convex
   solid is the distance to the nearest face plane. Both are exact.
-  Parameters: half base (0.1-0.72), height (0.1-1.8).
+  Parameters: half base (0.1-0.72), height (0.2-1.36).
 */
 uniform float halfBase = 0.72;  // @range 0.1 0.72 @step 0.01 @label "Half base"
-uniform float height = 1.36;    // @range 0.1 1.8 @step 0.01 @label "Height"
+uniform float height = 1.36;    // @range 0.2 1.36 @step 0.01 @label "Height"
 
 float segmentDistance(vec3 p, vec3 a, vec3 b) {
     vec3 ab = b - a;

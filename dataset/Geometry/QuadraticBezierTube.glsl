@@ -11,9 +11,9 @@ notes: Tube of radius 0.14 around a quadratic Bezier arch (a parabola arc, so a 
   trigonometric form with three), polished by a Newton step and clamped to [0, 1]; the least of
   the candidate distances is the exact distance to the arc. Subtracting the radius is exact
   inside too because the radius is below the arc's smallest radius of curvature (about 0.36) and the
-  arc never comes back near itself. Parameters: radius (0.03-0.2).
+  arc never comes back near itself. Parameters: radius (0.03-0.18).
 */
-uniform float radius = 0.14;  // @range 0.03 0.2 @step 0.01 @label "Tube radius"
+uniform float radius = 0.14;  // @range 0.03 0.18 @step 0.01 @label "Tube radius"
 
 
 // Real cube root that accepts negative arguments.

@@ -243,3 +243,45 @@ def test_params_lists_annotated_uniforms_and_names_mistakes():
     assert sdfwb.run({"kind": "params", "source": source}) == report
     with pytest.raises(ValueError, match=r"<source>:1:\d+: error: parameter 'radius': @range 1 0 is empty"):
         sdfwb.params("uniform float radius = 0.5; // @range 1 0\nfloat sdf(vec3 p) { return length(p) - radius; }\n")
+
+
+PARAMS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tests", "params")
+
+
+def test_params_give_the_clis_bits_and_travel_in_the_metadata():
+    columns = os.path.join(PARAMS, "hg_polar_columns.glsl")
+    with tempfile.TemporaryDirectory() as folder:
+        path = os.path.join(folder, "cli.npz")
+        env = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
+        subprocess.run([BINARY, "--batch", "sample", "--sdf", columns, "--pattern", "near", "-n", "4000", "--seed", "3",
+                        "--param", "columns=9", "--param", "ringRadius=0.4", "--output", path, "--quiet"], check=True, env=env)
+        expected = np.load(path, allow_pickle=False)
+        result = sdfwb.sample(columns, "near", 4000, seed=3, params={"columns": 9, "ringRadius": 0.4})
+        for key in ("position", "distance", "gradient"):
+            assert np.array_equal(result[key], expected[key], equal_nan=True), key
+        assert result["parameters"] == {"columns": 9, "ringRadius": pytest.approx(0.4), "columnRadius": pytest.approx(0.1)}
+        assert json.loads(str(expected["parameters"])) == {"columns": 9, "ringRadius": 0.4, "columnRadius": 0.1}
+        assert sdfwb.load(path)["metadata"]["parameters"] == {"columns": 9, "ringRadius": 0.4, "columnRadius": 0.1}
+    default = sdfwb.sample(columns, "near", 4000, seed=3)
+    assert not np.array_equal(default["position"], result["position"])
+    # vectors as sequences, bools as bools; mistakes are ValueErrors naming the parameter
+    torus = os.path.join(PARAMS, "iq_torus_map.glsl")
+    moved = sdfwb.sample(torus, "surface", 2000, seed=1, params={"offset": (0.0, 0.15, 0.0), "capped": True})
+    assert moved["parameters"]["capped"] is True and moved["parameters"]["offset"] == pytest.approx((0.0, 0.15, 0.0))
+    finite = moved["distance"][np.isfinite(moved["distance"])]
+    assert finite.size > 1000 and np.all(moved["position"][np.isfinite(moved["distance"]), 0] <= 1e-3)  # capped at x <= 0
+    with pytest.raises(ValueError, match=r"parameter 'radius' is not declared \(declared: majorRadius"):
+        sdfwb.sample(torus, "rand", 10, params={"radius": 0.3})
+    with pytest.raises(ValueError, match=r"'offset' is a vec3: give 1 or 3 numbers, not 2"):
+        sdfwb.sample(torus, "rand", 10, params={"offset": [1, 2]})
+    with pytest.raises(TypeError, match=r"params\['majorRadius'\]"):
+        sdfwb.sample(torus, "rand", 10, params={"majorRadius": "big"})
+
+
+def test_audit_with_params_sees_the_instance():
+    blend = os.path.join(PARAMS, "st_blend_itime.glsl")
+    safe = sdfwb.audit(blend, samples=4000, params={"stretch": 0.8})
+    steep = sdfwb.audit(blend, samples=4000, params={"stretch": 2.0})
+    assert safe["verdict"] in ("exact", "conservative")
+    assert steep["verdict"] == "non-conservative" and steep["lipschitz"] == pytest.approx(2.0, abs=0.1)
+    assert steep["parameters"] == {"blend": pytest.approx(0.1), "stretch": 2.0}

@@ -29,21 +29,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-    int exitCode = -1;
-    std::string output;
-};
+using Result = sdfwb::testing::RunResult;
 
-Result run(const std::string& arguments) {
-    std::string command = "env -u DISPLAY " + std::string(SDFWB_BINARY) + " " + arguments + " 2>&1";
-    Result result;
-    FILE* pipe = popen(command.c_str(), "r");
-    std::array<char, 4096> buffer;
-    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) result.output.append(buffer.data(), n);
-    int status = pclose(pipe);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
-}
+Result run(const std::string& arguments) { return sdfwb::testing::runCommand(SDFWB_BINARY, arguments); }
 
 // A folder of this test process's own: ctest -j runs the cases of this binary side by side, and a
 // case that looks for partial files must not see another case's.
@@ -126,10 +114,7 @@ bool temporariesNextTo(const fs::path& target) {
     return false;
 }
 
-std::string readAll(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
+std::string readAll(const fs::path& path) { return sdfwb::testing::readBytes(path); }
 
 } // namespace
 

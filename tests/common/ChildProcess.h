@@ -2,10 +2,16 @@
 // Waiting on a child process's output instead of sleeping: read its pipe until a text appears or a
 // deadline passes (poll with a timeout, so a silent child cannot hang the test).
 
+#include <array>
 #include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include <poll.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace sdfwb::testing {
@@ -30,6 +36,29 @@ inline std::string readUntil(int fd, const std::string& text, std::chrono::secon
 inline void drain(int fd) {
     char buffer[512];
     while (::read(fd, buffer, sizeof buffer) > 0) {}
+}
+
+struct RunResult {
+    int exitCode = -1;
+    std::string output; // stdout and stderr together
+};
+
+// Runs `binary arguments` through the shell without a display and waits for it to end.
+inline RunResult runCommand(const std::string& binary, const std::string& arguments) {
+    const std::string command = "env -u DISPLAY " + binary + " " + arguments + " 2>&1";
+    RunResult result;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return result;
+    std::array<char, 4096> buffer;
+    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) result.output.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+inline std::string readBytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 } // namespace sdfwb::testing

@@ -20,7 +20,10 @@ namespace {
 // A frame whose every field differs from its default, with floats that have no short decimal.
 FrameRequest unusualFrame() {
     FrameRequest f;
-    f.sdf = {"Torus", "map", "float map(vec3 p) { return length(p) - 0.1; }\n"};
+    f.sdf = {"Torus",
+             "map",
+             "float map(vec3 p) { return length(p) - 0.1; }\n",
+             {{"radius", {0.1f}}, {"offset", {1.0f / 3.0f, -2.0f, 1e-7f}}}};
     f.width = 333;
     f.height = 77;
     f.time = 1.0f / 3.0f;
@@ -54,9 +57,9 @@ FrameRequest unusualFrame() {
 
 std::vector<Request> unusualRequests() {
     RenderRequest render{unusualFrame(), "/tmp/out.exr"};
-    AnimateRequest animate{unusualFrame(), "clip.mp4", 2.5f, 24, true};
+    AnimateRequest animate{unusualFrame(), "clip.mp4", 2.5f, 24, true, {{"radius", {0.7f}}, {"hollow", {1.0f}}}};
     SampleRequest sample;
-    sample.sdf = {"a/b c.glsl", "scene", ""};
+    sample.sdf = {"a/b c.glsl", "scene", "", {}};
     sample.pattern = "metropolis_curvature";
     sample.count = 12345678901ull;
     sample.output = "s.npz";
@@ -68,17 +71,19 @@ std::vector<Request> unusualRequests() {
     sample.chunkSize = 4096;
     sample.gradientStep = 1e-4f;
     sample.surfaceTolerance = 3e-6f;
+    sample.family.sweeps = {{"radius", {0.1f}, {0.9f}, 5}, {"offset", {0.0f, 0.0f, 0.0f}, {1.0f / 3.0f, 1.0f, 2.0f}, 3}};
     AuditRequest audit;
-    audit.sdf = {"Sphere", "", "float sdf(vec3 p) { return length(p) - 0.5; }"};
+    audit.sdf = {"Sphere", "", "float sdf(vec3 p) { return length(p) - 0.5; }", {}};
     audit.samples = 4096;
     audit.seed = 9;
     audit.time = 0.5f;
     audit.probeDistance = 1.5f;
     audit.plane = PlaneSpec{{0.0f, 1.0f, 0.0f}, 0.1f};
     audit.resolution = 64;
+    audit.family.randomize = 77;
     MergeRequest merge{"all.ply", "ply", {"p0.ply", "p1.ply", "with \"quotes\" and \\.ply"}};
     BenchRequest bench{"report", 3, true, true};
-    ParamsRequest params{{"family.glsl", "shape", ""}};
+    ParamsRequest params{{"family.glsl", "shape", "", {}}};
     return {render, animate, sample, audit, merge, ListRequest{}, bench, params};
 }
 
@@ -130,6 +135,12 @@ TEST(JobJson, MalformedRequestsAreRefusedNamingTheKey) {
         {R"([1, 2])", "expected a JSON object"},
         {R"({"kind": "render", )", "not valid JSON"},
         {R"({"kind": "sample", "surface_tolerance": 1e1000})", "not valid JSON"}, // a number beyond double
+        {R"({"kind": "render", "params": [1]})", "'params': expected an object of parameter values"},
+        {R"({"kind": "render", "params": {"radius": "big"}})", "'params.radius': expected a finite number"},
+        {R"({"kind": "render", "params": {"radius": [1, 2, 3, 4, 5]}})", "'params.radius': expected a finite number"},
+        {R"({"kind": "render", "params": {"2radius": 1}})", "'params.2radius': expected a parameter name"},
+        {R"({"kind": "sample", "sweep": ["radius=1:2"]})", "'sweep[0]': 'radius=1:2': expected NAME=FROM:TO:COUNT"},
+        {R"({"kind": "render", "camera": {"position": [1e39, 0, 0]}})", "'camera.position': expected [x, y, z] (finite)"},
     };
     for (const Case& c : cases) {
         auto request = requestFromJson(c.json);
@@ -151,9 +162,23 @@ TEST(JobJson, ReportsSurviveARoundTrip) {
     sample.badRows = 2;
     sample.time = 0.1f;
     sample.samplesPerSecond = 1.5e7;
+    sample.instances = {{"s_00000.bin", {{"radius", {0.1f}}, {"offset", {0.0f, 1.0f / 3.0f, 2.0f}}}, 5, 1, 0.25},
+                        {"s_00001.bin", {{"radius", {0.9f}}, {"offset", {1.0f, 2.0f, 3.0f}}}, 5, 1, 0.5}};
+    sample.index = "s_index.json";
+    sample.warnings = {"parameter 'radius' = 2 lies outside its @range 0.1 0.9"};
     auto s = reportFromJson<SampleReport>(toJson(sample));
     ASSERT_TRUE(s) << s.error().message;
     EXPECT_TRUE(*s == sample);
+    AuditJobReport family;
+    family.sdf = "blend.glsl";
+    family.entry = "map";
+    family.probeDistance = 3.0f;
+    family.family = {{{{"stretch", {0.5f}}}, "conservative", "L <= 1", {}, 1.0f, 1.01f, 1e-3f, 0.4},
+                     {{{"stretch", {2.0f}}}, "non-conservative", "L = 2", {"non-conservative"}, 2.0f, 2.1f, 0.3f, 0.2}};
+    auto f = reportFromJson<AuditJobReport>(toJson(family));
+    ASSERT_TRUE(f) << f.error().message;
+    EXPECT_EQ(f->family, family.family);
+    EXPECT_FALSE(f->volume);
     ListReport list{{{"Torus", "Geometry", "exact", "/d/Torus.glsl", "iq", "MIT", "", false}}, {"bad.glsl: no metadata"}, "/d"};
     auto l = reportFromJson<ListReport>(toJson(list));
     ASSERT_TRUE(l) << l.error().message;
@@ -255,12 +280,12 @@ TEST(Jobs, ValidationNamesTheArgumentBeforeAnyWork) {
 }
 
 TEST(Jobs, OpenSdfUsesTheGivenTextNotTheFile) {
-    SdfInput input{"Torus", "", "float sdf(vec3 p) { return length(p) - 0.25; }\n"};
+    SdfInput input{"Torus", "", "float sdf(vec3 p) { return length(p) - 0.25; }\n", {}};
     auto opened = openSdf(input, "test");
     ASSERT_TRUE(opened) << opened.error.message;
     EXPECT_NE(opened->label.find("Torus.glsl"), std::string::npos) << opened->label; // labelled by the file
     EXPECT_NE(opened->prepared.source.text.find("0.25"), std::string::npos);         // but the given text
-    opened = openSdf(SdfInput{"", "nothere", "float sdf(vec3 p) { return 1.0; }"}, "render");
+    opened = openSdf(SdfInput{"", "nothere", "float sdf(vec3 p) { return 1.0; }", {}}, "render");
     ASSERT_FALSE(opened);
     EXPECT_EQ(opened.error.failure, Failure::Work);
     EXPECT_FALSE(opened.error.diagnostics.empty());
@@ -287,7 +312,7 @@ std::string standardOutput(const std::string& arguments) {
 // back as the request the options describe, field by field.
 TEST(JobJson, CommandLineOptionsMakeTheSameRequestAsJson) {
     RenderRequest render;
-    render.frame.sdf = {"Torus", "map", ""};
+    render.frame.sdf = {"Torus", "map", "", {}};
     render.output = "/tmp/x.png";
     render.frame.width = 320;
     render.frame.height = 200;
@@ -343,7 +368,7 @@ TEST(JobJson, CommandLineOptionsMakeTheSameRequestAsJson) {
     EXPECT_TRUE(*parsed == Request(sample)) << toJson(*parsed, 2);
 
     AuditRequest audit;
-    audit.sdf = {"Sphere", "sdf", ""};
+    audit.sdf = {"Sphere", "sdf", "", {}};
     audit.samples = 1000;
     audit.seed = 3;
     audit.probeDistance = 2.0f;

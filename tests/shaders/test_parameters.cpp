@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <set>
+
 using namespace sdfwb::shaders;
 
 namespace {
@@ -137,4 +140,152 @@ TEST(Parameters, HostileTextEndsCleanly) {
     ParameterScan scan = parseParameters(many, "many.glsl");
     EXPECT_EQ(scan.parameters.size(), 5000u);
     EXPECT_EQ(scan.parameters.back().line, 5000);
+}
+
+// ---- values, families and rewriting defaults ----
+
+namespace {
+
+std::vector<Parameter> declared(const std::string& text) {
+    ParameterScan scan = parseParameters(text, "family.glsl");
+    EXPECT_TRUE(scan.diagnostics.empty()) << messages(scan);
+    return scan.parameters;
+}
+
+const std::string kFamily = "uniform float radius = 0.5; // @range 0.1 0.9\n"
+                            "uniform int count = 4; // @range 1 12\n"
+                            "uniform bool hollow = false;\n"
+                            "uniform vec3 offset = vec3(0.0, 0.1, 0.0); // @range -1 1\n"
+                            "uniform float scale = 1.0; // @range 0.01 100 @log\n"
+                            "float sdf(vec3 p) { return length(p - offset) * scale - radius; }\n";
+
+} // namespace
+
+TEST(ParameterValues, ParsedFromTheCommandLineFormAndRefusedWithTheText) {
+    auto radius = parseParameterValue("radius=0.3");
+    ASSERT_TRUE(radius) << radius.error().message;
+    EXPECT_EQ(radius->name, "radius");
+    EXPECT_EQ(radius->value, std::vector<float>{0.3f});
+    auto offset = parseParameterValue("offset=1, -2.5 ,3e-1");
+    ASSERT_TRUE(offset);
+    EXPECT_EQ(offset->value, (std::vector<float>{1.0f, -2.5f, 0.3f}));
+    auto hollow = parseParameterValue("hollow=true");
+    ASSERT_TRUE(hollow);
+    EXPECT_EQ(hollow->value, std::vector<float>{1.0f});
+    EXPECT_EQ(formatParameterValue(*offset), "offset=1,-2.5,0.3");
+    for (const char* bad : {"radius", "=1", "2x=1", "radius=", "radius=nan", "radius=1e39", "radius=1,2,3,4,5", "radius=a"}) {
+        auto value = parseParameterValue(bad);
+        ASSERT_FALSE(value) << bad;
+        EXPECT_NE(value.error().message.find(std::string("'") + bad + "'"), std::string::npos) << value.error().message;
+    }
+}
+
+TEST(ParameterValues, ResolvedAgainstTheDeclarationsWithClearErrors) {
+    const auto params = declared(kFamily);
+    auto defaults = resolveParameters(params, {});
+    ASSERT_TRUE(defaults);
+    ASSERT_EQ(defaults->settings.size(), 5u);
+    EXPECT_EQ(defaults->settings[3].value[1], 0.1f); // offset.y, the initializer
+    auto given = resolveParameters(params, {{"offset", {0.25f}}, {"count", {7.0f}}, {"radius", {2.0f}}});
+    ASSERT_TRUE(given) << given.error().message;
+    EXPECT_EQ(given->settings[3].value, (std::array<float, 4>{0.25f, 0.25f, 0.25f, 0.0f})); // one number fills a vector
+    EXPECT_EQ(given->settings[1].value[0], 7.0f);
+    ASSERT_EQ(given->warnings.size(), 1u); // radius 2 is outside 0.1..0.9: a warning, not an error
+    EXPECT_NE(given->warnings[0].find("radius"), std::string::npos);
+    struct Case {
+        ParameterValue value;
+        const char* expected;
+    };
+    const Case cases[] = {
+        {{"radius2", {1.0f}}, "'radius2' is not declared (declared: radius, count, hollow, offset, scale)"},
+        {{"offset", {1.0f, 2.0f}}, "'offset' is a vec3: give 1 or 3 numbers, not 2"},
+        {{"count", {2.5f}}, "'count' is an int: 2.5 is not a whole number"},
+        {{"hollow", {0.5f}}, "'hollow' is a bool"},
+        {{"radius", {1.0f, 2.0f}}, "'radius' is a float: give one number"},
+    };
+    for (const Case& c : cases) {
+        auto resolved = resolveParameters(params, {c.value});
+        ASSERT_FALSE(resolved) << c.expected;
+        EXPECT_NE(resolved.error().message.find(c.expected), std::string::npos) << resolved.error().message;
+    }
+}
+
+TEST(ParameterValues, SavedAsDefaultsTheFileReadsBackTheSameValues) {
+    const auto params = declared(kFamily);
+    auto values = resolveParameters(
+        params, {{"radius", {0.25f}}, {"offset", {1.0f, -0.5f, 0.125f}}, {"hollow", {1.0f}}, {"count", {9.0f}}});
+    ASSERT_TRUE(values);
+    const std::string saved = withDefaults(kFamily, params, values->settings);
+    EXPECT_NE(saved.find("uniform float radius = 0.25; // @range 0.1 0.9"), std::string::npos) << saved; // comment kept
+    EXPECT_NE(saved.find("uniform vec3 offset = vec3(1.0, -0.5, 0.125);"), std::string::npos) << saved;
+    EXPECT_NE(saved.find("uniform bool hollow = true;"), std::string::npos) << saved;
+    EXPECT_NE(saved.find("uniform int count = 9;"), std::string::npos) << saved;
+    const auto again = declared(saved);
+    ASSERT_EQ(again.size(), params.size());
+    for (std::size_t i = 0; i < again.size(); ++i) EXPECT_EQ(again[i].defaultValue, values->settings[i].value) << again[i].name;
+    EXPECT_EQ(again[0].minimum, params[0].minimum);
+    EXPECT_EQ(parametersJson(values->settings), R"({"radius":0.25,"count":9,"hollow":true,"offset":[1,-0.5,0.125],"scale":1})");
+    EXPECT_EQ(glslLiteral(ParameterType::Float, {3.0f}), "3.0"); // a float literal, not the int 3
+}
+
+TEST(ParameterFamilies, SweepsMakeAGridWithExactEndpoints) {
+    const auto params = declared(kFamily);
+    auto sweep = parseParameterSweep("radius=0.1:0.7:4");
+    ASSERT_TRUE(sweep) << sweep.error().message;
+    EXPECT_EQ(formatParameterSweep(*sweep), "radius=0.1:0.7:4");
+    auto offsets = parseParameterSweep("offset=0,0,0:1,0.5,0:2");
+    ASSERT_TRUE(offsets);
+    auto grid = familyInstances(params, {{"scale", {2.0f}}}, {*sweep, *offsets}, 0, 0);
+    ASSERT_TRUE(grid) << grid.error().message;
+    ASSERT_EQ(grid->size(), 8u);
+    // The first sweep varies slowest; ends are the given numbers exactly; the base value holds.
+    EXPECT_EQ((*grid)[0][0].name, "radius");
+    EXPECT_EQ((*grid)[0][0].value[0], 0.1f);
+    EXPECT_EQ((*grid)[1][0].value[0], 0.1f);
+    EXPECT_EQ((*grid)[7][0].value[0], 0.7f);
+    EXPECT_NEAR((*grid)[2][0].value[0], 0.3f, 1e-6f);
+    EXPECT_EQ((*grid)[1][1].name, "offset");
+    EXPECT_EQ((*grid)[1][1].value, (std::vector<float>{1.0f, 0.5f, 0.0f}));
+    EXPECT_EQ((*grid)[5][2].name, "scale");
+    EXPECT_EQ((*grid)[5][2].value[0], 2.0f);
+    for (const char* bad : {"radius=0.1:0.7", "radius=0.1:0.7:0", "radius=0.1:0.7:x", "offset=0,0:1:2", "radius=a:b:2"})
+        EXPECT_FALSE(parseParameterSweep(bad)) << bad;
+    auto unknown = familyInstances(params, {}, {ParameterSweep{"size", {0.0f}, {1.0f}, 2}}, 0, 0);
+    ASSERT_FALSE(unknown);
+    EXPECT_NE(unknown.error().message.find("'size' is not declared"), std::string::npos);
+    auto huge = familyInstances(
+        params, {}, {ParameterSweep{"radius", {0.1f}, {0.9f}, 1000}, ParameterSweep{"scale", {1.0f}, {2.0f}, 1000}}, 0, 0);
+    ASSERT_FALSE(huge);
+    EXPECT_NE(huge.error().message.find("100000"), std::string::npos);
+}
+
+TEST(ParameterFamilies, RandomDrawsAreDeterministicAndStayInTheirRanges) {
+    const auto params = declared(kFamily);
+    auto a = familyInstances(params, {}, {}, 2000, 42);
+    auto b = familyInstances(params, {}, {}, 2000, 42);
+    auto c = familyInstances(params, {}, {}, 2000, 43);
+    ASSERT_TRUE(a && b && c);
+    EXPECT_EQ(*a, *b);
+    EXPECT_NE(*a, *c);
+    int logBelowOne = 0, hollow = 0;
+    std::set<int> counts;
+    for (const auto& instance : *a) {
+        ASSERT_EQ(instance.size(), 5u); // every ranged parameter and the bool
+        EXPECT_GE(instance[0].value[0], 0.1f);
+        EXPECT_LE(instance[0].value[0], 0.9f);
+        EXPECT_EQ(instance[1].value[0], std::round(instance[1].value[0]));
+        counts.insert(int(instance[1].value[0]));
+        hollow += instance[2].value[0] == 1.0f;
+        for (float x : instance[3].value) EXPECT_TRUE(x >= -1.0f && x <= 1.0f);
+        logBelowOne += instance[4].value[0] < 1.0f;
+    }
+    EXPECT_EQ(counts, (std::set<int>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12})); // every whole value in 1..12, ends included
+    EXPECT_NEAR(hollow, 1000, 120);
+    EXPECT_NEAR(logBelowOne, 1000, 120); // log-uniform over 0.01..100: half the draws below 1 (uniform: 1 %)
+    auto fixed = familyInstances(params, {{"radius", {0.5f}}}, {}, 5, 1);
+    ASSERT_TRUE(fixed);
+    for (const auto& instance : *fixed) EXPECT_EQ(instance[0].value[0], 0.5f); // a given value is not drawn
+    auto none = familyInstances(declared("uniform float plain = 1.0;\n"), {}, {}, 3, 0);
+    ASSERT_FALSE(none);
+    EXPECT_NE(none.error().message.find("no parameter has a @range"), std::string::npos);
 }
