@@ -513,12 +513,14 @@ std::string glslLiteral(ParameterType type, const std::array<float, 4>& value) {
     }
 }
 
-std::string withDefaults(const std::string& text, const std::vector<Parameter>& declared, const std::vector<ParameterSetting>& values) {
+std::string withDefaults(const std::string& text, const std::vector<Parameter>& declared,
+                         const std::vector<ParameterSetting>& values) {
     std::vector<std::pair<const Parameter*, std::string>> edits;
     for (const ParameterSetting& s : values)
         if (const Parameter* p = findDeclared(declared, s.name); p && p->initializerOffset + p->initializerLength <= text.size())
             edits.emplace_back(p, glslLiteral(p->type, s.value));
-    std::sort(edits.begin(), edits.end(), [](const auto& a, const auto& b) { return a.first->initializerOffset > b.first->initializerOffset; });
+    std::sort(edits.begin(), edits.end(),
+              [](const auto& a, const auto& b) { return a.first->initializerOffset > b.first->initializerOffset; });
     std::string out = text;
     for (const auto& [p, literal] : edits) out.replace(p->initializerOffset, p->initializerLength, literal);
     return out;
@@ -552,9 +554,9 @@ std::string formatParameterSweep(const ParameterSweep& sweep) {
 }
 
 Expected<std::vector<std::vector<ParameterValue>>> familyInstances(const std::vector<Parameter>& declared,
-                                                                    const std::vector<ParameterValue>& base,
-                                                                    const std::vector<ParameterSweep>& sweeps,
-                                                                    std::uint32_t randomize, std::uint64_t seed) {
+                                                                   const std::vector<ParameterValue>& base,
+                                                                   const std::vector<ParameterSweep>& sweeps,
+                                                                   std::uint32_t randomize, std::uint64_t seed) {
     constexpr std::uint64_t kMaxInstances = 100000;
     auto withBase = [&](std::vector<ParameterValue> set) {
         for (const ParameterValue& b : base) {
@@ -583,7 +585,8 @@ Expected<std::vector<std::vector<ParameterValue>>> familyInstances(const std::ve
             if (fixed) continue;
             if (p.type == ParameterType::Bool || (p.minimum && p.maximum)) drawn.push_back(&p);
         }
-        if (drawn.empty()) return makeError("--randomize: no parameter has a @range to draw from (" + declaredNames(declared) + ")");
+        if (drawn.empty())
+            return makeError("--randomize: no parameter has a @range to draw from (" + declaredNames(declared) + ")");
         std::uint64_t state = seed;
         for (std::uint32_t i = 0; i < randomize; ++i) {
             std::vector<ParameterValue> set;
@@ -598,7 +601,8 @@ Expected<std::vector<std::vector<ParameterValue>>> familyInstances(const std::ve
                         const double lo = std::ceil(*p->minimum), hi = std::floor(*p->maximum);
                         x = float(std::min(hi, lo + std::floor(u * (hi - lo + 1.0))));
                     } else if (p->logarithmic) {
-                        x = float(std::exp(std::log(double(*p->minimum)) + u * (std::log(double(*p->maximum)) - std::log(double(*p->minimum)))));
+                        x = float(std::exp(std::log(double(*p->minimum)) +
+                                           u * (std::log(double(*p->maximum)) - std::log(double(*p->minimum)))));
                     } else {
                         x = float(double(*p->minimum) + u * (double(*p->maximum) - double(*p->minimum)));
                     }
@@ -614,7 +618,9 @@ Expected<std::vector<std::vector<ParameterValue>>> familyInstances(const std::ve
     std::uint64_t total = 1;
     for (const ParameterSweep& s : sweeps) {
         const Parameter* p = findDeclared(declared, s.name);
-        if (!p) return makeError("--sweep " + s.name + ": parameter '" + s.name + "' is not declared (" + declaredNames(declared) + ")");
+        if (!p)
+            return makeError("--sweep " + s.name + ": parameter '" + s.name + "' is not declared (" + declaredNames(declared) +
+                             ")");
         const int n = componentCount(p->type);
         if (s.from.size() != 1 && int(s.from.size()) != n)
             return makeError("--sweep " + s.name + ": '" + s.name + "' is a " + parameterTypeName(p->type) + ": give 1 or " +
@@ -634,8 +640,9 @@ Expected<std::vector<std::vector<ParameterValue>>> familyInstances(const std::ve
             const double t = s.count == 1 ? 0.0 : double(step) / double(s.count - 1);
             ParameterValue v{s.name, {}};
             for (std::size_t c = 0; c < s.from.size(); ++c)
-                v.value.push_back(step + 1 == std::uint64_t(s.count) && s.count > 1 ? s.to[c]
-                                                                                    : float(double(s.from[c]) + t * (double(s.to[c]) - double(s.from[c]))));
+                v.value.push_back(step + 1 == std::uint64_t(s.count) && s.count > 1
+                                      ? s.to[c]
+                                      : float(double(s.from[c]) + t * (double(s.to[c]) - double(s.from[c]))));
             if (findDeclared(declared, s.name)->type == ParameterType::Int)
                 for (float& x : v.value) x = std::round(x);
             set.insert(set.begin(), std::move(v));
