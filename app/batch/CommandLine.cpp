@@ -394,7 +394,8 @@ int runSampleCommand(const Arguments& arguments, Mode mode) {
                    "|f| at which the rays of surface, near and metropolis stop (accuracy against time: docs/benchmarks.md)")
         ->capture_default_str()
         ->check(numberCheck(true));
-    addFamilyOptions(app, command.family, family, "one output per instance (OUTPUT_00000.EXT, ...) and an index OUTPUT_index.json,");
+    addFamilyOptions(app, command.family, family,
+                     "one output per instance (OUTPUT_00000.EXT, ...) and an index OUTPUT_index.json,");
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch sample", arguments)) return *exit;
     command.sdf.params = parameterValues(sdf.params);

@@ -41,14 +41,16 @@ JobResult<AuditJobReport> run(const AuditRequest& request, const ProgressSink& p
     auto instances = shaders::familyInstances(sdf->prepared.parameters, request.sdf.params, request.family.sweeps,
                                               request.family.randomize, request.seed);
     if (!instances)
-        return JobError{Failure::Usage, (request.family.randomize ? "--randomize: " : "--sweep: ") + instances.error().message, {}};
+        return JobError{
+            Failure::Usage, (request.family.randomize ? "--randomize: " : "--sweep: ") + instances.error().message, {}};
     options.convergence = false; // one estimate per instance; the convergence study is the single audit's
     for (std::size_t k = 0; k < instances->size(); ++k) {
         auto resolved = shaders::resolveParameters(sdf->prepared.parameters, (*instances)[k]);
         if (!resolved) return JobError{Failure::Usage, "--param: " + sdf->label + ": " + resolved.error().message, {}};
         options.parameters = resolved->settings;
-        ProgressSink step{progress.report ? ProgressFunction([&](std::uint64_t, std::uint64_t) { progress(k, instances->size()); })
-                                          : ProgressFunction(),
+        ProgressSink step{progress.report
+                              ? ProgressFunction([&](std::uint64_t, std::uint64_t) { progress(k, instances->size()); })
+                              : ProgressFunction(),
                           progress.cancel};
         auto volume = sampling::auditField(sdf->prepared, options, step);
         if (progress.isCancelled()) return JobError{Failure::Cancelled, "audit: cancelled", {}};

@@ -142,7 +142,8 @@ JobResult<AnimateReport> run(const AnimateRequest& request, const ProgressSink& 
             if (request.turntable) renderer::orbit(camera, float(2.0 * 3.14159265358979 * i / frames), 0.0f);
             const float time = frame.time + float(i) / float(request.framesPerSecond);
             if (keyframed)
-                tracer.setParameters(interpolateParameters(sdf->parameters, end->settings, frames > 1 ? float(i) / float(frames - 1) : 0.0f));
+                tracer.setParameters(
+                    interpolateParameters(sdf->parameters, end->settings, frames > 1 ? float(i) / float(frames - 1) : 0.0f));
             renderer::FrameStats stats;
             renderer::Image image = offscreen.render(tracer, frame.width, frame.height, camera, time, &stats);
             report.renderSeconds += stats.cpuMilliseconds / 1000.0;

@@ -5,8 +5,8 @@
 #include <core/Log.h>
 #include <core/Paths.h>
 #include <core/TextFile.h>
-#include <jobs/JobJson.h>
 #include <dataset/Catalogue.h>
+#include <jobs/JobJson.h>
 #include <renderer/GlInfo.h>
 #include <renderer/SampleCompute.h>
 #include <sampling/SampleFile.h>
@@ -51,7 +51,9 @@ JobResult<SampleReport> run(const SampleRequest& request, const ProgressSink& pr
     if (!request.family.empty()) {
         auto family = shaders::familyInstances(sdf->prepared.parameters, request.sdf.params, request.family.sweeps,
                                                request.family.randomize, request.seed);
-        if (!family) return JobError{Failure::Usage, (request.family.randomize ? "--randomize: " : "--sweep: ") + family.error().message, {}};
+        if (!family)
+            return JobError{
+                Failure::Usage, (request.family.randomize ? "--randomize: " : "--sweep: ") + family.error().message, {}};
         instances = std::move(*family);
     }
     std::vector<std::vector<shaders::ParameterSetting>> settings;
@@ -87,8 +89,9 @@ JobResult<SampleReport> run(const SampleRequest& request, const ProgressSink& pr
         metadata.parameters = shaders::parametersJson(settings[k]);
         const std::string output = family ? instancePath(request.output, k, instances.size()) : request.output;
         const std::uint64_t before = job.rows() * k;
-        ProgressSink step{progress.report ? ProgressFunction([&](std::uint64_t done, std::uint64_t) { progress(before + done, total); })
-                                          : ProgressFunction(),
+        ProgressSink step{progress.report
+                              ? ProgressFunction([&](std::uint64_t done, std::uint64_t) { progress(before + done, total); })
+                              : ProgressFunction(),
                           progress.cancel};
         auto result = sampling::sampleToFile(compute, job, output, format, metadata, step);
         if (!result) {

@@ -58,9 +58,10 @@ std::string jsonString(const std::string& text) {
 std::string metadataJson(const SampleMetadata& m) {
     char time[32];
     std::snprintf(time, sizeof time, "%.9g", double(m.time));
-    return "{\"sdf\": " + jsonString(m.sdf) + ", \"pattern\": " + jsonString(m.pattern) + ", \"seed\": " + std::to_string(m.seed) +
-           ", \"time\": " + time + ", \"first_index\": " + std::to_string(m.firstIndex) +
-           ", \"total_count\": " + std::to_string(m.totalCount) + ", \"version\": " + jsonString(m.version) +
+    return "{\"sdf\": " + jsonString(m.sdf) + ", \"pattern\": " + jsonString(m.pattern) +
+           ", \"seed\": " + std::to_string(m.seed) + ", \"time\": " + time +
+           ", \"first_index\": " + std::to_string(m.firstIndex) + ", \"total_count\": " + std::to_string(m.totalCount) +
+           ", \"version\": " + jsonString(m.version) +
            ", \"parameters\": " + (m.parameters.empty() ? std::string("{}") : m.parameters) + "}";
 }
 

@@ -112,7 +112,8 @@ int runAudit(const jobs::AuditRequest& request, const OutputOptions& output) {
             printPlane(r);
         else
             printVolume(r);
-        if (r.family.empty() && !r.parameters.empty()) std::printf("  parameters           %s\n", valuesText(r.parameters).c_str());
+        if (r.family.empty() && !r.parameters.empty())
+            std::printf("  parameters           %s\n", valuesText(r.parameters).c_str());
     });
 }
 

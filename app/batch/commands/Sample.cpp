@@ -22,10 +22,11 @@ int runSample(const jobs::SampleRequest& request, const OutputOptions& output) {
                 std::printf("  %s:%s\n", i.output.c_str(), values.c_str());
             }
         } else {
-            std::printf("wrote %s: %llu samples (%s, seed %llu, rows %llu..%llu of %llu), %llu bad rows, %.2f s (%.2f M samples/s)\n",
-                        r.output.c_str(), (unsigned long long)r.rows, r.pattern.c_str(), (unsigned long long)r.seed,
-                        (unsigned long long)r.firstIndex, (unsigned long long)(r.firstIndex + r.rows), (unsigned long long)r.count,
-                        (unsigned long long)r.badRows, r.seconds, r.samplesPerSecond / 1e6);
+            std::printf(
+                "wrote %s: %llu samples (%s, seed %llu, rows %llu..%llu of %llu), %llu bad rows, %.2f s (%.2f M samples/s)\n",
+                r.output.c_str(), (unsigned long long)r.rows, r.pattern.c_str(), (unsigned long long)r.seed,
+                (unsigned long long)r.firstIndex, (unsigned long long)(r.firstIndex + r.rows), (unsigned long long)r.count,
+                (unsigned long long)r.badRows, r.seconds, r.samplesPerSecond / 1e6);
         }
         if (r.badRows > 0)
             std::fprintf(

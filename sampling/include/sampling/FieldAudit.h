@@ -78,9 +78,9 @@ struct AuditOptions {
     std::uint64_t samples = 100000; // random points; as many near-surface points and surface points
     std::uint64_t seed = 0;
     float time = 0.0f;
-    bool convergence = true;    // also run N/16 and N/4 to show how the estimates tighten
-    float probeDistance = 3.0f; // truncation: probe outward from the surface this far (plateaus
-                                // beyond the unit cube are found too)
+    bool convergence = true;                           // also run N/16 and N/4 to show how the estimates tighten
+    float probeDistance = 3.0f;                        // truncation: probe outward from the surface this far (plateaus
+                                                       // beyond the unit cube are found too)
     std::vector<shaders::ParameterSetting> parameters; // the SDF's parameter values (others: defaults)
 };
 

@@ -94,7 +94,8 @@ std::string glslLiteral(ParameterType type, const std::array<float, 4>& value);
 
 // `text` with the initializers of the given parameters replaced by their values ("Save values as
 // defaults"); `declared` must come from parseParameters(text, ...).
-std::string withDefaults(const std::string& text, const std::vector<Parameter>& declared, const std::vector<ParameterSetting>& values);
+std::string withDefaults(const std::string& text, const std::vector<Parameter>& declared,
+                         const std::vector<ParameterSetting>& values);
 
 // ---- families ----
 
@@ -115,8 +116,8 @@ std::string formatParameterSweep(const ParameterSweep& sweep);
 // (unless swept or drawn). Each instance lists every parameter it sets. Errors name the sweep or
 // parameter (unknown name, no @range to draw from, more than 100000 instances).
 Expected<std::vector<std::vector<ParameterValue>>> familyInstances(const std::vector<Parameter>& declared,
-                                                                    const std::vector<ParameterValue>& base,
-                                                                    const std::vector<ParameterSweep>& sweeps,
-                                                                    std::uint32_t randomize, std::uint64_t seed);
+                                                                   const std::vector<ParameterValue>& base,
+                                                                   const std::vector<ParameterSweep>& sweeps,
+                                                                   std::uint32_t randomize, std::uint64_t seed);
 
 } // namespace sdfwb::shaders
