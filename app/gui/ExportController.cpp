@@ -103,6 +103,7 @@ jobs::AnimateRequest ExportController::videoRequest(const widgets::ExportSetting
     request.seconds = float(s.seconds);
     request.framesPerSecond = s.framesPerSecond;
     request.turntable = s.turntable;
+    if (m_clipEnd) request.paramsEnd = m_clipEnd();
     return request;
 }
 

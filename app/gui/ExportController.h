@@ -27,6 +27,8 @@ public:
                      QObject* parent = nullptr);
 
     void setExecutable(const QString& path);
+    // Where the clip's last-frame parameter values come from (empty: no keyframe).
+    void setClipEnd(std::function<std::vector<shaders::ParameterValue>()> clipEnd) { m_clipEnd = std::move(clipEnd); }
 
     void showScreenshotDialog();
     void showVideoDialog();
@@ -48,6 +50,7 @@ private:
 
     QWidget* m_window;
     widgets::ViewportWidget* m_viewport;
+    std::function<std::vector<shaders::ParameterValue>()> m_clipEnd;
     std::function<jobs::SdfInput()> m_currentSdf;
     BatchProcess* m_process;
     widgets::ExportDialog* m_screenshotDialog = nullptr;

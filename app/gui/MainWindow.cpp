@@ -14,6 +14,7 @@
 #include <widgets/CameraPanel.h>
 #include <widgets/DatasetBrowser.h>
 #include <widgets/GlslEditor.h>
+#include <widgets/ParametersPanel.h>
 #include <widgets/PlanePanel.h>
 #include <widgets/ProblemsPanel.h>
 
@@ -79,6 +80,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_planePanel = new widgets::PlanePanel;
     m_problems = new widgets::ProblemsPanel;
     m_browser = new widgets::DatasetBrowser;
+    m_parametersPanel = new widgets::ParametersPanel;
     m_viewportDock = addDock(tr("Viewport"), "ViewportDock", m_viewport, Qt::RightDockWidgetArea);
     m_editorDock = addDock(tr("Editor"), "EditorDock", m_editor, Qt::LeftDockWidgetArea);
     m_cameraDock = addDock(tr("Camera"), "CameraDock", m_cameraPanel, Qt::LeftDockWidgetArea);
@@ -86,6 +88,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_planeDock = addDock(tr("Cutting plane"), "PlaneDock", m_planePanel, Qt::LeftDockWidgetArea);
     m_problemsDock = addDock(tr("Problems"), "ProblemsDock", m_problems, Qt::LeftDockWidgetArea);
     m_browserDock = addDock(tr("Dataset"), "DatasetDock", m_browser, Qt::LeftDockWidgetArea);
+    m_parametersDock = addDock(tr("Parameters"), "ParametersDock", m_parametersPanel, Qt::LeftDockWidgetArea);
     {
         QList<widgets::DatasetItem> items;
         dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
@@ -103,6 +106,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     tabifyDockWidget(m_editorDock, m_cameraDock);
     tabifyDockWidget(m_cameraDock, m_planeDock);
     tabifyDockWidget(m_planeDock, m_browserDock);
+    tabifyDockWidget(m_browserDock, m_parametersDock);
     m_editorDock->raise();
     resizeDocks({m_editorDock, m_viewportDock}, {560, 840}, Qt::Horizontal);
 
@@ -189,6 +193,37 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_document, &SdfDocument::signaturesChanged, this,
             [this](const QStringList& signatures) { m_editor->setCompletionFunctions(m_librarySignatures, signatures); });
     connect(m_document, &SdfDocument::sdfApplied, m_plane, &PlaneController::refresh);
+    // Parameters: the declarations of the SDF on screen become controls; their values are uniforms
+    // of the viewport (no recompile) and of every job started from the document.
+    connect(m_document, &SdfDocument::sdfApplied, this, [this] {
+        m_parametersPanel->setDeclarations(m_document->lastGoodSource().parameters);
+        if (!m_sessionParameterValues.isEmpty() && m_sessionParameterFile == m_document->path()) {
+            std::vector<shaders::ParameterValue> values;
+            for (const QString& text : m_sessionParameterValues)
+                if (auto value = shaders::parseParameterValue(text.toStdString())) values.push_back(std::move(*value));
+            m_parametersPanel->setValues(values);
+        }
+        m_sessionParameterValues.clear();
+        if (m_parametersPanel->values() != m_document->parameterValues())
+            m_document->setParameterValues(m_parametersPanel->values());
+    });
+    connect(m_parametersPanel, &widgets::ParametersPanel::valuesChanged, this, [this] {
+        m_document->setParameterValues(m_parametersPanel->values());
+        m_plane->scheduleRefresh();
+    });
+    connect(m_parametersPanel, &widgets::ParametersPanel::saveDefaultsRequested, this, [this] {
+        // Rewrites the initializers in the editor (one undo step); the file is saved as usual.
+        const std::string text = m_editor->text().toStdString();
+        const shaders::ParameterScan scan = shaders::parseParameters(text, "<editor>");
+        const std::string saved = shaders::withDefaults(text, scan.parameters, m_parametersPanel->values());
+        if (saved == text) return;
+        m_editor->beginUndoAction();
+        m_editor->selectAll();
+        m_editor->replaceSelectedText(QString::fromStdString(saved));
+        m_editor->endUndoAction();
+        statusBar()->showMessage(tr("Parameter values written into the initializers (Ctrl+Z undoes it)"), 5000);
+    });
+    m_exports->setClipEnd([this] { return m_parametersPanel->clipEnd(); });
     connect(m_cameraPanel, &widgets::CameraPanel::cameraEdited, m_viewport, &widgets::ViewportWidget::setCamera);
     connect(m_cameraPanel, &widgets::CameraPanel::resetRequested, m_viewport, &widgets::ViewportWidget::resetCamera);
     connect(m_viewport, &widgets::ViewportWidget::cameraChanged, m_cameraPanel, &widgets::CameraPanel::setCamera);
@@ -378,6 +413,7 @@ void MainWindow::createMenus() {
     view->addAction(m_planeDock->toggleViewAction());
     view->addAction(m_problemsDock->toggleViewAction());
     view->addAction(m_browserDock->toggleViewAction());
+    view->addAction(m_parametersDock->toggleViewAction());
     view->addSeparator();
     QAction* reset = view->addAction(tr("&Reset camera"), m_viewport, &widgets::ViewportWidget::resetCamera);
     reset->setShortcut(Qt::Key_Home);
@@ -428,6 +464,8 @@ void MainWindow::restoreSession() {
     setShadingMode(shading.mode);
     m_aoAction->setChecked(shading.ambientOcclusion);
     m_overlayAction->setChecked(settings.value("view/overlay", false).toBool());
+    m_sessionParameterFile = settings.value("parameters/file").toString();
+    m_sessionParameterValues = settings.value("parameters/values").toStringList();
 }
 
 void MainWindow::saveSession() {
@@ -445,6 +483,11 @@ void MainWindow::saveSession() {
     settings.setValue("shading/ao", m_viewport->shading().ambientOcclusion);
     settings.setValue("shading/matcap", QString::fromStdString(m_viewport->shading().matcap));
     settings.setValue("view/overlay", m_overlayAction->isChecked());
+    QStringList values;
+    for (const shaders::ParameterValue& value : m_document->input().params)
+        values << QString::fromStdString(shaders::formatParameterValue(value));
+    settings.setValue("parameters/file", m_document->path());
+    settings.setValue("parameters/values", values);
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

@@ -17,6 +17,7 @@ namespace sdfwb::widgets {
 class CameraPanel;
 class DatasetBrowser;
 class GlslEditor;
+class ParametersPanel;
 class PlanePanel;
 class ProblemsPanel;
 class TimeBar;
@@ -50,6 +51,7 @@ public:
     ExportController* exports() const { return m_exports; }
     PlaybackController* playback() const { return m_playback; }
     widgets::PlanePanel* planePanel() const { return m_planePanel; }
+    widgets::ParametersPanel* parametersPanel() const { return m_parametersPanel; }
     PlaneController* plane() const { return m_plane; }
     FileController* files() const { return m_files; }
     widgets::ProblemsPanel* problems() const { return m_problems; }
@@ -77,6 +79,11 @@ private:
     widgets::CameraPanel* m_cameraPanel = nullptr;
     widgets::TimeBar* m_timeBar = nullptr;
     widgets::PlanePanel* m_planePanel = nullptr;
+    widgets::ParametersPanel* m_parametersPanel = nullptr;
+    QDockWidget* m_parametersDock = nullptr;
+    // Parameter values of the last session, applied when its file's SDF first compiles.
+    QString m_sessionParameterFile;
+    QStringList m_sessionParameterValues;
     QDockWidget* m_planeDock = nullptr;
     PlaneController* m_plane = nullptr;
     FileController* m_files = nullptr;

@@ -25,9 +25,10 @@ public:
     PlaneController(widgets::PlanePanel* panel, widgets::ViewportWidget* viewport, std::function<jobs::SdfInput()> currentSdf,
                     QObject* parent = nullptr);
     void setExecutable(const QString& path);
-    // Extra arguments for commands that name the SDF (the entry point).
     // Recomputes the readouts now (also called when the SDF changes).
     void refresh();
+    // Recomputes them after the debounce delay (parameter drags: one child when the drag rests).
+    void scheduleRefresh() { m_debounce.start(); }
 
 signals:
     void readoutUpdated();

@@ -44,6 +44,10 @@ public:
     // (the editor's text until something has compiled).
     jobs::SdfInput input() const;
 
+    // The parameter values the viewport draws with (and jobs run with); uniforms, no recompile.
+    void setParameterValues(const std::vector<shaders::ParameterSetting>& values);
+    const std::vector<shaders::ParameterSetting>& parameterValues() const { return m_parameterValues; }
+
     // Schedules a check of `text` after the debounce delay; newer text supersedes older.
     void textEdited(const QString& text);
     // Checks `text` now (still off the UI thread).
@@ -85,6 +89,7 @@ private:
     std::uint64_t m_generation = 0;
     std::vector<shaders::Diagnostic> m_diagnostics;
     QStringList m_fileSignatures;
+    std::vector<shaders::ParameterSetting> m_parameterValues;
 };
 
 } // namespace sdfwb::app

@@ -51,6 +51,7 @@ struct SdfRenderer::Impl {
     Variant* current = nullptr;
     GlVertexArray vertexArray;
     std::uint64_t clock = 0;
+    std::uint64_t programsBuilt = 0;
     std::string empty;
 
     GlTexture matcap;
@@ -140,6 +141,7 @@ struct SdfRenderer::Impl {
                   "compiled " + prepared.source.map.fileName(0) + " (" + shaders::shadingModeName(tracerFeatures.shading) +
                       (tracerFeatures.ambientOcclusion ? ", AO" : "") + ") in " + std::to_string(int(milliseconds)) + " ms");
 
+        ++programsBuilt;
         evictIfFull();
         Variant& variant = cache[fragment->text];
         variant.program = std::move(program);
@@ -333,6 +335,8 @@ void SdfRenderer::releaseGl() {
     m_impl->matcap.reset();
     m_impl->noise.reset();
 }
+
+std::uint64_t SdfRenderer::programsBuilt() const { return m_impl->programsBuilt; }
 
 void SdfRenderer::setParameters(std::vector<shaders::ParameterSetting> parameters) { m_parameters = std::move(parameters); }
 

@@ -14,6 +14,7 @@
 #include <widgets/DatasetBrowser.h>
 #include <widgets/ExportDialog.h>
 #include <widgets/GlslEditor.h>
+#include <widgets/ParametersPanel.h>
 #include <widgets/PlanePanel.h>
 #include <widgets/ProblemsPanel.h>
 #include <widgets/SamplingDialog.h>
@@ -36,6 +37,7 @@
 #include <mutex>
 #include <renderer/GlInfo.h>
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFileInfo>
@@ -45,6 +47,7 @@
 #include <QLineEdit>
 #include <QMouseEvent>
 #include <QPushButton>
+#include <QSlider>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
 #include <QThread>
@@ -1008,6 +1011,92 @@ TEST(DatasetBrowser, ListsTheDatasetAndOpensAnEntry) {
     EXPECT_TRUE(window.document()->path().endsWith("Fractal/MengerSponge.glsl"));
     ASSERT_TRUE(waitFor([&] { return applied; }));
     EXPECT_FALSE(window.datasetBrowser()->activate("no such shape"));
+}
+
+// Parameters as live controls, on a Shadertoy-style map() with annotated uniforms: real key and
+// mouse events on the Parameters dock redraw the viewport with no recompile, the document's jobs
+// carry the values (and the clip-end keyframe), reset and "Save values as defaults" work.
+TEST(Parameters, DockControlsRedrawWithoutRecompilingAndReachJobsAndTheFile) {
+    app::MainWindow window;
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "../tests/params/iq_torus_map.glsl"));
+    widgets::ParametersPanel* panel = window.parametersPanel();
+    ASSERT_TRUE(waitFor([&] { return panel->values().size() == 4; })) << "the four declared parameters";
+    window.findChild<QDockWidget*>("ParametersDock")->raise();
+    auto* slider = panel->findChild<QSlider*>("slider_majorRadius");
+    auto* number = panel->findChild<QDoubleSpinBox*>("number_majorRadius");
+    auto* capped = panel->findChild<QCheckBox*>("param_capped");
+    ASSERT_TRUE(slider && number && capped);
+    ASSERT_EQ(panel->findChildren<QDoubleSpinBox*>(QRegularExpression("number_offset_\\d")).size(), 3)
+        << "a number per component";
+    ASSERT_TRUE(waitFor([&] { return !window.viewport()->isInteracting(); }, 5000));
+    const QImage before = frameOf(window);
+    const std::uint64_t programs = window.viewport()->programsBuilt();
+
+    // Keyboard on the slider: PageDown twice (real key events through the application).
+    slider->setFocus();
+    for (int i = 0; i < 2; ++i) {
+        QKeyEvent press(QEvent::KeyPress, Qt::Key_PageDown, Qt::NoModifier);
+        QApplication::sendEvent(slider, &press);
+    }
+    const float dragged = panel->values()[0].value[0];
+    EXPECT_LT(dragged, 0.6f);
+    EXPECT_NEAR(number->value(), dragged, 1e-3) << "the number follows the slider";
+    ASSERT_TRUE(waitFor([&] { return !window.viewport()->isInteracting(); }, 5000));
+    const QImage smaller = frameOf(window);
+    EXPECT_GT(meanDifference(before, smaller), 1.0) << "the viewport shows the new radius";
+    EXPECT_EQ(window.viewport()->programsBuilt(), programs) << "a parameter change must not recompile";
+    jobs::SdfInput input = window.document()->input();
+    ASSERT_EQ(input.params.size(), 4u);
+    EXPECT_EQ(input.params[0].name, "majorRadius");
+    EXPECT_EQ(input.params[0].value[0], dragged) << "jobs run with the dock's values";
+
+    // Drag on the number: 40 pixels right is 20 steps up.
+    QLineEdit* edit = number->findChild<QLineEdit*>();
+    ASSERT_TRUE(edit);
+    const QPointF start(edit->width() / 2.0, edit->height() / 2.0);
+    QMouseEvent press(QEvent::MouseButtonPress, start, edit->mapToGlobal(start), Qt::LeftButton, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(edit, &press);
+    const QPointF end = start + QPointF(40.0, 0.0);
+    QMouseEvent move(QEvent::MouseMove, end, edit->mapToGlobal(end), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(edit, &move);
+    QMouseEvent release(QEvent::MouseButtonRelease, end, edit->mapToGlobal(end), Qt::LeftButton, Qt::NoButton, Qt::NoModifier);
+    QApplication::sendEvent(edit, &release);
+    EXPECT_NEAR(panel->values()[0].value[0], dragged + 20.0f * float(number->singleStep()), 1e-4);
+
+    // The bool: a click on the checkbox cuts the torus in half.
+    capped->click();
+    EXPECT_EQ(panel->values()[3].value[0], 1.0f);
+    ASSERT_TRUE(waitFor([&] { return !window.viewport()->isInteracting(); }, 5000));
+    EXPECT_GT(meanDifference(smaller, frameOf(window)), 1.0);
+    EXPECT_EQ(window.viewport()->programsBuilt(), programs);
+    if (const char* folder = std::getenv("SDFWB_SCREENSHOT_DIR"))
+        window.grab().save(QDir(folder).filePath("parameters_dock.png"));
+
+    // The clip-end keyframe reaches the MP4 request.
+    panel->findChild<QPushButton*>("setClipEnd")->click();
+    widgets::ExportSettings settings;
+    settings.output = "/tmp/clip.mp4";
+    jobs::AnimateRequest request = window.exports()->videoRequest(settings);
+    ASSERT_EQ(request.paramsEnd.size(), 4u);
+    EXPECT_EQ(request.paramsEnd[3].value[0], 1.0f);
+    EXPECT_EQ(request.frame.sdf.params[0].value[0], panel->values()[0].value[0]);
+
+    // Reset one row, then write the others into the file's initializers.
+    panel->findChild<QPushButton*>("reset_capped")->click();
+    EXPECT_EQ(panel->values()[3].value[0], 0.0f);
+    const float saved = panel->values()[0].value[0];
+    panel->findChild<QPushButton*>("saveParameterDefaults")->click();
+    const std::string text = window.editor()->text().toStdString();
+    EXPECT_NE(text.find("uniform float majorRadius = " + shaders::glslLiteral(shaders::ParameterType::Float, {saved}) +
+                        "; // @range 0.2 0.8"),
+              std::string::npos)
+        << text;
+    EXPECT_TRUE(window.editor()->isModified());
+    // After the recompile the new default is the value: the row is at its default.
+    ASSERT_TRUE(waitFor([&] { return window.document()->lastGoodSource().parameters[0].defaultValue[0] == saved; }));
+    EXPECT_FALSE(panel->findChild<QPushButton*>("reset_majorRadius")->isEnabled());
+    EXPECT_EQ(panel->values()[0].value[0], saved);
 }
 
 int main(int argc, char** argv) {

@@ -87,6 +87,15 @@ void ViewportWidget::setPlane(const renderer::CuttingPlane& plane) {
     update();
 }
 
+void ViewportWidget::setParameters(const std::vector<shaders::ParameterSetting>& parameters) {
+    if (parameters == m_parameters) return;
+    m_parameters = parameters;
+    m_renderer->setParameters(parameters);
+    interacted(); // a slider drag: cheap frames now, the full frame when it stops
+}
+
+std::uint64_t ViewportWidget::programsBuilt() const { return m_renderer->programsBuilt(); }
+
 void ViewportWidget::setCamera(const renderer::Camera& camera) {
     m_camera = camera;
     update();

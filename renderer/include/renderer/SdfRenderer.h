@@ -13,6 +13,7 @@
 #include <shaders/Parameters.h>
 #include <shaders/SdfSource.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -54,6 +55,8 @@ public:
     const std::vector<shaders::ParameterSetting>& parameters() const { return m_parameters; }
     const TraceSettings& trace() const { return m_trace; }
     bool hasProgram() const;
+    // Programs compiled and linked so far (variant cache misses): what a change cost.
+    std::uint64_t programsBuilt() const;
 
     // The composed fragment source of the current variant (for tests and the log).
     const std::string& fragmentSource() const;

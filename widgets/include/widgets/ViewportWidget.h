@@ -13,6 +13,7 @@
 #include <renderer/Image.h>
 #include <renderer/RenderSettings.h>
 #include <shaders/Diagnostic.h>
+#include <shaders/Parameters.h>
 #include <shaders/SdfSource.h>
 
 #include <QElapsedTimer>
@@ -46,6 +47,9 @@ public:
     // Ctrl + left drag moves an enabled plane along its normal.
     void setPlane(const renderer::CuttingPlane& plane);
     const renderer::CuttingPlane& plane() const { return m_plane; }
+    // The SDF's parameter values: uniforms, no recompile; frames follow at the moving rate.
+    void setParameters(const std::vector<shaders::ParameterSetting>& parameters);
+    const std::vector<shaders::ParameterSetting>& parameters() const { return m_parameters; }
     const renderer::TraceSettings& trace() const { return m_trace; }
     const renderer::Camera& camera() const { return m_camera; }
     void setCamera(const renderer::Camera& camera);
@@ -75,6 +79,8 @@ public:
     void setOverlayText(const QString& text);
 
     QString contextDescription() const { return m_contextDescription; }
+    // Shader programs this viewport's renderer compiled so far (parameter changes add none).
+    std::uint64_t programsBuilt() const;
 
 signals:
     void frameRendered(double milliseconds, float scale);
@@ -111,6 +117,7 @@ private:
     renderer::ShadingSettings m_shading;
     renderer::TraceSettings m_trace;
     renderer::CuttingPlane m_plane;
+    std::vector<shaders::ParameterSetting> m_parameters;
     renderer::Camera m_camera;
     float m_time = 0.0f;
     QPoint m_lastMouse;
