@@ -128,6 +128,48 @@ template <class V> void fields(V&, ListRequest&) {}
 
 template <class V> void fields(V& v, ParamsRequest& r) { fields(v, r.sdf); }
 
+template <class V> void fields(V& v, MeshRequest& r) {
+    fields(v, r.sdf);
+    v("output", r.output);
+    v("resolution", r.resolution);
+    v("bounds_min", r.boundsMin);
+    v("bounds_max", r.boundsMax);
+    v("time", r.time);
+    v("lipschitz", r.lipschitz);
+    v("error_samples", r.errorSamples);
+    v("seed", r.seed);
+}
+
+template <class V> void fields(V& v, MeshReport& r) {
+    v("output", r.output);
+    v("sdf", r.sdf);
+    v("entry", r.entry);
+    v("resolution", r.resolution);
+    v("vertices", r.vertices);
+    v("triangles", r.triangles);
+    v("boundary_edges", r.boundaryEdges);
+    v("non_manifold_edges", r.nonManifoldEdges);
+    v("degenerate_triangles", r.degenerateTriangles);
+    v("watertight", r.watertight);
+    v("lipschitz_bound", r.lipschitzBound);
+    v("bound_source", r.boundSource);
+    v("blocks", r.blocks);
+    v("blocks_kept", r.blocksKept);
+    v("points_evaluated", r.pointsEvaluated);
+    v("clamped_vertices", r.clampedVertices);
+    v("mesh_seconds", r.meshSeconds);
+    v("mesh_to_surface_mean", r.meshToSurfaceMean);
+    v("mesh_to_surface_max", r.meshToSurfaceMax);
+    v("surface_to_mesh_mean", r.surfaceToMeshMean);
+    v("surface_to_mesh_max", r.surfaceToMeshMax);
+    v("hausdorff", r.hausdorff);
+    v("error_points", r.errorPoints);
+    v("error_seconds", r.errorSeconds);
+    v("parameters", r.parameters);
+    v("warnings", r.warnings);
+    v("seconds", r.seconds);
+}
+
 template <class V> void fields(V& v, ParamItem& p) {
     v("name", p.name);
     v("type", p.type);
@@ -600,7 +642,7 @@ Expected<Request> requestFromJson(const std::string& text) {
     if (!in->is_object()) return makeError("request: expected a JSON object with a \"kind\"");
     auto kind = in->find("kind");
     if (kind == in->end() || !kind->is_string())
-        return makeError("request: missing \"kind\" (render, animate, sample, audit, merge, list, bench, params)");
+        return makeError("request: missing \"kind\" (render, animate, sample, audit, merge, list, bench, params, mesh)");
     const std::string name = kind->get<std::string>();
     auto as = [&]<class T>(T*) -> Expected<Request> {
         auto value = readObject<T>(*in, true, (name + " request").c_str());
@@ -615,7 +657,8 @@ Expected<Request> requestFromJson(const std::string& text) {
     if (name == "list") return as((ListRequest*)nullptr);
     if (name == "bench") return as((BenchRequest*)nullptr);
     if (name == "params") return as((ParamsRequest*)nullptr);
-    return makeError("request: unknown kind '" + name + "' (render, animate, sample, audit, merge, list, bench, params)");
+    if (name == "mesh") return as((MeshRequest*)nullptr);
+    return makeError("request: unknown kind '" + name + "' (render, animate, sample, audit, merge, list, bench, params, mesh)");
 }
 
 namespace {
@@ -653,6 +696,7 @@ std::string toJson(const MergeReport& report, int indent) { return dump(encode(r
 std::string toJson(const ListReport& report, int indent) { return dump(encode(report), indent); }
 std::string toJson(const BenchReport& report, int indent) { return dump(encode(report), indent); }
 std::string toJson(const ParamsReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const MeshReport& report, int indent) { return dump(encode(report), indent); }
 std::string toJson(const AuditJobReport& report, int indent) { return dump(encodeAudit(report), indent); }
 
 template <class T> Expected<T> reportFromJson(const std::string& text) {
@@ -700,5 +744,6 @@ template Expected<MergeReport> reportFromJson<MergeReport>(const std::string&);
 template Expected<ListReport> reportFromJson<ListReport>(const std::string&);
 template Expected<BenchReport> reportFromJson<BenchReport>(const std::string&);
 template Expected<ParamsReport> reportFromJson<ParamsReport>(const std::string&);
+template Expected<MeshReport> reportFromJson<MeshReport>(const std::string&);
 
 } // namespace sdfwb::jobs

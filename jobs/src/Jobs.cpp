@@ -27,6 +27,7 @@ const char* kindName(const Request& request) {
         const char* operator()(const ListRequest&) const { return "list"; }
         const char* operator()(const BenchRequest&) const { return "bench"; }
         const char* operator()(const ParamsRequest&) const { return "params"; }
+        const char* operator()(const MeshRequest&) const { return "mesh"; }
     };
     return std::visit(Names{}, request);
 }

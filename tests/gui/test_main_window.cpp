@@ -123,13 +123,13 @@ TEST(MainWindow, TypedErrorShowsADiagnosticAndKeepsTheLastGoodShape) {
 
     int updates = diagnosticUpdates;
     QString text = window.editor()->text();
-    text.replace("return length(p) - 0.8;", "return length(p) - radius;");
+    text.replace("return length(p) - radius;", "return length(p) - radiu;");
     window.editor()->setText(text); // as if typed: goes through the debounce and the worker
     ASSERT_TRUE(waitFor([&] { return diagnosticUpdates > updates; }));
     EXPECT_GE(window.editor()->diagnosticCount(), 1);
     ASSERT_FALSE(window.document()->diagnostics().empty());
-    EXPECT_NE(window.document()->diagnostics().front().message.find("radius"), std::string::npos);
-    EXPECT_EQ(window.document()->diagnostics().front().line, 11);
+    EXPECT_NE(window.document()->diagnostics().front().message.find("radiu"), std::string::npos);
+    EXPECT_EQ(window.document()->diagnostics().front().line, 13);
 
     window.viewport()->update();
     long after = foreground(window.viewport()->grabFramebuffer(), kBackground);
@@ -611,7 +611,7 @@ TEST(Export, Mp4FrameEqualsAScreenshotOfTheSameUnsavedState) {
     bool applied = false;
     QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
     QString text = window.editor()->text();
-    text.replace("return length(p) - 0.8;",
+    text.replace("return length(p) - radius;",
                  "vec3 q = abs(p) - vec3(0.55); return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0);");
     window.editor()->setText(text);
     ASSERT_TRUE(waitFor([&] { return applied; }));
@@ -710,7 +710,7 @@ TEST(CuttingPlane, AnUnsavedEditChangesTheReadouts) {
         return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
     }();
     QString text = window.editor()->text();
-    text.replace("return length(p) - 0.8;", "return length(p) - 0.4;");
+    text.replace("return length(p) - radius;", "return length(p) - 0.4;");
     const int before = readouts;
     window.editor()->setText(text); // not saved
     ASSERT_TRUE(waitFor([&] { return readouts > before && window.planePanel()->readout().minimum > -0.5f; }, 30000))
@@ -1097,6 +1097,40 @@ TEST(Parameters, DockControlsRedrawWithoutRecompilingAndReachJobsAndTheFile) {
     ASSERT_TRUE(waitFor([&] { return window.document()->lastGoodSource().parameters[0].defaultValue[0] == saved; }));
     EXPECT_FALSE(panel->findChild<QPushButton*>("reset_majorRadius")->isEnabled());
     EXPECT_EQ(panel->values()[0].value[0], saved);
+}
+
+// The cutting-plane readouts follow a parameter (they run on the document's values), and the
+// values come back with the session for the same file.
+TEST(Parameters, PlaneReadoutsFollowAndTheSessionKeepsTheValues) {
+    {
+        app::MainWindow window;
+        window.resize(1000, 640);
+        window.show();
+        ASSERT_TRUE(openAndWait(window, "Geometry/Sphere.glsl"));
+        window.plane()->setExecutable(SDFWB_BINARY);
+        int readouts = 0;
+        QObject::connect(window.plane(), &app::PlaneController::readoutUpdated, [&] { ++readouts; });
+        window.planePanel()->findChild<QPushButton*>("axis_Z")->click();
+        ASSERT_TRUE(waitFor([&] { return readouts > 0; }, 30000));
+        EXPECT_NEAR(window.planePanel()->readout().minimum, -0.8f, 0.03f);
+        auto* radius = window.parametersPanel()->findChild<QDoubleSpinBox*>("number_radius");
+        ASSERT_TRUE(radius);
+        const int before = readouts;
+        radius->setValue(0.4);
+        ASSERT_TRUE(waitFor([&] { return readouts > before && window.planePanel()->readout().minimum > -0.5f; }, 30000))
+            << "the readouts still describe radius 0.8: minimum " << window.planePanel()->readout().minimum;
+        EXPECT_NEAR(window.planePanel()->readout().minimum, -0.4f, 0.03f);
+        EXPECT_FALSE(window.editor()->isModified()) << "a parameter is not an edit of the text";
+        window.close(); // saves the session
+    }
+    app::MainWindow again;
+    again.show();
+    ASSERT_TRUE(openAndWait(again, "Geometry/Sphere.glsl"));
+    ASSERT_TRUE(waitFor([&] { return !again.parametersPanel()->values().empty(); }));
+    EXPECT_FLOAT_EQ(again.parametersPanel()->values()[0].value[0], 0.4f);
+    EXPECT_FLOAT_EQ(again.document()->input().params[0].value[0], 0.4f);
+    again.parametersPanel()->resetAll();
+    again.close();
 }
 
 int main(int argc, char** argv) {

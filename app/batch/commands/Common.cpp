@@ -101,6 +101,8 @@ int runRequest(const jobs::Request& request, const OutputOptions& output) {
                 return runList(r, output);
             else if constexpr (std::is_same_v<T, jobs::ParamsRequest>)
                 return runParams(r, output);
+            else if constexpr (std::is_same_v<T, jobs::MeshRequest>)
+                return runMesh(r, output);
             else
                 return runBench(r, output);
         },

@@ -132,8 +132,24 @@ struct ParamsRequest {
     bool operator==(const ParamsRequest&) const = default;
 };
 
+// The zero set as a mesh (dual contouring), graded against the exact field.
+struct MeshRequest {
+    SdfInput sdf;
+    std::string output; // .ply, .obj, .stl or .glb
+    int resolution = 128;
+    glm::vec3 boundsMin{-1.0f};
+    glm::vec3 boundsMax{1.0f};
+    float time = 0.0f;
+    // The bound on |grad f| that lets empty blocks be skipped; absent: estimated by a quick audit
+    // (x1.25, at least 1); 0: skip nothing.
+    std::optional<float> lipschitz;
+    std::uint64_t errorSamples = 100000; // points each way for the error; 0: no error measured
+    std::uint64_t seed = 0;
+    bool operator==(const MeshRequest&) const = default;
+};
+
 using Request = std::variant<RenderRequest, AnimateRequest, SampleRequest, AuditRequest, MergeRequest, ListRequest, BenchRequest,
-                             ParamsRequest>;
+                             ParamsRequest, MeshRequest>;
 
 // "render", "animate", "sample", "audit", "merge", "list", "bench", "params": the CLI command of each kind.
 const char* kindName(const Request& request);
@@ -261,6 +277,28 @@ struct ParamsReport {
     std::vector<ParamItem> parameters;
     std::vector<std::string> warnings; // "file:line:column: warning: ..."
     bool operator==(const ParamsReport&) const = default;
+};
+
+struct MeshReport {
+    std::string output;
+    std::string sdf;
+    std::string entry;
+    int resolution = 0;
+    std::uint64_t vertices = 0, triangles = 0;
+    std::uint64_t boundaryEdges = 0, nonManifoldEdges = 0, degenerateTriangles = 0;
+    bool watertight = false;
+    float lipschitzBound = 0.0f;
+    std::string boundSource; // where the bound came from
+    std::uint64_t blocks = 0, blocksKept = 0, pointsEvaluated = 0, clampedVertices = 0;
+    double meshSeconds = 0.0;
+    // The error against the exact field (absent with error_samples 0).
+    std::optional<float> meshToSurfaceMean, meshToSurfaceMax, surfaceToMeshMean, surfaceToMeshMax, hausdorff;
+    std::uint64_t errorPoints = 0;
+    double errorSeconds = 0.0;
+    std::vector<shaders::ParameterValue> parameters;
+    std::vector<std::string> warnings;
+    double seconds = 0.0;
+    bool operator==(const MeshReport&) const = default;
 };
 
 struct BenchReport {

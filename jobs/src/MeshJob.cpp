@@ -1,0 +1,126 @@
+// mesh: the zero set by dual contouring, written through assimp and graded against the field.
+#include <jobs/Jobs.h>
+
+#include <core/Log.h>
+#include <meshing/Mesh.h>
+#include <sampling/FieldAudit.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+namespace sdfwb::jobs {
+
+std::optional<JobError> validate(const MeshRequest& request) {
+    if (!meshing::canWriteMesh(request.output))
+        return JobError{Failure::Usage,
+                        "--output: '" + request.output + "': unsupported mesh type (use .ply, .obj, .stl or .glb)", {}};
+    if (request.resolution < 2 || request.resolution > 2048)
+        return JobError{Failure::Usage, "--resolution: must be 2..2048, got " + std::to_string(request.resolution), {}};
+    for (int a = 0; a < 3; ++a)
+        if (!std::isfinite(request.boundsMin[a]) || !std::isfinite(request.boundsMax[a]) ||
+            !(request.boundsMax[a] > request.boundsMin[a]))
+            return JobError{Failure::Usage, "--bounds: expected finite MINX,MINY,MINZ,MAXX,MAXY,MAXZ with each maximum above its minimum", {}};
+    if (!std::isfinite(request.time)) return JobError{Failure::Usage, "--time: expected a finite number", {}};
+    if (request.lipschitz && (!std::isfinite(*request.lipschitz) || *request.lipschitz < 0.0f))
+        return JobError{Failure::Usage, "--lipschitz: expected a finite number >= 0 (0 skips nothing)", {}};
+    if (request.errorSamples > 10000000) return JobError{Failure::Usage, "--error-samples: at most 10000000", {}};
+    const std::filesystem::path folder =
+        std::filesystem::path(request.output).parent_path().empty() ? "." : std::filesystem::path(request.output).parent_path();
+    std::error_code ec;
+    if (!std::filesystem::is_directory(folder, ec))
+        return JobError{Failure::Usage, "--output: '" + request.output + "': folder '" + folder.string() + "' does not exist", {}};
+    ParamsRequest sdfOnly{request.sdf};
+    return validate(sdfOnly); // the SDF's name, entry and parameter values
+}
+
+JobResult<MeshReport> run(const MeshRequest& request, const ProgressSink& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    if (auto error = validate(request)) return *error;
+    auto sdf = openSdf(request.sdf, "mesh");
+    if (!sdf) return sdf.error;
+    MeshReport report;
+    report.sdf = sdf->label;
+    report.entry = sdf->prepared.signature.entry;
+    report.resolution = request.resolution;
+    report.parameters = parameterValues(sdf->parameters);
+    report.warnings = sdf->warnings;
+    meshing::MeshOptions options;
+    options.resolution = request.resolution;
+    options.boundsMin = request.boundsMin;
+    options.boundsMax = request.boundsMax;
+    options.time = request.time;
+    options.parameters = sdf->parameters;
+    if (request.lipschitz) {
+        options.lipschitz = *request.lipschitz;
+        report.boundSource = *request.lipschitz > 0.0f ? "given (--lipschitz)" : "none: every block evaluated (--lipschitz 0)";
+    } else {
+        // A quick audit: its largest difference quotient, with a margin (the estimate is a lower bound).
+        sampling::AuditOptions audit;
+        audit.samples = 20000;
+        audit.seed = request.seed;
+        audit.time = request.time;
+        audit.convergence = false;
+        audit.parameters = sdf->parameters;
+        auto found = sampling::auditField(sdf->prepared, audit, {});
+        if (!found) return JobError{Failure::Work, found.error().message, {}};
+        if (!std::isfinite(found->lipschitzMax) || found->verdict == "nan" || found->verdict == "discontinuous") {
+            options.lipschitz = 0.0f;
+            report.boundSource = "none: the audit found the field " + found->verdict + ", so every block is evaluated";
+        } else {
+            options.lipschitz = std::max(1.0f, 1.25f * found->lipschitzMax);
+            char text[160];
+            std::snprintf(text, sizeof text, "audit estimate: 1.25 x largest quotient %.3g, at least 1 (%.2f s)",
+                          double(found->lipschitzMax), found->seconds);
+            report.boundSource = text;
+        }
+    }
+    report.lipschitzBound = options.lipschitz;
+    auto extracted = meshing::extractMesh(sdf->prepared, options, progress);
+    if (progress.isCancelled()) return JobError{Failure::Cancelled, "mesh: cancelled; nothing written", {}};
+    if (!extracted) return JobError{Failure::Work, extracted.error().message, {}};
+    const meshing::Mesh& mesh = extracted->first;
+    const meshing::MeshStats& stats = extracted->second;
+    if (mesh.indices.empty())
+        return JobError{Failure::Work,
+                        "mesh: " + sdf->label + " has no surface inside the bounds at resolution " + std::to_string(request.resolution) +
+                            "; nothing written",
+                        {}};
+    report.vertices = mesh.vertices.size();
+    report.triangles = mesh.triangleCount();
+    const meshing::Topology topology = meshing::checkTopology(mesh);
+    report.boundaryEdges = topology.boundaryEdges;
+    report.nonManifoldEdges = topology.nonManifoldEdges;
+    report.degenerateTriangles = topology.degenerateTriangles;
+    report.watertight = topology.watertight();
+    report.blocks = stats.blocks;
+    report.blocksKept = stats.blocksKept;
+    report.pointsEvaluated = stats.pointsEvaluated;
+    report.clampedVertices = stats.clampedVertices;
+    report.meshSeconds = stats.seconds;
+    if (request.errorSamples > 0) {
+        meshing::ErrorOptions errorOptions;
+        errorOptions.meshPoints = errorOptions.surfacePoints = request.errorSamples;
+        errorOptions.seed = request.seed;
+        errorOptions.time = request.time;
+        errorOptions.parameters = sdf->parameters;
+        auto error = meshing::measureError(sdf->prepared, mesh, errorOptions);
+        if (!error) return JobError{Failure::Work, error.error().message, {}};
+        report.meshToSurfaceMean = error->meshToSurfaceMean;
+        report.meshToSurfaceMax = error->meshToSurfaceMax;
+        report.surfaceToMeshMean = error->surfaceToMeshMean;
+        report.surfaceToMeshMax = error->surfaceToMeshMax;
+        report.hausdorff = error->hausdorff;
+        report.errorPoints = error->meshPoints + error->surfacePoints;
+        report.errorSeconds = error->seconds;
+    }
+    if (auto written = meshing::writeMesh(request.output, mesh); !written)
+        return JobError{Failure::Work, written.error().message, {}};
+    report.output = request.output;
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report;
+}
+
+} // namespace sdfwb::jobs

@@ -1,0 +1,54 @@
+#include "FieldProbe.h"
+
+#include <sampling/Sampler.h>
+#include <sampling/SamplerLibrary.h>
+#include <shaders/ShaderComposer.h>
+
+namespace sdfwb::meshing::detail {
+
+Expected<void> FieldProbe::build(const shaders::PreparedSdf& sdf, const std::string& pattern, float time,
+                                 const std::vector<shaders::ParameterSetting>& parameters) {
+    m_time = time;
+    m_parameters = parameters;
+    auto piece = pattern.rfind("analysis/", 0) == 0 ? shaders::builtinPiece(pattern) : sampling::findSampler(pattern, {});
+    if (!piece) return piece.error();
+    for (const auto& d : m_compute.build(sdf, *piece))
+        if (d.severity == shaders::Severity::Error) return makeError("mesh: " + shaders::formatDiagnostic(d));
+    return {};
+}
+
+Expected<void> FieldProbe::evaluate(const std::vector<float>& points, std::vector<float>& distances,
+                                    std::vector<float>* gradients, float gradientStep) {
+    const std::uint64_t n = points.size() / 3;
+    distances.assign(n, 0.0f);
+    std::vector<float> positions(3 * n), scratch;
+    std::vector<float>& grad = gradients ? *gradients : scratch;
+    grad.assign(3 * n, 0.0f);
+    if (n == 0) return {};
+    sampling::SamplingJob job;
+    job.count = n;
+    job.time = m_time;
+    job.gradientStep = gradientStep;
+    job.inputPoints = points.data();
+    job.sdfParameters = m_parameters;
+    auto report = sampling::sampleInto(m_compute, job, positions.data(), distances.data(), grad.data(), {});
+    if (!report) return report.error();
+    return {};
+}
+
+Expected<void> FieldProbe::generate(std::uint64_t n, std::uint64_t seed, std::vector<float>& positions,
+                                    std::vector<float>& distances) {
+    positions.assign(3 * n, 0.0f);
+    distances.assign(n, 0.0f);
+    std::vector<float> gradients(3 * n);
+    sampling::SamplingJob job;
+    job.count = n;
+    job.seed = seed;
+    job.time = m_time;
+    job.sdfParameters = m_parameters;
+    auto report = sampling::sampleInto(m_compute, job, positions.data(), distances.data(), gradients.data(), {});
+    if (!report) return report.error();
+    return {};
+}
+
+} // namespace sdfwb::meshing::detail

@@ -1,0 +1,147 @@
+// Mesh files through assimp (a well-kept library Debian packages): binary PLY, OBJ, binary STL
+// and glTF binary out; anything assimp reads in.
+#include <meshing/Mesh.h>
+
+#include <assimp/Exporter.hpp>
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <system_error>
+#include <unistd.h>
+
+namespace sdfwb::meshing {
+namespace fs = std::filesystem;
+namespace {
+
+std::string lowerExtension(const fs::path& path) {
+    std::string extension = path.extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return extension;
+}
+
+// assimp's exporter id for an extension.
+const char* formatId(const fs::path& path) {
+    static const std::map<std::string, const char*> ids = {{".ply", "plyb"}, {".obj", "obj"}, {".stl", "stlb"}, {".glb", "glb2"}};
+    auto it = ids.find(lowerExtension(path));
+    return it == ids.end() ? nullptr : it->second;
+}
+
+
+// Binary PLY written here: assimp names the face list `vertex_index`, which meshio 7 refuses; the
+// PLY definition's name is `vertex_indices`, which meshio, Open3D and assimp all read.
+Expected<void> writePly(const fs::path& target, const fs::path& temporary, const Mesh& mesh) {
+    std::ofstream out(temporary, std::ios::binary);
+    out << "ply\nformat binary_little_endian 1.0\ncomment sdfwb dual contouring\nelement vertex "
+        << mesh.vertices.size() << "\nproperty float x\nproperty float y\nproperty float z\nelement face " << mesh.triangleCount()
+        << "\nproperty list uchar int vertex_indices\nend_header\n";
+    out.write(reinterpret_cast<const char*>(mesh.vertices.data()), std::streamsize(mesh.vertices.size() * sizeof(glm::vec3)));
+    for (std::size_t f = 0; f < mesh.triangleCount(); ++f) {
+        const unsigned char three = 3;
+        out.write(reinterpret_cast<const char*>(&three), 1);
+        out.write(reinterpret_cast<const char*>(&mesh.indices[3 * f]), 3 * sizeof(std::uint32_t));
+    }
+    out.flush();
+    if (!out) return makeError(target.string() + ": cannot write the mesh (disk full or not writable)");
+    return {};
+}
+
+// OBJ written here as well: assimp's OBJ carries normals indexed apart from the positions, which
+// meshio 7 refuses (it expects one normal per vertex).
+Expected<void> writeObj(const fs::path& target, const fs::path& temporary, const Mesh& mesh) {
+    std::ofstream out(temporary, std::ios::binary);
+    out << "# sdfwb dual contouring: " << mesh.vertices.size() << " vertices, " << mesh.triangleCount() << " triangles\n";
+    char line[96];
+    for (const glm::vec3& v : mesh.vertices) {
+        std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", double(v.x), double(v.y), double(v.z));
+        out << line;
+    }
+    for (std::size_t f = 0; f < mesh.triangleCount(); ++f)
+        out << "f " << mesh.indices[3 * f] + 1 << ' ' << mesh.indices[3 * f + 1] + 1 << ' ' << mesh.indices[3 * f + 2] + 1 << '\n';
+    out.flush();
+    if (!out) return makeError(target.string() + ": cannot write the mesh (disk full or not writable)");
+    return {};
+}
+
+} // namespace
+
+bool canWriteMesh(const fs::path& path) { return formatId(path) != nullptr; }
+
+Expected<void> writeMesh(const fs::path& path, const Mesh& mesh) {
+    const char* id = formatId(path);
+    if (!id) return makeError(path.string() + ": unsupported mesh type (use .ply, .obj, .stl or .glb)");
+    static_assert(sizeof(glm::vec3) == 12, "vertices are written as three floats");
+    // A scene of one mesh, one default material, one node: what every exporter expects. The scene
+    // owns what it points to (its destructor frees it).
+    auto scene = std::make_unique<aiScene>();
+    scene->mRootNode = new aiNode();
+    scene->mRootNode->mNumMeshes = 1;
+    scene->mRootNode->mMeshes = new unsigned int[1]{0};
+    scene->mNumMaterials = 1;
+    scene->mMaterials = new aiMaterial*[1]{new aiMaterial()};
+    scene->mNumMeshes = 1;
+    auto* out = new aiMesh();
+    scene->mMeshes = new aiMesh*[1]{out};
+    out->mMaterialIndex = 0;
+    out->mPrimitiveTypes = aiPrimitiveType_TRIANGLE;
+    out->mNumVertices = unsigned(mesh.vertices.size());
+    out->mVertices = new aiVector3D[mesh.vertices.size()];
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+        out->mVertices[v] = aiVector3D(mesh.vertices[v].x, mesh.vertices[v].y, mesh.vertices[v].z);
+    out->mNumFaces = unsigned(mesh.triangleCount());
+    out->mFaces = new aiFace[mesh.triangleCount()];
+    for (std::size_t f = 0; f < mesh.triangleCount(); ++f) {
+        out->mFaces[f].mNumIndices = 3;
+        out->mFaces[f].mIndices = new unsigned int[3]{mesh.indices[3 * f], mesh.indices[3 * f + 1], mesh.indices[3 * f + 2]};
+    }
+    // Written beside the target under a hidden name (keeping the extension), then renamed.
+    const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+    const fs::path temporary =
+        folder / ("." + path.stem().string() + ".partial-" + std::to_string(::getpid()) + path.extension().string());
+    if (std::string(id) == "plyb" || std::string(id) == "obj") {
+        if (auto ok = std::string(id) == "plyb" ? writePly(path, temporary, mesh) : writeObj(path, temporary, mesh); !ok) {
+            std::error_code ec;
+            fs::remove(temporary, ec);
+            return ok;
+        }
+    } else if (Assimp::Exporter exporter; exporter.Export(scene.get(), id, temporary.string()) != aiReturn_SUCCESS) {
+        std::error_code ec;
+        fs::remove(temporary, ec);
+        return makeError(path.string() + ": cannot write the mesh: " + exporter.GetErrorString());
+    }
+    std::error_code ec;
+    fs::rename(temporary, path, ec);
+    if (ec) {
+        fs::remove(temporary, ec);
+        return makeError(path.string() + ": cannot write the mesh: " + ec.message());
+    }
+    return {};
+}
+
+Expected<Mesh> readMesh(const fs::path& path) {
+    Assimp::Importer importer;
+    const aiScene* scene = importer.ReadFile(path.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
+    if (!scene) return makeError(path.string() + ": cannot read the mesh: " + importer.GetErrorString());
+    Mesh mesh;
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+        const aiMesh* in = scene->mMeshes[m];
+        const auto base = std::uint32_t(mesh.vertices.size());
+        for (unsigned v = 0; v < in->mNumVertices; ++v)
+            mesh.vertices.emplace_back(in->mVertices[v].x, in->mVertices[v].y, in->mVertices[v].z);
+        for (unsigned f = 0; f < in->mNumFaces; ++f) {
+            if (in->mFaces[f].mNumIndices != 3) continue; // points and lines
+            for (int k = 0; k < 3; ++k) mesh.indices.push_back(base + in->mFaces[f].mIndices[k]);
+        }
+    }
+    if (mesh.indices.empty()) return makeError(path.string() + ": the file holds no triangles");
+    return mesh;
+}
+
+} // namespace sdfwb::meshing
