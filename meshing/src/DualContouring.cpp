@@ -84,7 +84,7 @@ glm::dvec3 solveQef(const std::vector<glm::dvec3>& points, const std::vector<glm
 }
 
 struct Grid {
-    int n;       // cells per axis
+    int n; // cells per axis
     glm::dvec3 origin, step;
     glm::vec3 point(std::int64_t i, std::int64_t j, std::int64_t k) const {
         return glm::vec3(origin + glm::dvec3(double(i), double(j), double(k)) * step);
@@ -102,8 +102,7 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
     const auto start = std::chrono::steady_clock::now();
     if (options.resolution < 2 || options.resolution > 2048) return makeError("--resolution: must be 2..2048");
     for (int a = 0; a < 3; ++a)
-        if (!(options.boundsMax[a] > options.boundsMin[a]))
-            return makeError("--bounds: every maximum must exceed its minimum");
+        if (!(options.boundsMax[a] > options.boundsMin[a])) return makeError("--bounds: every maximum must exceed its minimum");
     Grid grid{options.resolution, glm::dvec3(options.boundsMin),
               (glm::dvec3(options.boundsMax) - glm::dvec3(options.boundsMin)) / double(options.resolution)};
     MeshStats stats;
@@ -214,8 +213,8 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
             for (std::size_t e = 0; e < edges.size(); ++e) {
                 const Edge& edge = edges[e];
                 const glm::dvec3 p0 = glm::dvec3(grid.point(edge.i, edge.j, edge.k));
-                const glm::dvec3 p1 = p0 + glm::dvec3(axisStep[edge.axis][0], axisStep[edge.axis][1], axisStep[edge.axis][2]) *
-                                               grid.step;
+                const glm::dvec3 p1 =
+                    p0 + glm::dvec3(axisStep[edge.axis][0], axisStep[edge.axis][1], axisStep[edge.axis][2]) * grid.step;
                 const glm::dvec3 p = p0 + 0.5 * (low[e] + high[e]) * (p1 - p0);
                 probes[3 * e] = float(p.x);
                 probes[3 * e + 1] = float(p.y);
@@ -278,7 +277,8 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
     std::unordered_map<std::uint64_t, std::uint32_t> vertexOf;
     vertexOf.reserve(cells.size());
     for (auto& [key, cell] : cells) {
-        const std::int64_t i = std::int64_t(key % std::uint64_t(grid.n)), j = std::int64_t(key / std::uint64_t(grid.n) % std::uint64_t(grid.n)),
+        const std::int64_t i = std::int64_t(key % std::uint64_t(grid.n)),
+                           j = std::int64_t(key / std::uint64_t(grid.n) % std::uint64_t(grid.n)),
                            k = std::int64_t(key / (std::uint64_t(grid.n) * std::uint64_t(grid.n)));
         const glm::dvec3 lo = glm::dvec3(grid.point(i, j, k)), hi = glm::dvec3(grid.point(i + 1, j + 1, k + 1));
         glm::dvec3 x = solveQef(cell.points, cell.normals);
@@ -288,6 +288,28 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
         mesh.vertices.push_back(glm::vec3(clamped));
     }
     stats.activeCells = cells.size();
+    // On curved surfaces the planes' minimiser lies off the surface by about h^2 times the
+    // curvature: two Newton steps along the gradient put each vertex on it (a vertex already on a
+    // sharp edge or corner has f = 0 and stays). Steps are kept within the vertex's cell.
+    for (int iteration = 0; iteration < 2; ++iteration) {
+        std::vector<float> positions, fieldValues, gradients;
+        positions.reserve(3 * mesh.vertices.size());
+        for (const glm::vec3& v : mesh.vertices) positions.insert(positions.end(), {v.x, v.y, v.z});
+        if (auto ok = probe.evaluate(positions, fieldValues, &gradients, normalStep); !ok) return ok.error();
+        stats.pointsEvaluated += fieldValues.size();
+        for (const auto& [key, vertex] : vertexOf) {
+            const float f = fieldValues[vertex];
+            const glm::vec3 g(gradients[3 * vertex], gradients[3 * vertex + 1], gradients[3 * vertex + 2]);
+            const float g2 = glm::dot(g, g);
+            if (!std::isfinite(f) || !(g2 > 1e-12f) || !std::isfinite(g2)) continue;
+            const std::int64_t i = std::int64_t(key % std::uint64_t(grid.n)),
+                               j = std::int64_t(key / std::uint64_t(grid.n) % std::uint64_t(grid.n)),
+                               k = std::int64_t(key / (std::uint64_t(grid.n) * std::uint64_t(grid.n)));
+            const glm::vec3 moved =
+                glm::clamp(mesh.vertices[vertex] - g * (f / g2), grid.point(i, j, k), grid.point(i + 1, j + 1, k + 1));
+            mesh.vertices[vertex] = moved;
+        }
+    }
 
     // 5. A quad per sign-changing edge, wound so that it faces outward (towards f > 0).
     for (const Edge& edge : edges) {
@@ -304,8 +326,10 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
                 break;
             }
             auto it = vertexOf.find(cellKey(c[0], c[1], c[2]));
-            if (it == vertexOf.end()) complete = false;
-            else quad[q] = it->second;
+            if (it == vertexOf.end())
+                complete = false;
+            else
+                quad[q] = it->second;
         }
         if (!complete) continue;
         // (u, v) counter-clockwise looking down +axis; the surface faces +axis when the edge starts inside.

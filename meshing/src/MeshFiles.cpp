@@ -8,6 +8,7 @@
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
@@ -16,6 +17,7 @@
 #include <memory>
 #include <system_error>
 #include <unistd.h>
+#include <vector>
 
 namespace sdfwb::meshing {
 namespace fs = std::filesystem;
@@ -34,13 +36,12 @@ const char* formatId(const fs::path& path) {
     return it == ids.end() ? nullptr : it->second;
 }
 
-
 // Binary PLY written here: assimp names the face list `vertex_index`, which meshio 7 refuses; the
 // PLY definition's name is `vertex_indices`, which meshio, Open3D and assimp all read.
 Expected<void> writePly(const fs::path& target, const fs::path& temporary, const Mesh& mesh) {
     std::ofstream out(temporary, std::ios::binary);
-    out << "ply\nformat binary_little_endian 1.0\ncomment sdfwb dual contouring\nelement vertex "
-        << mesh.vertices.size() << "\nproperty float x\nproperty float y\nproperty float z\nelement face " << mesh.triangleCount()
+    out << "ply\nformat binary_little_endian 1.0\ncomment sdfwb dual contouring\nelement vertex " << mesh.vertices.size()
+        << "\nproperty float x\nproperty float y\nproperty float z\nelement face " << mesh.triangleCount()
         << "\nproperty list uchar int vertex_indices\nend_header\n";
     out.write(reinterpret_cast<const char*>(mesh.vertices.data()), std::streamsize(mesh.vertices.size() * sizeof(glm::vec3)));
     for (std::size_t f = 0; f < mesh.triangleCount(); ++f) {
@@ -64,7 +65,8 @@ Expected<void> writeObj(const fs::path& target, const fs::path& temporary, const
         out << line;
     }
     for (std::size_t f = 0; f < mesh.triangleCount(); ++f)
-        out << "f " << mesh.indices[3 * f] + 1 << ' ' << mesh.indices[3 * f + 1] + 1 << ' ' << mesh.indices[3 * f + 2] + 1 << '\n';
+        out << "f " << mesh.indices[3 * f] + 1 << ' ' << mesh.indices[3 * f + 1] + 1 << ' ' << mesh.indices[3 * f + 2] + 1
+            << '\n';
     out.flush();
     if (!out) return makeError(target.string() + ": cannot write the mesh (disk full or not writable)");
     return {};
@@ -85,10 +87,10 @@ Expected<void> writeMesh(const fs::path& path, const Mesh& mesh) {
     scene->mRootNode->mNumMeshes = 1;
     scene->mRootNode->mMeshes = new unsigned int[1]{0};
     scene->mNumMaterials = 1;
-    scene->mMaterials = new aiMaterial*[1]{new aiMaterial()};
+    scene->mMaterials = new aiMaterial* [1] { new aiMaterial() };
     scene->mNumMeshes = 1;
     auto* out = new aiMesh();
-    scene->mMeshes = new aiMesh*[1]{out};
+    scene->mMeshes = new aiMesh* [1] { out };
     out->mMaterialIndex = 0;
     out->mPrimitiveTypes = aiPrimitiveType_TRIANGLE;
     out->mNumVertices = unsigned(mesh.vertices.size());
@@ -129,15 +131,22 @@ Expected<Mesh> readMesh(const fs::path& path) {
     Assimp::Importer importer;
     const aiScene* scene = importer.ReadFile(path.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
     if (!scene) return makeError(path.string() + ": cannot read the mesh: " + importer.GetErrorString());
+    // Equal positions become one vertex (STL stores each triangle's corners apart, and assimp keeps
+    // vertices apart when their normals differ), so shared edges share indices.
     Mesh mesh;
+    std::map<std::array<float, 3>, std::uint32_t> index;
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
         const aiMesh* in = scene->mMeshes[m];
-        const auto base = std::uint32_t(mesh.vertices.size());
-        for (unsigned v = 0; v < in->mNumVertices; ++v)
-            mesh.vertices.emplace_back(in->mVertices[v].x, in->mVertices[v].y, in->mVertices[v].z);
+        std::vector<std::uint32_t> merged(in->mNumVertices);
+        for (unsigned v = 0; v < in->mNumVertices; ++v) {
+            const std::array<float, 3> p = {in->mVertices[v].x, in->mVertices[v].y, in->mVertices[v].z};
+            auto [it, inserted] = index.try_emplace(p, std::uint32_t(mesh.vertices.size()));
+            if (inserted) mesh.vertices.emplace_back(p[0], p[1], p[2]);
+            merged[v] = it->second;
+        }
         for (unsigned f = 0; f < in->mNumFaces; ++f) {
             if (in->mFaces[f].mNumIndices != 3) continue; // points and lines
-            for (int k = 0; k < 3; ++k) mesh.indices.push_back(base + in->mFaces[f].mIndices[k]);
+            for (int k = 0; k < 3; ++k) mesh.indices.push_back(merged[in->mFaces[f].mIndices[k]]);
         }
     }
     if (mesh.indices.empty()) return makeError(path.string() + ": the file holds no triangles");

@@ -285,3 +285,32 @@ def test_audit_with_params_sees_the_instance():
     assert safe["verdict"] in ("exact", "conservative")
     assert steep["verdict"] == "non-conservative" and steep["lipschitz"] == pytest.approx(2.0, abs=0.1)
     assert steep["parameters"] == {"blend": pytest.approx(0.1), "stretch": 2.0}
+
+
+@pytest.mark.parametrize("extension", ["ply", "obj", "stl", "glb"])
+def test_meshes_open_in_meshio_and_open3d_watertight(extension):
+    open3d = pytest.importorskip("open3d")  # python3-open3d, installed by scripts/bootstrap
+    with tempfile.TemporaryDirectory() as folder:
+        path = os.path.join(folder, "torus." + extension)
+        env = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
+        out = subprocess.run([BINARY, "--batch", "mesh", "--sdf", os.path.join(PARAMS, "iq_torus_map.glsl"), "--param",
+                              "minorRadius=0.15", "--resolution", "48", "--output", path, "--json", "--quiet"],
+                             check=True, env=env, capture_output=True, text=True).stdout
+        report = json.loads(out)
+        assert report["watertight"] and report["boundary_edges"] == 0 and report["non_manifold_edges"] == 0
+        assert report["hausdorff"] < 0.01 and report["error_points"] > 100000
+        assert report["parameters"]["minorRadius"] == pytest.approx(0.15)
+        mesh = open3d.io.read_triangle_mesh(path)
+        if extension == "stl":  # STL keeps each triangle's corners apart
+            mesh = mesh.merge_close_vertices(1e-7)
+        assert len(mesh.triangles) == report["triangles"]
+        assert len(mesh.vertices) == report["vertices"]
+        assert mesh.is_edge_manifold() and mesh.is_watertight() and mesh.is_orientable()
+        if extension != "glb":  # meshio has no glTF reader
+            import meshio
+            m = meshio.read(path)
+            assert len(m.cells_dict["triangle"]) == report["triangles"]
+            # the minor radius is the tube's: every vertex lies on the surface of that torus
+            p = m.points
+            q = np.stack([np.hypot(p[:, 0], p[:, 2]) - 0.6, p[:, 1]], axis=1)
+            assert np.max(np.abs(np.linalg.norm(q, axis=1) - 0.15)) < 1e-4  # vertices are projected onto it
