@@ -47,7 +47,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     std::vector<sdfwb::shaders::ParameterSetting> defaults;
     for (const auto& p : scan.parameters) defaults.push_back({p.name, p.type, p.defaultValue});
-    const auto again = sdfwb::shaders::parseParameters(sdfwb::shaders::withDefaults(text, scan.parameters, defaults), "fuzz.glsl");
+    const auto again =
+        sdfwb::shaders::parseParameters(sdfwb::shaders::withDefaults(text, scan.parameters, defaults), "fuzz.glsl");
     require(again.parameters.size() == scan.parameters.size(), "saving the defaults changed the parameters");
     for (std::size_t i = 0; i < again.parameters.size(); ++i) {
         require(again.parameters[i].name == scan.parameters[i].name, "saving the defaults changed a name");

@@ -508,9 +508,11 @@ int runMeshCommand(const Arguments& arguments, Mode mode) {
     if (!bounds.empty()) {
         float v[6];
         char tail;
-        if (std::sscanf(bounds.c_str(), " %f , %f , %f , %f , %f , %f %c", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &tail) != 6 ||
+        if (std::sscanf(bounds.c_str(), " %f , %f , %f , %f , %f , %f %c", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &tail) !=
+                6 ||
             !(v[3] > v[0] && v[4] > v[1] && v[5] > v[2])) {
-            printError("--bounds: expected MINX,MINY,MINZ,MAXX,MAXY,MAXZ with each maximum above its minimum, got '" + bounds + "'");
+            printError("--bounds: expected MINX,MINY,MINZ,MAXX,MAXY,MAXZ with each maximum above its minimum, got '" + bounds +
+                       "'");
             return kExitUsage;
         }
         request.boundsMin = {v[0], v[1], v[2]};
@@ -572,10 +574,9 @@ struct BatchCommandEntry {
     int (*run)(const Arguments& arguments, Mode mode);
 };
 constexpr BatchCommandEntry kBatchCommands[] = {
-    {"render", runRenderCommand}, {"animate", runAnimateCommand}, {"sample", runSampleCommand},
-    {"merge", runMergeCommand},   {"audit", runAuditCommand},     {"list", runListCommand},
-    {"bench", runBenchCommand},   {"params", runParamsCommand},   {"request", runRequestCommand},
-    {"mesh", runMeshCommand},
+    {"render", runRenderCommand},   {"animate", runAnimateCommand}, {"sample", runSampleCommand}, {"merge", runMergeCommand},
+    {"audit", runAuditCommand},     {"list", runListCommand},       {"bench", runBenchCommand},   {"params", runParamsCommand},
+    {"request", runRequestCommand}, {"mesh", runMeshCommand},
 };
 
 const BatchCommandEntry* findBatchCommand(const std::string& name) {

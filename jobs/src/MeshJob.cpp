@@ -15,14 +15,16 @@ namespace sdfwb::jobs {
 
 std::optional<JobError> validate(const MeshRequest& request) {
     if (!meshing::canWriteMesh(request.output))
-        return JobError{Failure::Usage,
-                        "--output: '" + request.output + "': unsupported mesh type (use .ply, .obj, .stl or .glb)", {}};
+        return JobError{
+            Failure::Usage, "--output: '" + request.output + "': unsupported mesh type (use .ply, .obj, .stl or .glb)", {}};
     if (request.resolution < 2 || request.resolution > 2048)
         return JobError{Failure::Usage, "--resolution: must be 2..2048, got " + std::to_string(request.resolution), {}};
     for (int a = 0; a < 3; ++a)
         if (!std::isfinite(request.boundsMin[a]) || !std::isfinite(request.boundsMax[a]) ||
             !(request.boundsMax[a] > request.boundsMin[a]))
-            return JobError{Failure::Usage, "--bounds: expected finite MINX,MINY,MINZ,MAXX,MAXY,MAXZ with each maximum above its minimum", {}};
+            return JobError{Failure::Usage,
+                            "--bounds: expected finite MINX,MINY,MINZ,MAXX,MAXY,MAXZ with each maximum above its minimum",
+                            {}};
     if (!std::isfinite(request.time)) return JobError{Failure::Usage, "--time: expected a finite number", {}};
     if (request.lipschitz && (!std::isfinite(*request.lipschitz) || *request.lipschitz < 0.0f))
         return JobError{Failure::Usage, "--lipschitz: expected a finite number >= 0 (0 skips nothing)", {}};
@@ -31,7 +33,8 @@ std::optional<JobError> validate(const MeshRequest& request) {
         std::filesystem::path(request.output).parent_path().empty() ? "." : std::filesystem::path(request.output).parent_path();
     std::error_code ec;
     if (!std::filesystem::is_directory(folder, ec))
-        return JobError{Failure::Usage, "--output: '" + request.output + "': folder '" + folder.string() + "' does not exist", {}};
+        return JobError{
+            Failure::Usage, "--output: '" + request.output + "': folder '" + folder.string() + "' does not exist", {}};
     ParamsRequest sdfOnly{request.sdf};
     return validate(sdfOnly); // the SDF's name, entry and parameter values
 }
@@ -85,8 +88,8 @@ JobResult<MeshReport> run(const MeshRequest& request, const ProgressSink& progre
     const meshing::MeshStats& stats = extracted->second;
     if (mesh.indices.empty())
         return JobError{Failure::Work,
-                        "mesh: " + sdf->label + " has no surface inside the bounds at resolution " + std::to_string(request.resolution) +
-                            "; nothing written",
+                        "mesh: " + sdf->label + " has no surface inside the bounds at resolution " +
+                            std::to_string(request.resolution) + "; nothing written",
                         {}};
     report.vertices = mesh.vertices.size();
     report.triangles = mesh.triangleCount();

@@ -66,8 +66,8 @@ Expected<MeshError> measureError(const shaders::PreparedSdf& sdf, const Mesh& me
     std::mt19937_64 random(options.seed);
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
     for (std::uint64_t s = 0; s < options.meshPoints && total > 0.0; ++s) {
-        const std::size_t t = std::size_t(std::lower_bound(cumulative.begin(), cumulative.end(), uniform(random) * total) -
-                                          cumulative.begin());
+        const std::size_t t =
+            std::size_t(std::lower_bound(cumulative.begin(), cumulative.end(), uniform(random) * total) - cumulative.begin());
         const std::size_t f = std::min(t, triangles - 1);
         double r1 = uniform(random), r2 = uniform(random);
         if (r1 + r2 > 1.0) {
@@ -130,8 +130,9 @@ Expected<MeshError> measureError(const shaders::PreparedSdf& sdf, const Mesh& me
         float best = std::numeric_limits<float>::infinity();
         for (const auto& item : found) {
             const std::size_t t = item.first;
-            best = std::min(best, pointTriangleDistance(p, mesh.vertices[mesh.indices[3 * t]], mesh.vertices[mesh.indices[3 * t + 1]],
-                                                        mesh.vertices[mesh.indices[3 * t + 2]]));
+            best = std::min(best,
+                            pointTriangleDistance(p, mesh.vertices[mesh.indices[3 * t]], mesh.vertices[mesh.indices[3 * t + 1]],
+                                                  mesh.vertices[mesh.indices[3 * t + 2]]));
         }
         if (!std::isfinite(best)) continue;
         sum += double(best);

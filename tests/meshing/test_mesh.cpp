@@ -36,7 +36,8 @@ protected:
     }
 };
 
-const char* kBox = "float sdf(vec3 p) { vec3 q = abs(p) - vec3(0.5); return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0); }";
+const char* kBox =
+    "float sdf(vec3 p) { vec3 q = abs(p) - vec3(0.5); return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0); }";
 const char* kSphere = "float sdf(vec3 p) { return length(p) - 0.6; }";
 
 // Distance from p to the segment ab.
@@ -85,7 +86,8 @@ TEST_F(MeshTest, ABoxKeepsItsCornersAndStraightEdges) {
     double volume = 0.0;
     for (std::size_t f = 0; f < mesh.triangleCount(); ++f)
         volume += glm::dot(mesh.vertices[mesh.indices[3 * f]],
-                           glm::cross(mesh.vertices[mesh.indices[3 * f + 1]], mesh.vertices[mesh.indices[3 * f + 2]])) / 6.0;
+                           glm::cross(mesh.vertices[mesh.indices[3 * f + 1]], mesh.vertices[mesh.indices[3 * f + 2]])) /
+                  6.0;
     EXPECT_NEAR(volume, 1.0, 1e-3);
 }
 
@@ -108,8 +110,9 @@ TEST_F(MeshTest, TheSphereErrorFallsAtSecondOrder) {
 }
 
 TEST_F(MeshTest, ClosedDatasetShapesAreWatertight) {
-    for (const char* file : {"dataset/Geometry/Torus.glsl", "dataset/Geometry/Capsule.glsl", "dataset/Geometry/Link.glsl",
-                             "dataset/Geometry/TrefoilKnot.glsl", "dataset/Geometry/Octahedron.glsl", "dataset/Geometry/Cone.glsl"}) {
+    for (const char* file :
+         {"dataset/Geometry/Torus.glsl", "dataset/Geometry/Capsule.glsl", "dataset/Geometry/Link.glsl",
+          "dataset/Geometry/TrefoilKnot.glsl", "dataset/Geometry/Octahedron.glsl", "dataset/Geometry/Cone.glsl"}) {
         const meshing::Mesh mesh = extract(sdfwb::testing::loadSourceSdf(file), 64);
         ASSERT_GT(mesh.triangleCount(), 100u) << file;
         const meshing::Topology topology = meshing::checkTopology(mesh);
@@ -135,7 +138,8 @@ TEST_F(MeshTest, SkippingEmptyBlocksLosesNothing) {
 
 TEST_F(MeshTest, FilesReadBackTheSameTriangles) {
     const meshing::Mesh mesh = extract(source(kSphere), 24);
-    const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("sdfwb-mesh-test-" + std::to_string(::getpid()));
+    const std::filesystem::path folder =
+        std::filesystem::temp_directory_path() / ("sdfwb-mesh-test-" + std::to_string(::getpid()));
     std::filesystem::create_directories(folder);
     for (const char* name : {"m.ply", "m.obj", "m.stl", "m.glb"}) {
         ASSERT_TRUE(meshing::writeMesh(folder / name, mesh)) << name;

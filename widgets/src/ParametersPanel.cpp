@@ -153,8 +153,8 @@ void ParametersPanel::updateClipEndLabel() {
 }
 
 void ParametersPanel::setDeclarations(const std::vector<shaders::Parameter>& declared) {
-    const bool same = declared.size() == m_declared.size() &&
-                      std::equal(declared.begin(), declared.end(), m_declared.begin(), sameDeclaration);
+    const bool same =
+        declared.size() == m_declared.size() && std::equal(declared.begin(), declared.end(), m_declared.begin(), sameDeclaration);
     std::vector<shaders::ParameterSetting> values;
     for (const shaders::Parameter& p : declared) {
         shaders::ParameterSetting setting{p.name, p.type, p.defaultValue};
@@ -167,7 +167,8 @@ void ParametersPanel::setDeclarations(const std::vector<shaders::Parameter>& dec
     const bool changedValues = values != m_values;
     m_declared = declared;
     m_values = std::move(values);
-    if (!same) rebuild();
+    if (!same)
+        rebuild();
     else
         for (std::size_t i = 0; i < m_rows.size(); ++i) refreshRow(i);
     if (changedValues) emit valuesChanged();
@@ -180,7 +181,8 @@ void ParametersPanel::setValues(const std::vector<shaders::ParameterValue>& valu
             if (m_values[i].name != v.name || v.value.empty()) continue;
             const int n = shaders::componentCount(m_values[i].type);
             for (int k = 0; k < n; ++k) {
-                const float x = v.value.size() == 1 ? v.value[0] : v.value[std::min<std::size_t>(std::size_t(k), v.value.size() - 1)];
+                const float x =
+                    v.value.size() == 1 ? v.value[0] : v.value[std::min<std::size_t>(std::size_t(k), v.value.size() - 1)];
                 changed = changed || m_values[i].value[std::size_t(k)] != x;
                 m_values[i].value[std::size_t(k)] = x;
             }
@@ -222,9 +224,8 @@ void ParametersPanel::rebuild() {
         auto* row = new Row;
         const int line = int(i);
         row->label = new QLabel(QString::fromStdString(p.label.empty() ? p.name : p.label), m_rowsHost);
-        row->label->setToolTip(tr("%1 %2 (line %3)")
-                                   .arg(shaders::parameterTypeName(p.type), QString::fromStdString(p.name))
-                                   .arg(p.line));
+        row->label->setToolTip(
+            tr("%1 %2 (line %3)").arg(shaders::parameterTypeName(p.type), QString::fromStdString(p.name)).arg(p.line));
         m_grid->addWidget(row->label, line, 0);
         const int n = shaders::componentCount(p.type);
         const bool ranged = p.minimum && p.maximum && *p.maximum > *p.minimum;
@@ -282,8 +283,9 @@ void ParametersPanel::rebuild() {
                 row->color->setFixedWidth(36);
                 connect(row->color, &QPushButton::clicked, this, [this, i] {
                     const bool alpha = m_values[i].type == shaders::ParameterType::Vec4;
-                    const QColor chosen = QColorDialog::getColor(toColor(m_values[i].value, alpha), this, tr("Colour"),
-                                                                 alpha ? QColorDialog::ShowAlphaChannel : QColorDialog::ColorDialogOptions());
+                    const QColor chosen =
+                        QColorDialog::getColor(toColor(m_values[i].value, alpha), this, tr("Colour"),
+                                               alpha ? QColorDialog::ShowAlphaChannel : QColorDialog::ColorDialogOptions());
                     if (!chosen.isValid()) return;
                     m_updating = true;
                     m_values[i].value[0] = float(chosen.redF());
@@ -332,15 +334,15 @@ void ParametersPanel::refreshRow(std::size_t index) {
     if (row->slider) {
         int position = int(std::lround(v[0]));
         if (p.type != shaders::ParameterType::Int) {
-            const double t = p.logarithmic ? std::log(double(std::max(v[0], *p.minimum)) / *p.minimum) / std::log(double(*p.maximum) / *p.minimum)
+            const double t = p.logarithmic ? std::log(double(std::max(v[0], *p.minimum)) / *p.minimum) /
+                                                 std::log(double(*p.maximum) / *p.minimum)
                                            : (double(v[0]) - *p.minimum) / (double(*p.maximum) - *p.minimum);
             position = int(std::lround(std::clamp(t, 0.0, 1.0) * kSliderSteps));
         }
         row->slider->setValue(position);
     }
     for (std::size_t k = 0; k < row->numbers.size(); ++k) row->numbers[k]->setValue(double(v[k]));
-    if (row->color)
-        row->color->setStyleSheet(QString("background-color: %1").arg(toColor(v, false).name()));
+    if (row->color) row->color->setStyleSheet(QString("background-color: %1").arg(toColor(v, false).name()));
     const bool atDefault = v == p.defaultValue;
     row->reset->setEnabled(!atDefault);
     QFont font = row->label->font();
