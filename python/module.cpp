@@ -298,6 +298,30 @@ py::object params(const std::string& sdf, const std::string& entry) {
     return fromJson(jobs::toJson(*result));
 }
 
+// Grades any mesh file against the exact field: the report `sdfwb --batch eval --json` prints.
+py::object evaluateMesh(const std::string& mesh, const std::string& sdf, float tau, std::uint64_t points, int occupancyResolution,
+                        std::uint64_t seed, float time, const std::string& entry, const py::object& params) {
+    jobs::EvalRequest request;
+    request.sdf = sdfInput(sdf, entry, params);
+    request.mesh = mesh;
+    request.tau = tau;
+    request.points = points;
+    request.occupancyResolution = occupancyResolution;
+    request.seed = seed;
+    request.time = time;
+    if (auto error = jobs::validate(request)) raise(*error);
+    std::optional<jobs::JobResult<jobs::EvalReport>> result;
+    {
+        py::gil_scoped_release release;
+        std::lock_guard lock(g_glMutex);
+        context();
+        result.emplace(jobs::run(request, {}));
+        releaseContext();
+    }
+    if (!*result) raise(result->error);
+    return fromJson(jobs::toJson(**result));
+}
+
 py::list listSdfs() {
     dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
     py::list out;
@@ -346,6 +370,13 @@ PYBIND11_MODULE(sdfwb, m) {
           "The parameters `sdf` declares (uniforms with a default, annotated // @range MIN MAX @step S @log @label \"...\"\n"
           "@color): a dict with `parameters` (name, type, default, minimum, maximum, step, log, color, label, line, column)\n"
           "and `warnings`, as `sdfwb --batch params --json` prints it. Errors raise ValueError with file:line:column.");
+    m.def("evaluate_mesh", &evaluateMesh, py::arg("mesh"), py::arg("sdf"), py::arg("tau") = 0.01f, py::arg("points") = 100000,
+          py::arg("occupancy_resolution") = 128, py::arg("seed") = 0, py::arg("time") = 0.0f, py::arg("entry") = "",
+          py::arg("params") = py::none(),
+          "Grades the mesh file `mesh` (any format assimp reads) against the exact field of `sdf`: chamfer_l1 (mean of the\n"
+          "two mean unsquared distances), chamfer_l2 (the same, squared), fscore at tau (with precision and recall),\n"
+          "normal_consistency, hausdorff, iou (grid of occupancy_resolution^3), and the point counts; the same dict\n"
+          "`sdfwb --batch eval --json` prints, `conventions` included.");
     m.def("list_sdfs", &listSdfs,
           "The dataset: one dict per SDF (name, category, declared_type, animated, path, author, license).");
 }

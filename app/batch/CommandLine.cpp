@@ -48,6 +48,7 @@ const char* const kOverview =
     "  bench    measure error against run time (tracer, samplers, gradients, audit) into a report\n"
     "  params   list the parameters (annotated uniforms) an SDF declares\n"
     "  mesh     extract the surface as a mesh (.ply, .obj, .stl, .glb) with sharp edges, graded against the field\n"
+    "  eval     grade any mesh against the exact field: Chamfer, F-score, normal consistency, Hausdorff, IoU\n"
     "  request  run one request given as JSON (FILE or - for stdin); every command's --print-request\n"
     "           prints the JSON its options make\n"
     "\n"
@@ -480,6 +481,18 @@ int runBenchCommand(const Arguments& arguments, Mode mode) {
     return finish(command, ending, mode);
 }
 
+// "MINX,MINY,MINZ,MAXX,MAXY,MAXZ" into two corners; false when malformed.
+bool parseBounds(const std::string& text, glm::vec3& low, glm::vec3& high) {
+    float v[6];
+    char tail;
+    if (std::sscanf(text.c_str(), " %f , %f , %f , %f , %f , %f %c", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &tail) != 6 ||
+        !(v[3] > v[0] && v[4] > v[1] && v[5] > v[2]))
+        return false;
+    low = {v[0], v[1], v[2]};
+    high = {v[3], v[4], v[5]};
+    return true;
+}
+
 int runMeshCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Extract the SDF's zero set as a mesh by dual contouring (sharp edges and corners kept), and measure its "
                  "error against the exact field both ways.",
@@ -505,18 +518,40 @@ int runMeshCommand(const Arguments& arguments, Mode mode) {
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch mesh", arguments)) return *exit;
     request.sdf.params = parameterValues(sdf.params);
-    if (!bounds.empty()) {
-        float v[6];
-        char tail;
-        if (std::sscanf(bounds.c_str(), " %f , %f , %f , %f , %f , %f %c", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &tail) !=
-                6 ||
-            !(v[3] > v[0] && v[4] > v[1] && v[5] > v[2])) {
-            printError("--bounds: expected MINX,MINY,MINZ,MAXX,MAXY,MAXZ with each maximum above its minimum, got '" + bounds +
-                       "'");
-            return kExitUsage;
-        }
-        request.boundsMin = {v[0], v[1], v[2]};
-        request.boundsMax = {v[3], v[4], v[5]};
+    if (!bounds.empty() && !parseBounds(bounds, request.boundsMin, request.boundsMax)) {
+        printError("--bounds: expected MINX,MINY,MINZ,MAXX,MAXY,MAXZ with each maximum above its minimum, got '" + bounds + "'");
+        return kExitUsage;
+    }
+    return finish(request, ending, mode);
+}
+
+int runEvalCommand(const Arguments& arguments, Mode mode) {
+    CLI::App app("Grade any mesh against the SDF's exact field: Chamfer L1/L2, F-score at tau, normal consistency, Hausdorff "
+                 "and volume IoU (conventions in the report).",
+                 "sdfwb --batch eval");
+    jobs::EvalRequest request;
+    Ending ending;
+    SdfOptions sdf;
+    std::string bounds;
+    addSdfOptions(app, request.sdf, sdf);
+    app.add_option("--mesh", request.mesh, "the mesh to grade: .ply, .obj, .stl, .glb, .off, ... (anything assimp reads)")
+        ->required();
+    app.add_option("--points", request.points, "points each way (on the mesh, on the exact surface)")
+        ->capture_default_str()
+        ->check(CLI::Range(std::uint64_t(100), std::uint64_t(10000000)));
+    app.add_option("--tau", request.tau, "F-score distance threshold")->capture_default_str()->check(numberCheck(true));
+    app.add_option("--occupancy-resolution", request.occupancyResolution, "grid side for the volume IoU (0: no IoU)")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 512));
+    app.add_option("--bounds", bounds, "MINX,MINY,MINZ,MAXX,MAXY,MAXZ of the IoU grid (default -1,-1,-1,1,1,1)");
+    app.add_option("--time", request.time, "time in seconds for animated SDFs")->capture_default_str()->check(numberCheck(false));
+    app.add_option("--seed", request.seed, "random seed of the points")->capture_default_str();
+    addOutputFlags(app, ending);
+    if (auto exit = parse(app, "--batch eval", arguments)) return *exit;
+    request.sdf.params = parameterValues(sdf.params);
+    if (!bounds.empty() && !parseBounds(bounds, request.boundsMin, request.boundsMax)) {
+        printError("--bounds: expected MINX,MINY,MINZ,MAXX,MAXY,MAXZ with each maximum above its minimum, got '" + bounds + "'");
+        return kExitUsage;
     }
     return finish(request, ending, mode);
 }
@@ -576,7 +611,7 @@ struct BatchCommandEntry {
 constexpr BatchCommandEntry kBatchCommands[] = {
     {"render", runRenderCommand},   {"animate", runAnimateCommand}, {"sample", runSampleCommand}, {"merge", runMergeCommand},
     {"audit", runAuditCommand},     {"list", runListCommand},       {"bench", runBenchCommand},   {"params", runParamsCommand},
-    {"request", runRequestCommand}, {"mesh", runMeshCommand},
+    {"request", runRequestCommand}, {"mesh", runMeshCommand},       {"eval", runEvalCommand},
 };
 
 const BatchCommandEntry* findBatchCommand(const std::string& name) {

@@ -140,6 +140,46 @@ template <class V> void fields(V& v, MeshRequest& r) {
     v("seed", r.seed);
 }
 
+template <class V> void fields(V& v, EvalRequest& r) {
+    fields(v, r.sdf);
+    v("mesh", r.mesh);
+    v("points", r.points);
+    v("tau", r.tau);
+    v("occupancy_resolution", r.occupancyResolution);
+    v("bounds_min", r.boundsMin);
+    v("bounds_max", r.boundsMax);
+    v("time", r.time);
+    v("seed", r.seed);
+}
+
+template <class V> void fields(V& v, EvalReport& r) {
+    v("mesh", r.mesh);
+    v("sdf", r.sdf);
+    v("vertices", r.vertices);
+    v("triangles", r.triangles);
+    v("closed", r.closed);
+    v("chamfer_l1", r.chamferL1);
+    v("chamfer_l2", r.chamferL2);
+    v("normal_consistency", r.normalConsistency);
+    v("tau", r.tau);
+    v("precision", r.precision);
+    v("recall", r.recall);
+    v("fscore", r.fscore);
+    v("hausdorff", r.hausdorff);
+    v("iou", r.iou);
+    v("accuracy_mean", r.accuracyMean);
+    v("accuracy_max", r.accuracyMax);
+    v("completeness_mean", r.completenessMean);
+    v("completeness_max", r.completenessMax);
+    v("mesh_points", r.meshPoints);
+    v("surface_points", r.surfacePoints);
+    v("occupancy_points", r.occupancyPoints);
+    v("conventions", r.conventions);
+    v("parameters", r.parameters);
+    v("warnings", r.warnings);
+    v("seconds", r.seconds);
+}
+
 template <class V> void fields(V& v, MeshReport& r) {
     v("output", r.output);
     v("sdf", r.sdf);
@@ -642,7 +682,7 @@ Expected<Request> requestFromJson(const std::string& text) {
     if (!in->is_object()) return makeError("request: expected a JSON object with a \"kind\"");
     auto kind = in->find("kind");
     if (kind == in->end() || !kind->is_string())
-        return makeError("request: missing \"kind\" (render, animate, sample, audit, merge, list, bench, params, mesh)");
+        return makeError("request: missing \"kind\" (render, animate, sample, audit, merge, list, bench, params, mesh, eval)");
     const std::string name = kind->get<std::string>();
     auto as = [&]<class T>(T*) -> Expected<Request> {
         auto value = readObject<T>(*in, true, (name + " request").c_str());
@@ -658,7 +698,9 @@ Expected<Request> requestFromJson(const std::string& text) {
     if (name == "bench") return as((BenchRequest*)nullptr);
     if (name == "params") return as((ParamsRequest*)nullptr);
     if (name == "mesh") return as((MeshRequest*)nullptr);
-    return makeError("request: unknown kind '" + name + "' (render, animate, sample, audit, merge, list, bench, params, mesh)");
+    if (name == "eval") return as((EvalRequest*)nullptr);
+    return makeError("request: unknown kind '" + name +
+                     "' (render, animate, sample, audit, merge, list, bench, params, mesh, eval)");
 }
 
 namespace {
@@ -697,6 +739,7 @@ std::string toJson(const ListReport& report, int indent) { return dump(encode(re
 std::string toJson(const BenchReport& report, int indent) { return dump(encode(report), indent); }
 std::string toJson(const ParamsReport& report, int indent) { return dump(encode(report), indent); }
 std::string toJson(const MeshReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const EvalReport& report, int indent) { return dump(encode(report), indent); }
 std::string toJson(const AuditJobReport& report, int indent) { return dump(encodeAudit(report), indent); }
 
 template <class T> Expected<T> reportFromJson(const std::string& text) {
@@ -745,5 +788,6 @@ template Expected<ListReport> reportFromJson<ListReport>(const std::string&);
 template Expected<BenchReport> reportFromJson<BenchReport>(const std::string&);
 template Expected<ParamsReport> reportFromJson<ParamsReport>(const std::string&);
 template Expected<MeshReport> reportFromJson<MeshReport>(const std::string&);
+template Expected<EvalReport> reportFromJson<EvalReport>(const std::string&);
 
 } // namespace sdfwb::jobs

@@ -28,6 +28,7 @@ const char* kindName(const Request& request) {
         const char* operator()(const BenchRequest&) const { return "bench"; }
         const char* operator()(const ParamsRequest&) const { return "params"; }
         const char* operator()(const MeshRequest&) const { return "mesh"; }
+        const char* operator()(const EvalRequest&) const { return "eval"; }
     };
     return std::visit(Names{}, request);
 }

@@ -37,10 +37,10 @@ Expected<void> FieldProbe::evaluate(const std::vector<float>& points, std::vecto
 }
 
 Expected<void> FieldProbe::generate(std::uint64_t n, std::uint64_t seed, std::vector<float>& positions,
-                                    std::vector<float>& distances) {
+                                    std::vector<float>& distances, std::vector<float>& gradients) {
     positions.assign(3 * n, 0.0f);
     distances.assign(n, 0.0f);
-    std::vector<float> gradients(3 * n);
+    gradients.assign(3 * n, 0.0f);
     sampling::SamplingJob job;
     job.count = n;
     job.seed = seed;

@@ -21,8 +21,9 @@ public:
     // difference step.
     Expected<void> evaluate(const std::vector<float>& points, std::vector<float>& distances, std::vector<float>* gradients,
                             float gradientStep = 1e-4f);
-    // n rows of a generating sampler (surface): positions and distances.
-    Expected<void> generate(std::uint64_t n, std::uint64_t seed, std::vector<float>& positions, std::vector<float>& distances);
+    // n rows of a generating sampler (surface): positions, distances and gradients.
+    Expected<void> generate(std::uint64_t n, std::uint64_t seed, std::vector<float>& positions, std::vector<float>& distances,
+                            std::vector<float>& gradients);
     ~FieldProbe() { m_compute.releaseGl(); }
 
 private:

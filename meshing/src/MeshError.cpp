@@ -45,16 +45,24 @@ struct Centres {
 };
 using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, Centres>, Centres, 3, std::uint32_t>;
 
-} // namespace
+// Points spread on the mesh by area (and, first, its vertices when asked), with their face.
+struct MeshSamples {
+    std::vector<float> xyz;
+    std::vector<std::uint32_t> face; // the triangle each point lies on
+};
 
-Expected<MeshError> measureError(const shaders::PreparedSdf& sdf, const Mesh& mesh, const ErrorOptions& options) {
-    const auto start = std::chrono::steady_clock::now();
-    if (mesh.indices.empty()) return makeError("mesh error: the mesh has no triangles");
-    MeshError error;
-    // Mesh -> surface: |f| at the vertices and at area-weighted points on the faces.
-    std::vector<float> points;
-    for (const glm::vec3& v : mesh.vertices) points.insert(points.end(), {v.x, v.y, v.z});
+MeshSamples sampleOnMesh(const Mesh& mesh, std::uint64_t count, std::uint64_t seed, bool withVertices) {
+    MeshSamples out;
     const std::size_t triangles = mesh.triangleCount();
+    if (withVertices) {
+        std::vector<std::uint32_t> faceOf(mesh.vertices.size(), 0);
+        for (std::size_t t = 0; t < triangles; ++t)
+            for (int k = 0; k < 3; ++k) faceOf[mesh.indices[3 * t + std::size_t(k)]] = std::uint32_t(t);
+        for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+            out.xyz.insert(out.xyz.end(), {mesh.vertices[v].x, mesh.vertices[v].y, mesh.vertices[v].z});
+            out.face.push_back(faceOf[v]);
+        }
+    }
     std::vector<double> cumulative(triangles);
     double total = 0.0;
     for (std::size_t t = 0; t < triangles; ++t) {
@@ -63,9 +71,9 @@ Expected<MeshError> measureError(const shaders::PreparedSdf& sdf, const Mesh& me
         total += 0.5 * double(glm::length(glm::cross(b - a, c - a)));
         cumulative[t] = total;
     }
-    std::mt19937_64 random(options.seed);
+    std::mt19937_64 random(seed);
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
-    for (std::uint64_t s = 0; s < options.meshPoints && total > 0.0; ++s) {
+    for (std::uint64_t s = 0; s < count && total > 0.0; ++s) {
         const std::size_t t =
             std::size_t(std::lower_bound(cumulative.begin(), cumulative.end(), uniform(random) * total) - cumulative.begin());
         const std::size_t f = std::min(t, triangles - 1);
@@ -77,13 +85,119 @@ Expected<MeshError> measureError(const shaders::PreparedSdf& sdf, const Mesh& me
         const glm::vec3 &a = mesh.vertices[mesh.indices[3 * f]], &b = mesh.vertices[mesh.indices[3 * f + 1]],
                         &c = mesh.vertices[mesh.indices[3 * f + 2]];
         const glm::vec3 p = a + float(r1) * (b - a) + float(r2) * (c - a);
-        points.insert(points.end(), {p.x, p.y, p.z});
+        out.xyz.insert(out.xyz.end(), {p.x, p.y, p.z});
+        out.face.push_back(std::uint32_t(f));
     }
+    return out;
+}
+
+glm::vec3 faceNormal(const Mesh& mesh, std::size_t t) {
+    const glm::vec3 &a = mesh.vertices[mesh.indices[3 * t]], &b = mesh.vertices[mesh.indices[3 * t + 1]],
+                    &c = mesh.vertices[mesh.indices[3 * t + 2]];
+    const glm::vec3 n = glm::cross(b - a, c - a);
+    const float length = glm::length(n);
+    return length > 0.0f ? n / length : glm::vec3(0.0f);
+}
+
+// The nearest triangle to a point: the k-d tree gives the nearest centre; every triangle whose
+// centre lies within that distance plus the largest centre-to-corner radius may be nearer, and
+// those are measured exactly.
+class TriangleLocator {
+public:
+    explicit TriangleLocator(const Mesh& mesh)
+        : m_mesh(mesh), m_tree(3, m_centres, nanoflann::KDTreeSingleIndexAdaptorParams(16)) {
+        for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+            const glm::vec3 &a = mesh.vertices[mesh.indices[3 * t]], &b = mesh.vertices[mesh.indices[3 * t + 1]],
+                            &c = mesh.vertices[mesh.indices[3 * t + 2]];
+            const glm::vec3 m = (a + b + c) / 3.0f;
+            m_centres.xyz.insert(m_centres.xyz.end(), {m.x, m.y, m.z});
+            m_radius = std::max({m_radius, glm::length(a - m), glm::length(b - m), glm::length(c - m)});
+        }
+        m_tree.buildIndex();
+    }
+    // Distance and triangle; infinity for a non-finite point.
+    std::pair<float, std::uint32_t> nearest(const glm::vec3& p) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return {std::numeric_limits<float>::infinity(), 0};
+        const float query[3] = {p.x, p.y, p.z};
+        std::uint32_t closest = 0;
+        float closestSquared = 0.0f;
+        m_tree.knnSearch(query, 1, &closest, &closestSquared);
+        const float radius = std::sqrt(closestSquared) + m_radius;
+        m_found.clear();
+        m_tree.radiusSearch(query, radius * radius, m_found, nanoflann::SearchParams(32, 0.0f, false));
+        std::pair<float, std::uint32_t> best{std::numeric_limits<float>::infinity(), closest};
+        for (const auto& item : m_found) {
+            const std::size_t t = item.first;
+            const float d =
+                pointTriangleDistance(p, m_mesh.vertices[m_mesh.indices[3 * t]], m_mesh.vertices[m_mesh.indices[3 * t + 1]],
+                                      m_mesh.vertices[m_mesh.indices[3 * t + 2]]);
+            if (d < best.first) best = {d, std::uint32_t(t)};
+        }
+        return best;
+    }
+
+private:
+    const Mesh& m_mesh;
+    Centres m_centres;
+    Tree m_tree;
+    float m_radius = 0.0f;
+    std::vector<std::pair<std::uint32_t, float>> m_found;
+};
+
+// Inside/outside of a closed mesh at the points of a regular grid, by the parity of the crossings
+// of a ray along +z through each column (the columns are offset by an irrational fraction of a
+// cell so that no ray meets an edge or vertex exactly).
+std::vector<std::uint8_t> occupancyByParity(const Mesh& mesh, int n, glm::dvec3 lo, glm::dvec3 hi) {
+    const glm::dvec3 step = (hi - lo) / double(n);
+    const double ox = 0.5 + 1e-4 * 0.7071067811865476, oy = 0.5 + 1e-4 * 0.5772156649015329;
+    std::vector<std::vector<double>> columns(std::size_t(n) * std::size_t(n));
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const glm::dvec3 a(mesh.vertices[mesh.indices[3 * t]]), b(mesh.vertices[mesh.indices[3 * t + 1]]),
+            c(mesh.vertices[mesh.indices[3 * t + 2]]);
+        const double area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+        if (area == 0.0) continue; // edge-on: no column crosses it
+        const int i0 = std::max(0, int(std::ceil((std::min({a.x, b.x, c.x}) - lo.x) / step.x - ox)));
+        const int i1 = std::min(n - 1, int(std::floor((std::max({a.x, b.x, c.x}) - lo.x) / step.x - ox)));
+        const int j0 = std::max(0, int(std::ceil((std::min({a.y, b.y, c.y}) - lo.y) / step.y - oy)));
+        const int j1 = std::min(n - 1, int(std::floor((std::max({a.y, b.y, c.y}) - lo.y) / step.y - oy)));
+        for (int j = j0; j <= j1; ++j)
+            for (int i = i0; i <= i1; ++i) {
+                const double x = lo.x + (i + ox) * step.x, y = lo.y + (j + oy) * step.y;
+                const double w0 = ((b.x - x) * (c.y - y) - (c.x - x) * (b.y - y)) / area;
+                const double w1 = ((c.x - x) * (a.y - y) - (a.x - x) * (c.y - y)) / area;
+                const double w2 = 1.0 - w0 - w1;
+                if (w0 < 0.0 || w1 < 0.0 || w2 < 0.0) continue;
+                columns[std::size_t(j) * std::size_t(n) + std::size_t(i)].push_back(w0 * a.z + w1 * b.z + w2 * c.z);
+            }
+    }
+    std::vector<std::uint8_t> inside(std::size_t(n) * std::size_t(n) * std::size_t(n), 0);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            std::vector<double>& zs = columns[std::size_t(j) * std::size_t(n) + std::size_t(i)];
+            std::sort(zs.begin(), zs.end());
+            std::size_t crossed = 0;
+            for (int k = 0; k < n; ++k) {
+                const double z = lo.z + (k + 0.5) * step.z;
+                while (crossed < zs.size() && zs[crossed] < z) ++crossed;
+                inside[(std::size_t(k) * std::size_t(n) + std::size_t(j)) * std::size_t(n) + std::size_t(i)] = crossed % 2;
+            }
+        }
+    return inside;
+}
+
+} // namespace
+
+Expected<MeshError> measureError(const shaders::PreparedSdf& sdf, const Mesh& mesh, const ErrorOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    if (mesh.indices.empty()) return makeError("mesh error: the mesh has no triangles");
+    MeshError error;
+    // Mesh -> surface: |f| at the vertices and at area-weighted points on the faces.
+    const MeshSamples onMesh = sampleOnMesh(mesh, options.meshPoints, options.seed, true);
     {
         detail::FieldProbe probe;
         if (auto ok = probe.build(sdf, "analysis/points.glsl", options.time, options.parameters); !ok) return ok.error();
         std::vector<float> values;
-        if (auto ok = probe.evaluate(points, values, nullptr); !ok) return ok.error();
+        if (auto ok = probe.evaluate(onMesh.xyz, values, nullptr); !ok) return ok.error();
         double sum = 0.0;
         std::uint64_t counted = 0;
         for (float f : values) {
@@ -96,47 +210,21 @@ Expected<MeshError> measureError(const shaders::PreparedSdf& sdf, const Mesh& me
         error.meshToSurfaceMean = counted ? float(sum / double(counted)) : 0.0f;
     }
     // Surface -> mesh: points on the zero set to the nearest triangle.
-    std::vector<float> surface, distances;
+    std::vector<float> surface, distances, gradients;
     {
         detail::FieldProbe probe;
         if (auto ok = probe.build(sdf, "surface", options.time, options.parameters); !ok) return ok.error();
-        if (auto ok = probe.generate(options.surfacePoints, options.seed, surface, distances); !ok) return ok.error();
+        if (auto ok = probe.generate(options.surfacePoints, options.seed, surface, distances, gradients); !ok) return ok.error();
     }
-    Centres centres;
-    float largestRadius = 0.0f;
-    for (std::size_t t = 0; t < triangles; ++t) {
-        const glm::vec3 &a = mesh.vertices[mesh.indices[3 * t]], &b = mesh.vertices[mesh.indices[3 * t + 1]],
-                        &c = mesh.vertices[mesh.indices[3 * t + 2]];
-        const glm::vec3 m = (a + b + c) / 3.0f;
-        centres.xyz.insert(centres.xyz.end(), {m.x, m.y, m.z});
-        largestRadius = std::max({largestRadius, glm::length(a - m), glm::length(b - m), glm::length(c - m)});
-    }
-    Tree tree(3, centres, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-    tree.buildIndex();
+    TriangleLocator locator(mesh);
     double sum = 0.0;
     std::uint64_t counted = 0;
-    std::vector<std::pair<std::uint32_t, float>> found;
     for (std::size_t s = 0; s < distances.size(); ++s) {
-        if (!std::isfinite(distances[s]) || !std::isfinite(surface[3 * s])) continue; // a ray that missed
-        const float query[3] = {surface[3 * s], surface[3 * s + 1], surface[3 * s + 2]};
-        std::uint32_t nearest = 0;
-        float nearestSquared = 0.0f;
-        tree.knnSearch(query, 1, &nearest, &nearestSquared);
-        // Every triangle within (nearest centre distance + largest radius) of the point may be nearer.
-        const float radius = std::sqrt(nearestSquared) + largestRadius;
-        found.clear();
-        tree.radiusSearch(query, radius * radius, found, nanoflann::SearchParams(32, 0.0f, false));
-        const glm::vec3 p(query[0], query[1], query[2]);
-        float best = std::numeric_limits<float>::infinity();
-        for (const auto& item : found) {
-            const std::size_t t = item.first;
-            best = std::min(best,
-                            pointTriangleDistance(p, mesh.vertices[mesh.indices[3 * t]], mesh.vertices[mesh.indices[3 * t + 1]],
-                                                  mesh.vertices[mesh.indices[3 * t + 2]]));
-        }
-        if (!std::isfinite(best)) continue;
-        sum += double(best);
-        error.surfaceToMeshMax = std::max(error.surfaceToMeshMax, best);
+        if (!std::isfinite(distances[s])) continue; // a ray that missed
+        const float d = locator.nearest(glm::vec3(surface[3 * s], surface[3 * s + 1], surface[3 * s + 2])).first;
+        if (!std::isfinite(d)) continue;
+        sum += double(d);
+        error.surfaceToMeshMax = std::max(error.surfaceToMeshMax, d);
         ++counted;
     }
     error.surfacePoints = counted;
@@ -144,6 +232,103 @@ Expected<MeshError> measureError(const shaders::PreparedSdf& sdf, const Mesh& me
     error.hausdorff = std::max(error.meshToSurfaceMax, error.surfaceToMeshMax);
     error.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return error;
+}
+
+Expected<MeshEvaluation> evaluateMesh(const shaders::PreparedSdf& sdf, const Mesh& mesh, const EvalOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    if (mesh.indices.empty()) return makeError("eval: the mesh has no triangles");
+    if (!(options.tau > 0.0f)) return makeError("eval: --tau must be positive");
+    MeshEvaluation e;
+    e.tau = options.tau;
+    // Accuracy: points on the mesh to the surface, |f| (the distance for an exact field).
+    const MeshSamples onMesh = sampleOnMesh(mesh, options.points, options.seed, false);
+    detail::FieldProbe field;
+    if (auto ok = field.build(sdf, "analysis/points.glsl", options.time, options.parameters); !ok) return ok.error();
+    std::vector<float> values, gradients;
+    if (auto ok = field.evaluate(onMesh.xyz, values, &gradients); !ok) return ok.error();
+    double sum1 = 0.0, sum2 = 0.0, normalSum = 0.0;
+    std::uint64_t within = 0, counted = 0, normals = 0;
+    for (std::size_t s = 0; s < values.size(); ++s) {
+        if (!std::isfinite(values[s])) continue;
+        const double d = std::abs(double(values[s]));
+        sum1 += d;
+        sum2 += d * d;
+        e.accuracyMax = std::max(e.accuracyMax, float(d));
+        within += d < options.tau;
+        ++counted;
+        const glm::vec3 g(gradients[3 * s], gradients[3 * s + 1], gradients[3 * s + 2]);
+        if (glm::length(g) > 0.0f && std::isfinite(glm::length(g))) {
+            normalSum += std::abs(double(glm::dot(glm::normalize(g), faceNormal(mesh, onMesh.face[s]))));
+            ++normals;
+        }
+    }
+    e.meshPoints = counted;
+    e.accuracyMean = counted ? float(sum1 / double(counted)) : 0.0f;
+    const double accuracySquared = counted ? sum2 / double(counted) : 0.0;
+    e.precision = counted ? float(double(within) / double(counted)) : 0.0f;
+    // Completeness: points on the exact surface to the nearest triangle.
+    std::vector<float> surface, distances, surfaceGradients;
+    {
+        detail::FieldProbe sampler;
+        if (auto ok = sampler.build(sdf, "surface", options.time, options.parameters); !ok) return ok.error();
+        if (auto ok = sampler.generate(options.points, options.seed + 1, surface, distances, surfaceGradients); !ok)
+            return ok.error();
+    }
+    TriangleLocator locator(mesh);
+    double sum1b = 0.0, sum2b = 0.0, normalSumB = 0.0;
+    std::uint64_t withinB = 0, countedB = 0, normalsB = 0;
+    for (std::size_t s = 0; s < distances.size(); ++s) {
+        if (!std::isfinite(distances[s])) continue;
+        const auto [d, face] = locator.nearest(glm::vec3(surface[3 * s], surface[3 * s + 1], surface[3 * s + 2]));
+        if (!std::isfinite(d)) continue;
+        sum1b += double(d);
+        sum2b += double(d) * double(d);
+        e.completenessMax = std::max(e.completenessMax, d);
+        withinB += d < options.tau;
+        ++countedB;
+        const glm::vec3 g(surfaceGradients[3 * s], surfaceGradients[3 * s + 1], surfaceGradients[3 * s + 2]);
+        if (glm::length(g) > 0.0f && std::isfinite(glm::length(g))) {
+            normalSumB += std::abs(double(glm::dot(glm::normalize(g), faceNormal(mesh, face))));
+            ++normalsB;
+        }
+    }
+    e.surfacePoints = countedB;
+    e.completenessMean = countedB ? float(sum1b / double(countedB)) : 0.0f;
+    e.recall = countedB ? float(double(withinB) / double(countedB)) : 0.0f;
+    e.chamferL1 = 0.5f * (e.accuracyMean + e.completenessMean);
+    e.chamferL2 = float(0.5 * (accuracySquared + (countedB ? sum2b / double(countedB) : 0.0)));
+    e.normalConsistency =
+        float(0.5 * ((normals ? normalSum / double(normals) : 0.0) + (normalsB ? normalSumB / double(normalsB) : 0.0)));
+    e.fscore = e.precision + e.recall > 0.0f ? 2.0f * e.precision * e.recall / (e.precision + e.recall) : 0.0f;
+    e.hausdorff = std::max(e.accuracyMax, e.completenessMax);
+    // Volume IoU: occupancy of the field (f < 0) against the mesh's (ray parity) on a grid.
+    const Topology topology = checkTopology(mesh);
+    e.closed = topology.boundaryEdges == 0;
+    if (options.occupancyResolution > 0) {
+        const int n = options.occupancyResolution;
+        const glm::dvec3 lo(options.boundsMin), hi(options.boundsMax), step = (hi - lo) / double(n);
+        std::vector<float> grid;
+        grid.reserve(3 * std::size_t(n) * std::size_t(n) * std::size_t(n));
+        for (int k = 0; k < n; ++k)
+            for (int j = 0; j < n; ++j)
+                for (int i = 0; i < n; ++i) {
+                    const glm::dvec3 p = lo + (glm::dvec3(i, j, k) + 0.5) * step;
+                    grid.insert(grid.end(), {float(p.x), float(p.y), float(p.z)});
+                }
+        std::vector<float> occupancy;
+        if (auto ok = field.evaluate(grid, occupancy, nullptr); !ok) return ok.error();
+        const std::vector<std::uint8_t> meshInside = occupancyByParity(mesh, n, lo, hi);
+        std::uint64_t both = 0, either = 0;
+        for (std::size_t q = 0; q < occupancy.size(); ++q) {
+            const bool a = occupancy[q] < 0.0f, b = meshInside[q] != 0;
+            both += a && b;
+            either += a || b;
+        }
+        e.iou = either ? float(double(both) / double(either)) : 1.0f;
+        e.occupancyPoints = occupancy.size();
+    }
+    e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return e;
 }
 
 } // namespace sdfwb::meshing

@@ -314,3 +314,43 @@ def test_meshes_open_in_meshio_and_open3d_watertight(extension):
             p = m.points
             q = np.stack([np.hypot(p[:, 0], p[:, 2]) - 0.6, p[:, 1]], axis=1)
             assert np.max(np.abs(np.linalg.norm(q, axis=1) - 0.15)) < 1e-4  # vertices are projected onto it
+
+
+def test_evaluate_mesh_gives_the_clis_figures():
+    with tempfile.TemporaryDirectory() as folder:
+        path = os.path.join(folder, "torus.obj")
+        env = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
+        subprocess.run([BINARY, "--batch", "mesh", "--sdf", "torus", "--resolution", "40", "--error-samples", "0", "--output", path,
+                        "--quiet"], check=True, env=env)
+        cli = json.loads(subprocess.run([BINARY, "--batch", "eval", "--mesh", path, "--sdf", "torus", "--points", "20000",
+                                         "--json", "--quiet"], check=True, env=env, capture_output=True, text=True).stdout)
+        result = sdfwb.evaluate_mesh(path, "torus", points=20000)
+        for key in ("chamfer_l1", "chamfer_l2", "fscore", "precision", "recall", "normal_consistency", "hausdorff", "iou",
+                    "mesh_points", "surface_points", "triangles", "closed"):
+            assert result[key] == cli[key], key
+        assert result["fscore"] > 0.99 and result["iou"] > 0.97 and "not squared" in result["conventions"]
+        with pytest.raises(ValueError, match="no such file"):
+            sdfwb.evaluate_mesh(os.path.join(folder, "missing.ply"), "torus")
+
+
+def test_mesh_and_eval_name_bad_arguments():
+    env = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
+    with tempfile.TemporaryDirectory() as folder:
+        cases = [
+            (["mesh", "--sdf", "torus", "--output", os.path.join(folder, "t.xyz")], "unsupported mesh type"),
+            (["mesh", "--sdf", "torus", "--output", os.path.join(folder, "t.ply"), "--bounds", "1,1,1,0,0,0"], "--bounds"),
+            (["mesh", "--sdf", "torus", "--output", os.path.join(folder, "t.ply"), "--resolution", "1"], "--resolution"),
+            (["mesh", "--sdf", "torus", "--output", os.path.join(folder, "no", "t.ply")], "does not exist"),
+            (["eval", "--sdf", "torus", "--mesh", os.path.join(folder, "missing.ply")], "no such file"),
+        ]
+        for arguments, expected in cases:
+            result = subprocess.run([BINARY, "--batch", *arguments], env=env, capture_output=True, text=True)
+            assert result.returncode == 2, (arguments, result.stderr)
+            assert expected in result.stderr, (arguments, result.stderr)
+        assert os.listdir(folder) == []
+        # a file that is not a mesh: named, exit 1, nothing written
+        bad = os.path.join(folder, "bad.ply")
+        with open(bad, "w") as f:
+            f.write("ply\nthis is not a mesh\n")
+        result = subprocess.run([BINARY, "--batch", "eval", "--sdf", "torus", "--mesh", bad], env=env, capture_output=True, text=True)
+        assert result.returncode == 1 and "bad.ply" in result.stderr, result.stderr

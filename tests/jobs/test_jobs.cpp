@@ -84,7 +84,24 @@ std::vector<Request> unusualRequests() {
     MergeRequest merge{"all.ply", "ply", {"p0.ply", "p1.ply", "with \"quotes\" and \\.ply"}};
     BenchRequest bench{"report", 3, true, true};
     ParamsRequest params{{"family.glsl", "shape", "", {}}};
-    return {render, animate, sample, audit, merge, ListRequest{}, bench, params};
+    MeshRequest mesh;
+    mesh.sdf = {"Torus", "map", "", {{"radius", {0.25f}}}};
+    mesh.output = "t.glb";
+    mesh.resolution = 333;
+    mesh.boundsMin = {-1.5f, -0.25f, -1.0f / 3.0f};
+    mesh.boundsMax = {1.5f, 0.25f, 2.0f};
+    mesh.time = 0.5f;
+    mesh.lipschitz = 1.7f;
+    mesh.errorSamples = 1234;
+    mesh.seed = 77;
+    EvalRequest eval;
+    eval.sdf = {"Sphere", "", "", {}};
+    eval.mesh = "prediction.obj";
+    eval.points = 5000;
+    eval.tau = 0.005f;
+    eval.occupancyResolution = 0;
+    eval.seed = 3;
+    return {render, animate, sample, audit, merge, ListRequest{}, bench, params, mesh, eval};
 }
 
 } // namespace

@@ -155,3 +155,36 @@ TEST_F(MeshTest, FilesReadBackTheSameTriangles) {
     EXPECT_FALSE(meshing::readMesh(folder / "missing.ply"));
     std::filesystem::remove_all(folder);
 }
+
+TEST_F(MeshTest, EvaluationFiguresMatchTheGeometry) {
+    // Our own sphere mesh against its field: near perfect.
+    const shaders::PreparedSdf sphere = source(kSphere);
+    const meshing::Mesh mesh = extract(sphere, 64);
+    meshing::EvalOptions options;
+    options.points = 50000;
+    auto own = meshing::evaluateMesh(sphere, mesh, options);
+    ASSERT_TRUE(own) << own.error().message;
+    EXPECT_LT(own->chamferL1, 5e-4f); // chords of a radius-0.6 sphere over 1/32 cells
+    EXPECT_FLOAT_EQ(own->fscore, 1.0f);
+    EXPECT_GT(own->normalConsistency, 0.999f);
+    ASSERT_TRUE(own->iou);
+    EXPECT_GT(*own->iou, 0.99f);
+    EXPECT_TRUE(own->closed);
+    // The same mesh against a sphere 0.05 larger: every distance is 0.05 both ways, the IoU the
+    // volume ratio (0.6 / 0.65)^3 = 0.7865, nothing within tau = 0.01 and everything within 0.1.
+    const shaders::PreparedSdf larger = source("float sdf(vec3 p) { return length(p) - 0.65; }");
+    auto off = meshing::evaluateMesh(larger, mesh, options);
+    ASSERT_TRUE(off) << off.error().message;
+    EXPECT_NEAR(off->accuracyMean, 0.05f, 1e-3f);
+    EXPECT_NEAR(off->completenessMean, 0.05f, 1e-3f);
+    EXPECT_NEAR(off->chamferL1, 0.05f, 1e-3f);
+    EXPECT_NEAR(off->chamferL2, 0.0025f, 1e-4f);
+    EXPECT_NEAR(off->hausdorff, 0.05f, 2e-3f);
+    EXPECT_NEAR(*off->iou, 0.7865f, 0.01f);
+    EXPECT_EQ(off->fscore, 0.0f);
+    options.tau = 0.1f;
+    auto loose = meshing::evaluateMesh(larger, mesh, options);
+    ASSERT_TRUE(loose);
+    EXPECT_FLOAT_EQ(loose->fscore, 1.0f);
+    EXPECT_GT(loose->normalConsistency, 0.999f) << "concentric spheres have parallel normals";
+}

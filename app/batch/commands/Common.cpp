@@ -103,6 +103,8 @@ int runRequest(const jobs::Request& request, const OutputOptions& output) {
                 return runParams(r, output);
             else if constexpr (std::is_same_v<T, jobs::MeshRequest>)
                 return runMesh(r, output);
+            else if constexpr (std::is_same_v<T, jobs::EvalRequest>)
+                return runEval(r, output);
             else
                 return runBench(r, output);
         },

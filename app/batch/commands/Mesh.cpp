@@ -23,3 +23,24 @@ int runMesh(const jobs::MeshRequest& request, const OutputOptions& output) {
 }
 
 } // namespace sdfwb::app
+
+namespace sdfwb::app {
+
+int runEval(const jobs::EvalRequest& request, const OutputOptions& output) {
+    return runWithGl(request, output, [](const jobs::EvalReport& r) {
+        std::printf("%s against %s: %llu vertices, %llu triangles (%s), %.2f s\n", r.mesh.c_str(), r.sdf.c_str(),
+                    (unsigned long long)r.vertices, (unsigned long long)r.triangles, r.closed ? "closed" : "open", r.seconds);
+        std::printf("  Chamfer L1         %.4g  (mean of accuracy %.4g and completeness %.4g; not squared)\n", r.chamferL1,
+                    r.accuracyMean, r.completenessMean);
+        std::printf("  Chamfer L2         %.4g  (mean of the squared distances, both ways)\n", r.chamferL2);
+        std::printf("  F-score at %-7.3g %.4f (precision %.4f, recall %.4f)\n", r.tau, r.fscore, r.precision, r.recall);
+        std::printf("  normal consistency %.4f\n", r.normalConsistency);
+        std::printf("  Hausdorff          %.4g  (accuracy max %.4g, completeness max %.4g)\n", r.hausdorff, r.accuracyMax,
+                    r.completenessMax);
+        if (r.iou) std::printf("  volume IoU         %.4f  (%llu grid points)\n", *r.iou, (unsigned long long)r.occupancyPoints);
+        std::printf("  points             %llu on the mesh, %llu on the exact surface; distances in the SDF's units\n",
+                    (unsigned long long)r.meshPoints, (unsigned long long)r.surfacePoints);
+    });
+}
+
+} // namespace sdfwb::app

@@ -26,6 +26,7 @@ std::string toJson(const ListReport& report, int indent = 2);
 std::string toJson(const BenchReport& report, int indent = 2);
 std::string toJson(const ParamsReport& report, int indent = 2);
 std::string toJson(const MeshReport& report, int indent = 2);
+std::string toJson(const EvalReport& report, int indent = 2);
 
 // Reads a report of type T (one of the reports above) back from toJson's text.
 template <class T> Expected<T> reportFromJson(const std::string& text);

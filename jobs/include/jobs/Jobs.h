@@ -70,6 +70,7 @@ std::optional<JobError> validate(const BenchRequest& request);
 inline std::optional<JobError> validate(const ListRequest&) { return std::nullopt; }
 std::optional<JobError> validate(const ParamsRequest& request);
 std::optional<JobError> validate(const MeshRequest& request);
+std::optional<JobError> validate(const EvalRequest& request);
 
 JobResult<RenderReport> run(const RenderRequest& request, const ProgressSink& progress);
 JobResult<AnimateReport> run(const AnimateRequest& request, const ProgressSink& progress);
@@ -79,6 +80,7 @@ JobResult<MergeReport> run(const MergeRequest& request, const ProgressSink& prog
 JobResult<ListReport> run(const ListRequest& request, const ProgressSink& progress);
 JobResult<ParamsReport> run(const ParamsRequest& request, const ProgressSink& progress);
 JobResult<MeshReport> run(const MeshRequest& request, const ProgressSink& progress);
+JobResult<EvalReport> run(const EvalRequest& request, const ProgressSink& progress);
 // Writes the report's tables; the plots are drawn by the caller (bench/plot_benchmarks.py).
 JobResult<BenchReport> run(const BenchRequest& request, const ProgressSink& progress);
 

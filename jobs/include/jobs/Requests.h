@@ -148,8 +148,22 @@ struct MeshRequest {
     bool operator==(const MeshRequest&) const = default;
 };
 
+// Any mesh graded against the exact field (meshing::evaluateMesh states the conventions).
+struct EvalRequest {
+    SdfInput sdf;
+    std::string mesh; // any format assimp reads (.ply, .obj, .stl, .glb, .off, ...)
+    std::uint64_t points = 100000;
+    float tau = 0.01f;
+    int occupancyResolution = 128; // 0: no IoU
+    glm::vec3 boundsMin{-1.0f};
+    glm::vec3 boundsMax{1.0f};
+    float time = 0.0f;
+    std::uint64_t seed = 0;
+    bool operator==(const EvalRequest&) const = default;
+};
+
 using Request = std::variant<RenderRequest, AnimateRequest, SampleRequest, AuditRequest, MergeRequest, ListRequest, BenchRequest,
-                             ParamsRequest, MeshRequest>;
+                             ParamsRequest, MeshRequest, EvalRequest>;
 
 // "render", "animate", "sample", "audit", "merge", "list", "bench", "params": the CLI command of each kind.
 const char* kindName(const Request& request);
@@ -299,6 +313,23 @@ struct MeshReport {
     std::vector<std::string> warnings;
     double seconds = 0.0;
     bool operator==(const MeshReport&) const = default;
+};
+
+struct EvalReport {
+    std::string mesh;
+    std::string sdf;
+    std::uint64_t vertices = 0, triangles = 0;
+    bool closed = false;
+    std::uint64_t meshPoints = 0, surfacePoints = 0, occupancyPoints = 0;
+    float accuracyMean = 0.0f, accuracyMax = 0.0f, completenessMean = 0.0f, completenessMax = 0.0f;
+    float chamferL1 = 0.0f, chamferL2 = 0.0f, normalConsistency = 0.0f;
+    float tau = 0.0f, precision = 0.0f, recall = 0.0f, fscore = 0.0f, hausdorff = 0.0f;
+    std::optional<float> iou;
+    std::string conventions; // what each figure means (squared or not, counts, normalisation)
+    std::vector<shaders::ParameterValue> parameters;
+    std::vector<std::string> warnings;
+    double seconds = 0.0;
+    bool operator==(const EvalReport&) const = default;
 };
 
 struct BenchReport {

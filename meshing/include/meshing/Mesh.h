@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,44 @@ struct MeshError {
 };
 
 Expected<MeshError> measureError(const shaders::PreparedSdf& sdf, const Mesh& mesh, const ErrorOptions& options);
+
+// Any mesh graded against the exact field (a reconstruction, another tool's mesh). Conventions:
+//   accuracy      points spread on the mesh by area -> |f| there (the distance to the surface for
+//                 an exact field; a lower bound for a conservative one);
+//   completeness  points on the exact surface (the surface sampler) -> the nearest triangle;
+//   chamfer_l1    (mean accuracy + mean completeness) / 2, distances not squared;
+//   chamfer_l2    (mean accuracy^2 + mean completeness^2) / 2, squared distances;
+//   normal consistency: the mean |cos| between the mesh's face normal and the field's gradient,
+//                 averaged over both point sets;
+//   F-score at tau: 2PR / (P + R), P = share of mesh points within tau, R = share of surface points;
+//   Hausdorff: the larger of the two maxima; IoU: occupancy of the field (f < 0) against the mesh's
+//   (parity of ray crossings, meaningful for closed meshes) at the centres of an n^3 grid.
+// No normalisation: distances are in the SDF's units (the default bounds are [-1,1]^3).
+struct EvalOptions {
+    std::uint64_t points = 100000; // each way
+    float tau = 0.01f;
+    int occupancyResolution = 128; // 0: no IoU
+    glm::vec3 boundsMin{-1.0f};
+    glm::vec3 boundsMax{1.0f};
+    std::uint64_t seed = 0;
+    float time = 0.0f;
+    std::vector<shaders::ParameterSetting> parameters;
+};
+
+struct MeshEvaluation {
+    float accuracyMean = 0.0f, accuracyMax = 0.0f;
+    float completenessMean = 0.0f, completenessMax = 0.0f;
+    float chamferL1 = 0.0f, chamferL2 = 0.0f;
+    float normalConsistency = 0.0f;
+    float tau = 0.0f, precision = 0.0f, recall = 0.0f, fscore = 0.0f;
+    float hausdorff = 0.0f;
+    std::optional<float> iou;
+    bool closed = false; // no boundary edges (the IoU's parity test assumes it)
+    std::uint64_t meshPoints = 0, surfacePoints = 0, occupancyPoints = 0;
+    double seconds = 0.0;
+};
+
+Expected<MeshEvaluation> evaluateMesh(const shaders::PreparedSdf& sdf, const Mesh& mesh, const EvalOptions& options);
 
 // .ply (binary), .obj, .stl (binary) or .glb, by the extension; written to a temporary file
 // beside the target and renamed into place. `comment` goes where the format has room (PLY).
