@@ -193,6 +193,7 @@ template <class V> void fields(V& v, MeshReport& r) {
     v("watertight", r.watertight);
     v("lipschitz_bound", r.lipschitzBound);
     v("bound_source", r.boundSource);
+    v("field_verdict", r.fieldVerdict);
     v("blocks", r.blocks);
     v("blocks_kept", r.blocksKept);
     v("points_evaluated", r.pointsEvaluated);
@@ -203,6 +204,7 @@ template <class V> void fields(V& v, MeshReport& r) {
     v("surface_to_mesh_mean", r.surfaceToMeshMean);
     v("surface_to_mesh_max", r.surfaceToMeshMax);
     v("hausdorff", r.hausdorff);
+    v("mesh_to_surface_method", r.meshToSurfaceMethod);
     v("error_points", r.errorPoints);
     v("error_seconds", r.errorSeconds);
     v("parameters", r.parameters);

@@ -56,11 +56,10 @@ JobResult<MeshReport> run(const MeshRequest& request, const ProgressSink& progre
     options.boundsMax = request.boundsMax;
     options.time = request.time;
     options.parameters = sdf->parameters;
-    if (request.lipschitz) {
-        options.lipschitz = *request.lipschitz;
-        report.boundSource = *request.lipschitz > 0.0f ? "given (--lipschitz)" : "none: every block evaluated (--lipschitz 0)";
-    } else {
-        // A quick audit: its largest difference quotient, with a margin (the estimate is a lower bound).
+    // The audit says whether |f| is the distance (exact) or only a bound; with --lipschitz given it
+    // still runs when the error is wanted, since the error's method depends on it.
+    std::string verdict;
+    if (!request.lipschitz || request.errorSamples > 0) {
         sampling::AuditOptions audit;
         audit.samples = 20000;
         audit.seed = request.seed;
@@ -69,18 +68,26 @@ JobResult<MeshReport> run(const MeshRequest& request, const ProgressSink& progre
         audit.parameters = sdf->parameters;
         auto found = sampling::auditField(sdf->prepared, audit, {});
         if (!found) return JobError{Failure::Work, found.error().message, {}};
-        if (!std::isfinite(found->lipschitzMax) || found->verdict == "nan" || found->verdict == "discontinuous") {
-            options.lipschitz = 0.0f;
-            report.boundSource = "none: the audit found the field " + found->verdict + ", so every block is evaluated";
-        } else {
-            options.lipschitz = std::max(1.0f, 1.25f * found->lipschitzMax);
-            char text[160];
-            std::snprintf(text, sizeof text, "audit estimate: 1.25 x largest quotient %.3g, at least 1 (%.2f s)",
-                          double(found->lipschitzMax), found->seconds);
-            report.boundSource = text;
+        verdict = found->verdict;
+        if (!request.lipschitz) {
+            if (!std::isfinite(found->lipschitzMax) || found->verdict == "nan" || found->verdict == "discontinuous") {
+                options.lipschitz = 0.0f;
+                report.boundSource = "none: the audit found the field " + found->verdict + ", so every block is evaluated";
+            } else {
+                options.lipschitz = std::max(1.0f, 1.25f * found->lipschitzMax);
+                char text[160];
+                std::snprintf(text, sizeof text, "audit estimate: 1.25 x largest quotient %.3g, at least 1 (%.2f s)",
+                              double(found->lipschitzMax), found->seconds);
+                report.boundSource = text;
+            }
         }
     }
+    if (request.lipschitz) {
+        options.lipschitz = *request.lipschitz;
+        report.boundSource = *request.lipschitz > 0.0f ? "given (--lipschitz)" : "none: every block evaluated (--lipschitz 0)";
+    }
     report.lipschitzBound = options.lipschitz;
+    report.fieldVerdict = verdict;
     auto extracted = meshing::extractMesh(sdf->prepared, options, progress);
     if (progress.isCancelled()) return JobError{Failure::Cancelled, "mesh: cancelled; nothing written", {}};
     if (!extracted) return JobError{Failure::Work, extracted.error().message, {}};
@@ -109,6 +116,7 @@ JobResult<MeshReport> run(const MeshRequest& request, const ProgressSink& progre
         errorOptions.seed = request.seed;
         errorOptions.time = request.time;
         errorOptions.parameters = sdf->parameters;
+        errorOptions.fieldIsExact = verdict == "exact";
         auto error = meshing::measureError(sdf->prepared, mesh, errorOptions);
         if (!error) return JobError{Failure::Work, error.error().message, {}};
         report.meshToSurfaceMean = error->meshToSurfaceMean;
@@ -116,6 +124,7 @@ JobResult<MeshReport> run(const MeshRequest& request, const ProgressSink& progre
         report.surfaceToMeshMean = error->surfaceToMeshMean;
         report.surfaceToMeshMax = error->surfaceToMeshMax;
         report.hausdorff = error->hausdorff;
+        report.meshToSurfaceMethod = error->meshToSurfaceMethod;
         report.errorPoints = error->meshPoints + error->surfacePoints;
         report.errorSeconds = error->seconds;
     }

@@ -13,6 +13,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <unordered_map>
 
@@ -246,21 +247,22 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
     stats.pointsEvaluated += crossingValues.size();
     progress(3, 4);
 
-    // 4. One vertex per cell the surface crosses: the QEF minimiser, clamped into the cell.
+    // 4. Vertices: one per patch of surface in each cell. A cell's crossing edges are joined along
+    // its faces (an ambiguous face, with four crossings, is split by the sign of its bilinear
+    // centre, which both cells sharing it see alike), so two sheets through one cell get a vertex
+    // each and the mesh stays manifold. Each vertex is its patch's QEF minimiser, clamped into the cell.
     auto cellKey = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
         return (std::uint64_t(k) * std::uint64_t(grid.n) + std::uint64_t(j)) * std::uint64_t(grid.n) + std::uint64_t(i);
     };
-    struct CellData {
-        std::vector<glm::dvec3> points, normals;
+    auto edgeKey = [&](std::int64_t i, std::int64_t j, std::int64_t k, int axis) {
+        return grid.pointKey(i, j, k) * 3 + std::uint64_t(axis);
     };
-    std::unordered_map<std::uint64_t, CellData> cells;
+    std::unordered_map<std::uint64_t, std::uint32_t> edgeIndex;
+    edgeIndex.reserve(edges.size());
+    std::unordered_map<std::uint64_t, bool> activeCells;
     for (std::size_t e = 0; e < edges.size(); ++e) {
         const Edge& edge = edges[e];
-        glm::dvec3 n(normals[3 * e], normals[3 * e + 1], normals[3 * e + 2]);
-        const double length = glm::length(n);
-        if (!(length > 0.0) || !std::isfinite(length)) continue;
-        n /= length;
-        const glm::dvec3 p(crossings[3 * e], crossings[3 * e + 1], crossings[3 * e + 2]);
+        edgeIndex[edgeKey(edge.i, edge.j, edge.k, edge.axis)] = std::uint32_t(e);
         const int u = (edge.axis + 1) % 3, v = (edge.axis + 2) % 3;
         for (int du = -1; du <= 0; ++du)
             for (int dv = -1; dv <= 0; ++dv) {
@@ -268,26 +270,97 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
                 c[u] += du;
                 c[v] += dv;
                 if (c[u] < 0 || c[v] < 0 || c[u] >= grid.n || c[v] >= grid.n || c[edge.axis] >= grid.n) continue;
-                CellData& cell = cells[cellKey(c[0], c[1], c[2])];
-                cell.points.push_back(p);
-                cell.normals.push_back(n);
+                activeCells[cellKey(c[0], c[1], c[2])] = true;
             }
     }
+    // Local edge l = axis * 4 + (offset along axis+1) + 2 * (offset along axis+2).
+    auto localEdge = [](int axis, const int offset[3]) { return axis * 4 + offset[(axis + 1) % 3] + 2 * offset[(axis + 2) % 3]; };
+    constexpr std::uint32_t kNone = 0xffffffffu;
     Mesh mesh;
-    std::unordered_map<std::uint64_t, std::uint32_t> vertexOf;
-    vertexOf.reserve(cells.size());
-    for (auto& [key, cell] : cells) {
+    std::unordered_map<std::uint64_t, std::array<std::uint32_t, 12>> vertexOf; // cell -> the vertex of each local edge
+    vertexOf.reserve(activeCells.size());
+    std::vector<std::uint64_t> vertexCell;
+    for (const auto& [key, unused] : activeCells) {
         const std::int64_t i = std::int64_t(key % std::uint64_t(grid.n)),
                            j = std::int64_t(key / std::uint64_t(grid.n) % std::uint64_t(grid.n)),
                            k = std::int64_t(key / (std::uint64_t(grid.n) * std::uint64_t(grid.n)));
+        const std::int64_t origin[3] = {i, j, k};
+        std::array<std::int64_t, 12> global; // index into edges, or -1
+        for (int axis = 0; axis < 3; ++axis)
+            for (int b = 0; b < 4; ++b) {
+                std::int64_t s[3] = {i, j, k};
+                s[(axis + 1) % 3] += b & 1;
+                s[(axis + 2) % 3] += b >> 1;
+                auto it = edgeIndex.find(edgeKey(s[0], s[1], s[2], axis));
+                global[std::size_t(axis * 4 + b)] = it == edgeIndex.end() ? -1 : std::int64_t(it->second);
+            }
+        std::array<int, 12> parent;
+        for (int l = 0; l < 12; ++l) parent[std::size_t(l)] = l;
+        std::function<int(int)> find = [&](int x) {
+            return parent[std::size_t(x)] == x ? x : parent[std::size_t(x)] = find(parent[std::size_t(x)]);
+        };
+        auto join = [&](int a, int b) { parent[std::size_t(find(a))] = find(b); };
+        for (int w = 0; w < 3; ++w)
+            for (int side = 0; side < 2; ++side) {
+                const int up = (w + 1) % 3, vp = (w + 2) % 3;
+                auto edgeAt = [&](int axis, int offU, int offV) {
+                    int offset[3] = {0, 0, 0};
+                    offset[w] = side;
+                    offset[up] = offU;
+                    offset[vp] = offV;
+                    return localEdge(axis, offset);
+                };
+                const int eu0 = edgeAt(up, 0, 0), eu1 = edgeAt(up, 0, 1), ev0 = edgeAt(vp, 0, 0), ev1 = edgeAt(vp, 1, 0);
+                std::vector<int> present;
+                for (int l : {eu0, eu1, ev0, ev1})
+                    if (global[std::size_t(l)] >= 0) present.push_back(l);
+                if (present.size() == 4) {
+                    auto corner = [&](int offU, int offV) {
+                        std::int64_t c[3] = {origin[0], origin[1], origin[2]};
+                        c[w] += side;
+                        c[up] += offU;
+                        c[vp] += offV;
+                        return value(c[0], c[1], c[2]);
+                    };
+                    const float c00 = corner(0, 0), centre = 0.25f * (c00 + corner(1, 0) + corner(0, 1) + corner(1, 1));
+                    if (inside(centre) == inside(c00)) {
+                        join(eu0, ev1);
+                        join(ev0, eu1);
+                    } else {
+                        join(eu0, ev0);
+                        join(eu1, ev1);
+                    }
+                } else {
+                    for (std::size_t q = 1; q < present.size(); ++q) join(present[0], present[q]);
+                }
+            }
+        std::array<std::uint32_t, 12> vertexFor;
+        vertexFor.fill(kNone);
         const glm::dvec3 lo = glm::dvec3(grid.point(i, j, k)), hi = glm::dvec3(grid.point(i + 1, j + 1, k + 1));
-        glm::dvec3 x = solveQef(cell.points, cell.normals);
-        const glm::dvec3 clamped = glm::clamp(x, lo, hi);
-        if (clamped != x) ++stats.clampedVertices;
-        vertexOf[key] = std::uint32_t(mesh.vertices.size());
-        mesh.vertices.push_back(glm::vec3(clamped));
+        for (int root = 0; root < 12; ++root) {
+            std::vector<glm::dvec3> points, patchNormals;
+            std::vector<int> members;
+            for (int l = 0; l < 12; ++l) {
+                if (global[std::size_t(l)] < 0 || find(l) != root) continue;
+                members.push_back(l);
+                const std::size_t e = std::size_t(global[std::size_t(l)]);
+                glm::dvec3 n(normals[3 * e], normals[3 * e + 1], normals[3 * e + 2]);
+                const double length = glm::length(n);
+                points.emplace_back(crossings[3 * e], crossings[3 * e + 1], crossings[3 * e + 2]);
+                patchNormals.push_back(length > 0.0 && std::isfinite(length) ? n / length : glm::dvec3(0.0));
+            }
+            if (members.empty()) continue;
+            const glm::dvec3 x = solveQef(points, patchNormals);
+            const glm::dvec3 clamped = glm::clamp(x, lo, hi);
+            if (clamped != x) ++stats.clampedVertices;
+            const auto id = std::uint32_t(mesh.vertices.size());
+            mesh.vertices.push_back(glm::vec3(clamped));
+            vertexCell.push_back(key);
+            for (int l : members) vertexFor[std::size_t(l)] = id;
+        }
+        vertexOf[key] = vertexFor;
     }
-    stats.activeCells = cells.size();
+    stats.activeCells = activeCells.size();
     // On curved surfaces the planes' minimiser lies off the surface by about h^2 times the
     // curvature: two Newton steps along the gradient put each vertex on it (a vertex already on a
     // sharp edge or corner has f = 0 and stays). Steps are kept within the vertex's cell.
@@ -297,7 +370,8 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
         for (const glm::vec3& v : mesh.vertices) positions.insert(positions.end(), {v.x, v.y, v.z});
         if (auto ok = probe.evaluate(positions, fieldValues, &gradients, normalStep); !ok) return ok.error();
         stats.pointsEvaluated += fieldValues.size();
-        for (const auto& [key, vertex] : vertexOf) {
+        for (std::uint32_t vertex = 0; vertex < mesh.vertices.size(); ++vertex) {
+            const std::uint64_t key = vertexCell[vertex];
             const float f = fieldValues[vertex];
             const glm::vec3 g(gradients[3 * vertex], gradients[3 * vertex + 1], gradients[3 * vertex + 2]);
             const float g2 = glm::dot(g, g);
@@ -326,10 +400,15 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
                 break;
             }
             auto it = vertexOf.find(cellKey(c[0], c[1], c[2]));
-            if (it == vertexOf.end())
+            // The edge seen from this cell: at its +u side when the cell lies at -u, and so on.
+            int offset[3] = {0, 0, 0};
+            offset[u] = -offsets[q][0];
+            offset[v] = -offsets[q][1];
+            const std::uint32_t vertex = it == vertexOf.end() ? kNone : it->second[std::size_t(localEdge(edge.axis, offset))];
+            if (vertex == kNone)
                 complete = false;
             else
-                quad[q] = it->second;
+                quad[q] = vertex;
         }
         if (!complete) continue;
         // (u, v) counter-clockwise looking down +axis; the surface faces +axis when the edge starts inside.

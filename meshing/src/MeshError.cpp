@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <random>
 
@@ -191,31 +192,49 @@ Expected<MeshError> measureError(const shaders::PreparedSdf& sdf, const Mesh& me
     const auto start = std::chrono::steady_clock::now();
     if (mesh.indices.empty()) return makeError("mesh error: the mesh has no triangles");
     MeshError error;
-    // Mesh -> surface: |f| at the vertices and at area-weighted points on the faces.
-    const MeshSamples onMesh = sampleOnMesh(mesh, options.meshPoints, options.seed, true);
-    {
-        detail::FieldProbe probe;
-        if (auto ok = probe.build(sdf, "analysis/points.glsl", options.time, options.parameters); !ok) return ok.error();
-        std::vector<float> values;
-        if (auto ok = probe.evaluate(onMesh.xyz, values, nullptr); !ok) return ok.error();
-        double sum = 0.0;
-        std::uint64_t counted = 0;
-        for (float f : values) {
-            if (!std::isfinite(f)) continue;
-            sum += std::abs(double(f));
-            error.meshToSurfaceMax = std::max(error.meshToSurfaceMax, std::abs(f));
-            ++counted;
-        }
-        error.meshPoints = counted;
-        error.meshToSurfaceMean = counted ? float(sum / double(counted)) : 0.0f;
-    }
-    // Surface -> mesh: points on the zero set to the nearest triangle.
+    // Surface points first: the reference for surface -> mesh, and for mesh -> surface when the
+    // field is not exact.
     std::vector<float> surface, distances, gradients;
     {
         detail::FieldProbe probe;
         if (auto ok = probe.build(sdf, "surface", options.time, options.parameters); !ok) return ok.error();
         if (auto ok = probe.generate(options.surfacePoints, options.seed, surface, distances, gradients); !ok) return ok.error();
     }
+    // Mesh -> surface, at the vertices and at area-weighted points on the faces: |f| for an exact
+    // field, else the distance to the nearest surface point.
+    const MeshSamples onMesh = sampleOnMesh(mesh, options.meshPoints, options.seed, true);
+    std::vector<float> meshDistances, meshGradients;
+    {
+        detail::FieldProbe probe;
+        if (auto ok = probe.build(sdf, "analysis/points.glsl", options.time, options.parameters); !ok) return ok.error();
+        if (auto ok = probe.evaluate(onMesh.xyz, meshDistances, &meshGradients); !ok) return ok.error();
+    }
+    if (options.fieldIsExact) {
+        error.meshToSurfaceMethod = "|f| (the field is exact: |f| is the distance)";
+        for (float& d : meshDistances) d = std::abs(d);
+    } else {
+        // |f| underestimates the distance where |grad f| < 1; one Newton step along the gradient,
+        // |f| / |grad f|, is the first-order distance to the zero set for any smooth field.
+        error.meshToSurfaceMethod =
+            "|f| / max(|grad f|, 0.25) (the field is not exact, so |f| alone underestimates the distance)";
+        for (std::size_t s = 0; s < meshDistances.size(); ++s) {
+            const float g = glm::length(glm::vec3(meshGradients[3 * s], meshGradients[3 * s + 1], meshGradients[3 * s + 2]));
+            meshDistances[s] = std::abs(meshDistances[s]) / std::max(g, 0.25f); // at most 4 x |f| where the gradient vanishes
+        }
+    }
+    {
+        double sum = 0.0;
+        std::uint64_t counted = 0;
+        for (float d : meshDistances) {
+            if (!std::isfinite(d)) continue;
+            sum += double(d);
+            error.meshToSurfaceMax = std::max(error.meshToSurfaceMax, d);
+            ++counted;
+        }
+        error.meshPoints = counted;
+        error.meshToSurfaceMean = counted ? float(sum / double(counted)) : 0.0f;
+    }
+    // Surface -> mesh: the surface points to the nearest triangle.
     TriangleLocator locator(mesh);
     double sum = 0.0;
     std::uint64_t counted = 0;

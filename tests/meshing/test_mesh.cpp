@@ -121,6 +121,15 @@ TEST_F(MeshTest, ClosedDatasetShapesAreWatertight) {
     }
 }
 
+TEST_F(MeshTest, TwoSheetsInOneCellGetAVertexEach) {
+    // The mug's wall is thinner than a cell at 128: one vertex per cell made ~100 edges shared by
+    // four triangles; a vertex per patch of surface keeps every edge to two.
+    const meshing::Mesh mesh = extract(sdfwb::testing::loadSourceSdf("dataset/Manufactured/Mug.glsl"), 128);
+    const meshing::Topology topology = meshing::checkTopology(mesh);
+    EXPECT_EQ(topology.nonManifoldEdges, 0u);
+    EXPECT_EQ(topology.boundaryEdges, 0u);
+}
+
 TEST_F(MeshTest, SkippingEmptyBlocksLosesNothing) {
     const shaders::PreparedSdf torus = sdfwb::testing::loadSourceSdf("dataset/Geometry/Torus.glsl");
     meshing::MeshOptions options;

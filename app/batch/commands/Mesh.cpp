@@ -19,6 +19,8 @@ int runMesh(const jobs::MeshRequest& request, const OutputOptions& output) {
                         "(%llu points, %.2f s)\n",
                         *r.meshToSurfaceMean, *r.meshToSurfaceMax, *r.surfaceToMeshMean, *r.surfaceToMeshMax, *r.hausdorff,
                         (unsigned long long)r.errorPoints, r.errorSeconds);
+        if (r.hausdorff)
+            std::printf("  mesh->surface by    %s; field audited %s\n", r.meshToSurfaceMethod.c_str(), r.fieldVerdict.c_str());
     });
 }
 

@@ -302,11 +302,13 @@ struct MeshReport {
     std::uint64_t boundaryEdges = 0, nonManifoldEdges = 0, degenerateTriangles = 0;
     bool watertight = false;
     float lipschitzBound = 0.0f;
-    std::string boundSource; // where the bound came from
+    std::string boundSource;  // where the bound came from
+    std::string fieldVerdict; // the quick audit's verdict (exact, conservative, ...)
     std::uint64_t blocks = 0, blocksKept = 0, pointsEvaluated = 0, clampedVertices = 0;
     double meshSeconds = 0.0;
     // The error against the exact field (absent with error_samples 0).
     std::optional<float> meshToSurfaceMean, meshToSurfaceMax, surfaceToMeshMean, surfaceToMeshMax, hausdorff;
+    std::string meshToSurfaceMethod; // |f| for an exact field, else the nearest surface point
     std::uint64_t errorPoints = 0;
     double errorSeconds = 0.0;
     std::vector<shaders::ParameterValue> parameters;

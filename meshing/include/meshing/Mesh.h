@@ -69,10 +69,14 @@ struct ErrorOptions {
     std::uint64_t seed = 0;
     float time = 0.0f;
     std::vector<shaders::ParameterSetting> parameters;
+    // False for a field the audit did not find exact: |f| then underestimates the distance, and
+    // mesh -> surface uses |f| / |grad f| (one Newton step to the zero set) instead.
+    bool fieldIsExact = true;
 };
 
 struct MeshError {
     float meshToSurfaceMean = 0.0f, meshToSurfaceMax = 0.0f;
+    std::string meshToSurfaceMethod; // |f|, or |f| / |grad f| for a field that is not exact
     float surfaceToMeshMean = 0.0f, surfaceToMeshMax = 0.0f;
     float hausdorff = 0.0f; // the larger of the two maxima
     std::uint64_t meshPoints = 0, surfacePoints = 0;
