@@ -14,6 +14,8 @@
 #include <sampling/SamplerLibrary.h>
 
 #include <pybind11/numpy.h>
+
+#include <glm/vec3.hpp>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -298,6 +300,46 @@ py::object params(const std::string& sdf, const std::string& entry) {
     return fromJson(jobs::toJson(*result));
 }
 
+// The zero set as a mesh: vertices (V,3) float32 and faces (F,3) uint32, arrays over the
+// extraction's own buffers (no copies), and the report `sdfwb --batch mesh --json` prints.
+py::dict mesh(const std::string& sdf, int resolution, const py::object& bounds, float time, const py::object& lipschitz,
+              std::uint64_t errorSamples, std::uint64_t seed, const std::string& entry, const py::object& params) {
+    jobs::MeshRequest request;
+    request.sdf = sdfInput(sdf, entry, params);
+    request.resolution = resolution;
+    request.time = time;
+    request.errorSamples = errorSamples;
+    request.seed = seed;
+    if (!bounds.is_none()) {
+        auto values = bounds.cast<std::vector<float>>();
+        if (values.size() != 6) throw py::value_error("bounds: expected (minx, miny, minz, maxx, maxy, maxz)");
+        request.boundsMin = {values[0], values[1], values[2]};
+        request.boundsMax = {values[3], values[4], values[5]};
+    }
+    if (!lipschitz.is_none()) request.lipschitz = lipschitz.cast<float>();
+    std::optional<jobs::JobResult<jobs::MeshedSdf>> result;
+    {
+        py::gil_scoped_release release;
+        std::lock_guard lock(g_glMutex);
+        context();
+        result.emplace(jobs::meshSdf(request, {}));
+        releaseContext();
+    }
+    if (!*result) raise(result->error);
+    jobs::MeshedSdf& meshed = *result->report;
+    auto* vertices = new std::vector<glm::vec3>(std::move(meshed.mesh.vertices));
+    auto* indices = new std::vector<std::uint32_t>(std::move(meshed.mesh.indices));
+    py::capsule ownsVertices(vertices, [](void* p) { delete static_cast<std::vector<glm::vec3>*>(p); });
+    py::capsule ownsIndices(indices, [](void* p) { delete static_cast<std::vector<std::uint32_t>*>(p); });
+    static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "vertices are three packed floats");
+    py::dict out;
+    out["vertices"] = py::array_t<float>({py::ssize_t(vertices->size()), py::ssize_t(3)},
+                                         reinterpret_cast<float*>(vertices->data()), ownsVertices);
+    out["faces"] = py::array_t<std::uint32_t>({py::ssize_t(indices->size() / 3), py::ssize_t(3)}, indices->data(), ownsIndices);
+    out["report"] = fromJson(jobs::toJson(meshed.report));
+    return out;
+}
+
 // Grades any mesh file against the exact field: the report `sdfwb --batch eval --json` prints.
 py::object evaluateMesh(const std::string& mesh, const std::string& sdf, float tau, std::uint64_t points, int occupancyResolution,
                         std::uint64_t seed, float time, const std::string& entry, const py::object& params) {
@@ -370,6 +412,13 @@ PYBIND11_MODULE(sdfwb, m) {
           "The parameters `sdf` declares (uniforms with a default, annotated // @range MIN MAX @step S @log @label \"...\"\n"
           "@color): a dict with `parameters` (name, type, default, minimum, maximum, step, log, color, label, line, column)\n"
           "and `warnings`, as `sdfwb --batch params --json` prints it. Errors raise ValueError with file:line:column.");
+    m.def("mesh", &mesh, py::arg("sdf"), py::arg("resolution") = 128, py::arg("bounds") = py::none(), py::arg("time") = 0.0f,
+          py::arg("lipschitz") = py::none(), py::arg("error_samples") = 0, py::arg("seed") = 0, py::arg("entry") = "",
+          py::arg("params") = py::none(),
+          "The zero set of `sdf` as a mesh (dual contouring, sharp edges kept): a dict with `vertices` (V,3) float32 and\n"
+          "`faces` (F,3) uint32, arrays over the extraction's own memory (no copies), and `report` (what\n"
+          "`sdfwb --batch mesh --json` prints: topology, the Lipschitz bound used, timings; the error against the field when\n"
+          "error_samples > 0). bounds: (minx, miny, minz, maxx, maxy, maxz), default the [-1,1]^3 box.");
     m.def("evaluate_mesh", &evaluateMesh, py::arg("mesh"), py::arg("sdf"), py::arg("tau") = 0.01f, py::arg("points") = 100000,
           py::arg("occupancy_resolution") = 128, py::arg("seed") = 0, py::arg("time") = 0.0f, py::arg("entry") = "",
           py::arg("params") = py::none(),

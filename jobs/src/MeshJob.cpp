@@ -13,10 +13,10 @@
 
 namespace sdfwb::jobs {
 
-std::optional<JobError> validate(const MeshRequest& request) {
-    if (!meshing::canWriteMesh(request.output))
-        return JobError{
-            Failure::Usage, "--output: '" + request.output + "': unsupported mesh type (use .ply, .obj, .stl or .glb)", {}};
+namespace {
+
+// Everything but the output file.
+std::optional<JobError> validateSettings(const MeshRequest& request) {
     if (request.resolution < 2 || request.resolution > 2048)
         return JobError{Failure::Usage, "--resolution: must be 2..2048, got " + std::to_string(request.resolution), {}};
     for (int a = 0; a < 3; ++a)
@@ -29,19 +29,28 @@ std::optional<JobError> validate(const MeshRequest& request) {
     if (request.lipschitz && (!std::isfinite(*request.lipschitz) || *request.lipschitz < 0.0f))
         return JobError{Failure::Usage, "--lipschitz: expected a finite number >= 0 (0 skips nothing)", {}};
     if (request.errorSamples > 10000000) return JobError{Failure::Usage, "--error-samples: at most 10000000", {}};
+    ParamsRequest sdfOnly{request.sdf};
+    return validate(sdfOnly); // the SDF's name, entry and parameter values
+}
+
+} // namespace
+
+std::optional<JobError> validate(const MeshRequest& request) {
+    if (!meshing::canWriteMesh(request.output))
+        return JobError{
+            Failure::Usage, "--output: '" + request.output + "': unsupported mesh type (use .ply, .obj, .stl or .glb)", {}};
     const std::filesystem::path folder =
         std::filesystem::path(request.output).parent_path().empty() ? "." : std::filesystem::path(request.output).parent_path();
     std::error_code ec;
     if (!std::filesystem::is_directory(folder, ec))
         return JobError{
             Failure::Usage, "--output: '" + request.output + "': folder '" + folder.string() + "' does not exist", {}};
-    ParamsRequest sdfOnly{request.sdf};
-    return validate(sdfOnly); // the SDF's name, entry and parameter values
+    return validateSettings(request);
 }
 
-JobResult<MeshReport> run(const MeshRequest& request, const ProgressSink& progress) {
+JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& progress) {
     const auto start = std::chrono::steady_clock::now();
-    if (auto error = validate(request)) return *error;
+    if (auto error = validateSettings(request)) return *error;
     auto sdf = openSdf(request.sdf, "mesh");
     if (!sdf) return sdf.error;
     MeshReport report;
@@ -91,7 +100,8 @@ JobResult<MeshReport> run(const MeshRequest& request, const ProgressSink& progre
     auto extracted = meshing::extractMesh(sdf->prepared, options, progress);
     if (progress.isCancelled()) return JobError{Failure::Cancelled, "mesh: cancelled; nothing written", {}};
     if (!extracted) return JobError{Failure::Work, extracted.error().message, {}};
-    const meshing::Mesh& mesh = extracted->first;
+    MeshedSdf result{std::move(extracted->first), {}};
+    const meshing::Mesh& mesh = result.mesh;
     const meshing::MeshStats& stats = extracted->second;
     if (mesh.indices.empty())
         return JobError{Failure::Work,
@@ -128,8 +138,19 @@ JobResult<MeshReport> run(const MeshRequest& request, const ProgressSink& progre
         report.errorPoints = error->meshPoints + error->surfacePoints;
         report.errorSeconds = error->seconds;
     }
-    if (auto written = meshing::writeMesh(request.output, mesh); !written)
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.report = std::move(report);
+    return result;
+}
+
+JobResult<MeshReport> run(const MeshRequest& request, const ProgressSink& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    if (auto error = validate(request)) return *error;
+    auto meshed = meshSdf(request, progress);
+    if (!meshed) return meshed.error;
+    if (auto written = meshing::writeMesh(request.output, meshed->mesh); !written)
         return JobError{Failure::Work, written.error().message, {}};
+    MeshReport report = meshed->report;
     report.output = request.output;
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;

@@ -354,3 +354,31 @@ def test_mesh_and_eval_name_bad_arguments():
             f.write("ply\nthis is not a mesh\n")
         result = subprocess.run([BINARY, "--batch", "eval", "--sdf", "torus", "--mesh", bad], env=env, capture_output=True, text=True)
         assert result.returncode == 1 and "bad.ply" in result.stderr, result.stderr
+
+
+def test_mesh_returns_arrays_over_its_own_memory_and_the_clis_mesh():
+    result = sdfwb.mesh("box", resolution=48, error_samples=20000)
+    v, f = result["vertices"], result["faces"]
+    assert v.dtype == np.float32 and v.shape[1] == 3 and f.dtype == np.uint32 and f.shape[1] == 3
+    assert not v.flags.owndata and v.base is not None and v.flags.c_contiguous  # a view of the extraction's buffer
+    assert not f.flags.owndata and f.base is not None
+    report = result["report"]
+    assert report["vertices"] == len(v) and report["triangles"] == len(f) and report["watertight"]
+    assert report["hausdorff"] < 1e-3
+    # the dataset box's corners (0.8, 0.5, 0.6) are vertices
+    for corner in np.array(np.meshgrid([-0.8, 0.8], [-0.5, 0.5], [-0.6, 0.6])).T.reshape(-1, 3):
+        assert np.min(np.linalg.norm(v - corner, axis=1)) < 1e-3, corner
+    # the same mesh as the CLI writes
+    with tempfile.TemporaryDirectory() as folder:
+        path = os.path.join(folder, "box.ply")
+        env = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
+        subprocess.run([BINARY, "--batch", "mesh", "--sdf", "box", "--resolution", "48", "--error-samples", "0", "--output", path,
+                        "--quiet"], check=True, env=env)
+        import meshio
+        written = meshio.read(path)
+        assert np.array_equal(written.points.astype(np.float32), v)
+        assert np.array_equal(written.cells_dict["triangle"], f)
+    half = sdfwb.mesh("sphere", resolution=32, bounds=(-1, -1, 0, 1, 1, 1))  # the upper half: cut open by the bounds
+    assert np.all(half["vertices"][:, 2] >= -1e-6) and half["report"]["boundary_edges"] > 0
+    with pytest.raises(ValueError, match="--resolution"):
+        sdfwb.mesh("sphere", resolution=1)

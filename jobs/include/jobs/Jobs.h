@@ -6,6 +6,7 @@
 // a current GL 4.3 context on the calling thread (renderer::HeadlessContext); merge and list none.
 
 #include <jobs/Requests.h>
+#include <meshing/Mesh.h>
 
 #include <core/Progress.h>
 #include <shaders/Diagnostic.h>
@@ -80,6 +81,13 @@ JobResult<MergeReport> run(const MergeRequest& request, const ProgressSink& prog
 JobResult<ListReport> run(const ListRequest& request, const ProgressSink& progress);
 JobResult<ParamsReport> run(const ParamsRequest& request, const ProgressSink& progress);
 JobResult<MeshReport> run(const MeshRequest& request, const ProgressSink& progress);
+// The mesh of a request and its report, without writing a file (Python's sdfwb.mesh); the
+// request's output is not used.
+struct MeshedSdf {
+    meshing::Mesh mesh;
+    MeshReport report;
+};
+JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& progress);
 JobResult<EvalReport> run(const EvalRequest& request, const ProgressSink& progress);
 // Writes the report's tables; the plots are drawn by the caller (bench/plot_benchmarks.py).
 JobResult<BenchReport> run(const BenchRequest& request, const ProgressSink& progress);
