@@ -139,28 +139,55 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
     stats.blocksKept = kept.size();
     progress(1, 4);
 
-    // 2. The grid points of the kept blocks (shared corners evaluated once).
-    std::unordered_map<std::uint64_t, std::uint32_t> pointIndex;
+    // 2. The grid points of the kept blocks, (B+1)^3 per block in a dense array (a point on a face
+    // two kept blocks share is evaluated by both, at the same coordinates, so to the same value).
+    constexpr int kSide = kBlock + 1;
+    constexpr std::size_t kPerBlock = std::size_t(kSide) * kSide * kSide;
+    std::vector<std::int32_t> blockSlot(std::size_t(blocksPerAxis) * blocksPerAxis * blocksPerAxis, -1);
     std::vector<float> points;
-    auto addPoint = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
-        auto [it, inserted] = pointIndex.try_emplace(grid.pointKey(i, j, k), std::uint32_t(points.size() / 3));
-        if (inserted) {
-            const glm::vec3 p = grid.point(i, j, k);
-            points.insert(points.end(), {p.x, p.y, p.z});
-        }
-    };
-    for (const auto& b : kept)
-        for (int k = b[2] * kBlock; k <= std::min(grid.n, (b[2] + 1) * kBlock); ++k)
-            for (int j = b[1] * kBlock; j <= std::min(grid.n, (b[1] + 1) * kBlock); ++j)
-                for (int i = b[0] * kBlock; i <= std::min(grid.n, (b[0] + 1) * kBlock); ++i) addPoint(i, j, k);
+    points.reserve(3 * kPerBlock * kept.size());
+    for (std::size_t slot = 0; slot < kept.size(); ++slot) {
+        const auto& b = kept[slot];
+        blockSlot[(std::size_t(b[2]) * blocksPerAxis + std::size_t(b[1])) * blocksPerAxis + std::size_t(b[0])] =
+            std::int32_t(slot);
+        for (int k = 0; k < kSide; ++k)
+            for (int j = 0; j < kSide; ++j)
+                for (int i = 0; i < kSide; ++i) {
+                    // Points past the grid's far side (partial last blocks) are clamped onto it.
+                    const glm::vec3 p = grid.point(std::min(b[0] * kBlock + i, grid.n), std::min(b[1] * kBlock + j, grid.n),
+                                                   std::min(b[2] * kBlock + k, grid.n));
+                    points.insert(points.end(), {p.x, p.y, p.z});
+                }
+    }
     std::vector<float> values;
     if (auto ok = probe.evaluate(points, values, nullptr); !ok) return ok.error();
     stats.pointsEvaluated += values.size();
     if (progress.isCancelled()) return makeError("mesh: cancelled");
     progress(2, 4);
+    // The value at grid point (i, j, k) from a kept block that holds it; NaN when none does.
     auto value = [&](std::int64_t i, std::int64_t j, std::int64_t k) -> float {
-        auto it = pointIndex.find(grid.pointKey(i, j, k));
-        return it == pointIndex.end() ? std::numeric_limits<float>::quiet_NaN() : values[it->second];
+        const std::int64_t c[3] = {i, j, k};
+        std::int64_t candidates[3][2];
+        int counts[3];
+        for (int a = 0; a < 3; ++a) {
+            counts[a] = 0;
+            const std::int64_t block = std::min<std::int64_t>(c[a] / kBlock, blocksPerAxis - 1);
+            candidates[a][counts[a]++] = block;
+            if (c[a] % kBlock == 0 && c[a] / kBlock - 1 >= 0 && c[a] / kBlock - 1 != block)
+                candidates[a][counts[a]++] = c[a] / kBlock - 1;
+        }
+        for (int x = 0; x < counts[0]; ++x)
+            for (int y = 0; y < counts[1]; ++y)
+                for (int z = 0; z < counts[2]; ++z) {
+                    const std::int64_t bx = candidates[0][x], by = candidates[1][y], bz = candidates[2][z];
+                    const std::int32_t slot =
+                        blockSlot[(std::size_t(bz) * blocksPerAxis + std::size_t(by)) * blocksPerAxis + std::size_t(bx)];
+                    if (slot < 0) continue;
+                    const std::int64_t li = i - bx * kBlock, lj = j - by * kBlock, lk = k - bz * kBlock;
+                    if (li < 0 || lj < 0 || lk < 0 || li > kBlock || lj > kBlock || lk > kBlock) continue;
+                    return values[std::size_t(slot) * kPerBlock + std::size_t((lk * kSide + lj) * kSide + li)];
+                }
+        return std::numeric_limits<float>::quiet_NaN();
     };
     auto inside = [](float f) { return f < 0.0f; };
 

@@ -20,10 +20,10 @@ Expected<void> FieldProbe::build(const shaders::PreparedSdf& sdf, const std::str
 Expected<void> FieldProbe::evaluate(const std::vector<float>& points, std::vector<float>& distances,
                                     std::vector<float>* gradients, float gradientStep) {
     const std::uint64_t n = points.size() / 3;
-    distances.assign(n, 0.0f);
-    std::vector<float> positions(3 * n), scratch;
-    std::vector<float>& grad = gradients ? *gradients : scratch;
-    grad.assign(3 * n, 0.0f);
+    distances.resize(n);
+    m_positions.resize(3 * n);
+    std::vector<float>& grad = gradients ? *gradients : m_scratch;
+    grad.resize(3 * n);
     if (n == 0) return {};
     sampling::SamplingJob job;
     job.count = n;
@@ -31,7 +31,7 @@ Expected<void> FieldProbe::evaluate(const std::vector<float>& points, std::vecto
     job.gradientStep = gradientStep;
     job.inputPoints = points.data();
     job.sdfParameters = m_parameters;
-    auto report = sampling::sampleInto(m_compute, job, positions.data(), distances.data(), grad.data(), {});
+    auto report = sampling::sampleInto(m_compute, job, m_positions.data(), distances.data(), grad.data(), {});
     if (!report) return report.error();
     return {};
 }

@@ -30,6 +30,7 @@ private:
     renderer::SampleCompute m_compute;
     float m_time = 0.0f;
     std::vector<shaders::ParameterSetting> m_parameters;
+    std::vector<float> m_positions, m_scratch; // reused between calls (no page faults per call)
 };
 
 } // namespace sdfwb::meshing::detail
