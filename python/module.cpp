@@ -235,6 +235,21 @@ void save(const std::string& path, py::array_t<float, py::array::c_style | py::a
     if (!written) throw std::runtime_error(written.error().message);
 }
 
+// Runs `work(request)` (a job returning a JobResult) with the GIL released and the module's GL
+// context current; raises its failure as a Python exception.
+template <class Request, class Work> auto runOnGl(const Request& request, Work work) {
+    std::optional<decltype(work(request))> result;
+    {
+        py::gil_scoped_release release;
+        std::lock_guard lock(g_glMutex);
+        context();
+        result.emplace(work(request));
+        releaseContext();
+    }
+    if (!*result) raise(result->error);
+    return std::move(*result);
+}
+
 py::object audit(const std::string& sdf, std::uint64_t samples, std::uint64_t seed, float time, const std::string& entry,
                  float probeDistance, const py::object& params) {
     jobs::AuditRequest request;
@@ -244,16 +259,8 @@ py::object audit(const std::string& sdf, std::uint64_t samples, std::uint64_t se
     request.time = time;
     request.probeDistance = probeDistance;
     if (auto error = jobs::validate(request)) raise(*error);
-    std::optional<jobs::JobResult<jobs::AuditJobReport>> result;
-    {
-        py::gil_scoped_release release;
-        std::lock_guard lock(g_glMutex);
-        context();
-        result.emplace(jobs::run(request, {}));
-        releaseContext();
-    }
-    if (!*result) raise(result->error);
-    return fromJson(jobs::toJson(**result));
+    auto result = runOnGl(request, [](const jobs::AuditRequest& r) { return jobs::run(r, {}); });
+    return fromJson(jobs::toJson(*result));
 }
 
 // Any request, as a dict or its JSON text (what `sdfwb --batch CMD ... --print-request` prints);
@@ -317,16 +324,8 @@ py::dict mesh(const std::string& sdf, int resolution, const py::object& bounds, 
         request.boundsMax = {values[3], values[4], values[5]};
     }
     if (!lipschitz.is_none()) request.lipschitz = lipschitz.cast<float>();
-    std::optional<jobs::JobResult<jobs::MeshedSdf>> result;
-    {
-        py::gil_scoped_release release;
-        std::lock_guard lock(g_glMutex);
-        context();
-        result.emplace(jobs::meshSdf(request, {}));
-        releaseContext();
-    }
-    if (!*result) raise(result->error);
-    jobs::MeshedSdf& meshed = *result->report;
+    auto result = runOnGl(request, [](const jobs::MeshRequest& r) { return jobs::meshSdf(r, {}); });
+    jobs::MeshedSdf& meshed = *result.report;
     auto* vertices = new std::vector<glm::vec3>(std::move(meshed.mesh.vertices));
     auto* indices = new std::vector<std::uint32_t>(std::move(meshed.mesh.indices));
     py::capsule ownsVertices(vertices, [](void* p) { delete static_cast<std::vector<glm::vec3>*>(p); });
@@ -352,16 +351,8 @@ py::object evaluateMesh(const std::string& mesh, const std::string& sdf, float t
     request.seed = seed;
     request.time = time;
     if (auto error = jobs::validate(request)) raise(*error);
-    std::optional<jobs::JobResult<jobs::EvalReport>> result;
-    {
-        py::gil_scoped_release release;
-        std::lock_guard lock(g_glMutex);
-        context();
-        result.emplace(jobs::run(request, {}));
-        releaseContext();
-    }
-    if (!*result) raise(result->error);
-    return fromJson(jobs::toJson(**result));
+    auto result = runOnGl(request, [](const jobs::EvalRequest& r) { return jobs::run(r, {}); });
+    return fromJson(jobs::toJson(*result));
 }
 
 py::list listSdfs() {

@@ -15,17 +15,21 @@ namespace sdfwb::jobs {
 
 namespace {
 
+std::optional<JobError> checkBoundsAndTime(const glm::vec3& low, const glm::vec3& high, float time) {
+    for (int a = 0; a < 3; ++a)
+        if (!std::isfinite(low[a]) || !std::isfinite(high[a]) || !(high[a] > low[a]))
+            return JobError{Failure::Usage,
+                            "--bounds: expected finite MINX,MINY,MINZ,MAXX,MAXY,MAXZ with each maximum above its minimum",
+                            {}};
+    if (!std::isfinite(time)) return JobError{Failure::Usage, "--time: expected a finite number", {}};
+    return std::nullopt;
+}
+
 // Everything but the output file.
 std::optional<JobError> validateSettings(const MeshRequest& request) {
     if (request.resolution < 2 || request.resolution > 2048)
         return JobError{Failure::Usage, "--resolution: must be 2..2048, got " + std::to_string(request.resolution), {}};
-    for (int a = 0; a < 3; ++a)
-        if (!std::isfinite(request.boundsMin[a]) || !std::isfinite(request.boundsMax[a]) ||
-            !(request.boundsMax[a] > request.boundsMin[a]))
-            return JobError{Failure::Usage,
-                            "--bounds: expected finite MINX,MINY,MINZ,MAXX,MAXY,MAXZ with each maximum above its minimum",
-                            {}};
-    if (!std::isfinite(request.time)) return JobError{Failure::Usage, "--time: expected a finite number", {}};
+    if (auto error = checkBoundsAndTime(request.boundsMin, request.boundsMax, request.time)) return error;
     if (request.lipschitz && (!std::isfinite(*request.lipschitz) || *request.lipschitz < 0.0f))
         return JobError{Failure::Usage, "--lipschitz: expected a finite number >= 0 (0 skips nothing)", {}};
     if (request.errorSamples > 10000000) return JobError{Failure::Usage, "--error-samples: at most 10000000", {}};
@@ -170,13 +174,7 @@ std::optional<JobError> validate(const EvalRequest& request) {
         return JobError{Failure::Usage, "--tau: must be a positive number", {}};
     if (request.occupancyResolution < 0 || request.occupancyResolution > 512)
         return JobError{Failure::Usage, "--occupancy-resolution: must be 0..512 (0: no IoU)", {}};
-    for (int a = 0; a < 3; ++a)
-        if (!std::isfinite(request.boundsMin[a]) || !std::isfinite(request.boundsMax[a]) ||
-            !(request.boundsMax[a] > request.boundsMin[a]))
-            return JobError{Failure::Usage,
-                            "--bounds: expected finite MINX,MINY,MINZ,MAXX,MAXY,MAXZ with each maximum above its minimum",
-                            {}};
-    if (!std::isfinite(request.time)) return JobError{Failure::Usage, "--time: expected a finite number", {}};
+    if (auto error = checkBoundsAndTime(request.boundsMin, request.boundsMax, request.time)) return error;
     ParamsRequest sdfOnly{request.sdf};
     return validate(sdfOnly);
 }

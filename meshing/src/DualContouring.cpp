@@ -237,17 +237,19 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
     {
         std::vector<double> low(edges.size(), 0.0), high(edges.size(), 1.0);
         std::vector<float> probes(crossings.size()), probeValues;
+        // Writes the middle of edge e's bracket into `out`.
+        auto middleOf = [&](std::size_t e, std::vector<float>& out) {
+            const Edge& edge = edges[e];
+            const glm::dvec3 p0 = glm::dvec3(grid.point(edge.i, edge.j, edge.k));
+            const glm::dvec3 p1 =
+                p0 + glm::dvec3(axisStep[edge.axis][0], axisStep[edge.axis][1], axisStep[edge.axis][2]) * grid.step;
+            const glm::dvec3 p = p0 + 0.5 * (low[e] + high[e]) * (p1 - p0);
+            out[3 * e] = float(p.x);
+            out[3 * e + 1] = float(p.y);
+            out[3 * e + 2] = float(p.z);
+        };
         for (int iteration = 0; iteration < 10; ++iteration) {
-            for (std::size_t e = 0; e < edges.size(); ++e) {
-                const Edge& edge = edges[e];
-                const glm::dvec3 p0 = glm::dvec3(grid.point(edge.i, edge.j, edge.k));
-                const glm::dvec3 p1 =
-                    p0 + glm::dvec3(axisStep[edge.axis][0], axisStep[edge.axis][1], axisStep[edge.axis][2]) * grid.step;
-                const glm::dvec3 p = p0 + 0.5 * (low[e] + high[e]) * (p1 - p0);
-                probes[3 * e] = float(p.x);
-                probes[3 * e + 1] = float(p.y);
-                probes[3 * e + 2] = float(p.z);
-            }
+            for (std::size_t e = 0; e < edges.size(); ++e) middleOf(e, probes);
             if (auto ok = probe.evaluate(probes, probeValues, nullptr); !ok) return ok.error();
             stats.pointsEvaluated += probeValues.size();
             for (std::size_t e = 0; e < edges.size(); ++e) {
@@ -257,16 +259,7 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
             }
             if (progress.isCancelled()) return makeError("mesh: cancelled");
         }
-        for (std::size_t e = 0; e < edges.size(); ++e) {
-            const Edge& edge = edges[e];
-            const glm::dvec3 p0 = glm::dvec3(grid.point(edge.i, edge.j, edge.k));
-            const glm::dvec3 p1 =
-                p0 + glm::dvec3(axisStep[edge.axis][0], axisStep[edge.axis][1], axisStep[edge.axis][2]) * grid.step;
-            const glm::dvec3 p = p0 + 0.5 * (low[e] + high[e]) * (p1 - p0);
-            crossings[3 * e] = float(p.x);
-            crossings[3 * e + 1] = float(p.y);
-            crossings[3 * e + 2] = float(p.z);
-        }
+        for (std::size_t e = 0; e < edges.size(); ++e) middleOf(e, crossings);
     }
     std::vector<float> crossingValues, normals;
     const float normalStep = float(0.05 * std::min({grid.step.x, grid.step.y, grid.step.z}));
