@@ -2,6 +2,7 @@
 
 #include "ExportController.h"
 #include "FileController.h"
+#include "MeshExportController.h"
 #include "PlaneController.h"
 #include "PlaybackController.h"
 #include "SamplingController.h"
@@ -116,6 +117,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     auto currentSdf = [this] { return m_document->input(); };
     m_sampling = new SamplingController(this, currentSdf, this);
     m_exports = new ExportController(this, m_viewport, currentSdf, this);
+    m_meshExport = new MeshExportController(this, currentSdf, this);
     m_playback = new PlaybackController(m_timeBar, m_viewport, this);
     m_plane = new PlaneController(m_planePanel, m_viewport, currentSdf, this);
     m_files = new FileController(this, m_editor, m_document, m_viewport, this);
@@ -338,6 +340,7 @@ void MainWindow::createMenus() {
     QAction* screenshot = file->addAction(tr("Save &screenshot..."), m_exports, &ExportController::showScreenshotDialog);
     screenshot->setShortcut(Qt::Key_F4);
     QAction* video = file->addAction(tr("Export &animation (MP4)..."), m_exports, &ExportController::showVideoDialog);
+    file->addAction(tr("Export &mesh..."), m_meshExport, &MeshExportController::showDialog);
     video->setShortcut(Qt::Key_F6);
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);

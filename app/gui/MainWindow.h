@@ -27,6 +27,7 @@ class ViewportWidget;
 namespace sdfwb::app {
 
 class ExportController;
+class MeshExportController;
 class FileController;
 class PlaneController;
 class PlaybackController;
@@ -49,6 +50,7 @@ public:
     SdfDocument* document() const { return m_document; }
     SamplingController* sampling() const { return m_sampling; }
     ExportController* exports() const { return m_exports; }
+    MeshExportController* meshExport() const { return m_meshExport; }
     PlaybackController* playback() const { return m_playback; }
     widgets::PlanePanel* planePanel() const { return m_planePanel; }
     widgets::ParametersPanel* parametersPanel() const { return m_parametersPanel; }
@@ -108,6 +110,7 @@ private:
     SdfDocument* m_document = nullptr;
     SamplingController* m_sampling = nullptr;
     ExportController* m_exports = nullptr;
+    MeshExportController* m_meshExport = nullptr;
     PlaybackController* m_playback = nullptr;
 };
 

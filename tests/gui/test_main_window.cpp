@@ -4,6 +4,7 @@
 #include <gui/ExportController.h>
 #include <gui/FileController.h>
 #include <gui/MainWindow.h>
+#include <gui/MeshExportController.h>
 #include <gui/PlaneController.h>
 #include <gui/PlaybackController.h>
 #include <gui/SamplingController.h>
@@ -48,11 +49,13 @@
 #include <QMouseEvent>
 #include <QPushButton>
 #include <QSlider>
+#include <QSpinBox>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
 #include <QThread>
 #include <csignal>
 
+#include <cstring>
 #include <functional>
 
 #include <glm/geometric.hpp>
@@ -1131,6 +1134,70 @@ TEST(Parameters, PlaneReadoutsFollowAndTheSessionKeepsTheValues) {
     EXPECT_FLOAT_EQ(again.document()->input().params[0].value[0], 0.4f);
     again.parametersPanel()->resetAll();
     again.close();
+}
+
+// File > Export mesh: the unsaved text with its parameter values, meshed in a child; Cancel leaves
+// nothing behind, a finished export is a watertight mesh of what the viewport shows.
+TEST(MeshExport, ExportsTheUnsavedStateAndCancelsCleanly) {
+    app::MainWindow window;
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "../tests/params/iq_torus_map.glsl"));
+    window.parametersPanel()->setValues({{"minorRadius", {0.1f}}});
+    app::MeshExportController* exporter = window.meshExport();
+    exporter->setExecutable(SDFWB_BINARY);
+    exporter->showDialog();
+    QDialog* dialog = exporter->dialog();
+    ASSERT_TRUE(dialog);
+    QTemporaryDir folder;
+    const QString path = folder.filePath("torus.ply");
+    dialog->findChild<QLineEdit*>("meshOutput")->setText(path);
+    const jobs::MeshRequest request = exporter->request(path, 64);
+    ASSERT_EQ(request.sdf.params.size(), 4u);
+    EXPECT_EQ(request.sdf.params[1].value[0], 0.1f) << "the dock's value goes with the export";
+    EXPECT_FALSE(request.sdf.source.empty()) << "the viewport's text, not the file";
+
+    // Cancel a large export once it reports progress: no file, no temporary.
+    bool done = false, ok = false, cancelled = false;
+    quint64 progressed = 0;
+    QObject::connect(exporter, &app::MeshExportController::progress,
+                     [&](quint64 d, quint64) { progressed = std::max(progressed, d); });
+    QObject::connect(exporter, &app::MeshExportController::finished, [&](bool good, bool stopped, const QString&) {
+        done = true;
+        ok = good;
+        cancelled = stopped;
+    });
+    dialog->findChild<QSpinBox*>("meshResolution")->setValue(1024);
+    dialog->findChild<QPushButton*>("meshExport")->click();
+    ASSERT_TRUE(waitFor([&] { return progressed > 0 || done; }, 60000)) << "no progress from the mesh child";
+    dialog->findChild<QPushButton*>("meshCancel")->click();
+    ASSERT_TRUE(waitFor([&] { return done; }, 60000));
+    EXPECT_TRUE(cancelled);
+    EXPECT_FALSE(QFile::exists(path));
+    EXPECT_TRUE(QDir(folder.path()).entryList(QDir::Files | QDir::Hidden | QDir::NoDotAndDotDot).isEmpty()) << "no partial file";
+
+    // A finished export at 64.
+    done = false;
+    dialog->findChild<QSpinBox*>("meshResolution")->setValue(64);
+    dialog->findChild<QPushButton*>("meshExport")->click();
+    ASSERT_TRUE(waitFor([&] { return done; }, 60000));
+    const QString message = dialog->findChild<QLabel*>("meshMessage")->text();
+    ASSERT_TRUE(ok) << message.toStdString();
+    EXPECT_TRUE(QFile::exists(path));
+    EXPECT_TRUE(message.contains("watertight")) << message.toStdString();
+    // The tube radius is the dock's 0.1: the file is no thicker than that.
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QByteArray bytes = file.readAll();
+    const int header = bytes.indexOf("end_header\n") + 11;
+    const int vertices = bytes.mid(bytes.indexOf("element vertex ") + 15, 12).split('\n').first().toInt();
+    ASSERT_GT(vertices, 100);
+    float maxY = 0.0f;
+    for (int v = 0; v < vertices; ++v) {
+        float p[3];
+        std::memcpy(p, bytes.constData() + header + 12 * v, 12);
+        maxY = std::max(maxY, std::abs(p[1]));
+    }
+    EXPECT_NEAR(maxY, 0.1f, 2e-3f);
 }
 
 int main(int argc, char** argv) {
