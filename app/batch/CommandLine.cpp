@@ -121,11 +121,6 @@ void addEntryOption(CLI::App& app, std::string& entry) {
         ->check(entryCheck());
 }
 
-// --sdf, --entry and --param NAME=VALUE (repeatable), shared by every command that runs an SDF.
-struct SdfOptions {
-    std::vector<std::string> params;
-};
-
 CLI::Validator parameterCheck() {
     return CLI::Validator(
         [](std::string& text) -> std::string {
@@ -135,32 +130,40 @@ CLI::Validator parameterCheck() {
         "NAME=VALUE");
 }
 
-void addSdfOptions(CLI::App& app, jobs::SdfInput& input, SdfOptions& options) {
-    app.add_option("--sdf", input.sdf, "dataset name or path to a .glsl file")->required();
-    addEntryOption(app, input.entry);
-    app.add_option("--param", options.params,
-                   "NAME=VALUE: a value for a parameter the SDF declares (vectors as x,y,z, bools true/false; repeatable; "
-                   "`--batch params` lists them)")
+// A repeatable NAME=VALUE option, checked and parsed straight into `target`.
+void addParameterOption(CLI::App& app, const std::string& name, std::vector<shaders::ParameterValue>& target,
+                        const std::string& help) {
+    app.add_option_function<std::vector<std::string>>(
+           name,
+           [&target](const std::vector<std::string>& texts) {
+               target.clear();
+               for (const std::string& text : texts)
+                   if (auto value = shaders::parseParameterValue(text)) target.push_back(std::move(*value));
+           },
+           help)
         ->check(parameterCheck());
 }
 
-// The checked --param texts as values (the validator has read each once already).
-std::vector<shaders::ParameterValue> parameterValues(const std::vector<std::string>& texts) {
-    std::vector<shaders::ParameterValue> values;
-    for (const std::string& text : texts)
-        if (auto value = shaders::parseParameterValue(text)) values.push_back(std::move(*value));
-    return values;
+// --sdf, --entry and --param NAME=VALUE (repeatable), shared by every command that runs an SDF.
+void addSdfOptions(CLI::App& app, jobs::SdfInput& input) {
+    app.add_option("--sdf", input.sdf, "dataset name or path to a .glsl file")->required();
+    addEntryOption(app, input.entry);
+    addParameterOption(app, "--param", input.params,
+                       "NAME=VALUE: a value for a parameter the SDF declares (vectors as x,y,z, bools true/false; "
+                       "repeatable; `--batch params` lists them)");
 }
 
 // --sweep NAME=FROM:TO:COUNT (repeatable: a grid) and --randomize COUNT: a shape family.
-struct FamilyOptions {
-    std::vector<std::string> sweeps;
-};
-
-void addFamilyOptions(CLI::App& app, jobs::FamilySpec& family, FamilyOptions& options, const char* what) {
-    app.add_option("--sweep", options.sweeps,
-                   std::string("NAME=FROM:TO:COUNT: ") + what +
-                       " at COUNT evenly spaced values of a parameter (vectors as x,y,z at both ends; repeat for a grid)")
+void addFamilyOptions(CLI::App& app, jobs::FamilySpec& family, const char* what) {
+    app.add_option_function<std::vector<std::string>>(
+           "--sweep",
+           [&family](const std::vector<std::string>& texts) {
+               family.sweeps.clear();
+               for (const std::string& text : texts)
+                   if (auto sweep = shaders::parseParameterSweep(text)) family.sweeps.push_back(std::move(*sweep));
+           },
+           std::string("NAME=FROM:TO:COUNT: ") + what +
+               " at COUNT evenly spaced values of a parameter (vectors as x,y,z at both ends; repeat for a grid)")
         ->check(CLI::Validator(
             [](std::string& text) -> std::string {
                 auto sweep = shaders::parseParameterSweep(text);
@@ -174,9 +177,31 @@ void addFamilyOptions(CLI::App& app, jobs::FamilySpec& family, FamilyOptions& op
         ->check(CLI::Range(1u, 100000u));
 }
 
-void finishFamilyOptions(jobs::FamilySpec& family, const FamilyOptions& options) {
-    for (const std::string& text : options.sweeps)
-        if (auto sweep = shaders::parseParameterSweep(text)) family.sweeps.push_back(std::move(*sweep));
+// "MINX,MINY,MINZ,MAXX,MAXY,MAXZ" into two corners; false when malformed.
+bool parseBounds(const std::string& text, glm::vec3& low, glm::vec3& high) {
+    float v[6];
+    char tail;
+    if (std::sscanf(text.c_str(), " %f , %f , %f , %f , %f , %f %c", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &tail) != 6 ||
+        !(v[3] > v[0] && v[4] > v[1] && v[5] > v[2]))
+        return false;
+    low = {v[0], v[1], v[2]};
+    high = {v[3], v[4], v[5]};
+    return true;
+}
+
+// --bounds MINX,MINY,MINZ,MAXX,MAXY,MAXZ, checked while parsing and read into the two corners.
+void addBoundsOption(CLI::App& app, glm::vec3& low, glm::vec3& high, const std::string& help) {
+    app.add_option_function<std::string>(
+           "--bounds", [&low, &high](const std::string& text) { parseBounds(text, low, high); }, help)
+        ->check(CLI::Validator(
+            [](std::string& text) -> std::string {
+                glm::vec3 a, b;
+                return parseBounds(text, a, b) ? std::string()
+                                               : "expected MINX,MINY,MINZ,MAXX,MAXY,MAXZ with each maximum above its "
+                                                 "minimum, got '" +
+                                                     text + "'";
+            },
+            "X0,Y0,Z0,X1,Y1,Z1"));
 }
 
 // How a parsed command ends: its output flags, and --print-request (the request as JSON, no work).
@@ -218,11 +243,10 @@ std::optional<int> parse(CLI::App& app, const std::string& context, Arguments ar
 struct FrameOptions {
     std::string size = "1280x720", shading = "normals", camera, target, plane;
     bool planeNoClip = false;
-    SdfOptions sdf;
 };
 
 void addFrameOptions(CLI::App& app, jobs::FrameRequest& job, FrameOptions& options) {
-    addSdfOptions(app, job.sdf, options.sdf);
+    addSdfOptions(app, job.sdf);
     app.add_option("--size", options.size, "image size WxH")->capture_default_str();
     app.add_option("--time", job.time, "time in seconds for animated SDFs (start time for animate)")
         ->capture_default_str()
@@ -255,7 +279,6 @@ void addFrameOptions(CLI::App& app, jobs::FrameRequest& job, FrameOptions& optio
 
 // Returns an exit code when an option is malformed.
 std::optional<int> finishFrameOptions(jobs::FrameRequest& job, const FrameOptions& options) {
-    job.sdf.params = parameterValues(options.sdf.params);
     auto parsedSize = parseSize(options.size);
     if (!parsedSize) {
         printError("--size: expected WxH with integers from 1 to 16384, got '" + options.size + "'");
@@ -339,15 +362,12 @@ int runAnimateCommand(const Arguments& arguments, Mode mode) {
         ->check(CLI::Range(0.0f, 3600.0f));
     app.add_option("--fps", request.framesPerSecond, "frames per second")->capture_default_str()->check(CLI::Range(1, 240));
     app.add_flag("--turntable", request.turntable, "orbit the camera once around the Y axis");
-    std::vector<std::string> paramsEnd;
-    app.add_option("--param-end", paramsEnd,
-                   "NAME=VALUE: the parameter's value at the last frame; the clip moves linearly from --param (or the "
-                   "default) to it (repeatable)")
-        ->check(parameterCheck());
+    addParameterOption(app, "--param-end", request.paramsEnd,
+                       "NAME=VALUE: the parameter's value at the last frame; the clip moves linearly from --param (or the "
+                       "default) to it (repeatable)");
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch animate", arguments)) return *exit;
     if (auto exit = finishFrameOptions(request.frame, options)) return *exit;
-    request.paramsEnd = parameterValues(paramsEnd);
     return finish(request, ending, mode);
 }
 
@@ -374,9 +394,7 @@ int runSampleCommand(const Arguments& arguments, Mode mode) {
     jobs::SampleRequest command;
     Ending ending;
     std::string shard;
-    SdfOptions sdf;
-    FamilyOptions family;
-    addSdfOptions(app, command.sdf, sdf);
+    addSdfOptions(app, command.sdf);
     app.add_option("--pattern,-p", command.pattern,
                    "grid, image, jitter, rand, surface, near, metropolis, metropolis_curvature, or a sampler file")
         ->required();
@@ -396,12 +414,9 @@ int runSampleCommand(const Arguments& arguments, Mode mode) {
                    "|f| at which the rays of surface, near and metropolis stop (accuracy against time: docs/benchmarks.md)")
         ->capture_default_str()
         ->check(numberCheck(true));
-    addFamilyOptions(app, command.family, family,
-                     "one output per instance (OUTPUT_00000.EXT, ...) and an index OUTPUT_index.json,");
+    addFamilyOptions(app, command.family, "one output per instance (OUTPUT_00000.EXT, ...) and an index OUTPUT_index.json,");
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch sample", arguments)) return *exit;
-    command.sdf.params = parameterValues(sdf.params);
-    finishFamilyOptions(command.family, family);
     if (!shard.empty() && !parseShard(shard, command.shardIndex, command.shardCount)) {
         printError("--shard: expected K/COUNT with 0 <= K < COUNT, got '" + shard + "'");
         return kExitUsage;
@@ -427,9 +442,7 @@ int runAuditCommand(const Arguments& arguments, Mode mode) {
     jobs::AuditRequest command;
     Ending ending;
     std::string plane;
-    SdfOptions sdf;
-    FamilyOptions family;
-    addSdfOptions(app, command.sdf, sdf);
+    addSdfOptions(app, command.sdf);
     app.add_option("--samples", command.samples, "random points (as many near-surface and surface points)")
         ->capture_default_str()
         ->check(CLI::Range(std::uint64_t(64), std::uint64_t(100000000)));
@@ -444,11 +457,9 @@ int runAuditCommand(const Arguments& arguments, Mode mode) {
         ->capture_default_str()
         ->check(numberCheck(true))
         ->check(CLI::Range(0.1f, 100.0f));
-    addFamilyOptions(app, command.family, family, "the volume audit, one line per instance,");
+    addFamilyOptions(app, command.family, "the volume audit, one line per instance,");
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch audit", arguments)) return *exit;
-    command.sdf.params = parameterValues(sdf.params);
-    finishFamilyOptions(command.family, family);
     if (!plane.empty()) {
         char tail;
         jobs::PlaneSpec spec;
@@ -481,32 +492,18 @@ int runBenchCommand(const Arguments& arguments, Mode mode) {
     return finish(command, ending, mode);
 }
 
-// "MINX,MINY,MINZ,MAXX,MAXY,MAXZ" into two corners; false when malformed.
-bool parseBounds(const std::string& text, glm::vec3& low, glm::vec3& high) {
-    float v[6];
-    char tail;
-    if (std::sscanf(text.c_str(), " %f , %f , %f , %f , %f , %f %c", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &tail) != 6 ||
-        !(v[3] > v[0] && v[4] > v[1] && v[5] > v[2]))
-        return false;
-    low = {v[0], v[1], v[2]};
-    high = {v[3], v[4], v[5]};
-    return true;
-}
-
 int runMeshCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Extract the SDF's zero set as a mesh by dual contouring (sharp edges and corners kept), and measure its "
                  "error against the exact field both ways.",
                  "sdfwb --batch mesh");
     jobs::MeshRequest request;
     Ending ending;
-    SdfOptions sdf;
-    std::string bounds;
-    addSdfOptions(app, request.sdf, sdf);
+    addSdfOptions(app, request.sdf);
     app.add_option("--output,-o", request.output, "mesh file: .ply, .obj, .stl or .glb")->required();
     app.add_option("--resolution", request.resolution, "cells along each axis of the bounds")
         ->capture_default_str()
         ->check(CLI::Range(2, 2048));
-    app.add_option("--bounds", bounds, "MINX,MINY,MINZ,MAXX,MAXY,MAXZ (default -1,-1,-1,1,1,1)");
+    addBoundsOption(app, request.boundsMin, request.boundsMax, "MINX,MINY,MINZ,MAXX,MAXY,MAXZ (default -1,-1,-1,1,1,1)");
     app.add_option("--time", request.time, "time in seconds for animated SDFs")->capture_default_str()->check(numberCheck(false));
     app.add_option("--lipschitz", request.lipschitz,
                    "bound on |grad f| used to skip empty blocks (default: a quick audit's estimate x1.25; 0 skips nothing)")
@@ -517,11 +514,6 @@ int runMeshCommand(const Arguments& arguments, Mode mode) {
     app.add_option("--seed", request.seed, "random seed of the error's points")->capture_default_str();
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch mesh", arguments)) return *exit;
-    request.sdf.params = parameterValues(sdf.params);
-    if (!bounds.empty() && !parseBounds(bounds, request.boundsMin, request.boundsMax)) {
-        printError("--bounds: expected MINX,MINY,MINZ,MAXX,MAXY,MAXZ with each maximum above its minimum, got '" + bounds + "'");
-        return kExitUsage;
-    }
     return finish(request, ending, mode);
 }
 
@@ -531,9 +523,7 @@ int runEvalCommand(const Arguments& arguments, Mode mode) {
                  "sdfwb --batch eval");
     jobs::EvalRequest request;
     Ending ending;
-    SdfOptions sdf;
-    std::string bounds;
-    addSdfOptions(app, request.sdf, sdf);
+    addSdfOptions(app, request.sdf);
     app.add_option("--mesh", request.mesh, "the mesh to grade: .ply, .obj, .stl, .glb, .off, ... (anything assimp reads)")
         ->required();
     app.add_option("--points", request.points, "points each way (on the mesh, on the exact surface)")
@@ -543,16 +533,12 @@ int runEvalCommand(const Arguments& arguments, Mode mode) {
     app.add_option("--occupancy-resolution", request.occupancyResolution, "grid side for the volume IoU (0: no IoU)")
         ->capture_default_str()
         ->check(CLI::Range(0, 512));
-    app.add_option("--bounds", bounds, "MINX,MINY,MINZ,MAXX,MAXY,MAXZ of the IoU grid (default -1,-1,-1,1,1,1)");
+    addBoundsOption(app, request.boundsMin, request.boundsMax,
+                    "MINX,MINY,MINZ,MAXX,MAXY,MAXZ of the IoU grid (default -1,-1,-1,1,1,1)");
     app.add_option("--time", request.time, "time in seconds for animated SDFs")->capture_default_str()->check(numberCheck(false));
     app.add_option("--seed", request.seed, "random seed of the points")->capture_default_str();
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch eval", arguments)) return *exit;
-    request.sdf.params = parameterValues(sdf.params);
-    if (!bounds.empty() && !parseBounds(bounds, request.boundsMin, request.boundsMax)) {
-        printError("--bounds: expected MINX,MINY,MINZ,MAXX,MAXY,MAXZ with each maximum above its minimum, got '" + bounds + "'");
-        return kExitUsage;
-    }
     return finish(request, ending, mode);
 }
 

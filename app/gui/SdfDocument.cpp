@@ -20,11 +20,8 @@ SdfDocument::SdfDocument(widgets::ViewportWidget* viewport, QObject* parent) : Q
 }
 
 jobs::SdfInput SdfDocument::input() const {
-    jobs::SdfInput input{
-        m_path.toStdString(), m_entry.toStdString(), (m_goodText.isEmpty() ? m_text : m_goodText).toStdString(), {}};
-    for (const shaders::ParameterSetting& s : m_parameterValues)
-        input.params.push_back({s.name, std::vector<float>(s.value.begin(), s.value.begin() + shaders::componentCount(s.type))});
-    return input;
+    return {m_path.toStdString(), m_entry.toStdString(), (m_goodText.isEmpty() ? m_text : m_goodText).toStdString(),
+            shaders::valuesOf(m_parameterValues)};
 }
 
 void SdfDocument::setParameterValues(const std::vector<shaders::ParameterSetting>& values) {

@@ -18,7 +18,7 @@ JobResult<AuditJobReport> run(const AuditRequest& request, const ProgressSink& p
         auto readout = sampling::analysePlane(sdf->prepared, request.plane->normal, request.plane->offset, request.resolution,
                                               request.time, sdf->parameters);
         if (!readout) return JobError{Failure::Work, readout.error().message, {}};
-        report.parameters = parameterValues(sdf->parameters);
+        report.parameters = shaders::valuesOf(sdf->parameters);
         report.plane = request.plane;
         report.readout = std::move(*readout);
         return report;
@@ -33,7 +33,7 @@ JobResult<AuditJobReport> run(const AuditRequest& request, const ProgressSink& p
         auto volume = sampling::auditField(sdf->prepared, options, progress);
         if (progress.isCancelled()) return JobError{Failure::Cancelled, "audit: cancelled", {}};
         if (!volume) return JobError{Failure::Work, volume.error().message, {}};
-        report.parameters = parameterValues(sdf->parameters);
+        report.parameters = shaders::valuesOf(sdf->parameters);
         report.volume = std::move(*volume);
         return report;
     }
@@ -56,7 +56,7 @@ JobResult<AuditJobReport> run(const AuditRequest& request, const ProgressSink& p
         if (progress.isCancelled()) return JobError{Failure::Cancelled, "audit: cancelled", {}};
         if (!volume) return JobError{Failure::Work, volume.error().message, {}};
         AuditInstance instance;
-        instance.parameters = parameterValues(resolved->settings);
+        instance.parameters = shaders::valuesOf(resolved->settings);
         instance.verdict = volume->verdict;
         instance.reason = volume->reason;
         for (const sampling::AuditFlag& flag : volume->flags) instance.flags.push_back(flag.name);

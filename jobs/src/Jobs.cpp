@@ -159,13 +159,6 @@ JobResult<OpenedSdf> openSdf(const SdfInput& input, const std::string& what) {
     return OpenedSdf{std::move(sdf), label, std::move(resolved->settings), std::move(resolved->warnings)};
 }
 
-std::vector<shaders::ParameterValue> parameterValues(const std::vector<shaders::ParameterSetting>& settings) {
-    std::vector<shaders::ParameterValue> values;
-    for (const shaders::ParameterSetting& s : settings)
-        values.push_back({s.name, std::vector<float>(s.value.begin(), s.value.begin() + shaders::componentCount(s.type))});
-    return values;
-}
-
 std::optional<JobError> validate(const RenderRequest& request) {
     if (auto error = checkFrame(request.frame)) return error;
     const std::string extension = fs::path(request.output).extension().string();

@@ -61,7 +61,7 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
     report.sdf = sdf->label;
     report.entry = sdf->prepared.signature.entry;
     report.resolution = request.resolution;
-    report.parameters = parameterValues(sdf->parameters);
+    report.parameters = shaders::valuesOf(sdf->parameters);
     report.warnings = sdf->warnings;
     meshing::MeshOptions options;
     options.resolution = request.resolution;
@@ -225,7 +225,7 @@ JobResult<EvalReport> run(const EvalRequest& request, const ProgressSink&) {
         "distances; F-score at tau from both shares within tau; normal consistency = mean |cos| of face normal and field "
         "gradient over both point sets; IoU on the centres of an n^3 grid, mesh inside by ray parity; no normalisation (the "
         "SDF's units)";
-    report.parameters = parameterValues(sdf->parameters);
+    report.parameters = shaders::valuesOf(sdf->parameters);
     report.warnings = sdf->warnings;
     if (!e->closed && e->iou)
         report.warnings.push_back("the mesh has boundary edges: its inside (and the IoU) is not well defined");

@@ -113,9 +113,9 @@ JobResult<SampleReport> run(const SampleRequest& request, const ProgressSink& pr
         report.seconds += result->seconds;
         report.firstIndex = result->firstIndex;
         if (family)
-            report.instances.push_back({output, parameterValues(settings[k]), result->rows, result->badRows, result->seconds});
+            report.instances.push_back({output, shaders::valuesOf(settings[k]), result->rows, result->badRows, result->seconds});
         else
-            report.parameters = parameterValues(settings[k]);
+            report.parameters = shaders::valuesOf(settings[k]);
     }
     compute.releaseGl();
     report.output = request.output;

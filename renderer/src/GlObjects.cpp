@@ -59,32 +59,4 @@ CompiledShader compileShader(GLenum type, const shaders::ComposedShader& compose
     return result;
 }
 
-void applyParameters(GLuint program, const std::vector<shaders::ParameterSetting>& parameters) {
-    for (const shaders::ParameterSetting& p : parameters) {
-        const GLint location = glGetUniformLocation(program, p.name.c_str());
-        if (location < 0) continue;
-        const float* v = p.value.data();
-        switch (p.type) {
-        case shaders::ParameterType::Float:
-            glUniform1f(location, v[0]);
-            break;
-        case shaders::ParameterType::Int:
-            glUniform1i(location, GLint(v[0]));
-            break;
-        case shaders::ParameterType::Bool:
-            glUniform1i(location, v[0] != 0.0f ? 1 : 0);
-            break;
-        case shaders::ParameterType::Vec2:
-            glUniform2fv(location, 1, v);
-            break;
-        case shaders::ParameterType::Vec3:
-            glUniform3fv(location, 1, v);
-            break;
-        case shaders::ParameterType::Vec4:
-            glUniform4fv(location, 1, v);
-            break;
-        }
-    }
-}
-
 } // namespace sdfwb::renderer

@@ -83,8 +83,35 @@ CompiledShader compileShader(GLenum type, const shaders::ComposedShader& compose
 // NoiseTexture.h) and binds it to shaders::kNoiseTextureUnit. Needs a current context.
 void bindNoiseTextureIfUsed(GLuint program, GlTexture& texture);
 
-// Sets the SDF's parameter uniforms of the program in use (glUseProgram done); a parameter the
-// compiler optimised away has no location and is skipped.
-void applyParameters(GLuint program, const std::vector<shaders::ParameterSetting>& parameters);
+// Sets the SDF's parameter uniforms of the program in use (glUseProgram done); `locate(name)`
+// gives a uniform's location (the tracer's cached lookup, once a frame); a parameter the compiler
+// optimised away has no location and is skipped.
+template <class Locate> void applyParameters(const std::vector<shaders::ParameterSetting>& parameters, Locate locate) {
+    for (const shaders::ParameterSetting& p : parameters) {
+        const GLint location = locate(p.name.c_str());
+        if (location < 0) continue;
+        const float* v = p.value.data();
+        switch (p.type) {
+        case shaders::ParameterType::Float:
+            glUniform1f(location, v[0]);
+            break;
+        case shaders::ParameterType::Int:
+            glUniform1i(location, GLint(v[0]));
+            break;
+        case shaders::ParameterType::Bool:
+            glUniform1i(location, v[0] != 0.0f ? 1 : 0);
+            break;
+        case shaders::ParameterType::Vec2:
+            glUniform2fv(location, 1, v);
+            break;
+        case shaders::ParameterType::Vec3:
+            glUniform3fv(location, 1, v);
+            break;
+        case shaders::ParameterType::Vec4:
+            glUniform4fv(location, 1, v);
+            break;
+        }
+    }
+}
 
 } // namespace sdfwb::renderer

@@ -144,7 +144,7 @@ Expected<void> SampleCompute::run(const SampleUniforms& uniforms, std::uint32_t 
         glUniform1f(location, uniforms.surfaceTolerance);
     if (GLint location = m_impl->location("sdfwb_tetrahedralGradient"); location >= 0)
         glUniform1i(location, uniforms.tetrahedralGradient ? 1 : 0);
-    applyParameters(m_impl->program.id(), uniforms.sdfParameters);
+    applyParameters(uniforms.sdfParameters, [this](const char* name) { return m_impl->location(name); });
     glUniform1ui(m_impl->location("sdfwb_chunkFirst"), first);
     glUniform1ui(m_impl->location("sdfwb_chunkCount"), count);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingPositions, m_impl->buffers[0].id());

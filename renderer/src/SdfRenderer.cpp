@@ -246,7 +246,7 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
         glUniform3f(v->location("sdfwb_background"), m_shading.background.r, m_shading.background.g, m_shading.background.b);
         if (GLint location = v->location("sdfwb_time"); location >= 0) glUniform1f(location, time);
         if (GLint location = v->location("g3d_SceneTime"); location >= 0) glUniform1f(location, time); // declared by the file
-        applyParameters(v->program.id(), m_parameters);
+        applyParameters(m_parameters, [v](const char* name) { return v->location(name); });
         bindNoiseTextureIfUsed(v->program.id(), m_impl->noise);
         if (GLint location = v->location("sdfwb_relaxation"); location >= 0) glUniform1f(location, m_trace.overRelaxation);
         if (m_plane.enabled) {

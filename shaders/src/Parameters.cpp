@@ -473,6 +473,13 @@ Expected<ResolvedParameters> resolveParameters(const std::vector<Parameter>& dec
     return resolved;
 }
 
+std::vector<ParameterValue> valuesOf(const std::vector<ParameterSetting>& settings) {
+    std::vector<ParameterValue> values;
+    for (const ParameterSetting& s : settings)
+        values.push_back({s.name, std::vector<float>(s.value.begin(), s.value.begin() + componentCount(s.type))});
+    return values;
+}
+
 std::string parametersJson(const std::vector<ParameterSetting>& settings) {
     if (settings.empty()) return "";
     std::string out = "{";

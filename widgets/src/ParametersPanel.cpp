@@ -129,9 +129,7 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     m_clipEndLabel->setObjectName("clipEndLabel");
     m_clipEndLabel->setWordWrap(true);
     connect(setEnd, &QPushButton::clicked, this, [this] {
-        m_clipEnd.clear();
-        for (const shaders::ParameterSetting& s : m_values)
-            m_clipEnd.push_back({s.name, std::vector<float>(s.value.begin(), s.value.begin() + shaders::componentCount(s.type))});
+        m_clipEnd = shaders::valuesOf(m_values);
         updateClipEndLabel();
     });
     connect(clearEnd, &QPushButton::clicked, this, [this] {

@@ -53,9 +53,6 @@ struct OpenedSdf {
     std::vector<std::string> warnings;                 // values outside a declared @range
 };
 
-// The settings as values (every component of each), for reports and metadata.
-std::vector<shaders::ParameterValue> parameterValues(const std::vector<shaders::ParameterSetting>& settings);
-
 // The shared "open the SDF" step: resolves a dataset name or a path (Usage when neither exists),
 // takes `source` or reads the file, and prepares it with the entry point (Work, with diagnostics,
 // when it has errors), then resolves the input's parameter values against the declarations

@@ -85,6 +85,9 @@ struct ResolvedParameters {
 // whole, a bool other than 0 or 1. A value outside the @range is a warning, not an error.
 Expected<ResolvedParameters> resolveParameters(const std::vector<Parameter>& declared, const std::vector<ParameterValue>& given);
 
+// The settings as values, every component of each (for reports, requests and metadata).
+std::vector<ParameterValue> valuesOf(const std::vector<ParameterSetting>& settings);
+
 // The values as a JSON object, {"radius":0.3,"count":4,"hollow":false,"tint":[1,0.5,0]}, for
 // sample files' metadata; "" when there are none.
 std::string parametersJson(const std::vector<ParameterSetting>& settings);
