@@ -89,9 +89,17 @@ void ViewportWidget::setPlane(const renderer::CuttingPlane& plane) {
 
 void ViewportWidget::setParameters(const std::vector<shaders::ParameterSetting>& parameters) {
     if (parameters == m_parameters) return;
+    // The same parameters with new values is a slider drag: cheap frames now, the full frame when
+    // it stops. Another set (a new SDF's declarations) is not an interaction: one full frame.
+    const bool drag = parameters.size() == m_parameters.size() &&
+                      std::equal(parameters.begin(), parameters.end(), m_parameters.begin(),
+                                 [](const auto& a, const auto& b) { return a.name == b.name && a.type == b.type; });
     m_parameters = parameters;
     m_renderer->setParameters(parameters);
-    interacted(); // a slider drag: cheap frames now, the full frame when it stops
+    if (drag)
+        interacted();
+    else
+        update();
 }
 
 std::uint64_t ViewportWidget::programsBuilt() const { return m_renderer->programsBuilt(); }
