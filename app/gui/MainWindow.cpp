@@ -12,6 +12,7 @@
 #include <core/TextFile.h>
 #include <dataset/Catalogue.h>
 #include <dataset/Metadata.h>
+#include <meshing/Mesh.h>
 #include <widgets/CameraPanel.h>
 #include <widgets/DatasetBrowser.h>
 #include <widgets/GlslEditor.h>
@@ -27,12 +28,15 @@
 #include <widgets/TimeBar.h>
 #include <widgets/ViewportWidget.h>
 
+#include <glm/geometric.hpp>
+
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenuBar>
@@ -118,6 +122,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_sampling = new SamplingController(this, currentSdf, this);
     m_exports = new ExportController(this, m_viewport, currentSdf, this);
     m_meshExport = new MeshExportController(this, currentSdf, this);
+    connect(m_meshExport, &MeshExportController::meshWritten, this, &MainWindow::showMeshDeviation);
     m_playback = new PlaybackController(m_timeBar, m_viewport, this);
     m_plane = new PlaneController(m_planePanel, m_viewport, currentSdf, this);
     m_files = new FileController(this, m_editor, m_document, m_viewport, this);
@@ -409,6 +414,14 @@ void MainWindow::createMenus() {
     m_overlayAction = view->addAction(tr("Show name, author and &license"), this, [this] { updateOverlay(); });
     m_overlayAction->setCheckable(true);
     view->addSeparator();
+    view->addAction(tr("Show mesh &deviation..."), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Mesh to grade against the field"), QString(),
+                                                          tr("Meshes (*.ply *.obj *.stl *.glb *.gltf *.off);;All files (*)"));
+        if (!path.isEmpty()) showMeshDeviation(path);
+    });
+    m_hideMeshAction = view->addAction(tr("&Hide mesh deviation"), this, &MainWindow::hideMeshDeviation);
+    m_hideMeshAction->setEnabled(false);
+    view->addSeparator();
     view->addAction(m_editorDock->toggleViewAction());
     view->addAction(m_viewportDock->toggleViewAction());
     view->addAction(m_cameraDock->toggleViewAction());
@@ -505,6 +518,39 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 void MainWindow::updateTitle() {
     QString name = m_document->path().isEmpty() ? tr("untitled") : m_document->path();
     setWindowTitle(QString("%1%2 - sdfwb").arg(name, m_editor->isModified() ? "*" : ""));
+}
+
+bool MainWindow::showMeshDeviation(const QString& path) {
+    auto mesh = meshing::readMesh(path.toStdString());
+    if (!mesh || mesh->indices.empty()) {
+        const QString why = mesh ? tr("it has no triangles") : QString::fromStdString(mesh.error().message);
+        statusBar()->showMessage(tr("Cannot show %1: %2").arg(path, why), 10000);
+        return false;
+    }
+    std::vector<float> positions;
+    positions.reserve(3 * mesh->vertices.size());
+    for (const glm::vec3& v : mesh->vertices) positions.insert(positions.end(), {v.x, v.y, v.z});
+    // Full colour at a tenth of the mean edge: a scale that suits a mesh of any resolution.
+    double edgeSum = 0.0;
+    for (std::size_t t = 0; t + 2 < mesh->indices.size(); t += 3)
+        for (int e = 0; e < 3; ++e)
+            edgeSum += double(glm::distance(mesh->vertices[mesh->indices[t + std::size_t(e)]],
+                                            mesh->vertices[mesh->indices[t + std::size_t((e + 1) % 3)]]));
+    const float scale = float(0.1 * edgeSum / double(mesh->indices.size()));
+    m_viewport->setMeshOverlay(positions, mesh->indices, scale);
+    m_hideMeshAction->setEnabled(true);
+    statusBar()->showMessage(tr("Mesh deviation: %1, %2 triangles. Grey on the surface, red outside, blue inside; full colour at "
+                                "|f| = %3 (a tenth of its mean edge).")
+                                 .arg(QFileInfo(path).fileName())
+                                 .arg(mesh->triangleCount())
+                                 .arg(double(scale), 0, 'g', 3));
+    return true;
+}
+
+void MainWindow::hideMeshDeviation() {
+    m_viewport->setMeshOverlay({}, {}, 0.0f);
+    m_hideMeshAction->setEnabled(false);
+    statusBar()->clearMessage();
 }
 
 } // namespace sdfwb::app

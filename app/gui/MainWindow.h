@@ -61,6 +61,11 @@ public:
 
     void setShadingMode(renderer::ShadingMode mode);
     void setAmbientOcclusion(bool enabled);
+    // Shows the mesh in `path` over the surface, coloured by its deviation from the field (View >
+    // Show mesh deviation; an export shows its mesh by itself). False, with the reason in the
+    // status bar, for a file that does not read as a mesh.
+    bool showMeshDeviation(const QString& path);
+    void hideMeshDeviation();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -107,6 +112,7 @@ private:
     QActionGroup* m_shadingGroup = nullptr;
     QAction* m_aoAction = nullptr;
     QAction* m_overlayAction = nullptr;
+    QAction* m_hideMeshAction = nullptr;
     SdfDocument* m_document = nullptr;
     SamplingController* m_sampling = nullptr;
     ExportController* m_exports = nullptr;

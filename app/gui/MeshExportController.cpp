@@ -57,6 +57,7 @@ MeshExportController::MeshExportController(QWidget* window, std::function<jobs::
                 }
                 log::write(ok ? log::Level::Info : log::Level::Warning, "mesh", message.toStdString());
                 emit finished(ok, cancelled, message);
+                if (ok) emit meshWritten(QString::fromStdString(report->output));
             });
 }
 

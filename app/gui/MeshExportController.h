@@ -37,6 +37,8 @@ public:
 signals:
     void progress(quint64 done, quint64 total);
     void finished(bool ok, bool cancelled, const QString& message);
+    // After a successful export: the file written (the window shows it over the surface).
+    void meshWritten(const QString& path);
 
 private:
     void start();

@@ -11,16 +11,14 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <chrono>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <unordered_map>
 
 namespace sdfwb::meshing {
 namespace {
-
-constexpr int kBlock = 8;
 
 // Eigen-decomposition of a symmetric 3x3 matrix by Jacobi rotations.
 void symmetricEigen(std::array<std::array<double, 3>, 3> a, std::array<double, 3>& values,
@@ -57,13 +55,13 @@ void symmetricEigen(std::array<std::array<double, 3>, 3> a, std::array<double, 3
 
 // The point minimising sum (n . (x - p))^2 nearest the mass point: a pseudo-inverse that drops
 // directions the normals do not constrain (a flat face constrains one, an edge two, a corner three).
-glm::dvec3 solveQef(const std::vector<glm::dvec3>& points, const std::vector<glm::dvec3>& normals) {
+glm::dvec3 solveQef(const glm::dvec3* points, const glm::dvec3* normals, int count) {
     glm::dvec3 mass(0.0);
-    for (const glm::dvec3& p : points) mass += p;
-    mass /= double(points.size());
+    for (int i = 0; i < count; ++i) mass += points[i];
+    mass /= double(count);
     std::array<std::array<double, 3>, 3> ata{};
     glm::dvec3 atb(0.0);
-    for (std::size_t i = 0; i < points.size(); ++i) {
+    for (int i = 0; i < count; ++i) {
         const glm::dvec3& n = normals[i];
         const double d = glm::dot(n, points[i] - mass);
         for (int r = 0; r < 3; ++r) {
@@ -90,10 +88,105 @@ struct Grid {
     glm::vec3 point(std::int64_t i, std::int64_t j, std::int64_t k) const {
         return glm::vec3(origin + glm::dvec3(double(i), double(j), double(k)) * step);
     }
-    std::uint64_t pointKey(std::int64_t i, std::int64_t j, std::int64_t k) const {
-        const std::uint64_t side = std::uint64_t(n) + 1;
-        return (std::uint64_t(k) * side + std::uint64_t(j)) * side + std::uint64_t(i);
+};
+
+// A block's (B+1)^3 grid points, B^3 cells and the 3 (B+1)^3 edge slots (point * 3 + axis; the
+// slots whose end leaves the block are never set). Edges and cells that the surface crosses are
+// found from the block's own values, so a cell's twelve edges are all its block's; a bitset with
+// running counts turns a local slot into an index of the global arrays with no hash map.
+constexpr int kBlock = 8;
+constexpr int kSide = kBlock + 1;
+constexpr int kPoints = kSide * kSide * kSide;
+constexpr int kEdgeSlots = 3 * kPoints;
+constexpr int kCells = kBlock * kBlock * kBlock;
+constexpr int kStride[3] = {1, kSide, kSide* kSide};
+
+template <int Bits> struct RankedBits {
+    static constexpr int kWords = (Bits + 63) / 64;
+    std::array<std::uint64_t, kWords> bits{};
+    std::array<std::uint32_t, kWords> before{}; // global index of the first set bit of each word
+    void set(int i) { bits[std::size_t(i >> 6)] |= std::uint64_t(1) << (i & 63); }
+    bool test(int i) const { return (bits[std::size_t(i >> 6)] >> (i & 63)) & 1u; }
+    // After every bit is set: number the set bits from `first`; returns the next free number.
+    std::uint32_t number(std::uint32_t first) {
+        for (int w = 0; w < kWords; ++w) {
+            before[std::size_t(w)] = first;
+            first += std::uint32_t(std::popcount(bits[std::size_t(w)]));
+        }
+        return first;
     }
+    std::uint32_t rank(int i) const {
+        const std::uint64_t below = bits[std::size_t(i >> 6)] & ((std::uint64_t(1) << (i & 63)) - 1);
+        return before[std::size_t(i >> 6)] + std::uint32_t(std::popcount(below));
+    }
+};
+
+// The cube's corners c = x + 2y + 4z and its edges l = axis * 4 + (offset along axis+1) +
+// 2 * (offset along axis+2), with the corners each edge joins.
+struct CubeTables {
+    int edgeCorner[12][2];
+    int edgeOffset[12][3]; // the edge's start corner
+    // Each face (w, side): its edges (u at v = 0, u at v = 1, v at u = 0, v at u = 1) and corners
+    // (00, 10, 01, 11 in (u, v)).
+    int faceEdges[6][4];
+    int faceCorners[6][4];
+    CubeTables() {
+        for (int axis = 0; axis < 3; ++axis)
+            for (int b = 0; b < 4; ++b) {
+                const int l = axis * 4 + b;
+                int offset[3] = {0, 0, 0};
+                offset[(axis + 1) % 3] = b & 1;
+                offset[(axis + 2) % 3] = b >> 1;
+                for (int a = 0; a < 3; ++a) edgeOffset[l][a] = offset[a];
+                edgeCorner[l][0] = offset[0] + 2 * offset[1] + 4 * offset[2];
+                offset[axis] = 1;
+                edgeCorner[l][1] = offset[0] + 2 * offset[1] + 4 * offset[2];
+            }
+        auto localEdge = [](int axis, const int offset[3]) {
+            return axis * 4 + offset[(axis + 1) % 3] + 2 * offset[(axis + 2) % 3];
+        };
+        for (int w = 0; w < 3; ++w)
+            for (int side = 0; side < 2; ++side) {
+                const int face = 2 * w + side, up = (w + 1) % 3, vp = (w + 2) % 3;
+                auto edgeAt = [&](int axis, int offU, int offV) {
+                    int offset[3] = {0, 0, 0};
+                    offset[w] = side;
+                    offset[up] = offU;
+                    offset[vp] = offV;
+                    return localEdge(axis, offset);
+                };
+                faceEdges[face][0] = edgeAt(up, 0, 0);
+                faceEdges[face][1] = edgeAt(up, 0, 1);
+                faceEdges[face][2] = edgeAt(vp, 0, 0);
+                faceEdges[face][3] = edgeAt(vp, 1, 0);
+                for (int q = 0; q < 4; ++q) {
+                    int offset[3] = {0, 0, 0};
+                    offset[w] = side;
+                    offset[up] = q & 1;
+                    offset[vp] = q >> 1;
+                    faceCorners[face][q] = offset[0] + 2 * offset[1] + 4 * offset[2];
+                }
+            }
+    }
+};
+const CubeTables& cube() {
+    static const CubeTables tables;
+    return tables;
+}
+
+bool inside(float f) { return f < 0.0f; }
+bool crosses(float f0, float f1) { return std::isfinite(f0) && std::isfinite(f1) && inside(f0) != inside(f1); }
+
+struct Edge {
+    std::int32_t i, j, k; // start point on the grid
+    std::int8_t axis;
+    bool startInside;
+    bool owned; // the block that makes this edge's quad (a face edge is found by both blocks)
+};
+
+struct CellRecord {
+    std::uint32_t firstVertex;
+    std::uint32_t vertexOfEdge; // 2 bits per local edge: which of the cell's vertices (patches) it feeds
 };
 
 } // namespace
@@ -109,10 +202,12 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
     MeshStats stats;
     detail::FieldProbe probe;
     if (auto ok = probe.build(sdf, "analysis/points.glsl", options.time, options.parameters); !ok) return ok.error();
+    const CubeTables& tables = cube();
 
     // 1. Block centres: which blocks may hold surface.
     const int blocksPerAxis = (grid.n + kBlock - 1) / kBlock;
     std::vector<float> centres;
+    centres.reserve(3 * std::size_t(blocksPerAxis) * blocksPerAxis * blocksPerAxis);
     for (int bk = 0; bk < blocksPerAxis; ++bk)
         for (int bj = 0; bj < blocksPerAxis; ++bj)
             for (int bi = 0; bi < blocksPerAxis; ++bi) {
@@ -127,139 +222,137 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
     stats.blocks = centreValues.size();
     const double halfDiagonal = 0.5 * glm::length(grid.step * double(kBlock));
     std::vector<std::array<int, 3>> kept;
+    std::vector<std::int32_t> blockSlot(centreValues.size(), -1);
     for (std::size_t b = 0; b < centreValues.size(); ++b) {
         const float f = centreValues[b];
         const bool maySurface = options.lipschitz <= 0.0f || !std::isfinite(f) ||
                                 std::abs(double(f)) <= double(options.lipschitz) * halfDiagonal * 1.001 + 1e-6;
         if (!maySurface) continue;
-        const int bi = int(b % std::size_t(blocksPerAxis)), bj = int(b / std::size_t(blocksPerAxis) % std::size_t(blocksPerAxis)),
-                  bk = int(b / (std::size_t(blocksPerAxis) * std::size_t(blocksPerAxis)));
-        kept.push_back({bi, bj, bk});
+        blockSlot[b] = std::int32_t(kept.size());
+        kept.push_back({int(b % std::size_t(blocksPerAxis)), int(b / std::size_t(blocksPerAxis) % std::size_t(blocksPerAxis)),
+                        int(b / (std::size_t(blocksPerAxis) * std::size_t(blocksPerAxis)))});
     }
     stats.blocksKept = kept.size();
     progress(1, 4);
 
     // 2. The grid points of the kept blocks, (B+1)^3 per block in a dense array (a point on a face
     // two kept blocks share is evaluated by both, at the same coordinates, so to the same value).
-    constexpr int kSide = kBlock + 1;
-    constexpr std::size_t kPerBlock = std::size_t(kSide) * kSide * kSide;
-    std::vector<std::int32_t> blockSlot(std::size_t(blocksPerAxis) * blocksPerAxis * blocksPerAxis, -1);
-    std::vector<float> points;
-    points.reserve(3 * kPerBlock * kept.size());
-    for (std::size_t slot = 0; slot < kept.size(); ++slot) {
-        const auto& b = kept[slot];
-        blockSlot[(std::size_t(b[2]) * blocksPerAxis + std::size_t(b[1])) * blocksPerAxis + std::size_t(b[0])] =
-            std::int32_t(slot);
-        for (int k = 0; k < kSide; ++k)
-            for (int j = 0; j < kSide; ++j)
-                for (int i = 0; i < kSide; ++i) {
-                    // Points past the grid's far side (partial last blocks) are clamped onto it.
-                    const glm::vec3 p = grid.point(std::min(b[0] * kBlock + i, grid.n), std::min(b[1] * kBlock + j, grid.n),
-                                                   std::min(b[2] * kBlock + k, grid.n));
-                    points.insert(points.end(), {p.x, p.y, p.z});
-                }
-    }
     std::vector<float> values;
-    if (auto ok = probe.evaluate(points, values, nullptr); !ok) return ok.error();
+    {
+        detail::FieldProbe lattice;
+        if (auto ok = lattice.build(sdf, "analysis/lattice.glsl", options.time, options.parameters); !ok) return ok.error();
+        std::vector<float> firstPoints;
+        firstPoints.reserve(3 * kept.size());
+        for (const auto& b : kept)
+            for (int a = 0; a < 3; ++a) firstPoints.push_back(float(b[std::size_t(a)] * kBlock));
+        if (auto ok = lattice.evaluateLattice(firstPoints, glm::vec3(grid.origin), glm::vec3(grid.step), kBlock, grid.n, values);
+            !ok)
+            return ok.error();
+    }
     stats.pointsEvaluated += values.size();
     if (progress.isCancelled()) return makeError("mesh: cancelled");
     progress(2, 4);
-    // The value at grid point (i, j, k) from a kept block that holds it; NaN when none does.
-    auto value = [&](std::int64_t i, std::int64_t j, std::int64_t k) -> float {
-        const std::int64_t c[3] = {i, j, k};
-        std::int64_t candidates[3][2];
-        int counts[3];
-        for (int a = 0; a < 3; ++a) {
-            counts[a] = 0;
-            const std::int64_t block = std::min<std::int64_t>(c[a] / kBlock, blocksPerAxis - 1);
-            candidates[a][counts[a]++] = block;
-            if (c[a] % kBlock == 0 && c[a] / kBlock - 1 >= 0 && c[a] / kBlock - 1 != block)
-                candidates[a][counts[a]++] = c[a] / kBlock - 1;
-        }
-        for (int x = 0; x < counts[0]; ++x)
-            for (int y = 0; y < counts[1]; ++y)
-                for (int z = 0; z < counts[2]; ++z) {
-                    const std::int64_t bx = candidates[0][x], by = candidates[1][y], bz = candidates[2][z];
-                    const std::int32_t slot =
-                        blockSlot[(std::size_t(bz) * blocksPerAxis + std::size_t(by)) * blocksPerAxis + std::size_t(bx)];
-                    if (slot < 0) continue;
-                    const std::int64_t li = i - bx * kBlock, lj = j - by * kBlock, lk = k - bz * kBlock;
-                    if (li < 0 || lj < 0 || lk < 0 || li > kBlock || lj > kBlock || lk > kBlock) continue;
-                    return values[std::size_t(slot) * kPerBlock + std::size_t((lk * kSide + lj) * kSide + li)];
-                }
-        return std::numeric_limits<float>::quiet_NaN();
-    };
-    auto inside = [](float f) { return f < 0.0f; };
 
-    // 3. Edges with a sign change: the crossing by linear interpolation, its normal from the GPU.
-    struct Edge {
-        std::int64_t i, j, k;
-        int axis;
-        bool startInside;
-    };
+    // 3. Edges with a sign change, block by block in slot order (so that a block's bits number them).
+    std::vector<RankedBits<kEdgeSlots>> blockEdges(kept.size());
     std::vector<Edge> edges;
-    std::vector<float> crossings;
-    const std::int64_t axisStep[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    for (const auto& b : kept)
-        for (int k = b[2] * kBlock; k <= std::min(grid.n, (b[2] + 1) * kBlock); ++k)
-            for (int j = b[1] * kBlock; j <= std::min(grid.n, (b[1] + 1) * kBlock); ++j)
-                for (int i = b[0] * kBlock; i <= std::min(grid.n, (b[0] + 1) * kBlock); ++i)
+    std::vector<float> edgeValues; // f at the start and the end of each edge
+    std::uint32_t edgeCount = 0;
+    for (std::size_t slot = 0; slot < kept.size(); ++slot) {
+        const auto& b = kept[slot];
+        const float* v = values.data() + slot * std::size_t(kPoints);
+        const bool last[3] = {b[0] == blocksPerAxis - 1, b[1] == blocksPerAxis - 1, b[2] == blocksPerAxis - 1};
+        RankedBits<kEdgeSlots>& bits = blockEdges[slot];
+        for (int k = 0; k < kSide; ++k)
+            for (int j = 0; j < kSide; ++j)
+                for (int i = 0; i < kSide; ++i) {
+                    const int p = (k * kSide + j) * kSide + i;
+                    const int local[3] = {i, j, k};
                     for (int axis = 0; axis < 3; ++axis) {
-                        // Each edge once: from a point of this block along +axis, inside the block.
-                        const std::int64_t e[3] = {i + axisStep[axis][0], j + axisStep[axis][1], k + axisStep[axis][2]};
-                        if (e[axis] > std::min<std::int64_t>(grid.n, (b[std::size_t(axis)] + 1) * kBlock)) continue;
-                        const float f0 = value(i, j, k), f1 = value(e[0], e[1], e[2]);
-                        if (!std::isfinite(f0) || !std::isfinite(f1) || inside(f0) == inside(f1)) continue;
-                        const double t = std::clamp(double(f0) / (double(f0) - double(f1)), 0.0, 1.0);
-                        const glm::dvec3 p0 = glm::dvec3(grid.point(i, j, k)), p1 = glm::dvec3(grid.point(e[0], e[1], e[2]));
-                        const glm::dvec3 p = p0 + t * (p1 - p0);
-                        edges.push_back({i, j, k, axis, inside(f0)});
-                        crossings.insert(crossings.end(), {float(p.x), float(p.y), float(p.z)});
+                        if (local[axis] == kBlock) continue;
+                        const float f0 = v[p], f1 = v[p + kStride[axis]];
+                        if (!crosses(f0, f1)) continue;
+                        bits.set(3 * p + axis);
+                        const bool owned = (i < kBlock || last[0]) && (j < kBlock || last[1]) && (k < kBlock || last[2]);
+                        edges.push_back(
+                            {b[0] * kBlock + i, b[1] * kBlock + j, b[2] * kBlock + k, std::int8_t(axis), inside(f0), owned});
+                        edgeValues.insert(edgeValues.end(), {f0, f1});
                     }
-    // Edges on the shared face of two kept blocks are visited from both; keep one of each.
-    {
-        std::unordered_map<std::uint64_t, std::size_t> seen;
-        std::vector<Edge> unique;
-        std::vector<float> uniqueCrossings;
-        for (std::size_t e = 0; e < edges.size(); ++e) {
-            const std::uint64_t key = grid.pointKey(edges[e].i, edges[e].j, edges[e].k) * 3 + std::uint64_t(edges[e].axis);
-            if (!seen.try_emplace(key, e).second) continue;
-            unique.push_back(edges[e]);
-            uniqueCrossings.insert(uniqueCrossings.end(), crossings.begin() + std::ptrdiff_t(3 * e),
-                                   crossings.begin() + std::ptrdiff_t(3 * e + 3));
-        }
-        edges = std::move(unique);
-        crossings = std::move(uniqueCrossings);
+                }
+        edgeCount = bits.number(edgeCount);
     }
-    // Linear interpolation misses the surface where the field bends along the edge (near a box's
-    // edge the inside value follows another face); bisection on the field itself puts every
-    // crossing on the surface to 1/1024 of a cell.
+    auto edgeStart = [&](const Edge& e) { return glm::dvec3(grid.point(e.i, e.j, e.k)); };
+    auto edgeVector = [&](const Edge& e) {
+        glm::dvec3 d(0.0);
+        d[e.axis] = grid.step[e.axis];
+        return d;
+    };
+    // The crossing on each edge by false position with the Illinois rule (the field, not a linear
+    // fit of its ends: near a box's edge the inside value follows another face): superlinear on
+    // smooth and kinked fields alike; an edge stops when its crossing is known to 1e-4 of its length.
+    std::vector<float> crossings(3 * edges.size());
     {
-        std::vector<double> low(edges.size(), 0.0), high(edges.size(), 1.0);
-        std::vector<float> probes(crossings.size()), probeValues;
-        // Writes the middle of edge e's bracket into `out`.
-        auto middleOf = [&](std::size_t e, std::vector<float>& out) {
-            const Edge& edge = edges[e];
-            const glm::dvec3 p0 = glm::dvec3(grid.point(edge.i, edge.j, edge.k));
-            const glm::dvec3 p1 =
-                p0 + glm::dvec3(axisStep[edge.axis][0], axisStep[edge.axis][1], axisStep[edge.axis][2]) * grid.step;
-            const glm::dvec3 p = p0 + 0.5 * (low[e] + high[e]) * (p1 - p0);
-            out[3 * e] = float(p.x);
-            out[3 * e + 1] = float(p.y);
-            out[3 * e + 2] = float(p.z);
+        struct Bracket {
+            double a = 0.0, b = 1.0, fa, fb, t;
+            int side = 0;
         };
-        for (int iteration = 0; iteration < 10; ++iteration) {
-            for (std::size_t e = 0; e < edges.size(); ++e) middleOf(e, probes);
+        std::vector<Bracket> brackets(edges.size());
+        std::vector<std::uint32_t> active(edges.size());
+        for (std::size_t e = 0; e < edges.size(); ++e) {
+            brackets[e].fa = edgeValues[2 * e];
+            brackets[e].fb = edgeValues[2 * e + 1];
+            active[e] = std::uint32_t(e);
+        }
+        std::vector<float> probes, probeValues;
+        for (int iteration = 0; iteration < 8 && !active.empty(); ++iteration) {
+            probes.resize(3 * active.size());
+            for (std::size_t q = 0; q < active.size(); ++q) {
+                Bracket& r = brackets[active[q]];
+                r.t = (r.a * r.fb - r.b * r.fa) / (r.fb - r.fa);
+                if (!(r.t > r.a && r.t < r.b)) r.t = 0.5 * (r.a + r.b);
+                const glm::dvec3 p = edgeStart(edges[active[q]]) + r.t * edgeVector(edges[active[q]]);
+                probes[3 * q] = float(p.x);
+                probes[3 * q + 1] = float(p.y);
+                probes[3 * q + 2] = float(p.z);
+            }
             if (auto ok = probe.evaluate(probes, probeValues, nullptr); !ok) return ok.error();
             stats.pointsEvaluated += probeValues.size();
-            for (std::size_t e = 0; e < edges.size(); ++e) {
-                if (!std::isfinite(probeValues[e])) continue;
-                const double middle = 0.5 * (low[e] + high[e]);
-                (inside(probeValues[e]) == edges[e].startInside ? low[e] : high[e]) = middle;
+            std::size_t still = 0;
+            for (std::size_t q = 0; q < active.size(); ++q) {
+                Bracket& r = brackets[active[q]];
+                const double f = probeValues[q];
+                if (!std::isfinite(f)) continue;
+                if (inside(float(f)) == inside(float(r.fa))) {
+                    r.a = r.t;
+                    r.fa = f;
+                    if (r.side == -1) r.fb *= 0.5;
+                    r.side = -1;
+                } else {
+                    r.b = r.t;
+                    r.fb = f;
+                    if (r.side == 1) r.fa *= 0.5;
+                    r.side = 1;
+                }
+                // Done when t is known to 1e-4 of the edge: the bracket is that small, or |f| over the
+                // field's slope along the edge is (a small |f| alone misleads on an edge that grazes
+                // the surface, where the slope is small too).
+                const double slope = std::abs(r.fb - r.fa) / (r.b - r.a);
+                if (r.b - r.a > 1e-4 && std::abs(f) > 1e-4 * slope) active[still++] = active[q];
             }
+            active.resize(still);
             if (progress.isCancelled()) return makeError("mesh: cancelled");
         }
-        for (std::size_t e = 0; e < edges.size(); ++e) middleOf(e, crossings);
+        for (std::size_t e = 0; e < edges.size(); ++e) {
+            const Bracket& r = brackets[e];
+            // Never on a grid point itself: where the surface touches the grid at a point (f = 0
+            // there, a torus's pole on a grid plane), the four cells around would otherwise put their
+            // vertices within float rounding of each other and fold the mesh there.
+            const double t = std::clamp(r.t, 1.0 / 1024.0, 1.0 - 1.0 / 1024.0);
+            const glm::dvec3 p = edgeStart(edges[e]) + t * edgeVector(edges[e]);
+            crossings[3 * e] = float(p.x);
+            crossings[3 * e + 1] = float(p.y);
+            crossings[3 * e + 2] = float(p.z);
+        }
     }
     std::vector<float> crossingValues, normals;
     const float normalStep = float(0.05 * std::min({grid.step.x, grid.step.y, grid.step.z}));
@@ -271,142 +364,135 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
     // its faces (an ambiguous face, with four crossings, is split by the sign of its bilinear
     // centre, which both cells sharing it see alike), so two sheets through one cell get a vertex
     // each and the mesh stays manifold. Each vertex is its patch's QEF minimiser, clamped into the cell.
-    auto cellKey = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
-        return (std::uint64_t(k) * std::uint64_t(grid.n) + std::uint64_t(j)) * std::uint64_t(grid.n) + std::uint64_t(i);
-    };
-    auto edgeKey = [&](std::int64_t i, std::int64_t j, std::int64_t k, int axis) {
-        return grid.pointKey(i, j, k) * 3 + std::uint64_t(axis);
-    };
-    std::unordered_map<std::uint64_t, std::uint32_t> edgeIndex;
-    edgeIndex.reserve(edges.size());
-    std::unordered_map<std::uint64_t, bool> activeCells;
-    for (std::size_t e = 0; e < edges.size(); ++e) {
-        const Edge& edge = edges[e];
-        edgeIndex[edgeKey(edge.i, edge.j, edge.k, edge.axis)] = std::uint32_t(e);
-        const int u = (edge.axis + 1) % 3, v = (edge.axis + 2) % 3;
-        for (int du = -1; du <= 0; ++du)
-            for (int dv = -1; dv <= 0; ++dv) {
-                std::int64_t c[3] = {edge.i, edge.j, edge.k};
-                c[u] += du;
-                c[v] += dv;
-                if (c[u] < 0 || c[v] < 0 || c[u] >= grid.n || c[v] >= grid.n || c[edge.axis] >= grid.n) continue;
-                activeCells[cellKey(c[0], c[1], c[2])] = true;
-            }
-    }
-    // Local edge l = axis * 4 + (offset along axis+1) + 2 * (offset along axis+2).
-    auto localEdge = [](int axis, const int offset[3]) { return axis * 4 + offset[(axis + 1) % 3] + 2 * offset[(axis + 2) % 3]; };
-    constexpr std::uint32_t kNone = 0xffffffffu;
     Mesh mesh;
-    std::unordered_map<std::uint64_t, std::array<std::uint32_t, 12>> vertexOf; // cell -> the vertex of each local edge
-    vertexOf.reserve(activeCells.size());
-    std::vector<std::uint64_t> vertexCell;
-    for (const auto& [key, unused] : activeCells) {
-        const std::int64_t i = std::int64_t(key % std::uint64_t(grid.n)),
-                           j = std::int64_t(key / std::uint64_t(grid.n) % std::uint64_t(grid.n)),
-                           k = std::int64_t(key / (std::uint64_t(grid.n) * std::uint64_t(grid.n)));
-        const std::int64_t origin[3] = {i, j, k};
-        std::array<std::int64_t, 12> global; // index into edges, or -1
-        for (int axis = 0; axis < 3; ++axis)
-            for (int b = 0; b < 4; ++b) {
-                std::int64_t s[3] = {i, j, k};
-                s[(axis + 1) % 3] += b & 1;
-                s[(axis + 2) % 3] += b >> 1;
-                auto it = edgeIndex.find(edgeKey(s[0], s[1], s[2], axis));
-                global[std::size_t(axis * 4 + b)] = it == edgeIndex.end() ? -1 : std::int64_t(it->second);
-            }
-        std::array<int, 12> parent;
-        for (int l = 0; l < 12; ++l) parent[std::size_t(l)] = l;
-        std::function<int(int)> find = [&](int x) {
-            return parent[std::size_t(x)] == x ? x : parent[std::size_t(x)] = find(parent[std::size_t(x)]);
-        };
-        auto join = [&](int a, int b) { parent[std::size_t(find(a))] = find(b); };
-        for (int w = 0; w < 3; ++w)
-            for (int side = 0; side < 2; ++side) {
-                const int up = (w + 1) % 3, vp = (w + 2) % 3;
-                auto edgeAt = [&](int axis, int offU, int offV) {
-                    int offset[3] = {0, 0, 0};
-                    offset[w] = side;
-                    offset[up] = offU;
-                    offset[vp] = offV;
-                    return localEdge(axis, offset);
-                };
-                const int eu0 = edgeAt(up, 0, 0), eu1 = edgeAt(up, 0, 1), ev0 = edgeAt(vp, 0, 0), ev1 = edgeAt(vp, 1, 0);
-                std::vector<int> present;
-                for (int l : {eu0, eu1, ev0, ev1})
-                    if (global[std::size_t(l)] >= 0) present.push_back(l);
-                if (present.size() == 4) {
-                    auto corner = [&](int offU, int offV) {
-                        std::int64_t c[3] = {origin[0], origin[1], origin[2]};
-                        c[w] += side;
-                        c[up] += offU;
-                        c[vp] += offV;
-                        return value(c[0], c[1], c[2]);
-                    };
-                    const float c00 = corner(0, 0), centre = 0.25f * (c00 + corner(1, 0) + corner(0, 1) + corner(1, 1));
-                    if (inside(centre) == inside(c00)) {
-                        join(eu0, ev1);
-                        join(ev0, eu1);
-                    } else {
-                        join(eu0, ev0);
-                        join(eu1, ev1);
+    std::vector<RankedBits<kCells>> blockCells(kept.size());
+    std::vector<CellRecord> cellRecords;
+    std::vector<std::array<std::int32_t, 3>> vertexCell;
+    std::uint32_t cellCount = 0;
+    for (std::size_t slot = 0; slot < kept.size(); ++slot) {
+        const auto& b = kept[slot];
+        const float* v = values.data() + slot * std::size_t(kPoints);
+        const RankedBits<kEdgeSlots>& bits = blockEdges[slot];
+        for (int k = 0; k < kBlock && b[2] * kBlock + k < grid.n; ++k)
+            for (int j = 0; j < kBlock && b[1] * kBlock + j < grid.n; ++j)
+                for (int i = 0; i < kBlock && b[0] * kBlock + i < grid.n; ++i) {
+                    const int p = (k * kSide + j) * kSide + i;
+                    float corner[8];
+                    int signs = 0;
+                    for (int c = 0; c < 8; ++c) {
+                        corner[c] = v[p + (c & 1) * kStride[0] + (c >> 1 & 1) * kStride[1] + (c >> 2) * kStride[2]];
+                        signs |= int(inside(corner[c])) << c;
                     }
-                } else {
-                    for (std::size_t q = 1; q < present.size(); ++q) join(present[0], present[q]);
+                    if (signs == 0 || signs == 0xff) continue; // one side (NaN counts as outside, and crosses nothing)
+                    int present = 0;
+                    std::uint32_t global[12];
+                    for (int l = 0; l < 12; ++l) {
+                        if (!crosses(corner[tables.edgeCorner[l][0]], corner[tables.edgeCorner[l][1]])) continue;
+                        present |= 1 << l;
+                        const int* o = tables.edgeOffset[l];
+                        global[l] = bits.rank(3 * (p + o[0] * kStride[0] + o[1] * kStride[1] + o[2] * kStride[2]) + l / 4);
+                    }
+                    if (present == 0) continue;
+                    int parent[12];
+                    for (int l = 0; l < 12; ++l) parent[l] = l;
+                    auto find = [&](int x) {
+                        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+                        return x;
+                    };
+                    auto join = [&](int a, int c) { parent[find(a)] = find(c); };
+                    for (int face = 0; face < 6; ++face) {
+                        const int* fe = tables.faceEdges[face];
+                        int on[4], count = 0;
+                        for (int q = 0; q < 4; ++q)
+                            if (present >> fe[q] & 1) on[count++] = fe[q];
+                        if (count == 4) {
+                            const int* fc = tables.faceCorners[face];
+                            const float c00 = corner[fc[0]];
+                            const float centre = 0.25f * (c00 + corner[fc[1]] + corner[fc[2]] + corner[fc[3]]);
+                            if (inside(centre) == inside(c00)) {
+                                join(fe[0], fe[3]);
+                                join(fe[2], fe[1]);
+                            } else {
+                                join(fe[0], fe[2]);
+                                join(fe[1], fe[3]);
+                            }
+                        } else {
+                            for (int q = 1; q < count; ++q) join(on[0], on[q]);
+                        }
+                    }
+                    const std::int32_t cell[3] = {b[0] * kBlock + i, b[1] * kBlock + j, b[2] * kBlock + k};
+                    const glm::dvec3 lo = glm::dvec3(grid.point(cell[0], cell[1], cell[2]));
+                    const glm::dvec3 hi = glm::dvec3(grid.point(cell[0] + 1, cell[1] + 1, cell[2] + 1));
+                    CellRecord record{std::uint32_t(mesh.vertices.size()), 0};
+                    std::uint32_t patch = 0;
+                    for (int root = 0; root < 12; ++root) {
+                        if (!(present >> root & 1) || find(root) != root) continue;
+                        glm::dvec3 points[12], patchNormals[12];
+                        int count = 0;
+                        for (int l = 0; l < 12; ++l) {
+                            if (!(present >> l & 1) || find(l) != root) continue;
+                            record.vertexOfEdge |= patch << (2 * l);
+                            const std::size_t e = global[l];
+                            const glm::dvec3 n(normals[3 * e], normals[3 * e + 1], normals[3 * e + 2]);
+                            const double length = glm::length(n);
+                            points[count] = glm::dvec3(crossings[3 * e], crossings[3 * e + 1], crossings[3 * e + 2]);
+                            patchNormals[count++] = length > 0.0 && std::isfinite(length) ? n / length : glm::dvec3(0.0);
+                        }
+                        const glm::dvec3 x = solveQef(points, patchNormals, count);
+                        const glm::dvec3 clamped = glm::clamp(x, lo, hi);
+                        if (clamped != x) ++stats.clampedVertices;
+                        mesh.vertices.push_back(glm::vec3(clamped));
+                        vertexCell.push_back({cell[0], cell[1], cell[2]});
+                        ++patch;
+                    }
+                    blockCells[slot].set((k * kBlock + j) * kBlock + i);
+                    cellRecords.push_back(record);
                 }
-            }
-        std::array<std::uint32_t, 12> vertexFor;
-        vertexFor.fill(kNone);
-        const glm::dvec3 lo = glm::dvec3(grid.point(i, j, k)), hi = glm::dvec3(grid.point(i + 1, j + 1, k + 1));
-        for (int root = 0; root < 12; ++root) {
-            std::vector<glm::dvec3> points, patchNormals;
-            std::vector<int> members;
-            for (int l = 0; l < 12; ++l) {
-                if (global[std::size_t(l)] < 0 || find(l) != root) continue;
-                members.push_back(l);
-                const std::size_t e = std::size_t(global[std::size_t(l)]);
-                glm::dvec3 n(normals[3 * e], normals[3 * e + 1], normals[3 * e + 2]);
-                const double length = glm::length(n);
-                points.emplace_back(crossings[3 * e], crossings[3 * e + 1], crossings[3 * e + 2]);
-                patchNormals.push_back(length > 0.0 && std::isfinite(length) ? n / length : glm::dvec3(0.0));
-            }
-            if (members.empty()) continue;
-            const glm::dvec3 x = solveQef(points, patchNormals);
-            const glm::dvec3 clamped = glm::clamp(x, lo, hi);
-            if (clamped != x) ++stats.clampedVertices;
-            const auto id = std::uint32_t(mesh.vertices.size());
-            mesh.vertices.push_back(glm::vec3(clamped));
-            vertexCell.push_back(key);
-            for (int l : members) vertexFor[std::size_t(l)] = id;
-        }
-        vertexOf[key] = vertexFor;
+        cellCount = blockCells[slot].number(cellCount);
     }
-    stats.activeCells = activeCells.size();
+    stats.activeCells = cellRecords.size();
     // On curved surfaces the planes' minimiser lies off the surface by about h^2 times the
     // curvature: two Newton steps along the gradient put each vertex on it (a vertex already on a
     // sharp edge or corner has f = 0 and stays). Steps are kept within the vertex's cell.
-    for (int iteration = 0; iteration < 2; ++iteration) {
-        std::vector<float> positions, fieldValues, gradients;
-        positions.reserve(3 * mesh.vertices.size());
-        for (const glm::vec3& v : mesh.vertices) positions.insert(positions.end(), {v.x, v.y, v.z});
-        if (auto ok = probe.evaluate(positions, fieldValues, &gradients, normalStep); !ok) return ok.error();
-        stats.pointsEvaluated += fieldValues.size();
-        for (std::uint32_t vertex = 0; vertex < mesh.vertices.size(); ++vertex) {
-            const std::uint64_t key = vertexCell[vertex];
-            const float f = fieldValues[vertex];
-            const glm::vec3 g(gradients[3 * vertex], gradients[3 * vertex + 1], gradients[3 * vertex + 2]);
-            const float g2 = glm::dot(g, g);
-            if (!std::isfinite(f) || !(g2 > 1e-12f) || !std::isfinite(g2)) continue;
-            const std::int64_t i = std::int64_t(key % std::uint64_t(grid.n)),
-                               j = std::int64_t(key / std::uint64_t(grid.n) % std::uint64_t(grid.n)),
-                               k = std::int64_t(key / (std::uint64_t(grid.n) * std::uint64_t(grid.n)));
-            const glm::vec3 moved =
-                glm::clamp(mesh.vertices[vertex] - g * (f / g2), grid.point(i, j, k), grid.point(i + 1, j + 1, k + 1));
-            mesh.vertices[vertex] = moved;
+    {
+        std::vector<float> positions(3 * mesh.vertices.size()), fieldValues, gradients;
+        for (int iteration = 0; iteration < 2; ++iteration) {
+            for (std::size_t vertex = 0; vertex < mesh.vertices.size(); ++vertex)
+                for (int a = 0; a < 3; ++a) positions[3 * vertex + std::size_t(a)] = mesh.vertices[vertex][a];
+            if (auto ok = probe.evaluate(positions, fieldValues, &gradients, normalStep); !ok) return ok.error();
+            stats.pointsEvaluated += fieldValues.size();
+            for (std::size_t vertex = 0; vertex < mesh.vertices.size(); ++vertex) {
+                const float f = fieldValues[vertex];
+                const glm::vec3 g(gradients[3 * vertex], gradients[3 * vertex + 1], gradients[3 * vertex + 2]);
+                const float g2 = glm::dot(g, g);
+                if (!std::isfinite(f) || !(g2 > 1e-12f) || !std::isfinite(g2)) continue;
+                const auto& c = vertexCell[vertex];
+                mesh.vertices[vertex] = glm::clamp(mesh.vertices[vertex] - g * (f / g2), grid.point(c[0], c[1], c[2]),
+                                                   grid.point(c[0] + 1, c[1] + 1, c[2] + 1));
+            }
         }
     }
 
-    // 5. A quad per sign-changing edge, wound so that it faces outward (towards f > 0).
+    // 5. A quad per sign-changing edge (from the block that owns it), wound so that it faces
+    // outward (towards f > 0).
+    constexpr std::uint32_t kNone = 0xffffffffu;
+    // The vertex that cell c's local edge l feeds; kNone when the cell was not meshed (outside the
+    // grid or in a skipped block).
+    auto vertexAt = [&](const std::int64_t c[3], int l) -> std::uint32_t {
+        for (int a = 0; a < 3; ++a)
+            if (c[a] < 0 || c[a] >= grid.n) return kNone;
+        const std::int64_t bi = c[0] / kBlock, bj = c[1] / kBlock, bk = c[2] / kBlock;
+        const std::int32_t slot = blockSlot[std::size_t((bk * blocksPerAxis + bj) * blocksPerAxis + bi)];
+        if (slot < 0) return kNone;
+        const int local = int(((c[2] - bk * kBlock) * kBlock + (c[1] - bj * kBlock)) * kBlock + (c[0] - bi * kBlock));
+        const RankedBits<kCells>& cells = blockCells[std::size_t(slot)];
+        if (!cells.test(local)) return kNone;
+        const CellRecord& record = cellRecords[cells.rank(local)];
+        return record.firstVertex + (record.vertexOfEdge >> (2 * l) & 3u);
+    };
+    mesh.indices.reserve(6 * edges.size());
     for (const Edge& edge : edges) {
+        if (!edge.owned) continue;
         const int u = (edge.axis + 1) % 3, v = (edge.axis + 2) % 3;
         std::uint32_t quad[4];
         bool complete = true;
@@ -415,20 +501,10 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
             std::int64_t c[3] = {edge.i, edge.j, edge.k};
             c[u] += offsets[q][0];
             c[v] += offsets[q][1];
-            if (c[u] < 0 || c[v] < 0 || c[u] >= grid.n || c[v] >= grid.n || c[edge.axis] >= grid.n) {
-                complete = false;
-                break;
-            }
-            auto it = vertexOf.find(cellKey(c[0], c[1], c[2]));
             // The edge seen from this cell: at its +u side when the cell lies at -u, and so on.
-            int offset[3] = {0, 0, 0};
-            offset[u] = -offsets[q][0];
-            offset[v] = -offsets[q][1];
-            const std::uint32_t vertex = it == vertexOf.end() ? kNone : it->second[std::size_t(localEdge(edge.axis, offset))];
-            if (vertex == kNone)
-                complete = false;
-            else
-                quad[q] = vertex;
+            const int l = edge.axis * 4 + (-offsets[q][0]) + 2 * (-offsets[q][1]);
+            quad[q] = vertexAt(c, l);
+            complete = quad[q] != kNone;
         }
         if (!complete) continue;
         // (u, v) counter-clockwise looking down +axis; the surface faces +axis when the edge starts inside.

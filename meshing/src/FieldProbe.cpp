@@ -4,6 +4,9 @@
 #include <sampling/SamplerLibrary.h>
 #include <shaders/ShaderComposer.h>
 
+#include <algorithm>
+#include <iterator>
+
 namespace sdfwb::meshing::detail {
 
 Expected<void> FieldProbe::build(const shaders::PreparedSdf& sdf, const std::string& pattern, float time,
@@ -21,9 +24,7 @@ Expected<void> FieldProbe::evaluate(const std::vector<float>& points, std::vecto
                                     std::vector<float>* gradients, float gradientStep) {
     const std::uint64_t n = points.size() / 3;
     distances.resize(n);
-    m_positions.resize(3 * n);
-    std::vector<float>& grad = gradients ? *gradients : m_scratch;
-    grad.resize(3 * n);
+    if (gradients) gradients->resize(3 * n);
     if (n == 0) return {};
     sampling::SamplingJob job;
     job.count = n;
@@ -31,7 +32,29 @@ Expected<void> FieldProbe::evaluate(const std::vector<float>& points, std::vecto
     job.gradientStep = gradientStep;
     job.inputPoints = points.data();
     job.sdfParameters = m_parameters;
-    auto report = sampling::sampleInto(m_compute, job, m_positions.data(), distances.data(), grad.data(), {});
+    job.chunkSize = 1u << 16; // dispatches of 64 k points: their buffers stay in cache
+    // The points are the caller's: no positions back, and no gradient taps unless asked for.
+    auto report = sampling::sampleInto(m_compute, job, nullptr, distances.data(), gradients ? gradients->data() : nullptr, {});
+    if (!report) return report.error();
+    return {};
+}
+
+Expected<void> FieldProbe::evaluateLattice(const std::vector<float>& firstPoints, glm::vec3 origin, glm::vec3 step, int block,
+                                           int n, std::vector<float>& distances) {
+    const std::uint64_t perBlock = std::uint64_t(block + 1) * std::uint64_t(block + 1) * std::uint64_t(block + 1);
+    const std::uint64_t count = firstPoints.size() / 3 * perBlock;
+    distances.resize(count);
+    if (count == 0) return {};
+    sampling::SamplingJob job;
+    job.count = count;
+    job.time = m_time;
+    job.inputPoints = firstPoints.data();
+    job.inputTableFloats = firstPoints.size();
+    job.sdfParameters = m_parameters;
+    job.chunkSize = 1u << 16;
+    const float parameters[8] = {origin.x, origin.y, origin.z, float(block), step.x, step.y, step.z, float(n)};
+    std::copy(std::begin(parameters), std::end(parameters), job.parameters);
+    auto report = sampling::sampleInto(m_compute, job, nullptr, distances.data(), nullptr, {});
     if (!report) return report.error();
     return {};
 }

@@ -7,6 +7,8 @@
 #include <shaders/Parameters.h>
 #include <shaders/SdfSource.h>
 
+#include <glm/vec3.hpp>
+
 #include <string>
 #include <vector>
 
@@ -17,10 +19,14 @@ public:
     // `pattern`: "analysis/points.glsl" (the caller's points) or a sampler name ("surface").
     Expected<void> build(const shaders::PreparedSdf& sdf, const std::string& pattern, float time,
                          const std::vector<shaders::ParameterSetting>& parameters);
-    // points: 3n floats; distances: n; gradients (3n) when not null. gradientStep: the central
-    // difference step.
+    // points: 3n floats; distances: n; gradients (3n) when not null (else the field alone: one
+    // evaluation per point, not seven). gradientStep: the central difference step.
     Expected<void> evaluate(const std::vector<float>& points, std::vector<float>& distances, std::vector<float>* gradients,
                             float gradientStep = 1e-4f);
+    // With the analysis/lattice.glsl pattern: the field at every grid point of each block, (B+1)^3
+    // per block in x-fastest order. firstPoints: each block's first grid index (3 floats).
+    Expected<void> evaluateLattice(const std::vector<float>& firstPoints, glm::vec3 origin, glm::vec3 step, int block, int n,
+                                   std::vector<float>& distances);
     // n rows of a generating sampler (surface): positions, distances and gradients.
     Expected<void> generate(std::uint64_t n, std::uint64_t seed, std::vector<float>& positions, std::vector<float>& distances,
                             std::vector<float>& gradients);
@@ -30,7 +36,6 @@ private:
     renderer::SampleCompute m_compute;
     float m_time = 0.0f;
     std::vector<shaders::ParameterSetting> m_parameters;
-    std::vector<float> m_positions, m_scratch; // reused between calls (no page faults per call)
 };
 
 } // namespace sdfwb::meshing::detail

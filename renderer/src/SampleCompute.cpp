@@ -145,6 +145,9 @@ Expected<void> SampleCompute::run(const SampleUniforms& uniforms, std::uint32_t 
     if (GLint location = m_impl->location("sdfwb_tetrahedralGradient"); location >= 0)
         glUniform1i(location, uniforms.tetrahedralGradient ? 1 : 0);
     applyParameters(uniforms.sdfParameters, [this](const char* name) { return m_impl->location(name); });
+    // A null target is not wanted: the shader skips it (the gradient's six evaluations included).
+    if (GLint location = m_impl->location("sdfwb_writePosition"); location >= 0) glUniform1i(location, positions ? 1 : 0);
+    if (GLint location = m_impl->location("sdfwb_writeGradient"); location >= 0) glUniform1i(location, gradients ? 1 : 0);
     glUniform1ui(m_impl->location("sdfwb_chunkFirst"), first);
     glUniform1ui(m_impl->location("sdfwb_chunkCount"), count);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingPositions, m_impl->buffers[0].id());
@@ -157,8 +160,12 @@ Expected<void> SampleCompute::run(const SampleUniforms& uniforms, std::uint32_t 
             m_impl->inputs = GlBuffer(id);
         }
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, m_impl->inputs.id());
-        glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(count) * 12, uniforms.inputPoints + 3 * std::size_t(first),
-                     GL_STREAM_DRAW);
+        if (uniforms.inputTableFloats > 0)
+            glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(uniforms.inputTableFloats * sizeof(float)), uniforms.inputPoints,
+                         GL_STREAM_DRAW);
+        else
+            glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(count) * 12, uniforms.inputPoints + 3 * std::size_t(first),
+                         GL_STREAM_DRAW);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingInputs, m_impl->inputs.id());
     }
     glDispatchCompute((count + 63u) / 64u, 1, 1);
@@ -166,6 +173,7 @@ Expected<void> SampleCompute::run(const SampleUniforms& uniforms, std::uint32_t 
     float* targets[3] = {positions, distances, gradients};
     const GLsizeiptr sizes[3] = {GLsizeiptr(count) * 12, GLsizeiptr(count) * 4, GLsizeiptr(count) * 12};
     for (int i = 0; i < 3; ++i) {
+        if (!targets[i]) continue;
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, m_impl->buffers[i].id());
         glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizes[i], targets[i]);
     }

@@ -18,7 +18,8 @@ std::uint64_t countBadRows(const float* positions, const float* distances, const
     for (std::size_t i = 0; i < n; ++i) {
         bool finite = std::isfinite(distances[i]);
         for (int c = 0; c < 3 && finite; ++c)
-            finite = std::isfinite(positions[3 * i + std::size_t(c)]) && std::isfinite(gradients[3 * i + std::size_t(c)]);
+            finite = (!positions || std::isfinite(positions[3 * i + std::size_t(c)])) &&
+                     (!gradients || std::isfinite(gradients[3 * i + std::size_t(c)]));
         bad += !finite;
     }
     return bad;
@@ -44,6 +45,7 @@ Expected<SamplingReport> run(renderer::SampleCompute& compute, const SamplingJob
     std::copy(std::begin(job.parameters), std::end(job.parameters), uniforms.parameters);
     uniforms.surfaceTolerance = job.surfaceTolerance;
     uniforms.inputPoints = job.inputPoints;
+    uniforms.inputTableFloats = job.inputTableFloats;
     uniforms.sdfParameters = job.sdfParameters;
     progress(0, rows);
     for (std::uint64_t done = 0; done < rows;) {
@@ -111,7 +113,7 @@ Expected<void> validate(const SamplingJob& job) {
 Expected<SamplingReport> sampleInto(renderer::SampleCompute& compute, const SamplingJob& job, float* positions, float* distances,
                                     float* gradients, const ProgressSink& progress) {
     auto target = [&](std::uint64_t done, std::uint32_t) {
-        return Pointers{positions + 3 * done, distances + done, gradients + 3 * done};
+        return Pointers{positions ? positions + 3 * done : nullptr, distances + done, gradients ? gradients + 3 * done : nullptr};
     };
     auto consume = [](const float*, const float*, const float*, std::size_t) -> Expected<void> { return {}; };
     return run(compute, job, target, consume, progress);

@@ -10,6 +10,10 @@ layout(std430, binding = SDFWB_BINDING_DISTANCES) writeonly buffer sdfwb_Distanc
 layout(std430, binding = SDFWB_BINDING_GRADIENTS) writeonly buffer sdfwb_Gradients { float sdfwb_gradients[]; };
 
 uniform uint sdfwb_chunkCount;  // samples in this chunk
+// Callers that need only the field's value (a mesher's lattice, evaluate(gradient=False)) turn
+// off the gradient's six extra evaluations and the writes they do not read back.
+uniform bool sdfwb_writeGradient = true;
+uniform bool sdfwb_writePosition = true;
 
 void main() {
     uint local = gl_GlobalInvocationID.x;
@@ -20,18 +24,22 @@ void main() {
     vec3 gradient;
     if (sdfwb_samplePosition(index, position)) {
         distance = sdfwb_sdf(position);
-        gradient = sdfwb_gradientAt(position, sdfwb_gradientStep);
+        gradient = sdfwb_writeGradient ? sdfwb_gradientAt(position, sdfwb_gradientStep) : vec3(0.0);
     } else {
         float nan = uintBitsToFloat(0x7fc00000u);
         position = vec3(nan);
         distance = nan;
         gradient = vec3(nan);
     }
-    sdfwb_positions[3u * local + 0u] = position.x;
-    sdfwb_positions[3u * local + 1u] = position.y;
-    sdfwb_positions[3u * local + 2u] = position.z;
+    if (sdfwb_writePosition) {
+        sdfwb_positions[3u * local + 0u] = position.x;
+        sdfwb_positions[3u * local + 1u] = position.y;
+        sdfwb_positions[3u * local + 2u] = position.z;
+    }
     sdfwb_distances[local] = distance;
-    sdfwb_gradients[3u * local + 0u] = gradient.x;
-    sdfwb_gradients[3u * local + 1u] = gradient.y;
-    sdfwb_gradients[3u * local + 2u] = gradient.z;
+    if (sdfwb_writeGradient) {
+        sdfwb_gradients[3u * local + 0u] = gradient.x;
+        sdfwb_gradients[3u * local + 1u] = gradient.y;
+        sdfwb_gradients[3u * local + 2u] = gradient.z;
+    }
 }

@@ -51,10 +51,12 @@
 #include <QSlider>
 #include <QSpinBox>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QSurfaceFormat>
 #include <QThread>
 #include <csignal>
 
+#include <cmath>
 #include <cstring>
 #include <functional>
 
@@ -1184,6 +1186,7 @@ TEST(MeshExport, ExportsTheUnsavedStateAndCancelsCleanly) {
     ASSERT_TRUE(ok) << message.toStdString();
     EXPECT_TRUE(QFile::exists(path));
     EXPECT_TRUE(message.contains("watertight")) << message.toStdString();
+    EXPECT_TRUE(waitFor([&] { return window.viewport()->hasMeshOverlay(); })) << "the export shows over the surface";
     // The tube radius is the dock's 0.1: the file is no thicker than that.
     QFile file(path);
     ASSERT_TRUE(file.open(QIODevice::ReadOnly));
@@ -1198,6 +1201,93 @@ TEST(MeshExport, ExportsTheUnsavedStateAndCancelsCleanly) {
         maxY = std::max(maxY, std::abs(p[1]));
     }
     EXPECT_NEAR(maxY, 0.1f, 2e-3f);
+}
+
+// View > Show mesh deviation on a foreign mesh (a UV sphere written here, not by our mesher) over
+// the Sphere: coloured per pixel by the field at the mesh, it stays grey where it lies on the
+// surface, turns red when 10 % too large and blue when 10 % too small. A file that is not a mesh
+// is refused with a message, and Hide brings the plain frame back.
+TEST(MeshDeviation, ColoursAForeignMeshByItsDistanceFromTheField) {
+    app::MainWindow window;
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "Geometry/Sphere.glsl"));
+    QTemporaryDir folder;
+    auto writeSphere = [&](const QString& name, float radius, int rings = 48) {
+        const int segments = 2 * rings;
+        QString text;
+        for (int r = 0; r <= rings; ++r)
+            for (int s = 0; s < segments; ++s) {
+                const double theta = M_PI * r / rings, phi = 2.0 * M_PI * s / segments;
+                text += QString("v %1 %2 %3\n")
+                            .arg(radius * std::sin(theta) * std::cos(phi), 0, 'g', 9)
+                            .arg(radius * std::cos(theta), 0, 'g', 9)
+                            .arg(radius * std::sin(theta) * std::sin(phi), 0, 'g', 9);
+            }
+        for (int r = 0; r < rings; ++r)
+            for (int s = 0; s < segments; ++s) {
+                const int a = r * segments + s + 1, b = r * segments + (s + 1) % segments + 1;
+                text += QString("f %1 %2 %3\nf %2 %4 %3\n").arg(a).arg(b).arg(a + segments).arg(b + segments);
+            }
+        const QString path = folder.filePath(name);
+        QFile file(path);
+        EXPECT_TRUE(file.open(QIODevice::WriteOnly));
+        file.write(text.toUtf8());
+        return path;
+    };
+    // Pixels strongly red and strongly blue.
+    auto colours = [](const QImage& image) {
+        std::pair<long, long> count{0, 0};
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor c = image.pixelColor(x, y);
+                count.first += c.red() > 60 && c.red() > 2 * c.green() && c.red() > 2 * c.blue();
+                count.second += c.blue() > 60 && c.blue() > 2 * c.red() && c.blue() > 2 * c.green();
+            }
+        return count;
+    };
+    const QImage plain = frameOf(window);
+    const long pixels = long(plain.width()) * plain.height();
+    const auto [red0, blue0] = colours(plain);
+
+    ASSERT_TRUE(window.showMeshDeviation(writeSphere("on.obj", 0.8f)));
+    EXPECT_TRUE(window.viewport()->hasMeshOverlay());
+    EXPECT_GT(window.viewport()->meshOverlayScale(), 0.0f);
+    const auto [redOn, blueOn] = colours(frameOf(window));
+    EXPECT_LT(std::abs(redOn - red0) + std::abs(blueOn - blue0), pixels / 100) << "a mesh on the surface stays grey";
+
+    ASSERT_TRUE(window.showMeshDeviation(writeSphere("large.obj", 0.88f)));
+    const auto [redLarge, blueLarge] = colours(frameOf(window));
+    EXPECT_GT(redLarge - red0, pixels / 20) << "outside the surface: red";
+    EXPECT_LT(blueLarge - blue0, pixels / 100);
+
+    ASSERT_TRUE(window.showMeshDeviation(writeSphere("small.obj", 0.72f)));
+    const auto [redSmall, blueSmall] = colours(frameOf(window));
+    EXPECT_GT(blueSmall - blue0, pixels / 20) << "inside the surface: blue";
+    EXPECT_LT(redSmall - red0, pixels / 100);
+
+    const QString bad = folder.filePath("bad.obj");
+    {
+        QFile file(bad);
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+        file.write("this is not a mesh\n");
+    }
+    EXPECT_FALSE(window.showMeshDeviation(bad));
+    EXPECT_TRUE(window.statusBar()->currentMessage().contains("bad.obj")) << window.statusBar()->currentMessage().toStdString();
+    EXPECT_TRUE(window.viewport()->hasMeshOverlay()) << "the last overlay stays";
+
+    window.hideMeshDeviation();
+    EXPECT_FALSE(window.viewport()->hasMeshOverlay());
+    const auto [redHidden, blueHidden] = colours(frameOf(window));
+    EXPECT_EQ(redHidden, red0);
+    EXPECT_EQ(blueHidden, blue0);
+
+    // A coarse sphere on the surface: its vertices lie on it (grey), its flat facets dip inside
+    // towards their middles (blue). SDFWB_SCREENSHOT_DIR keeps the picture for the docs.
+    ASSERT_TRUE(window.showMeshDeviation(writeSphere("coarse.obj", 0.8f, 14)));
+    const auto [redCoarse, blueCoarse] = colours(frameOf(window));
+    EXPECT_LT(redCoarse - red0, pixels / 100) << "the chords never leave the sphere";
+    EXPECT_GT(blueCoarse - blue0, pixels / 200) << "facet middles lie inside";
+    if (const char* folder = std::getenv("SDFWB_SCREENSHOT_DIR")) window.grab().save(QDir(folder).filePath("mesh_deviation.png"));
 }
 
 int main(int argc, char** argv) {

@@ -132,6 +132,19 @@ TEST(BuiltinShaders, EveryEmbeddedFileCompilesWithGlslangInItsStage) {
     for (const std::string& path : builtinShaderPaths())
         if (path.rfind("samplers/", 0) == 0 || path.rfind("analysis/", 0) == 0)
             check(Stage::Compute, {"sampling/bindings.glsl", "sampling/common.glsl", path, "sampling/sample.comp"});
+    // The mesh deviation overlay: its vertex stage alone, its fragment stage with the SDF, and the
+    // composite that lays its frame over the traced one.
+    for (const char* file : {"overlay/mesh.vert"}) {
+        auto stage = composeBuiltinShader(Stage::Vertex, file, {});
+        ASSERT_TRUE(stage.hasValue());
+        EXPECT_FALSE(hasErrors(checkWithGlslang(*stage))) << file;
+        covered.insert(file);
+    }
+    auto composite = composeBuiltinShader(Stage::Fragment, "overlay/composite.frag", {});
+    ASSERT_TRUE(composite.hasValue());
+    EXPECT_FALSE(hasErrors(checkWithGlslang(*composite)));
+    covered.insert("overlay/composite.frag");
+    check(Stage::Fragment, {"overlay/mesh_deviation.frag"});
     // The compat prelude is composed when an SDF needs it (tested above); everything else must be
     // reached by one of the stages here, so a new built-in file cannot go unchecked.
     covered.insert("prelude/g3d_compat.glsl");

@@ -2,6 +2,7 @@
 
 #include <core/Log.h>
 #include <renderer/GlInfo.h>
+#include <renderer/MeshOverlay.h>
 #include <renderer/OffscreenRenderer.h>
 #include <renderer/SdfRenderer.h>
 
@@ -17,7 +18,9 @@
 
 namespace sdfwb::widgets {
 
-ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent), m_renderer(std::make_unique<renderer::SdfRenderer>()) {
+ViewportWidget::ViewportWidget(QWidget* parent)
+    : QOpenGLWidget(parent), m_renderer(std::make_unique<renderer::SdfRenderer>()),
+      m_meshOverlay(std::make_unique<renderer::MeshOverlay>()) {
     setMinimumSize(64, 64);
     setFocusPolicy(Qt::StrongFocus);
     m_refineTimer.setSingleShot(true);
@@ -190,6 +193,13 @@ void ViewportWidget::paintGL() {
     }
     m_lastFrameMilliseconds = stats.cpuMilliseconds;
     m_lastScale = scale;
+    if (m_meshOverlay->hasMesh() && m_lastGoodSdf) {
+        if (m_overlayGeneration != m_sdfGeneration) {
+            for (const auto& d : m_meshOverlay->setSdf(*m_lastGoodSdf)) log::warning("mesh", shaders::formatDiagnostic(d));
+            m_overlayGeneration = m_sdfGeneration;
+        }
+        m_meshOverlay->draw(width, height, m_camera, m_time, m_parameters, m_meshScale);
+    }
     if (!m_overlay.isEmpty()) {
         QPainter painter(this);
         painter.setRenderHint(QPainter::TextAntialiasing);
@@ -240,6 +250,7 @@ bool ViewportWidget::probeNewSdf(int width, int height) {
         return true;
     }
     m_lastGoodSdf = std::move(m_currentSdf);
+    ++m_sdfGeneration;
     if (estimate > stallLimit) {
         m_scaler.capFromEstimate(width, height, estimate);
         emit performanceWarning(tr("A full frame of this SDF would take about %1 s: drawn at %2 % resolution (screenshots and "
@@ -252,7 +263,18 @@ bool ViewportWidget::probeNewSdf(int width, int height) {
     return true;
 }
 
-void ViewportWidget::releaseGl() { m_renderer->releaseGl(); }
+void ViewportWidget::releaseGl() {
+    m_renderer->releaseGl();
+    m_meshOverlay->releaseGl();
+}
+
+void ViewportWidget::setMeshOverlay(const std::vector<float>& positions, const std::vector<std::uint32_t>& indices, float scale) {
+    m_meshOverlay->setMesh(positions, indices);
+    m_meshScale = scale;
+    update();
+}
+
+bool ViewportWidget::hasMeshOverlay() const { return m_meshOverlay->hasMesh(); }
 
 void ViewportWidget::interacted() {
     if (!m_interacting) {

@@ -26,6 +26,9 @@ struct SampleUniforms {
     // Points given by the caller (3 floats per sample, sampleCount of them, indexed globally), read
     // by the analysis/points.glsl sampler through sdfwb_inputPoint(); null for every other sampler.
     const float* inputPoints = nullptr;
+    // Non-zero: inputPoints is one table of this many floats that every chunk reads whole, indexed
+    // as its sampler chooses (the mesher's block corners), not 3 floats per sample.
+    std::size_t inputTableFloats = 0;
     // The SDF's parameter values (the others keep their initializers' values).
     std::vector<shaders::ParameterSetting> sdfParameters;
 };
@@ -45,6 +48,7 @@ public:
 
     // Samples global indices [first, first + count) into the given arrays (3*count, count,
     // 3*count floats). count <= kMaxChunk. Fails on GL errors (e.g. out of memory) with a message.
+    // Null positions or gradients are neither written nor read back (no gradient evaluations).
     Expected<void> run(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, float* positions,
                        float* distances, float* gradients);
 

@@ -29,6 +29,7 @@ struct SamplingJob {
     float parameters[16] = {};          // u_parameters for program-driven samplers (plane analysis)
     float surfaceTolerance = 1e-5f;     // |f| at which surface/near/metropolis rays stop (accuracy against time)
     const float* inputPoints = nullptr; // 3 * count floats for the analysis/points.glsl sampler (not owned)
+    std::size_t inputTableFloats = 0;   // non-zero: inputPoints is a table every chunk reads whole (analysis/lattice.glsl)
     std::vector<shaders::ParameterSetting> sdfParameters; // the SDF's parameter values (others: defaults)
 
     std::uint64_t firstIndex() const { return count * shardIndex / shardCount; }
@@ -46,7 +47,8 @@ struct SamplingReport {
     bool cancelled = false;
 };
 
-// Writes rows into caller-owned arrays of job.rows() rows (3n, n, 3n floats): no copies.
+// Writes rows into caller-owned arrays of job.rows() rows (3n, n, 3n floats): no copies. Null
+// positions or gradients are not computed (a field-only evaluation skips the gradient's taps).
 Expected<SamplingReport> sampleInto(renderer::SampleCompute& compute, const SamplingJob& job, float* positions, float* distances,
                                     float* gradients, const ProgressSink& progress);
 

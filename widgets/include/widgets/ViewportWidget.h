@@ -22,12 +22,14 @@
 #include <QSet>
 #include <QTimer>
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
 namespace sdfwb::renderer {
+class MeshOverlay;
 class SdfRenderer;
-}
+} // namespace sdfwb::renderer
 
 namespace sdfwb::widgets {
 
@@ -75,6 +77,13 @@ public:
     // Renders one full-quality frame at width x height (screenshots). Empty image without GL.
     renderer::Image renderImage(int width, int height);
 
+    // A mesh drawn over the surface, coloured per pixel by the shown SDF's value at the mesh's own
+    // point (grey on the zero set, red outside, blue inside, full colour at |f| >= scale): where
+    // an exported or loaded mesh strays from the field. Empty indices hide it.
+    void setMeshOverlay(const std::vector<float>& positions, const std::vector<std::uint32_t>& indices, float scale);
+    bool hasMeshOverlay() const;
+    float meshOverlayScale() const { return m_meshScale; }
+
     // Text drawn in the lower-left corner (name, author, license); empty hides it.
     void setOverlayText(const QString& text);
 
@@ -109,6 +118,10 @@ private:
     void flyStep();
 
     std::unique_ptr<renderer::SdfRenderer> m_renderer;
+    std::unique_ptr<renderer::MeshOverlay> m_meshOverlay;
+    float m_meshScale = 0.0f;
+    std::uint64_t m_sdfGeneration = 0;     // counts SDFs that passed their probe frame
+    std::uint64_t m_overlayGeneration = 0; // the SDF the overlay's shader was built for
     std::unique_ptr<shaders::PreparedSdf> m_pendingSdf;
     std::unique_ptr<shaders::PreparedSdf> m_currentSdf;  // compiled, waiting for its probe frame
     std::unique_ptr<shaders::PreparedSdf> m_lastGoodSdf; // passed its probe frame
