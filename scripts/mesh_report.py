@@ -87,7 +87,7 @@ with open(os.path.join(ROOT, "docs", "meshing.md"), "w") as out:
               "quotient x 1.25, at least 1; a field the audit finds discontinuous or NaN is evaluated everywhere). "
               "The grid points of the kept blocks are generated on the GPU and only their values come back (no gradient "
               "taps); crossings are put on the surface by false position with the Illinois rule (at most 8 steps, "
-              "stopping at |f| below 1e-4 of a cell), vertices are projected onto it by two Newton steps within their "
+              "stopping once the crossing is known to 1e-4 of its edge, kept 1/1024 of an edge off grid points), vertices are projected onto it by two Newton steps within their "
               "cell. Edges and cells are found per block through bitsets with running counts (no hash maps). PLY and OBJ are written here, STL and GLB through assimp; meshio and Open3D read all "
               "of them (a test opens each). **Limit:** one vertex per cell, so where two sheets of surface pass through "
               "one cell (walls thinner than a cell) the mesh has non-manifold edges; the report counts them and says "
