@@ -91,7 +91,7 @@ with open(os.path.join(ROOT, "docs", "meshing.md"), "w") as out:
               "cell. Edges and cells are found per block through bitsets with running counts (no hash maps). PLY and OBJ are written here, STL and GLB through assimp; meshio and Open3D read all "
               "of them (a test opens each). **Limit:** one vertex per cell, so where two sheets of surface pass through "
               "one cell (walls thinner than a cell) the mesh has non-manifold edges; the report counts them and says "
-              "`watertight: false` (the mug below at some resolutions).\n\n"
+              "`watertight: false` (the fractals and the few parts thinner than a cell in the dataset table below).\n\n"
               "**In the workbench.** File > Export mesh meshes the editor's text with the Parameters dock's values in a "
               "child process (resolution, progress, Cancel; a cancelled export leaves no file) and then shows the mesh "
               "over the surface, coloured per pixel by the field at the mesh's own point: grey where it lies on the zero "
