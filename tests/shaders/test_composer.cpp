@@ -145,6 +145,19 @@ TEST(BuiltinShaders, EveryEmbeddedFileCompilesWithGlslangInItsStage) {
     EXPECT_FALSE(hasErrors(checkWithGlslang(*composite)));
     covered.insert("overlay/composite.frag");
     check(Stage::Fragment, {"overlay/mesh_deviation.frag"});
+    {
+        // Users' code in the overlay too: the G3D dialect (Point3, saturate, the host's noise
+        // texture, scene time) composed with the deviation stage.
+        PreparedSdf g3d = prepare("float sdf(Point3 X) {\n"
+                                  "    float n = texelFetch(g3d_uniformRandom, ivec2(0), 0).r;\n"
+                                  "    return length(X) - 0.5 + 0.01 * saturate(n) * sin(g3d_SceneTime);\n"
+                                  "}\n");
+        ASSERT_FALSE(hasErrors(g3d.diagnostics));
+        auto piece = builtinPiece("overlay/mesh_deviation.frag");
+        ASSERT_TRUE(piece.hasValue());
+        auto diagnostics = checkWithGlslang(composeSdfShader(g3d, Stage::Fragment, {*piece}, {}));
+        EXPECT_FALSE(hasErrors(diagnostics)) << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
+    }
     // The compat prelude is composed when an SDF needs it (tested above); everything else must be
     // reached by one of the stages here, so a new built-in file cannot go unchecked.
     covered.insert("prelude/g3d_compat.glsl");
