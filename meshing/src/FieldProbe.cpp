@@ -20,19 +20,24 @@ Expected<void> FieldProbe::build(const shaders::PreparedSdf& sdf, const std::str
     return {};
 }
 
+sampling::SamplingJob FieldProbe::job(std::uint64_t count) const {
+    sampling::SamplingJob job;
+    job.count = count;
+    job.time = m_time;
+    job.sdfParameters = m_parameters;
+    job.chunkSize = 1u << 16; // dispatches of 64 k points: their buffers stay in cache
+    return job;
+}
+
 Expected<void> FieldProbe::evaluate(const std::vector<float>& points, std::vector<float>& distances,
                                     std::vector<float>* gradients, float gradientStep) {
     const std::uint64_t n = points.size() / 3;
     distances.resize(n);
     if (gradients) gradients->resize(3 * n);
     if (n == 0) return {};
-    sampling::SamplingJob job;
-    job.count = n;
-    job.time = m_time;
+    sampling::SamplingJob job = this->job(n);
     job.gradientStep = gradientStep;
     job.inputPoints = points.data();
-    job.sdfParameters = m_parameters;
-    job.chunkSize = 1u << 16; // dispatches of 64 k points: their buffers stay in cache
     // The points are the caller's: no positions back, and no gradient taps unless asked for.
     auto report = sampling::sampleInto(m_compute, job, nullptr, distances.data(), gradients ? gradients->data() : nullptr, {});
     if (!report) return report.error();
@@ -45,13 +50,9 @@ Expected<void> FieldProbe::evaluateLattice(const std::vector<float>& firstPoints
     const std::uint64_t count = firstPoints.size() / 3 * perBlock;
     distances.resize(count);
     if (count == 0) return {};
-    sampling::SamplingJob job;
-    job.count = count;
-    job.time = m_time;
+    sampling::SamplingJob job = this->job(count);
     job.inputPoints = firstPoints.data();
     job.inputTableFloats = firstPoints.size();
-    job.sdfParameters = m_parameters;
-    job.chunkSize = 1u << 16;
     const float parameters[8] = {origin.x, origin.y, origin.z, float(block), step.x, step.y, step.z, float(n)};
     std::copy(std::begin(parameters), std::end(parameters), job.parameters);
     auto report = sampling::sampleInto(m_compute, job, nullptr, distances.data(), nullptr, {});
@@ -64,11 +65,8 @@ Expected<void> FieldProbe::generate(std::uint64_t n, std::uint64_t seed, std::ve
     positions.assign(3 * n, 0.0f);
     distances.assign(n, 0.0f);
     gradients.assign(3 * n, 0.0f);
-    sampling::SamplingJob job;
-    job.count = n;
+    sampling::SamplingJob job = this->job(n);
     job.seed = seed;
-    job.time = m_time;
-    job.sdfParameters = m_parameters;
     auto report = sampling::sampleInto(m_compute, job, positions.data(), distances.data(), gradients.data(), {});
     if (!report) return report.error();
     return {};

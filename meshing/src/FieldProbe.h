@@ -4,6 +4,7 @@
 
 #include <core/Expected.h>
 #include <renderer/SampleCompute.h>
+#include <sampling/Sampler.h>
 #include <shaders/Parameters.h>
 #include <shaders/SdfSource.h>
 
@@ -33,6 +34,7 @@ public:
     ~FieldProbe() { m_compute.releaseGl(); }
 
 private:
+    sampling::SamplingJob job(std::uint64_t count) const; // this probe's time and parameters
     renderer::SampleCompute m_compute;
     float m_time = 0.0f;
     std::vector<shaders::ParameterSetting> m_parameters;

@@ -4,6 +4,7 @@
 #include <renderer/GlInfo.h>
 #include <shaders/DiagnosticParser.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
 
@@ -35,6 +36,20 @@ void deleteFramebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
 void deleteRenderbuffer(GLuint id) { glDeleteRenderbuffers(1, &id); }
 void deleteTexture(GLuint id) { glDeleteTextures(1, &id); }
 void deleteBuffer(GLuint id) { glDeleteBuffers(1, &id); }
+
+GlProgram linkProgram(std::initializer_list<GLuint> shaders, std::string& log) {
+    GlProgram program(glCreateProgram());
+    for (GLuint shader : shaders) glAttachShader(program.id(), shader);
+    glLinkProgram(program.id());
+    GLint linked = 0;
+    glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
+    if (linked) return program;
+    GLint length = 0;
+    glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
+    log.assign(std::size_t(std::max(length, 1)), '\0');
+    glGetProgramInfoLog(program.id(), length, nullptr, log.data());
+    return {};
+}
 
 CompiledShader compileShader(GLenum type, const shaders::ComposedShader& composed) {
     CompiledShader result;

@@ -9,6 +9,8 @@
 #include <shaders/Parameters.h>
 #include <shaders/ShaderComposer.h>
 
+#include <initializer_list>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -78,6 +80,9 @@ struct CompiledShader {
 // Compiles one composed stage (a current context is needed). Failure shows as errors in
 // `diagnostics`, never as a silent empty shader.
 CompiledShader compileShader(GLenum type, const shaders::ComposedShader& composed);
+
+// Links compiled stages into a program. On failure: an empty program, and the driver's log in `log`.
+GlProgram linkProgram(std::initializer_list<GLuint> shaders, std::string& log);
 
 // When `program` reads the G3D noise texture (g3d_uniformRandom), makes `texture` once (see
 // NoiseTexture.h) and binds it to shaders::kNoiseTextureUnit. Needs a current context.

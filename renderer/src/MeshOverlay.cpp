@@ -14,24 +14,6 @@
 namespace sdfwb::renderer {
 namespace {
 
-// Links two compiled stages; failure adds a diagnostic naming `file`.
-GlProgram link(const CompiledShader& vertex, const CompiledShader& fragment, const std::string& file,
-               std::vector<shaders::Diagnostic>& diagnostics) {
-    GlProgram program(glCreateProgram());
-    glAttachShader(program.id(), vertex.shader.id());
-    glAttachShader(program.id(), fragment.shader.id());
-    glLinkProgram(program.id());
-    GLint linked = 0;
-    glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
-    if (linked) return program;
-    GLint length = 0;
-    glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
-    std::string log(std::size_t(std::max(length, 1)), '\0');
-    glGetProgramInfoLog(program.id(), length, nullptr, log.data());
-    diagnostics.push_back({file, 0, 0, shaders::Severity::Error, "mesh overlay: link failed: " + log});
-    return {};
-}
-
 // Compiles and links a built-in vertex stage with a composed fragment stage.
 GlProgram buildProgram(const std::string& vertexFile, const Expected<shaders::ComposedShader>& fragment,
                        std::vector<shaders::Diagnostic>& diagnostics) {
@@ -46,7 +28,11 @@ GlProgram buildProgram(const std::string& vertexFile, const Expected<shaders::Co
     diagnostics.insert(diagnostics.end(), vs.diagnostics.begin(), vs.diagnostics.end());
     diagnostics.insert(diagnostics.end(), fs.diagnostics.begin(), fs.diagnostics.end());
     if (shaders::hasErrors(diagnostics)) return {};
-    return link(vs, fs, fragment->map.fileName(0), diagnostics);
+    std::string log;
+    GlProgram program = linkProgram({vs.shader.id(), fs.shader.id()}, log);
+    if (!program)
+        diagnostics.push_back({fragment->map.fileName(0), 0, 0, shaders::Severity::Error, "mesh overlay: link failed: " + log});
+    return program;
 }
 
 } // namespace

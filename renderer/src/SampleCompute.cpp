@@ -83,17 +83,9 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     CompiledShader compiled = compileShader(GL_COMPUTE_SHADER, composed);
     diagnostics.insert(diagnostics.end(), compiled.diagnostics.begin(), compiled.diagnostics.end());
     if (shaders::hasErrors(diagnostics)) return diagnostics;
-    GlShader& shader = compiled.shader;
-    GlProgram program(glCreateProgram());
-    glAttachShader(program.id(), shader.id());
-    glLinkProgram(program.id());
-    GLint linked = 0;
-    glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
-    if (!linked) {
-        GLint length = 0;
-        glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
-        std::string log(std::size_t(std::max(length, 1)), '\0');
-        glGetProgramInfoLog(program.id(), length, nullptr, log.data());
+    std::string log;
+    GlProgram program = linkProgram({compiled.shader.id()}, log);
+    if (!program) {
         diagnostics.push_back({composed.map.fileName(0), 0, 0, shaders::Severity::Error, "link failed: " + log});
         return diagnostics;
     }

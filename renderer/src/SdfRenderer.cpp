@@ -119,17 +119,9 @@ struct SdfRenderer::Impl {
         diagnostics.insert(diagnostics.end(), fs.diagnostics.begin(), fs.diagnostics.end());
         if (shaders::hasErrors(diagnostics)) return nullptr;
 
-        GlProgram program(glCreateProgram());
-        glAttachShader(program.id(), vs.shader.id());
-        glAttachShader(program.id(), fs.shader.id());
-        glLinkProgram(program.id());
-        GLint linked = 0;
-        glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
-        if (!linked) {
-            GLint logLength = 0;
-            glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &logLength);
-            std::string log(std::size_t(std::max(logLength, 1)), '\0');
-            glGetProgramInfoLog(program.id(), logLength, nullptr, log.data());
+        std::string log;
+        GlProgram program = linkProgram({vs.shader.id(), fs.shader.id()}, log);
+        if (!program) {
             auto linkDiagnostics = shaders::parseInfoLog(log, fragment->map);
             if (!shaders::hasErrors(linkDiagnostics))
                 linkDiagnostics.push_back({fragment->map.fileName(0), 0, 0, shaders::Severity::Error, "link failed: " + log});
