@@ -12,6 +12,7 @@
 #include <sampling/SampleFile.h>
 #include <sampling/Sampler.h>
 #include <sampling/SamplerLibrary.h>
+#include <shaders/ShaderComposer.h>
 
 #include <pybind11/numpy.h>
 
@@ -40,7 +41,21 @@ void releaseContext() {
     if (g_context) g_context->doneCurrent();
 }
 
+// A forked child (a DataLoader worker) cannot use the GL its parent started: the driver's threads
+// were not copied, so its first dispatch would wait forever. Such a child gets an error that says
+// what to do instead; a child forked before the parent touched GL makes its own context.
+bool g_forkedAfterGl = false;
+void forgetContextAfterFork() {
+    if (g_context) g_forkedAfterGl = true;
+    (void)g_context.release(); // leaked: destroying it would wait on the same missing threads
+    new (&g_glMutex) std::mutex;
+}
+
 renderer::HeadlessContext& context() {
+    if (g_forkedAfterGl)
+        throw std::runtime_error("sdfwb: this process was forked after its parent used the GPU, whose driver threads a fork does not "
+                                 "copy; start workers with the 'spawn' or 'forkserver' method (DataLoader(..., "
+                                 "multiprocessing_context='spawn'), or sdfwb.torch.loader(...))");
     if (!g_context) {
         auto created = renderer::HeadlessContext::create();
         if (!created) throw std::runtime_error(created.error().message);
@@ -118,7 +133,7 @@ py::array_t<float> floatArray(std::vector<py::ssize_t> shape) { return py::array
 
 py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_t n, std::uint64_t seed, float time,
                 float gradientStep, std::uint32_t chunk, float surfaceTolerance, const std::string& entry,
-                const py::object& params) {
+                const py::object& params, std::uint64_t firstIndex) {
     jobs::SampleRequest request;
     request.sdf = sdfInput(sdf, entry, params);
     request.pattern = pattern;
@@ -130,6 +145,8 @@ py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_
     request.surfaceTolerance = surfaceTolerance;
     if (auto error = jobs::validate(request)) raise(*error);
     sampling::SamplingJob job = jobs::samplingJob(request);
+    job.indexOffset = firstIndex;
+    if (auto ok = sampling::validate(job); !ok) throw py::value_error(ok.error().message);
     const jobs::OpenedSdf opened = prepare(request.sdf);
     const shaders::PreparedSdf& prepared = opened.prepared;
     job.sdfParameters = opened.parameters;
@@ -166,6 +183,68 @@ py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_
     result["bad_rows"] = report->badRows;
     result["seconds"] = report->seconds;
     result["parameters"] = parameterDict(opened.parameters);
+    return result;
+}
+
+// The field at the caller's points through the samplers' own stage (analysis/points.glsl): the
+// same compiled SDF, gradient stencil and step as `sample`, so the values are bit-equal to what a
+// sampler writes at those positions. The points are read in place (float32, C order: no copy).
+py::dict evaluate(const std::string& sdf, py::array_t<float, py::array::c_style | py::array::forcecast> points,
+                  const py::object& params, float time, bool gradient, float gradientStep, const std::string& entry,
+                  std::uint32_t chunk) {
+    if (points.ndim() != 2 || points.shape(1) != 3) {
+        std::string shape;
+        for (py::ssize_t a = 0; a < points.ndim(); ++a) shape += (a ? ", " : "") + std::to_string(points.shape(a));
+        throw py::value_error("evaluate: points must have shape (N, 3), not (" + shape + ")");
+    }
+    const auto n = points.shape(0);
+    if (std::uint64_t(n) > 0xffffffffull) throw py::value_error("evaluate: at most 4294967295 points per call");
+    sampling::SamplingJob job;
+    job.count = std::uint64_t(n);
+    job.time = time;
+    job.gradientStep = gradientStep;
+    job.chunkSize = chunk;
+    job.inputPoints = points.data();
+    if (auto ok = sampling::validate(job); n > 0 && !ok) throw py::value_error(ok.error().message);
+    const jobs::OpenedSdf opened = prepare(sdfInput(sdf, entry, params));
+    job.sdfParameters = opened.parameters;
+    auto distances = floatArray({n});
+    py::object gradients = py::none();
+    float* g = nullptr;
+    if (gradient) {
+        auto array = floatArray({n, 3});
+        g = array.mutable_data();
+        gradients = array;
+    }
+    float* d = distances.mutable_data();
+    Expected<sampling::SamplingReport> report = sampling::SamplingReport{};
+    std::string compileErrors;
+    if (n > 0) {
+        py::gil_scoped_release release;
+        std::lock_guard lock(g_glMutex);
+        context();
+        renderer::SampleCompute compute;
+        auto stage = shaders::builtinPiece("analysis/points.glsl");
+        if (!stage) {
+            report = stage.error();
+        } else {
+            auto diagnostics = compute.build(opened.prepared, *stage);
+            if (shaders::hasErrors(diagnostics)) {
+                for (const auto& diagnostic : diagnostics) compileErrors += shaders::formatDiagnostic(diagnostic) + "\n";
+            } else {
+                report = sampling::sampleInto(compute, job, nullptr, d, g, {});
+            }
+        }
+        compute.releaseGl();
+        releaseContext();
+    }
+    if (!compileErrors.empty()) throw py::value_error(compileErrors);
+    if (!report) throw std::runtime_error(report.error().message);
+    py::dict result;
+    result["distance"] = distances;
+    result["gradient"] = gradients;
+    result["bad_rows"] = report->badRows;
+    result["seconds"] = report->seconds;
     return result;
 }
 
@@ -374,19 +453,27 @@ py::list listSdfs() {
 
 } // namespace
 
-PYBIND11_MODULE(sdfwb, m) {
+PYBIND11_MODULE(_native, m) {
     m.doc() = "sdfwb: sample, audit and load signed distance functions written in GLSL (headless, EGL).";
     m.attr("__version__") = SDFWB_VERSION;
     m.def("sample", &sample, py::arg("sdf"), py::arg("pattern"), py::arg("n"), py::arg("seed") = 0, py::arg("time") = 0.0f,
           py::arg("gradient_step") = 1e-3f, py::arg("chunk") = 1u << 18, py::arg("surface_tolerance") = 1e-5f,
-          py::arg("entry") = "", py::arg("params") = py::none(),
+          py::arg("entry") = "", py::arg("params") = py::none(), py::arg("first_index") = 0,
           "Samples `n` points of `sdf` (dataset name, path or GLSL source) with `pattern`. Returns a dict of float32 arrays\n"
           "position (n,3), distance (n,), gradient (n,3) (raw, not normalised) plus bad_rows and seconds. Same seed, same\n"
           "values as `sdfwb --batch sample`. surface_tolerance: |f| at which the rays of surface/near/metropolis stop\n"
           "(accuracy against time; see docs/benchmarks.md). entry: the SDF's function when it is not sdf (e.g. 'map';\n"
           "vec2/vec4 returns give the distance in .x). params: values for the SDF's declared parameters, e.g.\n"
           "{'radius': 0.3, 'offset': (0, 0.1, 0)} (sdfwb.params(sdf) lists them); the result's `parameters` holds every\n"
-          "parameter's value. The GIL is released while sampling.");
+          "parameter's value. first_index: the first row's sample index (rows depend on seed and index alone, so\n"
+          "first_index=k*n gives the k-th batch of an endless stream). The GIL is released while sampling.");
+    m.def("evaluate", &evaluate, py::arg("sdf"), py::arg("points"), py::arg("params") = py::none(), py::arg("time") = 0.0f,
+          py::arg("gradient") = true, py::arg("gradient_step") = 1e-3f, py::arg("entry") = "", py::arg("chunk") = 1u << 18,
+          "The field of `sdf` at the caller's points ((N,3) float32, read in place): a dict with distance (N,) and\n"
+          "gradient (N,3) (raw central differences with gradient_step; None when gradient=False, which evaluates the\n"
+          "field once per point instead of seven times), bad_rows and seconds. Bit-equal to what the samplers write\n"
+          "at the same positions with the same gradient_step. The GIL is released while the GPU works.");
+    m.def("_forget_context_after_fork", &forgetContextAfterFork, "Called by os.register_at_fork in a forked child.");
     m.def("load", &load, py::arg("path"), "Reads a .bin, .npz or .ply sample file into a dict of arrays (and its metadata).");
     m.def("save", &save, py::arg("path"), py::arg("position"), py::arg("distance"), py::arg("gradient"), py::arg("format") = "",
           py::arg("sdf") = "", py::arg("pattern") = "", py::arg("seed") = 0, py::arg("time") = 0.0f,

@@ -100,6 +100,9 @@ Expected<void> validate(const SamplingJob& job) {
         return makeError(
             "-n: " + std::to_string(job.count) +
             " samples exceed the limit of 4294967295 per run (shard larger jobs into several runs with different seeds)");
+    if (job.indexOffset + job.count > 0x100000000ull)
+        return makeError("first_index: " + std::to_string(job.indexOffset) + " + " + std::to_string(job.count) +
+                         " samples pass the last sample index 4294967295");
     if (job.shardCount == 0 || job.shardIndex >= job.shardCount)
         return makeError("--shard: " + std::to_string(job.shardIndex) + "/" + std::to_string(job.shardCount) +
                          " is not a slice (0 <= K < COUNT)");

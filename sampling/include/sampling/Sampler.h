@@ -31,9 +31,11 @@ struct SamplingJob {
     const float* inputPoints = nullptr; // 3 * count floats for the analysis/points.glsl sampler (not owned)
     std::size_t inputTableFloats = 0;   // non-zero: inputPoints is a table every chunk reads whole (analysis/lattice.glsl)
     std::vector<shaders::ParameterSetting> sdfParameters; // the SDF's parameter values (others: defaults)
+    // The first sample's index (a stream's batch g of B rows starts at g * B); shards slice after it.
+    std::uint64_t indexOffset = 0;
 
-    std::uint64_t firstIndex() const { return count * shardIndex / shardCount; }
-    std::uint64_t rows() const { return count * (shardIndex + 1ull) / shardCount - firstIndex(); }
+    std::uint64_t firstIndex() const { return indexOffset + count * shardIndex / shardCount; }
+    std::uint64_t rows() const { return count * (shardIndex + 1ull) / shardCount - count * shardIndex / shardCount; }
 };
 
 // Fails with a message naming the offending value (N, shard, chunk).
