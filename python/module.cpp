@@ -53,9 +53,10 @@ void forgetContextAfterFork() {
 
 renderer::HeadlessContext& context() {
     if (g_forkedAfterGl)
-        throw std::runtime_error("sdfwb: this process was forked after its parent used the GPU, whose driver threads a fork does not "
-                                 "copy; start workers with the 'spawn' or 'forkserver' method (DataLoader(..., "
-                                 "multiprocessing_context='spawn'), or sdfwb.torch.loader(...))");
+        throw std::runtime_error(
+            "sdfwb: this process was forked after its parent used the GPU, whose driver threads a fork does not "
+            "copy; start workers with the 'spawn' or 'forkserver' method (DataLoader(..., "
+            "multiprocessing_context='spawn'), or sdfwb.torch.loader(...))");
     if (!g_context) {
         auto created = renderer::HeadlessContext::create();
         if (!created) throw std::runtime_error(created.error().message);
@@ -133,7 +134,7 @@ py::array_t<float> floatArray(std::vector<py::ssize_t> shape) { return py::array
 
 py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_t n, std::uint64_t seed, float time,
                 float gradientStep, std::uint32_t chunk, float surfaceTolerance, const std::string& entry,
-                const py::object& params, std::uint64_t firstIndex) {
+                const py::object& params, std::uint64_t firstIndex, const std::string& nearWidths, float nearTruncation) {
     jobs::SampleRequest request;
     request.sdf = sdfInput(sdf, entry, params);
     request.pattern = pattern;
@@ -143,6 +144,8 @@ py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_
     request.gradientStep = gradientStep;
     request.chunkSize = chunk;
     request.surfaceTolerance = surfaceTolerance;
+    request.nearWidths = nearWidths;
+    request.nearTruncation = nearTruncation;
     if (auto error = jobs::validate(request)) raise(*error);
     sampling::SamplingJob job = jobs::samplingJob(request);
     job.indexOffset = firstIndex;
@@ -458,7 +461,8 @@ PYBIND11_MODULE(_native, m) {
     m.attr("__version__") = SDFWB_VERSION;
     m.def("sample", &sample, py::arg("sdf"), py::arg("pattern"), py::arg("n"), py::arg("seed") = 0, py::arg("time") = 0.0f,
           py::arg("gradient_step") = 1e-3f, py::arg("chunk") = 1u << 18, py::arg("surface_tolerance") = 1e-5f,
-          py::arg("entry") = "", py::arg("params") = py::none(), py::arg("first_index") = 0,
+          py::arg("entry") = "", py::arg("params") = py::none(), py::arg("first_index") = 0, py::arg("near_widths") = "",
+          py::arg("near_truncate") = 0.0f,
           "Samples `n` points of `sdf` (dataset name, path or GLSL source) with `pattern`. Returns a dict of float32 arrays\n"
           "position (n,3), distance (n,), gradient (n,3) (raw, not normalised) plus bad_rows and seconds. Same seed, same\n"
           "values as `sdfwb --batch sample`. surface_tolerance: |f| at which the rays of surface/near/metropolis stop\n"
@@ -466,7 +470,9 @@ PYBIND11_MODULE(_native, m) {
           "vec2/vec4 returns give the distance in .x). params: values for the SDF's declared parameters, e.g.\n"
           "{'radius': 0.3, 'offset': (0, 0.1, 0)} (sdfwb.params(sdf) lists them); the result's `parameters` holds every\n"
           "parameter's value. first_index: the first row's sample index (rows depend on seed and index alone, so\n"
-          "first_index=k*n gives the k-th batch of an endless stream). The GIL is released while sampling.");
+          "first_index=k*n gives the k-th batch of an endless stream). near_widths: near's mixture of Gaussian offsets\n"
+          "'W:P,...' (e.g. '0.005:0.8,0.05:0.2'), truncated at near_truncate deviations when > 0. The GIL is released while "
+          "sampling.");
     m.def("evaluate", &evaluate, py::arg("sdf"), py::arg("points"), py::arg("params") = py::none(), py::arg("time") = 0.0f,
           py::arg("gradient") = true, py::arg("gradient_step") = 1e-3f, py::arg("entry") = "", py::arg("chunk") = 1u << 18,
           "The field of `sdf` at the caller's points ((N,3) float32, read in place): a dict with distance (N,) and\n"

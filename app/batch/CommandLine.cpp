@@ -414,6 +414,11 @@ int runSampleCommand(const Arguments& arguments, Mode mode) {
                    "|f| at which the rays of surface, near and metropolis stop (accuracy against time: docs/benchmarks.md)")
         ->capture_default_str()
         ->check(numberCheck(true));
+    app.add_option("--near-widths", command.nearWidths,
+                   "near only: a mixture of Gaussian offsets W:P,... (standard deviation W, weight P; up to 4), "
+                   "e.g. 0.005:0.8,0.05:0.2");
+    app.add_option("--near-truncate", command.nearTruncation,
+                   "near only: truncate each Gaussian at this many standard deviations (redrawn, not clamped)");
     addFamilyOptions(app, command.family, "one output per instance (OUTPUT_00000.EXT, ...) and an index OUTPUT_index.json,");
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch sample", arguments)) return *exit;

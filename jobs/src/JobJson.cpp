@@ -102,6 +102,8 @@ template <class V> void fields(V& v, SampleRequest& r) {
     v("chunk", r.chunkSize);
     v("gradient_step", r.gradientStep);
     v("surface_tolerance", r.surfaceTolerance);
+    v("near_widths", r.nearWidths);
+    v("near_truncation", r.nearTruncation);
     v("sweep", r.family.sweeps);
     v("randomize", r.family.randomize);
 }

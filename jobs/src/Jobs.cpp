@@ -186,7 +186,47 @@ sampling::SamplingJob samplingJob(const SampleRequest& request) {
     job.chunkSize = request.chunkSize;
     job.gradientStep = request.gradientStep;
     job.surfaceTolerance = request.surfaceTolerance;
+    if (auto mixture = nearMixture(request.nearWidths); mixture && !mixture->empty()) {
+        float total = 0.0f;
+        for (const auto& [width, weight] : *mixture) total += weight;
+        float cumulative = 0.0f;
+        for (std::size_t c = 0; c < mixture->size(); ++c) {
+            cumulative += (*mixture)[c].second / total;
+            job.parameters[c] = (*mixture)[c].first;
+            job.parameters[4 + c] = c + 1 == mixture->size() ? 1.0f : cumulative;
+        }
+        job.parameters[8] = request.nearTruncation;
+    }
     return job;
+}
+
+Expected<std::vector<std::pair<float, float>>> nearMixture(const std::string& text) {
+    std::vector<std::pair<float, float>> mixture;
+    if (text.empty()) return mixture;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t end = std::min(text.find(',', start), text.size());
+        const std::string item = text.substr(start, end - start);
+        const std::size_t colon = item.find(':');
+        float width = 0.0f, weight = 1.0f;
+        try {
+            std::size_t used = 0;
+            width = std::stof(item.substr(0, colon), &used);
+            if (used != item.substr(0, colon).size()) throw std::invalid_argument(item);
+            if (colon != std::string::npos) {
+                weight = std::stof(item.substr(colon + 1), &used);
+                if (used != item.size() - colon - 1) throw std::invalid_argument(item);
+            }
+        } catch (const std::exception&) {
+            return makeError("--near-widths: '" + item + "' is not WIDTH or WIDTH:WEIGHT (e.g. 0.005:0.8,0.05:0.2)");
+        }
+        if (!(width > 0.0f) || !std::isfinite(width) || !(weight > 0.0f) || !std::isfinite(weight))
+            return makeError("--near-widths: '" + item + "': widths and weights must be positive");
+        mixture.emplace_back(width, weight);
+        start = end + 1;
+    }
+    if (mixture.size() > 4) return makeError("--near-widths: at most 4 components, got " + std::to_string(mixture.size()));
+    return mixture;
 }
 
 std::optional<JobError> validate(const SampleRequest& request) {
@@ -198,6 +238,12 @@ std::optional<JobError> validate(const SampleRequest& request) {
     if (request.shardCount == 0 || request.shardIndex >= request.shardCount)
         return usage("--shard: expected K/COUNT with 0 <= K < COUNT, got '" + std::to_string(request.shardIndex) + "/" +
                      std::to_string(request.shardCount) + "'");
+    if (auto mixture = nearMixture(request.nearWidths); !mixture) return usage(mixture.error().message);
+    if (!request.nearWidths.empty() && request.pattern != "near")
+        return usage("--near-widths: only the near pattern takes widths (the pattern is '" + request.pattern + "')");
+    if (!(request.nearTruncation >= 0.0f) || !std::isfinite(request.nearTruncation))
+        return usage("--near-truncate: expected 0 (none) or a positive number of standard deviations");
+    if (request.nearTruncation > 0.0f && request.nearWidths.empty()) return usage("--near-truncate: needs --near-widths");
     if (auto error = checkFamily(request.family)) return error;
     if (!request.family.empty() && request.shardCount > 1) return usage("--shard cannot be combined with --sweep or --randomize");
     const sampling::SamplingJob job = samplingJob(request);

@@ -73,7 +73,10 @@ JobResult<SampleReport> run(const SampleRequest& request, const ProgressSink& pr
     sampling::SamplingJob job = samplingJob(request);
     sampling::SampleMetadata metadata;
     metadata.sdf = request.sdf.sdf;
+    // The pattern as run: near's mixture and truncation are part of it (e.g. "near 0.005:0.8,0.05:0.2 truncate 3").
     metadata.pattern = request.pattern;
+    if (!request.nearWidths.empty()) metadata.pattern += " " + request.nearWidths;
+    if (request.nearTruncation > 0.0f) metadata.pattern += " truncate " + std::to_string(request.nearTruncation);
     metadata.version = SDFWB_VERSION;
     const bool family = !request.family.empty();
     const std::uint64_t total = job.rows() * instances.size();

@@ -8,7 +8,7 @@ tensor is passed. Optional adapters: `sdfwb.torch` (SampleStream, an IterableDat
 
 import os as _os
 
-from . import _native
+from . import _native, recipes  # noqa: F401  (recipes needs numpy only)
 from ._native import *  # noqa: F401,F403  (the native functions are the package's API)
 from ._native import __version__  # noqa: F401
 

@@ -14,6 +14,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sdfwb::sampling {
@@ -91,6 +92,8 @@ JobResult<BenchReport> run(const BenchRequest& request, const ProgressSink& prog
 
 // The sampling job a request describes (count, seed, time, shard, chunk, steps, tolerance).
 sampling::SamplingJob samplingJob(const SampleRequest& request);
+// "W:P,W:P,..." (near's mixture of Gaussian widths): the (width, weight) pairs, or what is wrong.
+Expected<std::vector<std::pair<float, float>>> nearMixture(const std::string& text);
 
 // Whether a request kind needs a GL context.
 bool needsGl(const Request& request);

@@ -82,6 +82,11 @@ struct SampleRequest {
     std::uint32_t chunkSize = 1u << 18;
     float gradientStep = 1e-3f;
     float surfaceTolerance = 1e-5f; // |f| at which surface/near/metropolis rays stop
+    // near only: a mixture of Gaussian offsets "W:P,W:P" (standard deviation W with weight P, up to 4;
+    // weights are normalised), truncated at nearTruncation deviations (0: not truncated). Empty:
+    // the pattern's own single width 0.005.
+    std::string nearWidths;
+    float nearTruncation = 0.0f;
     // One output per instance (OUTPUT's stem + _00000, _00001, ...) and an index STEM_index.json;
     // every instance uses `seed`, so instance k equals a plain run with its --param values.
     FamilySpec family;
