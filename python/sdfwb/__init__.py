@@ -2,8 +2,8 @@
 
 The functions live in the native module `sdfwb._native` and are re-exported here. `evaluate` also takes
 and returns CPU torch tensors (without copies) when torch is installed; torch is never imported unless a
-tensor is passed. Optional adapters: `sdfwb.torch` (SampleStream, an IterableDataset) and `sdfwb.dask`
-(many shapes on a Dask cluster).
+tensor is passed. Optional adapter: `sdfwb.torch` (SampleStream, an IterableDataset). Recipes (mixtures,
+DeepSDF and Occupancy Networks layouts): `sdfwb.recipes`.
 """
 
 import os as _os

@@ -116,3 +116,24 @@ def test_a_forked_worker_after_gl_gets_a_clear_error_not_a_hang():
                                               timeout=60)
     with pytest.raises(RuntimeError, match="spawn"):
         list(fork_loader)
+
+
+def test_command_line_form_reads_and_writes_npy(tmp_path):
+    points = (np.random.default_rng(2).random((3000, 3), dtype=np.float32) * 2 - 1)
+    np.save(tmp_path / "points.npy", points)
+    run = [sys.executable, "-m", "sdfwb", "evaluate", "--sdf", "Torus", "--points", str(tmp_path / "points.npy")]
+    subprocess.run(run + ["--output", str(tmp_path / "out.npz")], check=True, capture_output=True)
+    expected = sdfwb.evaluate("Torus", points)
+    with np.load(tmp_path / "out.npz") as data:
+        assert np.array_equal(data["distance"], expected["distance"]) and np.array_equal(data["gradient"], expected["gradient"])
+    subprocess.run(run + ["--output", str(tmp_path / "d.npy")], check=True, capture_output=True)
+    assert np.array_equal(np.load(tmp_path / "d.npy"), expected["distance"])
+    np.save(tmp_path / "flat.npy", np.zeros((5, 2)))
+    bad = subprocess.run(run[:-1] + [str(tmp_path / "flat.npy"), "--output", str(tmp_path / "bad.npz")],
+                         capture_output=True, text=True)
+    assert bad.returncode == 2 and "flat.npy" in bad.stderr and "(N, 3)" in bad.stderr
+    broken = subprocess.run([sys.executable, "-m", "sdfwb", "evaluate", "--sdf", "float sdf(vec3 p) { return x; }",
+                             "--points", str(tmp_path / "points.npy"), "--output", str(tmp_path / "bad.npz")],
+                            capture_output=True, text=True)
+    assert broken.returncode == 2 and "1:" in broken.stderr and "undeclared" in broken.stderr
+    assert not (tmp_path / "bad.npz").exists() and not list(tmp_path.glob(".sdfwb-*"))
