@@ -32,6 +32,8 @@ int runList(const jobs::ListRequest& request, const OutputOptions& output);
 int runParams(const jobs::ParamsRequest& request, const OutputOptions& output);
 int runMesh(const jobs::MeshRequest& request, const OutputOptions& output);
 int runEval(const jobs::EvalRequest& request, const OutputOptions& output);
+// Exit 1 when any item failed (the others still ran), 130 when cancelled.
+int runRun(const jobs::RunRequest& request, const OutputOptions& output);
 // Error against run time for the tracer, the samplers, gradients and the audit (jobs/Benchmarks.h).
 int runBench(const jobs::BenchRequest& request, const OutputOptions& output);
 

@@ -49,6 +49,8 @@ const char* const kOverview =
     "  params   list the parameters (annotated uniforms) an SDF declares\n"
     "  mesh     extract the surface as a mesh (.ply, .obj, .stl, .glb) with sharp edges, graded against the field\n"
     "  eval     grade any mesh against the exact field: Chamfer, F-score, normal consistency, Hausdorff, IoU\n"
+    "  run      many shapes from a manifest (CSV or JSON lines: sdf, pattern or recipe, n, seed, output),\n"
+    "           each item in a child process; resumable (status file), --rank/--world-size slices\n"
     "  request  run one request given as JSON (FILE or - for stdin); every command's --print-request\n"
     "           prints the JSON its options make\n"
     "\n"
@@ -560,6 +562,38 @@ int runParamsCommand(const Arguments& arguments, Mode mode) {
     return finish(request, ending, mode);
 }
 
+int runRunCommand(const Arguments& arguments, Mode mode) {
+    CLI::App app("Run every item of a manifest (many shapes): each in a child process of its own, recorded in a status file "
+                 "so a second run skips what is done, with failures isolated and the manifest sliced across processes.",
+                 "sdfwb --batch run");
+    jobs::RunRequest request;
+    Ending ending;
+    std::optional<std::uint64_t> item;
+    app.add_option("manifest", request.manifest,
+                   "CSV with a header (sdf, entry, params, pattern or recipe, n, seed, output, ...) or JSON lines, one item "
+                   "each; relative paths are taken from the manifest's folder")
+        ->required();
+    app.add_option("--status", request.status,
+                   "status file (JSON lines; default MANIFEST.status.jsonl, or MANIFEST.status-K-of-W.jsonl with --world-size)");
+    app.add_option("--item-timeout", request.itemTimeout,
+                   "seconds an item may run before it is killed and marked failed (0: no limit)")
+        ->capture_default_str()
+        ->check(numberCheck(false))
+        ->check(CLI::Range(0.0, 1e7));
+    app.add_option("--rank", request.rank, "K: run the items whose 0-based index % W == K (Slurm: $SLURM_ARRAY_TASK_ID)")
+        ->capture_default_str();
+    app.add_option("--world-size", request.worldSize, "W: the number of processes sharing the manifest")
+        ->capture_default_str()
+        ->check(CLI::Range(1u, 1000000u));
+    app.add_option("--item", item, "run only item I (0-based; one Dask task each)");
+    app.add_flag("--list", request.list, "list the items and their recorded state (pending, done, failed, ...); run nothing");
+    addOutputFlags(app, ending);
+    if (auto exit = parse(app, "--batch run", arguments)) return *exit;
+    request.item = item;
+    if (mode == Mode::Check) return kExitOk;
+    return finish(request, ending, mode);
+}
+
 // Reads a request's JSON from a file, or from stdin for "-".
 std::optional<std::string> readRequestText(const std::string& source) {
     std::ostringstream text;
@@ -576,14 +610,49 @@ std::optional<std::string> readRequestText(const std::string& source) {
     return text.str();
 }
 
+// `request --each-line`: every line of the input is a request, run in turn; each ends with the
+// line "sdfwb-end CODE" on stdout, so a parent can tell where one item's report ends.
+int runRequestLines(const std::string& source, const Ending& ending, Mode mode) {
+    std::ifstream file;
+    if (source != "-") {
+        file.open(source, std::ios::binary);
+        if (!file) {
+            printError("request: '" + source + "': cannot read the file");
+            return kExitUsage;
+        }
+    }
+    std::istream& input = source == "-" ? std::cin : file;
+    std::string line;
+    int last = kExitOk;
+    while (std::getline(input, line)) {
+        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+        auto request = jobs::requestFromJson(line);
+        if (!request) {
+            printError((source == "-" ? std::string("<stdin>") : source) + ": " + request.error().message);
+            last = kExitUsage;
+        } else {
+            last = finish(*request, ending, mode);
+        }
+        std::fflush(stderr);
+        std::printf("\nsdfwb-end %d\n", last);
+        std::fflush(stdout);
+    }
+    return last;
+}
+
 int runRequestCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Run one request given as JSON (what --print-request prints; the workbench starts its jobs this way).",
                  "sdfwb --batch request");
     std::string source;
     Ending ending;
+    bool eachLine = false;
     app.add_option("file", source, "a .json file holding one request, or - for stdin")->required();
+    app.add_flag("--each-line", eachLine,
+                 "read one request per line until the input ends; after each, print the line 'sdfwb-end EXITCODE' on stdout "
+                 "(the worker protocol of `--batch run`: one process and GL context for many items)");
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch request", arguments)) return *exit;
+    if (eachLine) return runRequestLines(source, ending, mode);
     auto text = readRequestText(source);
     if (!text) return kExitUsage;
     auto request = jobs::requestFromJson(*text);
@@ -602,7 +671,7 @@ struct BatchCommandEntry {
 constexpr BatchCommandEntry kBatchCommands[] = {
     {"render", runRenderCommand},   {"animate", runAnimateCommand}, {"sample", runSampleCommand}, {"merge", runMergeCommand},
     {"audit", runAuditCommand},     {"list", runListCommand},       {"bench", runBenchCommand},   {"params", runParamsCommand},
-    {"request", runRequestCommand}, {"mesh", runMeshCommand},       {"eval", runEvalCommand},
+    {"request", runRequestCommand}, {"mesh", runMeshCommand},       {"eval", runEvalCommand},     {"run", runRunCommand},
 };
 
 const BatchCommandEntry* findBatchCommand(const std::string& name) {

@@ -154,6 +154,51 @@ template <class V> void fields(V& v, EvalRequest& r) {
     v("seed", r.seed);
 }
 
+template <class V> void fields(V& v, RunRequest& r) {
+    v("manifest", r.manifest);
+    v("status", r.status);
+    v("item_timeout", r.itemTimeout);
+    v("rank", r.rank);
+    v("world_size", r.worldSize);
+    v("item", r.item);
+    v("list", r.list);
+    v("executable", r.executable);
+    v("python", r.python);
+}
+
+template <class V> void fields(V& v, RunItemReport& r) {
+    v("index", r.index);
+    v("line", r.line);
+    v("task", r.task);
+    v("sdf", r.sdf);
+    v("output", r.output);
+    v("key", r.key);
+    v("status", r.status);
+    v("seconds", r.seconds);
+    v("bytes", r.bytes);
+    v("rows", r.rows);
+    v("bad_rows", r.badRows);
+    v("exit_code", r.exitCode);
+    v("error", r.error);
+    v("finished", r.finished);
+}
+
+template <class V> void fields(V& v, RunReport& r) {
+    v("manifest", r.manifest);
+    v("status", r.status);
+    v("rank", r.rank);
+    v("world_size", r.worldSize);
+    v("items", r.items);
+    v("selected", r.selected);
+    v("done", r.done);
+    v("skipped", r.skipped);
+    v("failed", r.failed);
+    v("seconds", r.seconds);
+    v("shapes_per_hour", r.shapesPerHour);
+    v("bytes_written", r.bytesWritten);
+    v("results", r.results);
+}
+
 template <class V> void fields(V& v, EvalReport& r) {
     v("mesh", r.mesh);
     v("sdf", r.sdf);
@@ -686,7 +731,8 @@ Expected<Request> requestFromJson(const std::string& text) {
     if (!in->is_object()) return makeError("request: expected a JSON object with a \"kind\"");
     auto kind = in->find("kind");
     if (kind == in->end() || !kind->is_string())
-        return makeError("request: missing \"kind\" (render, animate, sample, audit, merge, list, bench, params, mesh, eval)");
+        return makeError(
+            "request: missing \"kind\" (render, animate, sample, audit, merge, list, bench, params, mesh, eval, run)");
     const std::string name = kind->get<std::string>();
     auto as = [&]<class T>(T*) -> Expected<Request> {
         auto value = readObject<T>(*in, true, (name + " request").c_str());
@@ -703,8 +749,9 @@ Expected<Request> requestFromJson(const std::string& text) {
     if (name == "params") return as((ParamsRequest*)nullptr);
     if (name == "mesh") return as((MeshRequest*)nullptr);
     if (name == "eval") return as((EvalRequest*)nullptr);
+    if (name == "run") return as((RunRequest*)nullptr);
     return makeError("request: unknown kind '" + name +
-                     "' (render, animate, sample, audit, merge, list, bench, params, mesh, eval)");
+                     "' (render, animate, sample, audit, merge, list, bench, params, mesh, eval, run)");
 }
 
 namespace {
@@ -744,6 +791,8 @@ std::string toJson(const BenchReport& report, int indent) { return dump(encode(r
 std::string toJson(const ParamsReport& report, int indent) { return dump(encode(report), indent); }
 std::string toJson(const MeshReport& report, int indent) { return dump(encode(report), indent); }
 std::string toJson(const EvalReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const RunReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const RunItemReport& report, int indent) { return dump(encode(report), indent); }
 std::string toJson(const AuditJobReport& report, int indent) { return dump(encodeAudit(report), indent); }
 
 template <class T> Expected<T> reportFromJson(const std::string& text) {
@@ -793,5 +842,7 @@ template Expected<BenchReport> reportFromJson<BenchReport>(const std::string&);
 template Expected<ParamsReport> reportFromJson<ParamsReport>(const std::string&);
 template Expected<MeshReport> reportFromJson<MeshReport>(const std::string&);
 template Expected<EvalReport> reportFromJson<EvalReport>(const std::string&);
+template Expected<RunReport> reportFromJson<RunReport>(const std::string&);
+template Expected<RunItemReport> reportFromJson<RunItemReport>(const std::string&);
 
 } // namespace sdfwb::jobs

@@ -29,13 +29,14 @@ const char* kindName(const Request& request) {
         const char* operator()(const ParamsRequest&) const { return "params"; }
         const char* operator()(const MeshRequest&) const { return "mesh"; }
         const char* operator()(const EvalRequest&) const { return "eval"; }
+        const char* operator()(const RunRequest&) const { return "run"; }
     };
     return std::visit(Names{}, request);
 }
 
 bool needsGl(const Request& request) {
     return !std::holds_alternative<MergeRequest>(request) && !std::holds_alternative<ListRequest>(request) &&
-           !std::holds_alternative<ParamsRequest>(request);
+           !std::holds_alternative<ParamsRequest>(request) && !std::holds_alternative<RunRequest>(request);
 }
 
 namespace {

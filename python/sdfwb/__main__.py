@@ -1,31 +1,25 @@
-"""Command line for the Python-side tools: `python3 -m sdfwb evaluate --sdf SDF --points IN.npy --output OUT.npz`.
+"""Command line for the Python-side tools.
 
-OUT.npz holds distance (N,) and, unless --no-gradient, gradient (N,3) (float32), written atomically; an .npy
-output holds the distances alone. Exit codes: 0 done, 2 bad arguments or input, 1 a failure while running.
+    python3 -m sdfwb evaluate --sdf SDF --points IN.npy --output OUT.npz
+    python3 -m sdfwb recipe deepsdf --sdf SDF --output OUT.npz [--n N --seed S --params JSON ...]
+    python3 -m sdfwb recipe - < ITEM.json      (a manifest item: how `sdfwb --batch run` runs recipes)
+
+evaluate: OUT.npz holds distance (N,) and, unless --no-gradient, gradient (N,3) (float32), written atomically; an
+.npy output holds the distances alone. recipe: the layouts of sdfwb.recipes; prints a JSON line (output, rows,
+bad_rows, seconds). Exit codes: 0 done, 2 bad arguments or input, 1 a failure while running.
 """
 
 import argparse
 import json
 import os
 import sys
-import tempfile
 
 import numpy as np
 
-from . import evaluate
+from . import evaluate, recipes
+from .recipes import atomic_write as _atomic_save
 
-
-def _atomic_save(path, write):
-    folder = os.path.dirname(os.path.abspath(path))
-    handle, temporary = tempfile.mkstemp(prefix=".sdfwb-", suffix=os.path.splitext(path)[1], dir=folder)
-    try:
-        with os.fdopen(handle, "wb") as stream:
-            write(stream)
-        os.replace(temporary, path)
-    except BaseException:
-        if os.path.exists(temporary):
-            os.unlink(temporary)
-        raise
+RECIPE_KEYS = {"recipe", "sdf", "entry", "params", "n", "seed", "time", "output", "padding"}
 
 
 def _evaluate(options):
@@ -51,6 +45,50 @@ def _evaluate(options):
     print(f"{options.output}: {len(points)} points in {result['seconds']:.3f} s ({result['bad_rows']} non-finite)")
 
 
+def _recipe(options):
+    if options.name == "-":
+        text = sys.stdin.read()
+        try:
+            item = json.loads(text)
+        except json.JSONDecodeError as error:
+            raise ValueError(f"recipe: the item on stdin is not valid JSON ({error})") from None
+        if not isinstance(item, dict):
+            raise ValueError("recipe: the item on stdin must be a JSON object")
+    else:
+        item = {"recipe": options.name, "sdf": options.sdf, "output": options.output, "entry": options.entry,
+                "seed": options.seed, "time": options.time}
+        if options.n is not None:
+            item["n"] = options.n
+        if options.params:
+            item["params"] = json.loads(options.params)
+        if options.padding is not None:
+            item["padding"] = options.padding
+    unknown = sorted(set(item) - RECIPE_KEYS)
+    if unknown:
+        raise ValueError(f"recipe: unknown key '{unknown[0]}' (known: {', '.join(sorted(RECIPE_KEYS))})")
+    name = item.get("recipe")
+    if name not in ("deepsdf", "occnet"):
+        raise ValueError(f"recipe: expected deepsdf or occnet, got {name!r}")
+    for key in ("sdf", "output"):
+        if not isinstance(item.get(key), str) or not item[key]:
+            raise ValueError(f"recipe: '{key}' must be a non-empty string")
+    if not item["output"].endswith(".npz"):
+        raise ValueError(f"recipe: '{item['output']}': a recipe writes .npz")
+    arguments = {"seed": int(item.get("seed", 0)), "params": item.get("params"), "time": float(item.get("time", 0.0)),
+                 "entry": item.get("entry", "")}
+    if "n" in item:
+        arguments["n"] = int(item["n"])
+    if name == "occnet" and "padding" in item:
+        arguments["padding"] = float(item["padding"])
+    elif "padding" in item:
+        raise ValueError("recipe: 'padding' belongs to occnet")
+    run = recipes.deepsdf if name == "deepsdf" else recipes.occnet
+    metadata = run(item["sdf"], item["output"], **arguments)
+    rows = metadata["n"] - metadata.get("rows_dropped", 0)
+    print(json.dumps({"output": item["output"], "recipe": name, "rows": rows, "bad_rows": metadata.get("rows_dropped", 0),
+                      "seconds": metadata["sampling_seconds"]}))
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(prog="python3 -m sdfwb")
     commands = parser.add_subparsers(dest="command", required=True)
@@ -62,9 +100,19 @@ def main(argv=None):
     ev.add_argument("--time", type=float, default=0.0)
     ev.add_argument("--params", default="", help='JSON object of parameter values, e.g. {"radius": 0.3}')
     ev.add_argument("--no-gradient", action="store_true", help="distances only (one evaluation per point)")
+    rc = commands.add_parser("recipe", help="write a named recipe's .npz (deepsdf, occnet), or run a manifest item (-)")
+    rc.add_argument("name", help="deepsdf, occnet, or - to read a manifest item's JSON from stdin")
+    rc.add_argument("--sdf", default="", help="dataset name, path or GLSL source")
+    rc.add_argument("--output", default="", help="the .npz to write")
+    rc.add_argument("--n", type=int, default=None, help="points (default: the recipe's published count)")
+    rc.add_argument("--seed", type=int, default=0)
+    rc.add_argument("--entry", default="")
+    rc.add_argument("--time", type=float, default=0.0)
+    rc.add_argument("--params", default="", help='JSON object of parameter values')
+    rc.add_argument("--padding", type=float, default=None, help="occnet: the box padding (default 0.1)")
     options = parser.parse_args(argv)
     try:
-        _evaluate(options)
+        (_evaluate if options.command == "evaluate" else _recipe)(options)
     except (ValueError, json.JSONDecodeError) as error:
         print(f"sdfwb: {error}", file=sys.stderr)
         return 2

@@ -11,6 +11,7 @@ import json
 import os
 import tempfile
 import warnings
+import zipfile
 
 import numpy as np
 
@@ -122,19 +123,38 @@ def mix(sdf, parts, n, seed=0, occupancy=False, dtype=np.float32, params=None, t
     return result
 
 
-def save_npz(path, arrays, metadata):
-    """Writes arrays and the metadata (as the JSON string `sdfwb_metadata`) atomically: a temporary file in the
-    same folder, renamed into place, so a killed run leaves no half-written file."""
+def atomic_write(path, write):
+    """Calls write(stream) on a temporary file beside `path` (named .NAME.partial-XXXXXXXX, as the C++ writers
+    name theirs, so `sdfwb --batch run` can clear what a killed item left) and renames it into place."""
     folder = os.path.dirname(os.path.abspath(path))
-    handle, temporary = tempfile.mkstemp(prefix=".sdfwb-", suffix=".npz", dir=folder)
+    handle, temporary = tempfile.mkstemp(prefix="." + os.path.basename(path) + ".partial-", dir=folder)
     try:
         with os.fdopen(handle, "wb") as stream:
-            np.savez(stream, **arrays, sdfwb_metadata=np.array(json.dumps(metadata)))
+            write(stream)
+            stream.flush()
+            os.fsync(stream.fileno())
+        os.chmod(temporary, 0o644)
         os.replace(temporary, path)
     except BaseException:
         if os.path.exists(temporary):
             os.unlink(temporary)
         raise
+
+
+def save_npz(path, arrays, metadata):
+    """Writes arrays and the metadata (as the JSON string `sdfwb_metadata`) as an .npz that np.load reads, atomically
+    (atomic_write). The same arrays and metadata give the same bytes: members carry a fixed date, unlike np.savez's,
+    so reruns and resumed runs can be compared (and deduplicated) by content."""
+    members = dict(arrays, sdfwb_metadata=np.array(json.dumps(metadata)))
+
+    def write(stream):
+        with zipfile.ZipFile(stream, "w", zipfile.ZIP_STORED, allowZip64=True) as archive:
+            for key, value in members.items():
+                info = zipfile.ZipInfo(key + ".npy", date_time=(1980, 1, 1, 0, 0, 0))
+                with archive.open(info, "w", force_zip64=True) as member:
+                    np.lib.format.write_array(member, np.asanyarray(value), allow_pickle=False)
+
+    atomic_write(path, write)
 
 
 def metadata_of(path):
@@ -152,8 +172,9 @@ def deepsdf(sdf, path, n=500000, seed=0, params=None, time=0.0, entry=""):
     table = table[np.isfinite(table).all(axis=1)]  # a near ray that found no surface is a NaN row
     positive = table[:, 3] > 0.0
     metadata = dict(rows["metadata"], recipe="deepsdf", description=DEEPSDF, rows_dropped=int(n - len(table)))
+    seconds = metadata.pop("sampling_seconds")  # a timing, not a property of the data: kept out of the file
     save_npz(path, {"pos": table[positive], "neg": table[~positive]}, metadata)
-    return metadata
+    return dict(metadata, sampling_seconds=seconds)
 
 
 def occnet(sdf, path, n=100000, seed=0, padding=0.1, params=None, time=0.0, entry="", bounds=(-1, -1, -1, 1, 1, 1)):
@@ -170,8 +191,8 @@ def occnet(sdf, path, n=100000, seed=0, padding=0.1, params=None, time=0.0, entr
         "recipe": "occnet", "description": OCCNET, "sdf": sdf, "entry": entry, "seed": int(seed), "time": float(time),
         "n": int(n), "padding": float(padding), "parameters": params or {}, "bounds": list(bounds),
         "normalisation": {"loc": loc.tolist(), "scale": scale}, "surface_outside_box": fraction,
-        "inside_fraction": float(inside.mean()), "sampling_seconds": values["seconds"], "version": _native.__version__,
+        "inside_fraction": float(inside.mean()), "version": _native.__version__,
     }
     save_npz(path, {"points": normalised, "occupancies": np.packbits(inside), "loc": loc.astype(np.float32),
                     "scale": np.float32(scale)}, metadata)
-    return metadata
+    return dict(metadata, sampling_seconds=values["seconds"])

@@ -136,4 +136,4 @@ def test_command_line_form_reads_and_writes_npy(tmp_path):
                              "--points", str(tmp_path / "points.npy"), "--output", str(tmp_path / "bad.npz")],
                             capture_output=True, text=True)
     assert broken.returncode == 2 and "1:" in broken.stderr and "undeclared" in broken.stderr
-    assert not (tmp_path / "bad.npz").exists() and not list(tmp_path.glob(".sdfwb-*"))
+    assert not (tmp_path / "bad.npz").exists() and not list(tmp_path.glob(".*"))

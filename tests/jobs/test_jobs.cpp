@@ -2,6 +2,7 @@
 // requests are refused naming the key, and the CLI's options make the same requests as JSON.
 #include <jobs/JobJson.h>
 #include <jobs/Jobs.h>
+#include <jobs/Manifest.h>
 
 #include <gtest/gtest.h>
 
@@ -101,7 +102,9 @@ std::vector<Request> unusualRequests() {
     eval.tau = 0.005f;
     eval.occupancyResolution = 0;
     eval.seed = 3;
-    return {render, animate, sample, audit, merge, ListRequest{}, bench, params, mesh, eval};
+    RunRequest run{"a b/shapes.csv", "status.jsonl", 12.5, 2, 5, std::nullopt, true, "/opt/sdfwb", "/usr/bin/python3"};
+    RunRequest one{"m.jsonl", "", 0.0, 0, 1, 12345678901ull, false, "", ""};
+    return {render, animate, sample, audit, merge, ListRequest{}, bench, params, mesh, eval, run, one};
 }
 
 } // namespace
@@ -200,6 +203,29 @@ TEST(JobJson, ReportsSurviveARoundTrip) {
     auto l = reportFromJson<ListReport>(toJson(list));
     ASSERT_TRUE(l) << l.error().message;
     EXPECT_TRUE(*l == list);
+    RunReport run;
+    run.manifest = "shapes.csv";
+    run.status = "shapes.csv.status-1-of-4.jsonl";
+    run.rank = 1;
+    run.worldSize = 4;
+    run.items = 9;
+    run.selected = 2;
+    run.done = 1;
+    run.failed = 1;
+    run.seconds = 2.5;
+    run.shapesPerHour = 1440.0;
+    run.bytesWritten = 1ull << 33;
+    run.results = {{1, 3, "sample", "torus", "out/t.npz", "00ff00ff00ff00ff", "done", 1.25, 1ull << 33, 100, 2, 0, "",
+                    "2026-11-24T05:00:00Z"},
+                   {5, 8, "deepsdf", "b.glsl", "out/b.npz", "0123456789abcdef", "timeout", 30.0, 0, 0, 0, 137,
+                    "killed after \"30 s\"", "2026-11-24T05:00:31Z"}};
+    auto rr = reportFromJson<RunReport>(toJson(run));
+    ASSERT_TRUE(rr) << rr.error().message;
+    EXPECT_TRUE(*rr == run);
+    auto line = reportFromJson<RunItemReport>(toJson(run.results[1], -1));
+    ASSERT_TRUE(line) << line.error().message;
+    EXPECT_TRUE(*line == run.results[1]);
+    EXPECT_EQ(toJson(run.results[1], -1).find('\n'), std::string::npos); // one status-file line
     // Reports grow: a key this build does not know is skipped, not refused.
     auto grown = reportFromJson<MergeReport>(R"({"output": "m.bin", "rows": 7, "parts": 2, "seconds": 0.5, "new_figure": 1})");
     ASSERT_TRUE(grown) << grown.error().message;
@@ -396,6 +422,18 @@ TEST(JobJson, CommandLineOptionsMakeTheSameRequestAsJson) {
     ASSERT_TRUE(parsed) << parsed.error().message;
     EXPECT_TRUE(*parsed == Request(audit)) << toJson(*parsed, 2);
 
+    RunRequest run;
+    run.manifest = "shapes.jsonl";
+    run.status = "/tmp/s.jsonl";
+    run.itemTimeout = 90.0;
+    run.rank = 3;
+    run.worldSize = 4;
+    run.list = true;
+    parsed = requestFromJson(standardOutput("--batch run shapes.jsonl --status /tmp/s.jsonl --item-timeout 90 --rank 3 "
+                                            "--world-size 4 --list --print-request"));
+    ASSERT_TRUE(parsed) << parsed.error().message;
+    EXPECT_TRUE(*parsed == Request(run)) << toJson(*parsed, 2);
+
     // And back: the printed JSON, given to `--batch request`, prints the same request again.
     const std::string printed = toJson(Request(audit), 2);
     const std::filesystem::path file =
@@ -408,4 +446,84 @@ TEST(JobJson, CommandLineOptionsMakeTheSameRequestAsJson) {
     }
     EXPECT_EQ(standardOutput("--batch request " + file.string() + " --print-request"), printed + "\n");
     std::filesystem::remove(file);
+}
+
+namespace {
+
+void writeText(const std::filesystem::path& path, const std::string& text) {
+    FILE* out = std::fopen(path.c_str(), "w");
+    ASSERT_TRUE(out);
+    std::fputs(text.c_str(), out);
+    std::fclose(out);
+}
+
+} // namespace
+
+TEST(Manifest, CsvAndJsonLinesMakeTheSameItemsWithPathsFromTheManifestsFolder) {
+    const auto folder = std::filesystem::temp_directory_path() / ("sdfwb-manifest-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(folder);
+    writeText(folder / "mine.glsl", "uniform float radius = 0.5;\nfloat map(vec3 p) { return length(p) - radius; }\n");
+    // Quoted cells with commas and a doubled quote, a comment, a blank line, spaces, CRLF endings.
+    writeText(folder / "shapes.csv", "sdf, pattern ,n,seed,params,output,near_widths,entry\r\n"
+                                     "# a comment\r\n"
+                                     "mine.glsl,near,100,7,\"radius=0.3;offset=1,2,3\",out/a.npz,\"0.005:0.8,0.05:0.2\",map\r\n"
+                                     "\r\n"
+                                     "Sphere,rand,5,,,\"b \"\"quoted\"\".ply\",,\r\n"
+                                     "torus,,,,,c.npz,,\r\n");
+    writeText(folder / "shapes.jsonl",
+              "{\"sdf\": \"mine.glsl\", \"pattern\": \"near\", \"n\": 100, \"seed\": 7, \"params\": {\"radius\": 0.3, "
+              "\"offset\": [1, 2, 3]}, \"output\": \"out/a.npz\", \"near_widths\": \"0.005:0.8,0.05:0.2\", \"entry\": \"map\"}\n"
+              "{\"sdf\": \"Sphere\", \"pattern\": \"rand\", \"n\": 5, \"output\": \"b \\\"quoted\\\".ply\"}\n"
+              "{\"recipe\": \"occnet\", \"sdf\": \"torus\", \"output\": \"c.npz\", \"padding\": 0.2}\n");
+    auto csv = readManifest((folder / "shapes.csv").string());
+    EXPECT_FALSE(csv) << "the third row has no pattern and no n";
+    if (!csv) {
+        EXPECT_NE(csv.error().message.find("shapes.csv:6: missing \"pattern\""), std::string::npos) << csv.error().message;
+    }
+    writeText(folder / "shapes.csv", "sdf, pattern ,n,seed,params,output,near_widths,entry,recipe,padding\r\n"
+                                     "# a comment\r\n"
+                                     "mine.glsl,near,100,7,\"radius=0.3;offset=1,2,3\",out/a.npz,\"0.005:0.8,0.05:0.2\",map,,\r\n"
+                                     "\r\n"
+                                     "Sphere,rand,5,,,\"b \"\"quoted\"\".ply\",,,,\r\n"
+                                     "torus,,,,,c.npz,,,occnet,0.2\r\n");
+    csv = readManifest((folder / "shapes.csv").string());
+    auto jsonl = readManifest((folder / "shapes.jsonl").string());
+    ASSERT_TRUE(csv) << csv.error().message;
+    ASSERT_TRUE(jsonl) << jsonl.error().message;
+    ASSERT_EQ(csv->size(), 3u);
+    ASSERT_EQ(jsonl->size(), 3u);
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_EQ((*csv)[i].index, i);
+        EXPECT_EQ((*csv)[i].kind, (*jsonl)[i].kind);
+        EXPECT_EQ((*csv)[i].output, (*jsonl)[i].output);
+        if ((*csv)[i].kind == "sample") { // a recipe's JSON keeps its key order; a request's is canonical
+            EXPECT_EQ((*csv)[i].childInput, (*jsonl)[i].childInput);
+            EXPECT_EQ((*csv)[i].key, (*jsonl)[i].key);
+        }
+    }
+    EXPECT_EQ((*csv)[0].line, 3);
+    EXPECT_EQ((*csv)[1].line, 5);
+    EXPECT_EQ((*csv)[2].line, 6);
+    EXPECT_EQ((*jsonl)[2].line, 3);
+    EXPECT_EQ((*csv)[0].sdf, (folder / "mine.glsl").string()); // beside the manifest
+    EXPECT_EQ((*csv)[1].sdf, "Sphere");                        // a dataset name stays a name
+    EXPECT_EQ((*csv)[0].output, (folder / "out/a.npz").string());
+    EXPECT_EQ((*csv)[1].output, (folder / "b \"quoted\".ply").string());
+    EXPECT_EQ((*csv)[2].kind, "occnet");
+    auto request = requestFromJson((*csv)[0].childInput);
+    ASSERT_TRUE(request) << request.error().message;
+    const auto& sample = std::get<SampleRequest>(*request);
+    EXPECT_EQ(sample.sdf.entry, "map");
+    EXPECT_EQ(sample.seed, 7u);
+    ASSERT_EQ(sample.sdf.params.size(), 2u);
+    EXPECT_EQ(sample.sdf.params[1].value, (std::vector<float>{1.0f, 2.0f, 3.0f}));
+    EXPECT_EQ(sample.nearWidths, "0.005:0.8,0.05:0.2");
+    // Another seed is another item: its key changes, the others' do not.
+    writeText(folder / "other.jsonl", "{\"sdf\": \"mine.glsl\", \"pattern\": \"near\", \"n\": 100, \"seed\": 8, \"params\": "
+                                      "{\"radius\": 0.3, \"offset\": [1, 2, 3]}, \"output\": \"out/a.npz\", \"near_widths\": "
+                                      "\"0.005:0.8,0.05:0.2\", \"entry\": \"map\"}\n");
+    auto other = readManifest((folder / "other.jsonl").string());
+    ASSERT_TRUE(other) << other.error().message;
+    EXPECT_NE((*other)[0].key, (*jsonl)[0].key);
+    std::filesystem::remove_all(folder);
 }

@@ -105,6 +105,8 @@ int runRequest(const jobs::Request& request, const OutputOptions& output) {
                 return runMesh(r, output);
             else if constexpr (std::is_same_v<T, jobs::EvalRequest>)
                 return runEval(r, output);
+            else if constexpr (std::is_same_v<T, jobs::RunRequest>)
+                return runRun(r, output);
             else
                 return runBench(r, output);
         },

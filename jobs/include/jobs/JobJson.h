@@ -27,6 +27,9 @@ std::string toJson(const BenchReport& report, int indent = 2);
 std::string toJson(const ParamsReport& report, int indent = 2);
 std::string toJson(const MeshReport& report, int indent = 2);
 std::string toJson(const EvalReport& report, int indent = 2);
+std::string toJson(const RunReport& report, int indent = 2);
+// One item's outcome; with indent -1 the status file's line.
+std::string toJson(const RunItemReport& report, int indent = 2);
 
 // Reads a report of type T (one of the reports above) back from toJson's text.
 template <class T> Expected<T> reportFromJson(const std::string& text);

@@ -70,6 +70,8 @@ inline std::optional<JobError> validate(const ListRequest&) { return std::nullop
 std::optional<JobError> validate(const ParamsRequest& request);
 std::optional<JobError> validate(const MeshRequest& request);
 std::optional<JobError> validate(const EvalRequest& request);
+// Also reads the manifest: a malformed line is a usage error naming it.
+std::optional<JobError> validate(const RunRequest& request);
 
 JobResult<RenderReport> run(const RenderRequest& request, const ProgressSink& progress);
 JobResult<AnimateReport> run(const AnimateRequest& request, const ProgressSink& progress);
@@ -87,6 +89,12 @@ struct MeshedSdf {
 };
 JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& progress);
 JobResult<EvalReport> run(const EvalRequest& request, const ProgressSink& progress);
+// Every selected manifest item in a child process (RunRequest); `onItem` sees each outcome as it
+// is recorded. Needs no GL context. An item that fails is recorded and the run goes on; the
+// result is an error only for a bad request, an unwritable status file, or a cancel (the running
+// item is killed and recorded as cancelled).
+JobResult<RunReport> run(const RunRequest& request, const ProgressSink& progress,
+                         const std::function<void(const RunItemReport&)>& onItem = {});
 // Writes the report's tables; the plots are drawn by the caller (bench/plot_benchmarks.py).
 JobResult<BenchReport> run(const BenchRequest& request, const ProgressSink& progress);
 

@@ -167,8 +167,25 @@ struct EvalRequest {
     bool operator==(const EvalRequest&) const = default;
 };
 
+// Many shapes in one run: every item of a manifest (CSV or JSON lines; jobs/Manifest.h), each in a
+// child process of its own, so a broken shader or a hang fails that item alone. A status file
+// (JSON lines, appended as items end) records each item's outcome; a second run skips the items
+// it records as done with the same content and an intact output, so a killed run resumes.
+struct RunRequest {
+    std::string manifest;
+    std::string status;       // empty: MANIFEST.status.jsonl, or MANIFEST.status-K-of-W.jsonl with --world-size
+    double itemTimeout = 0.0; // seconds an item may take before it is killed and marked failed; 0: no limit
+    std::uint32_t rank = 0;   // this process takes the items whose 0-based index % worldSize == rank
+    std::uint32_t worldSize = 1;
+    std::optional<std::uint64_t> item; // only this item (0-based index in the manifest)
+    bool list = false;                 // report the items and their recorded state; run nothing
+    std::string executable;            // the sdfwb binary that runs sample items; empty: this process's own
+    std::string python;                // the interpreter that runs recipe items; empty: $SDFWB_PYTHON, else the build's
+    bool operator==(const RunRequest&) const = default;
+};
+
 using Request = std::variant<RenderRequest, AnimateRequest, SampleRequest, AuditRequest, MergeRequest, ListRequest, BenchRequest,
-                             ParamsRequest, MeshRequest, EvalRequest>;
+                             ParamsRequest, MeshRequest, EvalRequest, RunRequest>;
 
 // "render", "animate", "sample", "audit", "merge", "list", "bench", "params": the CLI command of each kind.
 const char* kindName(const Request& request);
@@ -337,6 +354,37 @@ struct EvalReport {
     std::vector<std::string> warnings;
     double seconds = 0.0;
     bool operator==(const EvalReport&) const = default;
+};
+
+// One manifest item's outcome, as the status file records it and the run reports it.
+struct RunItemReport {
+    std::uint64_t index = 0; // 0-based position among the manifest's items
+    int line = 0;            // its line in the manifest
+    std::string task;        // "sample" or the recipe's name
+    std::string sdf;
+    std::string output;
+    std::string key;    // fingerprint of the item's content: a changed line is run again
+    std::string status; // done, skipped (done before), failed, timeout, cancelled; with list: pending or the recorded one
+    double seconds = 0.0;
+    std::uint64_t bytes = 0; // the output's size
+    std::uint64_t rows = 0, badRows = 0;
+    int exitCode = 0;
+    std::string error;    // the child's last message when it failed
+    std::string finished; // UTC time the item ended (ISO 8601)
+    bool operator==(const RunItemReport&) const = default;
+};
+
+struct RunReport {
+    std::string manifest;
+    std::string status; // the status file
+    std::uint32_t rank = 0, worldSize = 1;
+    std::uint64_t items = 0; // in the manifest
+    std::uint64_t selected = 0, done = 0, skipped = 0, failed = 0;
+    double seconds = 0.0;
+    double shapesPerHour = 0.0; // items done by this run per hour of its wall time
+    std::uint64_t bytesWritten = 0;
+    std::vector<RunItemReport> results;
+    bool operator==(const RunReport&) const = default;
 };
 
 struct BenchReport {
