@@ -568,7 +568,6 @@ int runRunCommand(const Arguments& arguments, Mode mode) {
                  "sdfwb --batch run");
     jobs::RunRequest request;
     Ending ending;
-    std::optional<std::uint64_t> item;
     app.add_option("manifest", request.manifest,
                    "CSV with a header (sdf, entry, params, pattern or recipe, n, seed, output, ...) or JSON lines, one item "
                    "each; relative paths are taken from the manifest's folder")
@@ -585,11 +584,11 @@ int runRunCommand(const Arguments& arguments, Mode mode) {
     app.add_option("--world-size", request.worldSize, "W: the number of processes sharing the manifest")
         ->capture_default_str()
         ->check(CLI::Range(1u, 1000000u));
-    app.add_option("--item", item, "run only item I (0-based; one Dask task each)");
+    app.add_option("--item", request.items, "run only these items: I (0-based), repeatable or I,J,K (how Dask tasks take theirs)")
+        ->delimiter(',');
     app.add_flag("--list", request.list, "list the items and their recorded state (pending, done, failed, ...); run nothing");
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch run", arguments)) return *exit;
-    request.item = item;
     if (mode == Mode::Check) return kExitOk;
     return finish(request, ending, mode);
 }

@@ -160,7 +160,7 @@ template <class V> void fields(V& v, RunRequest& r) {
     v("item_timeout", r.itemTimeout);
     v("rank", r.rank);
     v("world_size", r.worldSize);
-    v("item", r.item);
+    v("items", r.items);
     v("list", r.list);
     v("executable", r.executable);
     v("python", r.python);

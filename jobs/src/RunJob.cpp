@@ -16,6 +16,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -314,7 +315,9 @@ bool recordedDone(const RunItemReport& record, const ManifestItem& item) {
 std::vector<ManifestItem> selected(const std::vector<ManifestItem>& items, const RunRequest& request) {
     std::vector<ManifestItem> mine;
     for (const ManifestItem& item : items)
-        if (request.item ? item.index == *request.item : item.index % request.worldSize == request.rank) mine.push_back(item);
+        if (request.items.empty() ? item.index % request.worldSize == request.rank
+                                  : std::find(request.items.begin(), request.items.end(), item.index) != request.items.end())
+            mine.push_back(item);
     return mine;
 }
 
@@ -425,7 +428,8 @@ std::optional<JobError> validate(const RunRequest& request) {
     if (request.rank >= request.worldSize)
         return usage("--rank: must be below --world-size (" + std::to_string(request.worldSize) + "), got " +
                      std::to_string(request.rank));
-    if (request.item && request.worldSize > 1) return usage("--item: runs one item; it cannot be combined with --world-size");
+    if (!request.items.empty() && request.worldSize > 1)
+        return usage("--item: names the items to run; it cannot be combined with --world-size");
     if (!std::isfinite(request.itemTimeout) || request.itemTimeout < 0.0)
         return usage("--item-timeout: expected seconds >= 0 (0: no limit)");
     const fs::path binary = executable(request);
@@ -439,9 +443,10 @@ std::optional<JobError> validate(const RunRequest& request) {
         return usage("--status: '" + status.string() + "': folder '" + folder.string() + "' does not exist");
     auto items = readManifest(request.manifest);
     if (!items) return usage(items.error().message);
-    if (request.item && *request.item >= items->size())
-        return usage("--item: " + std::to_string(*request.item) + " is past the manifest's last item (" +
-                     std::to_string(items->size() - 1) + ")");
+    for (std::uint64_t item : request.items)
+        if (item >= items->size())
+            return usage("--item: " + std::to_string(item) + " is past the manifest's last item (" +
+                         std::to_string(items->size() - 1) + ")");
     return std::nullopt;
 }
 

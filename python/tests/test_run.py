@@ -82,6 +82,11 @@ def test_a_manifest_writes_what_single_commands_write_and_a_second_run_skips_it(
     assert filecmp.cmp(tmp_path / "single.bin", tmp_path / "out" / "bounce.bin", shallow=False)
     with np.load(tmp_path / "out" / "sphere_deepsdf.npz") as data:
         assert data["pos"].shape[1] == 4 and len(data["pos"]) + len(data["neg"]) == 20000
+    # --item picks items; a number past the last is named.
+    late = run("run", str(manifest), "--item", "6")
+    assert late.returncode == 2 and "--item: 6 is past the manifest's last item (5)" in late.stderr
+    picked = json.loads(run("run", str(manifest), "--item", "4,1", "--list", "--json", check=0).stdout)
+    assert [r["index"] for r in picked["results"]] == [1, 4]
     # The second run does nothing and says so.
     again = json.loads(run("run", str(manifest), "--json", check=0).stdout)
     assert (again["done"], again["skipped"]) == (0, 6)

@@ -102,8 +102,8 @@ std::vector<Request> unusualRequests() {
     eval.tau = 0.005f;
     eval.occupancyResolution = 0;
     eval.seed = 3;
-    RunRequest run{"a b/shapes.csv", "status.jsonl", 12.5, 2, 5, std::nullopt, true, "/opt/sdfwb", "/usr/bin/python3"};
-    RunRequest one{"m.jsonl", "", 0.0, 0, 1, 12345678901ull, false, "", ""};
+    RunRequest run{"a b/shapes.csv", "status.jsonl", 12.5, 2, 5, {}, true, "/opt/sdfwb", "/usr/bin/python3"};
+    RunRequest one{"m.jsonl", "", 0.0, 0, 1, {12345678901ull, 0, 7}, false, "", ""};
     return {render, animate, sample, audit, merge, ListRequest{}, bench, params, mesh, eval, run, one};
 }
 

@@ -177,7 +177,7 @@ struct RunRequest {
     double itemTimeout = 0.0; // seconds an item may take before it is killed and marked failed; 0: no limit
     std::uint32_t rank = 0;   // this process takes the items whose 0-based index % worldSize == rank
     std::uint32_t worldSize = 1;
-    std::optional<std::uint64_t> item; // only this item (0-based index in the manifest)
+    std::vector<std::uint64_t> items; // only these items (0-based indices in the manifest); empty: all of the rank's
     bool list = false;                 // report the items and their recorded state; run nothing
     std::string executable;            // the sdfwb binary that runs sample items; empty: this process's own
     std::string python;                // the interpreter that runs recipe items; empty: $SDFWB_PYTHON, else the build's
