@@ -178,9 +178,9 @@ struct RunRequest {
     std::uint32_t rank = 0;   // this process takes the items whose 0-based index % worldSize == rank
     std::uint32_t worldSize = 1;
     std::vector<std::uint64_t> items; // only these items (0-based indices in the manifest); empty: all of the rank's
-    bool list = false;                 // report the items and their recorded state; run nothing
-    std::string executable;            // the sdfwb binary that runs sample items; empty: this process's own
-    std::string python;                // the interpreter that runs recipe items; empty: $SDFWB_PYTHON, else the build's
+    bool list = false;                // report the items and their recorded state; run nothing
+    std::string executable;           // the sdfwb binary that runs sample items; empty: this process's own
+    std::string python;               // the interpreter that runs recipe items; empty: $SDFWB_PYTHON, else the build's
     bool operator==(const RunRequest&) const = default;
 };
 
