@@ -34,6 +34,8 @@ int runMesh(const jobs::MeshRequest& request, const OutputOptions& output);
 int runEval(const jobs::EvalRequest& request, const OutputOptions& output);
 // Exit 1 when any item failed (the others still ran), 130 when cancelled.
 int runRun(const jobs::RunRequest& request, const OutputOptions& output);
+// The march debugger: every step of one pixel's ray.
+int runProbe(const jobs::ProbeRequest& request, const OutputOptions& output);
 // Error against run time for the tracer, the samplers, gradients and the audit (jobs/Benchmarks.h).
 int runBench(const jobs::BenchRequest& request, const OutputOptions& output);
 

@@ -49,6 +49,7 @@ const char* const kOverview =
     "  params   list the parameters (annotated uniforms) an SDF declares\n"
     "  mesh     extract the surface as a mesh (.ply, .obj, .stl, .glb) with sharp edges, graded against the field\n"
     "  eval     grade any mesh against the exact field: Chamfer, F-score, normal consistency, Hausdorff, IoU\n"
+    "  probe    the march debugger: every step of one pixel's ray (position, f, step, |grad f|, oversteps)\n"
     "  run      many shapes from a manifest (CSV or JSON lines: sdf, pattern or recipe, n, seed, output),\n"
     "           each item in a child process; resumable (status file), --rank/--world-size slices\n"
     "  request  run one request given as JSON (FILE or - for stdin); every command's --print-request\n"
@@ -373,6 +374,27 @@ int runAnimateCommand(const Arguments& arguments, Mode mode) {
     return finish(request, ending, mode);
 }
 
+int runProbeCommand(const Arguments& arguments, Mode mode) {
+    CLI::App app("The march debugger: replay one pixel's ray through the program that draws the frame and print every step "
+                 "(position, f, the step taken, |grad f|, over-relaxation fallbacks, oversteps) and how it ended.",
+                 "sdfwb --batch probe");
+    jobs::ProbeRequest request;
+    Ending ending;
+    FrameOptions options;
+    std::string pixel;
+    addFrameOptions(app, request.frame, options);
+    app.add_option("--pixel", pixel, "X,Y: the pixel (0,0 is the top left), in the --size frame")->required();
+    addOutputFlags(app, ending);
+    if (auto exit = parse(app, "--batch probe", arguments)) return *exit;
+    if (auto exit = finishFrameOptions(request.frame, options)) return *exit;
+    char tail;
+    if (std::sscanf(pixel.c_str(), " %d , %d %c", &request.x, &request.y, &tail) != 2) {
+        printError("--pixel: expected X,Y (whole numbers), got '" + pixel + "'");
+        return kExitUsage;
+    }
+    return finish(request, ending, mode);
+}
+
 int runListCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("List the dataset's SDFs.", "sdfwb --batch list");
     Ending ending;
@@ -612,6 +634,7 @@ std::optional<std::string> readRequestText(const std::string& source) {
 // `request --each-line`: every line of the input is a request, run in turn; each ends with the
 // line "sdfwb-end CODE" on stdout, so a parent can tell where one item's report ends.
 int runRequestLines(const std::string& source, const Ending& ending, Mode mode) {
+    if (mode == Mode::Check) return kExitOk; // the lines are read when it runs
     std::ifstream file;
     if (source != "-") {
         file.open(source, std::ios::binary);
@@ -671,6 +694,7 @@ constexpr BatchCommandEntry kBatchCommands[] = {
     {"render", runRenderCommand},   {"animate", runAnimateCommand}, {"sample", runSampleCommand}, {"merge", runMergeCommand},
     {"audit", runAuditCommand},     {"list", runListCommand},       {"bench", runBenchCommand},   {"params", runParamsCommand},
     {"request", runRequestCommand}, {"mesh", runMeshCommand},       {"eval", runEvalCommand},     {"run", runRunCommand},
+    {"probe", runProbeCommand},
 };
 
 const BatchCommandEntry* findBatchCommand(const std::string& name) {

@@ -166,6 +166,48 @@ template <class V> void fields(V& v, RunRequest& r) {
     v("python", r.python);
 }
 
+template <class V> void fields(V& v, ProbeRequest& r) {
+    fields(v, r.frame);
+    v("x", r.x);
+    v("y", r.y);
+}
+
+template <class V> void fields(V& v, ProbeStep& s) {
+    v("event", s.event);
+    v("t", s.t);
+    v("position", s.position);
+    v("f", s.f);
+    v("step", s.step);
+    v("gradient_length", s.gradientLength);
+    v("overstep", s.overstep);
+}
+
+template <class V> void fields(V& v, ProbeReport& r) {
+    v("sdf", r.sdf);
+    v("entry", r.entry);
+    v("width", r.width);
+    v("height", r.height);
+    v("x", r.x);
+    v("y", r.y);
+    v("origin", r.origin);
+    v("direction", r.direction);
+    v("outcome", r.outcome);
+    v("reason", r.reason);
+    v("steps", r.steps);
+    v("hit_t", r.hitT);
+    v("hit_residual", r.hitResidual);
+    v("footprint", r.footprint);
+    v("oversteps", r.oversteps);
+    v("fallbacks", r.fallbacks);
+    v("max_steps", r.maxSteps);
+    v("step_factor", r.stepFactor);
+    v("over_relaxation", r.overRelaxation);
+    v("events", r.events);
+    v("dropped", r.dropped);
+    v("parameters", r.parameters);
+    v("seconds", r.seconds);
+}
+
 template <class V> void fields(V& v, RunItemReport& r) {
     v("index", r.index);
     v("line", r.line);
@@ -732,7 +774,7 @@ Expected<Request> requestFromJson(const std::string& text) {
     auto kind = in->find("kind");
     if (kind == in->end() || !kind->is_string())
         return makeError(
-            "request: missing \"kind\" (render, animate, sample, audit, merge, list, bench, params, mesh, eval, run)");
+            "request: missing \"kind\" (render, animate, sample, audit, merge, list, bench, params, mesh, eval, run, probe)");
     const std::string name = kind->get<std::string>();
     auto as = [&]<class T>(T*) -> Expected<Request> {
         auto value = readObject<T>(*in, true, (name + " request").c_str());
@@ -750,8 +792,9 @@ Expected<Request> requestFromJson(const std::string& text) {
     if (name == "mesh") return as((MeshRequest*)nullptr);
     if (name == "eval") return as((EvalRequest*)nullptr);
     if (name == "run") return as((RunRequest*)nullptr);
+    if (name == "probe") return as((ProbeRequest*)nullptr);
     return makeError("request: unknown kind '" + name +
-                     "' (render, animate, sample, audit, merge, list, bench, params, mesh, eval, run)");
+                     "' (render, animate, sample, audit, merge, list, bench, params, mesh, eval, run, probe)");
 }
 
 namespace {
@@ -792,6 +835,7 @@ std::string toJson(const ParamsReport& report, int indent) { return dump(encode(
 std::string toJson(const MeshReport& report, int indent) { return dump(encode(report), indent); }
 std::string toJson(const EvalReport& report, int indent) { return dump(encode(report), indent); }
 std::string toJson(const RunReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const ProbeReport& report, int indent) { return dump(encode(report), indent); }
 std::string toJson(const RunItemReport& report, int indent) { return dump(encode(report), indent); }
 std::string toJson(const AuditJobReport& report, int indent) { return dump(encodeAudit(report), indent); }
 
@@ -843,6 +887,7 @@ template Expected<ParamsReport> reportFromJson<ParamsReport>(const std::string&)
 template Expected<MeshReport> reportFromJson<MeshReport>(const std::string&);
 template Expected<EvalReport> reportFromJson<EvalReport>(const std::string&);
 template Expected<RunReport> reportFromJson<RunReport>(const std::string&);
+template Expected<ProbeReport> reportFromJson<ProbeReport>(const std::string&);
 template Expected<RunItemReport> reportFromJson<RunItemReport>(const std::string&);
 
 } // namespace sdfwb::jobs

@@ -30,6 +30,7 @@ const char* kindName(const Request& request) {
         const char* operator()(const MeshRequest&) const { return "mesh"; }
         const char* operator()(const EvalRequest&) const { return "eval"; }
         const char* operator()(const RunRequest&) const { return "run"; }
+        const char* operator()(const ProbeRequest&) const { return "probe"; }
     };
     return std::visit(Names{}, request);
 }
@@ -166,6 +167,14 @@ std::optional<JobError> validate(const RenderRequest& request) {
     if (!renderer::canWriteImageExtension(extension))
         return usage("--output: '" + request.output + "': unsupported image type '" + extension + "' (use .png, .jpg or .exr)");
     return checkOutputFolder(request.output);
+}
+
+std::optional<JobError> validate(const ProbeRequest& request) {
+    if (auto error = checkFrame(request.frame)) return error;
+    if (request.x < 0 || request.y < 0 || request.x >= request.frame.width || request.y >= request.frame.height)
+        return usage("--pixel: " + std::to_string(request.x) + "," + std::to_string(request.y) + " lies outside the " +
+                     std::to_string(request.frame.width) + "x" + std::to_string(request.frame.height) + " frame");
+    return std::nullopt;
 }
 
 std::optional<JobError> validate(const AnimateRequest& request) {

@@ -9,6 +9,7 @@
 #include <renderer/VideoWriter.h>
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <chrono>
 #include <cmath>
@@ -102,6 +103,152 @@ JobResult<RenderReport> run(const RenderRequest& request, const ProgressSink&) {
     report.shading = renderer::shadingModeName(request.frame.shading.mode);
     report.frameMilliseconds = stats.cpuMilliseconds;
     report.glRenderer = renderer::queryGlInfo().renderer;
+    report.seconds = secondsSince(start);
+    return report;
+}
+
+namespace {
+
+const char* probeEventName(renderer::OffscreenRenderer::ProbeEvent::Kind kind) {
+    using Event = renderer::OffscreenRenderer::ProbeEvent;
+    switch (kind) {
+    case Event::Step:
+        return "step";
+    case Event::RelaxedStep:
+        return "relaxed step";
+    case Event::Fallback:
+        return "fallback";
+    case Event::Hit:
+        return "hit";
+    case Event::RefineKept:
+        return "refine";
+    case Event::RefineUndone:
+        return "refine undone";
+    case Event::LeftBox:
+        return "left the box";
+    case Event::NotFinite:
+        return "not finite";
+    case Event::OutOfSteps:
+        return "out of steps";
+    case Event::MissedBox:
+        return "missed the box";
+    }
+    return "unknown";
+}
+
+// The march's events with what follows from them: f, the step each one led to, oversteps.
+void describeMarch(ProbeReport& report, const renderer::OffscreenRenderer::ProbeTrace& trace, float stepFactor) {
+    using Event = renderer::OffscreenRenderer::ProbeEvent;
+    const auto& events = trace.events;
+    auto evaluates = [](Event::Kind kind) {
+        return kind == Event::Step || kind == Event::RelaxedStep || kind == Event::Fallback || kind == Event::Hit ||
+               kind == Event::NotFinite;
+    };
+    for (std::size_t k = 0; k < events.size(); ++k) {
+        const Event& e = events[k];
+        ProbeStep step;
+        step.event = probeEventName(e.kind);
+        step.t = e.t;
+        step.position = e.position;
+        step.f = e.d / stepFactor;
+        step.gradientLength = e.gradientLength;
+        if (e.kind == Event::Step || e.kind == Event::RelaxedStep || e.kind == Event::Fallback) {
+            for (std::size_t next = k + 1; next < events.size(); ++next)
+                if (evaluates(events[next].kind) || events[next].kind == Event::LeftBox ||
+                    events[next].kind == Event::OutOfSteps) {
+                    step.step = events[next].t - e.t;
+                    // Passed the surface: positive here, negative at the next evaluation (a hit
+                    // within the tolerance is the march ending as it should, not an overstep).
+                    step.overstep =
+                        e.d > 0.0f && evaluates(events[next].kind) && events[next].kind != Event::Hit && events[next].d < 0.0f;
+                    break;
+                }
+        }
+        if (step.overstep) ++report.oversteps;
+        if (e.kind == Event::Fallback) ++report.fallbacks;
+        report.events.push_back(step);
+    }
+}
+
+} // namespace
+
+JobResult<ProbeReport> run(const ProbeRequest& request, const ProgressSink&) {
+    const auto start = Clock::now();
+    if (auto error = validate(request)) return *error;
+    auto sdf = openSdf(request.frame.sdf, "probe");
+    if (!sdf) return sdf.error;
+    FrameRequest frame = request.frame;
+    frame.shading.statsOutput = true; // the pixel's steps and t, from the same draw
+    frame.shading.probe = true;
+    renderer::SdfRenderer tracer;
+    if (auto error = setUp(tracer, frame, *sdf, "probe")) return *error;
+    renderer::OffscreenRenderer::ProbeTrace trace;
+    {
+        renderer::OffscreenRenderer offscreen;
+        trace = offscreen.probe(tracer, frame.width, frame.height, frame.camera, frame.time, request.x, request.y);
+    }
+    tracer.releaseGl();
+    ProbeReport report;
+    report.sdf = sdf->label;
+    report.entry = sdf->prepared.signature.entry;
+    report.width = frame.width;
+    report.height = frame.height;
+    report.x = request.x;
+    report.y = request.y;
+    report.origin = frame.camera.position;
+    report.direction = glm::vec3(renderer::primaryRayDirection(frame.camera, request.x, request.y, frame.width, frame.height));
+    report.steps = int(trace.pixel.steps);
+    report.maxSteps = frame.trace.maxSteps;
+    report.stepFactor = frame.trace.stepFactor;
+    report.overRelaxation = frame.trace.overRelaxation;
+    report.dropped = trace.dropped;
+    report.parameters = shaders::valuesOf(sdf->parameters);
+    describeMarch(report, trace, frame.trace.stepFactor);
+    const float pixelAngle = 2.0f * std::tan(glm::radians(frame.camera.fovYDegrees) * 0.5f) / float(frame.height);
+    const float lastT = report.events.empty() ? 0.0f : report.events.back().t;
+    char text[320];
+    using Stats = renderer::OffscreenRenderer::PixelStats;
+    if (trace.pixel.hit()) {
+        report.outcome = "hit";
+        report.hitT = trace.pixel.t;
+        report.hitResidual = trace.pixel.residual;
+        report.footprint = frame.trace.epsilonScale * pixelAngle * trace.pixel.t;
+        std::snprintf(text, sizeof text,
+                      "hit at t = %.6g after %d steps: |f| = %.3g at the refined hit (the tolerance there is %.3g)",
+                      double(trace.pixel.t), report.steps, double(trace.pixel.residual), double(report.footprint));
+    } else {
+        report.footprint = frame.trace.epsilonScale * pixelAngle * lastT;
+        float closest = INFINITY, closestT = 0.0f;
+        for (const ProbeStep& e : report.events)
+            if (std::isfinite(e.f) && std::abs(e.f) < closest && e.event != "left the box" && e.event != "out of steps") {
+                closest = std::abs(e.f);
+                closestT = e.t;
+            }
+        if (!report.events.empty() && report.events.back().event == "missed the box") {
+            report.outcome = "missed the box";
+            std::snprintf(text, sizeof text, "the ray does not enter the box [-%g, %g]^3 that bounds the shape: nothing to march",
+                          double(1.0f + frame.trace.boxMargin), double(1.0f + frame.trace.boxMargin));
+        } else if (trace.pixel.t == Stats::kLeftBox) {
+            report.outcome = "left the box";
+            std::snprintf(
+                text, sizeof text,
+                "the ray left the box after %d steps without |f| falling below the tolerance (nearest: |f| = %.3g at t = %.4g)",
+                report.steps, double(closest), double(closestT));
+        } else if (trace.pixel.t == Stats::kOutOfSteps) {
+            report.outcome = "out of steps";
+            const float lastF = report.events.size() > 1 ? report.events[report.events.size() - 2].f : 0.0f;
+            std::snprintf(text, sizeof text,
+                          "the step budget of %d ran out at t = %.4g with |f| = %.3g still above the tolerance %.3g (raise "
+                          "--max-steps; small steps that do not shrink mean a flat or grazing field)",
+                          report.maxSteps, double(lastT), double(std::abs(lastF)), double(report.footprint));
+        } else {
+            report.outcome = "not finite";
+            const glm::vec3 p = report.events.empty() ? glm::vec3(0.0f) : report.events.back().position;
+            std::snprintf(text, sizeof text, "f was NaN or Inf at t = %.4g, position (%.4g, %.4g, %.4g)", double(lastT),
+                          double(p.x), double(p.y), double(p.z));
+        }
+    }
+    report.reason = text;
     report.seconds = secondsSince(start);
     return report;
 }

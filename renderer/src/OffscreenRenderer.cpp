@@ -2,6 +2,7 @@
 
 #include "GlObjects.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace sdfwb::renderer {
@@ -89,6 +90,49 @@ std::vector<OffscreenRenderer::PixelStats> OffscreenRenderer::renderStats(SdfRen
             out[std::size_t(y) * std::size_t(width) + std::size_t(x)] = {p[0], p[1], p[2], p[3]};
         }
     return out;
+}
+
+// The probe's storage binding point, tracer/probe.glsl's SDFWB_BINDING_PROBE.
+constexpr GLuint kBindingProbe = 4;
+
+OffscreenRenderer::ProbeTrace OffscreenRenderer::probe(SdfRenderer& renderer, int width, int height, const Camera& camera,
+                                                       float time, int x, int y, int capacity) {
+    ProbeTrace trace;
+    m_impl->ensureFloatSize(width, height);
+    GLuint id = 0;
+    glGenBuffers(1, &id);
+    GlBuffer buffer(id);
+    const std::size_t bytes = 16 + std::size_t(capacity) * 32;
+    std::vector<std::uint8_t> zeros(bytes, 0);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(bytes), zeros.data(), GL_DYNAMIC_READ);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingProbe, id);
+    glBindFramebuffer(GL_FRAMEBUFFER, m_impl->floatFramebuffer.id());
+    // One fragment: the pixel's, in GL's bottom-up rows.
+    const int row = height - 1 - y;
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x, row, 1, 1);
+    renderer.render(width, height, camera, time, true);
+    glDisable(GL_SCISSOR_TEST);
+    float pixel[4] = {0, 0, 0, 0};
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(x, row, 1, 1, GL_RGBA, GL_FLOAT, pixel);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    trace.pixel = {pixel[0], pixel[1], pixel[2], pixel[3]};
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<float> rows(bytes / 4);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(bytes), rows.data());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingProbe, 0);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    std::uint32_t count = 0;
+    std::memcpy(&count, rows.data(), sizeof count);
+    const std::uint32_t kept = std::min<std::uint32_t>(count, std::uint32_t(capacity));
+    trace.dropped = count - kept;
+    for (std::uint32_t k = 0; k < kept; ++k) {
+        const float* r = rows.data() + 4 + std::size_t(k) * 8;
+        trace.events.push_back({ProbeEvent::Kind(int(r[0])), r[1], r[2], r[3], {r[4], r[5], r[6]}});
+    }
+    return trace;
 }
 
 } // namespace sdfwb::renderer

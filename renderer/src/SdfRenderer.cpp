@@ -159,6 +159,7 @@ shaders::TracerFeatures tracerFeatures(const ShadingSettings& shading, const Tra
     features.ambientOcclusion = shading.ambientOcclusion;
     features.overRelaxation = trace.overRelaxation > 1.0f;
     features.statsOutput = shading.statsOutput;
+    features.probe = shading.probe;
     features.markers = !shading.markers.empty();
     features.cuttingPlane = plane.enabled;
     features.planeClipsSurface = plane.enabled && plane.clipSurface;

@@ -59,6 +59,10 @@ Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatu
         defines["SDFWB_MARKERS"] = "1";
         files.insert(files.end() - 1, "tracer/markers.glsl");
     }
+    if (features.probe) {
+        defines["SDFWB_PROBE"] = "1";
+        files.insert(files.begin(), "tracer/probe.glsl");
+    }
     std::vector<ShaderPiece> pieces;
     for (const std::string& file : files) {
         auto piece = builtinPiece(file);

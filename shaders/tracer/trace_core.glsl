@@ -3,6 +3,11 @@
 // a shading piece, optional feature pieces (ao.glsl, ...) and trace_main.frag follow.
 // Feature defines: SDFWB_ANIMATED / SDFWB_USES_TIME (time), SDFWB_OVERRELAX (relaxed steps).
 
+// The march debugger's hooks (probe.glsl defines them; without SDFWB_PROBE they are nothing).
+#ifndef SDFWB_PROBE
+#define SDFWB_RECORD(kind, t, position, d)
+#endif
+
 uniform vec2 sdfwb_resolution;        // framebuffer size in pixels
 uniform vec3 sdfwb_cameraPosition;
 uniform vec3 sdfwb_cameraRight;       // unit camera basis
@@ -67,7 +72,10 @@ sdfwb_Hit sdfwb_traceRay(vec3 origin, vec3 direction) {
     vec2 span = sdfwb_intersectBox(origin, direction, 1.0 + sdfwb_boxMargin);
     float tStart = max(span.x, sdfwb_nearPlane);
     float tEnd = min(span.y, sdfwb_farPlane);
-    if (tStart > tEnd) return hit;
+    if (tStart > tEnd) {
+        SDFWB_RECORD(sdfwb_kProbeMissedBox, tStart, origin + tStart * direction, 0.0);
+        return hit;
+    }
     // March from the box entry point: far from the origin (a camera at 1e4) the ray parameter t
     // is ~1e4 and float32 cannot add steps below ~1e-3 to it; s counts from the entry instead.
     vec3 entry = origin + tStart * direction;
@@ -85,27 +93,50 @@ sdfwb_Hit sdfwb_traceRay(vec3 origin, vec3 direction) {
     for (int step = 0; step < sdfwb_maxSteps; ++step) {
         hit.steps = step + 1;
         float d = sdfwb_sceneMap(entry + s * direction) * sdfwb_stepFactor;
-        if (isnan(d) || isinf(d)) { hit.status = sdfwb_kRayNotFinite; break; }
+        if (isnan(d) || isinf(d)) {
+            SDFWB_RECORD(sdfwb_kProbeNotFinite, tStart + s, entry + s * direction, d);
+            hit.status = sdfwb_kRayNotFinite;
+            break;
+        }
         float radius = abs(d);
 #ifdef SDFWB_OVERRELAX
         // Fall back when the spheres do not overlap, or when the step crossed the surface (d < 0).
         if (omega > 1.0 && (radius + previousRadius < stepLength || d < 0.0)) {
+            SDFWB_RECORD(sdfwb_kProbeFallback, tStart + s, entry + s * direction, d);
             s -= stepLength - stepLength / omega;  // undo the relaxed part of the last step
             omega = 1.0;
             previousRadius = 0.0;
             stepLength = 0.0;
             continue;
         }
-        if (radius < footprint * (tStart + s)) { hit.found = true; break; }
+        if (radius < footprint * (tStart + s)) {
+            SDFWB_RECORD(sdfwb_kProbeHit, tStart + s, entry + s * direction, d);
+            hit.found = true;
+            break;
+        }
+        SDFWB_RECORD(omega > 1.0 ? sdfwb_kProbeRelaxedStep : sdfwb_kProbeStep, tStart + s, entry + s * direction, d);
         stepLength = d * omega;
         previousRadius = radius;
         s += stepLength;
 #else
-        if (radius < footprint * (tStart + s)) { hit.found = true; break; }
+        if (radius < footprint * (tStart + s)) {
+            SDFWB_RECORD(sdfwb_kProbeHit, tStart + s, entry + s * direction, d);
+            hit.found = true;
+            break;
+        }
+        SDFWB_RECORD(sdfwb_kProbeStep, tStart + s, entry + s * direction, d);
         s += d;
 #endif
-        if (s > sEnd) { hit.status = sdfwb_kRayLeftBox; break; }
+        if (s > sEnd) {
+            SDFWB_RECORD(sdfwb_kProbeLeftBox, tStart + s, entry + s * direction, 0.0);
+            hit.status = sdfwb_kRayLeftBox;
+            break;
+        }
     }
+#ifdef SDFWB_PROBE
+    if (hit.status == sdfwb_kRayOutOfSteps && !hit.found)
+        SDFWB_RECORD(sdfwb_kProbeOutOfSteps, tStart + s, entry + s * direction, 0.0);
+#endif
     if (hit.found) {
         hit.status = sdfwb_kRayHit;
         // Refine: up to two more plain steps shrink |f| well below the footprint for exact
@@ -114,7 +145,11 @@ sdfwb_Hit sdfwb_traceRay(vec3 origin, vec3 direction) {
         float d = sdfwb_sceneMap(entry + s * direction) * sdfwb_stepFactor;
         for (int k = 0; k < 2; ++k) {
             float next = sdfwb_sceneMap(entry + (s + d) * direction) * sdfwb_stepFactor;
-            if (!(abs(next) < abs(d))) break;
+            if (!(abs(next) < abs(d))) {
+                SDFWB_RECORD(sdfwb_kProbeRefineUndone, tStart + s + d, entry + (s + d) * direction, next);
+                break;
+            }
+            SDFWB_RECORD(sdfwb_kProbeRefineKept, tStart + s + d, entry + (s + d) * direction, next);
             s += d;
             d = next;
         }

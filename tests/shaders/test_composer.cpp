@@ -129,6 +129,18 @@ TEST(BuiltinShaders, EveryEmbeddedFileCompilesWithGlslangInItsStage) {
             covered.insert(file);
         covered.insert(std::string("tracer/shading_") + mode + ".glsl");
     }
+    // The march debugger's recorder, with plain and over-relaxed marching and the stats output.
+    for (bool relaxed : {false, true}) {
+        TracerFeatures features;
+        features.probe = true;
+        features.statsOutput = true;
+        features.overRelaxation = relaxed;
+        auto composed = composeTracer(sdf, features);
+        ASSERT_TRUE(composed.hasValue());
+        auto diagnostics = checkWithGlslang(*composed);
+        EXPECT_FALSE(hasErrors(diagnostics)) << "probe: " << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
+        covered.insert("tracer/probe.glsl");
+    }
     for (const std::string& path : builtinShaderPaths())
         if (path.rfind("samplers/", 0) == 0 || path.rfind("analysis/", 0) == 0)
             check(Stage::Compute, {"sampling/bindings.glsl", "sampling/common.glsl", path, "sampling/sample.comp"});

@@ -107,6 +107,8 @@ int runRequest(const jobs::Request& request, const OutputOptions& output) {
                 return runEval(r, output);
             else if constexpr (std::is_same_v<T, jobs::RunRequest>)
                 return runRun(r, output);
+            else if constexpr (std::is_same_v<T, jobs::ProbeRequest>)
+                return runProbe(r, output);
             else
                 return runBench(r, output);
         },

@@ -28,6 +28,7 @@ std::string toJson(const ParamsReport& report, int indent = 2);
 std::string toJson(const MeshReport& report, int indent = 2);
 std::string toJson(const EvalReport& report, int indent = 2);
 std::string toJson(const RunReport& report, int indent = 2);
+std::string toJson(const ProbeReport& report, int indent = 2);
 // One item's outcome; with indent -1 the status file's line.
 std::string toJson(const RunItemReport& report, int indent = 2);
 

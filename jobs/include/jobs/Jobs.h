@@ -72,8 +72,11 @@ std::optional<JobError> validate(const MeshRequest& request);
 std::optional<JobError> validate(const EvalRequest& request);
 // Also reads the manifest: a malformed line is a usage error naming it.
 std::optional<JobError> validate(const RunRequest& request);
+std::optional<JobError> validate(const ProbeRequest& request);
 
 JobResult<RenderReport> run(const RenderRequest& request, const ProgressSink& progress);
+// Replays one pixel's march through the program that draws the frame (the march debugger).
+JobResult<ProbeReport> run(const ProbeRequest& request, const ProgressSink& progress);
 JobResult<AnimateReport> run(const AnimateRequest& request, const ProgressSink& progress);
 JobResult<SampleReport> run(const SampleRequest& request, const ProgressSink& progress);
 JobResult<AuditJobReport> run(const AuditRequest& request, const ProgressSink& progress);

@@ -167,6 +167,13 @@ struct EvalRequest {
     bool operator==(const EvalRequest&) const = default;
 };
 
+// The march debugger: one pixel's ray, every step of the march that draws it.
+struct ProbeRequest {
+    FrameRequest frame;
+    int x = 0, y = 0; // the pixel, top row 0
+    bool operator==(const ProbeRequest&) const = default;
+};
+
 // Many shapes in one run: every item of a manifest (CSV or JSON lines; jobs/Manifest.h), each in a
 // child process of its own, so a broken shader or a hang fails that item alone. A status file
 // (JSON lines, appended as items end) records each item's outcome; a second run skips the items
@@ -185,7 +192,7 @@ struct RunRequest {
 };
 
 using Request = std::variant<RenderRequest, AnimateRequest, SampleRequest, AuditRequest, MergeRequest, ListRequest, BenchRequest,
-                             ParamsRequest, MeshRequest, EvalRequest, RunRequest>;
+                             ParamsRequest, MeshRequest, EvalRequest, RunRequest, ProbeRequest>;
 
 // "render", "animate", "sample", "audit", "merge", "list", "bench", "params": the CLI command of each kind.
 const char* kindName(const Request& request);
@@ -354,6 +361,42 @@ struct EvalReport {
     std::vector<std::string> warnings;
     double seconds = 0.0;
     bool operator==(const EvalReport&) const = default;
+};
+
+// One event of a probed ray's march (renderer::OffscreenRenderer::ProbeEvent, with what follows
+// from it).
+struct ProbeStep {
+    std::string
+        event; // step, relaxed step, fallback, hit, refine, refine undone, left the box, not finite, out of steps, missed the box
+    float t = 0.0f; // distance along the ray
+    glm::vec3 position{0.0f};
+    float f = 0.0f;              // the field there (of the traced scene: clipped by the plane when it cuts)
+    float step = 0.0f;           // how far the march moved from here (negative: a fallback's way back)
+    float gradientLength = 0.0f; // |grad f| estimate
+    // The step passed the surface: f changes sign before the next evaluation, so it was longer than
+    // the true distance (an over-relaxed step, or a field steeper than the step factor assumes).
+    bool overstep = false;
+    bool operator==(const ProbeStep&) const = default;
+};
+
+struct ProbeReport {
+    std::string sdf, entry;
+    int width = 0, height = 0, x = 0, y = 0;
+    glm::vec3 origin{0.0f}, direction{0.0f};
+    std::string outcome; // hit, left the box, out of steps, not finite, missed the box
+    std::string reason;  // the outcome in a sentence
+    int steps = 0;       // the tracer's step count for the pixel (what the steps shading shows)
+    std::optional<float> hitT;
+    std::optional<float> hitResidual; // |f| at the hit, after refining
+    float footprint = 0.0f;           // the hit tolerance at the hit distance (or at the last step)
+    std::uint64_t oversteps = 0, fallbacks = 0;
+    int maxSteps = 0;
+    float stepFactor = 1.0f, overRelaxation = 1.0f;
+    std::vector<ProbeStep> events;
+    std::uint64_t dropped = 0; // events past the recorder's capacity
+    std::vector<shaders::ParameterValue> parameters;
+    double seconds = 0.0;
+    bool operator==(const ProbeReport&) const = default;
 };
 
 // One manifest item's outcome, as the status file records it and the run reports it.

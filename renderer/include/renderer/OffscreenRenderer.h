@@ -6,6 +6,9 @@
 #include <renderer/Image.h>
 #include <renderer/SdfRenderer.h>
 
+#include <glm/vec3.hpp>
+
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -35,6 +38,37 @@ public:
     };
     std::vector<PixelStats> renderStats(SdfRenderer& renderer, int width, int height, const Camera& camera, float time,
                                         FrameStats* stats = nullptr);
+
+    // One event of a ray's march, as the tracer's SDFWB_RECORD hooks write it (tracer/probe.glsl).
+    struct ProbeEvent {
+        enum Kind : int {
+            Step = 0,         // a plain step of d
+            RelaxedStep = 1,  // an over-relaxed step of omega * d
+            Fallback = 2,     // the relaxed step went too far: back by its relaxed part, then plain steps
+            Hit = 3,          // |d| fell below the pixel footprint
+            RefineKept = 4,   // a refining step after the hit that shrank |f|
+            RefineUndone = 5, // a refining step that would have grown |f|: not taken
+            LeftBox = 6,      // the ray passed the far side of the box (or the far plane)
+            NotFinite = 7,    // f was NaN or Inf
+            OutOfSteps = 8,   // the step budget ran out
+            MissedBox = 9,    // the ray never entered the box
+        };
+        Kind kind;
+        float t;              // distance along the ray
+        float d;              // the value marched: f * step factor
+        float gradientLength; // |grad f| (4-tap, the shading normal's step at t)
+        glm::vec3 position;
+    };
+    struct ProbeTrace {
+        std::vector<ProbeEvent> events;
+        std::uint32_t dropped = 0; // events past the capacity
+        PixelStats pixel;          // what the frame drew there (the shading must have statsOutput on)
+    };
+    // Replays the march of pixel (x, y) (top row 0) of a width x height frame through the very
+    // program that draws it: the renderer's shading must have probe and statsOutput on. Records up
+    // to `capacity` events.
+    ProbeTrace probe(SdfRenderer& renderer, int width, int height, const Camera& camera, float time, int x, int y,
+                     int capacity = 65536);
 
 private:
     struct Impl;

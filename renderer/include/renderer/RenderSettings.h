@@ -32,6 +32,7 @@ struct ShadingSettings {
     float curvatureScale = 5.0f;                    // |mean curvature| drawn full red
     std::string matcap = "clay";                    // name in resources/matcaps or a path to an image
     bool statsOutput = false;                       // write (steps, t, |f(hit)|) per pixel: see OffscreenRenderer::renderStats
+    bool probe = false;                             // record the march of one pixel: see OffscreenRenderer::probe
     std::vector<glm::vec3> markers;                 // points ringed over the picture (at most 16; "show where")
     bool operator==(const ShadingSettings&) const = default;
 };

@@ -27,6 +27,7 @@ struct TracerFeatures {
     bool planeClipsSurface = false; // cut the shape away on the side the plane's normal points to
     bool planeLipschitzOverlay = false;
     bool markers = false; // ring marked points (markers.glsl)
+    bool probe = false;   // record one ray's march into a storage buffer (probe.glsl, the march debugger)
 };
 
 Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatures& features);
