@@ -244,7 +244,7 @@ std::optional<int> parse(CLI::App& app, const std::string& context, Arguments ar
 
 // Options shared by render and animate; `finish` validates the strings into `job`.
 struct FrameOptions {
-    std::string size = "1280x720", shading = "normals", camera, target, plane;
+    std::string size = "1280x720", shading = "normals", camera, target, plane, background;
     bool planeNoClip = false;
 };
 
@@ -258,6 +258,10 @@ void addFrameOptions(CLI::App& app, jobs::FrameRequest& job, FrameOptions& optio
     app.add_flag("--ao", job.shading.ambientOcclusion, "ambient occlusion");
     app.add_option("--matcap", job.shading.matcap, "matcap for --shading matcap: clay, chrome, jade, wax, or an image path")
         ->capture_default_str();
+    app.add_option("--background", options.background, "background colour R,G,B (values above 1 reach .exr files)");
+    app.add_option("--background-image", job.shading.backgroundImage,
+                   "an image behind the shape (cover-fit), instead of the colour");
+    app.add_flag("--overlay", job.overlay, "the SDF's name, author and license (its metadata block) in the lower-left corner");
     app.add_option("--camera", options.camera, "camera position X,Y,Z");
     app.add_option("--target", options.target, "point the camera looks at X,Y,Z (default 0,0,0)");
     app.add_option("--fov", job.camera.fovYDegrees, "vertical field of view in degrees")
@@ -315,6 +319,14 @@ std::optional<int> finishFrameOptions(jobs::FrameRequest& job, const FrameOption
         job.plane.normal = {nx, ny, nz};
         job.plane.offset = offset;
         job.plane.clipSurface = !options.planeNoClip;
+    }
+    if (!options.background.empty()) {
+        auto colour = parseVec3(options.background);
+        if (!colour || colour->r < 0.0f || colour->g < 0.0f || colour->b < 0.0f) {
+            printError("--background: expected R,G,B with finite values >= 0, got '" + options.background + "'");
+            return kExitUsage;
+        }
+        job.shading.background = *colour;
     }
     if (!options.target.empty()) {
         auto point = parseVec3(options.target);

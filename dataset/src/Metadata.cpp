@@ -21,6 +21,8 @@ std::string lower(std::string s) {
 
 } // namespace
 
+std::string overlayText(const Metadata& metadata) { return metadata.name + "\n" + metadata.author + " - " + metadata.license; }
+
 const char* declaredTypeName(DeclaredType type) {
     switch (type) {
     case DeclaredType::Exact:

@@ -34,6 +34,7 @@ template <class V> void fields(V& v, renderer::ShadingSettings& s) {
     v("light_direction", s.lightDirection);
     v("curvature_scale", s.curvatureScale);
     v("matcap", s.matcap);
+    v("background_image", s.backgroundImage);
     v("markers", s.markers);
 }
 
@@ -73,6 +74,7 @@ template <class V> void fields(V& v, FrameRequest& f) {
     v("trace", f.trace);
     v("camera", f.camera);
     v("plane", f.plane);
+    v("overlay", f.overlay);
 }
 
 template <class V> void fields(V& v, RenderRequest& r) {

@@ -134,6 +134,10 @@ std::optional<JobError> checkFrame(const FrameRequest& frame) {
                     frame.camera.target.y, frame.camera.target.z, frame.plane.offset})
         if (!std::isfinite(c)) return usage("--camera/--target/--plane: expected finite numbers");
     if (frame.shading.markers.size() > 16) return usage("shading.markers: at most 16 points");
+    for (float c : {frame.shading.background.r, frame.shading.background.g, frame.shading.background.b})
+        if (!std::isfinite(c) || c < 0.0f) return usage("--background: expected finite values >= 0");
+    if (!frame.shading.backgroundImage.empty() && !fs::is_regular_file(frame.shading.backgroundImage))
+        return usage("--background-image: '" + frame.shading.backgroundImage + "': no such file");
     return checkSdf(frame.sdf);
 }
 

@@ -2,6 +2,8 @@
 #include <jobs/Jobs.h>
 
 #include <core/Log.h>
+#include <core/TextFile.h>
+#include <dataset/Metadata.h>
 #include <renderer/GlInfo.h>
 #include <renderer/ImageIO.h>
 #include <renderer/OffscreenRenderer.h>
@@ -61,6 +63,25 @@ std::vector<shaders::ParameterSetting> interpolateParameters(const std::vector<s
     return out;
 }
 
+// The overlay's text: the metadata block's name, author and license (the file's name without one).
+std::string overlayText(const FrameRequest& frame, const OpenedSdf& sdf, std::vector<std::string>& warnings) {
+    Expected<std::string> text = frame.sdf.source.empty() ? readTextFile(sdf.label) : Expected<std::string>(frame.sdf.source);
+    if (text)
+        if (auto metadata = dataset::parseMetadata(*text, sdf.label)) return dataset::overlayText(*metadata);
+    warnings.push_back("--overlay: " + sdf.label + " has no metadata block; the overlay shows its file name");
+    log::warning("render", warnings.back());
+    const std::size_t slash = sdf.label.find_last_of('/');
+    return slash == std::string::npos ? sdf.label : sdf.label.substr(slash + 1);
+}
+
+// Draws the overlay onto a frame (a float or an 8-bit image); a missing font is a warning.
+template <class Frame> void drawOverlay(Frame& image, const std::string& text, std::vector<std::string>& warnings) {
+    if (auto drawn = renderer::drawLabel(image, text); !drawn) {
+        warnings.push_back(drawn.error().message);
+        log::warning("render", drawn.error().message);
+    }
+}
+
 // The tracer set up with the frame's settings and SDF; errors carry the driver's diagnostics.
 std::optional<JobError> setUp(renderer::SdfRenderer& tracer, const FrameRequest& frame, const OpenedSdf& sdf,
                               const std::string& what) {
@@ -86,15 +107,30 @@ JobResult<RenderReport> run(const RenderRequest& request, const ProgressSink&) {
     renderer::SdfRenderer tracer;
     if (auto error = setUp(tracer, request.frame, *sdf, "render")) return *error;
     renderer::FrameStats stats;
-    renderer::Image image;
-    {
-        renderer::OffscreenRenderer offscreen;
-        image =
-            offscreen.render(tracer, request.frame.width, request.frame.height, request.frame.camera, request.frame.time, &stats);
+    const FrameRequest& frame = request.frame;
+    const std::string label = frame.overlay ? overlayText(frame, *sdf, report.warnings) : std::string();
+    // High-dynamic-range files get the float frame (highlights and backgrounds above 1 kept).
+    Expected<void> written;
+    if (renderer::isHighDynamicRange(request.output)) {
+        renderer::FloatImage image;
+        {
+            renderer::OffscreenRenderer offscreen;
+            image = offscreen.renderFloat(tracer, frame.width, frame.height, frame.camera, frame.time, &stats);
+        }
+        tracer.releaseGl();
+        if (!label.empty()) drawOverlay(image, label, report.warnings);
+        written = renderer::writeImage(request.output, image);
+    } else {
+        renderer::Image image;
+        {
+            renderer::OffscreenRenderer offscreen;
+            image = offscreen.render(tracer, frame.width, frame.height, frame.camera, frame.time, &stats);
+        }
+        tracer.releaseGl();
+        if (!label.empty()) drawOverlay(image, label, report.warnings);
+        written = renderer::writeImage(request.output, image);
     }
-    tracer.releaseGl();
-    if (auto written = renderer::writeImage(request.output, image); !written)
-        return JobError{Failure::Work, written.error().message, {}};
+    if (!written) return JobError{Failure::Work, written.error().message, {}};
     report.output = request.output;
     report.sdf = sdf->label;
     report.entry = sdf->prepared.signature.entry;
@@ -281,8 +317,10 @@ JobResult<AnimateReport> run(const AnimateRequest& request, const ProgressSink& 
     if (!writer) return JobError{Failure::Work, writer.error().message, {}};
 
     const int frames = std::max(1, int(std::lround(double(request.seconds) * request.framesPerSecond)));
+    const std::string label = frame.overlay ? overlayText(frame, *sdf, report.warnings) : std::string();
     {
         renderer::OffscreenRenderer offscreen;
+        std::vector<std::string> ignoredWarnings; // the first frame's are reported
         for (int i = 0; i < frames; ++i) {
             if (progress.isCancelled()) break;
             renderer::Camera camera = frame.camera;
@@ -293,6 +331,7 @@ JobResult<AnimateReport> run(const AnimateRequest& request, const ProgressSink& 
                     interpolateParameters(sdf->parameters, end->settings, frames > 1 ? float(i) / float(frames - 1) : 0.0f));
             renderer::FrameStats stats;
             renderer::Image image = offscreen.render(tracer, frame.width, frame.height, camera, time, &stats);
+            if (!label.empty()) drawOverlay(image, label, i == 0 ? report.warnings : ignoredWarnings);
             report.renderSeconds += stats.cpuMilliseconds / 1000.0;
             if (auto ok = (*writer)->addFrame(image); !ok) return JobError{Failure::Work, ok.error().message, {}};
             progress(std::uint64_t(i + 1), std::uint64_t(frames));

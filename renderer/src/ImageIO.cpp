@@ -3,8 +3,13 @@
 #include <core/TextFile.h>
 
 #include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstdio>
 
 namespace sdfwb::renderer {
@@ -18,8 +23,15 @@ bool canWriteImageExtension(const std::string& extension) {
     return output != nullptr;
 }
 
-Expected<void> writeImage(const fs::path& path, const Image& image) {
-    if (image.width <= 0 || image.height <= 0 || image.rgba.size() != std::size_t(image.width) * std::size_t(image.height) * 4)
+namespace {
+
+// Encodes `channels` of each RGBA pixel (`pixels` holds 4 per pixel, of type `source`) into memory
+// with the writer the extension picks, then writes the bytes atomically (temporary file, every
+// write checked, fsync, rename): the image libraries do not all report a failed write (libpng
+// ignores a full disk), and a half-written file must never replace a good one.
+Expected<void> encodeAndWrite(const fs::path& path, int width, int height, OIIO::TypeDesc source, const void* pixels,
+                              std::size_t pixelCount) {
+    if (width <= 0 || height <= 0 || pixelCount != std::size_t(width) * std::size_t(height))
         return makeError(path.string() + ": refusing to write an empty or inconsistent image");
     auto output = OIIO::ImageOutput::create(path.string());
     if (!output)
@@ -28,27 +40,102 @@ Expected<void> writeImage(const fs::path& path, const Image& image) {
     if (!output->supports("ioproxy"))
         return makeError(path.string() + ": the image writer for '" + path.extension().string() +
                          "' cannot encode to memory (use .png, .jpg or .exr)");
-    bool exr = path.extension() == ".exr";
-    // EXR keeps alpha and stores half floats; PNG and JPEG get RGB.
-    int channels = exr ? 4 : 3;
-    OIIO::ImageSpec spec(image.width, image.height, channels, exr ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::UINT8);
-    // Encode into memory, then write the bytes atomically (temporary file, every write checked,
-    // fsync, rename): the image libraries do not all report a failed write (libpng ignores a
-    // full disk), and a half-written file must never replace a good one.
+    // EXR keeps alpha and stores half floats, Radiance .hdr RGB floats; PNG and JPEG get 8-bit RGB.
+    const bool exr = path.extension() == ".exr";
+    const int channels = exr ? 4 : 3;
+    const OIIO::TypeDesc stored = exr                        ? OIIO::TypeDesc::HALF
+                                  : isHighDynamicRange(path) ? OIIO::TypeDesc::FLOAT
+                                                             : OIIO::TypeDesc::UINT8;
+    OIIO::ImageSpec spec(width, height, channels, stored);
     std::vector<unsigned char> encoded;
     OIIO::Filesystem::IOVecOutput memory(encoded);
     if (!output->set_ioproxy(&memory) || !output->open(path.string(), spec))
         return makeError(path.string() + ": cannot encode: " + output->geterror());
-    std::vector<std::uint8_t> pixels(std::size_t(image.width) * std::size_t(image.height) * std::size_t(channels));
-    for (std::size_t i = 0, n = std::size_t(image.width) * std::size_t(image.height); i < n; ++i)
-        for (int c = 0; c < channels; ++c)
-            pixels[i * std::size_t(channels) + std::size_t(c)] = image.rgba[i * 4 + std::size_t(c)];
-    if (!(output->write_image(OIIO::TypeDesc::UINT8, pixels.data()) && output->close()))
+    // The first `channels` of every 4: strides let the writer skip alpha without a copy.
+    const OIIO::stride_t pixelStride = OIIO::stride_t(4 * source.size());
+    if (!(output->write_image(source, pixels, pixelStride) && output->close()))
         return makeError(path.string() + ": cannot encode: " + output->geterror());
     output.reset();
     if (auto ok = writeFileAtomically(path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size())); !ok)
         return ok.error();
     return {};
+}
+
+} // namespace
+
+Expected<void> writeImage(const fs::path& path, const Image& image) {
+    if (image.rgba.size() != std::size_t(image.width) * std::size_t(image.height) * 4)
+        return makeError(path.string() + ": refusing to write an empty or inconsistent image");
+    return encodeAndWrite(path, image.width, image.height, OIIO::TypeDesc::UINT8, image.rgba.data(), image.rgba.size() / 4);
+}
+
+Expected<void> writeImage(const fs::path& path, const FloatImage& image) {
+    if (image.rgba.size() != std::size_t(image.width) * std::size_t(image.height) * 4)
+        return makeError(path.string() + ": refusing to write an empty or inconsistent image");
+    if (isHighDynamicRange(path))
+        return encodeAndWrite(path, image.width, image.height, OIIO::TypeDesc::FLOAT, image.rgba.data(), image.rgba.size() / 4);
+    // 8-bit formats: what the screen would show (clamped), rounded.
+    Image quantised{image.width, image.height, std::vector<std::uint8_t>(image.rgba.size())};
+    for (std::size_t i = 0; i < image.rgba.size(); ++i)
+        quantised.rgba[i] = std::uint8_t(std::lround(std::clamp(image.rgba[i], 0.0f, 1.0f) * 255.0f));
+    return writeImage(path, quantised);
+}
+
+bool isHighDynamicRange(const fs::path& path) {
+    std::string extension = path.extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return extension == ".exr" || extension == ".hdr";
+}
+
+namespace {
+
+std::string labelFont() {
+    for (const char* path : {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "/usr/share/fonts/TTF/DejaVuSans.ttf",
+                             "/usr/share/fonts/dejavu/DejaVuSans.ttf"})
+        if (std::filesystem::is_regular_file(path)) return path;
+    return {};
+}
+
+// The label over `buffer`, whose pixels stay where they are (a wrapped caller's array).
+Expected<void> drawLabelInto(OIIO::ImageBuf& buffer, const std::string& text) {
+    const std::string font = labelFont();
+    if (font.empty()) return makeError("label: no DejaVuSans.ttf found (install fonts-dejavu-core)");
+    const int height = buffer.spec().height, width = buffer.spec().width;
+    const int size = std::clamp(height / 40, 9, 48), lineHeight = size * 5 / 4, margin = size / 2;
+    std::vector<std::string> lines;
+    for (std::size_t start = 0; start <= text.size();) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        if (end > start) lines.push_back(text.substr(start, end - start));
+        start = end + 1;
+    }
+    if (lines.empty()) return {};
+    int textWidth = 0;
+    for (const std::string& line : lines)
+        textWidth = std::max(textWidth, OIIO::ImageBufAlgo::text_size(line, size, font).width());
+    const int boxHeight = int(lines.size()) * lineHeight + margin;
+    const OIIO::ROI box(margin, std::min(width, 3 * margin + textWidth), std::max(0, height - margin - boxHeight),
+                        height - margin);
+    const float dim[4] = {0.45f, 0.45f, 0.45f, 1.0f};
+    if (!OIIO::ImageBufAlgo::mul(buffer, buffer, dim, box)) return makeError("label: " + buffer.geterror());
+    const float white[4] = {0.92f, 0.92f, 0.92f, 1.0f};
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const int baseline = box.ybegin + margin / 2 + int(i + 1) * lineHeight - (lineHeight - size);
+        if (!OIIO::ImageBufAlgo::render_text(buffer, 2 * margin, baseline, lines[i], size, font, white))
+            return makeError("label: " + buffer.geterror());
+    }
+    return {};
+}
+
+} // namespace
+
+Expected<void> drawLabel(Image& image, const std::string& text) {
+    OIIO::ImageBuf buffer(OIIO::ImageSpec(image.width, image.height, 4, OIIO::TypeDesc::UINT8), image.rgba.data());
+    return drawLabelInto(buffer, text);
+}
+
+Expected<void> drawLabel(FloatImage& image, const std::string& text) {
+    OIIO::ImageBuf buffer(OIIO::ImageSpec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT), image.rgba.data());
+    return drawLabelInto(buffer, text);
 }
 
 Expected<Image> readImage(const fs::path& path) {

@@ -73,6 +73,24 @@ Image OffscreenRenderer::render(SdfRenderer& renderer, int width, int height, co
     return image;
 }
 
+FloatImage OffscreenRenderer::renderFloat(SdfRenderer& renderer, int width, int height, const Camera& camera, float time,
+                                          FrameStats* stats) {
+    m_impl->ensureFloatSize(width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, m_impl->floatFramebuffer.id());
+    FrameStats frame = renderer.render(width, height, camera, time, true);
+    if (stats) *stats = frame;
+    FloatImage image{width, height, std::vector<float>(std::size_t(width) * std::size_t(height) * 4)};
+    std::vector<float> bottomUp(image.rgba.size());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, bottomUp.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    const std::size_t rowFloats = std::size_t(width) * 4;
+    for (int y = 0; y < height; ++y)
+        std::memcpy(image.rgba.data() + std::size_t(y) * rowFloats, bottomUp.data() + std::size_t(height - 1 - y) * rowFloats,
+                    rowFloats * sizeof(float));
+    return image;
+}
+
 std::vector<OffscreenRenderer::PixelStats> OffscreenRenderer::renderStats(SdfRenderer& renderer, int width, int height,
                                                                           const Camera& camera, float time, FrameStats* stats) {
     m_impl->ensureFloatSize(width, height);

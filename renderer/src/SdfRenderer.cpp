@@ -15,6 +15,7 @@
 
 #include <filesystem>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -57,6 +58,9 @@ struct SdfRenderer::Impl {
     GlTexture matcap;
     GlTexture noise; // g3d_uniformRandom, made when a program reads it
     std::string matcapName;
+    GlTexture background; // ShadingSettings::backgroundImage
+    std::string backgroundName;
+    float backgroundAspect = 1.0f;
     GlFramebuffer lowFramebuffer;
     GlTexture lowColor;
     int lowWidth = 0, lowHeight = 0;
@@ -64,6 +68,22 @@ struct SdfRenderer::Impl {
     static shaders::TracerFeatures features(const ShadingSettings& shading, const TraceSettings& trace,
                                             const CuttingPlane& plane) {
         return tracerFeatures(shading, trace, plane);
+    }
+
+    // An image as a linear-filtered, edge-clamped texture.
+    static GlTexture uploadTexture(const Image& image) {
+        GLuint id = 0;
+        glGenTextures(1, &id);
+        GlTexture texture(id);
+        glBindTexture(GL_TEXTURE_2D, id);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        return texture;
     }
 
     // Loads the matcap image (a name in resources/matcaps or a path) into a texture, once.
@@ -81,18 +101,27 @@ struct SdfRenderer::Impl {
             image.width = image.height = 1;
             image.rgba = {160, 160, 160, 255};
         }
-        GLuint id = 0;
-        glGenTextures(1, &id);
-        matcap = GlTexture(id);
-        glBindTexture(GL_TEXTURE_2D, id);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        glBindTexture(GL_TEXTURE_2D, 0);
+        matcap = uploadTexture(image);
         matcapName = name;
+    }
+
+    // Loads the background image once per path; an unreadable one shows the background colour.
+    void ensureBackground(const std::string& path, const glm::vec3& colour) {
+        if (background && backgroundName == path) return;
+        Image image;
+        auto loaded = readImage(path);
+        if (loaded) {
+            image = std::move(*loaded);
+        } else {
+            log::warning("render", "background image: " + loaded.error().message + "; using the background colour");
+            image.width = image.height = 1;
+            image.rgba = {std::uint8_t(std::clamp(colour.r, 0.0f, 1.0f) * 255.0f),
+                          std::uint8_t(std::clamp(colour.g, 0.0f, 1.0f) * 255.0f),
+                          std::uint8_t(std::clamp(colour.b, 0.0f, 1.0f) * 255.0f), 255};
+        }
+        background = uploadTexture(image);
+        backgroundName = path;
+        backgroundAspect = float(image.width) / float(std::max(image.height, 1));
     }
 
     // Builds (or finds) the program for `sdf` with `features`. Null on failure, with diagnostics.
@@ -160,6 +189,7 @@ shaders::TracerFeatures tracerFeatures(const ShadingSettings& shading, const Tra
     features.overRelaxation = trace.overRelaxation > 1.0f;
     features.statsOutput = shading.statsOutput;
     features.probe = shading.probe;
+    features.backgroundImage = !shading.backgroundImage.empty();
     features.markers = !shading.markers.empty();
     features.cuttingPlane = plane.enabled;
     features.planeClipsSurface = plane.enabled && plane.clipSurface;
@@ -174,6 +204,7 @@ SdfRenderer::~SdfRenderer() {
     for (auto& [text, variant] : m_impl->cache) variant.program.release();
     m_impl->vertexArray.release();
     m_impl->matcap.release();
+    m_impl->background.release();
     m_impl->noise.release();
     m_impl->lowFramebuffer.release();
     m_impl->lowColor.release();
@@ -269,6 +300,20 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
             glBindTexture(GL_TEXTURE_2D, m_impl->matcap.id());
             glUniform1i(location, 0);
         }
+        if (GLint location = v->location("sdfwb_backgroundImage"); location >= 0) {
+            m_impl->ensureBackground(m_shading.backgroundImage, m_shading.background);
+            glActiveTexture(GL_TEXTURE1);
+            glBindTexture(GL_TEXTURE_2D, m_impl->background.id());
+            glUniform1i(location, 1);
+            glActiveTexture(GL_TEXTURE0);
+            // Cover the frame, centred: the image's shorter side fits, the longer one is cropped.
+            const float frameAspect = float(width) / float(std::max(height, 1));
+            const float ratio = m_impl->backgroundAspect / frameAspect;
+            if (ratio < 1.0f)
+                glUniform4f(v->location("sdfwb_backgroundFit"), 1.0f, ratio, 0.0f, 0.5f * (1.0f - ratio));
+            else
+                glUniform4f(v->location("sdfwb_backgroundFit"), 1.0f / ratio, 1.0f, 0.5f * (1.0f - 1.0f / ratio), 0.0f);
+        }
         glBindVertexArray(m_impl->vertexArray.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindVertexArray(0);
@@ -326,6 +371,7 @@ void SdfRenderer::releaseGl() {
     m_impl->cache.clear();
     m_impl->vertexArray.reset();
     m_impl->matcap.reset();
+    m_impl->background.reset();
     m_impl->noise.reset();
 }
 

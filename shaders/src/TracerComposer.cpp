@@ -59,6 +59,8 @@ Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatu
         defines["SDFWB_MARKERS"] = "1";
         files.insert(files.end() - 1, "tracer/markers.glsl");
     }
+    if (features.backgroundImage && !features.statsOutput && features.shading != ShadingMode::Steps)
+        defines["SDFWB_BACKGROUND_IMAGE"] = "1";
     if (features.probe) {
         defines["SDFWB_PROBE"] = "1";
         files.insert(files.begin(), "tracer/probe.glsl");

@@ -11,5 +11,6 @@ vec3 sdfwb_shade(vec3 position, vec3 normal, vec3 direction, sdfwb_Hit hit) {
     vec3 halfway = normalize(sdfwb_lightDirection - direction);
     color += 0.25 * pow(max(dot(normal, halfway), 0.0), 40.0);
     color += 0.15 * pow(1.0 - max(dot(normal, -direction), 0.0), 3.0);
-    return clamp(color, 0.0, 1.0);
+    // No upper clamp: highlights above 1 reach float targets (.exr); 8-bit targets clamp on write.
+    return max(color, 0.0);
 }

@@ -4,6 +4,21 @@
 
 out vec4 sdfwb_color;
 
+#ifdef SDFWB_BACKGROUND_IMAGE
+uniform sampler2D sdfwb_backgroundImage;
+uniform vec4 sdfwb_backgroundFit; // uv = fragCoord / resolution * xy + zw: the image covers the frame, centred
+#endif
+
+// What a ray that hits nothing shows: the background colour, or the image behind the shape.
+vec3 sdfwb_missColor() {
+#ifdef SDFWB_BACKGROUND_IMAGE
+    vec2 uv = gl_FragCoord.xy / sdfwb_resolution * sdfwb_backgroundFit.xy + sdfwb_backgroundFit.zw;
+    return texture(sdfwb_backgroundImage, vec2(uv.x, 1.0 - uv.y)).rgb;
+#else
+    return sdfwb_background;
+#endif
+}
+
 vec4 sdfwb_pixel(vec3 direction) {
     sdfwb_Hit hit = sdfwb_traceRay(sdfwb_cameraPosition, direction);
 #ifdef SDFWB_OUTPUT_STATS
@@ -27,7 +42,7 @@ vec4 sdfwb_pixel(vec3 direction) {
     if (tPlane > 0.0 && (!hit.found || tPlane <= hit.t + 2.0 * sdfwb_epsilonScale * sdfwb_pixelAngle() * tPlane + 1e-5))
         return vec4(sdfwb_planeColor(sdfwb_cameraPosition + tPlane * direction), 1.0);
 #endif
-    if (!hit.found) return vec4(sdfwb_background, 1.0);
+    if (!hit.found) return vec4(sdfwb_missColor(), 1.0);
     vec3 normal = sdfwb_normalAt(hit.position, hit.t, direction);
     vec3 color = sdfwb_shade(hit.position, normal, direction, hit);
 #ifdef SDFWB_AO

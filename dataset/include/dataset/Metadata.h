@@ -39,4 +39,7 @@ Expected<Metadata> parseMetadata(const std::string& text, const std::string& fil
 
 const char* declaredTypeName(DeclaredType type);
 
+// "Name\nauthor - license": the overlay the workbench and exports draw over a frame.
+std::string overlayText(const Metadata& metadata);
+
 } // namespace sdfwb::dataset

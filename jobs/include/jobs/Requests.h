@@ -48,6 +48,7 @@ struct FrameRequest {
     renderer::TraceSettings trace;
     renderer::Camera camera;
     renderer::CuttingPlane plane;
+    bool overlay = false; // the SDF's name, author and license in the lower-left corner (its metadata block)
     bool operator==(const FrameRequest&) const = default;
 };
 

@@ -26,6 +26,11 @@ public:
     Image render(SdfRenderer& renderer, int width, int height, const Camera& camera, float time, FrameStats* stats = nullptr,
                  float scale = 1.0f);
 
+    // The same frame in floating point (an RGBA32F target): what the shader wrote, values above 1
+    // included, for high-dynamic-range files.
+    FloatImage renderFloat(SdfRenderer& renderer, int width, int height, const Camera& camera, float time,
+                           FrameStats* stats = nullptr);
+
     // Per-pixel tracing statistics (the renderer's shading must have statsOutput on): for each
     // pixel, top row first, {steps, hit distance t, |f| at the hit, length of the shading normal}.
     // A miss has t < 0 telling why: kLeftBox, kOutOfSteps or kNotFinite.

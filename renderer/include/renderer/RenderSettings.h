@@ -27,7 +27,8 @@ struct TraceSettings {
 struct ShadingSettings {
     ShadingMode mode = ShadingMode::Normals;
     bool ambientOcclusion = false;
-    glm::vec3 background{0.16f, 0.17f, 0.19f};      // linear RGB in [0,1]
+    glm::vec3 background{0.16f, 0.17f, 0.19f};      // RGB where rays miss (values above 1 reach .exr files)
+    std::string backgroundImage;                    // an image file behind the shape instead (cover-fit); empty: none
     glm::vec3 lightDirection{-0.05f, 0.87f, 0.49f}; // towards the key light (Gooch): upper left of the default view
     float curvatureScale = 5.0f;                    // |mean curvature| drawn full red
     std::string matcap = "clay";                    // name in resources/matcaps or a path to an image

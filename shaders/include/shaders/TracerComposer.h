@@ -26,8 +26,9 @@ struct TracerFeatures {
     bool cuttingPlane = false;
     bool planeClipsSurface = false; // cut the shape away on the side the plane's normal points to
     bool planeLipschitzOverlay = false;
-    bool markers = false; // ring marked points (markers.glsl)
-    bool probe = false;   // record one ray's march into a storage buffer (probe.glsl, the march debugger)
+    bool markers = false;         // ring marked points (markers.glsl)
+    bool probe = false;           // record one ray's march into a storage buffer (probe.glsl, the march debugger)
+    bool backgroundImage = false; // misses show an image (sdfwb_backgroundImage) instead of the colour
 };
 
 Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatures& features);
