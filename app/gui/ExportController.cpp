@@ -47,9 +47,20 @@ bool ExportController::isExporting() const { return m_process->isRunning(); }
 QString ExportController::saveScreenshot(const QString& path, int width, int height) {
     QElapsedTimer timer;
     timer.start();
-    renderer::Image image = m_viewport->renderImage(width, height);
-    if (image.width == 0) return tr("The viewport has no GL context yet.");
-    auto written = renderer::writeImage(path.toStdString(), image);
+    // The overlay (name, author, license) as the viewport shows it; EXR gets the float frame.
+    const std::string label = m_viewport->overlayText().toStdString();
+    Expected<void> written;
+    if (renderer::isHighDynamicRange(path.toStdString())) {
+        renderer::FloatImage image = m_viewport->renderFloatImage(width, height);
+        if (image.width == 0) return tr("The viewport has no GL context yet.");
+        if (!label.empty()) (void)renderer::drawLabel(image, label);
+        written = renderer::writeImage(path.toStdString(), image);
+    } else {
+        renderer::Image image = m_viewport->renderImage(width, height);
+        if (image.width == 0) return tr("The viewport has no GL context yet.");
+        if (!label.empty()) (void)renderer::drawLabel(image, label);
+        written = renderer::writeImage(path.toStdString(), image);
+    }
     if (!written) return QString::fromStdString(written.error().message);
     log::info("export", "screenshot " + path.toStdString() + " (" + std::to_string(width) + "x" + std::to_string(height) +
                             ") in " + std::to_string(timer.elapsed()) + " ms");
@@ -99,6 +110,7 @@ jobs::AnimateRequest ExportController::videoRequest(const widgets::ExportSetting
     frame.trace = m_viewport->trace();
     frame.camera = m_viewport->camera();
     frame.plane = m_viewport->plane();
+    frame.overlay = !m_viewport->overlayText().isEmpty();
     request.output = s.output.toStdString();
     request.seconds = float(s.seconds);
     request.framesPerSecond = s.framesPerSecond;

@@ -3,6 +3,7 @@
 #include "SdfDocument.h"
 
 #include <core/Log.h>
+#include <core/Paths.h>
 #include <core/TextFile.h>
 #include <widgets/GlslEditor.h>
 #include <widgets/ViewportWidget.h>
@@ -86,12 +87,42 @@ void FileController::newFromTemplate() {
     emit pathChanged(QString());
 }
 
+bool FileController::isShipped(const QString& path) {
+    if (path.isEmpty()) return false;
+    const QString root = QFileInfo(QString::fromStdString(paths::datasetRoot().string())).canonicalFilePath();
+    const QFileInfo info(path);
+    // The folder's canonical path: the file itself may not exist yet (save as).
+    const QString folder = QFileInfo(info.absolutePath()).canonicalFilePath();
+    return !root.isEmpty() && !folder.isEmpty() && (folder == root || folder.startsWith(root + "/"));
+}
+
+QString FileController::documentPath() const { return m_document->path(); }
+
+QString FileController::suggestedSavePath() const {
+    const QString current = m_document->path();
+    if (!current.isEmpty() && !isShipped(current)) return current;
+    const QString folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation) + "/sdfwb";
+    QDir().mkpath(folder);
+    const QString name = current.isEmpty() ? QString("untitled.glsl") : QFileInfo(current).fileName();
+    return QDir(folder).filePath(name);
+}
+
 bool FileController::save() {
     if (m_document->path().isEmpty()) return false; // the caller asks for a name (save as)
+    if (isShipped(m_document->path())) {
+        emit message(tr("%1 ships with sdfwb and is read-only: save your version under a new name")
+                         .arg(QFileInfo(m_document->path()).fileName()));
+        return false; // the caller asks for a name (save as)
+    }
     return saveAs(m_document->path());
 }
 
 bool FileController::saveAs(const QString& path) {
+    if (isShipped(path)) {
+        emit message(tr("Not saved: %1 is in the shipped dataset, which is read-only; choose a folder of your own").arg(path));
+        log::warning("app", "refused to write into the shipped dataset: " + path.toStdString());
+        return false;
+    }
     m_saving = true;
     auto written = writeFileAtomically(path.toStdString(), m_editor->text().toStdString());
     m_saving = false;

@@ -40,6 +40,14 @@ public:
     bool saveAs(const QString& path);
     QStringList recentFiles() const;
 
+    // Shipped dataset files are read-only: they may be edited in the editor, but save() refuses
+    // them (the caller asks for a new name) and saveAs() never writes into the dataset.
+    static bool isShipped(const QString& path);
+    bool isReadOnly() const { return isShipped(documentPath()); }
+    // Where "Save as" suggests to save the current document: the user's SDF folder for a shipped
+    // file or an untitled one (Documents/sdfwb/NAME.glsl), else the file itself.
+    QString suggestedSavePath() const;
+
     // The recovery file of the current document, and every recovery file left by earlier runs.
     QString recoveryPath() const;
     static QStringList recoveryFiles();
@@ -56,6 +64,7 @@ signals:
     void message(const QString& text);
 
 private:
+    QString documentPath() const;
     void watch(const QString& path);
     void fileChangedOnDisk(const QString& path);
     void addRecent(const QString& path);

@@ -1,12 +1,15 @@
 #include "MainWindow.h"
 
+#include "CloudController.h"
 #include "ExportController.h"
 #include "FileController.h"
 #include "MeshExportController.h"
 #include "PlaneController.h"
 #include "PlaybackController.h"
+#include "ProbeController.h"
 #include "SamplingController.h"
 #include "SdfDocument.h"
+#include "ThumbnailController.h"
 
 #include <core/Log.h>
 #include <core/TextFile.h>
@@ -16,9 +19,12 @@
 #include <widgets/CameraPanel.h>
 #include <widgets/DatasetBrowser.h>
 #include <widgets/GlslEditor.h>
+#include <widgets/LogPanel.h>
 #include <widgets/ParametersPanel.h>
 #include <widgets/PlanePanel.h>
+#include <widgets/ProbePanel.h>
 #include <widgets/ProblemsPanel.h>
+#include <widgets/SamplingDialog.h>
 
 #include <core/Paths.h>
 #include <shaders/SdfSource.h>
@@ -32,6 +38,14 @@
 
 #include <QAction>
 #include <QActionGroup>
+#include <QColorDialog>
+#include <QDateTime>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QPointer>
+#include <QStandardPaths>
+
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -44,6 +58,8 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
+#include <fstream>
+#include <memory>
 
 namespace sdfwb::app {
 
@@ -86,6 +102,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_problems = new widgets::ProblemsPanel;
     m_browser = new widgets::DatasetBrowser;
     m_parametersPanel = new widgets::ParametersPanel;
+    m_probePanel = new widgets::ProbePanel;
+    m_logPanel = new widgets::LogPanel;
     m_viewportDock = addDock(tr("Viewport"), "ViewportDock", m_viewport, Qt::RightDockWidgetArea);
     m_editorDock = addDock(tr("Editor"), "EditorDock", m_editor, Qt::LeftDockWidgetArea);
     m_cameraDock = addDock(tr("Camera"), "CameraDock", m_cameraPanel, Qt::LeftDockWidgetArea);
@@ -94,16 +112,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_problemsDock = addDock(tr("Problems"), "ProblemsDock", m_problems, Qt::LeftDockWidgetArea);
     m_browserDock = addDock(tr("Dataset"), "DatasetDock", m_browser, Qt::LeftDockWidgetArea);
     m_parametersDock = addDock(tr("Parameters"), "ParametersDock", m_parametersPanel, Qt::LeftDockWidgetArea);
-    {
-        QList<widgets::DatasetItem> items;
-        dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
-        for (const dataset::Entry& e : catalogue.entries())
-            items.append({QString::fromStdString(e.metadata.name), QString::fromStdString(e.metadata.category),
-                          dataset::declaredTypeName(e.metadata.type), QString::fromStdString(e.metadata.author),
-                          QString::fromStdString(e.metadata.license), QString::fromStdString(e.metadata.notes),
-                          QString::fromStdString(e.path.string()), e.metadata.animated});
-        m_browser->setItems(items);
-    }
+    m_probeDock = addDock(tr("March debugger"), "ProbeDock", m_probePanel, Qt::LeftDockWidgetArea);
+    m_logDock = addDock(tr("Log"), "LogDock", m_logPanel, Qt::BottomDockWidgetArea);
+    setUpLog();
+    loadDatasetItems();
     splitDockWidget(m_editorDock, m_problemsDock, Qt::Vertical);
     resizeDocks({m_editorDock, m_problemsDock}, {640, 120}, Qt::Vertical);
     m_timeBar->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
@@ -112,6 +124,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     tabifyDockWidget(m_cameraDock, m_planeDock);
     tabifyDockWidget(m_planeDock, m_browserDock);
     tabifyDockWidget(m_browserDock, m_parametersDock);
+    tabifyDockWidget(m_parametersDock, m_probeDock);
+    tabifyDockWidget(m_problemsDock, m_logDock);
+    m_problemsDock->raise();
     m_editorDock->raise();
     resizeDocks({m_editorDock, m_viewportDock}, {560, 840}, Qt::Horizontal);
 
@@ -126,6 +141,23 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_playback = new PlaybackController(m_timeBar, m_viewport, this);
     m_plane = new PlaneController(m_planePanel, m_viewport, currentSdf, this);
     m_files = new FileController(this, m_editor, m_document, m_viewport, this);
+    m_probe = new ProbeController(m_probePanel, m_viewport, currentSdf, this);
+    connect(m_probe, &ProbeController::probed, this, [this] {
+        m_probeDock->show();
+        m_probeDock->raise();
+    });
+    m_clouds = new CloudController(m_viewport, this);
+    connect(m_clouds, &CloudController::message, this, [this](const QString& text) { statusBar()->showMessage(text, 15000); });
+    connect(m_sampling, &SamplingController::cloudReady, this, [this](const QString& path) { (void)m_clouds->show(path); });
+    connect(m_sampling, &SamplingController::pointSizeChanged, this,
+            [this](int pixels) { m_viewport->setPointSize(float(pixels)); });
+    m_thumbnails = new ThumbnailController(this);
+    connect(m_thumbnails, &ThumbnailController::thumbnailReady, m_browser, &widgets::DatasetBrowser::setThumbnail);
+    // Thumbnails are made when the browser is first looked at (cached after that).
+    connect(m_browser, &widgets::DatasetBrowser::shown, this, [this] { m_thumbnails->request(m_browser->paths()); });
+    connect(m_browser, &widgets::DatasetBrowser::newRequested, this, [this] {
+        if (!m_editor->isModified() || m_files->confirmClose()) m_files->newFromTemplate();
+    });
     {
         QToolBar* bar = addToolBar(tr("SDF"));
         bar->setObjectName("SdfToolBar");
@@ -238,6 +270,19 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_frameTime = new QLabel(this);
     m_diagnosticSummary = new QLabel(this);
     statusBar()->addWidget(m_diagnosticSummary, 1);
+    m_planeReadout = new QLabel(this);
+    m_planeReadout->setObjectName("planeReadout");
+    statusBar()->addPermanentWidget(m_planeReadout);
+    connect(m_viewport, &widgets::ViewportWidget::planeHovered, this,
+            [this](bool valid, const widgets::ViewportWidget::PlaneValue& v) {
+                m_planeReadout->setText(valid ? tr("plane (%1, %2, %3): f = %4, |grad f| = %5")
+                                                    .arg(double(v.position.x), 0, 'f', 3)
+                                                    .arg(double(v.position.y), 0, 'f', 3)
+                                                    .arg(double(v.position.z), 0, 'f', 3)
+                                                    .arg(double(v.value), 0, 'g', 5)
+                                                    .arg(double(v.gradientLength), 0, 'g', 4)
+                                              : QString());
+            });
     m_precision = new QLabel(this);
     m_precision->setObjectName("precision");
     statusBar()->addPermanentWidget(m_precision);
@@ -247,7 +292,17 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         log::warning("viewport", message.toStdString());
         statusBar()->showMessage(message, 20000);
     });
+    connect(m_document, &SdfDocument::sdfApplied, this, [this] { m_logFrameTime = true; });
     connect(m_viewport, &widgets::ViewportWidget::frameRendered, this, [this](double milliseconds, float scale) {
+        if (m_logFrameTime && scale >= 1.0f) {
+            m_logFrameTime = false;
+            log::info("viewport", QString("first full frame of %1: %2 ms at %3x%4")
+                                      .arg(m_document->path().isEmpty() ? QString("the editor's text") : m_document->path())
+                                      .arg(milliseconds, 0, 'f', 1)
+                                      .arg(int(m_viewport->width() * m_viewport->devicePixelRatioF()))
+                                      .arg(int(m_viewport->height() * m_viewport->devicePixelRatioF()))
+                                      .toStdString());
+        }
         m_frameTime->setText(
             scale < 1.0f ? tr("frame %1 ms at %2 % resolution (moving)").arg(milliseconds, 0, 'f', 1).arg(int(scale * 100.0f))
                          : tr("frame %1 ms").arg(milliseconds, 0, 'f', 1));
@@ -260,7 +315,65 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     updateTitle();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    if (m_logSink) log::removeSink(m_logSink);
+}
+
+void MainWindow::setUpLog() {
+    // One log file per session (the previous one kept as .1), the lines also in the Log dock.
+    const QString folder = QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation);
+    QDir().mkpath(folder);
+    m_logFilePath = QDir(folder).filePath("sdfwb.log");
+    QFile::remove(m_logFilePath + ".1");
+    QFile::rename(m_logFilePath, m_logFilePath + ".1");
+    m_logPanel->setFilePath(m_logFilePath);
+    auto file = std::make_shared<std::ofstream>(m_logFilePath.toStdString(), std::ios::app);
+    QPointer<widgets::LogPanel> panel = m_logPanel;
+    m_logSink = log::addSink([file, panel](log::Level level, std::string_view category, std::string_view message) {
+        const std::string line = QDateTime::currentDateTime().toString("hh:mm:ss.zzz").toStdString() + " [" +
+                                 log::levelName(level) + "] " + std::string(category) + ": " + std::string(message);
+        if (*file) *file << line << std::endl;
+        // Any thread may log; the dock is updated on the UI thread.
+        QMetaObject::invokeMethod(
+            panel.data(),
+            [panel, text = QString::fromStdString(line)] {
+                if (panel) panel->appendLine(text);
+            },
+            Qt::QueuedConnection);
+    });
+    log::info("app", "sdfwb " SDFWB_VERSION " log: " + m_logFilePath.toStdString());
+}
+
+void MainWindow::loadDatasetItems() {
+    // Measured type and render time from the dataset report (scripts/dataset_report.py).
+    QHash<QString, QJsonObject> measured;
+    QString note;
+    QFile report(QString::fromStdString((paths::datasetRoot() / "report.json").string()));
+    if (report.open(QIODevice::ReadOnly)) {
+        const QJsonObject root = QJsonDocument::fromJson(report.readAll()).object();
+        for (const QJsonValue& entry : root.value("sdfs").toArray())
+            measured.insert(entry.toObject().value("name").toString(), entry.toObject());
+        note = tr("Measured type and render time (1280x720, Gooch): %1, %2")
+                   .arg(root.value("machine").toString(), root.value("date").toString());
+    } else {
+        note = tr("No dataset report (dataset/report.json): types are the declared ones");
+    }
+    QList<widgets::DatasetItem> items;
+    dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
+    for (const dataset::Entry& e : catalogue.entries()) {
+        widgets::DatasetItem item{QString::fromStdString(e.metadata.name),    QString::fromStdString(e.metadata.category),
+                                  dataset::declaredTypeName(e.metadata.type), QString::fromStdString(e.metadata.author),
+                                  QString::fromStdString(e.metadata.license), QString::fromStdString(e.metadata.notes),
+                                  QString::fromStdString(e.path.string()),    e.metadata.animated};
+        if (auto it = measured.find(item.name); it != measured.end()) {
+            item.measuredType = it->value("measured_type").toString();
+            if (it->contains("render_ms")) item.renderMilliseconds = it->value("render_ms").toDouble();
+        }
+        items.append(item);
+    }
+    m_browser->setItems(items);
+    m_browser->setReportNote(note);
+}
 
 void MainWindow::updatePrecision() {
     const auto floor =
@@ -292,8 +405,23 @@ QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWid
 bool MainWindow::openFile(const QString& path) { return m_files->load(path); }
 
 void MainWindow::saveAsWithDialog() {
-    QString path = QFileDialog::getSaveFileName(this, tr("Save SDF"), m_document->path(), tr("GLSL (*.glsl)"));
+    const QString suggested = m_files->suggestedSavePath();
+    const QString path = m_chooseSavePath ? m_chooseSavePath(suggested)
+                                          : QFileDialog::getSaveFileName(this, tr("Save SDF"), suggested, tr("GLSL (*.glsl)"));
     if (!path.isEmpty()) m_files->saveAs(path);
+}
+
+void MainWindow::setBackgroundColour(const glm::vec3& colour) {
+    renderer::ShadingSettings shading = m_viewport->shading();
+    shading.background = colour;
+    shading.backgroundImage.clear();
+    m_viewport->setShading(shading);
+}
+
+void MainWindow::setBackgroundImage(const QString& path) {
+    renderer::ShadingSettings shading = m_viewport->shading();
+    shading.backgroundImage = path.toStdString();
+    m_viewport->setShading(shading);
 }
 
 void MainWindow::updateRecentMenu() {
@@ -421,6 +549,30 @@ void MainWindow::createMenus() {
     });
     m_hideMeshAction = view->addAction(tr("&Hide mesh deviation"), this, &MainWindow::hideMeshDeviation);
     m_hideMeshAction->setEnabled(false);
+    view->addAction(tr("Show sample &cloud..."), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Sample file to show over the surface"), QString(),
+                                                          tr("Samples (*.npz *.bin *.ply);;All files (*)"));
+        if (!path.isEmpty()) (void)m_clouds->show(path);
+    });
+    view->addAction(tr("Hide sample c&loud"), m_clouds, &CloudController::hide);
+    view->addAction(tr("Sample cloud point si&ze..."), this, [this] {
+        bool ok = false;
+        const int size = QInputDialog::getInt(this, tr("Point size"), tr("Pixels:"), int(m_viewport->pointSize()), 1, 32, 1, &ok);
+        if (ok) m_viewport->setPointSize(float(size));
+    });
+    view->addSeparator();
+    view->addAction(tr("Background &colour..."), this, [this] {
+        const glm::vec3 b = m_viewport->shading().background;
+        const QColor colour = QColorDialog::getColor(
+            QColor::fromRgbF(std::min(b.r, 1.0f), std::min(b.g, 1.0f), std::min(b.b, 1.0f)), this, tr("Background colour"));
+        if (colour.isValid()) setBackgroundColour({float(colour.redF()), float(colour.greenF()), float(colour.blueF())});
+    });
+    view->addAction(tr("Background &image..."), this, [this] {
+        const QString path =
+            QFileDialog::getOpenFileName(this, tr("Background image"), QString(), tr("Images (*.png *.jpg *.jpeg *.exr *.tif)"));
+        if (!path.isEmpty()) setBackgroundImage(path);
+    });
+    view->addAction(tr("No background ima&ge"), this, [this] { setBackgroundImage({}); });
     view->addSeparator();
     view->addAction(m_editorDock->toggleViewAction());
     view->addAction(m_viewportDock->toggleViewAction());
@@ -430,6 +582,8 @@ void MainWindow::createMenus() {
     view->addAction(m_problemsDock->toggleViewAction());
     view->addAction(m_browserDock->toggleViewAction());
     view->addAction(m_parametersDock->toggleViewAction());
+    view->addAction(m_probeDock->toggleViewAction());
+    view->addAction(m_logDock->toggleViewAction());
     view->addSeparator();
     QAction* reset = view->addAction(tr("&Reset camera"), m_viewport, &widgets::ViewportWidget::resetCamera);
     reset->setShortcut(Qt::Key_Home);
@@ -439,6 +593,19 @@ void MainWindow::createMenus() {
     QMenu* tools = menuBar()->addMenu(tr("&Tools"));
     QAction* sample = tools->addAction(tr("&Sample SDF..."), m_sampling, &SamplingController::showDialog);
     sample->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
+    m_probeAction = tools->addAction(tr("&Probe pixel (march debugger)"), this, [this](bool on) {
+        m_viewport->setProbeTool(on);
+        if (on) {
+            m_probeDock->show();
+            m_probeDock->raise();
+            statusBar()->showMessage(tr("Click a pixel in the viewport: its whole march appears in the March debugger dock"),
+                                     8000);
+        }
+    });
+    m_probeAction->setObjectName("probeTool");
+    m_probeAction->setCheckable(true);
+    m_probeAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
+    if (auto* bar = findChild<QToolBar*>("SdfToolBar")) bar->addAction(m_probeAction);
 }
 
 void MainWindow::updateOverlay() {
@@ -451,7 +618,7 @@ void MainWindow::updateOverlay() {
         m_viewport->setOverlayText(tr("(no metadata block)"));
         return;
     }
-    m_viewport->setOverlayText(QString::fromStdString(metadata->name + "\n" + metadata->author + " - " + metadata->license));
+    m_viewport->setOverlayText(QString::fromStdString(dataset::overlayText(*metadata)));
 }
 
 void MainWindow::restoreSession() {
@@ -517,7 +684,9 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 
 void MainWindow::updateTitle() {
     QString name = m_document->path().isEmpty() ? tr("untitled") : m_document->path();
-    setWindowTitle(QString("%1%2 - sdfwb").arg(name, m_editor->isModified() ? "*" : ""));
+    const QString shipped =
+        FileController::isShipped(m_document->path()) ? tr(" [shipped, read-only: Save asks for a new name]") : QString();
+    setWindowTitle(QString("%1%2%3 - sdfwb").arg(name, m_editor->isModified() ? "*" : "", shipped));
 }
 
 bool MainWindow::showMeshDeviation(const QString& path) {

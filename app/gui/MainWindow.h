@@ -5,8 +5,12 @@
 
 #include <renderer/RenderSettings.h>
 
+#include <glm/vec3.hpp>
+
 #include <QMainWindow>
 #include <QStringList>
+
+#include <functional>
 
 class QActionGroup;
 class QDockWidget;
@@ -17,6 +21,8 @@ namespace sdfwb::widgets {
 class CameraPanel;
 class DatasetBrowser;
 class GlslEditor;
+class LogPanel;
+class ProbePanel;
 class ParametersPanel;
 class PlanePanel;
 class ProblemsPanel;
@@ -26,7 +32,10 @@ class ViewportWidget;
 
 namespace sdfwb::app {
 
+class CloudController;
 class ExportController;
+class ProbeController;
+class ThumbnailController;
 class MeshExportController;
 class FileController;
 class PlaneController;
@@ -58,6 +67,23 @@ public:
     FileController* files() const { return m_files; }
     widgets::ProblemsPanel* problems() const { return m_problems; }
     widgets::DatasetBrowser* datasetBrowser() const { return m_browser; }
+    widgets::ProbePanel* probePanel() const { return m_probePanel; }
+    widgets::LogPanel* logPanel() const { return m_logPanel; }
+    ProbeController* probe() const { return m_probe; }
+    CloudController* clouds() const { return m_clouds; }
+    ThumbnailController* thumbnails() const { return m_thumbnails; }
+    QAction* probeAction() const { return m_probeAction; }
+    QLabel* planeReadout() const { return m_planeReadout; }
+    // The log file this window's session writes (and the Log dock shows).
+    QString logFilePath() const { return m_logFilePath; }
+
+    // Picks the path "Save as" writes to, given the suggested one; empty: cancelled. Default: a
+    // file dialog. Tests answer it (no modal dialog blocks a test).
+    using PathChooser = std::function<QString(const QString& suggested)>;
+    void setSavePathChooser(PathChooser chooser) { m_chooseSavePath = std::move(chooser); }
+    // The same for choosing a background image and colour (View menu).
+    void setBackgroundColour(const glm::vec3& colour);
+    void setBackgroundImage(const QString& path);
 
     void setShadingMode(renderer::ShadingMode mode);
     void setAmbientOcclusion(bool enabled);
@@ -80,6 +106,8 @@ private:
     void updateOverlay();
     void updateRecentMenu();
     void saveAsWithDialog();
+    void setUpLog();
+    void loadDatasetItems();
 
     widgets::GlslEditor* m_editor = nullptr;
     widgets::ViewportWidget* m_viewport = nullptr;
@@ -113,6 +141,19 @@ private:
     QAction* m_aoAction = nullptr;
     QAction* m_overlayAction = nullptr;
     QAction* m_hideMeshAction = nullptr;
+    widgets::ProbePanel* m_probePanel = nullptr;
+    widgets::LogPanel* m_logPanel = nullptr;
+    QDockWidget* m_probeDock = nullptr;
+    QDockWidget* m_logDock = nullptr;
+    QAction* m_probeAction = nullptr;
+    QLabel* m_planeReadout = nullptr;
+    QString m_logFilePath;
+    int m_logSink = 0;
+    bool m_logFrameTime = false; // the next full-resolution frame's time goes to the log
+    PathChooser m_chooseSavePath;
+    ProbeController* m_probe = nullptr;
+    CloudController* m_clouds = nullptr;
+    ThumbnailController* m_thumbnails = nullptr;
     SdfDocument* m_document = nullptr;
     SamplingController* m_sampling = nullptr;
     ExportController* m_exports = nullptr;

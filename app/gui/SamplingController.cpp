@@ -6,6 +6,10 @@
 #include <jobs/JobJson.h>
 #include <widgets/SamplingDialog.h>
 
+#include <QDir>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+
 namespace sdfwb::app {
 
 SamplingController::SamplingController(QWidget* window, std::function<jobs::SdfInput()> currentSdf, QObject* parent)
@@ -21,6 +25,18 @@ SamplingController::SamplingController(QWidget* window, std::function<jobs::SdfI
             ok = false;
             message = QString::fromStdString(report.error().message);
         }
+        if (ok && m_previewing) {
+            message = tr("Preview: %1 samples (%2 bad rows, not drawn) in %3 s; nothing written.")
+                          .arg(report->rows)
+                          .arg(report->badRows)
+                          .arg(report->seconds, 0, 'f', 2);
+            m_dialog->setRunning(false);
+            m_dialog->setMessage(message, false);
+            m_previewing = false;
+            emit cloudReady(QString::fromStdString(report->output), tr("preview"));
+            return;
+        }
+        m_previewing = false;
         if (ok) {
             message = tr("Wrote %1: %2 samples, %3 bad rows, %4 s (%5 M samples/s).")
                           .arg(QString::fromStdString(report->output))
@@ -34,6 +50,7 @@ SamplingController::SamplingController(QWidget* window, std::function<jobs::SdfI
         m_dialog->setMessage(message, !ok);
         log::write(ok ? log::Level::Info : log::Level::Warning, "sampling", message.toStdString());
         emit finished(ok, message);
+        if (ok) emit cloudReady(QString::fromStdString(report->output), tr("written"));
     });
 }
 
@@ -46,6 +63,8 @@ void SamplingController::showDialog() {
         const QStringList patterns = {"surface", "near", "rand", "grid", "image", "jitter", "metropolis", "metropolis_curvature"};
         m_dialog = new widgets::SamplingDialog(patterns, m_window);
         connect(m_dialog, &widgets::SamplingDialog::startRequested, this, &SamplingController::start);
+        connect(m_dialog, &widgets::SamplingDialog::previewRequested, this, &SamplingController::preview);
+        connect(m_dialog, &widgets::SamplingDialog::pointSizeChanged, this, &SamplingController::pointSizeChanged);
         connect(m_dialog, &widgets::SamplingDialog::cancelRequested, m_process, &BatchProcess::cancel);
     }
     const jobs::SdfInput sdf = m_currentSdf();
@@ -54,8 +73,7 @@ void SamplingController::showDialog() {
     m_dialog->raise();
 }
 
-void SamplingController::start(const widgets::SamplingSettings& settings) {
-    if (isRunning()) return;
+jobs::SampleRequest SamplingController::requestFor(const widgets::SamplingSettings& settings) const {
     jobs::SampleRequest request;
     request.sdf = m_currentSdf();
     request.pattern = settings.pattern.toStdString();
@@ -64,6 +82,39 @@ void SamplingController::start(const widgets::SamplingSettings& settings) {
     request.time = float(settings.time);
     request.output = settings.output.toStdString();
     request.format = settings.format.toStdString();
+    return request;
+}
+
+void SamplingController::preview(const widgets::SamplingSettings& settings) {
+    if (isRunning()) return;
+    if (m_previewFolder.isEmpty()) {
+        QTemporaryDir folder(QDir::temp().filePath("sdfwb-preview-XXXXXX"));
+        folder.setAutoRemove(false);
+        if (!folder.isValid()) {
+            m_dialog->setMessage(tr("Preview: cannot make a temporary folder: %1").arg(folder.errorString()), true);
+            return;
+        }
+        m_previewFolder = folder.path();
+    }
+    jobs::SampleRequest request = requestFor(settings);
+    // Rows depend on the seed and their index only, so a preview shows the first points the file
+    // will hold (grid and image size their lattice by N: theirs is a coarser lattice).
+    request.count = std::min<std::uint64_t>(settings.count, widgets::SamplingDialog::kPreviewPoints);
+    request.output = QDir(m_previewFolder).filePath("preview.npz").toStdString();
+    request.format.clear();
+    m_previewing = true;
+    m_dialog->setRunning(true);
+    m_dialog->setMessage(tr("Previewing %1 samples...").arg(request.count), false);
+    m_process->start(request);
+}
+
+SamplingController::~SamplingController() {
+    if (!m_previewFolder.isEmpty()) QDir(m_previewFolder).removeRecursively();
+}
+
+void SamplingController::start(const widgets::SamplingSettings& settings) {
+    if (isRunning()) return;
+    const jobs::SampleRequest request = requestFor(settings);
     m_dialog->setRunning(true);
     m_dialog->setMessage(tr("Sampling..."), false);
     m_process->start(request);

@@ -22,6 +22,7 @@ class SamplingController : public QObject {
 public:
     // `currentSdf` gives the SDF as the viewport shows it (saved or not).
     SamplingController(QWidget* window, std::function<jobs::SdfInput()> currentSdf, QObject* parent = nullptr);
+    ~SamplingController() override;
 
     void setExecutable(const QString& path);
 
@@ -31,16 +32,23 @@ public:
 
 signals:
     void finished(bool ok, const QString& message);
+    // A sample file to look at in the viewport: a preview's (temporary) or a finished run's.
+    void cloudReady(const QString& path, const QString& what);
+    void pointSizeChanged(int pixels);
     // Samples written so far by the running job (its progress lines).
     void progress(quint64 done, quint64 total);
 
 private:
     void start(const widgets::SamplingSettings& settings);
+    void preview(const widgets::SamplingSettings& settings);
+    jobs::SampleRequest requestFor(const widgets::SamplingSettings& settings) const;
 
     QWidget* m_window;
     std::function<jobs::SdfInput()> m_currentSdf;
     BatchProcess* m_process;
     widgets::SamplingDialog* m_dialog = nullptr;
+    QString m_previewFolder; // a temporary folder for previews, removed with the controller
+    bool m_previewing = false;
 };
 
 } // namespace sdfwb::app

@@ -11,6 +11,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QRegularExpressionValidator>
+#include <QSpinBox>
 #include <QVBoxLayout>
 
 namespace sdfwb::widgets {
@@ -50,6 +51,13 @@ SamplingDialog::SamplingDialog(const QStringList& patterns, QWidget* parent) : Q
     m_format = new QComboBox;
     m_format->addItems({tr("from extension"), "bin", "npz", "ply"});
     form->addRow(tr("Format:"), m_format);
+    m_pointSize = new QSpinBox;
+    m_pointSize->setObjectName("pointSize");
+    m_pointSize->setRange(1, 32);
+    m_pointSize->setValue(3);
+    m_pointSize->setSuffix(tr(" px"));
+    m_pointSize->setToolTip(tr("Size of the previewed points in the viewport"));
+    form->addRow(tr("Preview point size:"), m_pointSize);
 
     m_progress = new QProgressBar;
     m_progress->setRange(0, 1000);
@@ -61,6 +69,11 @@ SamplingDialog::SamplingDialog(const QStringList& patterns, QWidget* parent) : Q
     auto* buttons = new QDialogButtonBox;
     m_start = buttons->addButton(tr("Sample"), QDialogButtonBox::AcceptRole);
     m_start->setObjectName("start");
+    m_preview = buttons->addButton(tr("Preview"), QDialogButtonBox::ActionRole);
+    m_preview->setObjectName("preview");
+    m_preview->setToolTip(tr("Draws up to %1 points of this pattern, seed and time in the viewport, coloured by gradient, "
+                             "without writing a file")
+                              .arg(kPreviewPoints));
     m_cancel = buttons->addButton(tr("Cancel run"), QDialogButtonBox::ActionRole);
     m_cancel->setObjectName("cancel");
     m_cancel->setEnabled(false);
@@ -84,12 +97,16 @@ SamplingDialog::SamplingDialog(const QStringList& patterns, QWidget* parent) : Q
         }
         emit startRequested(settings());
     });
+    connect(m_preview, &QPushButton::clicked, this, [this] { emit previewRequested(settings()); });
+    connect(m_pointSize, &QSpinBox::valueChanged, this, &SamplingDialog::pointSizeChanged);
     connect(m_cancel, &QPushButton::clicked, this, &SamplingDialog::cancelRequested);
     connect(close, &QPushButton::clicked, this, [this] {
         if (m_cancel->isEnabled()) emit cancelRequested();
         reject();
     });
 }
+
+int SamplingDialog::pointSize() const { return m_pointSize->value(); }
 
 void SamplingDialog::setSdfName(const QString& name) { m_sdf->setText(name); }
 
@@ -116,6 +133,7 @@ void SamplingDialog::setSettings(const SamplingSettings& s) {
 
 void SamplingDialog::setRunning(bool running) {
     m_start->setEnabled(!running);
+    m_preview->setEnabled(!running);
     m_cancel->setEnabled(running);
     if (running) m_progress->setValue(0);
 }

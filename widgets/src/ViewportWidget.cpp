@@ -4,7 +4,12 @@
 #include <renderer/GlInfo.h>
 #include <renderer/MeshOverlay.h>
 #include <renderer/OffscreenRenderer.h>
+#include <renderer/PointCloudOverlay.h>
+#include <renderer/SampleCompute.h>
 #include <renderer/SdfRenderer.h>
+#include <shaders/ShaderComposer.h>
+
+#include <glm/geometric.hpp>
 
 #include <QGuiApplication>
 #include <QKeyEvent>
@@ -20,9 +25,10 @@ namespace sdfwb::widgets {
 
 ViewportWidget::ViewportWidget(QWidget* parent)
     : QOpenGLWidget(parent), m_renderer(std::make_unique<renderer::SdfRenderer>()),
-      m_meshOverlay(std::make_unique<renderer::MeshOverlay>()) {
+      m_meshOverlay(std::make_unique<renderer::MeshOverlay>()), m_pointCloud(std::make_unique<renderer::PointCloudOverlay>()) {
     setMinimumSize(64, 64);
     setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(true); // the plane readout under the cursor
     m_refineTimer.setSingleShot(true);
     m_refineTimer.setInterval(200);
     connect(&m_refineTimer, &QTimer::timeout, this, [this] {
@@ -148,6 +154,77 @@ renderer::Image ViewportWidget::renderImage(int width, int height) {
     return image;
 }
 
+renderer::FloatImage ViewportWidget::renderFloatImage(int width, int height) {
+    if (!context() || !isValid()) return {};
+    makeCurrent();
+    renderer::FloatImage image;
+    {
+        renderer::OffscreenRenderer offscreen;
+        image = offscreen.renderFloat(*m_renderer, width, height, m_camera, m_time);
+    }
+    doneCurrent();
+    return image;
+}
+
+void ViewportWidget::setProbeTool(bool on) {
+    m_probeTool = on;
+    setCursor(on ? Qt::CrossCursor : Qt::ArrowCursor);
+}
+
+void ViewportWidget::setProbeMark(QPoint pixel) {
+    m_probeMark = pixel;
+    update();
+}
+
+void ViewportWidget::setPointCloud(const std::vector<float>& positions, const std::vector<float>& gradients) {
+    m_pointCloud->setPoints(positions, gradients);
+    update();
+}
+
+std::uint64_t ViewportWidget::pointCloudSize() const { return m_pointCloud->pointCount(); }
+
+void ViewportWidget::setPointSize(float pixels) {
+    m_pointSize = std::clamp(pixels, 1.0f, 64.0f);
+    update();
+}
+
+bool ViewportWidget::planeValueAt(QPointF position, PlaneValue& out) {
+    if (!m_plane.enabled || !m_lastGoodSdf || !context() || !isValid()) return false;
+    const qreal ratio = devicePixelRatioF();
+    const int width = int(std::lround(this->width() * ratio)), height = int(std::lround(this->height() * ratio));
+    const int x = std::clamp(int(position.x() * ratio), 0, width - 1), y = std::clamp(int(position.y() * ratio), 0, height - 1);
+    // The tracer's own ray through the pixel, and the plane the way tracer/plane.glsl meets it.
+    const glm::vec3 direction = glm::vec3(renderer::primaryRayDirection(m_camera, x, y, width, height));
+    const glm::vec3 normal = glm::length(m_plane.normal) > 0.0f ? glm::normalize(m_plane.normal) : glm::vec3(0, 0, 1);
+    const float denominator = glm::dot(direction, normal);
+    if (std::abs(denominator) < 1e-8f) return false;
+    const float t = (m_plane.offset - glm::dot(m_camera.position, normal)) / denominator;
+    const glm::vec3 p = m_camera.position + t * direction;
+    const float bound = 1.0f + m_trace.boxMargin;
+    if (t <= 0.0f || std::abs(p.x) > bound || std::abs(p.y) > bound || std::abs(p.z) > bound) return false;
+    makeCurrent();
+    if (!m_fieldAtPoint || m_fieldGeneration != m_sdfGeneration) {
+        m_fieldAtPoint = std::make_unique<renderer::SampleCompute>();
+        auto points = shaders::builtinPiece("analysis/points.glsl");
+        m_fieldBroken = !points || shaders::hasErrors(m_fieldAtPoint->build(*m_lastGoodSdf, *points));
+        m_fieldGeneration = m_sdfGeneration;
+    }
+    bool ok = false;
+    if (!m_fieldBroken) {
+        renderer::SampleUniforms uniforms;
+        uniforms.sampleCount = 1;
+        uniforms.time = m_time;
+        uniforms.gradientStep = 1e-4f;
+        uniforms.inputPoints = &p.x;
+        uniforms.sdfParameters = m_parameters;
+        float value = 0.0f, gradient[3] = {0, 0, 0};
+        ok = bool(m_fieldAtPoint->run(uniforms, 0, 1, nullptr, &value, gradient));
+        out = {p, value, std::sqrt(gradient[0] * gradient[0] + gradient[1] * gradient[1] + gradient[2] * gradient[2])};
+    }
+    doneCurrent();
+    return ok;
+}
+
 void ViewportWidget::initializeGL() {
     connect(
         context(), &QOpenGLContext::aboutToBeDestroyed, this,
@@ -199,6 +276,20 @@ void ViewportWidget::paintGL() {
             m_overlayGeneration = m_sdfGeneration;
         }
         m_meshOverlay->draw(width, height, m_camera, m_time, m_parameters, m_meshScale);
+    }
+    if (m_pointCloud->hasPoints()) m_pointCloud->draw(width, height, m_camera, m_pointSize * float(devicePixelRatioF()));
+    if (m_probeTool && m_probeMark.x() >= 0) {
+        QPainter painter(this);
+        const QPointF centre = QPointF(m_probeMark) / devicePixelRatioF() + QPointF(0.5, 0.5);
+        painter.setRenderHint(QPainter::Antialiasing);
+        for (const auto& [colour, width] : {std::pair{QColor(0, 0, 0, 160), 3.0}, std::pair{QColor(255, 230, 0), 1.2}}) {
+            painter.setPen(QPen(colour, width));
+            painter.drawEllipse(centre, 6.0, 6.0);
+            painter.drawLine(centre + QPointF(-12, 0), centre + QPointF(-7, 0));
+            painter.drawLine(centre + QPointF(7, 0), centre + QPointF(12, 0));
+            painter.drawLine(centre + QPointF(0, -12), centre + QPointF(0, -7));
+            painter.drawLine(centre + QPointF(0, 7), centre + QPointF(0, 12));
+        }
     }
     if (!m_overlay.isEmpty()) {
         QPainter painter(this);
@@ -266,6 +357,9 @@ bool ViewportWidget::probeNewSdf(int width, int height) {
 void ViewportWidget::releaseGl() {
     m_renderer->releaseGl();
     m_meshOverlay->releaseGl();
+    m_pointCloud->releaseGl();
+    if (m_fieldAtPoint) m_fieldAtPoint->releaseGl();
+    m_fieldAtPoint.reset();
 }
 
 void ViewportWidget::setMeshOverlay(const std::vector<float>& positions, const std::vector<std::uint32_t>& indices, float scale) {
@@ -289,9 +383,22 @@ void ViewportWidget::interacted() {
 void ViewportWidget::mousePressEvent(QMouseEvent* event) {
     m_lastMouse = event->position().toPoint();
     setFocus();
+    m_probeClick = m_probeTool && event->button() == Qt::LeftButton;
+    if (m_probeClick) {
+        const qreal ratio = devicePixelRatioF();
+        const int width = int(std::lround(this->width() * ratio)), height = int(std::lround(this->height() * ratio));
+        emit pixelProbed(std::clamp(int(event->position().x() * ratio), 0, width - 1),
+                         std::clamp(int(event->position().y() * ratio), 0, height - 1), width, height);
+    }
+}
+
+void ViewportWidget::leaveEvent(QEvent* event) {
+    emit planeHovered(false, {});
+    QOpenGLWidget::leaveEvent(event);
 }
 
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
+    if (event->button() == Qt::LeftButton) m_probeClick = false;
     if (event->button() == Qt::RightButton) {
         m_keys.clear();
         m_flyTimer.stop();
@@ -302,7 +409,15 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
     QPoint position = event->position().toPoint();
     QPoint delta = position - m_lastMouse;
     m_lastMouse = position;
-    if ((event->buttons() & Qt::LeftButton) && (event->modifiers() & Qt::ControlModifier) && m_plane.enabled) {
+    if (event->buttons() == Qt::NoButton) {
+        if (m_plane.enabled) {
+            PlaneValue value;
+            const bool valid = planeValueAt(event->position(), value);
+            emit planeHovered(valid, value);
+        }
+    } else if ((event->buttons() & Qt::LeftButton) && m_probeClick) {
+        // the probe tool's click: the camera stays
+    } else if ((event->buttons() & Qt::LeftButton) && (event->modifiers() & Qt::ControlModifier) && m_plane.enabled) {
         m_plane.offset = std::clamp(m_plane.offset - float(delta.y()) * 0.004f, -1.0f, 1.0f);
         setPlane(m_plane);
         emit planeDragged(m_plane);

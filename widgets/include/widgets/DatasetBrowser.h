@@ -1,17 +1,25 @@
 #pragma once
-// The dataset by category: name, declared type, animated; the metadata (author, license, notes)
-// as a tooltip and below the tree. Activating an entry asks to open its file. UI thread only.
+// The dataset by category: a thumbnail, the name, the measured type (the declared one when the
+// dataset report has no measurement) and the render time from the dataset report; the metadata
+// (author, license, notes) as a tooltip and below the tree. Activating an entry asks to open its
+// file; "New from template" asks for a new SDF. UI thread only.
 
+#include <QHash>
 #include <QWidget>
+
+#include <optional>
 
 class QLabel;
 class QTreeWidget;
+class QTreeWidgetItem;
 
 namespace sdfwb::widgets {
 
 struct DatasetItem {
     QString name, category, type, author, license, notes, path;
     bool animated = false;
+    QString measuredType;                     // from the dataset report; empty: not measured
+    std::optional<double> renderMilliseconds; // 1280x720 Gooch frame, from the dataset report
 };
 
 class DatasetBrowser : public QWidget {
@@ -19,17 +27,33 @@ class DatasetBrowser : public QWidget {
 public:
     explicit DatasetBrowser(QWidget* parent = nullptr);
     void setItems(const QList<DatasetItem>& items);
+    // The report's machine line, shown under the tree ("render times on ...").
+    void setReportNote(const QString& note);
     int count() const;
+    QStringList paths() const;
+    // Shows `imagePath` as the thumbnail of the entry whose file is `sdfPath`; false when unknown.
+    bool setThumbnail(const QString& sdfPath, const QString& imagePath);
+    int thumbnailCount() const { return m_thumbnails.size(); }
+    QString thumbnailOf(const QString& sdfPath) const { return m_thumbnails.value(sdfPath); }
     // Activates the entry named `name` as a double-click would (tests); false when absent.
     bool activate(const QString& name);
+    QTreeWidget* tree() const { return m_tree; }
 
 signals:
     void openRequested(const QString& path);
+    void newRequested();
+    void shown(); // the browser became visible (thumbnails are made on demand)
+
+protected:
+    void showEvent(QShowEvent* event) override;
 
 private:
     QTreeWidget* m_tree = nullptr;
     QLabel* m_details = nullptr;
+    QLabel* m_note = nullptr;
     QList<DatasetItem> m_items;
+    QHash<QString, QTreeWidgetItem*> m_byPath;
+    QHash<QString, QString> m_thumbnails; // SDF path -> image shown
 };
 
 } // namespace sdfwb::widgets

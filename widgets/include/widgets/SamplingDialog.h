@@ -41,8 +41,14 @@ public:
     void setProgress(std::uint64_t done, std::uint64_t total);
     void setMessage(const QString& message, bool error);
 
+    // Preview: the same pattern, seed and time, at most this many points, shown in the viewport.
+    static constexpr std::uint64_t kPreviewPoints = 100000;
+    int pointSize() const;
+
 signals:
     void startRequested(const sdfwb::widgets::SamplingSettings& settings);
+    void previewRequested(const sdfwb::widgets::SamplingSettings& settings);
+    void pointSizeChanged(int pixels);
     void cancelRequested();
 
 private:
@@ -56,6 +62,8 @@ private:
     QProgressBar* m_progress = nullptr;
     QLabel* m_message = nullptr;
     QPushButton* m_start = nullptr;
+    QPushButton* m_preview = nullptr;
+    QSpinBox* m_pointSize = nullptr;
     QPushButton* m_cancel = nullptr;
 };
 

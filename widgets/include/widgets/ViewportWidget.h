@@ -16,6 +16,8 @@
 #include <shaders/Parameters.h>
 #include <shaders/SdfSource.h>
 
+#include <glm/vec3.hpp>
+
 #include <QElapsedTimer>
 #include <QOpenGLWidget>
 #include <QPoint>
@@ -28,6 +30,8 @@
 
 namespace sdfwb::renderer {
 class MeshOverlay;
+class PointCloudOverlay;
+class SampleCompute;
 class SdfRenderer;
 } // namespace sdfwb::renderer
 
@@ -76,6 +80,31 @@ public:
 
     // Renders one full-quality frame at width x height (screenshots). Empty image without GL.
     renderer::Image renderImage(int width, int height);
+    // The same in floating point (EXR): values above 1 are kept.
+    renderer::FloatImage renderFloatImage(int width, int height);
+
+    // The probe tool: while on, a left click does not orbit but emits pixelProbed for the pixel
+    // under the cursor (in the device pixels of a frame of this widget's size).
+    void setProbeTool(bool on);
+    bool probeTool() const { return m_probeTool; }
+    // A cross-hair over the probed pixel (device pixels); (-1, -1) hides it.
+    void setProbeMark(QPoint pixel);
+
+    // The sampled cloud over the surface (3 floats per point each; NaN rows are not drawn), each
+    // point coloured by its gradient; empty positions hide it.
+    void setPointCloud(const std::vector<float>& positions, const std::vector<float>& gradients);
+    std::uint64_t pointCloudSize() const; // points drawn
+    void setPointSize(float pixels);
+    float pointSize() const { return m_pointSize; }
+
+    // The field on the cutting plane under `position` (widget coordinates): false when the plane
+    // is off or the ray misses it within the box. Evaluates the shown SDF (compiled once per SDF).
+    struct PlaneValue {
+        glm::vec3 position{0.0f};
+        float value = 0.0f;
+        float gradientLength = 0.0f;
+    };
+    bool planeValueAt(QPointF position, PlaneValue& out);
 
     // A mesh drawn over the surface, coloured per pixel by the shown SDF's value at the mesh's own
     // point (grey on the zero set, red outside, blue inside, full colour at |f| >= scale): where
@@ -86,6 +115,7 @@ public:
 
     // Text drawn in the lower-left corner (name, author, license); empty hides it.
     void setOverlayText(const QString& text);
+    const QString& overlayText() const { return m_overlay; }
 
     QString contextDescription() const { return m_contextDescription; }
     // Shader programs this viewport's renderer compiled so far (parameter changes add none).
@@ -98,6 +128,10 @@ signals:
     void contextReady(const QString& description);
     // A frame would take too long: `message` says what was done (resolution capped, SDF reverted).
     void performanceWarning(const QString& message);
+    // The probe tool's click: pixel (x, y), top row 0, of a width x height frame.
+    void pixelProbed(int x, int y, int width, int height);
+    // The cursor over the cutting plane (f and |grad f| there), or off it (valid false).
+    void planeHovered(bool valid, const sdfwb::widgets::ViewportWidget::PlaneValue& value);
 
 protected:
     void initializeGL() override;
@@ -109,6 +143,7 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
     void keyReleaseEvent(QKeyEvent* event) override;
     void focusOutEvent(QFocusEvent* event) override;
+    void leaveEvent(QEvent* event) override;
 
 private:
     // Draws the first frame of a new SDF at kProbeScale and sets the resolution cap (or reverts).
@@ -119,6 +154,15 @@ private:
 
     std::unique_ptr<renderer::SdfRenderer> m_renderer;
     std::unique_ptr<renderer::MeshOverlay> m_meshOverlay;
+    std::unique_ptr<renderer::PointCloudOverlay> m_pointCloud;
+    float m_pointSize = 3.0f;
+    bool m_probeTool = false;
+    bool m_probeClick = false; // the left button went down with the probe tool: no orbit
+    QPoint m_probeMark{-1, -1};
+    // The shown SDF at single points (the plane readout under the cursor), built per SDF.
+    std::unique_ptr<renderer::SampleCompute> m_fieldAtPoint;
+    std::uint64_t m_fieldGeneration = 0;
+    bool m_fieldBroken = false;
     float m_meshScale = 0.0f;
     std::uint64_t m_sdfGeneration = 0;     // counts SDFs that passed their probe frame
     std::uint64_t m_overlayGeneration = 0; // the SDF the overlay's shader was built for

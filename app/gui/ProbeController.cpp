@@ -1,0 +1,90 @@
+#include "ProbeController.h"
+
+#include "BatchProcess.h"
+
+#include <core/Log.h>
+#include <jobs/JobJson.h>
+#include <widgets/ProbePanel.h>
+#include <widgets/ViewportWidget.h>
+
+namespace sdfwb::app {
+namespace {
+
+widgets::ProbeView viewOf(const jobs::ProbeReport& report) {
+    widgets::ProbeView view;
+    view.x = report.x;
+    view.y = report.y;
+    view.width = report.width;
+    view.height = report.height;
+    view.outcome = QString::fromStdString(report.outcome);
+    view.reason = QString::fromStdString(report.reason);
+    view.steps = report.steps;
+    view.hitT = report.hitT;
+    view.hitResidual = report.hitResidual;
+    view.footprint = report.footprint;
+    view.oversteps = int(report.oversteps);
+    view.fallbacks = int(report.fallbacks);
+    view.seconds = report.seconds;
+    for (const jobs::ProbeStep& step : report.events)
+        view.rows.push_back(
+            {QString::fromStdString(step.event), step.t, step.position, step.f, step.step, step.gradientLength, step.overstep});
+    return view;
+}
+
+} // namespace
+
+ProbeController::ProbeController(widgets::ProbePanel* panel, widgets::ViewportWidget* viewport,
+                                 std::function<jobs::SdfInput()> currentSdf, QObject* parent)
+    : QObject(parent), m_panel(panel), m_viewport(viewport), m_currentSdf(std::move(currentSdf)),
+      m_process(new BatchProcess(this)) {
+    connect(m_viewport, &widgets::ViewportWidget::pixelProbed, this, &ProbeController::probe);
+    connect(m_process, &BatchProcess::finished, this, [this](bool ok, bool, const std::string& json, const QString& message) {
+        if (m_next) { // a newer click: show that one
+            jobs::ProbeRequest next = *m_next;
+            m_next.reset();
+            m_process->start(next);
+            return;
+        }
+        auto report =
+            ok ? jobs::reportFromJson<jobs::ProbeReport>(json) : Expected<jobs::ProbeReport>(makeError(message.toStdString()));
+        if (!report) {
+            m_panel->setMessage(tr("Probe failed: %1").arg(QString::fromStdString(report.error().message)));
+            log::warning("probe", report.error().message);
+            emit probed(false);
+            return;
+        }
+        m_panel->setView(viewOf(*report));
+        log::info("probe", "pixel " + std::to_string(report->x) + "," + std::to_string(report->y) + ": " + report->outcome +
+                               " after " + std::to_string(report->steps) + " steps, " + std::to_string(report->oversteps) +
+                               " oversteps");
+        emit probed(true);
+    });
+}
+
+void ProbeController::setExecutable(const QString& path) { m_process->setExecutable(path); }
+
+bool ProbeController::isRunning() const { return m_process->isRunning(); }
+
+void ProbeController::probe(int x, int y, int width, int height) {
+    jobs::ProbeRequest request;
+    jobs::FrameRequest& frame = request.frame;
+    frame.sdf = m_currentSdf();
+    frame.width = width;
+    frame.height = height;
+    frame.time = m_viewport->time();
+    frame.shading = m_viewport->shading();
+    frame.trace = m_viewport->trace();
+    frame.camera = m_viewport->camera();
+    frame.plane = m_viewport->plane();
+    request.x = x;
+    request.y = y;
+    m_viewport->setProbeMark(QPoint(x, y));
+    m_panel->setMessage(tr("Probing pixel (%1, %2)...").arg(x).arg(y));
+    if (m_process->isRunning()) {
+        m_next = request;
+        return;
+    }
+    m_process->start(request);
+}
+
+} // namespace sdfwb::app

@@ -1,0 +1,44 @@
+#pragma once
+// The march debugger: the viewport's probe tool clicks a pixel, and this runs `sdfwb --batch probe`
+// on that pixel as a child process with exactly what the viewport shows (the document's text and
+// parameters, camera, trace settings, shading, plane, time, frame size), then fills the probe dock.
+// A click while a probe runs replaces it (the newest pixel wins).
+
+#include <jobs/Requests.h>
+
+#include <QObject>
+
+#include <functional>
+#include <optional>
+
+namespace sdfwb::widgets {
+class ProbePanel;
+class ViewportWidget;
+} // namespace sdfwb::widgets
+
+namespace sdfwb::app {
+
+class BatchProcess;
+
+class ProbeController : public QObject {
+    Q_OBJECT
+public:
+    ProbeController(widgets::ProbePanel* panel, widgets::ViewportWidget* viewport, std::function<jobs::SdfInput()> currentSdf,
+                    QObject* parent = nullptr);
+    void setExecutable(const QString& path);
+    // Probes pixel (x, y), top row 0, of a width x height frame of the viewport's view.
+    void probe(int x, int y, int width, int height);
+    bool isRunning() const;
+
+signals:
+    void probed(bool ok); // the dock shows the march (ok) or why there is none
+
+private:
+    widgets::ProbePanel* m_panel;
+    widgets::ViewportWidget* m_viewport;
+    std::function<jobs::SdfInput()> m_currentSdf;
+    BatchProcess* m_process;
+    std::optional<jobs::ProbeRequest> m_next; // clicked while one ran
+};
+
+} // namespace sdfwb::app

@@ -1,0 +1,175 @@
+#include <widgets/ProbePanel.h>
+
+#include <QHeaderView>
+#include <QLabel>
+#include <QPainter>
+#include <QPainterPath>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sdfwb::widgets {
+namespace {
+
+bool evaluates(const QString& event) {
+    return event == "step" || event == "relaxed step" || event == "fallback" || event == "hit" || event == "refine" ||
+           event == "refine undone";
+}
+
+QString number(float value) { return std::isfinite(value) ? QString::number(double(value), 'g', 6) : QString("nan"); }
+
+} // namespace
+
+ProbePanel::ProbePanel(QWidget* parent) : QWidget(parent) {
+    setObjectName("ProbePanel");
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    m_summary = new QLabel(tr("Turn on Tools > Probe pixel (P) and click the viewport: every step of that pixel's march."));
+    m_summary->setObjectName("probeSummary");
+    m_summary->setWordWrap(true);
+    m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_plot = new MarchPlot;
+    m_table = new QTableWidget(0, 9);
+    m_table->setObjectName("probeTable");
+    m_table->setHorizontalHeaderLabels(
+        {tr("#"), tr("event"), tr("t"), tr("x"), tr("y"), tr("z"), tr("f"), tr("step"), tr("|grad f|")});
+    m_table->verticalHeader()->hide();
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    auto* splitter = new QSplitter(Qt::Vertical);
+    splitter->addWidget(m_plot);
+    splitter->addWidget(m_table);
+    splitter->setStretchFactor(1, 1);
+    layout->addWidget(m_summary);
+    layout->addWidget(splitter, 1);
+    connect(m_table, &QTableWidget::currentCellChanged, this, [this](int row) { m_plot->setSelected(row); });
+}
+
+void ProbePanel::setMessage(const QString& message) { m_summary->setText(message); }
+
+QString ProbePanel::summary() const { return m_summary->text(); }
+
+void ProbePanel::setView(const ProbeView& view) {
+    m_view = view;
+    QString text = tr("<b>Pixel (%1, %2)</b> of %3x%4: <b>%5</b>. %6<br>%7 steps, %8 oversteps, %9 fallbacks; probed in %10 s.")
+                       .arg(view.x)
+                       .arg(view.y)
+                       .arg(view.width)
+                       .arg(view.height)
+                       .arg(view.outcome.toHtmlEscaped(), view.reason.toHtmlEscaped())
+                       .arg(view.steps)
+                       .arg(view.oversteps)
+                       .arg(view.fallbacks)
+                       .arg(view.seconds, 0, 'f', 2);
+    if (view.oversteps > 0)
+        text += tr("<br><span style='color:#d03030'>Oversteps: steps longer than the distance to the surface (f changed "
+                   "sign). Lower the step factor or fix the field's Lipschitz bound.</span>");
+    m_summary->setText(text);
+    m_table->setRowCount(int(view.rows.size()));
+    for (int r = 0; r < int(view.rows.size()); ++r) {
+        const ProbeRowView& row = view.rows[std::size_t(r)];
+        const QStringList cells = {QString::number(r),
+                                   row.overstep ? row.event + tr(" (overstep)") : row.event,
+                                   number(row.t),
+                                   number(row.position.x),
+                                   number(row.position.y),
+                                   number(row.position.z),
+                                   evaluates(row.event) ? number(row.f) : QString(),
+                                   row.step != 0.0f ? number(row.step) : QString(),
+                                   evaluates(row.event) ? number(row.gradientLength) : QString()};
+        for (int c = 0; c < cells.size(); ++c) {
+            auto* item = new QTableWidgetItem(cells[c]);
+            if (row.overstep)
+                item->setForeground(QColor(210, 40, 40));
+            else if (row.event == "fallback")
+                item->setForeground(QColor(220, 130, 20));
+            else if (row.event == "hit")
+                item->setForeground(QColor(30, 150, 60));
+            m_table->setItem(r, c, item);
+        }
+    }
+    m_plot->setRows(view.rows);
+}
+
+MarchPlot::MarchPlot(QWidget* parent) : QWidget(parent) {
+    setObjectName("marchPlot");
+    setMinimumHeight(120);
+}
+
+void MarchPlot::setRows(const std::vector<ProbeRowView>& rows) {
+    m_points.clear();
+    for (int r = 0; r < int(rows.size()); ++r) {
+        const ProbeRowView& row = rows[std::size_t(r)];
+        if (!evaluates(row.event) || !std::isfinite(row.f) || !std::isfinite(row.t)) continue;
+        QColor colour = row.overstep                     ? QColor(220, 40, 40)
+                        : row.event == "fallback"        ? QColor(235, 140, 20)
+                        : row.event == "hit"             ? QColor(30, 170, 70)
+                        : row.event.startsWith("refine") ? QColor(120, 120, 200)
+                                                         : QColor(40, 90, 200);
+        m_points.push_back({row.t, row.f, r, colour});
+    }
+    m_selected = -1;
+    update();
+}
+
+void MarchPlot::setSelected(int row) {
+    m_selected = row;
+    update();
+}
+
+void MarchPlot::paintEvent(QPaintEvent*) {
+    QPainter painter(this);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.fillRect(rect(), palette().base());
+    const QRectF area = QRectF(rect()).adjusted(46, 10, -10, -22);
+    painter.setPen(palette().text().color());
+    if (m_points.empty()) {
+        painter.drawText(rect(), Qt::AlignCenter, tr("f(t) along the probed ray"));
+        return;
+    }
+    float tMin = m_points.front().t, tMax = tMin, fMin = 0.0f, fMax = 0.0f;
+    for (const Point& p : m_points) {
+        tMin = std::min(tMin, p.t);
+        tMax = std::max(tMax, p.t);
+        fMin = std::min(fMin, p.f);
+        fMax = std::max(fMax, p.f);
+    }
+    if (tMax - tMin < 1e-6f) tMax = tMin + 1e-6f;
+    if (fMax - fMin < 1e-6f) fMax = fMin + 1e-6f;
+    auto at = [&](float t, float f) {
+        return QPointF(area.left() + double((t - tMin) / (tMax - tMin)) * area.width(),
+                       area.bottom() - double((f - fMin) / (fMax - fMin)) * area.height());
+    };
+    // Axes: the zero line (the surface) and the value range.
+    painter.setPen(QPen(QColor(128, 128, 128), 1, Qt::DashLine));
+    painter.drawLine(at(tMin, 0.0f), at(tMax, 0.0f));
+    painter.setPen(palette().text().color());
+    painter.drawText(QRectF(0, area.top() - 6, 44, 14), Qt::AlignRight, QString::number(double(fMax), 'g', 3));
+    painter.drawText(QRectF(0, area.bottom() - 8, 44, 14), Qt::AlignRight, QString::number(double(fMin), 'g', 3));
+    painter.drawText(QRectF(area.left(), area.bottom() + 4, 120, 16), Qt::AlignLeft,
+                     QString("t = %1").arg(double(tMin), 0, 'g', 4));
+    painter.drawText(QRectF(area.right() - 120, area.bottom() + 4, 120, 16), Qt::AlignRight,
+                     QString("t = %1").arg(double(tMax), 0, 'g', 4));
+    painter.drawText(QRectF(area.left(), area.bottom() + 4, area.width(), 16), Qt::AlignHCenter, tr("f along the ray"));
+    QPainterPath path(at(m_points.front().t, m_points.front().f));
+    for (const Point& p : m_points) path.lineTo(at(p.t, p.f));
+    painter.setPen(QPen(QColor(90, 90, 90), 1.2));
+    painter.drawPath(path);
+    for (const Point& p : m_points) {
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(p.colour);
+        painter.drawEllipse(at(p.t, p.f), 3.5, 3.5);
+        if (p.row == m_selected) {
+            painter.setBrush(Qt::NoBrush);
+            painter.setPen(QPen(palette().highlight().color(), 2));
+            painter.drawEllipse(at(p.t, p.f), 7.0, 7.0);
+        }
+    }
+}
+
+} // namespace sdfwb::widgets
