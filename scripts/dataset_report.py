@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Builds the dataset report: docs/dataset.md (the paper's Table 1 columns, measured here) and
-docs/images/dataset_gallery.png (a contact sheet of every shape, rendered by sdfwb).
+"""Builds the dataset report: docs/dataset.md (the paper's Table 1 columns, measured here),
+docs/images/dataset_gallery.png (a contact sheet of every shape, rendered by sdfwb) and
+dataset/report.json (the same figures for the workbench's dataset browser: measured type, render ms).
 
     /usr/bin/python3 scripts/dataset_report.py [build/app/sdfwb] [--samples N]
 
@@ -94,4 +95,14 @@ with open(os.path.join(ROOT, "docs", "dataset.md"), "w") as out:
     for r in mismatches:
         out.write(f"- {r['entry']['name']}: declared {r['entry']['declared_type']}, measured {r['audit']['verdict']} "
                   f"({r['audit']['reason']})\n")
+import datetime
+import platform
+with open(os.path.join(ROOT, "dataset", "report.json"), "w") as out:
+    json.dump({"generated_by": "scripts/dataset_report.py",
+               "date": datetime.date.today().isoformat(),
+               "machine": f"{os.cpu_count()} cores, {platform.machine()}, {gl or 'unknown GL'}",
+               "sdfs": [{"name": r["entry"]["name"], "declared_type": r["entry"]["declared_type"],
+                         "measured_type": r["audit"]["verdict"], "lipschitz": round(r["audit"]["lipschitz"], 4),
+                         "render_ms": round(r["ms"], 1), "nan_rows": r["bad"]} for r in rows]}, out, indent=1)
+    out.write("\n")
 print(f"wrote docs/dataset.md and docs/images/dataset_gallery.png ({count} SDFs, {len(mismatches)} type mismatches)")

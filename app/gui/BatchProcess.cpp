@@ -7,7 +7,12 @@
 
 namespace sdfwb::app {
 
-BatchProcess::BatchProcess(QObject* parent) : QObject(parent), m_executable(QCoreApplication::applicationFilePath()) {}
+QString BatchProcess::defaultExecutable() {
+    const QString chosen = qEnvironmentVariable("SDFWB_BATCH_EXECUTABLE");
+    return chosen.isEmpty() ? QCoreApplication::applicationFilePath() : chosen;
+}
+
+BatchProcess::BatchProcess(QObject* parent) : QObject(parent), m_executable(defaultExecutable()) {}
 
 BatchProcess::~BatchProcess() {
     if (isRunning()) {

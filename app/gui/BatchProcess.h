@@ -21,7 +21,8 @@ public:
     explicit BatchProcess(QObject* parent = nullptr);
     ~BatchProcess() override;
 
-    // The sdfwb binary that runs the jobs (default: this executable).
+    // The sdfwb binary that runs the jobs (default: $SDFWB_BATCH_EXECUTABLE, else this executable).
+    static QString defaultExecutable();
     void setExecutable(const QString& path) { m_executable = path; }
     const QString& executable() const { return m_executable; }
 

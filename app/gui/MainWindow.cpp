@@ -541,6 +541,7 @@ void MainWindow::createMenus() {
     relaxation->setCheckable(true);
     m_overlayAction = view->addAction(tr("Show name, author and &license"), this, [this] { updateOverlay(); });
     m_overlayAction->setCheckable(true);
+    m_overlayAction->setObjectName("overlay");
     view->addSeparator();
     view->addAction(tr("Show mesh &deviation..."), this, [this] {
         const QString path = QFileDialog::getOpenFileName(this, tr("Mesh to grade against the field"), QString(),

@@ -1,5 +1,7 @@
 #include "ThumbnailController.h"
 
+#include "BatchProcess.h"
+
 #include <core/Log.h>
 #include <jobs/JobJson.h>
 
@@ -14,7 +16,7 @@
 namespace sdfwb::app {
 
 ThumbnailController::ThumbnailController(QObject* parent)
-    : QObject(parent), m_executable(QCoreApplication::applicationFilePath()),
+    : QObject(parent), m_executable(BatchProcess::defaultExecutable()),
       m_folder(QStandardPaths::writableLocation(QStandardPaths::CacheLocation) + "/thumbnails") {}
 
 ThumbnailController::~ThumbnailController() {

@@ -138,6 +138,24 @@ Expected<void> drawLabel(FloatImage& image, const std::string& text) {
     return drawLabelInto(buffer, text);
 }
 
+Expected<FloatImage> readFloatImage(const fs::path& path) {
+    auto input = OIIO::ImageInput::open(path.string());
+    if (!input) return makeError(path.string() + ": cannot read image: " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = input->spec();
+    const std::size_t pixels = std::size_t(spec.width) * std::size_t(spec.height);
+    std::vector<float> raw(pixels * std::size_t(spec.nchannels));
+    if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, raw.data()))
+        return makeError(path.string() + ": cannot decode image: " + input->geterror());
+    FloatImage image{spec.width, spec.height, std::vector<float>(pixels * 4, 1.0f)};
+    for (std::size_t i = 0; i < pixels; ++i)
+        for (int c = 0; c < 4; ++c)
+            if (c < spec.nchannels)
+                image.rgba[i * 4 + std::size_t(c)] = raw[i * std::size_t(spec.nchannels) + std::size_t(c)];
+            else if (c < 3)
+                image.rgba[i * 4 + std::size_t(c)] = raw[i * std::size_t(spec.nchannels)]; // grey
+    return image;
+}
+
 Expected<Image> readImage(const fs::path& path) {
     auto input = OIIO::ImageInput::open(path.string());
     if (!input) return makeError(path.string() + ": cannot read image: " + OIIO::geterror());

@@ -1,22 +1,28 @@
 // The workbench window under a real X server (Xvfb): the default SDF is drawn by the same
 // renderer as the batch path, and a typed error shows a diagnostic while the last good shape stays.
 
+#include <gui/CloudController.h>
 #include <gui/ExportController.h>
 #include <gui/FileController.h>
 #include <gui/MainWindow.h>
 #include <gui/MeshExportController.h>
 #include <gui/PlaneController.h>
 #include <gui/PlaybackController.h>
+#include <gui/ProbeController.h>
 #include <gui/SamplingController.h>
 #include <gui/SdfDocument.h>
+#include <gui/ThumbnailController.h>
 #include <jobs/Requests.h>
 #include <renderer/ImageIO.h>
+#include <sampling/SampleFile.h>
 #include <widgets/CameraPanel.h>
 #include <widgets/DatasetBrowser.h>
 #include <widgets/ExportDialog.h>
 #include <widgets/GlslEditor.h>
+#include <widgets/LogPanel.h>
 #include <widgets/ParametersPanel.h>
 #include <widgets/PlanePanel.h>
+#include <widgets/ProbePanel.h>
 #include <widgets/ProblemsPanel.h>
 #include <widgets/SamplingDialog.h>
 #include <widgets/TimeBar.h>
@@ -43,6 +49,9 @@
 #include <QDoubleSpinBox>
 #include <QFileInfo>
 #include <QImage>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
@@ -53,7 +62,11 @@
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QSurfaceFormat>
+#include <QTableWidget>
 #include <QThread>
+#include <QToolBar>
+#include <QTreeWidget>
+#include <QtTest/QTest>
 #include <csignal>
 
 #include <cmath>
@@ -1297,8 +1310,360 @@ TEST(MeshDeviation, ColoursAForeignMeshByItsDistanceFromTheField) {
     if (const char* folder = std::getenv("SDFWB_SCREENSHOT_DIR")) window.grab().save(QDir(folder).filePath("mesh_deviation.png"));
 }
 
+// ---- #19: the march debugger, sample clouds, the dataset browser, exports, the log ----
+
+namespace {
+
+QString screenshotPath(const char* name) {
+    const char* folder = std::getenv("SDFWB_SCREENSHOT_DIR");
+    return folder ? QDir(folder).filePath(name) : QString();
+}
+
+QPoint centreOf(QWidget* widget) { return QPoint(widget->width() / 2, widget->height() / 2); }
+
+// Shortcuts reach only the active window (keyboard focus is the window system's to give).
+bool activate(QWidget& window) {
+    window.activateWindow();
+    if (!waitFor([&] { return window.isActiveWindow(); }, 3000)) QApplication::setActiveWindow(&window);
+    return window.isActiveWindow();
+}
+
+// A mouse move with no button over `widget` (what hovering sends).
+void hover(QWidget* widget, QPoint position) {
+    QMouseEvent move(QEvent::MouseMove, position, widget->mapToGlobal(position), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+    QApplication::sendEvent(widget, &move);
+}
+
+} // namespace
+
+// Tools > Probe pixel from its toolbar button, then clicks in the viewport: the dock shows the
+// centre pixel's march ending in a hit on the sphere (table and plot), a corner pixel's miss, and
+// the camera does not move. With the cutting plane on, hovering shows f and |grad f| under the
+// cursor in the status bar, equal to the sphere's closed form at the position it names.
+TEST(MarchDebugger, ClickingAPixelShowsItsMarchAndHoveringThePlaneShowsTheField) {
+    app::MainWindow window;
+    window.resize(1200, 700);
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "Geometry/Sphere.glsl"));
+    window.probe()->setExecutable(SDFWB_BINARY);
+    auto* bar = window.findChild<QToolBar*>("SdfToolBar");
+    ASSERT_NE(bar, nullptr);
+    QWidget* button = bar->widgetForAction(window.probeAction());
+    ASSERT_NE(button, nullptr);
+    QTest::mouseClick(button, Qt::LeftButton);
+    ASSERT_TRUE(window.viewport()->probeTool());
+
+    widgets::ViewportWidget* viewport = window.viewport();
+    const renderer::Camera camera = viewport->camera();
+    int probes = 0;
+    QObject::connect(window.probe(), &app::ProbeController::probed, [&] { ++probes; });
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, centreOf(viewport));
+    ASSERT_TRUE(waitFor([&] { return probes == 1; }, 30000)) << window.probePanel()->summary().toStdString();
+    EXPECT_EQ(viewport->camera(), camera) << "a probe click does not orbit";
+    const widgets::ProbeView& hit = window.probePanel()->view();
+    EXPECT_EQ(hit.outcome, "hit") << hit.reason.toStdString();
+    EXPECT_EQ(hit.x, viewport->width() / 2);
+    ASSERT_FALSE(hit.rows.empty());
+    EXPECT_EQ(hit.rows.front().event, "step");
+    EXPECT_TRUE(std::any_of(hit.rows.begin(), hit.rows.end(), [](const auto& r) { return r.event == "hit"; }));
+    EXPECT_EQ(hit.oversteps, 0) << "an exact field never oversteps";
+    ASSERT_TRUE(hit.hitT.has_value());
+    // The hit lies on the sphere of radius 0.8: the distance from the camera along the ray.
+    const auto& last = *std::find_if(hit.rows.begin(), hit.rows.end(), [](const auto& r) { return r.event == "hit"; });
+    EXPECT_NEAR(glm::length(last.position), 0.8f, 2e-3f);
+    EXPECT_EQ(window.probePanel()->table()->rowCount(), int(hit.rows.size()));
+    EXPECT_GE(window.probePanel()->plot()->markerCount(), hit.steps);
+    // Selecting a row (a click on its cell) rings it in the plot.
+    const QRect cell = window.probePanel()->table()->visualItemRect(window.probePanel()->table()->item(1, 1));
+    QTest::mouseClick(window.probePanel()->table()->viewport(), Qt::LeftButton, Qt::NoModifier, cell.center());
+    EXPECT_EQ(window.probePanel()->table()->currentRow(), 1);
+    if (QString path = screenshotPath("march_debugger.png"); !path.isEmpty()) window.grab().save(path);
+
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, QPoint(2, 2));
+    ASSERT_TRUE(waitFor([&] { return probes == 2; }, 30000));
+    const widgets::ProbeView& miss = window.probePanel()->view();
+    EXPECT_TRUE(miss.outcome == "missed the box" || miss.outcome == "left the box") << miss.outcome.toStdString();
+    EXPECT_TRUE(window.probePanel()->summary().contains(miss.outcome));
+
+    // The probe tool off: a drag orbits again.
+    QTest::mouseClick(button, Qt::LeftButton);
+    EXPECT_FALSE(viewport->probeTool());
+
+    // The plane readout under the cursor.
+    window.planePanel()->findChild<QPushButton*>("axis_Z")->click();
+    ASSERT_TRUE(viewport->plane().enabled);
+    frameOf(window);
+    hover(viewport, centreOf(viewport) + QPoint(40, -25));
+    const QString text = window.planeReadout()->text();
+    ASSERT_TRUE(text.contains("f = ")) << text.toStdString();
+    widgets::ViewportWidget::PlaneValue value;
+    ASSERT_TRUE(viewport->planeValueAt(centreOf(viewport) + QPoint(40, -25), value));
+    EXPECT_NEAR(value.position.z, 0.0f, 1e-4f) << "on the plane z = 0";
+    EXPECT_NEAR(value.value, glm::length(value.position) - 0.8f, 1e-4f);
+    EXPECT_NEAR(value.gradientLength, 1.0f, 1e-2f);
+    EXPECT_TRUE(text.contains(QString::number(double(value.value), 'g', 5))) << text.toStdString();
+    hover(viewport, QPoint(2, 2)); // off the plane (outside the box)
+    EXPECT_TRUE(window.planeReadout()->text().isEmpty());
+}
+
+// The sampling dialog's Preview draws the run's first points in the viewport, coloured by
+// gradient, and its point size spin box (arrow keys) grows them; a sample file with NaN rows
+// shows its cloud with the bad rows counted, not drawn.
+TEST(SampleCloud, PreviewDrawsTheRunAndAFileShowsItsCloudCountingNaNRows) {
+    app::MainWindow window;
+    window.resize(1200, 700);
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
+    window.sampling()->setExecutable(SDFWB_BINARY);
+    const QImage plain = frameOf(window);
+    ASSERT_TRUE(activate(window));
+    QTest::keyClick(&window, Qt::Key_M, Qt::ControlModifier | Qt::ShiftModifier);
+    ASSERT_TRUE(waitFor([&] { return window.sampling()->dialog() && window.sampling()->dialog()->isVisible(); }));
+    widgets::SamplingDialog* dialog = window.sampling()->dialog();
+    auto* count = dialog->findChild<QLineEdit*>("count");
+    count->selectAll();
+    QTest::keyClicks(count, "20000");
+    auto* pattern = dialog->findChild<QComboBox*>("pattern");
+    pattern->lineEdit()->selectAll();
+    QTest::keyClicks(pattern->lineEdit(), "surface");
+    QTest::mouseClick(dialog->findChild<QPushButton*>("preview"), Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return window.viewport()->pointCloudSize() > 0; }, 60000))
+        << dialog->findChild<QLabel*>("message")->text().toStdString();
+    EXPECT_EQ(window.viewport()->pointCloudSize(), 20000u) << "surface points on a torus all hit";
+    const QImage small = frameOf(window);
+    EXPECT_GT(meanDifference(plain, small), 1.0) << "the points are drawn";
+    auto* size = dialog->findChild<QSpinBox*>("pointSize");
+    const float before = window.viewport()->pointSize();
+    for (int i = 0; i < 3; ++i) QTest::keyClick(size, Qt::Key_Up);
+    EXPECT_FLOAT_EQ(window.viewport()->pointSize(), before + 3.0f);
+    const QImage large = frameOf(window);
+    EXPECT_GT(meanDifference(plain, large), meanDifference(plain, small)) << "larger points cover more";
+    dialog->close();
+    if (QString path = screenshotPath("sample_cloud.png"); !path.isEmpty()) window.grab().save(path);
+
+    // A file of 1000 rows, 37 of them NaN (as surface/near write misses).
+    QTemporaryDir folder;
+    sampling::SampleSet set;
+    for (int i = 0; i < 1000; ++i) {
+        const float angle = float(i) * 0.01f, nan = std::nanf("");
+        const bool bad = i % 27 == 0;
+        set.positions.insert(set.positions.end(), {bad ? nan : 0.5f * std::cos(angle), bad ? nan : 0.0f, 0.5f * std::sin(angle)});
+        set.distances.push_back(bad ? nan : 0.0f);
+        set.gradients.insert(set.gradients.end(), {std::cos(angle), 0.0f, std::sin(angle)});
+    }
+    const QString file = folder.filePath("cloud.npz");
+    ASSERT_TRUE(sampling::writeSamples(file.toStdString(), sampling::SampleFormat::Npz, set, {}));
+    auto loaded = window.clouds()->show(file);
+    ASSERT_TRUE(loaded);
+    EXPECT_EQ(loaded->rows, 1000u);
+    EXPECT_EQ(loaded->badRows, 38u);
+    EXPECT_EQ(loaded->drawn, 962u);
+    EXPECT_EQ(window.viewport()->pointCloudSize(), 962u);
+    EXPECT_TRUE(window.statusBar()->currentMessage().contains("38 NaN")) << window.statusBar()->currentMessage().toStdString();
+    // A file that is not samples leaves the cloud as it was.
+    const QString broken = folder.filePath("broken.npz");
+    {
+        QFile f(broken);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write("not a zip");
+    }
+    EXPECT_FALSE(window.clouds()->show(broken));
+    EXPECT_TRUE(window.statusBar()->currentMessage().contains("broken.npz"));
+    EXPECT_EQ(window.viewport()->pointCloudSize(), 962u);
+    window.clouds()->hide();
+    EXPECT_EQ(window.viewport()->pointCloudSize(), 0u);
+}
+
+// Thumbnails are rendered once per file content (an edit renders a new one, an unchanged file
+// none), the browser shows the report's measured type, "New SDF from template" opens the
+// template, and a shipped file typed into is saved only under a new name: the shipped file keeps
+// its bytes, and saving onto it is refused.
+TEST(DatasetBrowser, ThumbnailsMeasuredTypesTemplateAndReadOnlyShippedFiles) {
+    app::MainWindow window;
+    window.resize(1200, 700);
+    window.show();
+    QTemporaryDir cache, mine;
+    window.thumbnails()->setExecutable(SDFWB_BINARY);
+    window.thumbnails()->setCacheFolder(cache.path());
+    const QStringList three = {datasetFile("Geometry/Sphere.glsl"), datasetFile("Geometry/Torus.glsl"),
+                               datasetFile("Geometry/Box.glsl")};
+    window.thumbnails()->request(three);
+    ASSERT_TRUE(waitFor([&] { return window.datasetBrowser()->thumbnailCount() >= 3; }, 60000));
+    EXPECT_EQ(window.thumbnails()->rendered(), 3);
+    const QImage torus(window.datasetBrowser()->thumbnailOf(three[1]));
+    ASSERT_EQ(torus.size(), QSize(96, 96));
+    EXPECT_GT(foreground(torus, kBackground), 96 * 96 / 10) << "the thumbnail shows the shape";
+    window.thumbnails()->request(three);
+    EXPECT_EQ(window.thumbnails()->rendered(), 3) << "cached: nothing rendered again";
+    // An SDF of the user's: edited, it gets a new thumbnail.
+    const QString own = mine.filePath("own.glsl");
+    auto write = [](const QString& path, const QByteArray& text) {
+        QFile f(path);
+        return f.open(QIODevice::WriteOnly) && f.write(text) == text.size();
+    };
+    ASSERT_TRUE(write(own, "float sdf(vec3 p) { return length(p) - 0.5; }\n"));
+    window.thumbnails()->request({own});
+    ASSERT_TRUE(waitFor([&] { return window.thumbnails()->rendered() == 4; }, 60000));
+    const QString first = window.thumbnails()->cachedThumbnail(own);
+    ASSERT_TRUE(write(own, "float sdf(vec3 p) { return length(p) - 0.9; }\n"));
+    EXPECT_TRUE(window.thumbnails()->cachedThumbnail(own).isEmpty()) << "the old thumbnail is not this content's";
+    window.thumbnails()->request({own});
+    ASSERT_TRUE(waitFor([&] { return window.thumbnails()->rendered() == 5; }, 60000));
+    EXPECT_NE(window.thumbnails()->cachedThumbnail(own), first);
+    EXPECT_GT(foreground(QImage(window.thumbnails()->cachedThumbnail(own)), kBackground), foreground(QImage(first), kBackground))
+        << "the larger sphere covers more";
+
+    // The measured type column comes from dataset/report.json.
+    QFile report(SDFWB_SOURCE_DIR "/dataset/report.json");
+    ASSERT_TRUE(report.open(QIODevice::ReadOnly));
+    const QJsonArray entries = QJsonDocument::fromJson(report.readAll()).object().value("sdfs").toArray();
+    ASSERT_GT(entries.size(), 60);
+    QHash<QString, QString> measured;
+    for (const QJsonValue& e : entries)
+        measured.insert(e.toObject().value("name").toString(), e.toObject().value("measured_type").toString());
+    int checked = 0;
+    QTreeWidget* tree = window.datasetBrowser()->tree();
+    for (int c = 0; c < tree->topLevelItemCount(); ++c)
+        for (int i = 0; i < tree->topLevelItem(c)->childCount(); ++i) {
+            QTreeWidgetItem* item = tree->topLevelItem(c)->child(i);
+            ASSERT_TRUE(measured.contains(item->text(0))) << item->text(0).toStdString();
+            EXPECT_TRUE(item->text(1).startsWith(measured.value(item->text(0)))) << item->text(0).toStdString();
+            EXPECT_FALSE(item->text(2).isEmpty()) << "render ms of " << item->text(0).toStdString();
+            ++checked;
+        }
+    EXPECT_EQ(checked, window.datasetBrowser()->count());
+
+    // New SDF from template, by its button.
+    window.findChild<QDockWidget*>("DatasetDock")->raise();
+    QTest::mouseClick(window.datasetBrowser()->findChild<QPushButton*>("newFromTemplate"), Qt::LeftButton);
+    EXPECT_TRUE(window.editor()->text().contains("name: New Shape"));
+    EXPECT_TRUE(window.document()->path().isEmpty());
+    if (QString path = screenshotPath("dataset_browser.png"); !path.isEmpty()) {
+        window.thumbnails()->request(window.datasetBrowser()->paths());
+        waitFor([&] { return window.datasetBrowser()->thumbnailCount() == window.datasetBrowser()->count(); }, 240000);
+        window.grab().save(path);
+    }
+    window.files()->setPrompt([](const QString&) { return app::FileController::Answer::No; });
+
+    // A shipped file: typed into, Ctrl+S asks for a new name in the user's folder.
+    const QString shipped = datasetFile("Geometry/Torus.glsl");
+    QFile original(shipped);
+    ASSERT_TRUE(original.open(QIODevice::ReadOnly));
+    const QByteArray bytes = original.readAll();
+    original.close();
+    ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
+    EXPECT_TRUE(window.windowTitle().contains("read-only"));
+    window.editor()->setFocus();
+    window.editor()->setCursorPosition(0, 0);
+    QTest::keyClicks(window.editor(), "// mine\n");
+    ASSERT_TRUE(window.editor()->isModified());
+    QString suggested;
+    const QString target = mine.filePath("MyTorus.glsl");
+    window.setSavePathChooser([&](const QString& path) {
+        suggested = path;
+        return target;
+    });
+    ASSERT_TRUE(activate(window));
+    QTest::keyClick(window.editor(), Qt::Key_S, Qt::ControlModifier);
+    ASSERT_TRUE(waitFor([&] { return QFile::exists(target); }, 5000)) << "Save asked for a new name";
+    EXPECT_TRUE(suggested.endsWith("sdfwb/Torus.glsl")) << suggested.toStdString();
+    EXPECT_FALSE(app::FileController::isShipped(suggested));
+    QFile after(shipped);
+    ASSERT_TRUE(after.open(QIODevice::ReadOnly));
+    EXPECT_EQ(after.readAll(), bytes) << "the shipped file is untouched";
+    QFile saved(target);
+    ASSERT_TRUE(saved.open(QIODevice::ReadOnly));
+    EXPECT_TRUE(saved.readAll().startsWith("// mine\n"));
+    EXPECT_EQ(window.document()->path(), QFileInfo(target).absoluteFilePath());
+    EXPECT_FALSE(window.files()->saveAs(shipped)) << "never onto a shipped file";
+    QFile again(shipped);
+    ASSERT_TRUE(again.open(QIODevice::ReadOnly));
+    EXPECT_EQ(again.readAll(), bytes);
+}
+
+// A screenshot to .exr keeps values above 1 (an HDR background of (3, 2, 0.5) and Gooch's
+// highlights), the overlay box darkens the lower-left corner, and a background image shows
+// where rays miss.
+TEST(Export, ExrKeepsValuesAboveOneBackgroundImageAndOverlay) {
+    app::MainWindow window;
+    window.resize(1200, 700);
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
+    window.setShadingMode(renderer::ShadingMode::Gooch);
+    window.setBackgroundColour({3.0f, 2.0f, 0.5f});
+    QTemporaryDir folder;
+    const QString exr = folder.filePath("frame.exr");
+    ASSERT_TRUE(window.exports()->saveScreenshot(exr, 320, 180).isEmpty());
+    auto image = renderer::readFloatImage(exr.toStdString());
+    ASSERT_TRUE(image);
+    const float* corner = image->pixel(319, 0);
+    EXPECT_NEAR(corner[0], 3.0f, 0.01f);
+    EXPECT_NEAR(corner[1], 2.0f, 0.01f);
+    EXPECT_NEAR(corner[2], 0.5f, 0.01f);
+    float brightestShape = 0.0f;
+    for (int y = 0; y < 180; ++y)
+        for (int x = 0; x < 320; ++x)
+            if (const float* p = image->pixel(x, y); std::abs(p[1] - 2.0f) > 0.05f)
+                brightestShape = std::max(brightestShape, p[0]);
+    EXPECT_GT(brightestShape, 1.0f) << "Gooch highlights above 1 are kept";
+
+    // The overlay, turned on from the View menu's action.
+    window.findChild<QAction*>("overlay")->trigger();
+    ASSERT_FALSE(window.viewport()->overlayText().isEmpty());
+    ASSERT_TRUE(window.exports()->saveScreenshot(exr, 320, 180).isEmpty());
+    auto labelled = renderer::readFloatImage(exr.toStdString());
+    ASSERT_TRUE(labelled);
+    EXPECT_LT(labelled->pixel(6, 172)[0], 2.0f) << "the label's box darkens the corner";
+    EXPECT_NEAR(labelled->pixel(319, 0)[0], 3.0f, 0.01f);
+
+    // A background image (solid magenta) where rays miss.
+    const QString magenta = folder.filePath("magenta.png");
+    QImage fill(64, 32, QImage::Format_RGB32);
+    fill.fill(QColor(255, 0, 255));
+    ASSERT_TRUE(fill.save(magenta));
+    window.setBackgroundImage(magenta);
+    const QImage frame = frameOf(window);
+    const QColor c = frame.pixelColor(frame.width() - 3, 3);
+    EXPECT_GT(c.red(), 240);
+    EXPECT_LT(c.green(), 15);
+    EXPECT_GT(c.blue(), 240);
+    if (QString path = screenshotPath("background_overlay.png"); !path.isEmpty()) window.grab().save(path);
+}
+
+// The Log dock shows the log file's lines: the GL context, compile times, the first full frame's
+// time, and an error (a file that cannot be opened) in both the dock and the file.
+TEST(LogDock, ShowsTheLogFileLines) {
+    app::MainWindow window;
+    window.resize(1200, 700);
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "Geometry/Box.glsl"));
+    ASSERT_TRUE(waitFor([&] { return window.logPanel()->text().contains("first full frame"); }));
+    const QString text = window.logPanel()->text();
+    EXPECT_TRUE(text.contains("viewport context:")) << "GL vendor, renderer and version";
+    EXPECT_TRUE(text.contains("compiled ")) << "shader compile times";
+    EXPECT_FALSE(window.openFile("/nonexistent/broken.glsl"));
+    ASSERT_TRUE(waitFor([&] { return window.logPanel()->text().contains("broken.glsl"); }));
+    QFile file(window.logFilePath());
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QString logged = QString::fromUtf8(file.readAll());
+    EXPECT_TRUE(logged.contains("[error] app:") && logged.contains("broken.glsl"));
+    EXPECT_TRUE(logged.contains("first full frame"));
+    // The filter: errors only.
+    auto* level = window.logPanel()->findChild<QComboBox*>("logLevel");
+    level->setFocus();
+    QTest::keyClick(level, Qt::Key_Down);
+    QTest::keyClick(level, Qt::Key_Down);
+    EXPECT_EQ(level->currentIndex(), 2);
+    EXPECT_FALSE(window.logPanel()->text().contains("compiled "));
+    EXPECT_TRUE(window.logPanel()->text().contains("broken.glsl"));
+    window.findChild<QDockWidget*>("LogDock")->raise();
+    if (QString path = screenshotPath("log_dock.png"); !path.isEmpty()) window.grab().save(path);
+}
+
 int main(int argc, char** argv) {
     QStandardPaths::setTestModeEnabled(true); // no user settings read or written
+    // Jobs the window starts on its own (thumbnails, probes) run the real sdfwb, never this binary.
+    qputenv("SDFWB_BATCH_EXECUTABLE", SDFWB_BINARY);
     QSurfaceFormat format;
     format.setVersion(4, 3);
     format.setProfile(QSurfaceFormat::CoreProfile);

@@ -25,6 +25,9 @@ bool isHighDynamicRange(const std::filesystem::path& path);
 Expected<void> drawLabel(Image& image, const std::string& text);
 Expected<void> drawLabel(FloatImage& image, const std::string& text);
 
+// Any image as float RGBA (EXR values above 1 kept; 8-bit files scaled to [0,1]).
+Expected<FloatImage> readFloatImage(const std::filesystem::path& path);
+
 Expected<Image> readImage(const std::filesystem::path& path);
 
 // True when OpenImageIO can write files with this extension (".png").
