@@ -115,7 +115,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_probeDock = addDock(tr("March debugger"), "ProbeDock", m_probePanel, Qt::LeftDockWidgetArea);
     m_logDock = addDock(tr("Log"), "LogDock", m_logPanel, Qt::BottomDockWidgetArea);
     setUpLog();
-    loadDatasetItems();
+    loadDatasetItems(QString::fromStdString((paths::datasetRoot() / "report.json").string()));
     splitDockWidget(m_editorDock, m_problemsDock, Qt::Vertical);
     resizeDocks({m_editorDock, m_problemsDock}, {640, 120}, Qt::Vertical);
     m_timeBar->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
@@ -154,7 +154,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_thumbnails = new ThumbnailController(this);
     connect(m_thumbnails, &ThumbnailController::thumbnailReady, m_browser, &widgets::DatasetBrowser::setThumbnail);
     // Thumbnails are made when the browser is first looked at (cached after that).
-    connect(m_browser, &widgets::DatasetBrowser::shown, this, [this] { m_thumbnails->request(m_browser->paths()); });
+    connect(m_browserDock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible) m_thumbnails->request(m_browser->paths());
+    });
     connect(m_browser, &widgets::DatasetBrowser::newRequested, this, [this] {
         if (!m_editor->isModified() || m_files->confirmClose()) m_files->newFromTemplate();
     });
@@ -344,11 +346,11 @@ void MainWindow::setUpLog() {
     log::info("app", "sdfwb " SDFWB_VERSION " log: " + m_logFilePath.toStdString());
 }
 
-void MainWindow::loadDatasetItems() {
+void MainWindow::loadDatasetItems(const QString& reportPath) {
     // Measured type and render time from the dataset report (scripts/dataset_report.py).
     QHash<QString, QJsonObject> measured;
     QString note;
-    QFile report(QString::fromStdString((paths::datasetRoot() / "report.json").string()));
+    QFile report(reportPath);
     if (report.open(QIODevice::ReadOnly)) {
         const QJsonObject root = QJsonDocument::fromJson(report.readAll()).object();
         for (const QJsonValue& entry : root.value("sdfs").toArray())

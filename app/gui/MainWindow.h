@@ -81,6 +81,9 @@ public:
     // file dialog. Tests answer it (no modal dialog blocks a test).
     using PathChooser = std::function<QString(const QString& suggested)>;
     void setSavePathChooser(PathChooser chooser) { m_chooseSavePath = std::move(chooser); }
+    // Fills the dataset browser from the catalogue, with measured types and render times from the
+    // dataset report `reportPath` (scripts/dataset_report.py writes dataset/report.json).
+    void loadDatasetItems(const QString& reportPath);
     // The same for choosing a background image and colour (View menu).
     void setBackgroundColour(const glm::vec3& colour);
     void setBackgroundImage(const QString& path);
@@ -107,7 +110,6 @@ private:
     void updateRecentMenu();
     void saveAsWithDialog();
     void setUpLog();
-    void loadDatasetItems();
 
     widgets::GlslEditor* m_editor = nullptr;
     widgets::ViewportWidget* m_viewport = nullptr;
