@@ -110,26 +110,24 @@ JobResult<RenderReport> run(const RenderRequest& request, const ProgressSink&) {
     const FrameRequest& frame = request.frame;
     const std::string label = frame.overlay ? overlayText(frame, *sdf, report.warnings) : std::string();
     // High-dynamic-range files get the float frame (highlights and backgrounds above 1 kept).
-    Expected<void> written;
-    if (renderer::isHighDynamicRange(request.output)) {
-        renderer::FloatImage image;
-        {
+    // One frame (8-bit or float), labelled and written.
+    auto renderAndWrite = [&](auto draw) {
+        auto image = [&] {
             renderer::OffscreenRenderer offscreen;
-            image = offscreen.renderFloat(tracer, frame.width, frame.height, frame.camera, frame.time, &stats);
-        }
+            return draw(offscreen);
+        }();
         tracer.releaseGl();
         if (!label.empty()) drawOverlay(image, label, report.warnings);
-        written = renderer::writeImage(request.output, image);
-    } else {
-        renderer::Image image;
-        {
-            renderer::OffscreenRenderer offscreen;
-            image = offscreen.render(tracer, frame.width, frame.height, frame.camera, frame.time, &stats);
-        }
-        tracer.releaseGl();
-        if (!label.empty()) drawOverlay(image, label, report.warnings);
-        written = renderer::writeImage(request.output, image);
-    }
+        return renderer::writeImage(request.output, image);
+    };
+    const Expected<void> written =
+        renderer::isHighDynamicRange(request.output)
+            ? renderAndWrite([&](renderer::OffscreenRenderer& o) {
+                  return o.renderFloat(tracer, frame.width, frame.height, frame.camera, frame.time, &stats);
+              })
+            : renderAndWrite([&](renderer::OffscreenRenderer& o) {
+                  return o.render(tracer, frame.width, frame.height, frame.camera, frame.time, &stats);
+              });
     if (!written) return JobError{Failure::Work, written.error().message, {}};
     report.output = request.output;
     report.sdf = sdf->label;
