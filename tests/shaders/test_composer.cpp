@@ -152,10 +152,13 @@ TEST(BuiltinShaders, EveryEmbeddedFileCompilesWithGlslangInItsStage) {
         EXPECT_FALSE(hasErrors(checkWithGlslang(*stage))) << file;
         covered.insert(file);
     }
-    auto composite = composeBuiltinShader(Stage::Fragment, "overlay/composite.frag", {});
-    ASSERT_TRUE(composite.hasValue());
-    EXPECT_FALSE(hasErrors(checkWithGlslang(*composite)));
-    covered.insert("overlay/composite.frag");
+    // The composite and the point cloud's dots stand alone (no SDF).
+    for (const char* file : {"overlay/composite.frag", "overlay/points.frag"}) {
+        auto stage = composeBuiltinShader(Stage::Fragment, file, {});
+        ASSERT_TRUE(stage.hasValue());
+        EXPECT_FALSE(hasErrors(checkWithGlslang(*stage))) << file;
+        covered.insert(file);
+    }
     check(Stage::Fragment, {"overlay/mesh_deviation.frag"});
     {
         // Users' code in the overlay too: the G3D dialect (Point3, saturate, the host's noise
