@@ -43,21 +43,73 @@ std::uint32_t squareSide(std::uint64_t count) {
     return std::uint32_t(std::max<std::uint64_t>(n, 1));
 }
 
+// Positions, distances and gradients of one dispatch. Mapped sets are allocated immutable and
+// stay mapped (persistent, coherent), so the host reads the rows where the shader wrote them.
+struct BufferSet {
+    GlBuffer buffers[3];
+    const float* mapped[3] = {};
+    std::uint32_t capacity = 0;
+
+    void reset() {
+        for (GlBuffer& buffer : buffers) buffer.reset(); // deleting a buffer unmaps it
+        for (const float*& pointer : mapped) pointer = nullptr;
+        capacity = 0;
+    }
+    void release() {
+        for (GlBuffer& buffer : buffers) buffer.release();
+    }
+};
+
 struct SampleCompute::Impl {
     GlProgram program;
-    GlBuffer buffers[3];
-    GlBuffer inputs; // caller's points (analysis/points.glsl)
-    GlTexture noise; // g3d_uniformRandom, made when the program reads it
-    std::uint32_t capacity = 0;
+    BufferSet plain;     // run(): read back with glGetBufferSubData
+    BufferSet slots[2];  // runMapped()
+    GlBuffer badRows;    // one uint: the dispatch's rows with a non-finite value
+    GlBuffer inputs;     // caller's points (analysis/points.glsl)
+    GlTexture noise;     // g3d_uniformRandom, made when the program reads it
     std::string source;
     GLint location(const char* name) const { return glGetUniformLocation(program.id(), name); }
+    Expected<void> reserve(BufferSet& set, std::uint32_t count, bool mapped);
+    Expected<std::uint32_t> dispatch(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, BufferSet& set,
+                                     bool positions, bool gradients);
 };
+
+Expected<void> SampleCompute::Impl::reserve(BufferSet& set, std::uint32_t count, bool mapped) {
+    if (count <= set.capacity) return {};
+    set.reset();
+    while (glGetError() != GL_NO_ERROR) {}
+    const GLsizeiptr sizes[3] = {GLsizeiptr(count) * 12, GLsizeiptr(count) * 4, GLsizeiptr(count) * 12};
+    const GLbitfield access = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+    for (int i = 0; i < 3; ++i) {
+        GLuint id = 0;
+        glGenBuffers(1, &id);
+        set.buffers[i] = GlBuffer(id);
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
+        if (mapped) {
+            glBufferStorage(GL_SHADER_STORAGE_BUFFER, sizes[i], nullptr, access);
+            set.mapped[i] = static_cast<const float*>(glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, sizes[i], access));
+        } else {
+            glBufferData(GL_SHADER_STORAGE_BUFFER, sizes[i], nullptr, GL_DYNAMIC_READ);
+        }
+    }
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    const GLenum error = glGetError();
+    if (error != GL_NO_ERROR || (mapped && (!set.mapped[0] || !set.mapped[1] || !set.mapped[2]))) {
+        set.reset();
+        return makeError("sampling: cannot allocate buffers for " + std::to_string(count) + " samples (" +
+                         (error != GL_NO_ERROR ? glErrorName(error) : std::string("mapping failed")) + "); try a smaller --chunk");
+    }
+    set.capacity = count;
+    return {};
+}
 
 SampleCompute::SampleCompute() : m_impl(std::make_unique<Impl>()) {}
 
 SampleCompute::~SampleCompute() {
     m_impl->program.release();
-    for (GlBuffer& buffer : m_impl->buffers) buffer.release();
+    m_impl->plain.release();
+    for (BufferSet& set : m_impl->slots) set.release();
+    m_impl->badRows.release();
     m_impl->inputs.release();
     m_impl->noise.release();
 }
@@ -97,92 +149,112 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     return diagnostics;
 }
 
-Expected<void> SampleCompute::run(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, float* positions,
-                                  float* distances, float* gradients) {
-    if (!m_impl->program) return makeError("sampling: no compiled sampler");
-    if (count == 0) return {};
-    if (count > kMaxChunk)
-        return makeError("sampling: chunk of " + std::to_string(count) + " exceeds " + std::to_string(kMaxChunk));
-    while (glGetError() != GL_NO_ERROR) {}
-    if (count > m_impl->capacity) {
-        const GLsizeiptr sizes[3] = {GLsizeiptr(count) * 12, GLsizeiptr(count) * 4, GLsizeiptr(count) * 12};
-        for (int i = 0; i < 3; ++i) {
-            GLuint id = 0;
-            glGenBuffers(1, &id);
-            m_impl->buffers[i] = GlBuffer(id);
-            glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
-            glBufferData(GL_SHADER_STORAGE_BUFFER, sizes[i], nullptr, GL_DYNAMIC_READ);
-        }
-        if (GLenum error = glGetError(); error != GL_NO_ERROR) {
-            for (GlBuffer& buffer : m_impl->buffers) buffer.reset();
-            m_impl->capacity = 0;
-            return makeError("sampling: cannot allocate buffers for " + std::to_string(count) + " samples (" +
-                             glErrorName(error) + "); try a smaller --chunk");
-        }
-        m_impl->capacity = count;
+Expected<std::uint32_t> SampleCompute::Impl::dispatch(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count,
+                                                      BufferSet& set, bool positions, bool gradients) {
+    glUseProgram(program.id());
+    glUniform1ui(location("sdfwb_sampleCount"), uniforms.sampleCount);
+    glUniform2ui(location("sdfwb_seed"), GLuint(uniforms.seed & 0xffffffffu), GLuint(uniforms.seed >> 32));
+    glUniform1f(location("sdfwb_gradientStep"), uniforms.gradientStep);
+    glUniform1ui(location("sdfwb_cubeSide"), cubeSide(uniforms.sampleCount));
+    glUniform1ui(location("sdfwb_squareSide"), squareSide(uniforms.sampleCount));
+    if (GLint at = location("sdfwb_time"); at >= 0) glUniform1f(at, uniforms.time);
+    if (GLint at = location("g3d_SceneTime"); at >= 0) glUniform1f(at, uniforms.time); // declared by the file
+    bindNoiseTextureIfUsed(program.id(), noise);
+    if (GLint at = location("sdfwb_parameters"); at >= 0) glUniform4fv(at, 4, uniforms.parameters);
+    if (GLint at = location("sdfwb_surfaceTolerance"); at >= 0) glUniform1f(at, uniforms.surfaceTolerance);
+    if (GLint at = location("sdfwb_tetrahedralGradient"); at >= 0) glUniform1i(at, uniforms.tetrahedralGradient ? 1 : 0);
+    applyParameters(uniforms.sdfParameters, [this](const char* name) { return location(name); });
+    // A target not wanted is skipped by the shader (the gradient's six evaluations included).
+    if (GLint at = location("sdfwb_writePosition"); at >= 0) glUniform1i(at, positions ? 1 : 0);
+    if (GLint at = location("sdfwb_writeGradient"); at >= 0) glUniform1i(at, gradients ? 1 : 0);
+    glUniform1ui(location("sdfwb_chunkFirst"), first);
+    glUniform1ui(location("sdfwb_chunkCount"), count);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingPositions, set.buffers[0].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingDistances, set.buffers[1].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingGradients, set.buffers[2].id());
+    if (!badRows) {
+        GLuint id = 0;
+        glGenBuffers(1, &id);
+        badRows = GlBuffer(id);
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
+        glBufferData(GL_SHADER_STORAGE_BUFFER, 4, nullptr, GL_DYNAMIC_READ);
     }
-    glUseProgram(m_impl->program.id());
-    glUniform1ui(m_impl->location("sdfwb_sampleCount"), uniforms.sampleCount);
-    glUniform2ui(m_impl->location("sdfwb_seed"), GLuint(uniforms.seed & 0xffffffffu), GLuint(uniforms.seed >> 32));
-    glUniform1f(m_impl->location("sdfwb_gradientStep"), uniforms.gradientStep);
-    glUniform1ui(m_impl->location("sdfwb_cubeSide"), cubeSide(uniforms.sampleCount));
-    glUniform1ui(m_impl->location("sdfwb_squareSide"), squareSide(uniforms.sampleCount));
-    if (GLint location = m_impl->location("sdfwb_time"); location >= 0) glUniform1f(location, uniforms.time);
-    if (GLint location = m_impl->location("g3d_SceneTime"); location >= 0)
-        glUniform1f(location, uniforms.time); // declared by the file
-    bindNoiseTextureIfUsed(m_impl->program.id(), m_impl->noise);
-    if (GLint location = m_impl->location("sdfwb_parameters"); location >= 0) glUniform4fv(location, 4, uniforms.parameters);
-    if (GLint location = m_impl->location("sdfwb_surfaceTolerance"); location >= 0)
-        glUniform1f(location, uniforms.surfaceTolerance);
-    if (GLint location = m_impl->location("sdfwb_tetrahedralGradient"); location >= 0)
-        glUniform1i(location, uniforms.tetrahedralGradient ? 1 : 0);
-    applyParameters(uniforms.sdfParameters, [this](const char* name) { return m_impl->location(name); });
-    // A null target is not wanted: the shader skips it (the gradient's six evaluations included).
-    if (GLint location = m_impl->location("sdfwb_writePosition"); location >= 0) glUniform1i(location, positions ? 1 : 0);
-    if (GLint location = m_impl->location("sdfwb_writeGradient"); location >= 0) glUniform1i(location, gradients ? 1 : 0);
-    glUniform1ui(m_impl->location("sdfwb_chunkFirst"), first);
-    glUniform1ui(m_impl->location("sdfwb_chunkCount"), count);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingPositions, m_impl->buffers[0].id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingDistances, m_impl->buffers[1].id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingGradients, m_impl->buffers[2].id());
+    const std::uint32_t zero = 0;
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, badRows.id());
+    glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 4, &zero);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingBadRows, badRows.id());
     if (uniforms.inputPoints) {
-        if (!m_impl->inputs) {
+        if (!inputs) {
             GLuint id = 0;
             glGenBuffers(1, &id);
-            m_impl->inputs = GlBuffer(id);
+            inputs = GlBuffer(id);
         }
-        glBindBuffer(GL_SHADER_STORAGE_BUFFER, m_impl->inputs.id());
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, inputs.id());
         if (uniforms.inputTableFloats > 0)
             glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(uniforms.inputTableFloats * sizeof(float)), uniforms.inputPoints,
                          GL_STREAM_DRAW);
         else
             glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(count) * 12, uniforms.inputPoints + 3 * std::size_t(first),
                          GL_STREAM_DRAW);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingInputs, m_impl->inputs.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingInputs, inputs.id());
     }
     glDispatchCompute((count + 63u) / 64u, 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    float* targets[3] = {positions, distances, gradients};
-    const GLsizeiptr sizes[3] = {GLsizeiptr(count) * 12, GLsizeiptr(count) * 4, GLsizeiptr(count) * 12};
-    for (int i = 0; i < 3; ++i) {
-        if (!targets[i]) continue;
-        glBindBuffer(GL_SHADER_STORAGE_BUFFER, m_impl->buffers[i].id());
-        glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizes[i], targets[i]);
-    }
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
+    std::uint32_t bad = 0;
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, badRows.id());
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 4, &bad); // waits for the dispatch
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     glUseProgram(0);
     if (GLenum error = glGetError(); error != GL_NO_ERROR)
         return makeError("sampling: dispatch of " + std::to_string(count) + " samples failed (" + glErrorName(error) +
                          "); try a smaller --chunk");
-    return {};
+    return bad;
+}
+
+Expected<std::uint32_t> SampleCompute::run(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count,
+                                           float* positions, float* distances, float* gradients) {
+    if (!m_impl->program) return makeError("sampling: no compiled sampler");
+    if (count == 0) return 0u;
+    if (count > kMaxChunk) return makeError("sampling: chunk of " + std::to_string(count) + " exceeds " + std::to_string(kMaxChunk));
+    while (glGetError() != GL_NO_ERROR) {}
+    if (auto ok = m_impl->reserve(m_impl->plain, count, false); !ok) return ok.error();
+    auto bad = m_impl->dispatch(uniforms, first, count, m_impl->plain, positions, gradients);
+    if (!bad) return bad;
+    float* targets[3] = {positions, distances, gradients};
+    const GLsizeiptr sizes[3] = {GLsizeiptr(count) * 12, GLsizeiptr(count) * 4, GLsizeiptr(count) * 12};
+    for (int i = 0; i < 3; ++i) {
+        if (!targets[i]) continue;
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, m_impl->plain.buffers[i].id());
+        glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizes[i], targets[i]);
+    }
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    if (GLenum error = glGetError(); error != GL_NO_ERROR)
+        return makeError("sampling: reading back " + std::to_string(count) + " samples failed (" + glErrorName(error) + ")");
+    return bad;
+}
+
+Expected<MappedRows> SampleCompute::runMapped(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, int slot) {
+    if (!m_impl->program) return makeError("sampling: no compiled sampler");
+    if (count > kMaxChunk) return makeError("sampling: chunk of " + std::to_string(count) + " exceeds " + std::to_string(kMaxChunk));
+    BufferSet& set = m_impl->slots[slot & 1];
+    while (glGetError() != GL_NO_ERROR) {}
+    if (auto ok = m_impl->reserve(set, std::max(count, 1u), true); !ok) return ok.error();
+    auto bad = m_impl->dispatch(uniforms, first, count, set, true, true);
+    if (!bad) return bad.error();
+    // The count's read-back waited for the dispatch; coherent mappings see its writes after a fence.
+    GLsync fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, GLuint64(60) * 1000000000u);
+    glDeleteSync(fence);
+    return MappedRows{set.mapped[0], set.mapped[1], set.mapped[2], *bad};
 }
 
 void SampleCompute::releaseGl() {
     m_impl->program.reset();
-    for (GlBuffer& buffer : m_impl->buffers) buffer.reset();
+    m_impl->plain.reset();
+    for (BufferSet& set : m_impl->slots) set.reset();
+    m_impl->badRows.reset();
     m_impl->inputs.reset();
     m_impl->noise.reset();
-    m_impl->capacity = 0;
 }
 
 } // namespace sdfwb::renderer

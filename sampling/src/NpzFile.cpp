@@ -7,6 +7,7 @@
 
 #include <core/Regex.h>
 
+#include <isa-l/crc.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -16,6 +17,8 @@
 
 namespace sdfwb::sampling::detail {
 namespace {
+
+constexpr std::uint64_t kBlockBytes = 256u << 10; // written and checksummed together
 
 constexpr std::uint32_t kLocalSignature = 0x04034b50;
 constexpr std::uint32_t kCentralSignature = 0x02014b50;
@@ -202,14 +205,15 @@ public:
         if (m_written + n > m_rows) return makeError(m_file.target().string() + ": more rows than announced");
         const float* data[3] = {positions, distances, gradients};
         for (int i = 0; i < 3; ++i) {
-            std::uint64_t bytes = m_rowBytes[i] * n;
-            if (auto ok = m_file.writeAt(m_payload[i] + m_rowBytes[i] * m_written, data[i], bytes); !ok) return ok;
-            // zlib's crc32 takes at most 4 GiB per call.
-            const Bytef* cursor = reinterpret_cast<const Bytef*>(data[i]);
-            for (std::uint64_t left = bytes; left > 0;) {
-                uInt step = uInt(std::min<std::uint64_t>(left, 1u << 30));
-                m_big[i].crc = std::uint32_t(crc32(m_big[i].crc, cursor, step));
+            // In blocks that stay in the cache between the write's copy and the CRC's read.
+            const unsigned char* cursor = reinterpret_cast<const unsigned char*>(data[i]);
+            std::uint64_t offset = m_payload[i] + m_rowBytes[i] * m_written;
+            for (std::uint64_t left = m_rowBytes[i] * n; left > 0;) {
+                const std::size_t step = std::size_t(std::min<std::uint64_t>(left, kBlockBytes));
+                if (auto ok = m_file.writeAt(offset, cursor, step); !ok) return ok;
+                m_big[i].crc = crc32_gzip_refl(m_big[i].crc, cursor, step);
                 cursor += step;
+                offset += step;
                 left -= step;
             }
         }

@@ -30,6 +30,7 @@ private:
     std::string m_temporary;
     int m_fd = -1;
     bool m_committed = false;
+    std::uint64_t m_unflushed = 0; // bytes written since the disk was last asked to start writing
 };
 
 // A read-only file with positional reads; errors name the file. fromBytes() serves the same

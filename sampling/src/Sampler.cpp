@@ -7,30 +7,24 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
+#include <deque>
 #include <iterator>
+#include <mutex>
+#include <optional>
+#include <thread>
 #include <vector>
 
 namespace sdfwb::sampling {
 namespace {
 
-std::uint64_t countBadRows(const float* positions, const float* distances, const float* gradients, std::size_t n) {
-    std::uint64_t bad = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        bool finite = std::isfinite(distances[i]);
-        for (int c = 0; c < 3 && finite; ++c)
-            finite = (!positions || std::isfinite(positions[3 * i + std::size_t(c)])) &&
-                     (!gradients || std::isfinite(gradients[3 * i + std::size_t(c)]));
-        bad += !finite;
-    }
-    return bad;
-}
-
 constexpr std::uint32_t kSmallestChunk = 4096;
 
-// Runs the job chunk by chunk; `consume` receives each chunk's rows in order.
-template <class Target, class Consume>
-Expected<SamplingReport> run(renderer::SampleCompute& compute, const SamplingJob& job, Target target, Consume consume,
-                             const ProgressSink& progress) {
+// Runs the job chunk by chunk. `dispatch(uniforms, first, done, count)` computes rows [done,
+// done + count) of this run (global index first) and returns them as renderer::MappedRows;
+// `consume(rows, count)` receives each chunk's rows in order.
+template <class Dispatch, class Consume>
+Expected<SamplingReport> run(const SamplingJob& job, Dispatch dispatch, Consume consume, const ProgressSink& progress) {
     if (auto ok = validate(job); !ok) return ok.error();
     auto start = std::chrono::steady_clock::now();
     SamplingReport report;
@@ -54,30 +48,25 @@ Expected<SamplingReport> run(renderer::SampleCompute& compute, const SamplingJob
             break;
         }
         std::uint32_t count = std::uint32_t(std::min<std::uint64_t>(chunk, rows - done));
-        float *positions = nullptr, *distances = nullptr, *gradients = nullptr;
-        Expected<void> ok;
+        Expected<renderer::MappedRows> chunkRows = makeError("");
         try {
-            auto pointers = target(done, count);
-            positions = pointers.positions;
-            distances = pointers.distances;
-            gradients = pointers.gradients;
-            ok = compute.run(uniforms, std::uint32_t(report.firstIndex + done), count, positions, distances, gradients);
+            chunkRows = dispatch(uniforms, std::uint32_t(report.firstIndex + done), done, count);
         } catch (const std::bad_alloc&) {
-            ok = makeError("sampling: out of memory for a chunk of " + std::to_string(count) + " samples (" +
-                           std::to_string(std::uint64_t(count) * 28u >> 20) + " MiB on the host)");
+            chunkRows = makeError("sampling: out of memory for a chunk of " + std::to_string(count) + " samples (" +
+                                  std::to_string(std::uint64_t(count) * 28u >> 20) + " MiB on the host)");
         }
-        if (!ok) {
+        if (!chunkRows) {
             // Out of GPU/driver memory (or another failed dispatch): rows depend only on their
             // index, so the same rows can be made in smaller pieces. Halve down to 4096.
-            if (count <= kSmallestChunk) return ok.error();
+            if (count <= kSmallestChunk) return chunkRows.error();
             chunk = std::max(kSmallestChunk, count / 2);
-            std::string message = ok.error().message;
+            std::string message = chunkRows.error().message;
             if (message.rfind("sampling: ", 0) == 0) message.erase(0, 10);
             log::warning("sampling", message + "; continuing in chunks of " + std::to_string(chunk) + " samples");
             continue;
         }
-        report.badRows += countBadRows(positions, distances, gradients, count);
-        if (auto ok = consume(positions, distances, gradients, count); !ok) return ok.error();
+        report.badRows += chunkRows->badRows;
+        if (auto ok = consume(*chunkRows, count); !ok) return ok.error();
         done += count;
         report.rows = done;
         progress(done, rows);
@@ -86,10 +75,85 @@ Expected<SamplingReport> run(renderer::SampleCompute& compute, const SamplingJob
     return report;
 }
 
-struct Pointers {
-    float* positions;
-    float* distances;
-    float* gradients;
+// Writes chunk k on its own thread while the GL thread computes chunk k + 1 into the other of
+// SampleCompute's two mapped buffer sets: the writer reads the rows where the shader wrote them.
+// The first write error stops the run at the next chunk.
+class PipelinedWriter {
+public:
+    explicit PipelinedWriter(SampleWriter& writer) : m_writer(writer), m_thread([this] { loop(); }) {}
+    PipelinedWriter(const PipelinedWriter&) = delete;
+    PipelinedWriter& operator=(const PipelinedWriter&) = delete;
+    ~PipelinedWriter() {
+        {
+            std::lock_guard lock(m_mutex);
+            m_stop = true;
+        }
+        m_changed.notify_all();
+        m_thread.join();
+    }
+
+    // The slot the next chunk is computed into, once the writer no longer reads it.
+    int nextSlot() {
+        std::unique_lock lock(m_mutex);
+        m_changed.wait(lock, [&] { return !m_busy[m_next]; });
+        return m_next;
+    }
+
+    // Hands the chunk computed into nextSlot() to the writer.
+    Expected<void> submit(const renderer::MappedRows& rows, std::size_t n) {
+        {
+            std::lock_guard lock(m_mutex);
+            if (m_error) return *m_error;
+            m_busy[m_next] = true;
+            m_queue.push_back({rows, n, m_next});
+        }
+        m_changed.notify_all();
+        m_next ^= 1;
+        return {};
+    }
+
+    // Waits until every submitted chunk is written.
+    Expected<void> drain() {
+        std::unique_lock lock(m_mutex);
+        m_changed.wait(lock, [&] { return m_queue.empty() && !m_busy[0] && !m_busy[1]; });
+        if (m_error) return *m_error;
+        return {};
+    }
+
+private:
+    struct Chunk {
+        renderer::MappedRows rows;
+        std::size_t n;
+        int slot;
+    };
+
+    void loop() {
+        std::unique_lock lock(m_mutex);
+        for (;;) {
+            m_changed.wait(lock, [&] { return m_stop || !m_queue.empty(); });
+            if (m_queue.empty()) return; // stopping with nothing left
+            const Chunk chunk = m_queue.front();
+            m_queue.pop_front();
+            const bool skip = m_error.has_value();
+            lock.unlock();
+            Expected<void> ok;
+            if (!skip) ok = m_writer.append(chunk.rows.positions, chunk.rows.distances, chunk.rows.gradients, chunk.n);
+            lock.lock();
+            if (!ok && !m_error) m_error = ok.error();
+            m_busy[chunk.slot] = false;
+            m_changed.notify_all();
+        }
+    }
+
+    SampleWriter& m_writer;
+    bool m_busy[2] = {false, false};
+    int m_next = 0; // the slot the GL thread computes into next (its thread only)
+    std::deque<Chunk> m_queue;
+    std::optional<Error> m_error;
+    bool m_stop = false;
+    std::mutex m_mutex;
+    std::condition_variable m_changed;
+    std::thread m_thread; // last: starts after everything it uses
 };
 
 } // namespace
@@ -115,16 +179,21 @@ Expected<void> validate(const SamplingJob& job) {
 
 Expected<SamplingReport> sampleInto(renderer::SampleCompute& compute, const SamplingJob& job, float* positions, float* distances,
                                     float* gradients, const ProgressSink& progress) {
-    auto target = [&](std::uint64_t done, std::uint32_t) {
-        return Pointers{positions ? positions + 3 * done : nullptr, distances + done, gradients ? gradients + 3 * done : nullptr};
+    auto dispatch = [&](const renderer::SampleUniforms& uniforms, std::uint32_t first, std::uint64_t done,
+                        std::uint32_t count) -> Expected<renderer::MappedRows> {
+        auto bad = compute.run(uniforms, first, count, positions ? positions + 3 * done : nullptr, distances + done,
+                               gradients ? gradients + 3 * done : nullptr);
+        if (!bad) return bad.error();
+        return renderer::MappedRows{nullptr, nullptr, nullptr, *bad};
     };
-    auto consume = [](const float*, const float*, const float*, std::size_t) -> Expected<void> { return {}; };
-    return run(compute, job, target, consume, progress);
+    auto consume = [](const renderer::MappedRows&, std::size_t) -> Expected<void> { return {}; };
+    return run(job, dispatch, consume, progress);
 }
 
 Expected<SamplingReport> sampleToFile(renderer::SampleCompute& compute, const SamplingJob& job, const std::filesystem::path& path,
                                       SampleFormat format, const SampleMetadata& metadata, const ProgressSink& progress) {
     if (auto ok = validate(job); !ok) return ok.error();
+    const auto start = std::chrono::steady_clock::now();
     SampleMetadata full = metadata;
     full.seed = job.seed;
     full.time = job.time;
@@ -132,20 +201,18 @@ Expected<SamplingReport> sampleToFile(renderer::SampleCompute& compute, const Sa
     full.totalCount = job.count;
     auto writer = SampleWriter::create(path, format, job.rows(), full);
     if (!writer) return writer.error();
-    std::vector<float> positions, distances, gradients;
-    auto target = [&](std::uint64_t, std::uint32_t count) {
-        for (std::vector<float>* v : {&positions, &distances, &gradients}) {
-            const std::size_t size = (v == &distances ? 1 : 3) * std::size_t(count);
-            v->resize(size);
-            if (v->capacity() > 2 * size) v->shrink_to_fit(); // after a failed larger chunk: give the memory back
-        }
-        return Pointers{positions.data(), distances.data(), gradients.data()};
+    PipelinedWriter pipeline(**writer);
+    auto dispatch = [&](const renderer::SampleUniforms& uniforms, std::uint32_t first, std::uint64_t, std::uint32_t count) {
+        return compute.runMapped(uniforms, first, count, pipeline.nextSlot());
     };
-    auto consume = [&](const float* p, const float* d, const float* g, std::size_t n) { return (*writer)->append(p, d, g, n); };
-    auto report = run(compute, job, target, consume, progress);
+    auto consume = [&](const renderer::MappedRows& rows, std::size_t n) { return pipeline.submit(rows, n); };
+    auto report = run(job, dispatch, consume, progress);
+    if (auto ok = pipeline.drain(); !ok) return ok.error();
     if (!report) return report;
     if (!report->cancelled)
         if (auto ok = (*writer)->commit(); !ok) return ok.error();
+    // End to end: the last chunk's writing and the flush to disk included.
+    report->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report; // a cancelled writer is dropped here: its temporary file is removed
 }
 

@@ -8,6 +8,9 @@ layout(local_size_x = 64) in;
 layout(std430, binding = SDFWB_BINDING_POSITIONS) writeonly buffer sdfwb_Positions { float sdfwb_positions[]; };
 layout(std430, binding = SDFWB_BINDING_DISTANCES) writeonly buffer sdfwb_Distances { float sdfwb_distances[]; };
 layout(std430, binding = SDFWB_BINDING_GRADIENTS) writeonly buffer sdfwb_Gradients { float sdfwb_gradients[]; };
+// Rows with a NaN or infinity in any value written (misses, broken fields), counted here so the
+// host does not read every row again.
+layout(std430, binding = SDFWB_BINDING_BAD_ROWS) buffer sdfwb_BadRowCount { uint sdfwb_badRows; };
 
 uniform uint sdfwb_chunkCount;  // samples in this chunk
 // Callers that need only the field's value (a mesher's lattice, evaluate(gradient=False)) turn
@@ -31,6 +34,12 @@ void main() {
         distance = nan;
         gradient = vec3(nan);
     }
+    // By the bits (all-ones exponent), which no compiler's fast-math folding can remove.
+    const uint exponent = 0x7f800000u;
+    bool finite = (floatBitsToUint(distance) & exponent) != exponent;
+    if (sdfwb_writePosition) finite = finite && all(notEqual(floatBitsToUint(position) & exponent, uvec3(exponent)));
+    if (sdfwb_writeGradient) finite = finite && all(notEqual(floatBitsToUint(gradient) & exponent, uvec3(exponent)));
+    if (!finite) atomicAdd(sdfwb_badRows, 1u);
     if (sdfwb_writePosition) {
         sdfwb_positions[3u * local + 0u] = position.x;
         sdfwb_positions[3u * local + 1u] = position.y;

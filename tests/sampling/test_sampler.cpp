@@ -76,6 +76,7 @@ TEST(SamplingBindings, CppConstantsMatchTheGlslFile) {
     EXPECT_NE(text.str().find("SDFWB_BINDING_DISTANCES " + std::to_string(renderer::kBindingDistances)), std::string::npos);
     EXPECT_NE(text.str().find("SDFWB_BINDING_GRADIENTS " + std::to_string(renderer::kBindingGradients)), std::string::npos);
     EXPECT_NE(text.str().find("SDFWB_BINDING_INPUTS " + std::to_string(renderer::kBindingInputs)), std::string::npos);
+    EXPECT_NE(text.str().find("SDFWB_BINDING_BAD_ROWS " + std::to_string(renderer::kBindingBadRows)), std::string::npos);
 }
 
 TEST_F(SamplerTest, EveryPatternMatchesTheSpheresClosedForm) {

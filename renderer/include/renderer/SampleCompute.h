@@ -33,6 +33,13 @@ struct SampleUniforms {
     std::vector<shaders::ParameterSetting> sdfParameters;
 };
 
+struct MappedRows {
+    const float* positions; // 3 per row
+    const float* distances;
+    const float* gradients; // 3 per row
+    std::uint32_t badRows;  // rows with a NaN or infinity
+};
+
 class SampleCompute {
 public:
     // Largest chunk one dispatch may take (65535 work groups of 64).
@@ -49,8 +56,15 @@ public:
     // Samples global indices [first, first + count) into the given arrays (3*count, count,
     // 3*count floats). count <= kMaxChunk. Fails on GL errors (e.g. out of memory) with a message.
     // Null positions or gradients are neither written nor read back (no gradient evaluations).
-    Expected<void> run(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, float* positions,
-                       float* distances, float* gradients);
+    // Returns the number of rows with a NaN or infinity in a written value (counted on the GPU).
+    Expected<std::uint32_t> run(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, float* positions,
+                                float* distances, float* gradients);
+
+    // The same rows (all three arrays), left where the shader wrote them: buffer set `slot` (0 or
+    // 1) stays mapped, so nothing is copied on the host. The pointers are valid until the next
+    // runMapped() into the same slot, releaseGl() or destruction; two slots let one chunk be
+    // written out while the next is computed.
+    Expected<MappedRows> runMapped(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, int slot);
 
     // The composed compute source (for tests and the log).
     const std::string& source() const;

@@ -8,5 +8,6 @@ inline constexpr int kBindingPositions = 0;
 inline constexpr int kBindingDistances = 1;
 inline constexpr int kBindingGradients = 2;
 inline constexpr int kBindingInputs = 3;
+inline constexpr int kBindingBadRows = 4;
 
 } // namespace sdfwb::renderer

@@ -1,0 +1,161 @@
+// Sampling end to end against its two limits, all measured in this run on the same field, pattern
+// and folder:
+//   compute  the same sampler dispatched chunk by chunk with read-back into one reused buffer,
+//            nothing written (what the GL side alone costs);
+//   write    the same number of bytes written to a file in the same folder, in blocks of one
+//            chunk's rows, then fsync (what the disk alone costs);
+//   sdfwb    sampling::sampleToFile, as `sdfwb --batch sample` runs it (compute, format, write,
+//            fsync, rename), without process start-up and shader compile.
+// A run that overlapped compute and writing perfectly would take max(compute, write); the ratio
+// printed is max(compute, write) / sdfwb (1.0 = perfect overlap). Medians of 5 runs (compute: 3).
+//
+//   build/bench/bench_sample_files [N [FOLDER]]     (default N = 20,000,000, FOLDER = $TMPDIR or /tmp)
+
+#include <renderer/HeadlessContext.h>
+#include <renderer/SampleCompute.h>
+#include <sampling/SampleFile.h>
+#include <sampling/Sampler.h>
+#include <sampling/SamplerLibrary.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fcntl.h>
+#include <filesystem>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+using namespace sdfwb;
+namespace fs = std::filesystem;
+
+namespace {
+
+// The CSG field: a box minus a sphere, plus a torus.
+const char* kField = "float box(vec3 p, vec3 b) { vec3 q = abs(p) - b; return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), "
+                     "0.0); }\n"
+                     "float sdf(vec3 p) { float d = max(box(p, vec3(0.6)), -(length(p) - 0.75));\n"
+                     "  vec2 t = vec2(length(p.xz) - 0.7, p.y); return min(d, length(t) - 0.12); }\n";
+
+double seconds(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+template <class M> double median3(M measure) {
+    double runs[3] = {measure(), measure(), measure()};
+    std::sort(runs, runs + 3);
+    return runs[1];
+}
+
+// Bare compute: every chunk dispatched and read back into the same buffers.
+double computeSeconds(renderer::SampleCompute& compute, const sampling::SamplingJob& job) {
+    std::vector<float> positions(3 * std::size_t(job.chunkSize)), distances(job.chunkSize), gradients(3 * std::size_t(job.chunkSize));
+    renderer::SampleUniforms uniforms;
+    uniforms.sampleCount = std::uint32_t(job.count);
+    uniforms.seed = job.seed;
+    uniforms.gradientStep = job.gradientStep;
+    uniforms.surfaceTolerance = job.surfaceTolerance;
+    auto start = std::chrono::steady_clock::now();
+    for (std::uint64_t done = 0; done < job.count;) {
+        const std::uint32_t count = std::uint32_t(std::min<std::uint64_t>(job.chunkSize, job.count - done));
+        if (auto ok = compute.run(uniforms, std::uint32_t(done), count, positions.data(), distances.data(), gradients.data()); !ok) {
+            std::fprintf(stderr, "bench_sample_files: %s\n", ok.error().message.c_str());
+            std::exit(1);
+        }
+        done += count;
+    }
+    return seconds(start);
+}
+
+// The disk alone: `bytes` written in blocks of `block` bytes, then fsync; the file is removed.
+double writeSeconds(const fs::path& folder, std::uint64_t bytes, std::size_t block) {
+    const std::vector<char> data(block, 'x');
+    const std::string path = (folder / "bench_sample_files.write").string();
+    auto start = std::chrono::steady_clock::now();
+    int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0) {
+        std::perror(path.c_str());
+        std::exit(1);
+    }
+    for (std::uint64_t done = 0; done < bytes;) {
+        const std::size_t size = std::size_t(std::min<std::uint64_t>(block, bytes - done));
+        if (::write(fd, data.data(), size) != ssize_t(size)) {
+            std::perror(path.c_str());
+            std::exit(1);
+        }
+        done += size;
+    }
+    ::fsync(fd);
+    ::close(fd);
+    const double elapsed = seconds(start);
+    ::unlink(path.c_str());
+    return elapsed;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    const std::uint64_t n = argc > 1 ? std::uint64_t(std::atoll(argv[1])) : 20000000;
+    const char* tmp = std::getenv("TMPDIR");
+    const fs::path folder = argc > 2 ? fs::path(argv[2]) : fs::path(tmp && *tmp ? tmp : "/tmp");
+    auto context = renderer::HeadlessContext::create();
+    if (!context) {
+        std::fprintf(stderr, "bench_sample_files: %s\n", context.error().message.c_str());
+        return 3;
+    }
+    std::printf("sampling end to end, N = %llu rows of the CSG field (box - sphere + torus), into %s; GL: %s; median of 5 (compute 3) "
+                "runs\n\n",
+                (unsigned long long)n, folder.c_str(), context.value()->info().renderer.c_str());
+    std::printf("| pattern | format | file MB | compute s | write s | sdfwb s | sdfwb Msamples/s | max(compute, write) / sdfwb |\n");
+    std::printf("|---|---|---|---|---|---|---|---|\n");
+    for (const char* pattern : {"rand", "near"}) {
+        auto sampler = sampling::findSampler(pattern, {});
+        if (!sampler) {
+            std::fprintf(stderr, "bench_sample_files: %s\n", sampler.error().message.c_str());
+            return 1;
+        }
+        renderer::SampleCompute compute;
+        auto diagnostics = compute.build(shaders::prepareSdf(kField, "csg", {}, {}), *sampler);
+        if (shaders::hasErrors(diagnostics)) {
+            std::fprintf(stderr, "%s\n", shaders::formatDiagnostic(diagnostics[0]).c_str());
+            return 1;
+        }
+        sampling::SamplingJob job;
+        job.count = n;
+        sampling::SamplingJob warm = job;
+        warm.count = 1u << 16;
+        computeSeconds(compute, warm); // the driver's code generation, outside every figure
+        const double computeTime = median3([&] { return computeSeconds(compute, job); });
+        for (sampling::SampleFormat format : {sampling::SampleFormat::Bin, sampling::SampleFormat::Npz, sampling::SampleFormat::Ply}) {
+            const fs::path path = folder / (std::string("bench_sample_files.") + sampling::formatName(format));
+            sampling::SampleMetadata metadata;
+            metadata.sdf = "csg";
+            metadata.pattern = pattern;
+            // Each repetition writes the file and then the same bytes raw, one after the other, so
+            // both see the disk in the same state (its speed drifts between minutes here).
+            double endToEndRuns[5], writeRuns[5];
+            for (int k = 0; k < 5; ++k) {
+                auto report = sampling::sampleToFile(compute, job, path, format, metadata, {});
+                if (!report) {
+                    std::fprintf(stderr, "bench_sample_files: %s\n", report.error().message.c_str());
+                    return 1;
+                }
+                const std::uint64_t bytes = fs::file_size(path);
+                fs::remove(path);
+                endToEndRuns[k] = report->seconds;
+                writeRuns[k] = writeSeconds(folder, bytes, std::size_t(job.chunkSize) * 28);
+                if (k == 0) std::printf("| %s | %s | %.0f ", pattern, sampling::formatName(format), double(bytes) / 1e6);
+            }
+            std::sort(endToEndRuns, endToEndRuns + 5);
+            std::sort(writeRuns, writeRuns + 5);
+            const double endToEnd = endToEndRuns[2], writeTime = writeRuns[2];
+            const double bound = std::max(computeTime, writeTime);
+            std::printf("| %.3f | %.3f | %.3f | %.1f | %.2f |\n", computeTime, writeTime, endToEnd, double(n) / endToEnd / 1e6,
+                        bound / endToEnd);
+            std::fflush(stdout);
+        }
+        compute.releaseGl();
+    }
+    return 0;
+}
