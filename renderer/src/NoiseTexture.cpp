@@ -25,6 +25,7 @@ void bindNoiseTextureIfUsed(GLuint program, GlTexture& texture) {
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kNoiseTextureSize, kNoiseTextureSize, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                      texels.data());
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4); // the default, which others sharing the context assume
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);

@@ -56,6 +56,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMouseEvent>
+#include <QPainter>
 #include <QPushButton>
 #include <QSlider>
 #include <QSpinBox>
@@ -1332,6 +1333,19 @@ QString screenshotPath(const char* name) {
 
 QPoint centreOf(QWidget* widget) { return QPoint(widget->width() / 2, widget->height() / 2); }
 
+// The window as the screen shows it. QWidget::grab() draws the viewport's GL frame without what
+// paintGL paints over it with QPainter (the probe's cross-hair, the name/author/license text), so
+// the viewport's own framebuffer is laid over its place.
+QImage windowShot(app::MainWindow& window) {
+    QPixmap shot = window.grab();
+    widgets::ViewportWidget* viewport = window.viewport();
+    if (viewport->isVisible()) {
+        QPainter painter(&shot);
+        painter.drawImage(QRect(viewport->mapTo(&window, QPoint(0, 0)), viewport->size()), viewport->grabFramebuffer());
+    }
+    return shot.toImage();
+}
+
 // Shortcuts reach only the active window (keyboard focus is the window system's to give).
 bool activate(QWidget& window) {
     window.activateWindow();
@@ -1371,6 +1385,18 @@ TEST(MarchDebugger, ClickingAPixelShowsItsMarchAndHoveringThePlaneShowsTheField)
     QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, centreOf(viewport));
     ASSERT_TRUE(waitFor([&] { return probes == 1; }, 30000)) << window.probePanel()->summary().toStdString();
     EXPECT_EQ(viewport->camera(), camera) << "a probe click does not orbit";
+    {
+        // The cross-hair: a yellow ring of radius 6 around the probed pixel.
+        const QImage frame = frameOf(window);
+        const QPoint centre = centreOf(viewport);
+        int yellow = 0;
+        for (int dy = -13; dy <= 13; ++dy)
+            for (int dx = -13; dx <= 13; ++dx) {
+                const QColor c = frame.pixelColor(centre + QPoint(dx, dy));
+                yellow += c.red() > 200 && c.green() > 180 && c.blue() < 90;
+            }
+        EXPECT_GT(yellow, 20) << "the probed pixel is marked";
+    }
     const widgets::ProbeView& hit = window.probePanel()->view();
     EXPECT_EQ(hit.outcome, "hit") << hit.reason.toStdString();
     EXPECT_EQ(hit.x, viewport->width() / 2);
@@ -1388,7 +1414,7 @@ TEST(MarchDebugger, ClickingAPixelShowsItsMarchAndHoveringThePlaneShowsTheField)
     const QRect cell = window.probePanel()->table()->visualItemRect(window.probePanel()->table()->item(1, 1));
     QTest::mouseClick(window.probePanel()->table()->viewport(), Qt::LeftButton, Qt::NoModifier, cell.center());
     EXPECT_EQ(window.probePanel()->table()->currentRow(), 1);
-    if (QString path = screenshotPath("march_debugger.png"); !path.isEmpty()) window.grab().save(path);
+    if (QString path = screenshotPath("march_debugger.png"); !path.isEmpty()) windowShot(window).save(path);
 
     QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, QPoint(2, 2));
     ASSERT_TRUE(waitFor([&] { return probes == 2; }, 30000));
@@ -1452,7 +1478,7 @@ TEST(SampleCloud, PreviewDrawsTheRunAndAFileShowsItsCloudCountingNaNRows) {
     const QImage large = frameOf(window);
     EXPECT_GT(changedPixels(plain, large), changedPixels(plain, small) * 6 / 5) << "larger points cover more";
     dialog->close();
-    if (QString path = screenshotPath("sample_cloud.png"); !path.isEmpty()) window.grab().save(path);
+    if (QString path = screenshotPath("sample_cloud.png"); !path.isEmpty()) windowShot(window).save(path);
 
     // A file of 1000 rows, 37 of them NaN (as surface/near write misses).
     QTemporaryDir folder;
@@ -1564,7 +1590,7 @@ TEST(DatasetBrowser, ThumbnailsMeasuredTypesTemplateAndReadOnlyShippedFiles) {
     if (QString path = screenshotPath("dataset_browser.png"); !path.isEmpty()) {
         window.thumbnails()->request(window.datasetBrowser()->paths());
         waitFor([&] { return window.datasetBrowser()->thumbnailCount() == window.datasetBrowser()->count(); }, 240000);
-        window.grab().save(path);
+        windowShot(window).save(path);
     }
     window.files()->setPrompt([](const QString&) { return app::FileController::Answer::No; });
 
@@ -1651,7 +1677,7 @@ TEST(Export, ExrKeepsValuesAboveOneBackgroundImageAndOverlay) {
     EXPECT_GT(c.red(), 240);
     EXPECT_LT(c.green(), 15);
     EXPECT_GT(c.blue(), 240);
-    if (QString path = screenshotPath("background_overlay.png"); !path.isEmpty()) window.grab().save(path);
+    if (QString path = screenshotPath("background_overlay.png"); !path.isEmpty()) windowShot(window).save(path);
 }
 
 // The Log dock shows the log file's lines: the GL context, compile times, the first full frame's
@@ -1681,7 +1707,7 @@ TEST(LogDock, ShowsTheLogFileLines) {
     EXPECT_FALSE(window.logPanel()->text().contains("compiled "));
     EXPECT_TRUE(window.logPanel()->text().contains("broken.glsl"));
     window.findChild<QDockWidget*>("LogDock")->raise();
-    if (QString path = screenshotPath("log_dock.png"); !path.isEmpty()) window.grab().save(path);
+    if (QString path = screenshotPath("log_dock.png"); !path.isEmpty()) windowShot(window).save(path);
 }
 
 int main(int argc, char** argv) {
