@@ -241,12 +241,15 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
     glViewport(0, 0, width, height);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
-    glClearColor(m_shading.background.r, m_shading.background.g, m_shading.background.b, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
     if (!m_impl->current && m_impl->sdf) {
         // After releaseGl() (a new context): rebuild the last good variant.
         std::vector<Diagnostic> ignored;
         m_impl->current = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace, m_plane), ignored);
+    }
+    if (!m_impl->current) {
+        // Nothing to trace: the background. (A traced frame writes every pixel: no clear.)
+        glClearColor(m_shading.background.r, m_shading.background.g, m_shading.background.b, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
     }
     if (Variant* v = m_impl->current) {
         if (!m_impl->vertexArray) {
