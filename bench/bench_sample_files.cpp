@@ -50,7 +50,8 @@ template <class M> double median3(M measure) {
 
 // Bare compute: every chunk dispatched and read back into the same buffers.
 double computeSeconds(renderer::SampleCompute& compute, const sampling::SamplingJob& job) {
-    std::vector<float> positions(3 * std::size_t(job.chunkSize)), distances(job.chunkSize), gradients(3 * std::size_t(job.chunkSize));
+    std::vector<float> positions(3 * std::size_t(job.chunkSize)), distances(job.chunkSize),
+        gradients(3 * std::size_t(job.chunkSize));
     renderer::SampleUniforms uniforms;
     uniforms.sampleCount = std::uint32_t(job.count);
     uniforms.seed = job.seed;
@@ -59,7 +60,8 @@ double computeSeconds(renderer::SampleCompute& compute, const sampling::Sampling
     auto start = std::chrono::steady_clock::now();
     for (std::uint64_t done = 0; done < job.count;) {
         const std::uint32_t count = std::uint32_t(std::min<std::uint64_t>(job.chunkSize, job.count - done));
-        if (auto ok = compute.run(uniforms, std::uint32_t(done), count, positions.data(), distances.data(), gradients.data()); !ok) {
+        if (auto ok = compute.run(uniforms, std::uint32_t(done), count, positions.data(), distances.data(), gradients.data());
+            !ok) {
             std::fprintf(stderr, "bench_sample_files: %s\n", ok.error().message.c_str());
             std::exit(1);
         }
@@ -104,10 +106,12 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "bench_sample_files: %s\n", context.error().message.c_str());
         return 3;
     }
-    std::printf("sampling end to end, N = %llu rows of the CSG field (box - sphere + torus), into %s; GL: %s; median of 5 (compute 3) "
-                "runs\n\n",
-                (unsigned long long)n, folder.c_str(), context.value()->info().renderer.c_str());
-    std::printf("| pattern | format | file MB | compute s | write s | sdfwb s | sdfwb Msamples/s | max(compute, write) / sdfwb |\n");
+    std::printf(
+        "sampling end to end, N = %llu rows of the CSG field (box - sphere + torus), into %s; GL: %s; median of 5 (compute 3) "
+        "runs\n\n",
+        (unsigned long long)n, folder.c_str(), context.value()->info().renderer.c_str());
+    std::printf(
+        "| pattern | format | file MB | compute s | write s | sdfwb s | sdfwb Msamples/s | max(compute, write) / sdfwb |\n");
     std::printf("|---|---|---|---|---|---|---|---|\n");
     for (const char* pattern : {"rand", "near"}) {
         auto sampler = sampling::findSampler(pattern, {});
@@ -127,7 +131,8 @@ int main(int argc, char** argv) {
         warm.count = 1u << 16;
         computeSeconds(compute, warm); // the driver's code generation, outside every figure
         const double computeTime = median3([&] { return computeSeconds(compute, job); });
-        for (sampling::SampleFormat format : {sampling::SampleFormat::Bin, sampling::SampleFormat::Npz, sampling::SampleFormat::Ply}) {
+        for (sampling::SampleFormat format :
+             {sampling::SampleFormat::Bin, sampling::SampleFormat::Npz, sampling::SampleFormat::Ply}) {
             const fs::path path = folder / (std::string("bench_sample_files.") + sampling::formatName(format));
             sampling::SampleMetadata metadata;
             metadata.sdf = "csg";

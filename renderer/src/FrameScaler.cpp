@@ -38,6 +38,11 @@ void FrameScaler::startInteraction() {
         m_scale = std::clamp(float(std::sqrt(0.8 * m_frameBudget / m_fullFrameMilliseconds)), kMinimumScale, 1.0f);
 }
 
+void FrameScaler::startPreview(double estimateMilliseconds) {
+    if (estimateMilliseconds > 0.0)
+        m_scale = std::clamp(float(std::sqrt(0.8 * m_frameBudget / estimateMilliseconds)), kMinimumScale, 1.0f);
+}
+
 double FrameScaler::estimateFullFrame(double probeMilliseconds, std::optional<std::pair<float, double>> larger) {
     if (!larger) return probeMilliseconds / double(kProbeScale * kProbeScale);
     // Fixed costs (stretching, synchronisation) cancel in the difference: extrapolate the cost per area.

@@ -62,11 +62,11 @@ struct BufferSet {
 
 struct SampleCompute::Impl {
     GlProgram program;
-    BufferSet plain;     // run(): read back with glGetBufferSubData
-    BufferSet slots[2];  // runMapped()
-    GlBuffer badRows;    // one uint: the dispatch's rows with a non-finite value
-    GlBuffer inputs;     // caller's points (analysis/points.glsl)
-    GlTexture noise;     // g3d_uniformRandom, made when the program reads it
+    BufferSet plain;    // run(): read back with glGetBufferSubData
+    BufferSet slots[2]; // runMapped()
+    GlBuffer badRows;   // one uint: the dispatch's rows with a non-finite value
+    GlBuffer inputs;    // caller's points (analysis/points.glsl)
+    GlTexture noise;    // g3d_uniformRandom, made when the program reads it
     std::string source;
     GLint location(const char* name) const { return glGetUniformLocation(program.id(), name); }
     Expected<void> reserve(BufferSet& set, std::uint32_t count, bool mapped);
@@ -97,7 +97,8 @@ Expected<void> SampleCompute::Impl::reserve(BufferSet& set, std::uint32_t count,
     if (error != GL_NO_ERROR || (mapped && (!set.mapped[0] || !set.mapped[1] || !set.mapped[2]))) {
         set.reset();
         return makeError("sampling: cannot allocate buffers for " + std::to_string(count) + " samples (" +
-                         (error != GL_NO_ERROR ? glErrorName(error) : std::string("mapping failed")) + "); try a smaller --chunk");
+                         (error != GL_NO_ERROR ? glErrorName(error) : std::string("mapping failed")) +
+                         "); try a smaller --chunk");
     }
     set.capacity = count;
     return {};
@@ -215,7 +216,8 @@ Expected<std::uint32_t> SampleCompute::run(const SampleUniforms& uniforms, std::
                                            float* positions, float* distances, float* gradients) {
     if (!m_impl->program) return makeError("sampling: no compiled sampler");
     if (count == 0) return 0u;
-    if (count > kMaxChunk) return makeError("sampling: chunk of " + std::to_string(count) + " exceeds " + std::to_string(kMaxChunk));
+    if (count > kMaxChunk)
+        return makeError("sampling: chunk of " + std::to_string(count) + " exceeds " + std::to_string(kMaxChunk));
     while (glGetError() != GL_NO_ERROR) {}
     if (auto ok = m_impl->reserve(m_impl->plain, count, false); !ok) return ok.error();
     auto bad = m_impl->dispatch(uniforms, first, count, m_impl->plain, positions, gradients);
@@ -233,9 +235,11 @@ Expected<std::uint32_t> SampleCompute::run(const SampleUniforms& uniforms, std::
     return bad;
 }
 
-Expected<MappedRows> SampleCompute::runMapped(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, int slot) {
+Expected<MappedRows> SampleCompute::runMapped(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count,
+                                              int slot) {
     if (!m_impl->program) return makeError("sampling: no compiled sampler");
-    if (count > kMaxChunk) return makeError("sampling: chunk of " + std::to_string(count) + " exceeds " + std::to_string(kMaxChunk));
+    if (count > kMaxChunk)
+        return makeError("sampling: chunk of " + std::to_string(count) + " exceeds " + std::to_string(kMaxChunk));
     BufferSet& set = m_impl->slots[slot & 1];
     while (glGetError() != GL_NO_ERROR) {}
     if (auto ok = m_impl->reserve(set, std::max(count, 1u), true); !ok) return ok.error();

@@ -16,8 +16,10 @@
 #include <filesystem>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <optional>
 #include <unordered_map>
@@ -28,6 +30,21 @@ namespace {
 using shaders::Diagnostic;
 
 constexpr std::size_t kMaxCachedVariants = 16;
+constexpr std::ptrdiff_t kFusedMarchFromCharacters = 1000;
+
+// Whether the picture marches through sdfwb_traceWithNormal (one call of the SDF for march and
+// normal) rather than through the separate march and normal (three calls, each inlined by the
+// driver). The fused loop's control costs more per evaluation than the cheapest SDFs do, and
+// saves the driver two copies of an SDF: past about a thousand characters of code it pays in
+// (bench/bench_tracer, bench/bench_cold_edit). SDFWB_FUSED_MARCH=0/1 overrides, for benchmarks.
+bool fuseMarch(const shaders::PreparedSdf& prepared) {
+    if (const char* forced = std::getenv("SDFWB_FUSED_MARCH"); forced && *forced) return forced[0] == '1';
+    // With what it includes: a library's helpers reach the driver too (and cost it time).
+    const std::string code = shaders::stripComments(prepared.source.text);
+    const auto characters =
+        std::count_if(code.begin(), code.end(), [](char c) { return !std::isspace(static_cast<unsigned char>(c)); });
+    return characters > kFusedMarchFromCharacters;
+}
 
 } // namespace
 
@@ -126,8 +143,9 @@ struct SdfRenderer::Impl {
     }
 
     // Builds (or finds) the program for `sdf` with `features`. Null on failure, with diagnostics.
-    Variant* build(const shaders::PreparedSdf& prepared, const shaders::TracerFeatures& tracerFeatures,
+    Variant* build(const shaders::PreparedSdf& prepared, shaders::TracerFeatures tracerFeatures,
                    std::vector<Diagnostic>& diagnostics) {
+        tracerFeatures.fusedMarch = fuseMarch(prepared);
         auto fragment = shaders::composeTracer(prepared, tracerFeatures);
         if (!fragment) {
             diagnostics.push_back({"<sdfwb>", 0, 0, shaders::Severity::Error, fragment.error().message});
@@ -354,8 +372,16 @@ FrameStats SdfRenderer::renderScaled(int width, int height, float scale, const C
         impl.lowWidth = lowWidth;
         impl.lowHeight = lowHeight;
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, impl.lowFramebuffer.id());
+    // Traced into the target itself (its lower-left corner), then copied out and stretched over
+    // it: the draw sees the very framebuffer a full frame does (formats, depth and stencil), so
+    // the driver reuses one compiled variant of the program for every scale. (llvmpipe
+    // generates code per framebuffer configuration: a separate low-resolution target made it
+    // compile every SDF twice, once for the probe frame and once for the full one.)
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
     render(lowWidth, lowHeight, camera, time, false);
+    glBindTexture(GL_TEXTURE_2D, impl.lowColor.id());
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, lowWidth, lowHeight);
+    glBindTexture(GL_TEXTURE_2D, 0);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, impl.lowFramebuffer.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(target));
     glViewport(0, 0, width, height);

@@ -140,27 +140,39 @@ sdfwb_Hit sdfwb_traceRay(vec3 origin, vec3 direction) {
 #endif
     if (hit.found) {
         hit.status = sdfwb_kRayHit;
-        // Refine: one more plain step from the value the march stopped at. Like every step of
-        // the march it trusts the step factor's bound, so it needs no evaluation of its own; for
-        // exact fields the hit's error falls with the square of the tolerance. (The march
-        // debugger evaluates it to show whether |f| shrank.)
-#ifdef SDFWB_PROBE
+        // Refine: one more plain step from the value the march stopped at shrinks |f| well
+        // below the footprint for exact fields (the error falls with the square of the
+        // tolerance). It is kept only when |f| shrinks: for a field steeper than the step factor
+        // assumes (or a broken one) it would overshoot, and the hit stays where it was, within
+        // its tolerance.
         float next = sdfwb_sceneMap(entry + (s + d) * direction) * sdfwb_stepFactor;
-        SDFWB_RECORD(abs(next) < abs(d) ? sdfwb_kProbeRefineKept : sdfwb_kProbeRefineUndone, tStart + s + d,
-                     entry + (s + d) * direction, next);
-#endif
-        s += d;
+        if (abs(next) < abs(d)) {
+            SDFWB_RECORD(sdfwb_kProbeRefineKept, tStart + s + d, entry + (s + d) * direction, next);
+            s += d;
+        } else {
+            SDFWB_RECORD(sdfwb_kProbeRefineUndone, tStart + s + d, entry + (s + d) * direction, next);
+        }
     }
     hit.t = tStart + s;
     hit.position = entry + s * direction;
     return hit;
 }
 
-// Tetrahedral 4-tap gradient with step h; raw (not normalised).
+// Loop bounds the driver cannot see as constants: a loop with a constant count is unrolled, and
+// every copy inlines the whole SDF again. With these, each site below holds one copy, so a heavy
+// SDF costs the driver's code generation (on llvmpipe at the first frame) a fraction of the time.
+uniform int sdfwb_gradientTaps = 4;
+uniform int sdfwb_thinProbes = 5;
+
+// Tetrahedral 4-tap gradient with step h; raw (not normalised). Taps (1,-1,-1), (-1,-1,1),
+// (-1,1,-1), (1,1,1).
 vec3 sdfwb_gradientAt(vec3 p, float h) {
-    const vec2 k = vec2(1.0, -1.0);
-    return (k.xyy * sdfwb_sceneMap(p + k.xyy * h) + k.yyx * sdfwb_sceneMap(p + k.yyx * h) + k.yxy * sdfwb_sceneMap(p + k.yxy * h) +
-            k.xxx * sdfwb_sceneMap(p + k.xxx * h)) / (4.0 * h);
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < sdfwb_gradientTaps; ++i) {
+        vec3 k = vec3((i == 0 || i == 3) ? 1.0 : -1.0, i >= 2 ? 1.0 : -1.0, (i == 1 || i == 3) ? 1.0 : -1.0);
+        sum += k * sdfwb_sceneMap(p + k * h);
+    }
+    return sum / (4.0 * h);
 }
 
 // Normal with a step matched to the hit distance (a pixel's footprint), never below float noise.
@@ -171,11 +183,142 @@ vec3 sdfwb_gradientAt(vec3 p, float h) {
 vec3 sdfwb_normalAt(vec3 p, float t, vec3 direction) {
     float floorStep = 1e-5 * max(1.0, length(p));
     float h = max(sdfwb_pixelAngle() * t, floorStep);
-    for (int k = 0; k < 5 && h > floorStep; ++k) {
+    for (int k = 0; k < sdfwb_thinProbes && h > floorStep; ++k) {
         if (sdfwb_sceneMap(p + 2.0 * h * direction) < 0.0) break;
         h = max(h * 0.125, floorStep);
     }
     vec3 gradient = sdfwb_gradientAt(p, h);
     float length2 = dot(gradient, gradient);
     return length2 > 0.0 && !isinf(length2) ? gradient * inversesqrt(length2) : -direction;
+}
+
+// The march, the refining step, the thin-feature probe and the normal's four taps as one loop
+// around one call of the SDF: what sdfwb_traceRay() followed by sdfwb_normalAt() computes (the
+// same steps, hit, refinement, probe and taps), but the driver inlines the SDF once instead of three times, so a
+// heavy SDF's first frame waits a third as long for code generation. Lanes that hit early take
+// their probe and taps while their neighbours still march. The march debugger and the
+// statistics output use the separate functions, which record every event.
+const int sdfwb_kPhaseMarch = 0;
+const int sdfwb_kPhaseProbe = 1;
+const int sdfwb_kPhaseTaps = 2;
+const int sdfwb_kPhaseRefine = 3;
+
+sdfwb_Hit sdfwb_traceWithNormal(vec3 origin, vec3 direction, out vec3 normal) {
+    sdfwb_Hit hit = sdfwb_Hit(false, 0.0, 0, origin, sdfwb_kRayLeftBox);
+    normal = -direction;
+    vec2 span = sdfwb_intersectBox(origin, direction, 1.0 + sdfwb_boxMargin);
+    float tStart = max(span.x, sdfwb_nearPlane);
+    float tEnd = min(span.y, sdfwb_farPlane);
+    if (tStart > tEnd) return hit;
+    vec3 entry = origin + tStart * direction;
+    float s = 0.0;
+    float sEnd = tEnd - tStart;
+    float footprint = sdfwb_epsilonScale * sdfwb_pixelAngle();
+#ifdef SDFWB_OVERRELAX
+    float omega = sdfwb_relaxation;
+    float previousRadius = 0.0;
+    float stepLength = 0.0;
+#endif
+    hit.status = sdfwb_kRayOutOfSteps;
+    int phase = sdfwb_kPhaseMarch;
+    int steps = 0;      // march evaluations
+    int count = 0;      // probes or taps taken in the current phase
+    float h = 0.0;      // the normal's step
+    float floorStep = 0.0;
+    vec3 sum = vec3(0.0);
+    vec3 k = vec3(0.0); // the current tap's direction
+    float hitValue = 0.0; // the scaled f where the march stopped
+    int budget = sdfwb_maxSteps + 1 + sdfwb_thinProbes + sdfwb_gradientTaps;
+    for (int iteration = 0; iteration < budget; ++iteration) {
+        vec3 at;
+        if (phase == sdfwb_kPhaseMarch) {
+            at = entry + s * direction;
+        } else if (phase == sdfwb_kPhaseRefine) {
+            at = entry + (s + hitValue) * direction;
+        } else if (phase == sdfwb_kPhaseProbe) {
+            at = hit.position + 2.0 * h * direction;
+        } else {
+            k = vec3((count == 0 || count == 3) ? 1.0 : -1.0, count >= 2 ? 1.0 : -1.0, (count == 1 || count == 3) ? 1.0 : -1.0);
+            at = hit.position + k * h;
+        }
+        float f = sdfwb_sceneMap(at);
+        if (phase == sdfwb_kPhaseMarch) {
+            ++steps;
+            hit.steps = steps;
+            float d = f * sdfwb_stepFactor;
+            if (isnan(d) || isinf(d)) {
+                hit.status = sdfwb_kRayNotFinite;
+                break;
+            }
+            float radius = abs(d);
+            bool found = false;
+#ifdef SDFWB_OVERRELAX
+            if (omega > 1.0 && (radius + previousRadius < stepLength || d < 0.0)) {
+                s -= stepLength - stepLength / omega;
+                omega = 1.0;
+                previousRadius = 0.0;
+                stepLength = 0.0;
+            } else if (radius < footprint * (tStart + s)) {
+                found = true;
+            } else {
+                stepLength = d * omega;
+                previousRadius = radius;
+                s += stepLength;
+            }
+#else
+            if (radius < footprint * (tStart + s))
+                found = true;
+            else
+                s += d;
+#endif
+            if (found) {
+                // The hit; next, one refining step (as sdfwb_traceRay()).
+                hit.found = true;
+                hit.status = sdfwb_kRayHit;
+                hitValue = d;
+                phase = sdfwb_kPhaseRefine;
+                continue;
+            }
+            if (s > sEnd) {
+                hit.status = sdfwb_kRayLeftBox;
+                break;
+            }
+            if (steps >= sdfwb_maxSteps) break;
+        } else if (phase == sdfwb_kPhaseRefine) {
+            // Kept only when |f| shrinks (as sdfwb_traceRay()).
+            if (abs(f * sdfwb_stepFactor) < abs(hitValue)) s += hitValue;
+            hit.t = tStart + s;
+            hit.position = entry + s * direction;
+            floorStep = 1e-5 * max(1.0, length(hit.position));
+            h = max(sdfwb_pixelAngle() * hit.t, floorStep);
+            phase = h > floorStep && sdfwb_thinProbes > 0 ? sdfwb_kPhaseProbe : sdfwb_kPhaseTaps;
+            count = 0;
+        } else if (phase == sdfwb_kPhaseProbe) {
+            // Inside a solid at least 2h thick f is negative there; if not, shrink the step.
+            ++count;
+            if (f < 0.0) {
+                phase = sdfwb_kPhaseTaps;
+                count = 0;
+            } else {
+                h = max(h * 0.125, floorStep);
+                if (count >= sdfwb_thinProbes || !(h > floorStep)) {
+                    phase = sdfwb_kPhaseTaps;
+                    count = 0;
+                }
+            }
+        } else {
+            sum += k * f;
+            if (++count >= sdfwb_gradientTaps) {
+                vec3 gradient = sum / (4.0 * h);
+                float length2 = dot(gradient, gradient);
+                normal = length2 > 0.0 && !isinf(length2) ? gradient * inversesqrt(length2) : -direction;
+                break;
+            }
+        }
+    }
+    if (!hit.found) {
+        hit.t = tStart + s;
+        hit.position = entry + s * direction;
+    }
+    return hit;
 }

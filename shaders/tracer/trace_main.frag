@@ -20,7 +20,13 @@ vec3 sdfwb_missColor() {
 }
 
 vec4 sdfwb_pixel(vec3 direction) {
+#if defined(SDFWB_OUTPUT_STATS) || defined(SDFWB_PROBE) || defined(SDFWB_SHADING_STEPS) || !defined(SDFWB_FUSED_MARCH)
     sdfwb_Hit hit = sdfwb_traceRay(sdfwb_cameraPosition, direction);
+#else
+    // The picture: march and normal in one loop (one copy of the SDF for the driver to compile).
+    vec3 normal;
+    sdfwb_Hit hit = sdfwb_traceWithNormal(sdfwb_cameraPosition, direction, normal);
+#endif
 #ifdef SDFWB_OUTPUT_STATS
     // Measurement output (float target): steps; the hit distance, or for a miss minus its kind
     // (-1 left the box, -2 out of steps, -3 NaN/Inf); |f| at the hit; the length of the shading
@@ -43,7 +49,9 @@ vec4 sdfwb_pixel(vec3 direction) {
         return vec4(sdfwb_planeColor(sdfwb_cameraPosition + tPlane * direction), 1.0);
 #endif
     if (!hit.found) return vec4(sdfwb_missColor(), 1.0);
+#if defined(SDFWB_PROBE) || !defined(SDFWB_FUSED_MARCH)
     vec3 normal = sdfwb_normalAt(hit.position, hit.t, direction);
+#endif
     vec3 color = sdfwb_shade(hit.position, normal, direction, hit);
 #ifdef SDFWB_AO
     color *= sdfwb_ambientOcclusion(hit.position, normal);

@@ -304,6 +304,13 @@ void ViewportWidget::paintGL() {
         painter.drawText(box, Qt::TextWordWrap, m_overlay);
     }
     emit frameRendered(stats.cpuMilliseconds, scale);
+    if (m_previewFrame) {
+        m_previewFrame = false;
+        if (!m_refineTimer.isActive()) { // not while the user moves the camera
+            m_interacting = false;
+            update();
+        }
+    }
 }
 
 float ViewportWidget::resolutionCap() const {
@@ -321,7 +328,7 @@ bool ViewportWidget::probeNewSdf(int width, int height) {
     renderer::FrameStats probe = m_renderer->renderScaled(width, height, kProbeScale, m_camera, m_time, true);
     if (probe.cpuMilliseconds <= stallLimit) probe = m_renderer->renderScaled(width, height, kProbeScale, m_camera, m_time, true);
     double estimate = renderer::FrameScaler::estimateFullFrame(probe.cpuMilliseconds);
-    if (estimate > stallLimit && probe.cpuMilliseconds <= stallLimit) {
+    if (estimate > m_scaler.frameBudget() && probe.cpuMilliseconds <= stallLimit) {
         // Small frames are dominated by fixed costs (stretching, synchronisation): measure at 3x
         // the side too and extrapolate from the cost per pixel.
         constexpr float kLarger = 3.0f * kProbeScale;
@@ -348,6 +355,13 @@ bool ViewportWidget::probeNewSdf(int width, int height) {
                                    "exports still render in full)")
                                     .arg(estimate / 1000.0, 0, 'f', 1)
                                     .arg(int(resolutionCap() * 100.0f)));
+    }
+    if (estimate > m_scaler.frameBudget() && !m_interacting) {
+        // A slow SDF: its first frame at the scale moving frames would use (a frame budget's
+        // worth of work), the full-resolution one right after it.
+        m_scaler.startPreview(estimate);
+        m_interacting = true;
+        m_previewFrame = true;
     }
     update(); // the real frame follows
     emit frameRendered(probe.cpuMilliseconds, kProbeScale);

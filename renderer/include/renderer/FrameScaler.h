@@ -28,6 +28,10 @@ public:
     bool frameDone(int width, int height, float scale, double milliseconds, bool interacting);
     // The camera starts moving: start from the scale the last full frame suggests.
     void startInteraction();
+    // A new SDF whose full frame is estimated over the frame budget: its first frame is drawn at
+    // the scale moving frames would use, and the full one follows.
+    void startPreview(double estimateMilliseconds);
+    double frameBudget() const { return m_frameBudget; }
     // A new SDF: no cap until its probe frame says otherwise.
     void clearCap() { m_maxPixels = 0.0; }
 

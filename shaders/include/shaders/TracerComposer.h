@@ -29,6 +29,9 @@ struct TracerFeatures {
     bool markers = false;         // ring marked points (markers.glsl)
     bool probe = false;           // record one ray's march into a storage buffer (probe.glsl, the march debugger)
     bool backgroundImage = false; // misses show an image (sdfwb_backgroundImage) instead of the colour
+    // March and normal in one loop around one call of the SDF (sdfwb_traceWithNormal): a third of
+    // the driver's code generation and faster frames for heavy SDFs; slower for the cheapest.
+    bool fusedMarch = false;
 };
 
 Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatures& features);

@@ -184,6 +184,7 @@ private:
     QTimer m_refineTimer;
     bool m_interacting = false;
     float m_lastScale = 1.0f;
+    bool m_previewFrame = false; // the next frame is a new slow SDF's first, at the moving scale
     double m_lastFrameMilliseconds = 0.0;
     QString m_contextDescription;
     QString m_overlay;
