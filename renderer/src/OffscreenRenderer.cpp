@@ -6,6 +6,21 @@
 #include <cstring>
 
 namespace sdfwb::renderer {
+namespace {
+
+// The bound framebuffer's RGBA pixels, top row first (GL rows run bottom up).
+template <class T> std::vector<T> readTopDown(int width, int height, GLenum type) {
+    const std::size_t row = std::size_t(width) * 4;
+    std::vector<T> bottomUp(row * std::size_t(height)), topDown(bottomUp.size());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, type, bottomUp.data());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    for (int y = 0; y < height; ++y)
+        std::memcpy(topDown.data() + std::size_t(y) * row, bottomUp.data() + std::size_t(height - 1 - y) * row, row * sizeof(T));
+    return topDown;
+}
+
+} // namespace
 
 struct OffscreenRenderer::Impl {
     GlFramebuffer framebuffer;
@@ -58,18 +73,8 @@ Image OffscreenRenderer::render(SdfRenderer& renderer, int width, int height, co
     FrameStats frame = renderer.renderScaled(width, height, scale, camera, time, true);
     if (stats) *stats = frame;
 
-    Image image;
-    image.width = width;
-    image.height = height;
-    image.rgba.resize(std::size_t(width) * std::size_t(height) * 4);
-    std::vector<std::uint8_t> bottomUp(image.rgba.size());
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());
+    Image image{width, height, readTopDown<std::uint8_t>(width, height, GL_UNSIGNED_BYTE)};
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    const std::size_t rowBytes = std::size_t(width) * 4;
-    for (int y = 0; y < height; ++y)
-        std::memcpy(image.rgba.data() + std::size_t(y) * rowBytes, bottomUp.data() + std::size_t(height - 1 - y) * rowBytes,
-                    rowBytes);
     return image;
 }
 
@@ -79,15 +84,8 @@ FloatImage OffscreenRenderer::renderFloat(SdfRenderer& renderer, int width, int 
     glBindFramebuffer(GL_FRAMEBUFFER, m_impl->floatFramebuffer.id());
     FrameStats frame = renderer.render(width, height, camera, time, true);
     if (stats) *stats = frame;
-    FloatImage image{width, height, std::vector<float>(std::size_t(width) * std::size_t(height) * 4)};
-    std::vector<float> bottomUp(image.rgba.size());
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, bottomUp.data());
+    FloatImage image{width, height, readTopDown<float>(width, height, GL_FLOAT)};
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    const std::size_t rowFloats = std::size_t(width) * 4;
-    for (int y = 0; y < height; ++y)
-        std::memcpy(image.rgba.data() + std::size_t(y) * rowFloats, bottomUp.data() + std::size_t(height - 1 - y) * rowFloats,
-                    rowFloats * sizeof(float));
     return image;
 }
 

@@ -67,94 +67,131 @@ vec3 sdfwb_primaryRay(vec2 fragment) {
     return normalize(sdfwb_cameraForward + ndc.x * aspect * sdfwb_tanHalfFovY * sdfwb_cameraRight + ndc.y * sdfwb_tanHalfFovY * sdfwb_cameraUp);
 }
 
+// One ray's march: s counts from the box entry point (far from the origin, a camera at 1e4,
+// the ray parameter t is ~1e4 and float32 cannot add steps below ~1e-3 to it), and the state of
+// over-relaxed sphere tracing (step omega * d while consecutive unbounding spheres overlap; when
+// they do not, the step may have passed the surface: go back and continue with omega = 1).
+struct sdfwb_March {
+    float tStart;      // t at the box entry
+    vec3 entry;        // the entry point
+    float s;           // distance marched from the entry
+    float sEnd;        // where the ray leaves the box (or passes the far plane)
+    float footprint;   // hit when |d| < footprint * t
+    float omega;
+    float previousRadius;
+    float stepLength;
+};
+
+// Clips the ray to the box and the near and far planes; false when nothing of it is left.
+bool sdfwb_startMarch(vec3 origin, vec3 direction, out sdfwb_March march) {
+    vec2 span = sdfwb_intersectBox(origin, direction, 1.0 + sdfwb_boxMargin);
+    march.tStart = max(span.x, sdfwb_nearPlane);
+    float tEnd = min(span.y, sdfwb_farPlane);
+    march.entry = origin + march.tStart * direction;
+    march.s = 0.0;
+    march.sEnd = tEnd - march.tStart;
+    march.footprint = sdfwb_epsilonScale * sdfwb_pixelAngle();
+#ifdef SDFWB_OVERRELAX
+    march.omega = sdfwb_relaxation;
+#else
+    march.omega = 1.0;
+#endif
+    march.previousRadius = 0.0;
+    march.stepLength = 0.0;
+    return march.tStart <= tEnd;
+}
+
+// What one evaluation of the march did with the scaled value d at entry + s * direction.
+const int sdfwb_kMarchStep = 0;
+const int sdfwb_kMarchRelaxedStep = 1;
+const int sdfwb_kMarchFallback = 2; // the relaxed step went too far: s went back, omega is 1 now
+const int sdfwb_kMarchHit = 3;      // |d| is below the footprint: s stays
+
+int sdfwb_marchStep(inout sdfwb_March march, float d) {
+    float radius = abs(d);
+#ifdef SDFWB_OVERRELAX
+    // Fall back when the spheres do not overlap, or when the step crossed the surface (d < 0).
+    if (march.omega > 1.0 && (radius + march.previousRadius < march.stepLength || d < 0.0)) {
+        march.s -= march.stepLength - march.stepLength / march.omega; // undo the relaxed part of the last step
+        march.omega = 1.0;
+        march.previousRadius = 0.0;
+        march.stepLength = 0.0;
+        return sdfwb_kMarchFallback;
+    }
+#endif
+    if (radius < march.footprint * (march.tStart + march.s)) return sdfwb_kMarchHit;
+#ifdef SDFWB_OVERRELAX
+    int kind = march.omega > 1.0 ? sdfwb_kMarchRelaxedStep : sdfwb_kMarchStep;
+    march.stepLength = d * march.omega;
+    march.previousRadius = radius;
+    march.s += march.stepLength;
+    return kind;
+#else
+    march.s += d;
+    return sdfwb_kMarchStep;
+#endif
+}
+
+// The refining step after a hit: one more plain step from the value the march stopped at (d)
+// shrinks |f| well below the footprint for exact fields (the error falls with the square of the
+// tolerance). It is kept only when |f| there (next) is smaller: for a field steeper than the step
+// factor assumes (or a broken one) it would overshoot, and the hit stays where it was, within its
+// tolerance.
+bool sdfwb_refineKeeps(float d, float next) { return abs(next) < abs(d); }
+
+#ifdef SDFWB_PROBE
+// The march debugger's event for what a march evaluation did.
+int sdfwb_probeKindOf(int event) {
+    return event == sdfwb_kMarchHit ? sdfwb_kProbeHit
+         : event == sdfwb_kMarchFallback ? sdfwb_kProbeFallback
+         : event == sdfwb_kMarchRelaxedStep ? sdfwb_kProbeRelaxedStep : sdfwb_kProbeStep;
+}
+#endif
+
 sdfwb_Hit sdfwb_traceRay(vec3 origin, vec3 direction) {
     sdfwb_Hit hit = sdfwb_Hit(false, 0.0, 0, origin, sdfwb_kRayLeftBox);
-    vec2 span = sdfwb_intersectBox(origin, direction, 1.0 + sdfwb_boxMargin);
-    float tStart = max(span.x, sdfwb_nearPlane);
-    float tEnd = min(span.y, sdfwb_farPlane);
-    if (tStart > tEnd) {
-        SDFWB_RECORD(sdfwb_kProbeMissedBox, tStart, origin + tStart * direction, 0.0);
+    sdfwb_March march;
+    if (!sdfwb_startMarch(origin, direction, march)) {
+        SDFWB_RECORD(sdfwb_kProbeMissedBox, march.tStart, march.entry, 0.0);
         return hit;
     }
-    // March from the box entry point: far from the origin (a camera at 1e4) the ray parameter t
-    // is ~1e4 and float32 cannot add steps below ~1e-3 to it; s counts from the entry instead.
-    vec3 entry = origin + tStart * direction;
-    float s = 0.0;
-    float sEnd = tEnd - tStart;
-    float footprint = sdfwb_epsilonScale * sdfwb_pixelAngle();
-#ifdef SDFWB_OVERRELAX
-    // Over-relaxed sphere tracing: step omega * d while consecutive unbounding spheres overlap;
-    // when they do not, the step may have passed the surface: go back and continue with omega = 1.
-    float omega = sdfwb_relaxation;
-    float previousRadius = 0.0;
-    float stepLength = 0.0;
-#endif
     hit.status = sdfwb_kRayOutOfSteps;
     float d = 0.0; // the last value: at a hit, f where the march stopped
     for (int step = 0; step < sdfwb_maxSteps; ++step) {
         hit.steps = step + 1;
-        d = sdfwb_sceneMap(entry + s * direction) * sdfwb_stepFactor;
+        float t = march.tStart + march.s;
+        vec3 at = march.entry + march.s * direction;
+        d = sdfwb_sceneMap(at) * sdfwb_stepFactor;
         if (isnan(d) || isinf(d)) {
-            SDFWB_RECORD(sdfwb_kProbeNotFinite, tStart + s, entry + s * direction, d);
+            SDFWB_RECORD(sdfwb_kProbeNotFinite, t, at, d);
             hit.status = sdfwb_kRayNotFinite;
             break;
         }
-        float radius = abs(d);
-#ifdef SDFWB_OVERRELAX
-        // Fall back when the spheres do not overlap, or when the step crossed the surface (d < 0).
-        if (omega > 1.0 && (radius + previousRadius < stepLength || d < 0.0)) {
-            SDFWB_RECORD(sdfwb_kProbeFallback, tStart + s, entry + s * direction, d);
-            s -= stepLength - stepLength / omega;  // undo the relaxed part of the last step
-            omega = 1.0;
-            previousRadius = 0.0;
-            stepLength = 0.0;
-            continue;
-        }
-        if (radius < footprint * (tStart + s)) {
-            SDFWB_RECORD(sdfwb_kProbeHit, tStart + s, entry + s * direction, d);
+        int event = sdfwb_marchStep(march, d);
+        SDFWB_RECORD(sdfwb_probeKindOf(event), t, at, d);
+        if (event == sdfwb_kMarchHit) {
             hit.found = true;
             break;
         }
-        SDFWB_RECORD(omega > 1.0 ? sdfwb_kProbeRelaxedStep : sdfwb_kProbeStep, tStart + s, entry + s * direction, d);
-        stepLength = d * omega;
-        previousRadius = radius;
-        s += stepLength;
-#else
-        if (radius < footprint * (tStart + s)) {
-            SDFWB_RECORD(sdfwb_kProbeHit, tStart + s, entry + s * direction, d);
-            hit.found = true;
-            break;
-        }
-        SDFWB_RECORD(sdfwb_kProbeStep, tStart + s, entry + s * direction, d);
-        s += d;
-#endif
-        if (s > sEnd) {
-            SDFWB_RECORD(sdfwb_kProbeLeftBox, tStart + s, entry + s * direction, 0.0);
+        if (event == sdfwb_kMarchFallback) continue;
+        if (march.s > march.sEnd) {
+            SDFWB_RECORD(sdfwb_kProbeLeftBox, march.tStart + march.s, march.entry + march.s * direction, 0.0);
             hit.status = sdfwb_kRayLeftBox;
             break;
         }
     }
 #ifdef SDFWB_PROBE
     if (hit.status == sdfwb_kRayOutOfSteps && !hit.found)
-        SDFWB_RECORD(sdfwb_kProbeOutOfSteps, tStart + s, entry + s * direction, 0.0);
+        SDFWB_RECORD(sdfwb_kProbeOutOfSteps, march.tStart + march.s, march.entry + march.s * direction, 0.0);
 #endif
     if (hit.found) {
         hit.status = sdfwb_kRayHit;
-        // Refine: one more plain step from the value the march stopped at shrinks |f| well
-        // below the footprint for exact fields (the error falls with the square of the
-        // tolerance). It is kept only when |f| shrinks: for a field steeper than the step factor
-        // assumes (or a broken one) it would overshoot, and the hit stays where it was, within
-        // its tolerance.
-        float next = sdfwb_sceneMap(entry + (s + d) * direction) * sdfwb_stepFactor;
-        if (abs(next) < abs(d)) {
-            SDFWB_RECORD(sdfwb_kProbeRefineKept, tStart + s + d, entry + (s + d) * direction, next);
-            s += d;
-        } else {
-            SDFWB_RECORD(sdfwb_kProbeRefineUndone, tStart + s + d, entry + (s + d) * direction, next);
-        }
+        float next = sdfwb_sceneMap(march.entry + (march.s + d) * direction) * sdfwb_stepFactor;
+        SDFWB_RECORD(sdfwb_refineKeeps(d, next) ? sdfwb_kProbeRefineKept : sdfwb_kProbeRefineUndone, march.tStart + march.s + d, march.entry + (march.s + d) * direction, next);
+        if (sdfwb_refineKeeps(d, next)) march.s += d;
     }
-    hit.t = tStart + s;
-    hit.position = entry + s * direction;
+    hit.t = march.tStart + march.s;
+    hit.position = march.entry + march.s * direction;
     return hit;
 }
 
@@ -164,15 +201,26 @@ sdfwb_Hit sdfwb_traceRay(vec3 origin, vec3 direction) {
 uniform int sdfwb_gradientTaps = 4;
 uniform int sdfwb_thinProbes = 5;
 
-// Tetrahedral 4-tap gradient with step h; raw (not normalised). Taps (1,-1,-1), (-1,-1,1),
-// (-1,1,-1), (1,1,1).
+// Tap i of the tetrahedral gradient: (1,-1,-1), (-1,-1,1), (-1,1,-1), (1,1,1).
+vec3 sdfwb_tap(int i) { return vec3((i == 0 || i == 3) ? 1.0 : -1.0, i >= 2 ? 1.0 : -1.0, (i == 1 || i == 3) ? 1.0 : -1.0); }
+
+// Tetrahedral 4-tap gradient with step h; raw (not normalised).
 vec3 sdfwb_gradientAt(vec3 p, float h) {
     vec3 sum = vec3(0.0);
-    for (int i = 0; i < sdfwb_gradientTaps; ++i) {
-        vec3 k = vec3((i == 0 || i == 3) ? 1.0 : -1.0, i >= 2 ? 1.0 : -1.0, (i == 1 || i == 3) ? 1.0 : -1.0);
-        sum += k * sdfwb_sceneMap(p + k * h);
-    }
+    for (int i = 0; i < sdfwb_gradientTaps; ++i) sum += sdfwb_tap(i) * sdfwb_sceneMap(p + sdfwb_tap(i) * h);
     return sum / (4.0 * h);
+}
+
+// The normal's first step at a hit at distance t (a pixel's footprint) and its floor (float noise).
+vec2 sdfwb_normalSteps(vec3 p, float t) {
+    float floorStep = 1e-5 * max(1.0, length(p));
+    return vec2(max(sdfwb_pixelAngle() * t, floorStep), floorStep);
+}
+
+// The unit normal from a raw gradient; facing the ray when the gradient vanished or overflowed.
+vec3 sdfwb_unitNormal(vec3 gradient, vec3 direction) {
+    float length2 = dot(gradient, gradient);
+    return length2 > 0.0 && !isinf(length2) ? gradient * inversesqrt(length2) : -direction;
 }
 
 // Normal with a step matched to the hit distance (a pixel's footprint), never below float noise.
@@ -181,15 +229,13 @@ vec3 sdfwb_gradientAt(vec3 p, float h) {
 // tells: inside a solid at least that thick f is negative there; if it is not, the step shrinks
 // eightfold (at most five times, to 1/32768 of the footprint, never below the float floor).
 vec3 sdfwb_normalAt(vec3 p, float t, vec3 direction) {
-    float floorStep = 1e-5 * max(1.0, length(p));
-    float h = max(sdfwb_pixelAngle() * t, floorStep);
+    vec2 steps = sdfwb_normalSteps(p, t);
+    float h = steps.x, floorStep = steps.y;
     for (int k = 0; k < sdfwb_thinProbes && h > floorStep; ++k) {
         if (sdfwb_sceneMap(p + 2.0 * h * direction) < 0.0) break;
         h = max(h * 0.125, floorStep);
     }
-    vec3 gradient = sdfwb_gradientAt(p, h);
-    float length2 = dot(gradient, gradient);
-    return length2 > 0.0 && !isinf(length2) ? gradient * inversesqrt(length2) : -direction;
+    return sdfwb_unitNormal(sdfwb_gradientAt(p, h), direction);
 }
 
 // The march, the refining step, the thin-feature probe and the normal's four taps as one loop
@@ -206,92 +252,47 @@ const int sdfwb_kPhaseRefine = 3;
 sdfwb_Hit sdfwb_traceWithNormal(vec3 origin, vec3 direction, out vec3 normal) {
     sdfwb_Hit hit = sdfwb_Hit(false, 0.0, 0, origin, sdfwb_kRayLeftBox);
     normal = -direction;
-    vec2 span = sdfwb_intersectBox(origin, direction, 1.0 + sdfwb_boxMargin);
-    float tStart = max(span.x, sdfwb_nearPlane);
-    float tEnd = min(span.y, sdfwb_farPlane);
-    if (tStart > tEnd) return hit;
-    vec3 entry = origin + tStart * direction;
-    float s = 0.0;
-    float sEnd = tEnd - tStart;
-    float footprint = sdfwb_epsilonScale * sdfwb_pixelAngle();
-#ifdef SDFWB_OVERRELAX
-    float omega = sdfwb_relaxation;
-    float previousRadius = 0.0;
-    float stepLength = 0.0;
-#endif
+    sdfwb_March march;
+    if (!sdfwb_startMarch(origin, direction, march)) return hit;
     hit.status = sdfwb_kRayOutOfSteps;
     int phase = sdfwb_kPhaseMarch;
-    int steps = 0;      // march evaluations
-    int count = 0;      // probes or taps taken in the current phase
-    float h = 0.0;      // the normal's step
-    float floorStep = 0.0;
+    int count = 0;          // probes or taps taken in the current phase
+    float hitValue = 0.0;   // the scaled f where the march stopped
+    vec2 steps = vec2(0.0); // the normal's step and its floor
     vec3 sum = vec3(0.0);
-    vec3 k = vec3(0.0); // the current tap's direction
-    float hitValue = 0.0; // the scaled f where the march stopped
     int budget = sdfwb_maxSteps + 1 + sdfwb_thinProbes + sdfwb_gradientTaps;
     for (int iteration = 0; iteration < budget; ++iteration) {
-        vec3 at;
-        if (phase == sdfwb_kPhaseMarch) {
-            at = entry + s * direction;
-        } else if (phase == sdfwb_kPhaseRefine) {
-            at = entry + (s + hitValue) * direction;
-        } else if (phase == sdfwb_kPhaseProbe) {
-            at = hit.position + 2.0 * h * direction;
-        } else {
-            k = vec3((count == 0 || count == 3) ? 1.0 : -1.0, count >= 2 ? 1.0 : -1.0, (count == 1 || count == 3) ? 1.0 : -1.0);
-            at = hit.position + k * h;
-        }
+        vec3 at = phase == sdfwb_kPhaseMarch    ? march.entry + march.s * direction
+                  : phase == sdfwb_kPhaseRefine ? march.entry + (march.s + hitValue) * direction
+                  : phase == sdfwb_kPhaseProbe  ? hit.position + 2.0 * steps.x * direction
+                                                : hit.position + sdfwb_tap(count) * steps.x;
         float f = sdfwb_sceneMap(at);
         if (phase == sdfwb_kPhaseMarch) {
-            ++steps;
-            hit.steps = steps;
+            hit.steps += 1;
             float d = f * sdfwb_stepFactor;
             if (isnan(d) || isinf(d)) {
                 hit.status = sdfwb_kRayNotFinite;
                 break;
             }
-            float radius = abs(d);
-            bool found = false;
-#ifdef SDFWB_OVERRELAX
-            if (omega > 1.0 && (radius + previousRadius < stepLength || d < 0.0)) {
-                s -= stepLength - stepLength / omega;
-                omega = 1.0;
-                previousRadius = 0.0;
-                stepLength = 0.0;
-            } else if (radius < footprint * (tStart + s)) {
-                found = true;
-            } else {
-                stepLength = d * omega;
-                previousRadius = radius;
-                s += stepLength;
-            }
-#else
-            if (radius < footprint * (tStart + s))
-                found = true;
-            else
-                s += d;
-#endif
-            if (found) {
-                // The hit; next, one refining step (as sdfwb_traceRay()).
+            int event = sdfwb_marchStep(march, d);
+            if (event == sdfwb_kMarchHit) {
                 hit.found = true;
                 hit.status = sdfwb_kRayHit;
                 hitValue = d;
                 phase = sdfwb_kPhaseRefine;
                 continue;
             }
-            if (s > sEnd) {
+            if (event != sdfwb_kMarchFallback && march.s > march.sEnd) {
                 hit.status = sdfwb_kRayLeftBox;
                 break;
             }
-            if (steps >= sdfwb_maxSteps) break;
+            if (hit.steps >= sdfwb_maxSteps) break;
         } else if (phase == sdfwb_kPhaseRefine) {
-            // Kept only when |f| shrinks (as sdfwb_traceRay()).
-            if (abs(f * sdfwb_stepFactor) < abs(hitValue)) s += hitValue;
-            hit.t = tStart + s;
-            hit.position = entry + s * direction;
-            floorStep = 1e-5 * max(1.0, length(hit.position));
-            h = max(sdfwb_pixelAngle() * hit.t, floorStep);
-            phase = h > floorStep && sdfwb_thinProbes > 0 ? sdfwb_kPhaseProbe : sdfwb_kPhaseTaps;
+            if (sdfwb_refineKeeps(hitValue, f * sdfwb_stepFactor)) march.s += hitValue;
+            hit.t = march.tStart + march.s;
+            hit.position = march.entry + march.s * direction;
+            steps = sdfwb_normalSteps(hit.position, hit.t);
+            phase = steps.x > steps.y && sdfwb_thinProbes > 0 ? sdfwb_kPhaseProbe : sdfwb_kPhaseTaps;
             count = 0;
         } else if (phase == sdfwb_kPhaseProbe) {
             // Inside a solid at least 2h thick f is negative there; if not, shrink the step.
@@ -300,25 +301,23 @@ sdfwb_Hit sdfwb_traceWithNormal(vec3 origin, vec3 direction, out vec3 normal) {
                 phase = sdfwb_kPhaseTaps;
                 count = 0;
             } else {
-                h = max(h * 0.125, floorStep);
-                if (count >= sdfwb_thinProbes || !(h > floorStep)) {
+                steps.x = max(steps.x * 0.125, steps.y);
+                if (count >= sdfwb_thinProbes || !(steps.x > steps.y)) {
                     phase = sdfwb_kPhaseTaps;
                     count = 0;
                 }
             }
         } else {
-            sum += k * f;
+            sum += sdfwb_tap(count) * f;
             if (++count >= sdfwb_gradientTaps) {
-                vec3 gradient = sum / (4.0 * h);
-                float length2 = dot(gradient, gradient);
-                normal = length2 > 0.0 && !isinf(length2) ? gradient * inversesqrt(length2) : -direction;
+                normal = sdfwb_unitNormal(sum / (4.0 * steps.x), direction);
                 break;
             }
         }
     }
     if (!hit.found) {
-        hit.t = tStart + s;
-        hit.position = entry + s * direction;
+        hit.t = march.tStart + march.s;
+        hit.position = march.entry + march.s * direction;
     }
     return hit;
 }
