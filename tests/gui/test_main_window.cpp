@@ -107,6 +107,27 @@ const QColor kBackground = QColor::fromRgbF(0.16f, 0.17f, 0.19f);
 
 QString datasetFile(const char* relative) { return QDir(SDFWB_SOURCE_DIR "/dataset").filePath(relative); }
 
+QImage frameOf(app::MainWindow& window) {
+    window.viewport()->update();
+    return window.viewport()->grabFramebuffer();
+}
+
+// A frame at full resolution: a new slow-looking SDF's first frame, and frames right after a
+// resize or a camera move, are drawn at a reduced scale and the full one follows.
+QImage fullResolutionFrame(app::MainWindow& window) {
+    float lastScale = 0.0f;
+    QMetaObject::Connection connection = QObject::connect(window.viewport(), &widgets::ViewportWidget::frameRendered,
+                                                          [&](double, float scale) { lastScale = scale; });
+    QImage frame = frameOf(window);
+    for (int k = 0; k < 20 && lastScale < 1.0f; ++k) {
+        waitFor([&] { return !window.viewport()->isInteracting(); }, 2000);
+        frame = frameOf(window);
+    }
+    QObject::disconnect(connection);
+    EXPECT_EQ(lastScale, 1.0f) << "no full-resolution frame";
+    return frame;
+}
+
 } // namespace
 
 TEST(MainWindow, DrawsTheOpenedSdfInTheViewport) {
@@ -137,7 +158,7 @@ TEST(MainWindow, TypedErrorShowsADiagnosticAndKeepsTheLastGoodShape) {
     QObject::connect(window.document(), &app::SdfDocument::diagnosticsChanged, [&] { ++diagnosticUpdates; });
     ASSERT_TRUE(window.openFile(datasetFile("Geometry/Sphere.glsl")));
     ASSERT_TRUE(waitFor([&] { return applied; }));
-    long before = foreground(window.viewport()->grabFramebuffer(), kBackground);
+    long before = foreground(fullResolutionFrame(window), kBackground);
     ASSERT_GT(before, 1000);
 
     int updates = diagnosticUpdates;
@@ -150,8 +171,7 @@ TEST(MainWindow, TypedErrorShowsADiagnosticAndKeepsTheLastGoodShape) {
     EXPECT_NE(window.document()->diagnostics().front().message.find("radiu"), std::string::npos);
     EXPECT_EQ(window.document()->diagnostics().front().line, 13);
 
-    window.viewport()->update();
-    long after = foreground(window.viewport()->grabFramebuffer(), kBackground);
+    long after = foreground(fullResolutionFrame(window), kBackground);
     EXPECT_NEAR(double(after), double(before), double(before) * 0.01) << "the last good shape must stay on screen";
     window.grab().save(QDir::temp().filePath("sdfwb-gui-diagnostic.png"));
 }
@@ -215,12 +235,8 @@ bool openAndWait(app::MainWindow& window, const char* file) {
     auto connection = QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
     bool ok = window.openFile(datasetFile(file)) && waitFor([&] { return applied; });
     QObject::disconnect(connection);
-    return ok && waitFor([&] { return window.viewport()->lastFrameMilliseconds() > 0.0; });
-}
-
-QImage frameOf(app::MainWindow& window) {
-    window.viewport()->update();
-    return window.viewport()->grabFramebuffer();
+    // A slow-looking new SDF is first drawn at the moving scale: wait for the full frame after it.
+    return ok && waitFor([&] { return window.viewport()->lastFrameMilliseconds() > 0.0 && !window.viewport()->isInteracting(); });
 }
 
 double meanDifference(const QImage& a, const QImage& b) {
@@ -410,11 +426,7 @@ TEST(Viewport, SlowShaderIsCappedThenRevertedNeverFreezesTheWindow) {
     // compare a full-resolution frame; the corner overlay names the open file, so a small
     // difference remains.
     window.viewport()->setStallLimit(1500.0);
-    float lastScale = 0.0f;
-    QObject::connect(window.viewport(), &widgets::ViewportWidget::frameRendered, [&](double, float scale) { lastScale = scale; });
-    QImage back = frameOf(window);
-    for (int k = 0; k < 10 && lastScale < 1.0f; ++k) back = frameOf(window);
-    EXPECT_EQ(lastScale, 1.0f);
+    QImage back = fullResolutionFrame(window);
     EXPECT_LT(meanDifference(sphere, back), 5.0) << "the sphere is back on screen";
     window.close();
 }
@@ -535,20 +547,12 @@ TEST(Viewport, TimeScrubsAnimatedSdfs) {
     ASSERT_TRUE(window.openFile(path));
     ASSERT_TRUE(waitFor([&] { return applied; }));
     // A new SDF's first frame is a 5 % probe: compare full-resolution frames only.
-    float lastScale = 0.0f;
-    QObject::connect(window.viewport(), &widgets::ViewportWidget::frameRendered, [&](double, float scale) { lastScale = scale; });
-    auto fullFrame = [&] {
-        QImage frame = frameOf(window);
-        for (int k = 0; k < 10 && lastScale < 1.0f; ++k) frame = frameOf(window);
-        EXPECT_EQ(lastScale, 1.0f) << "no full-resolution frame";
-        return frame;
-    };
     window.viewport()->resetCamera(); // not a camera restored from an earlier test's session
     window.timeBar()->setTime(0.0);
     window.viewport()->setTime(0.0f);
-    long small = foreground(fullFrame(), kBackground);
+    long small = foreground(fullResolutionFrame(window), kBackground);
     window.viewport()->setTime(1.5f);
-    long large = foreground(fullFrame(), kBackground);
+    long large = foreground(fullResolutionFrame(window), kBackground);
     EXPECT_GT(large, small * 2) << "sin(1.5) grows the sphere from 0.4 to 0.7";
     window.playback()->setPlaying(true);
     float startTime = window.viewport()->time();
