@@ -337,7 +337,15 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
                 glUniform4f(v->location("sdfwb_backgroundFit"), 1.0f / ratio, 1.0f, 0.5f * (1.0f - 1.0f / ratio), 0.0f);
         }
         glBindVertexArray(m_impl->vertexArray.id());
+        // Blending that changes nothing (source times one, plus zero): llvmpipe generates an
+        // opaque draw's fragment code twice (for whole tiles and for edge tiles), a blended one
+        // once, which halves a new program's first-draw stall (trefoil knot 177 ms to 96, torus 78
+        // to 45) for about 3 % on the cheapest SDFs' frames.
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(GL_ONE, GL_ZERO);
         glDrawArrays(GL_TRIANGLES, 0, 3);
+        glDisable(GL_BLEND);
         glBindVertexArray(0);
         glUseProgram(0);
     }

@@ -258,7 +258,9 @@ void ViewportWidget::paintGL() {
     const qreal ratio = devicePixelRatioF();
     int width = int(std::lround(this->width() * ratio));
     int height = int(std::lround(this->height() * ratio));
-    if (m_needsProbe && probeNewSdf(width, height)) return;
+    // A new SDF: the probe sizes its first frame, which follows in this same paint (a second
+    // paint request would wait for the next update cycle, 15 to 30 ms here).
+    if (m_needsProbe) probeNewSdf(width, height);
     const float scale = m_scaler.scaleFor(width, height, m_interacting);
     // finish: the status bar and the scale choice see what the frame really cost.
     renderer::FrameStats stats = m_renderer->renderScaled(width, height, scale, m_camera, m_time, true);
@@ -318,7 +320,7 @@ float ViewportWidget::resolutionCap() const {
     return m_scaler.cap(int(std::lround(width() * ratio)), int(std::lround(height() * ratio)));
 }
 
-bool ViewportWidget::probeNewSdf(int width, int height) {
+void ViewportWidget::probeNewSdf(int width, int height) {
     m_needsProbe = false;
     // 5 % of the side, 0.25 % of the pixels: cheap even for a shader that loops for long. The
     // first draw of a program includes the driver's code generation (llvmpipe compiles lazily):
@@ -344,8 +346,7 @@ bool ViewportWidget::probeNewSdf(int width, int height) {
         emit performanceWarning(tr("The new SDF needs %1 s for a frame at 5 % resolution (a runaway loop?): the previous SDF is "
                                    "back on screen; fix the loop or render it with sdfwb --batch render")
                                     .arg(probe.cpuMilliseconds / 1000.0, 0, 'f', 1));
-        update();
-        return true;
+        return; // the previous SDF's frame is drawn in this paint
     }
     m_lastGoodSdf = std::move(m_currentSdf);
     ++m_sdfGeneration;
@@ -363,9 +364,7 @@ bool ViewportWidget::probeNewSdf(int width, int height) {
         m_interacting = true;
         m_previewFrame = true;
     }
-    update(); // the real frame follows
     emit frameRendered(probe.cpuMilliseconds, kProbeScale);
-    return true;
 }
 
 void ViewportWidget::releaseGl() {

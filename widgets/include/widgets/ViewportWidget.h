@@ -146,8 +146,9 @@ protected:
     void leaveEvent(QEvent* event) override;
 
 private:
-    // Draws the first frame of a new SDF at kProbeScale and sets the resolution cap (or reverts).
-    bool probeNewSdf(int width, int height);
+    // Times a new SDF at kProbeScale and sets the scale of its first frame and the resolution cap
+    // (or reverts to the last good SDF); the paint that called it draws that frame.
+    void probeNewSdf(int width, int height);
     void releaseGl();
     void interacted(); // a camera move happened: render cheaply now, refine later
     void flyStep();
