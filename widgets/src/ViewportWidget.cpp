@@ -358,8 +358,8 @@ void ViewportWidget::probeNewSdf(int width, int height) {
                                     .arg(int(resolutionCap() * 100.0f)));
     }
     if (estimate > m_scaler.frameBudget() && !m_interacting) {
-        // A slow SDF: its first frame at the scale moving frames would use (a frame budget's
-        // worth of work), the full-resolution one right after it.
+        // A slow SDF: its first frame at a scale that costs half the frame budget, the
+        // full-resolution one right after it.
         m_scaler.startPreview(estimate);
         m_interacting = true;
         m_previewFrame = true;

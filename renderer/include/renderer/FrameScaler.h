@@ -29,7 +29,7 @@ public:
     // The camera starts moving: start from the scale the last full frame suggests.
     void startInteraction();
     // A new SDF whose full frame is estimated over the frame budget: its first frame is drawn at
-    // the scale moving frames would use, and the full one follows.
+    // a scale that costs half the budget, and the full one follows.
     void startPreview(double estimateMilliseconds);
     double frameBudget() const { return m_frameBudget; }
     // A new SDF: no cap until its probe frame says otherwise.
