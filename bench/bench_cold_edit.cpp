@@ -7,8 +7,10 @@
 // at a scale that costs half that budget, with the full-resolution frame after it. The reference in the same run is the editor's
 // debounce itself, which every edit waits for by design.
 //
-//   scripts/with-display build/bench/bench_cold_edit [NAME ...]   (dataset names; default: all)
+//   scripts/with-display build/bench/bench_cold_edit [NAME|FILE ...]   (dataset names or .glsl files; default: every
+//   dataset SDF)
 
+#include <gui/GuiMain.h>
 #include <gui/MainWindow.h>
 #include <gui/SdfDocument.h>
 #include <widgets/GlslEditor.h>
@@ -21,13 +23,13 @@
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QStandardPaths>
-#include <QSurfaceFormat>
 
 #include <Qsci/qsciscintillabase.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -51,10 +53,7 @@ template <class F> bool waitFor(F done, int limit) {
 int main(int argc, char** argv) {
     setenv("MESA_SHADER_CACHE_DISABLE", "true", 1); // cold: before any GL context exists
     QStandardPaths::setTestModeEnabled(true);
-    QSurfaceFormat format;
-    format.setVersion(4, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    QSurfaceFormat::setDefaultFormat(format);
+    app::setDefaultSurfaceFormat();
     QApplication application(argc, argv);
     std::vector<std::string> names(argv + 1, argv + argc);
 
@@ -98,15 +97,21 @@ int main(int argc, char** argv) {
     const dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
     std::vector<std::pair<double, std::string>> results; // keystroke to first frame
     std::vector<double> fullResults;
-    for (const dataset::Entry& entry : catalogue.entries()) {
-        if (!names.empty() && std::find(names.begin(), names.end(), entry.metadata.name) == names.end()) continue;
+    // What to time: (name, file); an argument that names a file is timed as it is (foreign code).
+    std::vector<std::pair<std::string, std::filesystem::path>> targets;
+    for (const dataset::Entry& entry : catalogue.entries())
+        if (names.empty() || std::find(names.begin(), names.end(), entry.metadata.name) != names.end())
+            targets.emplace_back(entry.metadata.name, entry.path);
+    for (const std::string& name : names)
+        if (std::filesystem::is_regular_file(name)) targets.emplace_back(std::filesystem::path(name).filename().string(), name);
+    for (const auto& [name, path] : targets) {
         // Opened as a user opens it (its includes resolve from its folder), then a line the
         // driver has never seen and a stray character: a compile error. The keystroke deletes it,
         // and the text that becomes valid is new, so its program is compiled cold.
         bool applied = false;
         auto connection = QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
-        if (!window.openFile(QString::fromStdString(entry.path.string())) || !waitFor([&] { return applied; }, 60000)) {
-            std::printf("| %s | does not open | | | |\n", entry.metadata.name.c_str());
+        if (!window.openFile(QString::fromStdString(path.string())) || !waitFor([&] { return applied; }, 60000)) {
+            std::printf("| %s | does not open | | | |\n", name.c_str());
             QObject::disconnect(connection);
             continue;
         }
@@ -121,14 +126,13 @@ int main(int argc, char** argv) {
         timer.start();
         window.editor()->SendScintilla(QsciScintillaBase::SCI_DELETEBACK); // the keystroke
         if (!waitFor([&] { return fullAt >= 0.0; }, 60000)) {
-            std::printf("| %s | no full frame within 60 s | | | |\n", entry.metadata.name.c_str());
+            std::printf("| %s | no full frame within 60 s | | | |\n", name.c_str());
             continue;
         }
         const double probe = probeAt, first = firstAt, full = fullAt;
-        std::printf("| %s | %.0f | %.0f | %.0f %% | %.0f |\n", entry.metadata.name.c_str(), probe, first, firstScale * 100.0,
-                    full);
+        std::printf("| %s | %.0f | %.0f | %.0f %% | %.0f |\n", name.c_str(), probe, first, firstScale * 100.0, full);
         std::fflush(stdout);
-        results.emplace_back(first, entry.metadata.name);
+        results.emplace_back(first, name);
         fullResults.push_back(full);
     }
     if (!results.empty()) {

@@ -4,6 +4,7 @@
 //
 //   scripts/with-display build/bench/bench_editor
 
+#include <gui/GuiMain.h>
 #include <gui/MainWindow.h>
 #include <gui/SdfDocument.h>
 #include <widgets/GlslEditor.h>
@@ -15,7 +16,6 @@
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QStandardPaths>
-#include <QSurfaceFormat>
 #include <QThread>
 
 #include <algorithm>
@@ -53,10 +53,7 @@ double median(std::vector<double> values) {
 
 int main(int argc, char** argv) {
     QStandardPaths::setTestModeEnabled(true);
-    QSurfaceFormat format;
-    format.setVersion(4, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    QSurfaceFormat::setDefaultFormat(format);
+    app::setDefaultSurfaceFormat();
     QApplication application(argc, argv);
     std::string text = longSdf();
     int lines = int(std::count(text.begin(), text.end(), '\n'));

@@ -17,6 +17,14 @@
 
 namespace sdfwb::app {
 
+void setDefaultSurfaceFormat() {
+    QSurfaceFormat format;
+    format.setVersion(4, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(0);
+    QSurfaceFormat::setDefaultFormat(format);
+}
+
 int runGui(int argc, char** argv, const char* file) {
     const char* display = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
@@ -31,12 +39,7 @@ int runGui(int argc, char** argv, const char* file) {
         return 2;
     }
 
-    QSurfaceFormat format;
-    format.setVersion(4, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    format.setDepthBufferSize(0);
-    QSurfaceFormat::setDefaultFormat(format);
-
+    setDefaultSurfaceFormat();
     QApplication application(argc, argv);
     QApplication::setOrganizationName("sdfwb");
     QApplication::setApplicationName("sdfwb");

@@ -4,6 +4,7 @@
 #include <gui/CloudController.h>
 #include <gui/ExportController.h>
 #include <gui/FileController.h>
+#include <gui/GuiMain.h>
 #include <gui/MainWindow.h>
 #include <gui/MeshExportController.h>
 #include <gui/PlaneController.h>
@@ -62,7 +63,6 @@
 #include <QSpinBox>
 #include <QStandardPaths>
 #include <QStatusBar>
-#include <QSurfaceFormat>
 #include <QTableWidget>
 #include <QThread>
 #include <QToolBar>
@@ -1718,10 +1718,7 @@ int main(int argc, char** argv) {
     QStandardPaths::setTestModeEnabled(true); // no user settings read or written
     // Jobs the window starts on its own (thumbnails, probes) run the real sdfwb, never this binary.
     qputenv("SDFWB_BATCH_EXECUTABLE", SDFWB_BINARY);
-    QSurfaceFormat format;
-    format.setVersion(4, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    QSurfaceFormat::setDefaultFormat(format);
+    app::setDefaultSurfaceFormat();
     QApplication application(argc, argv);
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
