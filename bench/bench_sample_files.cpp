@@ -141,6 +141,7 @@ int main(int argc, char** argv) {
             // both see the disk in the same state (its speed drifts between minutes here).
             double endToEndRuns[5], writeRuns[5];
             for (int k = 0; k < 5; ++k) {
+                ::sync(); // neither measurement pays for the other's writeback or the last file's removal
                 auto report = sampling::sampleToFile(compute, job, path, format, metadata, {});
                 if (!report) {
                     std::fprintf(stderr, "bench_sample_files: %s\n", report.error().message.c_str());
@@ -149,6 +150,7 @@ int main(int argc, char** argv) {
                 const std::uint64_t bytes = fs::file_size(path);
                 fs::remove(path);
                 endToEndRuns[k] = report->seconds;
+                ::sync();
                 writeRuns[k] = writeSeconds(folder, bytes, std::size_t(job.chunkSize) * 28);
                 if (k == 0) std::printf("| %s | %s | %.0f ", pattern, sampling::formatName(format), double(bytes) / 1e6);
             }

@@ -49,11 +49,13 @@ struct BufferSet {
     GlBuffer buffers[3];
     const float* mapped[3] = {};
     std::uint32_t capacity = 0;
+    bool interleaved = false; // buffers[0] holds 7-float rows; the other two are placeholders
 
     void reset() {
         for (GlBuffer& buffer : buffers) buffer.reset(); // deleting a buffer unmaps it
         for (const float*& pointer : mapped) pointer = nullptr;
         capacity = 0;
+        interleaved = false;
     }
     void release() {
         for (GlBuffer& buffer : buffers) buffer.release();
@@ -62,23 +64,24 @@ struct BufferSet {
 
 struct SampleCompute::Impl {
     GlProgram program;
-    BufferSet plain;    // run(): read back with glGetBufferSubData
-    BufferSet slots[2]; // runMapped()
-    GlBuffer badRows;   // one uint: the dispatch's rows with a non-finite value
-    GlBuffer inputs;    // caller's points (analysis/points.glsl)
-    GlTexture noise;    // g3d_uniformRandom, made when the program reads it
+    BufferSet plain;         // run(): read back with glGetBufferSubData
+    BufferSet slots[kSlots]; // runMapped()
+    GlBuffer badRows;        // one uint: the dispatch's rows with a non-finite value
+    GlBuffer inputs;         // caller's points (analysis/points.glsl)
+    GlTexture noise;         // g3d_uniformRandom, made when the program reads it
     std::string source;
     GLint location(const char* name) const { return glGetUniformLocation(program.id(), name); }
-    Expected<void> reserve(BufferSet& set, std::uint32_t count, bool mapped);
+    Expected<void> reserve(BufferSet& set, std::uint32_t count, bool mapped, bool interleaved = false);
     Expected<std::uint32_t> dispatch(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, BufferSet& set,
-                                     bool positions, bool gradients);
+                                     bool positions, bool gradients, bool interleaved = false);
 };
 
-Expected<void> SampleCompute::Impl::reserve(BufferSet& set, std::uint32_t count, bool mapped) {
-    if (count <= set.capacity) return {};
+Expected<void> SampleCompute::Impl::reserve(BufferSet& set, std::uint32_t count, bool mapped, bool interleaved) {
+    if (count <= set.capacity && interleaved == set.interleaved) return {};
     set.reset();
     while (glGetError() != GL_NO_ERROR) {}
-    const GLsizeiptr sizes[3] = {GLsizeiptr(count) * 12, GLsizeiptr(count) * 4, GLsizeiptr(count) * 12};
+    const GLsizeiptr sizes[3] = {GLsizeiptr(count) * (interleaved ? 28 : 12), interleaved ? 4 : GLsizeiptr(count) * 4,
+                                 interleaved ? 4 : GLsizeiptr(count) * 12};
     const GLbitfield access = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
     for (int i = 0; i < 3; ++i) {
         GLuint id = 0;
@@ -101,6 +104,7 @@ Expected<void> SampleCompute::Impl::reserve(BufferSet& set, std::uint32_t count,
                          "); try a smaller --chunk");
     }
     set.capacity = count;
+    set.interleaved = interleaved;
     return {};
 }
 
@@ -151,7 +155,7 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
 }
 
 Expected<std::uint32_t> SampleCompute::Impl::dispatch(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count,
-                                                      BufferSet& set, bool positions, bool gradients) {
+                                                      BufferSet& set, bool positions, bool gradients, bool interleaved) {
     glUseProgram(program.id());
     glUniform1ui(location("sdfwb_sampleCount"), uniforms.sampleCount);
     glUniform2ui(location("sdfwb_seed"), GLuint(uniforms.seed & 0xffffffffu), GLuint(uniforms.seed >> 32));
@@ -168,6 +172,7 @@ Expected<std::uint32_t> SampleCompute::Impl::dispatch(const SampleUniforms& unif
     // A target not wanted is skipped by the shader (the gradient's six evaluations included).
     if (GLint at = location("sdfwb_writePosition"); at >= 0) glUniform1i(at, positions ? 1 : 0);
     if (GLint at = location("sdfwb_writeGradient"); at >= 0) glUniform1i(at, gradients ? 1 : 0);
+    if (GLint at = location("sdfwb_interleaved"); at >= 0) glUniform1i(at, interleaved ? 1 : 0);
     glUniform1ui(location("sdfwb_chunkFirst"), first);
     glUniform1ui(location("sdfwb_chunkCount"), count);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingPositions, set.buffers[0].id());
@@ -235,20 +240,22 @@ Expected<std::uint32_t> SampleCompute::run(const SampleUniforms& uniforms, std::
     return bad;
 }
 
-Expected<MappedRows> SampleCompute::runMapped(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count,
-                                              int slot) {
+Expected<MappedRows> SampleCompute::runMapped(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, int slot,
+                                              RowLayout layout) {
     if (!m_impl->program) return makeError("sampling: no compiled sampler");
     if (count > kMaxChunk)
         return makeError("sampling: chunk of " + std::to_string(count) + " exceeds " + std::to_string(kMaxChunk));
-    BufferSet& set = m_impl->slots[slot & 1];
+    BufferSet& set = m_impl->slots[std::size_t(slot) % kSlots];
     while (glGetError() != GL_NO_ERROR) {}
-    if (auto ok = m_impl->reserve(set, std::max(count, 1u), true); !ok) return ok.error();
-    auto bad = m_impl->dispatch(uniforms, first, count, set, true, true);
+    const bool interleaved = layout == RowLayout::Interleaved;
+    if (auto ok = m_impl->reserve(set, std::max(count, 1u), true, interleaved); !ok) return ok.error();
+    auto bad = m_impl->dispatch(uniforms, first, count, set, true, true, interleaved);
     if (!bad) return bad.error();
     // The count's read-back waited for the dispatch; coherent mappings see its writes after a fence.
     GLsync fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
     glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, GLuint64(60) * 1000000000u);
     glDeleteSync(fence);
+    if (interleaved) return MappedRows{nullptr, nullptr, nullptr, *bad, set.mapped[0]};
     return MappedRows{set.mapped[0], set.mapped[1], set.mapped[2], *bad};
 }
 

@@ -12,7 +12,9 @@ static_assert(std::endian::native == std::endian::little, "sdfwb writes little-e
 class BinWriter final : public SampleWriter {
 public:
     BinWriter(OutputFile file, std::uint64_t rows, const SampleMetadata& metadata)
-        : m_file(std::move(file)), m_rows(rows), m_metadata(metadata) {}
+        : m_file(std::move(file)), m_rows(rows), m_metadata(metadata) {
+        m_file.reserve(4 + 28 * rows);
+    }
 
     Expected<void> append(const float* positions, const float* distances, const float* gradients, std::size_t n) override {
         if (m_written + n > m_rows) return makeError(m_file.target().string() + ": more rows than announced");

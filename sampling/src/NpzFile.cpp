@@ -191,6 +191,7 @@ public:
             offset += localHeader(e, m_zip64).size() + e.size;
         }
         m_end = offset;
+        m_file.reserve(m_end); // the small entries and the directory are appended after it
         m_small = {stringArray("sdf.npy", metadata.sdf),
                    stringArray("pattern.npy", metadata.pattern),
                    scalarArray<std::uint64_t>("seed.npy", "<u8", metadata.seed),

@@ -34,6 +34,12 @@ OutputFile::~OutputFile() {
     if (!m_committed && !m_temporary.empty()) ::unlink(m_temporary.c_str());
 }
 
+void OutputFile::reserve(std::uint64_t bytes) {
+#ifdef __linux__
+    if (bytes > 0) (void)::fallocate(m_fd, 0, 0, off_t(bytes));
+#endif
+}
+
 Expected<void> OutputFile::writeAt(std::uint64_t offset, const void* data, std::size_t size) {
     const char* bytes = static_cast<const char*>(data);
     while (size > 0) {

@@ -18,6 +18,9 @@ public:
     OutputFile(const OutputFile&) = delete;
     ~OutputFile();
 
+    // Allocates the file's final size on disk up front (one extent allocation instead of one per
+    // written range at writeback); a file system that cannot is left as it is.
+    void reserve(std::uint64_t bytes);
     Expected<void> writeAt(std::uint64_t offset, const void* data, std::size_t size);
     // fsync, close, rename over the target.
     Expected<void> commit();

@@ -40,7 +40,9 @@ std::string header(std::uint64_t rows, const SampleMetadata& m) {
 class PlyWriter final : public SampleWriter {
 public:
     PlyWriter(OutputFile file, std::uint64_t rows, std::string header)
-        : m_file(std::move(file)), m_rows(rows), m_dataOffset(header.size()), m_header(std::move(header)) {}
+        : m_file(std::move(file)), m_rows(rows), m_dataOffset(header.size()), m_header(std::move(header)) {
+        m_file.reserve(m_dataOffset + kRowBytes * rows);
+    }
 
     Expected<void> append(const float* positions, const float* distances, const float* gradients, std::size_t n) override {
         if (m_written + n > m_rows) return makeError(m_file.target().string() + ": more rows than announced");
@@ -62,6 +64,15 @@ public:
             if (auto ok = m_file.writeAt(m_dataOffset + kRowBytes * (m_written + first), m_buffer.data(), kRowBytes * count); !ok)
                 return ok;
         }
+        m_written += n;
+        return {};
+    }
+
+    bool takesRows() const override { return true; }
+
+    Expected<void> appendRows(const float* rows, std::size_t n) override {
+        if (m_written + n > m_rows) return makeError(m_file.target().string() + ": more rows than announced");
+        if (auto ok = m_file.writeAt(m_dataOffset + kRowBytes * m_written, rows, kRowBytes * n); !ok) return ok;
         m_written += n;
         return {};
     }

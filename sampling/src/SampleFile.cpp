@@ -77,6 +77,22 @@ std::uint64_t maxRows(SampleFormat format) {
 }
 
 SampleWriter::~SampleWriter() = default;
+
+Expected<void> SampleWriter::appendRows(const float* rows, std::size_t n) {
+    SampleSet block;
+    for (std::size_t first = 0; first < n; first += detail::kCopyChunkRows) {
+        const std::size_t count = std::min(detail::kCopyChunkRows, n - first);
+        block.resize(count);
+        for (std::size_t i = 0; i < count; ++i) {
+            const float* row = rows + 7 * (first + i);
+            std::copy(row, row + 3, block.positions.data() + 3 * i);
+            block.distances[i] = row[3];
+            std::copy(row + 4, row + 7, block.gradients.data() + 3 * i);
+        }
+        if (auto ok = append(block.positions.data(), block.distances.data(), block.gradients.data(), count); !ok) return ok;
+    }
+    return {};
+}
 SampleReader::~SampleReader() = default;
 
 Expected<std::unique_ptr<SampleWriter>> SampleWriter::create(const fs::path& path, SampleFormat format, std::uint64_t rows,

@@ -75,8 +75,10 @@ Expected<SamplingReport> run(const SamplingJob& job, Dispatch dispatch, Consume 
     return report;
 }
 
-// Writes chunk k on its own thread while the GL thread computes chunk k + 1 into the other of
-// SampleCompute's two mapped buffer sets: the writer reads the rows where the shader wrote them.
+// Writes chunk k on its own thread while the GL thread computes the next chunks into the other
+// SampleCompute::kSlots mapped buffer sets: the writer reads the rows where the shader wrote them.
+// Four slots rather than two absorb the writer's uneven pace (a write that waits on the disk), so
+// the GL thread seldom waits for a free slot.
 // The first write error stops the run at the next chunk.
 class PipelinedWriter {
 public:
@@ -108,14 +110,16 @@ public:
             m_queue.push_back({rows, n, m_next});
         }
         m_changed.notify_all();
-        m_next ^= 1;
+        m_next = (m_next + 1) % renderer::SampleCompute::kSlots;
         return {};
     }
 
     // Waits until every submitted chunk is written.
     Expected<void> drain() {
         std::unique_lock lock(m_mutex);
-        m_changed.wait(lock, [&] { return m_queue.empty() && !m_busy[0] && !m_busy[1]; });
+        m_changed.wait(lock, [&] {
+            return m_queue.empty() && std::none_of(std::begin(m_busy), std::end(m_busy), [](bool busy) { return busy; });
+        });
         if (m_error) return *m_error;
         return {};
     }
@@ -137,7 +141,9 @@ private:
             const bool skip = m_error.has_value();
             lock.unlock();
             Expected<void> ok;
-            if (!skip) ok = m_writer.append(chunk.rows.positions, chunk.rows.distances, chunk.rows.gradients, chunk.n);
+            if (!skip)
+                ok = chunk.rows.rows ? m_writer.appendRows(chunk.rows.rows, chunk.n)
+                                     : m_writer.append(chunk.rows.positions, chunk.rows.distances, chunk.rows.gradients, chunk.n);
             lock.lock();
             if (!ok && !m_error) m_error = ok.error();
             m_busy[chunk.slot] = false;
@@ -146,7 +152,7 @@ private:
     }
 
     SampleWriter& m_writer;
-    bool m_busy[2] = {false, false};
+    bool m_busy[renderer::SampleCompute::kSlots] = {};
     int m_next = 0; // the slot the GL thread computes into next (its thread only)
     std::deque<Chunk> m_queue;
     std::optional<Error> m_error;
@@ -202,8 +208,9 @@ Expected<SamplingReport> sampleToFile(renderer::SampleCompute& compute, const Sa
     auto writer = SampleWriter::create(path, format, job.rows(), full);
     if (!writer) return writer.error();
     PipelinedWriter pipeline(**writer);
+    const renderer::RowLayout layout = (*writer)->takesRows() ? renderer::RowLayout::Interleaved : renderer::RowLayout::Separate;
     auto dispatch = [&](const renderer::SampleUniforms& uniforms, std::uint32_t first, std::uint64_t, std::uint32_t count) {
-        return compute.runMapped(uniforms, first, count, pipeline.nextSlot());
+        return compute.runMapped(uniforms, first, count, pipeline.nextSlot(), layout);
     };
     auto consume = [&](const renderer::MappedRows& rows, std::size_t n) { return pipeline.submit(rows, n); };
     auto report = run(job, dispatch, consume, progress);

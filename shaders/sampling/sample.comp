@@ -17,6 +17,9 @@ uniform uint sdfwb_chunkCount;  // samples in this chunk
 // off the gradient's six extra evaluations and the writes they do not read back.
 uniform bool sdfwb_writeGradient = true;
 uniform bool sdfwb_writePosition = true;
+// Rows of 7 floats (x y z distance gx gy gz) in the positions buffer, as .ply stores them, so the
+// host writes the chunk to the file without rearranging it.
+uniform bool sdfwb_interleaved = false;
 
 void main() {
     uint local = gl_GlobalInvocationID.x;
@@ -40,6 +43,17 @@ void main() {
     if (sdfwb_writePosition) finite = finite && all(notEqual(floatBitsToUint(position) & exponent, uvec3(exponent)));
     if (sdfwb_writeGradient) finite = finite && all(notEqual(floatBitsToUint(gradient) & exponent, uvec3(exponent)));
     if (!finite) atomicAdd(sdfwb_badRows, 1u);
+    if (sdfwb_interleaved) {
+        uint row = 7u * local;
+        sdfwb_positions[row + 0u] = position.x;
+        sdfwb_positions[row + 1u] = position.y;
+        sdfwb_positions[row + 2u] = position.z;
+        sdfwb_positions[row + 3u] = distance;
+        sdfwb_positions[row + 4u] = gradient.x;
+        sdfwb_positions[row + 5u] = gradient.y;
+        sdfwb_positions[row + 6u] = gradient.z;
+        return;
+    }
     if (sdfwb_writePosition) {
         sdfwb_positions[3u * local + 0u] = position.x;
         sdfwb_positions[3u * local + 1u] = position.y;

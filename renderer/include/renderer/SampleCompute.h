@@ -34,11 +34,16 @@ struct SampleUniforms {
 };
 
 struct MappedRows {
-    const float* positions; // 3 per row
+    const float* positions; // 3 per row (null in the interleaved layout)
     const float* distances;
-    const float* gradients; // 3 per row
-    std::uint32_t badRows;  // rows with a NaN or infinity
+    const float* gradients;      // 3 per row
+    std::uint32_t badRows;       // rows with a NaN or infinity
+    const float* rows = nullptr; // interleaved layout: x y z distance gx gy gz per row
 };
+
+// How runMapped() leaves a chunk's rows: three arrays, or one array of 7-float rows written so by
+// the shader (what .ply stores, so the host copies it to the file as it is).
+enum class RowLayout { Separate, Interleaved };
 
 class SampleCompute {
 public:
@@ -60,11 +65,13 @@ public:
     Expected<std::uint32_t> run(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, float* positions,
                                 float* distances, float* gradients);
 
-    // The same rows (all three arrays), left where the shader wrote them: buffer set `slot` (0 or
-    // 1) stays mapped, so nothing is copied on the host. The pointers are valid until the next
-    // runMapped() into the same slot, releaseGl() or destruction; two slots let one chunk be
+    // The same rows (all three arrays), left where the shader wrote them: buffer set `slot` (0 to
+    // kSlots - 1) stays mapped, so nothing is copied on the host. The pointers are valid until the
+    // next runMapped() into the same slot, releaseGl() or destruction; several slots let chunks be
     // written out while the next is computed.
-    Expected<MappedRows> runMapped(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, int slot);
+    static constexpr int kSlots = 4;
+    Expected<MappedRows> runMapped(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, int slot,
+                                   RowLayout layout = RowLayout::Separate);
 
     // The composed compute source (for tests and the log).
     const std::string& source() const;

@@ -68,6 +68,11 @@ public:
     // Appends the next n rows: 3n positions, n distances, 3n gradients.
     virtual Expected<void> append(const float* positions, const float* distances, const float* gradients, std::size_t n) = 0;
 
+    // The same from one array of 7-float rows (x y z distance gx gy gz). A format that stores rows
+    // so (.ply) says so with takesRows() and writes them without rearranging; the others split them.
+    virtual bool takesRows() const { return false; }
+    virtual Expected<void> appendRows(const float* rows, std::size_t n);
+
     // After exactly `rows` rows: finishes the file, flushes it to disk and renames it into place.
     virtual Expected<void> commit() = 0;
 
