@@ -37,8 +37,13 @@ constexpr std::ptrdiff_t kFusedMarchFromCharacters = 1000;
 // driver). The fused loop's control costs more per evaluation than the cheapest SDFs do, and
 // saves the driver two copies of an SDF: past about a thousand characters of code it pays in
 // (bench/bench_tracer, bench/bench_cold_edit). SDFWB_FUSED_MARCH=0/1 overrides, for benchmarks.
+bool marchForced() {
+    const char* forced = std::getenv("SDFWB_FUSED_MARCH");
+    return forced && *forced;
+}
+
 bool fuseMarch(const shaders::PreparedSdf& prepared) {
-    if (const char* forced = std::getenv("SDFWB_FUSED_MARCH"); forced && *forced) return forced[0] == '1';
+    if (marchForced()) return std::getenv("SDFWB_FUSED_MARCH")[0] == '1';
     // With what it includes: a library's helpers reach the driver too (and cost it time).
     const std::string code = shaders::stripComments(prepared.source.text);
     const auto characters =
@@ -51,6 +56,7 @@ bool fuseMarch(const shaders::PreparedSdf& prepared) {
 struct Variant {
     GlProgram program;
     std::string fragmentSource;
+    bool fusedMarch = false;
     std::unordered_map<std::string, GLint> uniforms;
     std::uint64_t lastUse = 0;
 
@@ -65,7 +71,12 @@ struct Variant {
 
 struct SdfRenderer::Impl {
     std::optional<shaders::PreparedSdf> sdf; // the last SDF that compiled
-    std::map<std::string, Variant> cache;    // by composed fragment text
+    // settleMarch(): where the choice between the fused and the separate march stands.
+    enum class Settle { Open, TryingSeparate, Done };
+    Settle settle = Settle::Open;
+    bool separateChosen = false; // a long SDF marches separately (its frames were faster so)
+    double fusedMilliseconds = 0.0;
+    std::map<std::string, Variant> cache; // by composed fragment text
     Variant* current = nullptr;
     GlVertexArray vertexArray;
     std::uint64_t clock = 0;
@@ -145,7 +156,7 @@ struct SdfRenderer::Impl {
     // Builds (or finds) the program for `sdf` with `features`. Null on failure, with diagnostics.
     Variant* build(const shaders::PreparedSdf& prepared, shaders::TracerFeatures tracerFeatures,
                    std::vector<Diagnostic>& diagnostics) {
-        tracerFeatures.fusedMarch = fuseMarch(prepared);
+        tracerFeatures.fusedMarch = fuseMarch(prepared) && !separateChosen;
         auto fragment = shaders::composeTracer(prepared, tracerFeatures);
         if (!fragment) {
             diagnostics.push_back({"<sdfwb>", 0, 0, shaders::Severity::Error, fragment.error().message});
@@ -186,6 +197,7 @@ struct SdfRenderer::Impl {
         Variant& variant = cache[fragment->text];
         variant.program = std::move(program);
         variant.fragmentSource = fragment->text;
+        variant.fusedMarch = tracerFeatures.fusedMarch;
         variant.lastUse = ++clock;
         return &variant;
     }
@@ -232,11 +244,51 @@ SdfRenderer::~SdfRenderer() {
 std::vector<Diagnostic> SdfRenderer::setSdf(const shaders::PreparedSdf& sdf) {
     std::vector<Diagnostic> diagnostics = sdf.diagnostics;
     if (shaders::hasErrors(diagnostics)) return diagnostics;
+    const bool separateBefore = m_impl->separateChosen;
+    m_impl->separateChosen = false; // a new SDF starts with the quickest code generation
     Variant* variant = m_impl->build(sdf, Impl::features(m_shading, m_trace, m_plane), diagnostics);
-    if (!variant) return diagnostics;
+    if (!variant) {
+        m_impl->separateChosen = separateBefore; // the last good SDF keeps its program
+        return diagnostics;
+    }
     m_impl->sdf = sdf;
     m_impl->current = variant;
+    m_impl->settle = Impl::Settle::Open;
     return diagnostics;
+}
+
+bool SdfRenderer::fusedMarch() const { return m_impl->current && m_impl->current->fusedMarch; }
+
+bool SdfRenderer::settleMarch(double fullFrameMilliseconds) {
+    Impl& impl = *m_impl;
+    if (!impl.sdf || !impl.current || impl.settle == Impl::Settle::Done) return false;
+    auto rebuild = [&](bool separate) {
+        impl.separateChosen = separate;
+        std::vector<Diagnostic> ignored;
+        Variant* variant = impl.build(*impl.sdf, Impl::features(m_shading, m_trace, m_plane), ignored);
+        if (variant) impl.current = variant;
+        return variant != nullptr;
+    };
+    if (impl.settle == Impl::Settle::Open) {
+        impl.settle = Impl::Settle::Done;
+        if (marchForced() || !fusedMarch() || !(fullFrameMilliseconds < kTrySeparateMarchBelowMilliseconds)) return false;
+        impl.fusedMilliseconds = fullFrameMilliseconds;
+        if (!rebuild(true)) { // the driver refused it: the fused program stays (from the cache)
+            rebuild(false);
+            return false;
+        }
+        impl.settle = Impl::Settle::TryingSeparate;
+        log::info("render", "trying the separate march: the fused one drew a full frame in " +
+                                std::to_string(int(std::lround(fullFrameMilliseconds))) + " ms");
+        return true;
+    }
+    impl.settle = Impl::Settle::Done; // TryingSeparate: this frame was the separate march's
+    const bool keep = fullFrameMilliseconds <= impl.fusedMilliseconds;
+    log::info("render", std::string(keep ? "keeping" : "dropping") +
+                            " the separate march: " + std::to_string(int(std::lround(fullFrameMilliseconds))) +
+                            " ms a full frame against " + std::to_string(int(std::lround(impl.fusedMilliseconds))) + " fused");
+    if (keep) return false;
+    return rebuild(false);
 }
 
 std::vector<Diagnostic> SdfRenderer::setShading(const ShadingSettings& shading) {

@@ -337,6 +337,24 @@ TEST(Viewport, MovingRendersCheaplyThenRefines) {
     EXPECT_EQ(viewport->lastFrameScale(), 1.0f) << "a full-resolution frame follows when still";
 }
 
+// A long SDF that is cheap per evaluation opens with the fused march (the quickest code generation
+// after an edit); a while after its full frame at rest the viewport trades it for the separate
+// march, which draws its frames faster, and the picture stays the same.
+TEST(Viewport, AtRestALongCheapSdfTradesTheFusedMarchForFasterFrames) {
+    app::MainWindow window;
+    window.resize(1000, 600);
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "Manufactured/Mug.glsl"));
+    widgets::ViewportWidget* viewport = window.viewport();
+    EXPECT_TRUE(viewport->fusedMarch()) << "a long SDF opens with the fused march";
+    const QImage fused = fullResolutionFrame(window);
+    ASSERT_TRUE(waitFor([&] { return !viewport->fusedMarch(); }, 20000)) << "never traded at rest";
+    EXPECT_FALSE(viewport->isInteracting());
+    const QImage separate = fullResolutionFrame(window);
+    EXPECT_LT(changedPixels(fused, separate), long(fused.width()) * fused.height() / 1000);
+    EXPECT_GT(foreground(separate, kBackground), long(separate.width()) * separate.height() / 50);
+}
+
 TEST(Viewport, CameraPanelMovesTheCameraAndTheSessionKeepsIt) {
     renderer::Camera edited;
     {

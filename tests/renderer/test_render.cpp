@@ -137,6 +137,63 @@ TEST(BatchRender, WritesAPngWithoutADisplay) {
     fs::remove(out);
 }
 
+// A long SDF starts with the fused march (the quickest code generation after an edit). At rest, a
+// full frame under the threshold trades it once for the separate march; the separate frame's time
+// decides which stays. A slow frame, a short SDF or a new SDF behave as the renderer documents.
+TEST_F(RendererTest, SettleMarchKeepsTheFasterOfTheTwoMarches) {
+    unsetenv("SDFWB_FUSED_MARCH");
+    const fs::path foreign = fs::path(SDFWB_SOURCE_DIR) / "tests" / "foreign";
+    shaders::IncludeOptions options;
+    options.libraryRoots = {fs::path(SDFWB_SOURCE_DIR) / "shaders" / "lib"};
+    const shaders::PreparedSdf longSdf = shaders::prepareSdfFile(foreign / "01_iq_primitives.glsl", options);
+    ASSERT_FALSE(shaders::hasErrors(longSdf.diagnostics));
+    const double fast = renderer::SdfRenderer::kTrySeparateMarchBelowMilliseconds / 4;
+    renderer::OffscreenRenderer offscreen;
+    renderer::SdfRenderer sdfRenderer;
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(longSdf)));
+    EXPECT_TRUE(sdfRenderer.fusedMarch());
+    const renderer::Image fused = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
+
+    // Faster separately: the separate march stays, and draws the same picture.
+    EXPECT_TRUE(sdfRenderer.settleMarch(fast));
+    EXPECT_FALSE(sdfRenderer.fusedMarch());
+    const renderer::Image separate = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
+    EXPECT_FALSE(sdfRenderer.settleMarch(fast * 0.9));
+    EXPECT_FALSE(sdfRenderer.fusedMarch());
+    EXPECT_FALSE(sdfRenderer.settleMarch(fast * 0.5)) << "the choice is made once per SDF";
+    long differing = 0;
+    for (std::size_t i = 0; i < fused.rgba.size(); ++i) differing += std::abs(fused.rgba[i] - separate.rgba[i]) > 2;
+    EXPECT_LE(differing, long(fused.rgba.size() / 1000));
+
+    // Other settings keep the choice (another variant of the same SDF marches separately too).
+    renderer::ShadingSettings shading;
+    shading.mode = renderer::ShadingMode::Normals;
+    (void)sdfRenderer.setShading(shading);
+    EXPECT_FALSE(sdfRenderer.fusedMarch());
+
+    // Slower separately: back to the fused program, from the cache (nothing compiled).
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(longSdf)));
+    EXPECT_TRUE(sdfRenderer.fusedMarch()) << "a new SDF starts fused again";
+    EXPECT_TRUE(sdfRenderer.settleMarch(fast));
+    EXPECT_FALSE(sdfRenderer.fusedMarch());
+    const std::uint64_t built = sdfRenderer.programsBuilt();
+    EXPECT_TRUE(sdfRenderer.settleMarch(fast * 1.5));
+    EXPECT_TRUE(sdfRenderer.fusedMarch());
+    EXPECT_EQ(sdfRenderer.programsBuilt(), built);
+    EXPECT_FALSE(sdfRenderer.settleMarch(fast));
+
+    // A slow frame (heavy SDF: the fused march's code generation pays) keeps the fused march.
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(longSdf)));
+    EXPECT_FALSE(sdfRenderer.settleMarch(renderer::SdfRenderer::kTrySeparateMarchBelowMilliseconds * 2));
+    EXPECT_TRUE(sdfRenderer.fusedMarch());
+
+    // A short SDF marches separately from the start: nothing to trade.
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n"))));
+    EXPECT_FALSE(sdfRenderer.fusedMarch());
+    EXPECT_FALSE(sdfRenderer.settleMarch(fast));
+    sdfRenderer.releaseGl();
+}
+
 // The fused march (march, thin-feature probe and normal taps in one loop around one call of the
 // SDF, chosen for larger SDFs) draws what the separate functions draw: same hits, same normals,
 // for users' code in several styles, plain and over-relaxed, in every shading mode with a normal.

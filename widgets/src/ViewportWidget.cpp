@@ -35,6 +35,21 @@ ViewportWidget::ViewportWidget(QWidget* parent)
         m_interacting = false;
         update();
     });
+    // Long enough that the next edit while typing (each valid one draws a new full frame, which
+    // restarts this) or a camera drag comes first: trading the march costs a stall for the
+    // driver's code generation (tens of milliseconds: only SDFs with quick frames are traded).
+    m_settleTimer.setSingleShot(true);
+    m_settleTimer.setInterval(1500);
+    connect(&m_settleTimer, &QTimer::timeout, this, [this] {
+        if (m_interacting || m_needsProbe || !context() || !isValid()) return;
+        makeCurrent();
+        const bool changed = m_renderer->settleMarch(m_settleFrameMilliseconds);
+        doneCurrent();
+        if (changed) {
+            m_warmProgram = true;
+            update();
+        }
+    });
     m_flyTimer.setInterval(16);
     connect(&m_flyTimer, &QTimer::timeout, this, &ViewportWidget::flyStep);
 }
@@ -65,6 +80,8 @@ std::vector<shaders::Diagnostic> ViewportWidget::setSdf(const shaders::PreparedS
     update();
     return diagnostics;
 }
+
+bool ViewportWidget::fusedMarch() const { return m_renderer->fusedMarch(); }
 
 void ViewportWidget::setShading(const renderer::ShadingSettings& shading) {
     m_shading = shading;
@@ -261,6 +278,10 @@ void ViewportWidget::paintGL() {
     // A new SDF: the probe sizes its first frame, which follows in this same paint (a second
     // paint request would wait for the next update cycle, 15 to 30 ms here).
     if (m_needsProbe) probeNewSdf(width, height);
+    if (m_warmProgram) { // settleMarch() changed the program: its code generation on a tiny draw
+        m_warmProgram = false;
+        m_renderer->renderScaled(width, height, renderer::FrameScaler::kProbeScale, m_camera, m_time, true);
+    }
     const float scale = m_scaler.scaleFor(width, height, m_interacting);
     // finish: the status bar and the scale choice see what the frame really cost.
     renderer::FrameStats stats = m_renderer->renderScaled(width, height, scale, m_camera, m_time, true);
@@ -272,6 +293,10 @@ void ViewportWidget::paintGL() {
     }
     m_lastFrameMilliseconds = stats.cpuMilliseconds;
     m_lastScale = scale;
+    if (scale >= 1.0f && !m_interacting && !m_previewFrame) {
+        m_settleFrameMilliseconds = stats.cpuMilliseconds;
+        m_settleTimer.start();
+    }
     if (m_meshOverlay->hasMesh() && m_lastGoodSdf) {
         if (m_overlayGeneration != m_sdfGeneration) {
             for (const auto& d : m_meshOverlay->setSdf(*m_lastGoodSdf)) log::warning("mesh", shaders::formatDiagnostic(d));
@@ -389,6 +414,7 @@ void ViewportWidget::interacted() {
         m_scaler.startInteraction();
     }
     m_refineTimer.start();
+    m_settleTimer.stop();
     update();
     emit cameraChanged(m_camera);
 }

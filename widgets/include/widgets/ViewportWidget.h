@@ -77,6 +77,9 @@ public:
     double lastFrameMilliseconds() const { return m_lastFrameMilliseconds; }
     float lastFrameScale() const { return m_lastScale; }
     bool isInteracting() const { return m_interacting; }
+    // Whether the picture marches through the fused loop (see SdfRenderer::settleMarch: a long SDF
+    // starts so and may trade it for the separate march a while after a full frame at rest).
+    bool fusedMarch() const;
 
     // Renders one full-quality frame at width x height (screenshots). Empty image without GL.
     renderer::Image renderImage(int width, int height);
@@ -183,6 +186,10 @@ private:
     QTimer m_flyTimer;
     QElapsedTimer m_flyClock;
     QTimer m_refineTimer;
+    // A while after a full frame at rest: SdfRenderer::settleMarch() with that frame's time.
+    QTimer m_settleTimer;
+    double m_settleFrameMilliseconds = 0.0;
+    bool m_warmProgram = false; // a new program: a small draw takes its code generation first
     bool m_interacting = false;
     float m_lastScale = 1.0f;
     bool m_previewFrame = false; // the next frame is a new slow SDF's first, at the moving scale
