@@ -46,6 +46,7 @@ struct sdfwb_Hit {
     int steps;      // steps taken (the budget when it ran out)
     vec3 position;
     int status;     // sdfwb_kRayHit, sdfwb_kRayLeftBox, sdfwb_kRayOutOfSteps or sdfwb_kRayNotFinite
+    float value;    // f at position (a hit's; the normal's taps are measured against it)
 };
 
 // Ray against the axis-aligned box [-b, b]^3; returns (tNear, tFar), tNear > tFar when missed.
@@ -149,14 +150,33 @@ int sdfwb_probeKindOf(int event) {
 #endif
 
 sdfwb_Hit sdfwb_traceRay(vec3 origin, vec3 direction) {
-    sdfwb_Hit hit = sdfwb_Hit(false, 0.0, 0, origin, sdfwb_kRayLeftBox);
+    sdfwb_Hit hit = sdfwb_Hit(false, 0.0, 0, origin, sdfwb_kRayLeftBox, 0.0);
     sdfwb_March march;
     if (!sdfwb_startMarch(origin, direction, march)) {
         SDFWB_RECORD(sdfwb_kProbeMissedBox, march.tStart, march.entry, 0.0);
         return hit;
     }
-    hit.status = sdfwb_kRayOutOfSteps;
     float d = 0.0; // the last value: at a hit, f where the march stopped
+#if !defined(SDFWB_PROBE) && !defined(SDFWB_OVERRELAX)
+    // The plain march as tight as the textbook loop (on llvmpipe every operation a step carries
+    // costs each pixel): one test stops at a hit and at NaN (which fails every comparison), the
+    // loop's own condition at the box's end (where a step of +Inf goes), and why the ray ended is
+    // told once after the loop (a step of -Inf leaves s at -Inf: not finite either).
+    int step = 0;
+    for (; step < sdfwb_maxSteps && march.s <= march.sEnd; ++step) {
+        d = sdfwb_sceneMap(march.entry + march.s * direction) * sdfwb_stepFactor;
+        if (!(abs(d) >= march.footprint * (march.tStart + march.s))) break;
+        march.s += d;
+    }
+    const bool stopped = step < sdfwb_maxSteps && march.s <= march.sEnd; // by the test, not the loop
+    hit.steps = stopped ? step + 1 : step;
+    if (isnan(d) || isinf(d) || isinf(march.s))
+        hit.status = sdfwb_kRayNotFinite;
+    else
+        hit.status = stopped ? sdfwb_kRayHit : march.s > march.sEnd ? sdfwb_kRayLeftBox : sdfwb_kRayOutOfSteps;
+    hit.found = hit.status == sdfwb_kRayHit;
+#else
+    hit.status = sdfwb_kRayOutOfSteps;
     for (int step = 0; step < sdfwb_maxSteps; ++step) {
         hit.steps = step + 1;
         float t = march.tStart + march.s;
@@ -180,6 +200,7 @@ sdfwb_Hit sdfwb_traceRay(vec3 origin, vec3 direction) {
             break;
         }
     }
+#endif
 #ifdef SDFWB_PROBE
     if (hit.status == sdfwb_kRayOutOfSteps && !hit.found)
         SDFWB_RECORD(sdfwb_kProbeOutOfSteps, march.tStart + march.s, march.entry + march.s * direction, 0.0);
@@ -188,6 +209,7 @@ sdfwb_Hit sdfwb_traceRay(vec3 origin, vec3 direction) {
         hit.status = sdfwb_kRayHit;
         float next = sdfwb_sceneMap(march.entry + (march.s + d) * direction) * sdfwb_stepFactor;
         SDFWB_RECORD(sdfwb_refineKeeps(d, next) ? sdfwb_kProbeRefineKept : sdfwb_kProbeRefineUndone, march.tStart + march.s + d, march.entry + (march.s + d) * direction, next);
+        hit.value = (sdfwb_refineKeeps(d, next) ? next : d) / sdfwb_stepFactor;
         if (sdfwb_refineKeeps(d, next)) march.s += d;
     }
     hit.t = march.tStart + march.s;
@@ -199,7 +221,7 @@ sdfwb_Hit sdfwb_traceRay(vec3 origin, vec3 direction) {
 // every copy inlines the whole SDF again. With these, each site below holds one copy, so a heavy
 // SDF costs the driver's code generation (on llvmpipe at the first frame) a fraction of the time.
 uniform int sdfwb_gradientTaps = 4;
-uniform int sdfwb_thinProbes = 5;
+uniform int sdfwb_thinRetakes = 5; // times the normal's taps are taken again with a smaller step
 
 // Tap i of the tetrahedral gradient: (1,-1,-1), (-1,-1,1), (-1,1,-1), (1,1,1).
 vec3 sdfwb_tap(int i) { return vec3((i == 0 || i == 3) ? 1.0 : -1.0, i >= 2 ? 1.0 : -1.0, (i == 1 || i == 3) ? 1.0 : -1.0); }
@@ -223,48 +245,75 @@ vec3 sdfwb_unitNormal(vec3 gradient, vec3 direction) {
     return length2 > 0.0 && !isinf(length2) ? gradient * inversesqrt(length2) : -direction;
 }
 
-// Normal with a step matched to the hit distance (a pixel's footprint), never below float noise.
-// A feature thinner than the step (a paper-thin shell, a blade) would let the taps straddle it:
-// their differences cancel and the gradient points anywhere. A probe 2h further along the ray
-// tells: inside a solid at least that thick f is negative there; if it is not, the step shrinks
-// eightfold (at most five times, to 1/32768 of the footprint, never below the float floor).
-vec3 sdfwb_normalAt(vec3 p, float t, vec3 direction) {
-    vec2 steps = sdfwb_normalSteps(p, t);
-    float h = steps.x, floorStep = steps.y;
-    for (int k = 0; k < sdfwb_thinProbes && h > floorStep; ++k) {
-        if (sdfwb_sceneMap(p + 2.0 * h * direction) < 0.0) break;
-        h = max(h * 0.125, floorStep);
-    }
-    return sdfwb_unitNormal(sdfwb_gradientAt(p, h), direction);
+// Whether four taps (their values' sum and their weighted sum) around a point where f = value
+// straddled a feature thinner than their step. The taps sum to zero, so for a field that is
+// linear across them their mean is f at the centre; a surface's curvature adds a term in h^2.
+// Around a sheet thinner than the step every tap lands outside it: the mean rises by about
+// h |grad f| while the weighted sum (the gradient) cancels. The test compares the rise with the
+// weighted sum, so it does not depend on the field's slope or on how far from the surface the hit
+// stopped; for a sphere of radius R it holds once h > R / 2.
+bool sdfwb_straddled(float valueSum, vec3 weightedSum, float value) {
+    float rise = valueSum - 4.0 * value;
+    return rise > 0.0 && rise * rise > 0.25 * dot(weightedSum, weightedSum);
 }
 
-// The march, the refining step, the thin-feature probe and the normal's four taps as one loop
-// around one call of the SDF: what sdfwb_traceRay() followed by sdfwb_normalAt() computes (the
-// same steps, hit, refinement, probe and taps), but the driver inlines the SDF once instead of three times, so a
-// heavy SDF's first frame waits a third as long for code generation. Lanes that hit early take
-// their probe and taps while their neighbours still march. The march debugger and the
+// Normal with a step matched to the hit distance (a pixel's footprint), never below float noise.
+// A feature thinner than the step (a paper-thin shell, a blade) would let the taps straddle it:
+// their differences cancel and the gradient points anywhere. The taps show it: around a surface
+// some tap lies lower than f at the centre (the four taps sum to zero, so some point against the
+// gradient), while around a sheet thinner than the step every tap lands outside it, above the
+// centre. Then they are taken again with an eightfold smaller step (at most five times, to
+// 1/32768 of the footprint, never below the float floor). `value` is f at p. For a sphere of
+// radius R the taps count as straddling once h > 0.43 R, whatever the field's slope and however
+// far from the surface the hit stopped.
+vec3 sdfwb_normalAt(vec3 p, float t, float value, vec3 direction) {
+    vec2 steps = sdfwb_normalSteps(p, t);
+    float h = steps.x;
+    vec3 sum = vec3(0.0);
+    float valueSum = 0.0;
+    int retakes = 0;
+    for (int i = 0; i < 4; ++i) {
+        float f = sdfwb_sceneMap(p + sdfwb_tap(i) * h);
+        sum += sdfwb_tap(i) * f;
+        valueSum += f;
+        if (i == 3 && sdfwb_straddled(valueSum, sum, value) && retakes < sdfwb_thinRetakes && h > steps.y) {
+            h = max(h * 0.125, steps.y);
+            sum = vec3(0.0);
+            valueSum = 0.0;
+            i = -1;
+            ++retakes;
+        }
+    }
+    return sdfwb_unitNormal(sum, direction); // the direction of the gradient sum / (4 h)
+}
+
+// The march, the refining step and the normal's taps (retaken with a smaller step when they
+// straddled a thin feature) as one loop around one call of the SDF: what sdfwb_traceRay()
+// followed by sdfwb_normalAt() computes (the same steps, hit, refinement and taps), but the driver
+// inlines the SDF once instead of three times, so a heavy SDF's first frame waits a third as long
+// for code generation. Lanes that hit early take their taps while their neighbours still march. The march debugger and the
 // statistics output use the separate functions, which record every event.
 const int sdfwb_kPhaseMarch = 0;
-const int sdfwb_kPhaseProbe = 1;
-const int sdfwb_kPhaseTaps = 2;
-const int sdfwb_kPhaseRefine = 3;
+const int sdfwb_kPhaseTaps = 1;
+const int sdfwb_kPhaseRefine = 2;
 
 sdfwb_Hit sdfwb_traceWithNormal(vec3 origin, vec3 direction, out vec3 normal) {
-    sdfwb_Hit hit = sdfwb_Hit(false, 0.0, 0, origin, sdfwb_kRayLeftBox);
+    sdfwb_Hit hit = sdfwb_Hit(false, 0.0, 0, origin, sdfwb_kRayLeftBox, 0.0);
     normal = -direction;
     sdfwb_March march;
     if (!sdfwb_startMarch(origin, direction, march)) return hit;
     hit.status = sdfwb_kRayOutOfSteps;
     int phase = sdfwb_kPhaseMarch;
-    int count = 0;          // probes or taps taken in the current phase
+    int count = 0;          // taps taken
+    int retakes = 0;        // times the taps were taken again with a smaller step
+    float valueSum = 0.0;   // the sum of the taps' values
     float hitValue = 0.0;   // the scaled f where the march stopped
     vec2 steps = vec2(0.0); // the normal's step and its floor
     vec3 sum = vec3(0.0);
-    int budget = sdfwb_maxSteps + 1 + sdfwb_thinProbes + sdfwb_gradientTaps;
+    int budget = sdfwb_maxSteps + 1 + sdfwb_gradientTaps * (1 + sdfwb_thinRetakes);
     for (int iteration = 0; iteration < budget; ++iteration) {
         vec3 at = phase == sdfwb_kPhaseMarch    ? march.entry + march.s * direction
                   : phase == sdfwb_kPhaseRefine ? march.entry + (march.s + hitValue) * direction
-                  : phase == sdfwb_kPhaseProbe  ? hit.position + 2.0 * steps.x * direction
                                                 : hit.position + sdfwb_tap(count) * steps.x;
         float f = sdfwb_sceneMap(at);
         if (phase == sdfwb_kPhaseMarch) {
@@ -288,30 +337,28 @@ sdfwb_Hit sdfwb_traceWithNormal(vec3 origin, vec3 direction, out vec3 normal) {
             }
             if (hit.steps >= sdfwb_maxSteps) break;
         } else if (phase == sdfwb_kPhaseRefine) {
-            if (sdfwb_refineKeeps(hitValue, f * sdfwb_stepFactor)) march.s += hitValue;
+            bool keep = sdfwb_refineKeeps(hitValue, f * sdfwb_stepFactor);
+            hit.value = keep ? f : hitValue / sdfwb_stepFactor;
+            if (keep) march.s += hitValue;
             hit.t = march.tStart + march.s;
             hit.position = march.entry + march.s * direction;
             steps = sdfwb_normalSteps(hit.position, hit.t);
-            phase = steps.x > steps.y && sdfwb_thinProbes > 0 ? sdfwb_kPhaseProbe : sdfwb_kPhaseTaps;
+            phase = sdfwb_kPhaseTaps;
             count = 0;
-        } else if (phase == sdfwb_kPhaseProbe) {
-            // Inside a solid at least 2h thick f is negative there; if not, shrink the step.
-            ++count;
-            if (f < 0.0) {
-                phase = sdfwb_kPhaseTaps;
-                count = 0;
-            } else {
-                steps.x = max(steps.x * 0.125, steps.y);
-                if (count >= sdfwb_thinProbes || !(steps.x > steps.y)) {
-                    phase = sdfwb_kPhaseTaps;
-                    count = 0;
-                }
-            }
         } else {
             sum += sdfwb_tap(count) * f;
+            valueSum += f;
             if (++count >= sdfwb_gradientTaps) {
-                normal = sdfwb_unitNormal(sum / (4.0 * steps.x), direction);
-                break;
+                if (sdfwb_straddled(valueSum, sum, hit.value) && retakes < sdfwb_thinRetakes && steps.x > steps.y) {
+                    steps.x = max(steps.x * 0.125, steps.y);
+                    sum = vec3(0.0);
+                    valueSum = 0.0;
+                    count = 0;
+                    ++retakes;
+                } else {
+                    normal = sdfwb_unitNormal(sum / (4.0 * steps.x), direction);
+                    break;
+                }
             }
         }
     }

@@ -32,7 +32,7 @@ vec4 sdfwb_pixel(vec3 direction) {
     // (-1 left the box, -2 out of steps, -3 NaN/Inf); |f| at the hit; the length of the shading
     // normal (1 unless it went NaN).
     if (hit.found) {
-        vec3 normal = sdfwb_normalAt(hit.position, hit.t, direction);
+        vec3 normal = sdfwb_normalAt(hit.position, hit.t, hit.value, direction);
         return vec4(float(hit.steps), hit.t, abs(sdfwb_sdf(hit.position)), length(normal));
     }
     return vec4(float(hit.steps), -float(hit.status), 0.0, 0.0);
@@ -50,7 +50,7 @@ vec4 sdfwb_pixel(vec3 direction) {
 #endif
     if (!hit.found) return vec4(sdfwb_missColor(), 1.0);
 #if defined(SDFWB_PROBE) || !defined(SDFWB_FUSED_MARCH)
-    vec3 normal = sdfwb_normalAt(hit.position, hit.t, direction);
+    vec3 normal = sdfwb_normalAt(hit.position, hit.t, hit.value, direction);
 #endif
     vec3 color = sdfwb_shade(hit.position, normal, direction, hit);
 #ifdef SDFWB_AO
