@@ -218,6 +218,7 @@ shaders::TracerFeatures tracerFeatures(const ShadingSettings& shading, const Tra
     features.shading = shading.mode;
     features.ambientOcclusion = shading.ambientOcclusion;
     features.overRelaxation = trace.overRelaxation > 1.0f;
+    features.stepFactor = trace.stepFactor != 1.0f;
     features.statsOutput = shading.statsOutput;
     features.probe = shading.probe;
     features.backgroundImage = !shading.backgroundImage.empty();
@@ -338,7 +339,7 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
         glUniform1f(v->location("sdfwb_nearPlane"), camera.nearPlane);
         glUniform1f(v->location("sdfwb_farPlane"), camera.farPlane);
         glUniform1i(v->location("sdfwb_maxSteps"), m_trace.maxSteps);
-        glUniform1f(v->location("sdfwb_stepFactor"), m_trace.stepFactor);
+        if (GLint location = v->location("sdfwb_stepFactor"); location >= 0) glUniform1f(location, m_trace.stepFactor);
         glUniform1f(v->location("sdfwb_epsilonScale"), m_trace.epsilonScale);
         glUniform1f(v->location("sdfwb_boxMargin"), m_trace.boxMargin);
         glUniform3f(v->location("sdfwb_background"), m_shading.background.r, m_shading.background.g, m_shading.background.b);
@@ -481,7 +482,8 @@ std::vector<Diagnostic> SdfRenderer::setPlane(const CuttingPlane& plane) {
 }
 
 std::vector<Diagnostic> SdfRenderer::setTrace(const TraceSettings& trace) {
-    bool variantChanges = (trace.overRelaxation > 1.0f) != (m_trace.overRelaxation > 1.0f);
+    bool variantChanges = (trace.overRelaxation > 1.0f) != (m_trace.overRelaxation > 1.0f) ||
+                          (trace.stepFactor != 1.0f) != (m_trace.stepFactor != 1.0f);
     m_trace = trace;
     std::vector<Diagnostic> diagnostics;
     if (!variantChanges || !m_impl->sdf) return diagnostics;

@@ -48,6 +48,7 @@ Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatu
         files.insert(files.end() - 1, "tracer/ao.glsl");
     }
     if (features.overRelaxation) defines["SDFWB_OVERRELAX"] = "1";
+    if (features.stepFactor) defines["SDFWB_STEP_FACTOR"] = "1";
     if (features.fusedMarch) defines["SDFWB_FUSED_MARCH"] = "1";
     if (features.cuttingPlane) {
         defines["SDFWB_PLANE"] = "1";

@@ -17,7 +17,16 @@ uniform float sdfwb_tanHalfFovY;      // tan(vertical field of view / 2)
 uniform float sdfwb_nearPlane;
 uniform float sdfwb_farPlane;
 uniform int sdfwb_maxSteps;           // step budget per ray
+#ifdef SDFWB_STEP_FACTOR
 uniform float sdfwb_stepFactor;       // < 1 for fields that are not 1-Lipschitz
+#define SDFWB_SCALED(f) ((f) * sdfwb_stepFactor)
+#define SDFWB_UNSCALED(d) ((d) / sdfwb_stepFactor)
+#else
+// Step factor 1 (the default) is a variant of its own: on llvmpipe even one multiply a step costs
+// a cheap SDF's frame a few per cent.
+#define SDFWB_SCALED(f) (f)
+#define SDFWB_UNSCALED(d) (d)
+#endif
 uniform float sdfwb_epsilonScale;     // hit when |f| < epsilonScale * pixel footprint at t
 uniform float sdfwb_boxMargin;        // rays are clipped to [-1-margin, 1+margin]^3
 uniform vec3 sdfwb_background;
@@ -164,7 +173,7 @@ sdfwb_Hit sdfwb_traceRay(vec3 origin, vec3 direction) {
     // told once after the loop (a step of -Inf leaves s at -Inf: not finite either).
     int step = 0;
     for (; step < sdfwb_maxSteps && march.s <= march.sEnd; ++step) {
-        d = sdfwb_sceneMap(march.entry + march.s * direction) * sdfwb_stepFactor;
+        d = SDFWB_SCALED(sdfwb_sceneMap(march.entry + march.s * direction));
         if (!(abs(d) >= march.footprint * (march.tStart + march.s))) break;
         march.s += d;
     }
@@ -181,7 +190,7 @@ sdfwb_Hit sdfwb_traceRay(vec3 origin, vec3 direction) {
         hit.steps = step + 1;
         float t = march.tStart + march.s;
         vec3 at = march.entry + march.s * direction;
-        d = sdfwb_sceneMap(at) * sdfwb_stepFactor;
+        d = SDFWB_SCALED(sdfwb_sceneMap(at));
         if (isnan(d) || isinf(d)) {
             SDFWB_RECORD(sdfwb_kProbeNotFinite, t, at, d);
             hit.status = sdfwb_kRayNotFinite;
@@ -207,9 +216,9 @@ sdfwb_Hit sdfwb_traceRay(vec3 origin, vec3 direction) {
 #endif
     if (hit.found) {
         hit.status = sdfwb_kRayHit;
-        float next = sdfwb_sceneMap(march.entry + (march.s + d) * direction) * sdfwb_stepFactor;
+        float next = SDFWB_SCALED(sdfwb_sceneMap(march.entry + (march.s + d) * direction));
         SDFWB_RECORD(sdfwb_refineKeeps(d, next) ? sdfwb_kProbeRefineKept : sdfwb_kProbeRefineUndone, march.tStart + march.s + d, march.entry + (march.s + d) * direction, next);
-        hit.value = (sdfwb_refineKeeps(d, next) ? next : d) / sdfwb_stepFactor;
+        hit.value = SDFWB_UNSCALED(sdfwb_refineKeeps(d, next) ? next : d);
         if (sdfwb_refineKeeps(d, next)) march.s += d;
     }
     hit.t = march.tStart + march.s;
@@ -318,7 +327,7 @@ sdfwb_Hit sdfwb_traceWithNormal(vec3 origin, vec3 direction, out vec3 normal) {
         float f = sdfwb_sceneMap(at);
         if (phase == sdfwb_kPhaseMarch) {
             hit.steps += 1;
-            float d = f * sdfwb_stepFactor;
+            float d = SDFWB_SCALED(f);
             if (isnan(d) || isinf(d)) {
                 hit.status = sdfwb_kRayNotFinite;
                 break;
@@ -337,8 +346,8 @@ sdfwb_Hit sdfwb_traceWithNormal(vec3 origin, vec3 direction, out vec3 normal) {
             }
             if (hit.steps >= sdfwb_maxSteps) break;
         } else if (phase == sdfwb_kPhaseRefine) {
-            bool keep = sdfwb_refineKeeps(hitValue, f * sdfwb_stepFactor);
-            hit.value = keep ? f : hitValue / sdfwb_stepFactor;
+            bool keep = sdfwb_refineKeeps(hitValue, SDFWB_SCALED(f));
+            hit.value = keep ? f : SDFWB_UNSCALED(hitValue);
             if (keep) march.s += hitValue;
             hit.t = march.tStart + march.s;
             hit.position = march.entry + march.s * direction;

@@ -137,6 +137,51 @@ TEST(BatchRender, WritesAPngWithoutADisplay) {
     fs::remove(out);
 }
 
+// A step factor of 1 (the default) compiles without the multiply on every step; any other value
+// is one more variant, and moving between such values is a uniform (no compile): more steps at
+// a smaller factor, the same shape.
+TEST_F(RendererTest, StepFactorOtherThanOneIsOneVariantAndItsValueAUniform) {
+    renderer::SdfRenderer sdfRenderer;
+    renderer::ShadingSettings shading;
+    shading.statsOutput = true;
+    (void)sdfRenderer.setShading(shading);
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n"))));
+    renderer::OffscreenRenderer offscreen;
+    auto meanSteps = [&](long& hits) {
+        double steps = 0.0;
+        hits = 0;
+        const auto pixels = offscreen.renderStats(sdfRenderer, 64, 48, renderer::Camera{}, 0.0f);
+        for (const auto& pixel : pixels) {
+            steps += pixel.steps;
+            hits += pixel.hit();
+        }
+        return steps / double(pixels.size());
+    };
+    long hitsAtOne = 0, hitsAtHalf = 0, hitsBack = 0;
+    const double atOne = meanSteps(hitsAtOne);
+    EXPECT_EQ(sdfRenderer.fragmentSource().find("#define SDFWB_STEP_FACTOR"), std::string::npos);
+    const std::uint64_t built = sdfRenderer.programsBuilt();
+    renderer::TraceSettings trace;
+    trace.stepFactor = 0.7f;
+    (void)sdfRenderer.setTrace(trace);
+    EXPECT_EQ(sdfRenderer.programsBuilt(), built + 1);
+    EXPECT_NE(sdfRenderer.fragmentSource().find("#define SDFWB_STEP_FACTOR"), std::string::npos);
+    trace.stepFactor = 0.5f;
+    (void)sdfRenderer.setTrace(trace);
+    EXPECT_EQ(sdfRenderer.programsBuilt(), built + 1) << "another factor is a uniform";
+    const double atHalf = meanSteps(hitsAtHalf);
+    EXPECT_GT(atHalf, atOne * 1.3) << "half steps take more of them";
+    // The hit test compares the scaled value with the footprint: a smaller factor also counts a
+    // few more grazing silhouette rays as hits, never fewer.
+    EXPECT_GE(hitsAtHalf, hitsAtOne);
+    EXPECT_LE(hitsAtHalf, hitsAtOne + hitsAtOne / 10);
+    trace.stepFactor = 1.0f;
+    (void)sdfRenderer.setTrace(trace);
+    EXPECT_EQ(sdfRenderer.programsBuilt(), built + 1) << "back to 1: the first program, from the cache";
+    EXPECT_DOUBLE_EQ(meanSteps(hitsBack), atOne);
+    sdfRenderer.releaseGl();
+}
+
 // A long SDF starts with the fused march (the quickest code generation after an edit). At rest, a
 // full frame under the threshold trades it once for the separate march; the separate frame's time
 // decides which stays. A slow frame, a short SDF or a new SDF behave as the renderer documents.

@@ -41,7 +41,8 @@ public:
 
     // Changing settings may compile a new variant (cached). Returns its diagnostics, if any.
     std::vector<shaders::Diagnostic> setShading(const ShadingSettings& shading);
-    // Over-relaxation on/off selects another variant; the other fields are uniforms.
+    // Over-relaxation on/off and a step factor of 1 or not select another variant; the other
+    // fields are uniforms.
     std::vector<shaders::Diagnostic> setTrace(const TraceSettings& trace);
 
     const ShadingSettings& shading() const { return m_shading; }

@@ -22,6 +22,7 @@ struct TracerFeatures {
     ShadingMode shading = ShadingMode::Normals;
     bool ambientOcclusion = false;
     bool overRelaxation = false;
+    bool stepFactor = false;  // a step factor other than 1 (sdfwb_stepFactor scales every step)
     bool statsOutput = false; // write (steps, t, |f(hit)|) instead of a colour (benchmarks, tests)
     bool cuttingPlane = false;
     bool planeClipsSurface = false; // cut the shape away on the side the plane's normal points to
