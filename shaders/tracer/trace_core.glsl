@@ -279,19 +279,16 @@ vec3 sdfwb_normalAt(vec3 p, float t, float value, vec3 direction) {
     vec2 steps = sdfwb_normalSteps(p, t);
     float h = steps.x;
     vec3 sum = vec3(0.0);
-    float valueSum = 0.0;
-    int retakes = 0;
-    for (int i = 0; i < 4; ++i) {
-        float f = sdfwb_sceneMap(p + sdfwb_tap(i) * h);
-        sum += sdfwb_tap(i) * f;
-        valueSum += f;
-        if (i == 3 && sdfwb_straddled(valueSum, sum, value) && retakes < sdfwb_thinRetakes && h > steps.y) {
-            h = max(h * 0.125, steps.y);
-            sum = vec3(0.0);
-            valueSum = 0.0;
-            i = -1;
-            ++retakes;
+    for (int retake = 0; retake <= sdfwb_thinRetakes; ++retake) {
+        sum = vec3(0.0);
+        float valueSum = 0.0;
+        for (int i = 0; i < sdfwb_gradientTaps; ++i) {
+            float f = sdfwb_sceneMap(p + sdfwb_tap(i) * h);
+            sum += sdfwb_tap(i) * f;
+            valueSum += f;
         }
+        if (!(h > steps.y && sdfwb_straddled(valueSum, sum, value))) break;
+        h = max(h * 0.125, steps.y);
     }
     return sdfwb_unitNormal(sum, direction); // the direction of the gradient sum / (4 h)
 }
