@@ -30,5 +30,8 @@ template <class T> T get(const char* data) {
 
 // Rows chunk by chunk when reading: at most this many at a time.
 inline constexpr std::size_t kCopyChunkRows = 1u << 20;
+// From this many rows, .ply and .npz align their large arrays to 4096 bytes in the file (at most
+// 4 KiB of padding per array) so that they can be written past the page cache.
+inline constexpr std::uint64_t kDirectFromRows = 65536;
 
 } // namespace sdfwb::sampling::detail

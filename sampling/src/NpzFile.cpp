@@ -28,10 +28,14 @@ constexpr std::uint32_t kZip64LocatorSignature = 0x07064b50;
 constexpr std::uint16_t kDosDate = (0 << 9) | (1 << 5) | 1; // 1980-01-01: fixed for reproducible files
 constexpr std::uint32_t kMax32 = 0xffffffffu;
 
-std::string npyHeader(const std::string& descr, const std::string& shape) {
+// The .npy header padded with spaces so that the array's data, when the header starts at file
+// offset `startsAt`, begins at a multiple of `alignment` (64, as numpy writes it, or 4096 so that
+// large arrays can go to the disk without a copy: OutputFile::writeDirectAt).
+std::string npyHeader(const std::string& descr, const std::string& shape, std::uint64_t startsAt = 0,
+                      std::uint64_t alignment = 64) {
     std::string dict = "{'descr': '" + descr + "', 'fortran_order': False, 'shape': " + shape + ", }";
-    std::size_t total = 10 + dict.size() + 1;
-    dict.append((64 - total % 64) % 64, ' ');
+    std::uint64_t total = 10 + dict.size() + 1;
+    dict.append(std::size_t((alignment - (startsAt + total) % alignment) % alignment), ' ');
     dict += '\n';
     std::string header = "\x93NUMPY";
     header += '\x01';
@@ -171,18 +175,22 @@ public:
     NpzWriter(OutputFile file, std::uint64_t rows, const SampleMetadata& metadata, bool forceZip64)
         : m_file(std::move(file)), m_rows(rows) {
         const std::string n = std::to_string(rows);
-        const std::string headers[3] = {npyHeader("<f4", "(" + n + ", 3)"), npyHeader("<f4", "(" + n + ",)"),
-                                        npyHeader("<f4", "(" + n + ", 3)")};
+        const std::string shapes[3] = {"(" + n + ", 3)", "(" + n + ",)", "(" + n + ", 3)"};
         const char* names[3] = {"position.npy", "distance.npy", "gradient.npy"};
         const std::uint64_t rowBytes[3] = {12, 4, 12};
         std::uint64_t bigBytes = 0;
-        for (int i = 0; i < 3; ++i) bigBytes += headers[i].size() + rowBytes[i] * rows + 128;
+        for (int i = 0; i < 3; ++i) bigBytes += OutputFile::kDirectAlignment + 256 + rowBytes[i] * rows + 128;
         m_zip64 = forceZip64 || bigBytes > 0xfff00000ull;
+        // Large arrays start at multiples of 4096 bytes, so the sampler's chunks go to the disk
+        // straight from its page-aligned buffers.
+        const std::uint64_t alignment = rows >= kDirectFromRows ? OutputFile::kDirectAlignment : 64;
+        std::string headers[3];
         std::uint64_t offset = 0;
         for (int i = 0; i < 3; ++i) {
             EntryRecord& e = m_big[i];
             e.name = names[i];
             e.offset = offset;
+            headers[i] = npyHeader("<f4", shapes[i], offset + localHeader(e, m_zip64).size(), alignment);
             e.size = headers[i].size() + rowBytes[i] * rows;
             e.crc = std::uint32_t(crc32(0, reinterpret_cast<const Bytef*>(headers[i].data()), uInt(headers[i].size())));
             m_headers[i] = headers[i];
@@ -206,10 +214,16 @@ public:
         if (m_written + n > m_rows) return makeError(m_file.target().string() + ": more rows than announced");
         const float* data[3] = {positions, distances, gradients};
         for (int i = 0; i < 3; ++i) {
-            // In blocks that stay in the cache between the write's copy and the CRC's read.
             const unsigned char* cursor = reinterpret_cast<const unsigned char*>(data[i]);
             std::uint64_t offset = m_payload[i] + m_rowBytes[i] * m_written;
-            for (std::uint64_t left = m_rowBytes[i] * n; left > 0;) {
+            const std::uint64_t bytes = m_rowBytes[i] * n;
+            if (OutputFile::directWritable(offset, cursor, bytes)) { // no copy: the CRC reads, the disk takes it
+                m_big[i].crc = crc32_gzip_refl(m_big[i].crc, cursor, bytes);
+                if (auto ok = m_file.writeDirectAt(offset, cursor, std::size_t(bytes)); !ok) return ok;
+                continue;
+            }
+            // In blocks that stay in the cache between the write's copy and the CRC's read.
+            for (std::uint64_t left = bytes; left > 0;) {
                 const std::size_t step = std::size_t(std::min<std::uint64_t>(left, kBlockBytes));
                 if (auto ok = m_file.writeAt(offset, cursor, step); !ok) return ok;
                 m_big[i].crc = crc32_gzip_refl(m_big[i].crc, cursor, step);

@@ -24,13 +24,15 @@ Expected<OutputFile> OutputFile::create(const fs::path& target) {
 
 OutputFile::OutputFile(OutputFile&& other) noexcept
     : m_target(std::move(other.m_target)), m_temporary(std::move(other.m_temporary)), m_fd(other.m_fd),
-      m_committed(other.m_committed) {
+      m_directFd(other.m_directFd), m_committed(other.m_committed) {
     other.m_fd = -1;
+    other.m_directFd = -1;
     other.m_committed = true;
 }
 
 OutputFile::~OutputFile() {
     if (m_fd >= 0) ::close(m_fd);
+    if (m_directFd >= 0) ::close(m_directFd);
     if (!m_committed && !m_temporary.empty()) ::unlink(m_temporary.c_str());
 }
 
@@ -64,7 +66,34 @@ Expected<void> OutputFile::writeAt(std::uint64_t offset, const void* data, std::
     return {};
 }
 
+Expected<void> OutputFile::writeDirectAt(std::uint64_t offset, const void* data, std::size_t size) {
+#ifdef O_DIRECT
+    const bool aligned = directWritable(offset, data, size);
+    if (aligned && m_directFd == -2) m_directFd = ::open(m_temporary.c_str(), O_WRONLY | O_DIRECT | O_CLOEXEC);
+    if (aligned && m_directFd >= 0) {
+        const char* bytes = static_cast<const char*>(data);
+        while (size > 0) {
+            ssize_t written = ::pwrite(m_directFd, bytes, size, off_t(offset));
+            if (written < 0 && errno == EINTR) continue;
+            if (written < 0 && errno == EINVAL && bytes == data) { // refused after all: write it the usual way
+                ::close(m_directFd);
+                m_directFd = -1;
+                return writeAt(offset, data, size);
+            }
+            if (written <= 0) return makeError(m_target.string() + ": write failed: " + std::strerror(errno));
+            bytes += written;
+            offset += std::uint64_t(written);
+            size -= std::size_t(written);
+        }
+        return {};
+    }
+#endif
+    return writeAt(offset, data, size);
+}
+
 Expected<void> OutputFile::commit() {
+    if (m_directFd >= 0 && ::fsync(m_directFd) != 0)
+        return makeError(m_target.string() + ": flushing to disk failed: " + std::strerror(errno));
     if (::fsync(m_fd) != 0) return makeError(m_target.string() + ": flushing to disk failed: " + std::strerror(errno));
     int fd = m_fd;
     m_fd = -1;

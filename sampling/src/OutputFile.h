@@ -22,6 +22,16 @@ public:
     // written range at writeback); a file system that cannot is left as it is.
     void reserve(std::uint64_t bytes);
     Expected<void> writeAt(std::uint64_t offset, const void* data, std::size_t size);
+    // The same, past the page cache (O_DIRECT) when offset, size and data are all aligned to
+    // kDirectAlignment: the disk reads the bytes where they are, so the CPU copies nothing (the
+    // sampler's mapped GL buffers are page-aligned). Anything else, or a file system that refuses
+    // direct I/O, goes through writeAt().
+    static constexpr std::size_t kDirectAlignment = 4096;
+    static bool directWritable(std::uint64_t offset, const void* data, std::uint64_t size) {
+        return size > 0 && offset % kDirectAlignment == 0 && size % kDirectAlignment == 0 &&
+               reinterpret_cast<std::uintptr_t>(data) % kDirectAlignment == 0;
+    }
+    Expected<void> writeDirectAt(std::uint64_t offset, const void* data, std::size_t size);
     // fsync, close, rename over the target.
     Expected<void> commit();
     const std::filesystem::path& target() const { return m_target; }
@@ -32,6 +42,7 @@ private:
     std::filesystem::path m_target;
     std::string m_temporary;
     int m_fd = -1;
+    int m_directFd = -2; // -2: not opened yet, -1: direct I/O unavailable
     bool m_committed = false;
     std::uint64_t m_unflushed = 0; // bytes written since the disk was last asked to start writing
 };

@@ -33,7 +33,16 @@ std::string header(std::uint64_t rows, const SampleMetadata& m) {
     if (!m.parameters.empty()) out += "comment sdfwb parameters " + singleLine(m.parameters) + "\n";
     out += "element vertex " + std::to_string(rows) + "\n";
     for (const char* property : kProperties) out += std::string("property float ") + property + "\n";
-    out += "end_header\n";
+    // Large files: rows start at a multiple of 4096 bytes (a comment line of spaces pads the
+    // header), so the sampler's chunks go to the disk straight from its page-aligned buffers
+    // (OutputFile::writeDirectAt).
+    const std::string end = "end_header\n";
+    if (rows >= kDirectFromRows) {
+        const std::size_t alignment = OutputFile::kDirectAlignment;
+        const std::size_t padded = (out.size() + end.size() + 16 + alignment - 1) / alignment * alignment;
+        out += "comment " + std::string(padded - out.size() - end.size() - 9, ' ') + "\n";
+    }
+    out += end;
     return out;
 }
 
@@ -72,7 +81,7 @@ public:
 
     Expected<void> appendRows(const float* rows, std::size_t n) override {
         if (m_written + n > m_rows) return makeError(m_file.target().string() + ": more rows than announced");
-        if (auto ok = m_file.writeAt(m_dataOffset + kRowBytes * m_written, rows, kRowBytes * n); !ok) return ok;
+        if (auto ok = m_file.writeDirectAt(m_dataOffset + kRowBytes * m_written, rows, kRowBytes * n); !ok) return ok;
         m_written += n;
         return {};
     }

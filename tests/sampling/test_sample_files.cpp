@@ -54,11 +54,12 @@ std::string readBytes(const fs::path& path) {
 
 void writeBytes(const fs::path& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
 
-bool noPartialFilesIn(const fs::path& folder) {
-    for (const auto& entry : fs::directory_iterator(folder))
-        if (entry.path().filename().string().find(".partial-") != std::string::npos &&
-            entry.path().filename().string().find("sdfwb-test-") != std::string::npos)
-            return false;
+// No temporary left beside `target` (".NAME.partial-XXXXXX"); other tests running at the same
+// time may have their own in the same folder.
+bool noPartialFilesFor(const fs::path& target) {
+    const std::string prefix = "." + target.filename().string() + ".partial-";
+    for (const auto& entry : fs::directory_iterator(target.parent_path()))
+        if (entry.path().filename().string().rfind(prefix, 0) == 0) return false;
     return true;
 }
 
@@ -166,7 +167,7 @@ TEST(SampleFiles, AnUnfinishedWriterLeavesNoFileAndKeepsTheOldOne) {
         EXPECT_FALSE((*writer)->commit().hasValue()) << "5 of 10 rows must not commit";
     }
     EXPECT_EQ(readBytes(path), "old contents");
-    EXPECT_TRUE(noPartialFilesIn(path.parent_path()));
+    EXPECT_TRUE(noPartialFilesFor(path));
     fs::remove(path);
 }
 
