@@ -250,7 +250,7 @@ TEST_F(SamplerTest, ShardsMergeIntoTheSingleRunsFileByteForByte) {
         for (sampling::SampleFormat format :
              {sampling::SampleFormat::Bin, sampling::SampleFormat::Npz, sampling::SampleFormat::Ply}) {
             std::string ext = std::string(".") + sampling::formatName(format);
-            fs::path single = fs::temp_directory_path() / ("sdfwb-test-single" + ext);
+            fs::path single = fs::temp_directory_path() / ("sdfwb-test-sampler-single" + ext);
             sampling::SamplingJob j = job(rows, 5);
             j.chunkSize = 4096;
             ASSERT_TRUE(sampling::sampleToFile(compute, j, single, format, metadata, {}).hasValue());
@@ -260,12 +260,12 @@ TEST_F(SamplerTest, ShardsMergeIntoTheSingleRunsFileByteForByte) {
                 shard.shardIndex = k;
                 shard.shardCount = 3;
                 shard.chunkSize = 1000;
-                parts.push_back(fs::temp_directory_path() / ("sdfwb-test-shard" + std::to_string(k) + ext));
+                parts.push_back(fs::temp_directory_path() / ("sdfwb-test-sampler-shard" + std::to_string(k) + ext));
                 auto report = sampling::sampleToFile(compute, shard, parts.back(), format, metadata, {});
                 ASSERT_TRUE(report.hasValue());
                 EXPECT_EQ(report->firstIndex, rows * k / 3);
             }
-            fs::path merged = fs::temp_directory_path() / ("sdfwb-test-merged" + ext);
+            fs::path merged = fs::temp_directory_path() / ("sdfwb-test-sampler-merged" + ext);
             auto report = sampling::mergeSampleFiles(merged, format, parts);
             ASSERT_TRUE(report.hasValue()) << report.error().message;
             EXPECT_EQ(fileBytes(merged), fileBytes(single)) << ext << ", " << rows << " rows";
