@@ -9,7 +9,9 @@
 // A run that overlapped compute and writing perfectly would take max(compute, write); the ratio
 // printed is max(compute, write) / sdfwb (1.0 = perfect overlap). Medians of 5 runs (compute: 3).
 //
-//   build/bench/bench_sample_files [N [FOLDER]]     (default N = 20,000,000, FOLDER = $TMPDIR or /tmp)
+//   build/bench/bench_sample_files [N [FOLDER [PATTERN]]]
+//       (default N = 20,000,000, FOLDER = $TMPDIR or /tmp, PATTERN rand and near)
+// SDFWB_DIRECT_IO=0 makes sdfwb write through the page cache only (to see what direct I/O gives).
 
 #include <renderer/HeadlessContext.h>
 #include <renderer/SampleCompute.h>
@@ -113,7 +115,9 @@ int main(int argc, char** argv) {
     std::printf(
         "| pattern | format | file MB | compute s | write s | sdfwb s | sdfwb Msamples/s | max(compute, write) / sdfwb |\n");
     std::printf("|---|---|---|---|---|---|---|---|\n");
-    for (const char* pattern : {"rand", "near"}) {
+    std::vector<std::string> patterns = {"rand", "near"};
+    if (argc > 3) patterns = {argv[3]};
+    for (const std::string& pattern : patterns) {
         auto sampler = sampling::findSampler(pattern, {});
         if (!sampler) {
             std::fprintf(stderr, "bench_sample_files: %s\n", sampler.error().message.c_str());
@@ -152,7 +156,7 @@ int main(int argc, char** argv) {
                 endToEndRuns[k] = report->seconds;
                 ::sync();
                 writeRuns[k] = writeSeconds(folder, bytes, std::size_t(job.chunkSize) * 28);
-                if (k == 0) std::printf("| %s | %s | %.0f ", pattern, sampling::formatName(format), double(bytes) / 1e6);
+                if (k == 0) std::printf("| %s | %s | %.0f ", pattern.c_str(), sampling::formatName(format), double(bytes) / 1e6);
             }
             std::sort(endToEndRuns, endToEndRuns + 5);
             std::sort(writeRuns, writeRuns + 5);

@@ -1,6 +1,7 @@
 #include "OutputFile.h"
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -69,7 +70,11 @@ Expected<void> OutputFile::writeAt(std::uint64_t offset, const void* data, std::
 Expected<void> OutputFile::writeDirectAt(std::uint64_t offset, const void* data, std::size_t size) {
 #ifdef O_DIRECT
     const bool aligned = directWritable(offset, data, size);
-    if (aligned && m_directFd == -2) m_directFd = ::open(m_temporary.c_str(), O_WRONLY | O_DIRECT | O_CLOEXEC);
+    if (aligned && m_directFd == -2) {
+        // SDFWB_DIRECT_IO=0 turns it off, for benchmarks.
+        const char* setting = std::getenv("SDFWB_DIRECT_IO");
+        m_directFd = setting && setting[0] == '0' ? -1 : ::open(m_temporary.c_str(), O_WRONLY | O_DIRECT | O_CLOEXEC);
+    }
     if (aligned && m_directFd >= 0) {
         const char* bytes = static_cast<const char*>(data);
         while (size > 0) {
