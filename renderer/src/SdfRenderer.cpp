@@ -37,13 +37,14 @@ constexpr std::ptrdiff_t kFusedMarchFromCharacters = 1000;
 // driver). The fused loop's control costs more per evaluation than the cheapest SDFs do, and
 // saves the driver two copies of an SDF: past about a thousand characters of code it pays in
 // (bench/bench_tracer, bench/bench_cold_edit). SDFWB_FUSED_MARCH=0/1 overrides, for benchmarks.
-bool marchForced() {
+std::optional<bool> forcedFusedMarch() {
     const char* forced = std::getenv("SDFWB_FUSED_MARCH");
-    return forced && *forced;
+    if (!forced || !*forced) return std::nullopt;
+    return forced[0] == '1';
 }
 
 bool fuseMarch(const shaders::PreparedSdf& prepared) {
-    if (marchForced()) return std::getenv("SDFWB_FUSED_MARCH")[0] == '1';
+    if (auto forced = forcedFusedMarch()) return *forced;
     // With what it includes: a library's helpers reach the driver too (and cost it time).
     const std::string code = shaders::stripComments(prepared.source.text);
     const auto characters =
@@ -272,7 +273,7 @@ bool SdfRenderer::settleMarch(double fullFrameMilliseconds) {
     };
     if (impl.settle == Impl::Settle::Open) {
         impl.settle = Impl::Settle::Done;
-        if (marchForced() || !fusedMarch() || !(fullFrameMilliseconds < kTrySeparateMarchBelowMilliseconds)) return false;
+        if (forcedFusedMarch() || !fusedMarch() || !(fullFrameMilliseconds < kTrySeparateMarchBelowMilliseconds)) return false;
         impl.fusedMilliseconds = fullFrameMilliseconds;
         if (!rebuild(true)) { // the driver refused it: the fused program stays (from the cache)
             rebuild(false);

@@ -43,19 +43,29 @@ void OutputFile::reserve(std::uint64_t bytes) {
 #endif
 }
 
-Expected<void> OutputFile::writeAt(std::uint64_t offset, const void* data, std::size_t size) {
+namespace {
+
+// Writes all `size` bytes at `offset` (retrying interrupted and partial writes): 0, or the errno.
+int writeFully(int fd, std::uint64_t offset, const void* data, std::size_t size) {
     const char* bytes = static_cast<const char*>(data);
     while (size > 0) {
-        ssize_t written = ::pwrite(m_fd, bytes, size, off_t(offset));
-        if (written < 0) {
-            if (errno == EINTR) continue;
-            return makeError(m_target.string() + ": write failed: " + std::strerror(errno));
-        }
+        ssize_t written = ::pwrite(fd, bytes, size, off_t(offset));
+        if (written < 0 && errno == EINTR) continue;
+        if (written < 0) return errno;
+        if (written == 0) return EIO;
         bytes += written;
         offset += std::uint64_t(written);
         size -= std::size_t(written);
-        m_unflushed += std::uint64_t(written);
     }
+    return 0;
+}
+
+} // namespace
+
+Expected<void> OutputFile::writeAt(std::uint64_t offset, const void* data, std::size_t size) {
+    if (int error = writeFully(m_fd, offset, data, size))
+        return makeError(m_target.string() + ": write failed: " + std::strerror(error));
+    m_unflushed += size;
 #ifdef __linux__
     // Start the disk writing what is already there (asynchronously) every 64 MiB, so commit()'s
     // fsync waits only for the tail instead of the whole file after the last row.
@@ -76,21 +86,11 @@ Expected<void> OutputFile::writeDirectAt(std::uint64_t offset, const void* data,
         m_directFd = setting && setting[0] == '0' ? -1 : ::open(m_temporary.c_str(), O_WRONLY | O_DIRECT | O_CLOEXEC);
     }
     if (aligned && m_directFd >= 0) {
-        const char* bytes = static_cast<const char*>(data);
-        while (size > 0) {
-            ssize_t written = ::pwrite(m_directFd, bytes, size, off_t(offset));
-            if (written < 0 && errno == EINTR) continue;
-            if (written < 0 && errno == EINVAL && bytes == data) { // refused after all: write it the usual way
-                ::close(m_directFd);
-                m_directFd = -1;
-                return writeAt(offset, data, size);
-            }
-            if (written <= 0) return makeError(m_target.string() + ": write failed: " + std::strerror(errno));
-            bytes += written;
-            offset += std::uint64_t(written);
-            size -= std::size_t(written);
-        }
-        return {};
+        const int error = writeFully(m_directFd, offset, data, size);
+        if (error == 0) return {};
+        if (error != EINVAL) return makeError(m_target.string() + ": write failed: " + std::strerror(error));
+        ::close(m_directFd); // the file system refused direct I/O after all: write the usual way
+        m_directFd = -1;
     }
 #endif
     return writeAt(offset, data, size);

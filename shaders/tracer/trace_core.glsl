@@ -217,9 +217,10 @@ sdfwb_Hit sdfwb_traceRay(vec3 origin, vec3 direction) {
     if (hit.found) {
         hit.status = sdfwb_kRayHit;
         float next = SDFWB_SCALED(sdfwb_sceneMap(march.entry + (march.s + d) * direction));
-        SDFWB_RECORD(sdfwb_refineKeeps(d, next) ? sdfwb_kProbeRefineKept : sdfwb_kProbeRefineUndone, march.tStart + march.s + d, march.entry + (march.s + d) * direction, next);
-        hit.value = SDFWB_UNSCALED(sdfwb_refineKeeps(d, next) ? next : d);
-        if (sdfwb_refineKeeps(d, next)) march.s += d;
+        const bool keep = sdfwb_refineKeeps(d, next);
+        SDFWB_RECORD(keep ? sdfwb_kProbeRefineKept : sdfwb_kProbeRefineUndone, march.tStart + march.s + d, march.entry + (march.s + d) * direction, next);
+        hit.value = SDFWB_UNSCALED(keep ? next : d);
+        if (keep) march.s += d;
     }
     hit.t = march.tStart + march.s;
     hit.position = march.entry + march.s * direction;
@@ -268,13 +269,9 @@ bool sdfwb_straddled(float valueSum, vec3 weightedSum, float value) {
 
 // Normal with a step matched to the hit distance (a pixel's footprint), never below float noise.
 // A feature thinner than the step (a paper-thin shell, a blade) would let the taps straddle it:
-// their differences cancel and the gradient points anywhere. The taps show it: around a surface
-// some tap lies lower than f at the centre (the four taps sum to zero, so some point against the
-// gradient), while around a sheet thinner than the step every tap lands outside it, above the
-// centre. Then they are taken again with an eightfold smaller step (at most five times, to
-// 1/32768 of the footprint, never below the float floor). `value` is f at p. For a sphere of
-// radius R the taps count as straddling once h > 0.43 R, whatever the field's slope and however
-// far from the surface the hit stopped.
+// their differences cancel and the gradient points anywhere. When the taps show it
+// (sdfwb_straddled, against `value`, f at p), they are taken again with an eightfold smaller step
+// (at most five times, to 1/32768 of the footprint, never below the float floor).
 vec3 sdfwb_normalAt(vec3 p, float t, float value, vec3 direction) {
     vec2 steps = sdfwb_normalSteps(p, t);
     float h = steps.x;
@@ -362,7 +359,7 @@ sdfwb_Hit sdfwb_traceWithNormal(vec3 origin, vec3 direction, out vec3 normal) {
                     count = 0;
                     ++retakes;
                 } else {
-                    normal = sdfwb_unitNormal(sum / (4.0 * steps.x), direction);
+                    normal = sdfwb_unitNormal(sum, direction); // the direction of sum / (4 h)
                     break;
                 }
             }
