@@ -160,6 +160,38 @@ double referenceMilliseconds(const shaders::PreparedSdf& sdf, const std::string&
     return median3(a, b, c);
 }
 
+double percentile(std::vector<double> values, double p) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    return values[std::min(values.size() - 1, std::size_t(p * double(values.size())))];
+}
+
+// One row of the cone table: times without and with the cone pass and the hits of both
+// statistics frames compared pixel by pixel (the default camera's 45-degree field of view).
+std::string compareCones(const std::string& name, double without, double with,
+                         const std::vector<renderer::OffscreenRenderer::PixelStats>& plain,
+                         const std::vector<renderer::OffscreenRenderer::PixelStats>& coned) {
+    const double pixelAngle = 2.0 * std::tan(renderer::Camera{}.fovYDegrees * 3.14159265 / 360.0) / 180.0;
+    long changed = 0;
+    double stepsPlain = 0.0, stepsConed = 0.0;
+    std::vector<double> moved, residualPlain, residualConed;
+    for (std::size_t i = 0; i < plain.size() && i < coned.size(); ++i) {
+        stepsPlain += plain[i].steps;
+        stepsConed += coned[i].steps;
+        if (plain[i].hit() != coned[i].hit()) ++changed;
+        if (plain[i].hit()) residualPlain.push_back(plain[i].residual / (pixelAngle * plain[i].t));
+        if (coned[i].hit()) residualConed.push_back(coned[i].residual / (pixelAngle * coned[i].t));
+        if (plain[i].hit() && coned[i].hit()) moved.push_back(std::abs(coned[i].t - plain[i].t) / (pixelAngle * plain[i].t));
+    }
+    const double n = double(std::max<std::size_t>(plain.size(), 1));
+    char row[512];
+    std::snprintf(row, sizeof row, "| %s | %.1f | %.1f | %.2f | %.1f / %.1f | %ld of %zu | %.3f / %.2f | %.3f / %.3f |",
+                  name.c_str(), without, with, with / without, stepsPlain / n, stepsConed / n, changed, plain.size(),
+                  percentile(moved, 0.5), moved.empty() ? 0.0 : percentile(moved, 1.0), percentile(residualPlain, 0.99),
+                  percentile(residualConed, 0.99));
+    return row;
+}
+
 shaders::IncludeOptions includeOptions() {
     shaders::IncludeOptions options;
     options.libraryRoots = {paths::shaderLibraryRoot(), paths::datasetRoot()};
@@ -174,6 +206,7 @@ void datasetReport(const std::vector<std::string>& names) {
     std::printf("|---|---|---|---|---|---|---|---|---|\n");
     renderer::OffscreenRenderer offscreen;
     std::vector<double> ratios, movingFrames;
+    std::vector<std::string> coneRows;
     for (const dataset::Entry& entry : catalogue.entries()) {
         if (!names.empty() && std::find(names.begin(), names.end(), entry.metadata.name) == names.end()) continue;
         renderer::SdfRenderer sdfRenderer;
@@ -190,7 +223,7 @@ void datasetReport(const std::vector<std::string>& names) {
         // What the viewport shows at rest: a long SDF's fused march is traded for the separate
         // one when that draws its full frame faster (SdfRenderer::settleMarch).
         while (sdfRenderer.settleMarch(full)) full = frameMilliseconds(offscreen, sdfRenderer, 1280, 720, 1.0f);
-        const bool fused = sdfRenderer.fusedMarch();
+        const bool fused = sdfRenderer.fusedMarch(), cones = sdfRenderer.conePass();
         const double reference = referenceMilliseconds(prepared, entry.metadata.name, 1280, 720);
         // The viewport's rule: start from the full frame's cost, then adapt frame by frame.
         float scale = std::clamp(float(std::sqrt(0.8 * 33.0 / full)), 0.1f, 1.0f);
@@ -206,6 +239,17 @@ void datasetReport(const std::vector<std::string>& names) {
         shading.statsOutput = true;
         (void)sdfRenderer.setShading(shading);
         auto stats = offscreen.renderStats(sdfRenderer, 320, 180, renderer::Camera{}, 0.0f);
+        if (cones) {
+            // What the cone pass gained, and what it did to the hits: the same program without it.
+            renderer::TraceSettings trace = sdfRenderer.trace();
+            trace.cones = renderer::TraceSettings::Cones::Off;
+            (void)sdfRenderer.setTrace(trace);
+            auto plain = offscreen.renderStats(sdfRenderer, 320, 180, renderer::Camera{}, 0.0f);
+            shading.statsOutput = false;
+            (void)sdfRenderer.setShading(shading);
+            coneRows.push_back(compareCones(entry.metadata.name, frameMilliseconds(offscreen, sdfRenderer, 1280, 720, 1.0f), full,
+                                            plain, stats));
+        }
         double steps = 0.0, hitSteps = 0.0;
         long hits = 0;
         for (const auto& pixel : stats) {
@@ -217,13 +261,24 @@ void datasetReport(const std::vector<std::string>& names) {
         }
         if (reference > 0.0) ratios.push_back(full / reference);
         movingFrames.push_back(moving);
-        std::printf("| %s | %.1f | %s | %.1f | %.2f | %.0f %% | %.1f | %.1f | %.1f |\n", entry.metadata.name.c_str(), full,
-                    fused ? "fused" : "separate", reference, reference > 0.0 ? full / reference : 0.0, scale * 100.0f, moving,
-                    steps / double(stats.size()), hits ? hitSteps / double(hits) : 0.0);
+        std::printf("| %s | %.1f | %s%s | %.1f | %.2f | %.0f %% | %.1f | %.1f | %.1f |\n", entry.metadata.name.c_str(), full,
+                    fused ? "fused" : "separate", cones ? " + cones" : "", reference, reference > 0.0 ? full / reference : 0.0,
+                    scale * 100.0f, moving, steps / double(stats.size()), hits ? hitSteps / double(hits) : 0.0);
         std::fflush(stdout);
         sdfRenderer.releaseGl();
     }
     std::printf("\n");
+    if (!coneRows.empty()) {
+        std::printf("Where the cone pass was kept: the full-resolution frame without and with it, and what it did to the "
+                    "hits (320x180 statistics frames of the same program): pixels whose ray hit in one and not in the "
+                    "other, the hit distance's change where both hit, and |f| at the hits, in pixel footprints "
+                    "(|f| / (pixel angle x t); the hit tolerance is 0.5).\n\n"
+                    "| SDF | without (ms) | with (ms) | with / without | steps/pixel without / with | hit changed | "
+                    "|t change| p50 / max (footprints) | |f| p99 without / with (footprints) |\n"
+                    "|---|---|---|---|---|---|---|---|\n");
+        for (const std::string& row : coneRows) std::printf("%s\n", row.c_str());
+        std::printf("\n");
+    }
     if (ratios.empty()) return;
     std::sort(ratios.begin(), ratios.end());
     std::sort(movingFrames.begin(), movingFrames.end());

@@ -244,7 +244,7 @@ std::optional<int> parse(CLI::App& app, const std::string& context, Arguments ar
 
 // Options shared by render and animate; `finish` validates the strings into `job`.
 struct FrameOptions {
-    std::string size = "1280x720", shading = "normals", camera, target, plane, background;
+    std::string size = "1280x720", shading = "normals", camera, target, plane, background, cones = "auto";
     bool planeNoClip = false;
 };
 
@@ -277,6 +277,13 @@ void addFrameOptions(CLI::App& app, jobs::FrameRequest& job, FrameOptions& optio
                    "over-relaxation factor (1 = off; 1.2-1.9 takes longer steps, with fallback)")
         ->capture_default_str()
         ->check(CLI::Range(1.0f, 1.95f));
+    app.add_option("--cones", options.cones,
+                   "cone pass (a ray per tile finds where its pixels start marching): auto (tried on animations' "
+                   "frames, kept when faster), on, off")
+        ->capture_default_str();
+    app.add_option("--cone-tile", job.trace.coneTile, "the cone pass's tile size in pixels")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 64));
     app.add_option("--plane", options.plane, "cutting plane NX,NY,NZ,OFFSET (dot(N, p) = OFFSET), drawn with isocontours");
     app.add_flag("--plane-no-clip", options.planeNoClip, "keep the surface in front of the cutting plane");
     app.add_option("--contour-spacing", job.plane.contourSpacing, "isocontour spacing on the plane")
@@ -299,6 +306,12 @@ std::optional<int> finishFrameOptions(jobs::FrameRequest& job, const FrameOption
         return kExitUsage;
     }
     job.shading.mode = *mode;
+    auto cones = renderer::parseCones(options.cones);
+    if (!cones) {
+        printError("--cones: expected auto, on or off, got '" + options.cones + "'");
+        return 2;
+    }
+    job.trace.cones = *cones;
     if (!options.camera.empty()) {
         auto position = parseVec3(options.camera);
         if (!position) {

@@ -44,6 +44,8 @@ template <class V> void fields(V& v, renderer::TraceSettings& t) {
     v("epsilon_scale", t.epsilonScale);
     v("box_margin", t.boxMargin);
     v("over_relaxation", t.overRelaxation);
+    v("cones", t.cones);
+    v("cone_tile", t.coneTile);
 }
 
 template <class V> void fields(V& v, renderer::Camera& c) {
@@ -507,6 +509,7 @@ concept Described = requires(Writer& w, T& t) {
 json encode(bool value) { return value; }
 json encode(const std::string& value) { return value; }
 json encode(renderer::ShadingMode mode) { return renderer::shadingModeName(mode); }
+json encode(renderer::TraceSettings::Cones cones) { return renderer::conesName(cones); }
 // A float as the shortest decimal that reads back as the same float (0.01f is 0.01, not
 // 0.009999999776482582): written as that double, it parses back to the same float bits.
 json encode(float value) {
@@ -689,6 +692,13 @@ bool decode(const json& in, renderer::ShadingMode& value, const std::string& pat
     auto mode = renderer::parseShadingMode(in.get<std::string>());
     if (!mode) return fail(error, path, "a shading mode (" + renderer::shadingModeNames() + ")", in);
     value = *mode;
+    return true;
+}
+
+bool decode(const json& in, renderer::TraceSettings::Cones& value, const std::string& path, bool, std::string& error) {
+    auto cones = in.is_string() ? renderer::parseCones(in.get<std::string>()) : std::nullopt;
+    if (!cones) return fail(error, path, "auto, off or on", in);
+    value = *cones;
     return true;
 }
 

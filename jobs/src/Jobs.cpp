@@ -126,6 +126,8 @@ std::optional<JobError> checkFrame(const FrameRequest& frame) {
     if (!inRange(frame.trace.overRelaxation, 1.0, 1.95))
         return usage("--relaxation: must be 1..1.95, got " + text(frame.trace.overRelaxation));
     if (!inRange(frame.trace.epsilonScale, 1e-6, 100.0)) return usage("trace.epsilon_scale: must be 1e-6..100");
+    if (frame.trace.coneTile < 0 || frame.trace.coneTile > 64)
+        return usage("--cone-tile: must be 0..64 pixels (0: no cone pass), got " + std::to_string(frame.trace.coneTile));
     if (!inRange(frame.plane.contourSpacing, 1e-5, 10.0))
         return usage("--contour-spacing: must be 1e-5..10, got " + text(frame.plane.contourSpacing));
     if (frame.plane.enabled && frame.plane.normal == glm::vec3(0.0f))

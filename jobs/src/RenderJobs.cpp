@@ -4,6 +4,7 @@
 #include <core/Log.h>
 #include <core/TextFile.h>
 #include <dataset/Metadata.h>
+#include <renderer/FrameScaler.h>
 #include <renderer/GlInfo.h>
 #include <renderer/ImageIO.h>
 #include <renderer/OffscreenRenderer.h>
@@ -331,6 +332,14 @@ JobResult<AnimateReport> run(const AnimateRequest& request, const ProgressSink& 
             renderer::Image image = offscreen.render(tracer, frame.width, frame.height, camera, time, &stats);
             if (!label.empty()) drawOverlay(image, label, i == 0 ? report.warnings : ignoredWarnings);
             report.renderSeconds += stats.cpuMilliseconds / 1000.0;
+            // The viewport's choices at rest, from frame times (the first includes code generation).
+            // A changed program generates its code on a tiny frame, so the next frame's time is fair.
+            if (i > 0 && tracer.settleMarch(stats.cpuMilliseconds)) {
+                renderer::FrameStats warm;
+                (void)offscreen.render(tracer, frame.width, frame.height, camera, time, &warm,
+                                       renderer::FrameScaler::kProbeScale);
+                report.renderSeconds += warm.cpuMilliseconds / 1000.0;
+            }
             if (auto ok = (*writer)->addFrame(image); !ok) return JobError{Failure::Work, ok.error().message, {}};
             progress(std::uint64_t(i + 1), std::uint64_t(frames));
         }

@@ -58,6 +58,7 @@ struct Variant {
     GlProgram program;
     std::string fragmentSource;
     bool fusedMarch = false;
+    bool cones = false;
     std::unordered_map<std::string, GLint> uniforms;
     std::uint64_t lastUse = 0;
 
@@ -70,13 +71,20 @@ struct Variant {
     }
 };
 
+// Whether a cone pass can serve these settings: not for the march debugger or the step heat
+// map, which show each pixel's own march.
+bool conesApply(const ShadingSettings& shading, const TraceSettings& trace) {
+    return trace.coneTile > 0 && trace.cones != TraceSettings::Cones::Off && !shading.probe && shading.mode != ShadingMode::Steps;
+}
+
 struct SdfRenderer::Impl {
     std::optional<shaders::PreparedSdf> sdf; // the last SDF that compiled
     // settleMarch(): where the choice between the fused and the separate march stands.
-    enum class Settle { Open, TryingSeparate, Done };
+    enum class Settle { Open, TryingSeparate, TryingCones, Done };
     Settle settle = Settle::Open;
-    bool separateChosen = false; // a long SDF marches separately (its frames were faster so)
-    double fusedMilliseconds = 0.0;
+    bool separateChosen = false;          // a long SDF marches separately (its frames were faster so)
+    bool conesChosen = false;             // TraceSettings::Cones::Auto: the cone pass made full frames faster
+    double bestMilliseconds = 0.0;        // the fastest full frame of the programs tried so far
     std::map<std::string, Variant> cache; // by composed fragment text
     Variant* current = nullptr;
     GlVertexArray vertexArray;
@@ -93,10 +101,32 @@ struct SdfRenderer::Impl {
     GlFramebuffer lowFramebuffer;
     GlTexture lowColor;
     int lowWidth = 0, lowHeight = 0;
+    GlFramebuffer coneFramebuffer; // the cone pass's starts, copied out of the target
+    GlTexture coneStarts;
+    int coneWidth = 0, coneHeight = 0;
 
-    static shaders::TracerFeatures features(const ShadingSettings& shading, const TraceSettings& trace,
-                                            const CuttingPlane& plane) {
-        return tracerFeatures(shading, trace, plane);
+    // A width x height RGBA8 texture with nearest filtering and a framebuffer around it.
+    static void makeTarget(int width, int height, GLenum filter, GlTexture& texture, GlFramebuffer& framebuffer) {
+        GLuint id = 0;
+        glGenTextures(1, &id);
+        texture = GlTexture(id);
+        glBindTexture(GL_TEXTURE_2D, id);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        glGenFramebuffers(1, &id);
+        framebuffer = GlFramebuffer(id);
+        glBindFramebuffer(GL_FRAMEBUFFER, id);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture.id(), 0);
+    }
+
+    shaders::TracerFeatures features(const ShadingSettings& shading, const TraceSettings& trace,
+                                     const CuttingPlane& plane) const {
+        shaders::TracerFeatures result = tracerFeatures(shading, trace, plane);
+        result.cones = conesApply(shading, trace) &&
+                       (trace.cones == TraceSettings::Cones::On || (trace.cones == TraceSettings::Cones::Auto && conesChosen));
+        return result;
     }
 
     // An image as a linear-filtered, edge-clamped texture.
@@ -199,6 +229,7 @@ struct SdfRenderer::Impl {
         variant.program = std::move(program);
         variant.fragmentSource = fragment->text;
         variant.fusedMarch = tracerFeatures.fusedMarch;
+        variant.cones = tracerFeatures.cones;
         variant.lastUse = ++clock;
         return &variant;
     }
@@ -241,16 +272,20 @@ SdfRenderer::~SdfRenderer() {
     m_impl->noise.release();
     m_impl->lowFramebuffer.release();
     m_impl->lowColor.release();
+    m_impl->coneFramebuffer.release();
+    m_impl->coneStarts.release();
 }
 
 std::vector<Diagnostic> SdfRenderer::setSdf(const shaders::PreparedSdf& sdf) {
     std::vector<Diagnostic> diagnostics = sdf.diagnostics;
     if (shaders::hasErrors(diagnostics)) return diagnostics;
-    const bool separateBefore = m_impl->separateChosen;
+    const bool separateBefore = m_impl->separateChosen, conesBefore = m_impl->conesChosen;
     m_impl->separateChosen = false; // a new SDF starts with the quickest code generation
-    Variant* variant = m_impl->build(sdf, Impl::features(m_shading, m_trace, m_plane), diagnostics);
+    m_impl->conesChosen = false;
+    Variant* variant = m_impl->build(sdf, m_impl->features(m_shading, m_trace, m_plane), diagnostics);
     if (!variant) {
         m_impl->separateChosen = separateBefore; // the last good SDF keeps its program
+        m_impl->conesChosen = conesBefore;
         return diagnostics;
     }
     m_impl->sdf = sdf;
@@ -261,43 +296,81 @@ std::vector<Diagnostic> SdfRenderer::setSdf(const shaders::PreparedSdf& sdf) {
 
 bool SdfRenderer::fusedMarch() const { return m_impl->current && m_impl->current->fusedMarch; }
 
+bool SdfRenderer::conePass() const { return m_impl->current && m_impl->current->cones; }
+
 bool SdfRenderer::settleMarch(double fullFrameMilliseconds) {
     Impl& impl = *m_impl;
     if (!impl.sdf || !impl.current || impl.settle == Impl::Settle::Done) return false;
-    auto rebuild = [&](bool separate) {
-        impl.separateChosen = separate;
+    auto rebuild = [&] {
         std::vector<Diagnostic> ignored;
-        Variant* variant = impl.build(*impl.sdf, Impl::features(m_shading, m_trace, m_plane), ignored);
+        Variant* variant = impl.build(*impl.sdf, impl.features(m_shading, m_trace, m_plane), ignored);
         if (variant) impl.current = variant;
         return variant != nullptr;
     };
-    if (impl.settle == Impl::Settle::Open) {
+    auto milliseconds = [](double value) { return std::to_string(int(std::lround(value))); };
+    // The last trial: the cone pass on the march chosen so far. Returns whether the program changed.
+    auto tryCones = [&] {
         impl.settle = Impl::Settle::Done;
-        if (forcedFusedMarch() || !fusedMarch() || !(fullFrameMilliseconds < kTrySeparateMarchBelowMilliseconds)) return false;
-        impl.fusedMilliseconds = fullFrameMilliseconds;
-        if (!rebuild(true)) { // the driver refused it: the fused program stays (from the cache)
-            rebuild(false);
+        if (m_trace.cones != TraceSettings::Cones::Auto || !conesApply(m_shading, m_trace) || impl.conesChosen) return false;
+        impl.conesChosen = true;
+        if (!rebuild()) { // the driver refused it: the program without cones stays (from the cache)
+            impl.conesChosen = false;
+            rebuild();
             return false;
         }
-        impl.settle = Impl::Settle::TryingSeparate;
-        log::info("render", "trying the separate march: the fused one drew a full frame in " +
-                                std::to_string(int(std::lround(fullFrameMilliseconds))) + " ms");
+        impl.settle = Impl::Settle::TryingCones;
+        log::info("render", "trying the cone pass: a full frame took " + milliseconds(impl.bestMilliseconds) + " ms without");
         return true;
+    };
+    switch (impl.settle) {
+    case Impl::Settle::Open:
+        impl.bestMilliseconds = fullFrameMilliseconds;
+        if (!forcedFusedMarch() && fusedMarch() && fullFrameMilliseconds < kTrySeparateMarchBelowMilliseconds) {
+            impl.separateChosen = true;
+            if (rebuild()) {
+                impl.settle = Impl::Settle::TryingSeparate;
+                log::info("render", "trying the separate march: the fused one drew a full frame in " +
+                                        milliseconds(fullFrameMilliseconds) + " ms");
+                return true;
+            }
+            impl.separateChosen = false;
+            rebuild();
+        }
+        return tryCones();
+    case Impl::Settle::TryingSeparate: {
+        const bool keep = fullFrameMilliseconds <= impl.bestMilliseconds;
+        log::info("render", std::string(keep ? "keeping" : "dropping") +
+                                " the separate march: " + milliseconds(fullFrameMilliseconds) + " ms a full frame against " +
+                                milliseconds(impl.bestMilliseconds) + " fused");
+        if (keep) {
+            impl.bestMilliseconds = fullFrameMilliseconds;
+        } else {
+            impl.separateChosen = false;
+            rebuild();
+        }
+        return tryCones() || !keep;
     }
-    impl.settle = Impl::Settle::Done; // TryingSeparate: this frame was the separate march's
-    const bool keep = fullFrameMilliseconds <= impl.fusedMilliseconds;
-    log::info("render", std::string(keep ? "keeping" : "dropping") +
-                            " the separate march: " + std::to_string(int(std::lround(fullFrameMilliseconds))) +
-                            " ms a full frame against " + std::to_string(int(std::lround(impl.fusedMilliseconds))) + " fused");
-    if (keep) return false;
-    return rebuild(false);
+    case Impl::Settle::TryingCones: {
+        impl.settle = Impl::Settle::Done;
+        const bool keep = fullFrameMilliseconds <= impl.bestMilliseconds;
+        log::info("render", std::string(keep ? "keeping" : "dropping") +
+                                " the cone pass: " + milliseconds(fullFrameMilliseconds) + " ms a full frame against " +
+                                milliseconds(impl.bestMilliseconds) + " without");
+        if (keep) return false;
+        impl.conesChosen = false;
+        return rebuild();
+    }
+    case Impl::Settle::Done:
+        break;
+    }
+    return false;
 }
 
 std::vector<Diagnostic> SdfRenderer::setShading(const ShadingSettings& shading) {
     m_shading = shading;
     std::vector<Diagnostic> diagnostics;
     if (!m_impl->sdf) return diagnostics;
-    if (Variant* variant = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace, m_plane), diagnostics))
+    if (Variant* variant = m_impl->build(*m_impl->sdf, m_impl->features(m_shading, m_trace, m_plane), diagnostics))
         m_impl->current = variant;
     return diagnostics;
 }
@@ -316,7 +389,7 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
     if (!m_impl->current && m_impl->sdf) {
         // After releaseGl() (a new context): rebuild the last good variant.
         std::vector<Diagnostic> ignored;
-        m_impl->current = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace, m_plane), ignored);
+        m_impl->current = m_impl->build(*m_impl->sdf, m_impl->features(m_shading, m_trace, m_plane), ignored);
     }
     if (!m_impl->current) {
         // Nothing to trace: the background. (A traced frame writes every pixel: no clear.)
@@ -390,6 +463,31 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
             else
                 glUniform4f(v->location("sdfwb_backgroundFit"), 1.0f / ratio, 1.0f, 0.5f * (1.0f - 1.0f / ratio), 0.0f);
         }
+        // The cone pass (trace_core.glsl): drawn into the target's lower-left corner, then copied
+        // into a texture the picture reads. It draws into the same framebuffer with the same
+        // state as the picture, so the driver compiles one variant of the program for both. The
+        // texture is bound even when the pass is off: the same variant again.
+        const bool cones = v->cones;
+        const int coneTile = std::max(m_trace.coneTile, 1);
+        const int coneWidth = (width + coneTile - 1) / coneTile, coneHeight = (height + coneTile - 1) / coneTile;
+        GLint target = 0;
+        if (cones) {
+            glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+            if (!m_impl->coneFramebuffer || m_impl->coneWidth < coneWidth || m_impl->coneHeight < coneHeight) {
+                m_impl->coneWidth = std::max(m_impl->coneWidth, coneWidth);
+                m_impl->coneHeight = std::max(m_impl->coneHeight, coneHeight);
+                Impl::makeTarget(m_impl->coneWidth, m_impl->coneHeight, GL_NEAREST, m_impl->coneStarts, m_impl->coneFramebuffer);
+                glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
+            }
+            glActiveTexture(GL_TEXTURE2);
+            glBindTexture(GL_TEXTURE_2D, m_impl->coneStarts.id());
+            glActiveTexture(GL_TEXTURE0);
+            glUniform1i(v->location("sdfwb_coneStarts"), 2);
+            glUniform1i(v->location("sdfwb_coneTile"), coneTile);
+            // Past every point of the box (and its margin) seen from the camera.
+            glUniform1f(v->location("sdfwb_coneRange"),
+                        glm::length(camera.position) + std::sqrt(3.0f) * (1.0f + m_trace.boxMargin) + 1.0f);
+        }
         glBindVertexArray(m_impl->vertexArray.id());
         // Blending that changes nothing (source times one, plus zero): llvmpipe generates an
         // opaque draw's fragment code twice (for whole tiles and for edge tiles), a blended one
@@ -398,6 +496,17 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
         glEnable(GL_BLEND);
         glBlendEquation(GL_FUNC_ADD);
         glBlendFunc(GL_ONE, GL_ZERO);
+        if (cones) {
+            glUniform1i(v->location("sdfwb_conePass"), 1);
+            glViewport(0, 0, coneWidth, coneHeight);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(target));
+            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_impl->coneFramebuffer.id());
+            glBlitFramebuffer(0, 0, coneWidth, coneHeight, 0, 0, coneWidth, coneHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+            glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
+            glViewport(0, 0, width, height);
+        }
+        if (cones) glUniform1i(v->location("sdfwb_conePass"), 0);
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glDisable(GL_BLEND);
         glBindVertexArray(0);
@@ -419,18 +528,7 @@ FrameStats SdfRenderer::renderScaled(int width, int height, float scale, const C
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
     Impl& impl = *m_impl;
     if (!impl.lowFramebuffer || impl.lowWidth != lowWidth || impl.lowHeight != lowHeight) {
-        GLuint id = 0;
-        glGenTextures(1, &id);
-        impl.lowColor = GlTexture(id);
-        glBindTexture(GL_TEXTURE_2D, id);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, lowWidth, lowHeight, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glBindTexture(GL_TEXTURE_2D, 0);
-        glGenFramebuffers(1, &id);
-        impl.lowFramebuffer = GlFramebuffer(id);
-        glBindFramebuffer(GL_FRAMEBUFFER, id);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, impl.lowColor.id(), 0);
+        Impl::makeTarget(lowWidth, lowHeight, GL_LINEAR, impl.lowColor, impl.lowFramebuffer);
         impl.lowWidth = lowWidth;
         impl.lowHeight = lowHeight;
     }
@@ -459,6 +557,9 @@ void SdfRenderer::releaseGl() {
     m_impl->lowFramebuffer.reset();
     m_impl->lowColor.reset();
     m_impl->lowWidth = m_impl->lowHeight = 0;
+    m_impl->coneFramebuffer.reset();
+    m_impl->coneStarts.reset();
+    m_impl->coneWidth = m_impl->coneHeight = 0;
     m_impl->current = nullptr;
     m_impl->cache.clear();
     m_impl->vertexArray.reset();
@@ -477,18 +578,20 @@ std::vector<Diagnostic> SdfRenderer::setPlane(const CuttingPlane& plane) {
     m_plane = plane;
     std::vector<Diagnostic> diagnostics;
     if (!variantChanges || !m_impl->sdf) return diagnostics;
-    if (Variant* variant = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace, m_plane), diagnostics))
+    if (Variant* variant = m_impl->build(*m_impl->sdf, m_impl->features(m_shading, m_trace, m_plane), diagnostics))
         m_impl->current = variant;
     return diagnostics;
 }
 
 std::vector<Diagnostic> SdfRenderer::setTrace(const TraceSettings& trace) {
-    bool variantChanges = (trace.overRelaxation > 1.0f) != (m_trace.overRelaxation > 1.0f) ||
-                          (trace.stepFactor != 1.0f) != (m_trace.stepFactor != 1.0f);
+    bool variantChanges =
+        (trace.overRelaxation > 1.0f) != (m_trace.overRelaxation > 1.0f) ||
+        (trace.stepFactor != 1.0f) != (m_trace.stepFactor != 1.0f) ||
+        m_impl->features(m_shading, trace, m_plane).cones != m_impl->features(m_shading, m_trace, m_plane).cones;
     m_trace = trace;
     std::vector<Diagnostic> diagnostics;
     if (!variantChanges || !m_impl->sdf) return diagnostics;
-    if (Variant* variant = m_impl->build(*m_impl->sdf, Impl::features(m_shading, m_trace, m_plane), diagnostics))
+    if (Variant* variant = m_impl->build(*m_impl->sdf, m_impl->features(m_shading, m_trace, m_plane), diagnostics))
         m_impl->current = variant;
     return diagnostics;
 }

@@ -77,6 +77,52 @@ vec3 sdfwb_primaryRay(vec2 fragment) {
     return normalize(sdfwb_cameraForward + ndc.x * aspect * sdfwb_tanHalfFovY * sdfwb_cameraRight + ndc.y * sdfwb_tanHalfFovY * sdfwb_cameraUp);
 }
 
+// The cone pass (SDFWB_CONES): before the picture, one ray per tile of sdfwb_coneTile^2 pixels
+// marches a cone that holds every pixel ray of its tile, and stops where the cone comes near the
+// surface; its pixels then start marching there (sdfwb_coneStart) instead of at the box. A step
+// d - r from a point where the cone's radius is r cannot carry any ray of the cone through the
+// surface; the cone takes plain steps d while d >= 2r, which the next point's sphere covers (the
+// part of a ray's step that one sphere misses is within r of the next centre, whose sphere has
+// radius >= 2r), and its pixels may start r before the point where it stopped. Not in the march
+// debugger's program or the step heat map's, which show every step of a pixel's own march.
+#ifdef SDFWB_CONES
+uniform int sdfwb_coneTile;         // tile size in pixels
+uniform bool sdfwb_conePass;        // this draw is the cone pass (one fragment per tile)
+uniform sampler2D sdfwb_coneStarts; // the cone pass's result, packed (sdfwb_packConeStart)
+uniform float sdfwb_coneRange;      // past every point of the box seen from the camera
+#define SDFWB_CONE_PASS sdfwb_conePass
+
+// A cone's radius per unit of t: half the tile's diagonal in the image plane at distance 1 (the
+// angle between two rays is at most their points' distance there, since both lie at least 1 away).
+float sdfwb_coneSlope() { return 0.7072 * float(sdfwb_coneTile) * sdfwb_pixelAngle(); }
+
+// Where the cone's pixels may start from its march's end: r before a stop or a spent budget;
+// past the box (sdfwb_coneRange) when the cone left it; at their own start (0) when the field
+// was negative or not finite there (the cone began inside the shape or the field is broken).
+float sdfwb_coneEnd(int status, float t, float d) {
+    if (status == sdfwb_kRayLeftBox) return sdfwb_coneRange;
+    if (status == sdfwb_kRayNotFinite || !(d >= 0.0)) return 0.0;
+    return t * (1.0 - sdfwb_coneSlope());
+}
+
+// 24 bits of t / range in the colour channels, rounded down (a start is never later than the
+// cone allowed): what a framebuffer of any colour format holds.
+vec4 sdfwb_packConeStart(float t) {
+    uint code = uint(clamp(t / sdfwb_coneRange, 0.0, 1.0) * 16777215.0);
+    code = code > 0u ? code - 1u : 0u;
+    return vec4(float(code >> 16u), float((code >> 8u) & 255u), float(code & 255u), 255.0) / 255.0;
+}
+
+// Where this pixel's march may start: its tile's cone start (past its box when the cone left it).
+float sdfwb_coneStart() {
+    uvec3 bytes = uvec3(texelFetch(sdfwb_coneStarts, ivec2(gl_FragCoord.xy) / sdfwb_coneTile, 0).rgb * 255.0 + 0.5);
+    uint code = (bytes.r << 16u) | (bytes.g << 8u) | bytes.b;
+    return code >= 16777214u ? 1e30 : float(code) * (sdfwb_coneRange / 16777215.0);
+}
+#else
+#define SDFWB_CONE_PASS false
+#endif
+
 // One ray's march: s counts from the box entry point (far from the origin, a camera at 1e4,
 // the ray parameter t is ~1e4 and float32 cannot add steps below ~1e-3 to it), and the state of
 // over-relaxed sphere tracing (step omega * d while consecutive unbounding spheres overlap; when
@@ -93,19 +139,33 @@ struct sdfwb_March {
 };
 
 // Clips the ray to the box and the near and far planes; false when nothing of it is left.
+// In the cone pass the box grows by the cone's widest radius in it (so the cone enters the grown
+// box before any of its rays enter the box, and has left it once they all have) and a "hit" is a
+// value below twice the cone's radius.
 bool sdfwb_startMarch(vec3 origin, vec3 direction, out sdfwb_March march) {
-    vec2 span = sdfwb_intersectBox(origin, direction, 1.0 + sdfwb_boxMargin);
-    march.tStart = max(span.x, sdfwb_nearPlane);
-    float tEnd = min(span.y, sdfwb_farPlane);
-    march.entry = origin + march.tStart * direction;
-    march.s = 0.0;
-    march.sEnd = tEnd - march.tStart;
+    float box = 1.0 + sdfwb_boxMargin;
+    float tFrom = sdfwb_nearPlane;
     march.footprint = sdfwb_epsilonScale * sdfwb_pixelAngle();
 #ifdef SDFWB_OVERRELAX
     march.omega = sdfwb_relaxation;
 #else
     march.omega = 1.0;
 #endif
+#ifdef SDFWB_CONES
+    if (sdfwb_conePass) {
+        march.footprint = 2.0 * sdfwb_coneSlope();
+        box += sdfwb_coneSlope() * sdfwb_coneRange;
+        march.omega = 1.0;
+    } else {
+        tFrom = max(tFrom, sdfwb_coneStart());
+    }
+#endif
+    vec2 span = sdfwb_intersectBox(origin, direction, box);
+    march.tStart = max(span.x, tFrom);
+    float tEnd = min(span.y, sdfwb_farPlane);
+    march.entry = origin + march.tStart * direction;
+    march.s = 0.0;
+    march.sEnd = tEnd - march.tStart;
     march.previousRadius = 0.0;
     march.stepLength = 0.0;
     return march.tStart <= tEnd;
@@ -214,7 +274,8 @@ sdfwb_Hit sdfwb_traceRay(vec3 origin, vec3 direction) {
     if (hit.status == sdfwb_kRayOutOfSteps && !hit.found)
         SDFWB_RECORD(sdfwb_kProbeOutOfSteps, march.tStart + march.s, march.entry + march.s * direction, 0.0);
 #endif
-    if (hit.found) {
+    hit.value = d;
+    if (hit.found && !SDFWB_CONE_PASS) {
         hit.status = sdfwb_kRayHit;
         float next = SDFWB_SCALED(sdfwb_sceneMap(march.entry + (march.s + d) * direction));
         const bool keep = sdfwb_refineKeeps(d, next);
@@ -327,9 +388,11 @@ sdfwb_Hit sdfwb_traceWithNormal(vec3 origin, vec3 direction, out vec3 normal) {
                 break;
             }
             int event = sdfwb_marchStep(march, d);
+            hit.value = d;
             if (event == sdfwb_kMarchHit) {
-                hit.found = true;
                 hit.status = sdfwb_kRayHit;
+                if (SDFWB_CONE_PASS) break; // where the cone stops: no refinement, no normal
+                hit.found = true;
                 hitValue = d;
                 phase = sdfwb_kPhaseRefine;
                 continue;

@@ -27,6 +27,9 @@ vec4 sdfwb_pixel(vec3 direction) {
     vec3 normal;
     sdfwb_Hit hit = sdfwb_traceWithNormal(sdfwb_cameraPosition, direction, normal);
 #endif
+#ifdef SDFWB_CONES
+    if (sdfwb_conePass) return sdfwb_packConeStart(sdfwb_coneEnd(hit.status, hit.t, hit.value));
+#endif
 #ifdef SDFWB_OUTPUT_STATS
     // Measurement output (float target): steps; the hit distance, or for a miss minus its kind
     // (-1 left the box, -2 out of steps, -3 NaN/Inf); |f| at the hit; the length of the shading
@@ -62,8 +65,14 @@ vec4 sdfwb_pixel(vec3 direction) {
 }
 
 void main() {
-    sdfwb_color = sdfwb_pixel(sdfwb_primaryRay(gl_FragCoord.xy));
+    // The cone pass draws one fragment per tile: its ray goes through the tile's centre.
+#ifdef SDFWB_CONES
+    vec2 fragment = sdfwb_conePass ? (floor(gl_FragCoord.xy) + 0.5) * float(sdfwb_coneTile) : gl_FragCoord.xy;
+#else
+    vec2 fragment = gl_FragCoord.xy;
+#endif
+    sdfwb_color = sdfwb_pixel(sdfwb_primaryRay(fragment));
 #if defined(SDFWB_MARKERS) && !defined(SDFWB_OUTPUT_STATS)
-    sdfwb_color.rgb = sdfwb_drawMarkers(sdfwb_color.rgb);
+    if (!SDFWB_CONE_PASS) sdfwb_color.rgb = sdfwb_drawMarkers(sdfwb_color.rgb);
 #endif
 }

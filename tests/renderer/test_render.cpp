@@ -195,6 +195,9 @@ TEST_F(RendererTest, SettleMarchKeepsTheFasterOfTheTwoMarches) {
     const double fast = renderer::SdfRenderer::kTrySeparateMarchBelowMilliseconds / 4;
     renderer::OffscreenRenderer offscreen;
     renderer::SdfRenderer sdfRenderer;
+    renderer::TraceSettings trace;
+    trace.cones = renderer::TraceSettings::Cones::Off; // the march alone (ConePassIsKeptWhenItMakesFramesFaster)
+    (void)sdfRenderer.setTrace(trace);
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(longSdf)));
     EXPECT_TRUE(sdfRenderer.fusedMarch());
     const renderer::Image fused = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
@@ -281,4 +284,131 @@ TEST_F(RendererTest, FusedMarchDrawsWhatTheSeparateMarchDraws) {
             }
     }
     unsetenv("SDFWB_FUSED_MARCH");
+}
+
+// The cone pass (a ray per 4x4 tile finds where its pixels may start) changes where marches start,
+// not what they find: on users' code in several styles, exact fields and bounds, plain,
+// over-relaxed and with a step factor, the same pixels hit, at the same distances within the hit
+// tolerance, in fewer steps. A camera inside the shape and one far away are included.
+TEST_F(RendererTest, ConePassFindsTheSameHitsInFewerSteps) {
+    const fs::path foreign = fs::path(SDFWB_SOURCE_DIR) / "tests" / "foreign";
+    shaders::IncludeOptions options;
+    options.libraryRoots = {fs::path(SDFWB_SOURCE_DIR) / "shaders" / "lib"};
+    struct Case {
+        shaders::PreparedSdf sdf;
+        renderer::Camera camera;
+        float relaxation = 1.0f, stepFactor = 1.0f;
+        bool fewerSteps = true;
+    };
+    renderer::Camera far;
+    far.position = glm::vec3(0.0f, 0.0f, 40.0f);
+    far.fovYDegrees = 4.0f;
+    renderer::Camera inside;
+    inside.position = glm::vec3(0.0f, 0.0f, 0.2f);
+    std::vector<Case> cases = {
+        {shaders::prepareSdfFile(foreign / "01_iq_primitives.glsl", options), {}},
+        {shaders::prepareSdfFile(foreign / "05_hg_colonnade.glsl", options), {}},
+        {shaders::prepareSdfFile(foreign / "11_menger_iq.glsl", options), {}},
+        {shaders::prepareSdfFile(foreign / "11_menger_iq.glsl", options), {}, 1.6f},
+        {shaders::prepareSdfFile(foreign / "17_iq_displace.glsl", options), {}, 1.0f, 0.6f},
+        {shaders::prepareSdfFile(foreign / "21_g3d_random_cells.glsl", options), {}},
+        {shaders::prepareSdfFile(foreign / "23_st_metaballs_itime.glsl", options), {}},
+        {prepare("float sdf(vec3 p) { return abs(length(p) - 0.6) - 0.0005; }\n"), {}}, // a paper-thin shell
+        {prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n"), far},
+        {prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n"), inside, 1.0f, 1.0f, false},
+    };
+    renderer::OffscreenRenderer offscreen;
+    const int width = 200, height = 120;
+    for (const Case& c : cases) {
+        ASSERT_FALSE(shaders::hasErrors(c.sdf.diagnostics)) << shaders::formatDiagnostic(c.sdf.diagnostics[0]);
+        const std::string label = c.sdf.source.map.fileName(0) + ", camera z " + std::to_string(c.camera.position.z) +
+                                  ", relaxation " + std::to_string(c.relaxation) + ", step factor " +
+                                  std::to_string(c.stepFactor);
+        std::vector<renderer::OffscreenRenderer::PixelStats> stats[2];
+        for (int cones = 0; cones < 2; ++cones) {
+            renderer::SdfRenderer sdfRenderer;
+            renderer::ShadingSettings shading;
+            shading.statsOutput = true;
+            (void)sdfRenderer.setShading(shading);
+            renderer::TraceSettings trace;
+            trace.overRelaxation = c.relaxation;
+            trace.stepFactor = c.stepFactor;
+            trace.cones = cones ? renderer::TraceSettings::Cones::On : renderer::TraceSettings::Cones::Off;
+            (void)sdfRenderer.setTrace(trace);
+            auto diagnostics = sdfRenderer.setSdf(c.sdf);
+            ASSERT_FALSE(shaders::hasErrors(diagnostics)) << shaders::formatDiagnostic(diagnostics[0]);
+            EXPECT_EQ(sdfRenderer.conePass(), cones == 1) << label;
+            stats[cones] = offscreen.renderStats(sdfRenderer, width, height, c.camera, 0.5f);
+            sdfRenderer.releaseGl();
+        }
+        const double pixelAngle = 2.0 * std::tan(c.camera.fovYDegrees * 3.14159265 / 360.0) / height;
+        long hits = 0, changed = 0, moved = 0;
+        double steps[2] = {0.0, 0.0};
+        for (std::size_t i = 0; i < stats[0].size(); ++i) {
+            const auto &off = stats[0][i], &on = stats[1][i];
+            steps[0] += off.steps;
+            steps[1] += on.steps;
+            hits += off.hit();
+            if (off.hit() != on.hit()) ++changed;
+            // Both within the tolerance of the surface: they differ by at most a few footprints.
+            if (off.hit() && on.hit() && std::abs(on.t - off.t) > 4.0 * pixelAngle * off.t) ++moved;
+        }
+        if (c.fewerSteps) EXPECT_GT(hits, long(stats[0].size() / 50)) << label;
+        EXPECT_LE(changed, long(stats[0].size() / 500)) << label << ": pixels whose ray hit in one and not the other";
+        EXPECT_LE(moved, hits / 200) << label << ": hits that moved by more than 4 footprints";
+        if (c.fewerSteps)
+            EXPECT_LT(steps[1], 0.9 * steps[0]) << label;
+        else
+            EXPECT_EQ(steps[1], steps[0]) << label << ": a camera inside the shape: every march starts at its own start";
+    }
+}
+
+// Cones::Auto: at rest the cone pass is tried once on the march chosen so far, and kept when the
+// full frame got faster; from the cache when dropped. On and Off are never traded; the step heat
+// map and the march debugger never draw it (they show each pixel's own march).
+TEST_F(RendererTest, ConePassIsKeptWhenItMakesFramesFaster) {
+    const shaders::PreparedSdf sdf = prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n");
+    renderer::OffscreenRenderer offscreen;
+    renderer::SdfRenderer sdfRenderer;
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(sdf)));
+    EXPECT_FALSE(sdfRenderer.conePass()) << "a new SDF starts without";
+    const renderer::Image without = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
+    EXPECT_TRUE(sdfRenderer.settleMarch(40.0));
+    EXPECT_TRUE(sdfRenderer.conePass());
+    const renderer::Image with = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
+    EXPECT_FALSE(sdfRenderer.settleMarch(30.0)) << "faster: kept";
+    EXPECT_TRUE(sdfRenderer.conePass());
+    EXPECT_FALSE(sdfRenderer.settleMarch(10.0)) << "the choice is made once per SDF";
+    long differing = 0;
+    for (std::size_t i = 0; i < with.rgba.size(); ++i) differing += std::abs(with.rgba[i] - without.rgba[i]) > 2;
+    EXPECT_LE(differing, long(with.rgba.size() / 200));
+    EXPECT_GT(foreground(with, renderer::ShadingSettings{}.background), 200 * 120 / 10);
+
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(sdf)));
+    EXPECT_FALSE(sdfRenderer.conePass());
+    EXPECT_TRUE(sdfRenderer.settleMarch(40.0));
+    const std::uint64_t built = sdfRenderer.programsBuilt();
+    EXPECT_TRUE(sdfRenderer.settleMarch(45.0)) << "slower: dropped, and the caller draws again";
+    EXPECT_FALSE(sdfRenderer.conePass());
+    EXPECT_EQ(sdfRenderer.programsBuilt(), built) << "the program without cones comes from the cache";
+    EXPECT_FALSE(sdfRenderer.settleMarch(10.0));
+
+    renderer::TraceSettings trace;
+    trace.cones = renderer::TraceSettings::Cones::Off;
+    (void)sdfRenderer.setTrace(trace);
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(sdf)));
+    EXPECT_FALSE(sdfRenderer.settleMarch(40.0));
+    EXPECT_FALSE(sdfRenderer.conePass());
+    trace.cones = renderer::TraceSettings::Cones::On;
+    (void)sdfRenderer.setTrace(trace);
+    EXPECT_TRUE(sdfRenderer.conePass()) << "on: no trial needed";
+    renderer::ShadingSettings shading;
+    shading.mode = renderer::ShadingMode::Steps;
+    (void)sdfRenderer.setShading(shading);
+    EXPECT_FALSE(sdfRenderer.conePass()) << "the heat map shows each pixel's own steps";
+    shading.mode = renderer::ShadingMode::Normals;
+    shading.probe = true;
+    (void)sdfRenderer.setShading(shading);
+    EXPECT_FALSE(sdfRenderer.conePass()) << "the march debugger records each pixel's own march";
+    sdfRenderer.releaseGl();
 }

@@ -5,7 +5,9 @@
 
 #include <glm/vec3.hpp>
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace sdfwb::renderer {
@@ -21,8 +23,24 @@ struct TraceSettings {
     float epsilonScale = 0.5f;   // hit when |f| < epsilonScale * (pixel footprint at the hit distance)
     float boxMargin = 0.05f;     // rays are clipped to [-1-margin, 1+margin]^3 before marching
     float overRelaxation = 1.0f; // omega > 1 enables over-relaxed steps with fallback (e.g. 1.6)
+    // A cone pass per tile of coneTile x coneTile pixels first finds where their marches may start
+    // (fewer steps per pixel for a second draw and a texture fetch per pixel). Auto: tried at rest
+    // and kept when the full frame is faster (SdfRenderer::settleMarch).
+    enum class Cones { Auto, Off, On };
+    Cones cones = Cones::Auto;
+    int coneTile = 4;
     bool operator==(const TraceSettings&) const = default;
 };
+
+// "auto", "off", "on" (the CLI's --cones and the job files' trace.cones).
+inline const char* conesName(TraceSettings::Cones cones) {
+    return cones == TraceSettings::Cones::Off ? "off" : cones == TraceSettings::Cones::On ? "on" : "auto";
+}
+inline std::optional<TraceSettings::Cones> parseCones(std::string_view name) {
+    for (auto cones : {TraceSettings::Cones::Auto, TraceSettings::Cones::Off, TraceSettings::Cones::On})
+        if (name == conesName(cones)) return cones;
+    return std::nullopt;
+}
 
 struct ShadingSettings {
     ShadingMode mode = ShadingMode::Normals;

@@ -59,17 +59,21 @@ public:
     // Programs compiled and linked so far (variant cache misses): what a change cost.
     std::uint64_t programsBuilt() const;
 
-    // The frame-speed choice at rest. A long SDF is first drawn with the fused march (one copy of
+    // The frame-speed choices at rest. A long SDF is first drawn with the fused march (one copy of
     // the SDF for the driver: the quickest code generation after an edit). When its full frame
     // took under kTrySeparateMarchBelowMilliseconds, it is traded once for the separate march and
     // normal, which draws SDFs that are cheap per evaluation faster; the next full frame's time
-    // decides which program stays. Call with the time of a full-resolution frame at rest (never a
-    // program's first draw, which includes code generation). Returns true when the program changed
-    // and the caller should draw again; false once the choice is made. setSdf() starts over.
+    // decides which program stays. Then (TraceSettings::Cones::Auto) the cone pass is tried the
+    // same way: it pays when steps are dear. Call with the time of a full-resolution frame at rest
+    // (never a program's first draw, which includes code generation). Returns true when the
+    // program changed and the caller should draw again; false once the choice is made. setSdf()
+    // starts over.
     static constexpr double kTrySeparateMarchBelowMilliseconds = 100.0;
     bool settleMarch(double fullFrameMilliseconds);
     // Whether the current program marches through the fused loop.
     bool fusedMarch() const;
+    // Whether the current program draws the cone pass first (TraceSettings::cones).
+    bool conePass() const;
 
     // The composed fragment source of the current variant (for tests and the log).
     const std::string& fragmentSource() const;
