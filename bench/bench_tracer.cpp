@@ -8,6 +8,7 @@
 // gradients, audit) is `sdfwb --batch bench` (jobs/src/Benchmarks.cpp).
 //
 //   build/bench/bench_tracer [NAME ...]     (dataset names; default: every SDF)
+//   SDFWB_CONES=on|off forces the cone pass (default auto: tried at rest, as in the viewport).
 
 #include <core/Paths.h>
 #include <dataset/Catalogue.h>
@@ -213,6 +214,11 @@ void datasetReport(const std::vector<std::string>& names) {
         renderer::ShadingSettings shading;
         shading.mode = renderer::ShadingMode::Gooch;
         (void)sdfRenderer.setShading(shading);
+        if (const char* cones = std::getenv("SDFWB_CONES"); cones && renderer::parseCones(cones)) {
+            renderer::TraceSettings trace;
+            trace.cones = *renderer::parseCones(cones);
+            (void)sdfRenderer.setTrace(trace);
+        }
         const shaders::PreparedSdf prepared = shaders::prepareSdfFile(entry.path, includeOptions());
         auto diagnostics = sdfRenderer.setSdf(prepared);
         if (shaders::hasErrors(diagnostics)) {

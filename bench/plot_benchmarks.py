@@ -53,7 +53,7 @@ COLORS = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:b
 
 def plot_tracer(rows, path):
     fig, axes = plt.subplots(1, 2, figsize=(13, 5))
-    markers = {"plain": "o", "over-relaxed 1.6": "s", "step factor 0.7": "^"}
+    markers = {"plain": "o", "over-relaxed 1.6": "s", "step factor 0.7": "^", "plain + cone pass": "D"}
     shapes = sorted({r["sdf"] for r in rows})
     for (sdf, method), points in sorted(grouped(rows, "sdf", "method").items()):
         points.sort(key=lambda r: float(r["steps_hits"]))

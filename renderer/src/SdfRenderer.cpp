@@ -101,20 +101,25 @@ struct SdfRenderer::Impl {
     GlFramebuffer lowFramebuffer;
     GlTexture lowColor;
     int lowWidth = 0, lowHeight = 0;
-    GlFramebuffer coneFramebuffer; // the cone pass's starts, copied out of the target
-    GlTexture coneStarts;
+    GlTexture coneStarts; // the cone pass's starts, copied out of the target
     int coneWidth = 0, coneHeight = 0;
 
-    // A width x height RGBA8 texture with nearest filtering and a framebuffer around it.
-    static void makeTarget(int width, int height, GLenum filter, GlTexture& texture, GlFramebuffer& framebuffer) {
+    // A width x height RGBA8 texture.
+    static GlTexture makeTexture(int width, int height, GLenum filter) {
         GLuint id = 0;
         glGenTextures(1, &id);
-        texture = GlTexture(id);
         glBindTexture(GL_TEXTURE_2D, id);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
         glBindTexture(GL_TEXTURE_2D, 0);
+        return GlTexture(id);
+    }
+
+    // Such a texture and a framebuffer around it.
+    static void makeTarget(int width, int height, GLenum filter, GlTexture& texture, GlFramebuffer& framebuffer) {
+        texture = makeTexture(width, height, filter);
+        GLuint id = 0;
         glGenFramebuffers(1, &id);
         framebuffer = GlFramebuffer(id);
         glBindFramebuffer(GL_FRAMEBUFFER, id);
@@ -272,7 +277,6 @@ SdfRenderer::~SdfRenderer() {
     m_impl->noise.release();
     m_impl->lowFramebuffer.release();
     m_impl->lowColor.release();
-    m_impl->coneFramebuffer.release();
     m_impl->coneStarts.release();
 }
 
@@ -297,6 +301,8 @@ std::vector<Diagnostic> SdfRenderer::setSdf(const shaders::PreparedSdf& sdf) {
 bool SdfRenderer::fusedMarch() const { return m_impl->current && m_impl->current->fusedMarch; }
 
 bool SdfRenderer::conePass() const { return m_impl->current && m_impl->current->cones; }
+
+bool SdfRenderer::marchSettled() const { return m_impl->settle == Impl::Settle::Done; }
 
 bool SdfRenderer::settleMarch(double fullFrameMilliseconds) {
     Impl& impl = *m_impl;
@@ -464,20 +470,16 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
                 glUniform4f(v->location("sdfwb_backgroundFit"), 1.0f / ratio, 1.0f, 0.5f * (1.0f - 1.0f / ratio), 0.0f);
         }
         // The cone pass (trace_core.glsl): drawn into the target's lower-left corner, then copied
-        // into a texture the picture reads. It draws into the same framebuffer with the same
-        // state as the picture, so the driver compiles one variant of the program for both. The
-        // texture is bound even when the pass is off: the same variant again.
+        // into the texture the picture reads. It draws into the same framebuffer with the same
+        // state as the picture, so the driver compiles one variant of the program for both.
         const bool cones = v->cones;
         const int coneTile = std::max(m_trace.coneTile, 1);
         const int coneWidth = (width + coneTile - 1) / coneTile, coneHeight = (height + coneTile - 1) / coneTile;
-        GLint target = 0;
         if (cones) {
-            glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
-            if (!m_impl->coneFramebuffer || m_impl->coneWidth < coneWidth || m_impl->coneHeight < coneHeight) {
+            if (!m_impl->coneStarts || m_impl->coneWidth < coneWidth || m_impl->coneHeight < coneHeight) {
                 m_impl->coneWidth = std::max(m_impl->coneWidth, coneWidth);
                 m_impl->coneHeight = std::max(m_impl->coneHeight, coneHeight);
-                Impl::makeTarget(m_impl->coneWidth, m_impl->coneHeight, GL_NEAREST, m_impl->coneStarts, m_impl->coneFramebuffer);
-                glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
+                m_impl->coneStarts = Impl::makeTexture(m_impl->coneWidth, m_impl->coneHeight, GL_NEAREST);
             }
             glActiveTexture(GL_TEXTURE2);
             glBindTexture(GL_TEXTURE_2D, m_impl->coneStarts.id());
@@ -500,10 +502,9 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
             glUniform1i(v->location("sdfwb_conePass"), 1);
             glViewport(0, 0, coneWidth, coneHeight);
             glDrawArrays(GL_TRIANGLES, 0, 3);
-            glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(target));
-            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_impl->coneFramebuffer.id());
-            glBlitFramebuffer(0, 0, coneWidth, coneHeight, 0, 0, coneWidth, coneHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-            glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
+            glActiveTexture(GL_TEXTURE2);
+            glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, coneWidth, coneHeight);
+            glActiveTexture(GL_TEXTURE0);
             glViewport(0, 0, width, height);
         }
         if (cones) glUniform1i(v->location("sdfwb_conePass"), 0);
@@ -557,7 +558,6 @@ void SdfRenderer::releaseGl() {
     m_impl->lowFramebuffer.reset();
     m_impl->lowColor.reset();
     m_impl->lowWidth = m_impl->lowHeight = 0;
-    m_impl->coneFramebuffer.reset();
     m_impl->coneStarts.reset();
     m_impl->coneWidth = m_impl->coneHeight = 0;
     m_impl->current = nullptr;

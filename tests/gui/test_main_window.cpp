@@ -355,6 +355,25 @@ TEST(Viewport, AtRestALongCheapSdfTradesTheFusedMarchForFasterFrames) {
     EXPECT_GT(foreground(separate, kBackground), long(separate.width()) * separate.height() / 50);
 }
 
+// An SDF that is dear per evaluation (the trefoil knot solves cubics) opens without the cone
+// pass; a while after its full frame at rest the viewport tries it, keeps it (it halves this
+// SDF's frames here), and the picture stays the same.
+TEST(Viewport, AtRestADearSdfKeepsTheConePass) {
+    app::MainWindow window;
+    window.resize(1000, 600);
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "Geometry/TrefoilKnot.glsl"));
+    widgets::ViewportWidget* viewport = window.viewport();
+    EXPECT_FALSE(viewport->conePass()) << "a new SDF opens without the cone pass";
+    const QImage without = fullResolutionFrame(window);
+    ASSERT_TRUE(waitFor([&] { return viewport->marchSettled(); }, 30000)) << "never settled at rest";
+    EXPECT_TRUE(viewport->conePass()) << "tried and dropped";
+    EXPECT_FALSE(viewport->isInteracting());
+    const QImage with = fullResolutionFrame(window);
+    EXPECT_LT(changedPixels(without, with), long(without.width()) * without.height() / 1000);
+    EXPECT_GT(foreground(with, kBackground), long(with.width()) * with.height() / 20);
+}
+
 TEST(Viewport, CameraPanelMovesTheCameraAndTheSessionKeepsIt) {
     renderer::Camera edited;
     {

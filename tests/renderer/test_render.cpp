@@ -376,8 +376,10 @@ TEST_F(RendererTest, ConePassIsKeptWhenItMakesFramesFaster) {
     EXPECT_TRUE(sdfRenderer.settleMarch(40.0));
     EXPECT_TRUE(sdfRenderer.conePass());
     const renderer::Image with = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
+    EXPECT_FALSE(sdfRenderer.marchSettled()) << "on trial";
     EXPECT_FALSE(sdfRenderer.settleMarch(30.0)) << "faster: kept";
     EXPECT_TRUE(sdfRenderer.conePass());
+    EXPECT_TRUE(sdfRenderer.marchSettled());
     EXPECT_FALSE(sdfRenderer.settleMarch(10.0)) << "the choice is made once per SDF";
     long differing = 0;
     for (std::size_t i = 0; i < with.rgba.size(); ++i) differing += std::abs(with.rgba[i] - without.rgba[i]) > 2;

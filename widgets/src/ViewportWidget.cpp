@@ -36,8 +36,8 @@ ViewportWidget::ViewportWidget(QWidget* parent)
         update();
     });
     // Long enough that the next edit while typing (each valid one draws a new full frame, which
-    // restarts this) or a camera drag comes first: trading the march costs a stall for the
-    // driver's code generation (tens of milliseconds: only SDFs with quick frames are traded).
+    // restarts this) or a camera drag comes first: trading the march or trying the cone pass costs
+    // a stall for the driver's code generation (tens to a few hundred milliseconds).
     m_settleTimer.setSingleShot(true);
     m_settleTimer.setInterval(1500);
     connect(&m_settleTimer, &QTimer::timeout, this, [this] {
@@ -82,6 +82,10 @@ std::vector<shaders::Diagnostic> ViewportWidget::setSdf(const shaders::PreparedS
 }
 
 bool ViewportWidget::fusedMarch() const { return m_renderer->fusedMarch(); }
+
+bool ViewportWidget::conePass() const { return m_renderer->conePass(); }
+
+bool ViewportWidget::marchSettled() const { return m_renderer->marchSettled(); }
 
 void ViewportWidget::setShading(const renderer::ShadingSettings& shading) {
     m_shading = shading;

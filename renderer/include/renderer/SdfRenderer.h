@@ -74,6 +74,8 @@ public:
     bool fusedMarch() const;
     // Whether the current program draws the cone pass first (TraceSettings::cones).
     bool conePass() const;
+    // Whether settleMarch() has made its choices for this SDF (no trial is open or to come).
+    bool marchSettled() const;
 
     // The composed fragment source of the current variant (for tests and the log).
     const std::string& fragmentSource() const;

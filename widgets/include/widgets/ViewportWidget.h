@@ -80,6 +80,10 @@ public:
     // Whether the picture marches through the fused loop (see SdfRenderer::settleMarch: a long SDF
     // starts so and may trade it for the separate march a while after a full frame at rest).
     bool fusedMarch() const;
+    // Whether the picture draws the cone pass first (tried and kept at rest when frames got faster).
+    bool conePass() const;
+    // Whether those choices are made for the current SDF.
+    bool marchSettled() const;
 
     // Renders one full-quality frame at width x height (screenshots). Empty image without GL.
     renderer::Image renderImage(int width, int height);
