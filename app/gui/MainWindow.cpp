@@ -541,6 +541,22 @@ void MainWindow::createMenus() {
         m_viewport->setTrace(trace);
     });
     relaxation->setCheckable(true);
+    // The cone pass: tried at rest and kept when it makes frames faster (auto), or forced.
+    QMenu* cones = view->addMenu(tr("&Cone pass"));
+    auto* conesGroup = new QActionGroup(this);
+    for (auto [mode, label] :
+         {std::pair{renderer::TraceSettings::Cones::Auto, tr("&Automatic (kept when faster)")},
+          std::pair{renderer::TraceSettings::Cones::On, tr("&On")}, std::pair{renderer::TraceSettings::Cones::Off, tr("O&ff")}}) {
+        QAction* action = cones->addAction(label, this, [this, mode] {
+            renderer::TraceSettings trace = m_viewport->trace();
+            trace.cones = mode;
+            m_viewport->setTrace(trace);
+        });
+        action->setCheckable(true);
+        action->setChecked(mode == m_viewport->trace().cones);
+        action->setObjectName(QString("cones_") + renderer::conesName(mode));
+        conesGroup->addAction(action);
+    }
     m_overlayAction = view->addAction(tr("Show name, author and &license"), this, [this] { updateOverlay(); });
     m_overlayAction->setCheckable(true);
     m_overlayAction->setObjectName("overlay");

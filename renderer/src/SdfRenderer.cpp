@@ -80,7 +80,8 @@ bool conesApply(const ShadingSettings& shading, const TraceSettings& trace) {
 struct SdfRenderer::Impl {
     std::optional<shaders::PreparedSdf> sdf; // the last SDF that compiled
     // settleMarch(): where the choice between the fused and the separate march stands.
-    enum class Settle { Open, TryingSeparate, TryingCones, Done };
+    // ConesOpen: the march is chosen; the cone pass is still to try (Cones::Auto chosen again).
+    enum class Settle { Open, TryingSeparate, ConesOpen, TryingCones, Done };
     Settle settle = Settle::Open;
     bool separateChosen = false;          // a long SDF marches separately (its frames were faster so)
     bool conesChosen = false;             // TraceSettings::Cones::Auto: the cone pass made full frames faster
@@ -343,6 +344,9 @@ bool SdfRenderer::settleMarch(double fullFrameMilliseconds) {
             rebuild();
         }
         return tryCones();
+    case Impl::Settle::ConesOpen:
+        impl.bestMilliseconds = fullFrameMilliseconds;
+        return tryCones();
     case Impl::Settle::TryingSeparate: {
         const bool keep = fullFrameMilliseconds <= impl.bestMilliseconds;
         log::info("render", std::string(keep ? "keeping" : "dropping") +
@@ -476,12 +480,12 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
         const int coneTile = std::max(m_trace.coneTile, 1);
         const int coneWidth = (width + coneTile - 1) / coneTile, coneHeight = (height + coneTile - 1) / coneTile;
         if (cones) {
+            glActiveTexture(GL_TEXTURE2); // units 0 and 1 hold the matcap and the background
             if (!m_impl->coneStarts || m_impl->coneWidth < coneWidth || m_impl->coneHeight < coneHeight) {
                 m_impl->coneWidth = std::max(m_impl->coneWidth, coneWidth);
                 m_impl->coneHeight = std::max(m_impl->coneHeight, coneHeight);
                 m_impl->coneStarts = Impl::makeTexture(m_impl->coneWidth, m_impl->coneHeight, GL_NEAREST);
             }
-            glActiveTexture(GL_TEXTURE2);
             glBindTexture(GL_TEXTURE_2D, m_impl->coneStarts.id());
             glActiveTexture(GL_TEXTURE0);
             glUniform1i(v->location("sdfwb_coneStarts"), 2);
@@ -502,9 +506,15 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
             glUniform1i(v->location("sdfwb_conePass"), 1);
             glViewport(0, 0, coneWidth, coneHeight);
             glDrawArrays(GL_TRIANGLES, 0, 3);
+            // Copied from the framebuffer just drawn, whatever the caller left bound for reading.
+            GLint target = 0, reading = 0;
+            glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+            glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &reading);
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(target));
             glActiveTexture(GL_TEXTURE2);
             glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, coneWidth, coneHeight);
             glActiveTexture(GL_TEXTURE0);
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(reading));
             glViewport(0, 0, width, height);
         }
         if (cones) glUniform1i(v->location("sdfwb_conePass"), 0);
@@ -584,13 +594,17 @@ std::vector<Diagnostic> SdfRenderer::setPlane(const CuttingPlane& plane) {
 }
 
 std::vector<Diagnostic> SdfRenderer::setTrace(const TraceSettings& trace) {
-    bool variantChanges =
-        (trace.overRelaxation > 1.0f) != (m_trace.overRelaxation > 1.0f) ||
-        (trace.stepFactor != 1.0f) != (m_trace.stepFactor != 1.0f) ||
-        m_impl->features(m_shading, trace, m_plane).cones != m_impl->features(m_shading, m_trace, m_plane).cones;
+    const bool relaxationOrFactorChanges = (trace.overRelaxation > 1.0f) != (m_trace.overRelaxation > 1.0f) ||
+                                           (trace.stepFactor != 1.0f) != (m_trace.stepFactor != 1.0f);
+    if (trace.cones != m_trace.cones && m_impl->settle == Impl::Settle::Done) {
+        // Back to Auto: the cone pass is tried again at rest; On and Off end a trial.
+        m_impl->conesChosen = false;
+        if (trace.cones == TraceSettings::Cones::Auto) m_impl->settle = Impl::Settle::ConesOpen;
+    }
     m_trace = trace;
     std::vector<Diagnostic> diagnostics;
-    if (!variantChanges || !m_impl->sdf) return diagnostics;
+    const bool conesChange = m_impl->current && m_impl->features(m_shading, m_trace, m_plane).cones != m_impl->current->cones;
+    if (!(relaxationOrFactorChanges || conesChange) || !m_impl->sdf) return diagnostics;
     if (Variant* variant = m_impl->build(*m_impl->sdf, m_impl->features(m_shading, m_trace, m_plane), diagnostics))
         m_impl->current = variant;
     return diagnostics;

@@ -93,6 +93,8 @@ TEST(CommandLine, NonFiniteAndOutOfRangeNumbersAreRefusedWhileParsing) {
     } cases[] = {
         {"render --sdf sphere --time nan --output " + out.string(), "--time"},
         {"render --sdf sphere --time inf --output " + out.string(), "--time"},
+        {"render --sdf sphere --cones sometimes --output " + out.string(), "--cones"},
+        {"render --sdf sphere --cone-tile 0 --output " + out.string(), "--cone-tile"},
         {"animate --sdf sphere --fps 0 --output " + outputPath("numbers.mp4").string(), "--fps"},
         {"animate --sdf sphere --seconds 0 --output " + outputPath("numbers.mp4").string(), "--seconds"},
         {"audit --sdf sphere --samples 1", "--samples"},

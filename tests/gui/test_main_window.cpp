@@ -372,6 +372,15 @@ TEST(Viewport, AtRestADearSdfKeepsTheConePass) {
     const QImage with = fullResolutionFrame(window);
     EXPECT_LT(changedPixels(without, with), long(without.width()) * without.height() / 1000);
     EXPECT_GT(foreground(with, kBackground), long(with.width()) * with.height() / 20);
+    // View > Cone pass forces it either way.
+    auto* off = window.findChild<QAction*>("cones_off");
+    auto* on = window.findChild<QAction*>("cones_on");
+    ASSERT_TRUE(off && on);
+    off->trigger();
+    EXPECT_FALSE(viewport->conePass());
+    EXPECT_LT(changedPixels(without, fullResolutionFrame(window)), long(without.width()) * without.height() / 1000);
+    on->trigger();
+    EXPECT_TRUE(viewport->conePass());
 }
 
 TEST(Viewport, CameraPanelMovesTheCameraAndTheSessionKeepsIt) {

@@ -404,6 +404,16 @@ TEST_F(RendererTest, ConePassIsKeptWhenItMakesFramesFaster) {
     trace.cones = renderer::TraceSettings::Cones::On;
     (void)sdfRenderer.setTrace(trace);
     EXPECT_TRUE(sdfRenderer.conePass()) << "on: no trial needed";
+    trace.cones = renderer::TraceSettings::Cones::Auto;
+    (void)sdfRenderer.setTrace(trace);
+    EXPECT_FALSE(sdfRenderer.conePass()) << "back to auto: without, until tried";
+    EXPECT_FALSE(sdfRenderer.marchSettled());
+    EXPECT_TRUE(sdfRenderer.settleMarch(40.0));
+    EXPECT_TRUE(sdfRenderer.conePass());
+    EXPECT_FALSE(sdfRenderer.settleMarch(20.0));
+    EXPECT_TRUE(sdfRenderer.conePass()) << "tried again and kept";
+    trace.cones = renderer::TraceSettings::Cones::On;
+    (void)sdfRenderer.setTrace(trace);
     renderer::ShadingSettings shading;
     shading.mode = renderer::ShadingMode::Steps;
     (void)sdfRenderer.setShading(shading);
@@ -413,4 +423,30 @@ TEST_F(RendererTest, ConePassIsKeptWhenItMakesFramesFaster) {
     (void)sdfRenderer.setShading(shading);
     EXPECT_FALSE(sdfRenderer.conePass()) << "the march debugger records each pixel's own march";
     sdfRenderer.releaseGl();
+}
+
+// The cone pass's texture grows with the frame; making it must leave the matcap (texture unit 0)
+// bound: a matcap frame drawn right after a smaller one matches the frame without the cone pass.
+TEST_F(RendererTest, ConePassLeavesTheMatcapInPlace) {
+    const shaders::PreparedSdf sdf =
+        prepare("float sdf(vec3 p) { vec2 q = vec2(length(p.xz) - 0.6, p.y); return length(q) - 0.25; }\n");
+    renderer::OffscreenRenderer offscreen;
+    renderer::Image images[2];
+    for (int cones = 0; cones < 2; ++cones) {
+        renderer::SdfRenderer sdfRenderer;
+        renderer::ShadingSettings shading;
+        shading.mode = renderer::ShadingMode::Matcap;
+        (void)sdfRenderer.setShading(shading);
+        renderer::TraceSettings trace;
+        trace.cones = cones ? renderer::TraceSettings::Cones::On : renderer::TraceSettings::Cones::Off;
+        (void)sdfRenderer.setTrace(trace);
+        ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(sdf)));
+        (void)offscreen.render(sdfRenderer, 60, 40, renderer::Camera{}, 0.0f);
+        images[cones] = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
+        sdfRenderer.releaseGl();
+    }
+    long differing = 0;
+    for (std::size_t i = 0; i < images[0].rgba.size(); ++i) differing += std::abs(images[0].rgba[i] - images[1].rgba[i]) > 2;
+    EXPECT_LE(differing, long(images[0].rgba.size() / 200));
+    EXPECT_GT(foreground(images[1], renderer::ShadingSettings{}.background), 200 * 120 / 10);
 }
