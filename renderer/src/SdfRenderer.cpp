@@ -460,8 +460,8 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
             glUniform1i(location, 0);
         }
         if (GLint location = v->location("sdfwb_backgroundImage"); location >= 0) {
+            glActiveTexture(GL_TEXTURE1); // loading it binds on the active unit: not the matcap's
             m_impl->ensureBackground(m_shading.backgroundImage, m_shading.background);
-            glActiveTexture(GL_TEXTURE1);
             glBindTexture(GL_TEXTURE_2D, m_impl->background.id());
             glUniform1i(location, 1);
             glActiveTexture(GL_TEXTURE0);

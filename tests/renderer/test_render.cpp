@@ -450,3 +450,25 @@ TEST_F(RendererTest, ConePassLeavesTheMatcapInPlace) {
     EXPECT_LE(differing, long(images[0].rgba.size() / 200));
     EXPECT_GT(foreground(images[1], renderer::ShadingSettings{}.background), 200 * 120 / 10);
 }
+
+// Loading a background image binds it on the active texture unit: it must not be the matcap's.
+// The first frame with both (a CLI render is only that frame) shows the shape in the matcap's
+// colours, not black.
+TEST_F(RendererTest, MatcapShowsOnTheFrameThatLoadsABackgroundImage) {
+    renderer::SdfRenderer sdfRenderer;
+    renderer::ShadingSettings shading;
+    shading.mode = renderer::ShadingMode::Matcap;
+    shading.backgroundImage = (fs::path(SDFWB_SOURCE_DIR) / "resources" / "matcaps" / "jade.png").string();
+    (void)sdfRenderer.setShading(shading);
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n"))));
+    renderer::OffscreenRenderer offscreen;
+    const renderer::Image image = offscreen.render(sdfRenderer, 120, 80, renderer::Camera{}, 0.0f);
+    long black = 0;
+    for (int y = 30; y < 50; ++y)
+        for (int x = 50; x < 70; ++x) {
+            const std::uint8_t* p = image.pixel(x, y);
+            black += p[0] < 12 && p[1] < 12 && p[2] < 12;
+        }
+    EXPECT_EQ(black, 0) << "the sphere's middle is black: the matcap was unbound";
+    sdfRenderer.releaseGl();
+}
