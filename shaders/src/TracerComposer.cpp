@@ -50,6 +50,7 @@ Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatu
     if (features.overRelaxation) defines["SDFWB_OVERRELAX"] = "1";
     if (features.stepFactor) defines["SDFWB_STEP_FACTOR"] = "1";
     if (features.fusedMarch) defines["SDFWB_FUSED_MARCH"] = "1";
+    if (features.unrolledTaps && !features.fusedMarch) defines["SDFWB_UNROLLED_TAPS"] = "1";
     if (features.cones && !features.probe && features.shading != ShadingMode::Steps) defines["SDFWB_CONES"] = "1";
     if (features.cuttingPlane) {
         defines["SDFWB_PLANE"] = "1";

@@ -472,3 +472,42 @@ TEST_F(RendererTest, MatcapShowsOnTheFrameThatLoadsABackgroundImage) {
     EXPECT_EQ(black, 0) << "the sphere's middle is black: the matcap was unbound";
     sdfRenderer.releaseGl();
 }
+
+// The tiniest SDFs (under 400 characters of code, no loop) unroll the normal's taps; an SDF with
+// a loop (the driver may unroll it: a short text, a large program) and a longer one keep the loop.
+// Unrolled or not, the picture is the same.
+TEST_F(RendererTest, TinySdfsWithoutLoopsUnrollTheNormalTaps) {
+    const std::string tiny = "float sdf(vec3 p) { vec2 q = vec2(length(p.xz) - 0.6, p.y); return length(q) - 0.25; }\n";
+    const std::string looped =
+        "float sdf(vec3 p) { float d = 1e9;\n"
+        "    for (int i = 0; i < 3; ++i) d = min(d, length(p - vec3(0.3 * float(i - 1), 0.0, 0.0)) - 0.2);\n"
+        "    return d; }\n";
+    std::string longer = "float sdf(vec3 p) {\n    float d = length(p) - 0.6;\n";
+    for (int i = 0; i < 12; ++i)
+        longer += "    d = max(d, -(length(p - vec3(0.0, 0.0, 0.6)) - 0.0" + std::to_string(i + 1) + "));\n";
+    longer += "    return d; }\n";
+    renderer::OffscreenRenderer offscreen;
+    auto unrolled = [](renderer::SdfRenderer& r) {
+        return r.fragmentSource().find("#define SDFWB_UNROLLED_TAPS") != std::string::npos;
+    };
+    renderer::SdfRenderer sdfRenderer;
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare(tiny))));
+    EXPECT_TRUE(unrolled(sdfRenderer));
+    const renderer::Image withUnrolled = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare(looped))));
+    EXPECT_FALSE(unrolled(sdfRenderer));
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare(longer))));
+    EXPECT_FALSE(unrolled(sdfRenderer));
+    // The same torus with enough comment-free padding to pass the limit draws the same picture.
+    std::string padded = "float pad(vec3 p) { return p.x";
+    for (int i = 0; i < 60; ++i) padded += " + 0.0 * p.y";
+    padded += "; }\n" + tiny;
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare(padded))));
+    EXPECT_FALSE(unrolled(sdfRenderer));
+    const renderer::Image withLoop = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
+    long differing = 0;
+    for (std::size_t i = 0; i < withLoop.rgba.size(); ++i) differing += std::abs(withLoop.rgba[i] - withUnrolled.rgba[i]) > 2;
+    EXPECT_LE(differing, long(withLoop.rgba.size() / 1000));
+    EXPECT_GT(foreground(withUnrolled, renderer::ShadingSettings{}.background), 200 * 120 / 10);
+    sdfRenderer.releaseGl();
+}

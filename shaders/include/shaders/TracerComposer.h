@@ -33,6 +33,9 @@ struct TracerFeatures {
     // March and normal in one loop around one call of the SDF (sdfwb_traceWithNormal): a third of
     // the driver's code generation and faster frames for heavy SDFs; slower for the cheapest.
     bool fusedMarch = false;
+    // The normal's taps as a loop with a constant count (unrolled by the driver: one copy of the
+    // SDF per tap): faster frames for the tiniest SDFs, whose copies cost code generation little.
+    bool unrolledTaps = false;
     // A cone pass per tile of pixels first finds where their marches may start (trace_core.glsl,
     // SDFWB_CONES): fewer steps per pixel for a texture fetch per pixel and a second draw. Not
     // with the march debugger or the step heat map, which show a pixel's own march.
