@@ -314,7 +314,10 @@ std::vector<Diagnostic> SdfRenderer::setSdf(const shaders::PreparedSdf& sdf) {
     if (shaders::hasErrors(diagnostics)) return diagnostics;
     const bool separateBefore = m_impl->separateChosen, conesBefore = m_impl->conesChosen;
     m_impl->separateChosen = false; // a new SDF starts with the quickest code generation
-    m_impl->conesChosen = false;
+    // An edit of the same file keeps the cone pass its last version kept (its code generation
+    // costs next to nothing more, and a dear SDF's frames stay fast while it is edited).
+    const bool sameFile = m_impl->sdf && m_impl->sdf->source.map.fileName(0) == sdf.source.map.fileName(0);
+    m_impl->conesChosen = conesBefore && sameFile;
     Variant* variant = m_impl->build(sdf, m_impl->features(m_shading, m_trace, m_plane), diagnostics);
     if (!variant) {
         m_impl->separateChosen = separateBefore; // the last good SDF keeps its program

@@ -383,6 +383,14 @@ TEST(Viewport, AtRestADearSdfKeepsTheConePass) {
     expectSamePicture(without, fullResolutionFrame(window), 20);
     on->trigger();
     EXPECT_TRUE(viewport->conePass());
+    // Automatic again: an edit of the same file keeps the pass from its first frame on.
+    window.findChild<QAction*>("cones_auto")->trigger();
+    ASSERT_TRUE(waitFor([&] { return viewport->marchSettled() && viewport->conePass(); }, 30000));
+    bool applied = false;
+    QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
+    window.editor()->setText(window.editor()->text() + "\n// edited\n"); // as if typed
+    ASSERT_TRUE(waitFor([&] { return applied; }));
+    EXPECT_TRUE(viewport->conePass()) << "the edit dropped the cone pass its file had kept";
 }
 
 TEST(Viewport, CameraPanelMovesTheCameraAndTheSessionKeepsIt) {

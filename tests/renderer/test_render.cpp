@@ -386,8 +386,14 @@ TEST_F(RendererTest, ConePassIsKeptWhenItMakesFramesFaster) {
     EXPECT_LE(differing, long(with.rgba.size() / 200));
     EXPECT_GT(foreground(with, renderer::ShadingSettings{}.background), 200 * 120 / 10);
 
-    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(sdf)));
-    EXPECT_FALSE(sdfRenderer.conePass());
+    // An edit of the same file keeps it (no trial); another file starts without.
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.5; }\n"))));
+    EXPECT_TRUE(sdfRenderer.conePass()) << "an edit of the same file keeps the cone pass";
+    EXPECT_FALSE(sdfRenderer.settleMarch(40.0));
+    EXPECT_TRUE(sdfRenderer.conePass());
+    ASSERT_FALSE(
+        shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n", "other.glsl"))));
+    EXPECT_FALSE(sdfRenderer.conePass()) << "another file starts without";
     EXPECT_TRUE(sdfRenderer.settleMarch(40.0));
     const std::uint64_t built = sdfRenderer.programsBuilt();
     EXPECT_TRUE(sdfRenderer.settleMarch(45.0)) << "slower: dropped, and the caller draws again";
@@ -399,6 +405,7 @@ TEST_F(RendererTest, ConePassIsKeptWhenItMakesFramesFaster) {
     trace.cones = renderer::TraceSettings::Cones::Off;
     (void)sdfRenderer.setTrace(trace);
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(sdf)));
+    EXPECT_FALSE(sdfRenderer.conePass());
     EXPECT_FALSE(sdfRenderer.settleMarch(40.0));
     EXPECT_FALSE(sdfRenderer.conePass());
     trace.cones = renderer::TraceSettings::Cones::On;

@@ -67,7 +67,7 @@ public:
     // same way: it pays when steps are dear. Call with the time of a full-resolution frame at rest
     // (never a program's first draw, which includes code generation). Returns true when the
     // program changed and the caller should draw again; false once the choice is made. setSdf()
-    // starts over.
+    // starts over, except that an edit of the same file keeps the cone pass if it was kept.
     static constexpr double kTrySeparateMarchBelowMilliseconds = 100.0;
     bool settleMarch(double fullFrameMilliseconds);
     // Whether the current program marches through the fused loop.
