@@ -139,9 +139,10 @@ struct sdfwb_March {
 };
 
 // Clips the ray to the box and the near and far planes; false when nothing of it is left.
-// In the cone pass the box grows by the cone's widest radius in it (so the cone enters the grown
-// box before any of its rays enter the box, and has left it once they all have) and a "hit" is a
-// value below twice the cone's radius.
+// In the cone pass a "hit" is a value below twice the cone's radius, and the box grows by twice
+// the cone's widest radius in it: the cone enters the grown box before any of its rays enter the
+// box, and once it has left it all of them have, even in the last step, which its sphere covers
+// only to within one radius of where it lands.
 bool sdfwb_startMarch(vec3 origin, vec3 direction, out sdfwb_March march) {
     float box = 1.0 + sdfwb_boxMargin;
     float tFrom = sdfwb_nearPlane;
@@ -154,7 +155,7 @@ bool sdfwb_startMarch(vec3 origin, vec3 direction, out sdfwb_March march) {
 #ifdef SDFWB_CONES
     if (sdfwb_conePass) {
         march.footprint = 2.0 * sdfwb_coneSlope();
-        box += sdfwb_coneSlope() * sdfwb_coneRange;
+        box += 2.0 * sdfwb_coneSlope() * sdfwb_coneRange;
         march.omega = 1.0;
     } else {
         tFrom = max(tFrom, sdfwb_coneStart());
