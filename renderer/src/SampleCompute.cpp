@@ -73,15 +73,18 @@ struct SampleCompute::Impl {
     GLint location(const char* name) const { return glGetUniformLocation(program.id(), name); }
     Expected<void> reserve(BufferSet& set, std::uint32_t count, bool mapped, bool interleaved = false);
     Expected<std::uint32_t> dispatch(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, BufferSet& set,
-                                     bool positions, bool gradients, bool interleaved = false);
+                                     bool positions, bool gradients, bool interleaved = false,
+                                     std::array<std::uint32_t, 3> shift = {});
 };
 
 Expected<void> SampleCompute::Impl::reserve(BufferSet& set, std::uint32_t count, bool mapped, bool interleaved) {
     if (count <= set.capacity && interleaved == set.interleaved) return {};
     set.reset();
     while (glGetError() != GL_NO_ERROR) {}
-    const GLsizeiptr sizes[3] = {GLsizeiptr(count) * (interleaved ? 28 : 12), interleaved ? 4 : GLsizeiptr(count) * 4,
-                                 interleaved ? 4 : GLsizeiptr(count) * 12};
+    // Mapped arrays have room for runMapped()'s shift before their rows.
+    const GLsizeiptr room = mapped && !interleaved ? GLsizeiptr(kMaxShift) * 4 : 0;
+    const GLsizeiptr sizes[3] = {GLsizeiptr(count) * (interleaved ? 28 : 12) + room,
+                                 interleaved ? 4 : GLsizeiptr(count) * 4 + room, interleaved ? 4 : GLsizeiptr(count) * 12 + room};
     const GLbitfield access = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
     for (int i = 0; i < 3; ++i) {
         GLuint id = 0;
@@ -155,7 +158,8 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
 }
 
 Expected<std::uint32_t> SampleCompute::Impl::dispatch(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count,
-                                                      BufferSet& set, bool positions, bool gradients, bool interleaved) {
+                                                      BufferSet& set, bool positions, bool gradients, bool interleaved,
+                                                      std::array<std::uint32_t, 3> shift) {
     glUseProgram(program.id());
     glUniform1ui(location("sdfwb_sampleCount"), uniforms.sampleCount);
     glUniform2ui(location("sdfwb_seed"), GLuint(uniforms.seed & 0xffffffffu), GLuint(uniforms.seed >> 32));
@@ -173,6 +177,7 @@ Expected<std::uint32_t> SampleCompute::Impl::dispatch(const SampleUniforms& unif
     if (GLint at = location("sdfwb_writePosition"); at >= 0) glUniform1i(at, positions ? 1 : 0);
     if (GLint at = location("sdfwb_writeGradient"); at >= 0) glUniform1i(at, gradients ? 1 : 0);
     if (GLint at = location("sdfwb_interleaved"); at >= 0) glUniform1i(at, interleaved ? 1 : 0);
+    if (GLint at = location("sdfwb_arrayShift"); at >= 0) glUniform3ui(at, shift[0], shift[1], shift[2]);
     glUniform1ui(location("sdfwb_chunkFirst"), first);
     glUniform1ui(location("sdfwb_chunkCount"), count);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingPositions, set.buffers[0].id());
@@ -241,22 +246,25 @@ Expected<std::uint32_t> SampleCompute::run(const SampleUniforms& uniforms, std::
 }
 
 Expected<MappedRows> SampleCompute::runMapped(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, int slot,
-                                              RowLayout layout) {
+                                              RowLayout layout, std::array<std::uint32_t, 3> shift) {
     if (!m_impl->program) return makeError("sampling: no compiled sampler");
     if (count > kMaxChunk)
         return makeError("sampling: chunk of " + std::to_string(count) + " exceeds " + std::to_string(kMaxChunk));
     BufferSet& set = m_impl->slots[std::size_t(slot) % kSlots];
     while (glGetError() != GL_NO_ERROR) {}
     const bool interleaved = layout == RowLayout::Interleaved;
+    if (interleaved) shift = {};
+    for (std::uint32_t floats : shift)
+        if (floats >= kMaxShift) return makeError("sampling: array shift of " + std::to_string(floats) + " floats");
     if (auto ok = m_impl->reserve(set, std::max(count, 1u), true, interleaved); !ok) return ok.error();
-    auto bad = m_impl->dispatch(uniforms, first, count, set, true, true, interleaved);
+    auto bad = m_impl->dispatch(uniforms, first, count, set, true, true, interleaved, shift);
     if (!bad) return bad.error();
     // The count's read-back waited for the dispatch; coherent mappings see its writes after a fence.
     GLsync fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
     glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, GLuint64(60) * 1000000000u);
     glDeleteSync(fence);
     if (interleaved) return MappedRows{nullptr, nullptr, nullptr, *bad, set.mapped[0]};
-    return MappedRows{set.mapped[0], set.mapped[1], set.mapped[2], *bad};
+    return MappedRows{set.mapped[0] + shift[0], set.mapped[1] + shift[1], set.mapped[2] + shift[2], *bad};
 }
 
 void SampleCompute::releaseGl() {

@@ -2,6 +2,8 @@
 
 #include "Formats.h"
 
+#include <algorithm>
+#include <array>
 #include <bit>
 
 namespace sdfwb::sampling::detail {
@@ -12,16 +14,26 @@ static_assert(std::endian::native == std::endian::little, "sdfwb writes little-e
 class BinWriter final : public SampleWriter {
 public:
     BinWriter(OutputFile file, std::uint64_t rows, const SampleMetadata& metadata)
-        : m_file(std::move(file)), m_rows(rows), m_metadata(metadata) {
+        : m_file(std::move(file)), m_rows(rows), m_metadata(metadata), m_direct(rows >= kDirectFromRows) {
         m_file.reserve(4 + 28 * rows);
+    }
+
+    // The paper's layout cannot be aligned (a 4-byte header, arrays of any length), so the rows are:
+    // each array of a chunk lands in memory at its file offset modulo a disk block, and its whole
+    // blocks go to the disk directly from there (OutputFile::writeDirectAt); the partial blocks at
+    // its two ends go through the page cache.
+    std::array<std::uint32_t, 3> arrayShift(std::uint64_t firstRow) const override {
+        if (!m_direct) return {};
+        const std::uint64_t block = OutputFile::kDirectAlignment;
+        return {std::uint32_t(positionsAt(firstRow) % block / 4), std::uint32_t(distancesAt(firstRow) % block / 4),
+                std::uint32_t(gradientsAt(firstRow) % block / 4)};
     }
 
     Expected<void> append(const float* positions, const float* distances, const float* gradients, std::size_t n) override {
         if (m_written + n > m_rows) return makeError(m_file.target().string() + ": more rows than announced");
-        const std::uint64_t N = m_rows;
-        if (auto ok = m_file.writeAt(4 + 12 * m_written, positions, 12 * n); !ok) return ok;
-        if (auto ok = m_file.writeAt(4 + 12 * N + 4 * m_written, distances, 4 * n); !ok) return ok;
-        if (auto ok = m_file.writeAt(4 + 16 * N + 12 * m_written, gradients, 12 * n); !ok) return ok;
+        if (auto ok = write(positionsAt(m_written), positions, 12 * n); !ok) return ok;
+        if (auto ok = write(distancesAt(m_written), distances, 4 * n); !ok) return ok;
+        if (auto ok = write(gradientsAt(m_written), gradients, 12 * n); !ok) return ok;
         m_written += n;
         return {};
     }
@@ -43,9 +55,29 @@ public:
     }
 
 private:
+    std::uint64_t positionsAt(std::uint64_t row) const { return 4 + 12 * row; }
+    std::uint64_t distancesAt(std::uint64_t row) const { return 4 + 12 * m_rows + 4 * row; }
+    std::uint64_t gradientsAt(std::uint64_t row) const { return 4 + 16 * m_rows + 12 * row; }
+
+    // Whole disk blocks directly, the partial ones at either end through the page cache.
+    Expected<void> write(std::uint64_t offset, const float* data, std::size_t size) {
+        if (!m_direct) return m_file.writeAt(offset, data, size);
+        const std::uint64_t block = OutputFile::kDirectAlignment;
+        const auto* bytes = reinterpret_cast<const char*>(data);
+        const std::size_t head = std::min<std::size_t>(size, std::size_t((block - offset % block) % block));
+        const std::size_t body = (size - head) / block * block;
+        if (head > 0)
+            if (auto ok = m_file.writeAt(offset, bytes, head); !ok) return ok;
+        if (body > 0)
+            if (auto ok = m_file.writeDirectAt(offset + head, bytes + head, body); !ok) return ok;
+        if (head + body < size) return m_file.writeAt(offset + head + body, bytes + head + body, size - head - body);
+        return {};
+    }
+
     OutputFile m_file;
     std::uint64_t m_rows;
     SampleMetadata m_metadata;
+    bool m_direct; // large enough that writing past the page cache pays (kDirectFromRows)
     std::uint64_t m_written = 0;
 };
 

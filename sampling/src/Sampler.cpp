@@ -209,8 +209,8 @@ Expected<SamplingReport> sampleToFile(renderer::SampleCompute& compute, const Sa
     if (!writer) return writer.error();
     PipelinedWriter pipeline(**writer);
     const renderer::RowLayout layout = (*writer)->takesRows() ? renderer::RowLayout::Interleaved : renderer::RowLayout::Separate;
-    auto dispatch = [&](const renderer::SampleUniforms& uniforms, std::uint32_t first, std::uint64_t, std::uint32_t count) {
-        return compute.runMapped(uniforms, first, count, pipeline.nextSlot(), layout);
+    auto dispatch = [&](const renderer::SampleUniforms& uniforms, std::uint32_t first, std::uint64_t done, std::uint32_t count) {
+        return compute.runMapped(uniforms, first, count, pipeline.nextSlot(), layout, (*writer)->arrayShift(done));
     };
     auto consume = [&](const renderer::MappedRows& rows, std::size_t n) { return pipeline.submit(rows, n); };
     auto report = run(job, dispatch, consume, progress);

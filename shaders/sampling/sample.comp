@@ -20,6 +20,9 @@ uniform bool sdfwb_writePosition = true;
 // Rows of 7 floats (x y z distance gx gy gz) in the positions buffer, as .ply stores them, so the
 // host writes the chunk to the file without rearranging it.
 uniform bool sdfwb_interleaved = false;
+// Floats before row 0 in each of the three arrays (separate layout): a file writer asks for them so
+// that each array lies in memory at the same offset modulo a disk block as in its file.
+uniform uvec3 sdfwb_arrayShift = uvec3(0u);
 
 void main() {
     uint local = gl_GlobalInvocationID.x;
@@ -55,14 +58,16 @@ void main() {
         return;
     }
     if (sdfwb_writePosition) {
-        sdfwb_positions[3u * local + 0u] = position.x;
-        sdfwb_positions[3u * local + 1u] = position.y;
-        sdfwb_positions[3u * local + 2u] = position.z;
+        uint at = sdfwb_arrayShift.x + 3u * local;
+        sdfwb_positions[at + 0u] = position.x;
+        sdfwb_positions[at + 1u] = position.y;
+        sdfwb_positions[at + 2u] = position.z;
     }
-    sdfwb_distances[local] = distance;
+    sdfwb_distances[sdfwb_arrayShift.y + local] = distance;
     if (sdfwb_writeGradient) {
-        sdfwb_gradients[3u * local + 0u] = gradient.x;
-        sdfwb_gradients[3u * local + 1u] = gradient.y;
-        sdfwb_gradients[3u * local + 2u] = gradient.z;
+        uint at = sdfwb_arrayShift.z + 3u * local;
+        sdfwb_gradients[at + 0u] = gradient.x;
+        sdfwb_gradients[at + 1u] = gradient.y;
+        sdfwb_gradients[at + 2u] = gradient.z;
     }
 }

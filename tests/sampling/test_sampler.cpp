@@ -269,8 +269,9 @@ TEST_F(SamplerTest, ShardsMergeIntoTheSingleRunsFileByteForByte) {
             auto report = sampling::mergeSampleFiles(merged, format, parts);
             ASSERT_TRUE(report.hasValue()) << report.error().message;
             EXPECT_EQ(fileBytes(merged), fileBytes(single)) << ext << ", " << rows << " rows";
-            if (format == sampling::SampleFormat::Ply && rows > 65536)
+            if (format == sampling::SampleFormat::Ply && rows > 65536) {
                 EXPECT_EQ(fileBytes(single).find("end_header\n") + 11, 4096u) << "rows start at 4096";
+            }
             for (const fs::path& p : parts) fs::remove(p);
             fs::remove(single);
             fs::remove(merged);

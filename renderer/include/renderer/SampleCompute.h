@@ -9,6 +9,7 @@
 #include <shaders/SdfSource.h>
 #include <shaders/ShaderComposer.h>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -69,9 +70,13 @@ public:
     // kSlots - 1) stays mapped, so nothing is copied on the host. The pointers are valid until the
     // next runMapped() into the same slot, releaseGl() or destruction; several slots let chunks be
     // written out while the next is computed.
+    // In the separate layout, `shift` puts each array that many floats (below kMaxShift) after the
+    // start of its page-aligned buffer: a file writer that asks so finds each array at the same
+    // offset modulo a disk block as in its file, and can hand whole blocks to the disk directly.
     static constexpr int kSlots = 4;
+    static constexpr std::uint32_t kMaxShift = 1024;
     Expected<MappedRows> runMapped(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, int slot,
-                                   RowLayout layout = RowLayout::Separate);
+                                   RowLayout layout = RowLayout::Separate, std::array<std::uint32_t, 3> shift = {});
 
     // The composed compute source (for tests and the log).
     const std::string& source() const;

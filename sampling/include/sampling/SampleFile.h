@@ -9,6 +9,7 @@
 #include <core/Expected.h>
 #include <sampling/SampleSet.h>
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -72,6 +73,14 @@ public:
     // so (.ply) says so with takesRows() and writes them without rearranging; the others split them.
     virtual bool takesRows() const { return false; }
     virtual Expected<void> appendRows(const float* rows, std::size_t n);
+
+    // Floats to leave before each of the three arrays of the chunk that starts at `firstRow` (below
+    // renderer::SampleCompute::kMaxShift), so that each lies in memory at the offset modulo a disk
+    // block it has in the file and whole blocks go to the disk without a copy (.bin). None by default.
+    virtual std::array<std::uint32_t, 3> arrayShift(std::uint64_t firstRow) const {
+        (void)firstRow;
+        return {};
+    }
 
     // After exactly `rows` rows: finishes the file, flushes it to disk and renames it into place.
     virtual Expected<void> commit() = 0;
