@@ -161,6 +161,9 @@ double referenceMilliseconds(const shaders::PreparedSdf& sdf, const std::string&
     return median3(a, b, c);
 }
 
+// Size of the statistics frames (steps per pixel, hits).
+constexpr int kStatsWidth = 320, kStatsHeight = 180;
+
 double percentile(std::vector<double> values, double p) {
     if (values.empty()) return 0.0;
     std::sort(values.begin(), values.end());
@@ -168,11 +171,11 @@ double percentile(std::vector<double> values, double p) {
 }
 
 // One row of the cone table: times without and with the cone pass and the hits of both
-// statistics frames compared pixel by pixel (the default camera's 45-degree field of view).
+// statistics frames (kStatsWidth x kStatsHeight, the default camera) compared pixel by pixel.
 std::string compareCones(const std::string& name, double without, double with,
                          const std::vector<renderer::OffscreenRenderer::PixelStats>& plain,
                          const std::vector<renderer::OffscreenRenderer::PixelStats>& coned) {
-    const double pixelAngle = 2.0 * std::tan(renderer::Camera{}.fovYDegrees * 3.14159265 / 360.0) / 180.0;
+    const double pixelAngle = 2.0 * std::tan(renderer::Camera{}.fovYDegrees * 3.14159265 / 360.0) / kStatsHeight;
     long changed = 0;
     double stepsPlain = 0.0, stepsConed = 0.0;
     std::vector<double> moved, residualPlain, residualConed;
@@ -214,11 +217,12 @@ void datasetReport(const std::vector<std::string>& names) {
         renderer::ShadingSettings shading;
         shading.mode = renderer::ShadingMode::Gooch;
         (void)sdfRenderer.setShading(shading);
-        if (const char* cones = std::getenv("SDFWB_CONES"); cones && renderer::parseCones(cones)) {
-            renderer::TraceSettings trace;
-            trace.cones = *renderer::parseCones(cones);
-            (void)sdfRenderer.setTrace(trace);
-        }
+        if (const char* forced = std::getenv("SDFWB_CONES"))
+            if (auto cones = renderer::parseCones(forced)) {
+                renderer::TraceSettings trace;
+                trace.cones = *cones;
+                (void)sdfRenderer.setTrace(trace);
+            }
         const shaders::PreparedSdf prepared = shaders::prepareSdfFile(entry.path, includeOptions());
         auto diagnostics = sdfRenderer.setSdf(prepared);
         if (shaders::hasErrors(diagnostics)) {
@@ -227,7 +231,8 @@ void datasetReport(const std::vector<std::string>& names) {
         }
         double full = frameMilliseconds(offscreen, sdfRenderer, 1280, 720, 1.0f);
         // What the viewport shows at rest: a long SDF's fused march is traded for the separate
-        // one when that draws its full frame faster (SdfRenderer::settleMarch).
+        // one when that draws its full frame faster, then the cone pass is tried the same way
+        // (SdfRenderer::settleMarch).
         while (sdfRenderer.settleMarch(full)) full = frameMilliseconds(offscreen, sdfRenderer, 1280, 720, 1.0f);
         const bool fused = sdfRenderer.fusedMarch(), cones = sdfRenderer.conePass();
         const double reference = referenceMilliseconds(prepared, entry.metadata.name, 1280, 720);
@@ -244,13 +249,13 @@ void datasetReport(const std::vector<std::string>& names) {
         scale = measuredScale;
         shading.statsOutput = true;
         (void)sdfRenderer.setShading(shading);
-        auto stats = offscreen.renderStats(sdfRenderer, 320, 180, renderer::Camera{}, 0.0f);
+        auto stats = offscreen.renderStats(sdfRenderer, kStatsWidth, kStatsHeight, renderer::Camera{}, 0.0f);
         if (cones) {
             // What the cone pass gained, and what it did to the hits: the same program without it.
             renderer::TraceSettings trace = sdfRenderer.trace();
             trace.cones = renderer::TraceSettings::Cones::Off;
             (void)sdfRenderer.setTrace(trace);
-            auto plain = offscreen.renderStats(sdfRenderer, 320, 180, renderer::Camera{}, 0.0f);
+            auto plain = offscreen.renderStats(sdfRenderer, kStatsWidth, kStatsHeight, renderer::Camera{}, 0.0f);
             shading.statsOutput = false;
             (void)sdfRenderer.setShading(shading);
             coneRows.push_back(compareCones(entry.metadata.name, frameMilliseconds(offscreen, sdfRenderer, 1280, 720, 1.0f), full,

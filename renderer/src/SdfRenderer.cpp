@@ -49,13 +49,6 @@ std::optional<bool> forcedFusedMarch() {
     return forced[0] == '1';
 }
 
-// The SDF's code in characters, with what it includes (a library's helpers reach the driver too
-// and cost it time), without comments and white space.
-std::ptrdiff_t codeCharacters(const shaders::PreparedSdf& prepared) {
-    const std::string code = shaders::stripComments(prepared.source.text);
-    return std::count_if(code.begin(), code.end(), [](char c) { return !std::isspace(static_cast<unsigned char>(c)); });
-}
-
 // Whether the code has a loop (for or while followed by a parenthesis): a loop with a constant
 // count is unrolled by the driver, so a short text can still be a large program.
 bool hasLoop(const std::string& code) {
@@ -69,14 +62,21 @@ bool hasLoop(const std::string& code) {
     return false;
 }
 
-// TracerFeatures::unrolledTaps: tiny SDFs without loops.
-bool unrollTaps(const shaders::PreparedSdf& prepared) {
-    return codeCharacters(prepared) < kUnrolledTapsBelowCharacters && !hasLoop(shaders::stripComments(prepared.source.text));
-}
+// How the SDF's code is compiled, from its size (with what it includes: a library's helpers reach
+// the driver too and cost it time; without comments and white space) and its loops.
+struct CodeShape {
+    bool fusedMarch = false;   // TracerFeatures::fusedMarch (before settleMarch's trade)
+    bool unrolledTaps = false; // TracerFeatures::unrolledTaps: tiny SDFs without loops
+};
 
-bool fuseMarch(const shaders::PreparedSdf& prepared) {
-    if (auto forced = forcedFusedMarch()) return *forced;
-    return codeCharacters(prepared) > kFusedMarchFromCharacters;
+CodeShape codeShape(const shaders::PreparedSdf& prepared) {
+    const std::string code = shaders::stripComments(prepared.source.text);
+    const auto characters =
+        std::count_if(code.begin(), code.end(), [](char c) { return !std::isspace(static_cast<unsigned char>(c)); });
+    CodeShape shape;
+    shape.fusedMarch = forcedFusedMarch().value_or(characters > kFusedMarchFromCharacters);
+    shape.unrolledTaps = !shape.fusedMarch && characters < kUnrolledTapsBelowCharacters && !hasLoop(code);
+    return shape;
 }
 
 } // namespace
@@ -220,8 +220,9 @@ struct SdfRenderer::Impl {
     // Builds (or finds) the program for `sdf` with `features`. Null on failure, with diagnostics.
     Variant* build(const shaders::PreparedSdf& prepared, shaders::TracerFeatures tracerFeatures,
                    std::vector<Diagnostic>& diagnostics) {
-        tracerFeatures.fusedMarch = fuseMarch(prepared) && !separateChosen;
-        tracerFeatures.unrolledTaps = !tracerFeatures.fusedMarch && unrollTaps(prepared);
+        const CodeShape shape = codeShape(prepared);
+        tracerFeatures.fusedMarch = shape.fusedMarch && !separateChosen;
+        tracerFeatures.unrolledTaps = shape.unrolledTaps;
         auto fragment = shaders::composeTracer(prepared, tracerFeatures);
         if (!fragment) {
             diagnostics.push_back({"<sdfwb>", 0, 0, shaders::Severity::Error, fragment.error().message});
@@ -547,8 +548,8 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
             glActiveTexture(GL_TEXTURE0);
             glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(reading));
             glViewport(0, 0, width, height);
+            glUniform1i(v->location("sdfwb_conePass"), 0);
         }
-        if (cones) glUniform1i(v->location("sdfwb_conePass"), 0);
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glDisable(GL_BLEND);
         glBindVertexArray(0);

@@ -2,7 +2,6 @@
 
 #include "Formats.h"
 
-#include <algorithm>
 #include <array>
 #include <bit>
 
@@ -19,9 +18,8 @@ public:
     }
 
     // The paper's layout cannot be aligned (a 4-byte header, arrays of any length), so the rows are:
-    // each array of a chunk lands in memory at its file offset modulo a disk block, and its whole
-    // blocks go to the disk directly from there (OutputFile::writeDirectAt); the partial blocks at
-    // its two ends go through the page cache.
+    // each array of a chunk lands in memory at its file offset modulo a disk block, so that its
+    // whole blocks go to the disk directly from there (OutputFile::writeDirectAt).
     std::array<std::uint32_t, 3> arrayShift(std::uint64_t firstRow) const override {
         if (!m_direct) return {};
         const std::uint64_t block = OutputFile::kDirectAlignment;
@@ -59,19 +57,8 @@ private:
     std::uint64_t distancesAt(std::uint64_t row) const { return 4 + 12 * m_rows + 4 * row; }
     std::uint64_t gradientsAt(std::uint64_t row) const { return 4 + 16 * m_rows + 12 * row; }
 
-    // Whole disk blocks directly, the partial ones at either end through the page cache.
     Expected<void> write(std::uint64_t offset, const float* data, std::size_t size) {
-        if (!m_direct) return m_file.writeAt(offset, data, size);
-        const std::uint64_t block = OutputFile::kDirectAlignment;
-        const auto* bytes = reinterpret_cast<const char*>(data);
-        const std::size_t head = std::min<std::size_t>(size, std::size_t((block - offset % block) % block));
-        const std::size_t body = (size - head) / block * block;
-        if (head > 0)
-            if (auto ok = m_file.writeAt(offset, bytes, head); !ok) return ok;
-        if (body > 0)
-            if (auto ok = m_file.writeDirectAt(offset + head, bytes + head, body); !ok) return ok;
-        if (head + body < size) return m_file.writeAt(offset + head + body, bytes + head + body, size - head - body);
-        return {};
+        return m_direct ? m_file.writeDirectAt(offset, data, size) : m_file.writeAt(offset, data, size);
     }
 
     OutputFile m_file;

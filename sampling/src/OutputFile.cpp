@@ -1,5 +1,6 @@
 #include "OutputFile.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -78,6 +79,19 @@ Expected<void> OutputFile::writeAt(std::uint64_t offset, const void* data, std::
 }
 
 Expected<void> OutputFile::writeDirectAt(std::uint64_t offset, const void* data, std::size_t size) {
+    const std::uint64_t block = kDirectAlignment;
+    const auto* bytes = static_cast<const char*>(data);
+    if (reinterpret_cast<std::uintptr_t>(bytes) % block == offset % block && !directWritable(offset, data, size)) {
+        // The whole blocks directly, the partial ones at either end through the page cache.
+        const std::size_t head = std::size_t(std::min<std::uint64_t>(size, (block - offset % block) % block));
+        const std::size_t body = (size - head) / block * block;
+        if (body == 0) return writeAt(offset, data, size);
+        if (head > 0)
+            if (auto ok = writeAt(offset, bytes, head); !ok) return ok;
+        if (auto ok = writeDirectAt(offset + head, bytes + head, body); !ok) return ok;
+        if (head + body < size) return writeAt(offset + head + body, bytes + head + body, size - head - body);
+        return {};
+    }
 #ifdef O_DIRECT
     const bool aligned = directWritable(offset, data, size);
     if (aligned && m_directFd == -2) {

@@ -22,10 +22,11 @@ public:
     // written range at writeback); a file system that cannot is left as it is.
     void reserve(std::uint64_t bytes);
     Expected<void> writeAt(std::uint64_t offset, const void* data, std::size_t size);
-    // The same, past the page cache (O_DIRECT) when offset, size and data are all aligned to
-    // kDirectAlignment: the disk reads the bytes where they are, so the CPU copies nothing (the
-    // sampler's mapped GL buffers are page-aligned). Anything else, or a file system that refuses
-    // direct I/O, goes through writeAt().
+    // The same, past the page cache (O_DIRECT) for the whole kDirectAlignment blocks of the range
+    // when the data lies in memory at its file offset modulo a block: the disk reads the bytes
+    // where they are, so the CPU copies nothing (the sampler's mapped GL buffers are page-aligned).
+    // The partial blocks at either end, data placed otherwise, or a file system that refuses
+    // direct I/O go through writeAt().
     static constexpr std::size_t kDirectAlignment = 4096;
     static bool directWritable(std::uint64_t offset, const void* data, std::uint64_t size) {
         return size > 0 && offset % kDirectAlignment == 0 && size % kDirectAlignment == 0 &&
