@@ -337,14 +337,15 @@ TEST(Viewport, MovingRendersCheaplyThenRefines) {
     EXPECT_EQ(viewport->lastFrameScale(), 1.0f) << "a full-resolution frame follows when still";
 }
 
-// A long SDF that is cheap per evaluation opens with the fused march (the quickest code generation
-// after an edit); a while after its full frame at rest the viewport trades it for the separate
-// march, which draws its frames faster, and the picture stays the same.
 // The same picture within 0.1 % of the pixels, with the shape on at least `minimumShare` of it.
 void expectSamePicture(const QImage& before, const QImage& after, long minimumShare) {
     EXPECT_LT(changedPixels(before, after), long(before.width()) * before.height() / 1000);
     EXPECT_GT(foreground(after, kBackground), long(after.width()) * after.height() / minimumShare);
 }
+
+// A long SDF that is cheap per evaluation opens with the fused march (the quickest code generation
+// after an edit); a while after its full frame at rest the viewport trades it for the separate
+// march, which draws its frames faster, and the picture stays the same.
 
 TEST(Viewport, AtRestALongCheapSdfTradesTheFusedMarchForFasterFrames) {
     app::MainWindow window;
