@@ -11,6 +11,8 @@
 #include <shaders/TracerComposer.h>
 
 #include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
 #include <filesystem>
@@ -102,6 +104,29 @@ struct Variant {
 // map, which show each pixel's own march.
 bool conesApply(const ShadingSettings& shading, const TraceSettings& trace) {
     return trace.coneTile > 0 && trace.cones != TraceSettings::Cones::Off && !shading.probe && shading.mode != ShadingMode::Steps;
+}
+
+// Whether a frame may be drawn as the box's far faces over a cleared background (trace.vert),
+// which leaves every pixel whose ray misses the box the background: not where the picture shows
+// something else there (the cutting plane, a background image, markers, the step heat map's
+// misses, the measurement outputs, the march debugger).
+bool boxProxyApplies(const ShadingSettings& shading, const TraceSettings& trace, const CuttingPlane& plane) {
+    return trace.boxProxy && !plane.enabled && shading.backgroundImage.empty() && shading.markers.empty() &&
+           shading.mode != ShadingMode::Steps && !shading.statsOutput && !shading.probe;
+}
+
+// World to clip space for trace.vert's proxy box, for a frame of the given aspect: x and y as
+// sdfwb_primaryRay spreads the rays over the frame, w the depth along the view, and z = w - wNear,
+// which clips only what lies nearer than wNear / 2, where wNear is the least depth of a point at
+// the near plane that the frame shows (at its corners). Nothing is clipped at the far side: the
+// tracer clips the rays there.
+glm::mat4 proxyClip(const Camera& camera, const CameraBasis& basis, float aspect) {
+    const float tanHalf = std::tan(glm::radians(camera.fovYDegrees) * 0.5f);
+    const float wNear = camera.nearPlane / std::sqrt(1.0f + tanHalf * tanHalf * (1.0f + aspect * aspect));
+    auto row = [&camera](glm::vec3 axis) { return glm::vec4(axis, -glm::dot(axis, camera.position)); };
+    const glm::vec4 w = row(basis.forward);
+    return glm::transpose(
+        glm::mat4(row(basis.right / (aspect * tanHalf)), row(basis.up / tanHalf), w - glm::vec4(0, 0, 0, wNear), w));
 }
 
 struct SdfRenderer::Impl {
@@ -425,6 +450,7 @@ const std::string& SdfRenderer::fragmentSource() const {
 
 FrameStats SdfRenderer::render(int width, int height, const Camera& camera, float time, bool finish) {
     auto start = std::chrono::steady_clock::now();
+    FrameStats stats;
     glViewport(0, 0, width, height);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
@@ -434,7 +460,7 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
         m_impl->current = m_impl->build(*m_impl->sdf, m_impl->features(m_shading, m_trace, m_plane), ignored);
     }
     if (!m_impl->current) {
-        // Nothing to trace: the background. (A traced frame writes every pixel: no clear.)
+        // Nothing to trace: the background.
         glClearColor(m_shading.background.r, m_shading.background.g, m_shading.background.b, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
     }
@@ -550,14 +576,33 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
             glViewport(0, 0, width, height);
             glUniform1i(v->location("sdfwb_conePass"), 0);
         }
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        stats.boxProxy = boxProxyApplies(m_shading, m_trace, m_plane);
+        if (stats.boxProxy) {
+            // Only the pixels whose ray meets the box run the tracer (the box's far faces: one
+            // fragment a pixel, wherever the camera is); the rest are the background already.
+            glClearColor(m_shading.background.r, m_shading.background.g, m_shading.background.b, 1.0f);
+            glClear(GL_COLOR_BUFFER_BIT);
+            const glm::mat4 clip = proxyClip(camera, basis, float(width) / float(std::max(height, 1)));
+            glUniform1i(v->location("sdfwb_proxyBox"), 1);
+            glUniformMatrix4fv(v->location("sdfwb_proxyClip"), 1, GL_FALSE, &clip[0][0]);
+            // A little over the traced box, so that no pixel on its outline is lost to rounding.
+            glUniform1f(v->location("sdfwb_proxyHalf"), (1.0f + m_trace.boxMargin) * 1.001f);
+            glEnable(GL_CULL_FACE);
+            glCullFace(GL_FRONT);
+            glFrontFace(GL_CCW);
+            glDrawArrays(GL_TRIANGLES, 0, 36);
+            glCullFace(GL_BACK);
+            glDisable(GL_CULL_FACE);
+            glUniform1i(v->location("sdfwb_proxyBox"), 0);
+        } else {
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        }
         glDisable(GL_BLEND);
         glBindVertexArray(0);
         glUseProgram(0);
     }
     if (finish) glFinish();
     logGlErrors("a frame");
-    FrameStats stats;
     stats.cpuMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return stats;
 }
@@ -581,7 +626,7 @@ FrameStats SdfRenderer::renderScaled(int width, int height, float scale, const C
     // generates code per framebuffer configuration: a separate low-resolution target made it
     // compile every SDF twice, once for the probe frame and once for the full one.)
     glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
-    render(lowWidth, lowHeight, camera, time, false);
+    const bool boxProxy = render(lowWidth, lowHeight, camera, time, false).boxProxy;
     glBindTexture(GL_TEXTURE_2D, impl.lowColor.id());
     glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, lowWidth, lowHeight);
     glBindTexture(GL_TEXTURE_2D, 0);
@@ -592,6 +637,7 @@ FrameStats SdfRenderer::renderScaled(int width, int height, float scale, const C
     glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
     if (finish) glFinish();
     FrameStats stats;
+    stats.boxProxy = boxProxy;
     stats.cpuMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return stats;
 }

@@ -78,6 +78,6 @@ Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatu
     return composeSdfShader(sdf, Stage::Fragment, pieces, defines);
 }
 
-Expected<ComposedShader> composeTracerVertex() { return composeBuiltinShader(Stage::Vertex, "tracer/fullscreen.vert", {}); }
+Expected<ComposedShader> composeTracerVertex() { return composeBuiltinShader(Stage::Vertex, "tracer/trace.vert", {}); }
 
 } // namespace sdfwb::shaders

@@ -518,3 +518,87 @@ TEST_F(RendererTest, TinySdfsWithoutLoopsUnrollTheNormalTaps) {
     EXPECT_GT(foreground(withUnrolled, renderer::ShadingSettings{}.background), 200 * 120 / 10);
     sdfRenderer.releaseGl();
 }
+
+// A frame drawn as the box's far faces over the cleared background (only pixels whose ray meets
+// the box run the tracer) is the full-frame picture, pixel for pixel: from outside the box, from
+// a camera beside it with box corners behind it (the near side clipped), from inside it, looking
+// away from it, far away, at a reduced scale and with the cone pass; with a shape that fills the
+// box to its faces, so that the box's outline is the shape's.
+TEST_F(RendererTest, BoxProxyDrawsTheFullFramePicture) {
+    const std::vector<std::string> sdfs = {
+        "float sdf(vec3 p) { vec2 q = vec2(length(p.xz) - 0.6, p.y); return length(q) - 0.25; }\n",
+        "float sdf(vec3 p) { vec3 q = abs(p) - vec3(1.0); return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0); }\n",
+        "float sdf(vec3 p) { return abs(length(p - vec3(0.2, 0.1, 0.0)) - 0.3) - 0.02; }\n"};
+    auto camera = [](glm::vec3 position, glm::vec3 target, float fov = 40.0f) {
+        renderer::Camera c;
+        c.position = position;
+        c.target = target;
+        c.fovYDegrees = fov;
+        return c;
+    };
+    const std::vector<renderer::Camera> cameras = {
+        renderer::Camera{},
+        camera({1.3f, 0.25f, 0.35f}, {0.0f, 0.1f, 0.0f}, 70.0f), // beside the box: corners behind the camera
+        camera({0.6f, 0.5f, 0.7f}, {0.0f, 0.0f, 0.0f}, 80.0f),   // inside it
+        camera({0.6f, 0.5f, 0.7f}, {2.0f, 1.5f, 2.0f}),          // inside it, looking out
+        camera({3.0f, 0.5f, 2.0f}, {6.0f, 1.0f, 4.0f}),          // outside, looking away
+        camera({40.0f, 25.0f, 30.0f}, {0.0f, 0.0f, 0.0f}, 4.0f)};
+    renderer::OffscreenRenderer offscreen;
+    for (const std::string& text : sdfs) {
+        for (std::size_t c = 0; c < cameras.size(); ++c) {
+            for (int variant = 0; variant < 3; ++variant) { // full scale, half scale, cone pass
+                renderer::Image images[2];
+                for (int proxy = 0; proxy < 2; ++proxy) {
+                    renderer::SdfRenderer sdfRenderer;
+                    renderer::ShadingSettings shading;
+                    shading.mode = renderer::ShadingMode::Gooch;
+                    (void)sdfRenderer.setShading(shading);
+                    renderer::TraceSettings trace;
+                    trace.boxProxy = proxy == 1;
+                    trace.cones = variant == 2 ? renderer::TraceSettings::Cones::On : renderer::TraceSettings::Cones::Off;
+                    (void)sdfRenderer.setTrace(trace);
+                    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare(text))));
+                    renderer::FrameStats stats;
+                    images[proxy] = offscreen.render(sdfRenderer, 160, 100, cameras[c], 0.0f, &stats, variant == 1 ? 0.5f : 1.0f);
+                    EXPECT_EQ(stats.boxProxy, proxy == 1);
+                    sdfRenderer.releaseGl();
+                }
+                long differing = 0;
+                for (std::size_t i = 0; i < images[0].rgba.size(); ++i) differing += images[0].rgba[i] != images[1].rgba[i];
+                EXPECT_EQ(differing, 0) << text << "camera " << c << ", variant " << variant;
+                // The shape shows, except looking away from the box or from inside the solid box.
+                const bool shows = c == 0 || c == 1 || c == 5 || (c == 2 && text != sdfs[1]);
+                if (shows) {
+                    EXPECT_GT(foreground(images[1], renderer::ShadingSettings{}.background), 100) << text << "camera " << c;
+                }
+            }
+        }
+    }
+}
+
+// Where the picture shows something other than the background outside the box (the cutting
+// plane, a background image, markers, the step heat map), every pixel runs the tracer.
+TEST_F(RendererTest, BoxProxyIsNotUsedWhereThePictureReachesPastTheBox) {
+    renderer::SdfRenderer sdfRenderer;
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n"))));
+    renderer::OffscreenRenderer offscreen;
+    renderer::FrameStats stats;
+    (void)offscreen.render(sdfRenderer, 60, 40, renderer::Camera{}, 0.0f, &stats);
+    EXPECT_TRUE(stats.boxProxy);
+    renderer::CuttingPlane plane;
+    plane.enabled = true;
+    (void)sdfRenderer.setPlane(plane);
+    (void)offscreen.render(sdfRenderer, 60, 40, renderer::Camera{}, 0.0f, &stats);
+    EXPECT_FALSE(stats.boxProxy) << "cutting plane";
+    (void)sdfRenderer.setPlane(renderer::CuttingPlane{});
+    for (int setting = 0; setting < 3; ++setting) {
+        renderer::ShadingSettings shading;
+        if (setting == 0) shading.backgroundImage = (fs::path(SDFWB_SOURCE_DIR) / "resources" / "matcaps" / "jade.png").string();
+        if (setting == 1) shading.markers = {glm::vec3(0.0f)};
+        if (setting == 2) shading.mode = renderer::ShadingMode::Steps;
+        (void)sdfRenderer.setShading(shading);
+        (void)offscreen.render(sdfRenderer, 60, 40, renderer::Camera{}, 0.0f, &stats);
+        EXPECT_FALSE(stats.boxProxy) << "setting " << setting;
+    }
+    sdfRenderer.releaseGl();
+}

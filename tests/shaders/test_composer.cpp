@@ -111,6 +111,10 @@ TEST(BuiltinShaders, EveryEmbeddedFileCompilesWithGlslangInItsStage) {
     ASSERT_TRUE(vertex.hasValue());
     EXPECT_FALSE(hasErrors(checkWithGlslang(*vertex)));
     covered.insert("tracer/fullscreen.vert");
+    auto tracerVertex = composeTracerVertex();
+    ASSERT_TRUE(tracerVertex.hasValue());
+    EXPECT_FALSE(hasErrors(checkWithGlslang(*tracerVertex)));
+    covered.insert("tracer/trace.vert");
     for (const char* mode : {"normals", "gooch", "matcap", "curvature", "steps"}) {
         TracerFeatures features;
         features.shading = *parseShadingMode(mode);

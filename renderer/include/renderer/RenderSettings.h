@@ -29,6 +29,10 @@ struct TraceSettings {
     enum class Cones { Auto, Off, On };
     Cones cones = Cones::Auto;
     int coneTile = 4;
+    // Trace only the pixels whose ray meets the box (its faces drawn as geometry over a cleared
+    // background) where the picture shows only the background outside it. Off: every pixel runs
+    // the tracer (for measurements against a full-frame reference).
+    bool boxProxy = true;
     bool operator==(const TraceSettings&) const = default;
 };
 

@@ -22,6 +22,7 @@ namespace sdfwb::renderer {
 
 struct FrameStats {
     double cpuMilliseconds = 0.0; // time spent in render(), including glFinish when asked
+    bool boxProxy = false;        // only the pixels whose ray meets the box ran the tracer
 };
 
 // The tracer variant these settings select (what SdfRenderer composes and the driver compiles), so
