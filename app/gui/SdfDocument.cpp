@@ -15,6 +15,7 @@ namespace sdfwb::app {
 
 SdfDocument::SdfDocument(widgets::ViewportWidget* viewport, QObject* parent) : QObject(parent), m_viewport(viewport) {
     m_debounce.setSingleShot(true);
+    m_debounce.setTimerType(Qt::PreciseTimer); // a coarse timer may fire 6 ms late
     m_debounce.setInterval(120);
     connect(&m_debounce, &QTimer::timeout, this, [this] { startCheck(m_pendingText); });
 }

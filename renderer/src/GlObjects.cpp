@@ -36,9 +36,11 @@ void deleteFramebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
 void deleteRenderbuffer(GLuint id) { glDeleteRenderbuffers(1, &id); }
 void deleteTexture(GLuint id) { glDeleteTextures(1, &id); }
 void deleteBuffer(GLuint id) { glDeleteBuffers(1, &id); }
+void deleteProgramPipeline(GLuint id) { glDeleteProgramPipelines(1, &id); }
 
-GlProgram linkProgram(std::initializer_list<GLuint> shaders, std::string& log) {
+GlProgram linkProgram(std::initializer_list<GLuint> shaders, std::string& log, bool separable) {
     GlProgram program(glCreateProgram());
+    if (separable) glProgramParameteri(program.id(), GL_PROGRAM_SEPARABLE, GL_TRUE);
     for (GLuint shader : shaders) glAttachShader(program.id(), shader);
     glLinkProgram(program.id());
     GLint linked = 0;

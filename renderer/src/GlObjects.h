@@ -62,6 +62,7 @@ void deleteFramebuffer(GLuint id);
 void deleteRenderbuffer(GLuint id);
 void deleteTexture(GLuint id);
 void deleteBuffer(GLuint id);
+void deleteProgramPipeline(GLuint id);
 
 using GlProgram = GlName<deleteProgram>;
 using GlShader = GlName<deleteShader>;
@@ -70,6 +71,7 @@ using GlFramebuffer = GlName<deleteFramebuffer>;
 using GlRenderbuffer = GlName<deleteRenderbuffer>;
 using GlTexture = GlName<deleteTexture>;
 using GlBuffer = GlName<deleteBuffer>;
+using GlProgramPipeline = GlName<deleteProgramPipeline>;
 
 // A compiled shader stage and what the driver said about it, mapped to the user's files.
 struct CompiledShader {
@@ -82,7 +84,8 @@ struct CompiledShader {
 CompiledShader compileShader(GLenum type, const shaders::ComposedShader& composed);
 
 // Links compiled stages into a program. On failure: an empty program, and the driver's log in `log`.
-GlProgram linkProgram(std::initializer_list<GLuint> shaders, std::string& log);
+// A separable program is one stage of a program pipeline (glUseProgramStages).
+GlProgram linkProgram(std::initializer_list<GLuint> shaders, std::string& log, bool separable = false);
 
 // When `program` reads the G3D noise texture (g3d_uniformRandom), makes `texture` once (see
 // NoiseTexture.h) and binds it to shaders::kNoiseTextureUnit. Needs a current context.

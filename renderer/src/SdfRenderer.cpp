@@ -141,6 +141,12 @@ struct SdfRenderer::Impl {
     std::map<std::string, Variant> cache; // by composed fragment text
     Variant* current = nullptr;
     GlVertexArray vertexArray;
+    // The vertex stage, one program for every variant (trace.vert): a program pipeline pairs it
+    // with each variant's fragment program, so the driver generates its code once, not for every
+    // new SDF (on llvmpipe about 16 ms of each edit's first frame).
+    GlProgram vertexProgram;
+    GlProgramPipeline pipeline;
+    GLint proxyBox = -1, proxyClip = -1, proxyHalf = -1; // its uniforms
     std::uint64_t clock = 0;
     std::uint64_t programsBuilt = 0;
     std::string empty;
@@ -257,20 +263,14 @@ struct SdfRenderer::Impl {
             it->second.lastUse = ++clock;
             return &it->second;
         }
-        auto vertex = shaders::composeTracerVertex();
-        if (!vertex) {
-            diagnostics.push_back({"<sdfwb>", 0, 0, shaders::Severity::Error, vertex.error().message});
-            return nullptr;
-        }
+        if (!ensureVertexStage(diagnostics)) return nullptr;
         auto start = std::chrono::steady_clock::now();
-        CompiledShader vs = compileShader(GL_VERTEX_SHADER, *vertex);
         CompiledShader fs = compileShader(GL_FRAGMENT_SHADER, *fragment);
-        diagnostics.insert(diagnostics.end(), vs.diagnostics.begin(), vs.diagnostics.end());
         diagnostics.insert(diagnostics.end(), fs.diagnostics.begin(), fs.diagnostics.end());
         if (shaders::hasErrors(diagnostics)) return nullptr;
 
         std::string log;
-        GlProgram program = linkProgram({vs.shader.id(), fs.shader.id()}, log);
+        GlProgram program = linkProgram({fs.shader.id()}, log, true);
         if (!program) {
             auto linkDiagnostics = shaders::parseInfoLog(log, fragment->map);
             if (!shaders::hasErrors(linkDiagnostics))
@@ -292,6 +292,34 @@ struct SdfRenderer::Impl {
         variant.cones = tracerFeatures.cones;
         variant.lastUse = ++clock;
         return &variant;
+    }
+
+    // The vertex program and the pipeline, made once per context. False, with diagnostics, when
+    // the driver refuses them.
+    bool ensureVertexStage(std::vector<Diagnostic>& diagnostics) {
+        if (vertexProgram) return true;
+        auto vertex = shaders::composeTracerVertex();
+        if (!vertex) {
+            diagnostics.push_back({"<sdfwb>", 0, 0, shaders::Severity::Error, vertex.error().message});
+            return false;
+        }
+        CompiledShader vs = compileShader(GL_VERTEX_SHADER, *vertex);
+        diagnostics.insert(diagnostics.end(), vs.diagnostics.begin(), vs.diagnostics.end());
+        if (shaders::hasErrors(vs.diagnostics)) return false;
+        std::string log;
+        vertexProgram = linkProgram({vs.shader.id()}, log, true);
+        if (!vertexProgram) {
+            diagnostics.push_back({"<sdfwb>", 0, 0, shaders::Severity::Error, "the tracer's vertex stage did not link: " + log});
+            return false;
+        }
+        GLuint id = 0;
+        glGenProgramPipelines(1, &id);
+        pipeline = GlProgramPipeline(id);
+        glUseProgramStages(id, GL_VERTEX_SHADER_BIT, vertexProgram.id());
+        proxyBox = glGetUniformLocation(vertexProgram.id(), "sdfwb_proxyBox");
+        proxyClip = glGetUniformLocation(vertexProgram.id(), "sdfwb_proxyClip");
+        proxyHalf = glGetUniformLocation(vertexProgram.id(), "sdfwb_proxyHalf");
+        return true;
     }
 
     void evictIfFull() {
@@ -327,6 +355,8 @@ SdfRenderer::~SdfRenderer() {
     // GL names cannot be freed without the context; the owner calls releaseGl() first.
     for (auto& [text, variant] : m_impl->cache) variant.program.release();
     m_impl->vertexArray.release();
+    m_impl->vertexProgram.release();
+    m_impl->pipeline.release();
     m_impl->matcap.release();
     m_impl->background.release();
     m_impl->noise.release();
@@ -471,7 +501,13 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
             m_impl->vertexArray = GlVertexArray(id);
         }
         CameraBasis basis = cameraBasis(camera);
-        glUseProgram(v->program.id());
+        // The variant's fragment program with the shared vertex program; glUniform* reach the
+        // fragment program (the active one), the vertex stage's uniforms are set by name.
+        const GLuint pipeline = m_impl->pipeline.id(), vertexProgram = m_impl->vertexProgram.id();
+        glUseProgram(0);
+        glBindProgramPipeline(pipeline);
+        glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, v->program.id());
+        glActiveShaderProgram(pipeline, v->program.id());
         glUniform2f(v->location("sdfwb_resolution"), float(width), float(height));
         glUniform3f(v->location("sdfwb_cameraPosition"), camera.position.x, camera.position.y, camera.position.z);
         glUniform3f(v->location("sdfwb_cameraRight"), basis.right.x, basis.right.y, basis.right.z);
@@ -583,23 +619,23 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
             glClearColor(m_shading.background.r, m_shading.background.g, m_shading.background.b, 1.0f);
             glClear(GL_COLOR_BUFFER_BIT);
             const glm::mat4 clip = proxyClip(camera, basis, float(width) / float(std::max(height, 1)));
-            glUniform1i(v->location("sdfwb_proxyBox"), 1);
-            glUniformMatrix4fv(v->location("sdfwb_proxyClip"), 1, GL_FALSE, &clip[0][0]);
+            glProgramUniform1i(vertexProgram, m_impl->proxyBox, 1);
+            glProgramUniformMatrix4fv(vertexProgram, m_impl->proxyClip, 1, GL_FALSE, &clip[0][0]);
             // A little over the traced box, so that no pixel on its outline is lost to rounding.
-            glUniform1f(v->location("sdfwb_proxyHalf"), (1.0f + m_trace.boxMargin) * 1.001f);
+            glProgramUniform1f(vertexProgram, m_impl->proxyHalf, (1.0f + m_trace.boxMargin) * 1.001f);
             glEnable(GL_CULL_FACE);
             glCullFace(GL_FRONT);
             glFrontFace(GL_CCW);
             glDrawArrays(GL_TRIANGLES, 0, 36);
             glCullFace(GL_BACK);
             glDisable(GL_CULL_FACE);
-            glUniform1i(v->location("sdfwb_proxyBox"), 0);
+            glProgramUniform1i(vertexProgram, m_impl->proxyBox, 0);
         } else {
             glDrawArrays(GL_TRIANGLES, 0, 3);
         }
         glDisable(GL_BLEND);
         glBindVertexArray(0);
-        glUseProgram(0);
+        glBindProgramPipeline(0);
     }
     if (finish) glFinish();
     logGlErrors("a frame");
@@ -651,6 +687,8 @@ void SdfRenderer::releaseGl() {
     m_impl->current = nullptr;
     m_impl->cache.clear();
     m_impl->vertexArray.reset();
+    m_impl->pipeline.reset();
+    m_impl->vertexProgram.reset();
     m_impl->matcap.reset();
     m_impl->background.reset();
     m_impl->noise.reset();

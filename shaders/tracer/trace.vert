@@ -6,6 +6,12 @@ uniform bool sdfwb_proxyBox;
 uniform mat4 sdfwb_proxyClip;  // world to clip space for the tracer's camera (SdfRenderer::render)
 uniform float sdfwb_proxyHalf; // half the proxy box's side: a little over the traced box's
 
+// A stage of a program pipeline (each SDF's fragment program is paired with this one): the
+// built-in outputs are declared.
+out gl_PerVertex {
+    vec4 gl_Position;
+};
+
 // The box's corners, as bits x, y, z of the index: two triangles a face, counter-clockwise seen
 // from outside.
 const int sdfwb_kProxyCorners[36] = int[36](4, 6, 2, 4, 2, 0, 1, 3, 7, 1, 7, 5, 1, 5, 4, 1, 4, 0, 2, 6, 7, 2, 7, 3, 2, 3, 1,

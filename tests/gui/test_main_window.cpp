@@ -57,6 +57,8 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
 #include <QPainter>
 #include <QPushButton>
 #include <QSlider>
@@ -392,6 +394,47 @@ TEST(Viewport, AtRestADearSdfKeepsTheConePass) {
     window.editor()->setText(window.editor()->text() + "\n// edited\n"); // as if typed
     ASSERT_TRUE(waitFor([&] { return applied; }));
     EXPECT_TRUE(viewport->conePass()) << "the edit dropped the cone pass its file had kept";
+}
+
+// A new SDF whose full frame would take longer than the frame budget shows its last probe frame
+// (15 % of the side, the same paint) as its first frame, then the full-resolution frame; the
+// probe's picture is the new shape, read from the viewport's framebuffer as it is drawn.
+TEST(Viewport, ASlowSdfShowsItsProbeAsItsFirstFrameThenTheFullOne) {
+    app::MainWindow window;
+    window.resize(1000, 600);
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "Geometry/Sphere.glsl"));
+    (void)fullResolutionFrame(window);
+    widgets::ViewportWidget* viewport = window.viewport();
+    viewport->setFrameBudget(0.01); // every SDF is slow against it
+    std::vector<float> scales;
+    long shapePixels = -1;
+    QObject::connect(viewport, &widgets::ViewportWidget::frameRendered, [&](double, float scale) {
+        scales.push_back(scale);
+        if (scale != 3.0f * renderer::FrameScaler::kProbeScale || shapePixels >= 0) return;
+        // In the paint: the viewport's framebuffer is bound, the frame about to be shown.
+        const qreal ratio = viewport->devicePixelRatioF();
+        const int width = int(std::lround(viewport->width() * ratio)), height = int(std::lround(viewport->height() * ratio));
+        std::vector<std::uint8_t> rgba(std::size_t(width) * height * 4);
+        QOpenGLContext::currentContext()->functions()->glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+        shapePixels = 0;
+        for (std::size_t i = 0; i < rgba.size(); i += 4)
+            shapePixels += std::abs(rgba[i] - kBackground.red()) + std::abs(rgba[i + 1] - kBackground.green()) +
+                               std::abs(rgba[i + 2] - kBackground.blue()) >
+                           30;
+    });
+    ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
+    ASSERT_TRUE(waitFor([&] { return !scales.empty() && scales.back() == 1.0f; })) << "no full-resolution frame";
+    // The probe (5 %), the larger probe shown as the first frame (15 %), the full frame (after
+    // any repaint of the sphere before the torus arrived).
+    const auto probe = std::find(scales.begin(), scales.end(), renderer::FrameScaler::kProbeScale);
+    ASSERT_GE(std::distance(probe, scales.end()), 3) << "no probe frame, or nothing after it";
+    EXPECT_EQ(probe[1], 3.0f * renderer::FrameScaler::kProbeScale);
+    EXPECT_EQ(probe[2], 1.0f);
+    const long pixels =
+        long(viewport->width() * viewport->height() * viewport->devicePixelRatioF() * viewport->devicePixelRatioF());
+    EXPECT_GT(shapePixels, pixels / 20) << "the first frame does not show the torus";
+    viewport->setFrameBudget(33.0);
 }
 
 TEST(Viewport, CameraPanelMovesTheCameraAndTheSessionKeepsIt) {

@@ -10,6 +10,8 @@
 
 #include "GlTestContext.h"
 
+#include <epoxy/gl.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -600,5 +602,24 @@ TEST_F(RendererTest, BoxProxyIsNotUsedWhereThePictureReachesPastTheBox) {
         (void)offscreen.render(sdfRenderer, 60, 40, renderer::Camera{}, 0.0f, &stats);
         EXPECT_FALSE(stats.boxProxy) << "setting " << setting;
     }
+    sdfRenderer.releaseGl();
+}
+
+// Every SDF's fragment program is paired with one vertex program (a program pipeline): after
+// releaseGl() (the context is about to go) the renderer makes them again and draws the same
+// picture, without a GL error, for a second SDF too.
+TEST_F(RendererTest, ProgramPipelineIsMadeAgainAfterReleaseGl) {
+    renderer::SdfRenderer sdfRenderer;
+    renderer::OffscreenRenderer offscreen;
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n"))));
+    const renderer::Image before = offscreen.render(sdfRenderer, 120, 80, renderer::Camera{}, 0.0f);
+    sdfRenderer.releaseGl();
+    const renderer::Image after = offscreen.render(sdfRenderer, 120, 80, renderer::Camera{}, 0.0f);
+    EXPECT_EQ(before.rgba, after.rgba);
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p.xz) - 0.3; }\n"))));
+    const renderer::Image other = offscreen.render(sdfRenderer, 120, 80, renderer::Camera{}, 0.0f);
+    EXPECT_NE(before.rgba, other.rgba);
+    EXPECT_GT(foreground(other, renderer::ShadingSettings{}.background), 120 * 80 / 10);
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
     sdfRenderer.releaseGl();
 }

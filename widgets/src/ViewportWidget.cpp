@@ -280,24 +280,32 @@ void ViewportWidget::paintGL() {
     int width = int(std::lround(this->width() * ratio));
     int height = int(std::lround(this->height() * ratio));
     // A new SDF: the probe sizes its first frame, which follows in this same paint (a second
-    // paint request would wait for the next update cycle, 15 to 30 ms here).
-    if (m_needsProbe) probeNewSdf(width, height);
+    // paint request would wait for the next update cycle, 15 to 30 ms here). For a slow SDF the
+    // last probe drawn is this paint's frame, and the full-resolution frame comes in the next.
+    const std::optional<ProbeFrame> probeFrame = m_needsProbe ? probeNewSdf(width, height) : std::nullopt;
     if (m_warmProgram) { // settleMarch() changed the program: its code generation on a tiny draw
         m_warmProgram = false;
         m_renderer->renderScaled(width, height, renderer::FrameScaler::kProbeScale, m_camera, m_time, true);
     }
-    const float scale = m_scaler.scaleFor(width, height, m_interacting);
-    // finish: the status bar and the scale choice see what the frame really cost.
-    renderer::FrameStats stats = m_renderer->renderScaled(width, height, scale, m_camera, m_time, true);
-    if (m_scaler.frameDone(width, height, scale, stats.cpuMilliseconds, m_interacting)) {
-        // A view that became expensive (camera, time, plane): the next frames are capped.
-        emit performanceWarning(tr("A full frame took %1 s: frames are drawn at %2 % resolution from now on")
-                                    .arg(stats.cpuMilliseconds / 1000.0, 0, 'f', 1)
-                                    .arg(int(resolutionCap() * 100.0f)));
+    renderer::FrameStats stats;
+    float scale = 1.0f;
+    if (probeFrame) {
+        stats.cpuMilliseconds = probeFrame->milliseconds;
+        scale = probeFrame->scale;
+    } else {
+        scale = m_scaler.scaleFor(width, height, m_interacting);
+        // finish: the status bar and the scale choice see what the frame really cost.
+        stats = m_renderer->renderScaled(width, height, scale, m_camera, m_time, true);
+        if (m_scaler.frameDone(width, height, scale, stats.cpuMilliseconds, m_interacting)) {
+            // A view that became expensive (camera, time, plane): the next frames are capped.
+            emit performanceWarning(tr("A full frame took %1 s: frames are drawn at %2 % resolution from now on")
+                                        .arg(stats.cpuMilliseconds / 1000.0, 0, 'f', 1)
+                                        .arg(int(resolutionCap() * 100.0f)));
+        }
     }
     m_lastFrameMilliseconds = stats.cpuMilliseconds;
     m_lastScale = scale;
-    if (scale >= 1.0f && !m_interacting && !m_previewFrame) {
+    if (scale >= 1.0f && !m_interacting) {
         m_settleFrameMilliseconds = stats.cpuMilliseconds;
         m_settleTimer.start();
     }
@@ -335,13 +343,7 @@ void ViewportWidget::paintGL() {
         painter.drawText(box, Qt::TextWordWrap, m_overlay);
     }
     emit frameRendered(stats.cpuMilliseconds, scale);
-    if (m_previewFrame) {
-        m_previewFrame = false;
-        if (!m_refineTimer.isActive()) { // not while the user moves the camera
-            m_interacting = false;
-            update();
-        }
-    }
+    if (probeFrame && !m_refineTimer.isActive()) update(); // the full-resolution frame (not while the camera moves)
 }
 
 float ViewportWidget::resolutionCap() const {
@@ -349,7 +351,7 @@ float ViewportWidget::resolutionCap() const {
     return m_scaler.cap(int(std::lround(width() * ratio)), int(std::lround(height() * ratio)));
 }
 
-void ViewportWidget::probeNewSdf(int width, int height) {
+std::optional<ViewportWidget::ProbeFrame> ViewportWidget::probeNewSdf(int width, int height) {
     m_needsProbe = false;
     // 5 % of the side, 0.25 % of the pixels: cheap even for a shader that loops for long. The
     // first draw of a program includes the driver's code generation (llvmpipe compiles lazily):
@@ -357,6 +359,7 @@ void ViewportWidget::probeNewSdf(int width, int height) {
     constexpr float kProbeScale = renderer::FrameScaler::kProbeScale;
     const double stallLimit = m_scaler.stallLimit();
     renderer::FrameStats probe = m_renderer->renderScaled(width, height, kProbeScale, m_camera, m_time, true);
+    float probeScale = kProbeScale; // of the last probe drawn
     if (probe.cpuMilliseconds <= stallLimit) probe = m_renderer->renderScaled(width, height, kProbeScale, m_camera, m_time, true);
     double estimate = renderer::FrameScaler::estimateFullFrame(probe.cpuMilliseconds);
     if (estimate > m_scaler.frameBudget() && probe.cpuMilliseconds <= stallLimit) {
@@ -366,6 +369,7 @@ void ViewportWidget::probeNewSdf(int width, int height) {
         renderer::FrameStats larger = m_renderer->renderScaled(width, height, kLarger, m_camera, m_time, true);
         estimate = renderer::FrameScaler::estimateFullFrame(probe.cpuMilliseconds, std::pair{kLarger, larger.cpuMilliseconds});
         probe = larger;
+        probeScale = kLarger;
     }
     if (probe.cpuMilliseconds > stallLimit && m_lastGoodSdf) {
         // Even the probe is over the limit: this SDF cannot be drawn interactively here.
@@ -375,7 +379,7 @@ void ViewportWidget::probeNewSdf(int width, int height) {
         emit performanceWarning(tr("The new SDF needs %1 s for a frame at 5 % resolution (a runaway loop?): the previous SDF is "
                                    "back on screen; fix the loop or render it with sdfwb --batch render")
                                     .arg(probe.cpuMilliseconds / 1000.0, 0, 'f', 1));
-        return; // the previous SDF's frame is drawn in this paint
+        return std::nullopt; // the previous SDF's frame is drawn in this paint
     }
     m_lastGoodSdf = std::move(m_currentSdf);
     ++m_sdfGeneration;
@@ -386,14 +390,15 @@ void ViewportWidget::probeNewSdf(int width, int height) {
                                     .arg(estimate / 1000.0, 0, 'f', 1)
                                     .arg(int(resolutionCap() * 100.0f)));
     }
-    if (estimate > m_scaler.frameBudget() && !m_interacting) {
-        // A slow SDF: its first frame at a scale that costs half the frame budget, the
-        // full-resolution one right after it.
-        m_scaler.startPreview(estimate);
-        m_interacting = true;
-        m_previewFrame = true;
-    }
     emit frameRendered(probe.cpuMilliseconds, kProbeScale);
+    if (estimate > m_scaler.frameBudget() && !m_interacting) {
+        // A slow SDF: the last probe (its picture fills the frame) is its first frame, the
+        // full-resolution one comes right after it. Moving frames start from the scale that costs
+        // half the frame budget.
+        m_scaler.startPreview(estimate);
+        return ProbeFrame{probeScale, probe.cpuMilliseconds};
+    }
+    return std::nullopt;
 }
 
 void ViewportWidget::releaseGl() {

@@ -26,6 +26,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace sdfwb::renderer {
@@ -153,9 +154,14 @@ protected:
     void leaveEvent(QEvent* event) override;
 
 private:
-    // Times a new SDF at kProbeScale and sets the scale of its first frame and the resolution cap
-    // (or reverts to the last good SDF); the paint that called it draws that frame.
-    void probeNewSdf(int width, int height);
+    // Times a new SDF at kProbeScale and sets the resolution cap (or reverts to the last good
+    // SDF). For an SDF whose full frame would take longer than the frame budget, the last probe's
+    // picture is its first frame (returned); otherwise the paint that called it draws that frame.
+    struct ProbeFrame {
+        float scale;
+        double milliseconds;
+    };
+    std::optional<ProbeFrame> probeNewSdf(int width, int height);
     void releaseGl();
     void interacted(); // a camera move happened: render cheaply now, refine later
     void flyStep();
@@ -196,7 +202,6 @@ private:
     bool m_warmProgram = false; // a new program: a small draw takes its code generation first
     bool m_interacting = false;
     float m_lastScale = 1.0f;
-    bool m_previewFrame = false; // the next frame is a new slow SDF's first, at the moving scale
     double m_lastFrameMilliseconds = 0.0;
     QString m_contextDescription;
     QString m_overlay;
