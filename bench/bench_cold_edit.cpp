@@ -4,8 +4,8 @@
 // compile error); the keystroke deletes it. Measured in the real window: the editor's debounce, include resolution and glslang
 // off the UI thread, the GL compile and link, the probe frame that sizes the resolution (the driver's code generation happens
 // there), then the first frame: at full resolution, or for an SDF whose full frame would take longer than the 33 ms frame budget
-// at a scale that costs half that budget, with the full-resolution frame after it. The reference in the same run is the editor's
-// debounce itself, which every edit waits for by design.
+// the probe's second measurement at 15 % of the side, with the full-resolution frame after it. The reference in the same run is
+// the editor's debounce itself, which every edit waits for by design.
 //
 //   scripts/with-display build/bench/bench_cold_edit [NAME|FILE ...]   (dataset names or .glsl files; default: every
 //   dataset SDF)

@@ -3,7 +3,8 @@
 // budget), steps per pixel, and, measured in the same run on the same context, the frame time of
 // a minimal reference tracer doing the same work (textbook sphere tracing in the same [-1,1]^3 box
 // with the same step budget and hit tolerance, a 4-tap normal and the same Gooch formula; none of
-// our refinement, retaken normal taps, miss reasons or feature switches). Timings are medians of 3
+// our refinement, retaken normal taps, miss reasons or feature switches, and every pixel traced: ours traces only the pixels
+// whose ray meets the box, drawn as geometry). Timings are medians of 3
 // frames after a warm-up frame (shader JIT excluded), draw to glFinish for both. Error against run time (hit error, samplers,
 // gradients, audit) is `sdfwb --batch bench` (jobs/src/Benchmarks.cpp).
 //
