@@ -108,11 +108,11 @@ bool conesApply(const ShadingSettings& shading, const TraceSettings& trace) {
 
 // Whether a frame may be drawn as the box's far faces over a cleared background (trace.vert),
 // which leaves every pixel whose ray misses the box the background: not where the picture shows
-// something else there (the cutting plane, a background image, markers, the step heat map's
-// misses, the measurement outputs, the march debugger).
-bool boxProxyApplies(const ShadingSettings& shading, const TraceSettings& trace, const CuttingPlane& plane) {
-    return trace.boxProxy && !plane.enabled && shading.backgroundImage.empty() && shading.markers.empty() &&
-           shading.mode != ShadingMode::Steps && !shading.statsOutput && !shading.probe;
+// something else there (a background image, markers, the step heat map's misses, the measurement
+// outputs, the march debugger). The cutting plane is drawn only inside the box (plane.glsl).
+bool boxProxyApplies(const ShadingSettings& shading, const TraceSettings& trace) {
+    return trace.boxProxy && shading.backgroundImage.empty() && shading.markers.empty() && shading.mode != ShadingMode::Steps &&
+           !shading.statsOutput && !shading.probe;
 }
 
 // World to clip space for trace.vert's proxy box, for a frame of the given aspect: x and y as
@@ -612,7 +612,7 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
             glViewport(0, 0, width, height);
             glUniform1i(v->location("sdfwb_conePass"), 0);
         }
-        stats.boxProxy = boxProxyApplies(m_shading, m_trace, m_plane);
+        stats.boxProxy = boxProxyApplies(m_shading, m_trace);
         if (stats.boxProxy) {
             // Only the pixels whose ray meets the box run the tracer (the box's far faces: one
             // fragment a pixel, wherever the camera is); the rest are the background already.

@@ -524,8 +524,9 @@ TEST_F(RendererTest, TinySdfsWithoutLoopsUnrollTheNormalTaps) {
 // A frame drawn as the box's far faces over the cleared background (only pixels whose ray meets
 // the box run the tracer) is the full-frame picture, pixel for pixel: from outside the box, from
 // a camera beside it with box corners behind it (the near side clipped), from inside it, looking
-// away from it, far away, at a reduced scale and with the cone pass; with a shape that fills the
-// box to its faces, so that the box's outline is the shape's.
+// away from it, far away, at a reduced scale, with the cone pass and with the cutting plane (its
+// isocontours take screen-space derivatives); with a shape that fills the box to its faces, so
+// that the box's outline is the shape's.
 TEST_F(RendererTest, BoxProxyDrawsTheFullFramePicture) {
     const std::vector<std::string> sdfs = {
         "float sdf(vec3 p) { vec2 q = vec2(length(p.xz) - 0.6, p.y); return length(q) - 0.25; }\n",
@@ -548,7 +549,7 @@ TEST_F(RendererTest, BoxProxyDrawsTheFullFramePicture) {
     renderer::OffscreenRenderer offscreen;
     for (const std::string& text : sdfs) {
         for (std::size_t c = 0; c < cameras.size(); ++c) {
-            for (int variant = 0; variant < 3; ++variant) { // full scale, half scale, cone pass
+            for (int variant = 0; variant < 4; ++variant) { // full scale, half scale, cone pass, cutting plane
                 renderer::Image images[2];
                 for (int proxy = 0; proxy < 2; ++proxy) {
                     renderer::SdfRenderer sdfRenderer;
@@ -559,6 +560,13 @@ TEST_F(RendererTest, BoxProxyDrawsTheFullFramePicture) {
                     trace.boxProxy = proxy == 1;
                     trace.cones = variant == 2 ? renderer::TraceSettings::Cones::On : renderer::TraceSettings::Cones::Off;
                     (void)sdfRenderer.setTrace(trace);
+                    if (variant == 3) {
+                        renderer::CuttingPlane plane;
+                        plane.enabled = true;
+                        plane.normal = glm::vec3(0.3f, 0.2f, 1.0f);
+                        plane.offset = 0.1f;
+                        (void)sdfRenderer.setPlane(plane);
+                    }
                     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare(text))));
                     renderer::FrameStats stats;
                     images[proxy] = offscreen.render(sdfRenderer, 160, 100, cameras[c], 0.0f, &stats, variant == 1 ? 0.5f : 1.0f);
@@ -578,8 +586,8 @@ TEST_F(RendererTest, BoxProxyDrawsTheFullFramePicture) {
     }
 }
 
-// Where the picture shows something other than the background outside the box (the cutting
-// plane, a background image, markers, the step heat map), every pixel runs the tracer.
+// Where the picture shows something other than the background outside the box (a background
+// image, markers, the step heat map), every pixel runs the tracer.
 TEST_F(RendererTest, BoxProxyIsNotUsedWhereThePictureReachesPastTheBox) {
     renderer::SdfRenderer sdfRenderer;
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n"))));
@@ -587,12 +595,6 @@ TEST_F(RendererTest, BoxProxyIsNotUsedWhereThePictureReachesPastTheBox) {
     renderer::FrameStats stats;
     (void)offscreen.render(sdfRenderer, 60, 40, renderer::Camera{}, 0.0f, &stats);
     EXPECT_TRUE(stats.boxProxy);
-    renderer::CuttingPlane plane;
-    plane.enabled = true;
-    (void)sdfRenderer.setPlane(plane);
-    (void)offscreen.render(sdfRenderer, 60, 40, renderer::Camera{}, 0.0f, &stats);
-    EXPECT_FALSE(stats.boxProxy) << "cutting plane";
-    (void)sdfRenderer.setPlane(renderer::CuttingPlane{});
     for (int setting = 0; setting < 3; ++setting) {
         renderer::ShadingSettings shading;
         if (setting == 0) shading.backgroundImage = (fs::path(SDFWB_SOURCE_DIR) / "resources" / "matcaps" / "jade.png").string();
