@@ -38,9 +38,8 @@ void FrameScaler::startInteraction() {
         m_scale = std::clamp(float(std::sqrt(0.8 * m_frameBudget / m_fullFrameMilliseconds)), kMinimumScale, 1.0f);
 }
 
-void FrameScaler::startPreview(double estimateMilliseconds) {
-    // Half the budget: the preview is on screen for one full frame's time, and the sooner it
-    // shows after a keystroke the better (moving frames aim at 0.8 of it).
+void FrameScaler::seedScale(double estimateMilliseconds) {
+    // Half the budget: an estimate from probes is rough (moving frames then aim at 0.8 of it).
     if (estimateMilliseconds > 0.0)
         m_scale = std::clamp(float(std::sqrt(0.5 * m_frameBudget / estimateMilliseconds)), kMinimumScale, 1.0f);
 }

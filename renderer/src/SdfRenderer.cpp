@@ -598,6 +598,7 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
         glBlendFunc(GL_ONE, GL_ZERO);
         if (cones) {
             glUniform1i(v->location("sdfwb_conePass"), 1);
+            glProgramUniform1i(vertexProgram, m_impl->proxyBox, 0); // every tile has its cone
             glViewport(0, 0, coneWidth, coneHeight);
             glDrawArrays(GL_TRIANGLES, 0, 3);
             // Copied from the framebuffer just drawn, whatever the caller left bound for reading.
@@ -613,13 +614,17 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
             glUniform1i(v->location("sdfwb_conePass"), 0);
         }
         stats.boxProxy = boxProxyApplies(m_shading, m_trace);
+        glProgramUniform1i(vertexProgram, m_impl->proxyBox, stats.boxProxy ? 1 : 0);
         if (stats.boxProxy) {
             // Only the pixels whose ray meets the box run the tracer (the box's far faces: one
             // fragment a pixel, wherever the camera is); the rest are the background already.
+            // Cleared where this frame draws (a scaled frame: the target's corner).
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(0, 0, width, height);
             glClearColor(m_shading.background.r, m_shading.background.g, m_shading.background.b, 1.0f);
             glClear(GL_COLOR_BUFFER_BIT);
+            glDisable(GL_SCISSOR_TEST);
             const glm::mat4 clip = proxyClip(camera, basis, float(width) / float(std::max(height, 1)));
-            glProgramUniform1i(vertexProgram, m_impl->proxyBox, 1);
             glProgramUniformMatrix4fv(vertexProgram, m_impl->proxyClip, 1, GL_FALSE, &clip[0][0]);
             // A little over the traced box, so that no pixel on its outline is lost to rounding.
             glProgramUniform1f(vertexProgram, m_impl->proxyHalf, (1.0f + m_trace.boxMargin) * 1.001f);
@@ -629,7 +634,6 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
             glDrawArrays(GL_TRIANGLES, 0, 36);
             glCullFace(GL_BACK);
             glDisable(GL_CULL_FACE);
-            glProgramUniform1i(vertexProgram, m_impl->proxyBox, 0);
         } else {
             glDrawArrays(GL_TRIANGLES, 0, 3);
         }

@@ -395,7 +395,7 @@ std::optional<ViewportWidget::ProbeFrame> ViewportWidget::probeNewSdf(int width,
         // A slow SDF: the last probe (its picture fills the frame) is its first frame, the
         // full-resolution one comes right after it. Moving frames start from the scale that costs
         // half the frame budget.
-        m_scaler.startPreview(estimate);
+        m_scaler.seedScale(estimate);
         return ProbeFrame{probeScale, probe.cpuMilliseconds};
     }
     return std::nullopt;

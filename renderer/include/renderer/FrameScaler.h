@@ -28,9 +28,9 @@ public:
     bool frameDone(int width, int height, float scale, double milliseconds, bool interacting);
     // The camera starts moving: start from the scale the last full frame suggests.
     void startInteraction();
-    // A new SDF whose full frame is estimated over the frame budget: its first frame is drawn at
-    // a scale that costs half the budget, and the full one follows.
-    void startPreview(double estimateMilliseconds);
+    // A new SDF whose full frame is estimated over the frame budget: moving frames start, until
+    // its first full frame is measured, from a scale that costs half the budget.
+    void seedScale(double estimateMilliseconds);
     double frameBudget() const { return m_frameBudget; }
     // A new SDF: no cap until its probe frame says otherwise.
     void clearCap() { m_maxPixels = 0.0; }
