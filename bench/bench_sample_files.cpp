@@ -2,8 +2,9 @@
 // and folder:
 //   compute  the same sampler dispatched chunk by chunk with read-back into one reused buffer,
 //            nothing written (what the GL side alone costs);
-//   write    the same number of bytes written to a file in the same folder, in blocks of one
-//            chunk's rows, then fsync (what the disk alone costs);
+//   write    the same number of bytes written to a file in the same folder through sdfwb's own
+//            writer (the same I/O path: fallocate, direct I/O for whole blocks, fsync, rename),
+//            in blocks of one chunk's rows (what the disk alone costs);
 //   sdfwb    sampling::sampleToFile, as `sdfwb --batch sample` runs it (compute, format, write,
 //            fsync, rename), without process start-up and shader compile.
 // A run that overlapped compute and writing perfectly would take max(compute, write); the ratio
@@ -19,12 +20,16 @@
 #include <sampling/Sampler.h>
 #include <sampling/SamplerLibrary.h>
 
+#include "OutputFile.h" // sampling/src: the writer the sample files use
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -72,28 +77,37 @@ double computeSeconds(renderer::SampleCompute& compute, const sampling::Sampling
     return seconds(start);
 }
 
-// The disk alone: `bytes` written in blocks of `block` bytes, then fsync; the file is removed.
+// The disk alone, through sdfwb's own writer (sampling/src/OutputFile.h, the same I/O path as the
+// sample files: the size allocated up front, whole 4096-byte blocks past the page cache when
+// direct I/O is on, the disk asked to start writing as it goes, fsync, rename): `bytes` written in
+// blocks of `block` bytes from one page-aligned buffer; the file is removed afterwards.
 double writeSeconds(const fs::path& folder, std::uint64_t bytes, std::size_t block) {
-    const std::vector<char> data(block, 'x');
-    const std::string path = (folder / "bench_sample_files.write").string();
+    const std::size_t alignment = sampling::detail::OutputFile::kDirectAlignment;
+    const std::size_t capacity = (block + alignment - 1) / alignment * alignment;
+    std::unique_ptr<char, decltype(&std::free)> data(static_cast<char*>(std::aligned_alloc(alignment, capacity)), &std::free);
+    std::memset(data.get(), 'x', capacity);
+    const fs::path path = folder / "bench_sample_files.write";
     auto start = std::chrono::steady_clock::now();
-    int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd < 0) {
-        std::perror(path.c_str());
+    auto file = sampling::detail::OutputFile::create(path);
+    if (!file) {
+        std::fprintf(stderr, "bench_sample_files: %s\n", file.error().message.c_str());
         std::exit(1);
     }
+    file->reserve(bytes);
     for (std::uint64_t done = 0; done < bytes;) {
         const std::size_t size = std::size_t(std::min<std::uint64_t>(block, bytes - done));
-        if (::write(fd, data.data(), size) != ssize_t(size)) {
-            std::perror(path.c_str());
+        if (auto ok = file->writeDirectAt(done, data.get(), size); !ok) {
+            std::fprintf(stderr, "bench_sample_files: %s\n", ok.error().message.c_str());
             std::exit(1);
         }
         done += size;
     }
-    ::fsync(fd);
-    ::close(fd);
+    if (auto ok = file->commit(); !ok) {
+        std::fprintf(stderr, "bench_sample_files: %s\n", ok.error().message.c_str());
+        std::exit(1);
+    }
     const double elapsed = seconds(start);
-    ::unlink(path.c_str());
+    fs::remove(path);
     return elapsed;
 }
 

@@ -101,6 +101,19 @@ CLI::Validator numberCheck(bool positive) {
         positive ? "POSITIVE" : "FINITE");
 }
 
+// A whole number written in digits (no sign: CLI11 would wrap "-5" around to 2^64 - 5 for an
+// unsigned option), and above 0 when `positive`.
+CLI::Validator wholeNumberCheck(bool positive) {
+    return CLI::Validator(
+        [positive](std::string& text) -> std::string {
+            const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+            if (!digits || (positive && text.find_first_not_of('0') == std::string::npos))
+                return std::string("must be a ") + (positive ? "positive" : "non-negative") + " integer, got '" + text + "'";
+            return {};
+        },
+        positive ? "POSITIVE INTEGER" : "INTEGER >= 0");
+}
+
 // --entry NAME: a GLSL identifier that is not reserved (main, gl_*, sdfwb_*).
 CLI::Validator entryCheck() {
     return CLI::Validator(
@@ -447,10 +460,14 @@ int runSampleCommand(const Arguments& arguments, Mode mode) {
     app.add_option("--pattern,-p", command.pattern,
                    "grid, image, jitter, rand, surface, near, metropolis, metropolis_curvature, or a sampler file")
         ->required();
-    app.add_option("-n,--count", command.count, "number of samples N of the whole run")->required();
+    app.add_option("-n,--count", command.count, "number of samples N of the whole run")
+        ->required()
+        ->check(wholeNumberCheck(true));
     app.add_option("--output,-o", command.output, "output file: .bin, .npz or .ply")->required();
     app.add_option("--format", command.format, "bin, npz or ply (default: from the output's extension)");
-    app.add_option("--seed", command.seed, "random seed (same seed, same file, bit for bit)")->capture_default_str();
+    app.add_option("--seed", command.seed, "random seed (same seed, same file, bit for bit)")
+        ->capture_default_str()
+        ->check(wholeNumberCheck(false));
     app.add_option("--time", command.time, "time in seconds for animated SDFs")->capture_default_str()->check(numberCheck(false));
     app.add_option("--shard", shard, "K/COUNT: write only slice K (0-based) of COUNT equal slices of the N-sample run");
     app.add_option("--chunk", command.chunkSize, "samples per GPU dispatch (memory: 28 bytes each)")
@@ -499,8 +516,9 @@ int runAuditCommand(const Arguments& arguments, Mode mode) {
     addSdfOptions(app, command.sdf);
     app.add_option("--samples", command.samples, "random points (as many near-surface and surface points)")
         ->capture_default_str()
+        ->check(wholeNumberCheck(true))
         ->check(CLI::Range(std::uint64_t(64), std::uint64_t(100000000)));
-    app.add_option("--seed", command.seed, "random seed")->capture_default_str();
+    app.add_option("--seed", command.seed, "random seed")->capture_default_str()->check(wholeNumberCheck(false));
     app.add_option("--time", command.time, "time in seconds for animated SDFs")->capture_default_str()->check(numberCheck(false));
     app.add_option("--plane", plane, "NX,NY,NZ,OFFSET: readouts for this cutting plane instead of the volume audit");
     app.add_option("--resolution", command.resolution, "grid side on the plane")
@@ -565,7 +583,9 @@ int runMeshCommand(const Arguments& arguments, Mode mode) {
     app.add_option("--error-samples", request.errorSamples, "points each way for the error against the field (0: none)")
         ->capture_default_str()
         ->check(CLI::Range(std::uint64_t(0), std::uint64_t(10000000)));
-    app.add_option("--seed", request.seed, "random seed of the error's points")->capture_default_str();
+    app.add_option("--seed", request.seed, "random seed of the error's points")
+        ->capture_default_str()
+        ->check(wholeNumberCheck(false));
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch mesh", arguments)) return *exit;
     return finish(request, ending, mode);
@@ -590,7 +610,7 @@ int runEvalCommand(const Arguments& arguments, Mode mode) {
     addBoundsOption(app, request.boundsMin, request.boundsMax,
                     "MINX,MINY,MINZ,MAXX,MAXY,MAXZ of the IoU grid (default -1,-1,-1,1,1,1)");
     app.add_option("--time", request.time, "time in seconds for animated SDFs")->capture_default_str()->check(numberCheck(false));
-    app.add_option("--seed", request.seed, "random seed of the points")->capture_default_str();
+    app.add_option("--seed", request.seed, "random seed of the points")->capture_default_str()->check(wholeNumberCheck(false));
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch eval", arguments)) return *exit;
     return finish(request, ending, mode);

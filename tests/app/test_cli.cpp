@@ -151,3 +151,20 @@ TEST(CommandLine, ListFindsTheDataset) {
     EXPECT_NE(r.output.find("\"name\": \"Torus\""), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("\"declared_type\""), std::string::npos) << r.output;
 }
+
+// CLI11 converts "-5" for an unsigned option by wrapping it (to 2^64 - 5): counts and seeds are
+// checked as written, and the message names the option and what it takes.
+TEST(CommandLine, NegativeCountsAndSeedsAreRefusedAsSuch) {
+    fs::path out = outputPath("negative.npz");
+    for (const std::string& option :
+         {std::string("-n -5"), std::string("-n 0"), std::string("-n 1e6"), std::string("-n 100 --seed -1")}) {
+        Result r = run("--batch sample --sdf sphere --pattern rand " + option + " --output " + out.string());
+        EXPECT_EQ(r.exitCode, 2) << option << ": " << r.output;
+        const bool seed = option.find("--seed") != std::string::npos;
+        EXPECT_NE(r.output.find(seed ? "--seed" : "-n"), std::string::npos) << option << ": " << r.output;
+        EXPECT_NE(r.output.find(seed ? "must be a non-negative integer" : "must be a positive integer"), std::string::npos)
+            << option << ": " << r.output;
+        EXPECT_EQ(r.output.find("exceed the limit"), std::string::npos) << option << ": " << r.output;
+        EXPECT_FALSE(fs::exists(out)) << option;
+    }
+}
