@@ -315,7 +315,7 @@ def cpu_busy():
 
 
 def seconds(t):
-    return f"{t:.3f}"
+    return f"{t:.4f}"
 
 
 points = (np.random.default_rng(7).random((N, 3), dtype=np.float32) * 2.4 - 1.2).astype(np.float32)
@@ -334,9 +334,9 @@ command = " ".join(filter(None, [
 config = [
     f"Machine: {socket.gethostname()}, {CPUS} logical CPUs ({cpu_model()}), {platform.system()} {platform.release()}; "
     f"started {started.strftime('%Y-%m-%d %H:%M')} UTC.",
-    f"sdfwb {sdfwb.__version__}: GL renderer {renderer}"
-    + (f" (Mesa's CPU rasteriser: no GPU; it uses {lp_threads if lp_threads else f'all {CPUS}'} "
-       f"cores{' (LP_NUM_THREADS)' if lp_threads else ''})" if llvmpipe else "") + ".",
+    f"sdfwb {sdfwb.__version__}: GL renderer `{renderer}`"
+    + (f": Mesa's CPU rasteriser, no GPU; it uses {lp_threads if lp_threads else f'all {CPUS}'} "
+       f"cores{' (LP_NUM_THREADS)' if lp_threads else ''}" if llvmpipe else "") + ".",
     f"PyTorch {torch.__version__} (CPU, float32, inference_mode): intra-op threads tried "
     f"{', '.join(map(str, THREADS))} (its default here: {TORCH_DEFAULT_THREADS}), inter-op threads "
     f"{torch.get_num_interop_threads()}; forms tried: eager, compacted (fractal), in-place, jit.script.",
@@ -356,7 +356,7 @@ with np.errstate(all="ignore"), torch.inference_mode():
         t_ours, ours = timed(lambda: sdfwb.evaluate(source, points, gradient=False)["distance"])
         e_ours = error(ours, truth)
         details.append((name, "sdfwb", "evaluate", "all (llvmpipe)" if llvmpipe else "-", t_ours, e_ours))
-        print(f"{name:8s} sdfwb {seconds(t_ours)} s, max |error| {e_ours:.2g}", flush=True)
+        print(f"{name:8s} sdfwb   {'evaluate':20s} {'all':9s} {seconds(t_ours)} s, max |error| {e_ours:.2g}", flush=True)
         torch_runs = []
         for form, function in TORCH[name].items():
             for k in THREADS:

@@ -103,12 +103,14 @@ CLI::Validator numberCheck(bool positive) {
 
 // A whole number written in digits (no sign: CLI11 would wrap "-5" around to 2^64 - 5 for an
 // unsigned option), and above 0 when `positive`.
-CLI::Validator wholeNumberCheck(bool positive) {
+// `as` names the option as users type it when CLI11's message would give only its long name.
+CLI::Validator wholeNumberCheck(bool positive, std::string as = {}) {
     return CLI::Validator(
-        [positive](std::string& text) -> std::string {
+        [positive, as](std::string& text) -> std::string {
             const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
             if (!digits || (positive && text.find_first_not_of('0') == std::string::npos))
-                return std::string("must be a ") + (positive ? "positive" : "non-negative") + " integer, got '" + text + "'";
+                return (as.empty() ? std::string() : as + " ") + "must be a " + (positive ? "positive" : "non-negative") +
+                       " integer, got '" + text + "'";
             return {};
         },
         positive ? "POSITIVE INTEGER" : "INTEGER >= 0");
@@ -462,7 +464,7 @@ int runSampleCommand(const Arguments& arguments, Mode mode) {
         ->required();
     app.add_option("-n,--count", command.count, "number of samples N of the whole run")
         ->required()
-        ->check(wholeNumberCheck(true));
+        ->check(wholeNumberCheck(true, "-n"));
     app.add_option("--output,-o", command.output, "output file: .bin, .npz or .ply")->required();
     app.add_option("--format", command.format, "bin, npz or ply (default: from the output's extension)");
     app.add_option("--seed", command.seed, "random seed (same seed, same file, bit for bit)")

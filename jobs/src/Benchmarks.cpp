@@ -20,6 +20,7 @@
 #include <cstdio>
 #include <ctime>
 #include <functional>
+#include <string_view>
 #include <thread>
 #include <vector>
 
@@ -58,6 +59,16 @@ std::string format(const char* pattern, auto... values) {
     std::snprintf(text.data(), text.size(), pattern, values...);
     text.pop_back();
     return text;
+}
+
+// A markdown table cell: a literal | would end the cell.
+std::string cell(std::string_view text) {
+    std::string escaped;
+    for (char c : text) {
+        if (c == '|') escaped += '\\';
+        escaped += c;
+    }
+    return escaped;
 }
 
 std::string spreadText(const Spread& s, const char* unit = "") {
@@ -103,18 +114,21 @@ Expected<Report> tracerBenchmark(const BenchOptions& options) {
     const renderer::Camera camera;
 
     Report report;
-    report.csv = "sdf,method,epsilon_scale,steps_hits,steps_all,error_p50,error_p99,error_max,missed_pixels,hit_pixels,ms_median,"
-                 "ms_min,ms_max\n";
+    report.csv =
+        "sdf,method,epsilon_scale,steps_hits,steps_all,error_p50,error_p99,error_max,missed_pixels,false_hits,hit_pixels,"
+        "ms_median,ms_min,ms_max\n";
     report.markdown =
         format("### Sphere tracer: hit error against steps and time\n\n"
                "%dx%d, default camera, step budget 512. Error = |t - t*| along the ray, in scene units, where t* is the "
-               "exact first intersection (References.cpp, double precision), over the pixels both hit; steps per hit "
+               "exact first intersection (References.cpp, double precision), over the pixels both hit; \"missed\": pixels "
+               "whose exact ray hits and ours does not, \"false hits\": ours hits and the exact ray misses (a ray passing "
+               "within the tolerance of the silhouette; in no error column); steps per hit "
                "pixel are means; frame time is the median [min, max] of %d frames after a warm-up frame. The hit "
                "tolerance is in pixels: a hit when |f| < tolerance x the pixel footprint at t. \"plain + cone pass\" "
                "first marches one cone per 4x4 pixels and starts each pixel where its cone stopped (steps count the "
                "pixel's own march; the frame time includes the cone pass).\n\n"
-               "| SDF | method | tolerance (px) | steps/hit | error p50 | error p99 | missed | frame ms |\n"
-               "|---|---|---|---|---|---|---|---|\n",
+               "| SDF | method | tolerance (px) | steps/hit | error p50 | error p99 | missed | false hits | frame ms |\n"
+               "|---|---|---|---|---|---|---|---|---|\n",
                width, height, options.repeats);
     renderer::OffscreenRenderer offscreen;
     for (const BenchShape& shape : kShapes) {
@@ -152,7 +166,7 @@ Expected<Report> tracerBenchmark(const BenchOptions& options) {
                 sdfRenderer.releaseGl();
                 std::vector<double> errors;
                 double stepsAll = 0, stepsHits = 0;
-                long hits = 0, missed = 0;
+                long hits = 0, missed = 0, falseHits = 0;
                 for (std::size_t i = 0; i < stats.size(); ++i) {
                     stepsAll += stats[i].steps;
                     if (!stats[i].hit()) {
@@ -160,6 +174,7 @@ Expected<Report> tracerBenchmark(const BenchOptions& options) {
                         continue;
                     }
                     ++hits;
+                    falseHits += reference[i] < 0.0;
                     stepsHits += stats[i].steps;
                     if (reference[i] >= 0.0) errors.push_back(std::abs(double(stats[i].t) - reference[i]));
                 }
@@ -167,11 +182,11 @@ Expected<Report> tracerBenchmark(const BenchOptions& options) {
                 const double p50 = quantile(errors, 0.5), p99 = quantile(errors, 0.99);
                 const double worst = errors.empty() ? 0.0 : *std::max_element(errors.begin(), errors.end());
                 const double perHit = hits ? stepsHits / double(hits) : 0.0;
-                report.csv += format("%s,%s,%g,%.3f,%.3f,%.4g,%.4g,%.4g,%ld,%ld,%.4g,%.4g,%.4g\n", shape.name, method.name,
-                                     double(tolerance), perHit, stepsAll / double(stats.size()), p50, p99, worst, missed, hits,
-                                     ms.median, ms.minimum, ms.maximum);
-                report.markdown += format("| %s | %s | %g | %.1f | %.2e | %.2e | %ld | %s |\n", shape.name, method.name,
-                                          double(tolerance), perHit, p50, p99, missed, spreadText(ms).c_str());
+                report.csv += format("%s,%s,%g,%.3f,%.3f,%.4g,%.4g,%.4g,%ld,%ld,%ld,%.4g,%.4g,%.4g\n", shape.name, method.name,
+                                     double(tolerance), perHit, stepsAll / double(stats.size()), p50, p99, worst, missed,
+                                     falseHits, hits, ms.median, ms.minimum, ms.maximum);
+                report.markdown += format("| %s | %s | %g | %.1f | %.2e | %.2e | %ld | %ld | %s |\n", shape.name, method.name,
+                                          double(tolerance), perHit, p50, p99, missed, falseHits, spreadText(ms).c_str());
             }
     }
     report.markdown += "\n![Sphere tracer: hit error against steps and frame time](images/bench_tracer.png)\n\n";
@@ -363,7 +378,7 @@ Expected<Report> auditBenchmark(const BenchOptions& options, const ProgressSink&
             report.csv += format("%s,%.6g,%llu,%.5g,%.5g,%.5g,%.5g,%.5g,%.5g,%.4g,%.4g,%.4g\n", field.name, field.lipschitz,
                                  (unsigned long long)samples, ratio.median, ratio.minimum, ratio.maximum, largest.median,
                                  largest.minimum, largest.maximum, time.median, time.minimum, time.maximum);
-            report.markdown += format("| %s | %llu | %s | %s | %s |\n", field.name, (unsigned long long)samples,
+            report.markdown += format("| %s | %llu | %s | %s | %s |\n", cell(field.name).c_str(), (unsigned long long)samples,
                                       spreadText(ratio).c_str(), spreadText(largest).c_str(), spreadText(time, " s").c_str());
         }
     }

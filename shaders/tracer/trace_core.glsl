@@ -203,14 +203,14 @@ int sdfwb_marchStep(inout sdfwb_March march, float d) {
 #endif
 }
 
-// The refining steps after a hit: one more plain step from the value the march stopped at (d),
-// evaluated there (next), and kept only when |f| shrank: for a field steeper than the step factor
-// assumes (or a broken one) it would overshoot, and the hit stays where it was, within its
-// tolerance. When it is kept, a second step of next follows without an evaluation of its own: a
-// step of d that shrank |f| to next = d (1 - k) (k the field's slope along the ray, relative to
-// the step factor's) shows 0 < k < 2 there, so the step of next leaves d (1 - k)^2, smaller again.
-// For exact fields the two steps leave a fraction of what one leaves (the hit-error tests in
-// tests/renderer/test_hit_error.cpp bound it) at no more evaluations than one.
+// The refining steps after a hit: up to two more plain steps from the value the march stopped at,
+// each evaluated where it lands and kept only when |f| shrank there: for a field steeper than the
+// step factor assumes (or a broken one) a step would overshoot, and the hit stays where it was,
+// within its tolerance. For exact fields each kept step takes the error down by 1 - cos of the
+// angle between the ray and the surface's normal (the tests in tests/renderer/test_hit_error.cpp
+// bound what the two leave). A second step left unevaluated would cost nothing, but on fields
+// that are not linear along the ray (fractals) it lands where |f| may exceed the tolerance.
+const int sdfwb_kRefiningSteps = 2;
 bool sdfwb_refineKeeps(float d, float next) { return abs(next) < abs(d); }
 
 #ifdef SDFWB_PROBE
@@ -281,18 +281,17 @@ sdfwb_Hit sdfwb_traceRay(vec3 origin, vec3 direction) {
     hit.value = d;
     if (hit.found && !SDFWB_CONE_PASS) {
         hit.status = sdfwb_kRayHit;
-        float next = SDFWB_SCALED(sdfwb_sceneMap(march.entry + (march.s + d) * direction));
-        const bool keep = sdfwb_refineKeeps(d, next);
-        SDFWB_RECORD(keep ? sdfwb_kProbeRefineKept : sdfwb_kProbeRefineUndone, march.tStart + march.s + d, march.entry + (march.s + d) * direction, next);
-        hit.value = SDFWB_UNSCALED(keep ? next : d);
-        if (keep) {
-            march.s += d + next;
-#ifdef SDFWB_PROBE
-            // What the second step reached (only the march debugger evaluates it).
-            SDFWB_RECORD(sdfwb_kProbeRefineKept, march.tStart + march.s, march.entry + march.s * direction,
-                         SDFWB_SCALED(sdfwb_sceneMap(march.entry + march.s * direction)));
-#endif
+        float value = d;
+        for (int k = 0; k < sdfwb_kRefiningSteps; ++k) {
+            float next = SDFWB_SCALED(sdfwb_sceneMap(march.entry + (march.s + value) * direction));
+            const bool keep = sdfwb_refineKeeps(value, next);
+            SDFWB_RECORD(keep ? sdfwb_kProbeRefineKept : sdfwb_kProbeRefineUndone, march.tStart + march.s + value,
+                         march.entry + (march.s + value) * direction, next);
+            if (!keep) break;
+            march.s += value;
+            value = next;
         }
+        hit.value = SDFWB_UNSCALED(value);
     }
     hit.t = march.tStart + march.s;
     hit.position = march.entry + march.s * direction;
@@ -387,11 +386,12 @@ sdfwb_Hit sdfwb_traceWithNormal(vec3 origin, vec3 direction, out vec3 normal) {
     int phase = sdfwb_kPhaseMarch;
     int count = 0;          // taps taken
     int retakes = 0;        // times the taps were taken again with a smaller step
+    int refined = 0;        // refining steps kept
     float valueSum = 0.0;   // the sum of the taps' values
     float hitValue = 0.0;   // the scaled f where the march stopped
     vec2 steps = vec2(0.0); // the normal's step and its floor
     vec3 sum = vec3(0.0);
-    int budget = sdfwb_maxSteps + 1 + sdfwb_gradientTaps * (1 + sdfwb_thinRetakes);
+    int budget = sdfwb_maxSteps + sdfwb_kRefiningSteps + sdfwb_gradientTaps * (1 + sdfwb_thinRetakes);
     for (int iteration = 0; iteration < budget; ++iteration) {
         vec3 at = phase == sdfwb_kPhaseMarch    ? march.entry + march.s * direction
                   : phase == sdfwb_kPhaseRefine ? march.entry + (march.s + hitValue) * direction
@@ -421,8 +421,12 @@ sdfwb_Hit sdfwb_traceWithNormal(vec3 origin, vec3 direction, out vec3 normal) {
             if (hit.steps >= sdfwb_maxSteps) break;
         } else if (phase == sdfwb_kPhaseRefine) {
             bool keep = sdfwb_refineKeeps(hitValue, SDFWB_SCALED(f));
-            hit.value = keep ? f : SDFWB_UNSCALED(hitValue);
-            if (keep) march.s += hitValue + SDFWB_SCALED(f); // and the second step (sdfwb_refineKeeps)
+            if (keep) {
+                march.s += hitValue;
+                hitValue = SDFWB_SCALED(f);
+                if (++refined < sdfwb_kRefiningSteps) continue; // the next refining step
+            }
+            hit.value = SDFWB_UNSCALED(hitValue);
             hit.t = march.tStart + march.s;
             hit.position = march.entry + march.s * direction;
             steps = sdfwb_normalSteps(hit.position, hit.t);
