@@ -1,7 +1,7 @@
 // Sampling end to end against its two limits, all measured in this run on the same field, pattern
 // and folder:
-//   compute  the same sampler dispatched chunk by chunk with read-back into one reused buffer,
-//            nothing written (what the GL side alone costs);
+//   compute  the same sampler dispatched chunk by chunk into the mapped buffer sets sdfwb's
+//            pipeline uses (the same GL path), nothing written (what the GL side alone costs);
 //   write    the same number of bytes written to a file in the same folder through sdfwb's own
 //            writer (the same I/O path: fallocate, direct I/O for whole blocks, fsync, rename),
 //            in blocks of one chunk's rows (what the disk alone costs);
@@ -55,23 +55,24 @@ template <class M> double median3(M measure) {
     return runs[1];
 }
 
-// Bare compute: every chunk dispatched and read back into the same buffers.
-double computeSeconds(renderer::SampleCompute& compute, const sampling::SamplingJob& job) {
-    std::vector<float> positions(3 * std::size_t(job.chunkSize)), distances(job.chunkSize),
-        gradients(3 * std::size_t(job.chunkSize));
+// Bare compute, through the same GL path as sdfwb: every chunk dispatched into the persistently
+// mapped buffer sets in turn (SampleCompute::runMapped, the layout the format's writer asks for),
+// nothing written.
+double computeSeconds(renderer::SampleCompute& compute, const sampling::SamplingJob& job, renderer::RowLayout layout) {
     renderer::SampleUniforms uniforms;
     uniforms.sampleCount = std::uint32_t(job.count);
     uniforms.seed = job.seed;
     uniforms.gradientStep = job.gradientStep;
     uniforms.surfaceTolerance = job.surfaceTolerance;
     auto start = std::chrono::steady_clock::now();
+    int slot = 0;
     for (std::uint64_t done = 0; done < job.count;) {
         const std::uint32_t count = std::uint32_t(std::min<std::uint64_t>(job.chunkSize, job.count - done));
-        if (auto ok = compute.run(uniforms, std::uint32_t(done), count, positions.data(), distances.data(), gradients.data());
-            !ok) {
-            std::fprintf(stderr, "bench_sample_files: %s\n", ok.error().message.c_str());
+        if (auto rows = compute.runMapped(uniforms, std::uint32_t(done), count, slot, layout); !rows) {
+            std::fprintf(stderr, "bench_sample_files: %s\n", rows.error().message.c_str());
             std::exit(1);
         }
+        slot = (slot + 1) % renderer::SampleCompute::kSlots;
         done += count;
     }
     return seconds(start);
@@ -147,8 +148,10 @@ int main(int argc, char** argv) {
         job.count = n;
         sampling::SamplingJob warm = job;
         warm.count = 1u << 16;
-        computeSeconds(compute, warm); // the driver's code generation, outside every figure
-        const double computeTime = median3([&] { return computeSeconds(compute, job); });
+        computeSeconds(compute, warm, renderer::RowLayout::Separate); // the driver's code generation, outside every figure
+        computeSeconds(compute, warm, renderer::RowLayout::Interleaved);
+        const double computeSeparate = median3([&] { return computeSeconds(compute, job, renderer::RowLayout::Separate); });
+        const double computeInterleaved = median3([&] { return computeSeconds(compute, job, renderer::RowLayout::Interleaved); });
         for (sampling::SampleFormat format :
              {sampling::SampleFormat::Bin, sampling::SampleFormat::Npz, sampling::SampleFormat::Ply}) {
             const fs::path path = folder / (std::string("bench_sample_files.") + sampling::formatName(format));
@@ -175,6 +178,8 @@ int main(int argc, char** argv) {
             std::sort(endToEndRuns, endToEndRuns + 5);
             std::sort(writeRuns, writeRuns + 5);
             const double endToEnd = endToEndRuns[2], writeTime = writeRuns[2];
+            // .ply's writer takes the rows interleaved as the file stores them (the shader writes them so).
+            const double computeTime = format == sampling::SampleFormat::Ply ? computeInterleaved : computeSeparate;
             const double bound = std::max(computeTime, writeTime);
             std::printf("| %.3f | %.3f | %.3f | %.1f | %.2f |\n", computeTime, writeTime, endToEnd, double(n) / endToEnd / 1e6,
                         bound / endToEnd);

@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
     std::printf("| field | sdfwb compute (samples/s) | first dispatch, cold (s) | C++ reference at its best (samples/s) | its "
                 "build, threads | sdfwb / reference | f difference p99 / max | gradient difference p99 / max |\n");
     std::printf("|---|---|---|---|---|---|---|---|\n");
-    std::string triedLines;
+    std::string triedLines, verdicts;
     auto sampler = sampling::findSampler("rand", {});
     for (const Field& field : kFields) {
         const std::size_t fieldN = field.reference == bench::ReferenceField::Mandelbulb ? n / 8 : n;
@@ -173,8 +173,14 @@ int main(int argc, char** argv) {
                     cpu.threads, gpu.median / cpu.rates.median, double(value.p99), double(value.max), double(gradient.p99),
                     double(gradient.max));
         std::fflush(stdout);
+        const double ratio = gpu.median / cpu.rates.median;
+        char verdict[256];
+        std::snprintf(verdict, sizeof verdict, "- %s: sdfwb computes %.2fx as fast as the C++ reference (%s, %d threads): %s\n",
+                      field.name, ratio, cpu.build, cpu.threads, ratio < 1.0 ? "**sdfwb is slower**" : "sdfwb is faster");
+        verdicts += verdict;
         compute.releaseGl();
     }
+    std::printf("\n%s", verdicts.c_str());
     std::printf("\nEvery reference configuration tried (median samples/s; T = threads; the last build of each field's "
                 "values is the one compared):\n\n%s",
                 triedLines.c_str());

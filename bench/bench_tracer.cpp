@@ -310,7 +310,7 @@ void datasetReport(const std::vector<std::string>& names) {
                     "other, the hit distance's change where both hit, and |f| at the hits, in pixel footprints "
                     "(|f| / (pixel angle x t); the hit tolerance is 0.5).\n\n"
                     "| SDF | without (ms) | with (ms) | with / without | steps/pixel without / with | hit changed | "
-                    "|t change| p50 / max (footprints) | |f| p99 without / with (footprints) |\n"
+                    "\\|t change\\| p50 / max (footprints) | \\|f\\| p99 without / with (footprints) |\n"
                     "|---|---|---|---|---|---|---|---|\n");
         for (const std::string& row : coneRows) std::printf("%s\n", row.c_str());
         std::printf("\n");

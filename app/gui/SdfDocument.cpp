@@ -3,6 +3,7 @@
 #include <core/Paths.h>
 #include <renderer/SdfRenderer.h>
 #include <shaders/GlslChecker.h>
+#include <shaders/LoopLimits.h>
 #include <shaders/TracerComposer.h>
 #include <widgets/ViewportWidget.h>
 
@@ -63,6 +64,11 @@ void SdfDocument::startCheck(const QString& text) {
                 if (composed) {
                     auto found = shaders::checkWithGlslang(*composed);
                     diagnostics.insert(diagnostics.end(), found.begin(), found.end());
+                    // Loops the viewport's driver would cut short (llvmpipe: 65535 iterations).
+                    if (!shaders::hasErrors(found)) {
+                        auto loops = shaders::findLongLoops(prepared, *composed, shaders::driverLoopLimit(), "Mesa's llvmpipe");
+                        diagnostics.insert(diagnostics.end(), loops.begin(), loops.end());
+                    }
                 }
             }
             QMetaObject::invokeMethod(

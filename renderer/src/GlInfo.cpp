@@ -1,5 +1,7 @@
 #include <renderer/GlInfo.h>
 
+#include <shaders/LoopLimits.h>
+
 #include <epoxy/gl.h>
 
 namespace sdfwb::renderer {
@@ -33,6 +35,8 @@ GlInfo queryGlInfo() {
         info.computeShaders = count > 0;
     }
     while (glGetError() != GL_NO_ERROR) {}
+    // The driver's loop limit, for the editor's checks (shaders/LoopLimits.h: llvmpipe's 65535).
+    shaders::setDriverLoopLimit(shaders::loopLimitOf(info.renderer));
     return info;
 }
 

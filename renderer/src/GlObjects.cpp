@@ -3,10 +3,13 @@
 #include <core/Log.h>
 #include <renderer/GlInfo.h>
 #include <shaders/DiagnosticParser.h>
+#include <shaders/LoopLimits.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
+#include <mutex>
+#include <set>
 
 #include <string>
 
@@ -74,6 +77,22 @@ CompiledShader compileShader(GLenum type, const shaders::ComposedShader& compose
              std::string("driver rejected the ") + shaders::stageName(composed.stage) + " shader without a message"});
     }
     return result;
+}
+
+std::vector<shaders::Diagnostic> driverLoopWarnings(const shaders::PreparedSdf& sdf, const shaders::ComposedShader& composed) {
+    const char* rendererName = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const std::string name = rendererName ? rendererName : "";
+    const std::uint64_t limit = shaders::loopLimitOf(name);
+    shaders::setDriverLoopLimit(limit);
+    std::vector<shaders::Diagnostic> warnings = shaders::findLongLoops(sdf, composed, limit, "Mesa's llvmpipe");
+    static std::mutex mutex;
+    static std::set<std::string> logged;
+    std::lock_guard lock(mutex);
+    for (const shaders::Diagnostic& warning : warnings) {
+        const std::string text = shaders::formatDiagnostic(warning);
+        if (logged.insert(text).second) log::warning("shaders", text);
+    }
+    return warnings;
 }
 
 } // namespace sdfwb::renderer

@@ -7,6 +7,7 @@
 
 #include <shaders/Diagnostic.h>
 #include <shaders/Parameters.h>
+#include <shaders/SdfSource.h>
 #include <shaders/ShaderComposer.h>
 
 #include <initializer_list>
@@ -82,6 +83,11 @@ struct CompiledShader {
 // Compiles one composed stage (a current context is needed). Failure shows as errors in
 // `diagnostics`, never as a silent empty shader.
 CompiledShader compileShader(GLenum type, const shaders::ComposedShader& composed);
+
+// Warnings for the loops of `composed` that the current context's driver would cut short
+// (shaders/LoopLimits.h: llvmpipe stops every loop after 65535 iterations), each logged once per
+// process; records the driver's limit for the editor's checks.
+std::vector<shaders::Diagnostic> driverLoopWarnings(const shaders::PreparedSdf& sdf, const shaders::ComposedShader& composed);
 
 // Links compiled stages into a program. On failure: an empty program, and the driver's log in `log`.
 // A separable program is one stage of a program pipeline (glUseProgramStages).

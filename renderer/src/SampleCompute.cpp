@@ -143,6 +143,7 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     CompiledShader compiled = compileShader(GL_COMPUTE_SHADER, composed);
     diagnostics.insert(diagnostics.end(), compiled.diagnostics.begin(), compiled.diagnostics.end());
     if (shaders::hasErrors(diagnostics)) return diagnostics;
+    for (shaders::Diagnostic& warning : driverLoopWarnings(sdf, composed)) diagnostics.push_back(std::move(warning));
     std::string log;
     GlProgram program = linkProgram({compiled.shader.id()}, log);
     if (!program) {

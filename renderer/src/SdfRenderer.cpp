@@ -268,6 +268,7 @@ struct SdfRenderer::Impl {
         CompiledShader fs = compileShader(GL_FRAGMENT_SHADER, *fragment);
         diagnostics.insert(diagnostics.end(), fs.diagnostics.begin(), fs.diagnostics.end());
         if (shaders::hasErrors(diagnostics)) return nullptr;
+        for (shaders::Diagnostic& warning : driverLoopWarnings(prepared, *fragment)) diagnostics.push_back(std::move(warning));
 
         std::string log;
         GlProgram program = linkProgram({fs.shader.id()}, log, true);

@@ -47,7 +47,7 @@ TEST_P(GoldenTest, MatchesTheReviewedImage) {
     renderer::ShadingSettings shading;
     shading.mode = *renderer::parseShadingMode(c.mode);
     shading.ambientOcclusion = c.ao;
-    (void)sdfRenderer.setShading(shading);
+    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
     auto diagnostics = sdfRenderer.setSdf(shaders::prepareSdfFile(source, options));
     ASSERT_FALSE(shaders::hasErrors(diagnostics)) << shaders::formatDiagnostic(diagnostics[0]);
     renderer::Image image;

@@ -15,6 +15,7 @@
 #include <shaders/SdfSource.h>
 
 #include "GlTestContext.h"
+#include "common/ExactRays.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
@@ -60,18 +61,6 @@ const Shape kShapes[] = {
      "  return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0); }\n",
      boxField},
 };
-
-// The ray through the centre of pixel (x, row), rows from the top: a pinhole camera looking from
-// `position` at `target`, vertical field of view fovY, square pixels.
-glm::dvec3 rayThrough(const renderer::Camera& camera, int x, int row) {
-    const glm::dvec3 forward = glm::normalize(glm::dvec3(camera.target) - glm::dvec3(camera.position));
-    const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(camera.up)));
-    const glm::dvec3 up = glm::cross(right, forward);
-    const double tanHalf = std::tan(double(camera.fovYDegrees) * M_PI / 360.0);
-    const double u = ((x + 0.5) / kWidth * 2.0 - 1.0) * tanHalf * kWidth / kHeight;
-    const double v = (1.0 - (row + 0.5) / kHeight * 2.0) * tanHalf;
-    return glm::normalize(forward + u * right + v * up);
-}
 
 // The first t where the exact field reaches zero along the ray, or nothing when the ray passes the
 // shape. Sphere tracing an exact field never passes the first intersection; it stops at 1e-12.
@@ -139,7 +128,7 @@ protected:
         for (int row = 0; row < kHeight; ++row)
             for (int x = 0; x < kWidth; ++x) {
                 const auto& pixel = pixels[std::size_t(row) * kWidth + std::size_t(x)];
-                const glm::dvec3 direction = rayThrough(camera, x, row);
+                const glm::dvec3 direction = sdfwb::testing::pixelRay(camera, x, row, kWidth, kHeight);
                 const Exact exact = intersect(shape, origin, direction);
                 if (exact.ambiguous) continue;
                 if (pixel.hit()) {

@@ -146,7 +146,7 @@ TEST_F(RendererTest, StepFactorOtherThanOneIsOneVariantAndItsValueAUniform) {
     renderer::SdfRenderer sdfRenderer;
     renderer::ShadingSettings shading;
     shading.statsOutput = true;
-    (void)sdfRenderer.setShading(shading);
+    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n"))));
     renderer::OffscreenRenderer offscreen;
     auto meanSteps = [&](long& hits) {
@@ -165,11 +165,11 @@ TEST_F(RendererTest, StepFactorOtherThanOneIsOneVariantAndItsValueAUniform) {
     const std::uint64_t built = sdfRenderer.programsBuilt();
     renderer::TraceSettings trace;
     trace.stepFactor = 0.7f;
-    (void)sdfRenderer.setTrace(trace);
+    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
     EXPECT_EQ(sdfRenderer.programsBuilt(), built + 1);
     EXPECT_NE(sdfRenderer.fragmentSource().find("#define SDFWB_STEP_FACTOR"), std::string::npos);
     trace.stepFactor = 0.5f;
-    (void)sdfRenderer.setTrace(trace);
+    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
     EXPECT_EQ(sdfRenderer.programsBuilt(), built + 1) << "another factor is a uniform";
     const double atHalf = meanSteps(hitsAtHalf);
     EXPECT_GT(atHalf, atOne * 1.3) << "half steps take more of them";
@@ -178,7 +178,7 @@ TEST_F(RendererTest, StepFactorOtherThanOneIsOneVariantAndItsValueAUniform) {
     EXPECT_GE(hitsAtHalf, hitsAtOne);
     EXPECT_LE(hitsAtHalf, hitsAtOne + hitsAtOne / 10);
     trace.stepFactor = 1.0f;
-    (void)sdfRenderer.setTrace(trace);
+    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
     EXPECT_EQ(sdfRenderer.programsBuilt(), built + 1) << "back to 1: the first program, from the cache";
     EXPECT_DOUBLE_EQ(meanSteps(hitsBack), atOne);
     sdfRenderer.releaseGl();
@@ -199,7 +199,7 @@ TEST_F(RendererTest, SettleMarchKeepsTheFasterOfTheTwoMarches) {
     renderer::SdfRenderer sdfRenderer;
     renderer::TraceSettings trace;
     trace.cones = renderer::TraceSettings::Cones::Off; // the march alone (ConePassIsKeptWhenItMakesFramesFaster)
-    (void)sdfRenderer.setTrace(trace);
+    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(longSdf)));
     EXPECT_TRUE(sdfRenderer.fusedMarch());
     const renderer::Image fused = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
@@ -218,7 +218,7 @@ TEST_F(RendererTest, SettleMarchKeepsTheFasterOfTheTwoMarches) {
     // Other settings keep the choice (another variant of the same SDF marches separately too).
     renderer::ShadingSettings shading;
     shading.mode = renderer::ShadingMode::Normals;
-    (void)sdfRenderer.setShading(shading);
+    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
     EXPECT_FALSE(sdfRenderer.fusedMarch());
 
     // Slower separately: back to the fused program, from the cache (nothing compiled).
@@ -268,10 +268,10 @@ TEST_F(RendererTest, FusedMarchDrawsWhatTheSeparateMarchDraws) {
                     renderer::SdfRenderer sdfRenderer;
                     renderer::ShadingSettings shading;
                     shading.mode = mode;
-                    (void)sdfRenderer.setShading(shading);
+                    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
                     renderer::TraceSettings trace;
                     trace.overRelaxation = relaxation;
-                    (void)sdfRenderer.setTrace(trace);
+                    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
                     auto diagnostics = sdfRenderer.setSdf(sdf);
                     ASSERT_FALSE(shaders::hasErrors(diagnostics)) << shaders::formatDiagnostic(diagnostics[0]);
                     images[fused] = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
@@ -331,12 +331,12 @@ TEST_F(RendererTest, ConePassFindsTheSameHitsInFewerSteps) {
             renderer::SdfRenderer sdfRenderer;
             renderer::ShadingSettings shading;
             shading.statsOutput = true;
-            (void)sdfRenderer.setShading(shading);
+            EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
             renderer::TraceSettings trace;
             trace.overRelaxation = c.relaxation;
             trace.stepFactor = c.stepFactor;
             trace.cones = cones ? renderer::TraceSettings::Cones::On : renderer::TraceSettings::Cones::Off;
-            (void)sdfRenderer.setTrace(trace);
+            EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
             auto diagnostics = sdfRenderer.setSdf(c.sdf);
             ASSERT_FALSE(shaders::hasErrors(diagnostics)) << shaders::formatDiagnostic(diagnostics[0]);
             EXPECT_EQ(sdfRenderer.conePass(), cones == 1) << label;
@@ -355,7 +355,9 @@ TEST_F(RendererTest, ConePassFindsTheSameHitsInFewerSteps) {
             // Both within the tolerance of the surface: they differ by at most a few footprints.
             if (off.hit() && on.hit() && std::abs(on.t - off.t) > 4.0 * pixelAngle * off.t) ++moved;
         }
-        if (c.fewerSteps) EXPECT_GT(hits, long(stats[0].size() / 50)) << label;
+        if (c.fewerSteps) {
+            EXPECT_GT(hits, long(stats[0].size() / 50)) << label;
+        }
         EXPECT_LE(changed, long(stats[0].size() / 500)) << label << ": pixels whose ray hit in one and not the other";
         EXPECT_LE(moved, hits / 200) << label << ": hits that moved by more than 4 footprints";
         if (c.fewerSteps)
@@ -405,16 +407,16 @@ TEST_F(RendererTest, ConePassIsKeptWhenItMakesFramesFaster) {
 
     renderer::TraceSettings trace;
     trace.cones = renderer::TraceSettings::Cones::Off;
-    (void)sdfRenderer.setTrace(trace);
+    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(sdf)));
     EXPECT_FALSE(sdfRenderer.conePass());
     EXPECT_FALSE(sdfRenderer.settleMarch(40.0));
     EXPECT_FALSE(sdfRenderer.conePass());
     trace.cones = renderer::TraceSettings::Cones::On;
-    (void)sdfRenderer.setTrace(trace);
+    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
     EXPECT_TRUE(sdfRenderer.conePass()) << "on: no trial needed";
     trace.cones = renderer::TraceSettings::Cones::Auto;
-    (void)sdfRenderer.setTrace(trace);
+    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
     EXPECT_FALSE(sdfRenderer.conePass()) << "back to auto: without, until tried";
     EXPECT_FALSE(sdfRenderer.marchSettled());
     EXPECT_TRUE(sdfRenderer.settleMarch(40.0));
@@ -422,14 +424,14 @@ TEST_F(RendererTest, ConePassIsKeptWhenItMakesFramesFaster) {
     EXPECT_FALSE(sdfRenderer.settleMarch(20.0));
     EXPECT_TRUE(sdfRenderer.conePass()) << "tried again and kept";
     trace.cones = renderer::TraceSettings::Cones::On;
-    (void)sdfRenderer.setTrace(trace);
+    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
     renderer::ShadingSettings shading;
     shading.mode = renderer::ShadingMode::Steps;
-    (void)sdfRenderer.setShading(shading);
+    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
     EXPECT_FALSE(sdfRenderer.conePass()) << "the heat map shows each pixel's own steps";
     shading.mode = renderer::ShadingMode::Normals;
     shading.probe = true;
-    (void)sdfRenderer.setShading(shading);
+    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
     EXPECT_FALSE(sdfRenderer.conePass()) << "the march debugger records each pixel's own march";
     sdfRenderer.releaseGl();
 }
@@ -445,10 +447,10 @@ TEST_F(RendererTest, ConePassLeavesTheMatcapInPlace) {
         renderer::SdfRenderer sdfRenderer;
         renderer::ShadingSettings shading;
         shading.mode = renderer::ShadingMode::Matcap;
-        (void)sdfRenderer.setShading(shading);
+        EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
         renderer::TraceSettings trace;
         trace.cones = cones ? renderer::TraceSettings::Cones::On : renderer::TraceSettings::Cones::Off;
-        (void)sdfRenderer.setTrace(trace);
+        EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
         ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(sdf)));
         (void)offscreen.render(sdfRenderer, 60, 40, renderer::Camera{}, 0.0f);
         images[cones] = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
@@ -468,7 +470,7 @@ TEST_F(RendererTest, MatcapShowsOnTheFrameThatLoadsABackgroundImage) {
     renderer::ShadingSettings shading;
     shading.mode = renderer::ShadingMode::Matcap;
     shading.backgroundImage = (fs::path(SDFWB_SOURCE_DIR) / "resources" / "matcaps" / "jade.png").string();
-    (void)sdfRenderer.setShading(shading);
+    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n"))));
     renderer::OffscreenRenderer offscreen;
     const renderer::Image image = offscreen.render(sdfRenderer, 120, 80, renderer::Camera{}, 0.0f);
@@ -568,17 +570,17 @@ TEST_F(RendererTest, BoxProxyDrawsTheFullFramePicture) {
                     renderer::SdfRenderer sdfRenderer;
                     renderer::ShadingSettings shading;
                     shading.mode = renderer::ShadingMode::Gooch;
-                    (void)sdfRenderer.setShading(shading);
+                    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
                     renderer::TraceSettings trace;
                     trace.boxProxy = proxy == 1;
                     trace.cones = variant == 2 ? renderer::TraceSettings::Cones::On : renderer::TraceSettings::Cones::Off;
-                    (void)sdfRenderer.setTrace(trace);
+                    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
                     if (variant == 3) {
                         renderer::CuttingPlane plane;
                         plane.enabled = true;
                         plane.normal = glm::vec3(0.3f, 0.2f, 1.0f);
                         plane.offset = 0.1f;
-                        (void)sdfRenderer.setPlane(plane);
+                        EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setPlane(plane)));
                     }
                     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(sdf)));
                     renderer::FrameStats stats;
@@ -614,7 +616,7 @@ TEST_F(RendererTest, BoxProxyIsNotUsedWhereThePictureReachesPastTheBox) {
         if (setting == 0) shading.backgroundImage = (fs::path(SDFWB_SOURCE_DIR) / "resources" / "matcaps" / "jade.png").string();
         if (setting == 1) shading.markers = {glm::vec3(0.0f)};
         if (setting == 2) shading.mode = renderer::ShadingMode::Steps;
-        (void)sdfRenderer.setShading(shading);
+        EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
         (void)offscreen.render(sdfRenderer, 60, 40, renderer::Camera{}, 0.0f, &stats);
         EXPECT_FALSE(stats.boxProxy) << "setting " << setting;
     }

@@ -13,6 +13,7 @@
 #include <shaders/SdfSource.h>
 
 #include "GlTestContext.h"
+#include "common/ExactRays.h"
 #include "common/SourceSdfs.h"
 
 #include <glm/geometric.hpp>
@@ -84,13 +85,14 @@ protected:
     }
     static void releaseRenderer(renderer::SdfRenderer& r) { r.releaseGl(); }
 
-    // Pixels whose primary ray meets a sphere of `radius` at the origin (the analytic silhouette).
+    // Pixels whose primary ray (built here, common/ExactRays.h) meets a sphere of `radius` at the
+    // origin (the analytic silhouette).
     static int analyticSphereHits(const renderer::Camera& camera, float radius) {
         const glm::dvec3 o(camera.position);
         int hits = 0;
         for (int y = 0; y < kHeight; ++y)
             for (int x = 0; x < kWidth; ++x) {
-                const glm::dvec3 d = renderer::primaryRayDirection(camera, x, y, kWidth, kHeight);
+                const glm::dvec3 d = sdfwb::testing::pixelRay(camera, x, y, kWidth, kHeight);
                 const double b = glm::dot(o, d), c = glm::dot(o, o) - double(radius) * radius;
                 hits += b * b - c > 0.0;
             }

@@ -306,7 +306,8 @@ void ViewportWidget::paintGL() {
     m_lastFrameMilliseconds = stats.cpuMilliseconds;
     m_lastScale = scale;
     if (scale >= 1.0f && !m_interacting) {
-        m_settleFrameMilliseconds = stats.cpuMilliseconds;
+        m_settleFrameMilliseconds =
+            m_settleTiming ? m_settleTiming(fusedMarch(), conePass(), stats.cpuMilliseconds) : stats.cpuMilliseconds;
         m_settleTimer.start();
     }
     if (m_meshOverlay->hasMesh() && m_lastGoodSdf) {

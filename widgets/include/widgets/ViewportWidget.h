@@ -25,6 +25,7 @@
 #include <QTimer>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -85,6 +86,11 @@ public:
     bool conePass() const;
     // Whether those choices are made for the current SDF.
     bool marchSettled() const;
+    // The full-frame time those choices are made from, given the program's march (fused or not),
+    // its cone pass and the time measured: tests set it to decide with known timings instead of a
+    // wall clock's. Unset (the default): the measured time.
+    using SettleTiming = std::function<double(bool fusedMarch, bool conePass, double measuredMilliseconds)>;
+    void setSettleTiming(SettleTiming timing) { m_settleTiming = std::move(timing); }
 
     // Renders one full-quality frame at width x height (screenshots). Empty image without GL.
     renderer::Image renderImage(int width, int height);
@@ -199,6 +205,7 @@ private:
     // A while after a full frame at rest: SdfRenderer::settleMarch() with that frame's time.
     QTimer m_settleTimer;
     double m_settleFrameMilliseconds = 0.0;
+    SettleTiming m_settleTiming;
     bool m_warmProgram = false; // a new program: a small draw takes its code generation first
     bool m_interacting = false;
     float m_lastScale = 1.0f;
