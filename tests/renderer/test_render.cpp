@@ -355,9 +355,7 @@ TEST_F(RendererTest, ConePassFindsTheSameHitsInFewerSteps) {
             // Both within the tolerance of the surface: they differ by at most a few footprints.
             if (off.hit() && on.hit() && std::abs(on.t - off.t) > 4.0 * pixelAngle * off.t) ++moved;
         }
-        if (c.fewerSteps) {
-            EXPECT_GT(hits, long(stats[0].size() / 50)) << label;
-        }
+        if (c.fewerSteps) { EXPECT_GT(hits, long(stats[0].size() / 50)) << label; }
         EXPECT_LE(changed, long(stats[0].size() / 500)) << label << ": pixels whose ray hit in one and not the other";
         EXPECT_LE(moved, hits / 200) << label << ": hits that moved by more than 4 footprints";
         if (c.fewerSteps)
