@@ -14,8 +14,10 @@
 #include <bit>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <unordered_map>
+#include <vector>
 
 namespace sdfwb::meshing {
 namespace {
@@ -188,6 +190,53 @@ struct CellRecord {
     std::uint32_t firstVertex;
     std::uint32_t vertexOfEdge; // 2 bits per local edge: which of the cell's vertices (patches) it feeds
 };
+
+// Cells around a point where the surface meets a grid line (a cone's apex on the axis) can put
+// their vertices at the very same position; the quads between them then hold triangles of zero
+// area. Vertices that share a triangle and a position (bit for bit) become one, the triangles that
+// repeat a vertex then go (each such merge is the collapse of an edge of length zero, which keeps
+// the surface closed and its orientation), and vertices no triangle uses any more are dropped.
+// Meshes without such triangles (nearly all) are left as they are.
+void weldCoincidentVertices(Mesh& mesh) {
+    std::vector<std::uint32_t>& indices = mesh.indices;
+    std::unordered_map<std::uint32_t, std::uint32_t> parent; // union-find over the vertices involved
+    auto find = [&](std::uint32_t v) {
+        for (auto it = parent.find(v); it != parent.end() && it->second != v; it = parent.find(v)) v = it->second;
+        return v;
+    };
+    auto same = [&](std::uint32_t a, std::uint32_t b) {
+        return std::memcmp(&mesh.vertices[a], &mesh.vertices[b], sizeof(glm::vec3)) == 0;
+    };
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3)
+        for (std::size_t e = 0; e < 3; ++e) {
+            const std::uint32_t a = indices[t + e], b = indices[t + (e + 1) % 3];
+            if (a == b || !same(a, b)) continue;
+            const std::uint32_t ra = find(a), rb = find(b);
+            if (ra == rb) continue;
+            parent[std::min(ra, rb)] = std::min(ra, rb);
+            parent[std::max(ra, rb)] = std::min(ra, rb);
+        }
+    if (parent.empty()) return;
+    std::size_t kept = 0;
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+        const std::uint32_t a = find(indices[t]), b = find(indices[t + 1]), c = find(indices[t + 2]);
+        if (a == b || b == c || a == c) continue;
+        indices[kept++] = a;
+        indices[kept++] = b;
+        indices[kept++] = c;
+    }
+    indices.resize(kept);
+    std::vector<std::uint32_t> renumber(mesh.vertices.size(), 0xffffffffu);
+    for (std::uint32_t v : indices) renumber[v] = 0;
+    std::uint32_t next = 0;
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+        if (renumber[v] == 0) {
+            renumber[v] = next;
+            mesh.vertices[next++] = mesh.vertices[v];
+        }
+    mesh.vertices.resize(next);
+    for (std::uint32_t& v : indices) v = renumber[v];
+}
 
 } // namespace
 
@@ -517,6 +566,7 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
         else
             mesh.indices.insert(mesh.indices.end(), {quad[0], quad[1], quad[3], quad[1], quad[2], quad[3]});
     }
+    weldCoincidentVertices(mesh);
     progress(4, 4);
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return std::pair<Mesh, MeshStats>{std::move(mesh), stats};

@@ -1,6 +1,7 @@
 // Dual contouring against the exact field: sharp corners and straight edges on a box (what
-// marching cubes cannot keep), the error's order of convergence on a sphere, closed dataset shapes
-// come out watertight, skipping empty blocks loses nothing, and files read back the same.
+// marching cubes cannot keep), also on a rotated box, the error's order of convergence on a sphere,
+// closed dataset shapes come out closed and consistently oriented, skipping empty blocks loses
+// nothing, files read back the same, and the error measure on meshes whose error is known exactly.
 #include <meshing/Mesh.h>
 
 #include "GlTestContext.h"
@@ -9,10 +10,18 @@
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <map>
+#include <tuple>
 #include <unistd.h>
+#include <unordered_map>
 
 using namespace sdfwb;
 
@@ -44,6 +53,148 @@ const char* kSphere = "float sdf(vec3 p) { return length(p) - 0.6; }";
 float segmentDistance(glm::vec3 p, glm::vec3 a, glm::vec3 b) {
     const float t = std::clamp(glm::dot(p - a, b - a) / glm::dot(b - a, b - a), 0.0f, 1.0f);
     return glm::length(p - (a + t * (b - a)));
+}
+
+glm::dvec3 corner(const meshing::Mesh& mesh, std::size_t triangle, int k) {
+    return glm::dvec3(mesh.vertices[mesh.indices[3 * triangle + std::size_t(k)]]);
+}
+
+// The signed volume the triangles enclose (positive when they face outward).
+double signedVolume(const meshing::Mesh& mesh) {
+    double volume = 0.0;
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t)
+        volume += glm::dot(corner(mesh, t, 0), glm::cross(corner(mesh, t, 1), corner(mesh, t, 2))) / 6.0;
+    return volume;
+}
+
+// A closed, consistently oriented 2-manifold facing outward: every directed edge (a, b) is used by
+// exactly one triangle and its reverse (b, a) by exactly one other, no triangle repeats a vertex
+// or has zero area, and the signed volume is positive.
+::testing::AssertionResult closedAndOutward(const meshing::Mesh& mesh) {
+    if (mesh.indices.empty() || mesh.indices.size() % 3 != 0)
+        return ::testing::AssertionFailure() << mesh.indices.size() << " indices";
+    std::unordered_map<std::uint64_t, std::uint32_t> directed;
+    std::uint64_t repeated = 0, zeroArea = 0;
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const std::uint32_t* v = &mesh.indices[3 * t];
+        if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) ++repeated;
+        if (glm::length(glm::cross(corner(mesh, t, 1) - corner(mesh, t, 0), corner(mesh, t, 2) - corner(mesh, t, 0))) == 0.0)
+            ++zeroArea;
+        for (int e = 0; e < 3; ++e) ++directed[(std::uint64_t(v[e]) << 32) | v[(e + 1) % 3]];
+    }
+    std::uint64_t reused = 0, unpaired = 0;
+    for (const auto& [edge, uses] : directed) {
+        if (uses != 1) ++reused;
+        const auto reverse = directed.find((edge << 32) | (edge >> 32));
+        if (reverse == directed.end() || reverse->second != 1) ++unpaired;
+    }
+    const double volume = signedVolume(mesh);
+    if (repeated || zeroArea || reused || unpaired || !(volume > 0.0))
+        return ::testing::AssertionFailure()
+               << repeated << " triangles repeat a vertex, " << zeroArea << " have zero area, " << reused
+               << " directed edges are used more than once, " << unpaired << " lack their reverse; signed volume " << volume;
+    return ::testing::AssertionSuccess();
+}
+
+// The rotation by `angle` about `axis` (normalised; Rodrigues), and a GLSL box of half-sizes `half`
+// under it: the field is the axis-aligned box's at R^T p.
+glm::dmat3 rotation(glm::dvec3 axis, double angle) {
+    const glm::dvec3 k = glm::normalize(axis);
+    const double c = std::cos(angle), s = std::sin(angle);
+    glm::dmat3 r(c); // glm: r[column][row]
+    const glm::dmat3 cross(0.0, k.z, -k.y, -k.z, 0.0, k.x, k.y, -k.x, 0.0);
+    for (int col = 0; col < 3; ++col)
+        for (int row = 0; row < 3; ++row) r[col][row] += s * cross[col][row] + (1.0 - c) * k[row] * k[col];
+    return r;
+}
+const glm::dmat3 kTilt = rotation({1.0, 2.0, 3.0}, 0.3);
+
+std::string rotatedBoxSource(const glm::dmat3& r, glm::dvec3 half) {
+    // mat3(...) takes columns: R's rows as its columns make R^T.
+    std::string matrix;
+    char number[32];
+    for (int row = 0; row < 3; ++row)
+        for (int col = 0; col < 3; ++col) {
+            std::snprintf(number, sizeof number, "%.9e", r[col][row]);
+            matrix += (matrix.empty() ? "" : ", ") + std::string(number);
+        }
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "float sdf(vec3 p) { vec3 q = abs(mat3(%s) * p) - vec3(%.9e, %.9e, %.9e); "
+                  "return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0); }",
+                  matrix.c_str(), half.x, half.y, half.z);
+    return text;
+}
+
+double boxDistance(glm::dvec3 p, glm::dvec3 half) {
+    const glm::dvec3 q = glm::abs(p) - half;
+    return glm::length(glm::max(q, 0.0)) + std::min(std::max(q.x, std::max(q.y, q.z)), 0.0);
+}
+
+// A box of half-sizes `half` under the rotation r: its 8 corners (corner c = x + 2y + 4z) and 12
+// triangles, counter-clockwise seen from outside.
+meshing::Mesh boxMesh(const glm::dmat3& r, glm::dvec3 half) {
+    meshing::Mesh mesh;
+    for (int c = 0; c < 8; ++c)
+        mesh.vertices.push_back(glm::vec3(r * (half * glm::dvec3((c & 1) ? 1 : -1, (c & 2) ? 1 : -1, (c & 4) ? 1 : -1))));
+    for (int axis = 0; axis < 3; ++axis)
+        for (int side = 0; side < 2; ++side) {
+            const int u = 1 << ((axis + 1) % 3), v = 1 << ((axis + 2) % 3), w = side << axis;
+            // (u, v, axis) is right-handed: 0, u, u + v, v runs counter-clockwise seen from +axis.
+            std::uint32_t quad[4] = {std::uint32_t(w), std::uint32_t(w + u), std::uint32_t(w + u + v), std::uint32_t(w + v)};
+            if (side == 0) std::swap(quad[1], quad[3]);
+            mesh.indices.insert(mesh.indices.end(), {quad[0], quad[1], quad[2], quad[0], quad[2], quad[3]});
+        }
+    return mesh;
+}
+
+// An icosahedron split `levels` times (each triangle into four), its vertices on the sphere of
+// radius `radius` about the origin, counter-clockwise seen from outside.
+meshing::Mesh icosphere(int levels, double radius) {
+    const double g = (1.0 + std::sqrt(5.0)) / 2.0;
+    std::vector<glm::dvec3> points = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+                                      {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
+    for (glm::dvec3& p : points) p = glm::normalize(p);
+    std::vector<std::uint32_t> faces = {0, 11, 5,  0, 5,  1, 0, 1, 7, 0, 7,  10, 0, 10, 11, 1, 5, 9, 5, 11,
+                                        4, 11, 10, 2, 10, 7, 6, 7, 1, 8, 3,  9,  4, 3,  4,  2, 3, 2, 6, 3,
+                                        6, 8,  3,  8, 9,  4, 9, 5, 2, 4, 11, 6,  2, 10, 8,  6, 7, 9, 8, 1};
+    for (int level = 0; level < levels; ++level) {
+        std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> middles;
+        auto middle = [&](std::uint32_t a, std::uint32_t b) {
+            const auto [it, added] = middles.try_emplace({std::min(a, b), std::max(a, b)}, std::uint32_t(points.size()));
+            if (added) points.push_back(glm::normalize(points[a] + points[b]));
+            return it->second;
+        };
+        std::vector<std::uint32_t> finer;
+        for (std::size_t f = 0; f < faces.size(); f += 3) {
+            const std::uint32_t a = faces[f], b = faces[f + 1], c = faces[f + 2];
+            const std::uint32_t ab = middle(a, b), bc = middle(b, c), ca = middle(c, a);
+            finer.insert(finer.end(), {a, ab, ca, b, bc, ab, c, ca, bc, ab, bc, ca});
+        }
+        faces = std::move(finer);
+    }
+    meshing::Mesh mesh;
+    for (const glm::dvec3& p : points) mesh.vertices.push_back(glm::vec3(radius * p));
+    mesh.indices = std::move(faces);
+    return mesh;
+}
+
+// The mesh's triangles as positions, each rotated (keeping its winding) to start at its least
+// vertex, sorted: equal for two meshes with the same triangles, whatever their vertex order.
+std::vector<std::array<float, 9>> canonicalTriangles(const meshing::Mesh& mesh) {
+    auto less = [](const glm::vec3& a, const glm::vec3& b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); };
+    std::vector<std::array<float, 9>> out;
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        glm::vec3 p[3];
+        for (int k = 0; k < 3; ++k) p[k] = mesh.vertices[mesh.indices[3 * t + std::size_t(k)]];
+        const int first = less(p[1], p[0]) ? (less(p[2], p[1]) ? 2 : 1) : (less(p[2], p[0]) ? 2 : 0);
+        std::array<float, 9> row;
+        for (int k = 0; k < 3; ++k)
+            for (int a = 0; a < 3; ++a) row[std::size_t(3 * k + a)] = p[(first + k) % 3][a];
+        out.push_back(row);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
 }
 
 } // namespace
@@ -82,13 +233,9 @@ TEST_F(MeshTest, ABoxKeepsItsCornersAndStraightEdges) {
     EXPECT_GT(edgeVertices, 12 * 30) << "a vertex per cell along each edge (32 cells each)";
     const meshing::Topology topology = meshing::checkTopology(mesh);
     EXPECT_TRUE(topology.watertight()) << topology.boundaryEdges << " boundary, " << topology.nonManifoldEdges << " non-manifold";
+    EXPECT_TRUE(closedAndOutward(mesh));
     // Outward winding: the signed volume is the box's.
-    double volume = 0.0;
-    for (std::size_t f = 0; f < mesh.triangleCount(); ++f)
-        volume += glm::dot(mesh.vertices[mesh.indices[3 * f]],
-                           glm::cross(mesh.vertices[mesh.indices[3 * f + 1]], mesh.vertices[mesh.indices[3 * f + 2]])) /
-                  6.0;
-    EXPECT_NEAR(volume, 1.0, 1e-3);
+    EXPECT_NEAR(signedVolume(mesh), 1.0, 1e-3);
 }
 
 TEST_F(MeshTest, TheSphereErrorFallsAtSecondOrder) {
@@ -118,6 +265,7 @@ TEST_F(MeshTest, ClosedDatasetShapesAreWatertight) {
         const meshing::Topology topology = meshing::checkTopology(mesh);
         EXPECT_EQ(topology.boundaryEdges, 0u) << file;
         EXPECT_EQ(topology.nonManifoldEdges, 0u) << file;
+        EXPECT_TRUE(closedAndOutward(mesh)) << file;
     }
 }
 
@@ -128,6 +276,7 @@ TEST_F(MeshTest, TwoSheetsInOneCellGetAVertexEach) {
     const meshing::Topology topology = meshing::checkTopology(mesh);
     EXPECT_EQ(topology.nonManifoldEdges, 0u);
     EXPECT_EQ(topology.boundaryEdges, 0u);
+    EXPECT_TRUE(closedAndOutward(mesh));
 }
 
 TEST_F(MeshTest, SkippingEmptyBlocksLosesNothing) {
@@ -143,6 +292,17 @@ TEST_F(MeshTest, SkippingEmptyBlocksLosesNothing) {
     EXPECT_LT(skipped->second.pointsEvaluated, all->second.pointsEvaluated / 2);
     ASSERT_EQ(skipped->first.vertices.size(), all->first.vertices.size());
     ASSERT_EQ(skipped->first.indices.size(), all->first.indices.size());
+    // The same triangles, wound alike, at bitwise the same positions: a kept block's points,
+    // crossings and vertices are computed from the same coordinates either way.
+    const auto a = canonicalTriangles(skipped->first), b = canonicalTriangles(all->first);
+    std::size_t differ = 0, first = a.size();
+    float largest = 0.0f;
+    for (std::size_t t = 0; t < a.size(); ++t) {
+        if (std::memcmp(a[t].data(), b[t].data(), sizeof a[t]) == 0) continue;
+        if (differ++ == 0) first = t;
+        for (std::size_t k = 0; k < 9; ++k) largest = std::max(largest, std::abs(a[t][k] - b[t][k]));
+    }
+    EXPECT_EQ(differ, 0u) << "triangles differ, the first at sorted position " << first << ", by up to " << largest;
 }
 
 TEST_F(MeshTest, FilesReadBackTheSameTriangles) {
@@ -157,6 +317,7 @@ TEST_F(MeshTest, FilesReadBackTheSameTriangles) {
         EXPECT_EQ(back->triangleCount(), mesh.triangleCount()) << name;
         EXPECT_EQ(back->vertices.size(), mesh.vertices.size()) << name << " (equal positions merged)";
         EXPECT_TRUE(meshing::checkTopology(*back).watertight()) << name;
+        EXPECT_TRUE(closedAndOutward(*back)) << name;
     }
     auto bad = meshing::writeMesh(folder / "m.xyz", mesh);
     ASSERT_FALSE(bad);
@@ -196,4 +357,147 @@ TEST_F(MeshTest, EvaluationFiguresMatchTheGeometry) {
     ASSERT_TRUE(loose);
     EXPECT_FLOAT_EQ(loose->fscore, 1.0f);
     EXPECT_GT(loose->normalConsistency, 0.999f) << "concentric spheres have parallel normals";
+}
+
+TEST_F(MeshTest, TheErrorOfAnInscribedIcosphereIsItsSag) {
+    // Vertices on the sphere, flat faces inside it: a point p of a face is 0.6 - |p| from the
+    // sphere, most at the foot of the perpendicular from the centre (the face's circumcentre, inside
+    // each of these acute faces), 0.6 - (the plane's distance from the centre): the sag.
+    const shaders::PreparedSdf sphere = source(kSphere);
+    const meshing::Mesh mesh = icosphere(3, 0.6);
+    ASSERT_EQ(mesh.triangleCount(), 1280u);
+    ASSERT_TRUE(closedAndOutward(mesh));
+    // The sag, and the mean and deviation of 0.6 - |p| over the faces by area (each face split
+    // into kSplit^2 triangles, |p| at their centroids).
+    double sag = 0.0, area = 0.0, integral = 0.0, squares = 0.0;
+    constexpr int kSplit = 64;
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const glm::dvec3 a = corner(mesh, t, 0), b = corner(mesh, t, 1), c = corner(mesh, t, 2);
+        const glm::dvec3 normal = glm::normalize(glm::cross(b - a, c - a));
+        const glm::dvec3 foot = glm::dot(normal, a) * normal;
+        for (const auto& [p, q, r] : {std::tuple(a, b, c), std::tuple(b, c, a), std::tuple(c, a, b)})
+            ASSERT_GE(glm::dot(glm::cross(q - p, foot - p), normal), 0.0) << "face " << t << ": the foot lies outside";
+        sag = std::max(sag, 0.6 - glm::dot(normal, a));
+        const double faceArea = 0.5 * glm::length(glm::cross(b - a, c - a)), piece = faceArea / (kSplit * kSplit);
+        area += faceArea;
+        const glm::dvec3 du = (b - a) / double(kSplit), dv = (c - a) / double(kSplit);
+        for (int i = 0; i < kSplit; ++i)
+            for (int j = 0; i + j < kSplit; ++j) {
+                const glm::dvec3 o = a + double(i) * du + double(j) * dv;
+                // The triangle (o, o + du, o + dv), and the one beyond its long edge when in the face.
+                for (int half = 0; half < (i + j < kSplit - 1 ? 2 : 1); ++half) {
+                    const double d = 0.6 - glm::length(o + double(half + 1) * (du + dv) / 3.0);
+                    integral += piece * d;
+                    squares += piece * d * d;
+                }
+            }
+    }
+    const double mean = integral / area, deviation = std::sqrt(squares / area - mean * mean);
+    ASSERT_NEAR(sag, 2.717e-3, 1e-6); // 1 - cos of the largest face's angular circumradius, times 0.6
+
+    meshing::ErrorOptions options; // 100000 points each way
+    auto error = meshing::measureError(sphere, mesh, options);
+    ASSERT_TRUE(error) << error.error().message;
+    const double vertices = double(mesh.vertices.size()), points = double(options.meshPoints);
+    ASSERT_EQ(error->meshPoints, mesh.vertices.size() + options.meshPoints) << "every vertex, then the points on the faces";
+    ASSERT_EQ(error->surfacePoints, options.surfacePoints);
+    // Mesh -> surface: never beyond the sag; the points nearest the circumcentres come within
+    // 1e-5 of it (measured 6.6e-7). The mean is the faces' mean (the vertices add zeros), within
+    // five standard errors of the sampling (7.5e-6; measured 2.2e-6 off).
+    EXPECT_LE(error->meshToSurfaceMax, sag + 1e-6);
+    EXPECT_GE(error->meshToSurfaceMax, sag - 1e-5);
+    EXPECT_NEAR(error->meshToSurfaceMean, mean * points / (vertices + points),
+                5.0 * deviation / std::sqrt(points) * points / (vertices + points));
+    // Surface -> mesh: the same gap seen from the sphere, plus up to 1e-5 as the surface sampler
+    // stops its rays where |f| < 1e-5 (measured: the sag + 6.1e-6; the mean 4.1e-6 above).
+    EXPECT_LE(error->surfaceToMeshMax, sag + 1.1e-5);
+    EXPECT_GE(error->surfaceToMeshMax, sag - 1e-5);
+    EXPECT_NEAR(error->surfaceToMeshMean, mean, 1e-5 + 5.0 * deviation / std::sqrt(points));
+    EXPECT_NEAR(error->hausdorff, sag, 1e-5);
+}
+
+TEST_F(MeshTest, AnIcosphereOffTheSurfaceIsItsOffsetAway) {
+    // Vertices on the sphere of radius 0.62, graded against the one of radius 0.6: the vertices are
+    // 0.02 off, the faces' points 0.02 less the sag (here 1.1e-5, every face within 1.1e-5 of the
+    // circumscribed sphere).
+    const shaders::PreparedSdf sphere = source(kSphere);
+    const meshing::Mesh mesh = icosphere(7, 0.62);
+    ASSERT_TRUE(closedAndOutward(mesh));
+    double sag = 0.0;
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const glm::dvec3 a = corner(mesh, t, 0), b = corner(mesh, t, 1), c = corner(mesh, t, 2);
+        sag = std::max(sag, 0.62 - glm::dot(glm::normalize(glm::cross(b - a, c - a)), a));
+    }
+    ASSERT_LT(sag, 1.2e-5);
+    meshing::ErrorOptions options;
+    auto error = meshing::measureError(sphere, mesh, options);
+    ASSERT_TRUE(error) << error.error().message;
+    // Mesh -> surface: 0.02 at the vertices (measured 4e-8 off), the mean between 0.02 less the sag
+    // and 0.02 (measured 0.02 - 2.7e-6).
+    EXPECT_NEAR(error->meshToSurfaceMax, 0.02, 1e-6);
+    EXPECT_NEAR(error->meshToSurfaceMean, 0.02, 1e-5);
+    EXPECT_GE(error->meshToSurfaceMean, 0.02 - sag - 1e-6);
+    EXPECT_LE(error->meshToSurfaceMean, 0.02 + 1e-6);
+    // Surface -> mesh: the same, less up to 1e-5 as the surface sampler's points stop where
+    // |f| < 1e-5, outside the sphere (measured: the maximum 0.02 - 8.6e-7, the mean 0.02 - 1.27e-5,
+    // the mean sag 7.0e-6 plus the points' mean 5.7e-6 outside).
+    EXPECT_GE(error->surfaceToMeshMax, 0.02 - sag - 1e-5);
+    EXPECT_LE(error->surfaceToMeshMax, 0.02 + 1e-6);
+    EXPECT_GE(error->surfaceToMeshMean, 0.02 - sag - 1e-5);
+    EXPECT_LE(error->surfaceToMeshMean, 0.02 + 1e-6);
+    EXPECT_NEAR(error->hausdorff, 0.02, 1e-6);
+}
+
+TEST_F(MeshTest, AnExactBoxMeshHasNoError) {
+    // A cube's 12 triangles under an irrational rotation, against that rotated cube's exact field.
+    const meshing::Mesh mesh = boxMesh(kTilt, glm::dvec3(0.5));
+    ASSERT_EQ(mesh.triangleCount(), 12u);
+    ASSERT_TRUE(closedAndOutward(mesh));
+    EXPECT_NEAR(signedVolume(mesh), 1.0, 1e-6);
+    meshing::ErrorOptions options;
+    auto error = meshing::measureError(source(rotatedBoxSource(kTilt, glm::dvec3(0.5))), mesh, options);
+    ASSERT_TRUE(error) << error.error().message;
+    // Float rounding on the faces (measured 1.2e-7 at most); from the surface, the sampler's
+    // tolerance (points stop where |f| < 1e-5) and float rounding (measured 1.0034e-5, mean 5.7e-6).
+    EXPECT_LT(error->meshToSurfaceMax, 1e-6);
+    EXPECT_LT(error->meshToSurfaceMean, 1e-7);
+    EXPECT_LT(error->surfaceToMeshMax, 1.1e-5);
+    EXPECT_LT(error->surfaceToMeshMean, 1e-5);
+    EXPECT_LT(error->hausdorff, 1.1e-5);
+    // The same mesh against the unrotated cube is far off (measured 0.178).
+    auto unrotated = meshing::measureError(source(kBox), mesh, options);
+    ASSERT_TRUE(unrotated) << unrotated.error().message;
+    EXPECT_GT(unrotated->hausdorff, 0.1f);
+}
+
+TEST_F(MeshTest, ARotatedBoxKeepsItsCorners) {
+    const glm::dvec3 half(0.45, 0.3, 0.35);
+    const meshing::Mesh mesh = extract(source(rotatedBoxSource(kTilt, half)), 64);
+    ASSERT_GT(mesh.triangleCount(), 1000u);
+    EXPECT_TRUE(closedAndOutward(mesh));
+    EXPECT_NEAR(signedVolume(mesh), 8.0 * half.x * half.y * half.z, 1e-4); // measured 4.3e-5 under
+    // Each corner within 2.5e-3 of a vertex (measured: six within 1e-6, two (-,-,-) and (+,+,+)
+    // 1.45e-3 away, their vertex on the edge).
+    for (int c = 0; c < 8; ++c) {
+        const glm::dvec3 target = kTilt * (half * glm::dvec3((c & 1) ? 1 : -1, (c & 2) ? 1 : -1, (c & 4) ? 1 : -1));
+        double nearest = 1e9;
+        for (const glm::vec3& v : mesh.vertices) nearest = std::min(nearest, glm::length(glm::dvec3(v) - target));
+        EXPECT_LT(nearest, 2.5e-3) << "corner " << c;
+    }
+    // Every vertex on the surface: the exact box's distance, in double.
+    const glm::dmat3 inverse = glm::transpose(kTilt);
+    double worst = 0.0;
+    std::size_t off = 0, worstVertex = 0;
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+        const double d = std::abs(boxDistance(inverse * glm::dvec3(mesh.vertices[v]), half));
+        off += d > 1e-3;
+        if (d > worst) std::tie(worst, worstVertex) = std::tuple(d, v);
+    }
+    // Measured: 4 vertices over 1e-3, the worst 2.10e-3 (7 % of a cell) inside the box near an edge,
+    // with two coordinates on grid planes: clamped into its cell, which the Newton steps (also kept
+    // in the cell) cannot leave. The axis-aligned box above keeps every vertex within 1e-3; off-grid
+    // sharp edges are the work of issue #33, which will tighten this bound.
+    EXPECT_LT(worst, 2.5e-3) << off << " vertices further than 1e-3 from the surface; the furthest, " << worst << " off, at "
+                             << mesh.vertices[worstVertex].x << "," << mesh.vertices[worstVertex].y << ","
+                             << mesh.vertices[worstVertex].z;
 }
