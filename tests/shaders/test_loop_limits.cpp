@@ -76,9 +76,7 @@ TEST(LoopLimits, TripCountsAreCountedAsTheLoopRunsThem) {
     for (const Case& c : cases) {
         const auto found = longLoops(withLoop(c.header));
         EXPECT_EQ(found.size(), c.warnings) << c.header;
-        if (!found.empty()) {
-            EXPECT_EQ(found[0].line, 3) << c.header;
-        }
+        if (!found.empty()) { EXPECT_EQ(found[0].line, 3) << c.header; }
     }
 }
 
