@@ -158,7 +158,9 @@ class TorchNames:
         return torch.clamp(v, lo, hi)
 
 
-# ---- PyTorch written directly: in-place ops, and the forms TorchScript compiles (same formulas) ----
+# ---- PyTorch written directly: in-place ops, and the forms TorchScript compiles (same formulas). TorchScript
+# compiles only code typed as torch.Tensor, not the library-generic versions in make() above, so these
+# restate those formulas with torch names (a repeat on purpose: keep the two in step) ----
 
 def _length(x: torch.Tensor, y: torch.Tensor, z: torch.Tensor) -> torch.Tensor:
     return torch.sqrt(x * x + y * y + z * z)

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -17,6 +18,7 @@
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
+#include <vector>
 
 #include <csignal>
 #include <iterator>
@@ -193,11 +195,43 @@ TEST(ResourceLimits, OutOfMemoryContinuesInSmallerChunksWithTheSameRows) {
     EXPECT_TRUE(continued) << "no address-space limit between 1.0 and 1.4 GB made the big dispatch fail and the run continue";
 }
 
+// The paper's .bin layout (Table 2): uint32 N, then N positions, N distances, N gradients.
+struct BinRows {
+    std::vector<float> positions, distances, gradients;
+};
+BinRows readBin(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::uint32_t n = 0;
+    in.read(reinterpret_cast<char*>(&n), 4);
+    BinRows rows{std::vector<float>(3 * std::size_t(n)), std::vector<float>(n), std::vector<float>(3 * std::size_t(n))};
+    in.read(reinterpret_cast<char*>(rows.positions.data()), std::streamsize(rows.positions.size() * 4));
+    in.read(reinterpret_cast<char*>(rows.distances.data()), std::streamsize(rows.distances.size() * 4));
+    in.read(reinterpret_cast<char*>(rows.gradients.data()), std::streamsize(rows.gradients.size() * 4));
+    EXPECT_TRUE(in.good()) << path;
+    return rows;
+}
+
+float lengthOf(const float* v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
 TEST(BatchSample, PaperFormWritesTheBinLayout) {
     fs::path out = scratch("paper.bin");
     Result r = run("--sample rand 1000 sphere " + out.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(fs::file_size(out), 4u + 28u * 1000u);
+    // The dataset's sphere (radius 0.8): each row's distance is |p| - 0.8 and its gradient p / |p|,
+    // points inside the cube.
+    const BinRows rows = readBin(out);
+    ASSERT_EQ(rows.distances.size(), 1000u);
+    int wrong = 0;
+    for (std::size_t i = 0; i < 1000; ++i) {
+        const float* p = &rows.positions[3 * i];
+        const float* g = &rows.gradients[3 * i];
+        const float radius = lengthOf(p);
+        wrong += !(std::abs(p[0]) <= 1.0f && std::abs(p[1]) <= 1.0f && std::abs(p[2]) <= 1.0f);
+        wrong += !(std::abs(rows.distances[i] - (radius - 0.8f)) < 1e-5f);
+        for (int a = 0; a < 3; ++a) wrong += !(std::abs(g[a] - p[a] / radius) < 2e-3f);
+    }
+    EXPECT_EQ(wrong, 0);
     fs::path noExtension = scratch("paper_output");
     r = run("--sample grid 27 Sphere " + noExtension.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -330,11 +364,31 @@ TEST(BatchForeign, EntryOnEveryCommandAndFlagsInTheReports) {
     fs::path out = scratch("toy.npz");
     Result r = run("--batch sample --sdf " + shadertoy.string() + " --pattern near -n 2000 --output " + out.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
+    const fs::path shapeBin = scratch("toy_shape.bin");
     r = run("--batch sample --sdf " + shadertoy.string() + " --entry shape --time 1 --pattern rand -n 100 --output " +
-            out.string());
+            shapeBin.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    r = run("--batch render --sdf " + shadertoy.string() + " --entry shape --size 64x48 --output " + scratch("toy.png").string());
+    // The rows are shape()'s at t = 1, not map()'s.
+    const BinRows shapeRows = readBin(shapeBin);
+    ASSERT_EQ(shapeRows.distances.size(), 100u);
+    int notShape = 0;
+    for (std::size_t i = 0; i < 100; ++i) {
+        const float expected = std::min(1.0f, 1.9f * (lengthOf(&shapeRows.positions[3 * i]) - 0.4f - 0.05f * std::sin(1.0f)));
+        notShape += !(std::abs(shapeRows.distances[i] - expected) < 1e-4f);
+    }
+    EXPECT_EQ(notShape, 0);
+    // A render with --entry shape draws what a file whose sdf() is shape() draws, not map()'s picture.
+    // (scratch() removes the file it names: each is named once.)
+    const fs::path alone = scratch("shape_alone.glsl"), alonePng = scratch("alone.png"), mapPng = scratch("map.png"),
+                   shapePng = scratch("toy.png");
+    std::ofstream(alone) << "float sdf(vec3 p, float t) { return min(1.0, 1.9 * (length(p) - 0.4 - 0.05 * sin(t))); }\n";
+    ASSERT_EQ(run("--batch render --sdf " + alone.string() + " --size 64x48 --output " + alonePng.string()).exitCode, 0);
+    ASSERT_EQ(run("--batch render --sdf " + shadertoy.string() + " --size 64x48 --output " + mapPng.string()).exitCode, 0);
+    r = run("--batch render --sdf " + shadertoy.string() + " --entry shape --size 64x48 --output " + shapePng.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
+    ASSERT_GT(fs::file_size(shapePng), 100u);
+    EXPECT_EQ(readAll(shapePng), readAll(alonePng)) << "--entry shape did not draw shape()";
+    EXPECT_NE(readAll(shapePng), readAll(mapPng)) << "--entry shape drew map()";
     r = run("--batch animate --sdf " + shadertoy.string() + " --entry shape --size 64x48 --seconds 0.2 --fps 10 --output " +
             scratch("toy.mp4").string());
     ASSERT_EQ(r.exitCode, 0) << r.output;

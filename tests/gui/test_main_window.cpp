@@ -308,6 +308,23 @@ TEST(Viewport, AmbientOcclusionDarkensCreases) {
     QImage occluded = frameOf(window);
     occluded.save(QDir::temp().filePath("sdfwb-gui-ao.png"));
     EXPECT_GT(meanDifference(plain, occluded), 0.2);
+    // Occlusion only darkens (no pixel gets brighter), and it darkens where the ball meets the plate
+    // far more than in the open: the strongest 1 % of the drops is over 5x the median drop.
+    ASSERT_EQ(plain.size(), occluded.size());
+    long brighter = 0;
+    std::vector<int> drops;
+    for (int y = 0; y < plain.height(); ++y)
+        for (int x = 0; x < plain.width(); ++x) {
+            const int before = qGray(plain.pixel(x, y)), after = qGray(occluded.pixel(x, y));
+            if (after > before + 2) ++brighter;
+            if (before != after) drops.push_back(before - after);
+        }
+    ASSERT_GT(drops.size(), std::size_t(1000)) << "AO changed almost nothing";
+    EXPECT_LE(brighter, long(drops.size() / 1000)) << "AO made pixels brighter";
+    std::sort(drops.begin(), drops.end());
+    const int median = drops[drops.size() / 2], strong = drops[drops.size() * 99 / 100];
+    EXPECT_GT(median, 0) << "the typical change is not darker";
+    EXPECT_GT(strong, 5 * median) << "darkening is uniform, not in the crease (median " << median << ", 99th " << strong << ")";
     window.setAmbientOcclusion(false);
 }
 
@@ -690,6 +707,17 @@ TEST(Export, ScreenshotAtAChosenSizeAndAnMp4) {
     ASSERT_TRUE(image.hasValue());
     EXPECT_EQ(image->width, 640);
     EXPECT_EQ(image->height, 400);
+    // The torus is in it: between a twentieth and half of the pixels differ from the background.
+    long drawn = 0;
+    for (int y = 0; y < image->height; ++y)
+        for (int x = 0; x < image->width; ++x) {
+            const std::uint8_t* pixel = image->pixel(x, y);
+            drawn += std::abs(pixel[0] - kBackground.red()) + std::abs(pixel[1] - kBackground.green()) +
+                         std::abs(pixel[2] - kBackground.blue()) >
+                     6;
+        }
+    EXPECT_GT(drawn, 640L * 400 / 20);
+    EXPECT_LT(drawn, 640L * 400 / 2);
 
     window.exports()->setExecutable(SDFWB_BINARY);
     window.exports()->showVideoDialog();
@@ -710,7 +738,12 @@ TEST(Export, ScreenshotAtAChosenSizeAndAnMp4) {
     window.exports()->videoDialog()->findChild<QPushButton*>("start")->click();
     ASSERT_TRUE(waitFor([&] { return done; }, 60000));
     EXPECT_TRUE(ok) << window.exports()->videoDialog()->findChild<QLabel*>("message")->text().toStdString();
-    EXPECT_TRUE(QFile::exists(mp4));
+    // FFmpeg's own reader decodes it: H.264, 160x90, 10 frames (1 s at 10 fps).
+    QProcess probe;
+    probe.start("ffprobe", {"-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+                            "stream=codec_name,width,height,nb_read_frames", "-of", "csv=p=0", mp4});
+    ASSERT_TRUE(probe.waitForFinished(30000));
+    EXPECT_EQ(QString::fromUtf8(probe.readAllStandardOutput()).trimmed(), QString("h264,160,90,10"));
     window.grab().save(QDir::temp().filePath("sdfwb-gui-window.png"));
 }
 

@@ -126,7 +126,7 @@ TEST_F(RendererTest, EveryDatasetShapeRenders) {
     }
 }
 
-TEST(BatchRender, WritesAPngWithoutADisplay) {
+TEST_F(RendererTest, BatchRenderWritesAPngWithoutADisplay) {
     fs::path out = fs::temp_directory_path() / "sdfwb-batch-render.png";
     fs::remove(out);
     std::string command = "env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(SDFWB_BINARY) +
@@ -136,6 +136,12 @@ TEST(BatchRender, WritesAPngWithoutADisplay) {
     ASSERT_TRUE(image.hasValue()) << image.error().message;
     EXPECT_EQ(image->width, 640);
     EXPECT_EQ(image->height, 360);
+    // The torus is drawn: it covers between a twentieth and half of the frame (a blank or a
+    // filled frame fails).
+    const glm::vec3 background = renderer::ShadingSettings{}.background;
+    const long drawn = foreground(*image, background);
+    EXPECT_GT(drawn, 640L * 360 / 20) << "too little of the torus";
+    EXPECT_LT(drawn, 640L * 360 / 2) << "too much: not the torus";
     fs::remove(out);
 }
 
