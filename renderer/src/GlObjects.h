@@ -10,6 +10,9 @@
 #include <shaders/SdfSource.h>
 #include <shaders/ShaderComposer.h>
 
+#include <glm/vec2.hpp>
+
+#include <array>
 #include <initializer_list>
 #include <string>
 #include <utility>
@@ -93,9 +96,22 @@ std::vector<shaders::Diagnostic> driverLoopWarnings(const shaders::PreparedSdf& 
 // A separable program is one stage of a program pipeline (glUseProgramStages).
 GlProgram linkProgram(std::initializer_list<GLuint> shaders, std::string& log, bool separable = false);
 
-// When `program` reads the G3D noise texture (g3d_uniformRandom), makes `texture` once (see
-// NoiseTexture.h) and binds it to shaders::kNoiseTextureUnit. Needs a current context.
-void bindNoiseTextureIfUsed(GLuint program, GlTexture& texture);
+// The textures an SDF's program may read: the G3D noise texture (g3d_uniformRandom) and
+// Shadertoy's iChannel0..3. Each is made on the first draw that reads it.
+struct SdfTextures {
+    GlTexture noise;
+    std::array<GlTexture, shaders::kShadertoyChannels> channels;
+    std::array<std::string, shaders::kShadertoyChannels> channelFiles; // what each holds ("": the noise texels)
+    std::array<glm::vec2, shaders::kShadertoyChannels> channelSizes{};
+    void reset();
+    void release();
+};
+
+// Binds what `program` reads: the noise texture to shaders::kNoiseTextureUnit (see NoiseTexture.h),
+// iChannelN to shaders::kChannelTextureUnit + N, holding the image `files[N]` (rows from the
+// bottom, as Shadertoy shows images; mipmapped) or, when that is empty or unreadable (logged), the
+// noise texels; sets iChannelResolution to the sizes. Needs a current context.
+void bindSdfTextures(GLuint program, SdfTextures& textures, const std::array<std::string, shaders::kShadertoyChannels>& files);
 
 // Sets the SDF's parameter uniforms of the program in use (glUseProgram done); `locate(name)`
 // gives a uniform's location (the tracer's cached lookup, once a frame); a parameter the compiler

@@ -15,7 +15,7 @@ struct MeshOverlay::Impl {
     GlVertexArray meshArray;
     GlBuffer positions, indices;
     OverlayFrame frame;
-    GlTexture noise;
+    SdfTextures textures;
     std::optional<shaders::PreparedSdf> sdf; // the last good one (rebuilt after releaseGl)
     std::uint64_t indexCount = 0;
     std::vector<float> pendingPositions; // kept until a draw has the context (and after releaseGl)
@@ -56,7 +56,7 @@ MeshOverlay::~MeshOverlay() {
     m_impl->mesh.release();
     m_impl->meshArray.release();
     for (auto* name : {&m_impl->positions, &m_impl->indices}) name->release();
-    m_impl->noise.release();
+    m_impl->textures.release();
     m_impl->frame.release();
 }
 
@@ -98,7 +98,7 @@ void MeshOverlay::draw(int width, int height, const Camera& camera, float time,
     glUniform1f(d.location("sdfwb_deviationScale"), scale > 0.0f ? scale : 1e-3f);
     if (GLint location = d.location("sdfwb_time"); location >= 0) glUniform1f(location, time);
     if (GLint location = d.location("g3d_SceneTime"); location >= 0) glUniform1f(location, time);
-    bindNoiseTextureIfUsed(d.mesh.id(), d.noise);
+    bindSdfTextures(d.mesh.id(), d.textures, d.sdf ? d.sdf->channels : decltype(d.sdf->channels){});
     applyParameters(parameters, [&d](const char* name) { return d.location(name); });
     glBindVertexArray(d.meshArray.id());
     glDrawElements(GL_TRIANGLES, GLsizei(d.indexCount), GL_UNSIGNED_INT, nullptr);
@@ -112,7 +112,7 @@ void MeshOverlay::releaseGl() {
     d.mesh.reset();
     d.meshArray.reset();
     for (auto* name : {&d.positions, &d.indices}) name->reset();
-    d.noise.reset();
+    d.textures.reset();
     d.frame.reset();
     d.uploaded = false;
 }

@@ -3,7 +3,11 @@
 #include "GlObjects.h"
 
 #include <core/Hash.h>
+#include <core/Log.h>
+#include <renderer/ImageIO.h>
 #include <shaders/ShaderComposer.h>
+
+#include <algorithm>
 
 namespace sdfwb::renderer {
 
@@ -14,26 +18,84 @@ std::vector<std::uint8_t> noiseTexels() {
     return texels;
 }
 
-void bindNoiseTextureIfUsed(GLuint program, GlTexture& texture) {
-    if (glGetUniformLocation(program, "g3d_uniformRandom") < 0) return;
-    if (!texture) {
-        GLuint id = 0;
-        glGenTextures(1, &id);
-        texture = GlTexture(id);
-        glBindTexture(GL_TEXTURE_2D, id);
-        const std::vector<std::uint8_t> texels = noiseTexels();
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kNoiseTextureSize, kNoiseTextureSize, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                     texels.data());
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 4); // the default, which others sharing the context assume
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-    }
-    glActiveTexture(GLenum(GL_TEXTURE0 + shaders::kNoiseTextureUnit));
+namespace {
+
+// Makes a repeating 2D texture from RGBA8 rows, bottom row first.
+GlTexture makeTexture(int width, int height, const std::uint8_t* texels, bool mipmaps) {
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    GlTexture texture(id);
+    glBindTexture(GL_TEXTURE_2D, id);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4); // the default, which others sharing the context assume
+    if (mipmaps) glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, mipmaps ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    return texture;
+}
+
+GlTexture makeNoiseTexture() {
+    const std::vector<std::uint8_t> texels = noiseTexels();
+    return makeTexture(kNoiseTextureSize, kNoiseTextureSize, texels.data(), false);
+}
+
+void bindUnit(int unit, const GlTexture& texture) {
+    glActiveTexture(GLenum(GL_TEXTURE0 + unit));
     glBindTexture(GL_TEXTURE_2D, texture.id());
     glActiveTexture(GL_TEXTURE0);
+}
+
+} // namespace
+
+void SdfTextures::reset() {
+    noise.reset();
+    for (GlTexture& channel : channels) channel.reset();
+    channelFiles = {};
+}
+
+void SdfTextures::release() {
+    noise.release();
+    for (GlTexture& channel : channels) channel.release();
+    channelFiles = {};
+}
+
+void bindSdfTextures(GLuint program, SdfTextures& textures, const std::array<std::string, shaders::kShadertoyChannels>& files) {
+    if (glGetUniformLocation(program, "g3d_uniformRandom") >= 0) {
+        if (!textures.noise) textures.noise = makeNoiseTexture();
+        bindUnit(shaders::kNoiseTextureUnit, textures.noise);
+    }
+    for (int n = 0; n < shaders::kShadertoyChannels; ++n) {
+        const std::string name = "iChannel" + std::to_string(n);
+        if (glGetUniformLocation(program, name.c_str()) < 0) continue;
+        const std::size_t i = std::size_t(n);
+        if (!textures.channels[i] || textures.channelFiles[i] != files[i]) {
+            textures.channels[i].reset();
+            textures.channelFiles[i] = files[i];
+            textures.channelSizes[i] = glm::vec2(float(kNoiseTextureSize));
+            if (!files[i].empty()) {
+                if (auto image = readImage(files[i])) {
+                    // Shadertoy shows images upright: v = 0 is the image's bottom row.
+                    const std::size_t row = std::size_t(image->width) * 4;
+                    std::vector<std::uint8_t> flipped(image->rgba.size());
+                    for (int y = 0; y < image->height; ++y)
+                        std::copy_n(image->rgba.data() + std::size_t(image->height - 1 - y) * row, row,
+                                    flipped.data() + std::size_t(y) * row);
+                    textures.channels[i] = makeTexture(image->width, image->height, flipped.data(), true);
+                    textures.channelSizes[i] = glm::vec2(float(image->width), float(image->height));
+                } else {
+                    log::warning("render", name + ": " + image.error().message + "; using the noise texture");
+                }
+            }
+            if (!textures.channels[i]) textures.channels[i] = makeNoiseTexture();
+        }
+        bindUnit(shaders::kChannelTextureUnit + n, textures.channels[i]);
+        const std::string resolution = "iChannelResolution[" + std::to_string(n) + "]";
+        if (GLint at = glGetUniformLocation(program, resolution.c_str()); at >= 0)
+            glProgramUniform3f(program, at, textures.channelSizes[i].x, textures.channelSizes[i].y, 1.0f);
+    }
 }
 
 } // namespace sdfwb::renderer

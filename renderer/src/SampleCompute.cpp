@@ -68,7 +68,8 @@ struct SampleCompute::Impl {
     BufferSet slots[kSlots]; // runMapped()
     GlBuffer badRows;        // one uint: the dispatch's rows with a non-finite value
     GlBuffer inputs;         // caller's points (analysis/points.glsl)
-    GlTexture noise;         // g3d_uniformRandom, made when the program reads it
+    SdfTextures textures;    // g3d_uniformRandom and iChannel0..3, made when the program reads them
+    std::array<std::string, shaders::kShadertoyChannels> channels; // the SDF's channel images
     std::string source;
     GLint location(const char* name) const { return glGetUniformLocation(program.id(), name); }
     Expected<void> reserve(BufferSet& set, std::uint32_t count, bool mapped, bool interleaved = false);
@@ -119,7 +120,7 @@ SampleCompute::~SampleCompute() {
     for (BufferSet& set : m_impl->slots) set.release();
     m_impl->badRows.release();
     m_impl->inputs.release();
-    m_impl->noise.release();
+    m_impl->textures.release();
 }
 
 const std::string& SampleCompute::source() const { return m_impl->source; }
@@ -155,6 +156,7 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
                               std::to_string(int(milliseconds)) + " ms");
     m_impl->program = std::move(program);
     m_impl->source = std::move(composed.text);
+    m_impl->channels = sdf.channels;
     return diagnostics;
 }
 
@@ -169,7 +171,7 @@ Expected<std::uint32_t> SampleCompute::Impl::dispatch(const SampleUniforms& unif
     glUniform1ui(location("sdfwb_squareSide"), squareSide(uniforms.sampleCount));
     if (GLint at = location("sdfwb_time"); at >= 0) glUniform1f(at, uniforms.time);
     if (GLint at = location("g3d_SceneTime"); at >= 0) glUniform1f(at, uniforms.time); // declared by the file
-    bindNoiseTextureIfUsed(program.id(), noise);
+    bindSdfTextures(program.id(), textures, channels);
     if (GLint at = location("sdfwb_parameters"); at >= 0) glUniform4fv(at, 4, uniforms.parameters);
     if (GLint at = location("sdfwb_surfaceTolerance"); at >= 0) glUniform1f(at, uniforms.surfaceTolerance);
     if (GLint at = location("sdfwb_tetrahedralGradient"); at >= 0) glUniform1i(at, uniforms.tetrahedralGradient ? 1 : 0);
@@ -274,7 +276,7 @@ void SampleCompute::releaseGl() {
     for (BufferSet& set : m_impl->slots) set.reset();
     m_impl->badRows.reset();
     m_impl->inputs.reset();
-    m_impl->noise.reset();
+    m_impl->textures.reset();
 }
 
 } // namespace sdfwb::renderer

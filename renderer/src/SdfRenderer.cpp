@@ -152,7 +152,7 @@ struct SdfRenderer::Impl {
     std::string empty;
 
     GlTexture matcap;
-    GlTexture noise; // g3d_uniformRandom, made when a program reads it
+    SdfTextures textures; // g3d_uniformRandom and iChannel0..3, made when a program reads them
     std::string matcapName;
     GlTexture background; // ShadingSettings::backgroundImage
     std::string backgroundName;
@@ -360,7 +360,7 @@ SdfRenderer::~SdfRenderer() {
     m_impl->pipeline.release();
     m_impl->matcap.release();
     m_impl->background.release();
-    m_impl->noise.release();
+    m_impl->textures.release();
     m_impl->lowFramebuffer.release();
     m_impl->lowColor.release();
     m_impl->coneStarts.release();
@@ -525,7 +525,8 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
         if (GLint location = v->location("sdfwb_time"); location >= 0) glUniform1f(location, time);
         if (GLint location = v->location("g3d_SceneTime"); location >= 0) glUniform1f(location, time); // declared by the file
         applyParameters(m_parameters, [v](const char* name) { return v->location(name); });
-        bindNoiseTextureIfUsed(v->program.id(), m_impl->noise);
+        bindSdfTextures(v->program.id(), m_impl->textures,
+                        m_impl->sdf ? m_impl->sdf->channels : decltype(m_impl->sdf->channels){});
         if (GLint location = v->location("sdfwb_relaxation"); location >= 0) glUniform1f(location, m_trace.overRelaxation);
         if (m_plane.enabled) {
             glm::vec3 normal = glm::length(m_plane.normal) > 0.0f ? glm::normalize(m_plane.normal) : glm::vec3(0, 0, 1);
@@ -696,7 +697,7 @@ void SdfRenderer::releaseGl() {
     m_impl->vertexProgram.reset();
     m_impl->matcap.reset();
     m_impl->background.reset();
-    m_impl->noise.reset();
+    m_impl->textures.reset();
 }
 
 std::uint64_t SdfRenderer::programsBuilt() const { return m_impl->programsBuilt; }

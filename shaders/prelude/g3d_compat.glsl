@@ -1,5 +1,5 @@
 // Compatibility with SDF files written for the original sdf-explorer (G3D shading dialect), and
-// Shadertoy's iTime.
+// Shadertoy's inputs and GLSL ES idioms (whole Shadertoy shaders open unmodified).
 // The composer defines SDFWB_COMPAT_<symbol> only for symbols the file uses and does not
 // declare itself, so nothing here can collide with a file's own definitions.
 
@@ -70,4 +70,84 @@ float lengthSquared(vec4 v) { return dot(v, v); }
 // unit below by the renderer and the sampler runner.
 #ifdef SDFWB_COMPAT_g3d_uniformRandom
 layout(binding = SDFWB_NOISE_TEXTURE_UNIT) uniform sampler2D g3d_uniformRandom;
+#endif
+
+// Shadertoy's inputs, declared under their Shadertoy names and types when a file (a whole shader
+// pasted from shadertoy.com) uses them without declaring them. The values are fixed, so the
+// field sdfwb traces is the field it samples: a 640 x 360 frame, the mouse never pressed, frame 0
+// at 60 frames a second, a fixed date. The Shadertoy picture (renderer/ShadertoyPicture.h) sets
+// the frame's own values. Time is sdfwb's scene time (iTime above).
+#ifdef SDFWB_COMPAT_iResolution
+uniform vec3 iResolution = vec3(640.0, 360.0, 1.0);
+#endif
+#ifdef SDFWB_COMPAT_iTimeDelta
+uniform float iTimeDelta = 1.0 / 60.0;
+#endif
+#ifdef SDFWB_COMPAT_iFrame
+uniform int iFrame = 0;
+#endif
+#ifdef SDFWB_COMPAT_iFrameRate
+uniform float iFrameRate = 60.0;
+#endif
+#ifdef SDFWB_COMPAT_iMouse
+uniform vec4 iMouse = vec4(0.0);
+#endif
+#ifdef SDFWB_COMPAT_iDate
+uniform vec4 iDate = vec4(2026.0, 0.0, 1.0, 43200.0); // year, month - 1, day, seconds since midnight
+#endif
+#ifdef SDFWB_COMPAT_iSampleRate
+uniform float iSampleRate = 44100.0;
+#endif
+#ifdef SDFWB_COMPAT_iChannelTime
+uniform float iChannelTime[4] = float[4](0.0, 0.0, 0.0, 0.0);
+#endif
+#ifdef SDFWB_COMPAT_iChannelResolution
+uniform vec3 iChannelResolution[4] = vec3[4](vec3(256.0, 256.0, 1.0), vec3(256.0, 256.0, 1.0), vec3(256.0, 256.0, 1.0),
+                                             vec3(256.0, 256.0, 1.0));
+#endif
+// Channels: the G3D noise texels (256 x 256 RGBA of independent uniform values, repeating,
+// linearly filtered, like Shadertoy's "RGBA noise" textures), or an image the user picked
+// (--channel N=FILE, the GUI's Shadertoy channels). Bound to unit SDFWB_CHANNELN_UNIT (GLSL 4.30
+// takes a literal binding, not an expression).
+#ifdef SDFWB_COMPAT_iChannel0
+layout(binding = SDFWB_CHANNEL0_UNIT) uniform sampler2D iChannel0;
+#endif
+#ifdef SDFWB_COMPAT_iChannel1
+layout(binding = SDFWB_CHANNEL1_UNIT) uniform sampler2D iChannel1;
+#endif
+#ifdef SDFWB_COMPAT_iChannel2
+layout(binding = SDFWB_CHANNEL2_UNIT) uniform sampler2D iChannel2;
+#endif
+#ifdef SDFWB_COMPAT_iChannel3
+layout(binding = SDFWB_CHANNEL3_UNIT) uniform sampler2D iChannel3;
+#endif
+// Shadertoy defines this (1 on desktop GPUs) for `#if HW_PERFORMANCE == 0` quality switches.
+#ifdef SDFWB_COMPAT_HW_PERFORMANCE
+#define HW_PERFORMANCE 1
+#endif
+
+// GLSL ES 1.0's texture functions, which Shadertoy still accepts.
+#ifdef SDFWB_COMPAT_texture2D
+#define texture2D texture
+#endif
+#ifdef SDFWB_COMPAT_texture2DLod
+#define texture2DLod textureLod
+#endif
+#ifdef SDFWB_COMPAT_textureCube
+#define textureCube texture
+#endif
+#ifdef SDFWB_COMPAT_textureCubeLod
+#define textureCubeLod textureLod
+#endif
+
+// Derivatives outside a fragment shader (the composer defines these only there): zero, as for a
+// constant. Only uncalled code (a Shadertoy's mainImage) should reach them.
+#ifdef SDFWB_COMPAT_dFdx
+#define dFdx(x) ((x) - (x))
+#endif
+#ifdef SDFWB_COMPAT_dFdy
+#define dFdy(x) ((x) - (x))
+#endif
+#ifdef SDFWB_COMPAT_fwidth
+#define fwidth(x) ((x) - (x))
 #endif

@@ -106,6 +106,7 @@ private:
         static const std::regex includeAny(R"(^\s*#\s*include\b.*$)", kLinearRegex);
         static const std::regex versionLine(R"(^\s*#\s*version\b.*$)", kLinearRegex);
         static const std::regex pragmaOnce(R"(^\s*#\s*pragma\s+once\s*$)", kLinearRegex);
+        static const std::regex extensionLine(R"(^\s*#\s*extension\s+(\w+)\s*:\s*(\w+)\s*$)", kLinearRegex);
 
         bool inBlockComment = false;
         std::vector<std::string_view> lines = splitLines(text);
@@ -127,6 +128,14 @@ private:
                 m_out.text += "\n";
             } else if (directiveAllowed && (std::regex_match(line, versionLine) || std::regex_match(line, pragmaOnce))) {
                 m_out.text += "\n"; // the composer writes #version; #pragma once is handled here
+            } else if (directiveAllowed && std::regex_match(line, match, extensionLine)) {
+                // Directives must precede the composed code; ES extensions are part of core 4.30.
+                const std::string extension = match[1].str();
+                const bool es = extension.rfind("GL_OES_", 0) == 0 || extension.rfind("GL_EXT_", 0) == 0;
+                const std::string directive = "#extension " + extension + " : " + match[2].str();
+                if (!es && std::find(m_out.extensions.begin(), m_out.extensions.end(), directive) == m_out.extensions.end())
+                    m_out.extensions.push_back(directive);
+                m_out.text += "\n";
             } else {
                 m_out.text += line;
                 m_out.text += "\n";

@@ -177,24 +177,42 @@ bool CompatNeeds::usesTimeSymbol() const {
                         [](const std::string& s) { return s == "g3d_SceneTime" || s == "iTime"; }) != symbols.end();
 }
 
+bool CompatNeeds::usesShadertoyChannel() const {
+    return std::find_if(symbols.begin(), symbols.end(), [](const std::string& s) { return s.rfind("iChannel", 0) == 0; }) !=
+           symbols.end();
+}
+
+const std::vector<std::string>& compatCandidates() {
+    static const std::vector<std::string> names = {
+        // The original sdf-explorer's G3D dialect.
+        "pi", "saturate", "lerp", "square", "frac", "lengthSquared", "Point3", "Vector3", "Color3", "Radiance3", "float2",
+        "float3", "float4", "g3d_SceneTime", "g3d_uniformRandom",
+        // Shadertoy's inputs, which its code uses without declaring them.
+        "iTime", "iResolution", "iTimeDelta", "iFrame", "iFrameRate", "iMouse", "iDate", "iSampleRate", "iChannel0", "iChannel1",
+        "iChannel2", "iChannel3", "iChannelTime", "iChannelResolution", "HW_PERFORMANCE",
+        // GLSL ES 1.0 idioms that core GLSL lacks.
+        "texture2D", "texture2DLod", "textureCube", "textureCubeLod",
+        // Derivatives exist in fragment shaders only; elsewhere (the sampler's compute stage) the
+        // composer maps them onto zero (a Shadertoy's mainImage uses them, and it is never called).
+        "dFdx", "dFdy", "fwidth"};
+    return names;
+}
+
 CompatNeeds detectCompatNeeds(const std::string& stripped) {
-    static const char* const candidates[] = {"pi",        "saturate",      "lerp",
-                                             "square",    "frac",          "lengthSquared",
-                                             "Point3",    "Vector3",       "Color3",
-                                             "Radiance3", "float2",        "float3",
-                                             "float4",    "g3d_SceneTime", "g3d_uniformRandom",
-                                             "iTime"}; // Shadertoy's time uniform, which its code uses without declaring
-    // Declared by the file itself: a macro, a variable, a function or a struct of that name.
-    // Compiled once: building 15 regexes per call cost more than the searches.
-    static const std::vector<std::regex> declared = [] {
+    const std::vector<std::string>& candidates = compatCandidates();
+    // Declared by the file itself at file scope: a macro, a global variable or constant, a
+    // uniform, a function or a struct of that name. A local variable or a parameter of the same
+    // name (`vec3 pi = ...` inside one function) does not count: it hides the built-in only in
+    // its own scope, and other functions still use the built-in.
+    // Compiled once: building the regexes per call cost more than the searches.
+    static const std::vector<std::regex> declared = [&candidates] {
         std::vector<std::regex> patterns;
-        for (const char* symbol : candidates) {
-            const std::string name(symbol);
-            patterns.emplace_back("(#\\s*define\\s+" + name +
-                                      "\\b)|(\\b(const\\s+)?(float|int|vec[234]|bool|struct|uniform\\s+\\w+)\\s+" + name +
-                                      "\\s*[=;(\\[{])",
-                                  kLinearRegex);
-        }
+        for (const std::string& name : candidates)
+            patterns.emplace_back(
+                "(#\\s*define\\s+" + name +
+                    "\\b)|(\\b(const\\s+)?(float|int|uint|bool|[iu]?vec[234]|mat[234]|sampler2D|struct|uniform\\s+\\w+)\\s+" +
+                    name + "\\s*[=;(\\[{])",
+                kLinearRegex);
         return patterns;
     }();
     // The text's words (runs of [A-Za-z0-9_], what `\bNAME\b` matches), found in one pass:
@@ -211,11 +229,33 @@ CompatNeeds detectCompatNeeds(const std::string& stripped) {
         words.insert(text.substr(i, end - i));
         i = end;
     }
+    // Brace depth at each byte, made only when some used name has a declaration to place.
+    std::vector<std::uint8_t> depth;
+    auto depthAt = [&](std::size_t at) {
+        if (depth.empty()) {
+            depth.resize(stripped.size() + 1);
+            int level = 0;
+            for (std::size_t i = 0; i < stripped.size(); ++i) {
+                depth[i] = std::uint8_t(std::min(level, 255));
+                if (stripped[i] == '{') ++level;
+                if (stripped[i] == '}' && level > 0) --level;
+            }
+            depth[stripped.size()] = std::uint8_t(std::min(level, 255));
+        }
+        return int(depth[at]);
+    };
     CompatNeeds needs;
-    for (std::size_t i = 0; i < std::size(candidates); ++i) {
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
         if (!words.count(candidates[i])) continue;
-        if (std::regex_search(stripped, declared[i])) continue;
-        needs.symbols.push_back(candidates[i]);
+        bool declaredHere = false;
+        for (auto it = std::sregex_iterator(stripped.begin(), stripped.end(), declared[i]); it != std::sregex_iterator(); ++it) {
+            // A macro is defined wherever it stands; anything else counts at file scope only.
+            if ((*it)[1].matched || depthAt(std::size_t(it->position(0))) == 0) {
+                declaredHere = true;
+                break;
+            }
+        }
+        if (!declaredHere) needs.symbols.push_back(candidates[i]);
     }
     return needs;
 }

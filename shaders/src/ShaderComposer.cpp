@@ -65,14 +65,22 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
     FeatureDefines all = features;
     if (sdf.signature.animated) all["SDFWB_ANIMATED"] = "1";
     if (sdf.usesTime()) all["SDFWB_USES_TIME"] = "1";
-    for (const std::string& symbol : sdf.compat.symbols) all["SDFWB_COMPAT_" + symbol] = "1";
+    for (const std::string& symbol : sdf.compat.symbols) {
+        // Fragment shaders have derivatives; the prelude stands in for them in other stages only.
+        const bool derivative = symbol == "dFdx" || symbol == "dFdy" || symbol == "fwidth";
+        if (!(derivative && stage == Stage::Fragment)) all["SDFWB_COMPAT_" + symbol] = "1";
+    }
     if (all.count("SDFWB_COMPAT_g3d_uniformRandom")) all["SDFWB_NOISE_TEXTURE_UNIT"] = std::to_string(kNoiseTextureUnit);
+    for (int n = 0; n < kShadertoyChannels; ++n)
+        if (all.count("SDFWB_COMPAT_iChannel" + std::to_string(n)))
+            all["SDFWB_CHANNEL" + std::to_string(n) + "_UNIT"] = std::to_string(kChannelTextureUnit + n);
 
     ComposedShader shader;
     shader.stage = stage;
     // The resolved SDF text numbers its files from 0 with #line directives; keep those indices.
     shader.map = sdf.source.map;
     shader.text = kVersionLine;
+    for (const std::string& extension : sdf.source.extensions) shader.text += extension + "\n";
     appendDefines(shader, all, sdf.usesTime());
     if (sdf.compat.any()) {
         auto compat = builtinShader("prelude/g3d_compat.glsl");

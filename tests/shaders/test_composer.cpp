@@ -292,3 +292,54 @@ TEST(BuiltinShaders, EveryNameTheWorkbenchDeclaresIsPrefixed) {
     }
     EXPECT_GT(names, 80) << "the pattern stopped finding declarations";
 }
+
+// Issue 32, point 1: a whole Shadertoy shader as pasted (`#version 300 es`, precision lines, an
+// ES extension, undeclared inputs, texture2D, derivatives in mainImage, its own ray caster)
+// compiles unmodified in the tracer's fragment stage and in the sampler's compute stage, where
+// derivatives do not exist; mainImage is never called.
+TEST(Composer, WholeShadertoyShaderCompilesInEveryStage) {
+    const std::string text =
+        "#version 300 es\n"
+        "#extension GL_OES_standard_derivatives : enable\n"
+        "precision highp float;\nprecision highp int;\n"
+        "vec2 map(in vec3 pos) {\n"
+        "  float n = texture(iChannel0, pos.xz).x + texture2DLod(iChannel3, pos.xy, 0.0).y;\n"
+        "  return vec2(length(pos) - 0.5 + 0.001 * n + 0.01 * sin(iTime), 1.0);\n}\n"
+        "float castRay(vec3 ro, vec3 rd) { float t = 0.0;\n"
+        "  for (int i = 0; i < 64; i++) { float h = map(ro + t * rd).x; if (h < 1e-4) break; t += h; }\n"
+        "  return t; }\n"
+        "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+        "  vec2 p = (2.0 * fragCoord - iResolution.xy) / iResolution.y + iMouse.xy / iResolution.xy;\n"
+        "  float t = castRay(vec3(0.0, 0.0, 3.0), normalize(vec3(p, -2.0)));\n"
+        "  vec3 col = texture2D(iChannel1, p).rgb * fwidth(p.x) + dFdx(p.y) + dFdy(t) + float(iFrame) * iTimeDelta;\n"
+        "  fragColor = vec4(col + iDate.xyz * 0.0 + iChannelTime[0] + iChannelResolution[2] + iFrameRate + iSampleRate, 1.0);\n"
+        "}\n";
+    PreparedSdf sdf = prepare(text);
+    ASSERT_TRUE(sdf.ok());
+    EXPECT_EQ(sdf.signature.entry, "map");
+    EXPECT_TRUE(sdf.source.extensions.empty()) << "an ES extension is part of core GLSL 4.30";
+    auto tracer = composeTracer(sdf, TracerFeatures{});
+    ASSERT_TRUE(tracer.hasValue());
+    EXPECT_EQ(tracer->text.rfind("#version 430 core\n", 0), 0u);
+    EXPECT_EQ(tracer->text.find("#version 300"), std::string::npos);
+    EXPECT_EQ(tracer->text.find("#define SDFWB_COMPAT_fwidth"), std::string::npos) << "fragment shaders have derivatives";
+    auto diagnostics = checkWithGlslang(*tracer);
+    EXPECT_FALSE(hasErrors(diagnostics)) << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
+    auto sampler = builtinPiece("samplers/rand.glsl");
+    auto common = builtinPiece("sampling/common.glsl");
+    auto bindings = builtinPiece("sampling/bindings.glsl");
+    auto main = builtinPiece("sampling/sample.comp");
+    ASSERT_TRUE(sampler.hasValue() && common.hasValue() && bindings.hasValue() && main.hasValue());
+    ComposedShader compute = composeSdfShader(sdf, Stage::Compute, {*bindings, *common, *sampler, *main}, {});
+    EXPECT_NE(compute.text.find("#define SDFWB_COMPAT_fwidth 1"), std::string::npos);
+    diagnostics = checkWithGlslang(compute);
+    EXPECT_FALSE(hasErrors(diagnostics)) << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
+
+    // A desktop extension the code asks for is kept, ahead of every other line but #version.
+    PreparedSdf withExtension =
+        prepare("#extension GL_ARB_gpu_shader_fp64 : enable\nfloat sdf(vec3 p) { return length(p) - 0.5; }\n");
+    auto composed = composeTracer(withExtension, TracerFeatures{});
+    ASSERT_TRUE(composed.hasValue());
+    EXPECT_EQ(composed->text.rfind("#version 430 core\n#extension GL_ARB_gpu_shader_fp64 : enable\n", 0), 0u);
+    EXPECT_FALSE(hasErrors(checkWithGlslang(*composed)));
+}

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -108,4 +109,44 @@ TEST(CompatNeeds, OnlySymbolsUsedAndNotDeclared) {
     EXPECT_FALSE(detectCompatNeeds("const float pi = 3.14; float sdf(vec3 p) { return pi; }").any());
     EXPECT_FALSE(detectCompatNeeds("#define saturate(x) clamp(x, 0., 1.)\nfloat sdf(vec3 p) { return saturate(p.x); }").any());
     EXPECT_FALSE(detectCompatNeeds("float sdf(vec3 p) { return length(p) - 0.5; }").any());
+}
+
+// Issue 32, point 2: a local variable or a parameter named like a built-in hides it in its own
+// scope only; a declaration at file scope (or a macro anywhere) is the file's own.
+TEST(CompatNeeds, LocalDeclarationsDoNotTurnTheBuiltInOff) {
+    const std::string g3d = "vec3 tint(vec3 p) { vec3 pi = p * 2.0; return pi; }\n"
+                            "float bend(float pi) { return pi * 0.5; }\n"
+                            "float sdf(vec3 p) { return length(tint(p)) - 0.1 * pi; }\n";
+    EXPECT_EQ(detectCompatNeeds(g3d).symbols, std::vector<std::string>{"pi"});
+    EXPECT_FALSE(detectCompatNeeds("float pi = 3.0;\n" + g3d).any()) << "a global of that name is the file's";
+    EXPECT_FALSE(detectCompatNeeds("float f() {\n#define pi 3.0\nreturn pi; }\n" + g3d).any()) << "macros have no scope";
+    EXPECT_FALSE(
+        detectCompatNeeds("struct S { float x; };\nfloat pi(float x) { return x; }\nfloat sdf(vec3 p) { return pi(p.x); }").any())
+        << "a function of that name is the file's";
+
+    const std::string shadertoy = "float wobble() { float iTime = 2.0; return sin(iTime); }\n"
+                                  "vec2 flat2(vec3 iMouse) { return iMouse.xy; }\n"
+                                  "float sdf(vec3 p) { return length(p) - 0.5 + 0.1 * sin(iTime) + 0.01 * iMouse.x; }\n";
+    EXPECT_EQ(detectCompatNeeds(shadertoy).symbols, (std::vector<std::string>{"iTime", "iMouse"}));
+    EXPECT_EQ(detectCompatNeeds("uniform vec4 iMouse;\n" + shadertoy).symbols, std::vector<std::string>{"iTime"});
+    EXPECT_EQ(
+        detectCompatNeeds("uniform vec3 iChannelResolution[4];\nfloat sdf(vec3 p) { return iChannelResolution[0].x; }").symbols,
+        std::vector<std::string>{});
+}
+
+// Whole Shadertoy shaders: every input Shadertoy gives a single pass is provided when used and
+// not declared; GLSL ES's texture2D too.
+TEST(CompatNeeds, ShadertoyInputsAreFoundByUse) {
+    const std::string text = "vec2 map(vec3 p) { return vec2(length(p) - 0.5, 1.0); }\n"
+                             "void mainImage(out vec4 c, in vec2 f) {\n"
+                             "  c = texture2D(iChannel2, f / iResolution.xy) + iMouse + iDate + float(iFrame) + iTimeDelta\n"
+                             "    + iFrameRate + iSampleRate + iChannelTime[1] + iChannelResolution[3].x + iTime + fwidth(f.x);\n"
+                             "}\n";
+    auto needs = detectCompatNeeds(stripComments(text));
+    for (const char* name : {"iResolution", "iTime", "iTimeDelta", "iFrame", "iFrameRate", "iMouse", "iDate", "iSampleRate",
+                             "iChannel2", "iChannelTime", "iChannelResolution", "texture2D", "fwidth"})
+        EXPECT_NE(std::find(needs.symbols.begin(), needs.symbols.end(), name), needs.symbols.end()) << name;
+    EXPECT_EQ(std::find(needs.symbols.begin(), needs.symbols.end(), "iChannel0"), needs.symbols.end());
+    EXPECT_TRUE(needs.usesTimeSymbol());
+    EXPECT_TRUE(needs.usesShadertoyChannel());
 }

@@ -6,6 +6,7 @@
 #include <shaders/IncludeResolver.h>
 #include <shaders/Parameters.h>
 
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -25,13 +26,22 @@ struct SdfSignature {
 
 enum class EntrySource { Default, Requested, Metadata, Convention };
 
-// Symbols of the original sdf-explorer's G3D dialect that the text uses without declaring them.
+// Shadertoy's texture inputs iChannel0..3.
+constexpr int kShadertoyChannels = 4;
+
+// Names the text uses without declaring them at file scope that sdfwb provides: the original
+// sdf-explorer's G3D dialect, Shadertoy's inputs (iTime, iResolution, iMouse, iChannel0..3, ...),
+// GLSL ES's texture2D, and derivatives outside fragment shaders (compatCandidates() lists them).
 // Each becomes a `#define SDFWB_COMPAT_<NAME>` that selects a section of prelude/g3d_compat.glsl.
 struct CompatNeeds {
-    std::vector<std::string> symbols; // e.g. "pi", "saturate", "float3", "g3d_SceneTime"
+    std::vector<std::string> symbols; // e.g. "pi", "saturate", "float3", "g3d_SceneTime", "iMouse"
     bool any() const { return !symbols.empty(); }
-    bool usesTimeSymbol() const; // g3d_SceneTime or Shadertoy's iTime
+    bool usesTimeSymbol() const;       // g3d_SceneTime or Shadertoy's iTime
+    bool usesShadertoyChannel() const; // iChannel0..3
 };
+
+// Every name detectCompatNeeds() looks for, in the order it reports them.
+const std::vector<std::string>& compatCandidates();
 
 struct PreparedSdf {
     ResolvedSource source;
@@ -44,6 +54,9 @@ struct PreparedSdf {
     std::vector<std::string> macros;
     // The root file's annotated uniforms (Parameters.h); their problems are in `diagnostics`.
     std::vector<Parameter> parameters;
+    // Images for Shadertoy's iChannel0..3 (--channel N=FILE, the GUI's channel pickers); an empty
+    // one reads the noise texels (see prelude/g3d_compat.glsl).
+    std::array<std::string, kShadertoyChannels> channels;
 
     bool ok() const { return !hasErrors(diagnostics); }
     // Needs a time value each frame: sdf(vec3, float) or the G3D scene time uniform.

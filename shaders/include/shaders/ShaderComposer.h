@@ -24,6 +24,8 @@ enum class Stage { Vertex, Fragment, Compute };
 // Texture unit of the G3D noise texture g3d_uniformRandom (SDFWB_NOISE_TEXTURE_UNIT in GLSL); the
 // matcap uses unit 0.
 constexpr int kNoiseTextureUnit = 7;
+// Texture unit of Shadertoy's iChannel0; iChannel1..3 follow it (SDFWB_CHANNEL0_UNIT.. in GLSL).
+constexpr int kChannelTextureUnit = 8;
 
 // Feature switches, written as `#define NAME VALUE` in name order (so equal sets give equal text).
 using FeatureDefines = std::map<std::string, std::string>;
