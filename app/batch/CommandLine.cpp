@@ -166,6 +166,24 @@ void addParameterOption(CLI::App& app, const std::string& name, std::vector<shad
 void addSdfOptions(CLI::App& app, jobs::SdfInput& input) {
     app.add_option("--sdf", input.sdf, "dataset name or path to a .glsl file")->required();
     addEntryOption(app, input.entry);
+    app.add_option_function<std::vector<std::string>>(
+           "--channel",
+           [&input](const std::vector<std::string>& texts) {
+               input.channels.clear();
+               for (const std::string& text : texts) {
+                   const std::size_t n = std::size_t(text[0] - '0');
+                   if (input.channels.size() <= n) input.channels.resize(n + 1);
+                   input.channels[n] = text.substr(2);
+               }
+           },
+           "N=FILE: an image for a Shadertoy's iChannelN (N = 0..3; repeatable; default: a 256x256 RGBA noise texture)")
+        ->check(CLI::Validator(
+            [](std::string& text) -> std::string {
+                if (text.size() < 3 || text[0] < '0' || text[0] > '3' || text[1] != '=')
+                    return "expected N=FILE with N from 0 to 3, got '" + text + "'";
+                return {};
+            },
+            "N=FILE"));
     addParameterOption(app, "--param", input.params,
                        "NAME=VALUE: a value for a parameter the SDF declares (vectors as x,y,z, bools true/false; "
                        "repeatable; `--batch params` lists them)");
@@ -386,6 +404,9 @@ int runRenderCommand(const Arguments& arguments, Mode mode) {
     FrameOptions options;
     addFrameOptions(app, request.frame, options);
     app.add_option("--output", request.output, "image file: .png, .jpg or .exr")->required();
+    app.add_flag("--shadertoy-picture", request.shadertoyPicture,
+                 "the file's own picture: a whole Shadertoy shader's mainImage at --size and --time (iMouse 0, iFrame 0) "
+                 "instead of sdfwb's tracer");
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch render", arguments)) return *exit;
     if (auto exit = finishFrameOptions(request.frame, options)) return *exit;

@@ -25,6 +25,7 @@ template <class V> void fields(V& v, SdfInput& s) {
     v("entry", s.entry);
     v("source", s.source);
     v("params", s.params);
+    v("channels", s.channels);
 }
 
 template <class V> void fields(V& v, renderer::ShadingSettings& s) {
@@ -82,6 +83,7 @@ template <class V> void fields(V& v, FrameRequest& f) {
 template <class V> void fields(V& v, RenderRequest& r) {
     fields(v, r.frame);
     v("output", r.output);
+    v("shadertoy_picture", r.shadertoyPicture);
 }
 
 template <class V> void fields(V& v, AnimateRequest& r) {

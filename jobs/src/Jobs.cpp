@@ -71,6 +71,16 @@ std::optional<JobError> checkSdf(const SdfInput& input) {
         if (lower == "main" || lower.rfind("gl_", 0) == 0 || lower.rfind("sdfwb_", 0) == 0)
             return usage("--entry: '" + input.entry + "' is reserved (main, gl_*, sdfwb_*): name your own function");
     }
+    if (input.channels.size() > std::size_t(shaders::kShadertoyChannels))
+        return usage("--channel: Shadertoy has iChannel0 to iChannel3, got " + std::to_string(input.channels.size()) +
+                     " channels");
+    for (std::size_t n = 0; n < input.channels.size(); ++n) {
+        if (input.channels[n].empty()) continue;
+        const std::string what = "--channel " + std::to_string(n) + "=" + input.channels[n] + ": ";
+        std::error_code ec;
+        if (!fs::is_regular_file(input.channels[n], ec)) return usage(what + "no such file");
+        if (auto image = renderer::readImage(input.channels[n]); !image) return usage(what + image.error().message);
+    }
     for (const shaders::ParameterValue& p : input.params) {
         // The text form checks the name and the values (1 to 4 finite numbers).
         if (auto ok = shaders::parseParameterValue(shaders::formatParameterValue(p)); !ok || !(*ok == p))
@@ -158,6 +168,7 @@ JobResult<OpenedSdf> openSdf(const SdfInput& input, const std::string& what) {
         sdf = shaders::prepareSdfFile(*path, options, input.entry);
     }
     const std::string label = path->empty() ? std::string("<source>") : path->string();
+    for (std::size_t n = 0; n < input.channels.size() && n < sdf.channels.size(); ++n) sdf.channels[n] = input.channels[n];
     if (!sdf.ok())
         return JobError{Failure::Work, what + ": " + label + " has errors" + (what == "audit" ? "" : "; nothing written"),
                         sdf.diagnostics};

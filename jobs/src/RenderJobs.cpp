@@ -9,6 +9,7 @@
 #include <renderer/ImageIO.h>
 #include <renderer/OffscreenRenderer.h>
 #include <renderer/SdfRenderer.h>
+#include <renderer/ShadertoyPicture.h>
 #include <renderer/VideoWriter.h>
 
 #include <glm/geometric.hpp>
@@ -105,10 +106,39 @@ JobResult<RenderReport> run(const RenderRequest& request, const ProgressSink&) {
     RenderReport report;
     report.warnings = viewWarnings(request.frame);
     report.warnings.insert(report.warnings.end(), sdf->warnings.begin(), sdf->warnings.end());
+    const FrameRequest& frame = request.frame;
+    if (request.shadertoyPicture) {
+        // The author's picture: one 8-bit frame from the file's mainImage.
+        renderer::ShadertoyPicture picture;
+        picture.setParameters(sdf->parameters);
+        auto diagnostics = picture.setSdf(sdf->prepared);
+        if (shaders::hasErrors(diagnostics))
+            return JobError{Failure::Work, "render: " + sdf->label + " has no Shadertoy picture to draw; nothing written",
+                            diagnostics};
+        const auto drawStart = Clock::now();
+        renderer::ShadertoyInputs inputs;
+        inputs.time = frame.time;
+        renderer::Image image = [&] {
+            renderer::OffscreenRenderer offscreen;
+            return offscreen.renderPicture(picture, frame.width, frame.height, inputs);
+        }();
+        report.frameMilliseconds = secondsSince(drawStart) * 1e3;
+        picture.releaseGl();
+        if (auto written = renderer::writeImage(request.output, image); !written)
+            return JobError{Failure::Work, written.error().message, {}};
+        report.output = request.output;
+        report.sdf = sdf->label;
+        report.entry = "mainImage";
+        report.width = frame.width;
+        report.height = frame.height;
+        report.shading = "shadertoy picture";
+        report.glRenderer = renderer::queryGlInfo().renderer;
+        report.seconds = secondsSince(start);
+        return report;
+    }
     renderer::SdfRenderer tracer;
     if (auto error = setUp(tracer, request.frame, *sdf, "render")) return *error;
     renderer::FrameStats stats;
-    const FrameRequest& frame = request.frame;
     const std::string label = frame.overlay ? overlayText(frame, *sdf, report.warnings) : std::string();
     // High-dynamic-range files get the float frame (highlights and backgrounds above 1 kept).
     // One frame (8-bit or float), labelled and written.

@@ -78,6 +78,16 @@ Image OffscreenRenderer::render(SdfRenderer& renderer, int width, int height, co
     return image;
 }
 
+Image OffscreenRenderer::renderPicture(ShadertoyPicture& picture, int width, int height, const ShadertoyInputs& inputs) {
+    m_impl->ensureSize(width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, m_impl->framebuffer.id());
+    picture.render(width, height, inputs);
+    glFinish();
+    Image image{width, height, readTopDown<std::uint8_t>(width, height, GL_UNSIGNED_BYTE)};
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return image;
+}
+
 FloatImage OffscreenRenderer::renderFloat(SdfRenderer& renderer, int width, int height, const Camera& camera, float time,
                                           FrameStats* stats) {
     m_impl->ensureFloatSize(width, height);

@@ -305,6 +305,9 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
     std::string stripped = stripComments(prepared.source.text);
     prepared.compat = detectCompatNeeds(stripped);
     prepared.macros = definedMacros(stripped);
+    static const std::regex mainImage(
+        R"(\bvoid\s+mainImage\s*\(\s*out\s+vec4\s+\w+\s*,\s*(?:in\s+|const\s+)*vec2\s+\w+\s*\)\s*\{)", kLinearRegex);
+    prepared.shadertoyMainImage = stripped.find("mainImage") != std::string::npos && std::regex_search(stripped, mainImage);
     std::string chosen = entry;
     prepared.entrySource = EntrySource::Requested;
     if (chosen.empty()) {

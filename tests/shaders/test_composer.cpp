@@ -177,6 +177,18 @@ TEST(BuiltinShaders, EveryEmbeddedFileCompilesWithGlslangInItsStage) {
         auto diagnostics = checkWithGlslang(composeSdfShader(g3d, Stage::Fragment, {*piece}, {}));
         EXPECT_FALSE(hasErrors(diagnostics)) << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
     }
+    {
+        // A whole Shadertoy shader's own picture: its mainImage, called by the picture stage.
+        PreparedSdf shadertoy =
+            prepare("float map(vec3 p) { return length(p) - 0.5; }\n"
+                    "void mainImage(out vec4 c, in vec2 f) { c = vec4(f / iResolution.xy, map(vec3(iTime)), 1.0); }\n");
+        ASSERT_TRUE(shadertoy.shadertoyMainImage);
+        auto piece = builtinPiece("shadertoy/picture.frag");
+        ASSERT_TRUE(piece.hasValue());
+        auto diagnostics = checkWithGlslang(composeSdfShader(shadertoy, Stage::Fragment, {*piece}, {}));
+        EXPECT_FALSE(hasErrors(diagnostics)) << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
+        covered.insert("shadertoy/picture.frag");
+    }
     // The compat prelude is composed when an SDF needs it (tested above); everything else must be
     // reached by one of the stages here, so a new built-in file cannot go unchecked.
     covered.insert("prelude/g3d_compat.glsl");

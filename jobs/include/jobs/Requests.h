@@ -26,6 +26,9 @@ struct SdfInput {
     std::string source; // GLSL text to use instead of reading `sdf`
     // Values for the SDF's declared parameters (--param NAME=VALUE); the others keep their defaults.
     std::vector<shaders::ParameterValue> params;
+    // Images for a Shadertoy's iChannel0..3 (--channel N=FILE): entry N, "" or missing for the
+    // noise texture.
+    std::vector<std::string> channels;
     bool operator==(const SdfInput&) const = default;
 };
 
@@ -55,6 +58,9 @@ struct FrameRequest {
 struct RenderRequest {
     FrameRequest frame;
     std::string output; // .png, .jpg or .exr
+    // The file's own Shadertoy picture (its mainImage at the frame's size and time, the mouse
+    // never pressed) instead of sdfwb's tracer; the camera, shading and trace settings are unused.
+    bool shadertoyPicture = false;
     bool operator==(const RenderRequest&) const = default;
 };
 

@@ -5,6 +5,7 @@
 #include <renderer/Camera.h>
 #include <renderer/Image.h>
 #include <renderer/SdfRenderer.h>
+#include <renderer/ShadertoyPicture.h>
 
 #include <glm/vec3.hpp>
 
@@ -25,6 +26,9 @@ public:
     // pixels and stretches them, as the viewport does while the camera moves.
     Image render(SdfRenderer& renderer, int width, int height, const Camera& camera, float time, FrameStats* stats = nullptr,
                  float scale = 1.0f);
+
+    // A whole Shadertoy shader's own picture (its mainImage) at width x height, top row first.
+    Image renderPicture(ShadertoyPicture& picture, int width, int height, const ShadertoyInputs& inputs);
 
     // The same frame in floating point (an RGBA32F target): what the shader wrote, values above 1
     // included, for high-dynamic-range files.

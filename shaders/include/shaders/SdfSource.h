@@ -57,6 +57,9 @@ struct PreparedSdf {
     // Images for Shadertoy's iChannel0..3 (--channel N=FILE, the GUI's channel pickers); an empty
     // one reads the noise texels (see prelude/g3d_compat.glsl).
     std::array<std::string, kShadertoyChannels> channels;
+    // The file defines Shadertoy's `void mainImage(out vec4, in vec2)`: a whole shader, whose own
+    // picture renderer/ShadertoyPicture.h can draw.
+    bool shadertoyMainImage = false;
 
     bool ok() const { return !hasErrors(diagnostics); }
     // Needs a time value each frame: sdf(vec3, float) or the G3D scene time uniform.
