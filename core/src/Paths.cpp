@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <system_error>
 
+#include <dlfcn.h>
+
 #ifndef SDFWB_SOURCE_DIR
 #error "SDFWB_SOURCE_DIR must be defined by the build"
 #endif
@@ -11,12 +13,39 @@
 namespace sdfwb::paths {
 namespace fs = std::filesystem;
 
-fs::path dataRoot() {
-    if (const char* env = std::getenv("SDFWB_DATA_DIR"); env && *env) return fs::path(env);
+namespace {
+
+// The file that holds this code: the sdfwb binary, or the Python module sdfwb/_native*.so loaded
+// into an interpreter (where /proc/self/exe is the interpreter, not sdfwb).
+fs::path codeFile() {
+    Dl_info info{};
+    if (dladdr(reinterpret_cast<const void*>(&codeFile), &info) != 0 && info.dli_fname && info.dli_fname[0] == '/')
+        return fs::path(info.dli_fname);
     std::error_code ec;
     fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec) {
-        fs::path installed = exe.parent_path().parent_path() / "share" / "sdfwb";
+    return ec ? fs::path() : exe;
+}
+
+// The install prefix the code file lies in: <prefix>/bin/sdfwb, or
+// <prefix>/lib/python3/dist-packages/sdfwb/_native*.so; empty for anything else.
+fs::path installPrefix(const fs::path& code) {
+    const fs::path folder = code.parent_path();
+    const std::string packages = folder.parent_path().filename().string();
+    if (folder.filename() == "sdfwb" && (packages == "dist-packages" || packages == "site-packages"))
+        return folder.parent_path().parent_path().parent_path().parent_path();
+    if (folder.filename() == "bin") return folder.parent_path();
+    return {};
+}
+
+} // namespace
+
+fs::path dataRoot() {
+    if (const char* env = std::getenv("SDFWB_DATA_DIR"); env && *env) return fs::path(env);
+    // An installed sdfwb uses its own prefix's data; a build tree's binary or module, the source
+    // tree it was built from, whatever is installed elsewhere on the machine.
+    if (const fs::path prefix = installPrefix(codeFile()); !prefix.empty()) {
+        std::error_code ec;
+        fs::path installed = prefix / "share" / "sdfwb";
         if (fs::is_directory(installed / "dataset", ec)) return installed;
     }
     return fs::path(SDFWB_SOURCE_DIR);
