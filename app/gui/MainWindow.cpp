@@ -234,6 +234,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_document, &SdfDocument::signaturesChanged, this,
             [this](const QStringList& signatures) { m_editor->setCompletionFunctions(m_librarySignatures, signatures); });
     connect(m_document, &SdfDocument::sdfApplied, m_plane, &PlaneController::refresh);
+    // The picture switches off when the file loses its mainImage; a file with one may turn it on.
+    connect(m_document, &SdfDocument::sdfApplied, this, [this] {
+        m_shadertoyAction->setEnabled(m_document->lastGoodSource().shadertoyMainImage || m_viewport->shadertoyPicture());
+        m_shadertoyAction->setChecked(m_viewport->shadertoyPicture());
+    });
     // Parameters: the declarations of the SDF on screen become controls; their values are uniforms
     // of the viewport (no recompile) and of every job started from the document.
     connect(m_document, &SdfDocument::sdfApplied, this, [this] {
@@ -560,6 +565,37 @@ void MainWindow::createMenus() {
     m_overlayAction = view->addAction(tr("Show name, author and &license"), this, [this] { updateOverlay(); });
     m_overlayAction->setCheckable(true);
     m_overlayAction->setObjectName("overlay");
+    view->addSeparator();
+    // A whole Shadertoy shader's own picture (its mainImage) in place of the tracer, to compare.
+    m_shadertoyAction = view->addAction(tr("Shadertoy &picture"), this, [this](bool on) {
+        auto diagnostics = m_viewport->setShadertoyPicture(on);
+        for (const shaders::Diagnostic& d : diagnostics)
+            if (d.severity == shaders::Severity::Error) {
+                statusBar()->showMessage(QString::fromStdString(d.message), 8000);
+                break;
+            }
+        m_shadertoyAction->setChecked(m_viewport->shadertoyPicture());
+    });
+    m_shadertoyAction->setCheckable(true);
+    m_shadertoyAction->setObjectName("shadertoy_picture");
+    m_shadertoyAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Y));
+    m_shadertoyAction->setToolTip(tr("Run the file's own mainImage (a whole Shadertoy shader) with the scene time and a mouse "
+                                     "(left drag): the author's picture beside sdfwb's tracer"));
+    QMenu* channels = view->addMenu(tr("Shadertoy c&hannels"));
+    for (int n = 0; n < shaders::kShadertoyChannels; ++n) {
+        QAction* pick = channels->addAction(tr("iChannel%1: image...").arg(n), this, [this, n] {
+            const QString path = QFileDialog::getOpenFileName(this, tr("Image for iChannel%1").arg(n), QString(),
+                                                              tr("Images (*.png *.jpg *.jpeg *.exr *.tif *.bmp);;All files (*)"));
+            if (path.isEmpty()) return;
+            m_document->setChannel(n, path);
+            m_document->checkNow(m_document->text());
+        });
+        pick->setObjectName(QString("channel_%1").arg(n));
+    }
+    channels->addAction(tr("All channels: &noise texture"), this, [this] {
+        for (int n = 0; n < shaders::kShadertoyChannels; ++n) m_document->setChannel(n, QString());
+        m_document->checkNow(m_document->text());
+    });
     view->addSeparator();
     view->addAction(tr("Show mesh &deviation..."), this, [this] {
         const QString path = QFileDialog::getOpenFileName(this, tr("Mesh to grade against the field"), QString(),

@@ -142,6 +142,7 @@ private:
     QActionGroup* m_shadingGroup = nullptr;
     QAction* m_aoAction = nullptr;
     QAction* m_overlayAction = nullptr;
+    QAction* m_shadertoyAction = nullptr;
     QAction* m_hideMeshAction = nullptr;
     widgets::ProbePanel* m_probePanel = nullptr;
     widgets::LogPanel* m_logPanel = nullptr;

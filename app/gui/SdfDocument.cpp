@@ -22,8 +22,15 @@ SdfDocument::SdfDocument(widgets::ViewportWidget* viewport, QObject* parent) : Q
 }
 
 jobs::SdfInput SdfDocument::input() const {
-    return {m_path.toStdString(), m_entry.toStdString(), (m_goodText.isEmpty() ? m_text : m_goodText).toStdString(),
-            shaders::valuesOf(m_parameterValues)};
+    jobs::SdfInput input{m_path.toStdString(), m_entry.toStdString(), (m_goodText.isEmpty() ? m_text : m_goodText).toStdString(),
+                         shaders::valuesOf(m_parameterValues)};
+    input.channels.assign(m_channels.begin(), m_channels.end());
+    while (!input.channels.empty() && input.channels.back().empty()) input.channels.pop_back();
+    return input;
+}
+
+void SdfDocument::setChannel(int channel, const QString& path) {
+    if (channel >= 0 && channel < shaders::kShadertoyChannels) m_channels[std::size_t(channel)] = path.toStdString();
 }
 
 void SdfDocument::setParameterValues(const std::vector<shaders::ParameterSetting>& values) {
@@ -49,15 +56,17 @@ void SdfDocument::startCheck(const QString& text) {
     std::string source = text.toStdString();
     std::string path = m_path.toStdString();
     std::string entry = m_entry.toStdString();
+    const auto channels = m_channels;
     // glslang checks the variant the viewport will compile (shading, AO, plane, markers, ...).
     const shaders::TracerFeatures features =
         renderer::tracerFeatures(m_viewport->shading(), m_viewport->trace(), m_viewport->plane());
     QPointer<SdfDocument> self(this);
     QThreadPool::globalInstance()->start(
-        [self, generation, source = std::move(source), path = std::move(path), entry = std::move(entry), features] {
+        [self, generation, source = std::move(source), path = std::move(path), entry = std::move(entry), features, channels] {
             shaders::IncludeOptions options;
             options.libraryRoots = {paths::shaderLibraryRoot(), paths::datasetRoot()};
             shaders::PreparedSdf prepared = shaders::prepareSdf(source, path.empty() ? "<editor>" : path, path, options, entry);
+            prepared.channels = channels;
             std::vector<shaders::Diagnostic> diagnostics = prepared.diagnostics;
             if (prepared.ok()) {
                 auto composed = shaders::composeTracer(prepared, features);

@@ -15,7 +15,9 @@
 #include <QStringList>
 #include <QTimer>
 
+#include <array>
 #include <atomic>
+#include <string>
 #include <vector>
 
 namespace sdfwb::widgets {
@@ -59,6 +61,11 @@ public:
     const QString& entry() const { return m_entry; }
     const shaders::SdfSignature& signature() const { return m_signature; }
 
+    // The image bound to a Shadertoy's iChannelN (empty: the noise texture); takes effect at the
+    // next check, and jobs started from the document use it too.
+    void setChannel(int channel, const QString& path);
+    const std::array<std::string, shaders::kShadertoyChannels>& channels() const { return m_channels; }
+
     const std::vector<shaders::Diagnostic>& diagnostics() const { return m_diagnostics; }
     int debounceMilliseconds() const { return m_debounce.interval(); }
     // "name(type a, ...)" of the functions the last checked text defines (autocompletion).
@@ -84,6 +91,7 @@ private:
     QString m_goodText;
     shaders::PreparedSdf m_goodSource;
     QString m_entry;
+    std::array<std::string, shaders::kShadertoyChannels> m_channels;
     shaders::SdfSignature m_signature;
     QTimer m_debounce;
     std::uint64_t m_generation = 0;

@@ -1915,3 +1915,73 @@ int main(int argc, char** argv) {
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
 }
+
+// ---- #32: a whole Shadertoy shader, pasted as is ----
+
+// A whole Shadertoy shader opens unmodified and sdfwb traces its map(); View > Shadertoy picture
+// (its shortcut, a real key event) runs the file's own mainImage instead: the author's sky
+// replaces sdfwb's background, a left drag sets iMouse as Shadertoy does (and moves the author's
+// camera in a file that orbits with iMouse) without orbiting sdfwb's camera, and a file without
+// mainImage turns the picture off and the action off. SDFWB_SCREENSHOT_DIR keeps
+// shadertoy_pasted.png and shadertoy_picture.png for docs/foreign-code.md.
+TEST(Shadertoy, PastedShaderTracesItsMapAndShowsItsOwnPicture) {
+    app::MainWindow window;
+    window.resize(1200, 700);
+    window.show();
+    ASSERT_TRUE(activate(window));
+    auto open = [&](const QString& path) {
+        bool applied = false;
+        auto connection = QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
+        const bool ok = window.openFile(path) && waitFor([&] { return applied; });
+        QObject::disconnect(connection);
+        return ok &&
+               waitFor([&] { return window.viewport()->lastFrameMilliseconds() > 0.0 && !window.viewport()->isInteracting(); });
+    };
+    const QString corpus = QDir(SDFWB_SOURCE_DIR "/tests/foreign").absolutePath();
+    ASSERT_TRUE(open(corpus + "/34_st_mouse_lattice.glsl"));
+    EXPECT_EQ(window.document()->signature().entry, "map");
+    EXPECT_TRUE(window.document()->lastGoodSource().shadertoyMainImage);
+    auto* action = window.findChild<QAction*>("shadertoy_picture");
+    ASSERT_NE(action, nullptr);
+    EXPECT_TRUE(action->isEnabled());
+    widgets::ViewportWidget* viewport = window.viewport();
+    const QImage traced = fullResolutionFrame(window);
+    if (QString path = screenshotPath("shadertoy_pasted.png"); !path.isEmpty()) windowShot(window).save(path);
+    auto isBackground = [](QColor c) {
+        return std::abs(c.redF() - kBackground.redF()) < 0.03 && std::abs(c.greenF() - kBackground.greenF()) < 0.03 &&
+               std::abs(c.blueF() - kBackground.blueF()) < 0.03;
+    };
+    EXPECT_TRUE(isBackground(traced.pixelColor(2, 2))) << "sdfwb's tracer: its own background in the corner";
+
+    QTest::keyClick(&window, Qt::Key_Y, Qt::ControlModifier | Qt::ShiftModifier);
+    ASSERT_TRUE(viewport->shadertoyPicture()) << "the shortcut turns the picture on";
+    EXPECT_TRUE(action->isChecked());
+    const QImage picture = frameOf(window);
+    EXPECT_FALSE(isBackground(picture.pixelColor(2, 2))) << "the author's picture has the author's background";
+    EXPECT_GT(meanDifference(traced, picture), 10.0) << "the picture is not the tracer's frame";
+    if (QString path = screenshotPath("shadertoy_picture.png"); !path.isEmpty()) windowShot(window).save(path);
+
+    // A left drag: iMouse follows (pixels from the lower left, zw the press), the camera stays.
+    const renderer::Camera camera = viewport->camera();
+    const QPoint from = centreOf(viewport), to = from + QPoint(120, -40);
+    QTest::mousePress(viewport, Qt::LeftButton, Qt::NoModifier, from);
+    EXPECT_GT(viewport->shadertoyMouse().z, 0.0f) << "pressed: z is positive";
+    QMouseEvent drag(QEvent::MouseMove, QPointF(to), viewport->mapToGlobal(QPointF(to)), Qt::NoButton, Qt::LeftButton,
+                     Qt::NoModifier);
+    QApplication::sendEvent(viewport, &drag);
+    const qreal ratio = viewport->devicePixelRatioF();
+    EXPECT_NEAR(viewport->shadertoyMouse().x, to.x() * ratio, 1.0);
+    EXPECT_NEAR(viewport->shadertoyMouse().y, (viewport->height() - to.y()) * ratio, 1.0);
+    EXPECT_NEAR(viewport->shadertoyMouse().z, from.x() * ratio, 1.0);
+    QTest::mouseRelease(viewport, Qt::LeftButton, Qt::NoModifier, to);
+    EXPECT_LT(viewport->shadertoyMouse().z, 0.0f) << "released: z is negative";
+    EXPECT_EQ(viewport->camera(), camera) << "a drag in the picture does not orbit sdfwb's camera";
+    EXPECT_GT(meanDifference(picture, frameOf(window)), 2.0) << "this file's author orbits with iMouse";
+
+    // A file without mainImage: the tracer comes back, and the action cannot be turned on.
+    ASSERT_TRUE(open(datasetFile("Geometry/Sphere.glsl")));
+    EXPECT_FALSE(viewport->shadertoyPicture());
+    EXPECT_FALSE(action->isChecked());
+    EXPECT_FALSE(action->isEnabled());
+    EXPECT_TRUE(isBackground(frameOf(window).pixelColor(2, 2)));
+}

@@ -7,6 +7,7 @@
 #include <renderer/PointCloudOverlay.h>
 #include <renderer/SampleCompute.h>
 #include <renderer/SdfRenderer.h>
+#include <renderer/ShadertoyPicture.h>
 #include <shaders/ShaderComposer.h>
 
 #include <glm/geometric.hpp>
@@ -19,13 +20,15 @@
 #include <QWheelEvent>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace sdfwb::widgets {
 
 ViewportWidget::ViewportWidget(QWidget* parent)
     : QOpenGLWidget(parent), m_renderer(std::make_unique<renderer::SdfRenderer>()),
-      m_meshOverlay(std::make_unique<renderer::MeshOverlay>()), m_pointCloud(std::make_unique<renderer::PointCloudOverlay>()) {
+      m_picture(std::make_unique<renderer::ShadertoyPicture>()), m_meshOverlay(std::make_unique<renderer::MeshOverlay>()),
+      m_pointCloud(std::make_unique<renderer::PointCloudOverlay>()) {
     setMinimumSize(64, 64);
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(true); // the plane readout under the cursor
@@ -71,7 +74,15 @@ std::vector<shaders::Diagnostic> ViewportWidget::setSdf(const shaders::PreparedS
     }
     makeCurrent();
     auto diagnostics = m_renderer->setSdf(sdf);
+    if (m_showPicture && !shaders::hasErrors(diagnostics)) {
+        // The author's picture follows the edit; a file that lost its mainImage shows the tracer.
+        // Its errors are the picture's, not the SDF's: the tracer takes over, and the log says why.
+        auto picture = m_picture->setSdf(sdf);
+        for (const auto& d : picture) log::warning("shadertoy", shaders::formatDiagnostic(d));
+        if (shaders::hasErrors(picture)) m_showPicture = false;
+    }
     doneCurrent();
+    if (!shaders::hasErrors(diagnostics)) m_pictureSource = std::make_unique<shaders::PreparedSdf>(sdf);
     if (!shaders::hasErrors(diagnostics)) {
         m_currentSdf = std::make_unique<shaders::PreparedSdf>(sdf);
         m_needsProbe = true;
@@ -275,10 +286,41 @@ void ViewportWidget::initializeGL() {
     emit contextReady(m_contextDescription);
 }
 
+std::vector<shaders::Diagnostic> ViewportWidget::setShadertoyPicture(bool on) {
+    std::vector<shaders::Diagnostic> diagnostics;
+    if (on) {
+        const shaders::PreparedSdf* source = m_pictureSource ? m_pictureSource.get() : m_pendingSdf.get();
+        if (!source || !context() || !isValid())
+            return {{"<viewport>", 0, 0, shaders::Severity::Error, "no SDF shown yet: open a Shadertoy shader first"}};
+        makeCurrent();
+        diagnostics = m_picture->setSdf(*source);
+        doneCurrent();
+        if (shaders::hasErrors(diagnostics)) on = false;
+    }
+    m_showPicture = on;
+    m_pictureFrame = 0;
+    update();
+    return diagnostics;
+}
+
 void ViewportWidget::paintGL() {
     const qreal ratio = devicePixelRatioF();
     int width = int(std::lround(this->width() * ratio));
     int height = int(std::lround(this->height() * ratio));
+    if (m_showPicture && m_picture->hasProgram()) {
+        const auto start = std::chrono::steady_clock::now();
+        renderer::ShadertoyInputs inputs;
+        inputs.time = m_time;
+        inputs.frame = m_pictureFrame++;
+        inputs.mouse = m_shadertoyMouse;
+        m_picture->setParameters(m_parameters);
+        m_picture->render(width, height, inputs);
+        glFinish();
+        m_lastFrameMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        m_lastScale = 1.0f;
+        emit frameRendered(m_lastFrameMilliseconds, 1.0f);
+        return;
+    }
     // A new SDF: the probe sizes its first frame, which follows in this same paint (a second
     // paint request would wait for the next update cycle, 15 to 30 ms here). For a slow SDF the
     // last probe drawn is this paint's frame, and the full-resolution frame comes in the next.
@@ -404,6 +446,7 @@ std::optional<ViewportWidget::ProbeFrame> ViewportWidget::probeNewSdf(int width,
 
 void ViewportWidget::releaseGl() {
     m_renderer->releaseGl();
+    m_picture->releaseGl();
     m_meshOverlay->releaseGl();
     m_pointCloud->releaseGl();
     if (m_fieldAtPoint) m_fieldAtPoint->releaseGl();
@@ -429,9 +472,32 @@ void ViewportWidget::interacted() {
     emit cameraChanged(m_camera);
 }
 
+// Shadertoy's iMouse: xy the pointer while the left button is down, zw where it was pressed (z
+// negative once released, w negative after the press's first frame), in pixels from the lower left.
+void ViewportWidget::shadertoyMouseEvent(QMouseEvent* event, bool press, bool release) {
+    const qreal ratio = devicePixelRatioF();
+    const float x = float(event->position().x() * ratio);
+    const float y = float((height() - event->position().y()) * ratio);
+    if (press) {
+        m_shadertoyMouse = glm::vec4(x, y, x, y);
+    } else if (release) {
+        m_shadertoyMouse.z = -std::abs(m_shadertoyMouse.z);
+        m_shadertoyMouse.w = -std::abs(m_shadertoyMouse.w);
+    } else {
+        m_shadertoyMouse.x = x;
+        m_shadertoyMouse.y = y;
+        m_shadertoyMouse.w = -std::abs(m_shadertoyMouse.w);
+    }
+    update();
+}
+
 void ViewportWidget::mousePressEvent(QMouseEvent* event) {
     m_lastMouse = event->position().toPoint();
     setFocus();
+    if (m_showPicture) {
+        if (event->button() == Qt::LeftButton) shadertoyMouseEvent(event, true, false);
+        return;
+    }
     m_probeClick = m_probeTool && event->button() == Qt::LeftButton;
     if (m_probeClick) {
         const qreal ratio = devicePixelRatioF();
@@ -447,6 +513,7 @@ void ViewportWidget::leaveEvent(QEvent* event) {
 }
 
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event) {
+    if (m_showPicture && event->button() == Qt::LeftButton) shadertoyMouseEvent(event, false, true);
     if (event->button() == Qt::LeftButton) m_probeClick = false;
     if (event->button() == Qt::RightButton) {
         m_keys.clear();
@@ -458,7 +525,9 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
     QPoint position = event->position().toPoint();
     QPoint delta = position - m_lastMouse;
     m_lastMouse = position;
-    if (event->buttons() == Qt::NoButton) {
+    if (m_showPicture) {
+        if (event->buttons() & Qt::LeftButton) shadertoyMouseEvent(event, false, false);
+    } else if (event->buttons() == Qt::NoButton) {
         if (m_plane.enabled) {
             PlaneValue value;
             const bool valid = planeValueAt(event->position(), value);

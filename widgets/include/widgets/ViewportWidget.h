@@ -17,6 +17,7 @@
 #include <shaders/SdfSource.h>
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <QElapsedTimer>
 #include <QOpenGLWidget>
@@ -35,6 +36,7 @@ class MeshOverlay;
 class PointCloudOverlay;
 class SampleCompute;
 class SdfRenderer;
+class ShadertoyPicture;
 } // namespace sdfwb::renderer
 
 namespace sdfwb::widgets {
@@ -127,6 +129,14 @@ public:
     bool hasMeshOverlay() const;
     float meshOverlayScale() const { return m_meshScale; }
 
+    // The Shadertoy picture: instead of sdfwb's tracer, the viewport runs the file's own
+    // mainImage (a whole Shadertoy shader) with the scene time, a frame count and the mouse (a
+    // left drag sets iMouse as Shadertoy does; the camera stays). Returns the diagnostics of
+    // compiling it (an SDF without mainImage is an error, and the tracer stays).
+    std::vector<shaders::Diagnostic> setShadertoyPicture(bool on);
+    bool shadertoyPicture() const { return m_showPicture; }
+    glm::vec4 shadertoyMouse() const { return m_shadertoyMouse; }
+
     // Text drawn in the lower-left corner (name, author, license); empty hides it.
     void setOverlayText(const QString& text);
     const QString& overlayText() const { return m_overlay; }
@@ -153,6 +163,7 @@ protected:
     void mousePressEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
+    void shadertoyMouseEvent(QMouseEvent* event, bool press, bool release);
     void wheelEvent(QWheelEvent* event) override;
     void keyPressEvent(QKeyEvent* event) override;
     void keyReleaseEvent(QKeyEvent* event) override;
@@ -173,6 +184,11 @@ private:
     void flyStep();
 
     std::unique_ptr<renderer::SdfRenderer> m_renderer;
+    std::unique_ptr<renderer::ShadertoyPicture> m_picture;
+    std::unique_ptr<shaders::PreparedSdf> m_pictureSource; // the SDF the picture is compiled from
+    bool m_showPicture = false;
+    int m_pictureFrame = 0;
+    glm::vec4 m_shadertoyMouse{0.0f};
     std::unique_ptr<renderer::MeshOverlay> m_meshOverlay;
     std::unique_ptr<renderer::PointCloudOverlay> m_pointCloud;
     float m_pointSize = 3.0f;
