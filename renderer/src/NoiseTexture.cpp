@@ -18,6 +18,21 @@ std::vector<std::uint8_t> noiseTexels() {
     return texels;
 }
 
+std::vector<std::uint8_t> shadertoyNoiseTexels() {
+    std::vector<std::uint8_t> texels = noiseTexels();
+    const std::vector<std::uint8_t> base = texels;
+    const int n = kNoiseTextureSize;
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const std::size_t to = (std::size_t(y) * std::size_t(n) + std::size_t(x)) * 4;
+            const int fromX = (x - kShadertoyNoiseShiftX + n) % n, fromY = (y - kShadertoyNoiseShiftY + n) % n;
+            const std::size_t from = (std::size_t(fromY) * std::size_t(n) + std::size_t(fromX)) * 4;
+            texels[to + 1] = base[from + 0];
+            texels[to + 3] = base[from + 2];
+        }
+    return texels;
+}
+
 namespace {
 
 // Makes a repeating 2D texture from RGBA8 rows, bottom row first.
@@ -89,7 +104,10 @@ void bindSdfTextures(GLuint program, SdfTextures& textures, const std::array<std
                     log::warning("render", name + ": " + image.error().message + "; using the noise texture");
                 }
             }
-            if (!textures.channels[i]) textures.channels[i] = makeNoiseTexture();
+            if (!textures.channels[i]) {
+                const std::vector<std::uint8_t> texels = shadertoyNoiseTexels();
+                textures.channels[i] = makeTexture(kNoiseTextureSize, kNoiseTextureSize, texels.data(), false);
+            }
         }
         bindUnit(shaders::kChannelTextureUnit + n, textures.channels[i]);
         const std::string resolution = "iChannelResolution[" + std::to_string(n) + "]";

@@ -105,8 +105,9 @@ uniform float iChannelTime[4] = float[4](0.0, 0.0, 0.0, 0.0);
 uniform vec3 iChannelResolution[4] = vec3[4](vec3(256.0, 256.0, 1.0), vec3(256.0, 256.0, 1.0), vec3(256.0, 256.0, 1.0),
                                              vec3(256.0, 256.0, 1.0));
 #endif
-// Channels: the G3D noise texels (256 x 256 RGBA of independent uniform values, repeating,
-// linearly filtered, like Shadertoy's "RGBA noise" textures), or an image the user picked
+// Channels: the G3D noise texels (256 x 256 RGBA uniform values, repeating,
+// linearly filtered, with green and alpha the red and blue channels moved by (37, 17) texels like
+// Shadertoy's "RGBA noise" textures: renderer/NoiseTexture.h), or an image the user picked
 // (--channel N=FILE, the GUI's Shadertoy channels). Bound to unit SDFWB_CHANNELN_UNIT (GLSL 4.30
 // takes a literal binding, not an expression).
 #ifdef SDFWB_COMPAT_iChannel0

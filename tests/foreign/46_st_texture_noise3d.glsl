@@ -7,22 +7,19 @@
 // in the shading, three octaves of fbm bumping a ball in
 // `float map(vec3 p)`, and a marcher that under-steps.
 //
-// Why discontinuous: sdfwb's iChannel0 is a texture of INDEPENDENT random
-// values in every channel, not Shadertoy's shifted copy, so what one cell
-// reads as slice z + 1 (red) is not what the next cell reads as its slice
-// z (green): the noise jumps on every plane z = k / frequency, by the
-// octave's weight times the difference of two independent uniform values
-// (1/3 on average): 0.15 x 0.57 / 3 ~ 0.03 for the first octave (planes
-// every 1/3), half and a quarter of that for the others; everywhere on
-// the bumpy surface those planes cross. (The same file on Shadertoy is
-// continuous.) Why non-conservative too: between the planes the noise is
-// smooth but steep: each octave adds 0.15 x weight x frequency x (slope
-// of the smoothed bilinear value, ~0.5 typical, up to ~2.5) ~ 0.13
-// typical and ~0.6 at most, three octaves in independent directions, so
-// away from the jumps |grad f| reaches ~1.7-1.8 at the 99.9th
-// percentile. Finite, and the ball term grows outside (the bumps are
-// within +-0.075): no plateau, no NaN. No iTime: not animated.
-// expect: entry=map flags=discontinuous,non-conservative animated=no
+// Why it is continuous: sdfwb's iChannel noise is arranged like
+// Shadertoy's (renderer/NoiseTexture.h: green is red moved by (37, 17)
+// texels), so what one cell reads as slice z + 1 (red) is what the next
+// cell reads as its slice z (green): no jump on the planes z = k /
+// frequency. (With independent channels it jumped there by ~0.03: this
+// file caught that.) Why non-conservative: the noise is smooth but steep:
+// each octave adds 0.15 x weight x frequency x (slope of the smoothed
+// bilinear value, ~0.5 typical, up to ~2.5) ~ 0.13 typical and ~0.6 at
+// most, three octaves in independent directions, so |grad f| reaches
+// ~1.4 at the 99.9th percentile. Finite, and the ball term grows outside
+// (the bumps are within +-0.075): no plateau, no NaN. No iTime: not
+// animated.
+// expect: entry=map flags=non-conservative animated=no
 
 float texNoise(in vec3 x)
 {
