@@ -68,7 +68,8 @@ renderer::HeadlessContext& context() {
 
 // `sdf` is a dataset name, a path, or GLSL source (anything with a brace and a parenthesis, which
 // names and paths of SDF files do not have). `entry` names the SDF's function (empty: the default).
-// `params`: None or a dict of parameter values, {"radius": 0.3, "hollow": True, "offset": (1, 2, 0)}.
+// `params`: None or a mapping of parameter values, {"radius": 0.3, "hollow": True, "offset": (1, 2, 0)}
+// (a dict, or any collections.abc.Mapping, as the type stubs promise).
 jobs::SdfInput sdfInput(const std::string& sdf, const std::string& entry, const py::object& params = py::none()) {
     jobs::SdfInput input;
     if (sdf.find('{') != std::string::npos && sdf.find('(') != std::string::npos)
@@ -76,8 +77,9 @@ jobs::SdfInput sdfInput(const std::string& sdf, const std::string& entry, const 
     else
         input = {sdf, entry, "", {}};
     if (params.is_none()) return input;
-    if (!py::isinstance<py::dict>(params)) throw py::type_error("params: expected a dict of parameter values, or None");
-    for (const auto& [key, item] : params.cast<py::dict>()) {
+    if (!py::isinstance<py::dict>(params) && !py::isinstance(params, py::module_::import("collections.abc").attr("Mapping")))
+        throw py::type_error("params: expected a dict (a mapping) of parameter values, or None");
+    for (const auto& [key, item] : py::dict(params)) {
         shaders::ParameterValue value{py::str(key).cast<std::string>(), {}};
         if (py::isinstance<py::bool_>(item)) {
             value.value.push_back(item.cast<bool>() ? 1.0f : 0.0f);
@@ -456,60 +458,242 @@ py::list listSdfs() {
 
 } // namespace
 
+// The docstrings below are what help(sdfwb.X) shows after pybind11's signature line; each says
+// what every argument takes. python/sdfwb/_native.pyi types the same functions for mypy, and
+// python/tests/test_package.py checks that the two name the same arguments and defaults.
 PYBIND11_MODULE(_native, m) {
     m.doc() = "sdfwb: sample, audit and load signed distance functions written in GLSL (headless, EGL).";
     m.attr("__version__") = SDFWB_VERSION;
+    // Float defaults spelled as written (pybind11 would print the float32 value, 0.0010000000474974513).
     m.def("sample", &sample, py::arg("sdf"), py::arg("pattern"), py::arg("n"), py::arg("seed") = 0, py::arg("time") = 0.0f,
-          py::arg("gradient_step") = 1e-3f, py::arg("chunk") = 1u << 18, py::arg("surface_tolerance") = 1e-5f,
+          py::arg_v("gradient_step", 1e-3f, "1e-3"), py::arg("chunk") = 1u << 18, py::arg_v("surface_tolerance", 1e-5f, "1e-5"),
           py::arg("entry") = "", py::arg("params") = py::none(), py::arg("first_index") = 0, py::arg("near_widths") = "",
           py::arg("near_truncate") = 0.0f,
-          "Samples `n` points of `sdf` (dataset name, path or GLSL source) with `pattern`. Returns a dict of float32 arrays\n"
-          "position (n,3), distance (n,), gradient (n,3) (raw, not normalised) plus bad_rows and seconds. Same seed, same\n"
-          "values as `sdfwb --batch sample`. surface_tolerance: |f| at which the rays of surface/near/metropolis stop\n"
-          "(accuracy against time; see docs/benchmarks.md). entry: the SDF's function when it is not sdf (e.g. 'map';\n"
-          "vec2/vec4 returns give the distance in .x). params: values for the SDF's declared parameters, e.g.\n"
-          "{'radius': 0.3, 'offset': (0, 0.1, 0)} (sdfwb.params(sdf) lists them); the result's `parameters` holds every\n"
-          "parameter's value. first_index: the first row's sample index (rows depend on seed and index alone, so\n"
-          "first_index=k*n gives the k-th batch of an endless stream). near_widths: near's mixture of Gaussian offsets\n"
-          "'W:P,...' (e.g. '0.005:0.8,0.05:0.2'), truncated at near_truncate deviations when > 0. The GIL is released while "
-          "sampling.");
+          R"doc(Samples `n` points of `sdf` with `pattern`: the same values as `sdfwb --batch sample` with the same seed.
+
+Args:
+    sdf (str): a dataset name (any case, see list_sdfs()), a path to a .glsl file, or GLSL source text (anything
+        containing both '{' and '(') defining `float sdf(vec3 p)` or the function `entry` names.
+    pattern (str): a built-in pattern (grid, image, jitter, rand, surface, near, metropolis, metropolis_curvature),
+        a path to a sampler .glsl file (contains '/' or ends in .glsl) defining
+        `bool samplePosition(uint index, out vec3 position)`, or the name of such a file in a folder of
+        $SDFWB_SAMPLER_PATH (':'-separated) or $XDG_DATA_HOME/sdfwb/samplers (~/.local/share/sdfwb/samplers).
+    n (int): the number of rows, 1 to 4294967295.
+    seed (int): 0 to 2**64 - 1; a row depends on seed and its sample index alone. Default 0.
+    time (float): seconds, finite: the time an animated SDF (`ENTRY(vec3 p, float time)`) is sampled at. Default 0.
+    gradient_step (float): > 0, world units: the step of the central differences of `gradient`. Default 1e-3.
+    chunk (int): >= 1, rows per GPU dispatch (memory: 28 bytes a row); does not change the values.
+        Default 262144.
+    surface_tolerance (float): > 0: |f| at which the rays of surface, near and metropolis stop (accuracy
+        against time; see docs/benchmarks.md). Default 1e-5.
+    entry (str): the SDF's function when it is not `sdf`, a GLSL identifier other than main, gl_* and sdfwb_*
+        (e.g. 'map'; vec2/vec4 returns give the distance in .x). Default '': the file's `entry:` metadata, else
+        sdf, else the first of map, scene, sceneSDF, sdScene, de, DE that it defines.
+    params (Mapping[str, bool | float | Sequence[float]] | None): values for the SDF's declared parameters,
+        e.g. {'radius': 0.3, 'offset': (0, 0.1, 0), 'capped': True}: 1 to 4 finite numbers each
+        (sdfwb.params(sdf) lists them). Default None: the declared defaults.
+    first_index (int): the first row's sample index; first_index + n <= 2**32. first_index=k*n gives the
+        k-th batch of an endless stream. Default 0.
+    near_widths (str): pattern 'near' only: a mixture of up to 4 Gaussian offsets 'W:P,...' (widths and weights
+        positive, e.g. '0.005:0.8,0.05:0.2'). Default '': one width, 0.005.
+    near_truncate (float): >= 0: with near_widths, offsets beyond this many standard deviations are redrawn
+        (not clamped). Default 0: no truncation.
+
+Returns:
+    dict: position (n, 3), distance (n,) and gradient (n, 3) as float32 NumPy arrays that own their memory
+    (gradient raw, not normalised); bad_rows (int: rows with NaN or Inf, e.g. near rays that found no surface);
+    seconds (float); parameters (dict: every declared parameter's value, bools as bool, vectors as tuples).
+
+Raises:
+    ValueError: an argument out of range, an unknown SDF, pattern or parameter, or GLSL errors (with
+        file:line:column).
+    TypeError: params is not a mapping, or a value is not a number, a bool or a sequence of numbers.
+    RuntimeError: no EGL/GL, a GPU failure, or a process forked after its parent used the GPU.
+
+The GIL is released while sampling.)doc");
     m.def("evaluate", &evaluate, py::arg("sdf"), py::arg("points"), py::arg("params") = py::none(), py::arg("time") = 0.0f,
-          py::arg("gradient") = true, py::arg("gradient_step") = 1e-3f, py::arg("entry") = "", py::arg("chunk") = 1u << 18,
-          "The field of `sdf` at the caller's points ((N,3) float32, read in place): a dict with distance (N,) and\n"
-          "gradient (N,3) (raw central differences with gradient_step; None when gradient=False, which evaluates the\n"
-          "field once per point instead of seven times), bad_rows and seconds. Bit-equal to what the samplers write\n"
-          "at the same positions with the same gradient_step. The GIL is released while the GPU works.");
-    m.def("_forget_context_after_fork", &forgetContextAfterFork, "Called by os.register_at_fork in a forked child.");
-    m.def("load", &load, py::arg("path"), "Reads a .bin, .npz or .ply sample file into a dict of arrays (and its metadata).");
+          py::arg("gradient") = true, py::arg_v("gradient_step", 1e-3f, "1e-3"), py::arg("entry") = "",
+          py::arg("chunk") = 1u << 18,
+          R"doc(The field of `sdf` at the caller's points, through the samplers' own stage: bit-equal to what the samplers
+write at the same positions with the same gradient_step.
+
+Args:
+    sdf (str): a dataset name, a path to a .glsl file, or GLSL source text, as for sample().
+    points (array_like): shape (N, 3), N <= 4294967295 (N = 0 gives empty arrays); float32 C-order arrays are
+        read in place, anything else is converted to float32 once.
+    params (Mapping[str, bool | float | Sequence[float]] | None): parameter values, as for sample(). Default None.
+    time (float): seconds, finite, for animated SDFs. Default 0.
+    gradient (bool): also return the gradient; False evaluates the field once per point instead of seven
+        times. Default True.
+    gradient_step (float): > 0, world units: the step of the central differences. Default 1e-3.
+    entry (str): the SDF's function when it is not `sdf`, as for sample(). Default ''.
+    chunk (int): >= 1, points per GPU dispatch; does not change the values. Default 262144.
+
+Returns:
+    dict: distance (N,) float32; gradient (N, 3) float32 (raw central differences), or None when
+    gradient=False; bad_rows (int: rows with NaN or Inf); seconds (float).
+
+Raises:
+    ValueError: points not of shape (N, 3), an argument out of range, an unknown SDF or parameter, or GLSL
+        errors (with file:line:column).
+    TypeError: params is not a mapping of numbers, bools or sequences of numbers.
+    RuntimeError: no EGL/GL, a GPU failure, or a process forked after its parent used the GPU.
+
+The GIL is released while the GPU works.)doc");
+    m.def("_forget_context_after_fork", &forgetContextAfterFork,
+          "Called by os.register_at_fork in a forked child: the child makes its own EGL context, or is told to use "
+          "'spawn' when its parent had used the GPU.");
+    m.def("load", &load, py::arg("path"),
+          R"doc(Reads a sample file (as written by save(), sdfwb --batch sample or merge) into NumPy arrays.
+
+Args:
+    path (str): a .bin, .npz or .ply file (the type from the extension, any case).
+
+Returns:
+    dict: position (R, 3), distance (R,) and gradient (R, 3) float32 arrays, and, for .npz and .ply files
+    (a .bin holds none), metadata (dict: sdf, pattern, seed, time, first_index, total_count, version, and
+    parameters, the values the SDF was sampled with, when it declares any).
+
+Raises:
+    ValueError: an unknown extension, a missing, unreadable or corrupt file.)doc");
     m.def("save", &save, py::arg("path"), py::arg("position"), py::arg("distance"), py::arg("gradient"), py::arg("format") = "",
           py::arg("sdf") = "", py::arg("pattern") = "", py::arg("seed") = 0, py::arg("time") = 0.0f,
-          "Writes arrays to a .bin, .npz or .ply sample file (atomically).");
+          R"doc(Writes arrays to a sample file atomically (a temporary file renamed into place), with metadata that load()
+reads back.
+
+Args:
+    path (str): the file to write; its folder must exist.
+    position (array_like): shape (N, 3), converted to float32.
+    distance (array_like): shape (N,), converted to float32.
+    gradient (array_like): shape (N, 3), converted to float32.
+    format (str): 'bin', 'npz' or 'ply'. Default '': from the extension of path (.bin, .npz, .ply, any case).
+    sdf (str): recorded as the metadata's sdf (the name or path the rows came from). Default ''.
+    pattern (str): recorded as the metadata's pattern. Default ''.
+    seed (int): 0 to 2**64 - 1, recorded as the metadata's seed. Default 0.
+    time (float): recorded as the metadata's time. Default 0.
+
+Returns:
+    None (.npz and .ply files hold the metadata; a .bin holds the rows alone)
+
+Raises:
+    ValueError: arrays of the wrong shapes, or an unknown format or extension.
+    RuntimeError: the file cannot be written.)doc");
     m.def("audit", &audit, py::arg("sdf"), py::arg("samples") = 100000, py::arg("seed") = 0, py::arg("time") = 0.0f,
           py::arg("entry") = "", py::arg("probe_distance") = 3.0f, py::arg("params") = py::none(),
-          "Field audit: verdict (the most severe finding: exact, conservative, non-conservative, truncated, discontinuous,\n"
-          "nan), flags (every finding with its evidence and up to 16 example points) and figures.");
+          R"doc(Audits the field of `sdf`: is it an exact distance, a conservative bound, or worse?
+
+Args:
+    sdf (str): a dataset name, a path to a .glsl file, or GLSL source text, as for sample().
+    samples (int): points probed, 64 to 100000000. Default 100000.
+    seed (int): 0 to 2**64 - 1. Default 0.
+    time (float): seconds, finite, for animated SDFs. Default 0.
+    entry (str): the SDF's function when it is not `sdf`, as for sample(). Default ''.
+    probe_distance (float): 0.1 to 100, world units: how far outward from the surface truncation is probed.
+        Default 3.
+    params (Mapping[str, bool | float | Sequence[float]] | None): parameter values, as for sample(). Default None.
+
+Returns:
+    dict: the report `sdfwb --batch audit --json` prints: verdict (the most severe finding: exact,
+    conservative, non-conservative, truncated, discontinuous, nan), flags (every finding with its evidence and
+    up to 16 example points), reason, lipschitz, safe_step_factor, truncation_distance, nan_fraction, entry,
+    seconds, ...
+
+Raises:
+    ValueError: an argument out of range, an unknown SDF or parameter, or GLSL errors (with file:line:column).
+    TypeError: params is not a mapping of numbers, bools or sequences of numbers.
+    RuntimeError: no EGL/GL, a GPU failure, or a process forked after its parent used the GPU.
+
+The GIL is released while auditing.)doc");
     m.def("run", &run, py::arg("request"),
-          "Runs one request (a dict, or its JSON text) of any kind: render, animate, sample, audit, merge, list, bench.\n"
-          "The keys are those `sdfwb --batch CMD ... --print-request` prints; absent keys keep their defaults, unknown keys\n"
-          "are errors. Returns the report as a dict, with the keys `--json` prints. The GIL is released while it runs.");
+          R"doc(Runs one request of any kind, as `sdfwb --batch` would.
+
+Args:
+    request (dict | str): a JSON object, as a dict or its JSON text, with a "kind" (render, animate, sample,
+        audit, merge, list, bench, params, mesh, eval, run, probe) and the keys
+        `sdfwb --batch CMD ... --print-request` prints; absent keys keep their defaults, unknown keys are errors.
+
+Returns:
+    dict: the report, with the keys `sdfwb --batch CMD ... --json` prints.
+
+Raises:
+    ValueError: invalid JSON, an unknown kind or key, an argument out of range, or GLSL errors.
+    TypeError: a dict that cannot be written as JSON.
+    RuntimeError: the job failed while running (GL, files, ...).
+
+The GIL is released while it runs.)doc");
     m.def("params", &params, py::arg("sdf"), py::arg("entry") = "",
-          "The parameters `sdf` declares (uniforms with a default, annotated // @range MIN MAX @step S @log @label \"...\"\n"
-          "@color): a dict with `parameters` (name, type, default, minimum, maximum, step, log, color, label, line, column)\n"
-          "and `warnings`, as `sdfwb --batch params --json` prints it. Errors raise ValueError with file:line:column.");
+          R"doc(The parameters `sdf` declares: uniforms with a default, annotated
+`// @range MIN MAX @step S @log @label "..." @color`.
+
+Args:
+    sdf (str): a dataset name, a path to a .glsl file, or GLSL source text, as for sample().
+    entry (str): the SDF's function when it is not `sdf`, as for sample(). Default ''.
+
+Returns:
+    dict: what `sdfwb --batch params --json` prints: sdf (the resolved path, or <source>), parameters (a list
+    of dicts: name, type (float, int, bool, vec2, vec3, vec4), default (a list of floats), minimum, maximum,
+    step (None when not declared), log, color, label, line, column) and warnings (file:line:column strings).
+
+Raises:
+    ValueError: an unknown SDF, a bad entry, or declarations with errors (with file:line:column).
+    RuntimeError: the file cannot be read.)doc");
     m.def("mesh", &mesh, py::arg("sdf"), py::arg("resolution") = 128, py::arg("bounds") = py::none(), py::arg("time") = 0.0f,
           py::arg("lipschitz") = py::none(), py::arg("error_samples") = 0, py::arg("seed") = 0, py::arg("entry") = "",
           py::arg("params") = py::none(),
-          "The zero set of `sdf` as a mesh (dual contouring, sharp edges kept): a dict with `vertices` (V,3) float32 and\n"
-          "`faces` (F,3) uint32, arrays over the extraction's own memory (no copies), and `report` (what\n"
-          "`sdfwb --batch mesh --json` prints: topology, the Lipschitz bound used, timings; the error against the field when\n"
-          "error_samples > 0). bounds: (minx, miny, minz, maxx, maxy, maxz), default the [-1,1]^3 box.");
-    m.def("evaluate_mesh", &evaluateMesh, py::arg("mesh"), py::arg("sdf"), py::arg("tau") = 0.01f, py::arg("points") = 100000,
-          py::arg("occupancy_resolution") = 128, py::arg("seed") = 0, py::arg("time") = 0.0f, py::arg("entry") = "",
-          py::arg("params") = py::none(),
-          "Grades the mesh file `mesh` (any format assimp reads) against the exact field of `sdf`: chamfer_l1 (mean of the\n"
-          "two mean unsquared distances), chamfer_l2 (the same, squared), fscore at tau (with precision and recall),\n"
-          "normal_consistency, hausdorff, iou (grid of occupancy_resolution^3), and the point counts; the same dict\n"
-          "`sdfwb --batch eval --json` prints, `conventions` included.");
+          R"doc(The zero set of `sdf` as a triangle mesh, by dual contouring (sharp edges and corners kept).
+
+Args:
+    sdf (str): a dataset name, a path to a .glsl file, or GLSL source text, as for sample().
+    resolution (int): grid cells per axis, 2 to 2048. Default 128.
+    bounds (Sequence[float] | None): (minx, miny, minz, maxx, maxy, maxz), finite, each maximum above its
+        minimum. Default None: the box [-1, 1]^3.
+    time (float): seconds, finite, for animated SDFs. Default 0.
+    lipschitz (float | None): the bound on |grad f| that lets empty blocks be skipped, finite, >= 0 (0: skip
+        nothing). Default None: a quick audit's estimate (x1.25, at least 1).
+    error_samples (int): points each way for the error against the field, 0 to 10000000 (0: not measured).
+        Default 0.
+    seed (int): 0 to 2**64 - 1, for the error's points. Default 0.
+    entry (str): the SDF's function when it is not `sdf`, as for sample(). Default ''.
+    params (Mapping[str, bool | float | Sequence[float]] | None): parameter values, as for sample(). Default None.
+
+Returns:
+    dict: vertices (V, 3) float32 and faces (F, 3) uint32, arrays over the extraction's own memory (no
+    copies), and report (what `sdfwb --batch mesh --json` prints: topology, the Lipschitz bound used, timings;
+    the error against the field when error_samples > 0).
+
+Raises:
+    ValueError: an argument out of range, an unknown SDF or parameter, or GLSL errors (with file:line:column).
+    TypeError: params is not a mapping of numbers, bools or sequences of numbers.
+    RuntimeError: bounds or lipschitz holding something other than numbers (pybind11's cast error), no EGL/GL,
+        a GPU failure, or a process forked after its parent used the GPU.)doc");
+    m.def("evaluate_mesh", &evaluateMesh, py::arg("mesh"), py::arg("sdf"), py::arg_v("tau", 0.01f, "0.01"),
+          py::arg("points") = 100000, py::arg("occupancy_resolution") = 128, py::arg("seed") = 0, py::arg("time") = 0.0f,
+          py::arg("entry") = "", py::arg("params") = py::none(),
+          R"doc(Grades a mesh file against the exact field of `sdf`.
+
+Args:
+    mesh (str): a mesh file in any format assimp reads (.ply, .obj, .stl, .glb, .off, ...).
+    sdf (str): a dataset name, a path to a .glsl file, or GLSL source text, as for sample().
+    tau (float): > 0, world units: the distance threshold of the F-score. Default 0.01.
+    points (int): points each way (mesh to surface, surface to mesh), 100 to 10000000. Default 100000.
+    occupancy_resolution (int): the IoU grid's side, 0 to 512 (0: no IoU). Default 128.
+    seed (int): 0 to 2**64 - 1. Default 0.
+    time (float): seconds, finite, for animated SDFs. Default 0.
+    entry (str): the SDF's function when it is not `sdf`, as for sample(). Default ''.
+    params (Mapping[str, bool | float | Sequence[float]] | None): parameter values, as for sample(). Default None.
+
+Returns:
+    dict: what `sdfwb --batch eval --json` prints: chamfer_l1 (mean of the two mean unsquared distances),
+    chamfer_l2 (the same, squared), fscore at tau (with precision and recall), normal_consistency, hausdorff,
+    iou (None without an IoU grid), the point counts and conventions.
+
+Raises:
+    ValueError: a missing mesh file, an argument out of range, an unknown SDF or parameter, or GLSL errors.
+    TypeError: params is not a mapping of parameter values.
+    RuntimeError: an unreadable mesh, no EGL/GL, or a GPU failure.)doc");
     m.def("list_sdfs", &listSdfs,
-          "The dataset: one dict per SDF (name, category, declared_type, animated, path, author, license).");
+          R"doc(The dataset's SDFs.
+
+Returns:
+    list[dict]: one dict per SDF: name, category, declared_type, animated (bool), path, author, license.)doc");
 }

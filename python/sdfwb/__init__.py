@@ -1,43 +1,120 @@
 """sdfwb: sample, evaluate, audit and mesh signed distance functions written in GLSL (headless, EGL).
 
-The functions live in the native module `sdfwb._native` and are re-exported here. `evaluate` also takes
-and returns CPU torch tensors (without copies) when torch is installed; torch is never imported unless a
-tensor is passed. Optional adapter: `sdfwb.torch` (SampleStream, an IterableDataset). Recipes (mixtures,
-DeepSDF and Occupancy Networks layouts): `sdfwb.recipes`.
+The functions live in the native module `sdfwb._native` and are re-exported here; help(sdfwb.sample) and
+the others say what each argument takes. `evaluate` also takes and returns CPU torch tensors (without
+copies) when torch is installed; torch is never imported unless a tensor is passed. Optional adapters:
+`sdfwb.torch` (SampleStream, an IterableDataset) and `sdfwb.dask` (manifests on a Dask cluster). Recipes
+(mixtures, DeepSDF and Occupancy Networks layouts): `sdfwb.recipes`.
+
+Type checkers read sdfwb/_native.pyi (the package is marked typed by py.typed); the dicts the functions
+return are TypedDicts there (`from sdfwb._native import SampleResult` under typing.TYPE_CHECKING).
 """
 
-import os as _os
+from __future__ import annotations
 
-from . import _native, recipes  # noqa: F401  (recipes needs numpy only)
-from ._native import *  # noqa: F401,F403  (the native functions are the package's API)
-from ._native import __version__  # noqa: F401
+import os as _os
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any, Protocol, overload
+
+from . import _native
+from . import recipes as recipes  # noqa: F401  (NumPy only; the `as` form re-exports it for type checkers)
+from ._native import __version__ as __version__  # noqa: F401
+from ._native import audit, evaluate_mesh, list_sdfs, load, mesh, params, run, sample, save
+
+if TYPE_CHECKING:
+    import numpy.typing as npt
+
+    from ._native import EvaluateResult, ParamValue
+
+__all__ = [
+    "audit",
+    "evaluate",
+    "evaluate_mesh",
+    "list_sdfs",
+    "load",
+    "mesh",
+    "params",
+    "run",
+    "sample",
+    "save",
+]
 
 # A forked child (a DataLoader worker, a Dask nanny) must not use the parent's EGL context: it
 # makes its own on first use.
 _os.register_at_fork(after_in_child=_native._forget_context_after_fork)
 
 
-def _is_torch_tensor(value):
+class _CpuTensor(Protocol):
+    """What evaluate needs of a torch.Tensor, named without importing torch."""
+
+    @property
+    def device(self) -> Any: ...
+
+    def detach(self) -> Any: ...
+
+    def numpy(self) -> Any: ...
+
+
+def _is_torch_tensor(value: object) -> bool:
     return type(value).__module__.split(".")[0] == "torch" and hasattr(value, "numpy")
 
 
-def evaluate(sdf, points, params=None, time=0.0, gradient=True, gradient_step=1e-3, entry="", chunk=1 << 18):
+@overload
+def evaluate(sdf: str, points: _CpuTensor, params: Mapping[str, ParamValue] | None = None, time: float = 0.0,
+             gradient: bool = True, gradient_step: float = 1e-3, entry: str = "",
+             chunk: int = 1 << 18) -> dict[str, Any]: ...
+
+
+@overload
+def evaluate(sdf: str, points: npt.ArrayLike, params: Mapping[str, ParamValue] | None = None, time: float = 0.0,
+             gradient: bool = True, gradient_step: float = 1e-3, entry: str = "",
+             chunk: int = 1 << 18) -> EvaluateResult: ...
+
+
+def evaluate(sdf: str, points: Any, params: Mapping[str, ParamValue] | None = None, time: float = 0.0,
+             gradient: bool = True, gradient_step: float = 1e-3, entry: str = "",
+             chunk: int = 1 << 18) -> EvaluateResult | dict[str, Any]:
+    """The field of `sdf` at the caller's points, through the samplers' own stage: bit-equal to what the
+    samplers write at the same positions with the same gradient_step.
+
+    Args:
+        sdf (str): a dataset name (any case, see list_sdfs()), a path to a .glsl file, or GLSL source text
+            (anything containing both '{' and '('), as for sample().
+        points (array_like or torch.Tensor): shape (N, 3), N <= 4294967295 (N = 0 gives empty arrays);
+            float32 C-order arrays are read in place, anything else is converted to float32 once. A CPU
+            torch tensor gives tensors out that share the returned arrays' memory.
+        params (Mapping[str, bool | float | Sequence[float]] | None): values for the SDF's declared
+            parameters, e.g. {'radius': 0.3, 'offset': (0, 0.1, 0)} (sdfwb.params(sdf) lists them).
+            Default None: the declared defaults.
+        time (float): seconds, finite, for animated SDFs. Default 0.
+        gradient (bool): also return the gradient; False evaluates the field once per point instead of
+            seven times. Default True.
+        gradient_step (float): > 0, world units: the step of the central differences. Default 1e-3.
+        entry (str): the SDF's function when it is not `sdf` (e.g. 'map'), as for sample(). Default ''.
+        chunk (int): >= 1, points per GPU dispatch; does not change the values. Default 262144.
+
+    Returns:
+        dict: distance (N,) float32; gradient (N, 3) float32 (raw central differences), or None when
+        gradient=False; bad_rows (int: rows with NaN or Inf); seconds (float). For a tensor in, distance
+        and gradient are torch tensors.
+
+    Raises:
+        ValueError: points not of shape (N, 3), a tensor on a device other than the CPU, an argument out of
+            range, an unknown SDF or parameter, or GLSL errors (with file:line:column).
+        TypeError: params is not a mapping of numbers, bools or sequences of numbers.
+        RuntimeError: no EGL/GL, a GPU failure, or a process forked after its parent used the GPU.
+
+    The GIL is released while the GPU works.
+    """
     if _is_torch_tensor(points):
         import torch
 
         if points.device.type != "cpu":
             raise ValueError(f"evaluate: points must be a CPU tensor, not one on {points.device}")
-        result = _native.evaluate(sdf, points.detach().numpy(), params, time, gradient, gradient_step, entry, chunk)
+        result: dict[str, Any] = dict(
+            _native.evaluate(sdf, points.detach().numpy(), params, time, gradient, gradient_step, entry, chunk))
         result["distance"] = torch.from_numpy(result["distance"])
         if result["gradient"] is not None:
             result["gradient"] = torch.from_numpy(result["gradient"])
         return result
     return _native.evaluate(sdf, points, params, time, gradient, gradient_step, entry, chunk)
-
-
-evaluate.__doc__ = (
-    "evaluate(sdf, points, params=None, time=0.0, gradient=True, gradient_step=1e-3, entry='', chunk=262144) -> dict\n\n"
-    + _native.evaluate.__doc__.split("\n\n", 1)[-1]
-    + "\nA CPU torch tensor in gives tensors out that share the returned arrays' memory (float32 C-order input is read\n"
-    "in place; anything else is converted once)."
-)

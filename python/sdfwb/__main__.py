@@ -9,10 +9,13 @@ evaluate: OUT.npz holds distance (N,) and, unless --no-gradient, gradient (N,3) 
 bad_rows, seconds). Exit codes: 0 done, 2 bad arguments or input, 1 a failure while running.
 """
 
+from __future__ import annotations
+
 import argparse
 import json
-import os
 import sys
+from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 
@@ -22,7 +25,7 @@ from .recipes import atomic_write as _atomic_save
 RECIPE_KEYS = {"recipe", "sdf", "entry", "params", "n", "seed", "time", "output", "padding"}
 
 
-def _evaluate(options):
+def _evaluate(options: argparse.Namespace) -> None:
     try:
         points = np.load(options.points, allow_pickle=False)
     except (OSError, ValueError) as error:
@@ -45,7 +48,7 @@ def _evaluate(options):
     print(f"{options.output}: {len(points)} points in {result['seconds']:.3f} s ({result['bad_rows']} non-finite)")
 
 
-def _recipe(options):
+def _recipe(options: argparse.Namespace) -> None:
     if options.name == "-":
         text = sys.stdin.read()
         try:
@@ -82,14 +85,21 @@ def _recipe(options):
         arguments["padding"] = float(item["padding"])
     elif "padding" in item:
         raise ValueError("recipe: 'padding' belongs to occnet")
-    run = recipes.deepsdf if name == "deepsdf" else recipes.occnet
+    run: Callable[..., dict[str, Any]] = recipes.deepsdf
+    if name == "occnet":
+        run = recipes.occnet
     metadata = run(item["sdf"], item["output"], **arguments)
     rows = metadata["n"] - metadata.get("rows_dropped", 0)
     print(json.dumps({"output": item["output"], "recipe": name, "rows": rows, "bad_rows": metadata.get("rows_dropped", 0),
                       "seconds": metadata["sampling_seconds"]}))
 
 
-def main(argv=None):
+def main(argv: list[str] | None = None) -> int:
+    """The command line; returns the exit code (0 done, 2 bad arguments or input, 1 a failure while running).
+
+    Args:
+        argv (list[str] | None): the arguments after the program's name. Default None: sys.argv[1:].
+    """
     parser = argparse.ArgumentParser(prog="python3 -m sdfwb")
     commands = parser.add_subparsers(dest="command", required=True)
     ev = commands.add_parser("evaluate", help="the field at the points of a .npy file")

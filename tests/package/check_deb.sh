@@ -91,7 +91,8 @@ if [ "$with_gui" = 1 ]; then
   required+=(/usr/share/applications/sdfwb.desktop /usr/share/mime/packages/sdfwb.xml
     /usr/share/icons/hicolor/scalable/apps/sdfwb.svg /usr/share/icons/hicolor/256x256/apps/sdfwb.png)
 fi
-[ "$with_python" = 1 ] && required+=(/usr/lib/python3/dist-packages/sdfwb/__init__.py)
+[ "$with_python" = 1 ] && required+=(/usr/lib/python3/dist-packages/sdfwb/__init__.py /usr/lib/python3/dist-packages/sdfwb/_native.pyi
+  /usr/lib/python3/dist-packages/sdfwb/py.typed)
 for path in "${required[@]}"; do
   has "$path" || fail "the .deb lacks $path"
 done
