@@ -293,6 +293,7 @@ template <class V> void fields(V& v, MeshReport& r) {
     v("blocks_kept", r.blocksKept);
     v("points_evaluated", r.pointsEvaluated);
     v("clamped_vertices", r.clampedVertices);
+    v("bounds_cut_points", r.boundsCutPoints);
     v("mesh_seconds", r.meshSeconds);
     v("mesh_to_surface_mean", r.meshToSurfaceMean);
     v("mesh_to_surface_max", r.meshToSurfaceMax);

@@ -123,6 +123,7 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
     report.blocksKept = stats.blocksKept;
     report.pointsEvaluated = stats.pointsEvaluated;
     report.clampedVertices = stats.clampedVertices;
+    report.boundsCutPoints = stats.boundsCutPoints;
     report.meshSeconds = stats.seconds;
     if (request.errorSamples > 0) {
         meshing::ErrorOptions errorOptions;

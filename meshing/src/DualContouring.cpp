@@ -246,11 +246,16 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
     if (options.resolution < 2 || options.resolution > 2048) return makeError("--resolution: must be 2..2048");
     for (int a = 0; a < 3; ++a)
         if (!(options.boundsMax[a] > options.boundsMin[a])) return makeError("--bounds: every maximum must exceed its minimum");
-    Grid grid{options.resolution, glm::dvec3(options.boundsMin),
-              (glm::dvec3(options.boundsMax) - glm::dvec3(options.boundsMin)) / double(options.resolution)};
+    // One cell of padding on every side, and the field cut by a box half a cell beyond the bounds:
+    // a shape that leaves the bounds is closed there (flat caps, sharp rims), so every mesh is
+    // closed. A shape inside the bounds is meshed as before: the cut changes no sign there.
+    const glm::dvec3 step = (glm::dvec3(options.boundsMax) - glm::dvec3(options.boundsMin)) / double(options.resolution);
+    Grid grid{options.resolution + 2, glm::dvec3(options.boundsMin) - step, step};
+    const glm::dvec3 clipLow = glm::dvec3(options.boundsMin) - 0.5 * step, clipHigh = glm::dvec3(options.boundsMax) + 0.5 * step;
     MeshStats stats;
     detail::FieldProbe probe;
     if (auto ok = probe.build(sdf, "analysis/points.glsl", options.time, options.parameters); !ok) return ok.error();
+    probe.setClip(clipLow, clipHigh);
     const CubeTables& tables = cube();
 
     // 1. Block centres: which blocks may hold surface.
@@ -290,6 +295,7 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
     {
         detail::FieldProbe lattice;
         if (auto ok = lattice.build(sdf, "analysis/lattice.glsl", options.time, options.parameters); !ok) return ok.error();
+        lattice.setClip(clipLow, clipHigh);
         std::vector<float> firstPoints;
         firstPoints.reserve(3 * kept.size());
         for (const auto& b : kept)
@@ -297,6 +303,7 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
         if (auto ok = lattice.evaluateLattice(firstPoints, glm::vec3(grid.origin), glm::vec3(grid.step), kBlock, grid.n, values);
             !ok)
             return ok.error();
+        stats.boundsCutPoints = lattice.clipped();
     }
     stats.pointsEvaluated += values.size();
     if (progress.isCancelled()) return makeError("mesh: cancelled");

@@ -4,7 +4,10 @@
 #include <sampling/SamplerLibrary.h>
 #include <shaders/ShaderComposer.h>
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 
 namespace sdfwb::meshing::detail {
@@ -18,6 +21,36 @@ Expected<void> FieldProbe::build(const shaders::PreparedSdf& sdf, const std::str
     for (const auto& d : m_compute.build(sdf, *piece))
         if (d.severity == shaders::Severity::Error) return makeError("mesh: " + shaders::formatDiagnostic(d));
     return {};
+}
+
+void FieldProbe::setClip(glm::dvec3 low, glm::dvec3 high) {
+    m_clip = true;
+    m_low = low;
+    m_high = high;
+}
+
+void FieldProbe::clip(const float* point, float& distance, float* gradient) {
+    // Per axis: how far outside the slab the point lies (negative inside), and which face is nearer.
+    glm::dvec3 q, side;
+    for (int a = 0; a < 3; ++a) {
+        const double below = m_low[a] - double(point[a]), above = double(point[a]) - m_high[a];
+        q[a] = std::max(below, above);
+        side[a] = above >= below ? 1.0 : -1.0;
+    }
+    const glm::dvec3 out = glm::max(q, glm::dvec3(0.0));
+    const double outside = glm::length(out);
+    const int axis = q.x >= q.y && q.x >= q.z ? 0 : (q.y >= q.z ? 1 : 2);
+    const double box = outside + std::min(q[axis], 0.0);
+    if (!(box > double(distance)) && std::isfinite(distance)) return;
+    if (distance < 0.0f && box >= 0.0) ++m_clipped;
+    distance = float(box);
+    if (!gradient) return;
+    glm::dvec3 g(0.0);
+    if (outside > 0.0)
+        g = out * side / outside;
+    else
+        g[axis] = side[axis];
+    for (int a = 0; a < 3; ++a) gradient[a] = float(g[a]);
 }
 
 sampling::SamplingJob FieldProbe::job(std::uint64_t count) const {
@@ -41,6 +74,9 @@ Expected<void> FieldProbe::evaluate(const std::vector<float>& points, std::vecto
     // The points are the caller's: no positions back, and no gradient taps unless asked for.
     auto report = sampling::sampleInto(m_compute, job, nullptr, distances.data(), gradients ? gradients->data() : nullptr, {});
     if (!report) return report.error();
+    if (m_clip)
+        for (std::uint64_t i = 0; i < n; ++i)
+            clip(points.data() + 3 * i, distances[i], gradients ? gradients->data() + 3 * i : nullptr);
     return {};
 }
 
@@ -57,6 +93,23 @@ Expected<void> FieldProbe::evaluateLattice(const std::vector<float>& firstPoints
     std::copy(std::begin(parameters), std::end(parameters), job.parameters);
     auto report = sampling::sampleInto(m_compute, job, nullptr, distances.data(), nullptr, {});
     if (!report) return report.error();
+    if (m_clip) {
+        // The grid points in the order analysis/lattice.glsl writes them: per block, x fastest.
+        const int side = block + 1;
+        std::uint64_t i = 0;
+        for (std::size_t b = 0; b + 2 < firstPoints.size(); b += 3)
+            for (int k = 0; k < side; ++k)
+                for (int j = 0; j < side; ++j)
+                    for (int x = 0; x < side; ++x, ++i) {
+                        // Indices past n are clamped to n, as the shader does.
+                        auto at = [&](int a, int offset) {
+                            const double index = std::min(double(firstPoints[b + std::size_t(a)]) + offset, double(n));
+                            return float(double(origin[a]) + index * double(step[a]));
+                        };
+                        const float p[3] = {at(0, x), at(1, j), at(2, k)};
+                        clip(p, distances[i], nullptr);
+                    }
+    }
     return {};
 }
 

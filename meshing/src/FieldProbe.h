@@ -31,11 +31,20 @@ public:
     // n rows of a generating sampler (surface): positions, distances and gradients.
     Expected<void> generate(std::uint64_t n, std::uint64_t seed, std::vector<float>& positions, std::vector<float>& distances,
                             std::vector<float>& gradients);
+    // Cuts the field by a box: evaluate() and evaluateLattice() give max(f, box(p)), where box is
+    // the box's exact SDF, and its gradient where the box's value wins: a shape that leaves the box
+    // is closed on the box's faces. clipped() counts the values whose sign the cut changed.
+    void setClip(glm::dvec3 low, glm::dvec3 high);
+    std::uint64_t clipped() const { return m_clipped; }
     ~FieldProbe() { m_compute.releaseGl(); }
 
 private:
     sampling::SamplingJob job(std::uint64_t count) const; // this probe's time and parameters
     renderer::SampleCompute m_compute;
+    void clip(const float* point, float& distance, float* gradient);
+    bool m_clip = false;
+    glm::dvec3 m_low{0.0}, m_high{0.0};
+    std::uint64_t m_clipped = 0;
     float m_time = 0.0f;
     std::vector<shaders::ParameterSetting> m_parameters;
 };

@@ -379,7 +379,12 @@ def test_mesh_returns_arrays_over_its_own_memory_and_the_clis_mesh():
         written = meshio.read(path)
         assert np.array_equal(written.points.astype(np.float32), v)
         assert np.array_equal(written.cells_dict["triangle"], f)
-    half = sdfwb.mesh("sphere", resolution=32, bounds=(-1, -1, 0, 1, 1, 1))  # the upper half: cut open by the bounds
-    assert np.all(half["vertices"][:, 2] >= -1e-6) and half["report"]["boundary_edges"] > 0
+    # The upper half: the bounds cut the sphere, and the mesh is closed by a flat cap half a cell
+    # (1/64) below z = 0.
+    half = sdfwb.mesh("sphere", resolution=32, bounds=(-1, -1, 0, 1, 1, 1))
+    z = half["vertices"][:, 2]
+    assert np.all(z >= -1 / 64 - 1e-6) and half["report"]["boundary_edges"] == 0 and half["report"]["watertight"]
+    assert half["report"]["bounds_cut_points"] > 0
+    assert np.count_nonzero(np.abs(z + 1 / 64) < 1e-6) > 50, "the cap is flat, on the cut"
     with pytest.raises(ValueError, match="--resolution"):
         sdfwb.mesh("sphere", resolution=1)

@@ -501,3 +501,48 @@ TEST_F(MeshTest, ARotatedBoxKeepsItsCorners) {
                              << mesh.vertices[worstVertex].x << "," << mesh.vertices[worstVertex].y << ","
                              << mesh.vertices[worstVertex].z;
 }
+
+// Issue 33, point 1: a shape that leaves the bounds is closed there. The grid has a cell of
+// padding on every side and the field is cut by a box half a cell beyond the bounds, so a sphere
+// of radius 1.2 in the bounds [-1, 1]^3 becomes a closed, outward mesh whose caps lie flat on that
+// box (h/2 outside the bounds); the Sierpinski tetrahedron, which reaches the bounds, is closed
+// too. A shape inside the bounds is not cut (no grid point counted).
+TEST_F(MeshTest, AShapeThatLeavesTheBoundsIsClosedByFlatCaps) {
+    const int resolution = 32;
+    const double h = 2.0 / resolution, cap = 1.0 + 0.5 * h;
+    meshing::MeshOptions options;
+    options.resolution = resolution;
+    auto cut = meshing::extractMesh(source("float sdf(vec3 p) { return length(p) - 1.2; }"), options, {});
+    ASSERT_TRUE(cut) << cut.error().message;
+    const meshing::Mesh& mesh = cut->first;
+    EXPECT_GT(cut->second.boundsCutPoints, 0u);
+    const meshing::Topology topology = meshing::checkTopology(mesh);
+    EXPECT_TRUE(topology.watertight()) << topology.boundaryEdges << " boundary, " << topology.nonManifoldEdges << " non-manifold";
+    EXPECT_EQ(topology.degenerateTriangles, 0u);
+    EXPECT_TRUE(closedAndOutward(mesh));
+    int onCaps = 0;
+    double worstCap = 0.0, worstOutside = 0.0;
+    for (const glm::vec3& v : mesh.vertices) {
+        const double largest = std::max({std::abs(double(v.x)), std::abs(double(v.y)), std::abs(double(v.z))});
+        worstOutside = std::max(worstOutside, largest - cap);
+        if (largest > 1.0 + 0.25 * h && glm::length(glm::dvec3(v)) < 1.2 - 0.25 * h) { // a cap's interior, off the sphere
+            ++onCaps;
+            worstCap = std::max(worstCap, std::abs(largest - cap));
+        }
+    }
+    EXPECT_LT(worstOutside, 1e-5) << "no vertex beyond the cut";
+    EXPECT_GT(onCaps, 6 * 50) << "six caps of vertices";
+    EXPECT_LT(worstCap, 1e-5) << "caps are flat, on the cut";
+
+    auto sierpinski = meshing::extractMesh(sdfwb::testing::loadSourceSdf("dataset/Fractal/SierpinskiTetrahedron.glsl"),
+                                           meshing::MeshOptions{64}, {});
+    ASSERT_TRUE(sierpinski) << sierpinski.error().message;
+    EXPECT_GT(sierpinski->second.boundsCutPoints, 0u) << "its tips reach the bounds";
+    const meshing::Topology tips = meshing::checkTopology(sierpinski->first);
+    EXPECT_EQ(tips.boundaryEdges, 0u) << "16 boundary edges before the cut";
+    EXPECT_EQ(tips.nonManifoldEdges, 0u);
+
+    auto inside = meshing::extractMesh(source(kSphere), options, {});
+    ASSERT_TRUE(inside);
+    EXPECT_EQ(inside->second.boundsCutPoints, 0u);
+}

@@ -10,6 +10,11 @@ int runMesh(const jobs::MeshRequest& request, const OutputOptions& output) {
         std::printf("  topology           %s: %llu boundary edges, %llu non-manifold edges, %llu degenerate triangles\n",
                     r.watertight ? "watertight" : "not watertight", (unsigned long long)r.boundaryEdges,
                     (unsigned long long)r.nonManifoldEdges, (unsigned long long)r.degenerateTriangles);
+        if (r.boundsCutPoints > 0)
+            std::printf(
+                "  bounds             the shape leaves the bounds (%llu grid points inside it beyond them): closed by flat "
+                "caps half a cell outside\n",
+                (unsigned long long)r.boundsCutPoints);
         std::printf("  skipping           Lipschitz bound %.3g (%s); %llu of %llu blocks of 8^3 cells evaluated, %llu field "
                     "evaluations\n",
                     r.lipschitzBound, r.boundSource.c_str(), (unsigned long long)r.blocksKept, (unsigned long long)r.blocks,

@@ -341,6 +341,7 @@ struct MeshReport {
     std::string boundSource;  // where the bound came from
     std::string fieldVerdict; // the quick audit's verdict (exact, conservative, ...)
     std::uint64_t blocks = 0, blocksKept = 0, pointsEvaluated = 0, clampedVertices = 0;
+    std::uint64_t boundsCutPoints = 0; // grid points inside the shape beyond the bounds: closed by caps there
     double meshSeconds = 0.0;
     // The error against the exact field (absent with error_samples 0).
     std::optional<float> meshToSurfaceMean, meshToSurfaceMax, surfaceToMeshMean, surfaceToMeshMax, hausdorff;

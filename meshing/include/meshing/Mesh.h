@@ -41,6 +41,9 @@ struct MeshStats {
     std::uint64_t pointsEvaluated = 0;        // field evaluations on the GPU (grid, crossings, centres)
     std::uint64_t activeCells = 0;            // cells the surface crosses (one vertex each)
     std::uint64_t clampedVertices = 0;        // QEF minimisers outside their cell, clamped into it
+    // Grid points inside the shape but outside the bounds (half a cell beyond them): the shape
+    // leaves the bounds and the mesh is closed by flat caps there. 0: the shape lies inside.
+    std::uint64_t boundsCutPoints = 0;
     double seconds = 0.0;
 };
 
@@ -49,7 +52,7 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
 
 struct Topology {
     std::uint64_t edges = 0;
-    std::uint64_t boundaryEdges = 0;    // used by one triangle: a hole (or the bounds cut the shape)
+    std::uint64_t boundaryEdges = 0;    // used by one triangle: a hole
     std::uint64_t nonManifoldEdges = 0; // used by three or more triangles
     std::uint64_t degenerateTriangles = 0;
     bool watertight() const { return boundaryEdges == 0 && nonManifoldEdges == 0; }
