@@ -132,6 +132,7 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
         errorOptions.time = request.time;
         errorOptions.parameters = sdf->parameters;
         errorOptions.fieldIsExact = verdict == "exact";
+        if (stats.boundsCutPoints > 0) errorOptions.cut = meshing::cutBox(options);
         auto error = meshing::measureError(sdf->prepared, mesh, errorOptions);
         if (!error) return JobError{Failure::Work, error.error().message, {}};
         report.meshToSurfaceMean = error->meshToSurfaceMean;

@@ -240,6 +240,11 @@ void weldCoincidentVertices(Mesh& mesh) {
 
 } // namespace
 
+std::pair<glm::vec3, glm::vec3> cutBox(const MeshOptions& options) {
+    const glm::dvec3 step = (glm::dvec3(options.boundsMax) - glm::dvec3(options.boundsMin)) / double(options.resolution);
+    return {glm::vec3(glm::dvec3(options.boundsMin) - 0.5 * step), glm::vec3(glm::dvec3(options.boundsMax) + 0.5 * step)};
+}
+
 Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf, const MeshOptions& options,
                                                  const ProgressSink& progress) {
     const auto start = std::chrono::steady_clock::now();
@@ -251,7 +256,8 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
     // closed. A shape inside the bounds is meshed as before: the cut changes no sign there.
     const glm::dvec3 step = (glm::dvec3(options.boundsMax) - glm::dvec3(options.boundsMin)) / double(options.resolution);
     Grid grid{options.resolution + 2, glm::dvec3(options.boundsMin) - step, step};
-    const glm::dvec3 clipLow = glm::dvec3(options.boundsMin) - 0.5 * step, clipHigh = glm::dvec3(options.boundsMax) + 0.5 * step;
+    const auto [cutLow, cutHigh] = cutBox(options);
+    const glm::dvec3 clipLow(cutLow), clipHigh(cutHigh);
     MeshStats stats;
     detail::FieldProbe probe;
     if (auto ok = probe.build(sdf, "analysis/points.glsl", options.time, options.parameters); !ok) return ok.error();

@@ -4,6 +4,7 @@
 #include "FieldProbe.h"
 
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 #include <nanoflann.hpp>
 
 #include <algorithm>
@@ -207,6 +208,7 @@ Expected<MeshError> measureError(const shaders::PreparedSdf& sdf, const Mesh& me
     {
         detail::FieldProbe probe;
         if (auto ok = probe.build(sdf, "analysis/points.glsl", options.time, options.parameters); !ok) return ok.error();
+        if (options.cut) probe.setClip(glm::dvec3(options.cut->first), glm::dvec3(options.cut->second));
         if (auto ok = probe.evaluate(onMesh.xyz, meshDistances, &meshGradients); !ok) return ok.error();
     }
     if (options.fieldIsExact) {
@@ -240,6 +242,11 @@ Expected<MeshError> measureError(const shaders::PreparedSdf& sdf, const Mesh& me
     std::uint64_t counted = 0;
     for (std::size_t s = 0; s < distances.size(); ++s) {
         if (!std::isfinite(distances[s])) continue; // a ray that missed
+        if (options.cut) {
+            const glm::vec3 p(surface[3 * s], surface[3 * s + 1], surface[3 * s + 2]);
+            if (glm::any(glm::lessThan(p, options.cut->first)) || glm::any(glm::greaterThan(p, options.cut->second)))
+                continue; // cut away with the field
+        }
         const float d = locator.nearest(glm::vec3(surface[3 * s], surface[3 * s + 1], surface[3 * s + 2])).first;
         if (!std::isfinite(d)) continue;
         sum += double(d);

@@ -533,6 +533,19 @@ TEST_F(MeshTest, AShapeThatLeavesTheBoundsIsClosedByFlatCaps) {
     EXPECT_LT(worstOutside, 1e-5) << "no vertex beyond the cut";
     EXPECT_GT(onCaps, 6 * 50) << "six caps of vertices";
     EXPECT_LT(worstCap, 1e-5) << "caps are flat, on the cut";
+    // Against the field cut by the same box the caps are on the surface; against the uncut sphere
+    // the caps' middles are 1.2 - (1 + h/2) = 0.17 away.
+    meshing::ErrorOptions errorOptions;
+    errorOptions.meshPoints = errorOptions.surfacePoints = 20000;
+    errorOptions.cut = meshing::cutBox(options);
+    auto againstCut = meshing::measureError(source("float sdf(vec3 p) { return length(p) - 1.2; }"), mesh, errorOptions);
+    ASSERT_TRUE(againstCut) << againstCut.error().message;
+    EXPECT_LT(againstCut->hausdorff, 0.02f) << "the rims' chords at 32 cells";
+    EXPECT_LT(againstCut->meshToSurfaceMean, 1e-3f);
+    errorOptions.cut.reset();
+    auto againstSphere = meshing::measureError(source("float sdf(vec3 p) { return length(p) - 1.2; }"), mesh, errorOptions);
+    ASSERT_TRUE(againstSphere);
+    EXPECT_GT(againstSphere->meshToSurfaceMax, 0.15f);
 
     auto sierpinski = meshing::extractMesh(sdfwb::testing::loadSourceSdf("dataset/Fractal/SierpinskiTetrahedron.glsl"),
                                            meshing::MeshOptions{64}, {});

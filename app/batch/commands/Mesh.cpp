@@ -13,7 +13,7 @@ int runMesh(const jobs::MeshRequest& request, const OutputOptions& output) {
         if (r.boundsCutPoints > 0)
             std::printf(
                 "  bounds             the shape leaves the bounds (%llu grid points inside it beyond them): closed by flat "
-                "caps half a cell outside\n",
+                "caps half a cell outside; the error below is against the field cut there\n",
                 (unsigned long long)r.boundsCutPoints);
         std::printf("  skipping           Lipschitz bound %.3g (%s); %llu of %llu blocks of 8^3 cells evaluated, %llu field "
                     "evaluations\n",

@@ -47,6 +47,9 @@ struct MeshStats {
     double seconds = 0.0;
 };
 
+// The box extractMesh() cuts the field by: the bounds grown by half a cell on every side.
+std::pair<glm::vec3, glm::vec3> cutBox(const MeshOptions& options);
+
 Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf, const MeshOptions& options,
                                                  const ProgressSink& progress);
 
@@ -75,6 +78,10 @@ struct ErrorOptions {
     // False for a field the audit did not find exact: |f| then underestimates the distance, and
     // mesh -> surface uses |f| / |grad f| (one Newton step to the zero set) instead.
     bool fieldIsExact = true;
+    // The box the mesher cut the field by (cutBox()), when the shape leaves the bounds: the error is
+    // then against the cut field, whose surface includes the flat caps, and only surface points
+    // inside the box count.
+    std::optional<std::pair<glm::vec3, glm::vec3>> cut;
 };
 
 struct MeshError {
