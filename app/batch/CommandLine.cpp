@@ -609,6 +609,8 @@ int runMeshCommand(const Arguments& arguments, Mode mode) {
     app.add_option("--seed", request.seed, "random seed of the error's points")
         ->capture_default_str()
         ->check(wholeNumberCheck(false));
+    app.add_flag("--self-intersections", request.selfIntersections,
+                 "count the pairs of triangles that cross each other (about two seconds per million triangles)");
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch mesh", arguments)) return *exit;
     return finish(request, ending, mode);

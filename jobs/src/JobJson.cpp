@@ -146,6 +146,7 @@ template <class V> void fields(V& v, MeshRequest& r) {
     v("lipschitz", r.lipschitz);
     v("error_samples", r.errorSamples);
     v("seed", r.seed);
+    v("self_intersections", r.selfIntersections);
 }
 
 template <class V> void fields(V& v, EvalRequest& r) {
@@ -294,6 +295,7 @@ template <class V> void fields(V& v, MeshReport& r) {
     v("points_evaluated", r.pointsEvaluated);
     v("clamped_vertices", r.clampedVertices);
     v("bounds_cut_points", r.boundsCutPoints);
+    v("self_intersections", r.selfIntersections);
     v("mesh_seconds", r.meshSeconds);
     v("mesh_to_surface_mean", r.meshToSurfaceMean);
     v("mesh_to_surface_max", r.meshToSurfaceMax);

@@ -124,6 +124,7 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
     report.pointsEvaluated = stats.pointsEvaluated;
     report.clampedVertices = stats.clampedVertices;
     report.boundsCutPoints = stats.boundsCutPoints;
+    if (request.selfIntersections) report.selfIntersections = meshing::countSelfIntersections(mesh);
     report.meshSeconds = stats.seconds;
     if (request.errorSamples > 0) {
         meshing::ErrorOptions errorOptions;

@@ -559,3 +559,25 @@ TEST_F(MeshTest, AShapeThatLeavesTheBoundsIsClosedByFlatCaps) {
     ASSERT_TRUE(inside);
     EXPECT_EQ(inside->second.boundsCutPoints, 0u);
 }
+
+// Issue 33, point 1: self-intersections are counted. Two icospheres of radius 0.6 whose centres
+// are 0.5 apart cross along a circle; 2 apart, or one alone, or a mesh of the sphere's field, they
+// do not.
+TEST_F(MeshTest, SelfIntersectionsAreCountedWhereAMeshPassesThroughItself) {
+    auto merged = [](meshing::Mesh a, const meshing::Mesh& b, glm::vec3 shift) {
+        const std::uint32_t base = std::uint32_t(a.vertices.size());
+        for (const glm::vec3& v : b.vertices) a.vertices.push_back(v + shift);
+        for (std::uint32_t i : b.indices) a.indices.push_back(base + i);
+        return a;
+    };
+    const meshing::Mesh ball = icosphere(3, 0.6);
+    EXPECT_EQ(meshing::countSelfIntersections(ball), 0u);
+    const std::uint64_t crossing = meshing::countSelfIntersections(merged(ball, ball, {0.5f, 0.0f, 0.0f}));
+    // The circle where they cross (radius sqrt(0.36 - 0.0625) = 0.545) passes through roughly
+    // 2 pi 0.545 / (edge ~0.075) ~ 45 triangles of each: each meets one or two of the other's.
+    EXPECT_GT(crossing, 40u);
+    EXPECT_LT(crossing, 400u);
+    EXPECT_EQ(meshing::countSelfIntersections(merged(ball, ball, {2.0f, 0.0f, 0.0f})), 0u);
+    EXPECT_EQ(meshing::countSelfIntersections(extract(source(kSphere), 48)), 0u);
+    EXPECT_EQ(meshing::countSelfIntersections(extract(source(kBox), 48)), 0u) << "sharp edges and corners do not fold";
+}

@@ -10,6 +10,9 @@ int runMesh(const jobs::MeshRequest& request, const OutputOptions& output) {
         std::printf("  topology           %s: %llu boundary edges, %llu non-manifold edges, %llu degenerate triangles\n",
                     r.watertight ? "watertight" : "not watertight", (unsigned long long)r.boundaryEdges,
                     (unsigned long long)r.nonManifoldEdges, (unsigned long long)r.degenerateTriangles);
+        if (r.selfIntersections)
+            std::printf("  self-crossing      %llu pairs of triangles cross each other\n",
+                        (unsigned long long)*r.selfIntersections);
         if (r.boundsCutPoints > 0)
             std::printf(
                 "  bounds             the shape leaves the bounds (%llu grid points inside it beyond them): closed by flat "

@@ -157,6 +157,7 @@ struct MeshRequest {
     std::optional<float> lipschitz;
     std::uint64_t errorSamples = 100000; // points each way for the error; 0: no error measured
     std::uint64_t seed = 0;
+    bool selfIntersections = false; // count the pairs of triangles that cross (meshing::countSelfIntersections)
     bool operator==(const MeshRequest&) const = default;
 };
 
@@ -341,7 +342,8 @@ struct MeshReport {
     std::string boundSource;  // where the bound came from
     std::string fieldVerdict; // the quick audit's verdict (exact, conservative, ...)
     std::uint64_t blocks = 0, blocksKept = 0, pointsEvaluated = 0, clampedVertices = 0;
-    std::uint64_t boundsCutPoints = 0; // grid points inside the shape beyond the bounds: closed by caps there
+    std::uint64_t boundsCutPoints = 0;              // grid points inside the shape beyond the bounds: closed by caps there
+    std::optional<std::uint64_t> selfIntersections; // crossing triangle pairs, when asked for
     double meshSeconds = 0.0;
     // The error against the exact field (absent with error_samples 0).
     std::optional<float> meshToSurfaceMean, meshToSurfaceMax, surfaceToMeshMean, surfaceToMeshMax, hausdorff;

@@ -64,6 +64,11 @@ struct Topology {
 // Counts by shared vertex index (the writers keep indices; readers should merge equal positions).
 Topology checkTopology(const Mesh& mesh);
 
+// Pairs of triangles that share no vertex and cross (an edge of one passes through the other):
+// where a mesh passes through itself. Triangles that only touch a neighbour at a shared vertex or
+// edge do not count. A uniform grid of the triangles' boxes: about two seconds per million triangles on 2 cores.
+std::uint64_t countSelfIntersections(const Mesh& mesh);
+
 // The mesh against the exact field, both ways:
 //   mesh -> surface: |f| at every vertex and at points spread on the faces by area (for an exact
 //                    field |f| is the distance to the surface; for a conservative one a lower bound);
