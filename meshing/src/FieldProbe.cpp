@@ -97,7 +97,20 @@ Expected<void> FieldProbe::evaluateLattice(const std::vector<float>& firstPoints
         // The grid points in the order analysis/lattice.glsl writes them: per block, x fastest.
         const int side = block + 1;
         std::uint64_t i = 0;
-        for (std::size_t b = 0; b + 2 < firstPoints.size(); b += 3)
+        for (std::size_t b = 0; b + 2 < firstPoints.size(); b += 3) {
+            // A block inside the box keeps its values: the cut changes no sign there, and the mesher
+            // takes only signs from the grid (crossings and normals come from evaluate()).
+            bool inside = true;
+            for (int a = 0; a < 3; ++a) {
+                const double first = double(origin[a]) + double(firstPoints[b + std::size_t(a)]) * double(step[a]);
+                const double last =
+                    double(origin[a]) + std::min(double(firstPoints[b + std::size_t(a)]) + block, double(n)) * double(step[a]);
+                inside = inside && first > m_low[a] && last < m_high[a];
+            }
+            if (inside) {
+                i += std::uint64_t(side) * side * side;
+                continue;
+            }
             for (int k = 0; k < side; ++k)
                 for (int j = 0; j < side; ++j)
                     for (int x = 0; x < side; ++x, ++i) {
@@ -109,6 +122,7 @@ Expected<void> FieldProbe::evaluateLattice(const std::vector<float>& firstPoints
                         const float p[3] = {at(0, x), at(1, j), at(2, k)};
                         clip(p, distances[i], nullptr);
                     }
+        }
     }
     return {};
 }

@@ -33,7 +33,9 @@ public:
                             std::vector<float>& gradients);
     // Cuts the field by a box: evaluate() and evaluateLattice() give max(f, box(p)), where box is
     // the box's exact SDF, and its gradient where the box's value wins: a shape that leaves the box
-    // is closed on the box's faces. clipped() counts the values whose sign the cut changed.
+    // is closed on the box's faces. evaluateLattice() cuts only blocks not wholly inside the box (the
+    // others keep f, whose signs the cut would not change). clipped() counts the values whose sign
+    // the cut changed.
     void setClip(glm::dvec3 low, glm::dvec3 high);
     std::uint64_t clipped() const { return m_clipped; }
     ~FieldProbe() { m_compute.releaseGl(); }

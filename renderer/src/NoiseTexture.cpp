@@ -82,9 +82,11 @@ void bindSdfTextures(GLuint program, SdfTextures& textures, const std::array<std
         if (!textures.noise) textures.noise = makeNoiseTexture();
         bindUnit(shaders::kNoiseTextureUnit, textures.noise);
     }
+    static const char* const names[shaders::kShadertoyChannels] = {"iChannel0", "iChannel1", "iChannel2", "iChannel3"};
+    static const char* const resolutions[shaders::kShadertoyChannels] = {"iChannelResolution[0]", "iChannelResolution[1]",
+                                                                         "iChannelResolution[2]", "iChannelResolution[3]"};
     for (int n = 0; n < shaders::kShadertoyChannels; ++n) {
-        const std::string name = "iChannel" + std::to_string(n);
-        if (glGetUniformLocation(program, name.c_str()) < 0) continue;
+        if (glGetUniformLocation(program, names[n]) < 0) continue;
         const std::size_t i = std::size_t(n);
         if (!textures.channels[i] || textures.channelFiles[i] != files[i]) {
             textures.channels[i].reset();
@@ -101,7 +103,7 @@ void bindSdfTextures(GLuint program, SdfTextures& textures, const std::array<std
                     textures.channels[i] = makeTexture(image->width, image->height, flipped.data(), true);
                     textures.channelSizes[i] = glm::vec2(float(image->width), float(image->height));
                 } else {
-                    log::warning("render", name + ": " + image.error().message + "; using the noise texture");
+                    log::warning("render", std::string(names[n]) + ": " + image.error().message + "; using the noise texture");
                 }
             }
             if (!textures.channels[i]) {
@@ -110,8 +112,7 @@ void bindSdfTextures(GLuint program, SdfTextures& textures, const std::array<std
             }
         }
         bindUnit(shaders::kChannelTextureUnit + n, textures.channels[i]);
-        const std::string resolution = "iChannelResolution[" + std::to_string(n) + "]";
-        if (GLint at = glGetUniformLocation(program, resolution.c_str()); at >= 0)
+        if (GLint at = glGetUniformLocation(program, resolutions[n]); at >= 0)
             glProgramUniform3f(program, at, textures.channelSizes[i].x, textures.channelSizes[i].y, 1.0f);
     }
 }

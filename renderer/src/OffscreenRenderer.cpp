@@ -81,8 +81,7 @@ Image OffscreenRenderer::render(SdfRenderer& renderer, int width, int height, co
 Image OffscreenRenderer::renderPicture(ShadertoyPicture& picture, int width, int height, const ShadertoyInputs& inputs) {
     m_impl->ensureSize(width, height);
     glBindFramebuffer(GL_FRAMEBUFFER, m_impl->framebuffer.id());
-    picture.render(width, height, inputs);
-    glFinish();
+    (void)picture.render(width, height, inputs, true);
     Image image{width, height, readTopDown<std::uint8_t>(width, height, GL_UNSIGNED_BYTE)};
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return image;

@@ -5,6 +5,7 @@
 #include <shaders/ShaderComposer.h>
 
 #include <array>
+#include <chrono>
 #include <optional>
 #include <string>
 
@@ -64,7 +65,14 @@ void ShadertoyPicture::setParameters(std::vector<shaders::ParameterSetting> para
 
 bool ShadertoyPicture::hasProgram() const { return bool(m_impl->program); }
 
-void ShadertoyPicture::render(int width, int height, const ShadertoyInputs& inputs) {
+double ShadertoyPicture::render(int width, int height, const ShadertoyInputs& inputs, bool finish) {
+    const auto start = std::chrono::steady_clock::now();
+    draw(width, height, inputs);
+    if (finish) glFinish();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void ShadertoyPicture::draw(int width, int height, const ShadertoyInputs& inputs) {
     Impl& d = *m_impl;
     glViewport(0, 0, width, height);
     if (!d.program) {

@@ -88,6 +88,14 @@ std::string firstError(const shaders::PreparedSdf& sdf) {
     return {};
 }
 
+// A test's name from its file: the stem, with anything but letters and digits as '_'.
+std::string fileTestName(const ::testing::TestParamInfo<std::string>& info) {
+    std::string name = fs::path(info.param).stem().string();
+    for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    return name;
+}
+
 class ForeignCode : public sdfwb::testing::GlTest, public ::testing::WithParamInterface<std::string> {};
 
 } // namespace
@@ -176,12 +184,7 @@ TEST_P(ForeignCode, OpensRendersSamplesAndGetsItsFlags) {
     if (!expected.flags.empty()) { EXPECT_EQ(audit->verdict, audit->flags.front().name); }
 }
 
-INSTANTIATE_TEST_SUITE_P(Corpus, ForeignCode, ::testing::ValuesIn(corpusFiles()), [](const auto& info) {
-    std::string name = fs::path(info.param).stem().string();
-    for (char& c : name)
-        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-    return name;
-});
+INSTANTIATE_TEST_SUITE_P(Corpus, ForeignCode, ::testing::ValuesIn(corpusFiles()), fileTestName);
 
 namespace {
 class UserNames : public sdfwb::testing::GlTest {};
@@ -449,9 +452,4 @@ TEST_P(ShadertoyPictureOf, SilhouetteMatchesSdfwbsTracer) {
     std::cout << GetParam() << ": silhouette IoU " << iou << " (author " << authors << " px, sdfwb " << ours << " px)\n";
 }
 
-INSTANTIATE_TEST_SUITE_P(Corpus, ShadertoyPictureOf, ::testing::ValuesIn(pictureFiles()), [](const auto& info) {
-    std::string name = fs::path(info.param).stem().string();
-    for (char& c : name)
-        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-    return name;
-});
+INSTANTIATE_TEST_SUITE_P(Corpus, ShadertoyPictureOf, ::testing::ValuesIn(pictureFiles()), fileTestName);

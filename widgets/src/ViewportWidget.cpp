@@ -20,7 +20,6 @@
 #include <QWheelEvent>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 namespace sdfwb::widgets {
@@ -308,15 +307,12 @@ void ViewportWidget::paintGL() {
     int width = int(std::lround(this->width() * ratio));
     int height = int(std::lround(this->height() * ratio));
     if (m_showPicture && m_picture->hasProgram()) {
-        const auto start = std::chrono::steady_clock::now();
         renderer::ShadertoyInputs inputs;
         inputs.time = m_time;
         inputs.frame = m_pictureFrame++;
         inputs.mouse = m_shadertoyMouse;
         m_picture->setParameters(m_parameters);
-        m_picture->render(width, height, inputs);
-        glFinish();
-        m_lastFrameMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        m_lastFrameMilliseconds = m_picture->render(width, height, inputs, true);
         m_lastScale = 1.0f;
         emit frameRendered(m_lastFrameMilliseconds, 1.0f);
         return;

@@ -37,11 +37,13 @@ public:
     std::vector<shaders::Diagnostic> setSdf(const shaders::PreparedSdf& sdf);
     void setParameters(std::vector<shaders::ParameterSetting> parameters);
     bool hasProgram() const;
-    // Draws width x height pixels into the bound draw framebuffer.
-    void render(int width, int height, const ShadertoyInputs& inputs);
+    // Draws width x height pixels into the bound draw framebuffer. Returns the milliseconds it
+    // took on the CPU; with `finish` that includes glFinish, so it is the frame's whole cost.
+    double render(int width, int height, const ShadertoyInputs& inputs, bool finish = false);
     void releaseGl();
 
 private:
+    void draw(int width, int height, const ShadertoyInputs& inputs);
     struct Impl;
     std::unique_ptr<Impl> m_impl;
 };
