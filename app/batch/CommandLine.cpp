@@ -164,7 +164,16 @@ void addParameterOption(CLI::App& app, const std::string& name, std::vector<shad
 
 // --sdf, --entry and --param NAME=VALUE (repeatable), shared by every command that runs an SDF.
 void addSdfOptions(CLI::App& app, jobs::SdfInput& input) {
-    app.add_option("--sdf", input.sdf, "dataset name or path to a .glsl file")->required();
+    app.add_option("--sdf", input.sdf, "dataset name, path to a .glsl file, or a triangle mesh (.obj .ply .stl .off .glb)")
+        ->required();
+    app.add_option("--sign", input.sign,
+                   "mesh SDFs: how inside is decided: winding (default; generalized winding number, survives holes and "
+                   "flipped faces), parity (ray crossings) or pseudonormal (exact on closed meshes)")
+        ->check(CLI::IsMember({"winding", "parity", "pseudonormal"}));
+    app.add_option("--normalize", input.normalize,
+                   "mesh SDFs: none (default), unit-cube (box centred, longest side 2) or unit-sphere (box centred, "
+                   "farthest vertex at 1)")
+        ->check(CLI::IsMember({"none", "unit-cube", "unit-sphere"}));
     addEntryOption(app, input.entry);
     app.add_option_function<std::vector<std::string>>(
            "--channel",

@@ -26,6 +26,8 @@ template <class V> void fields(V& v, SdfInput& s) {
     v("source", s.source);
     v("params", s.params);
     v("channels", s.channels);
+    v("sign", s.sign);
+    v("normalize", s.normalize);
 }
 
 template <class V> void fields(V& v, renderer::ShadingSettings& s) {

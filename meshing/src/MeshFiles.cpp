@@ -2,6 +2,8 @@
 // and glTF binary out; anything assimp reads in.
 #include <meshing/Mesh.h>
 
+#include <meshfield/MeshField.h>
+
 #include <assimp/Exporter.hpp>
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
@@ -128,29 +130,9 @@ Expected<void> writeMesh(const fs::path& path, const Mesh& mesh) {
 }
 
 Expected<Mesh> readMesh(const fs::path& path) {
-    Assimp::Importer importer;
-    const aiScene* scene = importer.ReadFile(path.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
-    if (!scene) return makeError(path.string() + ": cannot read the mesh: " + importer.GetErrorString());
-    // Equal positions become one vertex (STL stores each triangle's corners apart, and assimp keeps
-    // vertices apart when their normals differ), so shared edges share indices.
-    Mesh mesh;
-    std::map<std::array<float, 3>, std::uint32_t> index;
-    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-        const aiMesh* in = scene->mMeshes[m];
-        std::vector<std::uint32_t> merged(in->mNumVertices);
-        for (unsigned v = 0; v < in->mNumVertices; ++v) {
-            const std::array<float, 3> p = {in->mVertices[v].x, in->mVertices[v].y, in->mVertices[v].z};
-            auto [it, inserted] = index.try_emplace(p, std::uint32_t(mesh.vertices.size()));
-            if (inserted) mesh.vertices.emplace_back(p[0], p[1], p[2]);
-            merged[v] = it->second;
-        }
-        for (unsigned f = 0; f < in->mNumFaces; ++f) {
-            if (in->mFaces[f].mNumIndices != 3) continue; // points and lines
-            for (int k = 0; k < 3; ++k) mesh.indices.push_back(merged[in->mFaces[f].mIndices[k]]);
-        }
-    }
-    if (mesh.indices.empty()) return makeError(path.string() + ": the file holds no triangles");
-    return mesh;
+    auto triangles = meshfield::readTriangleMesh(path);
+    if (!triangles) return triangles.error();
+    return Mesh{std::move(triangles->vertices), std::move(triangles->indices)};
 }
 
 } // namespace sdfwb::meshing

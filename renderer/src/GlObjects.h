@@ -14,6 +14,7 @@
 
 #include <array>
 #include <initializer_list>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -103,6 +104,11 @@ struct SdfTextures {
     std::array<GlTexture, shaders::kShadertoyChannels> channels;
     std::array<std::string, shaders::kShadertoyChannels> channelFiles; // what each holds ("": the noise texels)
     std::array<glm::vec2, shaders::kShadertoyChannels> channelSizes{};
+    // A mesh SDF's buffers (shaders/mesh/mesh_field.glsl), uploaded once per mesh.
+    std::shared_ptr<const meshfield::MeshField> mesh;
+    GlBuffer meshNodes;
+    GlBuffer meshTriangles;
+    GlBuffer meshPseudonormals;
     void reset();
     void release();
 };
@@ -110,8 +116,10 @@ struct SdfTextures {
 // Binds what `program` reads: the noise texture to shaders::kNoiseTextureUnit (see NoiseTexture.h),
 // iChannelN to shaders::kChannelTextureUnit + N, holding the image `files[N]` (rows from the
 // bottom, as Shadertoy shows images; mipmapped) or, when that is empty or unreadable (logged), the
-// noise texels; sets iChannelResolution to the sizes. Needs a current context.
-void bindSdfTextures(GLuint program, SdfTextures& textures, const std::array<std::string, shaders::kShadertoyChannels>& files);
+// noise texels; sets iChannelResolution to the sizes; binds a mesh SDF's buffers to
+// shaders::kMesh*Binding (uploaded on first use). Needs a current context.
+void bindSdfTextures(GLuint program, SdfTextures& textures, const std::array<std::string, shaders::kShadertoyChannels>& files,
+                     const std::shared_ptr<const meshfield::MeshField>& mesh);
 
 // Sets the SDF's parameter uniforms of the program in use (glUseProgram done); `locate(name)`
 // gives a uniform's location (the tracer's cached lookup, once a frame); a parameter the compiler

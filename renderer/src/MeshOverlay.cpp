@@ -98,7 +98,8 @@ void MeshOverlay::draw(int width, int height, const Camera& camera, float time,
     glUniform1f(d.location("sdfwb_deviationScale"), scale > 0.0f ? scale : 1e-3f);
     if (GLint location = d.location("sdfwb_time"); location >= 0) glUniform1f(location, time);
     if (GLint location = d.location("g3d_SceneTime"); location >= 0) glUniform1f(location, time);
-    bindSdfTextures(d.mesh.id(), d.textures, d.sdf ? d.sdf->channels : decltype(d.sdf->channels){});
+    bindSdfTextures(d.mesh.id(), d.textures, d.sdf ? d.sdf->channels : decltype(d.sdf->channels){},
+                    d.sdf ? d.sdf->mesh : nullptr);
     applyParameters(parameters, [&d](const char* name) { return d.location(name); });
     glBindVertexArray(d.meshArray.id());
     glDrawElements(GL_TRIANGLES, GLsizei(d.indexCount), GL_UNSIGNED_INT, nullptr);

@@ -66,18 +66,56 @@ void bindUnit(int unit, const GlTexture& texture) {
 } // namespace
 
 void SdfTextures::reset() {
+    mesh.reset();
+    meshNodes.reset();
+    meshTriangles.reset();
+    meshPseudonormals.reset();
     noise.reset();
     for (GlTexture& channel : channels) channel.reset();
     channelFiles = {};
 }
 
 void SdfTextures::release() {
+    mesh.reset();
+    meshNodes.release();
+    meshTriangles.release();
+    meshPseudonormals.release();
     noise.release();
     for (GlTexture& channel : channels) channel.release();
     channelFiles = {};
 }
 
-void bindSdfTextures(GLuint program, SdfTextures& textures, const std::array<std::string, shaders::kShadertoyChannels>& files) {
+namespace {
+
+GlBuffer storageBuffer(const std::vector<float>& data) {
+    GLuint id = 0;
+    glGenBuffers(1, &id);
+    GlBuffer buffer(id);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
+    // An empty buffer still gets a few bytes: binding a zero-sized store is an error.
+    glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(std::max<std::size_t>(16, data.size() * sizeof(float))),
+                 data.empty() ? nullptr : data.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    return buffer;
+}
+
+void bindMesh(SdfTextures& textures, const std::shared_ptr<const meshfield::MeshField>& mesh) {
+    if (textures.mesh != mesh) {
+        textures.mesh = mesh;
+        textures.meshNodes = storageBuffer(mesh->nodes);
+        textures.meshTriangles = storageBuffer(mesh->triangles);
+        textures.meshPseudonormals = storageBuffer(mesh->pseudonormals);
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shaders::kMeshNodesBinding, textures.meshNodes.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shaders::kMeshTrianglesBinding, textures.meshTriangles.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, shaders::kMeshPseudonormalsBinding, textures.meshPseudonormals.id());
+}
+
+} // namespace
+
+void bindSdfTextures(GLuint program, SdfTextures& textures, const std::array<std::string, shaders::kShadertoyChannels>& files,
+                     const std::shared_ptr<const meshfield::MeshField>& mesh) {
+    if (mesh) bindMesh(textures, mesh);
     if (glGetUniformLocation(program, "g3d_uniformRandom") >= 0) {
         if (!textures.noise) textures.noise = makeNoiseTexture();
         bindUnit(shaders::kNoiseTextureUnit, textures.noise);

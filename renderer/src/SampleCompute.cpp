@@ -70,6 +70,7 @@ struct SampleCompute::Impl {
     GlBuffer inputs;         // caller's points (analysis/points.glsl)
     SdfTextures textures;    // g3d_uniformRandom and iChannel0..3, made when the program reads them
     std::array<std::string, shaders::kShadertoyChannels> channels; // the SDF's channel images
+    std::shared_ptr<const meshfield::MeshField> mesh;              // a mesh SDF's triangles
     std::string source;
     GLint location(const char* name) const { return glGetUniformLocation(program.id(), name); }
     Expected<void> reserve(BufferSet& set, std::uint32_t count, bool mapped, bool interleaved = false);
@@ -157,6 +158,7 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     m_impl->program = std::move(program);
     m_impl->source = std::move(composed.text);
     m_impl->channels = sdf.channels;
+    m_impl->mesh = sdf.mesh;
     return diagnostics;
 }
 
@@ -171,7 +173,7 @@ Expected<std::uint32_t> SampleCompute::Impl::dispatch(const SampleUniforms& unif
     glUniform1ui(location("sdfwb_squareSide"), squareSide(uniforms.sampleCount));
     if (GLint at = location("sdfwb_time"); at >= 0) glUniform1f(at, uniforms.time);
     if (GLint at = location("g3d_SceneTime"); at >= 0) glUniform1f(at, uniforms.time); // declared by the file
-    bindSdfTextures(program.id(), textures, channels);
+    bindSdfTextures(program.id(), textures, channels, mesh);
     if (GLint at = location("sdfwb_parameters"); at >= 0) glUniform4fv(at, 4, uniforms.parameters);
     if (GLint at = location("sdfwb_surfaceTolerance"); at >= 0) glUniform1f(at, uniforms.surfaceTolerance);
     if (GLint at = location("sdfwb_tetrahedralGradient"); at >= 0) glUniform1i(at, uniforms.tetrahedralGradient ? 1 : 0);

@@ -526,7 +526,8 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
         if (GLint location = v->location("g3d_SceneTime"); location >= 0) glUniform1f(location, time); // declared by the file
         applyParameters(m_parameters, [v](const char* name) { return v->location(name); });
         bindSdfTextures(v->program.id(), m_impl->textures,
-                        m_impl->sdf ? m_impl->sdf->channels : decltype(m_impl->sdf->channels){});
+                        m_impl->sdf ? m_impl->sdf->channels : decltype(m_impl->sdf->channels){},
+                        m_impl->sdf ? m_impl->sdf->mesh : nullptr);
         if (GLint location = v->location("sdfwb_relaxation"); location >= 0) glUniform1f(location, m_trace.overRelaxation);
         if (m_plane.enabled) {
             glm::vec3 normal = glm::length(m_plane.normal) > 0.0f ? glm::normalize(m_plane.normal) : glm::vec3(0, 0, 1);

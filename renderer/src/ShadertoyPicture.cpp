@@ -16,6 +16,7 @@ struct ShadertoyPicture::Impl {
     GlVertexArray vertexArray;
     SdfTextures textures;
     std::array<std::string, shaders::kShadertoyChannels> channels;
+    std::shared_ptr<const meshfield::MeshField> mesh;
     std::vector<shaders::ParameterSetting> parameters;
     GLint location(const char* name) const { return glGetUniformLocation(program.id(), name); }
 };
@@ -56,6 +57,7 @@ std::vector<shaders::Diagnostic> ShadertoyPicture::setSdf(const shaders::Prepare
     }
     m_impl->program = std::move(program);
     m_impl->channels = sdf.channels;
+    m_impl->mesh = sdf.mesh;
     return diagnostics;
 }
 
@@ -94,7 +96,7 @@ void ShadertoyPicture::draw(int width, int height, const ShadertoyInputs& inputs
     if (GLint at = d.location("iFrame"); at >= 0) glUniform1i(at, inputs.frame);
     if (GLint at = d.location("iMouse"); at >= 0) glUniform4f(at, inputs.mouse.x, inputs.mouse.y, inputs.mouse.z, inputs.mouse.w);
     if (GLint at = d.location("iDate"); at >= 0) glUniform4f(at, inputs.date.x, inputs.date.y, inputs.date.z, inputs.date.w);
-    bindSdfTextures(d.program.id(), d.textures, d.channels);
+    bindSdfTextures(d.program.id(), d.textures, d.channels, d.mesh);
     applyParameters(d.parameters, [&d](const char* name) { return d.location(name); });
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);

@@ -350,7 +350,22 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
     return prepared;
 }
 
+PreparedSdf prepareMeshSdf(std::shared_ptr<const meshfield::MeshField> mesh, const std::filesystem::path& path,
+                           const std::string& text, const std::string& entry) {
+    PreparedSdf prepared = prepareSdf(text.empty() ? mesh->glslSource() : text, path.string(), path, IncludeOptions{}, entry);
+    prepared.mesh = std::move(mesh);
+    return prepared;
+}
+
 PreparedSdf prepareSdfFile(const std::filesystem::path& path, const IncludeOptions& options, const std::string& entry) {
+    if (meshfield::isMeshPath(path)) { // a mesh with the default sign (winding numbers), as the file has it
+        auto mesh = meshfield::loadMeshField(path, {});
+        if (mesh) return prepareMeshSdf(std::move(*mesh), path, {}, entry);
+        PreparedSdf failed;
+        failed.source.map.files.push_back({path.string(), ""});
+        failed.diagnostics.push_back({path.string(), 0, 0, Severity::Error, mesh.error().message});
+        return failed;
+    }
     auto text = readTextFile(path);
     if (!text) {
         PreparedSdf failed;

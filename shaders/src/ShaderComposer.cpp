@@ -2,6 +2,8 @@
 
 #include <shaders/BuiltinShaders.h>
 
+#include <cstdio>
+
 namespace sdfwb::shaders {
 namespace {
 
@@ -75,6 +77,27 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
         if (all.count("SDFWB_COMPAT_iChannel" + std::to_string(n)))
             all["SDFWB_CHANNEL" + std::to_string(n) + "_UNIT"] = std::to_string(kChannelTextureUnit + n);
 
+    if (sdf.mesh) {
+        all["SDFWB_MESH_NODES_BINDING"] = std::to_string(kMeshNodesBinding);
+        all["SDFWB_MESH_TRIANGLES_BINDING"] = std::to_string(kMeshTrianglesBinding);
+        all["SDFWB_MESH_PSEUDONORMALS_BINDING"] = std::to_string(kMeshPseudonormalsBinding);
+        all["SDFWB_MESH_STACK"] = std::to_string(sdf.mesh->depth + 2);
+        char beta[32];
+        std::snprintf(beta, sizeof beta, "%.6f", sdf.mesh->options.beta);
+        all["SDFWB_MESH_BETA"] = beta;
+        switch (sdf.mesh->options.sign) {
+        case meshfield::SignMethod::Winding:
+            all["SDFWB_MESH_SIGN_WINDING"] = "1";
+            break;
+        case meshfield::SignMethod::Parity:
+            all["SDFWB_MESH_SIGN_PARITY"] = "1";
+            break;
+        case meshfield::SignMethod::Pseudonormal:
+            all["SDFWB_MESH_SIGN_PSEUDONORMAL"] = "1";
+            break;
+        }
+    }
+
     ComposedShader shader;
     shader.stage = stage;
     // The resolved SDF text numbers its files from 0 with #line directives; keep those indices.
@@ -86,6 +109,10 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
         auto compat = builtinShader("prelude/g3d_compat.glsl");
         // Embedded at build time, so it cannot be missing unless the build is broken.
         appendFile(shader, "sdfwb:prelude/g3d_compat.glsl", compat ? *compat : std::string("#error g3d_compat.glsl missing\n"));
+    }
+    if (sdf.mesh) {
+        auto mesh = builtinShader("mesh/mesh_field.glsl");
+        appendFile(shader, "sdfwb:mesh/mesh_field.glsl", mesh ? *mesh : std::string("#error mesh_field.glsl missing\n"));
     }
     shader.text += sdf.source.text;
     if (!sdf.source.text.empty() && sdf.source.text.back() != '\n') shader.text += '\n';

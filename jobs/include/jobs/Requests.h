@@ -29,6 +29,11 @@ struct SdfInput {
     // Images for a Shadertoy's iChannel0..3 (--channel N=FILE): entry N, "" or missing for the
     // noise texture.
     std::vector<std::string> channels;
+    // A mesh file (.obj .ply .stl .off .glb ...) as the SDF: how inside is decided (--sign winding |
+    // parity | pseudonormal; empty: winding) and how it is scaled (--normalize none | unit-cube |
+    // unit-sphere; empty: none). See meshfield/MeshField.h.
+    std::string sign;
+    std::string normalize;
     bool operator==(const SdfInput&) const = default;
 };
 

@@ -6,6 +6,8 @@
 #include <shaders/IncludeResolver.h>
 #include <shaders/Parameters.h>
 
+#include <meshfield/MeshField.h>
+
 #include <array>
 #include <filesystem>
 #include <string>
@@ -60,6 +62,9 @@ struct PreparedSdf {
     // The file defines Shadertoy's `void mainImage(out vec4, in vec2)`: a whole shader, whose own
     // picture renderer/ShadertoyPicture.h can draw.
     bool shadertoyMainImage = false;
+    // A triangle mesh the text's sdfwb_meshSdf() reads (the SDF is a mesh file: prepareMeshSdf).
+    // The composer adds shaders/mesh/mesh_field.glsl and the GL side binds its buffers.
+    std::shared_ptr<const meshfield::MeshField> mesh;
 
     bool ok() const { return !hasErrors(diagnostics); }
     // Needs a time value each frame: sdf(vec3, float) or the G3D scene time uniform.
@@ -98,6 +103,11 @@ CompatNeeds detectCompatNeeds(const std::string& strippedText);
 // `entry:`, else `sdf`, else a conventional name (see SdfSignature).
 PreparedSdf prepareSdf(const std::string& text, const std::string& name, const std::filesystem::path& path,
                        const IncludeOptions& options, const std::string& entry = {});
+
+// A mesh as an SDF: `text` (empty: the mesh's own, MeshField::glslSource()) prepared with `mesh`
+// attached, so its sdfwb_meshSdf() reads the mesh.
+PreparedSdf prepareMeshSdf(std::shared_ptr<const meshfield::MeshField> mesh, const std::filesystem::path& path,
+                           const std::string& text = {}, const std::string& entry = {});
 
 // Reads `path` and prepares it; an unreadable file gives a diagnostic naming it.
 PreparedSdf prepareSdfFile(const std::filesystem::path& path, const IncludeOptions& options, const std::string& entry = {});

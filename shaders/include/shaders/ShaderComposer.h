@@ -26,6 +26,11 @@ enum class Stage { Vertex, Fragment, Compute };
 constexpr int kNoiseTextureUnit = 7;
 // Texture unit of Shadertoy's iChannel0; iChannel1..3 follow it (SDFWB_CHANNEL0_UNIT.. in GLSL).
 constexpr int kChannelTextureUnit = 8;
+// Shader storage binding points of a mesh SDF's buffers (shaders/mesh/mesh_field.glsl); the
+// samplers use 0..4, the probe 4.
+constexpr int kMeshPseudonormalsBinding = 5;
+constexpr int kMeshNodesBinding = 6;
+constexpr int kMeshTrianglesBinding = 7;
 
 // Feature switches, written as `#define NAME VALUE` in name order (so equal sets give equal text).
 using FeatureDefines = std::map<std::string, std::string>;

@@ -1,0 +1,708 @@
+#include <meshfield/MeshField.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <numbers>
+#include <tuple>
+#include <unordered_map>
+
+namespace sdfwb::meshfield {
+namespace fs = std::filesystem;
+namespace {
+
+using glm::dvec3;
+
+constexpr std::uint32_t kLeafSize = 4; // triangles a leaf holds at most, unless they cannot be split
+constexpr int kBins = 16;
+constexpr std::size_t kMaxDepth = 60; // shaders/mesh/mesh_field.glsl's stack holds depth + 2 entries
+
+double seconds(std::chrono::steady_clock::time_point since) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+float asFloat(std::uint32_t bits) { return std::bit_cast<float>(bits); }
+std::uint32_t asBits(float value) { return std::bit_cast<std::uint32_t>(value); }
+
+// A float no larger (no smaller) than `value`: the GPU's boxes must hold what the double boxes hold.
+float down(double value) {
+    float f = float(value);
+    return double(f) > value ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+float up(double value) {
+    float f = float(value);
+    return double(f) < value ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+
+void grow(Box& box, const dvec3& p) {
+    box.lo = glm::min(box.lo, p);
+    box.hi = glm::max(box.hi, p);
+}
+Box emptyBox() {
+    const double inf = std::numeric_limits<double>::infinity();
+    return {dvec3(inf), dvec3(-inf)};
+}
+double halfArea(const Box& box) {
+    const dvec3 e = glm::max(box.hi - box.lo, dvec3(0.0));
+    return e.x * e.y + e.y * e.z + e.z * e.x;
+}
+double boxDistance2(const dvec3& p, const Box& box) {
+    const dvec3 d = glm::max(glm::max(box.lo - p, p - box.hi), dvec3(0.0));
+    return glm::dot(d, d);
+}
+
+struct Builder {
+    const std::vector<dvec3>& centroid;
+    const std::vector<Box>& triBox;
+    std::vector<std::uint32_t>& order;
+    struct Node {
+        Box box;
+        std::uint32_t firstOrLeft = 0;
+        std::uint32_t count = 0;
+    };
+    std::vector<Node> nodes;
+    std::size_t depth = 0;
+
+    Box bounds(std::uint32_t first, std::uint32_t count) const {
+        Box box = emptyBox();
+        for (std::uint32_t i = first; i < first + count; ++i) {
+            grow(box, triBox[order[i]].lo);
+            grow(box, triBox[order[i]].hi);
+        }
+        return box;
+    }
+
+    // Splits node `index` (covering order[first, first + count)) by the binned surface area heuristic.
+    void split(std::uint32_t index, std::uint32_t first, std::uint32_t count, std::size_t level) {
+        depth = std::max(depth, level);
+        nodes[index].box = bounds(first, count);
+        nodes[index].firstOrLeft = first;
+        nodes[index].count = count;
+        if (count <= kLeafSize || level >= kMaxDepth) return;
+        Box cbox = emptyBox();
+        for (std::uint32_t i = first; i < first + count; ++i) grow(cbox, centroid[order[i]]);
+        int bestAxis = -1;
+        int bestBin = 0;
+        double bestCost = std::numeric_limits<double>::infinity();
+        for (int axis = 0; axis < 3; ++axis) {
+            const double lo = cbox.lo[axis];
+            const double extent = cbox.hi[axis] - lo;
+            if (!(extent > 0.0)) continue;
+            std::array<Box, kBins> binBox;
+            std::array<std::uint32_t, kBins> binCount{};
+            binBox.fill(emptyBox());
+            for (std::uint32_t i = first; i < first + count; ++i) {
+                const std::uint32_t t = order[i];
+                const int b = std::min(kBins - 1, int((centroid[t][axis] - lo) / extent * kBins));
+                ++binCount[std::size_t(b)];
+                grow(binBox[std::size_t(b)], triBox[t].lo);
+                grow(binBox[std::size_t(b)], triBox[t].hi);
+            }
+            std::array<double, kBins> rightCost{};
+            Box right = emptyBox();
+            std::uint32_t rightCount = 0;
+            for (int b = kBins - 1; b > 0; --b) {
+                grow(right, binBox[std::size_t(b)].lo);
+                grow(right, binBox[std::size_t(b)].hi);
+                rightCount += binCount[std::size_t(b)];
+                rightCost[std::size_t(b)] = rightCount ? double(rightCount) * halfArea(right) : 0.0;
+            }
+            Box left = emptyBox();
+            std::uint32_t leftCount = 0;
+            for (int b = 0; b < kBins - 1; ++b) {
+                grow(left, binBox[std::size_t(b)].lo);
+                grow(left, binBox[std::size_t(b)].hi);
+                leftCount += binCount[std::size_t(b)];
+                if (leftCount == 0 || leftCount == count) continue;
+                const double cost = double(leftCount) * halfArea(left) + rightCost[std::size_t(b) + 1];
+                if (cost < bestCost) {
+                    bestCost = cost;
+                    bestAxis = axis;
+                    bestBin = b;
+                }
+            }
+        }
+        std::uint32_t middle = first;
+        if (bestAxis >= 0) {
+            const double lo = cbox.lo[bestAxis];
+            const double extent = cbox.hi[bestAxis] - lo;
+            auto* begin = order.data() + first;
+            auto* end = begin + count;
+            auto* cut = std::partition(begin, end, [&](std::uint32_t t) {
+                return std::min(kBins - 1, int((centroid[t][bestAxis] - lo) / extent * kBins)) <= bestBin;
+            });
+            middle = std::uint32_t(cut - order.data());
+        }
+        if (middle == first || middle == first + count) {
+            // Every centroid in one place: halve the list (a leaf this large would be slow).
+            middle = first + count / 2;
+        }
+        const std::uint32_t left = std::uint32_t(nodes.size());
+        nodes.emplace_back();
+        nodes.emplace_back();
+        nodes[index].firstOrLeft = left;
+        nodes[index].count = 0;
+        split(left, first, middle - first, level + 1);
+        split(left + 1, middle, first + count - middle, level + 1);
+    }
+};
+
+// Ray-triangle crossing (Moller-Trumbore): the ray's parameter, or a negative value for none.
+double crossing(const dvec3& origin, const dvec3& direction, const dvec3& a, const dvec3& b, const dvec3& c) {
+    const dvec3 e1 = b - a;
+    const dvec3 e2 = c - a;
+    const dvec3 h = glm::cross(direction, e2);
+    const double det = glm::dot(e1, h);
+    if (std::abs(det) < 1e-300) return -1.0;
+    const double inv = 1.0 / det;
+    const dvec3 s = origin - a;
+    const double u = glm::dot(s, h) * inv;
+    if (u < 0.0 || u > 1.0) return -1.0;
+    const dvec3 q = glm::cross(s, e1);
+    const double v = glm::dot(direction, q) * inv;
+    if (v < 0.0 || u + v > 1.0) return -1.0;
+    return glm::dot(e2, q) * inv;
+}
+
+bool rayHitsBox(const dvec3& origin, const dvec3& inverse, const Box& box) {
+    double t0 = 0.0;
+    double t1 = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 3; ++k) {
+        double a = (box.lo[k] - origin[k]) * inverse[k];
+        double b = (box.hi[k] - origin[k]) * inverse[k];
+        if (a > b) std::swap(a, b);
+        t0 = std::max(t0, a);
+        t1 = std::min(t1, b);
+    }
+    return t0 <= t1;
+}
+
+} // namespace
+
+// The three directions parity counts crossings along (also in shaders/mesh/mesh_field.glsl):
+// skewed, so that axis-aligned meshes' edges and vertices are rarely hit exactly.
+const std::array<glm::dvec3, 3>& parityDirections() {
+    static const std::array<glm::dvec3, 3> directions = {glm::normalize(dvec3(1.0, 0.3183, 0.1415)),
+                                                         glm::normalize(dvec3(-0.2718, 1.0, 0.5772)),
+                                                         glm::normalize(dvec3(0.1618, -0.4142, 1.0))};
+    return directions;
+}
+
+const char* signName(SignMethod method) {
+    switch (method) {
+    case SignMethod::Winding:
+        return "winding";
+    case SignMethod::Parity:
+        return "parity";
+    case SignMethod::Pseudonormal:
+        return "pseudonormal";
+    }
+    return "?";
+}
+
+const char* normalizationName(Normalization method) {
+    switch (method) {
+    case Normalization::None:
+        return "none";
+    case Normalization::UnitCube:
+        return "unit-cube";
+    case Normalization::UnitSphere:
+        return "unit-sphere";
+    }
+    return "?";
+}
+
+Expected<SignMethod> parseSign(const std::string& text) {
+    for (SignMethod method : {SignMethod::Winding, SignMethod::Parity, SignMethod::Pseudonormal})
+        if (text == signName(method)) return method;
+    return Error{"expected winding, parity or pseudonormal, got '" + text + "'"};
+}
+
+Expected<Normalization> parseNormalization(const std::string& text) {
+    for (Normalization method : {Normalization::None, Normalization::UnitCube, Normalization::UnitSphere})
+        if (text == normalizationName(method)) return method;
+    return Error{"expected none, unit-cube or unit-sphere, got '" + text + "'"};
+}
+
+bool isMeshPath(const fs::path& path) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    for (const char* known : {".obj", ".ply", ".stl", ".off", ".glb", ".gltf", ".fbx", ".dae", ".3ds"})
+        if (extension == known) return true;
+    return false;
+}
+
+glm::dvec3 closestPointOnTriangle(const dvec3& p, const dvec3& a, const dvec3& b, const dvec3& c, int* feature) {
+    int region = 0;
+    auto result = [&](int r, const dvec3& q) {
+        region = r;
+        if (feature) *feature = region;
+        return q;
+    };
+    const dvec3 ab = b - a;
+    const dvec3 ac = c - a;
+    const dvec3 ap = p - a;
+    const double d1 = glm::dot(ab, ap);
+    const double d2 = glm::dot(ac, ap);
+    if (d1 <= 0.0 && d2 <= 0.0) return result(1, a);
+    const dvec3 bp = p - b;
+    const double d3 = glm::dot(ab, bp);
+    const double d4 = glm::dot(ac, bp);
+    if (d3 >= 0.0 && d4 <= d3) return result(2, b);
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return result(4, a + ab * (d1 / (d1 - d3)));
+    const dvec3 cp = p - c;
+    const double d5 = glm::dot(ab, cp);
+    const double d6 = glm::dot(ac, cp);
+    if (d6 >= 0.0 && d5 <= d6) return result(3, c);
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return result(6, a + ac * (d2 / (d2 - d6)));
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) return result(5, b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))));
+    const double sum = va + vb + vc;
+    if (!(sum > 0.0)) { // a degenerate triangle: the nearest of its edges
+        int best = 4;
+        dvec3 q = a;
+        double bestD = std::numeric_limits<double>::infinity();
+        const dvec3 ends[3][2] = {{a, b}, {b, c}, {c, a}};
+        for (int e = 0; e < 3; ++e) {
+            const dvec3 d = ends[e][1] - ends[e][0];
+            const double len2 = glm::dot(d, d);
+            const double t = len2 > 0.0 ? std::clamp(glm::dot(p - ends[e][0], d) / len2, 0.0, 1.0) : 0.0;
+            const dvec3 r = ends[e][0] + d * t;
+            if (glm::dot(p - r, p - r) < bestD) {
+                bestD = glm::dot(p - r, p - r);
+                q = r;
+                best = 4 + e;
+            }
+        }
+        return result(best, q);
+    }
+    return result(0, a + ab * (vb / sum) + ac * (vc / sum));
+}
+
+double solidAngle(const dvec3& p, const dvec3& a, const dvec3& b, const dvec3& c) {
+    const dvec3 A = a - p;
+    const dvec3 B = b - p;
+    const dvec3 C = c - p;
+    const double la = glm::length(A);
+    const double lb = glm::length(B);
+    const double lc = glm::length(C);
+    const double det = glm::dot(A, glm::cross(B, C));
+    const double den = la * lb * lc + glm::dot(A, B) * lc + glm::dot(B, C) * la + glm::dot(C, A) * lb;
+    return 2.0 * std::atan2(det, den);
+}
+
+namespace {
+
+dvec3 corner(const MeshField& field, std::uint32_t slot, int k) {
+    const float* t = field.triangles.data() + std::size_t(slot) * kTriangleFloats + std::size_t(k) * 4;
+    return dvec3(t[0], t[1], t[2]);
+}
+
+struct NodeView {
+    Box box;
+    std::uint32_t firstOrLeft;
+    std::uint32_t count;
+};
+NodeView nodeAt(const MeshField& field, std::uint32_t index) {
+    const float* n = field.nodes.data() + std::size_t(index) * kNodeFloats;
+    return {{dvec3(n[0], n[1], n[2]), dvec3(n[4], n[5], n[6])}, asBits(n[3]), asBits(n[7])};
+}
+
+// The nearest triangle slot (leaf order), its feature, and the squared distance.
+double nearest(const MeshField& field, const dvec3& p, std::uint32_t* slot, int* feature, dvec3* point) {
+    double best = std::numeric_limits<double>::infinity();
+    std::vector<std::uint32_t> stack{0};
+    stack.reserve(field.depth + 2);
+    while (!stack.empty()) {
+        const std::uint32_t index = stack.back();
+        stack.pop_back();
+        const NodeView node = nodeAt(field, index);
+        if (boxDistance2(p, node.box) >= best) continue;
+        if (node.count > 0) {
+            for (std::uint32_t s = node.firstOrLeft; s < node.firstOrLeft + node.count; ++s) {
+                int f = 0;
+                const dvec3 q = closestPointOnTriangle(p, corner(field, s, 0), corner(field, s, 1), corner(field, s, 2), &f);
+                const double d2 = glm::dot(p - q, p - q);
+                if (d2 < best) {
+                    best = d2;
+                    if (slot) *slot = s;
+                    if (feature) *feature = f;
+                    if (point) *point = q;
+                }
+            }
+            continue;
+        }
+        const double dl = boxDistance2(p, nodeAt(field, node.firstOrLeft).box);
+        const double dr = boxDistance2(p, nodeAt(field, node.firstOrLeft + 1).box);
+        if (dl < dr) {
+            stack.push_back(node.firstOrLeft + 1);
+            stack.push_back(node.firstOrLeft);
+        } else {
+            stack.push_back(node.firstOrLeft);
+            stack.push_back(node.firstOrLeft + 1);
+        }
+    }
+    return best;
+}
+
+} // namespace
+
+double MeshField::distance(const dvec3& p) const { return std::sqrt(nearest(*this, p, nullptr, nullptr, nullptr)); }
+
+double MeshField::windingExact(const dvec3& p) const {
+    double sum = 0.0;
+    const std::size_t count = triangles.size() / kTriangleFloats;
+    for (std::uint32_t s = 0; s < count; ++s) sum += solidAngle(p, corner(*this, s, 0), corner(*this, s, 1), corner(*this, s, 2));
+    return sum / (4.0 * std::numbers::pi);
+}
+
+double MeshField::winding(const dvec3& p) const {
+    double sum = 0.0;
+    std::vector<std::uint32_t> stack{0};
+    while (!stack.empty()) {
+        const std::uint32_t index = stack.back();
+        stack.pop_back();
+        const float* n = nodes.data() + std::size_t(index) * kNodeFloats;
+        const dvec3 d = dvec3(n[8], n[9], n[10]) - p;
+        const double dist2 = glm::dot(d, d);
+        const double reach = options.beta * double(n[11]);
+        if (dist2 > reach * reach) { // far: the cluster as one dipole
+            sum += glm::dot(dvec3(n[12], n[13], n[14]), d) / (dist2 * std::sqrt(dist2));
+            continue;
+        }
+        const NodeView node = nodeAt(*this, index);
+        if (node.count > 0) {
+            for (std::uint32_t s = node.firstOrLeft; s < node.firstOrLeft + node.count; ++s)
+                sum += solidAngle(p, corner(*this, s, 0), corner(*this, s, 1), corner(*this, s, 2));
+        } else {
+            stack.push_back(node.firstOrLeft);
+            stack.push_back(node.firstOrLeft + 1);
+        }
+    }
+    return sum / (4.0 * std::numbers::pi);
+}
+
+bool MeshField::inside(const dvec3& p) const {
+    switch (options.sign) {
+    case SignMethod::Winding:
+        return winding(p) > 0.5;
+    case SignMethod::Parity: {
+        int votes = 0;
+        for (const dvec3& direction : parityDirections()) {
+            const dvec3 inverse = 1.0 / direction;
+            int crossings = 0;
+            std::vector<std::uint32_t> stack{0};
+            while (!stack.empty()) {
+                const NodeView node = nodeAt(*this, stack.back());
+                stack.pop_back();
+                if (!rayHitsBox(p, inverse, node.box)) continue;
+                if (node.count > 0) {
+                    for (std::uint32_t s = node.firstOrLeft; s < node.firstOrLeft + node.count; ++s)
+                        if (crossing(p, direction, corner(*this, s, 0), corner(*this, s, 1), corner(*this, s, 2)) > 0.0)
+                            ++crossings;
+                } else {
+                    stack.push_back(node.firstOrLeft);
+                    stack.push_back(node.firstOrLeft + 1);
+                }
+            }
+            votes += crossings % 2;
+        }
+        return votes >= 2;
+    }
+    case SignMethod::Pseudonormal: {
+        std::uint32_t slot = 0;
+        int feature = 0;
+        dvec3 q(0.0);
+        nearest(*this, p, &slot, &feature, &q);
+        static constexpr int kSlotOfFeature[7] = {0, 4, 5, 6, 1, 2, 3};
+        const float* normal =
+            pseudonormals.data() + std::size_t(slot) * kPseudonormalFloats + std::size_t(kSlotOfFeature[feature]) * 4;
+        return glm::dot(p - q, dvec3(normal[0], normal[1], normal[2])) < 0.0;
+    }
+    }
+    return false;
+}
+
+std::string MeshField::glslSource() const {
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "/* sdfwb\n"
+                  "   mesh: %s, %zu triangles, %s\n"
+                  "   sign: %s; normalize: %s\n"
+                  "*/\n"
+                  "// The mesh's signed distance: shaders/mesh/mesh_field.glsl traverses its hierarchy on the GPU.\n"
+                  "float sdf(vec3 p) { return sdfwb_meshSdf(p); }\n",
+                  name.c_str(), mesh.triangles(), boundaryEdges == 0 && nonManifoldEdges == 0 ? "closed" : "open or non-manifold",
+                  signName(options.sign), normalizationName(options.normalize));
+    return line;
+}
+
+std::string MeshField::summary() const {
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "%s: %zu triangles, %zu boundary and %zu non-manifold edges; bounds [%.4g %.4g %.4g]..[%.4g %.4g %.4g] "
+                  "(file: [%.4g %.4g %.4g]..[%.4g %.4g %.4g]); sign %s, normalize %s; hierarchy of %zu nodes, depth %zu, "
+                  "built in %.3f s, %.1f MB on the GPU",
+                  name.c_str(), mesh.triangles(), boundaryEdges, nonManifoldEdges, bounds.lo.x, bounds.lo.y, bounds.lo.z,
+                  bounds.hi.x, bounds.hi.y, bounds.hi.z, originalBounds.lo.x, originalBounds.lo.y, originalBounds.lo.z,
+                  originalBounds.hi.x, originalBounds.hi.y, originalBounds.hi.z, signName(options.sign),
+                  normalizationName(options.normalize), nodes.size() / kNodeFloats, depth, buildSeconds,
+                  double(gpuBytes()) / 1e6);
+    return line;
+}
+
+namespace {
+
+Expected<std::shared_ptr<MeshField>> buildField(TriangleMesh mesh, const std::string& name, const MeshFieldOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    if (mesh.indices.empty()) return Error{name + ": the mesh holds no triangles"};
+    for (std::uint32_t i : mesh.indices)
+        if (i >= mesh.vertices.size())
+            return Error{name + ": a triangle names vertex " + std::to_string(i) + " of " + std::to_string(mesh.vertices.size())};
+    for (const glm::vec3& v : mesh.vertices)
+        if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+            return Error{name + ": a vertex is not a finite number"};
+    if (!(options.beta >= 1.0)) return Error{name + ": beta must be at least 1"};
+    auto field = std::make_shared<MeshField>();
+    field->name = name;
+    field->options = options;
+
+    // Normalisation (mesh_to_sdf's conventions): unit-cube puts the bounding box's centre at the
+    // origin and its longest side at 2 ([-1, 1]); unit-sphere puts the box's centre at the origin
+    // and the farthest vertex at distance 1.
+    Box box = emptyBox();
+    for (const glm::vec3& v : mesh.vertices) grow(box, dvec3(v));
+    field->originalBounds = box;
+    const dvec3 centre = (box.lo + box.hi) * 0.5;
+    double scale = 1.0;
+    dvec3 shift(0.0);
+    if (options.normalize == Normalization::UnitCube) {
+        const dvec3 e = box.hi - box.lo;
+        const double longest = std::max({e.x, e.y, e.z});
+        scale = longest > 0.0 ? 2.0 / longest : 1.0;
+        shift = -centre;
+    } else if (options.normalize == Normalization::UnitSphere) {
+        double radius = 0.0;
+        for (const glm::vec3& v : mesh.vertices) radius = std::max(radius, glm::length(dvec3(v) - centre));
+        scale = radius > 0.0 ? 1.0 / radius : 1.0;
+        shift = -centre;
+    }
+    field->transform = {scale, 0, 0, 0, 0, scale, 0, 0, 0, 0, scale, 0, shift.x * scale, shift.y * scale, shift.z * scale, 1};
+    if (options.normalize != Normalization::None)
+        for (glm::vec3& v : mesh.vertices) v = glm::vec3((dvec3(v) + shift) * scale);
+    Box fieldBox = emptyBox();
+    for (const glm::vec3& v : mesh.vertices) grow(fieldBox, dvec3(v));
+    field->bounds = fieldBox;
+
+    // Boundary and non-manifold edges.
+    std::unordered_map<std::uint64_t, std::uint32_t> edgeUses;
+    edgeUses.reserve(mesh.indices.size());
+    for (std::size_t t = 0; t < mesh.indices.size(); t += 3)
+        for (int k = 0; k < 3; ++k) {
+            std::uint32_t a = mesh.indices[t + std::size_t(k)];
+            std::uint32_t b = mesh.indices[t + std::size_t((k + 1) % 3)];
+            if (a > b) std::swap(a, b);
+            ++edgeUses[(std::uint64_t(a) << 32) | b];
+        }
+    for (const auto& [edge, uses] : edgeUses) {
+        if (uses == 1) ++field->boundaryEdges;
+        if (uses > 2) ++field->nonManifoldEdges;
+    }
+
+    // The hierarchy.
+    const std::size_t count = mesh.triangles();
+    std::vector<dvec3> centroid(count);
+    std::vector<Box> triBox(count);
+    std::vector<std::uint32_t> order(count);
+    for (std::size_t t = 0; t < count; ++t) {
+        const dvec3 a(mesh.vertices[mesh.indices[3 * t]]);
+        const dvec3 b(mesh.vertices[mesh.indices[3 * t + 1]]);
+        const dvec3 c(mesh.vertices[mesh.indices[3 * t + 2]]);
+        centroid[t] = (a + b + c) / 3.0;
+        triBox[t] = {glm::min(glm::min(a, b), c), glm::max(glm::max(a, b), c)};
+        order[t] = std::uint32_t(t);
+    }
+    Builder builder{centroid, triBox, order, {}, 0};
+    builder.nodes.reserve(2 * count / kLeafSize + 2);
+    builder.nodes.emplace_back();
+    builder.split(0, 0, std::uint32_t(count), 0);
+    field->depth = builder.depth;
+
+    field->triangles.resize(count * kTriangleFloats);
+    for (std::size_t s = 0; s < count; ++s)
+        for (int k = 0; k < 3; ++k) {
+            const glm::vec3& v = mesh.vertices[mesh.indices[3 * std::size_t(order[s]) + std::size_t(k)]];
+            float* out = field->triangles.data() + s * kTriangleFloats + std::size_t(k) * 4;
+            out[0] = v.x;
+            out[1] = v.y;
+            out[2] = v.z;
+            out[3] = 0.0f;
+        }
+
+    // Dipoles, bottom up (children come after their parent).
+    const std::size_t nodeCount = builder.nodes.size();
+    std::vector<dvec3> dipole(nodeCount, dvec3(0.0));
+    std::vector<dvec3> weighted(nodeCount, dvec3(0.0)); // sum of area times centroid
+    std::vector<double> area(nodeCount, 0.0);
+    std::vector<double> radius(nodeCount, 0.0);
+    std::vector<dvec3> centre2(nodeCount, dvec3(0.0));
+    for (std::size_t i = nodeCount; i-- > 0;) {
+        const Builder::Node& node = builder.nodes[i];
+        if (node.count > 0) {
+            for (std::uint32_t s = node.firstOrLeft; s < node.firstOrLeft + node.count; ++s) {
+                const std::size_t t = order[s];
+                const dvec3 a(mesh.vertices[mesh.indices[3 * t]]);
+                const dvec3 b(mesh.vertices[mesh.indices[3 * t + 1]]);
+                const dvec3 c(mesh.vertices[mesh.indices[3 * t + 2]]);
+                const dvec3 n = 0.5 * glm::cross(b - a, c - a);
+                const double at = glm::length(n);
+                dipole[i] += n;
+                area[i] += at;
+                weighted[i] += at * centroid[t];
+            }
+            centre2[i] = area[i] > 0.0 ? weighted[i] / area[i] : (node.box.lo + node.box.hi) * 0.5;
+            for (std::uint32_t s = node.firstOrLeft; s < node.firstOrLeft + node.count; ++s) {
+                const std::size_t t = order[s];
+                for (int k = 0; k < 3; ++k)
+                    radius[i] =
+                        std::max(radius[i], glm::length(dvec3(mesh.vertices[mesh.indices[3 * t + std::size_t(k)]]) - centre2[i]));
+            }
+        } else {
+            const std::size_t l = node.firstOrLeft;
+            const std::size_t r = l + 1;
+            dipole[i] = dipole[l] + dipole[r];
+            area[i] = area[l] + area[r];
+            weighted[i] = weighted[l] + weighted[r];
+            centre2[i] = area[i] > 0.0 ? weighted[i] / area[i] : (node.box.lo + node.box.hi) * 0.5;
+            radius[i] =
+                std::max(glm::length(centre2[l] - centre2[i]) + radius[l], glm::length(centre2[r] - centre2[i]) + radius[r]);
+        }
+    }
+    field->nodes.resize(nodeCount * kNodeFloats);
+    for (std::size_t i = 0; i < nodeCount; ++i) {
+        const Builder::Node& node = builder.nodes[i];
+        float* n = field->nodes.data() + i * kNodeFloats;
+        n[0] = down(node.box.lo.x);
+        n[1] = down(node.box.lo.y);
+        n[2] = down(node.box.lo.z);
+        n[3] = asFloat(node.firstOrLeft);
+        n[4] = up(node.box.hi.x);
+        n[5] = up(node.box.hi.y);
+        n[6] = up(node.box.hi.z);
+        n[7] = asFloat(node.count);
+        n[8] = float(centre2[i].x);
+        n[9] = float(centre2[i].y);
+        n[10] = float(centre2[i].z);
+        n[11] = up(radius[i] * (1.0 + 1e-6));
+        n[12] = float(dipole[i].x);
+        n[13] = float(dipole[i].y);
+        n[14] = float(dipole[i].z);
+        n[15] = 0.0f;
+    }
+
+    if (options.sign == SignMethod::Pseudonormal) {
+        // Angle-weighted vertex normals, edge normals as the sum of the faces' normals.
+        std::vector<dvec3> vertexNormal(mesh.vertices.size(), dvec3(0.0));
+        std::unordered_map<std::uint64_t, dvec3> edgeNormal;
+        edgeNormal.reserve(edgeUses.size());
+        std::vector<dvec3> faceNormal(count);
+        for (std::size_t t = 0; t < count; ++t) {
+            const std::uint32_t* idx = mesh.indices.data() + 3 * t;
+            const dvec3 v[3] = {dvec3(mesh.vertices[idx[0]]), dvec3(mesh.vertices[idx[1]]), dvec3(mesh.vertices[idx[2]])};
+            const dvec3 n = glm::cross(v[1] - v[0], v[2] - v[0]);
+            const double len = glm::length(n);
+            faceNormal[t] = len > 0.0 ? n / len : dvec3(0.0);
+            for (int k = 0; k < 3; ++k) {
+                const dvec3 e1 = v[(k + 1) % 3] - v[k];
+                const dvec3 e2 = v[(k + 2) % 3] - v[k];
+                const double l1 = glm::length(e1);
+                const double l2 = glm::length(e2);
+                if (l1 > 0.0 && l2 > 0.0)
+                    vertexNormal[idx[k]] += std::acos(std::clamp(glm::dot(e1, e2) / (l1 * l2), -1.0, 1.0)) * faceNormal[t];
+                std::uint32_t a = idx[k];
+                std::uint32_t b = idx[(k + 1) % 3];
+                if (a > b) std::swap(a, b);
+                edgeNormal[(std::uint64_t(a) << 32) | b] += faceNormal[t];
+            }
+        }
+        field->pseudonormals.resize(count * kPseudonormalFloats);
+        for (std::size_t s = 0; s < count; ++s) {
+            const std::size_t t = order[s];
+            const std::uint32_t* idx = mesh.indices.data() + 3 * t;
+            dvec3 normals[7];
+            normals[0] = faceNormal[t];
+            for (int k = 0; k < 3; ++k) {
+                std::uint32_t a = idx[k];
+                std::uint32_t b = idx[(k + 1) % 3];
+                if (a > b) std::swap(a, b);
+                normals[1 + k] = edgeNormal[(std::uint64_t(a) << 32) | b];
+                normals[4 + k] = vertexNormal[idx[k]];
+            }
+            for (int k = 0; k < 7; ++k) {
+                const double len = glm::length(normals[k]);
+                const dvec3 n = len > 0.0 ? normals[k] / len : dvec3(0.0);
+                float* out = field->pseudonormals.data() + s * kPseudonormalFloats + std::size_t(k) * 4;
+                out[0] = float(n.x);
+                out[1] = float(n.y);
+                out[2] = float(n.z);
+                out[3] = 0.0f;
+            }
+        }
+    }
+    // The CPU queries read the GPU's corners: both sides answer for the same float triangles.
+    field->mesh = std::move(mesh);
+    field->buildSeconds = seconds(start);
+    return field;
+}
+
+} // namespace
+
+Expected<std::shared_ptr<const MeshField>> makeMeshField(TriangleMesh mesh, const std::string& name,
+                                                         const MeshFieldOptions& options) {
+    auto field = buildField(std::move(mesh), name, options);
+    if (!field) return field.error();
+    return std::shared_ptr<const MeshField>(std::move(*field));
+}
+
+Expected<std::shared_ptr<const MeshField>> loadMeshField(const fs::path& path, const MeshFieldOptions& options) {
+    std::error_code ec;
+    const auto size = fs::file_size(path, ec);
+    if (ec) return Error{path.string() + ": cannot read the mesh: " + ec.message()};
+    const auto time = fs::last_write_time(path, ec).time_since_epoch().count();
+    using Key = std::tuple<std::string, std::uintmax_t, long long, int, int, double>;
+    const Key key{fs::absolute(path).lexically_normal().string(),
+                  size,
+                  (long long)time,
+                  int(options.sign),
+                  int(options.normalize),
+                  options.beta};
+    static std::mutex mutex;
+    static std::map<Key, std::weak_ptr<const MeshField>> cache;
+    {
+        std::lock_guard lock(mutex);
+        if (auto it = cache.find(key); it != cache.end())
+            if (auto field = it->second.lock()) return field;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    auto mesh = readTriangleMesh(path);
+    if (!mesh) return mesh.error();
+    const double readSeconds = seconds(start);
+    auto built = buildField(std::move(*mesh), path.filename().string(), options);
+    if (!built) return built.error();
+    (*built)->readSeconds = readSeconds;
+    std::shared_ptr<const MeshField> field = std::move(*built);
+    std::lock_guard lock(mutex);
+    cache[key] = field;
+    return field;
+}
+
+} // namespace sdfwb::meshfield

@@ -1,0 +1,226 @@
+// A triangle mesh as a signed distance field (meshfield/MeshField.h builds what this reads).
+// Composed before the SDF's text when the SDF is a mesh file; the file's text calls sdfwb_meshSdf.
+//   SDFWB_MESH_NODES_BINDING        the hierarchy: four vec4 per node
+//                                   (box min + first/left, box max + count, dipole centre + radius, dipole)
+//   SDFWB_MESH_TRIANGLES_BINDING    three vec4 per triangle (corners), in leaf order
+//   SDFWB_MESH_PSEUDONORMALS_BINDING (pseudonormal sign only) seven vec4 per triangle:
+//                                   face, edges ab bc ca, vertices a b c
+//   SDFWB_MESH_STACK                entries of the traversal stack (the hierarchy's depth + 2)
+//   SDFWB_MESH_BETA                 winding numbers: a cluster farther than beta radii is a dipole
+//   SDFWB_MESH_SIGN_WINDING | SDFWB_MESH_SIGN_PARITY | SDFWB_MESH_SIGN_PSEUDONORMAL
+layout(std430, binding = SDFWB_MESH_NODES_BINDING) readonly buffer sdfwb_MeshNodes { vec4 sdfwb_meshNodes[]; };
+layout(std430, binding = SDFWB_MESH_TRIANGLES_BINDING) readonly buffer sdfwb_MeshTriangles { vec4 sdfwb_meshTriangles[]; };
+#ifdef SDFWB_MESH_SIGN_PSEUDONORMAL
+layout(std430, binding = SDFWB_MESH_PSEUDONORMALS_BINDING) readonly buffer sdfwb_MeshPseudonormals { vec4 sdfwb_meshPseudonormals[]; };
+#endif
+
+float sdfwb_meshBoxDistance2(vec3 p, vec3 lo, vec3 hi) {
+    vec3 d = max(max(lo - p, p - hi), vec3(0.0));
+    return dot(d, d);
+}
+
+// The closest point of triangle abc to p and its feature: 0 the face, 1..3 the corners a b c,
+// 4..6 the edges ab bc ca (Ericson's regions; the same as meshfield::closestPointOnTriangle).
+vec3 sdfwb_meshClosest(vec3 p, vec3 a, vec3 b, vec3 c, out int feature) {
+    vec3 ab = b - a;
+    vec3 ac = c - a;
+    vec3 ap = p - a;
+    float d1 = dot(ab, ap);
+    float d2 = dot(ac, ap);
+    feature = 1;
+    if (d1 <= 0.0 && d2 <= 0.0) return a;
+    vec3 bp = p - b;
+    float d3 = dot(ab, bp);
+    float d4 = dot(ac, bp);
+    feature = 2;
+    if (d3 >= 0.0 && d4 <= d3) return b;
+    float vc = d1 * d4 - d3 * d2;
+    feature = 4;
+    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + ab * (d1 / (d1 - d3));
+    vec3 cp = p - c;
+    float d5 = dot(ab, cp);
+    float d6 = dot(ac, cp);
+    feature = 3;
+    if (d6 >= 0.0 && d5 <= d6) return c;
+    float vb = d5 * d2 - d1 * d6;
+    feature = 6;
+    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + ac * (d2 / (d2 - d6));
+    float va = d3 * d6 - d5 * d4;
+    feature = 5;
+    if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+    float sum = va + vb + vc;
+    if (!(sum > 0.0)) { // degenerate: the nearest edge
+        vec3 q = a;
+        float best = 1e38;
+        for (int e = 0; e < 3; ++e) {
+            vec3 s = e == 0 ? a : (e == 1 ? b : c);
+            vec3 d = (e == 0 ? b : (e == 1 ? c : a)) - s;
+            float len2 = dot(d, d);
+            vec3 r = s + d * (len2 > 0.0 ? clamp(dot(p - s, d) / len2, 0.0, 1.0) : 0.0);
+            if (dot(p - r, p - r) < best) {
+                best = dot(p - r, p - r);
+                q = r;
+                feature = 4 + e;
+            }
+        }
+        return q;
+    }
+    feature = 0;
+    return a + ab * (vb / sum) + ac * (vc / sum);
+}
+
+// The squared distance to the nearest triangle, which triangle (leaf order), its feature and point.
+float sdfwb_meshNearest(vec3 p, out uint triangle, out int feature, out vec3 closest) {
+    uint stack[SDFWB_MESH_STACK];
+    int top = 0;
+    stack[top++] = 0u;
+    float best = 3.0e38;
+    triangle = 0u;
+    feature = 0;
+    closest = p;
+    while (top > 0) {
+        uint n = stack[--top];
+        vec4 lo = sdfwb_meshNodes[4u * n];
+        vec4 hi = sdfwb_meshNodes[4u * n + 1u];
+        if (sdfwb_meshBoxDistance2(p, lo.xyz, hi.xyz) >= best) continue;
+        uint first = floatBitsToUint(lo.w);
+        uint count = floatBitsToUint(hi.w);
+        if (count > 0u) {
+            for (uint s = first; s < first + count; ++s) {
+                int f;
+                vec3 q = sdfwb_meshClosest(p, sdfwb_meshTriangles[3u * s].xyz, sdfwb_meshTriangles[3u * s + 1u].xyz,
+                                           sdfwb_meshTriangles[3u * s + 2u].xyz, f);
+                float d2 = dot(p - q, p - q);
+                if (d2 < best) {
+                    best = d2;
+                    triangle = s;
+                    feature = f;
+                    closest = q;
+                }
+            }
+            continue;
+        }
+        float dl = sdfwb_meshBoxDistance2(p, sdfwb_meshNodes[4u * first].xyz, sdfwb_meshNodes[4u * first + 1u].xyz);
+        float dr = sdfwb_meshBoxDistance2(p, sdfwb_meshNodes[4u * first + 4u].xyz, sdfwb_meshNodes[4u * first + 5u].xyz);
+        // The nearer child on top; a child already farther than the best is never pushed.
+        uint nearChild = dl < dr ? first : first + 1u;
+        uint farChild = dl < dr ? first + 1u : first;
+        if (max(dl, dr) < best) stack[top++] = farChild;
+        if (min(dl, dr) < best) stack[top++] = nearChild;
+    }
+    return best;
+}
+
+float sdfwb_meshDistance(vec3 p) {
+    uint t;
+    int f;
+    vec3 q;
+    return sqrt(sdfwb_meshNearest(p, t, f, q));
+}
+
+// Signed solid angle of triangle abc seen from p (van Oosterom and Strackee).
+float sdfwb_meshSolidAngle(vec3 p, vec3 a, vec3 b, vec3 c) {
+    vec3 A = a - p;
+    vec3 B = b - p;
+    vec3 C = c - p;
+    float la = length(A);
+    float lb = length(B);
+    float lc = length(C);
+    float det = dot(A, cross(B, C));
+    float den = la * lb * lc + dot(A, B) * lc + dot(B, C) * la + dot(C, A) * lb;
+    return 2.0 * atan(det, den);
+}
+
+// The generalized winding number: 1 inside a closed, outward-facing mesh, 0 outside; near clusters
+// add their triangles' solid angles, far ones their dipole (Barill et al. 2018, first order).
+float sdfwb_meshWinding(vec3 p) {
+    uint stack[2 * SDFWB_MESH_STACK];
+    int top = 0;
+    stack[top++] = 0u;
+    float sum = 0.0;
+    while (top > 0) {
+        uint n = stack[--top];
+        vec4 centre = sdfwb_meshNodes[4u * n + 2u];
+        vec3 d = centre.xyz - p;
+        float dist2 = dot(d, d);
+        float reach = SDFWB_MESH_BETA * centre.w;
+        if (dist2 > reach * reach) {
+            sum += dot(sdfwb_meshNodes[4u * n + 3u].xyz, d) / (dist2 * sqrt(dist2));
+            continue;
+        }
+        uint first = floatBitsToUint(sdfwb_meshNodes[4u * n].w);
+        uint count = floatBitsToUint(sdfwb_meshNodes[4u * n + 1u].w);
+        if (count > 0u) {
+            for (uint s = first; s < first + count; ++s)
+                sum += sdfwb_meshSolidAngle(p, sdfwb_meshTriangles[3u * s].xyz, sdfwb_meshTriangles[3u * s + 1u].xyz,
+                                            sdfwb_meshTriangles[3u * s + 2u].xyz);
+        } else {
+            stack[top++] = first;
+            stack[top++] = first + 1u;
+        }
+    }
+    return sum / (4.0 * 3.14159265358979);
+}
+
+// Crossings of the ray p + t d (t > 0) with the mesh.
+int sdfwb_meshCrossings(vec3 p, vec3 d) {
+    vec3 inverse = 1.0 / d;
+    uint stack[2 * SDFWB_MESH_STACK];
+    int top = 0;
+    stack[top++] = 0u;
+    int crossings = 0;
+    while (top > 0) {
+        uint n = stack[--top];
+        vec4 lo = sdfwb_meshNodes[4u * n];
+        vec4 hi = sdfwb_meshNodes[4u * n + 1u];
+        vec3 t0 = (lo.xyz - p) * inverse;
+        vec3 t1 = (hi.xyz - p) * inverse;
+        vec3 tmin = min(t0, t1);
+        vec3 tmax = max(t0, t1);
+        if (max(max(tmin.x, tmin.y), max(tmin.z, 0.0)) > min(min(tmax.x, tmax.y), tmax.z)) continue;
+        uint first = floatBitsToUint(lo.w);
+        uint count = floatBitsToUint(hi.w);
+        if (count > 0u) {
+            for (uint s = first; s < first + count; ++s) {
+                vec3 a = sdfwb_meshTriangles[3u * s].xyz;
+                vec3 e1 = sdfwb_meshTriangles[3u * s + 1u].xyz - a;
+                vec3 e2 = sdfwb_meshTriangles[3u * s + 2u].xyz - a;
+                vec3 h = cross(d, e2);
+                float det = dot(e1, h);
+                if (det == 0.0) continue;
+                vec3 o = p - a;
+                float u = dot(o, h) / det;
+                vec3 q = cross(o, e1);
+                float v = dot(d, q) / det;
+                if (u >= 0.0 && u <= 1.0 && v >= 0.0 && u + v <= 1.0 && dot(e2, q) / det > 0.0) ++crossings;
+            }
+        } else {
+            stack[top++] = first;
+            stack[top++] = first + 1u;
+        }
+    }
+    return crossings;
+}
+
+bool sdfwb_meshInside(vec3 p, uint triangle, int feature, vec3 closest) {
+#if defined(SDFWB_MESH_SIGN_PARITY)
+    // The majority of three skewed rays (meshfield's parityDirections()).
+    int votes = sdfwb_meshCrossings(p, normalize(vec3(1.0, 0.3183, 0.1415))) % 2;
+    votes += sdfwb_meshCrossings(p, normalize(vec3(-0.2718, 1.0, 0.5772))) % 2;
+    votes += sdfwb_meshCrossings(p, normalize(vec3(0.1618, -0.4142, 1.0))) % 2;
+    return votes >= 2;
+#elif defined(SDFWB_MESH_SIGN_PSEUDONORMAL)
+    const int slot[7] = int[7](0, 4, 5, 6, 1, 2, 3);
+    return dot(p - closest, sdfwb_meshPseudonormals[7u * triangle + uint(slot[feature])].xyz) < 0.0;
+#else
+    return sdfwb_meshWinding(p) > 0.5;
+#endif
+}
+
+float sdfwb_meshSdf(vec3 p) {
+    uint triangle;
+    int feature;
+    vec3 closest;
+    float d = sqrt(sdfwb_meshNearest(p, triangle, feature, closest));
+    return sdfwb_meshInside(p, triangle, feature, closest) ? -d : d;
+}

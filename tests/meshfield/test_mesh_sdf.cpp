@@ -1,0 +1,163 @@
+// The mesh field on the GPU (shaders/mesh/mesh_field.glsl, through the samplers' own points stage)
+// against the float64 references: distances within 1e-5 of the bounding box's diagonal of a
+// brute-force scan, and the sign each method gives on the CPU; a mesh file through the job layer
+// renders, samples and refuses mesh options on GLSL files.
+#include "GlTestContext.h"
+#include "TestMeshes.h"
+
+#include <jobs/Jobs.h>
+#include <meshfield/MeshField.h>
+#include <renderer/SampleCompute.h>
+#include <sampling/Sampler.h>
+#include <shaders/SdfSource.h>
+#include <shaders/ShaderComposer.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <random>
+#include <unistd.h>
+
+namespace sdfwb {
+namespace {
+
+using glm::dvec3;
+namespace fs = std::filesystem;
+
+class MeshSdfTest : public testing::GlTest {
+protected:
+    // The field at `points` (xyz triples) through analysis/points.glsl.
+    static std::vector<float> evaluate(const shaders::PreparedSdf& sdf, const std::vector<float>& points) {
+        renderer::SampleCompute compute;
+        auto stage = shaders::builtinPiece("analysis/points.glsl");
+        EXPECT_TRUE(stage.hasValue());
+        auto diagnostics = compute.build(sdf, *stage);
+        EXPECT_FALSE(shaders::hasErrors(diagnostics)) << (diagnostics.empty() ? "" : shaders::formatDiagnostic(diagnostics[0]));
+        sampling::SamplingJob job;
+        job.count = points.size() / 3;
+        job.inputPoints = points.data();
+        std::vector<float> distances(job.count);
+        auto report = sampling::sampleInto(compute, job, nullptr, distances.data(), nullptr, {});
+        EXPECT_TRUE(report.hasValue()) << (report ? "" : report.error().message);
+        compute.releaseGl();
+        return distances;
+    }
+};
+
+double bruteDistance(const meshfield::TriangleMesh& mesh, const dvec3& p) {
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
+        const dvec3 q =
+            meshfield::closestPointOnTriangle(p, dvec3(mesh.vertices[mesh.indices[t]]), dvec3(mesh.vertices[mesh.indices[t + 1]]),
+                                              dvec3(mesh.vertices[mesh.indices[t + 2]]));
+        best = std::min(best, glm::length(p - q));
+    }
+    return best;
+}
+
+TEST_F(MeshSdfTest, GpuDistancesMatchAFloat64BruteForceScanAndEachSignMethodsCpuSign) {
+    const meshfield::TriangleMesh mesh = testing::torusMesh(0.6f, 0.25f, 64, 24);
+    std::mt19937 random(11);
+    std::uniform_real_distribution<float> u(-1.2f, 1.2f);
+    std::vector<float> points;
+    for (int i = 0; i < 4000; ++i) points.insert(points.end(), {u(random), u(random), u(random)});
+    // points near the surface, where the nearest feature changes
+    for (std::size_t k = 0; k < 1000; ++k) {
+        const glm::vec3 v = mesh.vertices[(k * 13) % mesh.vertices.size()];
+        points.insert(points.end(), {v.x + 3e-3f * float(k % 3), v.y - 2e-3f * float(k % 5), v.z + 1e-3f * float(k % 7)});
+    }
+    const std::size_t n = points.size() / 3;
+    std::vector<double> reference(n);
+    for (std::size_t i = 0; i < n; ++i)
+        reference[i] = bruteDistance(mesh, dvec3(points[3 * i], points[3 * i + 1], points[3 * i + 2]));
+    for (meshfield::SignMethod sign :
+         {meshfield::SignMethod::Winding, meshfield::SignMethod::Parity, meshfield::SignMethod::Pseudonormal}) {
+        meshfield::MeshFieldOptions options;
+        options.sign = sign;
+        auto field = meshfield::makeMeshField(mesh, "torus.obj", options);
+        ASSERT_TRUE(field.hasValue());
+        const double diagonal = glm::length((*field)->bounds.hi - (*field)->bounds.lo);
+        const std::vector<float> gpu = evaluate(shaders::prepareMeshSdf(*field, "torus.obj"), points);
+        double worst = 0.0;
+        int wrongSign = 0;
+        int signed_ = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const dvec3 p(points[3 * i], points[3 * i + 1], points[3 * i + 2]);
+            worst = std::max(worst, std::abs(std::abs(double(gpu[i])) - reference[i]));
+            if (reference[i] < 1e-4) continue; // the sign of a point on the surface is either
+            ++signed_;
+            if ((gpu[i] < 0.0f) != (*field)->inside(p)) ++wrongSign;
+        }
+        std::printf("%-12s GPU |f| vs float64 brute force: largest error %.2e (%.2e of the diagonal); sign differs from the "
+                    "CPU's at %d of %d points\n",
+                    meshfield::signName(sign), worst, worst / diagonal, wrongSign, signed_);
+        EXPECT_LE(worst, 1e-5 * diagonal) << meshfield::signName(sign);
+        EXPECT_EQ(wrongSign, 0) << meshfield::signName(sign);
+    }
+}
+
+TEST_F(MeshSdfTest, AMeshFileIsAnSdfForEveryJobAndMeshOptionsAreRefusedElsewhere) {
+    const fs::path folder = fs::temp_directory_path() / ("sdfwb_meshsdf_" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    const meshfield::TriangleMesh mesh = testing::torusMesh(0.6f, 0.25f, 48, 16);
+    {
+        std::ofstream obj(folder / "torus.obj");
+        for (const glm::vec3& v : mesh.vertices) obj << "v " << v.x << ' ' << v.y << ' ' << v.z << '\n';
+        for (std::size_t t = 0; t < mesh.indices.size(); t += 3)
+            obj << "f " << mesh.indices[t] + 1 << ' ' << mesh.indices[t + 1] + 1 << ' ' << mesh.indices[t + 2] + 1 << '\n';
+    }
+    jobs::SdfInput input;
+    input.sdf = (folder / "torus.obj").string();
+    input.sign = "pseudonormal";
+    input.normalize = "unit-sphere";
+    auto opened = jobs::openSdf(input, "sample");
+    ASSERT_TRUE(bool(opened)) << opened.error.message;
+    ASSERT_TRUE(opened->prepared.mesh);
+    EXPECT_EQ(opened->prepared.mesh->options.sign, meshfield::SignMethod::Pseudonormal);
+    EXPECT_NEAR(opened->prepared.mesh->transform[0], 1.0 / 0.85, 1e-4); // the farthest vertex is 0.85 out
+    EXPECT_EQ(opened->prepared.signature.entry, "sdf");
+
+    // A sample job on the mesh: the torus's inside (scaled by 1/0.85) comes out negative.
+    jobs::SampleRequest sample;
+    sample.sdf = input;
+    sample.count = 4096;
+    sample.pattern = "rand";
+    sample.output = (folder / "torus.npz").string();
+    ASSERT_FALSE(jobs::validate(sample).has_value());
+    auto report = jobs::run(sample, {});
+    ASSERT_TRUE(bool(report)) << report.error.message;
+    EXPECT_TRUE(fs::exists(folder / "torus.npz"));
+
+    // The user's own text over the mesh: an offset surface, the mesh attached.
+    jobs::SdfInput offset = input;
+    offset.source = "float sdf(vec3 p) { return sdfwb_meshSdf(p) - 0.05; }\n";
+    auto shell = jobs::openSdf(offset, "sample");
+    ASSERT_TRUE(bool(shell)) << shell.error.message;
+    const std::vector<float> point = {0.6f / 0.85f, 0.0f, 0.0f}; // the tube's centre, after the scaling
+    const std::vector<float> plain = evaluate(opened->prepared, point);
+    const std::vector<float> thicker = evaluate(shell->prepared, point);
+    // the tube's inscribed 16-gon: r cos(pi/16), scaled
+    EXPECT_NEAR(plain[0], -0.25f * std::cos(3.14159265f / 16.0f) / 0.85f, 1e-3f);
+    EXPECT_NEAR(thicker[0], plain[0] - 0.05f, 1e-5f);
+
+    jobs::SdfInput glsl;
+    glsl.sdf = "sphere";
+    glsl.sign = "parity";
+    auto refused = jobs::openSdf(glsl, "sample");
+    ASSERT_FALSE(bool(refused));
+    EXPECT_NE(refused.error.message.find("--sign"), std::string::npos) << refused.error.message;
+    jobs::SdfInput badSign = input;
+    badSign.sign = "inside";
+    jobs::SampleRequest badRequest = sample;
+    badRequest.sdf = badSign;
+    auto bad = jobs::validate(badRequest);
+    ASSERT_TRUE(bad.has_value());
+    EXPECT_NE(bad->message.find("--sign"), std::string::npos) << bad->message;
+    fs::remove_all(folder);
+}
+
+} // namespace
+} // namespace sdfwb
