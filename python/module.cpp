@@ -70,12 +70,15 @@ renderer::HeadlessContext& context() {
 // names and paths of SDF files do not have). `entry` names the SDF's function (empty: the default).
 // `params`: None or a mapping of parameter values, {"radius": 0.3, "hollow": True, "offset": (1, 2, 0)}
 // (a dict, or any collections.abc.Mapping, as the type stubs promise).
-jobs::SdfInput sdfInput(const std::string& sdf, const std::string& entry, const py::object& params = py::none()) {
+jobs::SdfInput sdfInput(const std::string& sdf, const std::string& entry, const py::object& params = py::none(),
+                        const std::string& sign = {}, const std::string& normalize = {}) {
     jobs::SdfInput input;
     if (sdf.find('{') != std::string::npos && sdf.find('(') != std::string::npos)
         input = {"", entry, sdf, {}};
     else
         input = {sdf, entry, "", {}};
+    input.sign = sign;
+    input.normalize = normalize;
     if (params.is_none()) return input;
     if (!py::isinstance<py::dict>(params) && !py::isinstance(params, py::module_::import("collections.abc").attr("Mapping")))
         throw py::type_error("params: expected a dict (a mapping) of parameter values, or None");
@@ -136,9 +139,10 @@ py::array_t<float> floatArray(std::vector<py::ssize_t> shape) { return py::array
 
 py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_t n, std::uint64_t seed, float time,
                 float gradientStep, std::uint32_t chunk, float surfaceTolerance, const std::string& entry,
-                const py::object& params, std::uint64_t firstIndex, const std::string& nearWidths, float nearTruncation) {
+                const py::object& params, std::uint64_t firstIndex, const std::string& nearWidths, float nearTruncation,
+                const std::string& sign, const std::string& normalize) {
     jobs::SampleRequest request;
-    request.sdf = sdfInput(sdf, entry, params);
+    request.sdf = sdfInput(sdf, entry, params, sign, normalize);
     request.pattern = pattern;
     request.count = n;
     request.seed = seed;
@@ -196,7 +200,7 @@ py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_
 // sampler writes at those positions. The points are read in place (float32, C order: no copy).
 py::dict evaluate(const std::string& sdf, py::array_t<float, py::array::c_style | py::array::forcecast> points,
                   const py::object& params, float time, bool gradient, float gradientStep, const std::string& entry,
-                  std::uint32_t chunk) {
+                  std::uint32_t chunk, const std::string& sign, const std::string& normalize) {
     if (points.ndim() != 2 || points.shape(1) != 3) {
         std::string shape;
         for (py::ssize_t a = 0; a < points.ndim(); ++a) shape += (a ? ", " : "") + std::to_string(points.shape(a));
@@ -211,7 +215,7 @@ py::dict evaluate(const std::string& sdf, py::array_t<float, py::array::c_style 
     job.chunkSize = chunk;
     job.inputPoints = points.data();
     if (auto ok = sampling::validate(job); n > 0 && !ok) throw py::value_error(ok.error().message);
-    const jobs::OpenedSdf opened = prepare(sdfInput(sdf, entry, params));
+    const jobs::OpenedSdf opened = prepare(sdfInput(sdf, entry, params, sign, normalize));
     job.sdfParameters = opened.parameters;
     auto distances = floatArray({n});
     py::object gradients = py::none();
@@ -335,9 +339,9 @@ template <class Request, class Work> auto runOnGl(const Request& request, Work w
 }
 
 py::object audit(const std::string& sdf, std::uint64_t samples, std::uint64_t seed, float time, const std::string& entry,
-                 float probeDistance, const py::object& params) {
+                 float probeDistance, const py::object& params, const std::string& sign, const std::string& normalize) {
     jobs::AuditRequest request;
-    request.sdf = sdfInput(sdf, entry, params);
+    request.sdf = sdfInput(sdf, entry, params, sign, normalize);
     request.samples = samples;
     request.seed = seed;
     request.time = time;
@@ -394,9 +398,10 @@ py::object params(const std::string& sdf, const std::string& entry) {
 // The zero set as a mesh: vertices (V,3) float32 and faces (F,3) uint32, arrays over the
 // extraction's own buffers (no copies), and the report `sdfwb --batch mesh --json` prints.
 py::dict mesh(const std::string& sdf, int resolution, const py::object& bounds, float time, const py::object& lipschitz,
-              std::uint64_t errorSamples, std::uint64_t seed, const std::string& entry, const py::object& params) {
+              std::uint64_t errorSamples, std::uint64_t seed, const std::string& entry, const py::object& params,
+              const std::string& sign, const std::string& normalize) {
     jobs::MeshRequest request;
-    request.sdf = sdfInput(sdf, entry, params);
+    request.sdf = sdfInput(sdf, entry, params, sign, normalize);
     request.resolution = resolution;
     request.time = time;
     request.errorSamples = errorSamples;
@@ -468,11 +473,12 @@ PYBIND11_MODULE(_native, m) {
     m.def("sample", &sample, py::arg("sdf"), py::arg("pattern"), py::arg("n"), py::arg("seed") = 0, py::arg("time") = 0.0f,
           py::arg_v("gradient_step", 1e-3f, "1e-3"), py::arg("chunk") = 1u << 18, py::arg_v("surface_tolerance", 1e-5f, "1e-5"),
           py::arg("entry") = "", py::arg("params") = py::none(), py::arg("first_index") = 0, py::arg("near_widths") = "",
-          py::arg("near_truncate") = 0.0f,
+          py::arg("near_truncate") = 0.0f, py::arg("sign") = "", py::arg("normalize") = "",
           R"doc(Samples `n` points of `sdf` with `pattern`: the same values as `sdfwb --batch sample` with the same seed.
 
 Args:
-    sdf (str): a dataset name (any case, see list_sdfs()), a path to a .glsl file, or GLSL source text (anything
+    sdf (str): a dataset name (any case, see list_sdfs()), a path to a .glsl file or a triangle mesh (see sign),
+        or GLSL source text (anything
         containing both '{' and '(') defining `float sdf(vec3 p)` or the function `entry` names.
     pattern (str): a built-in pattern (grid, image, jitter, rand, surface, near, metropolis, metropolis_curvature),
         a path to a sampler .glsl file (contains '/' or ends in .glsl) defining
@@ -498,6 +504,11 @@ Args:
         positive, e.g. '0.005:0.8,0.05:0.2'). Default '': one width, 0.005.
     near_truncate (float): >= 0: with near_widths, offsets beyond this many standard deviations are redrawn
         (not clamped). Default 0: no truncation.
+    sign (str): for a mesh file (.obj .ply .stl .off .glb ...): how inside is decided: 'winding' (generalized
+        winding numbers; right behind holes, flipped faces and duplicated parts), 'parity' (ray crossings) or
+        'pseudonormal' (exact on closed meshes). Default '': winding.
+    normalize (str): for a mesh file: 'none', 'unit-cube' (bounding box centred, longest side 2) or
+        'unit-sphere' (box centred, farthest vertex at 1). Default '': none.
 
 Returns:
     dict: position (n, 3), distance (n,) and gradient (n, 3) as float32 NumPy arrays that own their memory
@@ -513,7 +524,7 @@ Raises:
 The GIL is released while sampling.)doc");
     m.def("evaluate", &evaluate, py::arg("sdf"), py::arg("points"), py::arg("params") = py::none(), py::arg("time") = 0.0f,
           py::arg("gradient") = true, py::arg_v("gradient_step", 1e-3f, "1e-3"), py::arg("entry") = "",
-          py::arg("chunk") = 1u << 18,
+          py::arg("chunk") = 1u << 18, py::arg("sign") = "", py::arg("normalize") = "",
           R"doc(The field of `sdf` at the caller's points, through the samplers' own stage: bit-equal to what the samplers
 write at the same positions with the same gradient_step.
 
@@ -528,6 +539,8 @@ Args:
     gradient_step (float): > 0, world units: the step of the central differences. Default 1e-3.
     entry (str): the SDF's function when it is not `sdf`, as for sample(). Default ''.
     chunk (int): >= 1, points per GPU dispatch; does not change the values. Default 262144.
+    sign (str): for a mesh file, as for sample(). Default '': winding.
+    normalize (str): for a mesh file, as for sample(). Default '': none.
 
 Returns:
     dict: distance (N,) float32; gradient (N, 3) float32 (raw central differences), or None when
@@ -579,7 +592,8 @@ Raises:
     ValueError: arrays of the wrong shapes, or an unknown format or extension.
     RuntimeError: the file cannot be written.)doc");
     m.def("audit", &audit, py::arg("sdf"), py::arg("samples") = 100000, py::arg("seed") = 0, py::arg("time") = 0.0f,
-          py::arg("entry") = "", py::arg("probe_distance") = 3.0f, py::arg("params") = py::none(),
+          py::arg("entry") = "", py::arg("probe_distance") = 3.0f, py::arg("params") = py::none(), py::arg("sign") = "",
+          py::arg("normalize") = "",
           R"doc(Audits the field of `sdf`: is it an exact distance, a conservative bound, or worse?
 
 Args:
@@ -591,6 +605,8 @@ Args:
     probe_distance (float): 0.1 to 100, world units: how far outward from the surface truncation is probed.
         Default 3.
     params (Mapping[str, bool | float | Sequence[float]] | None): parameter values, as for sample(). Default None.
+    sign (str): for a mesh file, as for sample(). Default '': winding.
+    normalize (str): for a mesh file, as for sample(). Default '': none.
 
 Returns:
     dict: the report `sdfwb --batch audit --json` prints: verdict (the most severe finding: exact,
@@ -639,7 +655,7 @@ Raises:
     RuntimeError: the file cannot be read.)doc");
     m.def("mesh", &mesh, py::arg("sdf"), py::arg("resolution") = 128, py::arg("bounds") = py::none(), py::arg("time") = 0.0f,
           py::arg("lipschitz") = py::none(), py::arg("error_samples") = 0, py::arg("seed") = 0, py::arg("entry") = "",
-          py::arg("params") = py::none(),
+          py::arg("params") = py::none(), py::arg("sign") = "", py::arg("normalize") = "",
           R"doc(The zero set of `sdf` as a triangle mesh, by dual contouring (sharp edges and corners kept).
 
 Args:
@@ -655,6 +671,9 @@ Args:
     seed (int): 0 to 2**64 - 1, for the error's points. Default 0.
     entry (str): the SDF's function when it is not `sdf`, as for sample(). Default ''.
     params (Mapping[str, bool | float | Sequence[float]] | None): parameter values, as for sample(). Default None.
+    sign (str): for a mesh file, as for sample() (meshing a broken mesh's winding-number inside gives a
+        watertight mesh). Default '': winding.
+    normalize (str): for a mesh file, as for sample(). Default '': none.
 
 Returns:
     dict: vertices (V, 3) float32 and faces (F, 3) uint32, arrays over the extraction's own memory (no

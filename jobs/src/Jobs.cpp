@@ -173,8 +173,16 @@ JobResult<OpenedSdf> openSdf(const SdfInput& input, const std::string& what) {
                      ": applies to mesh files (.obj .ply .stl .off .glb), not '" + path->string() + "'");
     if (mesh) {
         meshfield::MeshFieldOptions options;
-        if (!input.sign.empty()) options.sign = *meshfield::parseSign(input.sign);
-        if (!input.normalize.empty()) options.normalize = *meshfield::parseNormalization(input.normalize);
+        if (!input.sign.empty()) {
+            auto sign = meshfield::parseSign(input.sign);
+            if (!sign) return usage("--sign: " + sign.error().message);
+            options.sign = *sign;
+        }
+        if (!input.normalize.empty()) {
+            auto normalize = meshfield::parseNormalization(input.normalize);
+            if (!normalize) return usage("--normalize: " + normalize.error().message);
+            options.normalize = *normalize;
+        }
         auto field = meshfield::loadMeshField(*path, options);
         if (!field) return JobError{Failure::Work, what + ": " + field.error().message, {}};
         log::info(what, (*field)->summary());

@@ -62,24 +62,25 @@ def _is_torch_tensor(value: object) -> bool:
 @overload
 def evaluate(sdf: str, points: _CpuTensor, params: Mapping[str, ParamValue] | None = None, time: float = 0.0,
              gradient: bool = True, gradient_step: float = 1e-3, entry: str = "",
-             chunk: int = 1 << 18) -> dict[str, Any]: ...
+             chunk: int = 1 << 18, sign: str = "", normalize: str = "") -> dict[str, Any]: ...
 
 
 @overload
 def evaluate(sdf: str, points: npt.ArrayLike, params: Mapping[str, ParamValue] | None = None, time: float = 0.0,
              gradient: bool = True, gradient_step: float = 1e-3, entry: str = "",
-             chunk: int = 1 << 18) -> EvaluateResult: ...
+             chunk: int = 1 << 18, sign: str = "", normalize: str = "") -> EvaluateResult: ...
 
 
 def evaluate(sdf: str, points: Any, params: Mapping[str, ParamValue] | None = None, time: float = 0.0,
              gradient: bool = True, gradient_step: float = 1e-3, entry: str = "",
-             chunk: int = 1 << 18) -> EvaluateResult | dict[str, Any]:
+             chunk: int = 1 << 18, sign: str = "", normalize: str = "") -> EvaluateResult | dict[str, Any]:
     """The field of `sdf` at the caller's points, through the samplers' own stage: bit-equal to what the
     samplers write at the same positions with the same gradient_step.
 
     Args:
-        sdf (str): a dataset name (any case, see list_sdfs()), a path to a .glsl file, or GLSL source text
-            (anything containing both '{' and '('), as for sample().
+        sdf (str): a dataset name (any case, see list_sdfs()), a path to a .glsl file or a triangle mesh
+            (.obj .ply .stl .off .glb ...), or GLSL source text (anything containing both '{' and '('), as
+            for sample().
         points (array_like or torch.Tensor): shape (N, 3), N <= 4294967295 (N = 0 gives empty arrays);
             float32 C-order arrays are read in place, anything else is converted to float32 once. A CPU
             torch tensor gives tensors out that share the returned arrays' memory.
@@ -92,6 +93,10 @@ def evaluate(sdf: str, points: Any, params: Mapping[str, ParamValue] | None = No
         gradient_step (float): > 0, world units: the step of the central differences. Default 1e-3.
         entry (str): the SDF's function when it is not `sdf` (e.g. 'map'), as for sample(). Default ''.
         chunk (int): >= 1, points per GPU dispatch; does not change the values. Default 262144.
+        sign (str): for a mesh file: 'winding' (generalized winding numbers), 'parity' or 'pseudonormal',
+            as for sample(). Default '': winding.
+        normalize (str): for a mesh file: 'none', 'unit-cube' or 'unit-sphere', as for sample().
+            Default '': none.
 
     Returns:
         dict: distance (N,) float32; gradient (N, 3) float32 (raw central differences), or None when
@@ -112,9 +117,10 @@ def evaluate(sdf: str, points: Any, params: Mapping[str, ParamValue] | None = No
         if points.device.type != "cpu":
             raise ValueError(f"evaluate: points must be a CPU tensor, not one on {points.device}")
         result: dict[str, Any] = dict(
-            _native.evaluate(sdf, points.detach().numpy(), params, time, gradient, gradient_step, entry, chunk))
+            _native.evaluate(sdf, points.detach().numpy(), params, time, gradient, gradient_step, entry, chunk, sign,
+                             normalize))
         result["distance"] = torch.from_numpy(result["distance"])
         if result["gradient"] is not None:
             result["gradient"] = torch.from_numpy(result["gradient"])
         return result
-    return _native.evaluate(sdf, points, params, time, gradient, gradient_step, entry, chunk)
+    return _native.evaluate(sdf, points, params, time, gradient, gradient_step, entry, chunk, sign, normalize)

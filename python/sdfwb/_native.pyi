@@ -116,6 +116,8 @@ def sample(
     first_index: int = 0,
     near_widths: str = "",
     near_truncate: float = 0.0,
+    sign: str = "",
+    normalize: str = "",
 ) -> SampleResult: ...
 def evaluate(
     sdf: str,
@@ -126,6 +128,8 @@ def evaluate(
     gradient_step: float = 1e-3,
     entry: str = "",
     chunk: int = 262144,
+    sign: str = "",
+    normalize: str = "",
 ) -> EvaluateResult: ...
 def _forget_context_after_fork() -> None: ...
 def load(path: str) -> LoadResult: ...
@@ -148,6 +152,8 @@ def audit(
     entry: str = "",
     probe_distance: float = 3.0,
     params: Mapping[str, ParamValue] | None = None,
+    sign: str = "",
+    normalize: str = "",
 ) -> dict[str, Any]: ...
 def run(request: dict[str, Any] | str) -> dict[str, Any]: ...
 def params(sdf: str, entry: str = "") -> ParamsReport: ...
@@ -161,6 +167,8 @@ def mesh(
     seed: int = 0,
     entry: str = "",
     params: Mapping[str, ParamValue] | None = None,
+    sign: str = "",
+    normalize: str = "",
 ) -> MeshResult: ...
 def evaluate_mesh(
     mesh: str,

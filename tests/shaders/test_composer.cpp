@@ -1,5 +1,6 @@
 // The composer: what goes into a shader, and what stays out.
 
+#include <meshfield/MeshField.h>
 #include <shaders/BuiltinShaders.h>
 #include <shaders/GlslChecker.h>
 #include <shaders/ShaderComposer.h>
@@ -188,6 +189,34 @@ TEST(BuiltinShaders, EveryEmbeddedFileCompilesWithGlslangInItsStage) {
         auto diagnostics = checkWithGlslang(composeSdfShader(shadertoy, Stage::Fragment, {*piece}, {}));
         EXPECT_FALSE(hasErrors(diagnostics)) << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
         covered.insert("shadertoy/picture.frag");
+    }
+    {
+        // A triangle mesh as the SDF (one triangle is enough for the text): its traversal composed
+        // with each sign method, in the tracer's fragment stage and the samplers' compute stage.
+        sdfwb::meshfield::TriangleMesh triangle{{glm::vec3(0.0f), glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)},
+                                                {0, 1, 2}};
+        for (sdfwb::meshfield::SignMethod sign : {sdfwb::meshfield::SignMethod::Winding, sdfwb::meshfield::SignMethod::Parity,
+                                                  sdfwb::meshfield::SignMethod::Pseudonormal}) {
+            sdfwb::meshfield::MeshFieldOptions options;
+            options.sign = sign;
+            auto field = sdfwb::meshfield::makeMeshField(triangle, "triangle.obj", options);
+            ASSERT_TRUE(field.hasValue());
+            PreparedSdf mesh = prepareMeshSdf(*field, "triangle.obj");
+            ASSERT_FALSE(hasErrors(mesh.diagnostics)) << formatDiagnostic(mesh.diagnostics[0]);
+            auto traced = composeTracer(mesh, TracerFeatures{});
+            ASSERT_TRUE(traced.hasValue());
+            auto diagnostics = checkWithGlslang(*traced);
+            EXPECT_FALSE(hasErrors(diagnostics))
+                << sdfwb::meshfield::signName(sign) << ": " << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
+            std::vector<ShaderPiece> pieces;
+            for (const char* file :
+                 {"sampling/bindings.glsl", "sampling/common.glsl", "analysis/points.glsl", "sampling/sample.comp"})
+                pieces.push_back(*builtinPiece(file));
+            diagnostics = checkWithGlslang(composeSdfShader(mesh, Stage::Compute, pieces, {}));
+            EXPECT_FALSE(hasErrors(diagnostics))
+                << sdfwb::meshfield::signName(sign) << ": " << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
+        }
+        covered.insert("mesh/mesh_field.glsl");
     }
     // The compat prelude is composed when an SDF needs it (tested above); everything else must be
     // reached by one of the stages here, so a new built-in file cannot go unchecked.

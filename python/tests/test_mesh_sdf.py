@@ -1,0 +1,78 @@
+"""Meshes in: a triangle mesh file is an SDF for sample, evaluate, audit and mesh, with the sign method and
+normalisation the caller names. The meshes are written here (a cube, whose exact signed distance is known,
+and the same cube with one side missing)."""
+import numpy as np
+import pytest
+
+import sdfwb
+
+CORNERS = [(x, y, z) for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)]
+# Two triangles a side, counter-clockwise seen from outside (vertex k has bits x y z of k).
+SIDES = {"-x": [(0, 1, 3), (0, 3, 2)], "+x": [(4, 6, 7), (4, 7, 5)], "-y": [(0, 4, 5), (0, 5, 1)],
+         "+y": [(2, 3, 7), (2, 7, 6)], "-z": [(0, 2, 6), (0, 6, 4)], "+z": [(1, 5, 7), (1, 7, 3)]}
+
+
+def write_cube(path, skip=()):
+    with open(path, "w") as obj:
+        for corner in CORNERS:
+            obj.write("v %g %g %g\n" % corner)
+        for side, triangles in SIDES.items():
+            if side in skip:
+                continue
+            for a, b, c in triangles:
+                obj.write("f %d %d %d\n" % (a + 1, b + 1, c + 1))
+    return str(path)
+
+
+def box_sdf(points, half=0.5):
+    q = np.abs(points) - half
+    return np.linalg.norm(np.maximum(q, 0.0), axis=1) + np.minimum(q.max(axis=1), 0.0)
+
+
+@pytest.mark.parametrize("sign", ["winding", "parity", "pseudonormal"])
+def test_a_cube_file_is_its_exact_sdf_with_every_sign(tmp_path, sign):
+    cube = write_cube(tmp_path / "cube.obj")
+    points = np.random.default_rng(3).uniform(-1.0, 1.0, (20000, 3)).astype(np.float32)
+    values = sdfwb.evaluate(cube, points, gradient=False, sign=sign)["distance"]
+    exact = box_sdf(points.astype(np.float64))
+    assert np.max(np.abs(values - exact)) < 1e-5 * np.sqrt(3.0)
+
+
+def test_sample_normalizes_and_an_open_cube_keeps_its_inside(tmp_path):
+    big = tmp_path / "big.obj"
+    write_cube(big)
+    text = big.read_text().splitlines()
+    # the same cube, 6 units wide and moved: unit-cube brings it back to [-1, 1]^3
+    moved = ["v %g %g %g" % tuple(6 * c + o for c, o in zip(map(float, line.split()[1:]), (10, 0, -3)))
+             if line.startswith("v ") else line for line in text]
+    big.write_text("\n".join(moved) + "\n")
+    rows = sdfwb.sample(str(big), "rand", 5000, seed=2, normalize="unit-cube")
+    assert np.max(np.abs(rows["distance"] - box_sdf(rows["position"].astype(np.float64), 1.0))) < 2e-5
+
+    open_cube = write_cube(tmp_path / "open.obj", skip=("+z",))
+    inside = np.array([[0.0, 0.0, 0.0], [0.2, -0.3, -0.2], [0.0, 0.0, 0.4]], dtype=np.float32)
+    assert np.all(sdfwb.evaluate(open_cube, inside, gradient=False)["distance"] < 0)
+    # parity counts crossings, which a missing side changes: some ray escapes through the hole
+    parity = sdfwb.evaluate(open_cube, inside, gradient=False, sign="parity")["distance"]
+    assert np.any(parity > 0)
+
+
+def test_meshing_an_open_cube_gives_a_watertight_mesh(tmp_path):
+    open_cube = write_cube(tmp_path / "open.obj", skip=("+z", "-x"))
+    meshed = sdfwb.mesh(open_cube, resolution=32)
+    report = meshed["report"]
+    assert report["watertight"] and report["boundary_edges"] == 0 and report["non_manifold_edges"] == 0
+    assert np.allclose(meshed["vertices"].min(axis=0), -0.5, atol=1e-3)
+    assert np.allclose(meshed["vertices"].max(axis=0), 0.5, atol=1e-3)
+
+
+def test_mesh_options_are_checked(tmp_path):
+    cube = write_cube(tmp_path / "cube.obj")
+    with pytest.raises(ValueError, match="--sign"):
+        sdfwb.evaluate(cube, np.zeros((1, 3), np.float32), sign="inside")
+    with pytest.raises(ValueError, match="--normalize"):
+        sdfwb.sample(cube, "rand", 10, normalize="unit")
+    with pytest.raises(ValueError, match="mesh files"):
+        sdfwb.sample("Sphere", "rand", 10, sign="winding")
+    audit = sdfwb.audit(cube, samples=2000)
+    assert audit["verdict"] in ("exact", "conservative")
