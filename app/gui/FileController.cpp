@@ -5,6 +5,7 @@
 #include <core/Log.h>
 #include <core/Paths.h>
 #include <core/TextFile.h>
+#include <meshfield/MeshField.h>
 #include <widgets/GlslEditor.h>
 #include <widgets/ViewportWidget.h>
 
@@ -57,6 +58,15 @@ FileController::FileController(QWidget* window, widgets::GlslEditor* editor, Sdf
 }
 
 bool FileController::load(const QString& path) {
+    if (meshfield::isMeshPath(path.toStdString())) {
+        // Loading a mesh's bytes as text would put them in the editor and let Save overwrite the mesh.
+        const std::string why = path.toStdString() +
+                                ": a triangle mesh; the editor opens GLSL. The command line and Python take meshes as SDFs "
+                                "(sdfwb --batch render --sdf FILE, sdfwb.sample(FILE, ...); see docs/mesh-sdf.md)";
+        emit message(QString::fromStdString(why));
+        log::error("app", why);
+        return false;
+    }
     auto text = readTextFile(path.toStdString());
     if (!text) {
         emit message(QString::fromStdString(text.error().message));
