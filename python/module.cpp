@@ -285,6 +285,7 @@ py::dict load(const std::string& path) {
         metadata["total_count"] = m->totalCount;
         metadata["version"] = m->version;
         if (!m->parameters.empty()) metadata["parameters"] = fromJson(m->parameters);
+        if (!m->mesh.empty()) metadata["mesh"] = fromJson(m->mesh);
         result["metadata"] = metadata;
     }
     return result;

@@ -78,6 +78,7 @@ JobResult<SampleReport> run(const SampleRequest& request, const ProgressSink& pr
     if (!request.nearWidths.empty()) metadata.pattern += " " + request.nearWidths;
     if (request.nearTruncation > 0.0f) metadata.pattern += " truncate " + std::to_string(request.nearTruncation);
     metadata.version = SDFWB_VERSION;
+    if (sdf->prepared.mesh) metadata.mesh = sdf->prepared.mesh->provenanceJson();
     const bool family = !request.family.empty();
     const std::uint64_t total = job.rows() * instances.size();
     std::vector<std::string> written;

@@ -446,6 +446,28 @@ std::string MeshField::glslSource() const {
     return line;
 }
 
+std::string MeshField::provenanceJson() const {
+    std::string file;
+    for (char c : name) {
+        if (c == '"' || c == '\\') file += '\\';
+        if (static_cast<unsigned char>(c) >= 0x20) file += c;
+    }
+    auto number = [](double value) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.17g", value);
+        return std::string(text);
+    };
+    std::string json = "{\"file\": \"" + file + "\", \"triangles\": " + std::to_string(mesh.triangles()) +
+                       ", \"closed\": " + (boundaryEdges == 0 && nonManifoldEdges == 0 ? "true" : "false") + ", \"sign\": \"" +
+                       signName(options.sign) + "\", \"normalize\": \"" + normalizationName(options.normalize) +
+                       "\", \"transform\": [";
+    for (std::size_t k = 0; k < transform.size(); ++k) json += (k ? ", " : "") + number(transform[k]);
+    json += "], \"bounds\": [" + number(originalBounds.lo.x) + ", " + number(originalBounds.lo.y) + ", " +
+            number(originalBounds.lo.z) + ", " + number(originalBounds.hi.x) + ", " + number(originalBounds.hi.y) + ", " +
+            number(originalBounds.hi.z) + "]}";
+    return json;
+}
+
 std::string MeshField::summary() const {
     char line[512];
     std::snprintf(line, sizeof line,

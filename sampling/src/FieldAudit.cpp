@@ -241,6 +241,37 @@ Expected<AuditFlag> probeOutward(const shaders::PreparedSdf& sdf, const AuditOpt
 }
 
 // The audit at one sample count (no convergence runs).
+} // namespace
+
+AuditFlag signUncertainty(const meshfield::MeshField& mesh, const SampleSet& points, std::size_t limit) {
+    AuditFlag flag;
+    flag.name = "sign-uncertain";
+    const std::size_t n = std::min(points.size(), limit);
+    std::vector<float> ambiguous;
+    for (std::size_t i = 0; i < n; ++i) {
+        const glm::dvec3 p(points.positions[3 * i], points.positions[3 * i + 1], points.positions[3 * i + 2]);
+        const double w = mesh.winding(p);
+        if (std::abs(w - 0.5) >= kSignUncertainBand) continue;
+        ambiguous.push_back(float(w));
+        if (flag.examples.size() < kMaxExamples) flag.examples.push_back(glm::vec3(p));
+    }
+    flag.count = ambiguous.size();
+    flag.share = n ? double(flag.count) / double(n) : 0.0;
+    if (flag.count == 0) return flag;
+    std::sort(ambiguous.begin(), ambiguous.end());
+    flag.value = ambiguous[ambiguous.size() / 2];
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "%.3g %% of random points (%llu of %zu) have a winding number between %.2g and %.2g (median %.2f): the mesh "
+                  "is open or overlaps itself there, so inside or outside is a guess (sign %s)",
+                  100.0 * flag.share, (unsigned long long)flag.count, n, 0.5 - kSignUncertainBand, 0.5 + kSignUncertainBand,
+                  double(flag.value), meshfield::signName(mesh.options.sign));
+    flag.evidence = text;
+    return flag;
+}
+
+namespace {
+
 Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOptions& options, const ProgressSink& progress) {
     auto start = std::chrono::steady_clock::now();
     const std::uint64_t n = std::max<std::uint64_t>(options.samples, 64);
@@ -590,6 +621,15 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
     }
     for (std::size_t k = 1; k < report.flags.size(); ++k)
         report.reason += "; also " + report.flags[k].name + ": " + report.flags[k].evidence;
+    // A mesh's sign where its winding number is no clear inside or outside: a finding beside the
+    // verdict (the field's distances may still be exact).
+    if (sdf.mesh) {
+        AuditFlag flag = signUncertainty(*sdf.mesh, random[1]);
+        if (flag.count > 0) {
+            report.reason += "; also " + flag.name + ": " + flag.evidence;
+            report.flags.push_back(std::move(flag));
+        }
+    }
     // Warnings that go with any verdict.
     if (report.surfacePoints >= 16 && report.surfaceGradient < 0.1f) {
         std::snprintf(text, sizeof text,

@@ -208,6 +208,7 @@ public:
                    scalarArray<std::uint64_t>("total_count.npy", "<u8", metadata.totalCount),
                    stringArray("version.npy", metadata.version)};
         if (!metadata.parameters.empty()) m_small.push_back(stringArray("parameters.npy", metadata.parameters));
+        if (!metadata.mesh.empty()) m_small.push_back(stringArray("mesh.npy", metadata.mesh));
     }
 
     Expected<void> append(const float* positions, const float* distances, const float* gradients, std::size_t n) override {
@@ -588,6 +589,7 @@ Expected<std::unique_ptr<SampleReader>> openNpzReader(InputFile file) {
     readString("pattern", metadata.pattern);
     readString("version", metadata.version);
     readString("parameters", metadata.parameters);
+    readString("mesh", metadata.mesh);
     readUnsigned("seed", metadata.seed);
     readUnsigned("first_index", metadata.firstIndex);
     readUnsigned("total_count", metadata.totalCount);

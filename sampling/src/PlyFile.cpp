@@ -31,6 +31,7 @@ std::string header(std::uint64_t rows, const SampleMetadata& m) {
     out += "comment sdfwb total_count " + std::to_string(m.totalCount) + "\n";
     out += "comment sdfwb version " + singleLine(m.version) + "\n";
     if (!m.parameters.empty()) out += "comment sdfwb parameters " + singleLine(m.parameters) + "\n";
+    if (!m.mesh.empty()) out += "comment sdfwb mesh " + singleLine(m.mesh) + "\n";
     out += "element vertex " + std::to_string(rows) + "\n";
     for (const char* property : kProperties) out += std::string("property float ") + property + "\n";
     // Large files: rows start at a multiple of 4096 bytes (a comment line of spaces pads the
@@ -211,6 +212,8 @@ Expected<std::unique_ptr<SampleReader>> openPlyReader(InputFile file) {
                     metadata.version = value;
                 else if (key == "parameters")
                     metadata.parameters = value;
+                else if (key == "mesh")
+                    metadata.mesh = value;
             } catch (const std::exception&) { return makeError(where() + "malformed sdfwb " + key + " value '" + value + "'"); }
         } else if (keyword == "element") {
             std::string element;

@@ -14,6 +14,12 @@ layout(std430, binding = SDFWB_MESH_TRIANGLES_BINDING) readonly buffer sdfwb_Mes
 layout(std430, binding = SDFWB_MESH_PSEUDONORMALS_BINDING) readonly buffer sdfwb_MeshPseudonormals { vec4 sdfwb_meshPseudonormals[]; };
 #endif
 
+// A walk that stopped before its stack emptied returns NaN: llvmpipe ends a shader invocation's
+// loops after 65535 iterations in all (counted across every call in the invocation: a tracer's
+// march multiplies them), and a cut walk's value would be silently wrong. NaN shows as a bad row
+// in samples and magenta in the viewport.
+float sdfwb_meshCut() { return uintBitsToFloat(0x7fc00000u); }
+
 float sdfwb_meshBoxDistance2(vec3 p, vec3 lo, vec3 hi) {
     vec3 d = max(max(lo - p, p - hi), vec3(0.0));
     return dot(d, d);
@@ -108,7 +114,7 @@ float sdfwb_meshNearest(vec3 p, out uint triangle, out int feature, out vec3 clo
         if (max(dl, dr) < best) stack[top++] = farChild;
         if (min(dl, dr) < best) stack[top++] = nearChild;
     }
-    return best;
+    return top > 0 ? sdfwb_meshCut() : best;
 }
 
 float sdfwb_meshDistance(vec3 p) {
@@ -159,7 +165,7 @@ float sdfwb_meshWinding(vec3 p) {
             stack[top++] = first + 1u;
         }
     }
-    return sum / (4.0 * 3.14159265358979);
+    return top > 0 ? sdfwb_meshCut() : sum / (4.0 * 3.14159265358979);
 }
 
 // Crossings of the ray p + t d (t > 0) with the mesh.
@@ -199,16 +205,16 @@ int sdfwb_meshCrossings(vec3 p, vec3 d) {
             stack[top++] = first + 1u;
         }
     }
-    return crossings;
+    return top > 0 ? -1 : crossings;
 }
 
 bool sdfwb_meshInside(vec3 p, uint triangle, int feature, vec3 closest) {
 #if defined(SDFWB_MESH_SIGN_PARITY)
     // The majority of three skewed rays (meshfield's parityDirections()).
-    int votes = sdfwb_meshCrossings(p, normalize(vec3(1.0, 0.3183, 0.1415))) % 2;
-    votes += sdfwb_meshCrossings(p, normalize(vec3(-0.2718, 1.0, 0.5772))) % 2;
-    votes += sdfwb_meshCrossings(p, normalize(vec3(0.1618, -0.4142, 1.0))) % 2;
-    return votes >= 2;
+    int a = sdfwb_meshCrossings(p, normalize(vec3(1.0, 0.3183, 0.1415)));
+    int b = sdfwb_meshCrossings(p, normalize(vec3(-0.2718, 1.0, 0.5772)));
+    int c = sdfwb_meshCrossings(p, normalize(vec3(0.1618, -0.4142, 1.0)));
+    return (a % 2) + (b % 2) + (c % 2) >= 2;
 #elif defined(SDFWB_MESH_SIGN_PSEUDONORMAL)
     const int slot[7] = int[7](0, 4, 5, 6, 1, 2, 3);
     return dot(p - closest, sdfwb_meshPseudonormals[7u * triangle + uint(slot[feature])].xyz) < 0.0;
@@ -222,5 +228,11 @@ float sdfwb_meshSdf(vec3 p) {
     int feature;
     vec3 closest;
     float d = sqrt(sdfwb_meshNearest(p, triangle, feature, closest));
+#if !defined(SDFWB_MESH_SIGN_PARITY) && !defined(SDFWB_MESH_SIGN_PSEUDONORMAL)
+    float winding = sdfwb_meshWinding(p);
+    if (isnan(winding)) return winding;
+    return winding > 0.5 ? -d : d;
+#else
     return sdfwb_meshInside(p, triangle, feature, closest) ? -d : d;
+#endif
 }

@@ -2,7 +2,7 @@
 // isocontours every sdfwb_contourSpacing, outside a yellow-to-blue ramp with distance, inside solid
 // orange. Lines are anti-aliased with screen-space derivatives, so they keep a constant width.
 // Overlays (SDFWB_PLANE_LIPSCHITZ): red where |grad f| > 1 beyond tolerance, grey where it is ~0
-// away from the surface; NaN/Inf is always magenta.
+// away from the surface; NaN/Inf is always magenta. A mesh SDF's uncertain sign is hatched violet.
 
 uniform vec3 sdfwb_planeNormal;       // unit
 uniform float sdfwb_planeOffset;
@@ -42,6 +42,16 @@ vec3 sdfwb_planeColor(vec3 p) {
     if (isnan(slope) || isinf(slope)) return vec3(1.0, 0.0, 1.0);
     if (slope > 1.02) color = mix(color, vec3(0.9, 0.05, 0.05), clamp((slope - 1.02) * 4.0 + 0.35, 0.0, 0.85));
     else if (slope < 0.05 && abs(f) > 4.0 * sdfwb_contourSpacing) color = mix(color, vec3(0.55), 0.8);
+#endif
+#ifdef SDFWB_MESH_NODES_BINDING
+    // A triangle mesh's field: violet hatching where its winding number is within 1/4 of 1/2, where
+    // the mesh is open or overlaps itself and inside or outside is a guess (the audit's
+    // sign-uncertain flag counts the same points).
+    float winding = sdfwb_meshWinding(p);
+    if (abs(winding - 0.5) < 0.25) {
+        float stripe = step(4.0, mod(gl_FragCoord.x + gl_FragCoord.y, 8.0));
+        color = mix(color, vec3(0.55, 0.2, 0.85), 0.3 + 0.4 * stripe);
+    }
 #endif
     // the zero contour: thick and black
     color = mix(color, vec3(0.0), sdfwb_lineCoverage(f, 3.0));

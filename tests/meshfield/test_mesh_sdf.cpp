@@ -8,12 +8,16 @@
 #include <jobs/Jobs.h>
 #include <meshfield/MeshField.h>
 #include <renderer/SampleCompute.h>
+#include <sampling/FieldAudit.h>
 #include <sampling/Sampler.h>
+#include <sampling/SamplerLibrary.h>
 #include <shaders/SdfSource.h>
 #include <shaders/ShaderComposer.h>
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -157,6 +161,85 @@ TEST_F(MeshSdfTest, AMeshFileIsAnSdfForEveryJobAndMeshOptionsAreRefusedElsewhere
     ASSERT_TRUE(bad.has_value());
     EXPECT_NE(bad->message.find("--sign"), std::string::npos) << bad->message;
     fs::remove_all(folder);
+}
+
+TEST_F(MeshSdfTest, MarchingSamplersGiveTheFieldOrAReportedBadRowNeverAWrongValue) {
+    // The near sampler marches to the surface, evaluating the field many times in one shader
+    // invocation; on llvmpipe the walks can run out of its loop budget. A walk that does returns
+    // NaN (a bad row), so every finite row must be the field's value at its position.
+    const meshfield::TriangleMesh mesh = testing::torusMesh(0.6f, 0.25f, 48, 16);
+    auto field = meshfield::makeMeshField(mesh, "torus.obj", {});
+    ASSERT_TRUE(field.hasValue());
+    renderer::SampleCompute compute;
+    auto sampler = sampling::findSampler("near", {});
+    ASSERT_TRUE(sampler.hasValue());
+    auto diagnostics = compute.build(shaders::prepareMeshSdf(*field, "torus.obj"), *sampler);
+    ASSERT_FALSE(shaders::hasErrors(diagnostics));
+    sampling::SamplingJob job;
+    job.count = 2000;
+    job.seed = 3;
+    std::vector<float> positions(3 * job.count), distances(job.count), gradients(3 * job.count);
+    auto report = sampling::sampleInto(compute, job, positions.data(), distances.data(), gradients.data(), {});
+    ASSERT_TRUE(report.hasValue()) << report.error().message;
+    compute.releaseGl();
+    std::uint64_t finite = 0;
+    std::uint64_t nan = 0;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < job.count; ++i) {
+        if (!std::isfinite(distances[i]) || !std::isfinite(gradients[3 * i]) || !std::isfinite(gradients[3 * i + 1]) ||
+            !std::isfinite(gradients[3 * i + 2])) {
+            ++nan;
+            continue;
+        }
+        ++finite;
+        const dvec3 p(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
+        worst = std::max(worst, std::abs(double(distances[i]) - (*field)->signedDistance(p)));
+    }
+    EXPECT_EQ(report->badRows, nan) << "every row with a NaN value or gradient is counted as bad";
+    EXPECT_LT(worst, 1e-5) << "a finite row differs from the float64 field";
+    std::printf("near on a 1536-triangle torus: %llu finite rows within %.2e of the float64 field, %llu rows with a cut walk "
+                "(NaN, bad rows)\n",
+                (unsigned long long)finite, worst, (unsigned long long)nan);
+}
+
+TEST_F(MeshSdfTest, TheAuditFlagsWhereAnOpenMeshsSignIsAGuess) {
+    // A cube of side 1.2 (two triangles a side, counter-clockwise from outside), and the same cube
+    // without its top: around the hole the winding number passes through 1/2 away from any surface.
+    meshfield::TriangleMesh closed;
+    for (int k = 0; k < 8; ++k) closed.vertices.emplace_back(k & 4 ? 0.6f : -0.6f, k & 2 ? 0.6f : -0.6f, k & 1 ? 0.6f : -0.6f);
+    const std::uint32_t sides[6][6] = {{0, 1, 3, 0, 3, 2}, {4, 6, 7, 4, 7, 5}, {0, 4, 5, 0, 5, 1},
+                                       {2, 3, 7, 2, 7, 6}, {0, 2, 6, 0, 6, 4}, {1, 5, 7, 1, 7, 3}};
+    meshfield::TriangleMesh open = closed;
+    for (int side = 0; side < 6; ++side) {
+        closed.indices.insert(closed.indices.end(), sides[side], sides[side] + 6);
+        if (side != 5) open.indices.insert(open.indices.end(), sides[side], sides[side] + 6); // side 5: +z
+    }
+    ASSERT_LT(open.triangles(), closed.triangles());
+    sampling::AuditOptions options;
+    options.samples = 500;
+    options.convergence = false;
+    const std::array<const meshfield::TriangleMesh*, 2> meshes{&closed, &open};
+    for (const meshfield::TriangleMesh* mesh : meshes) {
+        auto field = meshfield::makeMeshField(*mesh, mesh == &closed ? "closed.obj" : "open.obj", {});
+        ASSERT_TRUE(field.hasValue());
+        auto report = sampling::auditField(shaders::prepareMeshSdf(*field, (*field)->name), options, {});
+        ASSERT_TRUE(report.hasValue()) << report.error().message;
+        const sampling::AuditFlag* flag = sampling::findFlag(report->flags, "sign-uncertain");
+        if (mesh == &closed) {
+            EXPECT_EQ(flag, nullptr) << report->reason;
+            continue;
+        }
+        ASSERT_NE(flag, nullptr) << report->reason;
+        EXPECT_GE(flag->count, 10u);
+        EXPECT_NEAR(flag->share, double(flag->count) / 500.0, 1e-12);
+        EXPECT_FALSE(flag->examples.empty());
+        for (const glm::vec3& p : flag->examples) {
+            const double w = (*field)->winding(dvec3(p));
+            EXPECT_LT(std::abs(w - 0.5), sampling::kSignUncertainBand) << "an example's winding number is " << w;
+        }
+        EXPECT_NE(report->reason.find("sign-uncertain"), std::string::npos) << report->reason;
+        std::printf("open cube: %s\n", flag->evidence.c_str());
+    }
 }
 
 } // namespace

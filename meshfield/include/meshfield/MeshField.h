@@ -104,6 +104,10 @@ struct MeshField {
     // The SDF text a mesh file stands for: a comment naming the mesh, and `float sdf(vec3 p)`
     // returning the field (shaders/mesh/mesh_field.glsl provides it).
     std::string glslSource() const;
+    // Where the field came from, for every output's metadata: a JSON object with file, triangles,
+    // closed, sign, normalize, transform (16 numbers, column-major) and bounds (the file's min xyz,
+    // max xyz).
+    std::string provenanceJson() const;
     // One line: triangles, closed or not, bounds, sign, normalisation, build time and memory.
     std::string summary() const;
 };

@@ -10,6 +10,7 @@
 
 #include <core/Expected.h>
 #include <core/Progress.h>
+#include <meshfield/MeshField.h>
 #include <shaders/SdfSource.h>
 
 #include <glm/vec3.hpp>
@@ -48,6 +49,13 @@ inline constexpr std::size_t kMaxExamples = 16;
 // The figures particular to a flag's kind, by the names reports use: truncated: value, start;
 // discontinuous: jump, jump_max; non-conservative: lipschitz, lipschitz_max; nan: none.
 std::vector<std::pair<const char*, float>> namedFigures(const AuditFlag& flag);
+
+// A mesh SDF's points whose generalized winding number lies within kSignUncertainBand of 1/2
+// (neither clearly inside, near 1, nor clearly outside, near 0): flag "sign-uncertain" with its
+// count, share, median winding number (value) and examples, over the first `limit` of `points`.
+inline constexpr double kSignUncertainBand = 0.25;
+struct SampleSet;
+AuditFlag signUncertainty(const meshfield::MeshField& mesh, const SampleSet& points, std::size_t limit = 50000);
 
 // The flag named `name`, or null.
 const AuditFlag* findFlag(const std::vector<AuditFlag>& flags, const std::string& name);

@@ -39,6 +39,10 @@ struct SampleMetadata {
     // it declares none. npz: a `parameters` string array; PLY: a comment; .bin: a JSON sidecar
     // FILE.bin.json with all of this metadata (the paper's .bin has no room for it).
     std::string parameters;
+    // A mesh SDF's provenance as a JSON object: file, triangles, closed, sign, normalize, transform
+    // (file -> field, column-major 4x4) and the file's bounds ([min xyz, max xyz]); empty for GLSL
+    // SDFs. Stored like `parameters` (npz `mesh`, PLY comment, .bin sidecar).
+    std::string mesh;
 };
 
 // The metadata as one JSON object (the .bin sidecar's content).
