@@ -57,6 +57,23 @@ def test_sample_normalizes_and_an_open_cube_keeps_its_inside(tmp_path):
     assert np.any(parity > 0)
 
 
+def test_sample_files_record_the_mesh_provenance(tmp_path):
+    cube = write_cube(tmp_path / "cube.obj")
+    for extension in ("npz", "ply", "bin"):
+        out = str(tmp_path / ("rows." + extension))
+        sdfwb.run({"kind": "sample", "sdf": cube, "pattern": "rand", "n": 64, "output": out,
+                   "sign": "parity", "normalize": "unit-sphere"})
+        if extension == "bin":
+            import json
+            mesh = json.load(open(out + ".json"))["mesh"]
+        else:
+            mesh = sdfwb.load(out)["metadata"]["mesh"]
+        assert mesh["file"] == "cube.obj" and mesh["triangles"] == 12 and mesh["closed"] is True
+        assert mesh["sign"] == "parity" and mesh["normalize"] == "unit-sphere"
+        assert mesh["bounds"] == [-0.5, -0.5, -0.5, 0.5, 0.5, 0.5]
+        assert np.isclose(mesh["transform"][0], 1 / np.sqrt(0.75)) and mesh["transform"][15] == 1
+
+
 def test_meshing_an_open_cube_gives_a_watertight_mesh(tmp_path):
     open_cube = write_cube(tmp_path / "open.obj", skip=("+z", "-x"))
     meshed = sdfwb.mesh(open_cube, resolution=32)
@@ -74,5 +91,9 @@ def test_mesh_options_are_checked(tmp_path):
         sdfwb.sample(cube, "rand", 10, normalize="unit")
     with pytest.raises(ValueError, match="mesh files"):
         sdfwb.sample("Sphere", "rand", 10, sign="winding")
-    audit = sdfwb.audit(cube, samples=2000)
-    assert audit["verdict"] in ("exact", "conservative")
+    audit = sdfwb.audit(cube, samples=500)
+    assert audit["verdict"] in ("exact", "conservative"), audit["reason"]
+    assert not any(flag["flag"] == "sign-uncertain" for flag in audit["flags"])
+    opened = sdfwb.audit(write_cube(tmp_path / "open.obj", skip=("+z",)), samples=500)
+    uncertain = [flag for flag in opened["flags"] if flag["flag"] == "sign-uncertain"]
+    assert uncertain and uncertain[0]["count"] > 10 and uncertain[0]["examples"], opened["reason"]
