@@ -20,7 +20,7 @@ namespace {
 
 using glm::dvec3;
 
-constexpr std::uint32_t kLeafSize = 4; // triangles a leaf holds at most, unless they cannot be split
+constexpr std::uint32_t kLeafSize = kMaxLeafTriangles;
 constexpr int kBins = 16;
 constexpr std::size_t kMaxDepth = 60; // shaders/mesh/mesh_field.glsl's stack holds depth + 2 entries
 
@@ -85,13 +85,15 @@ struct Builder {
         nodes[index].box = bounds(first, count);
         nodes[index].firstOrLeft = first;
         nodes[index].count = count;
-        if (count <= kLeafSize || level >= kMaxDepth) return;
+        if (count <= kLeafSize) return;
         Box cbox = emptyBox();
         for (std::uint32_t i = first; i < first + count; ++i) grow(cbox, centroid[order[i]]);
         int bestAxis = -1;
         int bestBin = 0;
         double bestCost = std::numeric_limits<double>::infinity();
-        for (int axis = 0; axis < 3; ++axis) {
+        // Past kMaxDepth (a long chain of lopsided splits), halves: the depth stays bounded and no
+        // leaf holds more than kLeafSize triangles (the GPU tests a leaf's triangles unrolled).
+        for (int axis = 0; axis < 3 && level < kMaxDepth; ++axis) {
             const double lo = cbox.lo[axis];
             const double extent = cbox.hi[axis] - lo;
             if (!(extent > 0.0)) continue;
@@ -141,7 +143,7 @@ struct Builder {
             middle = std::uint32_t(cut - order.data());
         }
         if (middle == first || middle == first + count) {
-            // Every centroid in one place: halve the list (a leaf this large would be slow).
+            // Every centroid in one place, or past kMaxDepth: halve the list.
             middle = first + count / 2;
         }
         const std::uint32_t left = std::uint32_t(nodes.size());
@@ -433,6 +435,8 @@ bool MeshField::inside(const dvec3& p) const {
 }
 
 std::string MeshField::glslSource() const {
+    std::string label = name; // inside a comment: no "*/" may end it early
+    for (std::size_t at = label.find("*/"); at != std::string::npos; at = label.find("*/")) label.replace(at, 2, "* /");
     char line[512];
     std::snprintf(line, sizeof line,
                   "/* sdfwb\n"
@@ -441,8 +445,8 @@ std::string MeshField::glslSource() const {
                   "*/\n"
                   "// The mesh's signed distance: shaders/mesh/mesh_field.glsl traverses its hierarchy on the GPU.\n"
                   "float sdf(vec3 p) { return sdfwb_meshSdf(p); }\n",
-                  name.c_str(), mesh.triangles(), boundaryEdges == 0 && nonManifoldEdges == 0 ? "closed" : "open or non-manifold",
-                  signName(options.sign), normalizationName(options.normalize));
+                  label.c_str(), mesh.triangles(), closed() ? "closed" : "open or non-manifold", signName(options.sign),
+                  normalizationName(options.normalize));
     return line;
 }
 
@@ -458,9 +462,8 @@ std::string MeshField::provenanceJson() const {
         return std::string(text);
     };
     std::string json = "{\"file\": \"" + file + "\", \"triangles\": " + std::to_string(mesh.triangles()) +
-                       ", \"closed\": " + (boundaryEdges == 0 && nonManifoldEdges == 0 ? "true" : "false") + ", \"sign\": \"" +
-                       signName(options.sign) + "\", \"normalize\": \"" + normalizationName(options.normalize) +
-                       "\", \"transform\": [";
+                       ", \"closed\": " + (closed() ? "true" : "false") + ", \"sign\": \"" + signName(options.sign) +
+                       "\", \"normalize\": \"" + normalizationName(options.normalize) + "\", \"transform\": [";
     for (std::size_t k = 0; k < transform.size(); ++k) json += (k ? ", " : "") + number(transform[k]);
     json += "], \"bounds\": [" + number(originalBounds.lo.x) + ", " + number(originalBounds.lo.y) + ", " +
             number(originalBounds.lo.z) + ", " + number(originalBounds.hi.x) + ", " + number(originalBounds.hi.y) + ", " +

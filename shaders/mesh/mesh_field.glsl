@@ -6,6 +6,8 @@
 //   SDFWB_MESH_PSEUDONORMALS_BINDING (pseudonormal sign only) seven vec4 per triangle:
 //                                   face, edges ab bc ca, vertices a b c
 //   SDFWB_MESH_STACK                entries of the traversal stack (the hierarchy's depth + 2)
+//   SDFWB_MESH_LEAF_SIZE            triangles a leaf holds at most: its tests are unrolled (a loop
+//                                   with a constant count), so they spend none of llvmpipe's loop budget
 //   SDFWB_MESH_BETA                 winding numbers: a cluster farther than beta radii is a dipole
 //   SDFWB_MESH_SIGN_WINDING | SDFWB_MESH_SIGN_PARITY | SDFWB_MESH_SIGN_PSEUDONORMAL
 layout(std430, binding = SDFWB_MESH_NODES_BINDING) readonly buffer sdfwb_MeshNodes { vec4 sdfwb_meshNodes[]; };
@@ -92,7 +94,9 @@ float sdfwb_meshNearest(vec3 p, out uint triangle, out int feature, out vec3 clo
         uint first = floatBitsToUint(lo.w);
         uint count = floatBitsToUint(hi.w);
         if (count > 0u) {
-            for (uint s = first; s < first + count; ++s) {
+            for (uint k = 0u; k < uint(SDFWB_MESH_LEAF_SIZE); ++k) {
+                if (k >= count) continue;
+                uint s = first + k;
                 int f;
                 vec3 q = sdfwb_meshClosest(p, sdfwb_meshTriangles[3u * s].xyz, sdfwb_meshTriangles[3u * s + 1u].xyz,
                                            sdfwb_meshTriangles[3u * s + 2u].xyz, f);
@@ -157,9 +161,12 @@ float sdfwb_meshWinding(vec3 p) {
         uint first = floatBitsToUint(sdfwb_meshNodes[4u * n].w);
         uint count = floatBitsToUint(sdfwb_meshNodes[4u * n + 1u].w);
         if (count > 0u) {
-            for (uint s = first; s < first + count; ++s)
+            for (uint k = 0u; k < uint(SDFWB_MESH_LEAF_SIZE); ++k) {
+                if (k >= count) continue;
+                uint s = first + k;
                 sum += sdfwb_meshSolidAngle(p, sdfwb_meshTriangles[3u * s].xyz, sdfwb_meshTriangles[3u * s + 1u].xyz,
                                             sdfwb_meshTriangles[3u * s + 2u].xyz);
+            }
         } else {
             stack[top++] = first;
             stack[top++] = first + 1u;
@@ -187,7 +194,9 @@ int sdfwb_meshCrossings(vec3 p, vec3 d) {
         uint first = floatBitsToUint(lo.w);
         uint count = floatBitsToUint(hi.w);
         if (count > 0u) {
-            for (uint s = first; s < first + count; ++s) {
+            for (uint k = 0u; k < uint(SDFWB_MESH_LEAF_SIZE); ++k) {
+                if (k >= count) continue;
+                uint s = first + k;
                 vec3 a = sdfwb_meshTriangles[3u * s].xyz;
                 vec3 e1 = sdfwb_meshTriangles[3u * s + 1u].xyz - a;
                 vec3 e2 = sdfwb_meshTriangles[3u * s + 2u].xyz - a;
@@ -208,18 +217,21 @@ int sdfwb_meshCrossings(vec3 p, vec3 d) {
     return top > 0 ? -1 : crossings;
 }
 
-bool sdfwb_meshInside(vec3 p, uint triangle, int feature, vec3 closest) {
+// 1 inside, 0 outside, NaN when a walk was cut (see sdfwb_meshCut).
+float sdfwb_meshInside(vec3 p, uint triangle, int feature, vec3 closest) {
 #if defined(SDFWB_MESH_SIGN_PARITY)
     // The majority of three skewed rays (meshfield's parityDirections()).
     int a = sdfwb_meshCrossings(p, normalize(vec3(1.0, 0.3183, 0.1415)));
     int b = sdfwb_meshCrossings(p, normalize(vec3(-0.2718, 1.0, 0.5772)));
     int c = sdfwb_meshCrossings(p, normalize(vec3(0.1618, -0.4142, 1.0)));
-    return (a % 2) + (b % 2) + (c % 2) >= 2;
+    if (a < 0 || b < 0 || c < 0) return sdfwb_meshCut();
+    return (a & 1) + (b & 1) + (c & 1) >= 2 ? 1.0 : 0.0;
 #elif defined(SDFWB_MESH_SIGN_PSEUDONORMAL)
     const int slot[7] = int[7](0, 4, 5, 6, 1, 2, 3);
-    return dot(p - closest, sdfwb_meshPseudonormals[7u * triangle + uint(slot[feature])].xyz) < 0.0;
+    return dot(p - closest, sdfwb_meshPseudonormals[7u * triangle + uint(slot[feature])].xyz) < 0.0 ? 1.0 : 0.0;
 #else
-    return sdfwb_meshWinding(p) > 0.5;
+    float winding = sdfwb_meshWinding(p);
+    return isnan(winding) ? winding : (winding > 0.5 ? 1.0 : 0.0);
 #endif
 }
 
@@ -228,11 +240,6 @@ float sdfwb_meshSdf(vec3 p) {
     int feature;
     vec3 closest;
     float d = sqrt(sdfwb_meshNearest(p, triangle, feature, closest));
-#if !defined(SDFWB_MESH_SIGN_PARITY) && !defined(SDFWB_MESH_SIGN_PSEUDONORMAL)
-    float winding = sdfwb_meshWinding(p);
-    if (isnan(winding)) return winding;
-    return winding > 0.5 ? -d : d;
-#else
-    return sdfwb_meshInside(p, triangle, feature, closest) ? -d : d;
-#endif
+    float inside = sdfwb_meshInside(p, triangle, feature, closest);
+    return isnan(inside) ? inside : (inside > 0.5 ? -d : d);
 }

@@ -61,6 +61,9 @@ struct MeshFieldOptions {
     double beta = 2.0;
 };
 
+// Triangles a leaf holds at most (the GPU tests them unrolled: SDFWB_MESH_LEAF_SIZE).
+inline constexpr std::uint32_t kMaxLeafTriangles = 4;
+
 // One BVH node as the GPU reads it: 16 floats (four vec4).
 //   [0..2] box min, [3] first triangle (leaf) or left child (inner; right = left + 1), as bits
 //   [4..6] box max, [7] triangle count (0: inner node), as bits
@@ -90,6 +93,7 @@ struct MeshField {
     std::vector<float> nodes;
     std::vector<float> triangles;
     std::vector<float> pseudonormals;
+    bool closed() const { return boundaryEdges == 0 && nonManifoldEdges == 0; }
     std::size_t gpuBytes() const { return (nodes.size() + triangles.size() + pseudonormals.size()) * sizeof(float); }
 
     // Unsigned distance to the mesh (BVH, double precision).
