@@ -92,7 +92,7 @@ struct Builder {
         int bestBin = 0;
         double bestCost = std::numeric_limits<double>::infinity();
         // Past kMaxDepth (a long chain of lopsided splits), halves: the depth stays bounded and no
-        // leaf holds more than kLeafSize triangles (the GPU tests a leaf's triangles unrolled).
+        // leaf holds more than kLeafSize triangles.
         for (int axis = 0; axis < 3 && level < kMaxDepth; ++axis) {
             const double lo = cbox.lo[axis];
             const double extent = cbox.hi[axis] - lo;

@@ -6,8 +6,6 @@
 //   SDFWB_MESH_PSEUDONORMALS_BINDING (pseudonormal sign only) seven vec4 per triangle:
 //                                   face, edges ab bc ca, vertices a b c
 //   SDFWB_MESH_STACK                entries of the traversal stack (the hierarchy's depth + 2)
-//   SDFWB_MESH_LEAF_SIZE            triangles a leaf holds at most: its tests are unrolled (a loop
-//                                   with a constant count), so they spend none of llvmpipe's loop budget
 //   SDFWB_MESH_BETA                 winding numbers: a cluster farther than beta radii is a dipole
 //   SDFWB_MESH_SIGN_WINDING | SDFWB_MESH_SIGN_PARITY | SDFWB_MESH_SIGN_PSEUDONORMAL
 layout(std430, binding = SDFWB_MESH_NODES_BINDING) readonly buffer sdfwb_MeshNodes { vec4 sdfwb_meshNodes[]; };
@@ -94,9 +92,7 @@ float sdfwb_meshNearest(vec3 p, out uint triangle, out int feature, out vec3 clo
         uint first = floatBitsToUint(lo.w);
         uint count = floatBitsToUint(hi.w);
         if (count > 0u) {
-            for (uint k = 0u; k < uint(SDFWB_MESH_LEAF_SIZE); ++k) {
-                if (k >= count) continue;
-                uint s = first + k;
+            for (uint s = first; s < first + count; ++s) {
                 int f;
                 vec3 q = sdfwb_meshClosest(p, sdfwb_meshTriangles[3u * s].xyz, sdfwb_meshTriangles[3u * s + 1u].xyz,
                                            sdfwb_meshTriangles[3u * s + 2u].xyz, f);
@@ -161,12 +157,9 @@ float sdfwb_meshWinding(vec3 p) {
         uint first = floatBitsToUint(sdfwb_meshNodes[4u * n].w);
         uint count = floatBitsToUint(sdfwb_meshNodes[4u * n + 1u].w);
         if (count > 0u) {
-            for (uint k = 0u; k < uint(SDFWB_MESH_LEAF_SIZE); ++k) {
-                if (k >= count) continue;
-                uint s = first + k;
+            for (uint s = first; s < first + count; ++s)
                 sum += sdfwb_meshSolidAngle(p, sdfwb_meshTriangles[3u * s].xyz, sdfwb_meshTriangles[3u * s + 1u].xyz,
                                             sdfwb_meshTriangles[3u * s + 2u].xyz);
-            }
         } else {
             stack[top++] = first;
             stack[top++] = first + 1u;
@@ -194,9 +187,7 @@ int sdfwb_meshCrossings(vec3 p, vec3 d) {
         uint first = floatBitsToUint(lo.w);
         uint count = floatBitsToUint(hi.w);
         if (count > 0u) {
-            for (uint k = 0u; k < uint(SDFWB_MESH_LEAF_SIZE); ++k) {
-                if (k >= count) continue;
-                uint s = first + k;
+            for (uint s = first; s < first + count; ++s) {
                 vec3 a = sdfwb_meshTriangles[3u * s].xyz;
                 vec3 e1 = sdfwb_meshTriangles[3u * s + 1u].xyz - a;
                 vec3 e2 = sdfwb_meshTriangles[3u * s + 2u].xyz - a;

@@ -61,7 +61,7 @@ struct MeshFieldOptions {
     double beta = 2.0;
 };
 
-// Triangles a leaf holds at most (the GPU tests them unrolled: SDFWB_MESH_LEAF_SIZE).
+// Triangles a leaf holds at most.
 inline constexpr std::uint32_t kMaxLeafTriangles = 4;
 
 // One BVH node as the GPU reads it: 16 floats (four vec4).
