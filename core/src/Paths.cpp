@@ -1,5 +1,7 @@
 #include <core/Paths.h>
 
+#include "InstallPrefix.h"
+
 #include <algorithm>
 #include <cstdlib>
 #include <system_error>
@@ -28,7 +30,7 @@ fs::path codeFile() {
 
 // The install prefix the code file lies in: <prefix>/bin/sdfwb, or
 // <prefix>/lib/python3/dist-packages/sdfwb/_native*.so; empty for anything else.
-fs::path installPrefix(const fs::path& code) {
+fs::path prefixOf(const fs::path& code) {
     const fs::path folder = code.parent_path();
     const std::string packages = folder.parent_path().filename().string();
     if (folder.filename() == "sdfwb" && (packages == "dist-packages" || packages == "site-packages"))
@@ -39,11 +41,13 @@ fs::path installPrefix(const fs::path& code) {
 
 } // namespace
 
+fs::path detail::installPrefix() { return prefixOf(codeFile()); }
+
 fs::path dataRoot() {
     if (const char* env = std::getenv("SDFWB_DATA_DIR"); env && *env) return fs::path(env);
     // An installed sdfwb uses its own prefix's data; a build tree's binary or module, the source
     // tree it was built from, whatever is installed elsewhere on the machine.
-    if (const fs::path prefix = installPrefix(codeFile()); !prefix.empty()) {
+    if (const fs::path prefix = detail::installPrefix(); !prefix.empty()) {
         std::error_code ec;
         fs::path installed = prefix / "share" / "sdfwb";
         if (fs::is_directory(installed / "dataset", ec)) return installed;

@@ -212,7 +212,9 @@ JobResult<OpenedSdf> openSdf(const SdfInput& input, const std::string& what) {
 std::optional<JobError> validate(const RenderRequest& request) {
     if (auto error = checkFrame(request.frame)) return error;
     const std::string extension = fs::path(request.output).extension().string();
-    if (!renderer::canWriteImageExtension(extension))
+    auto writable = renderer::canWriteImageExtension(extension);
+    if (!writable) return JobError{Failure::Work, "--output: '" + request.output + "': " + writable.error().message, {}};
+    if (!*writable)
         return usage("--output: '" + request.output + "': unsupported image type '" + extension + "' (use .png, .jpg or .exr)");
     return checkOutputFolder(request.output);
 }

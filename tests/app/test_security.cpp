@@ -23,6 +23,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// What `ldd FILE` prints: the shared libraries FILE loads when it loads.
+std::string sharedLibraries(const std::string& file) {
+    FILE* pipe = popen(("ldd " + file).c_str(), "r");
+    std::string libraries;
+    char buffer[8192];
+    while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) libraries.append(buffer, n);
+    pclose(pipe);
+    return libraries;
+}
+
 fs::path freshFolder(const std::string& name) {
     fs::path folder = fs::temp_directory_path() / ("sdfwb-security-" + name + "-" + std::to_string(::getpid()));
     fs::remove_all(folder);
@@ -102,18 +112,18 @@ TEST(Security, BatchRunsOpenNoNetworkSocket) {
     close(fds[0]);
     waitpid(child, &status, 0);
     EXPECT_TRUE(sockets.empty()) << sockets.front();
-    // And the binary does not link Qt's networking.
-    FILE* pipe = popen(("ldd " + std::string(SDFWB_BINARY)).c_str(), "r");
-    char buffer[8192];
-    std::string libraries;
-    while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) libraries.append(buffer, n);
-    pclose(pipe);
+    // The batch binary loads no Qt, OpenImageIO or FFmpeg at start (they come with its modules,
+    // core/Plugins.h), and neither it nor the workbench module links Qt's networking.
+    const std::string binary = sharedLibraries(SDFWB_BINARY);
+    EXPECT_NE(binary.find("libepoxy"), std::string::npos) << "ldd output looks wrong:\n" << binary;
+    for (const char* name : {"libQt6", "libOpenImageIO", "libavcodec"})
+        EXPECT_EQ(binary.find(name), std::string::npos) << SDFWB_BINARY << " links " << name << ":\n" << binary;
+    EXPECT_NE(sharedLibraries(SDFWB_PLUGIN_DIR "/libsdfwb_media.so").find("libOpenImageIO"), std::string::npos);
 #ifdef SDFWB_WITH_GUI
-    EXPECT_NE(libraries.find("libQt6Widgets"), std::string::npos) << "ldd output looks wrong:\n" << libraries;
-#else
-    EXPECT_NE(libraries.find("libEGL"), std::string::npos) << "ldd output looks wrong:\n" << libraries;
+    const std::string workbench = sharedLibraries(SDFWB_PLUGIN_DIR "/libsdfwb_workbench.so");
+    EXPECT_NE(workbench.find("libQt6Widgets"), std::string::npos) << "ldd output looks wrong:\n" << workbench;
+    EXPECT_EQ(workbench.find("libQt6Network"), std::string::npos);
 #endif
-    // (libcurl and libssl come in through FFmpeg's and OpenImageIO's own dependencies, unused.)
-    EXPECT_EQ(libraries.find("libQt6Network"), std::string::npos);
+    // (libcurl and libssl come with the media module's FFmpeg and OpenImageIO, unused.)
     fs::remove_all(folder);
 }

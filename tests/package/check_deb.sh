@@ -245,6 +245,19 @@ else
 fi
 run man -w sdfwb > /dev/null 2>&1 || fail "man -w sdfwb does not find the page"
 
+# The modules the binary loads on first use (core/Plugins.h) are in the package and load with the
+# libraries it depends on; the workbench's only when the build has one.
+modules=(/usr/lib/sdfwb/libsdfwb_media.so:sdfwb_media_api)
+[ "$with_gui" = 1 ] && modules+=(/usr/lib/sdfwb/libsdfwb_workbench.so:sdfwb_workbench_main)
+for module in "${modules[@]}"; do
+  if run /usr/bin/python3 -c 'import ctypes, sys; path, name = sys.argv[1].split(":"); getattr(ctypes.CDLL(path), name)' \
+    "$module" > "$scratch/module.log" 2>&1; then
+    ok "${module%%:*} loads and exports ${module##*:}"
+  else
+    fail "${module%%:*} does not load: $(tail -3 "$scratch/module.log")"
+  fi
+done
+
 # The desktop entry: valid, opens .glsl files (text/x-glsl, declared by the package's MIME XML).
 if [ "$with_gui" != 1 ]; then
   echo "not checked: the desktop entry (this build has no workbench, SDFWB_BUILD_GUI=OFF)"

@@ -1,10 +1,15 @@
 #pragma once
 // Image files through OpenImageIO; the format follows the extension (.png, .jpg, .exr, ...).
+// OpenImageIO lives in libsdfwb_media.so, loaded the first time an image is read or written (a
+// command that touches no image never loads it); when it cannot be loaded these functions return
+// an error that says so.
 
 #include <core/Expected.h>
 #include <renderer/Image.h>
 
+#include <cctype>
 #include <filesystem>
+#include <string>
 
 namespace sdfwb::renderer {
 
@@ -17,7 +22,11 @@ Expected<void> writeImage(const std::filesystem::path& path, const Image& image)
 Expected<void> writeImage(const std::filesystem::path& path, const FloatImage& image);
 
 // True when the extension names a high-dynamic-range format (.exr, .hdr): render it in float.
-bool isHighDynamicRange(const std::filesystem::path& path);
+inline bool isHighDynamicRange(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return extension == ".exr" || extension == ".hdr";
+}
 
 // Draws `text` (lines split at '\n') in the lower-left corner over a darkened box, in DejaVu Sans
 // (fonts-dejavu-core): the name/author/license overlay of exports. Fails, leaving the image as it
@@ -30,7 +39,8 @@ Expected<FloatImage> readFloatImage(const std::filesystem::path& path);
 
 Expected<Image> readImage(const std::filesystem::path& path);
 
-// True when OpenImageIO can write files with this extension (".png").
-bool canWriteImageExtension(const std::string& extension);
+// True when OpenImageIO can write files with this extension (".png"); an error when the module
+// that holds OpenImageIO cannot be loaded.
+Expected<bool> canWriteImageExtension(const std::string& extension);
 
 } // namespace sdfwb::renderer

@@ -1,3 +1,6 @@
+// Image files through OpenImageIO: the image half of libsdfwb_media.so (see MediaApi.h).
+#include "MediaApi.h"
+
 #include <renderer/ImageIO.h>
 
 #include <core/TextFile.h>
@@ -12,7 +15,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace sdfwb::renderer {
+namespace sdfwb::renderer::media {
 namespace fs = std::filesystem;
 
 bool canWriteImageExtension(const std::string& extension) {
@@ -78,13 +81,7 @@ Expected<void> writeImage(const fs::path& path, const FloatImage& image) {
     Image quantised{image.width, image.height, std::vector<std::uint8_t>(image.rgba.size())};
     for (std::size_t i = 0; i < image.rgba.size(); ++i)
         quantised.rgba[i] = std::uint8_t(std::lround(std::clamp(image.rgba[i], 0.0f, 1.0f) * 255.0f));
-    return writeImage(path, quantised);
-}
-
-bool isHighDynamicRange(const fs::path& path) {
-    std::string extension = path.extension().string();
-    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return extension == ".exr" || extension == ".hdr";
+    return media::writeImage(path, quantised);
 }
 
 namespace {
@@ -176,4 +173,4 @@ Expected<Image> readImage(const fs::path& path) {
     return image;
 }
 
-} // namespace sdfwb::renderer
+} // namespace sdfwb::renderer::media

@@ -1,4 +1,5 @@
-#include <renderer/VideoWriter.h>
+// MP4 files through the FFmpeg libraries: the video half of libsdfwb_media.so (see MediaApi.h).
+#include "MediaApi.h"
 
 extern "C" {
 #include <libavcodec/avcodec.h>
@@ -9,7 +10,7 @@ extern "C" {
 
 #include <random>
 
-namespace sdfwb::renderer {
+namespace sdfwb::renderer::media {
 namespace fs = std::filesystem;
 
 namespace {
@@ -22,7 +23,8 @@ std::string ffmpegError(int code) {
 
 } // namespace
 
-struct VideoWriter::Impl {
+class H264Encoder final : public VideoEncoder {
+public:
     fs::path target;
     fs::path temporary;
     AVFormatContext* format = nullptr;
@@ -32,10 +34,10 @@ struct VideoWriter::Impl {
     AVPacket* packet = nullptr;
     SwsContext* scaler = nullptr;
     int sourceWidth = 0, sourceHeight = 0;
-    int frames = 0;
+    int frameCount = 0;
     bool finished = false;
 
-    ~Impl() {
+    ~H264Encoder() override {
         if (scaler) sws_freeContext(scaler);
         if (frame) av_frame_free(&frame);
         if (packet) av_packet_free(&packet);
@@ -68,17 +70,41 @@ struct VideoWriter::Impl {
             if (result < 0) return makeError(target.string() + ": write failed: " + ffmpegError(result));
         }
     }
+
+    Expected<void> addFrame(const Image& image) override {
+        if (image.width != sourceWidth || image.height != sourceHeight)
+            return makeError(target.string() + ": frame is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                             ", the video " + std::to_string(sourceWidth) + "x" + std::to_string(sourceHeight));
+        int result = av_frame_make_writable(frame);
+        if (result < 0) return makeError(target.string() + ": " + ffmpegError(result));
+        const std::uint8_t* source[1] = {image.rgba.data()};
+        const int stride[1] = {image.width * 4};
+        sws_scale(scaler, source, stride, 0, image.height, frame->data, frame->linesize);
+        frame->pts = frameCount++;
+        return encode(frame);
+    }
+
+    Expected<void> finish() override {
+        if (frameCount == 0) return makeError(target.string() + ": no frames to write");
+        if (auto ok = encode(nullptr); !ok) return ok;
+        int result = av_write_trailer(format);
+        if (result < 0) return makeError(target.string() + ": " + ffmpegError(result));
+        avio_closep(&format->pb);
+        std::error_code ec;
+        fs::rename(temporary, target, ec);
+        if (ec) return makeError(target.string() + ": cannot move the finished video into place: " + ec.message());
+        finished = true;
+        return {};
+    }
+
+    int frames() const override { return frameCount; }
 };
 
-VideoWriter::VideoWriter() : m_impl(std::make_unique<Impl>()) {}
-VideoWriter::~VideoWriter() = default;
-int VideoWriter::frames() const { return m_impl->frames; }
-
-Expected<std::unique_ptr<VideoWriter>> VideoWriter::open(const fs::path& path, int width, int height, int framesPerSecond) {
+Expected<std::unique_ptr<VideoEncoder>> openVideo(const fs::path& path, int width, int height, int framesPerSecond) {
     if (width < 2 || height < 2) return makeError(path.string() + ": video frames must be at least 2x2");
     if (framesPerSecond < 1 || framesPerSecond > 240) return makeError(path.string() + ": frame rate must be 1..240");
-    std::unique_ptr<VideoWriter> writer(new VideoWriter());
-    Impl& v = *writer->m_impl;
+    auto writer = std::make_unique<H264Encoder>();
+    H264Encoder& v = *writer;
     v.target = path;
     v.sourceWidth = width;
     v.sourceHeight = height;
@@ -123,35 +149,7 @@ Expected<std::unique_ptr<VideoWriter>> VideoWriter::open(const fs::path& path, i
     v.scaler = sws_getContext(width, height, AV_PIX_FMT_RGBA, v.codec->width, v.codec->height, AV_PIX_FMT_YUV420P, SWS_BICUBIC,
                               nullptr, nullptr, nullptr);
     if (!v.scaler) return makeError(path.string() + ": cannot set up colour conversion");
-    return writer;
+    return std::unique_ptr<VideoEncoder>(std::move(writer));
 }
 
-Expected<void> VideoWriter::addFrame(const Image& image) {
-    Impl& v = *m_impl;
-    if (image.width != v.sourceWidth || image.height != v.sourceHeight)
-        return makeError(v.target.string() + ": frame is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-                         ", the video " + std::to_string(v.sourceWidth) + "x" + std::to_string(v.sourceHeight));
-    int result = av_frame_make_writable(v.frame);
-    if (result < 0) return makeError(v.target.string() + ": " + ffmpegError(result));
-    const std::uint8_t* source[1] = {image.rgba.data()};
-    const int stride[1] = {image.width * 4};
-    sws_scale(v.scaler, source, stride, 0, image.height, v.frame->data, v.frame->linesize);
-    v.frame->pts = v.frames++;
-    return v.encode(v.frame);
-}
-
-Expected<void> VideoWriter::finish() {
-    Impl& v = *m_impl;
-    if (v.frames == 0) return makeError(v.target.string() + ": no frames to write");
-    if (auto ok = v.encode(nullptr); !ok) return ok;
-    int result = av_write_trailer(v.format);
-    if (result < 0) return makeError(v.target.string() + ": " + ffmpegError(result));
-    avio_closep(&v.format->pb);
-    std::error_code ec;
-    fs::rename(v.temporary, v.target, ec);
-    if (ec) return makeError(v.target.string() + ": cannot move the finished video into place: " + ec.message());
-    v.finished = true;
-    return {};
-}
-
-} // namespace sdfwb::renderer
+} // namespace sdfwb::renderer::media
