@@ -28,9 +28,11 @@ std::string eglErrorText() {
 
 // A hardware EGL device (not Mesa's software device), or EGL_NO_DEVICE_EXT.
 EGLDeviceEXT findHardwareDevice(const char* clientExtensions) {
-    if (!hasExtension(clientExtensions, "EGL_EXT_device_enumeration") ||
-        !hasExtension(clientExtensions, "EGL_EXT_platform_device"))
-        return EGL_NO_DEVICE_EXT;
+    // NVIDIA's EGL lists EGL_EXT_device_base, which includes device enumeration, and not
+    // EGL_EXT_device_enumeration itself (seen with driver 580 on an H100).
+    const bool enumerates =
+        hasExtension(clientExtensions, "EGL_EXT_device_enumeration") || hasExtension(clientExtensions, "EGL_EXT_device_base");
+    if (!enumerates || !hasExtension(clientExtensions, "EGL_EXT_platform_device")) return EGL_NO_DEVICE_EXT;
     EGLint count = 0;
     if (!eglQueryDevicesEXT(0, nullptr, &count) || count <= 0) return EGL_NO_DEVICE_EXT;
     std::vector<EGLDeviceEXT> devices(static_cast<std::size_t>(count));
