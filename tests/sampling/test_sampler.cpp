@@ -79,6 +79,23 @@ TEST(SamplingBindings, CppConstantsMatchTheGlslFile) {
     EXPECT_NE(text.str().find("SDFWB_BINDING_BAD_ROWS " + std::to_string(renderer::kBindingBadRows)), std::string::npos);
 }
 
+// The host's count, used when the GPU's counter reads back an impossible number: a row is bad when
+// any of its values is NaN or infinite, in either layout; a missing array is not looked at.
+TEST(SampleCompute, HostCountOfNonFiniteRowsLooksAtEveryValueOfARow) {
+    const float nan = std::nanf(""), inf = INFINITY;
+    std::vector<float> positions = {0, 0, 0, 1, 1, nan, 2, 2, 2, 3, 3, 3};
+    std::vector<float> distances = {0, 1, inf, 3};
+    std::vector<float> gradients = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, -inf, 1};
+    renderer::MappedRows rows{positions.data(), distances.data(), gradients.data(), 0};
+    EXPECT_EQ(renderer::countNonFiniteRows(rows, 4), 3u); // rows 1 (position), 2 (distance), 3 (gradient)
+    EXPECT_EQ(renderer::countNonFiniteRows(rows, 1), 0u);
+    renderer::MappedRows distancesOnly{nullptr, distances.data(), nullptr, 0};
+    EXPECT_EQ(renderer::countNonFiniteRows(distancesOnly, 4), 1u);
+    std::vector<float> interleaved = {0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 1, 0, 0, nan};
+    renderer::MappedRows packed{nullptr, nullptr, nullptr, 0, interleaved.data()};
+    EXPECT_EQ(renderer::countNonFiniteRows(packed, 2), 1u);
+}
+
 TEST_F(SamplerTest, EveryPatternMatchesTheSpheresClosedForm) {
     for (const std::string& pattern : sampling::builtinPatterns()) {
         sampling::SampleSet samples;

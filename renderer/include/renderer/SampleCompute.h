@@ -42,6 +42,10 @@ struct MappedRows {
     const float* rows = nullptr; // interleaved layout: x y z distance gx gy gz per row
 };
 
+// Rows with a NaN or infinity among `count` rows (null arrays are skipped), counted on the host:
+// what the shader's counter gives, for when it cannot be trusted.
+std::uint32_t countNonFiniteRows(const MappedRows& rows, std::uint32_t count);
+
 // How runMapped() leaves a chunk's rows: three arrays, or one array of 7-float rows written so by
 // the shader (what .ply stores, so the host copies it to the file as it is).
 enum class RowLayout { Separate, Interleaved };
