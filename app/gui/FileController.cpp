@@ -58,15 +58,7 @@ FileController::FileController(QWidget* window, widgets::GlslEditor* editor, Sdf
 }
 
 bool FileController::load(const QString& path) {
-    if (meshfield::isMeshPath(path.toStdString())) {
-        // Loading a mesh's bytes as text would put them in the editor and let Save overwrite the mesh.
-        const std::string why = path.toStdString() +
-                                ": a triangle mesh; the editor opens GLSL. The command line and Python take meshes as SDFs "
-                                "(sdfwb --batch render --sdf FILE, sdfwb.sample(FILE, ...); see docs/mesh-sdf.md)";
-        emit message(QString::fromStdString(why));
-        log::error("app", why);
-        return false;
-    }
+    if (meshfield::isMeshPath(path.toStdString())) return loadMesh(path);
     auto text = readTextFile(path.toStdString());
     if (!text) {
         emit message(QString::fromStdString(text.error().message));
@@ -86,6 +78,43 @@ bool FileController::load(const QString& path) {
     watch(canonical);
     addRecent(canonical);
     emit pathChanged(canonical);
+    return true;
+}
+
+bool FileController::loadMesh(const QString& path) {
+    // A mesh that leaves the tracer's box [-1, 1]^3 opens scaled into it (unit-cube); the jobs
+    // started from the document get the same options, so they run on the field the viewport shows.
+    auto plain = meshfield::loadMeshField(path.toStdString(), {});
+    if (!plain) {
+        emit message(QString::fromStdString(plain.error().message));
+        log::error("app", plain.error().message);
+        return false;
+    }
+    const meshfield::Box& box = (*plain)->bounds;
+    const bool inside =
+        box.lo.x >= -1.0 && box.lo.y >= -1.0 && box.lo.z >= -1.0 && box.hi.x <= 1.0 && box.hi.y <= 1.0 && box.hi.z <= 1.0;
+    meshfield::MeshFieldOptions options;
+    options.normalize = inside ? meshfield::Normalization::None : meshfield::Normalization::UnitCube;
+    auto field = inside ? plain : meshfield::loadMeshField(path.toStdString(), options);
+    if (!field) {
+        emit message(QString::fromStdString(field.error().message));
+        return false;
+    }
+    const QString canonical = QFileInfo(path).absoluteFilePath();
+    if (canonical != m_document->path()) m_document->setEntry(QString());
+    m_document->setPath(canonical);
+    m_document->setMeshOptions(meshfield::signName(options.sign), meshfield::normalizationName(options.normalize));
+    {
+        const QSignalBlocker blocker(m_editor);
+        m_editor->setText(QString::fromStdString((*field)->glslSource()));
+        m_editor->setModified(false);
+    }
+    m_document->checkNow(m_editor->text());
+    watch(canonical);
+    addRecent(canonical);
+    emit pathChanged(canonical);
+    log::info("app", (*field)->summary());
+    emit message(QString::fromStdString((*field)->summary()));
     return true;
 }
 
@@ -118,7 +147,8 @@ QString FileController::suggestedSavePath() const {
 }
 
 bool FileController::save() {
-    if (m_document->path().isEmpty()) return false; // the caller asks for a name (save as)
+    if (m_document->path().isEmpty()) return false;              // the caller asks for a name (save as)
+    if (m_document->isMesh()) return saveAs(m_document->path()); // refused there, with the reason
     if (isShipped(m_document->path())) {
         emit message(tr("%1 ships with sdfwb and is read-only: save your version under a new name")
                          .arg(QFileInfo(m_document->path()).fileName()));
@@ -128,6 +158,15 @@ bool FileController::save() {
 }
 
 bool FileController::saveAs(const QString& path) {
+    if (m_document->isMesh() || meshfield::isMeshPath(path.toStdString())) {
+        // Text over a mesh calls sdfwb_meshSdf, which only exists with that mesh loaded; and text
+        // must never replace a mesh file.
+        emit message(tr("Not saved: the text over a mesh runs only with its mesh. Use it as it is, or on the command line "
+                        "(sdfwb --batch ... --sdf %1)")
+                         .arg(QFileInfo(m_document->path()).fileName()));
+        log::warning("app", "refused to save the text over a mesh: " + path.toStdString());
+        return false;
+    }
     if (isShipped(path)) {
         emit message(tr("Not saved: %1 is in the shipped dataset, which is read-only; choose a folder of your own").arg(path));
         log::warning("app", "refused to write into the shipped dataset: " + path.toStdString());
@@ -214,7 +253,9 @@ bool FileController::confirmClose() {
 }
 
 void FileController::reloadAll() {
-    if (!m_document->path().isEmpty() && !m_editor->isModified()) {
+    if (m_document->isMesh() && !m_editor->isModified()) {
+        loadMesh(m_document->path());
+    } else if (!m_document->path().isEmpty() && !m_editor->isModified()) {
         auto text = readTextFile(m_document->path().toStdString());
         if (text) {
             const QSignalBlocker blocker(m_editor);
@@ -237,6 +278,10 @@ void FileController::fileChangedOnDisk(const QString& path) {
     // Editors that save by rename replace the file: watch the new one.
     QTimer::singleShot(50, this, [this, path] {
         watch(path);
+        if (m_document->isMesh()) { // a mesh rewritten on disk: its field again, unless the text over it was edited
+            if (!m_editor->isModified() && loadMesh(path)) emit message(tr("Reloaded %1 (changed on disk)").arg(path));
+            return;
+        }
         auto text = readTextFile(path.toStdString());
         if (!text || QString::fromStdString(*text) == m_editor->text()) return;
         if (m_editor->isModified() && m_prompt(tr("%1 changed on disk. Reload it and lose your edits?").arg(path)) != Answer::Yes)

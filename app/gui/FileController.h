@@ -34,6 +34,8 @@ public:
     void setAutosaveInterval(int milliseconds) { m_autosave.setInterval(milliseconds); }
 
     // Loads `path` into the editor (no prompt); false with a message in the status when unreadable.
+    // A .glsl file into the editor, or a triangle mesh (.obj .ply .stl .off .glb ...) as the
+    // document's field, with its generated text (loadMesh).
     bool load(const QString& path);
     void newFromTemplate();
     bool save();
@@ -64,6 +66,7 @@ signals:
     void message(const QString& text);
 
 private:
+    bool loadMesh(const QString& path);
     QString documentPath() const;
     void watch(const QString& path);
     void fileChangedOnDisk(const QString& path);

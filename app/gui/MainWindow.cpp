@@ -412,6 +412,10 @@ QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWid
 bool MainWindow::openFile(const QString& path) { return m_files->load(path); }
 
 void MainWindow::saveAsWithDialog() {
+    if (m_document->isMesh()) { // refused without asking for a name: the message says why
+        m_files->saveAs(m_document->path());
+        return;
+    }
     const QString suggested = m_files->suggestedSavePath();
     const QString path = m_chooseSavePath ? m_chooseSavePath(suggested)
                                           : QFileDialog::getSaveFileName(this, tr("Save SDF"), suggested, tr("GLSL (*.glsl)"));
@@ -467,9 +471,17 @@ void MainWindow::createMenus() {
         if (!path.isEmpty()) openFile(path);
     });
     open->setShortcut(QKeySequence::Open);
+    // A triangle mesh as the SDF (meshfield/): traced, sliced, sampled and audited like GLSL.
+    file->addAction(tr("Open &mesh..."), this, [this] {
+        if (m_editor->isModified() && !m_files->confirmClose()) return;
+        QString path =
+            QFileDialog::getOpenFileName(this, tr("Open a triangle mesh as an SDF"), QString(),
+                                         tr("Meshes (*.obj *.ply *.stl *.off *.glb *.gltf *.fbx *.dae *.3ds);;All files (*)"));
+        if (!path.isEmpty()) openFile(path);
+    });
     m_recentMenu = file->addMenu(tr("Open &recent"));
     QAction* save = file->addAction(tr("&Save"), this, [this] {
-        if (!m_files->save()) saveAsWithDialog();
+        if (!m_files->save() && !m_document->isMesh()) saveAsWithDialog(); // a mesh's refusal says why
     });
     save->setShortcut(QKeySequence::Save);
     QAction* saveAs = file->addAction(tr("Save &as..."), this, &MainWindow::saveAsWithDialog);
@@ -740,7 +752,10 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 void MainWindow::updateTitle() {
     QString name = m_document->path().isEmpty() ? tr("untitled") : m_document->path();
     const QString shipped =
-        FileController::isShipped(m_document->path()) ? tr(" [shipped, read-only: Save asks for a new name]") : QString();
+        m_document->isMesh()
+            ? tr(" [mesh: sign %1, normalize %2; not saved]").arg(m_document->meshSign(), m_document->meshNormalize())
+        : FileController::isShipped(m_document->path()) ? tr(" [shipped, read-only: Save asks for a new name]")
+                                                        : QString();
     setWindowTitle(QString("%1%2%3 - sdfwb").arg(name, m_editor->isModified() ? "*" : "", shipped));
 }
 

@@ -1,6 +1,7 @@
 #include "SdfDocument.h"
 
 #include <core/Paths.h>
+#include <meshfield/MeshField.h>
 #include <renderer/SdfRenderer.h>
 #include <shaders/GlslChecker.h>
 #include <shaders/LoopLimits.h>
@@ -26,8 +27,43 @@ jobs::SdfInput SdfDocument::input() const {
                          shaders::valuesOf(m_parameterValues)};
     input.channels.assign(m_channels.begin(), m_channels.end());
     while (!input.channels.empty() && input.channels.back().empty()) input.channels.pop_back();
+    if (isMesh()) {
+        input.sign = m_meshSign.toStdString();
+        input.normalize = m_meshNormalize.toStdString();
+    }
     return input;
 }
+
+bool SdfDocument::isMesh() const { return !m_path.isEmpty() && meshfield::isMeshPath(m_path.toStdString()); }
+
+namespace {
+
+// The document's text over its mesh: what the jobs' openSdf builds from the same input.
+shaders::PreparedSdf prepareOverMesh(const std::string& source, const std::string& path, const std::string& entry,
+                                     const std::string& sign, const std::string& normalize) {
+    auto failed = [&](const std::string& message) {
+        shaders::PreparedSdf prepared;
+        prepared.source.map.files.push_back({path, ""});
+        prepared.diagnostics.push_back({path, 0, 0, shaders::Severity::Error, message});
+        return prepared;
+    };
+    meshfield::MeshFieldOptions options;
+    if (!sign.empty()) {
+        auto method = meshfield::parseSign(sign);
+        if (!method) return failed(method.error().message);
+        options.sign = *method;
+    }
+    if (!normalize.empty()) {
+        auto normalization = meshfield::parseNormalization(normalize);
+        if (!normalization) return failed(normalization.error().message);
+        options.normalize = *normalization;
+    }
+    auto field = meshfield::loadMeshField(path, options); // cached: a re-check does not rebuild it
+    if (!field) return failed(field.error().message);
+    return shaders::prepareMeshSdf(std::move(*field), path, source, entry);
+}
+
+} // namespace
 
 void SdfDocument::setChannel(int channel, const QString& path) {
     if (channel >= 0 && channel < shaders::kShadertoyChannels) m_channels[std::size_t(channel)] = path.toStdString();
@@ -57,48 +93,52 @@ void SdfDocument::startCheck(const QString& text) {
     std::string path = m_path.toStdString();
     std::string entry = m_entry.toStdString();
     const auto channels = m_channels;
+    const bool mesh = isMesh();
+    std::string sign = m_meshSign.toStdString(), normalize = m_meshNormalize.toStdString();
     // glslang checks the variant the viewport will compile (shading, AO, plane, markers, ...).
     const shaders::TracerFeatures features =
         renderer::tracerFeatures(m_viewport->shading(), m_viewport->trace(), m_viewport->plane());
     QPointer<SdfDocument> self(this);
-    QThreadPool::globalInstance()->start(
-        [self, generation, source = std::move(source), path = std::move(path), entry = std::move(entry), features, channels] {
-            shaders::IncludeOptions options;
-            options.libraryRoots = {paths::shaderLibraryRoot(), paths::datasetRoot()};
-            shaders::PreparedSdf prepared = shaders::prepareSdf(source, path.empty() ? "<editor>" : path, path, options, entry);
-            prepared.channels = channels;
-            std::vector<shaders::Diagnostic> diagnostics = prepared.diagnostics;
-            if (prepared.ok()) {
-                auto composed = shaders::composeTracer(prepared, features);
-                if (composed) {
-                    auto found = shaders::checkWithGlslang(*composed);
-                    diagnostics.insert(diagnostics.end(), found.begin(), found.end());
-                    // Loops the viewport's driver would cut short (llvmpipe: 65535 iterations).
-                    if (!shaders::hasErrors(found)) {
-                        auto loops = shaders::findLongLoops(prepared, *composed, shaders::driverLoopLimit(), "Mesa's llvmpipe");
-                        diagnostics.insert(diagnostics.end(), loops.begin(), loops.end());
-                    }
+    QThreadPool::globalInstance()->start([self, generation, source = std::move(source), path = std::move(path),
+                                          entry = std::move(entry), features, channels, mesh, sign = std::move(sign),
+                                          normalize = std::move(normalize)] {
+        shaders::IncludeOptions options;
+        options.libraryRoots = {paths::shaderLibraryRoot(), paths::datasetRoot()};
+        shaders::PreparedSdf prepared = mesh
+                                            ? prepareOverMesh(source, path, entry, sign, normalize)
+                                            : shaders::prepareSdf(source, path.empty() ? "<editor>" : path, path, options, entry);
+        prepared.channels = channels;
+        std::vector<shaders::Diagnostic> diagnostics = prepared.diagnostics;
+        if (prepared.ok()) {
+            auto composed = shaders::composeTracer(prepared, features);
+            if (composed) {
+                auto found = shaders::checkWithGlslang(*composed);
+                diagnostics.insert(diagnostics.end(), found.begin(), found.end());
+                // Loops the viewport's driver would cut short (llvmpipe: 65535 iterations).
+                if (!shaders::hasErrors(found)) {
+                    auto loops = shaders::findLongLoops(prepared, *composed, shaders::driverLoopLimit(), "Mesa's llvmpipe");
+                    diagnostics.insert(diagnostics.end(), loops.begin(), loops.end());
                 }
             }
-            QMetaObject::invokeMethod(
-                QCoreApplication::instance(),
-                [self, generation, prepared = std::move(prepared), diagnostics = std::move(diagnostics)]() mutable {
-                    if (self) self->finishCheck(generation, std::move(prepared), std::move(diagnostics));
-                },
-                Qt::QueuedConnection);
-            // Autocompletion entries come second: they are not on the path to the diagnostics.
-            QStringList signatures;
-            for (const std::string& signature : shaders::functionSignatures(source))
-                signatures << QString::fromStdString(signature);
-            QMetaObject::invokeMethod(
-                QCoreApplication::instance(),
-                [self, generation, signatures = std::move(signatures)]() mutable {
-                    if (!self || generation != self->m_generation) return;
-                    self->m_fileSignatures = std::move(signatures);
-                    emit self->signaturesChanged(self->m_fileSignatures);
-                },
-                Qt::QueuedConnection);
-        });
+        }
+        QMetaObject::invokeMethod(
+            QCoreApplication::instance(),
+            [self, generation, prepared = std::move(prepared), diagnostics = std::move(diagnostics)]() mutable {
+                if (self) self->finishCheck(generation, std::move(prepared), std::move(diagnostics));
+            },
+            Qt::QueuedConnection);
+        // Autocompletion entries come second: they are not on the path to the diagnostics.
+        QStringList signatures;
+        for (const std::string& signature : shaders::functionSignatures(source)) signatures << QString::fromStdString(signature);
+        QMetaObject::invokeMethod(
+            QCoreApplication::instance(),
+            [self, generation, signatures = std::move(signatures)]() mutable {
+                if (!self || generation != self->m_generation) return;
+                self->m_fileSignatures = std::move(signatures);
+                emit self->signaturesChanged(self->m_fileSignatures);
+            },
+            Qt::QueuedConnection);
+    });
 }
 
 void SdfDocument::finishCheck(std::uint64_t generation, shaders::PreparedSdf prepared,

@@ -37,6 +37,16 @@ public:
         if (path != m_path) m_goodText.clear();
         m_path = path;
     }
+    // A triangle mesh as the document's file (File > Open mesh): the text is GLSL over the mesh's
+    // field sdfwb_meshSdf(p) (meshfield/), checked and traced with the mesh and passed to jobs with
+    // the same sign and normalisation ("winding", "unit-cube", ...; empty: the defaults).
+    bool isMesh() const;
+    void setMeshOptions(const QString& sign, const QString& normalize) {
+        m_meshSign = sign;
+        m_meshNormalize = normalize;
+    }
+    const QString& meshSign() const { return m_meshSign; }
+    const QString& meshNormalize() const { return m_meshNormalize; }
 
     // The editor's latest text, and the last text that compiled and went to the viewport.
     const QString& text() const { return m_text; }
@@ -91,6 +101,7 @@ private:
     QString m_goodText;
     shaders::PreparedSdf m_goodSource;
     QString m_entry;
+    QString m_meshSign, m_meshNormalize;
     std::array<std::string, shaders::kShadertoyChannels> m_channels;
     shaders::SdfSignature m_signature;
     QTimer m_debounce;

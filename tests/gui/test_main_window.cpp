@@ -1100,6 +1100,68 @@ TEST(Files, RecoversAfterTheProcessIsKilled) {
     EXPECT_TRUE(app::FileController::recoveryFiles().isEmpty()) << "a clean close (discarding) removes the recovery file";
 }
 
+// File > Open mesh: a triangle mesh is the document's field. A 6-unit cube far outside the box
+// opens scaled into it (unit-cube); the viewport traces it; the plane's readouts, computed by a
+// child job from the document's input, see the same scaled field; text over the mesh (an offset
+// shell) reaches the viewport and the jobs; and nothing ever writes over the mesh.
+TEST(Files, OpenMeshTracesItAndItsJobsSeeTheSameField) {
+    QByteArray cube =
+        "v 2 2 2\nv 8 2 2\nv 8 8 2\nv 2 8 2\nv 2 2 8\nv 8 2 8\nv 8 8 8\nv 2 8 8\n"
+        "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n";
+    const QString path = writeScratch("far_cube.obj", cube);
+    app::MainWindow window;
+    window.resize(900, 560); // llvmpipe traces a mesh slowly (docs/mesh-sdf.md): a small viewport
+    window.show();
+    window.plane()->setExecutable(SDFWB_BINARY);
+    bool applied = false;
+    QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
+    int readouts = 0;
+    QObject::connect(window.plane(), &app::PlaneController::readoutUpdated, [&] { ++readouts; });
+    ASSERT_TRUE(window.openFile(path));
+    ASSERT_TRUE(waitFor([&] { return applied; })) << "the mesh never reached the viewport";
+    EXPECT_TRUE(window.document()->isMesh());
+    EXPECT_EQ(window.document()->meshSign(), "winding");
+    EXPECT_EQ(window.document()->meshNormalize(), "unit-cube");
+    EXPECT_TRUE(window.windowTitle().contains("mesh: sign winding, normalize unit-cube")) << window.windowTitle().toStdString();
+    EXPECT_TRUE(window.editor()->text().contains("sdfwb_meshSdf(p)"));
+    const jobs::SdfInput input = window.document()->input();
+    EXPECT_EQ(input.sdf, QFileInfo(path).absoluteFilePath().toStdString());
+    EXPECT_EQ(input.normalize, "unit-cube");
+    // At whatever resolution the viewport settles on for this field on this machine.
+    ASSERT_TRUE(waitFor([&] { return window.viewport()->lastFrameMilliseconds() > 0.0 && !window.viewport()->isInteracting(); }));
+    const QImage frame = frameOf(window);
+    const double share = double(foreground(frame, kBackground)) / double(frame.width() * frame.height());
+    EXPECT_GT(share, 0.05) << "the scaled cube fills part of the viewport";
+    EXPECT_LT(share, 0.9);
+    frame.save(QDir::temp().filePath("sdfwb-gui-mesh.png"));
+
+    // The plane through the middle: the scaled cube is [-1, 1]^3, so the field's minimum there is
+    // -1 at the centre (unscaled, the plane would lie outside the cube, all positive).
+    window.planePanel()->findChild<QPushButton*>("axis_Z")->click();
+    ASSERT_TRUE(waitFor([&] { return readouts > 0; }, 60000))
+        << window.planePanel()->findChild<QLabel*>("readouts")->text().toStdString();
+    EXPECT_NEAR(window.planePanel()->readout().minimum, -1.0f, 0.03f);
+    EXPECT_EQ(window.planePanel()->readout().nanCount, 0u);
+
+    // Text over the mesh: an offset shell 0.25 thicker, in the viewport and in the next readout.
+    applied = false;
+    const int before = readouts;
+    window.editor()->setText("float sdf(vec3 p) { return sdfwb_meshSdf(p) - 0.25; }\n");
+    window.document()->checkNow(window.editor()->text());
+    ASSERT_TRUE(waitFor([&] { return applied; })) << "the offset shell did not compile";
+    ASSERT_TRUE(waitFor([&] { return readouts > before; }, 60000));
+    EXPECT_NEAR(window.planePanel()->readout().minimum, -1.25f, 0.03f);
+
+    // Save and Save As write nothing: not over the mesh, and not the text elsewhere.
+    EXPECT_FALSE(window.files()->save());
+    EXPECT_EQ(readAll(path), cube);
+    const QString elsewhere = QDir::temp().filePath("sdfwb-gui-files/far_cube_text.glsl");
+    QFile::remove(elsewhere);
+    EXPECT_FALSE(window.files()->saveAs(elsewhere));
+    EXPECT_FALSE(QFile::exists(elsewhere));
+    window.files()->setPrompt([](const QString&) { return app::FileController::Answer::No; });
+}
+
 TEST(Files, ReloadsWhenTheFileChangesOnDiskAndAsksWhenEdited) {
     QString path = writeScratch("watched.glsl", "float sdf(vec3 p) { return length(p) - 0.5; }\n");
     app::MainWindow window;
