@@ -167,7 +167,7 @@ for name, closed in files:
     entry = {"mesh": name, "triangles": len(faces)}
     for m in METHODS:
         entry[m] = best_of(lambda: sdfwb.evaluate(path, speed, gradient=False, sign=m, normalize="unit-cube"))
-    # Marching samplers evaluate the field many times in one shader invocation (see docs below).
+    # Near on the mesh's own field: points drawn on the triangles (see docs below).
     marched = sdfwb.sample(path, "near", 20000, normalize="unit-cube")
     entry["near_bad"] = marched["bad_rows"] / 20000
     tensor = o3d.core.Tensor(speed)
@@ -244,16 +244,19 @@ with open(OUT, "w") as out:
     out.write("\n## What runs out of budget on llvmpipe\n\nllvmpipe (Mesa's CPU driver, what this machine has) ends "
               "a shader invocation's loops after 65535 iterations in all, counted across every call the invocation "
               "makes. A mesh SDF walks its hierarchy in loops (a nearest-triangle walk and a winding-number walk per "
-              "call), so work that evaluates the field many times in one invocation runs out: the near and surface "
-              "samplers (rays marched to the surface), the tracer's long marches (grazing rays) and the cutting "
-              "plane's Lipschitz overlay (7 calls a pixel). A walk that runs out returns NaN, so such rows are bad rows "
-              "and such pixels magenta, never a wrong value. Point evaluation (`evaluate`, `--batch eval`), the rand, "
-              "grid, jitter and image samplers, the audit's point passes and the mesher evaluate once per invocation "
-              "(7 times with a gradient) and stay within it. Bad rows of the near sampler (20000 rows, gradient on):\n\n"
+              "call), so work that evaluates the field many times in one invocation runs out: the tracer's long "
+              "marches (grazing rays), the cutting plane's Lipschitz overlay (7 calls a pixel), and the near and "
+              "surface samplers over text that changes a mesh's field (an offset shell), which march rays to its zero "
+              "set. A walk that runs out returns NaN, so such rows are bad rows and such pixels magenta, never a wrong "
+              "value. On a mesh's own field the near and surface samplers do not march: they draw points uniform by "
+              "area on the triangles (as mesh_to_sdf and DeepSDF do) and evaluate there. Point evaluation (`evaluate`, "
+              "`--batch eval`), the rand, grid, jitter and image samplers, the audit's point passes and the mesher "
+              "evaluate once per invocation (7 times with a gradient) and stay within it. Bad rows of the near sampler "
+              "on each mesh's own field (20000 rows, gradient on):\n\n"
               "| mesh | triangles | near: bad rows |\n|---|---|---|\n")
     for r in speed_rows:
         out.write(f"| {r['mesh']} | {r['triangles']} | {100 * r['near_bad']:.1f} % |\n")
-    out.write("\nA GPU driver has no such limit; no GPU was lent to this run.\n")
+    out.write("\nA GPU driver has no such limit (docs/gpu.md has a run on an NVIDIA H200).\n")
     if speed_rows:
         best_o3d = [min(r[c] for c in cols if c.startswith("open3d")) for r in speed_rows]
         ratios = [r["winding"] / b for r, b in zip(speed_rows, best_o3d)]

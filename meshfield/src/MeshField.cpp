@@ -572,6 +572,21 @@ Expected<std::shared_ptr<MeshField>> buildField(TriangleMesh mesh, const std::st
             out[2] = v.z;
             out[3] = 0.0f;
         }
+    // The first corner's w: the share of the mesh's area in this triangle and those before it (leaf
+    // order; 1 for the last), what sdfwb_meshSurfacePoint draws triangles by.
+    {
+        std::vector<double> cumulative(count);
+        double total = 0.0;
+        for (std::size_t s = 0; s < count; ++s) {
+            const float* t = field->triangles.data() + s * kTriangleFloats;
+            const dvec3 a(t[0], t[1], t[2]), b(t[4], t[5], t[6]), c(t[8], t[9], t[10]);
+            total += 0.5 * glm::length(glm::cross(b - a, c - a));
+            cumulative[s] = total;
+        }
+        for (std::size_t s = 0; s < count; ++s)
+            field->triangles[s * kTriangleFloats + 3] =
+                s + 1 == count ? 1.0f : float(total > 0.0 ? cumulative[s] / total : double(s + 1) / double(count));
+    }
 
     // Dipoles, bottom up (children come after their parent).
     const std::size_t nodeCount = builder.nodes.size();

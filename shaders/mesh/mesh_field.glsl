@@ -2,12 +2,14 @@
 // Composed before the SDF's text when the SDF is a mesh file; the file's text calls sdfwb_meshSdf.
 //   SDFWB_MESH_NODES_BINDING        the hierarchy: four vec4 per node
 //                                   (box min + first/left, box max + count, dipole centre + radius, dipole)
-//   SDFWB_MESH_TRIANGLES_BINDING    three vec4 per triangle (corners), in leaf order
+//   SDFWB_MESH_TRIANGLES_BINDING    three vec4 per triangle (corners), in leaf order; the first
+//                                   corner's w is the cumulative share of the area (the last is 1)
 //   SDFWB_MESH_PSEUDONORMALS_BINDING (pseudonormal sign only) seven vec4 per triangle:
 //                                   face, edges ab bc ca, vertices a b c
 //   SDFWB_MESH_STACK                entries of the traversal stack (the hierarchy's depth + 2)
 //   SDFWB_MESH_BETA                 winding numbers: a cluster farther than beta radii is a dipole
 //   SDFWB_MESH_SIGN_WINDING | SDFWB_MESH_SIGN_PARITY | SDFWB_MESH_SIGN_PSEUDONORMAL
+//   SDFWB_MESH_SURFACE              the SDF is the mesh's own field: samplers may use sdfwb_meshSurfacePoint
 layout(std430, binding = SDFWB_MESH_NODES_BINDING) readonly buffer sdfwb_MeshNodes { vec4 sdfwb_meshNodes[]; };
 layout(std430, binding = SDFWB_MESH_TRIANGLES_BINDING) readonly buffer sdfwb_MeshTriangles { vec4 sdfwb_meshTriangles[]; };
 #ifdef SDFWB_MESH_SIGN_PSEUDONORMAL
@@ -233,4 +235,28 @@ float sdfwb_meshSdf(vec3 p) {
     float d = sqrt(sdfwb_meshNearest(p, triangle, feature, closest));
     float inside = sdfwb_meshInside(p, triangle, feature, closest);
     return isnan(inside) ? inside : (inside > 0.5 ? -d : d);
+}
+
+// A point uniform by area on the mesh, and its triangle's unit normal (zero for a degenerate one),
+// from three uniform numbers in [0, 1): u.x picks the triangle (binary search of the cumulative
+// areas), u.yz the point in it. The surface and near samplers take their points from here when
+// the SDF is the mesh's own field (SDFWB_MESH_SURFACE): exact, and no ray to march.
+void sdfwb_meshSurfacePoint(vec3 u, out vec3 point, out vec3 normal) {
+    uint lo = 0u;
+    uint hi = uint(sdfwb_meshTriangles.length()) / 3u - 1u;
+    while (lo < hi) {
+        uint mid = (lo + hi) / 2u;
+        if (sdfwb_meshTriangles[3u * mid].w <= u.x)
+            lo = mid + 1u;
+        else
+            hi = mid;
+    }
+    vec3 a = sdfwb_meshTriangles[3u * lo].xyz;
+    vec3 b = sdfwb_meshTriangles[3u * lo + 1u].xyz;
+    vec3 c = sdfwb_meshTriangles[3u * lo + 2u].xyz;
+    float s = sqrt(u.y);
+    point = a * (1.0 - s) + b * (s * (1.0 - u.z)) + c * (s * u.z);
+    vec3 n = cross(b - a, c - a);
+    float length2 = dot(n, n);
+    normal = length2 > 0.0 ? n * inversesqrt(length2) : vec3(0.0);
 }

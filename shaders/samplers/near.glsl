@@ -1,5 +1,5 @@
 // near: surface points (as in the surface pattern) moved along the normalised gradient by a
-// Gaussian distance. Default: mean 0, standard deviation 0.005, clamped to [-0.3, 0.3].
+// Gaussian distance (on a mesh's own field: along the face normal of a point drawn on the mesh). Default: mean 0, standard deviation 0.005, clamped to [-0.3, 0.3].
 // A mixture (--near-widths W:P,...; up to 4 components) is read from sdfwb_parameters:
 // [0] = standard deviations, [1] = cumulative weights (the last is 1; a zero deviation ends the
 // list), [2].x = truncation in deviations (0: none; a draw beyond it is drawn again, so the
@@ -19,6 +19,13 @@ float sdfwb_nearOffset(uint index) {
 }
 
 bool samplePosition(uint index, out vec3 position) {
+#ifdef SDFWB_MESH_SURFACE
+    // A mesh's own field: a point uniform by area on its triangles, moved along its face's normal.
+    vec3 point, normal;
+    sdfwb_meshSurfacePoint(sdfwb_random4(index, 0u).xyz, point, normal);
+    position = point + sdfwb_nearOffset(index) * normal;
+    return true;
+#else
     vec3 hit;
     for (uint attempt = 0u; attempt < 100u; ++attempt) {
         if (!sdfwb_traceRandomRay(index, attempt, hit)) continue;
@@ -29,4 +36,5 @@ bool samplePosition(uint index, out vec3 position) {
         return true;
     }
     return false;
+#endif
 }

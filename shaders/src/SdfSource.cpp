@@ -352,7 +352,9 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
 
 PreparedSdf prepareMeshSdf(std::shared_ptr<const meshfield::MeshField> mesh, const std::filesystem::path& path,
                            const std::string& text, const std::string& entry) {
-    PreparedSdf prepared = prepareSdf(text.empty() ? mesh->glslSource() : text, path.string(), path, IncludeOptions{}, entry);
+    const std::string generated = mesh->glslSource();
+    PreparedSdf prepared = prepareSdf(text.empty() ? generated : text, path.string(), path, IncludeOptions{}, entry);
+    prepared.meshIsTheField = (text.empty() || text == generated) && entry.empty();
     prepared.mesh = std::move(mesh);
     return prepared;
 }

@@ -82,6 +82,7 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
         all["SDFWB_MESH_TRIANGLES_BINDING"] = std::to_string(kMeshTrianglesBinding);
         all["SDFWB_MESH_PSEUDONORMALS_BINDING"] = std::to_string(kMeshPseudonormalsBinding);
         all["SDFWB_MESH_STACK"] = std::to_string(sdf.mesh->depth + 2);
+        if (sdf.meshIsTheField) all["SDFWB_MESH_SURFACE"] = "1";
         char beta[32];
         std::snprintf(beta, sizeof beta, "%.6f", sdf.mesh->options.beta);
         all["SDFWB_MESH_BETA"] = beta;

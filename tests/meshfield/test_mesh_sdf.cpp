@@ -164,7 +164,8 @@ TEST_F(MeshSdfTest, AMeshFileIsAnSdfForEveryJobAndMeshOptionsAreRefusedElsewhere
 }
 
 TEST_F(MeshSdfTest, MarchingSamplersGiveTheFieldOrAReportedBadRowNeverAWrongValue) {
-    // The near sampler marches to the surface, evaluating the field many times in one shader
+    // Over text of its own (here the mesh's field written out by hand, so not the generated text),
+    // the near sampler marches to the surface, evaluating the field many times in one shader
     // invocation; on llvmpipe the walks can run out of its loop budget. A walk that does returns
     // NaN (a bad row), so every finite row must be the field's value at its position.
     const meshfield::TriangleMesh mesh = testing::torusMesh(0.6f, 0.25f, 48, 16);
@@ -173,7 +174,8 @@ TEST_F(MeshSdfTest, MarchingSamplersGiveTheFieldOrAReportedBadRowNeverAWrongValu
     renderer::SampleCompute compute;
     auto sampler = sampling::findSampler("near", {});
     ASSERT_TRUE(sampler.hasValue());
-    auto diagnostics = compute.build(shaders::prepareMeshSdf(*field, "torus.obj"), *sampler);
+    auto diagnostics =
+        compute.build(shaders::prepareMeshSdf(*field, "torus.obj", "float sdf(vec3 p) { return sdfwb_meshSdf(p); }\n"), *sampler);
     ASSERT_FALSE(shaders::hasErrors(diagnostics));
     sampling::SamplingJob job;
     job.count = 2000;
@@ -200,6 +202,70 @@ TEST_F(MeshSdfTest, MarchingSamplersGiveTheFieldOrAReportedBadRowNeverAWrongValu
     std::printf("near on a 1536-triangle torus: %llu finite rows within %.2e of the float64 field, %llu rows with a cut walk "
                 "(NaN, bad rows)\n",
                 (unsigned long long)finite, worst, (unsigned long long)nan);
+}
+
+// On a mesh's own field, surface and near draw their points on the triangles (uniform by area)
+// instead of marching: no bad rows on llvmpipe, |f| at float precision on the surface, the near
+// offsets' standard deviation as asked. Uniform by area shows on a torus: the outer half
+// (x^2 + y^2 > R^2) holds 1/2 + r/(pi R) of its area. Text that changes the field (an offset
+// shell) keeps the marching samplers: its surface rows lie 0.05 off the mesh.
+TEST_F(MeshSdfTest, SurfaceAndNearDrawPointsOnTheMeshItselfByArea) {
+    const meshfield::TriangleMesh mesh = testing::torusMesh(0.6f, 0.25f, 96, 32);
+    auto field = meshfield::makeMeshField(mesh, "torus.obj", {});
+    ASSERT_TRUE(field.hasValue());
+    auto sample = [&](const char* pattern, const std::string& text, std::vector<float>& positions,
+                      std::vector<float>& distances) {
+        renderer::SampleCompute compute;
+        auto sampler = sampling::findSampler(pattern, {});
+        EXPECT_TRUE(sampler.hasValue());
+        auto diagnostics = compute.build(shaders::prepareMeshSdf(*field, "torus.obj", text), *sampler);
+        EXPECT_FALSE(shaders::hasErrors(diagnostics));
+        sampling::SamplingJob job;
+        job.count = 4000;
+        job.seed = 5;
+        positions.assign(3 * job.count, 0.0f);
+        distances.assign(job.count, 0.0f);
+        std::vector<float> gradients(3 * job.count);
+        auto report = sampling::sampleInto(compute, job, positions.data(), distances.data(), gradients.data(), {});
+        compute.releaseGl();
+        EXPECT_TRUE(report.hasValue());
+        return report.hasValue() ? report->badRows : job.count;
+    };
+    std::vector<float> positions, distances;
+    EXPECT_EQ(sample("surface", "", positions, distances), 0u);
+    double worst = 0.0;
+    std::size_t outer = 0;
+    for (std::size_t i = 0; i < distances.size(); ++i) {
+        worst = std::max(worst, double(std::abs(distances[i])));
+        const double x = positions[3 * i], y = positions[3 * i + 1];
+        outer += x * x + y * y > 0.36 ? 1u : 0u;
+    }
+    EXPECT_LT(worst, 1e-5) << "surface rows lie on the zero set";
+    const double share = double(outer) / double(distances.size()), expected = 0.5 + 0.25 / (3.14159265 * 0.6);
+    EXPECT_NEAR(share, expected, 0.025) << "points uniform by area";
+
+    EXPECT_EQ(sample("near", "", positions, distances), 0u);
+    double sum = 0.0, squares = 0.0;
+    for (float d : distances) {
+        sum += d;
+        squares += double(d) * d;
+    }
+    const double mean = sum / double(distances.size()), deviation = std::sqrt(squares / double(distances.size()) - mean * mean);
+    EXPECT_NEAR(deviation, 0.005, 0.0004) << "near's default offset: a Gaussian of deviation 0.005";
+    EXPECT_NEAR(mean, 0.0, 0.0004);
+
+    const std::uint64_t bad = sample("surface", "float sdf(vec3 p) { return sdfwb_meshSdf(p) - 0.05; }\n", positions, distances);
+    std::size_t checked = 0;
+    for (std::size_t i = 0; i < distances.size(); ++i) {
+        if (!std::isfinite(distances[i])) continue;
+        ++checked;
+        const dvec3 p(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
+        EXPECT_NEAR((*field)->signedDistance(p), 0.05, 1e-3) << "row " << i;
+        if (HasFailure()) break;
+    }
+    EXPECT_GT(checked, 0u);
+    std::printf("surface over an offset shell: %zu rows on the shell, %llu bad rows (llvmpipe's loop budget)\n", checked,
+                (unsigned long long)bad);
 }
 
 TEST_F(MeshSdfTest, TheAuditFlagsWhereAnOpenMeshsSignIsAGuess) {

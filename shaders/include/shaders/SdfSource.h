@@ -65,6 +65,9 @@ struct PreparedSdf {
     // A triangle mesh the text's sdfwb_meshSdf() reads (the SDF is a mesh file: prepareMeshSdf).
     // The composer adds shaders/mesh/mesh_field.glsl and the GL side binds its buffers.
     std::shared_ptr<const meshfield::MeshField> mesh;
+    // The SDF is the mesh's own field (its generated text, unedited): its zero set is the mesh's
+    // triangles, so the surface and near samplers draw points on them instead of marching rays.
+    bool meshIsTheField = false;
 
     bool ok() const { return !hasErrors(diagnostics); }
     // Needs a time value each frame: sdf(vec3, float) or the G3D scene time uniform.
