@@ -40,6 +40,8 @@ import torch
 
 import sdfwb
 
+from machine import cpu_model  # bench/machine.py
+
 args = sys.argv[1:]
 N = int(args[args.index("--points") + 1]) if "--points" in args else 10_000_000
 REPEATS = int(args[args.index("--repeats") + 1]) if "--repeats" in args else 3
@@ -288,15 +290,6 @@ def error(values, truth):
     return float(np.max(np.abs(values[finite] - truth[finite])))
 
 
-def cpu_model():
-    try:
-        with open("/proc/cpuinfo") as info:
-            for line in info:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown CPU"
 
 
 def gl_renderer():

@@ -43,6 +43,8 @@ from skimage import measure
 
 import sdfwb
 
+from machine import cpu_model  # bench/machine.py
+
 args = sys.argv[1:]
 R = int(args[args.index("--resolution") + 1]) if "--resolution" in args else 256
 REPEATS = int(args[args.index("--repeats") + 1]) if "--repeats" in args else 5
@@ -195,15 +197,6 @@ def grade(vertices, faces, sdf, folder):
     return sdfwb.evaluate_mesh(path, sdf, tau=0.001)
 
 
-def cpu_model():
-    try:
-        with open("/proc/cpuinfo") as info:
-            for line in info:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown CPU"
 
 
 def gl_renderer():

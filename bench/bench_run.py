@@ -35,16 +35,9 @@ import distributed
 import sdfwb
 import sdfwb.dask
 
+from machine import cpu_model  # bench/machine.py
 
-def cpu_model():
-    try:
-        with open("/proc/cpuinfo") as info:
-            for line in info:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown CPU"
+
 
 
 def gl_renderer():
