@@ -78,7 +78,8 @@ def _counts(ratios: Sequence[float], n: int) -> list[int]:
 
 
 def surface_leaves_box(sdf: str, bounds: Sequence[float] = (-1, -1, -1, 1, 1, 1), resolution: int = 64,
-                       params: Mapping[str, ParamValue] | None = None, time: float = 0.0, entry: str = "") -> float:
+                       params: Mapping[str, ParamValue] | None = None, time: float = 0.0, entry: str = "",
+                       sign: str = "", normalize: str = "") -> float:
     """The fraction of a resolution^2 grid on each face of the box where the field is negative (inside the
     shape): 0 when the surface stays inside the box.
 
@@ -90,6 +91,8 @@ def surface_leaves_box(sdf: str, bounds: Sequence[float] = (-1, -1, -1, 1, 1, 1)
             Default None: the declared defaults.
         time (float): seconds, for animated SDFs. Default 0.
         entry (str): the SDF's function when it is not `sdf`, as for sdfwb.sample. Default ''.
+        sign (str): a mesh SDF's inside test, as for sdfwb.sample. Default '': winding numbers.
+        normalize (str): a mesh SDF's scaling, as for sdfwb.sample. Default '': none.
 
     Returns:
         float: the fraction, 0 to 1.
@@ -109,13 +112,15 @@ def surface_leaves_box(sdf: str, bounds: Sequence[float] = (-1, -1, -1, 1, 1, 1)
             p[:, others[0]] = lo[others[0]] + a * (hi[others[0]] - lo[others[0]])
             p[:, others[1]] = lo[others[1]] + b * (hi[others[1]] - lo[others[1]])
             faces.append(p)
-    values = _native.evaluate(sdf, np.concatenate(faces), params, time, False, 1e-3, entry, 1 << 18)["distance"]
+    values = _native.evaluate(sdf, np.concatenate(faces), params, time, False, 1e-3, entry, 1 << 18, sign,
+                              normalize)["distance"]
     return float(np.mean(values < 0.0))
 
 
 def _warn_if_outside(sdf: str, bounds: Sequence[float], params: Mapping[str, ParamValue] | None, time: float,
-                     entry: str) -> float:
-    fraction = surface_leaves_box(sdf, bounds, params=params, time=time, entry=entry)
+                     entry: str, mesh: Mapping[str, Any]) -> float:
+    fraction = surface_leaves_box(sdf, bounds, params=params, time=time, entry=entry, sign=mesh.get("sign", ""),
+                                  normalize=mesh.get("normalize", ""))
     if fraction > 0.0:
         warnings.warn(f"{sdf if len(sdf) < 80 else 'the SDF'}: the surface leaves the sampling box {tuple(bounds)} "
                       f"(the field is negative on {100 * fraction:.2f} % of its faces): samples miss part of the shape",
@@ -164,7 +169,9 @@ def mix(sdf: str, parts: Mapping[str, float] | Sequence[_Part], n: int, seed: in
     if np.dtype(dtype) not in (np.float32, np.float16):
         raise ValueError("mix: dtype must be float32 or float16")
     counts = _counts([r for _, r, _ in items], int(n))
-    fraction = _warn_if_outside(sdf, bounds, params, time, entry)
+    # A mesh's sign and normalisation, as the parts give them (the first part's; parts that differ make no sense).
+    mesh = {key: items[0][2][key] for key in ("sign", "normalize") if key in items[0][2]}
+    fraction = _warn_if_outside(sdf, bounds, params, time, entry, mesh)
     out: dict[str, list[npt.NDArray[Any]]] = {"position": [], "distance": [], "gradient": [], "part": []}
     parameters: dict[str, Any] = {}
     seconds = 0.0
@@ -278,7 +285,7 @@ def metadata_of(path: str) -> dict[str, Any]:
 
 
 def deepsdf(sdf: str, path: str, n: int = 500000, seed: int = 0, params: Mapping[str, ParamValue] | None = None,
-            time: float = 0.0, entry: str = "") -> dict[str, Any]:
+            time: float = 0.0, entry: str = "", sign: str = "", normalize: str = "") -> dict[str, Any]:
     """Writes a DeepSDF-style .npz (see DEEPSDF for the description it follows): pos (sdf > 0) and neg (sdf <= 0),
     float32 (N, 4) rows x, y, z, sdf. Rows that are not finite (near rays that found no surface) are dropped.
 
@@ -291,6 +298,10 @@ def deepsdf(sdf: str, path: str, n: int = 500000, seed: int = 0, params: Mapping
             Default None: the declared defaults.
         time (float): seconds, for animated SDFs. Default 0.
         entry (str): the SDF's function when it is not `sdf`, as for sdfwb.sample. Default ''.
+        sign (str): a mesh SDF's inside test (winding, parity or pseudonormal), as for sdfwb.sample. Default '':
+            winding numbers.
+        normalize (str): a mesh SDF's scaling (none, unit-cube or unit-sphere), as for sdfwb.sample. Default '':
+            none. On a mesh the near points are drawn on its triangles (docs/mesh-sdf.md).
 
     Returns:
         dict: the metadata written into the file (see metadata_of), with rows_dropped, plus sampling_seconds.
@@ -299,8 +310,9 @@ def deepsdf(sdf: str, path: str, n: int = 500000, seed: int = 0, params: Mapping
         ValueError, TypeError, RuntimeError: as sdfwb.sample raises them; OSError when the file cannot be written.
     """
     near = "%.6g:1,%.6g:1" % (0.005 ** 0.5, 0.0005 ** 0.5)
-    rows = mix(sdf, [("near", 47, {"near_widths": near}), ("rand", 3)], n, seed=seed, params=params, time=time,
-               entry=entry)
+    mesh = {key: value for key, value in (("sign", sign), ("normalize", normalize)) if value}
+    rows = mix(sdf, [("near", 47, dict(mesh, near_widths=near)), ("rand", 3, mesh)], n, seed=seed, params=params,
+               time=time, entry=entry)
     table = np.concatenate([rows["position"], rows["distance"][:, None]], axis=1).astype(np.float32)
     table = table[np.isfinite(table).all(axis=1)]  # a near ray that found no surface is a NaN row
     positive = table[:, 3] > 0.0
@@ -339,7 +351,7 @@ def occnet(sdf: str, path: str, n: int = 100000, seed: int = 0, padding: float =
     """
     lo, hi = np.array(bounds[:3], np.float64), np.array(bounds[3:], np.float64)
     loc, scale = (lo + hi) / 2.0, float(np.max(hi - lo))
-    fraction = _warn_if_outside(sdf, bounds, params, time, entry)
+    fraction = _warn_if_outside(sdf, bounds, params, time, entry, {})
     rng = np.random.default_rng(seed)
     normalised = ((rng.random((int(n), 3)) - 0.5) * (1.0 + padding)).astype(np.float16)
     world = (normalised.astype(np.float32) * np.float32(scale) + loc.astype(np.float32)).astype(np.float32)

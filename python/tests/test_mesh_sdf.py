@@ -1,10 +1,13 @@
 """Meshes in: a triangle mesh file is an SDF for sample, evaluate, audit and mesh, with the sign method and
 normalisation the caller names. The meshes are written here (a cube, whose exact signed distance is known,
 and the same cube with one side missing)."""
+import warnings
+
 import numpy as np
 import pytest
 
 import sdfwb
+import sdfwb.recipes
 
 CORNERS = [(x, y, z) for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)]
 # Two triangles a side, counter-clockwise seen from outside (vertex k has bits x y z of k).
@@ -97,3 +100,27 @@ def test_mesh_options_are_checked(tmp_path):
     opened = sdfwb.audit(write_cube(tmp_path / "open.obj", skip=("+z",)), samples=500)
     uncertain = [flag for flag in opened["flags"] if flag["flag"] == "sign-uncertain"]
     assert uncertain and uncertain[0]["count"] > 10 and uncertain[0]["examples"], opened["reason"]
+
+
+def test_deepsdf_recipe_on_a_mesh_draws_its_near_points_on_the_faces(tmp_path):
+    # A 6-unit cube far from the origin, scaled into the box: the recipe's near points lie on the
+    # unit cube's faces moved by the two Gaussians (deviations sqrt(0.005) and sqrt(0.0005)), none
+    # is dropped, each row's distance is the box's, and the scaled shape raises no "leaves the box".
+    big = tmp_path / "far.obj"
+    write_cube(big)
+    lines = big.read_text().splitlines()
+    moved = [("v %g %g %g" % tuple(6.0 * float(x) + 10.0 for x in line.split()[1:])) if line.startswith("v ") else line
+             for line in lines]
+    big.write_text("\n".join(moved) + "\n")
+    out = tmp_path / "deepsdf.npz"
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        meta = sdfwb.recipes.deepsdf(str(big), str(out), n=4000, seed=1, normalize="unit-cube")
+    assert meta["rows_dropped"] == 0
+    data = np.load(out)
+    rows = np.concatenate([data["pos"], data["neg"]])
+    assert len(rows) == 4000
+    assert np.all(data["pos"][:, 3] > 0) and np.all(data["neg"][:, 3] <= 0)
+    assert np.max(np.abs(rows[:, 3] - box_sdf(rows[:, :3].astype(np.float64), half=1.0))) < 1e-5
+    # 47 of 50 points are near the faces: |distance| mostly within 3 wide deviations (0.21).
+    assert np.mean(np.abs(rows[:, 3]) < 0.21) > 0.9
