@@ -90,9 +90,7 @@ bool FileController::loadMesh(const QString& path) {
         log::error("app", plain.error().message);
         return false;
     }
-    const meshfield::Box& box = (*plain)->bounds;
-    const bool inside =
-        box.lo.x >= -1.0 && box.lo.y >= -1.0 && box.lo.z >= -1.0 && box.hi.x <= 1.0 && box.hi.y <= 1.0 && box.hi.z <= 1.0;
+    const bool inside = (*plain)->bounds.insideUnitBox();
     meshfield::MeshFieldOptions options;
     options.normalize = inside ? meshfield::Normalization::None : meshfield::Normalization::UnitCube;
     auto field = inside ? plain : meshfield::loadMeshField(path.toStdString(), options);

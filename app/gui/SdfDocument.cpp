@@ -41,26 +41,14 @@ namespace {
 // The document's text over its mesh: what the jobs' openSdf builds from the same input.
 shaders::PreparedSdf prepareOverMesh(const std::string& source, const std::string& path, const std::string& entry,
                                      const std::string& sign, const std::string& normalize) {
-    auto failed = [&](const std::string& message) {
-        shaders::PreparedSdf prepared;
-        prepared.source.map.files.push_back({path, ""});
-        prepared.diagnostics.push_back({path, 0, 0, shaders::Severity::Error, message});
-        return prepared;
-    };
-    meshfield::MeshFieldOptions options;
-    if (!sign.empty()) {
-        auto method = meshfield::parseSign(sign);
-        if (!method) return failed(method.error().message);
-        options.sign = *method;
+    auto options = meshfield::parseMeshFieldOptions(sign, normalize);
+    if (!options) {
+        shaders::PreparedSdf failed;
+        failed.source.map.files.push_back({path, ""});
+        failed.diagnostics.push_back({path, 0, 0, shaders::Severity::Error, options.error().message});
+        return failed;
     }
-    if (!normalize.empty()) {
-        auto normalization = meshfield::parseNormalization(normalize);
-        if (!normalization) return failed(normalization.error().message);
-        options.normalize = *normalization;
-    }
-    auto field = meshfield::loadMeshField(path, options); // cached: a re-check does not rebuild it
-    if (!field) return failed(field.error().message);
-    return shaders::prepareMeshSdf(std::move(*field), path, source, entry);
+    return shaders::prepareMeshFile(path, *options, source, entry); // the field is cached: a re-check does not rebuild it
 }
 
 } // namespace

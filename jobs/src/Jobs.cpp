@@ -82,11 +82,8 @@ std::optional<JobError> checkSdf(const SdfInput& input) {
         if (!fs::is_regular_file(input.channels[n], ec)) return usage(what + "no such file");
         if (auto image = renderer::readImage(input.channels[n]); !image) return usage(what + image.error().message);
     }
-    if (!input.sign.empty())
-        if (auto sign = meshfield::parseSign(input.sign); !sign) return usage("--sign: " + sign.error().message);
-    if (!input.normalize.empty())
-        if (auto normalize = meshfield::parseNormalization(input.normalize); !normalize)
-            return usage("--normalize: " + normalize.error().message);
+    if (auto mesh = meshfield::parseMeshFieldOptions(input.sign, input.normalize); !mesh)
+        return usage("--" + mesh.error().message);
     for (const shaders::ParameterValue& p : input.params) {
         // The text form checks the name and the values (1 to 4 finite numbers).
         if (auto ok = shaders::parseParameterValue(shaders::formatParameterValue(p)); !ok || !(*ok == p))
@@ -172,23 +169,13 @@ JobResult<OpenedSdf> openSdf(const SdfInput& input, const std::string& what) {
         return usage(std::string(input.sign.empty() ? "--normalize" : "--sign") +
                      ": applies to mesh files (.obj .ply .stl .off .glb), not '" + path->string() + "'");
     if (mesh) {
-        meshfield::MeshFieldOptions options;
-        if (!input.sign.empty()) {
-            auto sign = meshfield::parseSign(input.sign);
-            if (!sign) return usage("--sign: " + sign.error().message);
-            options.sign = *sign;
-        }
-        if (!input.normalize.empty()) {
-            auto normalize = meshfield::parseNormalization(input.normalize);
-            if (!normalize) return usage("--normalize: " + normalize.error().message);
-            options.normalize = *normalize;
-        }
+        auto meshOptions = meshfield::parseMeshFieldOptions(input.sign, input.normalize);
+        if (!meshOptions) return usage("--" + meshOptions.error().message);
+        const meshfield::MeshFieldOptions& options = *meshOptions;
         auto field = meshfield::loadMeshField(*path, options);
         if (!field) return JobError{Failure::Work, what + ": " + field.error().message, {}};
         log::info(what, (*field)->summary());
-        const meshfield::Box& box = (*field)->bounds;
-        if (options.normalize == meshfield::Normalization::None &&
-            (box.lo.x < -1.0 || box.lo.y < -1.0 || box.lo.z < -1.0 || box.hi.x > 1.0 || box.hi.y > 1.0 || box.hi.z > 1.0))
+        if (options.normalize == meshfield::Normalization::None && !(*field)->bounds.insideUnitBox())
             log::warning(what, path->string() + ": the mesh reaches beyond [-1, 1]^3, the default box; --normalize unit-cube "
                                                 "or unit-sphere scales it into the box");
         sdf = shaders::prepareMeshSdf(std::move(*field), *path, input.source, input.entry);

@@ -233,6 +233,21 @@ Expected<Normalization> parseNormalization(const std::string& text) {
     return Error{"expected none, unit-cube or unit-sphere, got '" + text + "'"};
 }
 
+Expected<MeshFieldOptions> parseMeshFieldOptions(const std::string& sign, const std::string& normalize) {
+    MeshFieldOptions options;
+    if (!sign.empty()) {
+        auto method = parseSign(sign);
+        if (!method) return Error{"sign: " + method.error().message};
+        options.sign = *method;
+    }
+    if (!normalize.empty()) {
+        auto normalization = parseNormalization(normalize);
+        if (!normalization) return Error{"normalize: " + normalization.error().message};
+        options.normalize = *normalization;
+    }
+    return options;
+}
+
 bool isMeshPath(const fs::path& path) {
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });

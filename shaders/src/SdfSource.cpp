@@ -359,15 +359,18 @@ PreparedSdf prepareMeshSdf(std::shared_ptr<const meshfield::MeshField> mesh, con
     return prepared;
 }
 
+PreparedSdf prepareMeshFile(const std::filesystem::path& path, const meshfield::MeshFieldOptions& options,
+                            const std::string& text, const std::string& entry) {
+    auto mesh = meshfield::loadMeshField(path, options);
+    if (mesh) return prepareMeshSdf(std::move(*mesh), path, text, entry);
+    PreparedSdf failed;
+    failed.source.map.files.push_back({path.string(), ""});
+    failed.diagnostics.push_back({path.string(), 0, 0, Severity::Error, mesh.error().message});
+    return failed;
+}
+
 PreparedSdf prepareSdfFile(const std::filesystem::path& path, const IncludeOptions& options, const std::string& entry) {
-    if (meshfield::isMeshPath(path)) { // a mesh with the default sign (winding numbers), as the file has it
-        auto mesh = meshfield::loadMeshField(path, {});
-        if (mesh) return prepareMeshSdf(std::move(*mesh), path, {}, entry);
-        PreparedSdf failed;
-        failed.source.map.files.push_back({path.string(), ""});
-        failed.diagnostics.push_back({path.string(), 0, 0, Severity::Error, mesh.error().message});
-        return failed;
-    }
+    if (meshfield::isMeshPath(path)) return prepareMeshFile(path, {}, {}, entry); // the default sign: winding numbers
     auto text = readTextFile(path);
     if (!text) {
         PreparedSdf failed;

@@ -1,7 +1,7 @@
 #pragma once
 // Parts of sdfwb built as shared modules and loaded the first time they are needed, so that a
 // command pays only for the libraries it uses: libsdfwb_media.so (OpenImageIO and FFmpeg: image
-// and video files) and libsdfwb_gui.so (Qt Widgets: the workbench window).
+// and video files) and libsdfwb_workbench.so (Qt Widgets: the workbench window).
 
 #include <core/Expected.h>
 

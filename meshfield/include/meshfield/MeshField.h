@@ -52,6 +52,10 @@ Expected<TriangleMesh> readTriangleMesh(const std::filesystem::path& path);
 struct Box {
     glm::dvec3 lo{0.0};
     glm::dvec3 hi{0.0};
+    // Inside [-1, 1]^3, the box sdfwb samples and traces by default.
+    bool insideUnitBox() const {
+        return lo.x >= -1.0 && lo.y >= -1.0 && lo.z >= -1.0 && hi.x <= 1.0 && hi.y <= 1.0 && hi.z <= 1.0;
+    }
 };
 
 struct MeshFieldOptions {
@@ -60,6 +64,10 @@ struct MeshFieldOptions {
     // Winding numbers: a cluster farther than beta times its radius counts as one dipole.
     double beta = 2.0;
 };
+
+// Options from their names ("winding", "unit-cube"; empty: the default). The error says which:
+// "sign: expected ..." or "normalize: expected ...".
+Expected<MeshFieldOptions> parseMeshFieldOptions(const std::string& sign, const std::string& normalize);
 
 // Triangles a leaf holds at most.
 inline constexpr std::uint32_t kMaxLeafTriangles = 4;

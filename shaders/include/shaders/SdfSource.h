@@ -112,6 +112,11 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
 PreparedSdf prepareMeshSdf(std::shared_ptr<const meshfield::MeshField> mesh, const std::filesystem::path& path,
                            const std::string& text = {}, const std::string& entry = {});
 
+// A mesh file with these options (loaded through meshfield's cache) under `text` (empty: its
+// generated text); a file that cannot be read gives a PreparedSdf whose diagnostic says why.
+PreparedSdf prepareMeshFile(const std::filesystem::path& path, const meshfield::MeshFieldOptions& options,
+                            const std::string& text = {}, const std::string& entry = {});
+
 // Reads `path` and prepares it; an unreadable file gives a diagnostic naming it.
 PreparedSdf prepareSdfFile(const std::filesystem::path& path, const IncludeOptions& options, const std::string& entry = {});
 
