@@ -6,10 +6,12 @@
 //                                   corner's w is the cumulative share of the area (the last is 1)
 //   SDFWB_MESH_PSEUDONORMALS_BINDING (pseudonormal sign only) seven vec4 per triangle:
 //                                   face, edges ab bc ca, vertices a b c
+//   SDFWB_MESH_LEAF                 the most triangles a leaf holds (meshfield::kMaxLeafTriangles)
 //   SDFWB_MESH_STACK                entries of the traversal stack (the hierarchy's depth + 2)
 //   SDFWB_MESH_BETA                 winding numbers: a cluster farther than beta radii is a dipole
 //   SDFWB_MESH_SIGN_WINDING | SDFWB_MESH_SIGN_PARITY | SDFWB_MESH_SIGN_PSEUDONORMAL
 //   SDFWB_MESH_SURFACE              the SDF is the mesh's own field: samplers may use sdfwb_meshSurfacePoint
+//   SDFWB_MESH_FRAGMENT             composed into a fragment shader (see sdfwb_meshIdleLane)
 layout(std430, binding = SDFWB_MESH_NODES_BINDING) readonly buffer sdfwb_MeshNodes { vec4 sdfwb_meshNodes[]; };
 layout(std430, binding = SDFWB_MESH_TRIANGLES_BINDING) readonly buffer sdfwb_MeshTriangles { vec4 sdfwb_meshTriangles[]; };
 #ifdef SDFWB_MESH_SIGN_PSEUDONORMAL
@@ -21,6 +23,19 @@ layout(std430, binding = SDFWB_MESH_PSEUDONORMALS_BINDING) readonly buffer sdfwb
 // march multiplies them), and a cut walk's value would be silently wrong. NaN shows as a bad row
 // in samples and magenta in the viewport.
 float sdfwb_meshCut() { return uintBitsToFloat(0x7fc00000u); }
+
+// A fragment lane whose value no pixel keeps (a helper: outside the primitive, run only for
+// derivatives) walks nothing. llvmpipe runs such lanes of a partly covered block through every
+// loop but drops their array stores, so their stack walks read stale entries and spin until the
+// invocation's shared loop budget (above) is spent, cutting the covered lanes' walks short: lines
+// of wrong pixels along every edge of the tracer's proxy box and the full-frame triangle's split.
+bool sdfwb_meshIdleLane() {
+#ifdef SDFWB_MESH_FRAGMENT
+    return gl_HelperInvocation;
+#else
+    return false;
+#endif
+}
 
 float sdfwb_meshBoxDistance2(vec3 p, vec3 lo, vec3 hi) {
     vec3 d = max(max(lo - p, p - hi), vec3(0.0));
@@ -79,13 +94,14 @@ vec3 sdfwb_meshClosest(vec3 p, vec3 a, vec3 b, vec3 c, out int feature) {
 
 // The squared distance to the nearest triangle, which triangle (leaf order), its feature and point.
 float sdfwb_meshNearest(vec3 p, out uint triangle, out int feature, out vec3 closest) {
+    triangle = 0u;
+    feature = 0;
+    closest = p;
+    if (sdfwb_meshIdleLane()) return 1.0;
     uint stack[SDFWB_MESH_STACK];
     int top = 0;
     stack[top++] = 0u;
     float best = 3.0e38;
-    triangle = 0u;
-    feature = 0;
-    closest = p;
     while (top > 0) {
         uint n = stack[--top];
         vec4 lo = sdfwb_meshNodes[4u * n];
@@ -94,7 +110,10 @@ float sdfwb_meshNearest(vec3 p, out uint triangle, out int feature, out vec3 clo
         uint first = floatBitsToUint(lo.w);
         uint count = floatBitsToUint(hi.w);
         if (count > 0u) {
-            for (uint s = first; s < first + count; ++s) {
+            // A constant bound: the driver unrolls the leaf, so that its triangles cost no loop budget.
+            for (uint k = 0u; k < SDFWB_MESH_LEAF; ++k) {
+                if (k >= count) break;
+                uint s = first + k;
                 int f;
                 vec3 q = sdfwb_meshClosest(p, sdfwb_meshTriangles[3u * s].xyz, sdfwb_meshTriangles[3u * s + 1u].xyz,
                                            sdfwb_meshTriangles[3u * s + 2u].xyz, f);
@@ -142,6 +161,7 @@ float sdfwb_meshSolidAngle(vec3 p, vec3 a, vec3 b, vec3 c) {
 // The generalized winding number: 1 inside a closed, outward-facing mesh, 0 outside; near clusters
 // add their triangles' solid angles, far ones their dipole (Barill et al. 2018, first order).
 float sdfwb_meshWinding(vec3 p) {
+    if (sdfwb_meshIdleLane()) return 0.0;
     uint stack[2 * SDFWB_MESH_STACK];
     int top = 0;
     stack[top++] = 0u;
@@ -159,9 +179,12 @@ float sdfwb_meshWinding(vec3 p) {
         uint first = floatBitsToUint(sdfwb_meshNodes[4u * n].w);
         uint count = floatBitsToUint(sdfwb_meshNodes[4u * n + 1u].w);
         if (count > 0u) {
-            for (uint s = first; s < first + count; ++s)
+            for (uint k = 0u; k < SDFWB_MESH_LEAF; ++k) {
+                if (k >= count) break;
+                uint s = first + k;
                 sum += sdfwb_meshSolidAngle(p, sdfwb_meshTriangles[3u * s].xyz, sdfwb_meshTriangles[3u * s + 1u].xyz,
                                             sdfwb_meshTriangles[3u * s + 2u].xyz);
+            }
         } else {
             stack[top++] = first;
             stack[top++] = first + 1u;
@@ -172,6 +195,7 @@ float sdfwb_meshWinding(vec3 p) {
 
 // Crossings of the ray p + t d (t > 0) with the mesh.
 int sdfwb_meshCrossings(vec3 p, vec3 d) {
+    if (sdfwb_meshIdleLane()) return 0;
     vec3 inverse = 1.0 / d;
     uint stack[2 * SDFWB_MESH_STACK];
     int top = 0;
@@ -189,7 +213,9 @@ int sdfwb_meshCrossings(vec3 p, vec3 d) {
         uint first = floatBitsToUint(lo.w);
         uint count = floatBitsToUint(hi.w);
         if (count > 0u) {
-            for (uint s = first; s < first + count; ++s) {
+            for (uint k = 0u; k < SDFWB_MESH_LEAF; ++k) {
+                if (k >= count) break;
+                uint s = first + k;
                 vec3 a = sdfwb_meshTriangles[3u * s].xyz;
                 vec3 e1 = sdfwb_meshTriangles[3u * s + 1u].xyz - a;
                 vec3 e2 = sdfwb_meshTriangles[3u * s + 2u].xyz - a;

@@ -8,6 +8,8 @@ namespace sdfwb::shaders {
 namespace {
 
 const char* const kVersionLine = "#version 430 core\n";
+// A mesh's field in a fragment shader reads gl_HelperInvocation (GLSL 4.50; mesh_field.glsl).
+const char* const kMeshFragmentVersionLine = "#version 450 core\n";
 
 std::string lineDirective(int line, std::size_t fileIndex) {
     return "#line " + std::to_string(line) + " " + std::to_string(fileIndex) + "\n";
@@ -81,8 +83,10 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
         all["SDFWB_MESH_NODES_BINDING"] = std::to_string(kMeshNodesBinding);
         all["SDFWB_MESH_TRIANGLES_BINDING"] = std::to_string(kMeshTrianglesBinding);
         all["SDFWB_MESH_PSEUDONORMALS_BINDING"] = std::to_string(kMeshPseudonormalsBinding);
+        all["SDFWB_MESH_LEAF"] = std::to_string(meshfield::kMaxLeafTriangles) + "u";
         all["SDFWB_MESH_STACK"] = std::to_string(sdf.mesh->depth + 2);
         if (sdf.meshIsTheField) all["SDFWB_MESH_SURFACE"] = "1";
+        if (stage == Stage::Fragment) all["SDFWB_MESH_FRAGMENT"] = "1"; // mesh_field.glsl's helper lanes
         char beta[32];
         std::snprintf(beta, sizeof beta, "%.6f", sdf.mesh->options.beta);
         all["SDFWB_MESH_BETA"] = beta;
@@ -103,7 +107,7 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
     shader.stage = stage;
     // The resolved SDF text numbers its files from 0 with #line directives; keep those indices.
     shader.map = sdf.source.map;
-    shader.text = kVersionLine;
+    shader.text = sdf.mesh && stage == Stage::Fragment ? kMeshFragmentVersionLine : kVersionLine;
     for (const std::string& extension : sdf.source.extensions) shader.text += extension + "\n";
     appendDefines(shader, all, sdf.usesTime());
     if (sdf.compat.any()) {

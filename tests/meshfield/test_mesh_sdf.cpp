@@ -4,10 +4,13 @@
 // renders, samples and refuses mesh options on GLSL files.
 #include "GlTestContext.h"
 #include "TestMeshes.h"
+#include "common/ExactRays.h"
 
 #include <jobs/Jobs.h>
 #include <meshfield/MeshField.h>
+#include <renderer/OffscreenRenderer.h>
 #include <renderer/SampleCompute.h>
+#include <renderer/SdfRenderer.h>
 #include <sampling/FieldAudit.h>
 #include <sampling/Sampler.h>
 #include <sampling/SamplerLibrary.h>
@@ -306,6 +309,67 @@ TEST_F(MeshSdfTest, TheAuditFlagsWhereAnOpenMeshsSignIsAGuess) {
         EXPECT_NE(report->reason.find("sign-uncertain"), std::string::npos) << report->reason;
         std::printf("open cube: %s\n", flag->evidence.c_str());
     }
+}
+
+// The picture's path (the box proxy, normals shading) on a mesh's field, against each pixel's ray
+// met with the triangles here in double precision: the shaded normal is the face's. Two llvmpipe
+// faults drew wrong pixels here: lines along every edge of the proxy box (its helper lanes spun
+// through the walks and spent the invocation's loop budget) and blocks on large flat faces (each
+// leaf triangle cost a loop iteration, so long marches ran out of budget).
+TEST_F(MeshSdfTest, TheTracerShadesEveryPixelOfAMeshWithItsFacesNormal) {
+    const auto mesh = testing::torusMesh(0.6f, 0.3f, 64, 32); // 4096 triangles
+    auto field = meshfield::makeMeshField(mesh, "torus.obj", {});
+    ASSERT_TRUE(field.hasValue());
+    renderer::SdfRenderer sdfRenderer;
+    const auto diagnostics = sdfRenderer.setSdf(shaders::prepareMeshSdf(*field, "torus.obj"));
+    ASSERT_FALSE(shaders::hasErrors(diagnostics)) << (diagnostics.empty() ? "" : shaders::formatDiagnostic(diagnostics[0]));
+    renderer::Camera camera;
+    camera.position = {1.2f, -1.5f, 1.8f}; // the proxy's hidden edges cross the ring
+    constexpr int kW = 192, kH = 144;
+    renderer::OffscreenRenderer offscreen;
+    const renderer::Image image = offscreen.render(sdfRenderer, kW, kH, camera, 0.0f);
+    sdfRenderer.releaseGl();
+    ASSERT_EQ(image.width, kW);
+    const dvec3 origin(camera.position);
+    std::size_t compared = 0, wrongNormals = 0, misses = 0, worstX = 0, worstY = 0;
+    double worst = 0.0;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            const dvec3 d = testing::pixelRay(camera, x, y, kW, kH);
+            double nearest = std::numeric_limits<double>::infinity();
+            dvec3 normal(0.0);
+            for (std::size_t t = 0; t < mesh.indices.size(); t += 3) { // Moller-Trumbore
+                const dvec3 a(mesh.vertices[mesh.indices[t]]), b(mesh.vertices[mesh.indices[t + 1]]),
+                    c(mesh.vertices[mesh.indices[t + 2]]);
+                const dvec3 e1 = b - a, e2 = c - a, h = glm::cross(d, e2);
+                const double det = glm::dot(e1, h);
+                if (std::abs(det) < 1e-14) continue;
+                const dvec3 o = origin - a, q = glm::cross(o, e1);
+                const double u = glm::dot(o, h) / det, v = glm::dot(d, q) / det, hit = glm::dot(e2, q) / det;
+                if (u < 0.0 || v < 0.0 || u + v > 1.0 || hit <= 0.0 || hit >= nearest) continue;
+                nearest = hit;
+                normal = glm::normalize(glm::cross(e1, e2));
+            }
+            // Grazing rays may miss or blend faces at the silhouette: only rays meeting a face at
+            // more than ~17 degrees count.
+            if (!std::isfinite(nearest) || std::abs(glm::dot(normal, d)) < 0.3) continue;
+            ++compared;
+            const std::uint8_t* rgba = image.pixel(x, y);
+            const dvec3 shaded = dvec3(rgba[0], rgba[1], rgba[2]) / 255.0 * 2.0 - 1.0;
+            if (glm::length(shaded) < 0.5) { // the background (0.16 grey) or black
+                ++misses;
+                continue;
+            }
+            // Central differences blend neighbouring faces (7.5 degrees apart at most) near edges.
+            const double degrees = std::acos(std::clamp(glm::dot(glm::normalize(shaded), normal), -1.0, 1.0)) * 180.0 / M_PI;
+            if (degrees > 15.0) ++wrongNormals;
+            if (degrees > worst) worst = degrees, worstX = std::size_t(x), worstY = std::size_t(y);
+        }
+    std::printf("torus mesh, %dx%d: %zu pixels compared, %zu misses, %zu normals over 15 degrees off (worst %.1f at %zu,%zu)\n",
+                kW, kH, compared, misses, wrongNormals, worst, worstX, worstY);
+    EXPECT_GT(compared, std::size_t(kW * kH / 8));
+    EXPECT_EQ(misses, 0u);
+    EXPECT_EQ(wrongNormals, 0u);
 }
 
 } // namespace
