@@ -168,7 +168,7 @@ double referenceMilliseconds(const shaders::PreparedSdf& sdf, const std::string&
     const double a = frame(), b = frame(), c = frame();
     // SDFWB_REFERENCE_IMAGES=FOLDER writes what the reference drew, to look at.
     if (const char* folder = std::getenv("SDFWB_REFERENCE_IMAGES")) {
-        renderer::Image image{width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 4)};
+        renderer::Image image{width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 4), {}};
         glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
         for (int y = 0; y < height / 2; ++y) // GL rows run bottom up
             std::swap_ranges(image.rgba.begin() + std::ptrdiff_t(y) * width * 4,

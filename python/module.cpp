@@ -135,6 +135,13 @@ py::dict parameterDict(const std::vector<shaders::ParameterSetting>& settings) {
 // The report's JSON (jobs/JobJson.h) as Python objects: the same keys `--json` prints.
 py::object fromJson(const std::string& json) { return py::module_::import("json").attr("loads")(json); }
 
+// A mesh file's provenance (file, triangles, sign, normalisation's transform, original bounds) as a
+// dict, or None for GLSL.
+py::object meshSourceOf(const jobs::OpenedSdf& opened) {
+    const jobs::MeshSource source = opened.meshSource();
+    return source.json.empty() ? py::object(py::none()) : fromJson(source.json);
+}
+
 py::array_t<float> floatArray(std::vector<py::ssize_t> shape) { return py::array_t<float>(shape); }
 
 py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_t n, std::uint64_t seed, float time,
@@ -191,6 +198,7 @@ py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_
     result["gradient"] = gradients;
     result["bad_rows"] = report->badRows;
     result["seconds"] = report->seconds;
+    result["mesh_source"] = meshSourceOf(opened);
     result["parameters"] = parameterDict(opened.parameters);
     return result;
 }
@@ -254,6 +262,7 @@ py::dict evaluate(const std::string& sdf, py::array_t<float, py::array::c_style 
     result["gradient"] = gradients;
     result["bad_rows"] = report->badRows;
     result["seconds"] = report->seconds;
+    result["mesh_source"] = meshSourceOf(opened);
     return result;
 }
 
@@ -514,7 +523,9 @@ Args:
 Returns:
     dict: position (n, 3), distance (n,) and gradient (n, 3) as float32 NumPy arrays that own their memory
     (gradient raw, not normalised); bad_rows (int: rows with NaN or Inf, e.g. near rays that found no surface);
-    seconds (float); parameters (dict: every declared parameter's value, bools as bool, vectors as tuples).
+    seconds (float); parameters (dict: every declared parameter's value, bools as bool, vectors as tuples);
+    mesh_source (dict for a mesh file: file, triangles, closed, sign, normalize, transform (4x4, column-major),
+    bounds (the file's box); None for GLSL).
 
 Raises:
     ValueError: an argument out of range, an unknown SDF, pattern or parameter, or GLSL errors (with
@@ -545,7 +556,8 @@ Args:
 
 Returns:
     dict: distance (N,) float32; gradient (N, 3) float32 (raw central differences), or None when
-    gradient=False; bad_rows (int: rows with NaN or Inf); seconds (float).
+    gradient=False; bad_rows (int: rows with NaN or Inf); seconds (float); mesh_source (dict for a mesh file, as
+    for sample(); None for GLSL).
 
 Raises:
     ValueError: points not of shape (N, 3), an argument out of range, an unknown SDF or parameter, or GLSL

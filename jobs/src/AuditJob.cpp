@@ -12,6 +12,7 @@ JobResult<AuditJobReport> run(const AuditRequest& request, const ProgressSink& p
     AuditJobReport report;
     report.sdf = sdf->label;
     report.entry = sdf->prepared.signature.entry;
+    report.meshSource = sdf->meshSource();
     report.probeDistance = request.probeDistance;
     report.warnings = sdf->warnings;
     if (request.plane) {

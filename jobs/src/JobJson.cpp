@@ -215,6 +215,7 @@ template <class V> void fields(V& v, ProbeReport& r) {
     v("dropped", r.dropped);
     v("parameters", r.parameters);
     v("seconds", r.seconds);
+    v("mesh_source", r.meshSource);
 }
 
 template <class V> void fields(V& v, RunItemReport& r) {
@@ -274,6 +275,7 @@ template <class V> void fields(V& v, EvalReport& r) {
     v("occupancy_points", r.occupancyPoints);
     v("conventions", r.conventions);
     v("parameters", r.parameters);
+    v("mesh_source", r.meshSource);
     v("warnings", r.warnings);
     v("seconds", r.seconds);
 }
@@ -308,6 +310,7 @@ template <class V> void fields(V& v, MeshReport& r) {
     v("error_points", r.errorPoints);
     v("error_seconds", r.errorSeconds);
     v("parameters", r.parameters);
+    v("mesh_source", r.meshSource);
     v("warnings", r.warnings);
     v("seconds", r.seconds);
 }
@@ -349,6 +352,7 @@ template <class V> void fields(V& v, RenderReport& r) {
     v("frame_ms", r.frameMilliseconds);
     v("seconds", r.seconds);
     v("gl_renderer", r.glRenderer);
+    v("mesh_source", r.meshSource);
     v("warnings", r.warnings);
 }
 
@@ -361,6 +365,7 @@ template <class V> void fields(V& v, AnimateReport& r) {
     v("height", r.height);
     v("render_seconds", r.renderSeconds);
     v("seconds", r.seconds);
+    v("mesh_source", r.meshSource);
     v("warnings", r.warnings);
 }
 
@@ -381,6 +386,7 @@ template <class V> void fields(V& v, SampleReport& r) {
     v("parameters", r.parameters);
     v("instances", r.instances);
     v("index", r.index);
+    v("mesh_source", r.meshSource);
     v("warnings", r.warnings);
 }
 
@@ -525,6 +531,8 @@ json encode(float value) {
     auto end = std::to_chars(text, text + sizeof text, value).ptr;
     return std::strtod(std::string(text, end).c_str(), nullptr);
 }
+// A mesh's provenance as the object its text holds (null for a GLSL SDF).
+json encode(const MeshSource& source) { return source.json.empty() ? json(nullptr) : json::parse(source.json); }
 json encode(const glm::vec3& v) { return json::array({encode(v.x), encode(v.y), encode(v.z)}); }
 // Parameter values as an object, {"radius": 0.3, "offset": [1, 2]}; sweeps as their text form.
 json encode(const std::vector<shaders::ParameterValue>& values) {
@@ -605,6 +613,13 @@ bool fail(std::string& error, const std::string& path, const std::string& expect
 bool decode(const json& in, bool& value, const std::string& path, bool, std::string& error) {
     if (!in.is_boolean()) return fail(error, path, "true or false", in);
     value = in.get<bool>();
+    return true;
+}
+
+bool decode(const json& in, MeshSource& value, const std::string& path, bool, std::string& error) {
+    if (in.is_null()) return value.json.clear(), true;
+    if (!in.is_object()) return fail(error, path, "an object or null", in);
+    value.json = in.dump();
     return true;
 }
 
@@ -821,6 +836,7 @@ namespace {
 json encodeAudit(const AuditJobReport& report) {
     json out = {{"sdf", report.sdf}, {"entry", report.entry}};
     out["parameters"] = encode(report.parameters);
+    out["mesh_source"] = encode(report.meshSource);
     out["warnings"] = encode(report.warnings);
     if (!report.family.empty()) {
         out["probe_distance"] = report.probeDistance;
@@ -877,6 +893,7 @@ template <> Expected<AuditJobReport> reportFromJson<AuditJobReport>(const std::s
     read("sdf", report.sdf);
     read("entry", report.entry);
     read("parameters", report.parameters);
+    read("mesh_source", report.meshSource);
     read("warnings", report.warnings);
     if (in->contains("family")) {
         read("probe_distance", report.probeDistance);

@@ -158,6 +158,13 @@ std::optional<JobError> checkFrame(const FrameRequest& frame) {
 
 } // namespace
 
+MeshSource OpenedSdf::meshSource() const { return prepared.mesh ? MeshSource{prepared.mesh->provenanceJson()} : MeshSource{}; }
+
+renderer::FileMetadata OpenedSdf::fileMetadata() const {
+    if (!prepared.mesh) return {};
+    return {{"sdfwb_mesh_source", prepared.mesh->provenanceJson()}};
+}
+
 JobResult<OpenedSdf> openSdf(const SdfInput& input, const std::string& what) {
     auto path = resolve(input);
     if (!path) return usage(path.error().message);

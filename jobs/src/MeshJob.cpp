@@ -60,6 +60,7 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
     MeshReport report;
     report.sdf = sdf->label;
     report.entry = sdf->prepared.signature.entry;
+    report.meshSource = sdf->meshSource();
     report.resolution = request.resolution;
     report.parameters = shaders::valuesOf(sdf->parameters);
     report.warnings = sdf->warnings;
@@ -155,7 +156,9 @@ JobResult<MeshReport> run(const MeshRequest& request, const ProgressSink& progre
     if (auto error = validate(request)) return *error;
     auto meshed = meshSdf(request, progress);
     if (!meshed) return meshed.error;
-    if (auto written = meshing::writeMesh(request.output, meshed->mesh); !written)
+    std::vector<std::string> comments;
+    if (!meshed->report.meshSource.json.empty()) comments.push_back("sdfwb_mesh_source " + meshed->report.meshSource.json);
+    if (auto written = meshing::writeMesh(request.output, meshed->mesh, comments); !written)
         return JobError{Failure::Work, written.error().message, {}};
     MeshReport report = meshed->report;
     report.output = request.output;
@@ -203,6 +206,7 @@ JobResult<EvalReport> run(const EvalRequest& request, const ProgressSink&) {
     EvalReport report;
     report.mesh = request.mesh;
     report.sdf = sdf->label;
+    report.meshSource = sdf->meshSource();
     report.vertices = mesh->vertices.size();
     report.triangles = mesh->triangleCount();
     report.closed = e->closed;

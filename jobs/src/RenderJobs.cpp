@@ -124,11 +124,13 @@ JobResult<RenderReport> run(const RenderRequest& request, const ProgressSink&) {
         }();
         report.frameMilliseconds = secondsSince(drawStart) * 1e3;
         picture.releaseGl();
+        image.metadata = sdf->fileMetadata();
         if (auto written = renderer::writeImage(request.output, image); !written)
             return JobError{Failure::Work, written.error().message, {}};
         report.output = request.output;
         report.sdf = sdf->label;
         report.entry = "mainImage";
+        report.meshSource = sdf->meshSource();
         report.width = frame.width;
         report.height = frame.height;
         report.shading = "shadertoy picture";
@@ -149,6 +151,7 @@ JobResult<RenderReport> run(const RenderRequest& request, const ProgressSink&) {
         }();
         tracer.releaseGl();
         if (!label.empty()) drawOverlay(image, label, report.warnings);
+        image.metadata = sdf->fileMetadata();
         return renderer::writeImage(request.output, image);
     };
     const Expected<void> written =
@@ -163,6 +166,7 @@ JobResult<RenderReport> run(const RenderRequest& request, const ProgressSink&) {
     report.output = request.output;
     report.sdf = sdf->label;
     report.entry = sdf->prepared.signature.entry;
+    report.meshSource = sdf->meshSource();
     report.width = request.frame.width;
     report.height = request.frame.height;
     report.shading = renderer::shadingModeName(request.frame.shading.mode);
@@ -255,6 +259,7 @@ JobResult<ProbeReport> run(const ProbeRequest& request, const ProgressSink&) {
     tracer.releaseGl();
     ProbeReport report;
     report.sdf = sdf->label;
+    report.meshSource = sdf->meshSource();
     report.entry = sdf->prepared.signature.entry;
     report.width = frame.width;
     report.height = frame.height;
@@ -342,7 +347,8 @@ JobResult<AnimateReport> run(const AnimateRequest& request, const ProgressSink& 
     renderer::SdfRenderer tracer;
     if (auto error = setUp(tracer, request.frame, *sdf, "animate")) return *error;
     const FrameRequest& frame = request.frame;
-    auto writer = renderer::VideoWriter::open(request.output, frame.width, frame.height, request.framesPerSecond);
+    auto writer =
+        renderer::VideoWriter::open(request.output, frame.width, frame.height, request.framesPerSecond, sdf->fileMetadata());
     if (!writer) return JobError{Failure::Work, writer.error().message, {}};
 
     const int frames = std::max(1, int(std::lround(double(request.seconds) * request.framesPerSecond)));
@@ -379,6 +385,7 @@ JobResult<AnimateReport> run(const AnimateRequest& request, const ProgressSink& 
     if (auto ok = (*writer)->finish(); !ok) return JobError{Failure::Work, ok.error().message, {}};
     report.output = request.output;
     report.sdf = sdf->label;
+    report.meshSource = sdf->meshSource();
     report.frames = frames;
     report.framesPerSecond = request.framesPerSecond;
     report.width = frame.width & ~1;

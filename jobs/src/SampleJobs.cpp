@@ -78,7 +78,7 @@ JobResult<SampleReport> run(const SampleRequest& request, const ProgressSink& pr
     if (!request.nearWidths.empty()) metadata.pattern += " " + request.nearWidths;
     if (request.nearTruncation > 0.0f) metadata.pattern += " truncate " + std::to_string(request.nearTruncation);
     metadata.version = SDFWB_VERSION;
-    if (sdf->prepared.mesh) metadata.mesh = sdf->prepared.mesh->provenanceJson();
+    metadata.mesh = sdf->meshSource().json;
     const bool family = !request.family.empty();
     const std::uint64_t total = job.rows() * instances.size();
     std::vector<std::string> written;
@@ -125,6 +125,7 @@ JobResult<SampleReport> run(const SampleRequest& request, const ProgressSink& pr
     report.output = request.output;
     report.format = sampling::formatName(format);
     report.sdf = request.sdf.sdf;
+    report.meshSource = sdf->meshSource();
     report.pattern = request.pattern;
     report.count = job.count;
     report.seed = job.seed;

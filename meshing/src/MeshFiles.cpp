@@ -40,11 +40,13 @@ const char* formatId(const fs::path& path) {
 
 // Binary PLY written here: assimp names the face list `vertex_index`, which meshio 7 refuses; the
 // PLY definition's name is `vertex_indices`, which meshio, Open3D and assimp all read.
-Expected<void> writePly(const fs::path& target, const fs::path& temporary, const Mesh& mesh) {
+Expected<void> writePly(const fs::path& target, const fs::path& temporary, const Mesh& mesh,
+                        const std::vector<std::string>& comments) {
     std::ofstream out(temporary, std::ios::binary);
-    out << "ply\nformat binary_little_endian 1.0\ncomment sdfwb dual contouring\nelement vertex " << mesh.vertices.size()
-        << "\nproperty float x\nproperty float y\nproperty float z\nelement face " << mesh.triangleCount()
-        << "\nproperty list uchar int vertex_indices\nend_header\n";
+    out << "ply\nformat binary_little_endian 1.0\ncomment sdfwb dual contouring\n";
+    for (const std::string& comment : comments) out << "comment " << comment << '\n';
+    out << "element vertex " << mesh.vertices.size() << "\nproperty float x\nproperty float y\nproperty float z\nelement face "
+        << mesh.triangleCount() << "\nproperty list uchar int vertex_indices\nend_header\n";
     out.write(reinterpret_cast<const char*>(mesh.vertices.data()), std::streamsize(mesh.vertices.size() * sizeof(glm::vec3)));
     for (std::size_t f = 0; f < mesh.triangleCount(); ++f) {
         const unsigned char three = 3;
@@ -58,9 +60,11 @@ Expected<void> writePly(const fs::path& target, const fs::path& temporary, const
 
 // OBJ written here as well: assimp's OBJ carries normals indexed apart from the positions, which
 // meshio 7 refuses (it expects one normal per vertex).
-Expected<void> writeObj(const fs::path& target, const fs::path& temporary, const Mesh& mesh) {
+Expected<void> writeObj(const fs::path& target, const fs::path& temporary, const Mesh& mesh,
+                        const std::vector<std::string>& comments) {
     std::ofstream out(temporary, std::ios::binary);
     out << "# sdfwb dual contouring: " << mesh.vertices.size() << " vertices, " << mesh.triangleCount() << " triangles\n";
+    for (const std::string& comment : comments) out << "# " << comment << '\n';
     char line[96];
     for (const glm::vec3& v : mesh.vertices) {
         std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", double(v.x), double(v.y), double(v.z));
@@ -78,7 +82,7 @@ Expected<void> writeObj(const fs::path& target, const fs::path& temporary, const
 
 bool canWriteMesh(const fs::path& path) { return formatId(path) != nullptr; }
 
-Expected<void> writeMesh(const fs::path& path, const Mesh& mesh) {
+Expected<void> writeMesh(const fs::path& path, const Mesh& mesh, const std::vector<std::string>& comments) {
     const char* id = formatId(path);
     if (!id) return makeError(path.string() + ": unsupported mesh type (use .ply, .obj, .stl or .glb)");
     static_assert(sizeof(glm::vec3) == 12, "vertices are written as three floats");
@@ -110,7 +114,9 @@ Expected<void> writeMesh(const fs::path& path, const Mesh& mesh) {
     const fs::path temporary =
         folder / ("." + path.stem().string() + ".partial-" + std::to_string(::getpid()) + path.extension().string());
     if (std::string(id) == "plyb" || std::string(id) == "obj") {
-        if (auto ok = std::string(id) == "plyb" ? writePly(path, temporary, mesh) : writeObj(path, temporary, mesh); !ok) {
+        if (auto ok =
+                std::string(id) == "plyb" ? writePly(path, temporary, mesh, comments) : writeObj(path, temporary, mesh, comments);
+            !ok) {
             std::error_code ec;
             fs::remove(temporary, ec);
             return ok;

@@ -100,8 +100,8 @@ def evaluate(sdf: str, points: Any, params: Mapping[str, ParamValue] | None = No
 
     Returns:
         dict: distance (N,) float32; gradient (N, 3) float32 (raw central differences), or None when
-        gradient=False; bad_rows (int: rows with NaN or Inf); seconds (float). For a tensor in, distance
-        and gradient are torch tensors.
+        gradient=False; bad_rows (int: rows with NaN or Inf); seconds (float); mesh_source (dict for a
+        mesh file, as for sample(); None for GLSL). For a tensor in, distance and gradient are torch tensors.
 
     Raises:
         ValueError: points not of shape (N, 3), a tensor on a device other than the CPU, an argument out of

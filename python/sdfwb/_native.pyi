@@ -40,6 +40,7 @@ class SampleResult(TypedDict):
     bad_rows: int
     seconds: float
     parameters: dict[str, ParamSetting]
+    mesh_source: dict[str, Any] | None
 
 @type_check_only
 class EvaluateResult(TypedDict):
@@ -47,6 +48,7 @@ class EvaluateResult(TypedDict):
     gradient: npt.NDArray[np.float32] | None
     bad_rows: int
     seconds: float
+    mesh_source: dict[str, Any] | None
 
 @type_check_only
 class SampleMetadata(TypedDict):

@@ -75,6 +75,23 @@ def test_sample_files_record_the_mesh_provenance(tmp_path):
         assert mesh["sign"] == "parity" and mesh["normalize"] == "unit-sphere"
         assert mesh["bounds"] == [-0.5, -0.5, -0.5, 0.5, 0.5, 0.5]
         assert np.isclose(mesh["transform"][0], 1 / np.sqrt(0.75)) and mesh["transform"][15] == 1
+        report = sdfwb.run({"kind": "sample", "sdf": cube, "pattern": "rand", "n": 64, "output": out,
+                            "sign": "parity", "normalize": "unit-sphere"})
+        assert report["mesh_source"] == mesh  # the report says what the file says
+
+
+def test_results_and_reports_name_the_mesh_they_came_from(tmp_path):
+    cube = write_cube(tmp_path / "cube.obj")
+    points = np.zeros((4, 3), dtype=np.float32)
+    for result in (sdfwb.evaluate(cube, points, normalize="unit-cube"),
+                   sdfwb.sample(cube, "rand", 16, normalize="unit-cube"),
+                   sdfwb.audit(cube, samples=200, normalize="unit-cube"),
+                   sdfwb.mesh(cube, resolution=16, normalize="unit-cube")["report"]):
+        source = result["mesh_source"]
+        assert source["file"] == "cube.obj" and source["sign"] == "winding" and source["normalize"] == "unit-cube"
+        assert np.isclose(source["transform"][0], 2.0) and source["bounds"][3] == 0.5
+    assert sdfwb.evaluate("sphere", points)["mesh_source"] is None
+    assert sdfwb.sample("sphere", "rand", 16)["mesh_source"] is None
 
 
 def test_meshing_an_open_cube_gives_a_watertight_mesh(tmp_path):

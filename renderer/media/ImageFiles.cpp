@@ -33,7 +33,7 @@ namespace {
 // write checked, fsync, rename): the image libraries do not all report a failed write (libpng
 // ignores a full disk), and a half-written file must never replace a good one.
 Expected<void> encodeAndWrite(const fs::path& path, int width, int height, OIIO::TypeDesc source, const void* pixels,
-                              std::size_t pixelCount) {
+                              std::size_t pixelCount, const FileMetadata& metadata) {
     if (width <= 0 || height <= 0 || pixelCount != std::size_t(width) * std::size_t(height))
         return makeError(path.string() + ": refusing to write an empty or inconsistent image");
     auto output = OIIO::ImageOutput::create(path.string());
@@ -50,6 +50,7 @@ Expected<void> encodeAndWrite(const fs::path& path, int width, int height, OIIO:
                                   : isHighDynamicRange(path) ? OIIO::TypeDesc::FLOAT
                                                              : OIIO::TypeDesc::UINT8;
     OIIO::ImageSpec spec(width, height, channels, stored);
+    for (const auto& [key, value] : metadata) spec.attribute(key, value);
     std::vector<unsigned char> encoded;
     OIIO::Filesystem::IOVecOutput memory(encoded);
     if (!output->set_ioproxy(&memory) || !output->open(path.string(), spec))
@@ -69,16 +70,18 @@ Expected<void> encodeAndWrite(const fs::path& path, int width, int height, OIIO:
 Expected<void> writeImage(const fs::path& path, const Image& image) {
     if (image.rgba.size() != std::size_t(image.width) * std::size_t(image.height) * 4)
         return makeError(path.string() + ": refusing to write an empty or inconsistent image");
-    return encodeAndWrite(path, image.width, image.height, OIIO::TypeDesc::UINT8, image.rgba.data(), image.rgba.size() / 4);
+    return encodeAndWrite(path, image.width, image.height, OIIO::TypeDesc::UINT8, image.rgba.data(), image.rgba.size() / 4,
+                          image.metadata);
 }
 
 Expected<void> writeImage(const fs::path& path, const FloatImage& image) {
     if (image.rgba.size() != std::size_t(image.width) * std::size_t(image.height) * 4)
         return makeError(path.string() + ": refusing to write an empty or inconsistent image");
     if (isHighDynamicRange(path))
-        return encodeAndWrite(path, image.width, image.height, OIIO::TypeDesc::FLOAT, image.rgba.data(), image.rgba.size() / 4);
+        return encodeAndWrite(path, image.width, image.height, OIIO::TypeDesc::FLOAT, image.rgba.data(), image.rgba.size() / 4,
+                              image.metadata);
     // 8-bit formats: what the screen would show (clamped), rounded.
-    Image quantised{image.width, image.height, std::vector<std::uint8_t>(image.rgba.size())};
+    Image quantised{image.width, image.height, std::vector<std::uint8_t>(image.rgba.size()), image.metadata};
     for (std::size_t i = 0; i < image.rgba.size(); ++i)
         quantised.rgba[i] = std::uint8_t(std::lround(std::clamp(image.rgba[i], 0.0f, 1.0f) * 255.0f));
     return media::writeImage(path, quantised);
@@ -143,7 +146,7 @@ Expected<FloatImage> readFloatImage(const fs::path& path) {
     std::vector<float> raw(pixels * std::size_t(spec.nchannels));
     if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, raw.data()))
         return makeError(path.string() + ": cannot decode image: " + input->geterror());
-    FloatImage image{spec.width, spec.height, std::vector<float>(pixels * 4, 1.0f)};
+    FloatImage image{spec.width, spec.height, std::vector<float>(pixels * 4, 1.0f), {}};
     for (std::size_t i = 0; i < pixels; ++i)
         for (int c = 0; c < 4; ++c)
             if (c < spec.nchannels)

@@ -16,7 +16,7 @@
 
 namespace sdfwb::renderer::media {
 
-inline constexpr int kAbiVersion = 1;
+inline constexpr int kAbiVersion = 2;
 inline constexpr const char* kModuleFile = "libsdfwb_media.so";
 inline constexpr const char* kEntryPoint = "sdfwb_media_api";
 
@@ -38,8 +38,8 @@ struct Api {
     Expected<FloatImage> (*readFloatImage)(const std::filesystem::path&);
     Expected<Image> (*readImage)(const std::filesystem::path&);
     bool (*canWriteImageExtension)(const std::string&);
-    Expected<std::unique_ptr<VideoEncoder>> (*openVideo)(const std::filesystem::path&, int width, int height,
-                                                         int framesPerSecond);
+    Expected<std::unique_ptr<VideoEncoder>> (*openVideo)(const std::filesystem::path&, int width, int height, int framesPerSecond,
+                                                         const FileMetadata&);
 };
 
 // The module's functions, defined in ImageFiles.cpp and VideoEncoder.cpp.
@@ -50,6 +50,7 @@ Expected<void> drawLabel(FloatImage& image, const std::string& text);
 Expected<FloatImage> readFloatImage(const std::filesystem::path& path);
 Expected<Image> readImage(const std::filesystem::path& path);
 bool canWriteImageExtension(const std::string& extension);
-Expected<std::unique_ptr<VideoEncoder>> openVideo(const std::filesystem::path& path, int width, int height, int framesPerSecond);
+Expected<std::unique_ptr<VideoEncoder>> openVideo(const std::filesystem::path& path, int width, int height, int framesPerSecond,
+                                                  const FileMetadata& metadata);
 
 } // namespace sdfwb::renderer::media

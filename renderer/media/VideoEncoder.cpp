@@ -100,7 +100,8 @@ public:
     int frames() const override { return frameCount; }
 };
 
-Expected<std::unique_ptr<VideoEncoder>> openVideo(const fs::path& path, int width, int height, int framesPerSecond) {
+Expected<std::unique_ptr<VideoEncoder>> openVideo(const fs::path& path, int width, int height, int framesPerSecond,
+                                                  const FileMetadata& metadata) {
     if (width < 2 || height < 2) return makeError(path.string() + ": video frames must be at least 2x2");
     if (framesPerSecond < 1 || framesPerSecond > 240) return makeError(path.string() + ": frame rate must be 1..240");
     auto writer = std::make_unique<H264Encoder>();
@@ -138,7 +139,14 @@ Expected<std::unique_ptr<VideoEncoder>> openVideo(const fs::path& path, int widt
     v.stream->time_base = v.codec->time_base;
     if ((result = avio_open(&v.format->pb, v.temporary.c_str(), AVIO_FLAG_WRITE)) < 0)
         return makeError(path.string() + ": cannot write in " + folder.string() + ": " + ffmpegError(result));
-    if ((result = avformat_write_header(v.format, nullptr)) < 0) return makeError(path.string() + ": " + ffmpegError(result));
+    // The MP4 muxer keeps only the tags it knows unless asked to write every one (ours are
+    // sdfwb_... keys, read back by ffprobe -show_format).
+    for (const auto& [key, value] : metadata) av_dict_set(&v.format->metadata, key.c_str(), value.c_str(), 0);
+    AVDictionary* options = nullptr;
+    if (!metadata.empty()) av_dict_set(&options, "movflags", "use_metadata_tags", 0);
+    result = avformat_write_header(v.format, &options);
+    av_dict_free(&options);
+    if (result < 0) return makeError(path.string() + ": " + ffmpegError(result));
     v.frame = av_frame_alloc();
     v.packet = av_packet_alloc();
     if (!v.frame || !v.packet) return makeError(path.string() + ": out of memory");

@@ -73,9 +73,10 @@ VideoWriter::VideoWriter() : m_impl(std::make_unique<Impl>()) {}
 VideoWriter::~VideoWriter() = default;
 int VideoWriter::frames() const { return m_impl->encoder->frames(); }
 
-Expected<std::unique_ptr<VideoWriter>> VideoWriter::open(const fs::path& path, int width, int height, int framesPerSecond) {
+Expected<std::unique_ptr<VideoWriter>> VideoWriter::open(const fs::path& path, int width, int height, int framesPerSecond,
+                                                         const FileMetadata& metadata) {
     if (!api()) return makeError(path.string() + ": " + api().error().message);
-    auto encoder = (*api())->openVideo(path, width, height, framesPerSecond);
+    auto encoder = (*api())->openVideo(path, width, height, framesPerSecond, metadata);
     if (!encoder) return encoder.error();
     std::unique_ptr<VideoWriter> writer(new VideoWriter());
     writer->m_impl->encoder = std::move(*encoder);

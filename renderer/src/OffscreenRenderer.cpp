@@ -73,7 +73,7 @@ Image OffscreenRenderer::render(SdfRenderer& renderer, int width, int height, co
     FrameStats frame = renderer.renderScaled(width, height, scale, camera, time, true);
     if (stats) *stats = frame;
 
-    Image image{width, height, readTopDown<std::uint8_t>(width, height, GL_UNSIGNED_BYTE)};
+    Image image{width, height, readTopDown<std::uint8_t>(width, height, GL_UNSIGNED_BYTE), {}};
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return image;
 }
@@ -82,7 +82,7 @@ Image OffscreenRenderer::renderPicture(ShadertoyPicture& picture, int width, int
     m_impl->ensureSize(width, height);
     glBindFramebuffer(GL_FRAMEBUFFER, m_impl->framebuffer.id());
     (void)picture.render(width, height, inputs, true);
-    Image image{width, height, readTopDown<std::uint8_t>(width, height, GL_UNSIGNED_BYTE)};
+    Image image{width, height, readTopDown<std::uint8_t>(width, height, GL_UNSIGNED_BYTE), {}};
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return image;
 }
@@ -93,7 +93,7 @@ FloatImage OffscreenRenderer::renderFloat(SdfRenderer& renderer, int width, int 
     glBindFramebuffer(GL_FRAMEBUFFER, m_impl->floatFramebuffer.id());
     FrameStats frame = renderer.render(width, height, camera, time, true);
     if (stats) *stats = frame;
-    FloatImage image{width, height, readTopDown<float>(width, height, GL_FLOAT)};
+    FloatImage image{width, height, readTopDown<float>(width, height, GL_FLOAT), {}};
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return image;
 }

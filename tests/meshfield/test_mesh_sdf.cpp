@@ -6,6 +6,7 @@
 #include "TestMeshes.h"
 #include "common/ExactRays.h"
 
+#include <jobs/JobJson.h>
 #include <jobs/Jobs.h>
 #include <meshfield/MeshField.h>
 #include <renderer/OffscreenRenderer.h>
@@ -370,6 +371,126 @@ TEST_F(MeshSdfTest, TheTracerShadesEveryPixelOfAMeshWithItsFacesNormal) {
     EXPECT_GT(compared, std::size_t(kW * kH / 8));
     EXPECT_EQ(misses, 0u);
     EXPECT_EQ(wrongNormals, 0u);
+}
+
+// Every output of a job on a mesh says where its field came from (the file, the sign method, the
+// normalisation's transform and the file's bounds): each report as "mesh_source", and the files
+// themselves (PNG and EXR attributes, MP4 tags, PLY and OBJ comments; samples are tested with
+// their formats). A GLSL SDF's reports carry null.
+TEST_F(MeshSdfTest, EveryOutputOfAJobOnAMeshCarriesTheMeshsProvenance) {
+    const fs::path folder = fs::temp_directory_path() / ("sdfwb_meshsource_" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    const meshfield::TriangleMesh mesh = testing::torusMesh(0.6f, 0.25f, 24, 12);
+    {
+        std::ofstream obj(folder / "torus.obj");
+        for (const glm::vec3& v : mesh.vertices) obj << "v " << v.x << ' ' << v.y << ' ' << v.z << '\n';
+        for (std::size_t t = 0; t < mesh.indices.size(); t += 3)
+            obj << "f " << mesh.indices[t] + 1 << ' ' << mesh.indices[t + 1] + 1 << ' ' << mesh.indices[t + 2] + 1 << '\n';
+    }
+    jobs::SdfInput input;
+    input.sdf = (folder / "torus.obj").string();
+    input.sign = "parity";
+    input.normalize = "unit-sphere";
+    // The provenance a report or file carries, checked against the mesh as written.
+    auto checkSource = [&](const std::string& text, const std::string& where) {
+        SCOPED_TRACE(where);
+        ASSERT_FALSE(text.empty());
+        const std::string expected =
+            (*meshfield::loadMeshField(input.sdf, {meshfield::SignMethod::Parity, meshfield::Normalization::UnitSphere}))
+                ->provenanceJson();
+        EXPECT_EQ(text, expected);
+        EXPECT_NE(text.find("\"sign\": \"parity\""), std::string::npos) << text;
+        EXPECT_NE(text.find("\"normalize\": \"unit-sphere\""), std::string::npos) << text;
+        EXPECT_NE(text.find("\"transform\": [1.17647"), std::string::npos) << text; // 1 / 0.85: the farthest vertex
+        EXPECT_NE(text.find("\"bounds\": [-0.85"), std::string::npos) << text;
+    };
+    // The file's bytes hold the JSON text after the key.
+    auto fileSource = [](const fs::path& file, const std::string& key) {
+        std::ifstream in(file, std::ios::binary);
+        const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        const std::size_t at = bytes.find(key);
+        if (at == std::string::npos) return std::string();
+        const std::size_t start = bytes.find('{', at);
+        const std::size_t end = bytes.find('}', start);
+        return bytes.substr(start, end - start + 1);
+    };
+
+    jobs::FrameRequest frame;
+    frame.sdf = input;
+    frame.width = 48;
+    frame.height = 32;
+    for (const char* name : {"torus.png", "torus.exr"}) {
+        jobs::RenderRequest render{frame, (folder / name).string()};
+        auto report = jobs::run(render, {});
+        ASSERT_TRUE(bool(report)) << report.error.message;
+        checkSource(report->meshSource.json, std::string("render report, ") + name);
+        checkSource(fileSource(folder / name, "sdfwb_mesh_source"), name);
+        // Through JSON and back (the workbench reads its child processes' reports this way).
+        auto back = jobs::reportFromJson<jobs::RenderReport>(jobs::toJson(*report));
+        ASSERT_TRUE(back.hasValue()) << back.error().message;
+        EXPECT_EQ(jobs::toJson(*back), jobs::toJson(*report));
+    }
+    jobs::AnimateRequest animate{frame, (folder / "torus.mp4").string(), 0.1f, 30, true, {}};
+    auto animated = jobs::run(animate, {});
+    ASSERT_TRUE(bool(animated)) << animated.error.message;
+    checkSource(animated->meshSource.json, "animate report");
+    checkSource(fileSource(folder / "torus.mp4", "sdfwb_mesh_source"), "torus.mp4");
+    jobs::ProbeRequest probe{frame, 24, 16};
+    auto probed = jobs::run(probe, {});
+    ASSERT_TRUE(bool(probed)) << probed.error.message;
+    checkSource(probed->meshSource.json, "probe report");
+    for (const char* name : {"shell.ply", "shell.obj"}) {
+        jobs::MeshRequest meshRequest;
+        meshRequest.sdf = input;
+        meshRequest.output = (folder / name).string();
+        meshRequest.resolution = 24;
+        meshRequest.lipschitz = 1.0f; // no audit, no error: the files are what is tested here
+        meshRequest.errorSamples = 0;
+        auto meshed = jobs::run(meshRequest, {});
+        ASSERT_TRUE(bool(meshed)) << meshed.error.message;
+        checkSource(meshed->meshSource.json, std::string("mesh report, ") + name);
+        checkSource(fileSource(folder / name, "sdfwb_mesh_source"), name);
+        auto reread = meshing::readMesh(folder / name); // the comment does not disturb readers
+        ASSERT_TRUE(reread.hasValue()) << reread.error().message;
+        EXPECT_EQ(reread->triangleCount(), meshed->triangles);
+    }
+    jobs::EvalRequest eval;
+    eval.sdf = input;
+    eval.mesh = (folder / "shell.ply").string();
+    eval.points = 1000;
+    eval.occupancyResolution = 0;
+    auto evaluated = jobs::run(eval, {});
+    ASSERT_TRUE(bool(evaluated)) << evaluated.error.message;
+    checkSource(evaluated->meshSource.json, "eval report");
+    jobs::AuditRequest audit;
+    audit.sdf = input;
+    audit.samples = 500;
+    auto audited = jobs::run(audit, {});
+    ASSERT_TRUE(bool(audited)) << audited.error.message;
+    checkSource(audited->meshSource.json, "audit report");
+    auto auditBack = jobs::reportFromJson<jobs::AuditJobReport>(jobs::toJson(*audited));
+    ASSERT_TRUE(auditBack.hasValue()) << auditBack.error().message;
+    EXPECT_EQ(jobs::toJson(*auditBack), jobs::toJson(*audited));
+    jobs::SampleRequest sample;
+    sample.sdf = input;
+    sample.count = 256;
+    sample.pattern = "rand";
+    sample.output = (folder / "torus.npz").string();
+    auto sampled = jobs::run(sample, {});
+    ASSERT_TRUE(bool(sampled)) << sampled.error.message;
+    checkSource(sampled->meshSource.json, "sample report");
+
+    // GLSL: no provenance, and null in the JSON.
+    jobs::FrameRequest sphere = frame;
+    sphere.sdf = jobs::SdfInput{};
+    sphere.sdf.sdf = "sphere";
+    jobs::RenderRequest glsl{sphere, (folder / "sphere.png").string()};
+    auto plain = jobs::run(glsl, {});
+    ASSERT_TRUE(bool(plain)) << plain.error.message;
+    EXPECT_TRUE(plain->meshSource.json.empty());
+    EXPECT_NE(jobs::toJson(*plain, -1).find("\"mesh_source\":null"), std::string::npos) << jobs::toJson(*plain);
+    EXPECT_EQ(fileSource(folder / "sphere.png", "sdfwb_mesh_source"), "");
+    fs::remove_all(folder);
 }
 
 } // namespace

@@ -7,6 +7,7 @@
 
 #include <jobs/Requests.h>
 #include <meshing/Mesh.h>
+#include <renderer/Image.h>
 
 #include <core/Progress.h>
 #include <shaders/Diagnostic.h>
@@ -52,6 +53,11 @@ struct OpenedSdf {
     std::string label; // the resolved path, or the name given with source text ("<source>" without one)
     std::vector<shaders::ParameterSetting> parameters; // every declared parameter, with the input's values
     std::vector<std::string> warnings;                 // values outside a declared @range
+
+    MeshSource meshSource() const; // a mesh file's provenance for the report (empty for GLSL)
+    // What image and video files carry beside their pixels: a mesh's provenance as
+    // "sdfwb_mesh_source" (nothing for GLSL).
+    renderer::FileMetadata fileMetadata() const;
 };
 
 // The shared "open the SDF" step: resolves a dataset name or a path (Usage when neither exists),

@@ -212,6 +212,14 @@ const char* kindName(const Request& request);
 
 // ---- reports ----
 
+// Where a mesh SDF came from (meshfield::MeshField::provenanceJson: the file, its triangle count,
+// the sign method, the normalisation's 4x4 transform and the file's bounding box), as JSON text;
+// empty when the SDF is GLSL. Every report of a job on a mesh carries it, as "mesh_source".
+struct MeshSource {
+    std::string json;
+    bool operator==(const MeshSource&) const = default;
+};
+
 struct RenderReport {
     std::string output;
     std::string sdf;   // the resolved path (or the name given with source text)
@@ -221,6 +229,7 @@ struct RenderReport {
     double frameMilliseconds = 0.0;
     double seconds = 0.0;
     std::string glRenderer;
+    MeshSource meshSource;
     std::vector<std::string> warnings;
     bool operator==(const RenderReport&) const = default;
 };
@@ -233,6 +242,7 @@ struct AnimateReport {
     int width = 0, height = 0; // as encoded (even)
     double renderSeconds = 0.0;
     double seconds = 0.0;
+    MeshSource meshSource;
     std::vector<std::string> warnings;
     bool operator==(const AnimateReport&) const = default;
 };
@@ -264,7 +274,8 @@ struct SampleReport {
     std::vector<shaders::ParameterValue> parameters; // every declared parameter's value (a single run)
     std::vector<SampleInstance> instances;           // a family: one per output
     std::string index;                               // a family: the index file (this report as JSON)
-    std::vector<std::string> warnings;               // values outside a declared @range
+    MeshSource meshSource;
+    std::vector<std::string> warnings; // values outside a declared @range
     bool operator==(const SampleReport&) const = default;
 };
 
@@ -300,6 +311,7 @@ struct AuditJobReport {
     std::optional<PlaneSpec> plane;
     std::optional<sampling::PlaneReadout> readout;
     std::vector<AuditInstance> family;
+    MeshSource meshSource;
     std::vector<std::string> warnings; // values outside a declared @range
 };
 
@@ -356,6 +368,7 @@ struct MeshReport {
     std::uint64_t errorPoints = 0;
     double errorSeconds = 0.0;
     std::vector<shaders::ParameterValue> parameters;
+    MeshSource meshSource;
     std::vector<std::string> warnings;
     double seconds = 0.0;
     bool operator==(const MeshReport&) const = default;
@@ -373,6 +386,7 @@ struct EvalReport {
     std::optional<float> iou;
     std::string conventions; // what each figure means (squared or not, counts, normalisation)
     std::vector<shaders::ParameterValue> parameters;
+    MeshSource meshSource;
     std::vector<std::string> warnings;
     double seconds = 0.0;
     bool operator==(const EvalReport&) const = default;
@@ -410,6 +424,7 @@ struct ProbeReport {
     std::vector<ProbeStep> events;
     std::uint64_t dropped = 0; // events past the recorder's capacity
     std::vector<shaders::ParameterValue> parameters;
+    MeshSource meshSource;
     double seconds = 0.0;
     bool operator==(const ProbeReport&) const = default;
 };

@@ -139,9 +139,11 @@ struct MeshEvaluation {
 Expected<MeshEvaluation> evaluateMesh(const shaders::PreparedSdf& sdf, const Mesh& mesh, const EvalOptions& options);
 
 // .ply (binary), .obj, .stl (binary) or .glb, by the extension; written to a temporary file
-// beside the target and renamed into place. `comment` goes where the format has room (PLY).
+// beside the target and renamed into place.
 bool canWriteMesh(const std::filesystem::path& path);
-Expected<void> writeMesh(const std::filesystem::path& path, const Mesh& mesh);
+// `comments` (one line each) go into a PLY's header and an OBJ's first lines; STL and glTF
+// files have no place for them.
+Expected<void> writeMesh(const std::filesystem::path& path, const Mesh& mesh, const std::vector<std::string>& comments = {});
 // Any format assimp reads; equal positions are merged so shared edges share indices.
 Expected<Mesh> readMesh(const std::filesystem::path& path);
 

@@ -13,9 +13,10 @@ namespace sdfwb::renderer {
 
 class VideoWriter {
 public:
-    // width and height are rounded down to even numbers (4:2:0 chroma needs them even).
+    // width and height are rounded down to even numbers (4:2:0 chroma needs them even); `metadata`
+    // goes into the file's tags.
     static Expected<std::unique_ptr<VideoWriter>> open(const std::filesystem::path& path, int width, int height,
-                                                       int framesPerSecond);
+                                                       int framesPerSecond, const FileMetadata& metadata = {});
     ~VideoWriter();
     VideoWriter(const VideoWriter&) = delete;
     VideoWriter& operator=(const VideoWriter&) = delete;
