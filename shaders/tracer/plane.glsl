@@ -9,15 +9,28 @@ uniform float sdfwb_planeOffset;
 uniform float sdfwb_contourSpacing;   // isocontour spacing (1/64 by default)
 uniform float sdfwb_rampDistance;     // distance at which the outside ramp reaches full blue
 
+// How much the field f at plane point p changes from one pixel to the next. A mesh's field leaves
+// its helper lanes unevaluated (mesh_field.glsl), so fwidth(f) would read their placeholder values
+// along every primitive's edge. A mesh's field is a distance (|grad f| = 1): with the gradient in
+// the plane at a uniform angle to the pixel grid, |df/dx| + |df/dy| averages 4/pi times a pixel's
+// side on the plane, which stands in.
+float sdfwb_fieldPerPixel(float f, vec3 p) {
+#ifdef SDFWB_MESH_FRAGMENT
+    return max(0.5 * (length(dFdx(p)) + length(dFdy(p))) * 1.2732395, 1e-9);
+#else
+    return max(fwidth(f), 1e-9);
+#endif
+}
+
 // Coverage in [0, 1] of a line of `widthPixels` at the zeros of `value` (value's units change by
-// fwidth(value) per pixel).
-float sdfwb_lineCoverage(float value, float widthPixels) {
-    float perPixel = max(fwidth(value), 1e-9);
+// perPixel per pixel).
+float sdfwb_lineCoverage(float value, float perPixel, float widthPixels) {
     return 1.0 - smoothstep(0.5 * widthPixels - 0.5, 0.5 * widthPixels + 0.5, abs(value) / perPixel);
 }
 
 vec3 sdfwb_planeColor(vec3 p) {
     float f = sdfwb_sdf(p);
+    float fPerPixel = sdfwb_fieldPerPixel(f, p); // before any return: derivatives need the whole quad
     if (isnan(f) || isinf(f)) return vec3(1.0, 0.0, 1.0);
     vec3 color;
     if (f < 0.0) {
@@ -28,7 +41,7 @@ vec3 sdfwb_planeColor(vec3 p) {
         // isocontours every spacing (outside only, as in the paper)
         float phase = f / sdfwb_contourSpacing;
         float contour = phase - floor(phase + 0.5);
-        float perPixel = max(fwidth(phase), 1e-9);
+        float perPixel = fPerPixel / sdfwb_contourSpacing;
         float thin = 1.0 - smoothstep(0.25, 1.0, abs(contour) / perPixel);
         // fade contours out where they would be denser than ~3 pixels apart
         thin *= clamp(1.0 / (perPixel * 3.0), 0.0, 1.0);
@@ -54,7 +67,7 @@ vec3 sdfwb_planeColor(vec3 p) {
     }
 #endif
     // the zero contour: thick and black
-    color = mix(color, vec3(0.0), sdfwb_lineCoverage(f, 3.0));
+    color = mix(color, vec3(0.0), sdfwb_lineCoverage(f, fPerPixel, 3.0));
     return color;
 }
 

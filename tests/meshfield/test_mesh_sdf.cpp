@@ -493,5 +493,46 @@ TEST_F(MeshSdfTest, EveryOutputOfAJobOnAMeshCarriesTheMeshsProvenance) {
     fs::remove_all(folder);
 }
 
+// The cutting plane over a mesh's field, seen from above through the proxy: inside the torus's
+// section, away from the zero contour, every pixel is the solid inside colour. The plane draws its
+// lines with screen-space derivatives, which read the helper lanes that mesh_field.glsl leaves
+// unevaluated; when the plane took fwidth of those values, black lines ran along the proxy's edges.
+TEST_F(MeshSdfTest, ThePlaneOverAMeshIsCleanAlongThePrimitivesEdges) {
+    const auto mesh = testing::torusMesh(0.6f, 0.3f, 64, 32);
+    auto field = meshfield::makeMeshField(mesh, "torus.obj", {});
+    ASSERT_TRUE(field.hasValue());
+    renderer::SdfRenderer sdfRenderer;
+    renderer::CuttingPlane plane;
+    plane.enabled = true;
+    plane.lipschitzOverlay = false;
+    ASSERT_TRUE(sdfRenderer.setPlane(plane).empty());
+    const auto diagnostics = sdfRenderer.setSdf(shaders::prepareMeshSdf(*field, "torus.obj"));
+    ASSERT_FALSE(shaders::hasErrors(diagnostics)) << (diagnostics.empty() ? "" : shaders::formatDiagnostic(diagnostics[0]));
+    renderer::Camera camera;
+    camera.position = {0.3f, -0.4f, 2.6f}; // above the plane z = 0, a little off its axis
+    constexpr int kW = 160, kH = 120;
+    renderer::OffscreenRenderer offscreen;
+    const renderer::Image image = offscreen.render(sdfRenderer, kW, kH, camera, 0.0f);
+    sdfRenderer.releaseGl();
+    const dvec3 origin(camera.position);
+    std::size_t inside = 0, marked = 0;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            const dvec3 d = testing::pixelRay(camera, x, y, kW, kH);
+            const dvec3 p = origin + (-origin.z / d.z) * d; // on z = 0
+            // Deep inside the section: more than 4 pixels (about 0.03) from its rim.
+            if (testing::torusDistance(p, 0.6, 0.3) > -0.06 || bruteDistance(mesh, p) < 0.05) continue;
+            ++inside;
+            const std::uint8_t* rgba = image.pixel(x, y);
+            const int expected[3] = {237, 140, 46}; // vec3(0.93, 0.55, 0.18)
+            if (std::abs(rgba[0] - expected[0]) > 3 || std::abs(rgba[1] - expected[1]) > 3 || std::abs(rgba[2] - expected[2]) > 3)
+                ++marked;
+        }
+    std::printf("torus mesh on the plane, %dx%d: %zu pixels inside the section, %zu not the inside colour\n", kW, kH, inside,
+                marked);
+    EXPECT_GT(inside, std::size_t(1000));
+    EXPECT_EQ(marked, 0u);
+}
+
 } // namespace
 } // namespace sdfwb
