@@ -1,7 +1,8 @@
 // A triangle mesh as a signed distance field (meshfield/MeshField.h builds what this reads).
 // Composed before the SDF's text when the SDF is a mesh file; the file's text calls sdfwb_meshSdf.
-//   SDFWB_MESH_NODES_BINDING        the hierarchy: four vec4 per node
-//                                   (box min + first/left, box max + count, dipole centre + radius, dipole)
+//   SDFWB_MESH_NODES_BINDING        the hierarchy: SDFWB_MESH_NODE vec4 per node (meshfield::kNodeFloats:
+//                                   box min + first/left, box max + count, dipole centre + radius,
+//                                   dipole, the second moment's three rows)
 //   SDFWB_MESH_TRIANGLES_BINDING    three vec4 per triangle (corners), in leaf order; the first
 //                                   corner's w is the cumulative share of the area (the last is 1)
 //   SDFWB_MESH_PSEUDONORMALS_BINDING (pseudonormal sign only) seven vec4 per triangle:
@@ -104,8 +105,8 @@ float sdfwb_meshNearest(vec3 p, out uint triangle, out int feature, out vec3 clo
     float best = 3.0e38;
     while (top > 0) {
         uint n = stack[--top];
-        vec4 lo = sdfwb_meshNodes[4u * n];
-        vec4 hi = sdfwb_meshNodes[4u * n + 1u];
+        vec4 lo = sdfwb_meshNodes[SDFWB_MESH_NODE * n];
+        vec4 hi = sdfwb_meshNodes[SDFWB_MESH_NODE * n + 1u];
         if (sdfwb_meshBoxDistance2(p, lo.xyz, hi.xyz) >= best) continue;
         uint first = floatBitsToUint(lo.w);
         uint count = floatBitsToUint(hi.w);
@@ -127,8 +128,10 @@ float sdfwb_meshNearest(vec3 p, out uint triangle, out int feature, out vec3 clo
             }
             continue;
         }
-        float dl = sdfwb_meshBoxDistance2(p, sdfwb_meshNodes[4u * first].xyz, sdfwb_meshNodes[4u * first + 1u].xyz);
-        float dr = sdfwb_meshBoxDistance2(p, sdfwb_meshNodes[4u * first + 4u].xyz, sdfwb_meshNodes[4u * first + 5u].xyz);
+        float dl = sdfwb_meshBoxDistance2(p, sdfwb_meshNodes[SDFWB_MESH_NODE * first].xyz,
+                                          sdfwb_meshNodes[SDFWB_MESH_NODE * first + 1u].xyz);
+        float dr = sdfwb_meshBoxDistance2(p, sdfwb_meshNodes[SDFWB_MESH_NODE * (first + 1u)].xyz,
+                                          sdfwb_meshNodes[SDFWB_MESH_NODE * (first + 1u) + 1u].xyz);
         // The nearer child on top; a child already farther than the best is never pushed.
         uint nearChild = dl < dr ? first : first + 1u;
         uint farChild = dl < dr ? first + 1u : first;
@@ -159,7 +162,7 @@ float sdfwb_meshSolidAngle(vec3 p, vec3 a, vec3 b, vec3 c) {
 }
 
 // The generalized winding number: 1 inside a closed, outward-facing mesh, 0 outside; near clusters
-// add their triangles' solid angles, far ones their dipole (Barill et al. 2018, first order).
+// add their triangles' solid angles, far ones their dipole and second moment (Barill et al. 2018).
 float sdfwb_meshWinding(vec3 p) {
     if (sdfwb_meshIdleLane()) return 0.0;
     uint stack[2 * SDFWB_MESH_STACK];
@@ -168,16 +171,23 @@ float sdfwb_meshWinding(vec3 p) {
     float sum = 0.0;
     while (top > 0) {
         uint n = stack[--top];
-        vec4 centre = sdfwb_meshNodes[4u * n + 2u];
+        vec4 centre = sdfwb_meshNodes[SDFWB_MESH_NODE * n + 2u];
         vec3 d = centre.xyz - p;
         float dist2 = dot(d, d);
         float reach = SDFWB_MESH_BETA * centre.w;
         if (dist2 > reach * reach) {
-            sum += dot(sdfwb_meshNodes[4u * n + 3u].xyz, d) / (dist2 * sqrt(dist2));
+            // The dipole's term and the second moment's: trace(M) / |d|^3 - 3 d.M d / |d|^5
+            // (meshfield's farCluster).
+            float inverse3 = 1.0 / (dist2 * sqrt(dist2));
+            // M's rows as columns: M^T, whose trace and d.M d are M's.
+            mat3 moment = mat3(sdfwb_meshNodes[SDFWB_MESH_NODE * n + 4u].xyz, sdfwb_meshNodes[SDFWB_MESH_NODE * n + 5u].xyz,
+                               sdfwb_meshNodes[SDFWB_MESH_NODE * n + 6u].xyz);
+            float trace = moment[0][0] + moment[1][1] + moment[2][2];
+            sum += (dot(sdfwb_meshNodes[SDFWB_MESH_NODE * n + 3u].xyz, d) + trace - 3.0 * dot(d, moment * d) / dist2) * inverse3;
             continue;
         }
-        uint first = floatBitsToUint(sdfwb_meshNodes[4u * n].w);
-        uint count = floatBitsToUint(sdfwb_meshNodes[4u * n + 1u].w);
+        uint first = floatBitsToUint(sdfwb_meshNodes[SDFWB_MESH_NODE * n].w);
+        uint count = floatBitsToUint(sdfwb_meshNodes[SDFWB_MESH_NODE * n + 1u].w);
         if (count > 0u) {
             for (uint k = 0u; k < SDFWB_MESH_LEAF; ++k) {
                 if (k >= count) break;
@@ -203,8 +213,8 @@ int sdfwb_meshCrossings(vec3 p, vec3 d) {
     int crossings = 0;
     while (top > 0) {
         uint n = stack[--top];
-        vec4 lo = sdfwb_meshNodes[4u * n];
-        vec4 hi = sdfwb_meshNodes[4u * n + 1u];
+        vec4 lo = sdfwb_meshNodes[SDFWB_MESH_NODE * n];
+        vec4 hi = sdfwb_meshNodes[SDFWB_MESH_NODE * n + 1u];
         vec3 t0 = (lo.xyz - p) * inverse;
         vec3 t1 = (hi.xyz - p) * inverse;
         vec3 tmin = min(t0, t1);

@@ -83,6 +83,7 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
         all["SDFWB_MESH_NODES_BINDING"] = std::to_string(kMeshNodesBinding);
         all["SDFWB_MESH_TRIANGLES_BINDING"] = std::to_string(kMeshTrianglesBinding);
         all["SDFWB_MESH_PSEUDONORMALS_BINDING"] = std::to_string(kMeshPseudonormalsBinding);
+        all["SDFWB_MESH_NODE"] = std::to_string(meshfield::kNodeFloats / 4) + "u";
         all["SDFWB_MESH_LEAF"] = std::to_string(meshfield::kMaxLeafTriangles) + "u";
         all["SDFWB_MESH_STACK"] = std::to_string(sdf.mesh->depth + 2);
         if (sdf.meshIsTheField) all["SDFWB_MESH_SURFACE"] = "1";

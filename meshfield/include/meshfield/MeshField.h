@@ -72,12 +72,15 @@ Expected<MeshFieldOptions> parseMeshFieldOptions(const std::string& sign, const 
 // Triangles a leaf holds at most.
 inline constexpr std::uint32_t kMaxLeafTriangles = 4;
 
-// One BVH node as the GPU reads it: 16 floats (four vec4).
+// One BVH node as the GPU reads it: 28 floats (seven vec4).
 //   [0..2] box min, [3] first triangle (leaf) or left child (inner; right = left + 1), as bits
 //   [4..6] box max, [7] triangle count (0: inner node), as bits
-//   [8..10] area-weighted centroid of its triangles, [11] radius of a ball around it holding them
+//   [8..10] area-weighted centroid c of its triangles, [11] radius of a ball around c holding them
 //   [12..14] sum of area times unit normal of its triangles (the dipole), [15] unused
-inline constexpr int kNodeFloats = 16;
+//   [16..26] the second moment M = sum of area * n (x - c)^T over its triangles (x: a triangle's
+//   centroid; exact, since n is constant on a triangle), row i at [16 + 4i .. 18 + 4i]; [19], [23],
+//   [27] unused. Far clusters add the dipole's term and M's (Barill et al. 2018, second order).
+inline constexpr int kNodeFloats = 28;
 // One triangle: three vec4 (corners, w unused), in leaf order.
 inline constexpr int kTriangleFloats = 12;
 // Pseudonormals of one triangle (only for SignMethod::Pseudonormal): face, edges ab bc ca,
