@@ -130,7 +130,7 @@ def write_ply(path, vertices, faces):
 def hierarchy_line(path):
     # The hierarchy's size and build time, as sdfwb logs them when it opens the mesh.
     log = subprocess.run([os.path.join(ROOT, "build", "app", "sdfwb"), "--batch", "sample", "--sdf", path, "--normalize",
-                          "unit-cube", "--pattern", "rand", "--n", "1000", "--output", os.path.join(work, "h.npz")],
+                          "unit-cube", "--pattern", "rand", "-n", "1000", "--output", os.path.join(work, "h.npz")],
                          capture_output=True, text=True).stderr
     match = re.search(r"hierarchy of (\d+) nodes, depth (\d+), built in ([0-9.]+) s, ([0-9.]+) MB", log)
     return (int(match.group(1)), int(match.group(2)), float(match.group(3)), float(match.group(4))) if match else None
