@@ -9,6 +9,7 @@
 #include <renderer/HeadlessContext.h>
 #include <renderer/SampleCompute.h>
 #include <sampling/FieldAudit.h>
+#include <sampling/FieldEvaluator.h>
 #include <sampling/SampleFile.h>
 #include <sampling/Sampler.h>
 #include <sampling/SamplerLibrary.h>
@@ -216,15 +217,17 @@ py::dict evaluate(const std::string& sdf, py::array_t<float, py::array::c_style 
     }
     const auto n = points.shape(0);
     if (std::uint64_t(n) > 0xffffffffull) throw py::value_error("evaluate: at most 4294967295 points per call");
-    sampling::SamplingJob job;
+    sampling::SamplingJob job; // checked as the samplers check their jobs
     job.count = std::uint64_t(n);
-    job.time = time;
     job.gradientStep = gradientStep;
     job.chunkSize = chunk;
-    job.inputPoints = points.data();
     if (auto ok = sampling::validate(job); n > 0 && !ok) throw py::value_error(ok.error().message);
     const jobs::OpenedSdf opened = prepare(sdfInput(sdf, entry, params, sign, normalize));
-    job.sdfParameters = opened.parameters;
+    sampling::FieldSettings settings;
+    settings.time = time;
+    settings.gradientStep = gradientStep;
+    settings.chunk = chunk;
+    settings.parameters = opened.parameters;
     auto distances = floatArray({n});
     py::object gradients = py::none();
     float* g = nullptr;
@@ -240,19 +243,14 @@ py::dict evaluate(const std::string& sdf, py::array_t<float, py::array::c_style 
         py::gil_scoped_release release;
         std::lock_guard lock(g_glMutex);
         context();
-        renderer::SampleCompute compute;
-        auto stage = shaders::builtinPiece("analysis/points.glsl");
-        if (!stage) {
-            report = stage.error();
+        sampling::FieldEvaluator field;
+        auto diagnostics = field.build(opened.prepared);
+        if (shaders::hasErrors(diagnostics)) {
+            for (const auto& diagnostic : diagnostics) compileErrors += shaders::formatDiagnostic(diagnostic) + "\n";
         } else {
-            auto diagnostics = compute.build(opened.prepared, *stage);
-            if (shaders::hasErrors(diagnostics)) {
-                for (const auto& diagnostic : diagnostics) compileErrors += shaders::formatDiagnostic(diagnostic) + "\n";
-            } else {
-                report = sampling::sampleInto(compute, job, nullptr, d, g, {});
-            }
+            report = field.evaluate(points.data(), std::uint64_t(n), d, g, settings);
         }
-        compute.releaseGl();
+        field.releaseGl();
         releaseContext();
     }
     if (!compileErrors.empty()) throw py::value_error(compileErrors);

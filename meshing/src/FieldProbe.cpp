@@ -16,6 +16,11 @@ Expected<void> FieldProbe::build(const shaders::PreparedSdf& sdf, const std::str
                                  const std::vector<shaders::ParameterSetting>& parameters) {
     m_time = time;
     m_parameters = parameters;
+    if (pattern == "analysis/points.glsl") { // the caller's points: the one field evaluator
+        for (const auto& d : m_points.build(sdf))
+            if (d.severity == shaders::Severity::Error) return makeError("mesh: " + shaders::formatDiagnostic(d));
+        return {};
+    }
     auto piece = pattern.rfind("analysis/", 0) == 0 ? shaders::builtinPiece(pattern) : sampling::findSampler(pattern, {});
     if (!piece) return piece.error();
     for (const auto& d : m_compute.build(sdf, *piece))
@@ -58,7 +63,7 @@ sampling::SamplingJob FieldProbe::job(std::uint64_t count) const {
     job.count = count;
     job.time = m_time;
     job.sdfParameters = m_parameters;
-    job.chunkSize = 1u << 16; // dispatches of 64 k points: their buffers stay in cache
+    job.chunkSize = kChunk;
     return job;
 }
 
@@ -68,11 +73,12 @@ Expected<void> FieldProbe::evaluate(const std::vector<float>& points, std::vecto
     distances.resize(n);
     if (gradients) gradients->resize(3 * n);
     if (n == 0) return {};
-    sampling::SamplingJob job = this->job(n);
-    job.gradientStep = gradientStep;
-    job.inputPoints = points.data();
-    // The points are the caller's: no positions back, and no gradient taps unless asked for.
-    auto report = sampling::sampleInto(m_compute, job, nullptr, distances.data(), gradients ? gradients->data() : nullptr, {});
+    sampling::FieldSettings settings;
+    settings.time = m_time;
+    settings.gradientStep = gradientStep;
+    settings.chunk = kChunk;
+    settings.parameters = m_parameters;
+    auto report = m_points.evaluate(points.data(), n, distances.data(), gradients ? gradients->data() : nullptr, settings);
     if (!report) return report.error();
     if (m_clip)
         for (std::uint64_t i = 0; i < n; ++i)

@@ -4,6 +4,7 @@
 
 #include <core/Expected.h>
 #include <renderer/SampleCompute.h>
+#include <sampling/FieldEvaluator.h>
 #include <sampling/Sampler.h>
 #include <shaders/Parameters.h>
 #include <shaders/SdfSource.h>
@@ -41,8 +42,10 @@ public:
     ~FieldProbe() { m_compute.releaseGl(); }
 
 private:
+    static constexpr std::uint32_t kChunk = 1u << 16;     // dispatches of 64 k points: their buffers stay in cache
     sampling::SamplingJob job(std::uint64_t count) const; // this probe's time and parameters
-    renderer::SampleCompute m_compute;
+    sampling::FieldEvaluator m_points;                    // built for analysis/points.glsl
+    renderer::SampleCompute m_compute;                    // built for any other pattern
     void clip(const float* point, float& distance, float* gradient);
     bool m_clip = false;
     glm::dvec3 m_low{0.0}, m_high{0.0};

@@ -1,4 +1,5 @@
 #include <sampling/FieldAudit.h>
+#include <sampling/FieldEvaluator.h>
 
 #include <renderer/SampleCompute.h>
 #include <sampling/AuditStatistics.h>
@@ -105,17 +106,22 @@ Expected<float> measureNoiseFloor(const shaders::PreparedSdf& sdf, const AuditOp
     return floors.empty() ? 0.0f : percentile(floors, 0.5);
 }
 
-// Runs the analysis/points.glsl sampler over `points` (xyz triples): f and its gradient at each.
+// f and its gradient at `points` (xyz triples), through the one field evaluator.
 Expected<SampleSet> evaluateAt(const shaders::PreparedSdf& sdf, const AuditOptions& options, const std::vector<float>& points,
                                float gradientStep) {
-    Runner runner;
-    if (auto ok = runner.build(sdf, "analysis/points.glsl", options.parameters); !ok) return ok.error();
-    SamplingJob job;
-    job.count = points.size() / 3;
-    job.time = options.time;
-    job.gradientStep = gradientStep;
-    job.inputPoints = points.data();
-    return runner.run(job);
+    FieldEvaluator field;
+    for (const auto& d : field.build(sdf))
+        if (d.severity == shaders::Severity::Error) return makeError("audit: " + shaders::formatDiagnostic(d));
+    SampleSet out;
+    out.resize(points.size() / 3);
+    out.positions = points;
+    FieldSettings settings;
+    settings.time = options.time;
+    settings.gradientStep = gradientStep;
+    settings.parameters = options.parameters;
+    auto report = field.evaluate(points.data(), out.size(), out.distances.data(), out.gradients.data(), settings);
+    if (!report) return report.error();
+    return out;
 }
 
 struct JumpCandidate {

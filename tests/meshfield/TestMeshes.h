@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <random>
 
@@ -32,6 +34,14 @@ inline meshfield::TriangleMesh torusMesh(float R, float r, int around, int acros
             mesh.indices.insert(mesh.indices.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
         }
     return mesh;
+}
+
+// `mesh` as an OBJ file (v and f lines, 1-based).
+inline void writeObj(const std::filesystem::path& path, const meshfield::TriangleMesh& mesh) {
+    std::ofstream obj(path);
+    for (const glm::vec3& v : mesh.vertices) obj << "v " << v.x << ' ' << v.y << ' ' << v.z << '\n';
+    for (std::size_t t = 0; t < mesh.indices.size(); t += 3)
+        obj << "f " << mesh.indices[t] + 1 << ' ' << mesh.indices[t + 1] + 1 << ' ' << mesh.indices[t + 2] + 1 << '\n';
 }
 
 // The exact torus's signed distance (for the polygon's inside: |d| well above the chord error).

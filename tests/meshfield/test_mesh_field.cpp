@@ -179,11 +179,8 @@ TEST(MeshFieldCpu, FilesAreReadThroughAssimpAndCached) {
     const fs::path folder = fs::temp_directory_path() / ("sdfwb_meshfield_" + std::to_string(::getpid()));
     fs::create_directories(folder);
     const TriangleMesh mesh = testing::torusMesh(kR, kr, 16, 8);
+    testing::writeObj(folder / "torus.obj", mesh);
     {
-        std::ofstream obj(folder / "torus.obj");
-        for (const glm::vec3& v : mesh.vertices) obj << "v " << v.x << ' ' << v.y << ' ' << v.z << '\n';
-        for (std::size_t t = 0; t < mesh.indices.size(); t += 3)
-            obj << "f " << mesh.indices[t] + 1 << ' ' << mesh.indices[t + 1] + 1 << ' ' << mesh.indices[t + 2] + 1 << '\n';
         std::ofstream off(folder / "torus.off");
         off << "OFF\n" << mesh.vertices.size() << ' ' << mesh.triangles() << " 0\n";
         for (const glm::vec3& v : mesh.vertices) off << v.x << ' ' << v.y << ' ' << v.z << '\n';

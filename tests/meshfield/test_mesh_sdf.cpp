@@ -111,12 +111,7 @@ TEST_F(MeshSdfTest, AMeshFileIsAnSdfForEveryJobAndMeshOptionsAreRefusedElsewhere
     const fs::path folder = fs::temp_directory_path() / ("sdfwb_meshsdf_" + std::to_string(::getpid()));
     fs::create_directories(folder);
     const meshfield::TriangleMesh mesh = testing::torusMesh(0.6f, 0.25f, 48, 16);
-    {
-        std::ofstream obj(folder / "torus.obj");
-        for (const glm::vec3& v : mesh.vertices) obj << "v " << v.x << ' ' << v.y << ' ' << v.z << '\n';
-        for (std::size_t t = 0; t < mesh.indices.size(); t += 3)
-            obj << "f " << mesh.indices[t] + 1 << ' ' << mesh.indices[t + 1] + 1 << ' ' << mesh.indices[t + 2] + 1 << '\n';
-    }
+    testing::writeObj(folder / "torus.obj", mesh);
     jobs::SdfInput input;
     input.sdf = (folder / "torus.obj").string();
     input.sign = "pseudonormal";
@@ -381,12 +376,7 @@ TEST_F(MeshSdfTest, EveryOutputOfAJobOnAMeshCarriesTheMeshsProvenance) {
     const fs::path folder = fs::temp_directory_path() / ("sdfwb_meshsource_" + std::to_string(::getpid()));
     fs::create_directories(folder);
     const meshfield::TriangleMesh mesh = testing::torusMesh(0.6f, 0.25f, 24, 12);
-    {
-        std::ofstream obj(folder / "torus.obj");
-        for (const glm::vec3& v : mesh.vertices) obj << "v " << v.x << ' ' << v.y << ' ' << v.z << '\n';
-        for (std::size_t t = 0; t < mesh.indices.size(); t += 3)
-            obj << "f " << mesh.indices[t] + 1 << ' ' << mesh.indices[t + 1] + 1 << ' ' << mesh.indices[t + 2] + 1 << '\n';
-    }
+    testing::writeObj(folder / "torus.obj", mesh);
     jobs::SdfInput input;
     input.sdf = (folder / "torus.obj").string();
     input.sign = "parity";

@@ -4,6 +4,7 @@
 #include <renderer/HeadlessContext.h>
 #include <renderer/SampleCompute.h>
 #include <renderer/SamplingBindings.h>
+#include <sampling/FieldEvaluator.h>
 #include <sampling/Sampler.h>
 #include <sampling/SamplerLibrary.h>
 
@@ -94,6 +95,53 @@ TEST(SampleCompute, HostCountOfNonFiniteRowsLooksAtEveryValueOfARow) {
     std::vector<float> interleaved = {0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 1, 0, 0, nan};
     renderer::MappedRows packed{nullptr, nullptr, nullptr, 0, interleaved.data()};
     EXPECT_EQ(renderer::countNonFiniteRows(packed, 2), 1u);
+}
+
+// The one field evaluator (evaluate, the audit's point passes, meshing's probes, the plane hover):
+// at the rand sampler's own positions it gives the sampler's values, with or without the gradient,
+// in any chunking, with the SDF's parameters; an SDF that does not compile is refused.
+TEST_F(SamplerTest, TheFieldEvaluatorGivesTheSamplersValuesAtTheCallersPoints) {
+    const std::string text = "uniform float radius = 0.5; // @range 0.1 1\n"
+                             "float sdf(vec3 p) { return length(p - vec3(0.1, 0.0, 0.0)) - radius; }\n";
+    const shaders::PreparedSdf sdf = prepare(text);
+    auto parameters = shaders::resolveParameters(sdf.parameters, {{"radius", {0.3f}}});
+    ASSERT_TRUE(parameters.hasValue()) << parameters.error().message;
+    sampling::SamplingJob rows = job(3000);
+    rows.sdfParameters = parameters->settings;
+    sampling::SampleSet samples;
+    sample(text, "rand", rows, samples);
+    sampling::FieldEvaluator field;
+    ASSERT_FALSE(shaders::hasErrors(field.build(sdf)));
+    sampling::FieldSettings settings;
+    settings.parameters = parameters->settings;
+    settings.chunk = 1000; // three dispatches
+    std::vector<float> distances(3000), gradients(3 * 3000), alone(3000);
+    auto report = field.evaluate(samples.positions.data(), 3000, distances.data(), gradients.data(), settings);
+    ASSERT_TRUE(report.hasValue()) << report.error().message;
+    EXPECT_EQ(report->badRows, 0u);
+    ASSERT_TRUE(field.evaluate(samples.positions.data(), 3000, alone.data(), nullptr, settings).hasValue());
+    // The same composed SDF and stencil; the sampler computes its points in the shader, where the
+    // driver may fuse their arithmetic into f's, so the values agree to rounding, not bit for bit.
+    double worst = 0.0, worstGradient = 0.0;
+    for (std::size_t i = 0; i < 3000; ++i) {
+        worst = std::max({worst, double(std::abs(distances[i] - samples.distances[i])),
+                          double(std::abs(alone[i] - samples.distances[i]))});
+        for (int a = 0; a < 3; ++a)
+            worstGradient = std::max(worstGradient, double(std::abs(gradients[3 * i + a] - samples.gradients[3 * i + a])));
+    }
+    EXPECT_LT(worst, 5e-7); // a few float32 ulps of values up to 1.8
+    EXPECT_LT(worstGradient, 2e-4); // a difference of two values over 2e-3
+    std::printf("field evaluator against the rand sampler's rows: |f| differs by %.2g at most, gradients by %.2g\n", worst,
+                worstGradient);
+    const glm::vec3 p = at(samples.positions, 17);
+    EXPECT_NEAR(distances[17], std::sqrt((p.x - 0.1f) * (p.x - 0.1f) + p.y * p.y + p.z * p.z) - 0.3f, 1e-6f);
+    field.releaseGl();
+
+    sampling::FieldEvaluator broken;
+    EXPECT_TRUE(shaders::hasErrors(broken.build(prepare("float sdf(vec3 p) { return undefinedThing(p); }\n"))));
+    auto refused = broken.evaluate(samples.positions.data(), 1, alone.data(), nullptr, settings);
+    ASSERT_FALSE(refused.hasValue());
+    EXPECT_NE(refused.error().message.find("did not compile"), std::string::npos) << refused.error().message;
 }
 
 TEST_F(SamplerTest, EveryPatternMatchesTheSpheresClosedForm) {

@@ -5,9 +5,9 @@
 #include <renderer/MeshOverlay.h>
 #include <renderer/OffscreenRenderer.h>
 #include <renderer/PointCloudOverlay.h>
-#include <renderer/SampleCompute.h>
 #include <renderer/SdfRenderer.h>
 #include <renderer/ShadertoyPicture.h>
+#include <sampling/FieldEvaluator.h>
 #include <shaders/ShaderComposer.h>
 
 #include <glm/geometric.hpp>
@@ -235,21 +235,18 @@ bool ViewportWidget::planeValueAt(QPointF position, PlaneValue& out) {
     if (t <= 0.0f || std::abs(p.x) > bound || std::abs(p.y) > bound || std::abs(p.z) > bound) return false;
     makeCurrent();
     if (!m_fieldAtPoint || m_fieldGeneration != m_sdfGeneration) {
-        m_fieldAtPoint = std::make_unique<renderer::SampleCompute>();
-        auto points = shaders::builtinPiece("analysis/points.glsl");
-        m_fieldBroken = !points || shaders::hasErrors(m_fieldAtPoint->build(*m_lastGoodSdf, *points));
+        m_fieldAtPoint = std::make_unique<sampling::FieldEvaluator>();
+        m_fieldBroken = shaders::hasErrors(m_fieldAtPoint->build(*m_lastGoodSdf));
         m_fieldGeneration = m_sdfGeneration;
     }
     bool ok = false;
     if (!m_fieldBroken) {
-        renderer::SampleUniforms uniforms;
-        uniforms.sampleCount = 1;
-        uniforms.time = m_time;
-        uniforms.gradientStep = 1e-4f;
-        uniforms.inputPoints = &p.x;
-        uniforms.sdfParameters = m_parameters;
+        sampling::FieldSettings settings;
+        settings.time = m_time;
+        settings.gradientStep = 1e-4f;
+        settings.parameters = m_parameters;
         float value = 0.0f, gradient[3] = {0, 0, 0};
-        ok = bool(m_fieldAtPoint->run(uniforms, 0, 1, nullptr, &value, gradient));
+        ok = bool(m_fieldAtPoint->evaluate(&p.x, 1, &value, gradient, settings));
         out = {p, value, std::sqrt(gradient[0] * gradient[0] + gradient[1] * gradient[1] + gradient[2] * gradient[2])};
     }
     doneCurrent();

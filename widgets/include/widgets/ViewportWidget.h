@@ -34,10 +34,13 @@
 namespace sdfwb::renderer {
 class MeshOverlay;
 class PointCloudOverlay;
-class SampleCompute;
 class SdfRenderer;
 class ShadertoyPicture;
 } // namespace sdfwb::renderer
+
+namespace sdfwb::sampling {
+class FieldEvaluator;
+}
 
 namespace sdfwb::widgets {
 
@@ -196,7 +199,7 @@ private:
     bool m_probeClick = false; // the left button went down with the probe tool: no orbit
     QPoint m_probeMark{-1, -1};
     // The shown SDF at single points (the plane readout under the cursor), built per SDF.
-    std::unique_ptr<renderer::SampleCompute> m_fieldAtPoint;
+    std::unique_ptr<sampling::FieldEvaluator> m_fieldAtPoint;
     std::uint64_t m_fieldGeneration = 0;
     bool m_fieldBroken = false;
     float m_meshScale = 0.0f;

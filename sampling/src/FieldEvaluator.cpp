@@ -1,0 +1,37 @@
+#include <sampling/FieldEvaluator.h>
+
+#include <shaders/SdfSource.h>
+#include <shaders/ShaderComposer.h>
+
+namespace sdfwb::sampling {
+
+std::vector<shaders::Diagnostic> FieldEvaluator::build(const shaders::PreparedSdf& sdf) {
+    m_built = false;
+    auto stage = shaders::builtinPiece("analysis/points.glsl");
+    if (!stage) return {shaders::Diagnostic{"sdfwb:analysis/points.glsl", 0, 0, shaders::Severity::Error, stage.error().message}};
+    auto diagnostics = m_compute.build(sdf, *stage);
+    m_built = !shaders::hasErrors(diagnostics);
+    return diagnostics;
+}
+
+Expected<SamplingReport> FieldEvaluator::evaluate(const float* points, std::uint64_t count, float* distances, float* gradients,
+                                                  const FieldSettings& settings, const ProgressSink& progress) {
+    if (!m_built) return makeError("evaluate: the SDF did not compile with the points stage");
+    if (count == 0) return SamplingReport{};
+    SamplingJob job;
+    job.count = count;
+    job.time = settings.time;
+    job.gradientStep = settings.gradientStep;
+    job.chunkSize = settings.chunk;
+    job.inputPoints = points;
+    job.sdfParameters = settings.parameters;
+    // The points are the caller's: no positions back, and no gradient taps unless asked for.
+    return sampleInto(m_compute, job, nullptr, distances, gradients, progress);
+}
+
+void FieldEvaluator::releaseGl() {
+    m_compute.releaseGl();
+    m_built = false;
+}
+
+} // namespace sdfwb::sampling
