@@ -278,32 +278,51 @@ AuditFlag signUncertainty(const meshfield::MeshField& mesh, const SampleSet& poi
 
 namespace {
 
-Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOptions& options, const ProgressSink& progress) {
-    auto start = std::chrono::steady_clock::now();
-    const std::uint64_t n = std::max<std::uint64_t>(options.samples, 64);
-    AuditReport report;
-    report.samples = n;
+// The audit's samples: random and near-surface points at each of the three difference steps, and
+// surface points (drawn with seed + 1, independent of the query points).
+struct AuditPasses {
+    std::uint64_t n = 0;
+    std::vector<SampleSet> random, near;
+    SampleSet surface;
+};
+
+std::uint64_t countNonFinite(const SampleSet& set) {
+    std::uint64_t bad = 0;
+    for (std::size_t i = 0; i < set.size(); ++i) bad += !finiteRow(set, i);
+    return bad;
+}
+
+// Rounding noise with steps of q (the precision floor) moves a quotient over `step` by about
+// q / step, and its tails (the 99.9th percentile; each tap rounds on its own) by up to ~3 q /
+// step: that much is taken off, so a far-from-the-origin field is judged by its shape, not its
+// noise. For a field computed near the origin q ~ 1e-7 and nothing changes.
+float noiseSlope(const AuditReport& report, std::size_t s) { return 3.0f * report.noiseFloor / report.scales[s].step; }
+
+// Draws every pass (7 progress steps) and measures the precision floor.
+Expected<AuditPasses> drawPasses(const shaders::PreparedSdf& sdf, const AuditOptions& options, const ProgressSink& progress,
+                                 AuditReport& report) {
+    AuditPasses p;
+    p.n = report.samples;
     Runner randomRunner, nearRunner, surfaceRunner;
     if (auto ok = randomRunner.build(sdf, "rand", options.parameters); !ok) return ok.error();
     if (auto ok = nearRunner.build(sdf, "near", options.parameters); !ok) return ok.error();
     if (auto ok = surfaceRunner.build(sdf, "surface", options.parameters); !ok) return ok.error();
 
     SamplingJob job;
-    job.count = n;
+    job.count = p.n;
     job.seed = options.seed;
     job.time = options.time;
-    std::vector<SampleSet> random, near;
     int step = 0;
     const int totalSteps = 7;
     for (float h : Scales::kSteps) {
         job.gradientStep = h;
         auto r = randomRunner.run(job);
         if (!r) return r.error();
-        random.push_back(std::move(*r));
+        p.random.push_back(std::move(*r));
         progress(std::uint64_t(++step), totalSteps);
         auto m = nearRunner.run(job);
         if (!m) return m.error();
-        near.push_back(std::move(*m));
+        p.near.push_back(std::move(*m));
         progress(std::uint64_t(++step), totalSteps);
         if (progress.isCancelled()) return makeError("audit: cancelled");
     }
@@ -311,31 +330,36 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
     job.seed = options.seed + 1; // surface points independent of the query points
     auto surface = surfaceRunner.run(job);
     if (!surface) return surface.error();
+    p.surface = std::move(*surface);
     progress(std::uint64_t(++step), totalSteps);
-    auto noise = measureNoiseFloor(sdf, options, n);
+    auto noise = measureNoiseFloor(sdf, options, p.n);
     if (!noise) return noise.error();
     report.noiseFloor = *noise;
 
-    // NaN / Inf: over random points, at the middle scale.
-    std::uint64_t bad = 0;
-    for (std::size_t i = 0; i < n; ++i) bad += !finiteRow(random[1], i);
-    report.nanFraction = double(bad) / double(n);
-    report.nanFractionError = std::sqrt(std::max(report.nanFraction * (1.0 - report.nanFraction), 1.0 / double(n)) / double(n));
+    return p;
+}
 
+// The share of NaN or Inf rows (random points, middle step), and the difference quotients'
+// percentiles: between consecutive random points (scale ~1) and at each step.
+void measureQuotients(const AuditPasses& p, AuditReport& report) {
+    const std::uint64_t bad = countNonFinite(p.random[1]);
+    report.nanFraction = double(bad) / double(p.n);
+    report.nanFractionError =
+        std::sqrt(std::max(report.nanFraction * (1.0 - report.nanFraction), 1.0 / double(p.n)) / double(p.n));
     // Difference quotients: central differences at three scales (random and near-surface points)
     // and the quotient between consecutive random points (scale ~1).
     std::vector<float> perScale[3];
     for (int s = 0; s < 3; ++s)
-        for (const SampleSet* set : {&random[std::size_t(s)], &near[std::size_t(s)]})
+        for (const SampleSet* set : {&p.random[std::size_t(s)], &p.near[std::size_t(s)]})
             for (std::size_t i = 0; i < set->size(); ++i)
                 if (finiteRow(*set, i)) perScale[s].push_back(gradientLength(*set, i));
     std::vector<float> wide;
-    for (std::size_t i = 0; i + 1 < n; i += 2) {
-        if (!finiteRow(random[1], i) || !finiteRow(random[1], i + 1)) continue;
-        glm::vec3 a(random[1].positions[3 * i], random[1].positions[3 * i + 1], random[1].positions[3 * i + 2]);
-        glm::vec3 b(random[1].positions[3 * i + 3], random[1].positions[3 * i + 4], random[1].positions[3 * i + 5]);
+    for (std::size_t i = 0; i + 1 < p.n; i += 2) {
+        if (!finiteRow(p.random[1], i) || !finiteRow(p.random[1], i + 1)) continue;
+        glm::vec3 a(p.random[1].positions[3 * i], p.random[1].positions[3 * i + 1], p.random[1].positions[3 * i + 2]);
+        glm::vec3 b(p.random[1].positions[3 * i + 3], p.random[1].positions[3 * i + 4], p.random[1].positions[3 * i + 5]);
         float distance = glm::length(a - b);
-        if (distance > 1e-3f) wide.push_back(std::abs(random[1].distances[i] - random[1].distances[i + 1]) / distance);
+        if (distance > 1e-3f) wide.push_back(std::abs(p.random[1].distances[i] - p.random[1].distances[i + 1]) / distance);
     }
     auto summarise = [](float scale, const std::vector<float>& values) {
         QuotientScale q;
@@ -348,26 +372,27 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
     };
     report.scales.push_back(summarise(1.0f, wide));
     for (int s = 0; s < 3; ++s) report.scales.push_back(summarise(2.0f * Scales::kSteps[s], perScale[s]));
-    // Rounding noise with steps of q (the precision floor) moves a quotient over `step` by about
-    // q / step, and its tails (the 99.9th percentile; each tap rounds on its own) by up to ~3 q /
-    // step: that much is taken off, so a far-from-the-origin field is judged by its shape, not its
-    // noise. For a field computed near the origin q ~ 1e-7 and nothing changes.
-    auto noiseSlope = [&](std::size_t s) { return 3.0f * report.noiseFloor / report.scales[s].step; };
+}
 
+// Discontinuities: points whose quotient grows as the step shrinks, confirmed by line searches
+// (measureJumps). The flag, when any jump is confirmed; report.discontinuities counts the points.
+Expected<std::optional<AuditFlag>> findDiscontinuities(const shaders::PreparedSdf& sdf, const AuditOptions& options,
+                                                       const AuditPasses& p, AuditReport& report) {
+    std::optional<AuditFlag> discontinuous;
     // Discontinuities: the quotient grows as the step shrinks (a jump of J gives J / 2h), at
     // points within the finest step of the jump.
     std::uint64_t tested = 0;
     std::vector<JumpCandidate> candidates;
     std::uint64_t suspects = 0; // points whose quotient at a coarser step outgrows the finest one
-    for (const std::vector<SampleSet>* sets : {&random, &near})
-        for (std::size_t i = 0; i < n; ++i) {
+    for (const std::vector<SampleSet>* sets : {&p.random, &p.near})
+        for (std::size_t i = 0; i < p.n; ++i) {
             if (!finiteRow((*sets)[0], i) || !finiteRow((*sets)[1], i) || !finiteRow((*sets)[2], i)) continue;
             ++tested;
             const float q[3] = {gradientLength((*sets)[0], i), gradientLength((*sets)[1], i), gradientLength((*sets)[2], i)};
             const glm::vec3 position((*sets)[0].positions[3 * i], (*sets)[0].positions[3 * i + 1],
                                      (*sets)[0].positions[3 * i + 2]);
             // Within the finest step of a jump: that quotient is J / 2h, far above the coarse one.
-            if (q[2] > 3.0f * std::max(q[0], 0.1f) && q[2] > 2.0f && q[2] > q[0] + noiseSlope(3)) {
+            if (q[2] > 3.0f * std::max(q[0], 0.1f) && q[2] > 2.0f && q[2] > q[0] + noiseSlope(report, 3)) {
                 ++report.discontinuities;
                 const float* g = &(*sets)[2].gradients[3 * i];
                 candidates.push_back({position, glm::vec3(g[0], g[1], g[2]) / q[2], 2.0f * Scales::kSteps[2]});
@@ -375,7 +400,7 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
             }
             // Within a coarser step of a jump (100 times more points): that quotient outgrows the finest.
             for (int s = 0; s < 2; ++s)
-                if (q[s] > 3.0f * std::max(q[2], 0.1f) + noiseSlope(std::size_t(s) + 1) && q[s] > 2.0f) {
+                if (q[s] > 3.0f * std::max(q[2], 0.1f) + noiseSlope(report, std::size_t(s) + 1) && q[s] > 2.0f) {
                     ++suspects;
                     const float* g = &(*sets)[std::size_t(s)].gradients[3 * i];
                     if (candidates.size() < 4096)
@@ -384,7 +409,6 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
                 }
         }
     report.discontinuityShare = tested ? double(report.discontinuities) / double(tested) : 0.0;
-    std::optional<AuditFlag> discontinuous;
     if (!candidates.empty()) {
         auto jumps = measureJumps(sdf, options, candidates, report.noiseFloor);
         if (!jumps) return jumps.error();
@@ -403,76 +427,83 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
         }
     }
 
-    // The Lipschitz estimate, from points a jump does not explain: near a jump of J the quotient at
-    // step h is J / 2h while at the finest step it is the field's slope; a steep but continuous field
-    // has the same quotient at every step. The quotient between distant points is used only when
-    // no jump was found (across a jump it is J / distance).
-    {
-        std::vector<float> unaffected[2];
-        std::vector<std::pair<float, glm::vec3>> steepest;
-        std::uint64_t above = 0, counted = 0;
-        for (const std::vector<SampleSet>* sets : {&random, &near})
-            for (std::size_t i = 0; i < n; ++i) {
-                if (!finiteRow((*sets)[0], i) || !finiteRow((*sets)[1], i) || !finiteRow((*sets)[2], i)) continue;
-                const float q0 = gradientLength((*sets)[0], i), q1 = gradientLength((*sets)[1], i),
-                            q2 = gradientLength((*sets)[2], i);
-                const float allowed = 1.5f * q2 + noiseSlope(3) + 0.05f;
-                if (q0 > allowed || q1 > allowed) continue;                // a jump within the coarser steps
-                if (q2 > 3.0f * std::max(q0, 0.1f) && q2 > 2.0f) continue; // a jump within the finest step
-                // Beside a jump, a small one (where the two sides nearly agree) still lifts the
-                // coarser quotients a little: there the per-point estimate takes the smaller.
-                unaffected[0].push_back(discontinuous ? std::min(q0 - noiseSlope(1), q1 - noiseSlope(2)) + noiseSlope(1) : q0);
-                unaffected[1].push_back(q1);
-                ++counted;
-                if (std::min(q0, q1) > 1.05f + noiseSlope(2)) {
-                    ++above;
-                    steepest.push_back({q1, glm::vec3((*sets)[1].positions[3 * i], (*sets)[1].positions[3 * i + 1],
-                                                      (*sets)[1].positions[3 * i + 2])});
-                }
-            }
-        report.lipschitz = percentile(unaffected[0], 0.999) - noiseSlope(1);
-        if (!discontinuous) report.lipschitz = std::max(report.lipschitz, percentile(unaffected[1], 0.999) - noiseSlope(2));
-        if (!discontinuous) report.lipschitz = std::max(report.lipschitz, report.scales[0].p999 - noiseSlope(0));
-        report.lipschitzMax = std::max({report.scales[0].max, report.scales[1].max, report.scales[2].max});
-        report.lipschitzUncertainty = report.lipschitzMax - report.lipschitz;
-        report.safeStepFactor = 1.0f / std::max(report.lipschitz, 1.0f);
-        if (report.lipschitz > 1.05f) {
-            AuditFlag flag;
-            flag.name = "non-conservative";
-            flag.value = report.lipschitz;
-            flag.maximum = report.lipschitzMax;
-            flag.count = above;
-            flag.share = counted ? double(above) / double(counted) : 0.0;
-            std::sort(steepest.begin(), steepest.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-            for (std::size_t k = 0; k < steepest.size() && k < kMaxExamples; ++k) flag.examples.push_back(steepest[k].second);
-            char text[256];
-            std::snprintf(
-                text, sizeof text,
-                "|grad f| reaches %.4g > 1 (99.9th percentile; largest %.4g) at %.3g %% of probed points: sphere tracing needs a "
-                "step factor of %.3g",
-                double(report.lipschitz), double(report.lipschitzMax), 100.0 * flag.share, double(report.safeStepFactor));
-            flag.evidence = text;
-            report.flags.push_back(std::move(flag));
-        }
-    }
+    return discontinuous;
+}
 
+// The Lipschitz estimate, from points a jump does not explain: near a jump of J the quotient at
+// step h is J / 2h while at the finest step it is the field's slope; a steep but continuous field
+// has the same quotient at every step. The quotient between distant points is used only when
+// no jump was found (across a jump it is J / distance). Flags non-conservative fields.
+void estimateLipschitz(const AuditPasses& p, bool discontinuous, AuditReport& report) {
+    std::vector<float> unaffected[2];
+    std::vector<std::pair<float, glm::vec3>> steepest;
+    std::uint64_t above = 0, counted = 0;
+    for (const std::vector<SampleSet>* sets : {&p.random, &p.near})
+        for (std::size_t i = 0; i < p.n; ++i) {
+            if (!finiteRow((*sets)[0], i) || !finiteRow((*sets)[1], i) || !finiteRow((*sets)[2], i)) continue;
+            const float q0 = gradientLength((*sets)[0], i), q1 = gradientLength((*sets)[1], i),
+                        q2 = gradientLength((*sets)[2], i);
+            const float allowed = 1.5f * q2 + noiseSlope(report, 3) + 0.05f;
+            if (q0 > allowed || q1 > allowed) continue;                // a jump within the coarser steps
+            if (q2 > 3.0f * std::max(q0, 0.1f) && q2 > 2.0f) continue; // a jump within the finest step
+            // Beside a jump, a small one (where the two sides nearly agree) still lifts the
+            // coarser quotients a little: there the per-point estimate takes the smaller.
+            unaffected[0].push_back(
+                discontinuous ? std::min(q0 - noiseSlope(report, 1), q1 - noiseSlope(report, 2)) + noiseSlope(report, 1) : q0);
+            unaffected[1].push_back(q1);
+            ++counted;
+            if (std::min(q0, q1) > 1.05f + noiseSlope(report, 2)) {
+                ++above;
+                steepest.push_back({q1, glm::vec3((*sets)[1].positions[3 * i], (*sets)[1].positions[3 * i + 1],
+                                                  (*sets)[1].positions[3 * i + 2])});
+            }
+        }
+    report.lipschitz = percentile(unaffected[0], 0.999) - noiseSlope(report, 1);
+    if (!discontinuous) report.lipschitz = std::max(report.lipschitz, percentile(unaffected[1], 0.999) - noiseSlope(report, 2));
+    if (!discontinuous) report.lipschitz = std::max(report.lipschitz, report.scales[0].p999 - noiseSlope(report, 0));
+    report.lipschitzMax = std::max({report.scales[0].max, report.scales[1].max, report.scales[2].max});
+    report.lipschitzUncertainty = report.lipschitzMax - report.lipschitz;
+    report.safeStepFactor = 1.0f / std::max(report.lipschitz, 1.0f);
+    if (report.lipschitz > 1.05f) {
+        AuditFlag flag;
+        flag.name = "non-conservative";
+        flag.value = report.lipschitz;
+        flag.maximum = report.lipschitzMax;
+        flag.count = above;
+        flag.share = counted ? double(above) / double(counted) : 0.0;
+        std::sort(steepest.begin(), steepest.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+        for (std::size_t k = 0; k < steepest.size() && k < kMaxExamples; ++k) flag.examples.push_back(steepest[k].second);
+        char text[256];
+        std::snprintf(
+            text, sizeof text,
+            "|grad f| reaches %.4g > 1 (99.9th percentile; largest %.4g) at %.3g %% of probed points: sphere tracing needs a "
+            "step factor of %.3g",
+            double(report.lipschitz), double(report.lipschitzMax), 100.0 * flag.share, double(report.safeStepFactor));
+        flag.evidence = text;
+        report.flags.push_back(std::move(flag));
+    }
+}
+
+// Truncation: a field that stops growing away from its surface.
+Expected<void> findTruncation(const shaders::PreparedSdf& sdf, const AuditOptions& options, const AuditPasses& p,
+                              AuditReport& report) {
     // Truncation: outside points where the field has stopped growing, in the cube...
     std::uint64_t positive = 0;
     std::vector<float> flatValues;
     std::vector<glm::vec3> flatPoints;
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!finiteRow(random[0], i) || random[0].distances[i] <= 0.0f) continue;
+    for (std::size_t i = 0; i < p.n; ++i) {
+        if (!finiteRow(p.random[0], i) || p.random[0].distances[i] <= 0.0f) continue;
         ++positive;
-        if (gradientLength(random[0], i) < 0.02f) {
-            flatValues.push_back(random[0].distances[i]);
+        if (gradientLength(p.random[0], i) < 0.02f) {
+            flatValues.push_back(p.random[0].distances[i]);
             if (flatPoints.size() < kMaxExamples)
                 flatPoints.push_back(
-                    glm::vec3(random[0].positions[3 * i], random[0].positions[3 * i + 1], random[0].positions[3 * i + 2]));
+                    glm::vec3(p.random[0].positions[3 * i], p.random[0].positions[3 * i + 1], p.random[0].positions[3 * i + 2]));
         }
     }
     // ...and along rays from the surface outward, to options.probeDistance: a plateau that lies
     // mostly beyond the cube shows there.
-    auto plateau = probeOutward(sdf, options, *surface, report.noiseFloor);
+    auto plateau = probeOutward(sdf, options, p.surface, report.noiseFloor);
     if (!plateau) return plateau.error();
     // A truncated field saturates at a distance well off the surface; flat spots that hug the
     // zero set (fractal estimators vanish near their set) are not truncation.
@@ -495,12 +526,16 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
         report.truncationDistance = flag.value;
         report.flags.push_back(std::move(flag));
     }
-    if (discontinuous) report.flags.push_back(std::move(*discontinuous));
+    return {};
+}
 
+// Eikonal error near the surface, and exactness: |f| against the distance to the nearest of a
+// dense set of surface points.
+void measureExactness(const AuditPasses& p, AuditReport& report) {
     // Eikonal error near the surface.
     std::vector<float> eikonal;
-    for (std::size_t i = 0; i < n; ++i)
-        if (finiteRow(near[1], i)) eikonal.push_back(std::abs(gradientLength(near[1], i) - 1.0f));
+    for (std::size_t i = 0; i < p.n; ++i)
+        if (finiteRow(p.near[1], i)) eikonal.push_back(std::abs(gradientLength(p.near[1], i) - 1.0f));
     if (!eikonal.empty()) {
         double sum = 0.0;
         for (float e : eikonal) sum += e;
@@ -510,14 +545,14 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
 
     // Exactness: |f| against the distance to the nearest of a dense set of surface points.
     std::vector<float> surfacePoints;
-    for (std::size_t i = 0; i < surface->size(); ++i)
-        if (finiteRow(*surface, i))
-            for (int c = 0; c < 3; ++c) surfacePoints.push_back(surface->positions[3 * i + std::size_t(c)]);
+    for (std::size_t i = 0; i < p.surface.size(); ++i)
+        if (finiteRow(p.surface, i))
+            for (int c = 0; c < 3; ++c) surfacePoints.push_back(p.surface.positions[3 * i + std::size_t(c)]);
     report.surfacePoints = surfacePoints.size() / 3;
     {
         std::vector<float> lengths;
-        for (std::size_t i = 0; i < surface->size(); ++i)
-            if (finiteRow(*surface, i)) lengths.push_back(gradientLength(*surface, i));
+        for (std::size_t i = 0; i < p.surface.size(); ++i)
+            if (finiteRow(p.surface, i)) lengths.push_back(gradientLength(p.surface, i));
         report.surfaceGradient = lengths.empty() ? 0.0f : percentile(lengths, 0.5);
     }
     std::vector<float> errors;
@@ -539,8 +574,8 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
         }
         report.surfaceSpacing = float(spacing / double(std::max<std::size_t>(counted, 1)));
         const float tolerance = 1.5f * report.surfaceSpacing + 1e-4f;
-        for (const SampleSet* set : {&random[1], &near[1]})
-            for (std::size_t i = 0; i < n; ++i) {
+        for (const SampleSet* set : {&p.random[1], &p.near[1]})
+            for (std::size_t i = 0; i < p.n; ++i) {
                 if (!finiteRow(*set, i)) continue;
                 std::uint32_t index;
                 float squared;
@@ -556,31 +591,39 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
         report.exactnessMax = errors.empty() ? 0.0f : *std::max_element(errors.begin(), errors.end());
         report.overestimateShare = errors.empty() ? 0.0 : double(over) / double(errors.size());
     }
+}
 
-    float minimum = INFINITY, maximum = -INFINITY;
-    for (std::size_t i = 0; i < n; ++i)
-        if (std::isfinite(random[1].distances[i])) {
-            minimum = std::min(minimum, random[1].distances[i]);
-            maximum = std::max(maximum, random[1].distances[i]);
-        }
-    const bool hasSignChange = minimum <= 0.0f && maximum >= 0.0f;
-
-    // NaN / Inf, with where.
+// NaN / Inf, with where.
+void flagNonFinite(const AuditPasses& p, AuditReport& report) {
+    const std::uint64_t bad = countNonFinite(p.random[1]);
     if (bad > 0) {
         AuditFlag flag;
         flag.name = "nan";
         flag.count = bad;
         flag.share = report.nanFraction;
-        for (std::size_t i = 0; i < n && flag.examples.size() < kMaxExamples; ++i)
-            if (!finiteRow(random[1], i))
+        for (std::size_t i = 0; i < p.n && flag.examples.size() < kMaxExamples; ++i)
+            if (!finiteRow(p.random[1], i))
                 flag.examples.push_back(
-                    glm::vec3(random[1].positions[3 * i], random[1].positions[3 * i + 1], random[1].positions[3 * i + 2]));
+                    glm::vec3(p.random[1].positions[3 * i], p.random[1].positions[3 * i + 1], p.random[1].positions[3 * i + 2]));
         char text[160];
         std::snprintf(text, sizeof text, "%.3g %% of random points (%llu of %llu) give NaN or Inf", 100.0 * report.nanFraction,
-                      (unsigned long long)bad, (unsigned long long)n);
+                      (unsigned long long)bad, (unsigned long long)p.n);
         flag.evidence = text;
         report.flags.push_back(std::move(flag));
     }
+}
+
+// Orders the flags, most severe first, and gives the verdict: the most severe finding
+// (no-surface ranks below discontinuities, above the rest), else exact or conservative.
+void settleVerdict(const AuditPasses& p, AuditReport& report) {
+    float minimum = INFINITY, maximum = -INFINITY;
+    for (std::size_t i = 0; i < p.n; ++i)
+        if (std::isfinite(p.random[1].distances[i])) {
+            minimum = std::min(minimum, p.random[1].distances[i]);
+            maximum = std::max(maximum, p.random[1].distances[i]);
+        }
+    const bool hasSignChange = minimum <= 0.0f && maximum >= 0.0f;
+
     // Most severe first: the verdict is the first.
     static const char* const severity[] = {"nan", "discontinuous", "truncated", "non-conservative"};
     std::stable_sort(report.flags.begin(), report.flags.end(), [](const AuditFlag& a, const AuditFlag& b) {
@@ -601,7 +644,7 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
     } else if (report.surfacePoints == 0 && !hasSignChange) {
         report.verdict = "no-surface";
         std::snprintf(text, sizeof text, "f never changes sign (%.4g to %.4g over %llu points) and no ray finds a surface",
-                      double(minimum), double(maximum), (unsigned long long)n);
+                      double(minimum), double(maximum), (unsigned long long)p.n);
         report.reason = text;
     } else if (worst) {
         report.verdict = worst->name;
@@ -627,10 +670,15 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
     }
     for (std::size_t k = 1; k < report.flags.size(); ++k)
         report.reason += "; also " + report.flags[k].name + ": " + report.flags[k].evidence;
+}
+
+// Findings beside the verdict: a mesh's uncertain sign, and warnings that go with any verdict.
+void addFindingsBesideTheVerdict(const shaders::PreparedSdf& sdf, const AuditPasses& p, AuditReport& report) {
+    char text[256];
     // A mesh's sign where its winding number is no clear inside or outside: a finding beside the
     // verdict (the field's distances may still be exact).
     if (sdf.mesh) {
-        AuditFlag flag = signUncertainty(*sdf.mesh, random[1]);
+        AuditFlag flag = signUncertainty(*sdf.mesh, p.random[1]);
         if (flag.count > 0) {
             report.reason += "; also " + flag.name + ": " + flag.evidence;
             report.flags.push_back(std::move(flag));
@@ -651,6 +699,24 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
                       double(report.noiseFloor));
         report.reason += text;
     }
+}
+
+Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOptions& options, const ProgressSink& progress) {
+    auto start = std::chrono::steady_clock::now();
+    AuditReport report;
+    report.samples = std::max<std::uint64_t>(options.samples, 64);
+    auto passes = drawPasses(sdf, options, progress, report);
+    if (!passes) return passes.error();
+    measureQuotients(*passes, report);
+    auto discontinuous = findDiscontinuities(sdf, options, *passes, report);
+    if (!discontinuous) return discontinuous.error();
+    estimateLipschitz(*passes, discontinuous->has_value(), report);
+    if (auto ok = findTruncation(sdf, options, *passes, report); !ok) return ok.error();
+    if (*discontinuous) report.flags.push_back(std::move(**discontinuous));
+    measureExactness(*passes, report);
+    flagNonFinite(*passes, report);
+    settleVerdict(*passes, report);
+    addFindingsBesideTheVerdict(sdf, *passes, report);
     report.seconds = secondsSince(start);
     return report;
 }
