@@ -245,27 +245,81 @@ std::pair<glm::vec3, glm::vec3> cutBox(const MeshOptions& options) {
     return {glm::vec3(glm::dvec3(options.boundsMin) - 0.5 * step), glm::vec3(glm::dvec3(options.boundsMax) + 0.5 * step)};
 }
 
-Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf, const MeshOptions& options,
-                                                 const ProgressSink& progress) {
+namespace {
+
+// One extraction (extractMesh): the state its steps hand on, each step a member function.
+class Extraction {
+public:
+    Extraction(const shaders::PreparedSdf& sdf, const MeshOptions& options, const ProgressSink& progress)
+        : sdf(sdf), options(options), progress(progress) {}
+    Expected<std::pair<Mesh, MeshStats>> run();
+
+private:
+    Expected<void> selectBlocks();
+    Expected<void> evaluateBlocks();
+    void findEdges();
+    Expected<void> placeCrossings();
+    void placeVertices();
+    Expected<void> projectVertices();
+    void connectQuads();
+
+    const shaders::PreparedSdf& sdf;
+    const MeshOptions& options;
+    const ProgressSink& progress;
+    Grid grid{};
+    glm::dvec3 clipLow{0.0}, clipHigh{0.0};
+    MeshStats stats;
+    detail::FieldProbe probe;
+    const CubeTables& tables = cube();
+    int blocksPerAxis = 0;
+    std::vector<std::array<int, 3>> kept; // the blocks that may hold surface
+    std::vector<std::int32_t> blockSlot;  // each block's index in kept, or -1
+    std::vector<float> values;            // the kept blocks' grid points, kPoints a block
+    std::vector<RankedBits<kEdgeSlots>> blockEdges;
+    std::vector<Edge> edges;       // with a sign change
+    std::vector<float> edgeValues; // f at the start and the end of each edge
+    std::vector<float> crossings, crossingValues, normals;
+    float normalStep = 0.0f; // the normals' difference step
+    Mesh mesh;
+    std::vector<RankedBits<kCells>> blockCells;
+    std::vector<CellRecord> cellRecords;
+    std::vector<std::array<std::int32_t, 3>> vertexCell;
+};
+
+Expected<std::pair<Mesh, MeshStats>> Extraction::run() {
     const auto start = std::chrono::steady_clock::now();
-    if (options.resolution < 2 || options.resolution > 2048) return makeError("--resolution: must be 2..2048");
-    for (int a = 0; a < 3; ++a)
-        if (!(options.boundsMax[a] > options.boundsMin[a])) return makeError("--bounds: every maximum must exceed its minimum");
     // One cell of padding on every side, and the field cut by a box half a cell beyond the bounds:
     // a shape that leaves the bounds is closed there (flat caps, sharp rims), so every mesh is
     // closed. A shape inside the bounds is meshed as before: the cut changes no sign there.
     const glm::dvec3 step = (glm::dvec3(options.boundsMax) - glm::dvec3(options.boundsMin)) / double(options.resolution);
-    Grid grid{options.resolution + 2, glm::dvec3(options.boundsMin) - step, step};
+    grid = Grid{options.resolution + 2, glm::dvec3(options.boundsMin) - step, step};
     const auto [cutLow, cutHigh] = cutBox(options);
-    const glm::dvec3 clipLow(cutLow), clipHigh(cutHigh);
-    MeshStats stats;
-    detail::FieldProbe probe;
+    clipLow = glm::dvec3(cutLow);
+    clipHigh = glm::dvec3(cutHigh);
     if (auto ok = probe.build(sdf, "analysis/points.glsl", options.time, options.parameters); !ok) return ok.error();
     probe.setClip(clipLow, clipHigh);
-    const CubeTables& tables = cube();
 
-    // 1. Block centres: which blocks may hold surface.
-    const int blocksPerAxis = (grid.n + kBlock - 1) / kBlock;
+    normalStep = float(0.05 * std::min({grid.step.x, grid.step.y, grid.step.z}));
+    if (auto ok = selectBlocks(); !ok) return ok.error();
+    progress(1, 4);
+    if (auto ok = evaluateBlocks(); !ok) return ok.error();
+    if (progress.isCancelled()) return makeError("mesh: cancelled");
+    progress(2, 4);
+    findEdges();
+    if (auto ok = placeCrossings(); !ok) return ok.error();
+    progress(3, 4);
+    placeVertices();
+    if (auto ok = projectVertices(); !ok) return ok.error();
+    connectQuads();
+    weldCoincidentVertices(mesh);
+    progress(4, 4);
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return std::pair<Mesh, MeshStats>{std::move(mesh), stats};
+}
+
+// 1. Block centres: which blocks may hold surface.
+Expected<void> Extraction::selectBlocks() {
+    blocksPerAxis = (grid.n + kBlock - 1) / kBlock;
     std::vector<float> centres;
     centres.reserve(3 * std::size_t(blocksPerAxis) * blocksPerAxis * blocksPerAxis);
     for (int bk = 0; bk < blocksPerAxis; ++bk)
@@ -281,8 +335,7 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
     stats.pointsEvaluated += centreValues.size();
     stats.blocks = centreValues.size();
     const double halfDiagonal = 0.5 * glm::length(grid.step * double(kBlock));
-    std::vector<std::array<int, 3>> kept;
-    std::vector<std::int32_t> blockSlot(centreValues.size(), -1);
+    blockSlot.assign(centreValues.size(), -1);
     for (std::size_t b = 0; b < centreValues.size(); ++b) {
         const float f = centreValues[b];
         const bool maySurface = options.lipschitz <= 0.0f || !std::isfinite(f) ||
@@ -293,11 +346,12 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
                         int(b / (std::size_t(blocksPerAxis) * std::size_t(blocksPerAxis)))});
     }
     stats.blocksKept = kept.size();
-    progress(1, 4);
+    return {};
+}
 
-    // 2. The grid points of the kept blocks, (B+1)^3 per block in a dense array (a point on a face
-    // two kept blocks share is evaluated by both, at the same coordinates, so to the same value).
-    std::vector<float> values;
+// 2. The grid points of the kept blocks, (B+1)^3 per block in a dense array (a point on a face
+// two kept blocks share is evaluated by both, at the same coordinates, so to the same value).
+Expected<void> Extraction::evaluateBlocks() {
     {
         detail::FieldProbe lattice;
         if (auto ok = lattice.build(sdf, "analysis/lattice.glsl", options.time, options.parameters); !ok) return ok.error();
@@ -312,13 +366,12 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
         stats.boundsCutPoints = lattice.clipped();
     }
     stats.pointsEvaluated += values.size();
-    if (progress.isCancelled()) return makeError("mesh: cancelled");
-    progress(2, 4);
+    return {};
+}
 
-    // 3. Edges with a sign change, block by block in slot order (so that a block's bits number them).
-    std::vector<RankedBits<kEdgeSlots>> blockEdges(kept.size());
-    std::vector<Edge> edges;
-    std::vector<float> edgeValues; // f at the start and the end of each edge
+// 3. Edges with a sign change, block by block in slot order (so that a block's bits number them).
+void Extraction::findEdges() {
+    blockEdges.assign(kept.size(), {});
     std::uint32_t edgeCount = 0;
     for (std::size_t slot = 0; slot < kept.size(); ++slot) {
         const auto& b = kept[slot];
@@ -343,6 +396,9 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
                 }
         edgeCount = bits.number(edgeCount);
     }
+}
+
+Expected<void> Extraction::placeCrossings() {
     auto edgeStart = [&](const Edge& e) { return glm::dvec3(grid.point(e.i, e.j, e.k)); };
     auto edgeVector = [&](const Edge& e) {
         glm::dvec3 d(0.0);
@@ -352,7 +408,7 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
     // The crossing on each edge by false position with the Illinois rule (the field, not a linear
     // fit of its ends: near a box's edge the inside value follows another face): superlinear on
     // smooth and kinked fields alike; an edge stops when its crossing is known to 1e-4 of its length.
-    std::vector<float> crossings(3 * edges.size());
+    crossings.assign(3 * edges.size(), 0.0f);
     {
         struct Bracket {
             double a = 0.0, b = 1.0, fa, fb, t;
@@ -416,20 +472,17 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
             crossings[3 * e + 2] = float(p.z);
         }
     }
-    std::vector<float> crossingValues, normals;
-    const float normalStep = float(0.05 * std::min({grid.step.x, grid.step.y, grid.step.z}));
     if (auto ok = probe.evaluate(crossings, crossingValues, &normals, normalStep); !ok) return ok.error();
     stats.pointsEvaluated += crossingValues.size();
-    progress(3, 4);
+    return {};
+}
 
-    // 4. Vertices: one per patch of surface in each cell. A cell's crossing edges are joined along
-    // its faces (an ambiguous face, with four crossings, is split by the sign of its bilinear
-    // centre, which both cells sharing it see alike), so two sheets through one cell get a vertex
-    // each and the mesh stays manifold. Each vertex is its patch's QEF minimiser, clamped into the cell.
-    Mesh mesh;
-    std::vector<RankedBits<kCells>> blockCells(kept.size());
-    std::vector<CellRecord> cellRecords;
-    std::vector<std::array<std::int32_t, 3>> vertexCell;
+// 4. Vertices: one per patch of surface in each cell. A cell's crossing edges are joined along
+// its faces (an ambiguous face, with four crossings, is split by the sign of its bilinear
+// centre, which both cells sharing it see alike), so two sheets through one cell get a vertex
+// each and the mesh stays manifold. Each vertex is its patch's QEF minimiser, clamped into the cell.
+void Extraction::placeVertices() {
+    blockCells.assign(kept.size(), {});
     std::uint32_t cellCount = 0;
     for (std::size_t slot = 0; slot < kept.size(); ++slot) {
         const auto& b = kept[slot];
@@ -513,30 +566,34 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
         cellCount = blockCells[slot].number(cellCount);
     }
     stats.activeCells = cellRecords.size();
-    // On curved surfaces the planes' minimiser lies off the surface by about h^2 times the
-    // curvature: two Newton steps along the gradient put each vertex on it (a vertex already on a
-    // sharp edge or corner has f = 0 and stays). Steps are kept within the vertex's cell.
-    {
-        std::vector<float> positions(3 * mesh.vertices.size()), fieldValues, gradients;
-        for (int iteration = 0; iteration < 2; ++iteration) {
-            for (std::size_t vertex = 0; vertex < mesh.vertices.size(); ++vertex)
-                for (int a = 0; a < 3; ++a) positions[3 * vertex + std::size_t(a)] = mesh.vertices[vertex][a];
-            if (auto ok = probe.evaluate(positions, fieldValues, &gradients, normalStep); !ok) return ok.error();
-            stats.pointsEvaluated += fieldValues.size();
-            for (std::size_t vertex = 0; vertex < mesh.vertices.size(); ++vertex) {
-                const float f = fieldValues[vertex];
-                const glm::vec3 g(gradients[3 * vertex], gradients[3 * vertex + 1], gradients[3 * vertex + 2]);
-                const float g2 = glm::dot(g, g);
-                if (!std::isfinite(f) || !(g2 > 1e-12f) || !std::isfinite(g2)) continue;
-                const auto& c = vertexCell[vertex];
-                mesh.vertices[vertex] = glm::clamp(mesh.vertices[vertex] - g * (f / g2), grid.point(c[0], c[1], c[2]),
-                                                   grid.point(c[0] + 1, c[1] + 1, c[2] + 1));
-            }
+}
+
+// On curved surfaces the planes' minimiser lies off the surface by about h^2 times the
+// curvature: two Newton steps along the gradient put each vertex on it (a vertex already on a
+// sharp edge or corner has f = 0 and stays). Steps are kept within the vertex's cell.
+Expected<void> Extraction::projectVertices() {
+    std::vector<float> positions(3 * mesh.vertices.size()), fieldValues, gradients;
+    for (int iteration = 0; iteration < 2; ++iteration) {
+        for (std::size_t vertex = 0; vertex < mesh.vertices.size(); ++vertex)
+            for (int a = 0; a < 3; ++a) positions[3 * vertex + std::size_t(a)] = mesh.vertices[vertex][a];
+        if (auto ok = probe.evaluate(positions, fieldValues, &gradients, normalStep); !ok) return ok.error();
+        stats.pointsEvaluated += fieldValues.size();
+        for (std::size_t vertex = 0; vertex < mesh.vertices.size(); ++vertex) {
+            const float f = fieldValues[vertex];
+            const glm::vec3 g(gradients[3 * vertex], gradients[3 * vertex + 1], gradients[3 * vertex + 2]);
+            const float g2 = glm::dot(g, g);
+            if (!std::isfinite(f) || !(g2 > 1e-12f) || !std::isfinite(g2)) continue;
+            const auto& c = vertexCell[vertex];
+            mesh.vertices[vertex] = glm::clamp(mesh.vertices[vertex] - g * (f / g2), grid.point(c[0], c[1], c[2]),
+                                               grid.point(c[0] + 1, c[1] + 1, c[2] + 1));
         }
     }
+    return {};
+}
 
-    // 5. A quad per sign-changing edge (from the block that owns it), wound so that it faces
-    // outward (towards f > 0).
+// 5. A quad per sign-changing edge (from the block that owns it), wound so that it faces
+// outward (towards f > 0).
+void Extraction::connectQuads() {
     constexpr std::uint32_t kNone = 0xffffffffu;
     // The vertex that cell c's local edge l feeds; kNone when the cell was not meshed (outside the
     // grid or in a skipped block).
@@ -579,10 +636,16 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
         else
             mesh.indices.insert(mesh.indices.end(), {quad[0], quad[1], quad[3], quad[1], quad[2], quad[3]});
     }
-    weldCoincidentVertices(mesh);
-    progress(4, 4);
-    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return std::pair<Mesh, MeshStats>{std::move(mesh), stats};
+}
+
+} // namespace
+
+Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf, const MeshOptions& options,
+                                                 const ProgressSink& progress) {
+    if (options.resolution < 2 || options.resolution > 2048) return makeError("--resolution: must be 2..2048");
+    for (int a = 0; a < 3; ++a)
+        if (!(options.boundsMax[a] > options.boundsMin[a])) return makeError("--bounds: every maximum must exceed its minimum");
+    return Extraction(sdf, options, progress).run();
 }
 
 Topology checkTopology(const Mesh& mesh) {
