@@ -43,6 +43,7 @@ SPEED_POINTS = option("--speed-points", 1000000)
 BIG_POINTS = option("--big-points", 10000000)
 MESHES = option("--meshes", os.path.normpath(os.path.join(ROOT, "..", "shared", "data", "meshes")))
 OUT = os.path.join(ROOT, "docs", "mesh-sdf.md")
+SDFWB = os.path.join(ROOT, "build", "app", "sdfwb")
 METHODS = ["winding", "pseudonormal", "parity"]
 work = tempfile.mkdtemp(prefix="sdfwb-mesh-sdf-")
 
@@ -129,7 +130,7 @@ def write_ply(path, vertices, faces):
 
 def hierarchy_line(path):
     # The hierarchy's size and build time, as sdfwb logs them when it opens the mesh.
-    log = subprocess.run([os.path.join(ROOT, "build", "app", "sdfwb"), "--batch", "sample", "--sdf", path, "--normalize",
+    log = subprocess.run([SDFWB, "--batch", "sample", "--sdf", path, "--normalize",
                           "unit-cube", "--pattern", "rand", "-n", "1000", "--output", os.path.join(work, "h.npz")],
                          capture_output=True, text=True).stderr
     match = re.search(r"hierarchy of (\d+) nodes, depth (\d+), built in ([0-9.]+) s, ([0-9.]+) MB", log)
