@@ -532,7 +532,11 @@ json encode(float value) {
     return std::strtod(std::string(text, end).c_str(), nullptr);
 }
 // A mesh's provenance as the object its text holds (null for a GLSL SDF).
-json encode(const MeshSource& source) { return source.json.empty() ? json(nullptr) : json::parse(source.json); }
+json encode(const MeshSource& source) {
+    if (source.json.empty()) return nullptr;
+    json parsed = json::parse(source.json, nullptr, false); // no exceptions: text that is no JSON stays text
+    return parsed.is_discarded() ? json(source.json) : parsed;
+}
 json encode(const glm::vec3& v) { return json::array({encode(v.x), encode(v.y), encode(v.z)}); }
 // Parameter values as an object, {"radius": 0.3, "offset": [1, 2]}; sweeps as their text form.
 json encode(const std::vector<shaders::ParameterValue>& values) {

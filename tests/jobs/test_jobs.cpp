@@ -171,7 +171,8 @@ TEST(JobJson, MalformedRequestsAreRefusedNamingTheKey) {
 }
 
 TEST(JobJson, ReportsSurviveARoundTrip) {
-    RenderReport render{"a.png", "/x/Torus.glsl", "sdf", 640, 360, "gooch", 12.5, 0.75, "llvmpipe", {"below float32 precision"}};
+    RenderReport render{
+        "a.png", "/x/Torus.glsl", "sdf", 640, 360, "gooch", 12.5, 0.75, "llvmpipe", {}, {"below float32 precision"}};
     auto r = reportFromJson<RenderReport>(toJson(render));
     ASSERT_TRUE(r) << r.error().message;
     EXPECT_TRUE(*r == render);
