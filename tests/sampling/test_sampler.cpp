@@ -124,12 +124,12 @@ TEST_F(SamplerTest, TheFieldEvaluatorGivesTheSamplersValuesAtTheCallersPoints) {
     // driver may fuse their arithmetic into f's, so the values agree to rounding, not bit for bit.
     double worst = 0.0, worstGradient = 0.0;
     for (std::size_t i = 0; i < 3000; ++i) {
-        worst = std::max({worst, double(std::abs(distances[i] - samples.distances[i])),
-                          double(std::abs(alone[i] - samples.distances[i]))});
+        worst = std::max(
+            {worst, double(std::abs(distances[i] - samples.distances[i])), double(std::abs(alone[i] - samples.distances[i]))});
         for (int a = 0; a < 3; ++a)
             worstGradient = std::max(worstGradient, double(std::abs(gradients[3 * i + a] - samples.gradients[3 * i + a])));
     }
-    EXPECT_LT(worst, 5e-7); // a few float32 ulps of values up to 1.8
+    EXPECT_LT(worst, 5e-7);         // a few float32 ulps of values up to 1.8
     EXPECT_LT(worstGradient, 2e-4); // a difference of two values over 2e-3
     std::printf("field evaluator against the rand sampler's rows: |f| differs by %.2g at most, gradients by %.2g\n", worst,
                 worstGradient);
