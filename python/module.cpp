@@ -438,13 +438,16 @@ py::dict mesh(const std::string& sdf, int resolution, const py::object& bounds, 
 
 // Grades any mesh file against the exact field: the report `sdfwb --batch eval --json` prints.
 py::object evaluateMesh(const std::string& mesh, const std::string& sdf, float tau, std::uint64_t points, int occupancyResolution,
-                        std::uint64_t seed, float time, const std::string& entry, const py::object& params) {
+                        float edgeRadius, float edgeAngle, std::uint64_t seed, float time, const std::string& entry,
+                        const py::object& params) {
     jobs::EvalRequest request;
     request.sdf = sdfInput(sdf, entry, params);
     request.mesh = mesh;
     request.tau = tau;
     request.points = points;
     request.occupancyResolution = occupancyResolution;
+    request.edgeRadius = edgeRadius;
+    request.edgeAngle = edgeAngle;
     request.seed = seed;
     request.time = time;
     if (auto error = jobs::validate(request)) raise(*error);
@@ -697,8 +700,9 @@ Raises:
     RuntimeError: bounds or lipschitz holding something other than numbers (pybind11's cast error), no EGL/GL,
         a GPU failure, or a process forked after its parent used the GPU.)doc");
     m.def("evaluate_mesh", &evaluateMesh, py::arg("mesh"), py::arg("sdf"), py::arg_v("tau", 0.01f, "0.01"),
-          py::arg("points") = 100000, py::arg("occupancy_resolution") = 128, py::arg("seed") = 0, py::arg("time") = 0.0f,
-          py::arg("entry") = "", py::arg("params") = py::none(),
+          py::arg("points") = 100000, py::arg("occupancy_resolution") = 128, py::arg_v("edge_radius", 0.02f, "0.02"),
+          py::arg_v("edge_angle", 30.0f, "30.0"), py::arg("seed") = 0, py::arg("time") = 0.0f, py::arg("entry") = "",
+          py::arg("params") = py::none(),
           R"doc(Grades a mesh file against the exact field of `sdf`.
 
 Args:
@@ -707,6 +711,9 @@ Args:
     tau (float): > 0, world units: the distance threshold of the F-score. Default 0.01.
     points (int): points each way (mesh to surface, surface to mesh), 100 to 10000000. Default 100000.
     occupancy_resolution (int): the IoU grid's side, 0 to 512 (0: no IoU). Default 128.
+    edge_radius (float): >= 0, world units: points this near a crease of the exact field count for the edge
+        measures (0: none). Default 0.02.
+    edge_angle (float): degrees, between 0 and 180: how far the field's normal turns across a crease. Default 30.
     seed (int): 0 to 2**64 - 1. Default 0.
     time (float): seconds, finite, for animated SDFs. Default 0.
     entry (str): the SDF's function when it is not `sdf`, as for sample(). Default ''.
@@ -715,7 +722,9 @@ Args:
 Returns:
     dict: what `sdfwb --batch eval --json` prints: chamfer_l1 (mean of the two mean unsquared distances),
     chamfer_l2 (the same, squared), fscore at tau (with precision and recall), normal_consistency, hausdorff,
-    iou (None without an IoU grid), the point counts and conventions.
+    iou (None without an IoU grid), edges (the same measures over the points near creases: chamfer_l1, fscore,
+    precision, recall, hausdorff and their point counts; None when the exact surface has no crease), the point
+    counts and conventions.
 
 Raises:
     ValueError: a missing mesh file, an argument out of range, an unknown SDF or parameter, or GLSL errors.

@@ -641,6 +641,13 @@ int runEvalCommand(const Arguments& arguments, Mode mode) {
     app.add_option("--occupancy-resolution", request.occupancyResolution, "grid side for the volume IoU (0: no IoU)")
         ->capture_default_str()
         ->check(CLI::Range(0, 512));
+    app.add_option("--edge-radius", request.edgeRadius,
+                   "points within this distance of a crease of the exact field count for the edge measures (0: none)")
+        ->capture_default_str()
+        ->check(numberCheck(false) & CLI::Range(0.0f, 1e30f));
+    app.add_option("--edge-angle", request.edgeAngle, "degrees the field's normal turns across a crease, at least")
+        ->capture_default_str()
+        ->check(CLI::Range(0.001f, 179.999f));
     addBoundsOption(app, request.boundsMin, request.boundsMax,
                     "MINX,MINY,MINZ,MAXX,MAXY,MAXZ of the IoU grid (default -1,-1,-1,1,1,1)");
     app.add_option("--time", request.time, "time in seconds for animated SDFs")->capture_default_str()->check(numberCheck(false));

@@ -157,6 +157,8 @@ template <class V> void fields(V& v, EvalRequest& r) {
     v("points", r.points);
     v("tau", r.tau);
     v("occupancy_resolution", r.occupancyResolution);
+    v("edge_radius", r.edgeRadius);
+    v("edge_angle", r.edgeAngle);
     v("bounds_min", r.boundsMin);
     v("bounds_max", r.boundsMax);
     v("time", r.time);
@@ -251,6 +253,18 @@ template <class V> void fields(V& v, RunReport& r) {
     v("results", r.results);
 }
 
+template <class V> void fields(V& v, EvalEdges& e) {
+    v("chamfer_l1", e.chamferL1);
+    v("fscore", e.fscore);
+    v("precision", e.precision);
+    v("recall", e.recall);
+    v("hausdorff", e.hausdorff);
+    v("accuracy_mean", e.accuracyMean);
+    v("completeness_mean", e.completenessMean);
+    v("mesh_points", e.meshPoints);
+    v("surface_points", e.surfacePoints);
+}
+
 template <class V> void fields(V& v, EvalReport& r) {
     v("mesh", r.mesh);
     v("sdf", r.sdf);
@@ -266,6 +280,9 @@ template <class V> void fields(V& v, EvalReport& r) {
     v("fscore", r.fscore);
     v("hausdorff", r.hausdorff);
     v("iou", r.iou);
+    v("edge_radius", r.edgeRadius);
+    v("edge_angle", r.edgeAngle);
+    v("edges", r.edges);
     v("accuracy_mean", r.accuracyMean);
     v("accuracy_max", r.accuracyMax);
     v("completeness_mean", r.completenessMean);
@@ -298,6 +315,7 @@ template <class V> void fields(V& v, MeshReport& r) {
     v("blocks_kept", r.blocksKept);
     v("points_evaluated", r.pointsEvaluated);
     v("clamped_vertices", r.clampedVertices);
+    v("vertices_beside_their_cell", r.verticesBesideTheirCell);
     v("bounds_cut_points", r.boundsCutPoints);
     v("self_intersections", r.selfIntersections);
     v("mesh_seconds", r.meshSeconds);

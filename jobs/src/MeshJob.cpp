@@ -124,6 +124,7 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
     report.blocksKept = stats.blocksKept;
     report.pointsEvaluated = stats.pointsEvaluated;
     report.clampedVertices = stats.clampedVertices;
+    report.verticesBesideTheirCell = stats.verticesBesideTheirCell;
     report.boundsCutPoints = stats.boundsCutPoints;
     if (request.selfIntersections) report.selfIntersections = meshing::countSelfIntersections(mesh);
     report.meshSeconds = stats.seconds;
@@ -180,6 +181,10 @@ std::optional<JobError> validate(const EvalRequest& request) {
         return JobError{Failure::Usage, "--tau: must be a positive number", {}};
     if (request.occupancyResolution < 0 || request.occupancyResolution > 512)
         return JobError{Failure::Usage, "--occupancy-resolution: must be 0..512 (0: no IoU)", {}};
+    if (!(request.edgeRadius >= 0.0f) || !std::isfinite(request.edgeRadius))
+        return JobError{Failure::Usage, "--edge-radius: must be 0 (no edge measures) or a positive number", {}};
+    if (!(request.edgeAngle > 0.0f && request.edgeAngle < 180.0f))
+        return JobError{Failure::Usage, "--edge-angle: must be between 0 and 180 degrees", {}};
     if (auto error = checkBoundsAndTime(request.boundsMin, request.boundsMax, request.time)) return error;
     ParamsRequest sdfOnly{request.sdf};
     return validate(sdfOnly);
@@ -196,6 +201,8 @@ JobResult<EvalReport> run(const EvalRequest& request, const ProgressSink&) {
     options.points = request.points;
     options.tau = request.tau;
     options.occupancyResolution = request.occupancyResolution;
+    options.edgeRadius = request.edgeRadius;
+    options.edgeAngleDegrees = request.edgeAngle;
     options.boundsMin = request.boundsMin;
     options.boundsMax = request.boundsMax;
     options.seed = request.seed;
@@ -226,12 +233,21 @@ JobResult<EvalReport> run(const EvalRequest& request, const ProgressSink&) {
     report.fscore = e->fscore;
     report.hausdorff = e->hausdorff;
     report.iou = e->iou;
+    report.edgeRadius = request.edgeRadius;
+    report.edgeAngle = request.edgeAngle;
+    if (e->edges) {
+        const meshing::EdgeEvaluation& edges = *e->edges;
+        report.edges =
+            EvalEdges{edges.chamferL1,    edges.fscore,           edges.precision,  edges.recall,       edges.hausdorff,
+                      edges.accuracyMean, edges.completenessMean, edges.meshPoints, edges.surfacePoints};
+    }
     report.conventions =
         "accuracy: mesh points (by area) -> |f|, the exact distance for an exact field; completeness: exact-surface points -> "
         "nearest triangle; chamfer_l1 = (mean accuracy + mean completeness) / 2, not squared; chamfer_l2 = the same of squared "
         "distances; F-score at tau from both shares within tau; normal consistency = mean |cos| of face normal and field "
         "gradient over both point sets; IoU on the centres of an n^3 grid, mesh inside by ray parity; no normalisation (the "
-        "SDF's units)";
+        "SDF's units); edges: the same over the points of either set near a crease of the exact field (its normal turns by "
+        "more than edge_angle degrees within edge_radius in the tangent plane), null when the exact surface has none";
     report.parameters = shaders::valuesOf(sdf->parameters);
     report.warnings = sdf->warnings;
     if (!e->closed && e->iou)

@@ -57,7 +57,14 @@ void symmetricEigen(std::array<std::array<double, 3>, 3> a, std::array<double, 3
 
 // The point minimising sum (n . (x - p))^2 nearest the mass point: a pseudo-inverse that drops
 // directions the normals do not constrain (a flat face constrains one, an edge two, a corner three).
-glm::dvec3 solveQef(const glm::dvec3* points, const glm::dvec3* normals, int count) {
+// `free` holds the dropped directions: every point + span(free) minimises the sum as well.
+struct QefSolution {
+    glm::dvec3 point{0.0};
+    std::array<glm::dvec3, 3> free{};
+    int freeCount = 0;
+};
+
+QefSolution solveQef(const glm::dvec3* points, const glm::dvec3* normals, int count) {
     glm::dvec3 mass(0.0);
     for (int i = 0; i < count; ++i) mass += points[i];
     mass /= double(count);
@@ -75,13 +82,58 @@ glm::dvec3 solveQef(const glm::dvec3* points, const glm::dvec3* normals, int cou
     std::array<std::array<double, 3>, 3> vectors{};
     symmetricEigen(ata, values, vectors);
     const double largest = std::max({std::abs(values[0]), std::abs(values[1]), std::abs(values[2])});
+    QefSolution out;
     glm::dvec3 x(0.0);
     for (int k = 0; k < 3; ++k) {
-        if (largest <= 0.0 || std::abs(values[std::size_t(k)]) < 0.1 * largest) continue; // unconstrained direction
-        glm::dvec3 v(vectors[0][std::size_t(k)], vectors[1][std::size_t(k)], vectors[2][std::size_t(k)]);
+        const glm::dvec3 v(vectors[0][std::size_t(k)], vectors[1][std::size_t(k)], vectors[2][std::size_t(k)]);
+        if (largest <= 0.0 || std::abs(values[std::size_t(k)]) < 0.1 * largest) { // unconstrained direction
+            out.free[std::size_t(out.freeCount++)] = v;
+            continue;
+        }
         x += v * (glm::dot(v, atb) / values[std::size_t(k)]);
     }
-    return mass + x;
+    out.point = mass + x;
+    return out;
+}
+
+// The part [t0, t1] of the line p + t d inside the box [lo, hi]; false when it misses the box.
+bool clipLine(const glm::dvec3& p, const glm::dvec3& d, const glm::dvec3& lo, const glm::dvec3& hi, double& t0, double& t1) {
+    t0 = -std::numeric_limits<double>::infinity();
+    t1 = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < 3; ++a) {
+        if (std::abs(d[a]) < 1e-12) {
+            if (p[a] < lo[a] || p[a] > hi[a]) return false;
+            continue;
+        }
+        double enter = (lo[a] - p[a]) / d[a], leave = (hi[a] - p[a]) / d[a];
+        if (enter > leave) std::swap(enter, leave);
+        t0 = std::max(t0, enter);
+        t1 = std::min(t1, leave);
+    }
+    return t0 <= t1;
+}
+
+// Where a cell's vertex goes. The QEF's minimiser when it lies in the cell. A sharp edge (one free
+// direction) is a line of minimisers: the point of that line nearest the minimiser inside the cell,
+// else inside the cell grown by `margin` on every side (an edge that passes just beside the cell,
+// whose two faces the cell's crossings see: clamping would pull the vertex off the edge by up to
+// the margin). Anything else is clamped into the cell. `left` counts vertices placed outside their
+// cell, `clamped` those moved off their QEF's minimisers.
+glm::dvec3 placeVertex(const QefSolution& qef, const glm::dvec3& lo, const glm::dvec3& hi, double margin, std::uint64_t& left,
+                       std::uint64_t& clamped) {
+    const glm::dvec3& x = qef.point;
+    if (glm::all(glm::greaterThanEqual(x, lo)) && glm::all(glm::lessThanEqual(x, hi))) return x;
+    if (qef.freeCount == 1) {
+        double t0 = 0.0, t1 = 0.0;
+        const glm::dvec3& d = qef.free[0];
+        if (clipLine(x, d, lo, hi, t0, t1)) return x + d * std::clamp(0.0, t0, t1);
+        if (clipLine(x, d, lo - margin, hi + margin, t0, t1)) {
+            ++left;
+            return x + d * std::clamp(0.0, t0, t1);
+        }
+    }
+    ++clamped;
+    return glm::clamp(x, lo, hi);
 }
 
 struct Grid {
@@ -279,7 +331,8 @@ private:
     std::vector<Edge> edges;       // with a sign change
     std::vector<float> edgeValues; // f at the start and the end of each edge
     std::vector<float> crossings, crossingValues, normals;
-    float normalStep = 0.0f; // the normals' difference step
+    float normalStep = 0.0f;   // the normals' difference step
+    double vertexMargin = 0.0; // how far a vertex on a sharp edge may leave its cell
     Mesh mesh;
     std::vector<RankedBits<kCells>> blockCells;
     std::vector<CellRecord> cellRecords;
@@ -300,6 +353,7 @@ Expected<std::pair<Mesh, MeshStats>> Extraction::run() {
     probe.setClip(clipLow, clipHigh);
 
     normalStep = float(0.05 * std::min({grid.step.x, grid.step.y, grid.step.z}));
+    vertexMargin = 0.5 * std::min({grid.step.x, grid.step.y, grid.step.z});
     if (auto ok = selectBlocks(); !ok) return ok.error();
     progress(1, 4);
     if (auto ok = evaluateBlocks(); !ok) return ok.error();
@@ -553,10 +607,9 @@ void Extraction::placeVertices() {
                             points[count] = glm::dvec3(crossings[3 * e], crossings[3 * e + 1], crossings[3 * e + 2]);
                             patchNormals[count++] = length > 0.0 && std::isfinite(length) ? n / length : glm::dvec3(0.0);
                         }
-                        const glm::dvec3 x = solveQef(points, patchNormals, count);
-                        const glm::dvec3 clamped = glm::clamp(x, lo, hi);
-                        if (clamped != x) ++stats.clampedVertices;
-                        mesh.vertices.push_back(glm::vec3(clamped));
+                        const glm::dvec3 x = placeVertex(solveQef(points, patchNormals, count), lo, hi, vertexMargin,
+                                                         stats.verticesBesideTheirCell, stats.clampedVertices);
+                        mesh.vertices.push_back(glm::vec3(x));
                         vertexCell.push_back({cell[0], cell[1], cell[2]});
                         ++patch;
                     }
@@ -570,7 +623,8 @@ void Extraction::placeVertices() {
 
 // On curved surfaces the planes' minimiser lies off the surface by about h^2 times the
 // curvature: two Newton steps along the gradient put each vertex on it (a vertex already on a
-// sharp edge or corner has f = 0 and stays). Steps are kept within the vertex's cell.
+// sharp edge or corner has f = 0 and stays). Steps are kept within the vertex's cell (or, for a vertex
+// placed beside its cell on a sharp edge, within the same margin).
 Expected<void> Extraction::projectVertices() {
     std::vector<float> positions(3 * mesh.vertices.size()), fieldValues, gradients;
     for (int iteration = 0; iteration < 2; ++iteration) {
@@ -584,8 +638,12 @@ Expected<void> Extraction::projectVertices() {
             const float g2 = glm::dot(g, g);
             if (!std::isfinite(f) || !(g2 > 1e-12f) || !std::isfinite(g2)) continue;
             const auto& c = vertexCell[vertex];
-            mesh.vertices[vertex] = glm::clamp(mesh.vertices[vertex] - g * (f / g2), grid.point(c[0], c[1], c[2]),
-                                               grid.point(c[0] + 1, c[1] + 1, c[2] + 1));
+            const glm::vec3 cellLo = grid.point(c[0], c[1], c[2]), cellHi = grid.point(c[0] + 1, c[1] + 1, c[2] + 1);
+            // A vertex placed beside its cell (on a sharp edge) keeps the margin it was given.
+            const bool beside = glm::any(glm::lessThan(mesh.vertices[vertex], cellLo)) ||
+                                glm::any(glm::greaterThan(mesh.vertices[vertex], cellHi));
+            const glm::vec3 margin{beside ? float(vertexMargin) : 0.0f};
+            mesh.vertices[vertex] = glm::clamp(mesh.vertices[vertex] - g * (f / g2), cellLo - margin, cellHi + margin);
         }
     }
     return {};

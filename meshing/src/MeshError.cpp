@@ -260,10 +260,85 @@ Expected<MeshError> measureError(const shaders::PreparedSdf& sdf, const Mesh& me
     return error;
 }
 
+// Which of the points lie near a crease of the field: its normal at the point (the unit gradient)
+// and at one of 8 points `radius` away around it, in the plane normal to it, differ by more than the
+// angle whose cosine is `cosAngle`. Points without a usable gradient are not near a crease.
+Expected<std::vector<std::uint8_t>> nearCreases(detail::FieldProbe& field, const std::vector<float>& points,
+                                                const std::vector<float>& gradients, float radius, float cosAngle) {
+    constexpr int kTaps = 8;
+    const std::size_t n = points.size() / 3;
+    std::vector<glm::vec3> normals(n, glm::vec3(0.0f));
+    std::vector<float> taps;
+    taps.reserve(3 * kTaps * n);
+    for (std::size_t s = 0; s < n; ++s) {
+        const glm::vec3 p(points[3 * s], points[3 * s + 1], points[3 * s + 2]);
+        const glm::vec3 g(gradients[3 * s], gradients[3 * s + 1], gradients[3 * s + 2]);
+        const float length = glm::length(g);
+        if (length > 0.0f && std::isfinite(length)) normals[s] = g / length;
+        const glm::vec3 normal = normals[s];
+        // Any unit vector across the normal, then the one across both.
+        const glm::vec3 other = std::abs(normal.x) < 0.6f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+        const glm::vec3 u = glm::length(normal) > 0.0f ? glm::normalize(glm::cross(normal, other)) : glm::vec3(0.0f);
+        const glm::vec3 v = glm::cross(normal, u);
+        for (int k = 0; k < kTaps; ++k) {
+            const float angle = 6.2831853f * float(k) / float(kTaps);
+            const glm::vec3 q = p + radius * (std::cos(angle) * u + std::sin(angle) * v);
+            taps.insert(taps.end(), {q.x, q.y, q.z});
+        }
+    }
+    std::vector<float> values, tapGradients;
+    if (auto ok = field.evaluate(taps, values, &tapGradients); !ok) return ok.error();
+    std::vector<std::uint8_t> near(n, 0);
+    for (std::size_t s = 0; s < n; ++s) {
+        if (glm::length(normals[s]) == 0.0f) continue;
+        for (int k = 0; k < kTaps && !near[s]; ++k) {
+            const std::size_t t = kTaps * s + std::size_t(k);
+            const glm::vec3 g(tapGradients[3 * t], tapGradients[3 * t + 1], tapGradients[3 * t + 2]);
+            const float length = glm::length(g);
+            if (length > 0.0f && std::isfinite(length)) near[s] = glm::dot(normals[s], g / length) < cosAngle;
+        }
+    }
+    return near;
+}
+
+// The edge measures over the points near creases: `accuracy` and `completeness` hold each point's
+// distance (infinite where it has none).
+std::optional<EdgeEvaluation> edgeMeasures(const std::vector<float>& accuracy, const std::vector<std::uint8_t>& meshNear,
+                                           const std::vector<float>& completeness, const std::vector<std::uint8_t>& surfaceNear,
+                                           float tau) {
+    EdgeEvaluation e;
+    double accuracySum = 0.0, completenessSum = 0.0;
+    std::uint64_t accurate = 0, complete = 0;
+    for (std::size_t s = 0; s < accuracy.size(); ++s) {
+        if (!meshNear[s] || !std::isfinite(accuracy[s])) continue;
+        accuracySum += double(accuracy[s]);
+        accurate += accuracy[s] < tau;
+        e.hausdorff = std::max(e.hausdorff, accuracy[s]);
+        ++e.meshPoints;
+    }
+    for (std::size_t s = 0; s < completeness.size(); ++s) {
+        if (!surfaceNear[s] || !std::isfinite(completeness[s])) continue;
+        completenessSum += double(completeness[s]);
+        complete += completeness[s] < tau;
+        e.hausdorff = std::max(e.hausdorff, completeness[s]);
+        ++e.surfacePoints;
+    }
+    if (e.surfacePoints == 0) return std::nullopt; // no crease on the exact surface
+    e.accuracyMean = e.meshPoints ? float(accuracySum / double(e.meshPoints)) : 0.0f;
+    e.completenessMean = float(completenessSum / double(e.surfacePoints));
+    e.chamferL1 = 0.5f * (e.accuracyMean + e.completenessMean);
+    e.precision = e.meshPoints ? float(double(accurate) / double(e.meshPoints)) : 0.0f;
+    e.recall = float(double(complete) / double(e.surfacePoints));
+    e.fscore = e.precision + e.recall > 0.0f ? 2.0f * e.precision * e.recall / (e.precision + e.recall) : 0.0f;
+    return e;
+}
+
 Expected<MeshEvaluation> evaluateMesh(const shaders::PreparedSdf& sdf, const Mesh& mesh, const EvalOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     if (mesh.indices.empty()) return makeError("eval: the mesh has no triangles");
     if (!(options.tau > 0.0f)) return makeError("eval: --tau must be positive");
+    if (!(options.edgeRadius >= 0.0f) || !(options.edgeAngleDegrees > 0.0f && options.edgeAngleDegrees < 180.0f))
+        return makeError("eval: the edge radius must be 0 or more and the edge angle between 0 and 180 degrees");
     MeshEvaluation e;
     e.tau = options.tau;
     // Accuracy: points on the mesh to the surface, |f| (the distance for an exact field).
@@ -274,9 +349,11 @@ Expected<MeshEvaluation> evaluateMesh(const shaders::PreparedSdf& sdf, const Mes
     if (auto ok = field.evaluate(onMesh.xyz, values, &gradients); !ok) return ok.error();
     double sum1 = 0.0, sum2 = 0.0, normalSum = 0.0;
     std::uint64_t within = 0, counted = 0, normals = 0;
+    std::vector<float> accuracy(values.size(), std::numeric_limits<float>::infinity());
     for (std::size_t s = 0; s < values.size(); ++s) {
         if (!std::isfinite(values[s])) continue;
         const double d = std::abs(double(values[s]));
+        accuracy[s] = float(d);
         sum1 += d;
         sum2 += d * d;
         e.accuracyMax = std::max(e.accuracyMax, float(d));
@@ -303,10 +380,12 @@ Expected<MeshEvaluation> evaluateMesh(const shaders::PreparedSdf& sdf, const Mes
     TriangleLocator locator(mesh);
     double sum1b = 0.0, sum2b = 0.0, normalSumB = 0.0;
     std::uint64_t withinB = 0, countedB = 0, normalsB = 0;
+    std::vector<float> completeness(distances.size(), std::numeric_limits<float>::infinity());
     for (std::size_t s = 0; s < distances.size(); ++s) {
         if (!std::isfinite(distances[s])) continue;
         const auto [d, face] = locator.nearest(glm::vec3(surface[3 * s], surface[3 * s + 1], surface[3 * s + 2]));
         if (!std::isfinite(d)) continue;
+        completeness[s] = d;
         sum1b += double(d);
         sum2b += double(d) * double(d);
         e.completenessMax = std::max(e.completenessMax, d);
@@ -327,6 +406,14 @@ Expected<MeshEvaluation> evaluateMesh(const shaders::PreparedSdf& sdf, const Mes
         float(0.5 * ((normals ? normalSum / double(normals) : 0.0) + (normalsB ? normalSumB / double(normalsB) : 0.0)));
     e.fscore = e.precision + e.recall > 0.0f ? 2.0f * e.precision * e.recall / (e.precision + e.recall) : 0.0f;
     e.hausdorff = std::max(e.accuracyMax, e.completenessMax);
+    if (options.edgeRadius > 0.0f) {
+        const float cosAngle = std::cos(options.edgeAngleDegrees * 3.14159265f / 180.0f);
+        auto meshNear = nearCreases(field, onMesh.xyz, gradients, options.edgeRadius, cosAngle);
+        if (!meshNear) return meshNear.error();
+        auto surfaceNear = nearCreases(field, surface, surfaceGradients, options.edgeRadius, cosAngle);
+        if (!surfaceNear) return surfaceNear.error();
+        e.edges = edgeMeasures(accuracy, *meshNear, completeness, *surfaceNear, options.tau);
+    }
     // Volume IoU: occupancy of the field (f < 0) against the mesh's (ray parity) on a grid.
     const Topology topology = checkTopology(mesh);
     e.closed = topology.boundaryEdges == 0;

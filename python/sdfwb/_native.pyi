@@ -178,6 +178,8 @@ def evaluate_mesh(
     tau: float = 0.01,
     points: int = 100000,
     occupancy_resolution: int = 128,
+    edge_radius: float = 0.02,
+    edge_angle: float = 30.0,
     seed: int = 0,
     time: float = 0.0,
     entry: str = "",

@@ -48,6 +48,14 @@ int runEval(const jobs::EvalRequest& request, const OutputOptions& output) {
         std::printf("  Hausdorff          %.4g  (accuracy max %.4g, completeness max %.4g)\n", r.hausdorff, r.accuracyMax,
                     r.completenessMax);
         if (r.iou) std::printf("  volume IoU         %.4f  (%llu grid points)\n", *r.iou, (unsigned long long)r.occupancyPoints);
+        if (r.edges)
+            std::printf("  near creases       Chamfer L1 %.4g, F-score %.4f, Hausdorff %.4g  (%llu mesh and %llu surface points "
+                        "within %.3g of a turn over %.3g degrees)\n",
+                        r.edges->chamferL1, r.edges->fscore, r.edges->hausdorff, (unsigned long long)r.edges->meshPoints,
+                        (unsigned long long)r.edges->surfacePoints, r.edgeRadius, r.edgeAngle);
+        else if (r.edgeRadius > 0.0f)
+            std::printf("  near creases       none: the exact surface turns by less than %.3g degrees within %.3g\n", r.edgeAngle,
+                        r.edgeRadius);
         std::printf("  points             %llu on the mesh, %llu on the exact surface; distances in the SDF's units\n",
                     (unsigned long long)r.meshPoints, (unsigned long long)r.surfacePoints);
     });

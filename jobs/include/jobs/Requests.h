@@ -173,6 +173,8 @@ struct EvalRequest {
     std::uint64_t points = 100000;
     float tau = 0.01f;
     int occupancyResolution = 128; // 0: no IoU
+    float edgeRadius = 0.02f;      // points this near a crease count for the edge measures (0: none)
+    float edgeAngle = 30.0f;       // degrees the field's normal turns across a crease, at least
     glm::vec3 boundsMin{-1.0f};
     glm::vec3 boundsMax{1.0f};
     float time = 0.0f;
@@ -358,7 +360,7 @@ struct MeshReport {
     float lipschitzBound = 0.0f;
     std::string boundSource;  // where the bound came from
     std::string fieldVerdict; // the quick audit's verdict (exact, conservative, ...)
-    std::uint64_t blocks = 0, blocksKept = 0, pointsEvaluated = 0, clampedVertices = 0;
+    std::uint64_t blocks = 0, blocksKept = 0, pointsEvaluated = 0, clampedVertices = 0, verticesBesideTheirCell = 0;
     std::uint64_t boundsCutPoints = 0;              // grid points inside the shape beyond the bounds: closed by caps there
     std::optional<std::uint64_t> selfIntersections; // crossing triangle pairs, when asked for
     double meshSeconds = 0.0;
@@ -374,6 +376,14 @@ struct MeshReport {
     bool operator==(const MeshReport&) const = default;
 };
 
+// The eval measures over the points near creases of the exact field (meshing::EdgeEvaluation).
+struct EvalEdges {
+    float chamferL1 = 0.0f, fscore = 0.0f, precision = 0.0f, recall = 0.0f, hausdorff = 0.0f;
+    float accuracyMean = 0.0f, completenessMean = 0.0f;
+    std::uint64_t meshPoints = 0, surfacePoints = 0;
+    bool operator==(const EvalEdges&) const = default;
+};
+
 struct EvalReport {
     std::string mesh;
     std::string sdf;
@@ -384,7 +394,9 @@ struct EvalReport {
     float chamferL1 = 0.0f, chamferL2 = 0.0f, normalConsistency = 0.0f;
     float tau = 0.0f, precision = 0.0f, recall = 0.0f, fscore = 0.0f, hausdorff = 0.0f;
     std::optional<float> iou;
-    std::string conventions; // what each figure means (squared or not, counts, normalisation)
+    float edgeRadius = 0.0f, edgeAngle = 0.0f;
+    std::optional<EvalEdges> edges; // none when no point of the exact surface lies near a crease
+    std::string conventions;        // what each figure means (squared or not, counts, normalisation)
     std::vector<shaders::ParameterValue> parameters;
     MeshSource meshSource;
     std::vector<std::string> warnings;

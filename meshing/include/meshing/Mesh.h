@@ -37,10 +37,11 @@ struct MeshOptions {
 };
 
 struct MeshStats {
-    std::uint64_t blocks = 0, blocksKept = 0; // blocks of 8^3 cells, and those that may hold surface
-    std::uint64_t pointsEvaluated = 0;        // field evaluations on the GPU (grid, crossings, centres)
-    std::uint64_t activeCells = 0;            // cells the surface crosses (one vertex each)
-    std::uint64_t clampedVertices = 0;        // QEF minimisers outside their cell, clamped into it
+    std::uint64_t blocks = 0, blocksKept = 0;  // blocks of 8^3 cells, and those that may hold surface
+    std::uint64_t pointsEvaluated = 0;         // field evaluations on the GPU (grid, crossings, centres)
+    std::uint64_t activeCells = 0;             // cells the surface crosses (one vertex each)
+    std::uint64_t clampedVertices = 0;         // QEF minimisers outside their cell, clamped into it
+    std::uint64_t verticesBesideTheirCell = 0; // on a sharp edge that passes beside the cell, at most half a cell out
     // Grid points inside the shape but outside the bounds (half a cell beyond them): the shape
     // leaves the bounds and the mesh is closed by flat caps there. 0: the shape lies inside.
     std::uint64_t boundsCutPoints = 0;
@@ -110,17 +111,31 @@ Expected<MeshError> measureError(const shaders::PreparedSdf& sdf, const Mesh& me
 //                 averaged over both point sets;
 //   F-score at tau: 2PR / (P + R), P = share of mesh points within tau, R = share of surface points;
 //   Hausdorff: the larger of the two maxima; IoU: occupancy of the field (f < 0) against the mesh's
-//   (parity of ray crossings, meaningful for closed meshes) at the centres of an n^3 grid.
+//   (parity of ray crossings, meaningful for closed meshes) at the centres of an n^3 grid;
+//   edges:        the same accuracy, completeness, Chamfer-L1, F-score and Hausdorff over the points
+//                 of both sets that lie near a crease of the exact field: where its normal turns by
+//                 more than edgeAngleDegrees between the point and one of 8 points edgeRadius away
+//                 around it in its tangent plane. A mesher that rounds or cuts sharp edges scores
+//                 worse here than over the whole surface, where the creases' share is small.
 // No normalisation: distances are in the SDF's units (the default bounds are [-1,1]^3).
 struct EvalOptions {
     std::uint64_t points = 100000; // each way
     float tau = 0.01f;
     int occupancyResolution = 128; // 0: no IoU
+    float edgeRadius = 0.02f;      // 0: no edge measure
+    float edgeAngleDegrees = 30.0f;
     glm::vec3 boundsMin{-1.0f};
     glm::vec3 boundsMax{1.0f};
     std::uint64_t seed = 0;
     float time = 0.0f;
     std::vector<shaders::ParameterSetting> parameters;
+};
+
+// The measures over the points near creases (see EvalOptions).
+struct EdgeEvaluation {
+    float accuracyMean = 0.0f, completenessMean = 0.0f, chamferL1 = 0.0f;
+    float precision = 0.0f, recall = 0.0f, fscore = 0.0f, hausdorff = 0.0f;
+    std::uint64_t meshPoints = 0, surfacePoints = 0; // of each set, those near a crease
 };
 
 struct MeshEvaluation {
@@ -131,7 +146,8 @@ struct MeshEvaluation {
     float tau = 0.0f, precision = 0.0f, recall = 0.0f, fscore = 0.0f;
     float hausdorff = 0.0f;
     std::optional<float> iou;
-    bool closed = false; // no boundary edges (the IoU's parity test assumes it)
+    std::optional<EdgeEvaluation> edges; // none when no surface point lies near a crease
+    bool closed = false;                 // no boundary edges (the IoU's parity test assumes it)
     std::uint64_t meshPoints = 0, surfacePoints = 0, occupancyPoints = 0;
     double seconds = 0.0;
 };
