@@ -1,0 +1,491 @@
+#!/usr/bin/env python3
+"""Error against run time: sdfwb's mesher beside the meshers users already have, in one run (#33 point 3).
+
+    flock /tmp/sdfwb-build.lock env -u DISPLAY PYTHONPATH=build/python /usr/bin/python3 bench/bench_mesh_peers.py
+        [--repeats 3] [--resolutions 32,48,64,96,128,192,256] [--peer-resolutions 64,128,256] [--only NAME,...]
+        [--markdown docs/meshing-peers.md] [--plot docs/images/mesh_peers_error_vs_time.png]
+
+Ours: `sdfwb.mesh(sdf, resolution=R)`, the whole call timed (GL context, quick audit, GPU field, dual contouring,
+projection onto the surface).
+
+Peers, each given the same field on the same (R+1)^3 lattice over [-1,1]^3:
+- scikit-image `measure.marching_cubes` (Lewiner; single-threaded, its kernel holds the GIL);
+- VTK `vtkFlyingEdges3D` (threaded through vtkSMPTools; every thread count from 1 to nproc is tried and the
+  fastest kept), normals, gradients and scalars off;
+- OpenVDB `volumeToMesh` through pyopenvdb's `FloatGrid.convertToPolygons(isovalue=0, adaptivity=0)` (threaded
+  by TBB), the grid filled by `copyFromArray`, whose time counts.
+The peers' field: the fastest of a NumPy float32 lattice (whole, and in z-slabs over a ThreadPool of 1..nproc
+threads) where the SDF is written below in NumPy, and sdfwb's own `grid` sampler (GPU) for every SDF; its time
+counts for the peer. Every time is the median of --repeats runs after a warm-up. Every mesh is graded by
+`sdfwb.evaluate_mesh` against the exact field (100,000 points each way, tau as printed), with the edge measures
+(points near creases). Nothing is typed by hand into the generated Markdown.
+"""
+import concurrent.futures
+import datetime
+import os
+import platform
+import resource
+import socket
+import statistics
+import sys
+import tempfile
+import time
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import meshio
+import numpy as np
+import pyopenvdb
+import skimage
+import vtk
+from skimage import measure
+from vtk.util import numpy_support
+
+import sdfwb
+
+from machine import cpu_model  # bench/machine.py
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+args = sys.argv[1:]
+
+
+def option(name, default):
+    return args[args.index(name) + 1] if name in args else default
+
+
+REPEATS = int(option("--repeats", "3"))
+OURS_R = [int(r) for r in option("--resolutions", "32,48,64,96,128,192,256").split(",")]
+PEER_R = [int(r) for r in option("--peer-resolutions", "64,128,256").split(",")]
+ONLY = set(option("--only", "").split(",")) - {""}
+MARKDOWN = option("--markdown", None)
+PLOT = option("--plot", None)
+TAU = 0.002
+CPUS = os.cpu_count()
+THREADS = list(range(1, CPUS + 1))
+TOP = max(PEER_R)
+
+
+# NumPy forms of the SDFs that can be written in NumPy (x, y, z broadcast; x along the last axis).
+def np_sphere(x, y, z):
+    return np.sqrt(x * x + y * y + z * z) - np.float32(0.8)
+
+
+def np_torus(x, y, z):  # the dataset's Torus: tilted 30 degrees about x
+    c, s = np.float32(0.8660254), np.float32(0.5)
+    y, z = c * y + s * z, -s * y + c * z
+    q = np.sqrt(x * x + z * z) - np.float32(0.65)
+    return np.sqrt(q * q + y * y) - np.float32(0.25)
+
+
+def np_box_of(x, y, z, hx, hy, hz):
+    qx, qy, qz = np.abs(x) - np.float32(hx), np.abs(y) - np.float32(hy), np.abs(z) - np.float32(hz)
+    outside = np.sqrt(np.maximum(qx, 0) ** 2 + np.maximum(qy, 0) ** 2 + np.maximum(qz, 0) ** 2)
+    return outside + np.minimum(np.maximum(qx, np.maximum(qy, qz)), 0)
+
+
+def np_box(x, y, z):
+    return np_box_of(x, y, z, 0.8, 0.5, 0.6)
+
+
+# A rotation by an irrational angle (0.3 rad about (1, 2, 3)), rows of R^T for the fields below.
+def rotation(axis, angle):
+    k = np.asarray(axis, float) / np.linalg.norm(axis)
+    K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    return np.eye(3) + np.sin(angle) * K + (1 - np.cos(angle)) * K @ K
+
+
+TILT = rotation((1.0, 2.0, 3.0), 0.3)
+T = TILT.T.astype(np.float32)  # the field is the upright shape's at R^T p
+
+
+def untilt(x, y, z):
+    return (T[0, 0] * x + T[0, 1] * y + T[0, 2] * z, T[1, 0] * x + T[1, 1] * y + T[1, 2] * z,
+            T[2, 0] * x + T[2, 1] * y + T[2, 2] * z)
+
+
+def np_rotated_box(x, y, z):
+    return np_box_of(*untilt(x, y, z), 0.55, 0.4, 0.3)
+
+
+def np_rotated_cylinder(x, y, z):  # a capped cylinder along the tilted y axis: radius 0.45, half height 0.6
+    u, v, w = untilt(x, y, z)
+    dx, dy = np.sqrt(u * u + w * w) - np.float32(0.45), np.abs(v) - np.float32(0.6)
+    return np.minimum(np.maximum(dx, dy), 0) + np.sqrt(np.maximum(dx, 0) ** 2 + np.maximum(dy, 0) ** 2)
+
+
+def np_shell(x, y, z):  # a hollow ball, wall 0.03 thick, cut open by the plane y = 0.5
+    ball = np.abs(np.sqrt(x * x + y * y + z * z) - np.float32(0.7)) - np.float32(0.015)
+    return np.maximum(ball, y - np.float32(0.5))
+
+
+def glsl_matrix():
+    return ", ".join(f"{TILT.T[row, col]:.9e}" for col in range(3) for row in range(3))  # mat3 takes columns
+
+
+ROTATED_BOX = (f"float sdf(vec3 p) {{ vec3 q = abs(mat3({glsl_matrix()}) * p) - vec3(0.55, 0.4, 0.3); "
+               "return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0); }")
+ROTATED_CYLINDER = (f"float sdf(vec3 p) {{ vec3 q = mat3({glsl_matrix()}) * p; "
+                    "vec2 d = vec2(length(q.xz) - 0.45, abs(q.y) - 0.6); "
+                    "return min(max(d.x, d.y), 0.0) + length(max(d, 0.0)); }")
+SHELL = "float sdf(vec3 p) { return max(abs(length(p) - 0.7) - 0.015, p.y - 0.5); }"
+FOREIGN = os.path.join(ROOT, "tests", "foreign")
+
+# (label, class, sdf as sdfwb takes it, NumPy field or None)
+SHAPES = [
+    ("Sphere", "smooth", "sphere", np_sphere),
+    ("Torus", "smooth", "torus", np_torus),
+    ("Capsule", "smooth", "capsule", None),
+    ("Box", "box-like", "box", np_box),
+    ("Rotated box", "box-like", ROTATED_BOX, np_rotated_box),
+    ("Hexagonal prism", "box-like", "hexagonalprism", None),
+    ("Rotated cylinder", "creased", ROTATED_CYLINDER, np_rotated_cylinder),
+    ("Anvil", "creased", "anvil", None),
+    ("hg_sdf arcade with chamfers (foreign)", "creased", os.path.join(FOREIGN, "42_hg_mercury_arcade.glsl"), None),
+    ("IQ primitives (foreign)", "creased", os.path.join(FOREIGN, "01_iq_primitives.glsl"), None),
+    ("jw CSG (foreign)", "creased", os.path.join(FOREIGN, "43_jw_csg_phong.glsl"), None),
+    ("Open shell, wall 0.03", "thin-walled", SHELL, np_shell),
+    ("Mug", "thin-walled", "mug", None),
+    ("Menger sponge", "fractal", "mengersponge", None),
+    ("Sierpinski tetrahedron", "fractal", "sierpinskitetrahedron", None),
+]
+if ONLY:
+    SHAPES = [s for s in SHAPES if s[0] in ONLY]
+
+
+def timed(function):
+    started = time.perf_counter()
+    result = function()
+    return time.perf_counter() - started, result
+
+
+def median_time(function, repeats=REPEATS):
+    function()  # warm-up
+    times, result = [], None
+    for _ in range(repeats):
+        t, result = timed(function)
+        times.append(t)
+    return statistics.median(times), result
+
+
+# The peers' field on the (R+1)^3 lattice, [z][y][x] (x fastest), float32.
+def lattice_numpy(field, R, pool=None, slab=32):
+    axis = np.linspace(-1.0, 1.0, R + 1, dtype=np.float32)
+    x, y, z = axis[None, None, :], axis[None, :, None], axis[:, None, None]
+    if pool is None:
+        values = field(x, y, z)
+        return values if values.shape == (R + 1,) * 3 else np.broadcast_to(values, (R + 1,) * 3).copy()
+    values = np.empty((R + 1,) * 3, np.float32)
+
+    def work(z0):
+        values[z0:z0 + slab] = field(x, y, z[z0:z0 + slab])
+
+    list(pool.map(work, range(0, R + 1, slab)))
+    return values
+
+
+def lattice_sdfwb(sdf, R):
+    return sdfwb.sample(sdf, "grid", (R + 1) ** 3)["distance"].reshape((R + 1,) * 3)
+
+
+def field_forms(sdf, field, R, pools):
+    forms = [("sdfwb grid sampler (GPU)", lambda: lattice_sdfwb(sdf, R))]
+    if field is not None:
+        forms.append(("NumPy whole lattice, 1 thread", lambda: lattice_numpy(field, R)))
+        for k in THREADS[1:]:
+            forms.append((f"NumPy z-slabs, ThreadPool of {k}", lambda k=k: lattice_numpy(field, R, pools[k])))
+    return forms
+
+
+def skimage_mc(values, R):
+    vertices, faces, _, _ = measure.marching_cubes(values, 0.0, spacing=(2.0 / R,) * 3)
+    return np.ascontiguousarray(vertices[:, ::-1] - 1.0, dtype=np.float32), faces
+
+
+def flying_edges(values, R):
+    image = vtk.vtkImageData()
+    image.SetDimensions(R + 1, R + 1, R + 1)
+    image.SetSpacing(2.0 / R, 2.0 / R, 2.0 / R)
+    image.SetOrigin(-1.0, -1.0, -1.0)
+    image.GetPointData().SetScalars(numpy_support.numpy_to_vtk(values.ravel(), deep=0, array_type=vtk.VTK_FLOAT))
+    mesher = vtk.vtkFlyingEdges3D()
+    mesher.SetInputData(image)
+    mesher.SetValue(0, 0.0)
+    mesher.ComputeNormalsOff()
+    mesher.ComputeGradientsOff()
+    mesher.ComputeScalarsOff()
+    mesher.InterpolateAttributesOff()
+    mesher.Update()
+    out = mesher.GetOutput()
+    if out.GetNumberOfPoints() == 0:
+        return np.zeros((0, 3), np.float32), np.zeros((0, 3), np.int64)
+    points = numpy_support.vtk_to_numpy(out.GetPoints().GetData()).astype(np.float32)
+    faces = numpy_support.vtk_to_numpy(out.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    return points, faces
+
+
+def openvdb_mesh(values, R):
+    h = 2.0 / R
+    grid = pyopenvdb.FloatGrid(background=float(3.0 * h))
+    grid.copyFromArray(np.ascontiguousarray(values.transpose(2, 1, 0)), ijk=(0, 0, 0), tolerance=0.0)  # [x][y][z]
+    grid.transform = pyopenvdb.createLinearTransform(voxelSize=h)
+    points, triangles, quads = grid.convertToPolygons(isovalue=0.0, adaptivity=0.0)
+    faces = np.concatenate([triangles.reshape(-1, 3), quads[:, [0, 1, 2]], quads[:, [0, 2, 3]]]) if len(quads) else triangles
+    return (points - 1.0).astype(np.float32), faces
+
+
+PEERS = {"scikit-image MC": skimage_mc, "VTK Flying Edges": flying_edges, "OpenVDB volumeToMesh": openvdb_mesh}
+
+
+def grade(vertices, faces, sdf, folder):
+    if len(faces) == 0:
+        return None
+    path = os.path.join(folder, "m.ply")
+    meshio.write(path, meshio.Mesh(np.asarray(vertices, np.float32), [("triangle", np.asarray(faces, np.int32))]),
+                 binary=True)
+    return sdfwb.evaluate_mesh(path, sdf, tau=TAU, occupancy_resolution=0)
+
+
+def gl_renderer():
+    with tempfile.TemporaryDirectory() as folder:
+        report = sdfwb.run({"kind": "sample", "sdf": "sphere", "pattern": "rand", "n": 256,
+                            "output": os.path.join(folder, "renderer.bin")})
+    return report.get("gl_renderer") or "unknown"
+
+
+renderer = gl_renderer()
+started = datetime.datetime.now(datetime.timezone.utc)
+config = [
+    f"Machine: {socket.gethostname()}, nproc {CPUS} ({cpu_model()}), {platform.system()} {platform.release()}; "
+    f"started {started.strftime('%Y-%m-%d %H:%M')} UTC; GL renderer `{renderer}`"
+    + (" (Mesa's CPU rasteriser, no GPU)" if "llvmpipe" in renderer else "") + ".",
+    f"sdfwb {sdfwb.__version__}: `sdfwb.mesh(sdf, resolution=R)` at R = {', '.join(map(str, OURS_R))}, the whole "
+    "call timed (GL context, quick audit, GPU field, dual contouring, projection onto the surface).",
+    f"scikit-image {skimage.__version__} `measure.marching_cubes` (Lewiner), 1 thread (its kernel holds the GIL).",
+    f"VTK {vtk.vtkVersion.GetVTKVersion()} `vtkFlyingEdges3D`, SMP backend {vtk.vtkSMPTools.GetBackend()}, "
+    f"thread counts {', '.join(map(str, THREADS))} tried at each size, the fastest kept; normals, gradients, "
+    "scalars off.",
+    f"OpenVDB {'.'.join(map(str, pyopenvdb.LIBRARY_VERSION))} `volumeToMesh` (pyopenvdb "
+    "`FloatGrid.convertToPolygons(isovalue=0, adaptivity=0)`, TBB threads), the dense lattice copied in by "
+    "`copyFromArray` (timed with it); quads split into two triangles.",
+    f"The peers' field: the fastest of sdfwb's `grid` sampler (GPU; every SDF) and NumPy {np.__version__} float32 "
+    f"(whole lattice, or z-slabs over a ThreadPool of {', '.join(map(str, THREADS[1:]))} threads; for the SDFs "
+    "written in NumPy in the bench), timed and added to each peer's time: the whole call, as a user would run it.",
+    f"Peers at R = {', '.join(map(str, PEER_R))}. Every time is the median of {REPEATS} runs after a warm-up. "
+    f"Errors: `sdfwb.evaluate_mesh(mesh, sdf, tau={TAU})`, 100,000 points each way against the exact field; edge "
+    "measures over the points within 0.02 of a crease (the field's normal turning by over 30 degrees).",
+]
+print("\n".join(config), flush=True)
+
+pools = {k: concurrent.futures.ThreadPoolExecutor(k) for k in THREADS}
+results = []  # dict(label, cls, tool, R, seconds, field_seconds, triangles, eval)
+field_choice = {}
+wall_start = time.perf_counter()
+with tempfile.TemporaryDirectory() as folder:
+    for label, cls, sdf, field in SHAPES:
+        for R in OURS_R:
+            seconds, mesh = median_time(lambda: sdfwb.mesh(sdf, resolution=R))
+            e = grade(mesh["vertices"], mesh["faces"], sdf, folder)
+            results.append(dict(label=label, cls=cls, tool="sdfwb", R=R, seconds=seconds, field_seconds=None,
+                                triangles=len(mesh["faces"]), eval=e,
+                                watertight=mesh["report"].get("topology", {}).get("watertight")))
+            print(f"{label:36s} sdfwb R={R:4d} {seconds:8.3f} s  Hausdorff {e['hausdorff']:.3g} "
+                  f"Chamfer-L1 {e['chamfer_l1']:.3g}", flush=True)
+        for R in PEER_R:
+            forms = []
+            for name, function in field_forms(sdf, field, R, pools):
+                t, values = median_time(function)
+                forms.append((t, name, values))
+            field_seconds, field_name, values = min(forms, key=lambda f: f[0])
+            field_choice[(label, R)] = (field_name, field_seconds, [(n, t) for t, n, _ in forms])
+            for tool, mesher in PEERS.items():
+                if tool == "VTK Flying Edges":
+                    best = None
+                    for k in THREADS:
+                        vtk.vtkSMPTools.Initialize(k)
+                        t, out = median_time(lambda: mesher(values, R))
+                        if best is None or t < best[0]:
+                            best = (t, out, k)
+                    t, (vertices, faces), k = best
+                    tool_name = f"{tool}"
+                    threads = k
+                else:
+                    t, (vertices, faces) = median_time(lambda: mesher(values, R))
+                    threads = None
+                e = grade(vertices, faces, sdf, folder)
+                results.append(dict(label=label, cls=cls, tool=tool_name if tool == "VTK Flying Edges" else tool, R=R,
+                                    seconds=field_seconds + t, mesh_seconds=t, field_seconds=field_seconds,
+                                    threads=threads, triangles=len(faces), eval=e))
+                print(f"{label:36s} {tool:20s} R={R:4d} {field_seconds + t:8.3f} s (field {field_seconds:.3f} by "
+                      f"{field_name}, mesher {t:.3f}{f', {threads} threads' if threads else ''})  Hausdorff "
+                      f"{e['hausdorff'] if e else float('nan'):.3g} Chamfer-L1 {e['chamfer_l1'] if e else float('nan'):.3g}",
+                      flush=True)
+wall = time.perf_counter() - wall_start
+for pool in pools.values():
+    pool.shutdown()
+peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+config.append(f"The run took {wall:.0f} s; peak memory of this process {peak:.0f} MB; load average at the end "
+              f"{os.getloadavg()[0]:.2f}.")
+
+
+def rows_of(label, tool):
+    return sorted((r for r in results if r["label"] == label and r["tool"] == tool and r["eval"]), key=lambda r: r["R"])
+
+
+def equal_error(label):
+    """Our fastest call that reaches the best peer's error at the top peer resolution (both Hausdorff and
+    Chamfer-L1), against that peer's time; None when no resolution of ours reaches it."""
+    tops = [r for r in results if r["label"] == label and r["tool"] != "sdfwb" and r["R"] == TOP and r["eval"]]
+    if not tops:
+        return None
+    best_h = min(r["eval"]["hausdorff"] for r in tops)
+    best_c = min(r["eval"]["chamfer_l1"] for r in tops)
+    fastest_peer = min(r["seconds"] for r in tops)
+    ours = [r for r in rows_of(label, "sdfwb")
+            if r["eval"]["hausdorff"] <= best_h and r["eval"]["chamfer_l1"] <= best_c]
+    if not ours:
+        return dict(best_h=best_h, best_c=best_c, peer_seconds=fastest_peer, ours=None)
+    first = min(ours, key=lambda r: r["seconds"])
+    return dict(best_h=best_h, best_c=best_c, peer_seconds=fastest_peer, ours=first,
+                ratio=fastest_peer / first["seconds"])
+
+
+def fmt(v, spec=".3g"):
+    return "n/a" if v is None else format(v, spec)
+
+
+verdicts = []
+classes = []
+for label, cls, _, _ in SHAPES:
+    if cls not in classes:
+        classes.append(cls)
+summary_rows = []
+for label, cls, _, _ in SHAPES:
+    eq = equal_error(label)
+    ours_top = next((r for r in rows_of(label, "sdfwb") if r["R"] == TOP), None)
+    fe_top = next((r for r in rows_of(label, "VTK Flying Edges") if r["R"] == TOP), None)
+    peers_top = [r for r in results if r["label"] == label and r["tool"] != "sdfwb" and r["R"] == TOP and r["eval"]]
+    summary_rows.append(dict(label=label, cls=cls, eq=eq, ours=ours_top, fe=fe_top, peers=peers_top))
+
+lines = []
+lines.append("## Equal error: the time sdfwb needs to reach the best peer's error at "
+             f"{TOP}^3\n")
+lines.append(f"The best peer's Hausdorff and Chamfer-L1 at R = {TOP} (each the lowest of the three peers), the fastest "
+             f"peer's whole call at R = {TOP}, and sdfwb's fastest call whose mesh is at least as good on both. Ratio = "
+             "peer time / sdfwb time (above 1: sdfwb is faster).\n")
+lines.append("| shape | class | best peer Hausdorff | best peer Chamfer-L1 | fastest peer s | sdfwb R | sdfwb s | "
+             "ratio |\n|---|---|---|---|---|---|---|---|")
+for s in summary_rows:
+    eq = s["eq"]
+    if eq is None:
+        lines.append(f"| {s['label']} | {s['cls']} | n/a | n/a | n/a | n/a | n/a | n/a |")
+    elif eq["ours"] is None:
+        lines.append(f"| {s['label']} | {s['cls']} | {eq['best_h']:.3g} | {eq['best_c']:.3g} | "
+                     f"{eq['peer_seconds']:.3f} | not reached by R = {max(OURS_R)} | | **slower** |")
+    else:
+        lines.append(f"| {s['label']} | {s['cls']} | {eq['best_h']:.3g} | {eq['best_c']:.3g} | "
+                     f"{eq['peer_seconds']:.3f} | {eq['ours']['R']} | {eq['ours']['seconds']:.3f} | "
+                     f"{eq['ratio']:.2f}x |")
+lines.append("")
+for cls in classes:
+    ratios = [s["eq"]["ratio"] if s["eq"] and s["eq"]["ours"] else 0.0 for s in summary_rows if s["cls"] == cls]
+    if ratios:
+        lines.append(f"- {cls}: median equal-error ratio {statistics.median(ratios):.2f}x over {len(ratios)} shapes "
+                     "(a shape whose error sdfwb does not reach counts as 0).")
+lines.append("")
+lines.append(f"## Equal resolution {TOP}^3\n")
+lines.append("Time ratio = sdfwb's whole call / Flying Edges' whole call (field + mesher; below 1: sdfwb is faster). "
+             "Error ratios = sdfwb's / the peer's (below 1: sdfwb is more accurate).\n")
+lines.append("| shape | class | sdfwb s | Flying Edges s | time ratio | Hausdorff sdfwb | Hausdorff / MC, FE, VDB | "
+             "Chamfer-L1 sdfwb | Chamfer-L1 / MC, FE, VDB | edge F sdfwb | edge F MC, FE, VDB |\n"
+             "|---|---|---|---|---|---|---|---|---|---|---|")
+for s in summary_rows:
+    o, fe = s["ours"], s["fe"]
+    if not o or not fe:
+        continue
+    peers = {r["tool"]: r for r in s["peers"]}
+    order = ["scikit-image MC", "VTK Flying Edges", "OpenVDB volumeToMesh"]
+
+    def ratio(key):
+        return ", ".join(fmt(o["eval"][key] / peers[t]["eval"][key], ".2f") if t in peers and peers[t]["eval"][key] > 0
+                         else "n/a" for t in order)
+
+    def edge_f(r):
+        return r["eval"]["edges"]["fscore"] if r["eval"].get("edges") else None
+
+    lines.append(f"| {s['label']} | {s['cls']} | {o['seconds']:.3f} | {fe['seconds']:.3f} | "
+                 f"{o['seconds'] / fe['seconds']:.2f} | {o['eval']['hausdorff']:.3g} | {ratio('hausdorff')} | "
+                 f"{o['eval']['chamfer_l1']:.3g} | {ratio('chamfer_l1')} | {fmt(edge_f(o))} | "
+                 f"{', '.join(fmt(edge_f(peers[t])) if t in peers else 'n/a' for t in order)} |")
+lines.append("")
+for cls in classes:
+    group = [s for s in summary_rows if s["cls"] == cls and s["ours"] and s["fe"]]
+    if not group:
+        continue
+    time_ratio = statistics.median(s["ours"]["seconds"] / s["fe"]["seconds"] for s in group)
+    h_ratio = statistics.median(max(s["ours"]["eval"]["hausdorff"] / p["eval"]["hausdorff"] for p in s["peers"])
+                                for s in group)
+    c_ratio = statistics.median(max(s["ours"]["eval"]["chamfer_l1"] / p["eval"]["chamfer_l1"] for p in s["peers"])
+                                for s in group)
+    lines.append(f"- {cls} ({len(group)} shapes), medians: sdfwb takes {time_ratio:.2f}x Flying Edges' time; its "
+                 f"Hausdorff is {h_ratio:.2f}x and its Chamfer-L1 {c_ratio:.2f}x the most accurate peer's "
+                 "(the largest of its three ratios per shape).")
+lines.append("")
+lines.append("## Every run\n")
+lines.append("| shape | tool | R | whole call s | of which field s (form) | triangles | Hausdorff | Chamfer-L1 | "
+             "normal consistency | F-score | edge Chamfer-L1 | edge F-score | closed |\n"
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+for r in results:
+    e = r["eval"]
+    form = field_choice.get((r["label"], r["R"]), ("", 0, []))[0] if r["tool"] != "sdfwb" else ""
+    edges = e.get("edges") if e else None
+    threads = f" ({r['threads']} threads)" if r.get("threads") else ""
+    lines.append(f"| {r['label']} | {r['tool']}{threads} | {r['R']} | {r['seconds']:.3f} | "
+                 f"{fmt(r['field_seconds'], '.3f')}{f' ({form})' if form else ''} | {r['triangles']} | "
+                 f"{fmt(e['hausdorff'] if e else None)} | {fmt(e['chamfer_l1'] if e else None)} | "
+                 f"{fmt(e['normal_consistency'] if e else None, '.4f')} | {fmt(e['fscore'] if e else None, '.4f')} | "
+                 f"{fmt(edges['chamfer_l1'] if edges else None)} | {fmt(edges['fscore'] if edges else None, '.4f')} | "
+                 f"{'yes' if e and e['closed'] else 'no'} |")
+lines.append("")
+lines.append("## Every field form tried for the peers\n")
+lines.append("| shape | R | form | s |\n|---|---|---|---|")
+for (label, R), (_, _, forms) in field_choice.items():
+    for name, t in forms:
+        lines.append(f"| {label} | {R} | {name} | {t:.3f} |")
+print("\n".join(lines))
+
+if PLOT:
+    figure, axes = plt.subplots(1, len(classes), figsize=(5 * len(classes), 4.5), squeeze=False)
+    colours = {"sdfwb": "C3", "scikit-image MC": "C0", "VTK Flying Edges": "C2", "OpenVDB volumeToMesh": "C1"}
+    for ax, cls in zip(axes[0], classes):
+        for label, c, _, _ in SHAPES:
+            if c != cls:
+                continue
+            for tool, colour in colours.items():
+                rows = rows_of(label, tool)
+                if rows:
+                    ax.loglog([r["seconds"] for r in rows], [r["eval"]["chamfer_l1"] for r in rows], "o-", color=colour,
+                              alpha=0.6, markersize=3, label=tool if label == next(
+                                  s[0] for s in SHAPES if s[1] == cls) else None)
+        ax.set_title(f"{cls}")
+        ax.set_xlabel("whole call, s")
+        ax.set_ylabel("Chamfer-L1")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
+    figure.suptitle(f"Chamfer-L1 against time, one line per shape and tool ({started.strftime('%Y-%m-%d')}, "
+                    f"{socket.gethostname()}, nproc {CPUS})", fontsize=9)
+    figure.tight_layout()
+    figure.savefig(PLOT, dpi=110)
+    print(f"wrote {PLOT}")
+
+if MARKDOWN:
+    command = " ".join(["env -u DISPLAY PYTHONPATH=build/python", sys.executable, "bench/bench_mesh_peers.py"] + args)
+    with open(MARKDOWN, "w") as out:
+        out.write("# Meshes: sdfwb against scikit-image, VTK Flying Edges and OpenVDB\n\n")
+        out.write(f"Generated by `{command}` (bench/bench_mesh_peers.py; nothing below is typed by hand).\n\n")
+        out.write("".join(f"- {line}\n" for line in config) + "\n")
+        if PLOT:
+            out.write(f"![Chamfer-L1 against time]({os.path.relpath(PLOT, os.path.dirname(MARKDOWN))})\n\n")
+        out.write("\n".join(lines) + "\n")
+    print(f"wrote {MARKDOWN}")
