@@ -117,12 +117,19 @@ bool clipLine(const glm::dvec3& p, const glm::dvec3& d, const glm::dvec3& lo, co
 // direction) is a line of minimisers: the point of that line nearest the minimiser inside the cell,
 // else inside the cell grown by `margin` on every side (an edge that passes just beside the cell,
 // whose two faces the cell's crossings see: clamping would pull the vertex off the edge by up to
-// the margin). Anything else is clamped into the cell. `left` counts vertices placed outside their
-// cell, `clamped` those moved off their QEF's minimisers.
-glm::dvec3 placeVertex(const QefSolution& qef, const glm::dvec3& lo, const glm::dvec3& hi, double margin, std::uint64_t& left,
-                       std::uint64_t& clamped) {
+// the margin). A corner (no free direction) within the margin, when the cell it lies in has no
+// vertex of its own (the corner's tip pokes into it without enclosing a grid point), goes there
+// too. Anything else is clamped into the cell. `left` counts vertices placed outside their cell,
+// `clamped` those moved off their QEF's minimisers.
+glm::dvec3 placeVertex(const QefSolution& qef, const glm::dvec3& lo, const glm::dvec3& hi, double margin, bool cornerCellIsEmpty,
+                       std::uint64_t& left, std::uint64_t& clamped) {
     const glm::dvec3& x = qef.point;
     if (glm::all(glm::greaterThanEqual(x, lo)) && glm::all(glm::lessThanEqual(x, hi))) return x;
+    if (qef.freeCount == 0 && cornerCellIsEmpty && glm::all(glm::greaterThanEqual(x, lo - margin)) &&
+        glm::all(glm::lessThanEqual(x, hi + margin))) {
+        ++left; // a corner whose tip pokes into a cell that encloses no grid point inside
+        return x;
+    }
     if (qef.freeCount == 1) {
         double t0 = 0.0, t1 = 0.0;
         const glm::dvec3& d = qef.free[0];
@@ -312,6 +319,7 @@ private:
     void findEdges();
     Expected<void> placeCrossings();
     void placeVertices();
+    bool cellCrossed(const glm::dvec3& point) const;
     Expected<void> projectVertices();
     void connectQuads();
 
@@ -352,7 +360,9 @@ Expected<std::pair<Mesh, MeshStats>> Extraction::run() {
     if (auto ok = probe.build(sdf, "analysis/points.glsl", options.time, options.parameters); !ok) return ok.error();
     probe.setClip(clipLow, clipHigh);
 
-    normalStep = float(0.05 * std::min({grid.step.x, grid.step.y, grid.step.z}));
+    // A hundredth of a cell: with a twentieth, a crossing that near a crease got a normal mixed from
+    // both faces, whose plane put a rotated box's corner 2.3e-3 off at 128 cells.
+    normalStep = float(0.01 * std::min({grid.step.x, grid.step.y, grid.step.z}));
     vertexMargin = 0.5 * std::min({grid.step.x, grid.step.y, grid.step.z});
     if (auto ok = selectBlocks(); !ok) return ok.error();
     progress(1, 4);
@@ -607,7 +617,9 @@ void Extraction::placeVertices() {
                             points[count] = glm::dvec3(crossings[3 * e], crossings[3 * e + 1], crossings[3 * e + 2]);
                             patchNormals[count++] = length > 0.0 && std::isfinite(length) ? n / length : glm::dvec3(0.0);
                         }
-                        const glm::dvec3 x = placeVertex(solveQef(points, patchNormals, count), lo, hi, vertexMargin,
+                        const QefSolution qef = solveQef(points, patchNormals, count);
+                        const bool cornerCellIsEmpty = qef.freeCount == 0 && !cellCrossed(qef.point);
+                        const glm::dvec3 x = placeVertex(qef, lo, hi, vertexMargin, cornerCellIsEmpty,
                                                          stats.verticesBesideTheirCell, stats.clampedVertices);
                         mesh.vertices.push_back(glm::vec3(x));
                         vertexCell.push_back({cell[0], cell[1], cell[2]});
@@ -619,6 +631,26 @@ void Extraction::placeVertices() {
         cellCount = blockCells[slot].number(cellCount);
     }
     stats.activeCells = cellRecords.size();
+}
+
+// Whether the grid cell holding `point` has grid points on both sides (and so a vertex of its own);
+// false outside the grid and in blocks skipped as empty.
+bool Extraction::cellCrossed(const glm::dvec3& point) const {
+    std::int64_t c[3];
+    for (int a = 0; a < 3; ++a) {
+        c[a] = std::int64_t(std::floor((point[a] - grid.origin[a]) / grid.step[a]));
+        if (c[a] < 0 || c[a] >= grid.n) return false;
+    }
+    const std::int64_t bi = c[0] / kBlock, bj = c[1] / kBlock, bk = c[2] / kBlock;
+    const std::int32_t slot = blockSlot[std::size_t((bk * blocksPerAxis + bj) * blocksPerAxis + bi)];
+    if (slot < 0) return false;
+    const float* v = values.data() + std::size_t(slot) * std::size_t(kPoints);
+    const int p = int(((c[2] - bk * kBlock) * kSide + (c[1] - bj * kBlock)) * kSide + (c[0] - bi * kBlock));
+    int signs = 0;
+    for (int corner = 0; corner < 8; ++corner)
+        signs |= int(inside(v[p + (corner & 1) * kStride[0] + (corner >> 1 & 1) * kStride[1] + (corner >> 2) * kStride[2]]))
+                 << corner;
+    return signs != 0 && signs != 0xff;
 }
 
 // On curved surfaces the planes' minimiser lies off the surface by about h^2 times the
