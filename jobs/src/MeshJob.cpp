@@ -75,7 +75,7 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
     std::string verdict;
     if (!request.lipschitz || request.errorSamples > 0) {
         sampling::AuditOptions audit;
-        audit.samples = 20000;
+        audit.samples = 4000;
         audit.seed = request.seed;
         audit.time = request.time;
         audit.convergence = false;
