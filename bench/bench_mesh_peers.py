@@ -146,7 +146,7 @@ SHAPES = [
     ("hg_sdf arcade with chamfers (foreign)", "creased", os.path.join(FOREIGN, "42_hg_mercury_arcade.glsl"), None),
     ("IQ primitives (foreign)", "creased", os.path.join(FOREIGN, "01_iq_primitives.glsl"), None),
     ("jw CSG (foreign)", "creased", os.path.join(FOREIGN, "43_jw_csg_phong.glsl"), None),
-    ("Open shell, wall 0.03", "thin-walled", SHELL, np_shell),
+    ("Open shell with a 0.03 wall", "thin-walled", SHELL, np_shell),
     ("Mug", "thin-walled", "mug", None),
     ("Menger sponge", "fractal", "mengersponge", None),
     ("Sierpinski tetrahedron", "fractal", "sierpinskitetrahedron", None),
