@@ -307,6 +307,9 @@ template <class V> void fields(V& v, MeshReport& r) {
     v("boundary_edges", r.boundaryEdges);
     v("non_manifold_edges", r.nonManifoldEdges);
     v("degenerate_triangles", r.degenerateTriangles);
+    v("non_manifold_vertices", r.nonManifoldVertices);
+    v("misoriented_edges", r.misorientedEdges);
+    v("manifold", r.manifold);
     v("watertight", r.watertight);
     v("lipschitz_bound", r.lipschitzBound);
     v("bound_source", r.boundSource);

@@ -119,6 +119,9 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
     report.boundaryEdges = topology.boundaryEdges;
     report.nonManifoldEdges = topology.nonManifoldEdges;
     report.degenerateTriangles = topology.degenerateTriangles;
+    report.nonManifoldVertices = topology.nonManifoldVertices;
+    report.misorientedEdges = topology.misorientedEdges;
+    report.manifold = topology.manifold();
     report.watertight = topology.watertight();
     report.blocks = stats.blocks;
     report.blocksKept = stats.blocksKept;

@@ -754,6 +754,52 @@ Topology checkTopology(const Mesh& mesh) {
         if (count == 1) ++t.boundaryEdges;
         if (count > 2) ++t.nonManifoldEdges;
     }
+    // Orientation: each directed edge once (its reverse belongs to the neighbour).
+    std::unordered_map<std::uint64_t, std::uint32_t> directed;
+    for (std::size_t f = 0; f + 2 < mesh.indices.size(); f += 3)
+        for (int e = 0; e < 3; ++e)
+            ++directed[(std::uint64_t(mesh.indices[f + std::size_t(e)]) << 32) | mesh.indices[f + std::size_t(e + 1) % 3]];
+    for (const auto& [edge, count] : directed)
+        if (count > 1 &&
+            uses[(std::uint64_t(std::min(edge >> 32, edge & 0xffffffffu)) << 32) | std::max(edge >> 32, edge & 0xffffffffu)] == 2)
+            ++t.misorientedEdges;
+    // Vertex manifoldness: the triangles around a vertex, joined where they share an edge through
+    // it, form one fan. Counted by union-find over each vertex's corners.
+    std::vector<std::uint32_t> start(mesh.vertices.size() + 1, 0);
+    for (std::uint32_t v : mesh.indices)
+        if (v < mesh.vertices.size()) ++start[v + 1];
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) start[v + 1] += start[v];
+    std::vector<std::uint32_t> corners(mesh.indices.size()), fill(start.begin(), start.end() - 1);
+    for (std::size_t c = 0; c < mesh.indices.size(); ++c)
+        if (mesh.indices[c] < mesh.vertices.size()) corners[fill[mesh.indices[c]]++] = std::uint32_t(c);
+    std::vector<std::uint32_t> parent;
+    std::unordered_map<std::uint32_t, std::uint32_t> firstAt; // a neighbour vertex -> the corner seen with it
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+        const std::uint32_t n = start[v + 1] - start[v];
+        if (n < 2) continue;
+        parent.resize(n);
+        for (std::uint32_t i = 0; i < n; ++i) parent[i] = i;
+        auto find = [&](std::uint32_t x) {
+            while (parent[x] != x) x = parent[x] = parent[parent[x]];
+            return x;
+        };
+        firstAt.clear();
+        std::uint32_t groups = n;
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const std::size_t c = corners[start[v] + i], f = c - c % 3;
+            for (int k = 1; k <= 2; ++k) {
+                const std::uint32_t other = mesh.indices[f + (c - f + std::size_t(k)) % 3];
+                auto [it, added] = firstAt.try_emplace(other, i);
+                if (added) continue;
+                const std::uint32_t a = find(i), b = find(it->second);
+                if (a != b) {
+                    parent[a] = b;
+                    --groups;
+                }
+            }
+        }
+        if (groups > 1) ++t.nonManifoldVertices;
+    }
     return t;
 }
 

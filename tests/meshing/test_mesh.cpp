@@ -265,8 +265,38 @@ TEST_F(MeshTest, ClosedDatasetShapesAreWatertight) {
         const meshing::Topology topology = meshing::checkTopology(mesh);
         EXPECT_EQ(topology.boundaryEdges, 0u) << file;
         EXPECT_EQ(topology.nonManifoldEdges, 0u) << file;
+        EXPECT_TRUE(topology.manifold()) << file << ": " << topology.nonManifoldVertices << " non-manifold vertices, "
+                                         << topology.misorientedEdges << " misoriented edges";
         EXPECT_TRUE(closedAndOutward(mesh)) << file;
     }
+}
+
+// Issue 33, point 1: the topology report tells a manifold mesh from one pinched at a vertex or with
+// a face turned over, both watertight by their edges alone.
+TEST_F(MeshTest, TheTopologyCountsPinchedVerticesAndTurnedFaces) {
+    const meshing::Mesh cube = boxMesh(kTilt, glm::dvec3(0.3));
+    const meshing::Topology whole = meshing::checkTopology(cube);
+    EXPECT_TRUE(whole.manifold());
+    EXPECT_EQ(whole.edges, 18u);
+    // Two cubes touching at one corner: cube corner 7 (+,+,+) is the other's corner 0 (-,-,-).
+    meshing::Mesh pinched = boxMesh(glm::dmat3(1.0), glm::dvec3(0.3));
+    const meshing::Mesh other = boxMesh(glm::dmat3(1.0), glm::dvec3(0.3));
+    const std::uint32_t base = std::uint32_t(pinched.vertices.size());
+    for (const glm::vec3& v : other.vertices) pinched.vertices.push_back(v + glm::vec3(0.6f));
+    for (std::uint32_t i : other.indices) pinched.indices.push_back(i == 0 ? 7u : base + i);
+    const meshing::Topology touching = meshing::checkTopology(pinched);
+    EXPECT_TRUE(touching.watertight());
+    EXPECT_EQ(touching.nonManifoldVertices, 1u);
+    EXPECT_EQ(touching.misorientedEdges, 0u);
+    EXPECT_FALSE(touching.manifold());
+    // One triangle turned over: its three edges run the same way as their neighbours'.
+    meshing::Mesh turned = cube;
+    std::swap(turned.indices[1], turned.indices[2]);
+    const meshing::Topology flipped = meshing::checkTopology(turned);
+    EXPECT_TRUE(flipped.watertight());
+    EXPECT_EQ(flipped.misorientedEdges, 3u);
+    EXPECT_EQ(flipped.nonManifoldVertices, 0u);
+    EXPECT_FALSE(flipped.manifold());
 }
 
 TEST_F(MeshTest, TwoSheetsInOneCellGetAVertexEach) {

@@ -7,9 +7,12 @@ int runMesh(const jobs::MeshRequest& request, const OutputOptions& output) {
     return runWithGl(request, output, [](const jobs::MeshReport& r) {
         std::printf("wrote %s: %llu vertices, %llu triangles at resolution %d, %.2f s\n", r.output.c_str(),
                     (unsigned long long)r.vertices, (unsigned long long)r.triangles, r.resolution, r.meshSeconds);
-        std::printf("  topology           %s: %llu boundary edges, %llu non-manifold edges, %llu degenerate triangles\n",
-                    r.watertight ? "watertight" : "not watertight", (unsigned long long)r.boundaryEdges,
-                    (unsigned long long)r.nonManifoldEdges, (unsigned long long)r.degenerateTriangles);
+        std::printf("  topology           %s: %llu boundary edges, %llu non-manifold edges, %llu non-manifold vertices, "
+                    "%llu misoriented edges, %llu degenerate triangles\n",
+                    r.manifold ? "manifold" : (r.watertight ? "watertight, not manifold" : "not watertight"),
+                    (unsigned long long)r.boundaryEdges, (unsigned long long)r.nonManifoldEdges,
+                    (unsigned long long)r.nonManifoldVertices, (unsigned long long)r.misorientedEdges,
+                    (unsigned long long)r.degenerateTriangles);
         if (r.selfIntersections)
             std::printf("  self-crossing      %llu pairs of triangles cross each other\n",
                         (unsigned long long)*r.selfIntersections);

@@ -356,6 +356,8 @@ struct MeshReport {
     int resolution = 0;
     std::uint64_t vertices = 0, triangles = 0;
     std::uint64_t boundaryEdges = 0, nonManifoldEdges = 0, degenerateTriangles = 0;
+    std::uint64_t nonManifoldVertices = 0, misorientedEdges = 0;
+    bool manifold = false; // watertight, every vertex one fan, every edge run once each way
     bool watertight = false;
     float lipschitzBound = 0.0f;
     std::string boundSource;  // where the bound came from

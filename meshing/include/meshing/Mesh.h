@@ -59,7 +59,13 @@ struct Topology {
     std::uint64_t boundaryEdges = 0;    // used by one triangle: a hole
     std::uint64_t nonManifoldEdges = 0; // used by three or more triangles
     std::uint64_t degenerateTriangles = 0;
+    // Vertices whose triangles do not form one fan (two sheets meeting at a point: a pinch), and
+    // edges that two triangles run the same way (neighbours facing opposite ways).
+    std::uint64_t nonManifoldVertices = 0;
+    std::uint64_t misorientedEdges = 0;
     bool watertight() const { return boundaryEdges == 0 && nonManifoldEdges == 0; }
+    // Watertight, every vertex a single fan, every edge run once each way.
+    bool manifold() const { return watertight() && nonManifoldVertices == 0 && misorientedEdges == 0; }
 };
 
 // Counts by shared vertex index (the writers keep indices; readers should merge equal positions).
