@@ -23,6 +23,8 @@ counts for the peer. Every time is the median of --repeats runs after a warm-up.
 """
 import concurrent.futures
 import datetime
+import json
+import subprocess
 import os
 import platform
 import resource
@@ -60,6 +62,10 @@ REPEATS = int(option("--repeats", "3"))
 OURS_R = [int(r) for r in option("--resolutions", "32,48,64,96,128,192,256").split(",")]
 PEER_R = [int(r) for r in option("--peer-resolutions", "64,128,256").split(",")]
 ONLY = set(option("--only", "").split(",")) - {""}
+# --scale: each tool once at 512 (and sdfwb and Flying Edges at 1024) in a process of its own, for its time and peak
+# memory (ru_maxrss); SCALE_SHAPES names the shapes.
+SCALE = "--scale" in args
+SCALE_SHAPES = ["Sphere", "Rotated box", "Anvil"]
 MARKDOWN = option("--markdown", None)
 PLOT = option("--plot", None)
 TAU = 0.002
@@ -267,6 +273,36 @@ def gl_renderer():
     return report.get("gl_renderer") or "unknown"
 
 
+def child_run(tool, label, R):
+    """One tool on one shape at R in this (fresh) process: its whole call's time and this process's peak memory."""
+    sdf, field = next((s[2], s[3]) for s in SHAPES if s[0] == label)
+    started = time.perf_counter()
+    if tool == "sdfwb":
+        sdfwb.mesh(sdf, resolution=32)  # shaders compiled, GL context made: what a warm process has
+        started = time.perf_counter()
+        triangles = len(sdfwb.mesh(sdf, resolution=R)["faces"])
+        field_seconds = None
+    else:
+        if field is None:
+            points = lattice_points(R)
+            started = time.perf_counter()
+            values = lattice_evaluate(sdf, points, R)
+        else:
+            values = lattice_numpy(field, R)
+        field_seconds = time.perf_counter() - started
+        if tool == "VTK Flying Edges":
+            vtk.vtkSMPTools.Initialize(CPUS)
+        triangles = len(PEERS[tool](values, R)[1])
+    seconds = time.perf_counter() - started
+    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+    print("CHILD " + json.dumps(dict(seconds=seconds, field_seconds=field_seconds, triangles=triangles, peak_mb=peak)))
+
+
+if "--child" in args:
+    at = args.index("--child")
+    child_run(args[at + 1], args[at + 2], int(args[at + 3]))
+    sys.exit(0)
+
 renderer = gl_renderer()
 started = datetime.datetime.now(datetime.timezone.utc)
 config = [
@@ -342,6 +378,24 @@ for pool in pools.values():
 peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
 config.append(f"The run took {wall:.0f} s; peak memory of this process {peak:.0f} MB; load average at the end "
               f"{os.getloadavg()[0]:.2f}.")
+
+
+scale_rows = []
+if SCALE:
+    for label in SCALE_SHAPES:
+        for R, tools in ((512, ["sdfwb", *PEERS]), (1024, ["sdfwb", "VTK Flying Edges"])):
+            for tool in tools:
+                run = subprocess.run([sys.executable, os.path.abspath(__file__), "--child", tool, label, str(R)],
+                                     capture_output=True, text=True)
+                line = next((l for l in run.stdout.splitlines() if l.startswith("CHILD ")), None)
+                if run.returncode != 0 or line is None:
+                    scale_rows.append(dict(label=label, tool=tool, R=R, failed=f"exit {run.returncode}: "
+                                                                                f"{run.stderr.strip()[-160:]}"))
+                else:
+                    scale_rows.append(dict(label=label, tool=tool, R=R, failed=None, **json.loads(line[6:])))
+                r = scale_rows[-1]
+                print(f"scale {label:14s} {tool:22s} R={R:5d} " + (r["failed"] if r["failed"] else
+                      f"{r['seconds']:7.2f} s, peak {r['peak_mb']:7.0f} MB, {r['triangles']} triangles"), flush=True)
 
 
 def rows_of(label, tool):
@@ -447,6 +501,24 @@ for cls in classes:
                  f"Hausdorff is {h_ratio:.2f}x and its Chamfer-L1 {c_ratio:.2f}x the most accurate peer's "
                  "(the largest of its three ratios per shape).")
 lines.append("")
+if scale_rows:
+    lines.append("## Scale: 512^3 and 1024^3\n")
+    lines.append("Each tool once, in a process of its own (`--scale`): the whole call's time (the peers' field by NumPy "
+                 "where the SDF is written in NumPy, else `sdfwb.evaluate`; sdfwb after a 32^3 call that compiles its "
+                 "shaders) and the process's peak resident memory (ru_maxrss, Python and the libraries included). "
+                 "Ratio = the tool's time / sdfwb's at the same size.\n")
+    lines.append("| shape | R | tool | whole call s | of which field s | peak memory MB | triangles | time / sdfwb's |\n"
+                 "|---|---|---|---|---|---|---|---|")
+    for r in scale_rows:
+        ours = next((o for o in scale_rows if o["label"] == r["label"] and o["R"] == r["R"] and o["tool"] == "sdfwb"
+                     and not o["failed"]), None)
+        if r["failed"]:
+            lines.append(f"| {r['label']} | {r['R']} | {r['tool']} | failed: {r['failed']} | | | | |")
+            continue
+        lines.append(f"| {r['label']} | {r['R']} | {r['tool']} | {r['seconds']:.2f} | {fmt(r['field_seconds'], '.2f')} | "
+                     f"{r['peak_mb']:.0f} | {r['triangles']} | "
+                     f"{(r['seconds'] / ours['seconds']) if ours else float('nan'):.2f}x |")
+    lines.append("")
 lines.append("## Every run\n")
 lines.append("| shape | tool | R | whole call s | of which field s (form) | triangles | Hausdorff | Chamfer-L1 | "
              "normal consistency | F-score | edge Chamfer-L1 | edge F-score | closed |\n"
@@ -471,9 +543,13 @@ for (label, R), (_, _, forms) in field_choice.items():
 print("\n".join(lines))
 
 if PLOT:
-    figure, axes = plt.subplots(1, len(classes), figsize=(5 * len(classes), 4.5), squeeze=False)
+    columns = min(3, len(classes))
+    rows_count = (len(classes) + columns - 1) // columns
+    figure, axes = plt.subplots(rows_count, columns, figsize=(5.5 * columns, 4.5 * rows_count), squeeze=False)
+    for ax in axes.flat[len(classes):]:
+        ax.axis("off")
     colours = {"sdfwb": "C3", "scikit-image MC": "C0", "VTK Flying Edges": "C2", "OpenVDB volumeToMesh": "C1"}
-    for ax, cls in zip(axes[0], classes):
+    for ax, cls in zip(axes.flat, classes):
         for label, c, _, _ in SHAPES:
             if c != cls:
                 continue
