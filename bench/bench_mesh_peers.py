@@ -63,7 +63,7 @@ OURS_R = [int(r) for r in option("--resolutions", "32,48,64,96,128,192,256").spl
 PEER_R = [int(r) for r in option("--peer-resolutions", "64,128,256").split(",")]
 ONLY = set(option("--only", "").split(",")) - {""}
 # --scale: each tool once at 512 (and sdfwb and Flying Edges at 1024) in a process of its own, for its time and peak
-# memory (ru_maxrss); SCALE_SHAPES names the shapes.
+# memory (VmHWM); SCALE_SHAPES names the shapes.
 SCALE = "--scale" in args
 SCALE_SHAPES = ["Sphere", "Rotated box", "Anvil"]
 MARKDOWN = option("--markdown", None)
@@ -294,7 +294,9 @@ def child_run(tool, label, R):
             vtk.vtkSMPTools.Initialize(CPUS)
         triangles = len(PEERS[tool](values, R)[1])
     seconds = time.perf_counter() - started
-    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+    # VmHWM: this process's own peak (ru_maxrss would carry the parent's over fork and exec).
+    with open("/proc/self/status") as status:
+        peak = next(int(line.split()[1]) for line in status if line.startswith("VmHWM:")) / 1024.0
     print("CHILD " + json.dumps(dict(seconds=seconds, field_seconds=field_seconds, triangles=triangles, peak_mb=peak)))
 
 
@@ -505,7 +507,7 @@ if scale_rows:
     lines.append("## Scale: 512^3 and 1024^3\n")
     lines.append("Each tool once, in a process of its own (`--scale`): the whole call's time (the peers' field by NumPy "
                  "where the SDF is written in NumPy, else `sdfwb.evaluate`; sdfwb after a 32^3 call that compiles its "
-                 "shaders) and the process's peak resident memory (ru_maxrss, Python and the libraries included). "
+                 "shaders) and the process's peak resident memory (VmHWM, Python and the libraries included). "
                  "Ratio = the tool's time / sdfwb's at the same size.\n")
     lines.append("| shape | R | tool | whole call s | of which field s | peak memory MB | triangles | time / sdfwb's |\n"
                  "|---|---|---|---|---|---|---|---|")

@@ -92,6 +92,22 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setDockNestingEnabled(true);
     resize(1400, 860);
 
+    createDocks();
+    createControllers();
+    createEntryToolBar();
+    connectFilesAndEditor();
+    loadCompletions();
+    connectDocument();
+    connectParameters();
+    createStatusBar();
+    createMenus();
+    updateRecentMenu();
+    restoreSession();
+    updateTitle();
+}
+
+// The widgets, each in a dock, and the docks' first layout.
+void MainWindow::createDocks() {
     m_viewport = new widgets::ViewportWidget;
     m_viewport->setObjectName("Viewport");
     m_editor = new widgets::GlslEditor;
@@ -129,7 +145,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_problemsDock->raise();
     m_editorDock->raise();
     resizeDocks({m_editorDock, m_viewportDock}, {560, 840}, Qt::Horizontal);
+}
 
+// The document and the controllers that run jobs on it.
+void MainWindow::createControllers() {
     m_document = new SdfDocument(m_viewport, this);
     // Every job (sampling, video, plane readouts) runs on the document's input: the text the
     // viewport shows (saved or not), its path for includes, and its entry point.
@@ -160,25 +179,31 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_browser, &widgets::DatasetBrowser::newRequested, this, [this] {
         if (!m_editor->isModified() || m_files->confirmClose()) m_files->newFromTemplate();
     });
-    {
-        QToolBar* bar = addToolBar(tr("SDF"));
-        bar->setObjectName("SdfToolBar");
-        bar->addWidget(new QLabel(tr(" Entry point: ")));
-        m_entry = new QLineEdit;
-        m_entry->setObjectName("entry");
-        m_entry->setMaximumWidth(220);
-        m_entry->setPlaceholderText(tr("automatic"));
-        m_entry->setToolTip(
-            tr("The function that is the SDF: float NAME(vec3 p) or NAME(vec3 p, float time), or vec2/vec4 NAME(...) with the "
-               "distance in .x. Empty: the file's `entry:` metadata, else sdf, else map, scene, sceneSDF, sdScene, de or DE."));
-        m_entry->setValidator(new QRegularExpressionValidator(QRegularExpression("[A-Za-z_][A-Za-z0-9_]*"), m_entry));
-        bar->addWidget(m_entry);
-        connect(m_entry, &QLineEdit::editingFinished, this, [this] {
-            if (m_entry->text() == m_document->entry()) return;
-            m_document->setEntry(m_entry->text());
-            m_document->checkNow(m_editor->text());
-        });
-    }
+}
+
+// The SDF tool bar: the entry point's field.
+void MainWindow::createEntryToolBar() {
+    QToolBar* bar = addToolBar(tr("SDF"));
+    bar->setObjectName("SdfToolBar");
+    bar->addWidget(new QLabel(tr(" Entry point: ")));
+    m_entry = new QLineEdit;
+    m_entry->setObjectName("entry");
+    m_entry->setMaximumWidth(220);
+    m_entry->setPlaceholderText(tr("automatic"));
+    m_entry->setToolTip(
+        tr("The function that is the SDF: float NAME(vec3 p) or NAME(vec3 p, float time), or vec2/vec4 NAME(...) with the "
+           "distance in .x. Empty: the file's `entry:` metadata, else sdf, else map, scene, sceneSDF, sdScene, de or DE."));
+    m_entry->setValidator(new QRegularExpressionValidator(QRegularExpression("[A-Za-z_][A-Za-z0-9_]*"), m_entry));
+    bar->addWidget(m_entry);
+    connect(m_entry, &QLineEdit::editingFinished, this, [this] {
+        if (m_entry->text() == m_document->entry()) return;
+        m_document->setEntry(m_entry->text());
+        m_document->checkNow(m_editor->text());
+    });
+}
+
+// Files, the dataset browser and the Problems panel to the editor.
+void MainWindow::connectFilesAndEditor() {
     connect(m_files, &FileController::pathChanged, this, [this] {
         m_entry->setText(m_document->entry());
         updateTitle();
@@ -197,7 +222,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         }
         m_editor->goToLine(line, column);
     });
-    // Completion: the helper libraries' functions once, the file's own after each check.
+}
+
+// Completion: the helper libraries' functions once, the file's own after each check.
+void MainWindow::loadCompletions() {
     QStringList librarySignatures;
     for (const QString& folder : {QString::fromStdString(paths::shaderLibraryRoot().string()),
                                   QString::fromStdString((paths::datasetRoot() / "lib").string())})
@@ -209,7 +237,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         }
     m_librarySignatures = librarySignatures;
     m_editor->setCompletionFunctions(m_librarySignatures, {});
+}
 
+// The document's checks to the editor, the Problems panel, the tool bar and the plane.
+void MainWindow::connectDocument() {
     connect(m_editor, &QsciScintilla::textChanged, this, [this] {
         m_document->textEdited(m_editor->text());
         updateTitle();
@@ -239,8 +270,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         m_shadertoyAction->setEnabled(m_document->lastGoodSource().shadertoyMainImage || m_viewport->shadertoyPicture());
         m_shadertoyAction->setChecked(m_viewport->shadertoyPicture());
     });
-    // Parameters: the declarations of the SDF on screen become controls; their values are uniforms
-    // of the viewport (no recompile) and of every job started from the document.
+}
+
+// Parameters: the declarations of the SDF on screen become controls; their values are uniforms
+// of the viewport (no recompile) and of every job started from the document.
+void MainWindow::connectParameters() {
     connect(m_document, &SdfDocument::sdfApplied, this, [this] {
         m_parametersPanel->setDeclarations(m_document->lastGoodSource().parameters);
         if (!m_sessionParameterValues.isEmpty() && m_sessionParameterFile == m_document->path()) {
@@ -269,6 +303,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         m_editor->endUndoAction();
         statusBar()->showMessage(tr("Parameter values written into the initializers (Ctrl+Z undoes it)"), 5000);
     });
+}
+
+// The camera panel, and the status bar's readouts: diagnostics, plane hover, precision, frame time.
+void MainWindow::createStatusBar() {
     m_exports->setClipEnd([this] { return m_parametersPanel->clipEnd(); });
     connect(m_cameraPanel, &widgets::CameraPanel::cameraEdited, m_viewport, &widgets::ViewportWidget::setCamera);
     connect(m_cameraPanel, &widgets::CameraPanel::resetRequested, m_viewport, &widgets::ViewportWidget::resetCamera);
@@ -315,11 +353,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                          : tr("frame %1 ms").arg(milliseconds, 0, 'f', 1));
         updatePrecision();
     });
-
-    createMenus();
-    updateRecentMenu();
-    restoreSession();
-    updateTitle();
 }
 
 MainWindow::~MainWindow() {
@@ -459,6 +492,13 @@ void MainWindow::setAmbientOcclusion(bool enabled) {
 }
 
 void MainWindow::createMenus() {
+    createFileMenu();
+    createEditMenu();
+    createViewMenu();
+    createToolsMenu();
+}
+
+void MainWindow::createFileMenu() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     QAction* create = file->addAction(tr("&New from template"), this, [this] {
         if (!m_editor->isModified() || m_files->confirmClose()) m_files->newFromTemplate();
@@ -497,7 +537,9 @@ void MainWindow::createMenus() {
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
+}
 
+void MainWindow::createEditMenu() {
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     QAction* find = edit->addAction(tr("&Find..."), this, [this] {
         bool ok = false;
@@ -528,7 +570,10 @@ void MainWindow::createMenus() {
         if (ok) m_editor->goToLine(line);
     });
     goTo->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+}
 
+// Shading and tracing options, the Shadertoy picture, overlays, the docks, camera and playback.
+void MainWindow::createViewMenu() {
     QMenu* view = menuBar()->addMenu(tr("&View"));
     QMenu* shadingMenu = view->addMenu(tr("&Shading"));
     m_shadingGroup = new QActionGroup(this);
@@ -578,6 +623,28 @@ void MainWindow::createMenus() {
     m_overlayAction->setCheckable(true);
     m_overlayAction->setObjectName("overlay");
     view->addSeparator();
+    addShadertoyItems(view);
+    addOverlayItems(view);
+    view->addSeparator();
+    view->addAction(m_editorDock->toggleViewAction());
+    view->addAction(m_viewportDock->toggleViewAction());
+    view->addAction(m_cameraDock->toggleViewAction());
+    view->addAction(m_timeDock->toggleViewAction());
+    view->addAction(m_planeDock->toggleViewAction());
+    view->addAction(m_problemsDock->toggleViewAction());
+    view->addAction(m_browserDock->toggleViewAction());
+    view->addAction(m_parametersDock->toggleViewAction());
+    view->addAction(m_probeDock->toggleViewAction());
+    view->addAction(m_logDock->toggleViewAction());
+    view->addSeparator();
+    QAction* reset = view->addAction(tr("&Reset camera"), m_viewport, &widgets::ViewportWidget::resetCamera);
+    reset->setShortcut(Qt::Key_Home);
+    QAction* play = view->addAction(tr("&Play / pause"), this, [this] { m_playback->setPlaying(!m_playback->isPlaying()); });
+    play->setShortcut(Qt::Key_F8);
+}
+
+// The file's own mainImage in place of the tracer, and the images of its channels.
+void MainWindow::addShadertoyItems(QMenu* view) {
     // A whole Shadertoy shader's own picture (its mainImage) in place of the tracer, to compare.
     m_shadertoyAction = view->addAction(tr("Shadertoy &picture"), this, [this](bool on) {
         auto diagnostics = m_viewport->setShadertoyPicture(on);
@@ -608,6 +675,10 @@ void MainWindow::createMenus() {
         for (int n = 0; n < shaders::kShadertoyChannels; ++n) m_document->setChannel(n, QString());
         m_document->checkNow(m_document->text());
     });
+}
+
+// Meshes, sample clouds and the background over the surface.
+void MainWindow::addOverlayItems(QMenu* view) {
     view->addSeparator();
     view->addAction(tr("Show mesh &deviation..."), this, [this] {
         const QString path = QFileDialog::getOpenFileName(this, tr("Mesh to grade against the field"), QString(),
@@ -640,23 +711,9 @@ void MainWindow::createMenus() {
         if (!path.isEmpty()) setBackgroundImage(path);
     });
     view->addAction(tr("No background ima&ge"), this, [this] { setBackgroundImage({}); });
-    view->addSeparator();
-    view->addAction(m_editorDock->toggleViewAction());
-    view->addAction(m_viewportDock->toggleViewAction());
-    view->addAction(m_cameraDock->toggleViewAction());
-    view->addAction(m_timeDock->toggleViewAction());
-    view->addAction(m_planeDock->toggleViewAction());
-    view->addAction(m_problemsDock->toggleViewAction());
-    view->addAction(m_browserDock->toggleViewAction());
-    view->addAction(m_parametersDock->toggleViewAction());
-    view->addAction(m_probeDock->toggleViewAction());
-    view->addAction(m_logDock->toggleViewAction());
-    view->addSeparator();
-    QAction* reset = view->addAction(tr("&Reset camera"), m_viewport, &widgets::ViewportWidget::resetCamera);
-    reset->setShortcut(Qt::Key_Home);
-    QAction* play = view->addAction(tr("&Play / pause"), this, [this] { m_playback->setPlaying(!m_playback->isPlaying()); });
-    play->setShortcut(Qt::Key_F8);
+}
 
+void MainWindow::createToolsMenu() {
     QMenu* tools = menuBar()->addMenu(tr("&Tools"));
     QAction* sample = tools->addAction(tr("&Sample SDF..."), m_sampling, &SamplingController::showDialog);
     sample->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));

@@ -102,6 +102,12 @@ protected:
 private:
     QDockWidget* addDock(const QString& title, const QString& name, QWidget* widget, Qt::DockWidgetArea area);
     void createMenus();
+    void createFileMenu();
+    void createEditMenu();
+    void createViewMenu();
+    void addShadertoyItems(QMenu* view);
+    void addOverlayItems(QMenu* view);
+    void createToolsMenu();
     void restoreSession();
     void saveSession();
     void updateTitle();
@@ -110,6 +116,14 @@ private:
     void updateRecentMenu();
     void saveAsWithDialog();
     void setUpLog();
+    void createDocks();
+    void createControllers();
+    void createEntryToolBar();
+    void connectFilesAndEditor();
+    void loadCompletions();
+    void connectDocument();
+    void connectParameters();
+    void createStatusBar();
 
     widgets::GlslEditor* m_editor = nullptr;
     widgets::ViewportWidget* m_viewport = nullptr;
