@@ -109,8 +109,8 @@ glm::dmat3 rotation(glm::dvec3 axis, double angle) {
 }
 const glm::dmat3 kTilt = rotation({1.0, 2.0, 3.0}, 0.3);
 
-std::string rotatedBoxSource(const glm::dmat3& r, glm::dvec3 half) {
-    // mat3(...) takes columns: R's rows as its columns make R^T.
+// The arguments of a GLSL mat3(...) that is R^T: mat3 takes columns, so R's rows as its columns.
+std::string transposedMat3(const glm::dmat3& r) {
     std::string matrix;
     char number[32];
     for (int row = 0; row < 3; ++row)
@@ -118,6 +118,11 @@ std::string rotatedBoxSource(const glm::dmat3& r, glm::dvec3 half) {
             std::snprintf(number, sizeof number, "%.9e", r[col][row]);
             matrix += (matrix.empty() ? "" : ", ") + std::string(number);
         }
+    return matrix;
+}
+
+std::string rotatedBoxSource(const glm::dmat3& r, glm::dvec3 half) {
+    const std::string matrix = transposedMat3(r);
     char text[512];
     std::snprintf(text, sizeof text,
                   "float sdf(vec3 p) { vec3 q = abs(mat3(%s) * p) - vec3(%.9e, %.9e, %.9e); "
@@ -572,14 +577,7 @@ TEST_F(MeshTest, ARotatedBoxKeepsItsCornersAndEdges) {
 // with a bound of 1, blocks were skipped wrongly and 13 edges had their two triangles running the
 // same way.
 TEST_F(MeshTest, RimsAndChamfersOffTheGridKeepTheirCreases) {
-    std::string matrix;
-    char number[32];
-    for (int row = 0; row < 3; ++row)
-        for (int col = 0; col < 3; ++col) {
-            std::snprintf(number, sizeof number, "%.9e", kTilt[col][row]);
-            matrix += (matrix.empty() ? "" : ", ") + std::string(number);
-        }
-    const std::string cylinder = "float sdf(vec3 p) { vec3 q = mat3(" + matrix +
+    const std::string cylinder = "float sdf(vec3 p) { vec3 q = mat3(" + transposedMat3(kTilt) +
                                  ") * p; vec2 d = vec2(length(q.xz) - 0.45, abs(q.y) - 0.6); "
                                  "return min(max(d.x, d.y), 0.0) + length(max(d, 0.0)); }";
     const std::string chamfered =
