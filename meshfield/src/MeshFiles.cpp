@@ -42,10 +42,43 @@ private:
 
 // --- PLY (ascii, binary_little_endian, binary_big_endian) ---
 
+enum class PlyType : std::uint8_t { None, Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
+
+PlyType plyType(const std::string& name) {
+    static const std::map<std::string, PlyType> types = {
+        {"char", PlyType::Int8},     {"int8", PlyType::Int8},       {"uchar", PlyType::UInt8},    {"uint8", PlyType::UInt8},
+        {"short", PlyType::Int16},   {"int16", PlyType::Int16},     {"ushort", PlyType::UInt16},  {"uint16", PlyType::UInt16},
+        {"int", PlyType::Int32},     {"int32", PlyType::Int32},     {"uint", PlyType::UInt32},    {"uint32", PlyType::UInt32},
+        {"float", PlyType::Float32}, {"float32", PlyType::Float32}, {"double", PlyType::Float64}, {"float64", PlyType::Float64}};
+    const auto it = types.find(name);
+    return it == types.end() ? PlyType::None : it->second;
+}
+
+int plySize(PlyType type) {
+    switch (type) {
+    case PlyType::Int8:
+    case PlyType::UInt8:
+        return 1;
+    case PlyType::Int16:
+    case PlyType::UInt16:
+        return 2;
+    case PlyType::Int32:
+    case PlyType::UInt32:
+    case PlyType::Float32:
+        return 4;
+    case PlyType::Float64:
+        return 8;
+    case PlyType::None:
+        return 0;
+    }
+    return 0;
+}
+
 struct PlyProperty {
     std::string name;
-    std::string type;      // scalar type, or the list's item type
-    std::string countType; // empty for a scalar
+    PlyType type = PlyType::None;      // scalar type, or the list's item type
+    PlyType countType = PlyType::None; // None for a scalar
+    bool isList() const { return countType != PlyType::None; }
 };
 
 struct PlyElement {
@@ -53,14 +86,6 @@ struct PlyElement {
     std::uint64_t count = 0;
     std::vector<PlyProperty> properties;
 };
-
-int plySize(const std::string& type) {
-    static const std::map<std::string, int> sizes = {
-        {"char", 1}, {"uchar", 1}, {"int8", 1},  {"uint8", 1},  {"short", 2}, {"ushort", 2},  {"int16", 2},  {"uint16", 2},
-        {"int", 4},  {"uint", 4},  {"int32", 4}, {"uint32", 4}, {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
-    const auto it = sizes.find(type);
-    return it == sizes.end() ? 0 : it->second;
-}
 
 // Reads the values of one element's rows from the body, in whichever format.
 class PlyBody {
@@ -70,7 +95,7 @@ public:
         if (m_format == "ascii") m_text.str(m_data.substr(m_at));
     }
     // The next value of `type`, as a double; false at the end of the data or on a malformed number.
-    bool next(const std::string& type, double& value) {
+    bool next(PlyType type, double& value) {
         if (m_format == "ascii") return bool(m_text >> value);
         const int size = plySize(type);
         if (m_at + std::size_t(size) > m_data.size()) return false;
@@ -79,24 +104,38 @@ public:
         m_at += std::size_t(size);
         const bool swap = (m_format == "binary_big_endian") == (std::endian::native == std::endian::little);
         if (swap) std::reverse(bytes, bytes + size);
-        if (type == "float" || type == "float32") {
+        switch (type) {
+        case PlyType::Float32: {
             float f;
             std::memcpy(&f, bytes, 4);
             value = f;
-        } else if (type == "double" || type == "float64") {
+            break;
+        }
+        case PlyType::Float64:
             std::memcpy(&value, bytes, 8);
-        } else if (type == "char" || type == "int8") {
+            break;
+        case PlyType::Int8:
             value = double(std::int8_t(bytes[0]));
-        } else if (type == "uchar" || type == "uint8") {
+            break;
+        case PlyType::UInt8:
             value = double(bytes[0]);
-        } else if (size == 2) {
+            break;
+        case PlyType::Int16:
+        case PlyType::UInt16: {
             std::uint16_t v;
             std::memcpy(&v, bytes, 2);
-            value = (type == "short" || type == "int16") ? double(std::int16_t(v)) : double(v);
-        } else {
+            value = type == PlyType::Int16 ? double(std::int16_t(v)) : double(v);
+            break;
+        }
+        case PlyType::Int32:
+        case PlyType::UInt32: {
             std::uint32_t v;
             std::memcpy(&v, bytes, 4);
-            value = (type == "int" || type == "int32") ? double(std::int32_t(v)) : double(v);
+            value = type == PlyType::Int32 ? double(std::int32_t(v)) : double(v);
+            break;
+        }
+        case PlyType::None:
+            return false;
         }
         return true;
     }
@@ -147,12 +186,15 @@ Expected<TriangleMesh> readPly(const std::filesystem::path& path) {
             std::string type;
             words >> type;
             if (type == "list") {
-                words >> property.countType >> property.type >> property.name;
-                if (!plySize(property.countType) || !plySize(property.type)) return bad("unknown list types");
+                std::string countType, itemType;
+                words >> countType >> itemType >> property.name;
+                property.countType = plyType(countType);
+                property.type = plyType(itemType);
+                if (!property.isList() || property.type == PlyType::None) return bad("unknown list types");
             } else {
-                property.type = type;
+                property.type = plyType(type);
                 words >> property.name;
-                if (!plySize(property.type)) return bad("unknown property type");
+                if (property.type == PlyType::None) return bad("unknown property type");
             }
             elements.back().properties.push_back(std::move(property));
         } else {
@@ -171,8 +213,8 @@ Expected<TriangleMesh> readPly(const std::filesystem::path& path) {
         for (std::size_t p = 0; p < element.properties.size(); ++p) {
             const PlyProperty& property = element.properties[p];
             for (int a = 0; a < 3; ++a)
-                if (isVertex && property.countType.empty() && property.name == std::string(1, char('x' + a))) axisOf[a] = int(p);
-            if (isFace && !property.countType.empty() && (property.name == "vertex_indices" || property.name == "vertex_index"))
+                if (isVertex && !property.isList() && property.name == std::string(1, char('x' + a))) axisOf[a] = int(p);
+            if (isFace && property.isList() && (property.name == "vertex_indices" || property.name == "vertex_index"))
                 indexList = int(p);
         }
         if (isVertex && (axisOf[0] < 0 || axisOf[1] < 0 || axisOf[2] < 0))
@@ -184,7 +226,7 @@ Expected<TriangleMesh> readPly(const std::filesystem::path& path) {
             for (std::size_t p = 0; p < element.properties.size(); ++p) {
                 const PlyProperty& property = element.properties[p];
                 double value = 0.0;
-                const bool isList = !property.countType.empty();
+                const bool isList = property.isList();
                 if (!body.next(isList ? property.countType : property.type, value))
                     return Error{name + ": the PLY data ends early, in " + element.name + " " + std::to_string(row)};
                 if (!isList) {

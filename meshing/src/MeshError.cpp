@@ -306,29 +306,35 @@ Expected<std::vector<std::uint8_t>> nearCreases(detail::FieldProbe& field, const
 std::optional<EdgeEvaluation> edgeMeasures(const std::vector<float>& accuracy, const std::vector<std::uint8_t>& meshNear,
                                            const std::vector<float>& completeness, const std::vector<std::uint8_t>& surfaceNear,
                                            float tau) {
+    // One pass over one set: the mean, the share within tau and the largest distance of its points
+    // near a crease.
+    struct Tally {
+        double sum = 0.0;
+        std::uint64_t within = 0, count = 0;
+        float largest = 0.0f;
+    };
+    auto tally = [tau](const std::vector<float>& distances, const std::vector<std::uint8_t>& near) {
+        Tally t;
+        for (std::size_t s = 0; s < distances.size(); ++s) {
+            if (!near[s] || !std::isfinite(distances[s])) continue;
+            t.sum += double(distances[s]);
+            t.within += distances[s] < tau;
+            t.largest = std::max(t.largest, distances[s]);
+            ++t.count;
+        }
+        return t;
+    };
+    const Tally mesh = tally(accuracy, meshNear), surface = tally(completeness, surfaceNear);
+    if (surface.count == 0) return std::nullopt; // no crease on the exact surface
     EdgeEvaluation e;
-    double accuracySum = 0.0, completenessSum = 0.0;
-    std::uint64_t accurate = 0, complete = 0;
-    for (std::size_t s = 0; s < accuracy.size(); ++s) {
-        if (!meshNear[s] || !std::isfinite(accuracy[s])) continue;
-        accuracySum += double(accuracy[s]);
-        accurate += accuracy[s] < tau;
-        e.hausdorff = std::max(e.hausdorff, accuracy[s]);
-        ++e.meshPoints;
-    }
-    for (std::size_t s = 0; s < completeness.size(); ++s) {
-        if (!surfaceNear[s] || !std::isfinite(completeness[s])) continue;
-        completenessSum += double(completeness[s]);
-        complete += completeness[s] < tau;
-        e.hausdorff = std::max(e.hausdorff, completeness[s]);
-        ++e.surfacePoints;
-    }
-    if (e.surfacePoints == 0) return std::nullopt; // no crease on the exact surface
-    e.accuracyMean = e.meshPoints ? float(accuracySum / double(e.meshPoints)) : 0.0f;
-    e.completenessMean = float(completenessSum / double(e.surfacePoints));
+    e.meshPoints = mesh.count;
+    e.surfacePoints = surface.count;
+    e.hausdorff = std::max(mesh.largest, surface.largest);
+    e.accuracyMean = mesh.count ? float(mesh.sum / double(mesh.count)) : 0.0f;
+    e.completenessMean = float(surface.sum / double(surface.count));
     e.chamferL1 = 0.5f * (e.accuracyMean + e.completenessMean);
-    e.precision = e.meshPoints ? float(double(accurate) / double(e.meshPoints)) : 0.0f;
-    e.recall = float(double(complete) / double(e.surfacePoints));
+    e.precision = mesh.count ? float(double(mesh.within) / double(mesh.count)) : 0.0f;
+    e.recall = float(double(surface.within) / double(surface.count));
     e.fscore = e.precision + e.recall > 0.0f ? 2.0f * e.precision * e.recall / (e.precision + e.recall) : 0.0f;
     return e;
 }

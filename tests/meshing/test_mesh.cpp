@@ -184,6 +184,17 @@ meshing::Mesh icosphere(int levels, double radius) {
     return mesh;
 }
 
+// How far the flat faces of a mesh whose vertices lie on the sphere of `radius` about the origin
+// dip inside it: the largest distance from that sphere to a face's plane.
+double largestSag(const meshing::Mesh& mesh, double radius) {
+    double sag = 0.0;
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const glm::dvec3 a = corner(mesh, t, 0), b = corner(mesh, t, 1), c = corner(mesh, t, 2);
+        sag = std::max(sag, radius - glm::dot(glm::normalize(glm::cross(b - a, c - a)), a));
+    }
+    return sag;
+}
+
 // The mesh's triangles as positions, each rotated (keeping its winding) to start at its least
 // vertex, sorted: equal for two meshes with the same triangles, whatever their vertex order.
 std::vector<std::array<float, 9>> canonicalTriangles(const meshing::Mesh& mesh) {
@@ -458,11 +469,7 @@ TEST_F(MeshTest, AnIcosphereOffTheSurfaceIsItsOffsetAway) {
     const shaders::PreparedSdf sphere = source(kSphere);
     const meshing::Mesh mesh = icosphere(7, 0.62);
     ASSERT_TRUE(closedAndOutward(mesh));
-    double sag = 0.0;
-    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        const glm::dvec3 a = corner(mesh, t, 0), b = corner(mesh, t, 1), c = corner(mesh, t, 2);
-        sag = std::max(sag, 0.62 - glm::dot(glm::normalize(glm::cross(b - a, c - a)), a));
-    }
+    const double sag = largestSag(mesh, 0.62);
     ASSERT_LT(sag, 1.2e-5);
     meshing::ErrorOptions options;
     auto error = meshing::measureError(sphere, mesh, options);
@@ -726,11 +733,7 @@ meshing::Mesh chamferedPrism(float c) {
 // squares at z = +-0.32 graded against |z| - 0.3, where every distance both ways is exactly 0.02.
 TEST_F(MeshTest, TheEvaluationOfConcentricSpheresAndAnOffsetSlabIsExact) {
     const meshing::Mesh ball = icosphere(7, 0.62);
-    double sag = 0.0;
-    for (std::size_t t = 0; t < ball.triangleCount(); ++t) {
-        const glm::dvec3 a = corner(ball, t, 0), b = corner(ball, t, 1), c = corner(ball, t, 2);
-        sag = std::max(sag, 0.62 - glm::dot(glm::normalize(glm::cross(b - a, c - a)), a));
-    }
+    const double sag = largestSag(ball, 0.62);
     ASSERT_LT(sag, 1.2e-5);
     meshing::EvalOptions options; // 100000 points each way, tau 0.01
     auto spheres = meshing::evaluateMesh(source(kSphere), ball, options);
