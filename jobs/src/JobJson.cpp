@@ -319,6 +319,7 @@ template <class V> void fields(V& v, MeshReport& r) {
     v("points_evaluated", r.pointsEvaluated);
     v("clamped_vertices", r.clampedVertices);
     v("vertices_beside_their_cell", r.verticesBesideTheirCell);
+    v("split_faces", r.splitFaces);
     v("bounds_cut_points", r.boundsCutPoints);
     v("self_intersections", r.selfIntersections);
     v("mesh_seconds", r.meshSeconds);

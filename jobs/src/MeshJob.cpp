@@ -128,6 +128,7 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
     report.pointsEvaluated = stats.pointsEvaluated;
     report.clampedVertices = stats.clampedVertices;
     report.verticesBesideTheirCell = stats.verticesBesideTheirCell;
+    report.splitFaces = stats.splitFaces;
     report.boundsCutPoints = stats.boundsCutPoints;
     if (request.selfIntersections) report.selfIntersections = meshing::countSelfIntersections(mesh);
     report.meshSeconds = stats.seconds;

@@ -14,7 +14,7 @@
 #include <bit>
 #include <chrono>
 #include <cmath>
-#include <cstring>
+#include <iterator>
 #include <limits>
 #include <unordered_map>
 #include <vector>
@@ -60,6 +60,7 @@ void symmetricEigen(std::array<std::array<double, 3>, 3> a, std::array<double, 3
 // `free` holds the dropped directions: every point + span(free) minimises the sum as well.
 struct QefSolution {
     glm::dvec3 point{0.0};
+    glm::dvec3 mass{0.0}; // the crossings' mean
     std::array<glm::dvec3, 3> free{};
     int freeCount = 0;
 };
@@ -93,6 +94,7 @@ QefSolution solveQef(const glm::dvec3* points, const glm::dvec3* normals, int co
         x += v * (glm::dot(v, atb) / values[std::size_t(k)]);
     }
     out.point = mass + x;
+    out.mass = mass;
     return out;
 }
 
@@ -139,7 +141,12 @@ glm::dvec3 placeVertex(const QefSolution& qef, const glm::dvec3& lo, const glm::
             return x + d * std::clamp(0.0, t0, t1);
         }
     }
+    // From the crossings' mean (inside the cell) towards the minimiser, as far as the cell allows:
+    // clamping coordinate by coordinate put vertices of neighbouring cells on one grid point or one
+    // grid line, and triangles between them had zero area.
     ++clamped;
+    double t0 = 0.0, t1 = 0.0;
+    if (clipLine(qef.mass, x - qef.mass, lo, hi, t0, t1)) return qef.mass + (x - qef.mass) * std::clamp(1.0, t0, t1);
     return glm::clamp(x, lo, hi);
 }
 
@@ -247,34 +254,91 @@ struct Edge {
 
 struct CellRecord {
     std::uint32_t firstVertex;
-    std::uint32_t vertexOfEdge; // 2 bits per local edge: which of the cell's vertices (patches) it feeds
+    std::uint32_t vertexOfEdge;   // 2 bits per local edge: which of the cell's vertices (patches) it feeds
+    std::uint8_t jointFaces = 0;  // ambiguous faces (bit = face) whose two segments one patch of this cell joins
+    std::uint8_t crossPaired = 0; // ambiguous faces whose segments pair edges (0, 2) and (1, 3), not (0, 3) and (2, 1)
 };
+
+// The two segments of an ambiguous face, as indices into CubeTables::faceEdges.
+constexpr int kSegments[2][2][2] = {{{0, 3}, {2, 1}}, {{0, 2}, {1, 3}}}; // [crossPaired][segment][end]
 
 // Cells around a point where the surface meets a grid line (a cone's apex on the axis) can put
 // their vertices at the very same position; the quads between them then hold triangles of zero
-// area. Vertices that share a triangle and a position (bit for bit) become one, the triangles that
+// area. Vertices that share a triangle and a position (to `tolerance`, a millionth of a cell: 4e-19 apart is
+// a triangle of zero area in float) become one, the triangles that
 // repeat a vertex then go (each such merge is the collapse of an edge of length zero, which keeps
 // the surface closed and its orientation), and vertices no triangle uses any more are dropped.
-// Meshes without such triangles (nearly all) are left as they are.
-void weldCoincidentVertices(Mesh& mesh) {
+// A collapse that would pinch the surface (the two vertices have a neighbour in common that no
+// triangle of their edge holds: both sides of a split face, splitJoinedFaces) is not made; the
+// two are moved a hundredth of the way towards the middle of their other neighbours instead, which
+// parts them. Meshes without such triangles (nearly all) are left as they are.
+void weldCoincidentVertices(Mesh& mesh, float tolerance) {
     std::vector<std::uint32_t>& indices = mesh.indices;
-    std::unordered_map<std::uint32_t, std::uint32_t> parent; // union-find over the vertices involved
+    auto same = [&](std::uint32_t a, std::uint32_t b) { return glm::length(mesh.vertices[a] - mesh.vertices[b]) <= tolerance; };
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3)
+        for (std::size_t e = 0; e < 3; ++e) {
+            const std::uint32_t a = indices[t + e], b = indices[t + (e + 1) % 3];
+            if (a != b && same(a, b)) pairs.emplace_back(std::min(a, b), std::max(a, b));
+        }
+    if (pairs.empty()) return;
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    // The triangles around each vertex involved; a merge hands the merged vertex's to the survivor.
+    std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> around;
+    for (const auto& [a, b] : pairs) around[a], around[b];
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3)
+        for (std::size_t e = 0; e < 3; ++e)
+            if (const auto it = around.find(indices[t + e]); it != around.end()) it->second.push_back(std::uint32_t(t / 3));
+    std::unordered_map<std::uint32_t, std::uint32_t> parent; // union-find over the vertices merged
     auto find = [&](std::uint32_t v) {
         for (auto it = parent.find(v); it != parent.end() && it->second != v; it = parent.find(v)) v = it->second;
         return v;
     };
-    auto same = [&](std::uint32_t a, std::uint32_t b) {
-        return std::memcmp(&mesh.vertices[a], &mesh.vertices[b], sizeof(glm::vec3)) == 0;
-    };
-    for (std::size_t t = 0; t + 2 < indices.size(); t += 3)
-        for (std::size_t e = 0; e < 3; ++e) {
-            const std::uint32_t a = indices[t + e], b = indices[t + (e + 1) % 3];
-            if (a == b || !same(a, b)) continue;
-            const std::uint32_t ra = find(a), rb = find(b);
-            if (ra == rb) continue;
-            parent[std::min(ra, rb)] = std::min(ra, rb);
-            parent[std::max(ra, rb)] = std::min(ra, rb);
+    // The neighbours of v in the mesh as merged so far, and how many of v's triangles hold `other`.
+    std::vector<std::uint32_t> ringA, ringB;
+    auto ring = [&](std::uint32_t v, std::uint32_t other, std::vector<std::uint32_t>& out) {
+        out.clear();
+        std::size_t holding = 0;
+        for (std::uint32_t t : around[v]) {
+            const std::uint32_t f[3] = {find(indices[3 * t]), find(indices[3 * t + 1]), find(indices[3 * t + 2])};
+            if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) continue; // collapsed already
+            holding += f[0] == other || f[1] == other || f[2] == other;
+            for (std::uint32_t n : f)
+                if (n != v) out.push_back(n);
         }
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
+        return holding;
+    };
+    std::vector<std::uint32_t> common;
+    for (const auto& [a, b] : pairs) {
+        const std::uint32_t ra = find(a), rb = find(b);
+        if (ra == rb) continue;
+        const std::size_t shared = ring(ra, rb, ringA);
+        ring(rb, ra, ringB);
+        common.clear();
+        std::set_intersection(ringA.begin(), ringA.end(), ringB.begin(), ringB.end(), std::back_inserter(common));
+        if (common.size() == shared) {
+            const std::uint32_t keep = std::min(ra, rb), gone = std::max(ra, rb);
+            parent[keep] = keep;
+            parent[gone] = keep;
+            std::vector<std::uint32_t>& into = around[keep];
+            const std::vector<std::uint32_t>& from = around[gone];
+            into.insert(into.end(), from.begin(), from.end());
+            continue;
+        }
+        for (const auto& [v, others] : {std::pair{ra, &ringA}, std::pair{rb, &ringB}}) {
+            glm::vec3 middle(0.0f);
+            int count = 0;
+            for (std::uint32_t n : *others)
+                if (n != ra && n != rb) {
+                    middle += mesh.vertices[n];
+                    ++count;
+                }
+            if (count > 0) mesh.vertices[v] += 0.01f * (middle / float(count) - mesh.vertices[v]);
+        }
+    }
     if (parent.empty()) return;
     std::size_t kept = 0;
     for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
@@ -320,6 +384,9 @@ private:
     Expected<void> placeCrossings();
     void placeVertices();
     bool cellCrossed(const glm::dvec3& point) const;
+    const CellRecord* recordAt(const std::int64_t c[3]) const;
+    std::uint32_t crossingOf(const std::int64_t c[3], int l) const;
+    void splitJoinedFaces();
     Expected<void> projectVertices();
     void connectQuads();
 
@@ -345,6 +412,15 @@ private:
     std::vector<RankedBits<kCells>> blockCells;
     std::vector<CellRecord> cellRecords;
     std::vector<std::array<std::int32_t, 3>> vertexCell;
+    std::vector<std::array<std::int32_t, 3>> jointCells; // cells with a jointFaces bit
+    // The vertex of each segment of an ambiguous face that the patches on both sides join, by
+    // faceKey (see splitJoinedFaces).
+    std::unordered_map<std::uint64_t, std::uint32_t> faceVertices;
+    std::size_t cellVertexCount = 0; // the cells' vertices come first, the face vertices after them
+    std::uint64_t faceKey(const std::int64_t lower[3], int axis, int segment) const {
+        return ((std::uint64_t((lower[2] * grid.n + lower[1]) * grid.n + lower[0])) * 3 + std::uint64_t(axis)) * 2 +
+               std::uint64_t(segment);
+    }
 };
 
 Expected<std::pair<Mesh, MeshStats>> Extraction::run() {
@@ -373,9 +449,10 @@ Expected<std::pair<Mesh, MeshStats>> Extraction::run() {
     if (auto ok = placeCrossings(); !ok) return ok.error();
     progress(3, 4);
     placeVertices();
+    splitJoinedFaces();
     if (auto ok = projectVertices(); !ok) return ok.error();
     connectQuads();
-    weldCoincidentVertices(mesh);
+    weldCoincidentVertices(mesh, float(1e-6 * std::min({grid.step.x, grid.step.y, grid.step.z})));
     progress(4, 4);
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return std::pair<Mesh, MeshStats>{std::move(mesh), stats};
@@ -579,6 +656,7 @@ void Extraction::placeVertices() {
                         return x;
                     };
                     auto join = [&](int a, int c) { parent[find(a)] = find(c); };
+                    int ambiguous = 0, crossPaired = 0;
                     for (int face = 0; face < 6; ++face) {
                         const int* fe = tables.faceEdges[face];
                         int on[4], count = 0;
@@ -588,13 +666,10 @@ void Extraction::placeVertices() {
                             const int* fc = tables.faceCorners[face];
                             const float c00 = corner[fc[0]];
                             const float centre = 0.25f * (c00 + corner[fc[1]] + corner[fc[2]] + corner[fc[3]]);
-                            if (inside(centre) == inside(c00)) {
-                                join(fe[0], fe[3]);
-                                join(fe[2], fe[1]);
-                            } else {
-                                join(fe[0], fe[2]);
-                                join(fe[1], fe[3]);
-                            }
+                            const int paired = inside(centre) == inside(c00) ? 0 : 1;
+                            for (const auto& segment : kSegments[paired]) join(fe[segment[0]], fe[segment[1]]);
+                            ambiguous |= 1 << face;
+                            crossPaired |= paired << face;
                         } else {
                             for (int q = 1; q < count; ++q) join(on[0], on[q]);
                         }
@@ -602,7 +677,11 @@ void Extraction::placeVertices() {
                     const std::int32_t cell[3] = {b[0] * kBlock + i, b[1] * kBlock + j, b[2] * kBlock + k};
                     const glm::dvec3 lo = glm::dvec3(grid.point(cell[0], cell[1], cell[2]));
                     const glm::dvec3 hi = glm::dvec3(grid.point(cell[0] + 1, cell[1] + 1, cell[2] + 1));
-                    CellRecord record{std::uint32_t(mesh.vertices.size()), 0};
+                    CellRecord record{std::uint32_t(mesh.vertices.size()), 0, 0, std::uint8_t(crossPaired)};
+                    for (int face = 0; face < 6; ++face)
+                        if (ambiguous >> face & 1 && find(tables.faceEdges[face][0]) == find(tables.faceEdges[face][1]))
+                            record.jointFaces |= std::uint8_t(1 << face);
+                    if (record.jointFaces != 0) jointCells.push_back({cell[0], cell[1], cell[2]});
                     std::uint32_t patch = 0;
                     for (int root = 0; root < 12; ++root) {
                         if (!(present >> root & 1) || find(root) != root) continue;
@@ -653,6 +732,64 @@ bool Extraction::cellCrossed(const glm::dvec3& point) const {
     return signs != 0 && signs != 0xff;
 }
 
+// The record of cell c; null when the cell was not meshed (outside the grid, in a skipped block,
+// or with no crossing).
+const CellRecord* Extraction::recordAt(const std::int64_t c[3]) const {
+    for (int a = 0; a < 3; ++a)
+        if (c[a] < 0 || c[a] >= grid.n) return nullptr;
+    const std::int64_t bi = c[0] / kBlock, bj = c[1] / kBlock, bk = c[2] / kBlock;
+    const std::int32_t slot = blockSlot[std::size_t((bk * blocksPerAxis + bj) * blocksPerAxis + bi)];
+    if (slot < 0) return nullptr;
+    const int local = int(((c[2] - bk * kBlock) * kBlock + (c[1] - bj * kBlock)) * kBlock + (c[0] - bi * kBlock));
+    const RankedBits<kCells>& cells = blockCells[std::size_t(slot)];
+    if (!cells.test(local)) return nullptr;
+    return &cellRecords[cells.rank(local)];
+}
+
+// The index (into edges and crossings) of local edge l of meshed cell c.
+std::uint32_t Extraction::crossingOf(const std::int64_t c[3], int l) const {
+    const std::int64_t b[3] = {c[0] / kBlock, c[1] / kBlock, c[2] / kBlock};
+    const std::int32_t slot = blockSlot[std::size_t((b[2] * blocksPerAxis + b[1]) * blocksPerAxis + b[0])];
+    const int* o = tables.edgeOffset[l];
+    int point = 0;
+    for (int a = 0; a < 3; ++a) point += int(c[a] - b[a] * kBlock + o[a]) * kStride[a];
+    return blockEdges[std::size_t(slot)].rank(3 * point + l / 4);
+}
+
+// 4b. Manifold across ambiguous faces. When the patches on both sides of an ambiguous face each
+// join the face's two segments (a tunnel thinner than a cell), the edge between their two vertices
+// would be shared by the four quads of the face's four crossing edges. Each segment gets a vertex
+// of its own on the face instead (the middle of its two crossings, projected onto the surface with
+// the others), which connectQuads puts between the two cells' vertices: every edge then has two
+// triangles and every vertex one fan.
+void Extraction::splitJoinedFaces() {
+    cellVertexCount = mesh.vertices.size();
+    for (const auto& cell : jointCells) {
+        const std::int64_t lower[3] = {cell[0], cell[1], cell[2]};
+        const CellRecord* near = recordAt(lower);
+        for (int w = 0; w < 3; ++w) {
+            const int face = 2 * w + 1;
+            if (!(near->jointFaces >> face & 1)) continue;
+            std::int64_t upper[3] = {lower[0], lower[1], lower[2]};
+            ++upper[w];
+            const CellRecord* far = recordAt(upper);
+            if (far == nullptr || !(far->jointFaces >> (2 * w) & 1)) continue;
+            const int paired = near->crossPaired >> face & 1;
+            for (int segment = 0; segment < 2; ++segment) {
+                glm::vec3 middle(0.0f);
+                for (int end = 0; end < 2; ++end) {
+                    const std::uint32_t e = crossingOf(lower, tables.faceEdges[face][kSegments[paired][segment][end]]);
+                    middle += 0.5f * glm::vec3(crossings[3 * e], crossings[3 * e + 1], crossings[3 * e + 2]);
+                }
+                faceVertices.emplace(faceKey(lower, w, segment), std::uint32_t(mesh.vertices.size()));
+                mesh.vertices.push_back(middle);
+                vertexCell.push_back(cell);
+            }
+            ++stats.splitFaces;
+        }
+    }
+}
+
 // On curved surfaces the planes' minimiser lies off the surface by about h^2 times the
 // curvature: two Newton steps along the gradient put each vertex on it (a vertex already on a
 // sharp edge or corner has f = 0 and stays). Steps are kept within the vertex's cell (or, for a vertex
@@ -684,47 +821,95 @@ Expected<void> Extraction::projectVertices() {
 // 5. A quad per sign-changing edge (from the block that owns it), wound so that it faces
 // outward (towards f > 0).
 void Extraction::connectQuads() {
-    constexpr std::uint32_t kNone = 0xffffffffu;
-    // The vertex that cell c's local edge l feeds; kNone when the cell was not meshed (outside the
-    // grid or in a skipped block).
-    auto vertexAt = [&](const std::int64_t c[3], int l) -> std::uint32_t {
-        for (int a = 0; a < 3; ++a)
-            if (c[a] < 0 || c[a] >= grid.n) return kNone;
-        const std::int64_t bi = c[0] / kBlock, bj = c[1] / kBlock, bk = c[2] / kBlock;
-        const std::int32_t slot = blockSlot[std::size_t((bk * blocksPerAxis + bj) * blocksPerAxis + bi)];
-        if (slot < 0) return kNone;
-        const int local = int(((c[2] - bk * kBlock) * kBlock + (c[1] - bj * kBlock)) * kBlock + (c[0] - bi * kBlock));
-        const RankedBits<kCells>& cells = blockCells[std::size_t(slot)];
-        if (!cells.test(local)) return kNone;
-        const CellRecord& record = cellRecords[cells.rank(local)];
-        return record.firstVertex + (record.vertexOfEdge >> (2 * l) & 3u);
-    };
     mesh.indices.reserve(6 * edges.size());
+    const std::uint32_t firstFaceVertexIndex = std::uint32_t(cellVertexCount);
+    const int offsets[4][2] = {{-1, -1}, {0, -1}, {0, 0}, {-1, 0}}; // the cells around an edge, in (u, v)
     for (const Edge& edge : edges) {
         if (!edge.owned) continue;
         const int u = (edge.axis + 1) % 3, v = (edge.axis + 2) % 3;
+        std::int64_t cells[4][3];
+        const CellRecord* records[4];
+        int locals[4];
         std::uint32_t quad[4];
         bool complete = true;
-        const int offsets[4][2] = {{-1, -1}, {0, -1}, {0, 0}, {-1, 0}};
         for (int q = 0; q < 4 && complete; ++q) {
-            std::int64_t c[3] = {edge.i, edge.j, edge.k};
+            std::int64_t* c = cells[q];
+            c[0] = edge.i;
+            c[1] = edge.j;
+            c[2] = edge.k;
             c[u] += offsets[q][0];
             c[v] += offsets[q][1];
             // The edge seen from this cell: at its +u side when the cell lies at -u, and so on.
-            const int l = edge.axis * 4 + (-offsets[q][0]) + 2 * (-offsets[q][1]);
-            quad[q] = vertexAt(c, l);
-            complete = quad[q] != kNone;
+            locals[q] = edge.axis * 4 + (-offsets[q][0]) + 2 * (-offsets[q][1]);
+            records[q] = recordAt(c);
+            complete = records[q] != nullptr;
+            if (complete) quad[q] = records[q]->firstVertex + (records[q]->vertexOfEdge >> (2 * locals[q]) & 3u);
         }
         if (!complete) continue;
+        // The polygon: the four cells' vertices, with a face vertex between two cells whose patches
+        // both join an ambiguous face's segments (splitJoinedFaces).
+        std::uint32_t polygon[8];
+        int size = 0;
+        for (int q = 0; q < 4; ++q) {
+            polygon[size++] = quad[q];
+            const int r = (q + 1) % 4;
+            const int w = offsets[q][0] != offsets[r][0] ? u : v;
+            const int lower = offsets[q][0] + offsets[q][1] < offsets[r][0] + offsets[r][1] ? q : r;
+            const int upper = lower == q ? r : q;
+            if (!(records[lower]->jointFaces >> (2 * w + 1) & 1) || !(records[upper]->jointFaces >> (2 * w) & 1)) continue;
+            const int face = 2 * w + 1, paired = records[lower]->crossPaired >> face & 1;
+            int segment = 1;
+            for (int end = 0; end < 2; ++end)
+                if (tables.faceEdges[face][kSegments[paired][0][end]] == locals[lower]) segment = 0;
+            const auto found = faceVertices.find(faceKey(cells[lower], w, segment));
+            if (found == faceVertices.end()) continue;
+            polygon[size++] = found->second;
+        }
         // (u, v) counter-clockwise looking down +axis; the surface faces +axis when the edge starts inside.
-        if (!edge.startInside) std::swap(quad[1], quad[3]);
-        // Split along the shorter diagonal.
-        const float d02 = glm::length(mesh.vertices[quad[0]] - mesh.vertices[quad[2]]);
-        const float d13 = glm::length(mesh.vertices[quad[1]] - mesh.vertices[quad[3]]);
-        if (d02 <= d13)
-            mesh.indices.insert(mesh.indices.end(), {quad[0], quad[1], quad[2], quad[0], quad[2], quad[3]});
-        else
-            mesh.indices.insert(mesh.indices.end(), {quad[0], quad[1], quad[3], quad[1], quad[2], quad[3]});
+        if (!edge.startInside) std::reverse(polygon, polygon + size);
+        // A fan from one of the polygon's vertices. Without face vertices: the quad's shorter
+        // diagonal. With them: never the diagonal between the two neighbours of a face vertex (the
+        // edge that would gain a third triangle); every other diagonal is this polygon's alone.
+        // Among the fans allowed, one with no triangle of zero area (vertices on one crease line),
+        // then the one whose smallest triangle is largest.
+        auto area = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+            const glm::dvec3 pa(mesh.vertices[a]), pb(mesh.vertices[b]), pc(mesh.vertices[c]);
+            return glm::length(glm::cross(pb - pa, pc - pa));
+        };
+        auto smallest = [&](int apex) {
+            double least = std::numeric_limits<double>::infinity();
+            for (int k = 1; k + 1 < size; ++k)
+                least = std::min(least, area(polygon[apex], polygon[(apex + k) % size], polygon[(apex + k + 1) % size]));
+            return least;
+        };
+        auto isFaceVertex = [&](int k) { return polygon[k] >= firstFaceVertexIndex; };
+        auto allowed = [&](int apex) {
+            for (int k = 2; k + 1 < size; ++k) { // the diagonals (apex, apex + k)
+                const int other = (apex + k) % size;
+                for (int between = 0; between < size; ++between)
+                    if (isFaceVertex(between) && ((apex == (between + size - 1) % size && other == (between + 1) % size) ||
+                                                  (other == (between + size - 1) % size && apex == (between + 1) % size)))
+                        return false;
+            }
+            return true;
+        };
+        int apex = 0;
+        if (size == 4) {
+            const float d02 = glm::length(mesh.vertices[polygon[0]] - mesh.vertices[polygon[2]]);
+            const float d13 = glm::length(mesh.vertices[polygon[1]] - mesh.vertices[polygon[3]]);
+            apex = d02 <= d13 ? 0 : 1;
+            if (!(smallest(apex) > 0.0) && smallest(1 - apex) > 0.0) apex = 1 - apex;
+        } else {
+            double best = -1.0;
+            for (int k = 0; k < size; ++k)
+                if (allowed(k))
+                    if (const double least = smallest(k); least > best) {
+                        best = least;
+                        apex = k;
+                    }
+        }
+        for (int k = 1; k + 1 < size; ++k)
+            mesh.indices.insert(mesh.indices.end(), {polygon[apex], polygon[(apex + k) % size], polygon[(apex + k + 1) % size]});
     }
 }
 

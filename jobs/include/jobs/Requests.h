@@ -362,7 +362,8 @@ struct MeshReport {
     float lipschitzBound = 0.0f;
     std::string boundSource;  // where the bound came from
     std::string fieldVerdict; // the quick audit's verdict (exact, conservative, ...)
-    std::uint64_t blocks = 0, blocksKept = 0, pointsEvaluated = 0, clampedVertices = 0, verticesBesideTheirCell = 0;
+    std::uint64_t blocks = 0, blocksKept = 0, pointsEvaluated = 0, clampedVertices = 0, verticesBesideTheirCell = 0,
+                  splitFaces = 0;
     std::uint64_t boundsCutPoints = 0;              // grid points inside the shape beyond the bounds: closed by caps there
     std::optional<std::uint64_t> selfIntersections; // crossing triangle pairs, when asked for
     double meshSeconds = 0.0;
