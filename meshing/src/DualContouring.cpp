@@ -932,7 +932,13 @@ Topology checkTopology(const Mesh& mesh) {
     directed.reserve(3 * triangles);
     for (std::size_t f = 0; f < triangles; ++f) {
         const std::uint32_t v[3] = {mesh.indices[3 * f], mesh.indices[3 * f + 1], mesh.indices[3 * f + 2]};
-        if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) ++t.degenerateTriangles;
+        if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) {
+            ++t.degenerateTriangles;
+        } else if (std::max({v[0], v[1], v[2]}) < mesh.vertices.size()) { // zero area: on one line
+            const glm::dvec3 a(mesh.vertices[v[0]]), b(mesh.vertices[v[1]]), c(mesh.vertices[v[2]]);
+            const glm::dvec3 n = glm::cross(b - a, c - a);
+            if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0) ++t.degenerateTriangles;
+        }
         for (int e = 0; e < 3; ++e) {
             const std::uint32_t a = v[e], b = v[(e + 1) % 3];
             undirected.push_back((std::uint64_t(std::min(a, b)) << 32) | std::max(a, b));
