@@ -20,7 +20,8 @@ enum ExitCode : int {
 struct OutputOptions {
     bool quiet = false;         // only errors
     bool json = false;          // machine-readable report on stdout
-    bool progressLines = false; // "progress DONE TOTAL" lines on stderr, for front ends (the GUI)
+    bool progressLines = false; // "progress DONE TOTAL" lines on stderr, for front ends
+    bool protocol = false;      // the worker protocol (jobs/Protocol.h) on stdout: progress, error, report, end
 };
 
 int runRender(const jobs::RenderRequest& request, const OutputOptions& output);
@@ -42,7 +43,12 @@ int runBench(const jobs::BenchRequest& request, const OutputOptions& output);
 // Runs any request with the command of its kind.
 int runRequest(const jobs::Request& request, const OutputOptions& output);
 
-// Prints "sdfwb: <message>" to stderr.
+// Prints "sdfwb: <message>" to stderr, or, under the worker protocol, its error message on stdout.
 void printError(const std::string& message);
+// Under the worker protocol (setProtocolOutput), errors, progress and reports are protocol messages.
+void setProtocolOutput(bool on);
+// Ends a request under the worker protocol: its error message (unless it succeeded), then
+// {"end": exitCode}. Returns exitCode.
+int endProtocolRequest(int exitCode);
 
 } // namespace sdfwb::app

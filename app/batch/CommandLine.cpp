@@ -262,6 +262,10 @@ void addOutputFlags(CLI::App& app, Ending& ending) {
     app.add_flag("--quiet,-q", output.quiet, "print errors only");
     app.add_flag("--json", output.json, "print a machine-readable report on stdout");
     app.add_flag("--progress-lines", output.progressLines, "print 'progress DONE TOTAL' lines on stderr (for front ends)");
+    app.add_flag("--protocol", output.protocol,
+                 "answer in the worker protocol on stdout: one JSON object per line, {\"progress\":[done,total]}, "
+                 "{\"error\":{kind, message, diagnostics}}, {\"report\":{...}}, then {\"end\":exit code} (the workbench's "
+                 "form, jobs/Protocol.h)");
 }
 
 using Arguments = std::vector<std::string>;
@@ -403,7 +407,11 @@ int finish(const jobs::Request& request, const Ending& ending, Mode mode) {
     if (mode == Mode::Check) return kExitOk;
     if (ending.output.quiet || (ending.output.json && !std::holds_alternative<jobs::RenderRequest>(request)))
         log::setMinimumLevel(log::Level::Warning);
-    return runRequest(request, ending.output);
+    if (!ending.output.protocol) return runRequest(request, ending.output);
+    OutputOptions output = ending.output;
+    output.json = true;
+    setProtocolOutput(true);
+    return endProtocolRequest(runRequest(request, output));
 }
 
 int runRenderCommand(const Arguments& arguments, Mode mode) {
@@ -736,13 +744,14 @@ int runRequestLines(const std::string& source, const Ending& ending, Mode mode) 
         if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
         auto request = jobs::requestFromJson(line);
         if (!request) {
+            setProtocolOutput(ending.output.protocol);
             printError((source == "-" ? std::string("<stdin>") : source) + ": " + request.error().message);
-            last = kExitUsage;
+            last = ending.output.protocol ? endProtocolRequest(kExitUsage) : kExitUsage;
         } else {
-            last = finish(*request, ending, mode);
+            last = finish(*request, ending, mode); // under --protocol it ends with {"end": code}
         }
         std::fflush(stderr);
-        std::printf("\nsdfwb-end %d\n", last);
+        if (!ending.output.protocol) std::printf("\nsdfwb-end %d\n", last);
         std::fflush(stdout);
     }
     return last;
@@ -765,8 +774,9 @@ int runRequestCommand(const Arguments& arguments, Mode mode) {
     if (!text) return kExitUsage;
     auto request = jobs::requestFromJson(*text);
     if (!request) {
+        setProtocolOutput(ending.output.protocol);
         printError((source == "-" ? std::string("<stdin>") : source) + ": " + request.error().message);
-        return kExitUsage;
+        return ending.output.protocol ? endProtocolRequest(kExitUsage) : kExitUsage;
     }
     return finish(*request, ending, mode);
 }

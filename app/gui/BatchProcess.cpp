@@ -1,6 +1,7 @@
 #include "BatchProcess.h"
 
 #include <jobs/JobJson.h>
+#include <jobs/Protocol.h>
 
 #include <QCoreApplication>
 #include <QProcess>
@@ -23,37 +24,54 @@ BatchProcess::~BatchProcess() {
 
 bool BatchProcess::isRunning() const { return m_process && m_process->state() != QProcess::NotRunning; }
 
+QString describeFailure(const jobs::JobError& error) {
+    QString text;
+    for (const shaders::Diagnostic& d : error.diagnostics) text += QString::fromStdString(shaders::formatDiagnostic(d)) + "\n";
+    return text + QString::fromStdString(error.message);
+}
+
 bool BatchProcess::start(const jobs::Request& request) {
     if (isRunning()) return false;
     m_process = new QProcess(this);
-    m_errors.clear();
     m_pending.clear();
-    connect(m_process, &QProcess::readyReadStandardError, this, &BatchProcess::readStandardError);
+    m_report.clear();
+    m_error = {};
+    m_hasError = false;
+    m_process->setStandardErrorFile(QProcess::nullDevice()); // log lines only: errors come as messages
+    connect(m_process, &QProcess::readyReadStandardOutput, this, &BatchProcess::readOutput);
     connect(m_process, &QProcess::errorOccurred, this, [this](QProcess::ProcessError error) {
         if (error != QProcess::FailedToStart || !m_process) return;
         QProcess* process = m_process;
         m_process = nullptr;
         process->deleteLater();
+        m_lastError = {jobs::Failure::Work, tr("cannot start %1").arg(m_executable).toStdString(), {}};
         emit finished(false, false, {}, tr("cannot start %1").arg(m_executable));
     });
     connect(m_process, &QProcess::finished, this, [this](int exitCode, QProcess::ExitStatus status) {
-        readStandardError();
+        readOutput();
         QProcess* process = m_process;
         m_process = nullptr;
         process->deleteLater();
-        bool ok = status == QProcess::NormalExit && exitCode == 0;
-        bool cancelled = status == QProcess::NormalExit && exitCode == 130;
-        const std::string report = process->readAllStandardOutput().toStdString();
-        QString message = m_errors.trimmed();
-        if (cancelled)
+        const bool ok = status == QProcess::NormalExit && exitCode == 0;
+        const bool cancelled = status == QProcess::NormalExit && exitCode == 130;
+        jobs::JobError error = m_error;
+        QString message = m_hasError ? describeFailure(m_error) : QString();
+        if (cancelled) {
+            error.failure = jobs::Failure::Cancelled;
             message = tr("Cancelled; nothing was written.");
-        else if (status == QProcess::CrashExit)
+        } else if (status == QProcess::CrashExit) {
             message = tr("The batch process crashed; nothing was written.");
-        else if (!ok && message.isEmpty())
+            error.message = message.toStdString();
+        } else if (!ok && message.isEmpty()) {
             message = tr("Failed (exit code %1).").arg(exitCode);
-        emit finished(ok, cancelled, report, message);
+            error.message = message.toStdString();
+        }
+        if (exitCode == 2) error.failure = jobs::Failure::Usage;
+        if (exitCode == 3) error.failure = jobs::Failure::NoGl;
+        m_lastError = ok ? jobs::JobError{} : error;
+        emit finished(ok, cancelled, ok ? m_report : std::string(), message);
     });
-    m_process->start(m_executable, {"--batch", "request", "-", "--json", "--progress-lines"});
+    m_process->start(m_executable, {"--batch", "request", "-", "--protocol"});
     const std::string json = jobs::toJson(request);
     m_process->write(json.data(), qint64(json.size()));
     m_process->closeWriteChannel();
@@ -64,18 +82,28 @@ void BatchProcess::cancel() {
     if (isRunning()) m_process->terminate(); // SIGTERM: the batch command cancels and cleans up
 }
 
-void BatchProcess::readStandardError() {
+void BatchProcess::readOutput() {
     if (!m_process) return;
-    m_pending += m_process->readAllStandardError();
+    m_pending += m_process->readAllStandardOutput();
     int newline;
     while ((newline = m_pending.indexOf('\n')) >= 0) {
-        QByteArray line = m_pending.left(newline);
+        const std::string line = m_pending.left(newline).toStdString();
         m_pending.remove(0, newline + 1);
-        if (line.startsWith("progress ")) {
-            QList<QByteArray> parts = line.split(' ');
-            if (parts.size() == 3) emit progress(parts[1].toULongLong(), parts[2].toULongLong());
-        } else if (line.startsWith("sdfwb: ") || line.contains(": error:")) {
-            m_errors += QString::fromLocal8Bit(line) + "\n";
+        const jobs::WorkerMessage message = jobs::readWorkerMessage(line);
+        switch (message.kind) {
+        case jobs::WorkerMessage::Kind::Progress:
+            emit progress(message.done, message.total);
+            break;
+        case jobs::WorkerMessage::Kind::Error:
+            m_error = message.error;
+            m_hasError = true;
+            break;
+        case jobs::WorkerMessage::Kind::Report:
+            m_report = message.report;
+            break;
+        case jobs::WorkerMessage::Kind::End:
+        case jobs::WorkerMessage::Kind::Other:
+            break;
         }
     }
 }

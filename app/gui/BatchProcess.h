@@ -1,9 +1,12 @@
 #pragma once
 // Runs one job (a typed request, jobs/Requests.h) as a child process for the workbench:
-// `sdfwb --batch request - --json --progress-lines` with the request's JSON on stdin, so long jobs
-// stay off the UI thread and out of the GUI's GL context, and Cancel is a signal the batch
-// commands already handle (they leave no partial file). The report comes back as its JSON.
+// `sdfwb --batch request - --protocol` with the request's JSON on stdin, so long jobs stay off the
+// UI thread and out of the GUI's GL context, and Cancel is a signal the batch commands already
+// handle (they leave no partial file). Progress, the structured error and the report come back as
+// worker-protocol messages (jobs/Protocol.h); no text is parsed. Interactive requests go to the
+// persistent JobWorker instead.
 
+#include <jobs/Jobs.h>
 #include <jobs/Requests.h>
 
 #include <QObject>
@@ -14,6 +17,9 @@
 class QProcess;
 
 namespace sdfwb::app {
+
+// A failure as the user reads it: the SDF's diagnostics ("file:line:column: error: ..."), then the message.
+QString describeFailure(const jobs::JobError& error);
 
 class BatchProcess : public QObject {
     Q_OBJECT
@@ -34,16 +40,23 @@ public:
 signals:
     void progress(quint64 done, quint64 total);
     // ok: exit code 0; report: the report's JSON (read it with jobs::reportFromJson); message: the
-    // child's error lines, or why it stopped.
+    // child's error (describeFailure), or why it stopped.
     void finished(bool ok, bool cancelled, const std::string& report, const QString& message);
 
+public:
+    // The last failure as the child reported it (kind, message, the SDF's diagnostics).
+    const jobs::JobError& error() const { return m_lastError; }
+
 private:
-    void readStandardError();
+    void readOutput();
 
     QString m_executable;
     QProcess* m_process = nullptr;
-    QString m_errors;
     QByteArray m_pending;
+    std::string m_report;
+    jobs::JobError m_error; // the child's error message, when it sent one
+    bool m_hasError = false;
+    jobs::JobError m_lastError;
 };
 
 } // namespace sdfwb::app

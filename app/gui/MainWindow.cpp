@@ -3,6 +3,7 @@
 #include "CloudController.h"
 #include "ExportController.h"
 #include "FileController.h"
+#include "JobWorker.h"
 #include "MeshExportController.h"
 #include "PlaneController.h"
 #include "PlaybackController.h"
@@ -158,9 +159,11 @@ void MainWindow::createControllers() {
     m_meshExport = new MeshExportController(this, currentSdf, this);
     connect(m_meshExport, &MeshExportController::meshWritten, this, &MainWindow::showMeshDeviation);
     m_playback = new PlaybackController(m_timeBar, m_viewport, this);
-    m_plane = new PlaneController(m_planePanel, m_viewport, currentSdf, this);
+    // Plane readouts and probes: one persistent worker process (started at the first request).
+    m_worker = new JobWorker(this);
+    m_plane = new PlaneController(m_planePanel, m_viewport, currentSdf, m_worker, this);
     m_files = new FileController(this, m_editor, m_document, m_viewport, this);
-    m_probe = new ProbeController(m_probePanel, m_viewport, currentSdf, this);
+    m_probe = new ProbeController(m_probePanel, m_viewport, currentSdf, m_worker, this);
     connect(m_probe, &ProbeController::probed, this, [this] {
         m_probeDock->show();
         m_probeDock->raise();

@@ -38,6 +38,7 @@ class ProbeController;
 class ThumbnailController;
 class MeshExportController;
 class FileController;
+class JobWorker;
 class PlaneController;
 class PlaybackController;
 class SamplingController;
@@ -70,6 +71,7 @@ public:
     widgets::ProbePanel* probePanel() const { return m_probePanel; }
     widgets::LogPanel* logPanel() const { return m_logPanel; }
     ProbeController* probe() const { return m_probe; }
+    JobWorker* worker() const { return m_worker; }
     CloudController* clouds() const { return m_clouds; }
     ThumbnailController* thumbnails() const { return m_thumbnails; }
     QAction* probeAction() const { return m_probeAction; }
@@ -137,6 +139,7 @@ private:
     QStringList m_sessionParameterValues;
     QDockWidget* m_planeDock = nullptr;
     PlaneController* m_plane = nullptr;
+    JobWorker* m_worker = nullptr; // the persistent child for plane readouts and probes
     FileController* m_files = nullptr;
     widgets::ProblemsPanel* m_problems = nullptr;
     widgets::DatasetBrowser* m_browser = nullptr;

@@ -1,6 +1,6 @@
 #include "PlaneController.h"
 
-#include "BatchProcess.h"
+#include "JobWorker.h"
 
 #include <widgets/PlanePanel.h>
 #include <widgets/ViewportWidget.h>
@@ -12,9 +12,9 @@
 namespace sdfwb::app {
 
 PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWidget* viewport,
-                                 std::function<jobs::SdfInput()> currentSdf, QObject* parent)
+                                 std::function<jobs::SdfInput()> currentSdf, JobWorker* worker, QObject* parent)
     : QObject(parent), m_panel(panel), m_viewport(viewport), m_currentSdf(std::move(currentSdf)),
-      m_process(new BatchProcess(this)) {
+      m_process(new JobChannel(worker, this)) {
     m_debounce.setSingleShot(true);
     m_debounce.setInterval(250);
     connect(&m_debounce, &QTimer::timeout, this, &PlaneController::refresh);
@@ -44,7 +44,7 @@ PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWi
         m_debounce.start();
         emit markersShown(int(examples.size()));
     });
-    connect(m_process, &BatchProcess::finished, this, [this](bool ok, bool, const std::string& json, const QString& message) {
+    connect(m_process, &JobChannel::finished, this, [this](bool ok, bool, const std::string& json, const QString& message) {
         auto report = ok ? jobs::reportFromJson<jobs::AuditJobReport>(json)
                          : Expected<jobs::AuditJobReport>(makeError(message.toStdString()));
         if (report && !report->readout) report = makeError("plane readouts: the report holds no readout");
@@ -78,7 +78,7 @@ PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWi
     });
 }
 
-void PlaneController::setExecutable(const QString& path) { m_process->setExecutable(path); }
+void PlaneController::setExecutable(const QString& path) { m_process->worker()->setExecutable(path); }
 
 void PlaneController::refresh() {
     renderer::CuttingPlane plane = m_viewport->plane();

@@ -1,7 +1,7 @@
 #pragma once
 // Keeps the cutting plane of the panel and the viewport in step, and refreshes the plane's
-// readouts after each change (debounced) by running `sdfwb --batch audit --plane ...` as a child
-// process, so the editor and the viewport never wait for the analysis.
+// readouts after each change (debounced) by running the plane audit request in the workbench's
+// persistent worker (JobWorker), so the editor and the viewport never wait for the analysis.
 
 #include <jobs/Requests.h>
 
@@ -17,13 +17,14 @@ class ViewportWidget;
 
 namespace sdfwb::app {
 
-class BatchProcess;
+class JobChannel;
+class JobWorker;
 
 class PlaneController : public QObject {
     Q_OBJECT
 public:
     PlaneController(widgets::PlanePanel* panel, widgets::ViewportWidget* viewport, std::function<jobs::SdfInput()> currentSdf,
-                    QObject* parent = nullptr);
+                    JobWorker* worker, QObject* parent = nullptr);
     void setExecutable(const QString& path);
     // Recomputes the readouts now (also called when the SDF changes).
     void refresh();
@@ -38,7 +39,7 @@ private:
     widgets::PlanePanel* m_panel;
     widgets::ViewportWidget* m_viewport;
     std::function<jobs::SdfInput()> m_currentSdf;
-    BatchProcess* m_process;
+    JobChannel* m_process; // on the workbench's persistent worker
     QTimer m_debounce;
     bool m_pending = false;
 };

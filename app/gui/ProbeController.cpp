@@ -1,6 +1,6 @@
 #include "ProbeController.h"
 
-#include "BatchProcess.h"
+#include "JobWorker.h"
 
 #include <core/Log.h>
 #include <jobs/JobJson.h>
@@ -34,11 +34,11 @@ widgets::ProbeView viewOf(const jobs::ProbeReport& report) {
 } // namespace
 
 ProbeController::ProbeController(widgets::ProbePanel* panel, widgets::ViewportWidget* viewport,
-                                 std::function<jobs::SdfInput()> currentSdf, QObject* parent)
+                                 std::function<jobs::SdfInput()> currentSdf, JobWorker* worker, QObject* parent)
     : QObject(parent), m_panel(panel), m_viewport(viewport), m_currentSdf(std::move(currentSdf)),
-      m_process(new BatchProcess(this)) {
+      m_process(new JobChannel(worker, this)) {
     connect(m_viewport, &widgets::ViewportWidget::pixelProbed, this, &ProbeController::probe);
-    connect(m_process, &BatchProcess::finished, this, [this](bool ok, bool, const std::string& json, const QString& message) {
+    connect(m_process, &JobChannel::finished, this, [this](bool ok, bool, const std::string& json, const QString& message) {
         if (m_next) { // a newer click: show that one
             jobs::ProbeRequest next = *m_next;
             m_next.reset();
@@ -61,7 +61,7 @@ ProbeController::ProbeController(widgets::ProbePanel* panel, widgets::ViewportWi
     });
 }
 
-void ProbeController::setExecutable(const QString& path) { m_process->setExecutable(path); }
+void ProbeController::setExecutable(const QString& path) { m_process->worker()->setExecutable(path); }
 
 bool ProbeController::isRunning() const { return m_process->isRunning(); }
 

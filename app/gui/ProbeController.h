@@ -1,6 +1,6 @@
 #pragma once
-// The march debugger: the viewport's probe tool clicks a pixel, and this runs `sdfwb --batch probe`
-// on that pixel as a child process with exactly what the viewport shows (the document's text and
+// The march debugger: the viewport's probe tool clicks a pixel, and this runs the probe request
+// on that pixel in the workbench's persistent worker (JobWorker) with exactly what the viewport shows (the document's text and
 // parameters, camera, trace settings, shading, plane, time, frame size), then fills the probe dock.
 // A click while a probe runs replaces it (the newest pixel wins).
 
@@ -18,13 +18,14 @@ class ViewportWidget;
 
 namespace sdfwb::app {
 
-class BatchProcess;
+class JobChannel;
+class JobWorker;
 
 class ProbeController : public QObject {
     Q_OBJECT
 public:
     ProbeController(widgets::ProbePanel* panel, widgets::ViewportWidget* viewport, std::function<jobs::SdfInput()> currentSdf,
-                    QObject* parent = nullptr);
+                    JobWorker* worker, QObject* parent = nullptr);
     void setExecutable(const QString& path);
     // Probes pixel (x, y), top row 0, of a width x height frame of the viewport's view.
     void probe(int x, int y, int width, int height);
@@ -37,7 +38,7 @@ private:
     widgets::ProbePanel* m_panel;
     widgets::ViewportWidget* m_viewport;
     std::function<jobs::SdfInput()> m_currentSdf;
-    BatchProcess* m_process;
+    JobChannel* m_process;                    // on the workbench's persistent worker
     std::optional<jobs::ProbeRequest> m_next; // clicked while one ran
 };
 

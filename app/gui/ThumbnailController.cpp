@@ -4,6 +4,7 @@
 
 #include <core/Log.h>
 #include <jobs/JobJson.h>
+#include <jobs/Protocol.h>
 
 #include <QCoreApplication>
 #include <QCryptographicHash>
@@ -71,7 +72,8 @@ void ThumbnailController::request(const QStringList& sdfPaths) {
             process->deleteLater();
             if (m_process == process) m_process = nullptr;
         });
-        m_process->start(m_executable, {"--batch", "request", "-", "--json", "--each-line", "--quiet"});
+        m_process->setStandardErrorFile(QProcess::nullDevice()); // log lines only
+        m_process->start(m_executable, {"--batch", "request", "-", "--protocol", "--each-line", "--quiet"});
     }
     for (const QString& sdf : missing) {
         jobs::RenderRequest request;
@@ -89,13 +91,12 @@ void ThumbnailController::request(const QStringList& sdfPaths) {
 void ThumbnailController::readOutput() {
     if (!m_process) return;
     m_pending += m_process->readAllStandardOutput();
-    int end;
-    while ((end = m_pending.indexOf("sdfwb-end ")) >= 0) {
-        const int lineEnd = m_pending.indexOf('\n', end);
-        if (lineEnd < 0) return; // the code is not complete yet
-        const bool ok = m_pending.mid(end + 10, lineEnd - end - 10).trimmed() == "0";
-        m_pending.remove(0, lineEnd + 1);
-        if (m_queue.isEmpty()) continue;
+    int newline;
+    while ((newline = m_pending.indexOf('\n')) >= 0) {
+        const jobs::WorkerMessage message = jobs::readWorkerMessage(m_pending.left(newline).toStdString());
+        m_pending.remove(0, newline + 1);
+        if (message.kind != jobs::WorkerMessage::Kind::End || m_queue.isEmpty()) continue; // one {"end"} per request
+        const bool ok = message.exitCode == 0;
         const QString sdf = m_queue.takeFirst();
         const QString image = m_destination.take(sdf);
         if (ok && QFileInfo::exists(image)) {

@@ -1,6 +1,6 @@
 #pragma once
 // Thumbnails for the dataset browser: each SDF rendered small (Gooch shading, the default camera)
-// by one child `sdfwb --batch request - --each-line` that takes every missing one in turn, cached
+// by one child `sdfwb --batch request - --protocol --each-line` that takes every missing one in turn, cached
 // as PNG files named by a hash of the SDF file's path and content, so an edited file gets a new
 // one and an unchanged file is never rendered twice. Started on demand (the browser shown).
 

@@ -15,10 +15,11 @@ JobResult<AuditJobReport> run(const AuditRequest& request, const ProgressSink& p
     report.meshSource = sdf->meshSource();
     report.probeDistance = request.probeDistance;
     report.warnings = sdf->warnings;
+    std::vector<shaders::Diagnostic> diagnostics; // the compiler's, when the SDF does not compile
     if (request.plane) {
         auto readout = sampling::analysePlane(sdf->prepared, request.plane->normal, request.plane->offset, request.resolution,
-                                              request.time, sdf->parameters);
-        if (!readout) return JobError{Failure::Work, readout.error().message, {}};
+                                              request.time, sdf->parameters, &diagnostics);
+        if (!readout) return JobError{Failure::Work, readout.error().message, diagnostics};
         report.parameters = shaders::valuesOf(sdf->parameters);
         report.plane = request.plane;
         report.readout = std::move(*readout);
@@ -29,11 +30,12 @@ JobResult<AuditJobReport> run(const AuditRequest& request, const ProgressSink& p
     options.seed = request.seed;
     options.time = request.time;
     options.probeDistance = request.probeDistance;
+    options.diagnostics = &diagnostics;
     if (request.family.empty()) {
         options.parameters = sdf->parameters;
         auto volume = sampling::auditField(sdf->prepared, options, progress);
         if (progress.isCancelled()) return JobError{Failure::Cancelled, "audit: cancelled", {}};
-        if (!volume) return JobError{Failure::Work, volume.error().message, {}};
+        if (!volume) return JobError{Failure::Work, volume.error().message, diagnostics};
         report.parameters = shaders::valuesOf(sdf->parameters);
         report.volume = std::move(*volume);
         return report;

@@ -1,6 +1,7 @@
 // The JSON form of requests and reports. Each struct is described once, by a `fields` function
 // that names its keys; the same description writes and reads it.
 #include <jobs/JobJson.h>
+#include <jobs/Protocol.h>
 
 #include <nlohmann/json.hpp>
 
@@ -951,5 +952,86 @@ template Expected<EvalReport> reportFromJson<EvalReport>(const std::string&);
 template Expected<RunReport> reportFromJson<RunReport>(const std::string&);
 template Expected<ProbeReport> reportFromJson<ProbeReport>(const std::string&);
 template Expected<RunItemReport> reportFromJson<RunItemReport>(const std::string&);
+
+// The worker protocol (Protocol.h).
+const char* failureName(Failure failure) {
+    switch (failure) {
+    case Failure::Usage:
+        return "usage";
+    case Failure::Work:
+        return "work";
+    case Failure::NoGl:
+        return "no-gl";
+    case Failure::Cancelled:
+        return "cancelled";
+    }
+    return "work";
+}
+
+std::string progressMessage(std::uint64_t done, std::uint64_t total) {
+    return json{{"progress", json::array({done, total})}}.dump();
+}
+
+std::string errorMessage(const JobError& error) {
+    json diagnostics = json::array();
+    for (const shaders::Diagnostic& d : error.diagnostics)
+        diagnostics.push_back({{"file", d.file},
+                               {"line", d.line},
+                               {"column", d.column},
+                               {"severity", shaders::severityName(d.severity)},
+                               {"message", d.message}});
+    return json{{"error", {{"kind", failureName(error.failure)}, {"message", error.message}, {"diagnostics", diagnostics}}}}.dump(
+        -1, ' ', false, json::error_handler_t::replace);
+}
+
+std::string reportMessage(const std::string& reportJson) {
+    std::string line = "{\"report\":";
+    for (char c : reportJson)
+        if (c != '\n') line += c; // the report's own JSON, on one line (newlines in it lie between tokens)
+    return line + "}";
+}
+
+std::string endMessage(int exitCode) { return json{{"end", exitCode}}.dump(); }
+
+WorkerMessage readWorkerMessage(const std::string& line) {
+    WorkerMessage message;
+    if (line.empty() || line.front() != '{') return message;
+    const json in = json::parse(line, nullptr, false);
+    if (!in.is_object() || in.size() != 1) return message;
+    const auto& [key, value] = *in.items().begin();
+    if (key == "progress" && value.is_array() && value.size() == 2 && value[0].is_number_unsigned() &&
+        value[1].is_number_unsigned()) {
+        message.kind = WorkerMessage::Kind::Progress;
+        message.done = value[0].get<std::uint64_t>();
+        message.total = value[1].get<std::uint64_t>();
+    } else if (key == "end" && value.is_number_integer()) {
+        message.kind = WorkerMessage::Kind::End;
+        message.exitCode = value.get<int>();
+    } else if (key == "report" && value.is_object()) {
+        message.kind = WorkerMessage::Kind::Report;
+        message.report = value.dump();
+    } else if (key == "error" && value.is_object()) {
+        message.kind = WorkerMessage::Kind::Error;
+        const std::string kind = value.value("kind", std::string("work"));
+        for (Failure f : {Failure::Usage, Failure::Work, Failure::NoGl, Failure::Cancelled})
+            if (kind == failureName(f)) message.error.failure = f;
+        message.error.message = value.value("message", std::string());
+        if (const auto it = value.find("diagnostics"); it != value.end() && it->is_array())
+            for (const json& d : *it) {
+                if (!d.is_object()) continue;
+                shaders::Diagnostic diagnostic;
+                diagnostic.file = d.value("file", std::string());
+                diagnostic.line = d.value("line", 0);
+                diagnostic.column = d.value("column", 0);
+                const std::string severity = d.value("severity", std::string("error"));
+                diagnostic.severity = severity == "warning" ? shaders::Severity::Warning
+                                      : severity == "note"  ? shaders::Severity::Note
+                                                            : shaders::Severity::Error;
+                diagnostic.message = d.value("message", std::string());
+                message.error.diagnostics.push_back(std::move(diagnostic));
+            }
+    }
+    return message;
+}
 
 } // namespace sdfwb::jobs

@@ -1,8 +1,10 @@
 // Dual contouring (Ju et al. 2002) on a grid whose values come from the GPU: blocks of 8^3 cells
-// that a Lipschitz bound proves empty are skipped; in the others, every cell the surface crosses
-// gets one vertex, the minimiser of a QEF built from the edge crossings and the field's normals
-// there (so the vertex sits on sharp edges and corners, where marching cubes cuts them); every
-// grid edge with a sign change becomes a quad joining the vertices of its four cells.
+// that a Lipschitz bound proves empty are skipped; in the others, every patch of surface in a cell
+// (its crossings joined along the cell's faces) gets one vertex, the minimiser of a QEF built from
+// the patch's edge crossings and the field's normals there (so the vertex sits on sharp edges and
+// corners, where marching cubes cuts them); every grid edge with a sign change becomes a polygon
+// joining the vertices of its four cells, with a vertex on a face between two cells whose patches
+// both join that face's two segments (a tunnel thinner than a cell), so the mesh stays manifold.
 #include <meshing/Mesh.h>
 
 #include "FieldProbe.h"

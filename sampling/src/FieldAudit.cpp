@@ -40,13 +40,16 @@ float gradientLength(const SampleSet& s, std::size_t i) {
 // A compiled sampler that can be run with several gradient steps over the same points.
 class Runner {
 public:
+    // A failed build's diagnostics also go to `diagnosticsOut` when given (the Error holds the first).
     Expected<void> build(const shaders::PreparedSdf& sdf, const std::string& pattern,
-                         const std::vector<shaders::ParameterSetting>& parameters) {
+                         const std::vector<shaders::ParameterSetting>& parameters,
+                         std::vector<shaders::Diagnostic>* diagnosticsOut = nullptr) {
         m_parameters = parameters;
         auto piece = pattern.rfind("analysis/", 0) == 0 ? shaders::builtinPiece(pattern) : findSampler(pattern, {});
         if (!piece) return piece.error();
         auto diagnostics = m_compute.build(sdf, *piece);
         if (shaders::hasErrors(diagnostics)) {
+            if (diagnosticsOut) *diagnosticsOut = diagnostics;
             for (const auto& d : diagnostics)
                 if (d.severity == shaders::Severity::Error) return makeError("audit: " + shaders::formatDiagnostic(d));
         }
@@ -304,7 +307,7 @@ Expected<AuditPasses> drawPasses(const shaders::PreparedSdf& sdf, const AuditOpt
     AuditPasses p;
     p.n = report.samples;
     Runner randomRunner, nearRunner, surfaceRunner;
-    if (auto ok = randomRunner.build(sdf, "rand", options.parameters); !ok) return ok.error();
+    if (auto ok = randomRunner.build(sdf, "rand", options.parameters, options.diagnostics); !ok) return ok.error();
     if (auto ok = nearRunner.build(sdf, "near", options.parameters); !ok) return ok.error();
     if (auto ok = surfaceRunner.build(sdf, "surface", options.parameters); !ok) return ok.error();
 
@@ -756,7 +759,8 @@ Expected<AuditReport> auditField(const shaders::PreparedSdf& sdf, const AuditOpt
 }
 
 Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 normal, float offset, int resolution, float time,
-                                    const std::vector<shaders::ParameterSetting>& sdfParameters) {
+                                    const std::vector<shaders::ParameterSetting>& sdfParameters,
+                                    std::vector<shaders::Diagnostic>* diagnostics) {
     auto start = std::chrono::steady_clock::now();
     if (glm::length(normal) <= 0.0f) return makeError("plane: the normal must not be zero");
     if (resolution < 2 || resolution > 4096) return makeError("plane: resolution must be 2..4096");
@@ -769,7 +773,7 @@ Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 n
     glm::vec3 origin = normal * offset - 0.5f * side * (u + v);
 
     Runner runner;
-    if (auto ok = runner.build(sdf, "analysis/plane_grid.glsl", sdfParameters); !ok) return ok.error();
+    if (auto ok = runner.build(sdf, "analysis/plane_grid.glsl", sdfParameters, diagnostics); !ok) return ok.error();
     SamplingJob job;
     job.count = std::uint64_t(resolution) * std::uint64_t(resolution);
     job.time = time;

@@ -3,6 +3,7 @@
 #include <jobs/JobJson.h>
 #include <jobs/Jobs.h>
 #include <jobs/Manifest.h>
+#include <jobs/Protocol.h>
 
 #include <gtest/gtest.h>
 
@@ -527,4 +528,89 @@ TEST(Manifest, CsvAndJsonLinesMakeTheSameItemsWithPathsFromTheManifestsFolder) {
     ASSERT_TRUE(other) << other.error().message;
     EXPECT_NE((*other)[0].key, (*jsonl)[0].key);
     std::filesystem::remove_all(folder);
+}
+
+// The worker protocol (jobs/Protocol.h): every message reads back as it was written, a report
+// pretty-printed over many lines travels on one, and lines that are not messages are skipped.
+TEST(WorkerProtocol, MessagesReadBackAsTheyWereWritten) {
+    const WorkerMessage progress = readWorkerMessage(progressMessage(3, 40));
+    EXPECT_EQ(progress.kind, WorkerMessage::Kind::Progress);
+    EXPECT_EQ(progress.done, 3u);
+    EXPECT_EQ(progress.total, 40u);
+    JobError error{Failure::Usage, "--size: expected WxH, got 'x'", {}};
+    error.diagnostics.push_back({"scene.glsl", 12, 7, shaders::Severity::Error, "'q' : undeclared identifier"});
+    error.diagnostics.push_back({"scene.glsl", 3, 0, shaders::Severity::Warning, "unused \"r\"\nsecond line"});
+    const WorkerMessage failed = readWorkerMessage(errorMessage(error));
+    ASSERT_EQ(failed.kind, WorkerMessage::Kind::Error);
+    EXPECT_EQ(failed.error.failure, Failure::Usage);
+    EXPECT_EQ(failed.error.message, error.message);
+    ASSERT_EQ(failed.error.diagnostics.size(), 2u);
+    EXPECT_EQ(failed.error.diagnostics[0].file, "scene.glsl");
+    EXPECT_EQ(failed.error.diagnostics[0].line, 12);
+    EXPECT_EQ(failed.error.diagnostics[0].column, 7);
+    EXPECT_EQ(failed.error.diagnostics[1].severity, shaders::Severity::Warning);
+    EXPECT_EQ(failed.error.diagnostics[1].message, "unused \"r\"\nsecond line");
+    for (Failure kind : {Failure::Work, Failure::NoGl, Failure::Cancelled})
+        EXPECT_EQ(readWorkerMessage(errorMessage({kind, "m", {}})).error.failure, kind);
+    ListReport list;
+    ListItem torus;
+    torus.name = "Torus";
+    torus.category = "Geometry";
+    list.items.push_back(torus);
+    const std::string pretty = toJson(list, 2);
+    ASSERT_NE(pretty.find('\n'), std::string::npos);
+    const std::string line = reportMessage(pretty);
+    EXPECT_EQ(line.find('\n'), std::string::npos);
+    const WorkerMessage report = readWorkerMessage(line);
+    ASSERT_EQ(report.kind, WorkerMessage::Kind::Report);
+    auto back = reportFromJson<ListReport>(report.report);
+    ASSERT_TRUE(back) << back.error().message;
+    EXPECT_EQ(*back, list);
+    const WorkerMessage end = readWorkerMessage(endMessage(130));
+    EXPECT_EQ(end.kind, WorkerMessage::Kind::End);
+    EXPECT_EQ(end.exitCode, 130);
+    for (const char* other : {"", "progress 3 40", "sdfwb-end 0", "{\"progress\":[1]}", "{\"end\":0,\"x\":1}", "{bad", "[1,2]"})
+        EXPECT_EQ(readWorkerMessage(other).kind, WorkerMessage::Kind::Other) << other;
+}
+
+// `sdfwb --batch request - --protocol --each-line` answers each request line in the protocol: a
+// report and {"end":0}; a request it cannot read, a usage error and {"end":2}; an SDF whose
+// parameter annotations are broken, a work error with the diagnostic's file and line.
+TEST(WorkerProtocol, TheCommandLineAnswersEveryRequestInTheProtocol) {
+    const std::filesystem::path input = std::filesystem::temp_directory_path() / ("sdfwb-protocol-" + std::to_string(::getpid()));
+    {
+        std::FILE* file = std::fopen(input.c_str(), "w");
+        ASSERT_NE(file, nullptr);
+        std::fputs("{\"kind\":\"list\"}\n{\"kind\":\"bogus\"}\n", file);
+        std::fputs("{\"kind\":\"params\",\"sdf\":\"bad.glsl\",\"source\":\"uniform float r; // @range 1 0\\n"
+                   "float sdf(vec3 p) { return length(p) - r; }\"}\n",
+                   file);
+        std::fclose(file);
+    }
+    const std::string output = standardOutput("--batch request - --protocol --each-line --quiet < " + input.string());
+    std::filesystem::remove(input);
+    std::vector<WorkerMessage> messages;
+    std::size_t start = 0;
+    for (std::size_t end; (end = output.find('\n', start)) != std::string::npos; start = end + 1) {
+        WorkerMessage message = readWorkerMessage(output.substr(start, end - start));
+        EXPECT_NE(message.kind, WorkerMessage::Kind::Other) << output.substr(start, end - start);
+        messages.push_back(std::move(message));
+    }
+    ASSERT_EQ(messages.size(), 6u) << output;
+    EXPECT_EQ(messages[0].kind, WorkerMessage::Kind::Report);
+    auto list = reportFromJson<ListReport>(messages[0].report);
+    ASSERT_TRUE(list) << list.error().message;
+    EXPECT_EQ(list->items.size(), 78u);
+    EXPECT_EQ(messages[1].kind, WorkerMessage::Kind::End);
+    EXPECT_EQ(messages[1].exitCode, 0);
+    ASSERT_EQ(messages[2].kind, WorkerMessage::Kind::Error);
+    EXPECT_EQ(messages[2].error.failure, Failure::Usage);
+    EXPECT_NE(messages[2].error.message.find("bogus"), std::string::npos);
+    EXPECT_EQ(messages[3].exitCode, 2);
+    ASSERT_EQ(messages[4].kind, WorkerMessage::Kind::Error) << output;
+    EXPECT_EQ(messages[4].error.failure, Failure::Work);
+    ASSERT_FALSE(messages[4].error.diagnostics.empty()) << messages[4].error.message;
+    EXPECT_EQ(messages[4].error.diagnostics[0].line, 1);
+    EXPECT_EQ(messages[5].kind, WorkerMessage::Kind::End);
+    EXPECT_EQ(messages[5].exitCode, 1);
 }

@@ -63,7 +63,7 @@ int runBench(const jobs::BenchRequest& request, const OutputOptions& output) {
         report.plotted = true;
     }
     if (output.json)
-        std::printf("%s\n", jobs::toJson(report).c_str());
+        printReport(jobs::toJson(report), output);
     else if (!output.quiet)
         std::printf("wrote %s (tables in %s, plots in %s)\n", report.markdown.c_str(), report.csvDirectory.c_str(),
                     report.imageDirectory.c_str());

@@ -1,18 +1,72 @@
 #include "Common.h"
 
+#include <jobs/Protocol.h>
+
 #include <atomic>
 #include <csignal>
 #include <cstdio>
+#include <optional>
 #include <unistd.h>
 #include <variant>
 
 namespace sdfwb::app {
 
-void printError(const std::string& message) { std::fprintf(stderr, "sdfwb: %s\n", message.c_str()); }
+namespace {
+// Under the worker protocol a request's errors are gathered and sent once, at its end, with the
+// kind its exit code tells (usage, no GL, cancelled) unless the job said.
+std::atomic<bool> g_protocol{false};
+std::optional<jobs::JobError> g_pendingError;
+} // namespace
+
+void setProtocolOutput(bool on) { g_protocol.store(on); }
+
+void printError(const std::string& message) {
+    if (g_protocol.load()) {
+        if (!g_pendingError)
+            g_pendingError = jobs::JobError{jobs::Failure::Work, message, {}};
+        else
+            g_pendingError->message += (g_pendingError->message.empty() ? "" : "; ") + message;
+        return;
+    }
+    std::fprintf(stderr, "sdfwb: %s\n", message.c_str());
+}
+
+int endProtocolRequest(int exitCode) {
+    if (exitCode != kExitOk) {
+        jobs::JobError error = g_pendingError.value_or(jobs::JobError{});
+        if (!g_pendingError) {
+            error.failure = exitCode == kExitUsage       ? jobs::Failure::Usage
+                            : exitCode == kExitNoGl      ? jobs::Failure::NoGl
+                            : exitCode == kExitCancelled ? jobs::Failure::Cancelled
+                                                         : jobs::Failure::Work;
+        } else if (exitCode == kExitUsage) {
+            error.failure = jobs::Failure::Usage;
+        } else if (exitCode == kExitNoGl) {
+            error.failure = jobs::Failure::NoGl;
+        } else if (exitCode == kExitCancelled) {
+            error.failure = jobs::Failure::Cancelled;
+        }
+        if (error.message.empty()) error.message = "failed (exit code " + std::to_string(exitCode) + ")";
+        std::printf("%s\n", jobs::errorMessage(error).c_str());
+    }
+    g_pendingError.reset();
+    std::printf("%s\n", jobs::endMessage(exitCode).c_str());
+    std::fflush(stdout);
+    return exitCode;
+}
+
+void printReport(const std::string& json, const OutputOptions& output) {
+    std::printf("%s\n", output.protocol ? jobs::reportMessage(json).c_str() : json.c_str());
+    std::fflush(stdout);
+}
 
 int reportFailure(const jobs::JobError& error) {
-    for (const shaders::Diagnostic& d : error.diagnostics) std::fprintf(stderr, "%s\n", shaders::formatDiagnostic(d).c_str());
-    printError(error.message);
+    if (g_protocol.load()) {
+        g_pendingError = error;
+    } else {
+        for (const shaders::Diagnostic& d : error.diagnostics) std::fprintf(stderr, "%s\n", shaders::formatDiagnostic(d).c_str());
+        printError(error.message);
+    }
     switch (error.failure) {
     case jobs::Failure::Usage:
         return kExitUsage;
@@ -47,8 +101,8 @@ extern "C" void onInterrupt(int) {
 } // namespace
 
 JobScope::JobScope(const OutputOptions& output)
-    : m_bar(!output.quiet && !output.json && ::isatty(STDERR_FILENO)),
-      m_lines(output.progressLines), m_sink{[this](std::uint64_t done, std::uint64_t total) { draw(done, total); }, &m_cancel} {
+    : m_bar(!output.quiet && !output.json && !output.protocol && ::isatty(STDERR_FILENO)), m_lines(output.progressLines),
+      m_protocol(output.protocol), m_sink{[this](std::uint64_t done, std::uint64_t total) { draw(done, total); }, &m_cancel} {
     g_interruptToken.store(&m_cancel);
     m_previousInt = std::signal(SIGINT, onInterrupt);
     m_previousTerm = std::signal(SIGTERM, onInterrupt);
@@ -63,6 +117,10 @@ JobScope::~JobScope() {
 
 void JobScope::draw(std::uint64_t done, std::uint64_t total) {
     if (m_lines) std::fprintf(stderr, "progress %llu %llu\n", (unsigned long long)done, (unsigned long long)total);
+    if (m_protocol) {
+        std::printf("%s\n", jobs::progressMessage(done, total).c_str());
+        std::fflush(stdout);
+    }
     if (!m_bar || total == 0) return;
     auto now = std::chrono::steady_clock::now();
     if (done < total && now - m_lastDraw < std::chrono::milliseconds(100)) return;

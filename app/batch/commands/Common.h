@@ -17,6 +17,9 @@ namespace sdfwb::app {
 // Prints the failure (the SDF's diagnostics first) and returns its exit code.
 int reportFailure(const jobs::JobError& error);
 
+// Prints a report's JSON on stdout: as it is, or as the worker protocol's report message.
+void printReport(const std::string& json, const OutputOptions& output);
+
 // A headless GL context, or null after printing why (the caller exits kExitNoGl).
 std::unique_ptr<renderer::HeadlessContext> makeContext();
 
@@ -39,6 +42,7 @@ private:
 
     bool m_bar;
     bool m_lines;
+    bool m_protocol;
     bool m_drawn = false;
     CancelToken m_cancel;
     ProgressSink m_sink;
@@ -60,7 +64,7 @@ int runWithGl(const Request& request, const OutputOptions& output, PrintText pri
     scope.finish();
     if (!result) return reportFailure(result.error);
     if (output.json)
-        std::printf("%s\n", jobs::toJson(*result).c_str());
+        printReport(jobs::toJson(*result), output);
     else if (!output.quiet)
         printText(*result);
     return kExitOk;

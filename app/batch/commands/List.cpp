@@ -12,7 +12,7 @@ int runList(const jobs::ListRequest& request, const OutputOptions& output) {
     if (!result) return reportFailure(result.error);
     const jobs::ListReport& r = *result;
     if (output.json) {
-        std::printf("%s\n", jobs::toJson(r).c_str());
+        printReport(jobs::toJson(r), output);
         return kExitOk;
     }
     for (const jobs::ListItem& item : r.items)

@@ -12,7 +12,7 @@ int runMerge(const jobs::MergeRequest& request, const OutputOptions& output) {
     if (!result) return reportFailure(result.error);
     const jobs::MergeReport& r = *result;
     if (output.json)
-        std::printf("%s\n", jobs::toJson(r).c_str());
+        printReport(jobs::toJson(r), output);
     else if (!output.quiet)
         std::printf("wrote %s: %llu samples from %llu parts in %.2f s\n", r.output.c_str(), (unsigned long long)r.rows,
                     (unsigned long long)r.parts, r.seconds);

@@ -23,7 +23,7 @@ int runParams(const jobs::ParamsRequest& request, const OutputOptions& output) {
     const jobs::ParamsReport& r = *result;
     for (const std::string& warning : r.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
     if (output.json) {
-        std::printf("%s\n", jobs::toJson(r).c_str());
+        printReport(jobs::toJson(r), output);
         return kExitOk;
     }
     if (output.quiet) return kExitOk;

@@ -44,7 +44,7 @@ int runRun(const jobs::RunRequest& request, const OutputOptions& output) {
     if (!result) return reportFailure(result.error);
     const jobs::RunReport& r = *result;
     if (output.json) {
-        std::printf("%s\n", jobs::toJson(r).c_str());
+        printReport(jobs::toJson(r), output);
     } else if (text && !request.list) {
         std::printf("run %s (rank %u of %u): %llu of %llu items; %llu done, %llu skipped (done before), %llu failed in %.1f s: "
                     "%.0f shapes/hour, %s written (%.1f MB/s); status in %s\n",

@@ -57,8 +57,8 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
 
 struct Topology {
     std::uint64_t edges = 0;
-    std::uint64_t boundaryEdges = 0;    // used by one triangle: a hole
-    std::uint64_t nonManifoldEdges = 0; // used by three or more triangles
+    std::uint64_t boundaryEdges = 0;       // used by one triangle: a hole
+    std::uint64_t nonManifoldEdges = 0;    // used by three or more triangles
     std::uint64_t degenerateTriangles = 0; // a vertex repeated, or zero area (three points on one line)
     // Vertices whose triangles do not form one fan (two sheets meeting at a point: a pinch), and
     // edges that two triangles run the same way (neighbours facing opposite ways).

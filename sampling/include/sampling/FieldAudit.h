@@ -78,18 +78,21 @@ struct PlaneReadout {
 };
 
 // Grid of resolution^2 points over the plane dot(normal, p) = offset within the box, with the
-// SDF's parameters at `parameters` (the others at their defaults).
+// SDF's parameters at `parameters` (the others at their defaults). When the SDF's shader does not
+// compile, `diagnostics` (when given) receives the compiler's messages.
 Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 normal, float offset, int resolution, float time,
-                                    const std::vector<shaders::ParameterSetting>& parameters = {});
+                                    const std::vector<shaders::ParameterSetting>& parameters = {},
+                                    std::vector<shaders::Diagnostic>* diagnostics = nullptr);
 
 struct AuditOptions {
     std::uint64_t samples = 100000; // random points; as many near-surface points and surface points
     std::uint64_t seed = 0;
     float time = 0.0f;
-    bool convergence = true;                           // also run N/16 and N/4 to show how the estimates tighten
-    float probeDistance = 3.0f;                        // truncation: probe outward from the surface this far (plateaus
-                                                       // beyond the unit cube are found too)
-    std::vector<shaders::ParameterSetting> parameters; // the SDF's parameter values (others: defaults)
+    bool convergence = true;                                 // also run N/16 and N/4 to show how the estimates tighten
+    std::vector<shaders::Diagnostic>* diagnostics = nullptr; // receives the compiler's messages when the SDF does not compile
+    float probeDistance = 3.0f;                              // truncation: probe outward from the surface this far (plateaus
+                                                             // beyond the unit cube are found too)
+    std::vector<shaders::ParameterSetting> parameters;       // the SDF's parameter values (others: defaults)
 };
 
 struct QuotientScale {
