@@ -16,7 +16,7 @@ PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWi
     : QObject(parent), m_panel(panel), m_viewport(viewport), m_currentSdf(std::move(currentSdf)),
       m_process(new JobChannel(worker, this)) {
     m_debounce.setSingleShot(true);
-    m_debounce.setInterval(250);
+    m_debounce.setInterval(kDebounceMs);
     connect(&m_debounce, &QTimer::timeout, this, &PlaneController::refresh);
     connect(m_panel, &widgets::PlanePanel::planeEdited, this, [this](const renderer::CuttingPlane& plane) {
         m_viewport->setPlane(plane);

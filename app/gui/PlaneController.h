@@ -23,6 +23,11 @@ class JobWorker;
 class PlaneController : public QObject {
     Q_OBJECT
 public:
+    // The wait after the plane's last move before its readouts are asked for. Short, as the warm
+    // worker answers in about the job's own time (bench/bench_interactive.cpp); 250 ms when each
+    // request started a process. While one runs, a newer plane waits for it (the newest wins).
+    static constexpr int kDebounceMs = 10;
+
     PlaneController(widgets::PlanePanel* panel, widgets::ViewportWidget* viewport, std::function<jobs::SdfInput()> currentSdf,
                     JobWorker* worker, QObject* parent = nullptr);
     void setExecutable(const QString& path);
