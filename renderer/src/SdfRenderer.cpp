@@ -185,6 +185,20 @@ struct SdfRenderer::Impl {
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture.id(), 0);
     }
 
+    // render()'s steps, each one named thing.
+    struct FrameInputs {
+        const ShadingSettings& shading;
+        const TraceSettings& trace;
+        const CuttingPlane& plane;
+        const std::vector<shaders::ParameterSetting>& parameters;
+    };
+    void setFrameUniforms(Variant& variant, const FrameInputs& in, int width, int height, const Camera& camera,
+                          const CameraBasis& basis, float time);
+    void bindShadingTextures(Variant& variant, const ShadingSettings& shading, int width, int height);
+    void drawConePass(Variant& variant, const TraceSettings& trace, const Camera& camera, int width, int height);
+    bool drawPicture(const ShadingSettings& shading, const TraceSettings& trace, const Camera& camera, const CameraBasis& basis,
+                     int width, int height);
+
     shaders::TracerFeatures features(const ShadingSettings& shading, const TraceSettings& trace,
                                      const CuttingPlane& plane) const {
         shaders::TracerFeatures result = tracerFeatures(shading, trace, plane);
@@ -479,6 +493,150 @@ const std::string& SdfRenderer::fragmentSource() const {
     return m_impl->current ? m_impl->current->fragmentSource : m_impl->empty;
 }
 
+// The frame's uniforms: resolution, camera, trace settings, time, the SDF's parameters and
+// textures, the plane, the light and the markers.
+void SdfRenderer::Impl::setFrameUniforms(Variant& variant, const FrameInputs& in, int width, int height, const Camera& camera,
+                                         const CameraBasis& basis, float time) {
+    Variant* v = &variant;
+    const TraceSettings& trace = in.trace;
+    const ShadingSettings& shading = in.shading;
+    const CuttingPlane& plane = in.plane;
+    glUniform2f(v->location("sdfwb_resolution"), float(width), float(height));
+    glUniform3f(v->location("sdfwb_cameraPosition"), camera.position.x, camera.position.y, camera.position.z);
+    glUniform3f(v->location("sdfwb_cameraRight"), basis.right.x, basis.right.y, basis.right.z);
+    glUniform3f(v->location("sdfwb_cameraUp"), basis.up.x, basis.up.y, basis.up.z);
+    glUniform3f(v->location("sdfwb_cameraForward"), basis.forward.x, basis.forward.y, basis.forward.z);
+    glUniform1f(v->location("sdfwb_tanHalfFovY"), std::tan(glm::radians(camera.fovYDegrees) * 0.5f));
+    glUniform1f(v->location("sdfwb_nearPlane"), camera.nearPlane);
+    glUniform1f(v->location("sdfwb_farPlane"), camera.farPlane);
+    glUniform1i(v->location("sdfwb_maxSteps"), trace.maxSteps);
+    if (GLint location = v->location("sdfwb_stepFactor"); location >= 0) glUniform1f(location, trace.stepFactor);
+    glUniform1f(v->location("sdfwb_epsilonScale"), trace.epsilonScale);
+    glUniform1f(v->location("sdfwb_boxMargin"), trace.boxMargin);
+    glUniform3f(v->location("sdfwb_background"), shading.background.r, shading.background.g, shading.background.b);
+    if (GLint location = v->location("sdfwb_time"); location >= 0) glUniform1f(location, time);
+    if (GLint location = v->location("g3d_SceneTime"); location >= 0) glUniform1f(location, time); // declared by the file
+    applyParameters(in.parameters, [v](const char* name) { return v->location(name); });
+    bindSdfTextures(v->program.id(), textures, sdf ? sdf->channels : decltype(sdf->channels){}, sdf ? sdf->mesh : nullptr);
+    if (GLint location = v->location("sdfwb_relaxation"); location >= 0) glUniform1f(location, trace.overRelaxation);
+    if (plane.enabled) {
+        glm::vec3 normal = glm::length(plane.normal) > 0.0f ? glm::normalize(plane.normal) : glm::vec3(0, 0, 1);
+        for (const char* name : {"sdfwb_planeNormal", "sdfwb_clipNormal"})
+            if (GLint location = v->location(name); location >= 0) glUniform3f(location, normal.x, normal.y, normal.z);
+        for (const char* name : {"sdfwb_planeOffset", "sdfwb_clipOffset"})
+            if (GLint location = v->location(name); location >= 0) glUniform1f(location, plane.offset);
+        if (GLint location = v->location("sdfwb_contourSpacing"); location >= 0)
+            glUniform1f(location, std::max(plane.contourSpacing, 1e-6f));
+        if (GLint location = v->location("sdfwb_rampDistance"); location >= 0)
+            glUniform1f(location, std::max(plane.rampDistance, 1e-6f));
+    }
+    if (GLint location = v->location("sdfwb_lightDirection"); location >= 0) {
+        glm::vec3 light = glm::normalize(shading.lightDirection);
+        glUniform3f(location, light.x, light.y, light.z);
+    }
+    if (GLint location = v->location("sdfwb_curvatureScale"); location >= 0) glUniform1f(location, shading.curvatureScale);
+    if (GLint location = v->location("sdfwb_markers"); location >= 0) {
+        const GLsizei count = GLsizei(std::min<std::size_t>(shading.markers.size(), 16));
+        if (count > 0) glUniform3fv(location, count, &shading.markers[0].x);
+        glUniform1i(v->location("sdfwb_markerCount"), count);
+    }
+}
+
+// The matcap and the background image, on texture units 0 and 1.
+void SdfRenderer::Impl::bindShadingTextures(Variant& variant, const ShadingSettings& shading, int width, int height) {
+    Variant* v = &variant;
+    if (GLint location = v->location("sdfwb_matcap"); location >= 0) {
+        ensureMatcap(shading.matcap);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, matcap.id());
+        glUniform1i(location, 0);
+    }
+    if (GLint location = v->location("sdfwb_backgroundImage"); location >= 0) {
+        glActiveTexture(GL_TEXTURE1); // loading it binds on the active unit: not the matcap's
+        ensureBackground(shading.backgroundImage, shading.background);
+        glBindTexture(GL_TEXTURE_2D, background.id());
+        glUniform1i(location, 1);
+        glActiveTexture(GL_TEXTURE0);
+        // Cover the frame, centred: the image's shorter side fits, the longer one is cropped.
+        const float frameAspect = float(width) / float(std::max(height, 1));
+        const float ratio = backgroundAspect / frameAspect;
+        if (ratio < 1.0f)
+            glUniform4f(v->location("sdfwb_backgroundFit"), 1.0f, ratio, 0.0f, 0.5f * (1.0f - ratio));
+        else
+            glUniform4f(v->location("sdfwb_backgroundFit"), 1.0f / ratio, 1.0f, 0.5f * (1.0f - 1.0f / ratio), 0.0f);
+    }
+}
+
+// The cone pass (trace_core.glsl): one cone per tile of coneTile^2 pixels finds where the picture's
+// rays may start. Drawn into the target's lower-left corner, then copied into the texture the
+// picture reads. It draws into the same framebuffer with the same state as the picture, so the
+// driver compiles one variant of the program for both.
+void SdfRenderer::Impl::drawConePass(Variant& variant, const TraceSettings& trace, const Camera& camera, int width, int height) {
+    Variant* v = &variant;
+    const GLuint vertexProgram = this->vertexProgram.id();
+    const int coneTile = std::max(trace.coneTile, 1);
+    const int tilesWide = (width + coneTile - 1) / coneTile, tilesHigh = (height + coneTile - 1) / coneTile;
+    glActiveTexture(GL_TEXTURE2);                                         // units 0 and 1 hold the matcap and the background
+    if (!coneStarts || coneWidth < tilesWide || coneHeight < tilesHigh) { // grown, never shrunk
+        coneWidth = std::max(coneWidth, tilesWide);
+        coneHeight = std::max(coneHeight, tilesHigh);
+        coneStarts = makeTexture(coneWidth, coneHeight, GL_NEAREST);
+    }
+    glBindTexture(GL_TEXTURE_2D, coneStarts.id());
+    glActiveTexture(GL_TEXTURE0);
+    glUniform1i(v->location("sdfwb_coneStarts"), 2);
+    glUniform1i(v->location("sdfwb_coneTile"), coneTile);
+    // Past every point of the box (and its margin) seen from the camera.
+    glUniform1f(v->location("sdfwb_coneRange"), glm::length(camera.position) + std::sqrt(3.0f) * (1.0f + trace.boxMargin) + 1.0f);
+    glUniform1i(v->location("sdfwb_conePass"), 1);
+    glProgramUniform1i(vertexProgram, proxyBox, 0); // every tile has its cone
+    glViewport(0, 0, tilesWide, tilesHigh);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    // Copied from the framebuffer just drawn, whatever the caller left bound for reading.
+    GLint target = 0, reading = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &reading);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(target));
+    glActiveTexture(GL_TEXTURE2);
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, tilesWide, tilesHigh);
+    glActiveTexture(GL_TEXTURE0);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(reading));
+    glViewport(0, 0, width, height);
+    glUniform1i(v->location("sdfwb_conePass"), 0);
+}
+
+// The picture: over the box's far faces (only the pixels whose ray meets the box run the tracer)
+// when the box proxy applies, else over the whole frame. Returns whether the proxy applied.
+bool SdfRenderer::Impl::drawPicture(const ShadingSettings& shading, const TraceSettings& trace, const Camera& camera,
+                                    const CameraBasis& basis, int width, int height) {
+    const GLuint vertexProgram = this->vertexProgram.id();
+    const bool boxProxy = boxProxyApplies(shading, trace);
+    glProgramUniform1i(vertexProgram, proxyBox, boxProxy ? 1 : 0);
+    if (boxProxy) {
+        // Only the pixels whose ray meets the box run the tracer (the box's far faces: one
+        // fragment a pixel, wherever the camera is); the rest are the background already.
+        // Cleared where this frame draws (a scaled frame: the target's corner).
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, 0, width, height);
+        glClearColor(shading.background.r, shading.background.g, shading.background.b, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glDisable(GL_SCISSOR_TEST);
+        const glm::mat4 clip = renderer::proxyClip(camera, basis, float(width) / float(std::max(height, 1)));
+        glProgramUniformMatrix4fv(vertexProgram, proxyClip, 1, GL_FALSE, &clip[0][0]);
+        // A little over the traced box, so that no pixel on its outline is lost to rounding.
+        glProgramUniform1f(vertexProgram, proxyHalf, (1.0f + trace.boxMargin) * 1.001f);
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_FRONT);
+        glFrontFace(GL_CCW);
+        glDrawArrays(GL_TRIANGLES, 0, 36);
+        glCullFace(GL_BACK);
+        glDisable(GL_CULL_FACE);
+    } else {
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    return boxProxy;
+}
+
 FrameStats SdfRenderer::render(int width, int height, const Camera& camera, float time, bool finish) {
     auto start = std::chrono::steady_clock::now();
     FrameStats stats;
@@ -501,96 +659,16 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
             glGenVertexArrays(1, &id);
             m_impl->vertexArray = GlVertexArray(id);
         }
-        CameraBasis basis = cameraBasis(camera);
+        const CameraBasis basis = cameraBasis(camera);
         // The variant's fragment program with the shared vertex program; glUniform* reach the
         // fragment program (the active one), the vertex stage's uniforms are set by name.
-        const GLuint pipeline = m_impl->pipeline.id(), vertexProgram = m_impl->vertexProgram.id();
+        const GLuint pipeline = m_impl->pipeline.id();
         glUseProgram(0);
         glBindProgramPipeline(pipeline);
         glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, v->program.id());
         glActiveShaderProgram(pipeline, v->program.id());
-        glUniform2f(v->location("sdfwb_resolution"), float(width), float(height));
-        glUniform3f(v->location("sdfwb_cameraPosition"), camera.position.x, camera.position.y, camera.position.z);
-        glUniform3f(v->location("sdfwb_cameraRight"), basis.right.x, basis.right.y, basis.right.z);
-        glUniform3f(v->location("sdfwb_cameraUp"), basis.up.x, basis.up.y, basis.up.z);
-        glUniform3f(v->location("sdfwb_cameraForward"), basis.forward.x, basis.forward.y, basis.forward.z);
-        glUniform1f(v->location("sdfwb_tanHalfFovY"), std::tan(glm::radians(camera.fovYDegrees) * 0.5f));
-        glUniform1f(v->location("sdfwb_nearPlane"), camera.nearPlane);
-        glUniform1f(v->location("sdfwb_farPlane"), camera.farPlane);
-        glUniform1i(v->location("sdfwb_maxSteps"), m_trace.maxSteps);
-        if (GLint location = v->location("sdfwb_stepFactor"); location >= 0) glUniform1f(location, m_trace.stepFactor);
-        glUniform1f(v->location("sdfwb_epsilonScale"), m_trace.epsilonScale);
-        glUniform1f(v->location("sdfwb_boxMargin"), m_trace.boxMargin);
-        glUniform3f(v->location("sdfwb_background"), m_shading.background.r, m_shading.background.g, m_shading.background.b);
-        if (GLint location = v->location("sdfwb_time"); location >= 0) glUniform1f(location, time);
-        if (GLint location = v->location("g3d_SceneTime"); location >= 0) glUniform1f(location, time); // declared by the file
-        applyParameters(m_parameters, [v](const char* name) { return v->location(name); });
-        bindSdfTextures(v->program.id(), m_impl->textures,
-                        m_impl->sdf ? m_impl->sdf->channels : decltype(m_impl->sdf->channels){},
-                        m_impl->sdf ? m_impl->sdf->mesh : nullptr);
-        if (GLint location = v->location("sdfwb_relaxation"); location >= 0) glUniform1f(location, m_trace.overRelaxation);
-        if (m_plane.enabled) {
-            glm::vec3 normal = glm::length(m_plane.normal) > 0.0f ? glm::normalize(m_plane.normal) : glm::vec3(0, 0, 1);
-            for (const char* name : {"sdfwb_planeNormal", "sdfwb_clipNormal"})
-                if (GLint location = v->location(name); location >= 0) glUniform3f(location, normal.x, normal.y, normal.z);
-            for (const char* name : {"sdfwb_planeOffset", "sdfwb_clipOffset"})
-                if (GLint location = v->location(name); location >= 0) glUniform1f(location, m_plane.offset);
-            if (GLint location = v->location("sdfwb_contourSpacing"); location >= 0)
-                glUniform1f(location, std::max(m_plane.contourSpacing, 1e-6f));
-            if (GLint location = v->location("sdfwb_rampDistance"); location >= 0)
-                glUniform1f(location, std::max(m_plane.rampDistance, 1e-6f));
-        }
-        if (GLint location = v->location("sdfwb_lightDirection"); location >= 0) {
-            glm::vec3 light = glm::normalize(m_shading.lightDirection);
-            glUniform3f(location, light.x, light.y, light.z);
-        }
-        if (GLint location = v->location("sdfwb_curvatureScale"); location >= 0) glUniform1f(location, m_shading.curvatureScale);
-        if (GLint location = v->location("sdfwb_markers"); location >= 0) {
-            const GLsizei count = GLsizei(std::min<std::size_t>(m_shading.markers.size(), 16));
-            if (count > 0) glUniform3fv(location, count, &m_shading.markers[0].x);
-            glUniform1i(v->location("sdfwb_markerCount"), count);
-        }
-        if (GLint location = v->location("sdfwb_matcap"); location >= 0) {
-            m_impl->ensureMatcap(m_shading.matcap);
-            glActiveTexture(GL_TEXTURE0);
-            glBindTexture(GL_TEXTURE_2D, m_impl->matcap.id());
-            glUniform1i(location, 0);
-        }
-        if (GLint location = v->location("sdfwb_backgroundImage"); location >= 0) {
-            glActiveTexture(GL_TEXTURE1); // loading it binds on the active unit: not the matcap's
-            m_impl->ensureBackground(m_shading.backgroundImage, m_shading.background);
-            glBindTexture(GL_TEXTURE_2D, m_impl->background.id());
-            glUniform1i(location, 1);
-            glActiveTexture(GL_TEXTURE0);
-            // Cover the frame, centred: the image's shorter side fits, the longer one is cropped.
-            const float frameAspect = float(width) / float(std::max(height, 1));
-            const float ratio = m_impl->backgroundAspect / frameAspect;
-            if (ratio < 1.0f)
-                glUniform4f(v->location("sdfwb_backgroundFit"), 1.0f, ratio, 0.0f, 0.5f * (1.0f - ratio));
-            else
-                glUniform4f(v->location("sdfwb_backgroundFit"), 1.0f / ratio, 1.0f, 0.5f * (1.0f - 1.0f / ratio), 0.0f);
-        }
-        // The cone pass (trace_core.glsl): drawn into the target's lower-left corner, then copied
-        // into the texture the picture reads. It draws into the same framebuffer with the same
-        // state as the picture, so the driver compiles one variant of the program for both.
-        const bool cones = v->cones;
-        const int coneTile = std::max(m_trace.coneTile, 1);
-        const int coneWidth = (width + coneTile - 1) / coneTile, coneHeight = (height + coneTile - 1) / coneTile;
-        if (cones) {
-            glActiveTexture(GL_TEXTURE2); // units 0 and 1 hold the matcap and the background
-            if (!m_impl->coneStarts || m_impl->coneWidth < coneWidth || m_impl->coneHeight < coneHeight) {
-                m_impl->coneWidth = std::max(m_impl->coneWidth, coneWidth);
-                m_impl->coneHeight = std::max(m_impl->coneHeight, coneHeight);
-                m_impl->coneStarts = Impl::makeTexture(m_impl->coneWidth, m_impl->coneHeight, GL_NEAREST);
-            }
-            glBindTexture(GL_TEXTURE_2D, m_impl->coneStarts.id());
-            glActiveTexture(GL_TEXTURE0);
-            glUniform1i(v->location("sdfwb_coneStarts"), 2);
-            glUniform1i(v->location("sdfwb_coneTile"), coneTile);
-            // Past every point of the box (and its margin) seen from the camera.
-            glUniform1f(v->location("sdfwb_coneRange"),
-                        glm::length(camera.position) + std::sqrt(3.0f) * (1.0f + m_trace.boxMargin) + 1.0f);
-        }
+        m_impl->setFrameUniforms(*v, {m_shading, m_trace, m_plane, m_parameters}, width, height, camera, basis, time);
+        m_impl->bindShadingTextures(*v, m_shading, width, height);
         glBindVertexArray(m_impl->vertexArray.id());
         // Blending that changes nothing (source times one, plus zero): llvmpipe generates an
         // opaque draw's fragment code twice (for whole tiles and for edge tiles), a blended one
@@ -599,47 +677,8 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
         glEnable(GL_BLEND);
         glBlendEquation(GL_FUNC_ADD);
         glBlendFunc(GL_ONE, GL_ZERO);
-        if (cones) {
-            glUniform1i(v->location("sdfwb_conePass"), 1);
-            glProgramUniform1i(vertexProgram, m_impl->proxyBox, 0); // every tile has its cone
-            glViewport(0, 0, coneWidth, coneHeight);
-            glDrawArrays(GL_TRIANGLES, 0, 3);
-            // Copied from the framebuffer just drawn, whatever the caller left bound for reading.
-            GLint target = 0, reading = 0;
-            glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
-            glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &reading);
-            glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(target));
-            glActiveTexture(GL_TEXTURE2);
-            glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, coneWidth, coneHeight);
-            glActiveTexture(GL_TEXTURE0);
-            glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(reading));
-            glViewport(0, 0, width, height);
-            glUniform1i(v->location("sdfwb_conePass"), 0);
-        }
-        stats.boxProxy = boxProxyApplies(m_shading, m_trace);
-        glProgramUniform1i(vertexProgram, m_impl->proxyBox, stats.boxProxy ? 1 : 0);
-        if (stats.boxProxy) {
-            // Only the pixels whose ray meets the box run the tracer (the box's far faces: one
-            // fragment a pixel, wherever the camera is); the rest are the background already.
-            // Cleared where this frame draws (a scaled frame: the target's corner).
-            glEnable(GL_SCISSOR_TEST);
-            glScissor(0, 0, width, height);
-            glClearColor(m_shading.background.r, m_shading.background.g, m_shading.background.b, 1.0f);
-            glClear(GL_COLOR_BUFFER_BIT);
-            glDisable(GL_SCISSOR_TEST);
-            const glm::mat4 clip = proxyClip(camera, basis, float(width) / float(std::max(height, 1)));
-            glProgramUniformMatrix4fv(vertexProgram, m_impl->proxyClip, 1, GL_FALSE, &clip[0][0]);
-            // A little over the traced box, so that no pixel on its outline is lost to rounding.
-            glProgramUniform1f(vertexProgram, m_impl->proxyHalf, (1.0f + m_trace.boxMargin) * 1.001f);
-            glEnable(GL_CULL_FACE);
-            glCullFace(GL_FRONT);
-            glFrontFace(GL_CCW);
-            glDrawArrays(GL_TRIANGLES, 0, 36);
-            glCullFace(GL_BACK);
-            glDisable(GL_CULL_FACE);
-        } else {
-            glDrawArrays(GL_TRIANGLES, 0, 3);
-        }
+        if (v->cones) m_impl->drawConePass(*v, m_trace, camera, width, height);
+        stats.boxProxy = m_impl->drawPicture(m_shading, m_trace, camera, basis, width, height);
         glDisable(GL_BLEND);
         glBindVertexArray(0);
         glBindProgramPipeline(0);
