@@ -2,7 +2,7 @@
 // visible frame in the workbench (and to its first full-resolution frame), with Mesa's shader cache off (every program is
 // compiled and, on llvmpipe, code-generated at its first draw). The editor holds the SDF with one stray character at its end (a
 // compile error); the keystroke deletes it. Measured in the real window: the editor's debounce, include resolution and glslang
-// off the UI thread, the GL compile and link, the probe frame that sizes the resolution (the driver's code generation happens
+// off the UI thread, the GL compile and link, the timing frame that sizes the resolution (the driver's code generation happens
 // there), then the first frame: at full resolution, or for an SDF whose full frame would take longer than the 33 ms frame budget
 // the probe's second measurement at 15 % of the side, with the full-resolution frame after it. The reference in the same run is
 // the editor's debounce itself, which every edit waits for by design.
@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
     QObject::connect(viewport, &widgets::ViewportWidget::frameRendered, [&](double, float scale) {
         ++frames;
         const double now = timer.isValid() ? timer.nsecsElapsed() / 1e6 : 0.0;
-        if (scale == renderer::FrameScaler::kProbeScale) {
+        if (scale == renderer::FrameScaler::kTimingScale) {
             if (probeAt < 0.0) probeAt = now;
             return;
         }
@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
                 "debounce %d ms\n\n",
                 viewport->width(), viewport->height(), window.document()->debounceMilliseconds());
     std::printf(
-        "| SDF | keystroke to probe frame (ms) | keystroke to first frame (ms) | its scale | keystroke to full-resolution frame "
+        "| SDF | keystroke to timing frame (ms) | keystroke to first frame (ms) | its scale | keystroke to full-resolution frame "
         "(ms) |\n|---|---|---|---|---|\n");
     const dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
     std::vector<std::pair<double, std::string>> results; // keystroke to first frame

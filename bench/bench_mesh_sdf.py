@@ -337,7 +337,7 @@ with open(OUT, "w") as out:
               "set. A walk that runs out returns NaN, so such rows are bad rows and such pixels magenta, never a wrong "
               "value. On a mesh's own field the near and surface samplers do not march: they draw points uniform by "
               "area on the triangles (as mesh_to_sdf and DeepSDF do) and evaluate there. Point evaluation (`evaluate`, "
-              "`--batch eval`), the rand, grid, jitter and image samplers, the audit's point passes and the mesher "
+              "`--batch grade`), the rand, grid, jitter and image samplers, the audit's point passes and the mesher "
               "evaluate once per invocation (7 times with a gradient) and stay within it. A leaf's triangles cost no "
               "iteration (their loop has a constant bound, which the driver unrolls), and a fragment shader's helper "
               "lanes (pixels outside the primitive, run only for derivatives) walk nothing: llvmpipe drops their "

@@ -347,13 +347,14 @@ template <class Request, class Work> auto runOnGl(const Request& request, Work w
 }
 
 py::object audit(const std::string& sdf, std::uint64_t samples, std::uint64_t seed, float time, const std::string& entry,
-                 float probeDistance, const py::object& params, const std::string& sign, const std::string& normalize) {
+                 float truncationReach, const py::object& params, const std::string& sign, const std::string& normalize,
+                 const py::object& probeDistance) {
     jobs::AuditRequest request;
     request.sdf = sdfInput(sdf, entry, params, sign, normalize);
     request.samples = samples;
     request.seed = seed;
     request.time = time;
-    request.probeDistance = probeDistance;
+    request.truncationReach = probeDistance.is_none() ? truncationReach : probeDistance.cast<float>(); // the old name
     if (auto error = jobs::validate(request)) raise(*error);
     auto result = runOnGl(request, [](const jobs::AuditRequest& r) { return jobs::run(r, {}); });
     return fromJson(jobs::toJson(*result));
@@ -436,7 +437,7 @@ py::dict mesh(const std::string& sdf, int resolution, const py::object& bounds, 
     return out;
 }
 
-// Grades any mesh file against the exact field: the report `sdfwb --batch eval --json` prints.
+// Grades any mesh file against the exact field: the report `sdfwb --batch grade --json` prints.
 py::object evaluateMesh(const std::string& mesh, const std::string& sdf, float tau, std::uint64_t points, int occupancyResolution,
                         float edgeRadius, float edgeAngle, std::uint64_t seed, float time, const std::string& entry,
                         const py::object& params) {
@@ -606,8 +607,8 @@ Raises:
     ValueError: arrays of the wrong shapes, or an unknown format or extension.
     RuntimeError: the file cannot be written.)doc");
     m.def("audit", &audit, py::arg("sdf"), py::arg("samples") = 100000, py::arg("seed") = 0, py::arg("time") = 0.0f,
-          py::arg("entry") = "", py::arg("probe_distance") = 3.0f, py::arg("params") = py::none(), py::arg("sign") = "",
-          py::arg("normalize") = "",
+          py::arg("entry") = "", py::arg("truncation_reach") = 3.0f, py::arg("params") = py::none(), py::arg("sign") = "",
+          py::arg("normalize") = "", py::arg("probe_distance") = py::none(),
           R"doc(Audits the field of `sdf`: is it an exact distance, a conservative bound, or worse?
 
 Args:
@@ -616,11 +617,12 @@ Args:
     seed (int): 0 to 2**64 - 1. Default 0.
     time (float): seconds, finite, for animated SDFs. Default 0.
     entry (str): the SDF's function when it is not `sdf`, as for sample(). Default ''.
-    probe_distance (float): 0.1 to 100, world units: how far outward from the surface truncation is probed.
-        Default 3.
+    truncation_reach (float): 0.1 to 100, world units: how far rays from the surface outward look for a
+        plateau (truncation). Default 3.
     params (Mapping[str, bool | float | Sequence[float]] | None): parameter values, as for sample(). Default None.
     sign (str): for a mesh file, as for sample(). Default '': winding.
     normalize (str): for a mesh file, as for sample(). Default '': none.
+    probe_distance (float | None): truncation_reach's old name, still accepted. Default None.
 
 Returns:
     dict: the report `sdfwb --batch audit --json` prints: verdict (the most severe finding: exact,
@@ -720,7 +722,7 @@ Args:
     params (Mapping[str, bool | float | Sequence[float]] | None): parameter values, as for sample(). Default None.
 
 Returns:
-    dict: what `sdfwb --batch eval --json` prints: chamfer_l1 (mean of the two mean unsquared distances),
+    dict: what `sdfwb --batch grade --json` prints: chamfer_l1 (mean of the two mean unsquared distances),
     chamfer_l2 (the same, squared), fscore at tau (with precision and recall), normal_consistency, hausdorff,
     iou (None without an IoU grid), edges (the same measures over the points near creases: chamfer_l1, fscore,
     precision, recall, hausdorff and their point counts; None when the exact surface has no crease), the point

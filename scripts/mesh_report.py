@@ -8,7 +8,7 @@ For each shape and each resolution (32, 64, ..., up to --max-resolution) it runs
 its error against the exact field both ways (with the seconds the measurement took). Then it
 meshes the same fields with another tool, scikit-image's marching cubes on a NumPy grid of the
 field (sampled by `sdfwb.sample(..., "grid", ...)`, the same lattice), and grades both meshes
-with `sdfwb --batch eval` side by side.
+with `sdfwb --batch grade` side by side.
 """
 import datetime
 import glob
@@ -78,7 +78,7 @@ with open(os.path.join(ROOT, "docs", "meshing.md"), "w") as out:
     out.write("```sh\n"
               "sdfwb --batch mesh --sdf SDF --output FILE.{ply,obj,stl,glb} [--resolution 128] [--bounds X0,Y0,Z0,X1,Y1,Z1]\n"
               "                   [--time T] [--param NAME=VALUE] [--lipschitz L] [--error-samples 100000] [--json]\n"
-              "sdfwb --batch eval --mesh PRED.{ply,obj,stl,glb,off,...} --sdf SDF [--tau 0.01] [--points 100000]\n"
+              "sdfwb --batch grade --mesh PRED.{ply,obj,stl,glb,off,...} --sdf SDF [--tau 0.01] [--points 100000]\n"
               "                   [--occupancy-resolution 128] [--edge-radius 0.02] [--edge-angle 30] [--json]\n"
               "                   # Python: sdfwb.evaluate_mesh(mesh, sdf, tau=..., edge_radius=..., edge_angle=...)\n"
               "```\n\n"
@@ -91,7 +91,7 @@ with open(os.path.join(ROOT, "docs", "meshing.md"), "w") as out:
               "a hundredth of a cell, so a crossing near a crease does not mix the two faces' normals (tests: a box under an "
               "irrational rotation keeps every corner within 1e-3 at 128 cells and every vertex within 1e-4 of the "
               "surface; a rotated cylinder's rims and an hg_sdf chamfered object score edge F-scores of 1.0 and 0.987). "
-              "`--batch eval` grades any mesh near creases too: `edges` repeats Chamfer-L1, F-score and Hausdorff over the "
+              "`--batch grade` grades any mesh near creases too: `edges` repeats Chamfer-L1, F-score and Hausdorff over the "
               "points within --edge-radius of a crease of the exact field (its normal turns by over --edge-angle towards "
               "one of 8 points around the point), where a mesher that rounds edges loses; it is null on smooth shapes. "
               "Against scikit-image, VTK Flying Edges and OpenVDB in one run: [meshing-peers.md](meshing-peers.md). The field is "
@@ -234,7 +234,7 @@ for label, sdf in COMPARED:
         meshio.write(theirs, meshio.Mesh(vertices[:, ::-1] - 1.0, [("triangle", faces)]), binary=True)
         for method, path, seconds, triangles in (("sdfwb dual contouring", ours, mesh["mesh_seconds"], mesh["triangles"]),
                                                   ("scikit-image marching cubes", theirs, mc_seconds, len(faces))):
-            e = json.loads(subprocess.run([BINARY, "--batch", "eval", "--mesh", path, "--sdf", sdf, "--tau", "0.005", "--json",
+            e = json.loads(subprocess.run([BINARY, "--batch", "grade", "--mesh", path, "--sdf", sdf, "--tau", "0.005", "--json",
                                            "--quiet"], env=ENV, capture_output=True, text=True, check=True).stdout)
             comparison.append(dict(label=label, resolution=resolution, method=method, seconds=seconds, triangles=triangles,
                                    sampled=sampled if "scikit" in method else None, eval=e))
@@ -248,7 +248,7 @@ with open(os.path.join(ROOT, "docs", "meshing.md"), "a") as out:
               "evaluation included). This table compares accuracy on the same field; for speed against the fastest "
               "reference pipeline a user would write (the field in NumPy at its best thread count, then marching cubes), "
               "see [mesh extraction against NumPy + scikit-image](benchmarks/mesh_vs_marching_cubes.md), where sdfwb is "
-              "slower. Both graded by `sdfwb --batch eval --tau 0.005` (100 000 points each way, IoU on a 128^3 "
+              "slower. Both graded by `sdfwb --batch grade --tau 0.005` (100 000 points each way, IoU on a 128^3 "
               "grid): Chamfer L1 is the mean of the two mean unsquared distances; normal consistency the mean |cos| between "
               "face normals and the field's gradient.\n\n")
     out.write("| SDF | resolution | method | triangles | seconds | lattice from sdfwb.sample s | Chamfer L1 | Hausdorff | "

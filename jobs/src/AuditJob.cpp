@@ -13,7 +13,7 @@ JobResult<AuditJobReport> run(const AuditRequest& request, const ProgressSink& p
     report.sdf = sdf->label;
     report.entry = sdf->prepared.signature.entry;
     report.meshSource = sdf->meshSource();
-    report.probeDistance = request.probeDistance;
+    report.truncationReach = request.truncationReach;
     report.warnings = sdf->warnings;
     std::vector<shaders::Diagnostic> diagnostics; // the compiler's, when the SDF does not compile
     if (request.plane) {
@@ -29,7 +29,7 @@ JobResult<AuditJobReport> run(const AuditRequest& request, const ProgressSink& p
     options.samples = request.samples;
     options.seed = request.seed;
     options.time = request.time;
-    options.probeDistance = request.probeDistance;
+    options.truncationReach = request.truncationReach;
     options.diagnostics = &diagnostics;
     if (request.family.empty()) {
         options.parameters = sdf->parameters;

@@ -117,12 +117,19 @@ template <class V> void fields(V& v, SampleRequest& r) {
     v("randomize", r.family.randomize);
 }
 
+// A key that was renamed: written under its new name, read under either (the new one wins).
+template <class V, class T> void renamed(V& v, const char* key, const char* oldKey, T& value) {
+    if constexpr (requires { v.in.contains(key); })
+        if (v.in.is_object() && !v.in.contains(key) && v.in.contains(oldKey)) return v(oldKey, value);
+    v(key, value);
+}
+
 template <class V> void fields(V& v, AuditRequest& r) {
     fields(v, r.sdf);
     v("samples", r.samples);
     v("seed", r.seed);
     v("time", r.time);
-    v("probe_distance", r.probeDistance);
+    renamed(v, "truncation_reach", "probe_distance", r.truncationReach); // "probe_distance": the old name
     v("plane", r.plane);
     v("resolution", r.resolution);
     v("sweep", r.family.sweeps);
@@ -851,11 +858,11 @@ Expected<Request> requestFromJson(const std::string& text) {
     if (name == "bench") return as((BenchRequest*)nullptr);
     if (name == "params") return as((ParamsRequest*)nullptr);
     if (name == "mesh") return as((MeshRequest*)nullptr);
-    if (name == "eval") return as((EvalRequest*)nullptr);
+    if (name == "grade" || name == "eval") return as((EvalRequest*)nullptr); // "eval": the old name
     if (name == "run") return as((RunRequest*)nullptr);
     if (name == "probe") return as((ProbeRequest*)nullptr);
     return makeError("request: unknown kind '" + name +
-                     "' (render, animate, sample, audit, merge, list, bench, params, mesh, eval, run, probe)");
+                     "' (render, animate, sample, audit, merge, list, bench, params, mesh, grade, run, probe)");
 }
 
 namespace {
@@ -866,14 +873,14 @@ json encodeAudit(const AuditJobReport& report) {
     out["mesh_source"] = encode(report.meshSource);
     out["warnings"] = encode(report.warnings);
     if (!report.family.empty()) {
-        out["probe_distance"] = report.probeDistance;
+        out["truncation_reach"] = report.truncationReach;
         out["family"] = encode(report.family);
     } else if (report.readout) {
         out["plane"] = encode(report.plane.value_or(PlaneSpec{}));
         out.update(encode(*report.readout));
         out["histogram_bin_width"] = 0.05;
     } else if (report.volume) {
-        out["probe_distance"] = report.probeDistance;
+        out["truncation_reach"] = report.truncationReach;
         out.update(encode(*report.volume));
     }
     // The figures particular to each flag's kind, by name (namedFigures), next to the generic ones.
@@ -923,7 +930,7 @@ template <> Expected<AuditJobReport> reportFromJson<AuditJobReport>(const std::s
     read("mesh_source", report.meshSource);
     read("warnings", report.warnings);
     if (in->contains("family")) {
-        read("probe_distance", report.probeDistance);
+        read(in->contains("truncation_reach") ? "truncation_reach" : "probe_distance", report.truncationReach);
         read("family", report.family);
     } else if (in->contains("plane")) {
         read("plane", report.plane);
@@ -931,7 +938,7 @@ template <> Expected<AuditJobReport> reportFromJson<AuditJobReport>(const std::s
         if (!readout) return readout.error();
         report.readout = std::move(*readout);
     } else {
-        read("probe_distance", report.probeDistance);
+        read(in->contains("truncation_reach") ? "truncation_reach" : "probe_distance", report.truncationReach);
         auto volume = readObject<sampling::AuditReport>(*in, false, "report");
         if (!volume) return volume.error();
         report.volume = std::move(*volume);

@@ -29,7 +29,7 @@ const char* kindName(const Request& request) {
         const char* operator()(const BenchRequest&) const { return "bench"; }
         const char* operator()(const ParamsRequest&) const { return "params"; }
         const char* operator()(const MeshRequest&) const { return "mesh"; }
-        const char* operator()(const EvalRequest&) const { return "eval"; }
+        const char* operator()(const EvalRequest&) const { return "grade"; }
         const char* operator()(const RunRequest&) const { return "run"; }
         const char* operator()(const ProbeRequest&) const { return "probe"; }
     };
@@ -320,7 +320,7 @@ std::optional<JobError> validate(const SampleRequest& request) {
 std::optional<JobError> validate(const AuditRequest& request) {
     if (request.samples < 64 || request.samples > 100000000) return usage("--samples: must be 64..100000000");
     if (!std::isfinite(request.time)) return usage("--time: expected a finite number");
-    if (!inRange(request.probeDistance, 0.1, 100.0)) return usage("--probe-distance: must be 0.1..100");
+    if (!inRange(request.truncationReach, 0.1, 100.0)) return usage("--truncation-reach: must be 0.1..100");
     if (request.resolution < 2 || request.resolution > 4096) return usage("--resolution: must be 2..4096");
     if (request.plane) {
         const PlaneSpec& plane = *request.plane;

@@ -198,8 +198,8 @@ JobResult<EvalReport> run(const EvalRequest& request, const ProgressSink&) {
     const auto start = std::chrono::steady_clock::now();
     if (auto error = validate(request)) return *error;
     auto mesh = meshing::readMesh(request.mesh);
-    if (!mesh) return JobError{Failure::Work, "eval: " + mesh.error().message, {}};
-    auto sdf = openSdf(request.sdf, "eval");
+    if (!mesh) return JobError{Failure::Work, "grade: " + mesh.error().message, {}};
+    auto sdf = openSdf(request.sdf, "grade");
     if (!sdf) return sdf.error;
     meshing::EvalOptions options;
     options.points = request.points;

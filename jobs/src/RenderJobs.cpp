@@ -373,7 +373,7 @@ JobResult<AnimateReport> run(const AnimateRequest& request, const ProgressSink& 
             if (i > 0 && tracer.settleMarch(stats.cpuMilliseconds)) {
                 renderer::FrameStats warm;
                 (void)offscreen.render(tracer, frame.width, frame.height, camera, time, &warm,
-                                       renderer::FrameScaler::kProbeScale);
+                                       renderer::FrameScaler::kTimingScale);
                 report.renderSeconds += warm.cpuMilliseconds / 1000.0;
             }
             if (auto ok = (*writer)->addFrame(image); !ok) return JobError{Failure::Work, ok.error().message, {}};

@@ -7,7 +7,7 @@
 // both join that face's two segments (a tunnel thinner than a cell), so the mesh stays manifold.
 #include <meshing/Mesh.h>
 
-#include "FieldProbe.h"
+#include "PointEvaluator.h"
 
 #include <glm/geometric.hpp>
 
@@ -398,7 +398,7 @@ private:
     Grid grid{};
     glm::dvec3 clipLow{0.0}, clipHigh{0.0};
     MeshStats stats;
-    detail::FieldProbe probe;
+    detail::PointEvaluator field; // f (and its gradient) at the points each step chooses
     const CubeTables& tables = cube();
     int blocksPerAxis = 0;
     std::vector<std::array<int, 3>> kept; // the blocks that may hold surface
@@ -435,8 +435,8 @@ Expected<std::pair<Mesh, MeshStats>> Extraction::run() {
     const auto [cutLow, cutHigh] = cutBox(options);
     clipLow = glm::dvec3(cutLow);
     clipHigh = glm::dvec3(cutHigh);
-    if (auto ok = probe.build(sdf, "analysis/points.glsl", options.time, options.parameters); !ok) return ok.error();
-    probe.setClip(clipLow, clipHigh);
+    if (auto ok = field.build(sdf, "analysis/points.glsl", options.time, options.parameters); !ok) return ok.error();
+    field.setClip(clipLow, clipHigh);
 
     // A hundredth of a cell: with a twentieth, a crossing that near a crease got a normal mixed from
     // both faces, whose plane put a rotated box's corner 2.3e-3 off at 128 cells.
@@ -474,7 +474,7 @@ Expected<void> Extraction::selectBlocks() {
                 centres.insert(centres.end(), {float(c.x), float(c.y), float(c.z)});
             }
     std::vector<float> centreValues;
-    if (auto ok = probe.evaluate(centres, centreValues, nullptr); !ok) return ok.error();
+    if (auto ok = field.evaluate(centres, centreValues, nullptr); !ok) return ok.error();
     stats.pointsEvaluated += centreValues.size();
     stats.blocks = centreValues.size();
     const double halfDiagonal = 0.5 * glm::length(grid.step * double(kBlock));
@@ -496,7 +496,7 @@ Expected<void> Extraction::selectBlocks() {
 // two kept blocks share is evaluated by both, at the same coordinates, so to the same value).
 Expected<void> Extraction::evaluateBlocks() {
     {
-        detail::FieldProbe lattice;
+        detail::PointEvaluator lattice;
         if (auto ok = lattice.build(sdf, "analysis/lattice.glsl", options.time, options.parameters); !ok) return ok.error();
         lattice.setClip(clipLow, clipHigh);
         std::vector<float> firstPoints;
@@ -564,24 +564,24 @@ Expected<void> Extraction::placeCrossings() {
             brackets[e].fb = edgeValues[2 * e + 1];
             active[e] = std::uint32_t(e);
         }
-        std::vector<float> probes, probeValues;
+        std::vector<float> guesses, guessValues;
         for (int iteration = 0; iteration < 8 && !active.empty(); ++iteration) {
-            probes.resize(3 * active.size());
+            guesses.resize(3 * active.size());
             for (std::size_t q = 0; q < active.size(); ++q) {
                 Bracket& r = brackets[active[q]];
                 r.t = (r.a * r.fb - r.b * r.fa) / (r.fb - r.fa);
                 if (!(r.t > r.a && r.t < r.b)) r.t = 0.5 * (r.a + r.b);
                 const glm::dvec3 p = edgeStart(edges[active[q]]) + r.t * edgeVector(edges[active[q]]);
-                probes[3 * q] = float(p.x);
-                probes[3 * q + 1] = float(p.y);
-                probes[3 * q + 2] = float(p.z);
+                guesses[3 * q] = float(p.x);
+                guesses[3 * q + 1] = float(p.y);
+                guesses[3 * q + 2] = float(p.z);
             }
-            if (auto ok = probe.evaluate(probes, probeValues, nullptr); !ok) return ok.error();
-            stats.pointsEvaluated += probeValues.size();
+            if (auto ok = field.evaluate(guesses, guessValues, nullptr); !ok) return ok.error();
+            stats.pointsEvaluated += guessValues.size();
             std::size_t still = 0;
             for (std::size_t q = 0; q < active.size(); ++q) {
                 Bracket& r = brackets[active[q]];
-                const double f = probeValues[q];
+                const double f = guessValues[q];
                 if (!std::isfinite(f)) continue;
                 if (inside(float(f)) == inside(float(r.fa))) {
                     r.a = r.t;
@@ -615,7 +615,7 @@ Expected<void> Extraction::placeCrossings() {
             crossings[3 * e + 2] = float(p.z);
         }
     }
-    if (auto ok = probe.evaluate(crossings, crossingValues, &normals, normalStep); !ok) return ok.error();
+    if (auto ok = field.evaluate(crossings, crossingValues, &normals, normalStep); !ok) return ok.error();
     stats.pointsEvaluated += crossingValues.size();
     return {};
 }
@@ -801,7 +801,7 @@ Expected<void> Extraction::projectVertices() {
     for (int iteration = 0; iteration < 2; ++iteration) {
         for (std::size_t vertex = 0; vertex < mesh.vertices.size(); ++vertex)
             for (int a = 0; a < 3; ++a) positions[3 * vertex + std::size_t(a)] = mesh.vertices[vertex][a];
-        if (auto ok = probe.evaluate(positions, fieldValues, &gradients, normalStep); !ok) return ok.error();
+        if (auto ok = field.evaluate(positions, fieldValues, &gradients, normalStep); !ok) return ok.error();
         stats.pointsEvaluated += fieldValues.size();
         for (std::size_t vertex = 0; vertex < mesh.vertices.size(); ++vertex) {
             const float f = fieldValues[vertex];

@@ -1,7 +1,7 @@
 // The error of a mesh against the exact field, both ways (see Mesh.h).
 #include <meshing/Mesh.h>
 
-#include "FieldProbe.h"
+#include "PointEvaluator.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
@@ -197,19 +197,19 @@ Expected<MeshError> measureError(const shaders::PreparedSdf& sdf, const Mesh& me
     // field is not exact.
     std::vector<float> surface, distances, gradients;
     {
-        detail::FieldProbe probe;
-        if (auto ok = probe.build(sdf, "surface", options.time, options.parameters); !ok) return ok.error();
-        if (auto ok = probe.generate(options.surfacePoints, options.seed, surface, distances, gradients); !ok) return ok.error();
+        detail::PointEvaluator field;
+        if (auto ok = field.build(sdf, "surface", options.time, options.parameters); !ok) return ok.error();
+        if (auto ok = field.generate(options.surfacePoints, options.seed, surface, distances, gradients); !ok) return ok.error();
     }
     // Mesh -> surface, at the vertices and at area-weighted points on the faces: |f| for an exact
     // field, else the distance to the nearest surface point.
     const MeshSamples onMesh = sampleOnMesh(mesh, options.meshPoints, options.seed, true);
     std::vector<float> meshDistances, meshGradients;
     {
-        detail::FieldProbe probe;
-        if (auto ok = probe.build(sdf, "analysis/points.glsl", options.time, options.parameters); !ok) return ok.error();
-        if (options.cut) probe.setClip(glm::dvec3(options.cut->first), glm::dvec3(options.cut->second));
-        if (auto ok = probe.evaluate(onMesh.xyz, meshDistances, &meshGradients); !ok) return ok.error();
+        detail::PointEvaluator field;
+        if (auto ok = field.build(sdf, "analysis/points.glsl", options.time, options.parameters); !ok) return ok.error();
+        if (options.cut) field.setClip(glm::dvec3(options.cut->first), glm::dvec3(options.cut->second));
+        if (auto ok = field.evaluate(onMesh.xyz, meshDistances, &meshGradients); !ok) return ok.error();
     }
     if (options.fieldIsExact) {
         error.meshToSurfaceMethod = "|f| (the field is exact: |f| is the distance)";
@@ -263,7 +263,7 @@ Expected<MeshError> measureError(const shaders::PreparedSdf& sdf, const Mesh& me
 // Which of the points lie near a crease of the field: its normal at the point (the unit gradient)
 // and at one of 8 points `radius` away around it, in the plane normal to it, differ by more than the
 // angle whose cosine is `cosAngle`. Points without a usable gradient are not near a crease.
-Expected<std::vector<std::uint8_t>> nearCreases(detail::FieldProbe& field, const std::vector<float>& points,
+Expected<std::vector<std::uint8_t>> nearCreases(detail::PointEvaluator& field, const std::vector<float>& points,
                                                 const std::vector<float>& gradients, float radius, float cosAngle) {
     constexpr int kTaps = 8;
     const std::size_t n = points.size() / 3;
@@ -349,7 +349,7 @@ Expected<MeshEvaluation> evaluateMesh(const shaders::PreparedSdf& sdf, const Mes
     e.tau = options.tau;
     // Accuracy: points on the mesh to the surface, |f| (the distance for an exact field).
     const MeshSamples onMesh = sampleOnMesh(mesh, options.points, options.seed, false);
-    detail::FieldProbe field;
+    detail::PointEvaluator field;
     if (auto ok = field.build(sdf, "analysis/points.glsl", options.time, options.parameters); !ok) return ok.error();
     std::vector<float> values, gradients;
     if (auto ok = field.evaluate(onMesh.xyz, values, &gradients); !ok) return ok.error();
@@ -378,7 +378,7 @@ Expected<MeshEvaluation> evaluateMesh(const shaders::PreparedSdf& sdf, const Mes
     // Completeness: points on the exact surface to the nearest triangle.
     std::vector<float> surface, distances, surfaceGradients;
     {
-        detail::FieldProbe sampler;
+        detail::PointEvaluator sampler;
         if (auto ok = sampler.build(sdf, "surface", options.time, options.parameters); !ok) return ok.error();
         if (auto ok = sampler.generate(options.points, options.seed + 1, surface, distances, surfaceGradients); !ok)
             return ok.error();

@@ -152,10 +152,11 @@ def audit(
     seed: int = 0,
     time: float = 0.0,
     entry: str = "",
-    probe_distance: float = 3.0,
+    truncation_reach: float = 3.0,
     params: Mapping[str, ParamValue] | None = None,
     sign: str = "",
     normalize: str = "",
+    probe_distance: float | None = None,
 ) -> dict[str, Any]: ...
 def run(request: dict[str, Any] | str) -> dict[str, Any]: ...
 def params(sdf: str, entry: str = "") -> ParamsReport: ...

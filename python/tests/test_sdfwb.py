@@ -187,7 +187,9 @@ def test_foreign_code_entry_points_and_audit_flags():
     assert 0 < len(flags["truncated"]["examples"]) <= 16
     with pytest.raises(ValueError, match="entry point 'nothere' not found"):
         sdfwb.audit(SHADERTOY, entry="nothere")
-    with pytest.raises(ValueError, match="probe.distance"):
+    with pytest.raises(ValueError, match="truncation.reach"):
+        sdfwb.audit(SHADERTOY, entry="snake", truncation_reach=0.0)
+    with pytest.raises(ValueError, match="truncation.reach"):  # its old name, still accepted
         sdfwb.audit(SHADERTOY, entry="snake", probe_distance=0.0)
 
 

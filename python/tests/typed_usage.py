@@ -53,7 +53,7 @@ def native(path: str, glsl: str) -> list[object]:
         metadata: SampleMetadata = loaded["metadata"]
         seed = metadata["seed"] + len(metadata["pattern"])
 
-    report: dict[str, Any] = sdfwb.audit("Torus", samples=1000, seed=1, time=0.0, entry="", probe_distance=3.0,
+    report: dict[str, Any] = sdfwb.audit("Torus", samples=1000, seed=1, time=0.0, entry="", truncation_reach=3.0,
                                          params={"tubeRadius": 0.1})
     verdict = report["verdict"]
     listed = sdfwb.run({"kind": "list"})

@@ -9,7 +9,7 @@ namespace sdfwb::renderer {
 float FrameScaler::cap(int width, int height) const {
     if (m_maxPixels <= 0.0) return 1.0f;
     const double pixels = std::max(1.0, double(width) * double(height));
-    return std::clamp(float(std::sqrt(m_maxPixels / pixels)), kProbeScale, 1.0f);
+    return std::clamp(float(std::sqrt(m_maxPixels / pixels)), kTimingScale, 1.0f);
 }
 
 float FrameScaler::scaleFor(int width, int height, bool interacting) const {
@@ -39,17 +39,17 @@ void FrameScaler::startInteraction() {
 }
 
 void FrameScaler::seedScale(double estimateMilliseconds) {
-    // Half the budget: an estimate from probes is rough (moving frames then aim at 0.8 of it).
+    // Half the budget: an estimate from timing frames is rough (moving frames then aim at 0.8 of it).
     if (estimateMilliseconds > 0.0)
         m_scale = std::clamp(float(std::sqrt(0.5 * m_frameBudget / estimateMilliseconds)), kMinimumScale, 1.0f);
 }
 
-double FrameScaler::estimateFullFrame(double probeMilliseconds, std::optional<std::pair<float, double>> larger) {
-    if (!larger) return probeMilliseconds / double(kProbeScale * kProbeScale);
+double FrameScaler::estimateFullFrame(double timingMilliseconds, std::optional<std::pair<float, double>> larger) {
+    if (!larger) return timingMilliseconds / double(kTimingScale * kTimingScale);
     // Fixed costs (stretching, synchronisation) cancel in the difference: extrapolate the cost per area.
     const auto [scale, milliseconds] = *larger;
-    const double perArea = std::max(0.0, milliseconds - probeMilliseconds) / double(scale * scale - kProbeScale * kProbeScale);
-    return probeMilliseconds + perArea * double(1.0f - kProbeScale * kProbeScale);
+    const double perArea = std::max(0.0, milliseconds - timingMilliseconds) / double(scale * scale - kTimingScale * kTimingScale);
+    return timingMilliseconds + perArea * double(1.0f - kTimingScale * kTimingScale);
 }
 
 void FrameScaler::capFromEstimate(int width, int height, double estimateMilliseconds) {

@@ -706,7 +706,7 @@ FrameStats SdfRenderer::renderScaled(int width, int height, float scale, const C
     // it: the draw sees the very framebuffer a full frame does (formats, depth and stencil), so
     // the driver reuses one compiled variant of the program for every scale. (llvmpipe
     // generates code per framebuffer configuration: a separate low-resolution target made it
-    // compile every SDF twice, once for the probe frame and once for the full one.)
+    // compile every SDF twice, once for the timing frame and once for the full one.)
     glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
     const bool boxProxy = render(lowWidth, lowHeight, camera, time, false).boxProxy;
     glBindTexture(GL_TEXTURE_2D, impl.lowColor.id());

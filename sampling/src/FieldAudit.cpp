@@ -192,16 +192,16 @@ Expected<AuditFlag> measureJumps(const shaders::PreparedSdf& sdf, const AuditOpt
 }
 
 // Probes along rays from surface points outward (along the normalised gradient), at distances
-// growing quadratically from 0.01 to options.probeDistance. A ray ends on a plateau when, from
+// growing quadratically from 0.01 to options.truncationReach. A ray ends on a plateau when, from
 // some probe on, f stays put (changes by less than 0.02 per unit of distance, up to noise) at a
 // positive value: the field has stopped growing. Returns a "truncated" flag whose count is the
 // number of rays that end on one (0: none).
-Expected<AuditFlag> probeOutward(const shaders::PreparedSdf& sdf, const AuditOptions& options, const SampleSet& surface,
-                                 float noiseFloor) {
+Expected<AuditFlag> traceTruncationRays(const shaders::PreparedSdf& sdf, const AuditOptions& options, const SampleSet& surface,
+                                        float noiseFloor) {
     AuditFlag flag;
     flag.name = "truncated";
     constexpr int kProbes = 32;
-    const float reach = std::max(options.probeDistance, 0.1f);
+    const float reach = std::max(options.truncationReach, 0.1f);
     float distances[kProbes];
     for (int k = 0; k < kProbes; ++k)
         distances[k] = 0.01f + (reach - 0.01f) * float(k * k) / float((kProbes - 1) * (kProbes - 1));
@@ -504,9 +504,9 @@ Expected<void> findTruncation(const shaders::PreparedSdf& sdf, const AuditOption
                     glm::vec3(p.random[0].positions[3 * i], p.random[0].positions[3 * i + 1], p.random[0].positions[3 * i + 2]));
         }
     }
-    // ...and along rays from the surface outward, to options.probeDistance: a plateau that lies
+    // ...and along rays from the surface outward, to options.truncationReach: a plateau that lies
     // mostly beyond the cube shows there.
-    auto plateau = probeOutward(sdf, options, p.surface, report.noiseFloor);
+    auto plateau = traceTruncationRays(sdf, options, p.surface, report.noiseFloor);
     if (!plateau) return plateau.error();
     // A truncated field saturates at a distance well off the surface; flat spots that hug the
     // zero set (fractal estimators vanish near their set) are not truncation.

@@ -416,9 +416,9 @@ TEST(BatchForeign, EntryOnEveryCommandAndFlagsInTheReports) {
     r = run("--batch audit --sdf " + shadertoy.string() + " --entry nothere");
     EXPECT_NE(r.exitCode, 0);
     EXPECT_NE(r.output.find("entry point 'nothere' not found"), std::string::npos) << r.output;
-    r = run("--batch audit --sdf " + shadertoy.string() + " --probe-distance 0");
+    r = run("--batch audit --sdf " + shadertoy.string() + " --truncation-reach 0");
     EXPECT_EQ(r.exitCode, 2) << r.output;
-    EXPECT_NE(r.output.find("--probe-distance"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("--truncation-reach"), std::string::npos) << r.output;
 }
 
 // llvmpipe ends every loop after 65535 iterations without an error: a loop that runs longer is

@@ -431,10 +431,10 @@ TEST(Viewport, AtRestTheConePassIsKeptOnlyWhenItMakesFramesFaster) {
     }
 }
 
-// A new SDF whose full frame would take longer than the frame budget shows its last probe frame
+// A new SDF whose full frame would take longer than the frame budget shows its last timing frame
 // (15 % of the side, the same paint) as its first frame, then the full-resolution frame; the
-// probe's picture is the new shape, read from the viewport's framebuffer as it is drawn.
-TEST(Viewport, ASlowSdfShowsItsProbeAsItsFirstFrameThenTheFullOne) {
+// timing frame's picture is the new shape, read from the viewport's framebuffer as it is drawn.
+TEST(Viewport, ASlowSdfShowsItsTimingFrameAsItsFirstFrameThenTheFullOne) {
     app::MainWindow window;
     window.resize(1000, 600);
     window.show();
@@ -446,7 +446,7 @@ TEST(Viewport, ASlowSdfShowsItsProbeAsItsFirstFrameThenTheFullOne) {
     long shapePixels = -1;
     QObject::connect(viewport, &widgets::ViewportWidget::frameRendered, [&](double, float scale) {
         scales.push_back(scale);
-        if (scale != 3.0f * renderer::FrameScaler::kProbeScale || shapePixels >= 0) return;
+        if (scale != 3.0f * renderer::FrameScaler::kTimingScale || shapePixels >= 0) return;
         // In the paint: the viewport's framebuffer is bound, the frame about to be shown.
         const qreal ratio = viewport->devicePixelRatioF();
         const int width = int(std::lround(viewport->width() * ratio)), height = int(std::lround(viewport->height() * ratio));
@@ -460,12 +460,12 @@ TEST(Viewport, ASlowSdfShowsItsProbeAsItsFirstFrameThenTheFullOne) {
     });
     ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
     ASSERT_TRUE(waitFor([&] { return !scales.empty() && scales.back() == 1.0f; })) << "no full-resolution frame";
-    // The probe (5 %), the larger probe shown as the first frame (15 %), the full frame (after
+    // The timing frame (5 %), the larger timing frame shown as the first frame (15 %), the full frame (after
     // any repaint of the sphere before the torus arrived).
-    const auto probe = std::find(scales.begin(), scales.end(), renderer::FrameScaler::kProbeScale);
-    ASSERT_GE(std::distance(probe, scales.end()), 3) << "no probe frame, or nothing after it";
-    EXPECT_EQ(probe[1], 3.0f * renderer::FrameScaler::kProbeScale);
-    EXPECT_EQ(probe[2], 1.0f);
+    const auto timing = std::find(scales.begin(), scales.end(), renderer::FrameScaler::kTimingScale);
+    ASSERT_GE(std::distance(timing, scales.end()), 3) << "no timing frame, or nothing after it";
+    EXPECT_EQ(timing[1], 3.0f * renderer::FrameScaler::kTimingScale);
+    EXPECT_EQ(timing[2], 1.0f);
     const long pixels =
         long(viewport->width() * viewport->height() * viewport->devicePixelRatioF() * viewport->devicePixelRatioF());
     EXPECT_GT(shapePixels, pixels / 20) << "the first frame does not show the torus";
@@ -539,7 +539,7 @@ TEST(Viewport, SlowShaderIsCappedThenRevertedNeverFreezesTheWindow) {
     ASSERT_TRUE(openAndWait(window, "Geometry/Sphere.glsl"));
     const QImage sphere = frameOf(window);
 
-    // Limit 1.5 s: the probe frame (5 % resolution) predicts a minute-long frame; the cap keeps
+    // Limit 1.5 s: the timing frame (5 % resolution) predicts a minute-long frame; the cap keeps
     // every frame near the limit.
     ASSERT_TRUE(window.openFile(loop));
     ASSERT_TRUE(waitFor([&] { return !warnings.isEmpty(); }, 60000)) << "no warning for a minute-long frame";

@@ -79,7 +79,7 @@ std::vector<Request> unusualRequests() {
     audit.samples = 4096;
     audit.seed = 9;
     audit.time = 0.5f;
-    audit.probeDistance = 1.5f;
+    audit.truncationReach = 1.5f;
     audit.plane = PlaneSpec{{0.0f, 1.0f, 0.0f}, 0.1f};
     audit.resolution = 64;
     audit.family.randomize = 77;
@@ -194,7 +194,7 @@ TEST(JobJson, ReportsSurviveARoundTrip) {
     AuditJobReport family;
     family.sdf = "blend.glsl";
     family.entry = "map";
-    family.probeDistance = 3.0f;
+    family.truncationReach = 3.0f;
     family.family = {{{{"stretch", {0.5f}}}, "conservative", "L <= 1", {}, 1.0f, 1.01f, 1e-3f, 0.4},
                      {{{"stretch", {2.0f}}}, "non-conservative", "L = 2", {"non-conservative"}, 2.0f, 2.1f, 0.3f, 0.2}};
     auto f = reportFromJson<AuditJobReport>(toJson(family));
@@ -238,7 +238,7 @@ TEST(JobJson, AuditReportsKeepEveryFindingAndFigure) {
     AuditJobReport volume;
     volume.sdf = "broken.glsl";
     volume.entry = "map";
-    volume.probeDistance = 2.0f;
+    volume.truncationReach = 2.0f;
     sampling::AuditReport a;
     a.verdict = "discontinuous";
     a.reason = "f jumps";
@@ -416,7 +416,7 @@ TEST(JobJson, CommandLineOptionsMakeTheSameRequestAsJson) {
     audit.sdf = {"Sphere", "sdf", "", {}};
     audit.samples = 1000;
     audit.seed = 3;
-    audit.probeDistance = 2.0f;
+    audit.truncationReach = 2.0f;
     audit.plane = PlaneSpec{{1.0f, 0.0f, 0.0f}, 0.5f};
     audit.resolution = 64;
     parsed = requestFromJson(standardOutput("--batch audit --sdf Sphere --entry sdf --samples 1000 --seed 3 --probe-distance 2 "
@@ -613,4 +613,19 @@ TEST(WorkerProtocol, TheCommandLineAnswersEveryRequestInTheProtocol) {
     EXPECT_EQ(messages[4].error.diagnostics[0].line, 1);
     EXPECT_EQ(messages[5].kind, WorkerMessage::Kind::End);
     EXPECT_EQ(messages[5].exitCode, 1);
+}
+
+// `--batch grade` grades a mesh; `eval`, its old name, still works and makes the same request,
+// whose JSON kind is "grade" ("eval" is read too).
+TEST(JobJson, GradeIsTheMeshGradersNameAndEvalItsAlias) {
+    const std::string args = " --sdf torus --mesh /tmp/m.ply --tau 0.02 --print-request";
+    const std::string graded = standardOutput("--batch grade" + args), old = standardOutput("--batch eval" + args);
+    ASSERT_FALSE(graded.empty());
+    EXPECT_EQ(graded, old);
+    EXPECT_NE(graded.find("\"kind\": \"grade\""), std::string::npos) << graded;
+    auto fromOld = requestFromJson(R"({"kind": "eval", "sdf": "torus", "mesh": "/tmp/m.ply"})");
+    ASSERT_TRUE(fromOld) << fromOld.error().message;
+    EXPECT_TRUE(std::holds_alternative<EvalRequest>(*fromOld));
+    const std::string help = standardOutput("--help");
+    EXPECT_NE(help.find("  grade "), std::string::npos);
 }

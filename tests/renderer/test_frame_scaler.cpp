@@ -1,5 +1,5 @@
 // The viewport's resolution logic, without GL or Qt: scales while moving, the cap for slow views,
-// the probe estimate for a new SDF.
+// the timing-frame estimate for a new SDF.
 
 #include <renderer/FrameScaler.h>
 
@@ -47,9 +47,9 @@ TEST(FrameScaler, WhileMovingTheScaleAimsAtTheFrameBudget) {
     EXPECT_EQ(scaler.scaleFor(1280, 720, true), FrameScaler::kMinimumScale);
 }
 
-TEST(FrameScaler, ProbeEstimateSubtractsFixedCosts) {
+TEST(FrameScaler, TheTimingFramesEstimateSubtractsFixedCosts) {
     // 2 ms at 5 % of the side: 800 ms for the whole frame if all of it were per pixel.
-    EXPECT_NEAR(FrameScaler::estimateFullFrame(2.0), 2.0 / (0.05 * 0.05), 1e-3); // kProbeScale is a float
+    EXPECT_NEAR(FrameScaler::estimateFullFrame(2.0), 2.0 / (0.05 * 0.05), 1e-3); // kTimingScale is a float
     // 2 ms at 5 %, 3 ms at 15 %: 1 ms per 0.02 of area; fixed costs do not grow with the area.
     const double estimate = FrameScaler::estimateFullFrame(2.0, std::pair{0.15f, 3.0});
     EXPECT_NEAR(estimate, 2.0 + 1.0 / (0.15 * 0.15 - 0.05 * 0.05) * (1.0 - 0.05 * 0.05), 1e-3);
@@ -58,5 +58,5 @@ TEST(FrameScaler, ProbeEstimateSubtractsFixedCosts) {
     scaler.setStallLimit(1000.0);
     scaler.capFromEstimate(1000, 1000, 4000.0);
     EXPECT_NEAR(scaler.cap(1000, 1000), std::sqrt(0.2f), 1e-4f);
-    EXPECT_GE(scaler.cap(100000, 100000), FrameScaler::kProbeScale) << "never below the probe's scale";
+    EXPECT_GE(scaler.cap(100000, 100000), FrameScaler::kTimingScale) << "never below the timing frame's scale";
 }

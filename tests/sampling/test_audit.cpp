@@ -111,14 +111,14 @@ TEST_F(AuditTest, PlaneReadouts) {
 
 namespace {
 
-sampling::AuditReport auditText(const std::string& glsl, std::uint64_t samples = 20000, float probeDistance = 3.0f) {
+sampling::AuditReport auditText(const std::string& glsl, std::uint64_t samples = 20000, float truncationReach = 3.0f) {
     auto sdf = shaders::prepareSdf(glsl, "known.glsl", {}, shaders::IncludeOptions{});
     EXPECT_TRUE(sdf.ok()) << glsl;
     sampling::AuditOptions options;
     options.samples = samples;
     options.seed = 7;
     options.convergence = false;
-    options.probeDistance = probeDistance;
+    options.truncationReach = truncationReach;
     auto report = sampling::auditField(sdf, options, {});
     EXPECT_TRUE(report.hasValue()) << (report ? "" : report.error().message);
     return report ? *report : sampling::AuditReport{};

@@ -43,7 +43,7 @@ ViewportWidget::ViewportWidget(QWidget* parent)
     m_settleTimer.setSingleShot(true);
     m_settleTimer.setInterval(1500);
     connect(&m_settleTimer, &QTimer::timeout, this, [this] {
-        if (m_interacting || m_needsProbe || !context() || !isValid()) return;
+        if (m_interacting || m_needsTiming || !context() || !isValid()) return;
         makeCurrent();
         const bool changed = m_renderer->settleMarch(m_settleFrameMilliseconds);
         doneCurrent();
@@ -84,7 +84,7 @@ std::vector<shaders::Diagnostic> ViewportWidget::setSdf(const shaders::PreparedS
     if (!shaders::hasErrors(diagnostics)) m_pictureSource = std::make_unique<shaders::PreparedSdf>(sdf);
     if (!shaders::hasErrors(diagnostics)) {
         m_currentSdf = std::make_unique<shaders::PreparedSdf>(sdf);
-        m_needsProbe = true;
+        m_needsTiming = true;
         m_scaler.clearCap();
     }
     update();
@@ -274,7 +274,7 @@ void ViewportWidget::initializeGL() {
         for (const auto& d : diagnostics) log::warning("shaders", shaders::formatDiagnostic(d));
         if (!shaders::hasErrors(diagnostics)) {
             m_currentSdf = std::move(m_pendingSdf);
-            m_needsProbe = true;
+            m_needsTiming = true;
             m_scaler.clearCap();
         }
         m_pendingSdf.reset();
@@ -314,19 +314,19 @@ void ViewportWidget::paintGL() {
         emit frameRendered(m_lastFrameMilliseconds, 1.0f);
         return;
     }
-    // A new SDF: the probe sizes its first frame, which follows in this same paint (a second
+    // A new SDF: the timing frame sizes its first frame, which follows in this same paint (a second
     // paint request would wait for the next update cycle, 15 to 30 ms here). For a slow SDF the
-    // last probe drawn is this paint's frame, and the full-resolution frame comes in the next.
-    const std::optional<ProbeFrame> probeFrame = m_needsProbe ? probeNewSdf(width, height) : std::nullopt;
+    // last timing frame drawn is this paint's frame, and the full-resolution frame comes in the next.
+    const std::optional<TimingFrame> timingFrame = m_needsTiming ? timeNewSdf(width, height) : std::nullopt;
     if (m_warmProgram) { // settleMarch() changed the program: its code generation on a tiny draw
         m_warmProgram = false;
-        m_renderer->renderScaled(width, height, renderer::FrameScaler::kProbeScale, m_camera, m_time, true);
+        m_renderer->renderScaled(width, height, renderer::FrameScaler::kTimingScale, m_camera, m_time, true);
     }
     renderer::FrameStats stats;
     float scale = 1.0f;
-    if (probeFrame) {
-        stats.cpuMilliseconds = probeFrame->milliseconds;
-        scale = probeFrame->scale;
+    if (timingFrame) {
+        stats.cpuMilliseconds = timingFrame->milliseconds;
+        scale = timingFrame->scale;
     } else {
         scale = m_scaler.scaleFor(width, height, m_interacting);
         // finish: the status bar and the scale choice see what the frame really cost.
@@ -379,7 +379,7 @@ void ViewportWidget::paintGL() {
         painter.drawText(box, Qt::TextWordWrap, m_overlay);
     }
     emit frameRendered(stats.cpuMilliseconds, scale);
-    if (probeFrame && !m_refineTimer.isActive()) update(); // the full-resolution frame (not while the camera moves)
+    if (timingFrame && !m_refineTimer.isActive()) update(); // the full-resolution frame (not while the camera moves)
 }
 
 float ViewportWidget::resolutionCap() const {
@@ -387,34 +387,35 @@ float ViewportWidget::resolutionCap() const {
     return m_scaler.cap(int(std::lround(width() * ratio)), int(std::lround(height() * ratio)));
 }
 
-std::optional<ViewportWidget::ProbeFrame> ViewportWidget::probeNewSdf(int width, int height) {
-    m_needsProbe = false;
+std::optional<ViewportWidget::TimingFrame> ViewportWidget::timeNewSdf(int width, int height) {
+    m_needsTiming = false;
     // 5 % of the side, 0.25 % of the pixels: cheap even for a shader that loops for long. The
     // first draw of a program includes the driver's code generation (llvmpipe compiles lazily):
     // draw twice and time the second.
-    constexpr float kProbeScale = renderer::FrameScaler::kProbeScale;
+    constexpr float kTimingScale = renderer::FrameScaler::kTimingScale;
     const double stallLimit = m_scaler.stallLimit();
-    renderer::FrameStats probe = m_renderer->renderScaled(width, height, kProbeScale, m_camera, m_time, true);
-    float probeScale = kProbeScale; // of the last probe drawn
-    if (probe.cpuMilliseconds <= stallLimit) probe = m_renderer->renderScaled(width, height, kProbeScale, m_camera, m_time, true);
-    double estimate = renderer::FrameScaler::estimateFullFrame(probe.cpuMilliseconds);
-    if (estimate > m_scaler.frameBudget() && probe.cpuMilliseconds <= stallLimit) {
+    renderer::FrameStats timing = m_renderer->renderScaled(width, height, kTimingScale, m_camera, m_time, true);
+    float timingScale = kTimingScale; // of the last timing frame drawn
+    if (timing.cpuMilliseconds <= stallLimit)
+        timing = m_renderer->renderScaled(width, height, kTimingScale, m_camera, m_time, true);
+    double estimate = renderer::FrameScaler::estimateFullFrame(timing.cpuMilliseconds);
+    if (estimate > m_scaler.frameBudget() && timing.cpuMilliseconds <= stallLimit) {
         // Small frames are dominated by fixed costs (stretching, synchronisation): measure at 3x
         // the side too and extrapolate from the cost per pixel.
-        constexpr float kLarger = 3.0f * kProbeScale;
+        constexpr float kLarger = 3.0f * kTimingScale;
         renderer::FrameStats larger = m_renderer->renderScaled(width, height, kLarger, m_camera, m_time, true);
-        estimate = renderer::FrameScaler::estimateFullFrame(probe.cpuMilliseconds, std::pair{kLarger, larger.cpuMilliseconds});
-        probe = larger;
-        probeScale = kLarger;
+        estimate = renderer::FrameScaler::estimateFullFrame(timing.cpuMilliseconds, std::pair{kLarger, larger.cpuMilliseconds});
+        timing = larger;
+        timingScale = kLarger;
     }
-    if (probe.cpuMilliseconds > stallLimit && m_lastGoodSdf) {
-        // Even the probe is over the limit: this SDF cannot be drawn interactively here.
+    if (timing.cpuMilliseconds > stallLimit && m_lastGoodSdf) {
+        // Even the timing frame is over the limit: this SDF cannot be drawn interactively here.
         (void)m_renderer->setSdf(*m_lastGoodSdf);
         m_currentSdf.reset();
         m_scaler.clearCap();
         emit performanceWarning(tr("The new SDF needs %1 s for a frame at 5 % resolution (a runaway loop?): the previous SDF is "
                                    "back on screen; fix the loop or render it with sdfwb --batch render")
-                                    .arg(probe.cpuMilliseconds / 1000.0, 0, 'f', 1));
+                                    .arg(timing.cpuMilliseconds / 1000.0, 0, 'f', 1));
         return std::nullopt; // the previous SDF's frame is drawn in this paint
     }
     m_lastGoodSdf = std::move(m_currentSdf);
@@ -426,13 +427,13 @@ std::optional<ViewportWidget::ProbeFrame> ViewportWidget::probeNewSdf(int width,
                                     .arg(estimate / 1000.0, 0, 'f', 1)
                                     .arg(int(resolutionCap() * 100.0f)));
     }
-    emit frameRendered(probe.cpuMilliseconds, kProbeScale);
+    emit frameRendered(timing.cpuMilliseconds, kTimingScale);
     if (estimate > m_scaler.frameBudget() && !m_interacting) {
-        // A slow SDF: the last probe (its picture fills the frame) is its first frame, the
+        // A slow SDF: the last timing frame (its picture fills the frame) is its first frame, the
         // full-resolution one comes right after it. Moving frames start from the scale that costs
         // half the frame budget.
         m_scaler.seedScale(estimate);
-        return ProbeFrame{probeScale, probe.cpuMilliseconds};
+        return TimingFrame{timingScale, timing.cpuMilliseconds};
     }
     return std::nullopt;
 }

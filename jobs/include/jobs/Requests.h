@@ -117,7 +117,7 @@ struct AuditRequest {
     std::uint64_t samples = 100000;
     std::uint64_t seed = 0;
     float time = 0.0f;
-    float probeDistance = 3.0f;     // truncation: probe outward from the surface this far
+    float truncationReach = 3.0f;   // truncation: probe outward from the surface this far
     std::optional<PlaneSpec> plane; // set: plane readouts instead of the volume audit
     int resolution = 256;           // grid side on the plane
     FamilySpec family;              // set: the volume audit of every instance (no plane)
@@ -307,7 +307,7 @@ struct AuditInstance {
 struct AuditJobReport {
     std::string sdf;
     std::string entry;
-    float probeDistance = 0.0f;
+    float truncationReach = 0.0f;
     std::vector<shaders::ParameterValue> parameters; // every declared parameter's value (not a family)
     std::optional<sampling::AuditReport> volume;
     std::optional<PlaneSpec> plane;

@@ -2,7 +2,7 @@
 // How much of a frame the viewport traces: while the camera moves, a scale chosen from the last
 // frames' cost so a frame takes about the frame budget; at rest, full resolution unless a frame
 // would hold the UI past the stall limit, in which case a pixel cap (which survives resizes: a
-// 4K window gets a lower scale). A new SDF is first measured on a probe frame at kProbeScale.
+// 4K window gets a lower scale). A new SDF is first measured on a timing frame at kTimingScale.
 // GL-free and Qt-free: the viewport feeds it frame times (tests/renderer/test_frame_scaler.cpp).
 
 #include <optional>
@@ -12,7 +12,7 @@ namespace sdfwb::renderer {
 
 class FrameScaler {
 public:
-    static constexpr float kProbeScale = 0.05f;  // side of the probe frame: 0.25 % of the pixels
+    static constexpr float kTimingScale = 0.05f; // side of the timing frame: 0.25 % of the pixels
     static constexpr float kMinimumScale = 0.1f; // while moving
 
     void setFrameBudget(double milliseconds) { m_frameBudget = milliseconds; }
@@ -32,12 +32,12 @@ public:
     // its first full frame is measured, from a scale that costs half the budget.
     void seedScale(double estimateMilliseconds);
     double frameBudget() const { return m_frameBudget; }
-    // A new SDF: no cap until its probe frame says otherwise.
+    // A new SDF: no cap until its timing frame says otherwise.
     void clearCap() { m_maxPixels = 0.0; }
 
-    // The cost of a full frame estimated from a probe at kProbeScale and, when small frames are
+    // The cost of a full frame estimated from a timing frame at kTimingScale and, when small frames are
     // dominated by fixed costs, a second one at `largerScale`.
-    static double estimateFullFrame(double probeMilliseconds, std::optional<std::pair<float, double>> larger = std::nullopt);
+    static double estimateFullFrame(double timingMilliseconds, std::optional<std::pair<float, double>> larger = std::nullopt);
     // Caps frames of width x height so one is expected to take 80 % of the stall limit.
     void capFromEstimate(int width, int height, double estimateMilliseconds);
 

@@ -90,7 +90,7 @@ struct AuditOptions {
     float time = 0.0f;
     bool convergence = true;                                 // also run N/16 and N/4 to show how the estimates tighten
     std::vector<shaders::Diagnostic>* diagnostics = nullptr; // receives the compiler's messages when the SDF does not compile
-    float probeDistance = 3.0f;                              // truncation: probe outward from the surface this far (plateaus
+    float truncationReach = 3.0f;                            // truncation: probe outward from the surface this far (plateaus
                                                              // beyond the unit cube are found too)
     std::vector<shaders::ParameterSetting> parameters;       // the SDF's parameter values (others: defaults)
 };

@@ -76,7 +76,7 @@ public:
     void setFrameBudget(double milliseconds) { m_scaler.setFrameBudget(milliseconds); }
     // No frame may hold the UI longer than about this (default 1500 ms). A new SDF is first drawn
     // at 5 % resolution; if the full frame would exceed the limit (a runaway loop, a huge
-    // fractal), frames are capped at the resolution that fits, and if even the probe frame is
+    // fractal), frames are capped at the resolution that fits, and if even the timing frame is
     // over it the previous SDF comes back. performanceWarning() says which.
     void setStallLimit(double milliseconds) { m_scaler.setStallLimit(milliseconds); }
     // The largest scale frames are drawn at now (1 without a cap).
@@ -174,14 +174,14 @@ protected:
     void leaveEvent(QEvent* event) override;
 
 private:
-    // Times a new SDF at kProbeScale and sets the resolution cap (or reverts to the last good
-    // SDF). For an SDF whose full frame would take longer than the frame budget, the last probe's
+    // Times a new SDF at kTimingScale and sets the resolution cap (or reverts to the last good
+    // SDF). For an SDF whose full frame would take longer than the frame budget, the last timing frame's
     // picture is its first frame (returned); otherwise the paint that called it draws that frame.
-    struct ProbeFrame {
+    struct TimingFrame {
         float scale;
         double milliseconds;
     };
-    std::optional<ProbeFrame> probeNewSdf(int width, int height);
+    std::optional<TimingFrame> timeNewSdf(int width, int height);
     void releaseGl();
     void interacted(); // a camera move happened: render cheaply now, refine later
     void flyStep();
@@ -203,12 +203,12 @@ private:
     std::uint64_t m_fieldGeneration = 0;
     bool m_fieldBroken = false;
     float m_meshScale = 0.0f;
-    std::uint64_t m_sdfGeneration = 0;     // counts SDFs that passed their probe frame
+    std::uint64_t m_sdfGeneration = 0;     // counts SDFs that passed their timing frame
     std::uint64_t m_overlayGeneration = 0; // the SDF the overlay's shader was built for
     std::unique_ptr<shaders::PreparedSdf> m_pendingSdf;
-    std::unique_ptr<shaders::PreparedSdf> m_currentSdf;  // compiled, waiting for its probe frame
-    std::unique_ptr<shaders::PreparedSdf> m_lastGoodSdf; // passed its probe frame
-    bool m_needsProbe = false;
+    std::unique_ptr<shaders::PreparedSdf> m_currentSdf;  // compiled, waiting for its timing frame
+    std::unique_ptr<shaders::PreparedSdf> m_lastGoodSdf; // passed its timing frame
+    bool m_needsTiming = false;
     renderer::FrameScaler m_scaler; // resolution while moving, and the cap for slow SDFs
     renderer::ShadingSettings m_shading;
     renderer::TraceSettings m_trace;

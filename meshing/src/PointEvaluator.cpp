@@ -1,4 +1,4 @@
-#include "FieldProbe.h"
+#include "PointEvaluator.h"
 
 #include <sampling/Sampler.h>
 #include <sampling/SamplerLibrary.h>
@@ -12,8 +12,8 @@
 
 namespace sdfwb::meshing::detail {
 
-Expected<void> FieldProbe::build(const shaders::PreparedSdf& sdf, const std::string& pattern, float time,
-                                 const std::vector<shaders::ParameterSetting>& parameters) {
+Expected<void> PointEvaluator::build(const shaders::PreparedSdf& sdf, const std::string& pattern, float time,
+                                     const std::vector<shaders::ParameterSetting>& parameters) {
     m_time = time;
     m_parameters = parameters;
     if (pattern == "analysis/points.glsl") { // the caller's points: the one field evaluator
@@ -28,13 +28,13 @@ Expected<void> FieldProbe::build(const shaders::PreparedSdf& sdf, const std::str
     return {};
 }
 
-void FieldProbe::setClip(glm::dvec3 low, glm::dvec3 high) {
+void PointEvaluator::setClip(glm::dvec3 low, glm::dvec3 high) {
     m_clip = true;
     m_low = low;
     m_high = high;
 }
 
-void FieldProbe::clip(const float* point, float& distance, float* gradient) {
+void PointEvaluator::clip(const float* point, float& distance, float* gradient) {
     // Per axis: how far outside the slab the point lies (negative inside), and which face is nearer.
     glm::dvec3 q, side;
     for (int a = 0; a < 3; ++a) {
@@ -58,7 +58,7 @@ void FieldProbe::clip(const float* point, float& distance, float* gradient) {
     for (int a = 0; a < 3; ++a) gradient[a] = float(g[a]);
 }
 
-sampling::SamplingJob FieldProbe::job(std::uint64_t count) const {
+sampling::SamplingJob PointEvaluator::job(std::uint64_t count) const {
     sampling::SamplingJob job;
     job.count = count;
     job.time = m_time;
@@ -67,8 +67,8 @@ sampling::SamplingJob FieldProbe::job(std::uint64_t count) const {
     return job;
 }
 
-Expected<void> FieldProbe::evaluate(const std::vector<float>& points, std::vector<float>& distances,
-                                    std::vector<float>* gradients, float gradientStep) {
+Expected<void> PointEvaluator::evaluate(const std::vector<float>& points, std::vector<float>& distances,
+                                        std::vector<float>* gradients, float gradientStep) {
     const std::uint64_t n = points.size() / 3;
     distances.resize(n);
     if (gradients) gradients->resize(3 * n);
@@ -86,8 +86,8 @@ Expected<void> FieldProbe::evaluate(const std::vector<float>& points, std::vecto
     return {};
 }
 
-Expected<void> FieldProbe::evaluateLattice(const std::vector<float>& firstPoints, glm::vec3 origin, glm::vec3 step, int block,
-                                           int n, std::vector<float>& distances) {
+Expected<void> PointEvaluator::evaluateLattice(const std::vector<float>& firstPoints, glm::vec3 origin, glm::vec3 step, int block,
+                                               int n, std::vector<float>& distances) {
     const std::uint64_t perBlock = std::uint64_t(block + 1) * std::uint64_t(block + 1) * std::uint64_t(block + 1);
     const std::uint64_t count = firstPoints.size() / 3 * perBlock;
     distances.resize(count);
@@ -133,8 +133,8 @@ Expected<void> FieldProbe::evaluateLattice(const std::vector<float>& firstPoints
     return {};
 }
 
-Expected<void> FieldProbe::generate(std::uint64_t n, std::uint64_t seed, std::vector<float>& positions,
-                                    std::vector<float>& distances, std::vector<float>& gradients) {
+Expected<void> PointEvaluator::generate(std::uint64_t n, std::uint64_t seed, std::vector<float>& positions,
+                                        std::vector<float>& distances, std::vector<float>& gradients) {
     positions.assign(3 * n, 0.0f);
     distances.assign(n, 0.0f);
     gradients.assign(3 * n, 0.0f);

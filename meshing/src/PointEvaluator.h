@@ -16,7 +16,7 @@
 
 namespace sdfwb::meshing::detail {
 
-class FieldProbe {
+class PointEvaluator {
 public:
     // `pattern`: "analysis/points.glsl" (the caller's points) or a sampler name ("surface").
     Expected<void> build(const shaders::PreparedSdf& sdf, const std::string& pattern, float time,
@@ -39,11 +39,11 @@ public:
     // the cut changed.
     void setClip(glm::dvec3 low, glm::dvec3 high);
     std::uint64_t clipped() const { return m_clipped; }
-    ~FieldProbe() { m_compute.releaseGl(); }
+    ~PointEvaluator() { m_compute.releaseGl(); }
 
 private:
     static constexpr std::uint32_t kChunk = 1u << 16;     // dispatches of 64 k points: their buffers stay in cache
-    sampling::SamplingJob job(std::uint64_t count) const; // this probe's time and parameters
+    sampling::SamplingJob job(std::uint64_t count) const; // this evaluator's time and parameters
     sampling::FieldEvaluator m_points;                    // built for analysis/points.glsl
     renderer::SampleCompute m_compute;                    // built for any other pattern
     void clip(const float* point, float& distance, float* gradient);
