@@ -341,6 +341,13 @@ void MainWindow::createStatusBar() {
         statusBar()->showMessage(message, 20000);
     });
     connect(m_document, &SdfDocument::sdfApplied, this, [this] { m_logFrameTime = true; });
+    // The viewport fell back to the previous SDF: say that jobs run it too (after the warning).
+    connect(m_document, &SdfDocument::sdfReverted, this, [this](const QString& file) {
+        const QString note = tr("Plane readouts, probes, exports and sampling run it too (%1); the editor keeps the new text.")
+                                 .arg(file.isEmpty() ? tr("the unsaved text") : QFileInfo(file).fileName());
+        log::warning("viewport", note.toStdString());
+        statusBar()->showMessage(statusBar()->currentMessage() + " " + note, 20000);
+    });
     connect(m_viewport, &widgets::ViewportWidget::frameRendered, this, [this](double milliseconds, float scale) {
         if (m_logFrameTime && scale >= 1.0f) {
             m_logFrameTime = false;

@@ -20,11 +20,22 @@ SdfDocument::SdfDocument(widgets::ViewportWidget* viewport, QObject* parent) : Q
     m_debounce.setTimerType(Qt::PreciseTimer); // a coarse timer may fire 6 ms late
     m_debounce.setInterval(120);
     connect(&m_debounce, &QTimer::timeout, this, [this] { startCheck(m_pendingText); });
+    // The viewport times each new SDF on its first frame: one that passes is the fallback for
+    // the next; one that would stall is replaced by that fallback, in the viewport and in jobs.
+    connect(m_viewport, &widgets::ViewportWidget::sdfTimed, this, [this] { m_timed = m_good; });
+    connect(m_viewport, &widgets::ViewportWidget::sdfReverted, this, [this] {
+        if (m_timed.text.isEmpty()) return;
+        m_good = m_timed;
+        m_reverted = true;
+        emit sdfReverted(m_good.path);
+    });
 }
 
 jobs::SdfInput SdfDocument::input() const {
-    jobs::SdfInput input{m_path.toStdString(), m_entry.toStdString(), (m_goodText.isEmpty() ? m_text : m_goodText).toStdString(),
-                         shaders::valuesOf(m_parameterValues)};
+    // The viewport's SDF, except before anything compiled and for a new file that has not yet.
+    const bool shown = !m_good.text.isEmpty() && (m_good.path == m_path || m_reverted);
+    jobs::SdfInput input{(shown ? m_good.path : m_path).toStdString(), m_entry.toStdString(),
+                         (shown ? m_good.text : m_text).toStdString(), shaders::valuesOf(m_parameterValues)};
     input.channels.assign(m_channels.begin(), m_channels.end());
     while (!input.channels.empty() && input.channels.back().empty()) input.channels.pop_back();
     if (isMesh()) {
@@ -146,9 +157,8 @@ void SdfDocument::finishCheck(std::uint64_t generation, shaders::PreparedSdf pre
             emit diagnosticsChanged(m_diagnostics);
             return;
         }
-        m_signature = prepared.signature;
-        m_goodText = m_checkedText;
-        m_goodSource = prepared;
+        m_good = {m_path, m_checkedText, prepared, prepared.signature};
+        m_reverted = false;
         emit sdfApplied();
     });
 }

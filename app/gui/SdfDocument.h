@@ -32,11 +32,8 @@ public:
     SdfDocument(widgets::ViewportWidget* viewport, QObject* parent = nullptr);
 
     const QString& path() const { return m_path; }
-    // A new file: the last good text was another file's.
-    void setPath(const QString& path) {
-        if (path != m_path) m_goodText.clear();
-        m_path = path;
-    }
+    // A new file: until it compiles, jobs run its text (the last good text was another file's).
+    void setPath(const QString& path) { m_path = path; }
     // A triangle mesh as the document's file (File > Open mesh): the text is GLSL over the mesh's
     // field sdfwb_meshSdf(p) (meshfield/), checked and traced with the mesh and passed to jobs with
     // the same sign and normalisation ("winding", "unit-cube", ...; empty: the defaults).
@@ -48,12 +45,16 @@ public:
     const QString& meshSign() const { return m_meshSign; }
     const QString& meshNormalize() const { return m_meshNormalize; }
 
-    // The editor's latest text, and the last text that compiled and went to the viewport.
+    // The editor's latest text, and the text the viewport shows (the last that compiled and
+    // passed its timing frame, or the one before when the viewport fell back from a stalling one).
     const QString& text() const { return m_text; }
-    const QString& lastGoodText() const { return m_goodText; }
-    const shaders::PreparedSdf& lastGoodSource() const { return m_goodSource; }
+    const QString& lastGoodText() const { return m_good.text; }
+    const shaders::PreparedSdf& lastGoodSource() const { return m_good.source; }
+    // Whether the viewport fell back to the previous SDF (a frame of the new one would stall);
+    // jobs then run that previous SDF too, until new text is applied.
+    bool reverted() const { return m_reverted; }
     // What a job runs on: the path (for includes and labels), the entry, and the viewport's text
-    // (the editor's text until something has compiled).
+    // (the editor's text until something has compiled, and for a newly opened file until it does).
     jobs::SdfInput input() const;
 
     // The parameter values the viewport draws with (and jobs run with); uniforms, no recompile.
@@ -69,7 +70,7 @@ public:
     // effect at the next check. `signature()` is what the last good check found.
     void setEntry(const QString& entry) { m_entry = entry; }
     const QString& entry() const { return m_entry; }
-    const shaders::SdfSignature& signature() const { return m_signature; }
+    const shaders::SdfSignature& signature() const { return m_good.signature; }
 
     // The image bound to a Shadertoy's iChannelN (empty: the noise texture); takes effect at the
     // next check, and jobs started from the document use it too.
@@ -86,6 +87,8 @@ signals:
     void diagnosticsChanged(const std::vector<shaders::Diagnostic>& diagnostics);
     // The viewport now shows the new text.
     void sdfApplied();
+    // The viewport fell back to the previous SDF, which jobs now run too; `file` is its path.
+    void sdfReverted(const QString& file);
     // The functions the checked text defines changed (for autocompletion).
     void signaturesChanged(const QStringList& signatures);
 
@@ -98,12 +101,18 @@ private:
     QString m_pendingText;
     QString m_text;
     QString m_checkedText; // the text of the newest check
-    QString m_goodText;
-    shaders::PreparedSdf m_goodSource;
+    // What the viewport shows, and the last SDF that passed its timing frame (what the viewport
+    // falls back to when a new one would stall).
+    struct Shown {
+        QString path, text;
+        shaders::PreparedSdf source;
+        shaders::SdfSignature signature;
+    };
+    Shown m_good, m_timed;
+    bool m_reverted = false;
     QString m_entry;
     QString m_meshSign, m_meshNormalize;
     std::array<std::string, shaders::kShadertoyChannels> m_channels;
-    shaders::SdfSignature m_signature;
     QTimer m_debounce;
     std::uint64_t m_generation = 0;
     std::vector<shaders::Diagnostic> m_diagnostics;

@@ -557,6 +557,15 @@ TEST(Viewport, SlowShaderIsCappedThenRevertedNeverFreezesTheWindow) {
     ASSERT_TRUE(window.openFile(loop));
     ASSERT_TRUE(waitFor([&] { return !warnings.isEmpty(); }, 60000));
     EXPECT_TRUE(warnings.back().contains("previous SDF")) << warnings.back().toStdString();
+    // Jobs run what the viewport shows: the sphere, not the loop the editor holds (issue 34, point 3).
+    ASSERT_TRUE(waitFor([&] { return window.document()->reverted(); }));
+    const jobs::SdfInput input = window.document()->input();
+    EXPECT_TRUE(QString::fromStdString(input.sdf).endsWith("Sphere.glsl")) << input.sdf;
+    EXPECT_EQ(QString::fromStdString(input.source), window.document()->lastGoodText());
+    EXPECT_FALSE(QString::fromStdString(input.source).contains("100000000")) << "the loop's text went to the jobs";
+    EXPECT_TRUE(window.editor()->text().contains("100000000")) << "the editor keeps the new text";
+    EXPECT_TRUE(window.statusBar()->currentMessage().contains("run it too (Sphere.glsl)"))
+        << window.statusBar()->currentMessage().toStdString();
     // Back to the normal limit (at 20 ms the sphere's own full frame may be capped too), then
     // compare a full-resolution frame; the corner overlay names the open file, so a small
     // difference remains.

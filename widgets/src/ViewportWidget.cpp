@@ -416,9 +416,11 @@ std::optional<ViewportWidget::TimingFrame> ViewportWidget::timeNewSdf(int width,
         emit performanceWarning(tr("The new SDF needs %1 s for a frame at 5 % resolution (a runaway loop?): the previous SDF is "
                                    "back on screen; fix the loop or render it with sdfwb --batch render")
                                     .arg(timing.cpuMilliseconds / 1000.0, 0, 'f', 1));
+        emit sdfReverted();
         return std::nullopt; // the previous SDF's frame is drawn in this paint
     }
     m_lastGoodSdf = std::move(m_currentSdf);
+    emit sdfTimed();
     ++m_sdfGeneration;
     if (estimate > stallLimit) {
         m_scaler.capFromEstimate(width, height, estimate);

@@ -153,6 +153,10 @@ signals:
     void cameraChanged(const sdfwb::renderer::Camera& camera);
     void planeDragged(const sdfwb::renderer::CuttingPlane& plane);
     void contextReady(const QString& description);
+    // A new SDF passed its timing frame (it stays on screen), or would stall even at 5 % resolution
+    // and the last one that passed is back (sdfReverted, after performanceWarning).
+    void sdfTimed();
+    void sdfReverted();
     // A frame would take too long: `message` says what was done (resolution capped, SDF reverted).
     void performanceWarning(const QString& message);
     // The probe tool's click: pixel (x, y), top row 0, of a width x height frame.
