@@ -45,11 +45,11 @@ JobResult<AuditJobReport> run(const AuditRequest& request, const ProgressSink& p
                                               request.family.randomize, request.seed);
     if (!instances)
         return JobError{
-            Failure::Usage, (request.family.randomize ? "--randomize: " : "--sweep: ") + instances.error().message, {}};
+            Failure::Usage, (request.family.randomize ? "'randomize': " : "'sweep': ") + instances.error().message, {}};
     options.convergence = false; // one estimate per instance; the convergence study is the single audit's
     for (std::size_t k = 0; k < instances->size(); ++k) {
         auto resolved = shaders::resolveParameters(sdf->prepared.parameters, (*instances)[k]);
-        if (!resolved) return JobError{Failure::Usage, "--param: " + sdf->label + ": " + resolved.error().message, {}};
+        if (!resolved) return JobError{Failure::Usage, "'params': " + sdf->label + ": " + resolved.error().message, {}};
         options.parameters = resolved->settings;
         ProgressSink step{progress.report
                               ? ProgressFunction([&](std::uint64_t, std::uint64_t) { progress(k, instances->size()); })

@@ -21,18 +21,18 @@ std::optional<JobError> checkBoundsAndTime(const glm::vec3& low, const glm::vec3
             return JobError{Failure::Usage,
                             "--bounds: expected finite MINX,MINY,MINZ,MAXX,MAXY,MAXZ with each maximum above its minimum",
                             {}};
-    if (!std::isfinite(time)) return JobError{Failure::Usage, "--time: expected a finite number", {}};
+    if (!std::isfinite(time)) return JobError{Failure::Usage, "'time': expected a finite number", {}};
     return std::nullopt;
 }
 
 // Everything but the output file.
 std::optional<JobError> validateSettings(const MeshRequest& request) {
     if (request.resolution < 2 || request.resolution > 2048)
-        return JobError{Failure::Usage, "--resolution: must be 2..2048, got " + std::to_string(request.resolution), {}};
+        return JobError{Failure::Usage, "'resolution': must be 2..2048, got " + std::to_string(request.resolution), {}};
     if (auto error = checkBoundsAndTime(request.boundsMin, request.boundsMax, request.time)) return error;
     if (request.lipschitz && (!std::isfinite(*request.lipschitz) || *request.lipschitz < 0.0f))
-        return JobError{Failure::Usage, "--lipschitz: expected a finite number >= 0 (0 skips nothing)", {}};
-    if (request.errorSamples > 10000000) return JobError{Failure::Usage, "--error-samples: at most 10000000", {}};
+        return JobError{Failure::Usage, "'lipschitz': expected a finite number >= 0 (0 skips nothing)", {}};
+    if (request.errorSamples > 10000000) return JobError{Failure::Usage, "'error_samples': at most 10000000", {}};
     ParamsRequest sdfOnly{request.sdf};
     return validate(sdfOnly); // the SDF's name, entry and parameter values
 }
@@ -42,13 +42,13 @@ std::optional<JobError> validateSettings(const MeshRequest& request) {
 std::optional<JobError> validate(const MeshRequest& request) {
     if (!meshing::canWriteMesh(request.output))
         return JobError{
-            Failure::Usage, "--output: '" + request.output + "': unsupported mesh type (use .ply, .obj, .stl or .glb)", {}};
+            Failure::Usage, "'output': '" + request.output + "': unsupported mesh type (use .ply, .obj, .stl or .glb)", {}};
     const std::filesystem::path folder =
         std::filesystem::path(request.output).parent_path().empty() ? "." : std::filesystem::path(request.output).parent_path();
     std::error_code ec;
     if (!std::filesystem::is_directory(folder, ec))
         return JobError{
-            Failure::Usage, "--output: '" + request.output + "': folder '" + folder.string() + "' does not exist", {}};
+            Failure::Usage, "'output': '" + request.output + "': folder '" + folder.string() + "' does not exist", {}};
     return validateSettings(request);
 }
 
@@ -176,19 +176,19 @@ JobResult<MeshReport> run(const MeshRequest& request, const ProgressSink& progre
 namespace sdfwb::jobs {
 
 std::optional<JobError> validate(const EvalRequest& request) {
-    if (request.mesh.empty()) return JobError{Failure::Usage, "--mesh: no mesh file given", {}};
+    if (request.mesh.empty()) return JobError{Failure::Usage, "'mesh': no mesh file given", {}};
     std::error_code ec;
     if (!std::filesystem::is_regular_file(request.mesh, ec))
-        return JobError{Failure::Usage, "--mesh: '" + request.mesh + "': no such file", {}};
-    if (request.points < 100 || request.points > 10000000) return JobError{Failure::Usage, "--points: must be 100..10000000", {}};
+        return JobError{Failure::Usage, "'mesh': '" + request.mesh + "': no such file", {}};
+    if (request.points < 100 || request.points > 10000000) return JobError{Failure::Usage, "'points': must be 100..10000000", {}};
     if (!(request.tau > 0.0f) || !std::isfinite(request.tau))
-        return JobError{Failure::Usage, "--tau: must be a positive number", {}};
+        return JobError{Failure::Usage, "'tau': must be a positive number", {}};
     if (request.occupancyResolution < 0 || request.occupancyResolution > 512)
-        return JobError{Failure::Usage, "--occupancy-resolution: must be 0..512 (0: no IoU)", {}};
+        return JobError{Failure::Usage, "'occupancy_resolution': must be 0..512 (0: no IoU)", {}};
     if (!(request.edgeRadius >= 0.0f) || !std::isfinite(request.edgeRadius))
-        return JobError{Failure::Usage, "--edge-radius: must be 0 (no edge measures) or a positive number", {}};
+        return JobError{Failure::Usage, "'edge_radius': must be 0 (no edge measures) or a positive number", {}};
     if (!(request.edgeAngle > 0.0f && request.edgeAngle < 180.0f))
-        return JobError{Failure::Usage, "--edge-angle: must be between 0 and 180 degrees", {}};
+        return JobError{Failure::Usage, "'edge_angle': must be between 0 and 180 degrees", {}};
     if (auto error = checkBoundsAndTime(request.boundsMin, request.boundsMax, request.time)) return error;
     ParamsRequest sdfOnly{request.sdf};
     return validate(sdfOnly);

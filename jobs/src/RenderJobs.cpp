@@ -337,7 +337,7 @@ JobResult<AnimateReport> run(const AnimateRequest& request, const ProgressSink& 
         endValues.push_back(value);
     }
     auto end = shaders::resolveParameters(sdf->prepared.parameters, endValues);
-    if (!end) return JobError{Failure::Usage, "--param-end: " + sdf->label + ": " + end.error().message, {}};
+    if (!end) return JobError{Failure::Usage, "'params_end': " + sdf->label + ": " + end.error().message, {}};
     report.warnings.insert(report.warnings.end(), end->warnings.begin(), end->warnings.end());
     const bool keyframed = !request.paramsEnd.empty();
     if (!request.turntable && !sdf->prepared.usesTime() && !keyframed) {

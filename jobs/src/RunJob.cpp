@@ -424,14 +424,14 @@ struct IgnoreSigpipe {
 
 std::optional<JobError> validate(const RunRequest& request) {
     if (request.manifest.empty()) return usage("run: no manifest given");
-    if (request.worldSize < 1) return usage("--world-size: must be at least 1");
+    if (request.worldSize < 1) return usage("'world_size': must be at least 1");
     if (request.rank >= request.worldSize)
-        return usage("--rank: must be below --world-size (" + std::to_string(request.worldSize) + "), got " +
+        return usage("'rank': must be below 'world_size' (" + std::to_string(request.worldSize) + "), got " +
                      std::to_string(request.rank));
     if (!request.items.empty() && request.worldSize > 1)
-        return usage("--item: names the items to run; it cannot be combined with --world-size");
+        return usage("'items': names the items to run; it cannot be combined with 'world_size'");
     if (!std::isfinite(request.itemTimeout) || request.itemTimeout < 0.0)
-        return usage("--item-timeout: expected seconds >= 0 (0: no limit)");
+        return usage("'item_timeout': expected seconds >= 0 (0: no limit)");
     const fs::path binary = executable(request);
     std::error_code ec;
     if (request.executable.empty() && binary.filename() != "sdfwb")
@@ -440,12 +440,12 @@ std::optional<JobError> validate(const RunRequest& request) {
     const fs::path status = statusPath(request);
     const fs::path folder = status.parent_path().empty() ? fs::path(".") : status.parent_path();
     if (!fs::is_directory(folder, ec))
-        return usage("--status: '" + status.string() + "': folder '" + folder.string() + "' does not exist");
+        return usage("'status': '" + status.string() + "': folder '" + folder.string() + "' does not exist");
     auto items = readManifest(request.manifest);
     if (!items) return usage(items.error().message);
     for (std::uint64_t item : request.items)
         if (item >= items->size())
-            return usage("--item: " + std::to_string(item) + " is past the manifest's last item (" +
+            return usage("'items': " + std::to_string(item) + " is past the manifest's last item (" +
                          std::to_string(items->size() - 1) + ")");
     return std::nullopt;
 }

@@ -39,9 +39,9 @@ std::string indexPath(const std::string& output) {
 
 JobResult<SampleReport> run(const SampleRequest& request, const ProgressSink& progress) {
     if (auto error = validate(request)) return *error;
-    if (request.output.empty()) return JobError{Failure::Usage, "--output: no output file given", {}};
+    if (request.output.empty()) return JobError{Failure::Usage, "'output': no output file given", {}};
     auto sampler = sampling::findSampler(request.pattern, sampling::samplerFolders());
-    if (!sampler) return JobError{Failure::Usage, "--pattern: " + sampler.error().message, {}};
+    if (!sampler) return JobError{Failure::Usage, "'pattern': " + sampler.error().message, {}};
     const sampling::SampleFormat format =
         *(request.format.empty() ? sampling::formatFromPath(request.output) : sampling::parseFormat(request.format));
     auto sdf = openSdf(request.sdf, "sample");
@@ -53,7 +53,7 @@ JobResult<SampleReport> run(const SampleRequest& request, const ProgressSink& pr
                                                request.family.randomize, request.seed);
         if (!family)
             return JobError{
-                Failure::Usage, (request.family.randomize ? "--randomize: " : "--sweep: ") + family.error().message, {}};
+                Failure::Usage, (request.family.randomize ? "'randomize': " : "'sweep': ") + family.error().message, {}};
         instances = std::move(*family);
     }
     std::vector<std::vector<shaders::ParameterSetting>> settings;
@@ -61,7 +61,7 @@ JobResult<SampleReport> run(const SampleRequest& request, const ProgressSink& pr
     report.warnings = sdf->warnings;
     for (const auto& values : instances) {
         auto resolved = shaders::resolveParameters(sdf->prepared.parameters, values);
-        if (!resolved) return JobError{Failure::Usage, "--param: " + sdf->label + ": " + resolved.error().message, {}};
+        if (!resolved) return JobError{Failure::Usage, "'params': " + sdf->label + ": " + resolved.error().message, {}};
         settings.push_back(std::move(resolved->settings));
     }
     renderer::SampleCompute compute;

@@ -165,7 +165,7 @@ private:
 } // namespace
 
 Expected<void> validate(const SamplingJob& job) {
-    if (job.count == 0) return makeError("-n: the sample count must be at least 1");
+    if (job.count == 0) return makeError("'n': the sample count must be at least 1");
     if (job.count > 0xffffffffull)
         return makeError(
             "-n: " + std::to_string(job.count) +
@@ -174,12 +174,12 @@ Expected<void> validate(const SamplingJob& job) {
         return makeError("first_index: " + std::to_string(job.indexOffset) + " + " + std::to_string(job.count) +
                          " samples pass the last sample index 4294967295");
     if (job.shardCount == 0 || job.shardIndex >= job.shardCount)
-        return makeError("--shard: " + std::to_string(job.shardIndex) + "/" + std::to_string(job.shardCount) +
-                         " is not a slice (0 <= K < COUNT)");
+        return makeError("'shard_index', 'shard_count': " + std::to_string(job.shardIndex) + "/" +
+                         std::to_string(job.shardCount) + " is not a slice (0 <= K < COUNT)");
     if (job.chunkSize == 0) return makeError("--chunk: must be at least 1");
-    if (!(job.gradientStep > 0.0f) || !std::isfinite(job.gradientStep)) return makeError("--gradient-step: must be positive");
+    if (!(job.gradientStep > 0.0f) || !std::isfinite(job.gradientStep)) return makeError("'gradient_step': must be positive");
     if (!(job.surfaceTolerance > 0.0f) || !std::isfinite(job.surfaceTolerance))
-        return makeError("--surface-tolerance: must be positive");
+        return makeError("'surface_tolerance': must be positive");
     return {};
 }
 

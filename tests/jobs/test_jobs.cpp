@@ -279,6 +279,8 @@ TEST(JobJson, AuditReportsKeepEveryFindingAndFigure) {
     EXPECT_EQ(toJson(*planeBack), planeJson);
 }
 
+// The library names the request's key ('fps'), as a JSON or Python caller wrote it; the CLI says
+// --fps (tests/app check its messages).
 TEST(Jobs, ValidationNamesTheArgumentBeforeAnyWork) {
     AnimateRequest animate;
     animate.frame.sdf.sdf = "Torus";
@@ -287,7 +289,7 @@ TEST(Jobs, ValidationNamesTheArgumentBeforeAnyWork) {
     auto error = validate(animate);
     ASSERT_TRUE(error);
     EXPECT_EQ(error->failure, Failure::Usage);
-    EXPECT_NE(error->message.find("--fps"), std::string::npos) << error->message;
+    EXPECT_NE(error->message.find("'fps'"), std::string::npos) << error->message;
 
     RenderRequest render;
     render.frame.sdf.sdf = "Torus";
@@ -300,12 +302,12 @@ TEST(Jobs, ValidationNamesTheArgumentBeforeAnyWork) {
     render.frame.plane.normal = glm::vec3(0.0f);
     error = validate(render);
     ASSERT_TRUE(error);
-    EXPECT_NE(error->message.find("--plane"), std::string::npos) << error->message;
+    EXPECT_NE(error->message.find("'plane'"), std::string::npos) << error->message;
     render.frame.plane.normal = {0.0f, 0.0f, 1.0f};
     render.frame.sdf.sdf = "No Such Shape";
     error = validate(render);
     ASSERT_TRUE(error);
-    EXPECT_NE(error->message.find("--sdf"), std::string::npos) << error->message;
+    EXPECT_NE(error->message.find("'sdf'"), std::string::npos) << error->message;
     render.frame.sdf.sdf = "Torus";
     render.frame.sdf.entry = "sdfwb_sdf";
     error = validate(render);
@@ -321,7 +323,7 @@ TEST(Jobs, ValidationNamesTheArgumentBeforeAnyWork) {
     audit.samples = 10;
     error = validate(audit);
     ASSERT_TRUE(error);
-    EXPECT_NE(error->message.find("--samples"), std::string::npos) << error->message;
+    EXPECT_NE(error->message.find("'samples'"), std::string::npos) << error->message;
 }
 
 TEST(Jobs, OpenSdfUsesTheGivenTextNotTheFile) {
@@ -628,4 +630,34 @@ TEST(JobJson, GradeIsTheMeshGradersNameAndEvalItsAlias) {
     EXPECT_TRUE(std::holds_alternative<EvalRequest>(*fromOld));
     const std::string help = standardOutput("--help");
     EXPECT_NE(help.find("  grade "), std::string::npos);
+}
+
+// A library's usage error names the request's key; the CLI says the option that sets it (one
+// table, app/batch/commands/Common.cpp), and the worker protocol keeps the key (the GUI's terms).
+TEST(Jobs, TheCommandLineSaysItsOptionsWhereTheLibraryNamesKeys) {
+    const std::filesystem::path file = std::filesystem::temp_directory_path() / ("sdfwb-keys-" + std::to_string(::getpid()));
+    auto stderrOf = [&](const std::string& request, const std::string& flags) {
+        std::FILE* out = std::fopen(file.c_str(), "w");
+        std::fputs(request.c_str(), out);
+        std::fclose(out);
+        const std::string command =
+            "env -u DISPLAY " + std::string(SDFWB_BINARY) + " --batch request " + file.string() + " " + flags + " 2>&1";
+        std::string output;
+        FILE* pipe = popen(command.c_str(), "r");
+        std::array<char, 4096> buffer;
+        while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) output.append(buffer.data(), n);
+        pclose(pipe);
+        return output;
+    };
+    const std::string animate = R"({"kind": "animate", "sdf": "Sphere", "output": "/tmp/x.mp4", "fps": 0})";
+    EXPECT_NE(stderrOf(animate, "").find("sdfwb: --fps: must be 1..240"), std::string::npos) << stderrOf(animate, "");
+    const std::string render = R"({"kind": "render", "sdf": "Sphere", "output": "/tmp/x.png", "width": 0})";
+    EXPECT_NE(stderrOf(render, "").find("sdfwb: --size: expected WxH"), std::string::npos) << stderrOf(render, "");
+    const std::string sample = R"({"kind": "sample", "sdf": "Sphere", "pattern": "rand", "n": 10, "output": "/tmp/x.npz",
+                                   "shard_index": 3, "shard_count": 2})";
+    EXPECT_NE(stderrOf(sample, "").find("--shard"), std::string::npos) << stderrOf(sample, "");
+    const std::string viaProtocol = stderrOf(animate, "--protocol");
+    EXPECT_NE(viaProtocol.find("'fps': must be 1..240"), std::string::npos) << viaProtocol;
+    EXPECT_EQ(viaProtocol.find("--fps"), std::string::npos) << viaProtocol;
+    std::filesystem::remove(file);
 }

@@ -151,14 +151,14 @@ TEST_F(MeshSdfTest, AMeshFileIsAnSdfForEveryJobAndMeshOptionsAreRefusedElsewhere
     glsl.sign = "parity";
     auto refused = jobs::openSdf(glsl, "sample");
     ASSERT_FALSE(bool(refused));
-    EXPECT_NE(refused.error.message.find("--sign"), std::string::npos) << refused.error.message;
+    EXPECT_NE(refused.error.message.find("'sign'"), std::string::npos) << refused.error.message;
     jobs::SdfInput badSign = input;
     badSign.sign = "inside";
     jobs::SampleRequest badRequest = sample;
     badRequest.sdf = badSign;
     auto bad = jobs::validate(badRequest);
     ASSERT_TRUE(bad.has_value());
-    EXPECT_NE(bad->message.find("--sign"), std::string::npos) << bad->message;
+    EXPECT_NE(bad->message.find("'sign'"), std::string::npos) << bad->message;
     fs::remove_all(folder);
 }
 

@@ -25,7 +25,7 @@ struct SamplingJob;
 namespace sdfwb::jobs {
 
 enum class Failure {
-    Usage,     // the request is malformed: the message names the argument (--output, --sdf, ...)
+    Usage,     // the request is malformed: the message names the request's key ('output', 'sdf'; the CLI says --output)
     Work,      // the work failed: the SDF does not compile, a file cannot be written
     NoGl,      // no usable GL context
     Cancelled, // cancelled through the progress sink; nothing was written
