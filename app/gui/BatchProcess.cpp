@@ -1,7 +1,6 @@
 #include "BatchProcess.h"
 
 #include <jobs/JobJson.h>
-#include <jobs/Protocol.h>
 
 #include <QCoreApplication>
 #include <QProcess>
@@ -34,9 +33,7 @@ bool BatchProcess::start(const jobs::Request& request) {
     if (isRunning()) return false;
     m_process = new QProcess(this);
     m_pending.clear();
-    m_report.clear();
-    m_error = {};
-    m_hasError = false;
+    m_outcome = {};
     m_process->setStandardErrorFile(QProcess::nullDevice()); // log lines only: errors come as messages
     connect(m_process, &QProcess::readyReadStandardOutput, this, &BatchProcess::readOutput);
     connect(m_process, &QProcess::errorOccurred, this, [this](QProcess::ProcessError error) {
@@ -54,8 +51,8 @@ bool BatchProcess::start(const jobs::Request& request) {
         process->deleteLater();
         const bool ok = status == QProcess::NormalExit && exitCode == 0;
         const bool cancelled = status == QProcess::NormalExit && exitCode == 130;
-        jobs::JobError error = m_error;
-        QString message = m_hasError ? describeFailure(m_error) : QString();
+        jobs::JobError error = m_outcome.error;
+        QString message = m_outcome.hasError ? describeFailure(m_outcome.error) : QString();
         if (cancelled) {
             error.failure = jobs::Failure::Cancelled;
             message = tr("Cancelled; nothing was written.");
@@ -69,7 +66,7 @@ bool BatchProcess::start(const jobs::Request& request) {
         if (exitCode == 2) error.failure = jobs::Failure::Usage;
         if (exitCode == 3) error.failure = jobs::Failure::NoGl;
         m_lastError = ok ? jobs::JobError{} : error;
-        emit finished(ok, cancelled, ok ? m_report : std::string(), message);
+        emit finished(ok, cancelled, ok ? m_outcome.report : std::string(), message);
     });
     m_process->start(m_executable, {"--batch", "request", "-", "--protocol"});
     const std::string json = jobs::toJson(request);
@@ -84,27 +81,28 @@ void BatchProcess::cancel() {
 
 void BatchProcess::readOutput() {
     if (!m_process) return;
-    m_pending += m_process->readAllStandardOutput();
+    forEachMessage(*m_process, m_pending, [this](const jobs::WorkerMessage& message) {
+        if (message.kind == jobs::WorkerMessage::Kind::Progress) emit progress(message.done, message.total);
+        m_outcome.keep(message);
+    });
+}
+
+void RequestOutcome::keep(const jobs::WorkerMessage& message) {
+    if (message.kind == jobs::WorkerMessage::Kind::Error) {
+        error = message.error;
+        hasError = true;
+    } else if (message.kind == jobs::WorkerMessage::Kind::Report) {
+        report = message.report;
+    }
+}
+
+void forEachMessage(QProcess& process, QByteArray& pending, const std::function<void(const jobs::WorkerMessage&)>& handle) {
+    pending += process.readAllStandardOutput();
     int newline;
-    while ((newline = m_pending.indexOf('\n')) >= 0) {
-        const std::string line = m_pending.left(newline).toStdString();
-        m_pending.remove(0, newline + 1);
-        const jobs::WorkerMessage message = jobs::readWorkerMessage(line);
-        switch (message.kind) {
-        case jobs::WorkerMessage::Kind::Progress:
-            emit progress(message.done, message.total);
-            break;
-        case jobs::WorkerMessage::Kind::Error:
-            m_error = message.error;
-            m_hasError = true;
-            break;
-        case jobs::WorkerMessage::Kind::Report:
-            m_report = message.report;
-            break;
-        case jobs::WorkerMessage::Kind::End:
-        case jobs::WorkerMessage::Kind::Other:
-            break;
-        }
+    while ((newline = pending.indexOf('\n')) >= 0) {
+        const std::string line = pending.left(newline).toStdString();
+        pending.remove(0, newline + 1);
+        handle(jobs::readWorkerMessage(line));
     }
 }
 

@@ -7,11 +7,14 @@
 // persistent JobWorker instead.
 
 #include <jobs/Jobs.h>
+#include <jobs/Protocol.h>
 #include <jobs/Requests.h>
 
+#include <QByteArray>
 #include <QObject>
 #include <QString>
 
+#include <functional>
 #include <string>
 
 class QProcess;
@@ -20,6 +23,19 @@ namespace sdfwb::app {
 
 // A failure as the user reads it: the SDF's diagnostics ("file:line:column: error: ..."), then the message.
 QString describeFailure(const jobs::JobError& error);
+
+// What one request's worker-protocol messages (jobs/Protocol.h) leave: its error and its report.
+struct RequestOutcome {
+    jobs::JobError error;
+    bool hasError = false;
+    std::string report;
+    // Keeps an error or a report message; ignores the others.
+    void keep(const jobs::WorkerMessage& message);
+};
+
+// The complete lines `process` has written to stdout, as messages (a partial line waits in
+// `pending` for the rest).
+void forEachMessage(QProcess& process, QByteArray& pending, const std::function<void(const jobs::WorkerMessage&)>& handle);
 
 class BatchProcess : public QObject {
     Q_OBJECT
@@ -53,9 +69,7 @@ private:
     QString m_executable;
     QProcess* m_process = nullptr;
     QByteArray m_pending;
-    std::string m_report;
-    jobs::JobError m_error; // the child's error message, when it sent one
-    bool m_hasError = false;
+    RequestOutcome m_outcome;
     jobs::JobError m_lastError;
 };
 

@@ -1,9 +1,6 @@
 #include "JobWorker.h"
 
-#include "BatchProcess.h"
-
 #include <jobs/JobJson.h>
-#include <jobs/Protocol.h>
 
 #include <QProcess>
 #include <QTimer>
@@ -97,9 +94,8 @@ void JobWorker::next() {
     m_queue.pop_front();
     m_current = item.channel;
     m_busy = true;
-    m_cancelling = m_hung = m_hasError = false;
-    m_report.clear();
-    m_error = {};
+    m_cancelling = m_hung = false;
+    m_outcome = {};
     if (!ensureProcess()) {
         finishCurrent(1, tr("cannot start %1").arg(m_executable));
         return;
@@ -111,32 +107,16 @@ void JobWorker::next() {
 
 void JobWorker::readOutput() {
     if (!m_process) return;
-    m_buffer += m_process->readAllStandardOutput();
-    int newline;
-    while ((newline = m_buffer.indexOf('\n')) >= 0) {
-        const std::string line = m_buffer.left(newline).toStdString();
-        m_buffer.remove(0, newline + 1);
-        const jobs::WorkerMessage message = jobs::readWorkerMessage(line);
-        if (message.kind == jobs::WorkerMessage::Kind::Other || !m_busy) continue;
+    forEachMessage(*m_process, m_buffer, [this](const jobs::WorkerMessage& message) {
+        if (message.kind == jobs::WorkerMessage::Kind::Other || !m_busy) return;
         m_watchdog->start(m_timeoutMs); // any message shows the worker alive
-        switch (message.kind) {
-        case jobs::WorkerMessage::Kind::Progress:
-            if (m_current) emit m_current->progress(message.done, message.total);
-            break;
-        case jobs::WorkerMessage::Kind::Error:
-            m_error = message.error;
-            m_hasError = true;
-            break;
-        case jobs::WorkerMessage::Kind::Report:
-            m_report = message.report;
-            break;
-        case jobs::WorkerMessage::Kind::End:
+        if (message.kind == jobs::WorkerMessage::Kind::Progress && m_current)
+            emit m_current->progress(message.done, message.total);
+        else if (message.kind == jobs::WorkerMessage::Kind::End)
             finishCurrent(message.exitCode, {});
-            break;
-        case jobs::WorkerMessage::Kind::Other:
-            break;
-        }
-    }
+        else
+            m_outcome.keep(message);
+    });
 }
 
 void JobWorker::processEnded() {
@@ -166,7 +146,7 @@ void JobWorker::finishCurrent(int exitCode, const QString& reason) {
     if (channel) {
         const bool ok = exitCode == 0 && reason.isEmpty();
         const bool cancelled = exitCode == 130;
-        jobs::JobError error = m_error;
+        jobs::JobError error = m_outcome.error;
         if (cancelled)
             error.failure = jobs::Failure::Cancelled;
         else if (exitCode == 2)
@@ -179,11 +159,11 @@ void JobWorker::finishCurrent(int exitCode, const QString& reason) {
         else if (!reason.isEmpty())
             message = reason;
         else if (!ok)
-            message = m_hasError ? describeFailure(error) : tr("Failed (exit code %1).").arg(exitCode);
+            message = m_outcome.hasError ? describeFailure(error) : tr("Failed (exit code %1).").arg(exitCode);
         if (!reason.isEmpty() && !cancelled) error.message = reason.toStdString();
         channel->m_running = false;
         channel->m_error = ok ? jobs::JobError{} : error;
-        emit channel->finished(ok, cancelled, ok ? m_report : std::string(), message);
+        emit channel->finished(ok, cancelled, ok ? m_outcome.report : std::string(), message);
     }
     if (m_process && m_process->state() == QProcess::NotRunning) {
         m_process->disconnect(this);

@@ -8,6 +8,8 @@
 // says so, and the next one runs in a fresh worker. Cancel drops a queued request; the running one
 // gets SIGTERM, which its job takes as cancel (it answers {"end":130} and the worker reads on).
 
+#include "BatchProcess.h"
+
 #include <jobs/Jobs.h>
 #include <jobs/Requests.h>
 
@@ -71,9 +73,7 @@ private:
     JobChannel* m_current = nullptr;
     bool m_busy = false; // a request was written and its end is awaited (its channel may be gone)
     bool m_cancelling = false, m_hung = false;
-    std::string m_report;
-    jobs::JobError m_error;
-    bool m_hasError = false;
+    RequestOutcome m_outcome; // the current request's error and report
 };
 
 // One caller's requests to a JobWorker, one at a time, with BatchProcess's signals.

@@ -4,7 +4,6 @@
 
 #include <core/Log.h>
 #include <jobs/JobJson.h>
-#include <jobs/Protocol.h>
 
 #include <QCoreApplication>
 #include <QCryptographicHash>
@@ -90,22 +89,17 @@ void ThumbnailController::request(const QStringList& sdfPaths) {
 
 void ThumbnailController::readOutput() {
     if (!m_process) return;
-    m_pending += m_process->readAllStandardOutput();
-    int newline;
-    while ((newline = m_pending.indexOf('\n')) >= 0) {
-        const jobs::WorkerMessage message = jobs::readWorkerMessage(m_pending.left(newline).toStdString());
-        m_pending.remove(0, newline + 1);
-        if (message.kind != jobs::WorkerMessage::Kind::End || m_queue.isEmpty()) continue; // one {"end"} per request
-        const bool ok = message.exitCode == 0;
+    forEachMessage(*m_process, m_pending, [this](const jobs::WorkerMessage& message) {
+        if (message.kind != jobs::WorkerMessage::Kind::End || m_queue.isEmpty()) return; // one {"end"} per request
         const QString sdf = m_queue.takeFirst();
         const QString image = m_destination.take(sdf);
-        if (ok && QFileInfo::exists(image)) {
+        if (message.exitCode == 0 && QFileInfo::exists(image)) {
             ++m_rendered;
             emit thumbnailReady(sdf, image);
         } else {
             log::warning("thumbnails", "no thumbnail for " + sdf.toStdString());
         }
-    }
+    });
 }
 
 } // namespace sdfwb::app
