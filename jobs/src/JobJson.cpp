@@ -1005,7 +1005,8 @@ WorkerMessage readWorkerMessage(const std::string& line) {
     if (line.empty() || line.front() != '{') return message;
     const json in = json::parse(line, nullptr, false);
     if (!in.is_object() || in.size() != 1) return message;
-    const auto& [key, value] = *in.items().begin();
+    const std::string key = in.begin().key(); // (items()' proxy would dangle here: ASan saw it)
+    const json& value = in.begin().value();
     if (key == "progress" && value.is_array() && value.size() == 2 && value[0].is_number_unsigned() &&
         value[1].is_number_unsigned()) {
         message.kind = WorkerMessage::Kind::Progress;
