@@ -63,8 +63,6 @@ bool BatchProcess::start(const jobs::Request& request) {
             message = tr("Failed (exit code %1).").arg(exitCode);
             error.message = message.toStdString();
         }
-        if (exitCode == 2) error.failure = jobs::Failure::Usage;
-        if (exitCode == 3) error.failure = jobs::Failure::NoGl;
         m_lastError = ok ? jobs::JobError{} : error;
         emit finished(ok, cancelled, ok ? m_outcome.report : std::string(), message);
     });

@@ -146,13 +146,8 @@ void JobWorker::finishCurrent(int exitCode, const QString& reason) {
     if (channel) {
         const bool ok = exitCode == 0 && reason.isEmpty();
         const bool cancelled = exitCode == 130;
-        jobs::JobError error = m_outcome.error;
-        if (cancelled)
-            error.failure = jobs::Failure::Cancelled;
-        else if (exitCode == 2)
-            error.failure = jobs::Failure::Usage;
-        else if (exitCode == 3)
-            error.failure = jobs::Failure::NoGl;
+        jobs::JobError error = m_outcome.error;                  // its kind as the child decided it
+        if (cancelled) error.failure = jobs::Failure::Cancelled; // also when it died of the SIGTERM
         QString message;
         if (cancelled)
             message = tr("Cancelled; nothing was written.");

@@ -132,14 +132,20 @@ inline QImage fullResolutionFrame(app::MainWindow& window) {
     return frame;
 }
 
-// Opens `file` and waits until the viewport shows it.
-inline bool openAndWait(app::MainWindow& window, const char* file) {
+// Opens `path` and waits until the document has applied it (the viewport has its program).
+inline bool openFileAndWait(app::MainWindow& window, const QString& path) {
     bool applied = false;
     auto connection = QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
-    bool ok = window.openFile(datasetFile(file)) && waitFor([&] { return applied; });
+    const bool ok = window.openFile(path) && waitFor([&] { return applied; });
     QObject::disconnect(connection);
+    return ok;
+}
+
+// Opens dataset `file` and waits until the viewport shows it at full scale.
+inline bool openAndWait(app::MainWindow& window, const char* file) {
     // A slow-looking new SDF is first drawn at the moving scale: wait for the full frame after it.
-    return ok && waitFor([&] { return window.viewport()->lastFrameMilliseconds() > 0.0 && !window.viewport()->isInteracting(); });
+    return openFileAndWait(window, datasetFile(file)) &&
+           waitFor([&] { return window.viewport()->lastFrameMilliseconds() > 0.0 && !window.viewport()->isInteracting(); });
 }
 
 inline double meanDifference(const QImage& a, const QImage& b) {

@@ -6,6 +6,30 @@
 using namespace sdfwb;
 using namespace sdfwb::guitest;
 
+namespace {
+
+// Starts the video dialog's export with `settings` (a real click) and waits for its end: success,
+// or a failure carrying the dialog's message.
+::testing::AssertionResult exportVideo(app::MainWindow& window, const widgets::ExportSettings& settings) {
+    window.exports()->videoDialog()->setSettings(settings);
+    bool done = false, ok = false;
+    auto connection =
+        QObject::connect(window.exports(), &app::ExportController::videoFinished, [&](bool success, const QString&) {
+            done = true;
+            ok = success;
+        });
+    window.exports()->videoDialog()->findChild<QPushButton*>("start")->click();
+    const bool ended = waitFor([&] { return done; }, 60000);
+    QObject::disconnect(connection);
+    if (!ended) return ::testing::AssertionFailure() << "the export did not end within a minute";
+    if (!ok)
+        return ::testing::AssertionFailure()
+               << window.exports()->videoDialog()->findChild<QLabel*>("message")->text().toStdString();
+    return ::testing::AssertionSuccess();
+}
+
+} // namespace
+
 TEST(Export, ScreenshotAtAChosenSizeAndAnMp4) {
     app::MainWindow window;
     window.show();
@@ -39,15 +63,7 @@ TEST(Export, ScreenshotAtAChosenSizeAndAnMp4) {
     settings.height = 90;
     settings.seconds = 1.0;
     settings.framesPerSecond = 10;
-    window.exports()->videoDialog()->setSettings(settings);
-    bool done = false, ok = false;
-    QObject::connect(window.exports(), &app::ExportController::videoFinished, [&](bool success, const QString&) {
-        done = true;
-        ok = success;
-    });
-    window.exports()->videoDialog()->findChild<QPushButton*>("start")->click();
-    ASSERT_TRUE(waitFor([&] { return done; }, 60000));
-    EXPECT_TRUE(ok) << window.exports()->videoDialog()->findChild<QLabel*>("message")->text().toStdString();
+    EXPECT_TRUE(exportVideo(window, settings));
     // FFmpeg's own reader decodes it: H.264, 160x90, 10 frames (1 s at 10 fps).
     QProcess probe;
     probe.start("ffprobe", {"-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
@@ -104,15 +120,7 @@ TEST(Export, Mp4FrameEqualsAScreenshotOfTheSameUnsavedState) {
 
     window.exports()->setExecutable(SDFWB_BINARY);
     window.exports()->showVideoDialog();
-    window.exports()->videoDialog()->setSettings(settings);
-    bool done = false, ok = false;
-    QObject::connect(window.exports(), &app::ExportController::videoFinished, [&](bool success, const QString&) {
-        done = true;
-        ok = success;
-    });
-    window.exports()->videoDialog()->findChild<QPushButton*>("start")->click();
-    ASSERT_TRUE(waitFor([&] { return done; }, 60000));
-    ASSERT_TRUE(ok) << window.exports()->videoDialog()->findChild<QLabel*>("message")->text().toStdString();
+    ASSERT_TRUE(exportVideo(window, settings));
 
     // The video's first frame, decoded by the real FFmpeg.
     const QString decoded = settings.output + ".png";

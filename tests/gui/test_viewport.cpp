@@ -37,10 +37,7 @@ TEST(Viewport, AmbientOcclusionDarkensCreases) {
     file.close();
     app::MainWindow window;
     window.show();
-    bool applied = false;
-    QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
-    ASSERT_TRUE(window.openFile(path));
-    ASSERT_TRUE(waitFor([&] { return applied; }));
+    ASSERT_TRUE(openFileAndWait(window, path));
     window.setShadingMode(renderer::ShadingMode::Gooch);
     window.setAmbientOcclusion(false);
     QImage plain = frameOf(window);
@@ -323,10 +320,7 @@ TEST(Viewport, TimeScrubsAnimatedSdfs) {
     file.close();
     app::MainWindow window;
     window.show();
-    bool applied = false;
-    QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
-    ASSERT_TRUE(window.openFile(path));
-    ASSERT_TRUE(waitFor([&] { return applied; }));
+    ASSERT_TRUE(openFileAndWait(window, path));
     // A new SDF's first frame is a 5 % probe: compare full-resolution frames only.
     window.viewport()->resetCamera(); // not a camera restored from an earlier test's session
     window.timeBar()->setTime(0.0);

@@ -34,19 +34,11 @@ void printError(const std::string& message) {
 
 int endProtocolRequest(int exitCode) {
     if (exitCode != kExitOk) {
+        // The kind, decided here once for every reader: the exit code's where it tells one, else the job's.
         jobs::JobError error = g_pendingError.value_or(jobs::JobError{});
-        if (!g_pendingError) {
-            error.failure = exitCode == kExitUsage       ? jobs::Failure::Usage
-                            : exitCode == kExitNoGl      ? jobs::Failure::NoGl
-                            : exitCode == kExitCancelled ? jobs::Failure::Cancelled
-                                                         : jobs::Failure::Work;
-        } else if (exitCode == kExitUsage) {
-            error.failure = jobs::Failure::Usage;
-        } else if (exitCode == kExitNoGl) {
-            error.failure = jobs::Failure::NoGl;
-        } else if (exitCode == kExitCancelled) {
-            error.failure = jobs::Failure::Cancelled;
-        }
+        if (exitCode == kExitUsage) error.failure = jobs::Failure::Usage;
+        if (exitCode == kExitNoGl) error.failure = jobs::Failure::NoGl;
+        if (exitCode == kExitCancelled) error.failure = jobs::Failure::Cancelled;
         if (error.message.empty()) error.message = "failed (exit code " + std::to_string(exitCode) + ")";
         std::printf("%s\n", jobs::errorMessage(error).c_str());
     }
