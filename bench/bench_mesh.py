@@ -244,7 +244,7 @@ config = [
     f"Ours: sdfwb {sdfwb.__version__}, `sdfwb.mesh(sdf, resolution={R})`, GL renderer `{renderer}`"
     + (f" (Mesa's CPU rasteriser, no GPU; it uses {lp_threads if lp_threads else f'all {CPUS}'} "
        f"cores{' (LP_NUM_THREADS)' if lp_threads else ''})" if llvmpipe else "")
-    + "; the whole call is timed: GL context, the quick audit that gives the Lipschitz bound, extraction "
+    + "; the whole call is timed: GL context, the Lipschitz bound estimated from the block centres, extraction "
       "(dual contouring, two Newton steps onto the surface); the extraction alone in its own column.",
     f"Reference lattice: the same SDFs in float32 on the same (R+1)^3 = {R + 1}^3 lattice; forms tried: NumPy "
     f"{np.__version__} whole lattice (1 thread), NumPy in slabs of {' or '.join(map(str, SLABS))} z-slices over a "

@@ -5,7 +5,7 @@
         [--repeats 3] [--resolutions 32,48,64,96,128,192,256] [--peer-resolutions 64,128,256] [--only NAME,...]
         [--markdown docs/meshing-peers.md] [--plot docs/images/mesh_peers_error_vs_time.png]
 
-Ours: `sdfwb.mesh(sdf, resolution=R)`, the whole call timed (GL context, quick audit, GPU field, dual contouring,
+Ours: `sdfwb.mesh(sdf, resolution=R)`, the whole call timed (GL context, the bound estimated at the block centres, GPU field, dual contouring,
 projection onto the surface).
 
 Peers, each given the same field on the same (R+1)^3 lattice over [-1,1]^3:
@@ -312,7 +312,7 @@ config = [
     f"started {started.strftime('%Y-%m-%d %H:%M')} UTC; GL renderer `{renderer}`"
     + (" (Mesa's CPU rasteriser, no GPU)" if "llvmpipe" in renderer else "") + ".",
     f"sdfwb {sdfwb.__version__}: `sdfwb.mesh(sdf, resolution=R)` at R = {', '.join(map(str, OURS_R))}, the whole "
-    "call timed (GL context, quick audit, GPU field, dual contouring, projection onto the surface).",
+    "call timed (GL context, the bound estimated at the block centres, GPU field, dual contouring, projection onto the surface).",
     f"scikit-image {skimage.__version__} `measure.marching_cubes` (Lewiner), 1 thread (its kernel holds the GIL).",
     f"VTK {vtk.vtkVersion.GetVTKVersion()} `vtkFlyingEdges3D`, SMP backend {vtk.vtkSMPTools.GetBackend()}, "
     f"thread counts {', '.join(map(str, THREADS))} tried at each size, the fastest kept; normals, gradients, "

@@ -681,7 +681,8 @@ Args:
         minimum. Default None: the box [-1, 1]^3.
     time (float): seconds, finite, for animated SDFs. Default 0.
     lipschitz (float | None): the bound on |grad f| that lets empty blocks be skipped, finite, >= 0 (0: skip
-        nothing). Default None: a quick audit's estimate (x1.25, at least 1).
+        nothing). Default None: 1.25 x the steepest |grad f| at the block centres, at least 1 (the audit's
+        estimate when error_samples is given).
     error_samples (int): points each way for the error against the field, 0 to 10000000 (0: not measured).
         Default 0.
     seed (int): 0 to 2**64 - 1, for the error's points. Default 0.

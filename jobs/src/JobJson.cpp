@@ -324,6 +324,7 @@ template <class V> void fields(V& v, MeshReport& r) {
     v("field_verdict", r.fieldVerdict);
     v("blocks", r.blocks);
     v("blocks_kept", r.blocksKept);
+    v("blocks_grown", r.blocksGrown);
     v("points_evaluated", r.pointsEvaluated);
     v("clamped_vertices", r.clampedVertices);
     v("vertices_beside_their_cell", r.verticesBesideTheirCell);

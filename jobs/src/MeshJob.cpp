@@ -70,10 +70,11 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
     options.boundsMax = request.boundsMax;
     options.time = request.time;
     options.parameters = sdf->parameters;
-    // The audit says whether |f| is the distance (exact) or only a bound; with --lipschitz given it
-    // still runs when the error is wanted, since the error's method depends on it.
+    // The audit says whether |f| is the distance (exact) or only a bound, which the error's method
+    // depends on: it runs when the error is wanted, and its Lipschitz estimate then skips the blocks.
+    // Otherwise the bound is the mesher's own estimate from the block centres (--lipschitz: given).
     std::string verdict;
-    if (!request.lipschitz || request.errorSamples > 0) {
+    if (request.errorSamples > 0) {
         sampling::AuditOptions audit;
         audit.samples = 4000;
         audit.seed = request.seed;
@@ -95,12 +96,14 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
                 report.boundSource = text;
             }
         }
+    } else if (!request.lipschitz) {
+        options.estimateLipschitz = true;
+        report.boundSource = "estimated: 1.25 x the steepest |grad f| at the block centres, at least 1";
     }
     if (request.lipschitz) {
         options.lipschitz = *request.lipschitz;
         report.boundSource = *request.lipschitz > 0.0f ? "given (--lipschitz)" : "none: every block evaluated (--lipschitz 0)";
     }
-    report.lipschitzBound = options.lipschitz;
     report.fieldVerdict = verdict;
     auto extracted = meshing::extractMesh(sdf->prepared, options, progress);
     if (progress.isCancelled()) return JobError{Failure::Cancelled, "mesh: cancelled; nothing written", {}};
@@ -108,6 +111,7 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
     MeshedSdf result{std::move(extracted->first), {}};
     const meshing::Mesh& mesh = result.mesh;
     const meshing::MeshStats& stats = extracted->second;
+    report.lipschitzBound = stats.lipschitzUsed;
     if (mesh.indices.empty())
         return JobError{Failure::Work,
                         "mesh: " + sdf->label + " has no surface inside the bounds at resolution " +
@@ -125,6 +129,7 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
     report.watertight = topology.watertight();
     report.blocks = stats.blocks;
     report.blocksKept = stats.blocksKept;
+    report.blocksGrown = stats.blocksGrown;
     report.pointsEvaluated = stats.pointsEvaluated;
     report.clampedVertices = stats.clampedVertices;
     report.verticesBesideTheirCell = stats.verticesBesideTheirCell;

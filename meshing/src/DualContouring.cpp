@@ -381,7 +381,10 @@ public:
 
 private:
     Expected<void> selectBlocks();
+    float estimateBound(const std::vector<float>& centreValues, const std::vector<float>& centreGradients) const;
+    void keep(std::size_t block);
     Expected<void> evaluateBlocks();
+    void keepNeighboursAcrossCrossedFaces(std::size_t slot);
     void findEdges();
     Expected<void> placeCrossings();
     void placeVertices();
@@ -473,43 +476,106 @@ Expected<void> Extraction::selectBlocks() {
                 const glm::dvec3 c = grid.origin + 0.5 * (lo + hi) * grid.step;
                 centres.insert(centres.end(), {float(c.x), float(c.y), float(c.z)});
             }
-    std::vector<float> centreValues;
-    if (auto ok = field.evaluate(centres, centreValues, nullptr); !ok) return ok.error();
-    stats.pointsEvaluated += centreValues.size();
+    std::vector<float> centreValues, centreGradients;
+    const float gradientStep = float(0.25 * std::min({grid.step.x, grid.step.y, grid.step.z}));
+    if (auto ok = field.evaluate(centres, centreValues, options.estimateLipschitz ? &centreGradients : nullptr, gradientStep);
+        !ok)
+        return ok.error();
+    stats.pointsEvaluated += centreValues.size() * (options.estimateLipschitz ? 7 : 1);
     stats.blocks = centreValues.size();
+    const float bound = options.estimateLipschitz ? estimateBound(centreValues, centreGradients) : options.lipschitz;
+    stats.lipschitzUsed = bound;
     const double halfDiagonal = 0.5 * glm::length(grid.step * double(kBlock));
     blockSlot.assign(centreValues.size(), -1);
     for (std::size_t b = 0; b < centreValues.size(); ++b) {
         const float f = centreValues[b];
-        const bool maySurface = options.lipschitz <= 0.0f || !std::isfinite(f) ||
-                                std::abs(double(f)) <= double(options.lipschitz) * halfDiagonal * 1.001 + 1e-6;
-        if (!maySurface) continue;
-        blockSlot[b] = std::int32_t(kept.size());
-        kept.push_back({int(b % std::size_t(blocksPerAxis)), int(b / std::size_t(blocksPerAxis) % std::size_t(blocksPerAxis)),
-                        int(b / (std::size_t(blocksPerAxis) * std::size_t(blocksPerAxis)))});
+        const bool maySurface =
+            bound <= 0.0f || !std::isfinite(f) || std::abs(double(f)) <= double(bound) * halfDiagonal * 1.001 + 1e-6;
+        if (maySurface) keep(b);
     }
-    stats.blocksKept = kept.size();
     return {};
 }
 
+// The bound the blocks are skipped by when it is estimated: 1.25 x the steepest |grad f| at a block
+// centre (a quarter-cell central difference) or quotient between neighbouring centres, at least 1.
+float Extraction::estimateBound(const std::vector<float>& centreValues, const std::vector<float>& centreGradients) const {
+    float steepest = 0.0f;
+    for (std::size_t b = 0; b < centreValues.size(); ++b) {
+        const glm::vec3 g(centreGradients[3 * b], centreGradients[3 * b + 1], centreGradients[3 * b + 2]);
+        if (std::isfinite(centreValues[b]) && std::isfinite(glm::length(g))) steepest = std::max(steepest, glm::length(g));
+    }
+    const std::size_t n = std::size_t(blocksPerAxis);
+    for (std::size_t b = 0; b < centreValues.size(); ++b) {
+        const std::size_t at[3] = {b % n, b / n % n, b / (n * n)};
+        const std::size_t stride[3] = {1, n, n * n};
+        for (int a = 0; a < 3; ++a) {
+            if (at[a] + 2 >= n) continue; // the last block may be short: its centre is off the spacing
+            const float quotient = std::abs(centreValues[b + stride[a]] - centreValues[b]) / float(grid.step[a] * kBlock);
+            if (std::isfinite(quotient)) steepest = std::max(steepest, quotient);
+        }
+    }
+    return std::max(1.0f, 1.25f * steepest);
+}
+
+void Extraction::keep(std::size_t block) {
+    blockSlot[block] = std::int32_t(kept.size());
+    const std::size_t n = std::size_t(blocksPerAxis);
+    kept.push_back({int(block % n), int(block / n % n), int(block / (n * n))});
+    stats.blocksKept = kept.size();
+}
+
 // 2. The grid points of the kept blocks, (B+1)^3 per block in a dense array (a point on a face
-// two kept blocks share is evaluated by both, at the same coordinates, so to the same value).
+// two kept blocks share is evaluated by both, at the same coordinates, so to the same value). A
+// skipped block whose face with a kept block the surface crosses is kept and evaluated after all,
+// until no crossed face leads to a skipped block: a bound that was too low loses no connected surface.
 Expected<void> Extraction::evaluateBlocks() {
-    {
-        detail::PointEvaluator lattice;
-        if (auto ok = lattice.build(sdf, "analysis/lattice.glsl", options.time, options.parameters); !ok) return ok.error();
-        lattice.setClip(clipLow, clipHigh);
-        std::vector<float> firstPoints;
-        firstPoints.reserve(3 * kept.size());
-        for (const auto& b : kept)
-            for (int a = 0; a < 3; ++a) firstPoints.push_back(float(b[std::size_t(a)] * kBlock));
-        if (auto ok = lattice.evaluateLattice(firstPoints, glm::vec3(grid.origin), glm::vec3(grid.step), kBlock, grid.n, values);
+    detail::PointEvaluator lattice;
+    if (auto ok = lattice.build(sdf, "analysis/lattice.glsl", options.time, options.parameters); !ok) return ok.error();
+    lattice.setClip(clipLow, clipHigh);
+    std::vector<float> firstPoints, fresh;
+    for (std::size_t from = 0; from < kept.size();) {
+        firstPoints.clear();
+        for (std::size_t slot = from; slot < kept.size(); ++slot)
+            for (int a = 0; a < 3; ++a) firstPoints.push_back(float(kept[slot][std::size_t(a)] * kBlock));
+        if (auto ok = lattice.evaluateLattice(firstPoints, glm::vec3(grid.origin), glm::vec3(grid.step), kBlock, grid.n, fresh);
             !ok)
             return ok.error();
-        stats.boundsCutPoints = lattice.clipped();
+        values.insert(values.end(), fresh.begin(), fresh.end());
+        const std::size_t to = kept.size();
+        for (std::size_t slot = from; slot < to; ++slot) keepNeighboursAcrossCrossedFaces(slot);
+        from = to;
+        if (progress.isCancelled()) return makeError("mesh: cancelled");
     }
+    stats.boundsCutPoints = lattice.clipped();
     stats.pointsEvaluated += values.size();
     return {};
+}
+
+void Extraction::keepNeighboursAcrossCrossedFaces(std::size_t slot) {
+    const std::array<int, 3> b = kept[slot];
+    const float* v = values.data() + slot * std::size_t(kPoints);
+    for (int axis = 0; axis < 3; ++axis)
+        for (int side = 0; side < 2; ++side) {
+            std::array<int, 3> next = b;
+            next[std::size_t(axis)] += side ? 1 : -1;
+            if (next[std::size_t(axis)] < 0 || next[std::size_t(axis)] >= blocksPerAxis) continue;
+            const std::size_t index =
+                (std::size_t(next[2]) * std::size_t(blocksPerAxis) + std::size_t(next[1])) * std::size_t(blocksPerAxis) +
+                std::size_t(next[0]);
+            if (blockSlot[index] >= 0) continue;
+            const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+            bool seenInside = false, seenOutside = false;
+            for (int j = 0; j < kSide && !(seenInside && seenOutside); ++j)
+                for (int i = 0; i < kSide; ++i) {
+                    const float f = v[(side ? kBlock : 0) * kStride[axis] + i * kStride[u] + j * kStride[w]];
+                    if (!std::isfinite(f)) continue;
+                    (inside(f) ? seenInside : seenOutside) = true;
+                }
+            if (seenInside && seenOutside) {
+                keep(index);
+                ++stats.blocksGrown;
+            }
+        }
 }
 
 // 3. Edges with a sign change, block by block in slot order (so that a block's bits number them).

@@ -400,6 +400,45 @@ TEST_F(MeshTest, SkippingEmptyBlocksLosesNothing) {
     EXPECT_EQ(differ, 0u) << "triangles differ, the first at sorted position " << first << ", by up to " << largest;
 }
 
+// A bound far too low skips blocks the surface passes through; the surface is followed from the
+// kept blocks across their crossed faces, so the connected torus and Menger sponge come out whole.
+TEST_F(MeshTest, ABoundTooLowLosesNoConnectedSurface) {
+    for (const char* file : {"dataset/Geometry/Torus.glsl", "dataset/Fractal/MengerSponge.glsl"}) {
+        const shaders::PreparedSdf sdf = sdfwb::testing::loadSourceSdf(file);
+        meshing::MeshOptions options;
+        options.resolution = 64;
+        options.lipschitz = 0.1f; // the fields' true bound is 1
+        auto low = meshing::extractMesh(sdf, options, {});
+        options.lipschitz = 0.0f;
+        auto all = meshing::extractMesh(sdf, options, {});
+        ASSERT_TRUE(low && all) << file;
+        EXPECT_GT(low->second.blocksGrown, 10u) << file;
+        EXPECT_LT(low->second.blocksKept, all->second.blocksKept) << file << ": the empty blocks stay skipped";
+        EXPECT_EQ(canonicalTriangles(low->first), canonicalTriangles(all->first)) << file;
+    }
+}
+
+// With the bound estimated from the block centres, an exact field's bound is 1.25 (the gradient is
+// 1 everywhere), a field steeper by 3 gets a bound near 3.75, and the mesh is the unskipped one.
+TEST_F(MeshTest, TheEstimatedBoundFollowsTheFieldsSlope) {
+    for (const auto& [text, slope] : {std::pair{kSphere, 1.0f},
+                                      std::pair{"float sdf(vec3 p) { return 3.0 * (length(p) - 0.6); }", 3.0f}}) {
+        const shaders::PreparedSdf sdf = source(text);
+        meshing::MeshOptions options;
+        options.resolution = 64;
+        options.estimateLipschitz = true;
+        auto estimated = meshing::extractMesh(sdf, options, {});
+        options.estimateLipschitz = false;
+        options.lipschitz = 0.0f;
+        auto all = meshing::extractMesh(sdf, options, {});
+        ASSERT_TRUE(estimated && all);
+        EXPECT_NEAR(estimated->second.lipschitzUsed, 1.25f * slope, 0.01f * slope) << text;
+        EXPECT_LT(estimated->second.blocksKept, all->second.blocksKept / 2) << text;
+        EXPECT_EQ(estimated->second.blocksGrown, 0u) << text;
+        EXPECT_EQ(canonicalTriangles(estimated->first), canonicalTriangles(all->first)) << text;
+    }
+}
+
 TEST_F(MeshTest, FilesReadBackTheSameTriangles) {
     const meshing::Mesh mesh = extract(source(kSphere), 24);
     const std::filesystem::path folder =

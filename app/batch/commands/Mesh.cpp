@@ -21,10 +21,10 @@ int runMesh(const jobs::MeshRequest& request, const OutputOptions& output) {
                 "  bounds             the shape leaves the bounds (%llu grid points inside it beyond them): closed by flat "
                 "caps half a cell outside; the error below is against the field cut there\n",
                 (unsigned long long)r.boundsCutPoints);
-        std::printf("  skipping           Lipschitz bound %.3g (%s); %llu of %llu blocks of 8^3 cells evaluated, %llu field "
-                    "evaluations\n",
+        std::printf("  skipping           Lipschitz bound %.3g (%s); %llu of %llu blocks of 8^3 cells evaluated (%llu of "
+                    "them because the surface crosses into them from a kept block), %llu field evaluations\n",
                     r.lipschitzBound, r.boundSource.c_str(), (unsigned long long)r.blocksKept, (unsigned long long)r.blocks,
-                    (unsigned long long)r.pointsEvaluated);
+                    (unsigned long long)r.blocksGrown, (unsigned long long)r.pointsEvaluated);
         if (r.hausdorff)
             std::printf("  error              mesh->surface mean %.3g max %.3g; surface->mesh mean %.3g max %.3g; Hausdorff %.3g "
                         "(%llu points, %.2f s)\n",

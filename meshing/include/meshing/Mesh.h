@@ -34,10 +34,16 @@ struct MeshOptions {
     // A bound on |grad f|: a block of cells whose centre has |f| > lipschitz * (half its diagonal)
     // holds no surface and is skipped. 0 evaluates every cell.
     float lipschitz = 1.0f;
+    // Ignore `lipschitz` and estimate the bound from the block centres themselves: 1.25 x the
+    // steepest |grad f| there or quotient between neighbouring centres, at least 1. Either way a
+    // skipped block is evaluated after all when the surface crosses its face with a kept block.
+    bool estimateLipschitz = false;
 };
 
 struct MeshStats {
     std::uint64_t blocks = 0, blocksKept = 0;  // blocks of 8^3 cells, and those that may hold surface
+    std::uint64_t blocksGrown = 0;             // of those, skipped by the bound but crossed at a face with a kept block
+    float lipschitzUsed = 0.0f;                // the bound the blocks were skipped by (given or estimated)
     std::uint64_t pointsEvaluated = 0;         // field evaluations on the GPU (grid, crossings, centres)
     std::uint64_t activeCells = 0;             // cells the surface crosses (one vertex each)
     std::uint64_t clampedVertices = 0;         // QEF minimisers outside their cell, clamped into it
