@@ -59,7 +59,7 @@ def option(name, default):
 
 
 REPEATS = int(option("--repeats", "3"))
-OURS_R = [int(r) for r in option("--resolutions", "32,48,64,96,128,192,256").split(",")]
+OURS_R = [int(r) for r in option("--resolutions", "16,24,32,48,64,96,128,192,256").split(",")]
 PEER_R = [int(r) for r in option("--peer-resolutions", "64,128,256").split(",")]
 ONLY = set(option("--only", "").split(",")) - {""}
 # --scale: each tool once at 512 (and sdfwb and Flying Edges at 1024) in a process of its own, for its time and peak

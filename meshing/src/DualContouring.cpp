@@ -389,8 +389,15 @@ private:
     Expected<void> placeCrossings();
     void placeVertices();
     bool cellCrossed(const glm::dvec3& point) const;
+    std::optional<std::pair<glm::dvec3, glm::dvec3>> creaseOnUpperFace(const glm::dvec3* points, const glm::dvec3* patchNormals,
+                                                                       int count, const std::int32_t cell[3],
+                                                                       const glm::dvec3& hi) const;
     const CellRecord* recordAt(const std::int64_t c[3]) const;
     std::uint32_t crossingOf(const std::int64_t c[3], int l) const;
+    template <class Visit> void forEachCrossingOf(const std::int64_t c[3], Visit&& visit) const;
+    std::size_t blockIndexOf(const std::int64_t c[3]) const {
+        return std::size_t(((c[2] / kBlock) * blocksPerAxis + c[1] / kBlock) * blocksPerAxis + c[0] / kBlock);
+    }
     void splitJoinedFaces();
     Expected<void> projectVertices();
     void connectQuads();
@@ -753,7 +760,7 @@ void Extraction::placeVertices() {
                     std::uint32_t patch = 0;
                     for (int root = 0; root < 12; ++root) {
                         if (!(present >> root & 1) || find(root) != root) continue;
-                        glm::dvec3 points[12], patchNormals[12];
+                        glm::dvec3 points[13], patchNormals[13];
                         int count = 0;
                         for (int l = 0; l < 12; ++l) {
                             if (!(present >> l & 1) || find(l) != root) continue;
@@ -764,7 +771,14 @@ void Extraction::placeVertices() {
                             points[count] = glm::dvec3(crossings[3 * e], crossings[3 * e + 1], crossings[3 * e + 2]);
                             patchNormals[count++] = length > 0.0 && std::isfinite(length) ? n / length : glm::dvec3(0.0);
                         }
-                        const QefSolution qef = solveQef(points, patchNormals, count);
+                        QefSolution qef = solveQef(points, patchNormals, count);
+                        if (qef.freeCount > 0 && count < 13)
+                            if (const auto crease = creaseOnUpperFace(points, patchNormals, count, cell, hi)) {
+                                points[count] = crease->first;
+                                patchNormals[count++] = crease->second;
+                                qef = solveQef(points, patchNormals, count);
+                                ++stats.creasesOnFaces;
+                            }
                         const bool cornerCellIsEmpty = qef.freeCount == 0 && !cellCrossed(qef.point);
                         const glm::dvec3 x = placeVertex(qef, lo, hi, vertexMargin, cornerCellIsEmpty,
                                                          stats.verticesBesideTheirCell, stats.clampedVertices);
@@ -800,6 +814,59 @@ bool Extraction::cellCrossed(const glm::dvec3& point) const {
     return signs != 0 && signs != 0xff;
 }
 
+// A crease that lies exactly on a face between two cells (a hexagonal prism's corner on the plane
+// x = 0) leaves each cell's crossings on one face only, and each cell's vertex on its own face, so
+// the triangles between them cut the crease off (by a quarter cell). The crossings on that face's
+// edges lie on the crease, their normals a mix of the two faces'; the QEF drops the direction that
+// mix turns by. A patch with a free direction and such a crossing on its upper face gets, through
+// it, the plane of the cell above whose normal turns furthest from the face the mixed normal is
+// nearest, further than the mixed one does: its vertex goes onto the crease, and the cell above keeps its flat vertex, whose
+// triangles then lie in that face (its crossings must reach a tenth of a cell off the crease).
+// Only the lower cell moves: both would put their vertices at
+// one point. Returns the crossing and the other face's normal.
+std::optional<std::pair<glm::dvec3, glm::dvec3>> Extraction::creaseOnUpperFace(const glm::dvec3* points,
+                                                                               const glm::dvec3* patchNormals, int count,
+                                                                               const std::int32_t cell[3],
+                                                                               const glm::dvec3& hi) const {
+    constexpr double kFlat = 0.99619469809;   // cos 5 degrees: a normal this close is the same face's
+    constexpr double kCrease = 0.93969262078; // cos 20 degrees: two faces turning further meet at a crease
+    for (int i = 0; i < count; ++i) {
+        int own = -1; // the face this crossing's normal mixes with: the nearest other normal of the patch
+        for (int j = 0; j < count; ++j) {
+            const double turn = glm::dot(patchNormals[j], patchNormals[i]);
+            if (turn <= kFlat && (own < 0 || turn > glm::dot(patchNormals[own], patchNormals[i]))) own = j;
+        }
+        if (own < 0) continue;
+        const double mixed = glm::dot(patchNormals[i], patchNormals[own]);
+        for (int a = 0; a < 3; ++a) {
+            if (!(std::abs(points[i][a] - hi[a]) < 1e-4 * grid.step[a])) continue;
+            std::int64_t above[3] = {cell[0], cell[1], cell[2]};
+            ++above[a];
+            if (above[a] >= grid.n || blockSlot[blockIndexOf(above)] < 0) continue; // no crossings there
+            std::optional<glm::dvec3> other;
+            forEachCrossingOf(above, [&](std::uint32_t e) {
+                glm::dvec3 n(normals[3 * e], normals[3 * e + 1], normals[3 * e + 2]);
+                const double length = glm::length(n);
+                if (!(length > 0.0) || !std::isfinite(length)) return;
+                n /= length;
+                const glm::dvec3 q(crossings[3 * e], crossings[3 * e + 1], crossings[3 * e + 2]);
+                if (!(std::abs(glm::dot(n, points[i] - q)) < 1e-3 * grid.step[a])) return; // its plane misses the crossing
+                if (!other || glm::dot(n, patchNormals[own]) < glm::dot(*other, patchNormals[own])) other = n;
+            });
+            if (!other) continue;
+            const double turn = glm::dot(*other, patchNormals[own]);
+            // The own face must reach well off the crease (a box whose edges lie on grid lines has only
+            // mixed normals, each beside a crease: those cells keep their vertices).
+            double reach = 0.0;
+            for (int j = 0; j < count; ++j)
+                if (glm::dot(patchNormals[j], patchNormals[own]) > kFlat)
+                    reach = std::max(reach, std::abs(glm::dot(*other, points[j] - points[i])));
+            if (turn < kCrease && turn < mixed - 1e-3 && reach > 0.1 * grid.step[a]) return std::pair{points[i], *other};
+        }
+    }
+    return std::nullopt;
+}
+
 // The record of cell c; null when the cell was not meshed (outside the grid, in a skipped block,
 // or with no crossing).
 const CellRecord* Extraction::recordAt(const std::int64_t c[3]) const {
@@ -822,6 +889,19 @@ std::uint32_t Extraction::crossingOf(const std::int64_t c[3], int l) const {
     int point = 0;
     for (int a = 0; a < 3; ++a) point += int(c[a] - b[a] * kBlock + o[a]) * kStride[a];
     return blockEdges[std::size_t(slot)].rank(3 * point + l / 4);
+}
+
+// Calls visit(index) for each crossing on the twelve edges of cell c, in a kept block (its
+// crossings are placed before any vertex is).
+template <class Visit> void Extraction::forEachCrossingOf(const std::int64_t c[3], Visit&& visit) const {
+    const std::int64_t b[3] = {c[0] / kBlock, c[1] / kBlock, c[2] / kBlock};
+    const std::int32_t slot = blockSlot[std::size_t((b[2] * blocksPerAxis + b[1]) * blocksPerAxis + b[0])];
+    const float* v = values.data() + std::size_t(slot) * std::size_t(kPoints);
+    const int p = int(((c[2] - b[2] * kBlock) * kSide + (c[1] - b[1] * kBlock)) * kSide + (c[0] - b[0] * kBlock));
+    float corner[8];
+    for (int k = 0; k < 8; ++k) corner[k] = v[p + (k & 1) * kStride[0] + (k >> 1 & 1) * kStride[1] + (k >> 2) * kStride[2]];
+    for (int l = 0; l < 12; ++l)
+        if (crosses(corner[tables.edgeCorner[l][0]], corner[tables.edgeCorner[l][1]])) visit(crossingOf(c, l));
 }
 
 // 4b. Manifold across ambiguous faces. When the patches on both sides of an ambiguous face each

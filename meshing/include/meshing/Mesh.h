@@ -48,6 +48,7 @@ struct MeshStats {
     std::uint64_t activeCells = 0;             // cells the surface crosses (one vertex each)
     std::uint64_t clampedVertices = 0;         // QEF minimisers outside their cell, clamped into it
     std::uint64_t verticesBesideTheirCell = 0; // on a sharp edge that passes beside the cell, at most half a cell out
+    std::uint64_t creasesOnFaces = 0;          // flat patches moved onto a crease lying on their upper face
     std::uint64_t splitFaces = 0;              // ambiguous faces both of whose cells join its two segments: a vertex per segment
     // Grid points inside the shape but outside the bounds (half a cell beyond them): the shape
     // leaves the bounds and the mesh is closed by flat caps there. 0: the shape lies inside.
