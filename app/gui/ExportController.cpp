@@ -1,6 +1,7 @@
 #include "ExportController.h"
 
 #include "BatchProcess.h"
+#include "SdfDocument.h"
 
 #include <core/Log.h>
 #include <jobs/JobJson.h>
@@ -12,10 +13,8 @@
 
 namespace sdfwb::app {
 
-ExportController::ExportController(QWidget* window, widgets::ViewportWidget* viewport, std::function<jobs::SdfInput()> currentSdf,
-                                   QObject* parent)
-    : QObject(parent), m_window(window), m_viewport(viewport), m_currentSdf(std::move(currentSdf)),
-      m_process(new BatchProcess(this)) {
+ExportController::ExportController(QWidget* window, widgets::ViewportWidget* viewport, SdfDocument* document, QObject* parent)
+    : QObject(parent), m_window(window), m_viewport(viewport), m_document(document), m_process(new BatchProcess(this)) {
     connect(m_process, &BatchProcess::progress, this, [this](quint64 done, quint64 total) {
         if (m_videoDialog) m_videoDialog->setProgress(done, total);
     });
@@ -101,16 +100,7 @@ void ExportController::showVideoDialog() {
 
 jobs::AnimateRequest ExportController::videoRequest(const widgets::ExportSettings& s) const {
     jobs::AnimateRequest request;
-    jobs::FrameRequest& frame = request.frame;
-    frame.sdf = m_currentSdf();
-    frame.width = s.width;
-    frame.height = s.height;
-    frame.time = m_viewport->time();
-    frame.shading = m_viewport->shading();
-    frame.trace = m_viewport->trace();
-    frame.camera = m_viewport->camera();
-    frame.plane = m_viewport->plane();
-    frame.overlay = !m_viewport->overlayText().isEmpty();
+    request.frame = m_document->frame(s.width, s.height);
     request.output = s.output.toStdString();
     request.seconds = float(s.seconds);
     request.framesPerSecond = s.framesPerSecond;

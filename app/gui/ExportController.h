@@ -19,12 +19,12 @@ struct ExportSettings;
 namespace sdfwb::app {
 
 class BatchProcess;
+class SdfDocument;
 
 class ExportController : public QObject {
     Q_OBJECT
 public:
-    ExportController(QWidget* window, widgets::ViewportWidget* viewport, std::function<jobs::SdfInput()> currentSdf,
-                     QObject* parent = nullptr);
+    ExportController(QWidget* window, widgets::ViewportWidget* viewport, SdfDocument* document, QObject* parent = nullptr);
 
     void setExecutable(const QString& path);
     // Where the clip's last-frame parameter values come from (empty: no keyframe).
@@ -38,8 +38,8 @@ public:
     // Renders and writes a screenshot; returns an error message, empty on success.
     QString saveScreenshot(const QString& path, int width, int height);
     bool isExporting() const;
-    // The animate request an export with `settings` starts: the viewport's whole state (camera,
-    // shading, trace settings, cutting plane, markers, time) and the document's current text.
+    // The animate request an export with `settings` starts: the document's frame (its shown SDF,
+    // time and plane; the viewport's camera, shading, trace settings and markers).
     jobs::AnimateRequest videoRequest(const widgets::ExportSettings& settings) const;
 
 signals:
@@ -51,7 +51,7 @@ private:
     QWidget* m_window;
     widgets::ViewportWidget* m_viewport;
     std::function<std::vector<shaders::ParameterValue>()> m_clipEnd;
-    std::function<jobs::SdfInput()> m_currentSdf;
+    SdfDocument* m_document;
     BatchProcess* m_process;
     widgets::ExportDialog* m_screenshotDialog = nullptr;
     widgets::ExportDialog* m_videoDialog = nullptr;

@@ -151,19 +151,19 @@ void MainWindow::createDocks() {
 // The document and the controllers that run jobs on it.
 void MainWindow::createControllers() {
     m_document = new SdfDocument(m_viewport, this);
-    // Every job (sampling, video, plane readouts) runs on the document's input: the text the
-    // viewport shows (saved or not), its path for includes, and its entry point.
+    // Every job (sampling, video, plane readouts, probes) runs on the document's input: the text the
+    // viewport shows (saved or not), its path for includes, its entry point; and its time and plane.
     auto currentSdf = [this] { return m_document->input(); };
     m_sampling = new SamplingController(this, currentSdf, this);
-    m_exports = new ExportController(this, m_viewport, currentSdf, this);
+    m_exports = new ExportController(this, m_viewport, m_document, this);
     m_meshExport = new MeshExportController(this, currentSdf, this);
     connect(m_meshExport, &MeshExportController::meshWritten, this, &MainWindow::showMeshDeviation);
-    m_playback = new PlaybackController(m_timeBar, m_viewport, this);
+    m_playback = new PlaybackController(m_timeBar, m_document, this);
     // Plane readouts and probes: one persistent worker process (started at the first request).
     m_worker = new JobWorker(this);
-    m_plane = new PlaneController(m_planePanel, m_viewport, currentSdf, m_worker, this);
+    m_plane = new PlaneController(m_planePanel, m_viewport, m_document, m_worker, this);
     m_files = new FileController(this, m_editor, m_document, m_viewport, this);
-    m_probe = new ProbeController(m_probePanel, m_viewport, currentSdf, m_worker, this);
+    m_probe = new ProbeController(m_probePanel, m_viewport, m_document, m_worker, this);
     connect(m_probe, &ProbeController::probed, this, [this] {
         m_probeDock->show();
         m_probeDock->raise();

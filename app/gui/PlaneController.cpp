@@ -1,6 +1,7 @@
 #include "PlaneController.h"
 
 #include "JobWorker.h"
+#include "SdfDocument.h"
 
 #include <widgets/PlanePanel.h>
 #include <widgets/ViewportWidget.h>
@@ -11,19 +12,15 @@
 
 namespace sdfwb::app {
 
-PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWidget* viewport,
-                                 std::function<jobs::SdfInput()> currentSdf, JobWorker* worker, QObject* parent)
-    : QObject(parent), m_panel(panel), m_viewport(viewport), m_currentSdf(std::move(currentSdf)),
-      m_process(new JobChannel(worker, this)) {
+PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWidget* viewport, SdfDocument* document,
+                                 JobWorker* worker, QObject* parent)
+    : QObject(parent), m_panel(panel), m_viewport(viewport), m_document(document), m_process(new JobChannel(worker, this)) {
     m_debounce.setSingleShot(true);
     m_debounce.setInterval(kDebounceMs);
     connect(&m_debounce, &QTimer::timeout, this, &PlaneController::refresh);
-    connect(m_panel, &widgets::PlanePanel::planeEdited, this, [this](const renderer::CuttingPlane& plane) {
-        m_viewport->setPlane(plane);
-        m_debounce.start();
-    });
-    connect(m_viewport, &widgets::ViewportWidget::planeDragged, this, [this](const renderer::CuttingPlane& plane) {
-        m_panel->setPlane(plane);
+    connect(m_panel, &widgets::PlanePanel::planeEdited, m_document, &SdfDocument::setPlane);
+    connect(m_document, &SdfDocument::planeChanged, this, [this](const renderer::CuttingPlane& plane) {
+        m_panel->setPlane(plane); // no planeEdited: the panel only tells of the user's edits
         m_debounce.start();
     });
     connect(m_panel, &widgets::PlanePanel::applyStepFactor, this, [this](float factor) {
@@ -37,11 +34,9 @@ PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWi
         renderer::ShadingSettings shading = m_viewport->shading();
         shading.markers = examples;
         m_viewport->setShading(shading);
-        renderer::CuttingPlane plane = m_viewport->plane();
+        renderer::CuttingPlane plane = m_document->plane();
         plane.offset = glm::dot(glm::normalize(plane.normal), examples.front());
-        m_panel->setPlane(plane);
-        m_viewport->setPlane(plane);
-        m_debounce.start();
+        m_document->setPlane(plane);
         emit markersShown(int(examples.size()));
     });
     connect(m_process, &JobChannel::finished, this, [this](bool ok, bool, const std::string& json, const QString& message) {
@@ -81,17 +76,17 @@ PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWi
 void PlaneController::setExecutable(const QString& path) { m_process->worker()->setExecutable(path); }
 
 void PlaneController::refresh() {
-    renderer::CuttingPlane plane = m_viewport->plane();
+    const renderer::CuttingPlane& plane = m_document->plane();
     if (!plane.enabled) return;
     if (m_process->isRunning()) {
         m_pending = true; // one more run with the newest plane when this one ends
         return;
     }
     jobs::AuditRequest request;
-    request.sdf = m_currentSdf();
+    request.sdf = m_document->input();
     request.plane = jobs::PlaneSpec{plane.normal, plane.offset};
     request.resolution = 192;
-    request.time = m_viewport->time();
+    request.time = m_document->time();
     m_process->start(request);
 }
 

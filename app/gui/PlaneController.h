@@ -1,5 +1,5 @@
 #pragma once
-// Keeps the cutting plane of the panel and the viewport in step, and refreshes the plane's
+// Keeps the panel in step with the document's cutting plane (which the viewport draws), and refreshes the plane's
 // readouts after each change (debounced) by running the plane audit request in the workbench's
 // persistent worker (JobWorker), so the editor and the viewport never wait for the analysis.
 
@@ -7,8 +7,6 @@
 
 #include <QObject>
 #include <QTimer>
-
-#include <functional>
 
 namespace sdfwb::widgets {
 class PlanePanel;
@@ -19,6 +17,7 @@ namespace sdfwb::app {
 
 class JobChannel;
 class JobWorker;
+class SdfDocument;
 
 class PlaneController : public QObject {
     Q_OBJECT
@@ -28,8 +27,9 @@ public:
     // request started a process. While one runs, a newer plane waits for it (the newest wins).
     static constexpr int kDebounceMs = 10;
 
-    PlaneController(widgets::PlanePanel* panel, widgets::ViewportWidget* viewport, std::function<jobs::SdfInput()> currentSdf,
-                    JobWorker* worker, QObject* parent = nullptr);
+    // The readouts are of the document's shown SDF, at its time, on its plane.
+    PlaneController(widgets::PlanePanel* panel, widgets::ViewportWidget* viewport, SdfDocument* document, JobWorker* worker,
+                    QObject* parent = nullptr);
     void setExecutable(const QString& path);
     // Recomputes the readouts now (also called when the SDF changes).
     void refresh();
@@ -43,7 +43,7 @@ signals:
 private:
     widgets::PlanePanel* m_panel;
     widgets::ViewportWidget* m_viewport;
-    std::function<jobs::SdfInput()> m_currentSdf;
+    SdfDocument* m_document;
     JobChannel* m_process; // on the workbench's persistent worker
     QTimer m_debounce;
     bool m_pending = false;

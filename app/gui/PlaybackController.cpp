@@ -1,20 +1,20 @@
 #include "PlaybackController.h"
 
+#include "SdfDocument.h"
+
 #include <widgets/TimeBar.h>
-#include <widgets/ViewportWidget.h>
 
 namespace sdfwb::app {
 
-PlaybackController::PlaybackController(widgets::TimeBar* bar, widgets::ViewportWidget* viewport, QObject* parent)
-    : QObject(parent), m_bar(bar), m_viewport(viewport) {
+PlaybackController::PlaybackController(widgets::TimeBar* bar, SdfDocument* document, QObject* parent)
+    : QObject(parent), m_bar(bar), m_document(document) {
     m_timer.setInterval(16);
-    connect(&m_timer, &QTimer::timeout, this, [this] {
-        double seconds = m_viewport->time() + m_clock.restart() / 1000.0;
-        m_viewport->setTime(float(seconds));
-        m_bar->setTime(seconds);
-    });
+    connect(&m_timer, &QTimer::timeout, this,
+            [this] { m_document->setTime(float(m_document->time() + m_clock.restart() / 1000.0)); });
+    // Whoever sets the time (playback, the bar, a session restored), the bar shows it.
+    connect(m_document, &SdfDocument::timeChanged, m_bar, [this](float seconds) { m_bar->setTime(seconds); });
     connect(m_bar, &widgets::TimeBar::playToggled, this, &PlaybackController::setPlaying);
-    connect(m_bar, &widgets::TimeBar::timeEdited, this, [this](double seconds) { m_viewport->setTime(float(seconds)); });
+    connect(m_bar, &widgets::TimeBar::timeEdited, this, [this](double seconds) { m_document->setTime(float(seconds)); });
 }
 
 void PlaybackController::setPlaying(bool playing) {

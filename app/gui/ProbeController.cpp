@@ -1,6 +1,7 @@
 #include "ProbeController.h"
 
 #include "JobWorker.h"
+#include "SdfDocument.h"
 
 #include <core/Log.h>
 #include <jobs/JobJson.h>
@@ -33,10 +34,9 @@ widgets::ProbeView viewOf(const jobs::ProbeReport& report) {
 
 } // namespace
 
-ProbeController::ProbeController(widgets::ProbePanel* panel, widgets::ViewportWidget* viewport,
-                                 std::function<jobs::SdfInput()> currentSdf, JobWorker* worker, QObject* parent)
-    : QObject(parent), m_panel(panel), m_viewport(viewport), m_currentSdf(std::move(currentSdf)),
-      m_process(new JobChannel(worker, this)) {
+ProbeController::ProbeController(widgets::ProbePanel* panel, widgets::ViewportWidget* viewport, SdfDocument* document,
+                                 JobWorker* worker, QObject* parent)
+    : QObject(parent), m_panel(panel), m_viewport(viewport), m_document(document), m_process(new JobChannel(worker, this)) {
     connect(m_viewport, &widgets::ViewportWidget::pixelProbed, this, &ProbeController::probe);
     connect(m_process, &JobChannel::finished, this, [this](bool ok, bool, const std::string& json, const QString& message) {
         if (m_next) { // a newer click: show that one
@@ -67,15 +67,7 @@ bool ProbeController::isRunning() const { return m_process->isRunning(); }
 
 void ProbeController::probe(int x, int y, int width, int height) {
     jobs::ProbeRequest request;
-    jobs::FrameRequest& frame = request.frame;
-    frame.sdf = m_currentSdf();
-    frame.width = width;
-    frame.height = height;
-    frame.time = m_viewport->time();
-    frame.shading = m_viewport->shading();
-    frame.trace = m_viewport->trace();
-    frame.camera = m_viewport->camera();
-    frame.plane = m_viewport->plane();
+    request.frame = m_document->frame(width, height);
     request.x = x;
     request.y = y;
     m_viewport->setProbeMark(QPoint(x, y));

@@ -20,12 +20,13 @@ namespace sdfwb::app {
 
 class JobChannel;
 class JobWorker;
+class SdfDocument;
 
 class ProbeController : public QObject {
     Q_OBJECT
 public:
-    ProbeController(widgets::ProbePanel* panel, widgets::ViewportWidget* viewport, std::function<jobs::SdfInput()> currentSdf,
-                    JobWorker* worker, QObject* parent = nullptr);
+    ProbeController(widgets::ProbePanel* panel, widgets::ViewportWidget* viewport, SdfDocument* document, JobWorker* worker,
+                    QObject* parent = nullptr);
     void setExecutable(const QString& path);
     // Probes pixel (x, y), top row 0, of a width x height frame of the viewport's view.
     void probe(int x, int y, int width, int height);
@@ -37,7 +38,7 @@ signals:
 private:
     widgets::ProbePanel* m_panel;
     widgets::ViewportWidget* m_viewport;
-    std::function<jobs::SdfInput()> m_currentSdf;
+    SdfDocument* m_document;
     JobChannel* m_process;                    // on the workbench's persistent worker
     std::optional<jobs::ProbeRequest> m_next; // clicked while one ran
 };

@@ -29,6 +29,39 @@ SdfDocument::SdfDocument(widgets::ViewportWidget* viewport, QObject* parent) : Q
         m_reverted = true;
         emit sdfReverted(m_good.path);
     });
+    // A Ctrl + drag moves the viewport's plane: the document takes the plane it moved to.
+    connect(m_viewport, &widgets::ViewportWidget::planeDragged, this, [this](const renderer::CuttingPlane& plane) {
+        m_plane = plane;
+        emit planeChanged(m_plane);
+    });
+    m_time = m_viewport->time();
+    m_plane = m_viewport->plane();
+}
+
+jobs::FrameRequest SdfDocument::frame(int width, int height) const {
+    jobs::FrameRequest frame;
+    frame.sdf = input();
+    frame.width = width;
+    frame.height = height;
+    frame.time = m_time;
+    frame.plane = m_plane;
+    frame.shading = m_viewport->shading();
+    frame.trace = m_viewport->trace();
+    frame.camera = m_viewport->camera();
+    frame.overlay = !m_viewport->overlayText().isEmpty();
+    return frame;
+}
+
+void SdfDocument::setTime(float seconds) {
+    m_time = seconds;
+    m_viewport->setTime(seconds);
+    emit timeChanged(seconds);
+}
+
+void SdfDocument::setPlane(const renderer::CuttingPlane& plane) {
+    m_plane = plane;
+    m_viewport->setPlane(plane);
+    emit planeChanged(m_plane);
 }
 
 jobs::SdfInput SdfDocument::input() const {
@@ -95,8 +128,7 @@ void SdfDocument::startCheck(const QString& text) {
     const bool mesh = isMesh();
     std::string sign = m_meshSign.toStdString(), normalize = m_meshNormalize.toStdString();
     // glslang checks the variant the viewport will compile (shading, AO, plane, markers, ...).
-    const shaders::TracerFeatures features =
-        renderer::tracerFeatures(m_viewport->shading(), m_viewport->trace(), m_viewport->plane());
+    const shaders::TracerFeatures features = renderer::tracerFeatures(m_viewport->shading(), m_viewport->trace(), m_plane);
     QPointer<SdfDocument> self(this);
     QThreadPool::globalInstance()->start([self, generation, source = std::move(source), path = std::move(path),
                                           entry = std::move(entry), features, channels, mesh, sign = std::move(sign),

@@ -1,12 +1,15 @@
 #pragma once
 // The SDF being edited, the one place that holds it: its file, its text, the last text that
-// compiled (what the viewport shows), the entry point, and the checking pipeline. Edits are
+// compiled (what the viewport shows), the entry point, the parameter values, the scene time, the
+// cutting plane, and the checking pipeline. The viewport is told each of them and draws with it;
+// jobs read them here. Edits are
 // debounced and checked off the UI thread (include resolution + glslang on the exact tracer
 // variant the viewport compiles); good text goes to the viewport, whose driver compile may add
 // diagnostics. Jobs (sampling, exports, plane readouts) take `input()`: the shown text, not the
 // file on disk. Owns its worker threads; never blocks the UI thread.
 
 #include <jobs/Requests.h>
+#include <renderer/RenderSettings.h>
 #include <shaders/Diagnostic.h>
 #include <shaders/SdfSource.h>
 
@@ -61,6 +64,16 @@ public:
     void setParameterValues(const std::vector<shaders::ParameterSetting>& values);
     const std::vector<shaders::ParameterSetting>& parameterValues() const { return m_parameterValues; }
 
+    // The scene time in seconds (animated SDFs, Shadertoy's iTime) and the cutting plane: the
+    // viewport draws with them, and plane readouts, the probe, screenshots and videos run with them.
+    void setTime(float seconds);
+    float time() const { return m_time; }
+    void setPlane(const renderer::CuttingPlane& plane);
+    const renderer::CuttingPlane& plane() const { return m_plane; }
+    // The frame the viewport shows, as a job takes it (the probe, videos): the shown SDF, the
+    // time and the plane from here; the camera, shading, trace settings and overlay from the viewport.
+    jobs::FrameRequest frame(int width, int height) const;
+
     // Schedules a check of `text` after the debounce delay; newer text supersedes older.
     void textEdited(const QString& text);
     // Checks `text` now (still off the UI thread).
@@ -91,6 +104,9 @@ signals:
     void sdfReverted(const QString& file);
     // The functions the checked text defines changed (for autocompletion).
     void signaturesChanged(const QStringList& signatures);
+    // The time or the plane changed (through the setters, or a Ctrl + drag in the viewport).
+    void timeChanged(float seconds);
+    void planeChanged(const sdfwb::renderer::CuttingPlane& plane);
 
 private:
     void startCheck(const QString& text);
@@ -118,6 +134,8 @@ private:
     std::vector<shaders::Diagnostic> m_diagnostics;
     QStringList m_fileSignatures;
     std::vector<shaders::ParameterSetting> m_parameterValues;
+    float m_time = 0.0f;
+    renderer::CuttingPlane m_plane;
 };
 
 } // namespace sdfwb::app

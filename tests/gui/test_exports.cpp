@@ -98,11 +98,12 @@ TEST(Export, Mp4FrameEqualsAScreenshotOfTheSameUnsavedState) {
     trace.maxSteps = 24; // few steps: the box's silhouette shows the budget
     trace.stepFactor = 0.6f;
     window.viewport()->setTrace(trace);
-    renderer::CuttingPlane plane = window.viewport()->plane();
+    renderer::CuttingPlane plane = window.document()->plane();
     plane.enabled = true;
     plane.normal = {0.3f, 0.2f, 1.0f};
     plane.offset = 0.2f;
-    window.viewport()->setPlane(plane);
+    window.document()->setPlane(plane);
+    EXPECT_TRUE(window.viewport()->plane() == plane) << "the viewport draws the document's plane";
 
     widgets::ExportSettings settings;
     settings.output = QDir::temp().filePath(QString("sdfwb-gui-state-%1.mp4").arg(QCoreApplication::applicationPid()));
@@ -138,7 +139,7 @@ TEST(Export, Mp4FrameEqualsAScreenshotOfTheSameUnsavedState) {
     };
     const QImage same = screenshot("sdfwb-gui-state-same.png");
     plane.enabled = false;
-    window.viewport()->setPlane(plane);
+    window.document()->setPlane(plane);
     const QImage withoutPlane = screenshot("sdfwb-gui-state-noplane.png");
     window.viewport()->setTrace(renderer::TraceSettings{});
     shading.mode = renderer::ShadingMode::Normals;

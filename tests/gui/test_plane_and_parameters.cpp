@@ -37,6 +37,12 @@ TEST(CuttingPlane, PanelDrawsThePlaneAndShowsReadouts) {
     QApplication::sendEvent(viewport, &move);
     EXPECT_NEAR(viewport->plane().offset, 0.2f, 1e-3f);
     EXPECT_NEAR(window.planePanel()->plane().offset, 0.2f, 1e-3f);
+    // The document holds the plane the drag moved to, and the jobs take it from there.
+    EXPECT_TRUE(window.document()->plane() == viewport->plane());
+    widgets::ExportSettings video;
+    video.width = 64;
+    video.height = 48;
+    EXPECT_TRUE(window.exports()->videoRequest(video).frame.plane == viewport->plane());
 
     window.planePanel()->findChild<QPushButton*>("apply_step_factor")->click();
     EXPECT_NEAR(viewport->trace().stepFactor, r.safeStepFactor, 1e-6f);

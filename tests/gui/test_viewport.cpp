@@ -323,15 +323,23 @@ TEST(Viewport, TimeScrubsAnimatedSdfs) {
     ASSERT_TRUE(openFileAndWait(window, path));
     // A new SDF's first frame is a 5 % probe: compare full-resolution frames only.
     window.viewport()->resetCamera(); // not a camera restored from an earlier test's session
-    window.timeBar()->setTime(0.0);
-    window.viewport()->setTime(0.0f);
+    window.document()->setTime(0.0f);
     long small = foreground(fullResolutionFrame(window), kBackground);
-    window.viewport()->setTime(1.5f);
+    window.document()->setTime(1.5f);
+    EXPECT_FLOAT_EQ(window.viewport()->time(), 1.5f) << "the viewport draws at the document's time";
+    EXPECT_DOUBLE_EQ(window.timeBar()->time(), 1.5) << "and the time bar shows it";
     long large = foreground(fullResolutionFrame(window), kBackground);
     EXPECT_GT(large, small * 2) << "sin(1.5) grows the sphere from 0.4 to 0.7";
     window.playback()->setPlaying(true);
-    float startTime = window.viewport()->time();
-    ASSERT_TRUE(waitFor([&] { return window.viewport()->time() > startTime + 0.2f; }, 3000));
+    float startTime = window.document()->time();
+    ASSERT_TRUE(waitFor([&] { return window.document()->time() > startTime + 0.2f; }, 3000));
     window.playback()->setPlaying(false);
-    EXPECT_NEAR(window.timeBar()->time(), window.viewport()->time(), 1e-3);
+    EXPECT_NEAR(window.timeBar()->time(), window.document()->time(), 1e-3);
+    EXPECT_FLOAT_EQ(window.viewport()->time(), window.document()->time());
+    // Jobs run at the document's time: the probe's frame and a video's first frame.
+    EXPECT_FLOAT_EQ(window.document()->frame(64, 48).time, window.document()->time());
+    widgets::ExportSettings video;
+    video.width = 64;
+    video.height = 48;
+    EXPECT_FLOAT_EQ(window.exports()->videoRequest(video).frame.time, window.document()->time());
 }
