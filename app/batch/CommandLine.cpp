@@ -619,9 +619,10 @@ int runMeshCommand(const Arguments& arguments, Mode mode) {
         ->check(CLI::Range(2, 2048));
     addBoundsOption(app, request.boundsMin, request.boundsMax, "MINX,MINY,MINZ,MAXX,MAXY,MAXZ (default -1,-1,-1,1,1,1)");
     app.add_option("--time", request.time, "time in seconds for animated SDFs")->capture_default_str()->check(numberCheck(false));
-    app.add_option("--lipschitz", request.lipschitz,
-                   "bound on |grad f| used to skip empty blocks (default: 1.25 x the steepest |grad f| at the block centres, or the "
-                   "audit's estimate when --error-samples is given; 0 skips nothing)")
+    app.add_option(
+           "--lipschitz", request.lipschitz,
+           "bound on |grad f| used to skip empty blocks (default: 1.25 x the steepest |grad f| at the block centres, or the "
+           "audit's estimate when --error-samples is given; 0 skips nothing)")
         ->check(CLI::Range(0.0f, 1e6f));
     app.add_option("--error-samples", request.errorSamples, "points each way for the error against the field (0: none)")
         ->capture_default_str()
