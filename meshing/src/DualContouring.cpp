@@ -390,8 +390,8 @@ private:
     void placeVertices();
     bool cellCrossed(const glm::dvec3& point) const;
     std::optional<std::pair<glm::dvec3, glm::dvec3>> creaseOnUpperFace(const glm::dvec3* points, const glm::dvec3* patchNormals,
-                                                                       int count, const std::int32_t cell[3],
-                                                                       const glm::dvec3& hi) const;
+                                                                       int count, const QefSolution& qef,
+                                                                       const std::int32_t cell[3], const glm::dvec3& hi) const;
     const CellRecord* recordAt(const std::int64_t c[3]) const;
     std::uint32_t crossingOf(const std::int64_t c[3], int l) const;
     template <class Visit> void forEachCrossingOf(const std::int64_t c[3], Visit&& visit) const;
@@ -773,7 +773,7 @@ void Extraction::placeVertices() {
                         }
                         QefSolution qef = solveQef(points, patchNormals, count);
                         if (qef.freeCount > 0 && count < 13)
-                            if (const auto crease = creaseOnUpperFace(points, patchNormals, count, cell, hi)) {
+                            if (const auto crease = creaseOnUpperFace(points, patchNormals, count, qef, cell, hi)) {
                                 points[count] = crease->first;
                                 patchNormals[count++] = crease->second;
                                 qef = solveQef(points, patchNormals, count);
@@ -818,19 +818,26 @@ bool Extraction::cellCrossed(const glm::dvec3& point) const {
 // x = 0) leaves each cell's crossings on one face only, and each cell's vertex on its own face, so
 // the triangles between them cut the crease off (by a quarter cell). The crossings on that face's
 // edges lie on the crease, their normals a mix of the two faces'; the QEF drops the direction that
-// mix turns by. A patch with a free direction and such a crossing on its upper face gets, through
-// it, the plane of the cell above whose normal turns furthest from the face the mixed normal is
-// nearest, further than the mixed one does: its vertex goes onto the crease, and the cell above keeps its flat vertex, whose
-// triangles then lie in that face (its crossings must reach a tenth of a cell off the crease).
-// Only the lower cell moves: both would put their vertices at
-// one point. Returns the crossing and the other face's normal.
+// mix turns by. A patch with such a crossing on its upper face gets, through it, the plane of the
+// cell above whose normal turns furthest from the face the mixed normal is nearest (further than
+// the mixed one does): its vertex goes onto the crease, and the cell above keeps its flat vertex,
+// whose triangles then lie in that face. Only the lower cell moves: both would put their vertices
+// at one point. The crease must lie in the face, the patch's face must reach a tenth of a cell off
+// it, and neither face may lie in the grid's plane (the Menger sponge's walls on grid planes are
+// right as they are). Returns the crossing and the other face's normal.
 std::optional<std::pair<glm::dvec3, glm::dvec3>> Extraction::creaseOnUpperFace(const glm::dvec3* points,
                                                                                const glm::dvec3* patchNormals, int count,
-                                                                               const std::int32_t cell[3],
+                                                                               const QefSolution& qef, const std::int32_t cell[3],
                                                                                const glm::dvec3& hi) const {
     constexpr double kFlat = 0.99619469809;   // cos 5 degrees: a normal this close is the same face's
     constexpr double kCrease = 0.93969262078; // cos 20 degrees: two faces turning further meet at a crease
     for (int i = 0; i < count; ++i) {
+        // Only a normal the QEF dropped: it turns along a direction the solution left free (a right
+        // angle's mixed normal, 45 degrees off, is kept, and the vertex is on the crease already).
+        double dropped = 0.0;
+        for (int k = 0; k < qef.freeCount; ++k)
+            dropped = std::max(dropped, std::abs(glm::dot(patchNormals[i], qef.free[std::size_t(k)])));
+        if (dropped < 0.2) continue;
         int own = -1; // the face this crossing's normal mixes with: the nearest other normal of the patch
         for (int j = 0; j < count; ++j) {
             const double turn = glm::dot(patchNormals[j], patchNormals[i]);
@@ -861,7 +868,14 @@ std::optional<std::pair<glm::dvec3, glm::dvec3>> Extraction::creaseOnUpperFace(c
             for (int j = 0; j < count; ++j)
                 if (glm::dot(patchNormals[j], patchNormals[own]) > kFlat)
                     reach = std::max(reach, std::abs(glm::dot(*other, points[j] - points[i])));
-            if (turn < kCrease && turn < mixed - 1e-3 && reach > 0.1 * grid.step[a]) return std::pair{points[i], *other};
+            // The crease must lie in the face (not cross it), and neither face in the grid's plane
+            // itself (a face on a plane of the grid is met by crossings a 1024th of an edge off it,
+            // and its cells are right as they are).
+            const glm::dvec3 along = glm::cross(patchNormals[own], *other);
+            const bool inTheFace = std::abs(along[a]) < 0.05 * glm::length(along);
+            const bool faceInThePlane = std::abs((*other)[a]) > 0.95 || std::abs(patchNormals[own][a]) > 0.95;
+            if (turn < kCrease && turn < mixed - 1e-3 && reach > 0.1 * grid.step[a] && inTheFace && !faceInThePlane)
+                return std::pair{points[i], *other};
         }
     }
     return std::nullopt;

@@ -669,7 +669,8 @@ TEST_F(MeshTest, ARotatedBoxKeepsItsCornersAndEdges) {
 // little for the QEF, which left a vertex on its own face in each cell, and the triangles between
 // them cut the crease off: Hausdorff 0.012 at 32 cells and 0.0088 at 64. The lower cell's vertex
 // now goes onto the crease (measured: 1.9e-6 and 3.3e-6). The box's right angles (a mixed normal
-// 45 degrees off) were kept before and still are; both meshes stay manifold.
+// 45 degrees off, which the QEF keeps) were kept before and still are, untouched; both meshes stay
+// manifold.
 TEST_F(MeshTest, ACreaseOnAPlaneOfTheGridIsKept) {
     const std::string turnedBox = "float sdf(vec3 p) { p.xz = mat2(0.70710678, 0.70710678, -0.70710678, 0.70710678) * p.xz;"
                                   " vec3 q = abs(p) - vec3(0.5, 0.4, 0.5);"
@@ -687,7 +688,12 @@ TEST_F(MeshTest, ACreaseOnAPlaneOfTheGridIsKept) {
             auto extracted = meshing::extractMesh(sdf, mesher, {});
             ASSERT_TRUE(extracted) << extracted.error().message;
             const meshing::Mesh& mesh = extracted->first;
-            EXPECT_GT(extracted->second.creasesOnFaces, 0u);
+            // The prism's creases need the plane from the cell above; the box's right angles do not
+            // (the QEF keeps a mixed normal 45 degrees off), and they are left alone.
+            if (label == std::string("hexagonal prism"))
+                EXPECT_GT(extracted->second.creasesOnFaces, 0u);
+            else
+                EXPECT_EQ(extracted->second.creasesOnFaces, 0u);
             EXPECT_TRUE(meshing::checkTopology(mesh).manifold());
             EXPECT_EQ(meshing::checkTopology(mesh).degenerateTriangles, 0u);
             EXPECT_TRUE(closedAndOutward(mesh));
