@@ -46,24 +46,7 @@ PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWi
         if (!report) {
             m_panel->setReadoutMessage(QString::fromStdString(report.error().message));
         } else {
-            const sampling::PlaneReadout& r = *report->readout;
-            widgets::PlaneReadoutView view;
-            view.minimum = r.minimum;
-            view.maximum = r.maximum;
-            view.lipschitzMax = r.lipschitzMax;
-            view.lipschitz99 = r.lipschitz99;
-            view.shareAboveOne = r.shareAboveOne;
-            view.truncationDistance = r.truncationDistance;
-            view.discontinuities = r.discontinuities;
-            view.nanCount = r.nanCount;
-            view.points = r.points;
-            view.histogram.assign(r.histogram.begin(), r.histogram.end());
-            view.safeStepFactor = r.safeStepFactor;
-            view.seconds = r.seconds;
-            for (const sampling::AuditFlag& flag : r.flags)
-                view.findings.push_back(
-                    {QString::fromStdString(flag.name), QString::fromStdString(flag.evidence), flag.examples});
-            m_panel->setReadout(view);
+            m_panel->setReadout(*report->readout);
             emit readoutUpdated();
         }
         if (m_pending) {

@@ -39,7 +39,7 @@ TEST(ForeignCode, EntryFieldAndShowWhere) {
     int readouts = 0;
     QObject::connect(window.plane(), &app::PlaneController::readoutUpdated, [&] { ++readouts; });
     auto findingsNamed = [&](const char* name) {
-        for (const auto& f : window.planePanel()->readout().findings)
+        for (const auto& f : window.planePanel()->readout().flags)
             if (f.name == name) return true;
         return false;
     };
@@ -52,7 +52,7 @@ TEST(ForeignCode, EntryFieldAndShowWhere) {
     findings->setCurrentIndex(findings->findText("discontinuous"));
     auto showAndCheck = [&](const char* name, const char* screenshot) {
         std::vector<glm::vec3> examples;
-        for (const auto& f : window.planePanel()->readout().findings)
+        for (const auto& f : window.planePanel()->readout().flags)
             if (f.name == name) examples = f.examples;
         ASSERT_FALSE(examples.empty());
         const QImage before = window.viewport()->grabFramebuffer();

@@ -22,7 +22,7 @@ TEST(CuttingPlane, PanelDrawsThePlaneAndShowsReadouts) {
     with.save(QDir::temp().filePath("sdfwb-gui-plane.png"));
     ASSERT_TRUE(waitFor([&] { return readout; }, 30000))
         << window.planePanel()->findChild<QLabel*>("readouts")->text().toStdString();
-    const widgets::PlaneReadoutView& r = window.planePanel()->readout();
+    const sampling::PlaneReadout& r = window.planePanel()->readout();
     EXPECT_NEAR(r.minimum, -0.8f, 0.03f);
     EXPECT_NEAR(r.lipschitzMax, 1.0f, 0.01f);
     EXPECT_EQ(r.nanCount, 0u);

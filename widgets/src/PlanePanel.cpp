@@ -136,8 +136,8 @@ PlanePanel::PlanePanel(QWidget* parent) : QWidget(parent) {
         layout->addLayout(row);
         connect(m_showWhere, &QPushButton::clicked, this, [this] {
             const int index = m_findings->currentIndex();
-            if (index >= 0 && std::size_t(index) < m_readout.findings.size())
-                emit showWhere(m_readout.findings[std::size_t(index)].examples);
+            if (index >= 0 && std::size_t(index) < m_readout.flags.size())
+                emit showWhere(m_readout.flags[std::size_t(index)].examples);
         });
     }
     m_histogram = new HistogramView;
@@ -182,17 +182,18 @@ renderer::CuttingPlane PlanePanel::plane() const {
 namespace {
 
 // Every finding with its evidence, most severe first; "no findings" when there are none.
-QString findingsHtml(const std::vector<FindingView>& findings) {
+QString findingsHtml(const std::vector<sampling::AuditFlag>& findings) {
     if (findings.empty()) return QObject::tr("<p>No findings: no NaN/Inf, jump, plateau or |grad f| &gt; 1.05 on the plane.</p>");
     QString html = "<p>";
-    for (const FindingView& finding : findings)
-        html += "<b>" + finding.name.toHtmlEscaped() + "</b>: " + finding.evidence.toHtmlEscaped() + "<br>";
+    for (const sampling::AuditFlag& finding : findings)
+        html += "<b>" + QString::fromStdString(finding.name).toHtmlEscaped() +
+                "</b>: " + QString::fromStdString(finding.evidence).toHtmlEscaped() + "<br>";
     return html + "</p>";
 }
 
 } // namespace
 
-void PlanePanel::setReadout(const PlaneReadoutView& r) {
+void PlanePanel::setReadout(const sampling::PlaneReadout& r) {
     m_readout = r;
     QString truncation = r.truncationDistance ? QString::number(*r.truncationDistance, 'g', 4) : tr("none");
     m_readoutText->setText(tr("<table>"
@@ -215,11 +216,11 @@ void PlanePanel::setReadout(const PlaneReadoutView& r) {
                                .arg(r.points)
                                .arg(r.safeStepFactor, 0, 'g', 4)
                                .arg(r.seconds, 0, 'f', 2)
-                               .arg(findingsHtml(r.findings)));
+                               .arg(findingsHtml(r.flags)));
     m_findings->clear();
-    for (const FindingView& finding : r.findings) m_findings->addItem(finding.name);
-    m_findings->setEnabled(!r.findings.empty());
-    m_showWhere->setEnabled(!r.findings.empty());
+    for (const sampling::AuditFlag& finding : r.flags) m_findings->addItem(QString::fromStdString(finding.name));
+    m_findings->setEnabled(!r.flags.empty());
+    m_showWhere->setEnabled(!r.flags.empty());
     m_histogram->setBins(r.histogram);
     m_apply->setEnabled(true);
 }

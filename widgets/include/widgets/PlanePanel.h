@@ -5,6 +5,7 @@
 // with a button that applies it to the tracer). UI thread only.
 
 #include <renderer/RenderSettings.h>
+#include <sampling/FieldAudit.h>
 
 #include <QString>
 #include <QWidget>
@@ -24,33 +25,16 @@ namespace sdfwb::widgets {
 
 class HistogramView;
 
-// One of the audit's findings on the plane (non-conservative, truncated, discontinuous, nan).
-struct FindingView {
-    QString name;
-    QString evidence;
-    std::vector<glm::vec3> examples; // where it holds (at most 16 points)
-};
-
-struct PlaneReadoutView {
-    float minimum = 0, maximum = 0, lipschitzMax = 0, lipschitz99 = 0;
-    double shareAboveOne = 0;
-    std::optional<float> truncationDistance;
-    std::uint64_t discontinuities = 0, nanCount = 0, points = 0;
-    std::vector<std::uint64_t> histogram;
-    float safeStepFactor = 1;
-    std::vector<FindingView> findings; // most severe first
-    double seconds = 0;
-};
-
 class PlanePanel : public QWidget {
     Q_OBJECT
 public:
     explicit PlanePanel(QWidget* parent = nullptr);
     void setPlane(const renderer::CuttingPlane& plane); // no signal
     renderer::CuttingPlane plane() const;
-    void setReadout(const PlaneReadoutView& readout);
+    // Shows the plane audit's report as the job returned it (nothing is copied into a view struct).
+    void setReadout(const sampling::PlaneReadout& readout);
     void setReadoutMessage(const QString& message);
-    const PlaneReadoutView& readout() const { return m_readout; }
+    const sampling::PlaneReadout& readout() const { return m_readout; }
 
 signals:
     void planeEdited(const sdfwb::renderer::CuttingPlane& plane);
@@ -74,7 +58,7 @@ private:
     QComboBox* m_findings = nullptr;
     QPushButton* m_showWhere = nullptr;
     bool m_updating = false;
-    PlaneReadoutView m_readout;
+    sampling::PlaneReadout m_readout;
 };
 
 } // namespace sdfwb::widgets
