@@ -389,6 +389,7 @@ private:
     Expected<void> placeCrossings();
     void placeVertices();
     bool cellCrossed(const glm::dvec3& point) const;
+    bool cellCorners(const std::int64_t c[3], float corner[8]) const;
     std::optional<std::pair<glm::dvec3, glm::dvec3>> creaseOnUpperFace(const glm::dvec3* points, const glm::dvec3* patchNormals,
                                                                        int count, const QefSolution& qef,
                                                                        const std::int32_t cell[3], const glm::dvec3& hi) const;
@@ -802,16 +803,25 @@ bool Extraction::cellCrossed(const glm::dvec3& point) const {
         c[a] = std::int64_t(std::floor((point[a] - grid.origin[a]) / grid.step[a]));
         if (c[a] < 0 || c[a] >= grid.n) return false;
     }
-    const std::int64_t bi = c[0] / kBlock, bj = c[1] / kBlock, bk = c[2] / kBlock;
-    const std::int32_t slot = blockSlot[std::size_t((bk * blocksPerAxis + bj) * blocksPerAxis + bi)];
+    float corner[8];
+    if (!cellCorners(c, corner)) return false;
+    int signs = 0;
+    for (int k = 0; k < 8; ++k) signs |= int(inside(corner[k])) << k;
+    return signs != 0 && signs != 0xff;
+}
+
+// f at the eight corners of cell c (corner x + 2y + 4z); false outside the grid and in blocks
+// skipped as empty.
+bool Extraction::cellCorners(const std::int64_t c[3], float corner[8]) const {
+    for (int a = 0; a < 3; ++a)
+        if (c[a] < 0 || c[a] >= grid.n) return false;
+    const std::int32_t slot = blockSlot[blockIndexOf(c)];
     if (slot < 0) return false;
     const float* v = values.data() + std::size_t(slot) * std::size_t(kPoints);
-    const int p = int(((c[2] - bk * kBlock) * kSide + (c[1] - bj * kBlock)) * kSide + (c[0] - bi * kBlock));
-    int signs = 0;
-    for (int corner = 0; corner < 8; ++corner)
-        signs |= int(inside(v[p + (corner & 1) * kStride[0] + (corner >> 1 & 1) * kStride[1] + (corner >> 2) * kStride[2]]))
-                 << corner;
-    return signs != 0 && signs != 0xff;
+    int p = 0;
+    for (int a = 0; a < 3; ++a) p += int(c[a] % kBlock) * kStride[a];
+    for (int k = 0; k < 8; ++k) corner[k] = v[p + (k & 1) * kStride[0] + (k >> 1 & 1) * kStride[1] + (k >> 2) * kStride[2]];
+    return true;
 }
 
 // A crease that lies exactly on a face between two cells (a hexagonal prism's corner on the plane
@@ -849,7 +859,6 @@ std::optional<std::pair<glm::dvec3, glm::dvec3>> Extraction::creaseOnUpperFace(c
             if (!(std::abs(points[i][a] - hi[a]) < 1e-4 * grid.step[a])) continue;
             std::int64_t above[3] = {cell[0], cell[1], cell[2]};
             ++above[a];
-            if (above[a] >= grid.n || blockSlot[blockIndexOf(above)] < 0) continue; // no crossings there
             std::optional<glm::dvec3> other;
             forEachCrossingOf(above, [&](std::uint32_t e) {
                 glm::dvec3 n(normals[3 * e], normals[3 * e + 1], normals[3 * e + 2]);
@@ -886,10 +895,9 @@ std::optional<std::pair<glm::dvec3, glm::dvec3>> Extraction::creaseOnUpperFace(c
 const CellRecord* Extraction::recordAt(const std::int64_t c[3]) const {
     for (int a = 0; a < 3; ++a)
         if (c[a] < 0 || c[a] >= grid.n) return nullptr;
-    const std::int64_t bi = c[0] / kBlock, bj = c[1] / kBlock, bk = c[2] / kBlock;
-    const std::int32_t slot = blockSlot[std::size_t((bk * blocksPerAxis + bj) * blocksPerAxis + bi)];
+    const std::int32_t slot = blockSlot[blockIndexOf(c)];
     if (slot < 0) return nullptr;
-    const int local = int(((c[2] - bk * kBlock) * kBlock + (c[1] - bj * kBlock)) * kBlock + (c[0] - bi * kBlock));
+    const int local = int(((c[2] % kBlock) * kBlock + c[1] % kBlock) * kBlock + c[0] % kBlock);
     const RankedBits<kCells>& cells = blockCells[std::size_t(slot)];
     if (!cells.test(local)) return nullptr;
     return &cellRecords[cells.rank(local)];
@@ -897,23 +905,18 @@ const CellRecord* Extraction::recordAt(const std::int64_t c[3]) const {
 
 // The index (into edges and crossings) of local edge l of meshed cell c.
 std::uint32_t Extraction::crossingOf(const std::int64_t c[3], int l) const {
-    const std::int64_t b[3] = {c[0] / kBlock, c[1] / kBlock, c[2] / kBlock};
-    const std::int32_t slot = blockSlot[std::size_t((b[2] * blocksPerAxis + b[1]) * blocksPerAxis + b[0])];
+    const std::int32_t slot = blockSlot[blockIndexOf(c)];
     const int* o = tables.edgeOffset[l];
     int point = 0;
-    for (int a = 0; a < 3; ++a) point += int(c[a] - b[a] * kBlock + o[a]) * kStride[a];
+    for (int a = 0; a < 3; ++a) point += int(c[a] % kBlock + o[a]) * kStride[a];
     return blockEdges[std::size_t(slot)].rank(3 * point + l / 4);
 }
 
-// Calls visit(index) for each crossing on the twelve edges of cell c, in a kept block (its
-// crossings are placed before any vertex is).
+// Calls visit(index) for each crossing on the twelve edges of cell c (none outside the grid or in
+// a skipped block). Crossings are placed before any vertex is.
 template <class Visit> void Extraction::forEachCrossingOf(const std::int64_t c[3], Visit&& visit) const {
-    const std::int64_t b[3] = {c[0] / kBlock, c[1] / kBlock, c[2] / kBlock};
-    const std::int32_t slot = blockSlot[std::size_t((b[2] * blocksPerAxis + b[1]) * blocksPerAxis + b[0])];
-    const float* v = values.data() + std::size_t(slot) * std::size_t(kPoints);
-    const int p = int(((c[2] - b[2] * kBlock) * kSide + (c[1] - b[1] * kBlock)) * kSide + (c[0] - b[0] * kBlock));
     float corner[8];
-    for (int k = 0; k < 8; ++k) corner[k] = v[p + (k & 1) * kStride[0] + (k >> 1 & 1) * kStride[1] + (k >> 2) * kStride[2]];
+    if (!cellCorners(c, corner)) return;
     for (int l = 0; l < 12; ++l)
         if (crosses(corner[tables.edgeCorner[l][0]], corner[tables.edgeCorner[l][1]])) visit(crossingOf(c, l));
 }

@@ -6,6 +6,24 @@
 using namespace sdfwb;
 using namespace sdfwb::guitest;
 
+namespace {
+
+// Shows the window with the dataset's sphere (radius 0.8), turns the plane on along Z and waits for
+// its first readouts; `readouts` counts them and every later one.
+void openSphereWithReadouts(app::MainWindow& window, int& readouts) {
+    window.resize(1000, 640);
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "Geometry/Sphere.glsl"));
+    window.plane()->setExecutable(SDFWB_BINARY);
+    QObject::connect(window.plane(), &app::PlaneController::readoutUpdated, [&readouts] { ++readouts; });
+    window.planePanel()->findChild<QPushButton*>("axis_Z")->click();
+    ASSERT_TRUE(waitFor([&] { return readouts > 0; }, 30000))
+        << window.planePanel()->findChild<QLabel*>("readouts")->text().toStdString();
+    EXPECT_NEAR(window.planePanel()->readout().minimum, -0.8f, 0.03f);
+}
+
+} // namespace
+
 TEST(CuttingPlane, PanelDrawsThePlaneAndShowsReadouts) {
     app::MainWindow window;
     window.resize(1200, 700);
@@ -52,16 +70,8 @@ TEST(CuttingPlane, PanelDrawsThePlaneAndShowsReadouts) {
 // Issue 15: the plane readouts describe the text on screen, not the file on disk.
 TEST(CuttingPlane, AnUnsavedEditChangesTheReadouts) {
     app::MainWindow window;
-    window.resize(1000, 640);
-    window.show();
-    ASSERT_TRUE(openAndWait(window, "Geometry/Sphere.glsl"));
-    window.plane()->setExecutable(SDFWB_BINARY);
     int readouts = 0;
-    QObject::connect(window.plane(), &app::PlaneController::readoutUpdated, [&] { ++readouts; });
-    window.planePanel()->findChild<QPushButton*>("axis_Z")->click();
-    ASSERT_TRUE(waitFor([&] { return readouts > 0; }, 30000))
-        << window.planePanel()->findChild<QLabel*>("readouts")->text().toStdString();
-    EXPECT_NEAR(window.planePanel()->readout().minimum, -0.8f, 0.03f);
+    ASSERT_NO_FATAL_FAILURE(openSphereWithReadouts(window, readouts));
 
     const QByteArray onDisk = [] {
         QFile file(datasetFile("Geometry/Sphere.glsl"));
@@ -171,15 +181,8 @@ TEST(Parameters, DockControlsRedrawWithoutRecompilingAndReachJobsAndTheFile) {
 TEST(Parameters, PlaneReadoutsFollowAndTheSessionKeepsTheValues) {
     {
         app::MainWindow window;
-        window.resize(1000, 640);
-        window.show();
-        ASSERT_TRUE(openAndWait(window, "Geometry/Sphere.glsl"));
-        window.plane()->setExecutable(SDFWB_BINARY);
         int readouts = 0;
-        QObject::connect(window.plane(), &app::PlaneController::readoutUpdated, [&] { ++readouts; });
-        window.planePanel()->findChild<QPushButton*>("axis_Z")->click();
-        ASSERT_TRUE(waitFor([&] { return readouts > 0; }, 30000));
-        EXPECT_NEAR(window.planePanel()->readout().minimum, -0.8f, 0.03f);
+        ASSERT_NO_FATAL_FAILURE(openSphereWithReadouts(window, readouts));
         auto* radius = window.parametersPanel()->findChild<QDoubleSpinBox*>("number_radius");
         ASSERT_TRUE(radius);
         const int before = readouts;
