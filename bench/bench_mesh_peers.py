@@ -157,6 +157,11 @@ SHAPES = [
     ("Menger sponge", "fractal", "mengersponge", None),
     ("Sierpinski tetrahedron", "fractal", "sierpinskitetrahedron", None),
 ]
+if "--write-glsl" in args:  # the tilted shapes as files, for bench/device/bundle.sh
+    for name, text in (("rotated_box", ROTATED_BOX), ("rotated_cylinder", ROTATED_CYLINDER)):
+        with open(os.path.join(option("--write-glsl", "."), name + ".glsl"), "w") as file:
+            file.write(text + "\n")
+    sys.exit(0)
 if ONLY:
     SHAPES = [s for s in SHAPES if s[0] in ONLY]
 
