@@ -36,9 +36,7 @@ using Clock = std::chrono::steady_clock;
 using Field = float (*)(float, float, float);
 using Matrix = std::array<float, 9>;
 
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // Rodrigues' rotation by `angle` about `axis`, transposed: the field is the upright shape's at R^T p.
 Matrix untiltMatrix() {
@@ -52,7 +50,7 @@ Matrix untiltMatrix() {
             double kk = 0.0;
             for (int m = 0; m < 3; ++m) kk += K[row][m] * K[m][col];
             const double r = (row == col ? 1.0 : 0.0) + s * K[row][col] + c * kk;
-            t[col * 3 + row] = static_cast<float>(r);  // transposed
+            t[col * 3 + row] = static_cast<float>(r); // transposed
         }
     }
     return t;
@@ -67,9 +65,7 @@ inline void untilt(float& x, float& y, float& z) {
     x = u, y = v, z = w;
 }
 
-inline float sphere(float x, float y, float z) {
-    return std::sqrt(x * x + y * y + z * z) - 0.8f;
-}
+inline float sphere(float x, float y, float z) { return std::sqrt(x * x + y * y + z * z) - 0.8f; }
 
 inline float rotatedBox(float x, float y, float z) {
     untilt(x, y, z);
@@ -86,8 +82,7 @@ inline float rotatedCylinder(float x, float y, float z) {
 }
 
 // The (R+1)^3 lattice over [-1,1]^3, x fastest, in z-slabs over `threads` threads.
-template <Field F>
-void fill(std::vector<float>& values, int R, int threads) {
+template <Field F> void fill(std::vector<float>& values, int R, int threads) {
     const int n = R + 1;
     const float h = 2.0f / static_cast<float>(R);
     auto slab = [&](int z0, int z1) {
@@ -110,7 +105,7 @@ void fill(std::vector<float>& values, int R, int threads) {
 
 void flyingEdges(std::vector<float>& values, int R, vtkPolyData* out) {
     vtkNew<vtkFloatArray> scalars;
-    scalars->SetArray(values.data(), static_cast<vtkIdType>(values.size()), 1);  // no copy
+    scalars->SetArray(values.data(), static_cast<vtkIdType>(values.size()), 1); // no copy
     vtkNew<vtkImageData> image;
     image->SetDimensions(R + 1, R + 1, R + 1);
     image->SetSpacing(2.0 / R, 2.0 / R, 2.0 / R);
@@ -159,7 +154,7 @@ std::vector<int> parseThreads(const std::string& text) {
     return threads;
 }
 
-}  // namespace
+} // namespace
 
 int main(int argc, char** argv) {
     if (argc != 5) {
@@ -169,16 +164,16 @@ int main(int argc, char** argv) {
     const std::string shape = argv[1];
     const int R = std::stoi(argv[2]);
     const std::vector<int> threads = parseThreads(argv[3]);
-    void (*filler)(std::vector<float>&, int, int) = shape == "sphere"        ? fill<sphere>
-                                                     : shape == "rotated-box" ? fill<rotatedBox>
-                                                     : shape == "rotated-cylinder" ? fill<rotatedCylinder>
-                                                                                   : nullptr;
+    void (*filler)(std::vector<float>&, int, int) = shape == "sphere"             ? fill<sphere>
+                                                    : shape == "rotated-box"      ? fill<rotatedBox>
+                                                    : shape == "rotated-cylinder" ? fill<rotatedCylinder>
+                                                                                  : nullptr;
     if (!filler || R < 2) {
         std::cerr << "flying_edges_peer: unknown shape '" << shape << "' or R < 2\n";
         return 2;
     }
     std::vector<float> values(static_cast<size_t>(R + 1) * (R + 1) * (R + 1));
-    filler(values, R, threads.back());  // warm-up: pages touched, as a user's second call would find them
+    filler(values, R, threads.back()); // warm-up: pages touched, as a user's second call would find them
 
     // The field: every thread count once, the fastest kept.
     double fieldBest = 1e30;
@@ -208,11 +203,10 @@ int main(int argc, char** argv) {
     vtkSMPTools::Initialize(meshThreads);
     flyingEdges(values, R, mesh);
     writePly(mesh, argv[4]);
-    std::printf(
-        "{\"shape\": \"%s\", \"R\": %d, \"field_seconds\": %.6f, \"field_threads\": %d, \"mesh_seconds\": %.6f, "
-        "\"mesh_threads\": %d, \"seconds\": %.6f, \"triangles\": %lld, \"smp_backend\": \"%s\", "
-        "\"mesh_seconds_by_threads\": {%s}}\n",
-        shape.c_str(), R, fieldBest, fieldThreads, meshBest, meshThreads, fieldBest + meshBest,
-        static_cast<long long>(mesh->GetNumberOfPolys()), vtkSMPTools::GetBackend(), perThreads.str().c_str());
+    std::printf("{\"shape\": \"%s\", \"R\": %d, \"field_seconds\": %.6f, \"field_threads\": %d, \"mesh_seconds\": %.6f, "
+                "\"mesh_threads\": %d, \"seconds\": %.6f, \"triangles\": %lld, \"smp_backend\": \"%s\", "
+                "\"mesh_seconds_by_threads\": {%s}}\n",
+                shape.c_str(), R, fieldBest, fieldThreads, meshBest, meshThreads, fieldBest + meshBest,
+                static_cast<long long>(mesh->GetNumberOfPolys()), vtkSMPTools::GetBackend(), perThreads.str().c_str());
     return 0;
 }

@@ -332,6 +332,7 @@ template <class V> void fields(V& v, MeshReport& r) {
     v("bounds_cut_points", r.boundsCutPoints);
     v("self_intersections", r.selfIntersections);
     v("mesh_seconds", r.meshSeconds);
+    v("phase_seconds", r.phaseSeconds);
     v("mesh_to_surface_mean", r.meshToSurfaceMean);
     v("mesh_to_surface_max", r.meshToSurfaceMax);
     v("surface_to_mesh_mean", r.surfaceToMeshMean);
@@ -344,6 +345,11 @@ template <class V> void fields(V& v, MeshReport& r) {
     v("mesh_source", r.meshSource);
     v("warnings", r.warnings);
     v("seconds", r.seconds);
+}
+
+template <class V> void fields(V& v, PhaseTime& p) {
+    v("name", p.name);
+    v("seconds", p.seconds);
 }
 
 template <class V> void fields(V& v, ParamItem& p) {

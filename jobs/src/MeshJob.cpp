@@ -119,7 +119,11 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
                         {}};
     report.vertices = mesh.vertices.size();
     report.triangles = mesh.triangleCount();
+    const auto topologyStart = std::chrono::steady_clock::now();
     const meshing::Topology topology = meshing::checkTopology(mesh);
+    for (const auto& [name, seconds] : stats.phaseSeconds) report.phaseSeconds.push_back({name, seconds});
+    report.phaseSeconds.emplace_back("topology",
+                                     std::chrono::duration<double>(std::chrono::steady_clock::now() - topologyStart).count());
     report.boundaryEdges = topology.boundaryEdges;
     report.nonManifoldEdges = topology.nonManifoldEdges;
     report.degenerateTriangles = topology.degenerateTriangles;
@@ -168,9 +172,12 @@ JobResult<MeshReport> run(const MeshRequest& request, const ProgressSink& progre
     if (!meshed) return meshed.error;
     std::vector<std::string> comments;
     if (!meshed->report.meshSource.json.empty()) comments.push_back("sdfwb_mesh_source " + meshed->report.meshSource.json);
+    const auto writeStart = std::chrono::steady_clock::now();
     if (auto written = meshing::writeMesh(request.output, meshed->mesh, comments); !written)
         return JobError{Failure::Work, written.error().message, {}};
     MeshReport report = meshed->report;
+    report.phaseSeconds.emplace_back("write",
+                                     std::chrono::duration<double>(std::chrono::steady_clock::now() - writeStart).count());
     report.output = request.output;
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;

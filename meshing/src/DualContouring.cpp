@@ -9,6 +9,8 @@
 
 #include "PointEvaluator.h"
 
+#include <core/Parallel.h>
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -19,6 +21,7 @@
 #include <iterator>
 #include <limits>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace sdfwb::meshing {
@@ -453,19 +456,33 @@ Expected<std::pair<Mesh, MeshStats>> Extraction::run() {
     // both faces, whose plane put a rotated box's corner 2.3e-3 off at 128 cells.
     normalStep = float(0.01 * std::min({grid.step.x, grid.step.y, grid.step.z}));
     vertexMargin = 0.5 * std::min({grid.step.x, grid.step.y, grid.step.z});
+    auto phaseStart = start;
+    auto phase = [&](const char* name) {
+        const auto now = std::chrono::steady_clock::now();
+        stats.phaseSeconds.emplace_back(name, std::chrono::duration<double>(now - phaseStart).count());
+        phaseStart = now;
+    };
+    phase("compile");
     if (auto ok = selectBlocks(); !ok) return ok.error();
+    phase("select blocks");
     progress(1, 4);
     if (auto ok = evaluateBlocks(); !ok) return ok.error();
+    phase("evaluate blocks");
     if (progress.isCancelled()) return makeError("mesh: cancelled");
     progress(2, 4);
     findEdges();
+    phase("find edges");
     if (auto ok = placeCrossings(); !ok) return ok.error();
+    phase("place crossings");
     progress(3, 4);
     placeVertices();
     splitJoinedFaces();
+    phase("place vertices");
     if (auto ok = projectVertices(); !ok) return ok.error();
+    phase("project vertices");
     connectQuads();
     weldCoincidentVertices(mesh, float(1e-6 * std::min({grid.step.x, grid.step.y, grid.step.z})));
+    phase("connect");
     progress(4, 4);
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return std::pair<Mesh, MeshStats>{std::move(mesh), stats};
@@ -586,33 +603,47 @@ void Extraction::keepNeighboursAcrossCrossedFaces(std::size_t slot) {
         }
 }
 
-// 3. Edges with a sign change, block by block in slot order (so that a block's bits number them).
+// 3. Edges with a sign change, block by block in slot order (so that a block's bits number them);
+// chunks of blocks on several threads, joined in slot order.
 void Extraction::findEdges() {
     blockEdges.assign(kept.size(), {});
-    std::uint32_t edgeCount = 0;
-    for (std::size_t slot = 0; slot < kept.size(); ++slot) {
-        const auto& b = kept[slot];
-        const float* v = values.data() + slot * std::size_t(kPoints);
-        const bool last[3] = {b[0] == blocksPerAxis - 1, b[1] == blocksPerAxis - 1, b[2] == blocksPerAxis - 1};
-        RankedBits<kEdgeSlots>& bits = blockEdges[slot];
-        for (int k = 0; k < kSide; ++k)
-            for (int j = 0; j < kSide; ++j)
-                for (int i = 0; i < kSide; ++i) {
-                    const int p = (k * kSide + j) * kSide + i;
-                    const int local[3] = {i, j, k};
-                    for (int axis = 0; axis < 3; ++axis) {
-                        if (local[axis] == kBlock) continue;
-                        const float f0 = v[p], f1 = v[p + kStride[axis]];
-                        if (!crosses(f0, f1)) continue;
-                        bits.set(3 * p + axis);
-                        const bool owned = (i < kBlock || last[0]) && (j < kBlock || last[1]) && (k < kBlock || last[2]);
-                        edges.push_back(
-                            {b[0] * kBlock + i, b[1] * kBlock + j, b[2] * kBlock + k, std::int8_t(axis), inside(f0), owned});
-                        edgeValues.insert(edgeValues.end(), {f0, f1});
+    struct Found {
+        std::vector<Edge> edges;
+        std::vector<float> values;
+    };
+    const std::size_t chunks = chunkCount(kept.size(), 64);
+    std::vector<Found> found(chunks);
+    forEachChunk(kept.size(), chunks, [&](std::size_t chunk, std::size_t first, std::size_t end) {
+        Found& out = found[chunk];
+        for (std::size_t slot = first; slot < end; ++slot) {
+            const auto& b = kept[slot];
+            const float* v = values.data() + slot * std::size_t(kPoints);
+            const bool last[3] = {b[0] == blocksPerAxis - 1, b[1] == blocksPerAxis - 1, b[2] == blocksPerAxis - 1};
+            RankedBits<kEdgeSlots>& bits = blockEdges[slot];
+            for (int k = 0; k < kSide; ++k)
+                for (int j = 0; j < kSide; ++j)
+                    for (int i = 0; i < kSide; ++i) {
+                        const int p = (k * kSide + j) * kSide + i;
+                        const int local[3] = {i, j, k};
+                        for (int axis = 0; axis < 3; ++axis) {
+                            if (local[axis] == kBlock) continue;
+                            const float f0 = v[p], f1 = v[p + kStride[axis]];
+                            if (!crosses(f0, f1)) continue;
+                            bits.set(3 * p + axis);
+                            const bool owned = (i < kBlock || last[0]) && (j < kBlock || last[1]) && (k < kBlock || last[2]);
+                            out.edges.push_back(
+                                {b[0] * kBlock + i, b[1] * kBlock + j, b[2] * kBlock + k, std::int8_t(axis), inside(f0), owned});
+                            out.values.insert(out.values.end(), {f0, f1});
+                        }
                     }
-                }
-        edgeCount = bits.number(edgeCount);
+        }
+    });
+    for (Found& part : found) {
+        edges.insert(edges.end(), part.edges.begin(), part.edges.end());
+        edgeValues.insert(edgeValues.end(), part.values.begin(), part.values.end());
     }
+    std::uint32_t edgeCount = 0;
+    for (RankedBits<kEdgeSlots>& bits : blockEdges) edgeCount = bits.number(edgeCount);
 }
 
 Expected<void> Extraction::placeCrossings() {
@@ -700,98 +731,120 @@ Expected<void> Extraction::placeCrossings() {
 // each and the mesh stays manifold. Each vertex is its patch's QEF minimiser, clamped into the cell.
 void Extraction::placeVertices() {
     blockCells.assign(kept.size(), {});
-    std::uint32_t cellCount = 0;
-    for (std::size_t slot = 0; slot < kept.size(); ++slot) {
-        const auto& b = kept[slot];
-        const float* v = values.data() + slot * std::size_t(kPoints);
-        const RankedBits<kEdgeSlots>& bits = blockEdges[slot];
-        for (int k = 0; k < kBlock && b[2] * kBlock + k < grid.n; ++k)
-            for (int j = 0; j < kBlock && b[1] * kBlock + j < grid.n; ++j)
-                for (int i = 0; i < kBlock && b[0] * kBlock + i < grid.n; ++i) {
-                    const int p = (k * kSide + j) * kSide + i;
-                    float corner[8];
-                    int signs = 0;
-                    for (int c = 0; c < 8; ++c) {
-                        corner[c] = v[p + (c & 1) * kStride[0] + (c >> 1 & 1) * kStride[1] + (c >> 2) * kStride[2]];
-                        signs |= int(inside(corner[c])) << c;
-                    }
-                    if (signs == 0 || signs == 0xff) continue; // one side (NaN counts as outside, and crosses nothing)
-                    int present = 0;
-                    std::uint32_t global[12];
-                    for (int l = 0; l < 12; ++l) {
-                        if (!crosses(corner[tables.edgeCorner[l][0]], corner[tables.edgeCorner[l][1]])) continue;
-                        present |= 1 << l;
-                        const int* o = tables.edgeOffset[l];
-                        global[l] = bits.rank(3 * (p + o[0] * kStride[0] + o[1] * kStride[1] + o[2] * kStride[2]) + l / 4);
-                    }
-                    if (present == 0) continue;
-                    int parent[12];
-                    for (int l = 0; l < 12; ++l) parent[l] = l;
-                    auto find = [&](int x) {
-                        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-                        return x;
-                    };
-                    auto join = [&](int a, int c) { parent[find(a)] = find(c); };
-                    int ambiguous = 0, crossPaired = 0;
-                    for (int face = 0; face < 6; ++face) {
-                        const int* fe = tables.faceEdges[face];
-                        int on[4], count = 0;
-                        for (int q = 0; q < 4; ++q)
-                            if (present >> fe[q] & 1) on[count++] = fe[q];
-                        if (count == 4) {
-                            const int* fc = tables.faceCorners[face];
-                            const float c00 = corner[fc[0]];
-                            const float centre = 0.25f * (c00 + corner[fc[1]] + corner[fc[2]] + corner[fc[3]]);
-                            const int paired = inside(centre) == inside(c00) ? 0 : 1;
-                            for (const auto& segment : kSegments[paired]) join(fe[segment[0]], fe[segment[1]]);
-                            ambiguous |= 1 << face;
-                            crossPaired |= paired << face;
-                        } else {
-                            for (int q = 1; q < count; ++q) join(on[0], on[q]);
+    struct Placed { // one chunk's: its vertices numbered from 0, shifted when the chunks are joined
+        std::vector<glm::vec3> vertices;
+        std::vector<std::array<std::int32_t, 3>> vertexCell, jointCells;
+        std::vector<CellRecord> records;
+        std::uint64_t creasesOnFaces = 0, verticesBesideTheirCell = 0, clampedVertices = 0;
+    };
+    const std::size_t chunks = chunkCount(kept.size(), 32);
+    std::vector<Placed> placed(chunks);
+    forEachChunk(kept.size(), chunks, [&](std::size_t chunk, std::size_t first, std::size_t end) {
+        Placed& out = placed[chunk];
+        for (std::size_t slot = first; slot < end; ++slot) {
+            const auto& b = kept[slot];
+            const float* v = values.data() + slot * std::size_t(kPoints);
+            const RankedBits<kEdgeSlots>& bits = blockEdges[slot];
+            for (int k = 0; k < kBlock && b[2] * kBlock + k < grid.n; ++k)
+                for (int j = 0; j < kBlock && b[1] * kBlock + j < grid.n; ++j)
+                    for (int i = 0; i < kBlock && b[0] * kBlock + i < grid.n; ++i) {
+                        const int p = (k * kSide + j) * kSide + i;
+                        float corner[8];
+                        int signs = 0;
+                        for (int c = 0; c < 8; ++c) {
+                            corner[c] = v[p + (c & 1) * kStride[0] + (c >> 1 & 1) * kStride[1] + (c >> 2) * kStride[2]];
+                            signs |= int(inside(corner[c])) << c;
                         }
-                    }
-                    const std::int32_t cell[3] = {b[0] * kBlock + i, b[1] * kBlock + j, b[2] * kBlock + k};
-                    const glm::dvec3 lo = glm::dvec3(grid.point(cell[0], cell[1], cell[2]));
-                    const glm::dvec3 hi = glm::dvec3(grid.point(cell[0] + 1, cell[1] + 1, cell[2] + 1));
-                    CellRecord record{std::uint32_t(mesh.vertices.size()), 0, 0, std::uint8_t(crossPaired)};
-                    for (int face = 0; face < 6; ++face)
-                        if (ambiguous >> face & 1 && find(tables.faceEdges[face][0]) == find(tables.faceEdges[face][1]))
-                            record.jointFaces |= std::uint8_t(1 << face);
-                    if (record.jointFaces != 0) jointCells.push_back({cell[0], cell[1], cell[2]});
-                    std::uint32_t patch = 0;
-                    for (int root = 0; root < 12; ++root) {
-                        if (!(present >> root & 1) || find(root) != root) continue;
-                        glm::dvec3 points[13], patchNormals[13];
-                        int count = 0;
+                        if (signs == 0 || signs == 0xff) continue; // one side (NaN counts as outside, and crosses nothing)
+                        int present = 0;
+                        std::uint32_t global[12];
                         for (int l = 0; l < 12; ++l) {
-                            if (!(present >> l & 1) || find(l) != root) continue;
-                            record.vertexOfEdge |= patch << (2 * l);
-                            const std::size_t e = global[l];
-                            const glm::dvec3 n(normals[3 * e], normals[3 * e + 1], normals[3 * e + 2]);
-                            const double length = glm::length(n);
-                            points[count] = glm::dvec3(crossings[3 * e], crossings[3 * e + 1], crossings[3 * e + 2]);
-                            patchNormals[count++] = length > 0.0 && std::isfinite(length) ? n / length : glm::dvec3(0.0);
+                            if (!crosses(corner[tables.edgeCorner[l][0]], corner[tables.edgeCorner[l][1]])) continue;
+                            present |= 1 << l;
+                            const int* o = tables.edgeOffset[l];
+                            global[l] = bits.rank(3 * (p + o[0] * kStride[0] + o[1] * kStride[1] + o[2] * kStride[2]) + l / 4);
                         }
-                        QefSolution qef = solveQef(points, patchNormals, count);
-                        if (qef.freeCount > 0 && count < 13)
-                            if (const auto crease = creaseOnUpperFace(points, patchNormals, count, qef, cell, hi)) {
-                                points[count] = crease->first;
-                                patchNormals[count++] = crease->second;
-                                qef = solveQef(points, patchNormals, count);
-                                ++stats.creasesOnFaces;
+                        if (present == 0) continue;
+                        int parent[12];
+                        for (int l = 0; l < 12; ++l) parent[l] = l;
+                        auto find = [&](int x) {
+                            while (parent[x] != x) x = parent[x] = parent[parent[x]];
+                            return x;
+                        };
+                        auto join = [&](int a, int c) { parent[find(a)] = find(c); };
+                        int ambiguous = 0, crossPaired = 0;
+                        for (int face = 0; face < 6; ++face) {
+                            const int* fe = tables.faceEdges[face];
+                            int on[4], count = 0;
+                            for (int q = 0; q < 4; ++q)
+                                if (present >> fe[q] & 1) on[count++] = fe[q];
+                            if (count == 4) {
+                                const int* fc = tables.faceCorners[face];
+                                const float c00 = corner[fc[0]];
+                                const float centre = 0.25f * (c00 + corner[fc[1]] + corner[fc[2]] + corner[fc[3]]);
+                                const int paired = inside(centre) == inside(c00) ? 0 : 1;
+                                for (const auto& segment : kSegments[paired]) join(fe[segment[0]], fe[segment[1]]);
+                                ambiguous |= 1 << face;
+                                crossPaired |= paired << face;
+                            } else {
+                                for (int q = 1; q < count; ++q) join(on[0], on[q]);
                             }
-                        const bool cornerCellIsEmpty = qef.freeCount == 0 && !cellCrossed(qef.point);
-                        const glm::dvec3 x = placeVertex(qef, lo, hi, vertexMargin, cornerCellIsEmpty,
-                                                         stats.verticesBesideTheirCell, stats.clampedVertices);
-                        mesh.vertices.push_back(glm::vec3(x));
-                        vertexCell.push_back({cell[0], cell[1], cell[2]});
-                        ++patch;
+                        }
+                        const std::int32_t cell[3] = {b[0] * kBlock + i, b[1] * kBlock + j, b[2] * kBlock + k};
+                        const glm::dvec3 lo = glm::dvec3(grid.point(cell[0], cell[1], cell[2]));
+                        const glm::dvec3 hi = glm::dvec3(grid.point(cell[0] + 1, cell[1] + 1, cell[2] + 1));
+                        CellRecord record{std::uint32_t(out.vertices.size()), 0, 0, std::uint8_t(crossPaired)};
+                        for (int face = 0; face < 6; ++face)
+                            if (ambiguous >> face & 1 && find(tables.faceEdges[face][0]) == find(tables.faceEdges[face][1]))
+                                record.jointFaces |= std::uint8_t(1 << face);
+                        if (record.jointFaces != 0) out.jointCells.push_back({cell[0], cell[1], cell[2]});
+                        std::uint32_t patch = 0;
+                        for (int root = 0; root < 12; ++root) {
+                            if (!(present >> root & 1) || find(root) != root) continue;
+                            glm::dvec3 points[13], patchNormals[13];
+                            int count = 0;
+                            for (int l = 0; l < 12; ++l) {
+                                if (!(present >> l & 1) || find(l) != root) continue;
+                                record.vertexOfEdge |= patch << (2 * l);
+                                const std::size_t e = global[l];
+                                const glm::dvec3 n(normals[3 * e], normals[3 * e + 1], normals[3 * e + 2]);
+                                const double length = glm::length(n);
+                                points[count] = glm::dvec3(crossings[3 * e], crossings[3 * e + 1], crossings[3 * e + 2]);
+                                patchNormals[count++] = length > 0.0 && std::isfinite(length) ? n / length : glm::dvec3(0.0);
+                            }
+                            QefSolution qef = solveQef(points, patchNormals, count);
+                            if (qef.freeCount > 0 && count < 13)
+                                if (const auto crease = creaseOnUpperFace(points, patchNormals, count, qef, cell, hi)) {
+                                    points[count] = crease->first;
+                                    patchNormals[count++] = crease->second;
+                                    qef = solveQef(points, patchNormals, count);
+                                    ++out.creasesOnFaces;
+                                }
+                            const bool cornerCellIsEmpty = qef.freeCount == 0 && !cellCrossed(qef.point);
+                            const glm::dvec3 x = placeVertex(qef, lo, hi, vertexMargin, cornerCellIsEmpty,
+                                                             out.verticesBesideTheirCell, out.clampedVertices);
+                            out.vertices.push_back(glm::vec3(x));
+                            out.vertexCell.push_back({cell[0], cell[1], cell[2]});
+                            ++patch;
+                        }
+                        blockCells[slot].set((k * kBlock + j) * kBlock + i);
+                        out.records.push_back(record);
                     }
-                    blockCells[slot].set((k * kBlock + j) * kBlock + i);
-                    cellRecords.push_back(record);
-                }
-        cellCount = blockCells[slot].number(cellCount);
+        }
+    });
+    for (Placed& part : placed) {
+        const auto base = std::uint32_t(mesh.vertices.size());
+        for (CellRecord& record : part.records) record.firstVertex += base;
+        mesh.vertices.insert(mesh.vertices.end(), part.vertices.begin(), part.vertices.end());
+        vertexCell.insert(vertexCell.end(), part.vertexCell.begin(), part.vertexCell.end());
+        jointCells.insert(jointCells.end(), part.jointCells.begin(), part.jointCells.end());
+        cellRecords.insert(cellRecords.end(), part.records.begin(), part.records.end());
+        stats.creasesOnFaces += part.creasesOnFaces;
+        stats.verticesBesideTheirCell += part.verticesBesideTheirCell;
+        stats.clampedVertices += part.clampedVertices;
     }
+    std::uint32_t cellCount = 0;
+    for (RankedBits<kCells>& bits : blockCells) cellCount = bits.number(cellCount);
     stats.activeCells = cellRecords.size();
 }
 
@@ -986,96 +1039,106 @@ Expected<void> Extraction::projectVertices() {
 // 5. A quad per sign-changing edge (from the block that owns it), wound so that it faces
 // outward (towards f > 0).
 void Extraction::connectQuads() {
-    mesh.indices.reserve(6 * edges.size());
     const std::uint32_t firstFaceVertexIndex = std::uint32_t(cellVertexCount);
     const int offsets[4][2] = {{-1, -1}, {0, -1}, {0, 0}, {-1, 0}}; // the cells around an edge, in (u, v)
-    for (const Edge& edge : edges) {
-        if (!edge.owned) continue;
-        const int u = (edge.axis + 1) % 3, v = (edge.axis + 2) % 3;
-        std::int64_t cells[4][3];
-        const CellRecord* records[4];
-        int locals[4];
-        std::uint32_t quad[4];
-        bool complete = true;
-        for (int q = 0; q < 4 && complete; ++q) {
-            std::int64_t* c = cells[q];
-            c[0] = edge.i;
-            c[1] = edge.j;
-            c[2] = edge.k;
-            c[u] += offsets[q][0];
-            c[v] += offsets[q][1];
-            // The edge seen from this cell: at its +u side when the cell lies at -u, and so on.
-            locals[q] = edge.axis * 4 + (-offsets[q][0]) + 2 * (-offsets[q][1]);
-            records[q] = recordAt(c);
-            complete = records[q] != nullptr;
-            if (complete) quad[q] = records[q]->firstVertex + (records[q]->vertexOfEdge >> (2 * locals[q]) & 3u);
-        }
-        if (!complete) continue;
-        // The polygon: the four cells' vertices, with a face vertex between two cells whose patches
-        // both join an ambiguous face's segments (splitJoinedFaces).
-        std::uint32_t polygon[8];
-        int size = 0;
-        for (int q = 0; q < 4; ++q) {
-            polygon[size++] = quad[q];
-            const int r = (q + 1) % 4;
-            const int w = offsets[q][0] != offsets[r][0] ? u : v;
-            const int lower = offsets[q][0] + offsets[q][1] < offsets[r][0] + offsets[r][1] ? q : r;
-            const int upper = lower == q ? r : q;
-            if (!(records[lower]->jointFaces >> (2 * w + 1) & 1) || !(records[upper]->jointFaces >> (2 * w) & 1)) continue;
-            const int face = 2 * w + 1, paired = records[lower]->crossPaired >> face & 1;
-            int segment = 1;
-            for (int end = 0; end < 2; ++end)
-                if (tables.faceEdges[face][kSegments[paired][0][end]] == locals[lower]) segment = 0;
-            const auto found = faceVertices.find(faceKey(cells[lower], w, segment));
-            if (found == faceVertices.end()) continue;
-            polygon[size++] = found->second;
-        }
-        // (u, v) counter-clockwise looking down +axis; the surface faces +axis when the edge starts inside.
-        if (!edge.startInside) std::reverse(polygon, polygon + size);
-        // A fan from one of the polygon's vertices. Without face vertices: the quad's shorter
-        // diagonal. With them: never the diagonal between the two neighbours of a face vertex (the
-        // edge that would gain a third triangle); every other diagonal is this polygon's alone.
-        // Among the fans allowed, one with no triangle of zero area (vertices on one crease line),
-        // then the one whose smallest triangle is largest.
-        auto area = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-            const glm::dvec3 pa(mesh.vertices[a]), pb(mesh.vertices[b]), pc(mesh.vertices[c]);
-            return glm::length(glm::cross(pb - pa, pc - pa));
-        };
-        auto smallest = [&](int apex) {
-            double least = std::numeric_limits<double>::infinity();
-            for (int k = 1; k + 1 < size; ++k)
-                least = std::min(least, area(polygon[apex], polygon[(apex + k) % size], polygon[(apex + k + 1) % size]));
-            return least;
-        };
-        auto isFaceVertex = [&](int k) { return polygon[k] >= firstFaceVertexIndex; };
-        auto allowed = [&](int apex) {
-            for (int k = 2; k + 1 < size; ++k) { // the diagonals (apex, apex + k)
-                const int other = (apex + k) % size;
-                for (int between = 0; between < size; ++between)
-                    if (isFaceVertex(between) && ((apex == (between + size - 1) % size && other == (between + 1) % size) ||
-                                                  (other == (between + size - 1) % size && apex == (between + 1) % size)))
-                        return false;
+    const std::size_t chunks = chunkCount(edges.size(), 4096);
+    std::vector<std::vector<std::uint32_t>> triangles(chunks); // each chunk's, joined in edge order
+    forEachChunk(edges.size(), chunks, [&](std::size_t chunk, std::size_t first, std::size_t end) {
+        std::vector<std::uint32_t>& out = triangles[chunk];
+        out.reserve(6 * (end - first));
+        for (std::size_t index = first; index < end; ++index) {
+            const Edge& edge = edges[index];
+            if (!edge.owned) continue;
+            const int u = (edge.axis + 1) % 3, v = (edge.axis + 2) % 3;
+            std::int64_t cells[4][3];
+            const CellRecord* records[4];
+            int locals[4];
+            std::uint32_t quad[4];
+            bool complete = true;
+            for (int q = 0; q < 4 && complete; ++q) {
+                std::int64_t* c = cells[q];
+                c[0] = edge.i;
+                c[1] = edge.j;
+                c[2] = edge.k;
+                c[u] += offsets[q][0];
+                c[v] += offsets[q][1];
+                // The edge seen from this cell: at its +u side when the cell lies at -u, and so on.
+                locals[q] = edge.axis * 4 + (-offsets[q][0]) + 2 * (-offsets[q][1]);
+                records[q] = recordAt(c);
+                complete = records[q] != nullptr;
+                if (complete) quad[q] = records[q]->firstVertex + (records[q]->vertexOfEdge >> (2 * locals[q]) & 3u);
             }
-            return true;
-        };
-        int apex = 0;
-        if (size == 4) {
-            const float d02 = glm::length(mesh.vertices[polygon[0]] - mesh.vertices[polygon[2]]);
-            const float d13 = glm::length(mesh.vertices[polygon[1]] - mesh.vertices[polygon[3]]);
-            apex = d02 <= d13 ? 0 : 1;
-            if (!(smallest(apex) > 0.0) && smallest(1 - apex) > 0.0) apex = 1 - apex;
-        } else {
-            double best = -1.0;
-            for (int k = 0; k < size; ++k)
-                if (allowed(k))
-                    if (const double least = smallest(k); least > best) {
-                        best = least;
-                        apex = k;
-                    }
+            if (!complete) continue;
+            // The polygon: the four cells' vertices, with a face vertex between two cells whose patches
+            // both join an ambiguous face's segments (splitJoinedFaces).
+            std::uint32_t polygon[8];
+            int size = 0;
+            for (int q = 0; q < 4; ++q) {
+                polygon[size++] = quad[q];
+                const int r = (q + 1) % 4;
+                const int w = offsets[q][0] != offsets[r][0] ? u : v;
+                const int lower = offsets[q][0] + offsets[q][1] < offsets[r][0] + offsets[r][1] ? q : r;
+                const int upper = lower == q ? r : q;
+                if (!(records[lower]->jointFaces >> (2 * w + 1) & 1) || !(records[upper]->jointFaces >> (2 * w) & 1)) continue;
+                const int face = 2 * w + 1, paired = records[lower]->crossPaired >> face & 1;
+                int segment = 1;
+                for (int end = 0; end < 2; ++end)
+                    if (tables.faceEdges[face][kSegments[paired][0][end]] == locals[lower]) segment = 0;
+                const auto found = faceVertices.find(faceKey(cells[lower], w, segment));
+                if (found == faceVertices.end()) continue;
+                polygon[size++] = found->second;
+            }
+            // (u, v) counter-clockwise looking down +axis; the surface faces +axis when the edge starts inside.
+            if (!edge.startInside) std::reverse(polygon, polygon + size);
+            // A fan from one of the polygon's vertices. Without face vertices: the quad's shorter
+            // diagonal. With them: never the diagonal between the two neighbours of a face vertex (the
+            // edge that would gain a third triangle); every other diagonal is this polygon's alone.
+            // Among the fans allowed, one with no triangle of zero area (vertices on one crease line),
+            // then the one whose smallest triangle is largest.
+            auto area = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+                const glm::dvec3 pa(mesh.vertices[a]), pb(mesh.vertices[b]), pc(mesh.vertices[c]);
+                return glm::length(glm::cross(pb - pa, pc - pa));
+            };
+            auto smallest = [&](int apex) {
+                double least = std::numeric_limits<double>::infinity();
+                for (int k = 1; k + 1 < size; ++k)
+                    least = std::min(least, area(polygon[apex], polygon[(apex + k) % size], polygon[(apex + k + 1) % size]));
+                return least;
+            };
+            auto isFaceVertex = [&](int k) { return polygon[k] >= firstFaceVertexIndex; };
+            auto allowed = [&](int apex) {
+                for (int k = 2; k + 1 < size; ++k) { // the diagonals (apex, apex + k)
+                    const int other = (apex + k) % size;
+                    for (int between = 0; between < size; ++between)
+                        if (isFaceVertex(between) && ((apex == (between + size - 1) % size && other == (between + 1) % size) ||
+                                                      (other == (between + size - 1) % size && apex == (between + 1) % size)))
+                            return false;
+                }
+                return true;
+            };
+            int apex = 0;
+            if (size == 4) {
+                const float d02 = glm::length(mesh.vertices[polygon[0]] - mesh.vertices[polygon[2]]);
+                const float d13 = glm::length(mesh.vertices[polygon[1]] - mesh.vertices[polygon[3]]);
+                apex = d02 <= d13 ? 0 : 1;
+                if (!(smallest(apex) > 0.0) && smallest(1 - apex) > 0.0) apex = 1 - apex;
+            } else {
+                double best = -1.0;
+                for (int k = 0; k < size; ++k)
+                    if (allowed(k))
+                        if (const double least = smallest(k); least > best) {
+                            best = least;
+                            apex = k;
+                        }
+            }
+            for (int k = 1; k + 1 < size; ++k)
+                out.insert(out.end(), {polygon[apex], polygon[(apex + k) % size], polygon[(apex + k + 1) % size]});
         }
-        for (int k = 1; k + 1 < size; ++k)
-            mesh.indices.insert(mesh.indices.end(), {polygon[apex], polygon[(apex + k) % size], polygon[(apex + k + 1) % size]});
-    }
+    });
+    std::size_t total = mesh.indices.size();
+    for (const auto& part : triangles) total += part.size();
+    mesh.indices.reserve(total);
+    for (const auto& part : triangles) mesh.indices.insert(mesh.indices.end(), part.begin(), part.end());
 }
 
 } // namespace
@@ -1088,13 +1151,34 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
     return Extraction(sdf, options, progress).run();
 }
 
+namespace {
+
+// Sorts keys by an LSD radix sort, 16 bits a pass, passing over the digits every key shares.
+void radixSort(std::vector<std::uint64_t>& keys) {
+    std::vector<std::uint64_t> spare(keys.size());
+    std::vector<std::size_t> count(1u << 16);
+    for (int shift = 0; shift < 64; shift += 16) {
+        std::fill(count.begin(), count.end(), 0);
+        for (std::uint64_t key : keys) ++count[(key >> shift) & 0xffffu];
+        if (std::find(count.begin(), count.end(), keys.size()) != count.end()) continue; // one digit for all
+        std::size_t at = 0;
+        for (std::size_t& c : count) at += std::exchange(c, at);
+        for (std::uint64_t key : keys) spare[count[(key >> shift) & 0xffffu]++] = key;
+        keys.swap(spare);
+    }
+}
+
+} // namespace
+
 Topology checkTopology(const Mesh& mesh) {
     Topology t;
-    // Edges as sorted keys (a run per edge): sorting is several times faster than hashing here.
+    // Each edge as one key, (lower vertex, higher vertex, whether it runs downwards), sorted: a run
+    // per undirected edge, whose direction bits say how its triangles run along it. Sorting is
+    // several times faster than hashing here.
     const std::size_t triangles = mesh.indices.size() / 3;
-    std::vector<std::uint64_t> undirected, directed;
-    undirected.reserve(3 * triangles);
-    directed.reserve(3 * triangles);
+    const bool packed = mesh.vertices.size() < (std::size_t(1) << 31);
+    std::vector<std::uint64_t> keys;
+    keys.reserve(3 * triangles);
     for (std::size_t f = 0; f < triangles; ++f) {
         const std::uint32_t v[3] = {mesh.indices[3 * f], mesh.indices[3 * f + 1], mesh.indices[3 * f + 2]};
         if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) {
@@ -1105,27 +1189,21 @@ Topology checkTopology(const Mesh& mesh) {
             if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0) ++t.degenerateTriangles;
         }
         for (int e = 0; e < 3; ++e) {
-            const std::uint32_t a = v[e], b = v[(e + 1) % 3];
-            undirected.push_back((std::uint64_t(std::min(a, b)) << 32) | std::max(a, b));
-            directed.push_back((std::uint64_t(a) << 32) | b);
+            const std::uint64_t a = v[e], b = v[(e + 1) % 3];
+            keys.push_back(packed ? (std::min(a, b) << 33) | (std::max(a, b) << 1) | std::uint64_t(a > b)
+                                  : (std::min(a, b) << 32) | std::max(a, b));
         }
     }
-    std::sort(undirected.begin(), undirected.end());
-    std::sort(directed.begin(), directed.end());
-    for (std::size_t i = 0, j = 0; i < undirected.size(); i = j) {
-        while (j < undirected.size() && undirected[j] == undirected[i]) ++j;
+    radixSort(keys);
+    const int shift = packed ? 1 : 0;
+    for (std::size_t i = 0, j = 0; i < keys.size(); i = j) {
+        while (j < keys.size() && keys[j] >> shift == keys[i] >> shift) ++j;
         ++t.edges;
         if (j - i == 1) ++t.boundaryEdges;
         if (j - i > 2) ++t.nonManifoldEdges;
-    }
-    // Orientation: each directed edge once (its reverse belongs to the neighbour); counted where an
-    // edge of two triangles is run the same way by both.
-    for (std::size_t i = 0, j = 0; i < directed.size(); i = j) {
-        while (j < directed.size() && directed[j] == directed[i]) ++j;
-        if (j - i < 2) continue;
-        const std::uint64_t a = directed[i] >> 32, b = directed[i] & 0xffffffffu;
-        const auto [lo, hi] = std::equal_range(undirected.begin(), undirected.end(), (std::min(a, b) << 32) | std::max(a, b));
-        if (hi - lo == 2) ++t.misorientedEdges;
+        // Orientation: an edge of two triangles is run once each way (its reverse belongs to the
+        // neighbour); counted where both run it the same way.
+        if (j - i == 2 && packed && keys[i] == keys[i + 1]) ++t.misorientedEdges;
     }
     // Vertex manifoldness: the triangles around a vertex, joined where they share an edge through
     // it, form one fan. Union-find over each vertex's corners; its neighbours are few, so a short

@@ -13,6 +13,7 @@
 #include <array>
 #include <cctype>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -24,6 +25,7 @@
 namespace sdfwb::meshing {
 namespace fs = std::filesystem;
 namespace {
+static_assert(sizeof(glm::vec3) == 12, "vertices are written as three floats");
 
 std::string lowerExtension(const fs::path& path) {
     std::string extension = path.extension().string();
@@ -48,10 +50,14 @@ Expected<void> writePly(const fs::path& target, const fs::path& temporary, const
     out << "element vertex " << mesh.vertices.size() << "\nproperty float x\nproperty float y\nproperty float z\nelement face "
         << mesh.triangleCount() << "\nproperty list uchar int vertex_indices\nend_header\n";
     out.write(reinterpret_cast<const char*>(mesh.vertices.data()), std::streamsize(mesh.vertices.size() * sizeof(glm::vec3)));
-    for (std::size_t f = 0; f < mesh.triangleCount(); ++f) {
-        const unsigned char three = 3;
-        out.write(reinterpret_cast<const char*>(&three), 1);
-        out.write(reinterpret_cast<const char*>(&mesh.indices[3 * f]), 3 * sizeof(std::uint32_t));
+    std::vector<char> faces(13 * std::min<std::size_t>(mesh.triangleCount(), 1 << 16)); // (3, a, b, c), packed
+    for (std::size_t f = 0; f < mesh.triangleCount();) {
+        std::size_t n = 0;
+        for (; n < faces.size() / 13 && f < mesh.triangleCount(); ++n, ++f) {
+            faces[13 * n] = 3;
+            std::memcpy(&faces[13 * n + 1], &mesh.indices[3 * f], 3 * sizeof(std::uint32_t));
+        }
+        out.write(faces.data(), std::streamsize(13 * n));
     }
     out.flush();
     if (!out) return makeError(target.string() + ": cannot write the mesh (disk full or not writable)");
@@ -78,14 +84,8 @@ Expected<void> writeObj(const fs::path& target, const fs::path& temporary, const
     return {};
 }
 
-} // namespace
-
-bool canWriteMesh(const fs::path& path) { return formatId(path) != nullptr; }
-
-Expected<void> writeMesh(const fs::path& path, const Mesh& mesh, const std::vector<std::string>& comments) {
-    const char* id = formatId(path);
-    if (!id) return makeError(path.string() + ": unsupported mesh type (use .ply, .obj, .stl or .glb)");
-    static_assert(sizeof(glm::vec3) == 12, "vertices are written as three floats");
+// STL and glTF binary through assimp's exporter.
+Expected<void> exportWithAssimp(const fs::path& target, const fs::path& temporary, const char* id, const Mesh& mesh) {
     // A scene of one mesh, one default material, one node: what every exporter expects. The scene
     // owns what it points to (its destructor frees it).
     auto scene = std::make_unique<aiScene>();
@@ -109,24 +109,31 @@ Expected<void> writeMesh(const fs::path& path, const Mesh& mesh, const std::vect
         out->mFaces[f].mNumIndices = 3;
         out->mFaces[f].mIndices = new unsigned int[3]{mesh.indices[3 * f], mesh.indices[3 * f + 1], mesh.indices[3 * f + 2]};
     }
+    if (Assimp::Exporter exporter; exporter.Export(scene.get(), id, temporary.string()) != aiReturn_SUCCESS)
+        return makeError(target.string() + ": cannot write the mesh: " + exporter.GetErrorString());
+    return {};
+}
+
+} // namespace
+
+bool canWriteMesh(const fs::path& path) { return formatId(path) != nullptr; }
+
+Expected<void> writeMesh(const fs::path& path, const Mesh& mesh, const std::vector<std::string>& comments) {
+    const char* id = formatId(path);
+    if (!id) return makeError(path.string() + ": unsupported mesh type (use .ply, .obj, .stl or .glb)");
     // Written beside the target under a hidden name (keeping the extension), then renamed.
     const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
     const fs::path temporary =
         folder / ("." + path.stem().string() + ".partial-" + std::to_string(::getpid()) + path.extension().string());
-    if (std::string(id) == "plyb" || std::string(id) == "obj") {
-        if (auto ok =
-                std::string(id) == "plyb" ? writePly(path, temporary, mesh, comments) : writeObj(path, temporary, mesh, comments);
-            !ok) {
-            std::error_code ec;
-            fs::remove(temporary, ec);
-            return ok;
-        }
-    } else if (Assimp::Exporter exporter; exporter.Export(scene.get(), id, temporary.string()) != aiReturn_SUCCESS) {
-        std::error_code ec;
-        fs::remove(temporary, ec);
-        return makeError(path.string() + ": cannot write the mesh: " + exporter.GetErrorString());
-    }
+    const std::string format = id;
+    const Expected<void> written = format == "plyb"  ? writePly(path, temporary, mesh, comments)
+                                   : format == "obj" ? writeObj(path, temporary, mesh, comments)
+                                                     : exportWithAssimp(path, temporary, id, mesh);
     std::error_code ec;
+    if (!written) {
+        fs::remove(temporary, ec);
+        return written;
+    }
     fs::rename(temporary, path, ec);
     if (ec) {
         fs::remove(temporary, ec);

@@ -349,6 +349,11 @@ struct ParamsReport {
     bool operator==(const ParamsReport&) const = default;
 };
 
+struct PhaseTime { // one step of a job and its wall time
+    std::string name;
+    double seconds = 0.0;
+};
+
 struct MeshReport {
     std::string output;
     std::string sdf;
@@ -368,6 +373,9 @@ struct MeshReport {
     std::uint64_t boundsCutPoints = 0;              // grid points inside the shape beyond the bounds: closed by caps there
     std::optional<std::uint64_t> selfIntersections; // crossing triangle pairs, when asked for
     double meshSeconds = 0.0;
+    // Where the time went: the mesher's steps in order, then "topology" (the checks above) and, in
+    // the file's report, "write".
+    std::vector<PhaseTime> phaseSeconds;
     // The error against the exact field (absent with error_samples 0).
     std::optional<float> meshToSurfaceMean, meshToSurfaceMax, surfaceToMeshMean, surfaceToMeshMax, hausdorff;
     std::string meshToSurfaceMethod; // |f| for an exact field, else the nearest surface point

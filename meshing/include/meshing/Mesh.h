@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sdfwb::meshing {
@@ -54,6 +55,7 @@ struct MeshStats {
     // leaves the bounds and the mesh is closed by flat caps there. 0: the shape lies inside.
     std::uint64_t boundsCutPoints = 0;
     double seconds = 0.0;
+    std::vector<std::pair<std::string, double>> phaseSeconds; // each step's wall time, in order
 };
 
 // The box extractMesh() cuts the field by: the bounds grown by half a cell on every side.

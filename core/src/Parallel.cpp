@@ -1,0 +1,16 @@
+#include <core/Parallel.h>
+
+#include <cstdlib>
+
+namespace sdfwb {
+
+unsigned workerThreads() {
+    if (const char* text = std::getenv("SDFWB_THREADS")) {
+        char* end = nullptr;
+        const long n = std::strtol(text, &end, 10);
+        if (end != text && *end == '\0' && n >= 1) return unsigned(std::min(n, 1024L));
+    }
+    return std::max(1u, std::thread::hardware_concurrency());
+}
+
+} // namespace sdfwb
