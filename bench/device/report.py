@@ -92,6 +92,19 @@ for label in shapes:
                 f"| {r['seconds'] - r['field_seconds']:.3f} | {threads} | n/a | {r['triangles']} | {fmt(r['hausdorff'])} "
                 f"| {fmt(r['chamfer_l1'])} | {fmt(r.get('edge_fscore'), '.4f')} | {ratio} |")
 add("")
+phased = [r for r in runs if r["kind"] == "ours" and r.get("phases")]
+if phased:
+    names = list(dict.fromkeys(name for r in phased for name in r["phases"]))
+    add("## Where sdfwb's time goes")
+    add("")
+    add("The last timed run's `phase_seconds` (the mesher's steps, then the topology check and writing the file), in seconds.")
+    add("")
+    add("| shape | R | " + " | ".join(names) + " | whole call |")
+    add("|---|---|" + "---|" * (len(names) + 1))
+    for r in phased:
+        add(f"| {r['label']} | {r['R']} | " + " | ".join(fmt(r["phases"].get(n), ".3f") for n in names)
+            + f" | {r['seconds']:.3f} |")
+    add("")
 add("## The goal: 10x Flying Edges' whole call at 512^3")
 add("")
 add("| shape | class | sdfwb (s) | Flying Edges (s) | Flying Edges / sdfwb | goal met? |")

@@ -113,6 +113,7 @@ def ours(label, cls, sdf, R, folder):
            mesh_seconds=statistics.median(s["mesh_seconds"] for s in steps), process_seconds=cold,
            triangles=steps[-1]["triangles"], manifold=steps[-1]["manifold"], watertight=steps[-1]["watertight"],
            blocks_kept=steps[-1]["blocks_kept"], blocks=steps[-1]["blocks"], cold_exit=cold_done.returncode,
+           phases={p["name"]: p["seconds"] for p in steps[-1].get("phase_seconds", [])},
            **grade(sdf, mesh))
 
 

@@ -672,38 +672,52 @@ Expected<void> Extraction::placeCrossings() {
         std::vector<float> guesses, guessValues;
         for (int iteration = 0; iteration < 8 && !active.empty(); ++iteration) {
             guesses.resize(3 * active.size());
-            for (std::size_t q = 0; q < active.size(); ++q) {
-                Bracket& r = brackets[active[q]];
-                r.t = (r.a * r.fb - r.b * r.fa) / (r.fb - r.fa);
-                if (!(r.t > r.a && r.t < r.b)) r.t = 0.5 * (r.a + r.b);
-                const glm::dvec3 p = edgeStart(edges[active[q]]) + r.t * edgeVector(edges[active[q]]);
-                guesses[3 * q] = float(p.x);
-                guesses[3 * q + 1] = float(p.y);
-                guesses[3 * q + 2] = float(p.z);
-            }
+            const std::size_t chunks = chunkCount(active.size(), 8192);
+            forEachChunk(active.size(), chunks, [&](std::size_t, std::size_t first, std::size_t end) {
+                for (std::size_t q = first; q < end; ++q) {
+                    Bracket& r = brackets[active[q]];
+                    r.t = (r.a * r.fb - r.b * r.fa) / (r.fb - r.fa);
+                    if (!(r.t > r.a && r.t < r.b)) r.t = 0.5 * (r.a + r.b);
+                    const glm::dvec3 p = edgeStart(edges[active[q]]) + r.t * edgeVector(edges[active[q]]);
+                    guesses[3 * q] = float(p.x);
+                    guesses[3 * q + 1] = float(p.y);
+                    guesses[3 * q + 2] = float(p.z);
+                }
+            });
             if (auto ok = field.evaluate(guesses, guessValues, nullptr); !ok) return ok.error();
             stats.pointsEvaluated += guessValues.size();
-            std::size_t still = 0;
-            for (std::size_t q = 0; q < active.size(); ++q) {
-                Bracket& r = brackets[active[q]];
-                const double f = guessValues[q];
-                if (!std::isfinite(f)) continue;
-                if (inside(float(f)) == inside(float(r.fa))) {
-                    r.a = r.t;
-                    r.fa = f;
-                    if (r.side == -1) r.fb *= 0.5;
-                    r.side = -1;
-                } else {
-                    r.b = r.t;
-                    r.fb = f;
-                    if (r.side == 1) r.fa *= 0.5;
-                    r.side = 1;
+            // Each chunk keeps its edges still open at its own start (in order), then the lists close up.
+            std::vector<std::size_t> stillOpen(chunks);
+            forEachChunk(active.size(), chunks, [&](std::size_t chunk, std::size_t first, std::size_t end) {
+                std::size_t still = first;
+                for (std::size_t q = first; q < end; ++q) {
+                    Bracket& r = brackets[active[q]];
+                    const double f = guessValues[q];
+                    if (!std::isfinite(f)) continue;
+                    if (inside(float(f)) == inside(float(r.fa))) {
+                        r.a = r.t;
+                        r.fa = f;
+                        if (r.side == -1) r.fb *= 0.5;
+                        r.side = -1;
+                    } else {
+                        r.b = r.t;
+                        r.fb = f;
+                        if (r.side == 1) r.fa *= 0.5;
+                        r.side = 1;
+                    }
+                    // Done when t is known to 1e-4 of the edge: the bracket is that small, or |f| over the
+                    // field's slope along the edge is (a small |f| alone misleads on an edge that grazes
+                    // the surface, where the slope is small too).
+                    const double slope = std::abs(r.fb - r.fa) / (r.b - r.a);
+                    if (r.b - r.a > 1e-4 && std::abs(f) > 1e-4 * slope) active[still++] = active[q];
                 }
-                // Done when t is known to 1e-4 of the edge: the bracket is that small, or |f| over the
-                // field's slope along the edge is (a small |f| alone misleads on an edge that grazes
-                // the surface, where the slope is small too).
-                const double slope = std::abs(r.fb - r.fa) / (r.b - r.a);
-                if (r.b - r.a > 1e-4 && std::abs(f) > 1e-4 * slope) active[still++] = active[q];
+                stillOpen[chunk] = still - first;
+            });
+            std::size_t still = 0;
+            for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
+                const std::size_t first = active.size() * chunk / chunks;
+                std::copy_n(active.begin() + std::ptrdiff_t(first), stillOpen[chunk], active.begin() + std::ptrdiff_t(still));
+                still += stillOpen[chunk];
             }
             active.resize(still);
             if (progress.isCancelled()) return makeError("mesh: cancelled");
@@ -1019,19 +1033,22 @@ Expected<void> Extraction::projectVertices() {
             for (int a = 0; a < 3; ++a) positions[3 * vertex + std::size_t(a)] = mesh.vertices[vertex][a];
         if (auto ok = field.evaluate(positions, fieldValues, &gradients, normalStep); !ok) return ok.error();
         stats.pointsEvaluated += fieldValues.size();
-        for (std::size_t vertex = 0; vertex < mesh.vertices.size(); ++vertex) {
-            const float f = fieldValues[vertex];
-            const glm::vec3 g(gradients[3 * vertex], gradients[3 * vertex + 1], gradients[3 * vertex + 2]);
-            const float g2 = glm::dot(g, g);
-            if (!std::isfinite(f) || !(g2 > 1e-12f) || !std::isfinite(g2)) continue;
-            const auto& c = vertexCell[vertex];
-            const glm::vec3 cellLo = grid.point(c[0], c[1], c[2]), cellHi = grid.point(c[0] + 1, c[1] + 1, c[2] + 1);
-            // A vertex placed beside its cell (on a sharp edge) keeps the margin it was given.
-            const bool beside = glm::any(glm::lessThan(mesh.vertices[vertex], cellLo)) ||
-                                glm::any(glm::greaterThan(mesh.vertices[vertex], cellHi));
-            const glm::vec3 margin{beside ? float(vertexMargin) : 0.0f};
-            mesh.vertices[vertex] = glm::clamp(mesh.vertices[vertex] - g * (f / g2), cellLo - margin, cellHi + margin);
-        }
+        forEachChunk(
+            mesh.vertices.size(), chunkCount(mesh.vertices.size(), 8192), [&](std::size_t, std::size_t first, std::size_t end) {
+                for (std::size_t vertex = first; vertex < end; ++vertex) {
+                    const float f = fieldValues[vertex];
+                    const glm::vec3 g(gradients[3 * vertex], gradients[3 * vertex + 1], gradients[3 * vertex + 2]);
+                    const float g2 = glm::dot(g, g);
+                    if (!std::isfinite(f) || !(g2 > 1e-12f) || !std::isfinite(g2)) continue;
+                    const auto& c = vertexCell[vertex];
+                    const glm::vec3 cellLo = grid.point(c[0], c[1], c[2]), cellHi = grid.point(c[0] + 1, c[1] + 1, c[2] + 1);
+                    // A vertex placed beside its cell (on a sharp edge) keeps the margin it was given.
+                    const bool beside = glm::any(glm::lessThan(mesh.vertices[vertex], cellLo)) ||
+                                        glm::any(glm::greaterThan(mesh.vertices[vertex], cellHi));
+                    const glm::vec3 margin{beside ? float(vertexMargin) : 0.0f};
+                    mesh.vertices[vertex] = glm::clamp(mesh.vertices[vertex] - g * (f / g2), cellLo - margin, cellHi + margin);
+                }
+            });
     }
     return {};
 }

@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -437,6 +438,41 @@ TEST_F(MeshTest, TheEstimatedBoundFollowsTheFieldsSlope) {
         EXPECT_EQ(estimated->second.blocksGrown, 0u) << text;
         EXPECT_EQ(canonicalTriangles(estimated->first), canonicalTriangles(all->first)) << text;
     }
+}
+
+// The CPU steps run in chunks on every core and are joined in order: one thread and five give the
+// same vertices and triangles, bit for bit, in the same order (a creased, a split-face and a
+// smooth shape), and the same counts.
+TEST_F(MeshTest, EveryThreadCountGivesTheSameMesh) {
+    const char* saved = std::getenv("SDFWB_THREADS");
+    const std::string restore = saved ? saved : "";
+    for (const char* file :
+         {"dataset/Fractal/MengerSponge.glsl", "dataset/Geometry/Torus.glsl", "dataset/Manufactured/Anvil.glsl"}) {
+        const shaders::PreparedSdf sdf = sdfwb::testing::loadSourceSdf(file);
+        meshing::MeshOptions options;
+        options.resolution = 96;
+        options.estimateLipschitz = true;
+        ::setenv("SDFWB_THREADS", "1", 1);
+        auto one = meshing::extractMesh(sdf, options, {});
+        ::setenv("SDFWB_THREADS", "5", 1);
+        auto five = meshing::extractMesh(sdf, options, {});
+        ASSERT_TRUE(one && five) << file;
+        ASSERT_GT(one->first.indices.size(), 1000u) << file;
+        EXPECT_EQ(one->first.indices, five->first.indices) << file;
+        ASSERT_EQ(one->first.vertices.size(), five->first.vertices.size()) << file;
+        EXPECT_EQ(
+            std::memcmp(one->first.vertices.data(), five->first.vertices.data(), one->first.vertices.size() * sizeof(glm::vec3)),
+            0)
+            << file;
+        EXPECT_EQ(one->second.activeCells, five->second.activeCells) << file;
+        EXPECT_EQ(one->second.clampedVertices, five->second.clampedVertices) << file;
+        EXPECT_EQ(one->second.creasesOnFaces, five->second.creasesOnFaces) << file;
+        EXPECT_EQ(meshing::checkTopology(one->first).misorientedEdges, 0u) << file;
+    }
+    if (saved)
+        ::setenv("SDFWB_THREADS", restore.c_str(), 1);
+    else
+        ::unsetenv("SDFWB_THREADS");
 }
 
 TEST_F(MeshTest, FilesReadBackTheSameTriangles) {
