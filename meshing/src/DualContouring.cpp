@@ -1168,100 +1168,112 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
     return Extraction(sdf, options, progress).run();
 }
 
-namespace {
-
-// Sorts keys by an LSD radix sort, 16 bits a pass, passing over the digits every key shares.
-void radixSort(std::vector<std::uint64_t>& keys) {
-    std::vector<std::uint64_t> spare(keys.size());
-    std::vector<std::size_t> count(1u << 16);
-    for (int shift = 0; shift < 64; shift += 16) {
-        std::fill(count.begin(), count.end(), 0);
-        for (std::uint64_t key : keys) ++count[(key >> shift) & 0xffffu];
-        if (std::find(count.begin(), count.end(), keys.size()) != count.end()) continue; // one digit for all
-        std::size_t at = 0;
-        for (std::size_t& c : count) at += std::exchange(c, at);
-        for (std::uint64_t key : keys) spare[count[(key >> shift) & 0xffffu]++] = key;
-        keys.swap(spare);
-    }
-}
-
-} // namespace
-
 Topology checkTopology(const Mesh& mesh) {
     Topology t;
-    // Each edge as one key, (lower vertex, higher vertex, whether it runs downwards), sorted: a run
-    // per undirected edge, whose direction bits say how its triangles run along it. Sorting is
-    // several times faster than hashing here.
-    const std::size_t triangles = mesh.indices.size() / 3;
-    const bool packed = mesh.vertices.size() < (std::size_t(1) << 31);
-    std::vector<std::uint64_t> keys;
-    keys.reserve(3 * triangles);
-    for (std::size_t f = 0; f < triangles; ++f) {
-        const std::uint32_t v[3] = {mesh.indices[3 * f], mesh.indices[3 * f + 1], mesh.indices[3 * f + 2]};
-        if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) {
-            ++t.degenerateTriangles;
-        } else if (std::max({v[0], v[1], v[2]}) < mesh.vertices.size()) { // zero area: on one line
-            const glm::dvec3 a(mesh.vertices[v[0]]), b(mesh.vertices[v[1]]), c(mesh.vertices[v[2]]);
-            const glm::dvec3 n = glm::cross(b - a, c - a);
-            if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0) ++t.degenerateTriangles;
-        }
-        for (int e = 0; e < 3; ++e) {
-            const std::uint64_t a = v[e], b = v[(e + 1) % 3];
-            keys.push_back(packed ? (std::min(a, b) << 33) | (std::max(a, b) << 1) | std::uint64_t(a > b)
-                                  : (std::min(a, b) << 32) | std::max(a, b));
-        }
+    const std::size_t triangles = mesh.indices.size() / 3, vertexCount = mesh.vertices.size();
+    // Degenerate triangles: a vertex repeated, or zero area (three points on one line).
+    {
+        const std::size_t chunks = chunkCount(triangles, 65536);
+        std::vector<std::uint64_t> degenerate(chunks, 0);
+        forEachChunk(triangles, chunks, [&](std::size_t chunk, std::size_t first, std::size_t end) {
+            for (std::size_t f = first; f < end; ++f) {
+                const std::uint32_t v[3] = {mesh.indices[3 * f], mesh.indices[3 * f + 1], mesh.indices[3 * f + 2]};
+                if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) {
+                    ++degenerate[chunk];
+                } else if (std::max({v[0], v[1], v[2]}) < vertexCount) {
+                    const glm::dvec3 p(mesh.vertices[v[0]]), q(mesh.vertices[v[1]]), r(mesh.vertices[v[2]]);
+                    const glm::dvec3 n = glm::cross(q - p, r - p);
+                    if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0) ++degenerate[chunk];
+                }
+            }
+        });
+        for (std::uint64_t d : degenerate) t.degenerateTriangles += d;
     }
-    radixSort(keys);
-    const int shift = packed ? 1 : 0;
-    for (std::size_t i = 0, j = 0; i < keys.size(); i = j) {
-        while (j < keys.size() && keys[j] >> shift == keys[i] >> shift) ++j;
-        ++t.edges;
-        if (j - i == 1) ++t.boundaryEdges;
-        if (j - i > 2) ++t.nonManifoldEdges;
-        // Orientation: an edge of two triangles is run once each way (its reverse belongs to the
-        // neighbour); counted where both run it the same way.
-        if (j - i == 2 && packed && keys[i] == keys[i + 1]) ++t.misorientedEdges;
+    // Edges: each triangle's three, filed under their lower vertex as (higher vertex, whether the
+    // triangle runs it downwards); a vertex's short list, sorted, has a run per undirected edge.
+    std::uint32_t top = 0;
+    for (std::uint32_t v : mesh.indices) top = std::max(top, v);
+    const std::size_t lists = mesh.indices.empty() ? 0 : std::size_t(top) + 1;
+    std::vector<std::uint32_t> begin(lists + 1, 0);
+    auto forEachEdge = [&](auto&& visit) {
+        for (std::size_t c = 0; c < 3 * triangles; ++c) {
+            const std::uint32_t a = mesh.indices[c], b = mesh.indices[c - c % 3 + (c + 1) % 3];
+            visit(std::min(a, b), (std::uint64_t(std::max(a, b)) << 1) | std::uint64_t(a > b));
+        }
+    };
+    forEachEdge([&](std::uint32_t low, std::uint64_t) { ++begin[std::size_t(low) + 1]; });
+    for (std::size_t v = 0; v < lists; ++v) begin[v + 1] += begin[v];
+    std::vector<std::uint64_t> filed(3 * triangles);
+    {
+        std::vector<std::uint32_t> at(begin.begin(), begin.end() - 1);
+        forEachEdge([&](std::uint32_t low, std::uint64_t key) { filed[at[low]++] = key; });
     }
     // Vertex manifoldness: the triangles around a vertex, joined where they share an edge through
     // it, form one fan. Union-find over each vertex's corners; its neighbours are few, so a short
     // list finds the corner that saw a neighbour first.
-    std::vector<std::uint32_t> start(mesh.vertices.size() + 1, 0);
+    std::vector<std::uint32_t> start(vertexCount + 1, 0);
     for (std::uint32_t v : mesh.indices)
-        if (v < mesh.vertices.size()) ++start[v + 1];
-    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) start[v + 1] += start[v];
+        if (v < vertexCount) ++start[v + 1];
+    for (std::size_t v = 0; v < vertexCount; ++v) start[v + 1] += start[v];
     std::vector<std::uint32_t> corners(mesh.indices.size()), fill(start.begin(), start.end() - 1);
     for (std::size_t c = 0; c < mesh.indices.size(); ++c)
-        if (mesh.indices[c] < mesh.vertices.size()) corners[fill[mesh.indices[c]]++] = std::uint32_t(c);
-    std::vector<std::uint32_t> parent;
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> seen; // (neighbour vertex, the corner that saw it)
-    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-        const std::uint32_t n = start[v + 1] - start[v];
-        if (n < 2) continue;
-        parent.resize(n);
-        for (std::uint32_t i = 0; i < n; ++i) parent[i] = i;
-        auto find = [&](std::uint32_t x) {
-            while (parent[x] != x) x = parent[x] = parent[parent[x]];
-            return x;
-        };
-        seen.clear();
-        std::uint32_t groups = n;
-        for (std::uint32_t i = 0; i < n; ++i) {
-            const std::size_t c = corners[start[v] + i], f = c - c % 3;
-            for (int k = 1; k <= 2; ++k) {
-                const std::uint32_t other = mesh.indices[f + (c - f + std::size_t(k)) % 3];
-                const auto it = std::find_if(seen.begin(), seen.end(), [&](const auto& s) { return s.first == other; });
-                if (it == seen.end()) {
-                    seen.emplace_back(other, i);
-                    continue;
-                }
-                const std::uint32_t a = find(i), b = find(it->second);
-                if (a != b) {
-                    parent[a] = b;
-                    --groups;
-                }
+        if (mesh.indices[c] < vertexCount) corners[fill[mesh.indices[c]]++] = std::uint32_t(c);
+
+    const std::size_t chunks = chunkCount(std::max(lists, vertexCount), 16384);
+    std::vector<Topology> parts(chunks);
+    forEachChunk(std::max(lists, vertexCount), chunks, [&](std::size_t chunk, std::size_t first, std::size_t end) {
+        Topology& part = parts[chunk];
+        for (std::size_t v = first; v < std::min(end, lists); ++v) {
+            const auto from = filed.begin() + begin[v], to = filed.begin() + begin[v + 1];
+            std::sort(from, to);
+            for (auto i = from, j = from; i != to; i = j) {
+                while (j != to && *j >> 1 == *i >> 1) ++j;
+                ++part.edges;
+                if (j - i == 1) ++part.boundaryEdges;
+                if (j - i > 2) ++part.nonManifoldEdges;
+                // Orientation: an edge of two triangles is run once each way (its reverse belongs to
+                // the neighbour); counted where both run it the same way.
+                if (j - i == 2 && *i == *(i + 1)) ++part.misorientedEdges;
             }
         }
-        if (groups > 1) ++t.nonManifoldVertices;
+        std::vector<std::uint32_t> parent;
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> seen; // (neighbour vertex, the corner that saw it)
+        for (std::size_t v = first; v < std::min(end, vertexCount); ++v) {
+            const std::uint32_t n = start[v + 1] - start[v];
+            if (n < 2) continue;
+            parent.resize(n);
+            for (std::uint32_t i = 0; i < n; ++i) parent[i] = i;
+            auto find = [&](std::uint32_t x) {
+                while (parent[x] != x) x = parent[x] = parent[parent[x]];
+                return x;
+            };
+            seen.clear();
+            std::uint32_t groups = n;
+            for (std::uint32_t i = 0; i < n; ++i) {
+                const std::size_t c = corners[start[v] + i], f = c - c % 3;
+                for (int k = 1; k <= 2; ++k) {
+                    const std::uint32_t other = mesh.indices[f + (c - f + std::size_t(k)) % 3];
+                    const auto it = std::find_if(seen.begin(), seen.end(), [&](const auto& s) { return s.first == other; });
+                    if (it == seen.end()) {
+                        seen.emplace_back(other, i);
+                        continue;
+                    }
+                    const std::uint32_t x = find(i), y = find(it->second);
+                    if (x != y) {
+                        parent[x] = y;
+                        --groups;
+                    }
+                }
+            }
+            if (groups > 1) ++part.nonManifoldVertices;
+        }
+    });
+    for (const Topology& part : parts) {
+        t.edges += part.edges;
+        t.boundaryEdges += part.boundaryEdges;
+        t.nonManifoldEdges += part.nonManifoldEdges;
+        t.misorientedEdges += part.misorientedEdges;
+        t.nonManifoldVertices += part.nonManifoldVertices;
     }
     return t;
 }
