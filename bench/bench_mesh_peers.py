@@ -14,6 +14,9 @@ Peers, each given the same field on the same (R+1)^3 lattice over [-1,1]^3:
   fastest kept), normals, gradients and scalars off;
 - OpenVDB `volumeToMesh` through pyopenvdb's `FloatGrid.convertToPolygons(isovalue=0, adaptivity=0)` (threaded
   by TBB), the grid filled by `copyFromArray`, whose time counts.
+- VTK `vtkFlyingEdges3D` from C++ (bench/device/flying_edges_peer.cpp, built by bench/device/build_peer.sh), for the
+  SDFs written in C++ there: the field inline C++ over z-slabs, every thread count tried for the field and for Flying
+  Edges, the fastest of each kept. This is the reference a C++ user would write; it is far faster than any NumPy field.
 The peers' field: the fastest of a NumPy float32 lattice (whole, and in z-slabs over a ThreadPool of 1..nproc
 threads) where the SDF is written below in NumPy, sdfwb's own `grid` sampler (GPU; it also writes gradients) and
 `sdfwb.evaluate(points, gradient=False)` on the lattice's points (made once, untimed) for every SDF; its time
@@ -72,6 +75,11 @@ TAU = 0.002
 CPUS = os.cpu_count()
 THREADS = list(range(1, CPUS + 1))
 TOP = max(PEER_R)
+FE_CPP = "VTK Flying Edges, C++ field"
+CPP_PEER = option("--cpp-peer", os.path.join(ROOT, "build", "bench", "flying_edges_peer"))
+# The shapes whose field the C++ peer has (bench/device/flying_edges_peer.cpp), by label.
+CPP_FIELDS = {"Sphere": "sphere", "Torus": "torus", "Box": "box", "Rotated box": "rotated-box",
+              "Rotated cylinder": "rotated-cylinder", "Open shell with a 0.03 wall": "shell"}
 
 
 # NumPy forms of the SDFs that can be written in NumPy (x, y, z broadcast; x along the last axis).
@@ -262,6 +270,18 @@ def openvdb_mesh(values, R):
 PEERS = {"scikit-image MC": skimage_mc, "VTK Flying Edges": flying_edges, "OpenVDB volumeToMesh": openvdb_mesh}
 
 
+def cpp_flying_edges(label, R, mesh_path, threads=None):
+    """One run of the C++ peer (its field and Flying Edges each the fastest over the thread counts): its report, and
+    its peak resident memory in MB."""
+    process = subprocess.Popen([CPP_PEER, CPP_FIELDS[label], str(R), ",".join(map(str, threads or THREADS)), mesh_path],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    out, err = process.communicate()
+    if process.returncode != 0:
+        raise RuntimeError(f"{CPP_PEER} {CPP_FIELDS[label]} {R}: exit {process.returncode}: {err.strip()[-300:]}")
+    peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024.0  # the largest child so far
+    return json.loads(out), peak
+
+
 def grade(vertices, faces, sdf, folder):
     if len(faces) == 0:
         return None
@@ -282,6 +302,12 @@ def child_run(tool, label, R):
     """One tool on one shape at R in this (fresh) process: its whole call's time and this process's peak memory."""
     sdf, field = next((s[2], s[3]) for s in SHAPES if s[0] == label)
     started = time.perf_counter()
+    if tool == FE_CPP:
+        with tempfile.TemporaryDirectory() as folder:
+            report, peak = cpp_flying_edges(label, R, os.path.join(folder, "m.ply"))
+        print("CHILD " + json.dumps(dict(seconds=report["seconds"], field_seconds=report["field_seconds"],
+                                         triangles=report["triangles"], peak_mb=peak)))
+        return
     if tool == "sdfwb":
         sdfwb.mesh(sdf, resolution=32)  # shaders compiled, GL context made: what a warm process has
         started = time.perf_counter()
@@ -310,6 +336,8 @@ if "--child" in args:
     child_run(args[at + 1], args[at + 2], int(args[at + 3]))
     sys.exit(0)
 
+if not os.path.exists(CPP_PEER):
+    subprocess.run(["bash", os.path.join(ROOT, "bench", "device", "build_peer.sh"), CPP_PEER], check=True)
 renderer = gl_renderer()
 started = datetime.datetime.now(datetime.timezone.utc)
 config = [
@@ -322,6 +350,10 @@ config = [
     f"VTK {vtk.vtkVersion.GetVTKVersion()} `vtkFlyingEdges3D`, SMP backend {vtk.vtkSMPTools.GetBackend()}, "
     f"thread counts {', '.join(map(str, THREADS))} tried at each size, the fastest kept; normals, gradients, "
     "scalars off.",
+    f"{FE_CPP}: VTK 9.1 `vtkFlyingEdges3D` called from C++ (`bench/device/flying_edges_peer.cpp`, g++ -O3 "
+    "-march=x86-64-v3, Debian's libvtk9.1), the field written inline in C++ and filled in z-slabs; thread counts "
+    f"{', '.join(map(str, THREADS))} tried for the field and for Flying Edges, the fastest of each kept; for "
+    f"{', '.join(CPP_FIELDS)}. Its time is the median of {REPEATS} runs of the program.",
     f"OpenVDB {'.'.join(map(str, pyopenvdb.LIBRARY_VERSION))} `volumeToMesh` (pyopenvdb "
     "`FloatGrid.convertToPolygons(isovalue=0, adaptivity=0)`, TBB threads), the dense lattice copied in by "
     "`copyFromArray` (timed with it); quads split into two triangles.",
@@ -379,6 +411,17 @@ with tempfile.TemporaryDirectory() as folder:
                       f"{field_name}, mesher {t:.3f}{f', {threads} threads' if threads else ''})  Hausdorff "
                       f"{e['hausdorff'] if e else float('nan'):.3g} Chamfer-L1 {e['chamfer_l1'] if e else float('nan'):.3g}",
                       flush=True)
+            if label in CPP_FIELDS:
+                path = os.path.join(folder, "cpp.ply")
+                reports = [cpp_flying_edges(label, R, path)[0] for _ in range(REPEATS)]
+                report = sorted(reports, key=lambda r: r["seconds"])[len(reports) // 2]
+                e = sdfwb.evaluate_mesh(path, sdf, tau=TAU, occupancy_resolution=0)
+                results.append(dict(label=label, cls=cls, tool=FE_CPP, R=R, seconds=report["seconds"],
+                                    mesh_seconds=report["mesh_seconds"], field_seconds=report["field_seconds"],
+                                    threads=report["mesh_threads"], triangles=report["triangles"], eval=e))
+                print(f"{label:36s} {FE_CPP:20s} R={R:4d} {report['seconds']:8.3f} s (field {report['field_seconds']:.3f}, "
+                      f"{report['field_threads']} threads; mesher {report['mesh_seconds']:.3f}, {report['mesh_threads']} "
+                      f"threads)  Hausdorff {e['hausdorff']:.3g} Chamfer-L1 {e['chamfer_l1']:.3g}", flush=True)
 wall = time.perf_counter() - wall_start
 for pool in pools.values():
     pool.shutdown()
@@ -390,7 +433,8 @@ config.append(f"The run took {wall:.0f} s; peak memory of this process {peak:.0f
 scale_rows = []
 if SCALE:
     for label in SCALE_SHAPES:
-        for R, tools in ((512, ["sdfwb", *PEERS]), (1024, ["sdfwb", "VTK Flying Edges"])):
+        cpp = [FE_CPP] if label in CPP_FIELDS else []
+        for R, tools in ((512, ["sdfwb", *PEERS, *cpp]), (1024, ["sdfwb", "VTK Flying Edges", *cpp])):
             for tool in tools:
                 run = subprocess.run([sys.executable, os.path.abspath(__file__), "--child", tool, label, str(R)],
                                      capture_output=True, text=True)
@@ -440,14 +484,15 @@ summary_rows = []
 for label, cls, _, _ in SHAPES:
     eq = equal_error(label)
     ours_top = next((r for r in rows_of(label, "sdfwb") if r["R"] == TOP), None)
-    fe_top = next((r for r in rows_of(label, "VTK Flying Edges") if r["R"] == TOP), None)
+    fe_top = min((r for tool in ("VTK Flying Edges", FE_CPP) for r in rows_of(label, tool) if r["R"] == TOP),
+                 key=lambda r: r["seconds"], default=None)  # the faster of Python's and C++'s
     peers_top = [r for r in results if r["label"] == label and r["tool"] != "sdfwb" and r["R"] == TOP and r["eval"]]
     summary_rows.append(dict(label=label, cls=cls, eq=eq, ours=ours_top, fe=fe_top, peers=peers_top))
 
 lines = []
 lines.append("## Equal error: the time sdfwb needs to reach the best peer's error at "
              f"{TOP}^3\n")
-lines.append(f"The best peer's Hausdorff and Chamfer-L1 at R = {TOP} (each the lowest of the three peers), the fastest "
+lines.append(f"The best peer's Hausdorff and Chamfer-L1 at R = {TOP} (each the lowest of the peers), the fastest "
              f"peer's whole call at R = {TOP}, and sdfwb's fastest call whose mesh is at least as good on both. Ratio = "
              "peer time / sdfwb time (above 1: sdfwb is faster).\n")
 lines.append("| shape | class | best peer Hausdorff | best peer Chamfer-L1 | fastest peer s | sdfwb R | sdfwb s | "
@@ -471,7 +516,8 @@ for cls in classes:
                      "(a shape whose error sdfwb does not reach counts as 0).")
 lines.append("")
 lines.append(f"## Equal resolution {TOP}^3\n")
-lines.append("Time ratio = sdfwb's whole call / Flying Edges' whole call (field + mesher; below 1: sdfwb is faster). "
+lines.append("Time ratio = sdfwb's whole call / Flying Edges' whole call (field + mesher, from C++ where the bench has the "
+             "field in C++, else from Python, whichever is faster; below 1: sdfwb is faster). "
              "Error ratios = sdfwb's / the peer's (below 1: sdfwb is more accurate).\n")
 lines.append("| shape | class | sdfwb s | Flying Edges s | time ratio | Hausdorff sdfwb | Hausdorff / MC, FE, VDB | "
              "Chamfer-L1 sdfwb | Chamfer-L1 / MC, FE, VDB | edge F sdfwb | edge F MC, FE, VDB |\n"
@@ -511,7 +557,8 @@ lines.append("")
 if scale_rows:
     lines.append("## Scale: 512^3 and 1024^3\n")
     lines.append("Each tool once, in a process of its own (`--scale`): the whole call's time (the peers' field by NumPy "
-                 "where the SDF is written in NumPy, else `sdfwb.evaluate`; sdfwb after a 32^3 call that compiles its "
+                 f"where the SDF is written in NumPy, else `sdfwb.evaluate`; {FE_CPP}'s by C++ threads; sdfwb after a "
+                 "32^3 call that compiles its "
                  "shaders) and the process's peak resident memory (VmHWM, Python and the libraries included). "
                  "Ratio = the tool's time / sdfwb's at the same size.\n")
     lines.append("| shape | R | tool | whole call s | of which field s | peak memory MB | triangles | time / sdfwb's |\n"
@@ -532,7 +579,8 @@ lines.append("| shape | tool | R | whole call s | of which field s (form) | tria
              "|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 for r in results:
     e = r["eval"]
-    form = field_choice.get((r["label"], r["R"]), ("", 0, []))[0] if r["tool"] != "sdfwb" else ""
+    form = ("" if r["tool"] == "sdfwb" else "C++ inline" if r["tool"] == FE_CPP else
+            field_choice.get((r["label"], r["R"]), ("", 0, []))[0])
     edges = e.get("edges") if e else None
     threads = f" ({r['threads']} threads)" if r.get("threads") else ""
     lines.append(f"| {r['label']} | {r['tool']}{threads} | {r['R']} | {r['seconds']:.3f} | "
@@ -555,7 +603,8 @@ if PLOT:
     figure, axes = plt.subplots(rows_count, columns, figsize=(5.5 * columns, 4.5 * rows_count), squeeze=False)
     for ax in axes.flat[len(classes):]:
         ax.axis("off")
-    colours = {"sdfwb": "C3", "scikit-image MC": "C0", "VTK Flying Edges": "C2", "OpenVDB volumeToMesh": "C1"}
+    colours = {"sdfwb": "C3", "scikit-image MC": "C0", "VTK Flying Edges": "C2", "OpenVDB volumeToMesh": "C1",
+               FE_CPP: "C4"}
     for ax, cls in zip(axes.flat, classes):
         for label, c, _, _ in SHAPES:
             if c != cls:
@@ -580,7 +629,7 @@ if PLOT:
 if MARKDOWN:
     command = " ".join(["env -u DISPLAY PYTHONPATH=build/python", sys.executable, "bench/bench_mesh_peers.py"] + args)
     with open(MARKDOWN, "w") as out:
-        out.write("# Meshes: sdfwb against scikit-image, VTK Flying Edges and OpenVDB\n\n")
+        out.write("# Meshes: sdfwb against scikit-image, VTK Flying Edges (from Python and from C++) and OpenVDB\n\n")
         out.write(f"Generated by `{command}` (bench/bench_mesh_peers.py; nothing below is typed by hand).\n\n")
         out.write("".join(f"- {line}\n" for line in config) + "\n")
         if PLOT:

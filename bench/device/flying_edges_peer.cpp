@@ -3,10 +3,10 @@
 // vtkFlyingEdges3D (vtkSMPTools, every thread count tried), normals, gradients and scalars off. Prints one JSON
 // object; writes the fastest run's mesh as binary PLY for `sdfwb --batch grade`.
 //
-//   flying_edges_peer SHAPE R THREADS,... OUT.ply     SHAPE: sphere | rotated-box | rotated-cylinder
+//   flying_edges_peer SHAPE R THREADS,... OUT.ply     SHAPE: sphere | torus | box | shell | rotated-box | rotated-cylinder
 //
 // The fields are those of bench/bench_mesh_peers.py (the same radii, half sizes and tilt: 0.3 rad about (1, 2, 3)).
-// Built by bench/device/bundle.sh against Debian's VTK 9.1; it is not part of the CMake build.
+// Built by bench/device/build_peer.sh against Debian's VTK 9.1; it is not part of the CMake build.
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
@@ -67,11 +67,29 @@ inline void untilt(float& x, float& y, float& z) {
 
 inline float sphere(float x, float y, float z) { return std::sqrt(x * x + y * y + z * z) - 0.8f; }
 
-inline float rotatedBox(float x, float y, float z) {
-    untilt(x, y, z);
-    const float qx = std::fabs(x) - 0.55f, qy = std::fabs(y) - 0.4f, qz = std::fabs(z) - 0.3f;
+inline float torus(float x, float y, float z) { // the dataset's Torus: tilted 30 degrees about x
+    const float c = 0.8660254f, s = 0.5f;
+    const float v = c * y + s * z, w = -s * y + c * z;
+    const float q = std::sqrt(x * x + w * w) - 0.65f;
+    return std::sqrt(q * q + v * v) - 0.25f;
+}
+
+inline float boxOf(float x, float y, float z, float hx, float hy, float hz) {
+    const float qx = std::fabs(x) - hx, qy = std::fabs(y) - hy, qz = std::fabs(z) - hz;
     const float ox = std::max(qx, 0.0f), oy = std::max(qy, 0.0f), oz = std::max(qz, 0.0f);
     return std::sqrt(ox * ox + oy * oy + oz * oz) + std::min(std::max(qx, std::max(qy, qz)), 0.0f);
+}
+
+inline float box(float x, float y, float z) { return boxOf(x, y, z, 0.8f, 0.5f, 0.6f); }
+
+inline float shell(float x, float y, float z) { // a hollow ball, wall 0.03, cut open by the plane y = 0.5
+    const float ball = std::fabs(std::sqrt(x * x + y * y + z * z) - 0.7f) - 0.015f;
+    return std::max(ball, y - 0.5f);
+}
+
+inline float rotatedBox(float x, float y, float z) {
+    untilt(x, y, z);
+    return boxOf(x, y, z, 0.55f, 0.4f, 0.3f);
 }
 
 inline float rotatedCylinder(float x, float y, float z) {
@@ -158,13 +176,16 @@ std::vector<int> parseThreads(const std::string& text) {
 
 int main(int argc, char** argv) {
     if (argc != 5) {
-        std::cerr << "usage: flying_edges_peer sphere|rotated-box|rotated-cylinder R THREADS,... OUT.ply\n";
+        std::cerr << "usage: flying_edges_peer sphere|torus|box|shell|rotated-box|rotated-cylinder R THREADS,... OUT.ply\n";
         return 2;
     }
     const std::string shape = argv[1];
     const int R = std::stoi(argv[2]);
     const std::vector<int> threads = parseThreads(argv[3]);
     void (*filler)(std::vector<float>&, int, int) = shape == "sphere"             ? fill<sphere>
+                                                    : shape == "torus"            ? fill<torus>
+                                                    : shape == "box"              ? fill<box>
+                                                    : shape == "shell"            ? fill<shell>
                                                     : shape == "rotated-box"      ? fill<rotatedBox>
                                                     : shape == "rotated-cylinder" ? fill<rotatedCylinder>
                                                                                   : nullptr;
