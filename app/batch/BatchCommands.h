@@ -3,7 +3,7 @@
 // and prints its report, as text or as the report's JSON (--json). No Qt, no widgets: EGL for GL.
 // Each returns a process exit code (see ExitCode). One file each under commands/.
 
-#include <jobs/Requests.h>
+#include <values/Requests.h>
 
 #include <string>
 

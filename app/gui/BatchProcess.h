@@ -8,7 +8,7 @@
 
 #include <jobs/Jobs.h>
 #include <jobs/Protocol.h>
-#include <jobs/Requests.h>
+#include <values/Requests.h>
 
 #include <QByteArray>
 #include <QObject>

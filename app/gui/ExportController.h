@@ -3,7 +3,7 @@
 // and animations (F6: `sdfwb --batch animate` as a child process with the viewport's camera and
 // shading, so the UI stays responsive and Cancel leaves no file).
 
-#include <jobs/Requests.h>
+#include <values/Requests.h>
 
 #include <QObject>
 #include <QString>

@@ -11,7 +11,7 @@
 #include "BatchProcess.h"
 
 #include <jobs/Jobs.h>
-#include <jobs/Requests.h>
+#include <values/Requests.h>
 
 #include <QObject>
 #include <QPointer>

@@ -3,7 +3,7 @@
 // `sdfwb --batch mesh` in a child process, with a resolution, progress and Cancel; a cancelled or
 // failed export leaves no file. The dialog shows the report: size, topology, error and seconds.
 
-#include <jobs/Requests.h>
+#include <values/Requests.h>
 
 #include <QObject>
 #include <QString>

@@ -3,7 +3,7 @@
 // readouts after each change (debounced) by running the plane audit request in the workbench's
 // persistent worker (JobWorker), so the editor and the viewport never wait for the analysis.
 
-#include <jobs/Requests.h>
+#include <values/Requests.h>
 
 #include <QObject>
 #include <QTimer>

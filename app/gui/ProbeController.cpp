@@ -9,30 +9,6 @@
 #include <widgets/ViewportWidget.h>
 
 namespace sdfwb::app {
-namespace {
-
-widgets::ProbeView viewOf(const jobs::ProbeReport& report) {
-    widgets::ProbeView view;
-    view.x = report.x;
-    view.y = report.y;
-    view.width = report.width;
-    view.height = report.height;
-    view.outcome = QString::fromStdString(report.outcome);
-    view.reason = QString::fromStdString(report.reason);
-    view.steps = report.steps;
-    view.hitT = report.hitT;
-    view.hitResidual = report.hitResidual;
-    view.footprint = report.footprint;
-    view.oversteps = int(report.oversteps);
-    view.fallbacks = int(report.fallbacks);
-    view.seconds = report.seconds;
-    for (const jobs::ProbeStep& step : report.events)
-        view.rows.push_back(
-            {QString::fromStdString(step.event), step.t, step.position, step.f, step.step, step.gradientLength, step.overstep});
-    return view;
-}
-
-} // namespace
 
 ProbeController::ProbeController(widgets::ProbePanel* panel, widgets::ViewportWidget* viewport, SdfDocument* document,
                                  JobWorker* worker, QObject* parent)
@@ -53,7 +29,7 @@ ProbeController::ProbeController(widgets::ProbePanel* panel, widgets::ViewportWi
             emit probed(false);
             return;
         }
-        m_panel->setView(viewOf(*report));
+        m_panel->setReport(*report);
         log::info("probe", "pixel " + std::to_string(report->x) + "," + std::to_string(report->y) + ": " + report->outcome +
                                " after " + std::to_string(report->steps) + " steps, " + std::to_string(report->oversteps) +
                                " oversteps");

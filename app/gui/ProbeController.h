@@ -4,7 +4,7 @@
 // parameters, camera, trace settings, shading, plane, time, frame size), then fills the probe dock.
 // A click while a probe runs replaces it (the newest pixel wins).
 
-#include <jobs/Requests.h>
+#include <values/Requests.h>
 
 #include <QObject>
 

@@ -73,19 +73,13 @@ void SamplingController::showDialog() {
     m_dialog->raise();
 }
 
-jobs::SampleRequest SamplingController::requestFor(const widgets::SamplingSettings& settings) const {
-    jobs::SampleRequest request;
+jobs::SampleRequest SamplingController::requestFor(const jobs::SampleRequest& fromDialog) const {
+    jobs::SampleRequest request = fromDialog;
     request.sdf = m_currentSdf();
-    request.pattern = settings.pattern.toStdString();
-    request.count = settings.count;
-    request.seed = settings.seed;
-    request.time = float(settings.time);
-    request.output = settings.output.toStdString();
-    request.format = settings.format.toStdString();
     return request;
 }
 
-void SamplingController::preview(const widgets::SamplingSettings& settings) {
+void SamplingController::preview(const jobs::SampleRequest& fromDialog) {
     if (isRunning()) return;
     if (m_previewFolder.isEmpty()) {
         QTemporaryDir folder(QDir::temp().filePath("sdfwb-preview-XXXXXX"));
@@ -96,10 +90,10 @@ void SamplingController::preview(const widgets::SamplingSettings& settings) {
         }
         m_previewFolder = folder.path();
     }
-    jobs::SampleRequest request = requestFor(settings);
+    jobs::SampleRequest request = requestFor(fromDialog);
     // Rows depend on the seed and their index only, so a preview shows the first points the file
     // will hold (grid and image size their lattice by N: theirs is a coarser lattice).
-    request.count = std::min<std::uint64_t>(settings.count, widgets::SamplingDialog::kPreviewPoints);
+    request.count = std::min<std::uint64_t>(fromDialog.count, widgets::SamplingDialog::kPreviewPoints);
     request.output = QDir(m_previewFolder).filePath("preview.npz").toStdString();
     request.format.clear();
     m_previewing = true;
@@ -112,9 +106,9 @@ SamplingController::~SamplingController() {
     if (!m_previewFolder.isEmpty()) QDir(m_previewFolder).removeRecursively();
 }
 
-void SamplingController::start(const widgets::SamplingSettings& settings) {
+void SamplingController::start(const jobs::SampleRequest& fromDialog) {
     if (isRunning()) return;
-    const jobs::SampleRequest request = requestFor(settings);
+    const jobs::SampleRequest request = requestFor(fromDialog);
     m_dialog->setRunning(true);
     m_dialog->setMessage(tr("Sampling..."), false);
     m_process->start(request);

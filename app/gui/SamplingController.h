@@ -1,7 +1,7 @@
 #pragma once
 // Runs sampling jobs for the workbench through a BatchProcess (`sdfwb --batch sample` as a child).
 
-#include <jobs/Requests.h>
+#include <values/Requests.h>
 
 #include <QObject>
 #include <QString>
@@ -10,7 +10,6 @@
 
 namespace sdfwb::widgets {
 class SamplingDialog;
-struct SamplingSettings;
 } // namespace sdfwb::widgets
 
 namespace sdfwb::app {
@@ -39,9 +38,9 @@ signals:
     void progress(quint64 done, quint64 total);
 
 private:
-    void start(const widgets::SamplingSettings& settings);
-    void preview(const widgets::SamplingSettings& settings);
-    jobs::SampleRequest requestFor(const widgets::SamplingSettings& settings) const;
+    void start(const jobs::SampleRequest& fromDialog);
+    void preview(const jobs::SampleRequest& fromDialog);
+    jobs::SampleRequest requestFor(const jobs::SampleRequest& fromDialog) const; // the dialog's, on the current SDF
 
     QWidget* m_window;
     std::function<jobs::SdfInput()> m_currentSdf;

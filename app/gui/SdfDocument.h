@@ -8,10 +8,10 @@
 // diagnostics. Jobs (sampling, exports, plane readouts) take `input()`: the shown text, not the
 // file on disk. Owns its worker threads; never blocks the UI thread.
 
-#include <jobs/Requests.h>
 #include <renderer/RenderSettings.h>
 #include <shaders/Diagnostic.h>
 #include <shaders/SdfSource.h>
+#include <values/Requests.h>
 
 #include <QObject>
 #include <QString>

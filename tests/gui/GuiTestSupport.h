@@ -15,9 +15,9 @@
 #include <gui/SamplingController.h>
 #include <gui/SdfDocument.h>
 #include <gui/ThumbnailController.h>
-#include <jobs/Requests.h>
 #include <renderer/ImageIO.h>
 #include <sampling/SampleFile.h>
+#include <values/Requests.h>
 #include <widgets/CameraPanel.h>
 #include <widgets/DatasetBrowser.h>
 #include <widgets/ExportDialog.h>

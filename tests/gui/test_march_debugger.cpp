@@ -44,18 +44,18 @@ TEST(MarchDebugger, ClickingAPixelShowsItsMarchAndHoveringThePlaneShowsTheField)
             }
         EXPECT_GT(yellow, 20) << "the probed pixel is marked";
     }
-    const widgets::ProbeView& hit = window.probePanel()->view();
-    EXPECT_EQ(hit.outcome, "hit") << hit.reason.toStdString();
+    const jobs::ProbeReport& hit = window.probePanel()->report();
+    EXPECT_EQ(hit.outcome, "hit") << hit.reason;
     EXPECT_EQ(hit.x, viewport->width() / 2);
-    ASSERT_FALSE(hit.rows.empty());
-    EXPECT_EQ(hit.rows.front().event, "step");
-    EXPECT_TRUE(std::any_of(hit.rows.begin(), hit.rows.end(), [](const auto& r) { return r.event == "hit"; }));
-    EXPECT_EQ(hit.oversteps, 0) << "an exact field never oversteps";
+    ASSERT_FALSE(hit.events.empty());
+    EXPECT_EQ(hit.events.front().event, "step");
+    EXPECT_TRUE(std::any_of(hit.events.begin(), hit.events.end(), [](const auto& r) { return r.event == "hit"; }));
+    EXPECT_EQ(hit.oversteps, 0u) << "an exact field never oversteps";
     ASSERT_TRUE(hit.hitT.has_value());
     // The hit lies on the sphere of radius 0.8: the distance from the camera along the ray.
-    const auto& last = *std::find_if(hit.rows.begin(), hit.rows.end(), [](const auto& r) { return r.event == "hit"; });
+    const auto& last = *std::find_if(hit.events.begin(), hit.events.end(), [](const auto& r) { return r.event == "hit"; });
     EXPECT_NEAR(glm::length(last.position), 0.8f, 2e-3f);
-    EXPECT_EQ(window.probePanel()->table()->rowCount(), int(hit.rows.size()));
+    EXPECT_EQ(window.probePanel()->table()->rowCount(), int(hit.events.size()));
     EXPECT_GE(window.probePanel()->plot()->markerCount(), hit.steps);
     // Selecting a row (a click on its cell) rings it in the plot.
     const QRect cell = window.probePanel()->table()->visualItemRect(window.probePanel()->table()->item(1, 1));
@@ -65,9 +65,9 @@ TEST(MarchDebugger, ClickingAPixelShowsItsMarchAndHoveringThePlaneShowsTheField)
 
     QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, QPoint(2, 2));
     ASSERT_TRUE(waitFor([&] { return probes == 2; }, 30000));
-    const widgets::ProbeView& miss = window.probePanel()->view();
-    EXPECT_TRUE(miss.outcome == "missed the box" || miss.outcome == "left the box") << miss.outcome.toStdString();
-    EXPECT_TRUE(window.probePanel()->summary().contains(miss.outcome));
+    const jobs::ProbeReport& miss = window.probePanel()->report();
+    EXPECT_TRUE(miss.outcome == "missed the box" || miss.outcome == "left the box") << miss.outcome;
+    EXPECT_TRUE(window.probePanel()->summary().contains(QString::fromStdString(miss.outcome)));
 
     // The probe tool off: a drag orbits again.
     QTest::mouseClick(button, Qt::LeftButton);

@@ -18,11 +18,11 @@ TEST(SamplingDialog, SamplesTheOpenSdfAndCancelsCleanly) {
 
     QString output = QDir::temp().filePath("sdfwb-gui-samples.npz");
     QFile::remove(output);
-    widgets::SamplingSettings settings;
+    jobs::SampleRequest settings;
     settings.pattern = "near";
     settings.count = 20000;
-    settings.output = output;
-    dialog->setSettings(settings);
+    settings.output = output.toStdString();
+    dialog->setRequest(settings);
     bool done = false, ok = false;
     QObject::connect(sampling, &app::SamplingController::finished, [&](bool success, const QString&) {
         done = true;
@@ -40,8 +40,8 @@ TEST(SamplingDialog, SamplesTheOpenSdfAndCancelsCleanly) {
     QFile::remove(cancelled);
     settings.pattern = "metropolis";
     settings.count = 400000000;
-    settings.output = cancelled;
-    dialog->setSettings(settings);
+    settings.output = cancelled.toStdString();
+    dialog->setRequest(settings);
     done = false;
     quint64 written = 0;
     QObject::connect(sampling, &app::SamplingController::progress, [&](quint64 d, quint64) { written = d; });

@@ -14,7 +14,7 @@
 namespace sdfwb::widgets {
 namespace {
 
-bool evaluates(const QString& event) {
+bool evaluates(const std::string& event) {
     return event == "step" || event == "relaxed step" || event == "fallback" || event == "hit" || event == "refine" ||
            event == "refine undone";
 }
@@ -54,27 +54,29 @@ void ProbePanel::setMessage(const QString& message) { m_summary->setText(message
 
 QString ProbePanel::summary() const { return m_summary->text(); }
 
-void ProbePanel::setView(const ProbeView& view) {
-    m_view = view;
-    QString text = tr("<b>Pixel (%1, %2)</b> of %3x%4: <b>%5</b>. %6<br>%7 steps, %8 oversteps, %9 fallbacks; probed in %10 s.")
-                       .arg(view.x)
-                       .arg(view.y)
-                       .arg(view.width)
-                       .arg(view.height)
-                       .arg(view.outcome.toHtmlEscaped(), view.reason.toHtmlEscaped())
-                       .arg(view.steps)
-                       .arg(view.oversteps)
-                       .arg(view.fallbacks)
-                       .arg(view.seconds, 0, 'f', 2);
-    if (view.oversteps > 0)
+void ProbePanel::setReport(const jobs::ProbeReport& report) {
+    m_report = report;
+    QString text =
+        tr("<b>Pixel (%1, %2)</b> of %3x%4: <b>%5</b>. %6<br>%7 steps, %8 oversteps, %9 fallbacks; probed in %10 s.")
+            .arg(report.x)
+            .arg(report.y)
+            .arg(report.width)
+            .arg(report.height)
+            .arg(QString::fromStdString(report.outcome).toHtmlEscaped(), QString::fromStdString(report.reason).toHtmlEscaped())
+            .arg(report.steps)
+            .arg(qulonglong(report.oversteps))
+            .arg(qulonglong(report.fallbacks))
+            .arg(report.seconds, 0, 'f', 2);
+    if (report.oversteps > 0)
         text += tr("<br><span style='color:#d03030'>Oversteps: steps longer than the distance to the surface (f changed "
                    "sign). Lower the step factor or fix the field's Lipschitz bound.</span>");
     m_summary->setText(text);
-    m_table->setRowCount(int(view.rows.size()));
-    for (int r = 0; r < int(view.rows.size()); ++r) {
-        const ProbeRowView& row = view.rows[std::size_t(r)];
+    m_table->setRowCount(int(report.events.size()));
+    for (int r = 0; r < int(report.events.size()); ++r) {
+        const jobs::ProbeStep& row = report.events[std::size_t(r)];
+        const QString event = QString::fromStdString(row.event);
         const QStringList cells = {QString::number(r),
-                                   row.overstep ? row.event + tr(" (overstep)") : row.event,
+                                   row.overstep ? event + tr(" (overstep)") : event,
                                    number(row.t),
                                    number(row.position.x),
                                    number(row.position.y),
@@ -93,7 +95,7 @@ void ProbePanel::setView(const ProbeView& view) {
             m_table->setItem(r, c, item);
         }
     }
-    m_plot->setRows(view.rows);
+    m_plot->setEvents(report.events);
 }
 
 MarchPlot::MarchPlot(QWidget* parent) : QWidget(parent) {
@@ -101,16 +103,16 @@ MarchPlot::MarchPlot(QWidget* parent) : QWidget(parent) {
     setMinimumHeight(120);
 }
 
-void MarchPlot::setRows(const std::vector<ProbeRowView>& rows) {
+void MarchPlot::setEvents(const std::vector<jobs::ProbeStep>& events) {
     m_points.clear();
-    for (int r = 0; r < int(rows.size()); ++r) {
-        const ProbeRowView& row = rows[std::size_t(r)];
+    for (int r = 0; r < int(events.size()); ++r) {
+        const jobs::ProbeStep& row = events[std::size_t(r)];
         if (!evaluates(row.event) || !std::isfinite(row.f) || !std::isfinite(row.t)) continue;
-        QColor colour = row.overstep                     ? QColor(220, 40, 40)
-                        : row.event == "fallback"        ? QColor(235, 140, 20)
-                        : row.event == "hit"             ? QColor(30, 170, 70)
-                        : row.event.startsWith("refine") ? QColor(120, 120, 200)
-                                                         : QColor(40, 90, 200);
+        QColor colour = row.overstep                      ? QColor(220, 40, 40)
+                        : row.event == "fallback"         ? QColor(235, 140, 20)
+                        : row.event == "hit"              ? QColor(30, 170, 70)
+                        : row.event.starts_with("refine") ? QColor(120, 120, 200)
+                                                          : QColor(40, 90, 200);
         m_points.push_back({row.t, row.f, r, colour});
     }
     m_selected = -1;

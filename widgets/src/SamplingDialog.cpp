@@ -95,9 +95,9 @@ SamplingDialog::SamplingDialog(const QStringList& patterns, QWidget* parent) : Q
             setMessage(tr("Choose an output file (.npz, .bin or .ply)."), true);
             return;
         }
-        emit startRequested(settings());
+        emit startRequested(request());
     });
-    connect(m_preview, &QPushButton::clicked, this, [this] { emit previewRequested(settings()); });
+    connect(m_preview, &QPushButton::clicked, this, [this] { emit previewRequested(request()); });
     connect(m_pointSize, &QSpinBox::valueChanged, this, &SamplingDialog::pointSizeChanged);
     connect(m_cancel, &QPushButton::clicked, this, &SamplingDialog::cancelRequested);
     connect(close, &QPushButton::clicked, this, [this] {
@@ -110,24 +110,24 @@ int SamplingDialog::pointSize() const { return m_pointSize->value(); }
 
 void SamplingDialog::setSdfName(const QString& name) { m_sdf->setText(name); }
 
-SamplingSettings SamplingDialog::settings() const {
-    SamplingSettings s;
-    s.pattern = m_pattern->currentText().trimmed();
-    s.count = m_count->text().toULongLong();
-    s.seed = m_seed->text().toULongLong();
-    s.time = m_time->value();
-    s.output = m_output->text().trimmed();
-    s.format = m_format->currentIndex() == 0 ? QString() : m_format->currentText();
-    return s;
+jobs::SampleRequest SamplingDialog::request() const {
+    jobs::SampleRequest r;
+    r.pattern = m_pattern->currentText().trimmed().toStdString();
+    r.count = m_count->text().toULongLong();
+    r.seed = m_seed->text().toULongLong();
+    r.time = float(m_time->value());
+    r.output = m_output->text().trimmed().toStdString();
+    r.format = m_format->currentIndex() == 0 ? std::string() : m_format->currentText().toStdString();
+    return r;
 }
 
-void SamplingDialog::setSettings(const SamplingSettings& s) {
-    m_pattern->setCurrentText(s.pattern);
-    m_count->setText(QString::number(s.count));
-    m_seed->setText(QString::number(s.seed));
-    m_time->setValue(s.time);
-    m_output->setText(s.output);
-    int format = m_format->findText(s.format);
+void SamplingDialog::setRequest(const jobs::SampleRequest& r) {
+    m_pattern->setCurrentText(QString::fromStdString(r.pattern));
+    m_count->setText(QString::number(r.count));
+    m_seed->setText(QString::number(r.seed));
+    m_time->setValue(double(r.time));
+    m_output->setText(QString::fromStdString(r.output));
+    const int format = m_format->findText(QString::fromStdString(r.format));
     m_format->setCurrentIndex(format < 0 ? 0 : format);
 }
 

@@ -4,7 +4,7 @@
 // absent keys keep their defaults, unknown keys are errors that name them. Reports are what
 // `--json` prints; reading one back ignores keys it does not know (reports grow).
 
-#include <jobs/Requests.h>
+#include <values/Requests.h>
 
 #include <core/Expected.h>
 

@@ -5,9 +5,9 @@
 // validates again, opens the SDF and does the work. Render, animate, sample, audit and bench need
 // a current GL 4.3 context on the calling thread (renderer::HeadlessContext); merge and list none.
 
-#include <jobs/Requests.h>
 #include <meshing/Mesh.h>
 #include <renderer/Image.h>
+#include <values/Requests.h>
 
 #include <core/Progress.h>
 #include <shaders/Diagnostic.h>

@@ -1,8 +1,10 @@
 #pragma once
-// The job model: one typed request and one typed report per job kind. The CLI parser fills
-// requests from options, job files and `sdfwb --batch request` read them as JSON (JobJson.h), the
-// workbench writes them as JSON for its child processes, and Python builds them from keyword
-// arguments or dicts; all of them run through Jobs.h. Plain values: no GL, no Qt, no JSON here.
+// The job model's values: one typed request and one typed report per job kind. The CLI parser
+// fills requests from options, job files and `sdfwb --batch request` read them as JSON
+// (jobs/JobJson.h), the workbench writes them as JSON for its child processes and its panels show
+// the reports as they come (widgets include this module, not jobs/), and Python builds them from
+// keyword arguments or dicts; all of them run through jobs/Jobs.h. Plain values: no GL, no Qt, no
+// JSON here. The namespace is the job model's, sdfwb::jobs.
 
 #include <renderer/Camera.h>
 #include <renderer/RenderSettings.h>

@@ -1,7 +1,9 @@
 #pragma once
 // The sampling dialog: pattern, count, seed, time, output file and format, with progress and
-// Cancel. It only collects settings and shows progress; the controller that owns it runs the job.
-// UI thread only.
+// Cancel. It fills a jobs::SampleRequest (values/) and shows progress; the controller that owns it
+// names the SDF and runs the job. UI thread only.
+
+#include <values/Requests.h>
 
 #include <QDialog>
 #include <QString>
@@ -18,23 +20,15 @@ class QSpinBox;
 
 namespace sdfwb::widgets {
 
-struct SamplingSettings {
-    QString pattern = "surface"; // built-in name or a sampler file path
-    std::uint64_t count = 1000000;
-    std::uint64_t seed = 0;
-    double time = 0.0;
-    QString output; // .bin, .npz or .ply
-    QString format; // empty: from the extension
-};
-
 class SamplingDialog : public QDialog {
     Q_OBJECT
 public:
     SamplingDialog(const QStringList& patterns, QWidget* parent = nullptr);
 
     void setSdfName(const QString& name);
-    SamplingSettings settings() const;
-    void setSettings(const SamplingSettings& settings);
+    // The request the fields make: pattern, count, seed, time, output and format (its SDF empty).
+    jobs::SampleRequest request() const;
+    void setRequest(const jobs::SampleRequest& request);
 
     // Controller feedback.
     void setRunning(bool running);
@@ -46,8 +40,8 @@ public:
     int pointSize() const;
 
 signals:
-    void startRequested(const sdfwb::widgets::SamplingSettings& settings);
-    void previewRequested(const sdfwb::widgets::SamplingSettings& settings);
+    void startRequested(const sdfwb::jobs::SampleRequest& request);
+    void previewRequested(const sdfwb::jobs::SampleRequest& request);
     void pointSizeChanged(int pixels);
     void cancelRequested();
 
