@@ -69,18 +69,20 @@ QString ExportController::saveScreenshot(const QString& path, int width, int hei
 void ExportController::showScreenshotDialog() {
     if (!m_screenshotDialog) {
         m_screenshotDialog = new widgets::ExportDialog(widgets::ExportDialog::Kind::Screenshot, m_window);
-        connect(m_screenshotDialog, &widgets::ExportDialog::startRequested, this, [this](const widgets::ExportSettings& s) {
-            QString error = saveScreenshot(s.output, s.width, s.height);
+        connect(m_screenshotDialog, &widgets::ExportDialog::startRequested, this, [this](const jobs::AnimateRequest& r) {
+            const QString output = QString::fromStdString(r.output);
+            QString error = saveScreenshot(output, r.frame.width, r.frame.height);
             m_screenshotDialog->setMessage(
-                error.isEmpty() ? tr("Saved %1 (%2x%3).").arg(s.output).arg(s.width).arg(s.height) : error, !error.isEmpty());
+                error.isEmpty() ? tr("Saved %1 (%2x%3).").arg(output).arg(r.frame.width).arg(r.frame.height) : error,
+                !error.isEmpty());
         });
     }
-    widgets::ExportSettings settings = m_screenshotDialog->settings();
+    jobs::AnimateRequest shot = m_screenshotDialog->request();
     const qreal ratio = m_viewport->devicePixelRatioF();
-    settings.width = int(m_viewport->width() * ratio);
-    settings.height = int(m_viewport->height() * ratio);
-    if (settings.output.isEmpty()) settings.output = "screenshot.png";
-    m_screenshotDialog->setSettings(settings);
+    shot.frame.width = int(m_viewport->width() * ratio);
+    shot.frame.height = int(m_viewport->height() * ratio);
+    if (shot.output.empty()) shot.output = "screenshot.png";
+    m_screenshotDialog->setRequest(shot);
     m_screenshotDialog->show();
     m_screenshotDialog->raise();
 }
@@ -90,29 +92,26 @@ void ExportController::showVideoDialog() {
         m_videoDialog = new widgets::ExportDialog(widgets::ExportDialog::Kind::Video, m_window);
         connect(m_videoDialog, &widgets::ExportDialog::startRequested, this, &ExportController::startVideo);
         connect(m_videoDialog, &widgets::ExportDialog::cancelRequested, m_process, &BatchProcess::cancel);
-        widgets::ExportSettings settings;
-        settings.output = "animation.mp4";
-        m_videoDialog->setSettings(settings);
+        jobs::AnimateRequest first;
+        first.output = "animation.mp4";
+        first.turntable = true; // the workbench offers a turntable first: a still shape's clip would not move
+        m_videoDialog->setRequest(first);
     }
     m_videoDialog->show();
     m_videoDialog->raise();
 }
 
-jobs::AnimateRequest ExportController::videoRequest(const widgets::ExportSettings& s) const {
-    jobs::AnimateRequest request;
-    request.frame = m_document->frame(s.width, s.height);
-    request.output = s.output.toStdString();
-    request.seconds = float(s.seconds);
-    request.framesPerSecond = s.framesPerSecond;
-    request.turntable = s.turntable;
+jobs::AnimateRequest ExportController::videoRequest(const jobs::AnimateRequest& fromDialog) const {
+    jobs::AnimateRequest request = fromDialog;
+    request.frame = m_document->frame(fromDialog.frame.width, fromDialog.frame.height);
     if (m_clipEnd) request.paramsEnd = m_clipEnd();
     return request;
 }
 
-void ExportController::startVideo(const widgets::ExportSettings& s) {
+void ExportController::startVideo(const jobs::AnimateRequest& fromDialog) {
     m_videoDialog->setRunning(true);
     m_videoDialog->setMessage(tr("Exporting..."), false);
-    m_process->start(videoRequest(s));
+    m_process->start(videoRequest(fromDialog));
 }
 
 } // namespace sdfwb::app

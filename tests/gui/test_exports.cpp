@@ -10,8 +10,8 @@ namespace {
 
 // Starts the video dialog's export with `settings` (a real click) and waits for its end: success,
 // or a failure carrying the dialog's message.
-::testing::AssertionResult exportVideo(app::MainWindow& window, const widgets::ExportSettings& settings) {
-    window.exports()->videoDialog()->setSettings(settings);
+::testing::AssertionResult exportVideo(app::MainWindow& window, const jobs::AnimateRequest& settings) {
+    window.exports()->videoDialog()->setRequest(settings);
     bool done = false, ok = false;
     auto connection =
         QObject::connect(window.exports(), &app::ExportController::videoFinished, [&](bool success, const QString&) {
@@ -57,12 +57,13 @@ TEST(Export, ScreenshotAtAChosenSizeAndAnMp4) {
     window.exports()->showVideoDialog();
     QString mp4 = QDir::temp().filePath("sdfwb-gui-turntable.mp4");
     QFile::remove(mp4);
-    widgets::ExportSettings settings;
-    settings.output = mp4;
-    settings.width = 160;
-    settings.height = 90;
-    settings.seconds = 1.0;
+    jobs::AnimateRequest settings;
+    settings.output = mp4.toStdString();
+    settings.frame.width = 160;
+    settings.frame.height = 90;
+    settings.seconds = 1.0f;
     settings.framesPerSecond = 10;
+    settings.turntable = true;
     EXPECT_TRUE(exportVideo(window, settings));
     // FFmpeg's own reader decodes it: H.264, 160x90, 10 frames (1 s at 10 fps).
     QProcess probe;
@@ -105,13 +106,15 @@ TEST(Export, Mp4FrameEqualsAScreenshotOfTheSameUnsavedState) {
     window.document()->setPlane(plane);
     EXPECT_TRUE(window.viewport()->plane() == plane) << "the viewport draws the document's plane";
 
-    widgets::ExportSettings settings;
-    settings.output = QDir::temp().filePath(QString("sdfwb-gui-state-%1.mp4").arg(QCoreApplication::applicationPid()));
-    QFile::remove(settings.output);
-    settings.width = 320;
-    settings.height = 200;
-    settings.seconds = 0.1;
+    jobs::AnimateRequest settings;
+    const QString mp4 = QDir::temp().filePath(QString("sdfwb-gui-state-%1.mp4").arg(QCoreApplication::applicationPid()));
+    settings.output = mp4.toStdString();
+    QFile::remove(mp4);
+    settings.frame.width = 320;
+    settings.frame.height = 200;
+    settings.seconds = 0.1f;
     settings.framesPerSecond = 10;
+    settings.turntable = true;
     const jobs::AnimateRequest request = window.exports()->videoRequest(settings);
     EXPECT_TRUE(request.frame.trace == trace);
     EXPECT_TRUE(request.frame.plane == plane);
@@ -124,9 +127,9 @@ TEST(Export, Mp4FrameEqualsAScreenshotOfTheSameUnsavedState) {
     ASSERT_TRUE(exportVideo(window, settings));
 
     // The video's first frame, decoded by the real FFmpeg.
-    const QString decoded = settings.output + ".png";
+    const QString decoded = mp4 + ".png";
     QProcess ffmpeg;
-    ffmpeg.start("ffmpeg", {"-v", "error", "-y", "-i", settings.output, "-frames:v", "1", decoded});
+    ffmpeg.start("ffmpeg", {"-v", "error", "-y", "-i", mp4, "-frames:v", "1", decoded});
     ASSERT_TRUE(ffmpeg.waitForFinished(30000));
     ASSERT_EQ(ffmpeg.exitCode(), 0) << ffmpeg.readAllStandardError().toStdString();
     QImage frame(decoded);
@@ -154,7 +157,7 @@ TEST(Export, Mp4FrameEqualsAScreenshotOfTheSameUnsavedState) {
     EXPECT_LT(error, 3.0) << "the video frame differs from the screenshot of the same state";
     EXPECT_GT(planeEffect, 4.0 * error) << "the comparison cannot tell the plane apart";
     EXPECT_GT(settingsEffect, 4.0 * error) << "the comparison cannot tell the settings apart";
-    QFile::remove(settings.output);
+    QFile::remove(mp4);
     QFile::remove(decoded);
 }
 

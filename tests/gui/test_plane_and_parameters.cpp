@@ -57,9 +57,9 @@ TEST(CuttingPlane, PanelDrawsThePlaneAndShowsReadouts) {
     EXPECT_NEAR(window.planePanel()->plane().offset, 0.2f, 1e-3f);
     // The document holds the plane the drag moved to, and the jobs take it from there.
     EXPECT_TRUE(window.document()->plane() == viewport->plane());
-    widgets::ExportSettings video;
-    video.width = 64;
-    video.height = 48;
+    jobs::AnimateRequest video;
+    video.frame.width = 64;
+    video.frame.height = 48;
     EXPECT_TRUE(window.exports()->videoRequest(video).frame.plane == viewport->plane());
 
     window.planePanel()->findChild<QPushButton*>("apply_step_factor")->click();
@@ -152,7 +152,7 @@ TEST(Parameters, DockControlsRedrawWithoutRecompilingAndReachJobsAndTheFile) {
 
     // The clip-end keyframe reaches the MP4 request.
     panel->findChild<QPushButton*>("setClipEnd")->click();
-    widgets::ExportSettings settings;
+    jobs::AnimateRequest settings;
     settings.output = "/tmp/clip.mp4";
     jobs::AnimateRequest request = window.exports()->videoRequest(settings);
     ASSERT_EQ(request.paramsEnd.size(), 4u);

@@ -338,8 +338,8 @@ TEST(Viewport, TimeScrubsAnimatedSdfs) {
     EXPECT_FLOAT_EQ(window.viewport()->time(), window.document()->time());
     // Jobs run at the document's time: the probe's frame and a video's first frame.
     EXPECT_FLOAT_EQ(window.document()->frame(64, 48).time, window.document()->time());
-    widgets::ExportSettings video;
-    video.width = 64;
-    video.height = 48;
+    jobs::AnimateRequest video;
+    video.frame.width = 64;
+    video.frame.height = 48;
     EXPECT_FLOAT_EQ(window.exports()->videoRequest(video).frame.time, window.document()->time());
 }

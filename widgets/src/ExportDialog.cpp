@@ -66,7 +66,7 @@ ExportDialog::ExportDialog(Kind kind, QWidget* parent) : QDialog(parent), m_kind
     layout->addWidget(m_progress);
     layout->addWidget(m_message);
     layout->addWidget(buttons);
-    setSettings(ExportSettings{});
+    setRequest(jobs::AnimateRequest{});
 
     connect(browse, &QPushButton::clicked, this, [this, video] {
         QString filter = video ? tr("MP4 video (*.mp4)") : tr("Images (*.png *.jpg *.exr)");
@@ -78,7 +78,7 @@ ExportDialog::ExportDialog(Kind kind, QWidget* parent) : QDialog(parent), m_kind
             setMessage(tr("Choose a file to write."), true);
             return;
         }
-        emit startRequested(settings());
+        emit startRequested(request());
     });
     connect(m_cancel, &QPushButton::clicked, this, &ExportDialog::cancelRequested);
     connect(close, &QPushButton::clicked, this, [this] {
@@ -87,24 +87,24 @@ ExportDialog::ExportDialog(Kind kind, QWidget* parent) : QDialog(parent), m_kind
     });
 }
 
-void ExportDialog::setSettings(const ExportSettings& s) {
-    m_output->setText(s.output);
-    m_width->setValue(s.width);
-    m_height->setValue(s.height);
-    if (m_seconds) m_seconds->setValue(s.seconds);
-    if (m_fps) m_fps->setValue(s.framesPerSecond);
-    if (m_turntable) m_turntable->setChecked(s.turntable);
+void ExportDialog::setRequest(const jobs::AnimateRequest& r) {
+    m_output->setText(QString::fromStdString(r.output));
+    m_width->setValue(r.frame.width);
+    m_height->setValue(r.frame.height);
+    if (m_seconds) m_seconds->setValue(double(r.seconds));
+    if (m_fps) m_fps->setValue(r.framesPerSecond);
+    if (m_turntable) m_turntable->setChecked(r.turntable);
 }
 
-ExportSettings ExportDialog::settings() const {
-    ExportSettings s;
-    s.output = m_output->text().trimmed();
-    s.width = m_width->value();
-    s.height = m_height->value();
-    if (m_seconds) s.seconds = m_seconds->value();
-    if (m_fps) s.framesPerSecond = m_fps->value();
-    if (m_turntable) s.turntable = m_turntable->isChecked();
-    return s;
+jobs::AnimateRequest ExportDialog::request() const {
+    jobs::AnimateRequest r;
+    r.output = m_output->text().trimmed().toStdString();
+    r.frame.width = m_width->value();
+    r.frame.height = m_height->value();
+    if (m_seconds) r.seconds = float(m_seconds->value());
+    if (m_fps) r.framesPerSecond = m_fps->value();
+    if (m_turntable) r.turntable = m_turntable->isChecked();
+    return r;
 }
 
 void ExportDialog::setRunning(bool running) {

@@ -1,6 +1,9 @@
 #pragma once
-// Export settings for a screenshot (F4) or an animation (F6): file, size and, for video, length,
-// frame rate and turntable. Shows progress; the controller that owns it does the work.
+// A screenshot (F4) or an animation (F6): file, size and, for video, length, frame rate and
+// turntable, as a jobs::AnimateRequest (values/; a screenshot uses its output and frame size). Shows
+// progress; the controller that owns it fills in the frame and does the work.
+
+#include <values/Requests.h>
 
 #include <QDialog>
 
@@ -14,29 +17,21 @@ class QSpinBox;
 
 namespace sdfwb::widgets {
 
-struct ExportSettings {
-    QString output;
-    int width = 1280;
-    int height = 720;
-    double seconds = 4.0;     // video only
-    int framesPerSecond = 30; // video only
-    bool turntable = true;    // video only
-};
-
 class ExportDialog : public QDialog {
     Q_OBJECT
 public:
     enum class Kind { Screenshot, Video };
     ExportDialog(Kind kind, QWidget* parent = nullptr);
 
-    void setSettings(const ExportSettings& settings);
-    ExportSettings settings() const;
+    void setRequest(const jobs::AnimateRequest& request);
+    // The fields' output, frame size and (video) clip; the frame's SDF, camera and the rest default.
+    jobs::AnimateRequest request() const;
     void setRunning(bool running);
     void setProgress(quint64 done, quint64 total);
     void setMessage(const QString& message, bool error);
 
 signals:
-    void startRequested(const sdfwb::widgets::ExportSettings& settings);
+    void startRequested(const sdfwb::jobs::AnimateRequest& request);
     void cancelRequested();
 
 private:
