@@ -14,8 +14,8 @@
 
 #include <core/Log.h>
 #include <core/TextFile.h>
-#include <dataset/Catalogue.h>
 #include <dataset/Metadata.h>
+#include <jobs/Jobs.h>
 #include <meshing/Mesh.h>
 #include <widgets/CameraPanel.h>
 #include <widgets/DatasetBrowser.h>
@@ -41,9 +41,6 @@
 #include <QActionGroup>
 #include <QColorDialog>
 #include <QDateTime>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QPointer>
 #include <QStandardPaths>
 
@@ -395,34 +392,21 @@ void MainWindow::setUpLog() {
 }
 
 void MainWindow::loadDatasetItems(const QString& reportPath) {
-    // Measured type and render time from the dataset report (scripts/dataset_report.py).
-    QHash<QString, QJsonObject> measured;
-    QString note;
-    QFile report(reportPath);
-    if (report.open(QIODevice::ReadOnly)) {
-        const QJsonObject root = QJsonDocument::fromJson(report.readAll()).object();
-        for (const QJsonValue& entry : root.value("sdfs").toArray())
-            measured.insert(entry.toObject().value("name").toString(), entry.toObject());
-        note = tr("Measured type and render time (1280x720, Gooch): %1, %2")
-                   .arg(root.value("machine").toString(), root.value("date").toString());
-    } else {
-        note = tr("No dataset report (dataset/report.json): types are the declared ones");
+    // The list job's entries, with the measured type and render time from the dataset report
+    // (scripts/dataset_report.py), as `sdfwb --batch list` gives them.
+    jobs::ListRequest request;
+    request.report = reportPath.toStdString();
+    auto listed = jobs::run(request, {});
+    if (!listed) {
+        m_browser->setItems({});
+        m_browser->setReportNote(QString::fromStdString(listed.error.message));
+        return;
     }
-    QList<widgets::DatasetItem> items;
-    dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
-    for (const dataset::Entry& e : catalogue.entries()) {
-        widgets::DatasetItem item{QString::fromStdString(e.metadata.name),    QString::fromStdString(e.metadata.category),
-                                  dataset::declaredTypeName(e.metadata.type), QString::fromStdString(e.metadata.author),
-                                  QString::fromStdString(e.metadata.license), QString::fromStdString(e.metadata.notes),
-                                  QString::fromStdString(e.path.string()),    e.metadata.animated};
-        if (auto it = measured.find(item.name); it != measured.end()) {
-            item.measuredType = it->value("measured_type").toString();
-            if (it->contains("render_ms")) item.renderMilliseconds = it->value("render_ms").toDouble();
-        }
-        items.append(item);
-    }
-    m_browser->setItems(items);
-    m_browser->setReportNote(note);
+    m_browser->setItems(listed->items);
+    m_browser->setReportNote(listed->report.empty() ? tr("No dataset report (dataset/report.json): types are the declared ones")
+                                                    : tr("Measured type and render time (1280x720, Gooch): %1, %2")
+                                                          .arg(QString::fromStdString(listed->measuredOn),
+                                                               QString::fromStdString(listed->measuredDate)));
 }
 
 void MainWindow::updatePrecision() {

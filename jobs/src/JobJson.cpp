@@ -142,7 +142,7 @@ template <class V> void fields(V& v, MergeRequest& r) {
     v("parts", r.parts);
 }
 
-template <class V> void fields(V&, ListRequest&) {}
+template <class V> void fields(V& v, ListRequest& r) { v("report", r.report); }
 
 template <class V> void fields(V& v, ParamsRequest& r) { fields(v, r.sdf); }
 
@@ -533,12 +533,17 @@ template <class V> void fields(V& v, ListItem& i) {
     v("author", i.author);
     v("license", i.license);
     v("notes", i.notes);
+    v("measured_type", i.measuredType);
+    v("render_ms", i.renderMilliseconds);
 }
 
 template <class V> void fields(V& v, ListReport& r) {
     v("sdfs", r.items);
     v("problems", r.problems);
     v("root", r.root);
+    v("report", r.report);
+    v("measured_on", r.measuredOn);
+    v("measured_date", r.measuredDate);
 }
 
 template <class V> void fields(V& v, BenchReport& r) {
@@ -906,6 +911,30 @@ std::string toJson(const AnimateReport& report, int indent) { return dump(encode
 std::string toJson(const SampleReport& report, int indent) { return dump(encode(report), indent); }
 std::string toJson(const MergeReport& report, int indent) { return dump(encode(report), indent); }
 std::string toJson(const ListReport& report, int indent) { return dump(encode(report), indent); }
+
+Expected<void> addDatasetMeasurements(const std::string& reportText, ListReport& report) {
+    const json root = json::parse(reportText, nullptr, false);
+    if (root.is_discarded() || !root.is_object()) return makeError("not a JSON object");
+    auto text = [](const json& object, const char* key) {
+        const auto it = object.find(key);
+        return it != object.end() && it->is_string() ? it->get<std::string>() : std::string();
+    };
+    report.measuredOn = text(root, "machine");
+    report.measuredDate = text(root, "date");
+    const auto sdfs = root.find("sdfs");
+    if (sdfs == root.end() || !sdfs->is_array()) return makeError("no \"sdfs\" array");
+    for (const json& entry : *sdfs) {
+        if (!entry.is_object()) continue;
+        const std::string name = text(entry, "name");
+        for (ListItem& item : report.items) {
+            if (item.name != name) continue;
+            item.measuredType = text(entry, "measured_type");
+            if (const auto ms = entry.find("render_ms"); ms != entry.end() && ms->is_number())
+                item.renderMilliseconds = ms->get<double>();
+        }
+    }
+    return {};
+}
 std::string toJson(const BenchReport& report, int indent) { return dump(encode(report), indent); }
 std::string toJson(const ParamsReport& report, int indent) { return dump(encode(report), indent); }
 std::string toJson(const MeshReport& report, int indent) { return dump(encode(report), indent); }

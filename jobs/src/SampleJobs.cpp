@@ -158,7 +158,7 @@ JobResult<MergeReport> run(const MergeRequest& request, const ProgressSink&) {
     return report;
 }
 
-JobResult<ListReport> run(const ListRequest&, const ProgressSink&) {
+JobResult<ListReport> run(const ListRequest& request, const ProgressSink&) {
     dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
     ListReport report;
     report.root = paths::datasetRoot().string();
@@ -170,6 +170,17 @@ JobResult<ListReport> run(const ListRequest&, const ProgressSink&) {
                                 m.notes, m.animated});
     }
     if (report.items.empty()) return JobError{Failure::Work, "list: no SDFs found in " + report.root, {}};
+    // The measured types and render times, from the dataset report when there is one.
+    const std::filesystem::path measured =
+        request.report.empty() ? paths::datasetRoot() / "report.json" : std::filesystem::path(request.report);
+    if (auto text = readTextFile(measured)) {
+        if (auto added = addDatasetMeasurements(*text, report); !added)
+            report.problems.push_back(measured.string() + ": " + added.error().message);
+        else
+            report.report = measured.string();
+    } else if (!request.report.empty()) {
+        report.problems.push_back(text.error().message);
+    }
     return report;
 }
 

@@ -105,7 +105,8 @@ std::vector<Request> unusualRequests() {
     eval.seed = 3;
     RunRequest run{"a b/shapes.csv", "status.jsonl", 12.5, 2, 5, {}, true, "/opt/sdfwb", "/usr/bin/python3"};
     RunRequest one{"m.jsonl", "", 0.0, 0, 1, {12345678901ull, 0, 7}, false, "", ""};
-    return {render, animate, sample, audit, merge, ListRequest{}, bench, params, mesh, eval, run, one};
+    ListRequest list{"my report.json"};
+    return {render, animate, sample, audit, merge, ListRequest{}, list, bench, params, mesh, eval, run, one};
 }
 
 } // namespace
@@ -281,6 +282,50 @@ TEST(JobJson, AuditReportsKeepEveryFindingAndFigure) {
 
 // The library names the request's key ('fps'), as a JSON or Python caller wrote it; the CLI says
 // --fps (tests/app check its messages).
+// The list job adds the dataset report's measured types and render times to the entries of the
+// same name (the workbench's dataset browser shows them), and says why a report could not be used.
+TEST(Jobs, TheListCarriesTheDatasetReportsMeasurements) {
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("sdfwb-list-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(folder);
+    const std::filesystem::path good = folder / "report.json", bad = folder / "bad.json";
+    std::FILE* file = std::fopen(good.c_str(), "w");
+    ASSERT_NE(file, nullptr);
+    std::fputs(R"({"machine": "test machine", "date": "2026-11-26", "sdfs": [
+        {"name": "Torus", "measured_type": "exact", "render_ms": 12.5}, {"name": "Nothing", "measured_type": "nan"}]})",
+               file);
+    std::fclose(file);
+    file = std::fopen(bad.c_str(), "w");
+    std::fputs("{\"sdfs\": 3", file);
+    std::fclose(file);
+
+    auto listed = run(ListRequest{good.string()}, {});
+    ASSERT_TRUE(listed) << listed.error.message;
+    EXPECT_EQ(listed->report, good.string());
+    EXPECT_EQ(listed->measuredOn, "test machine");
+    EXPECT_EQ(listed->measuredDate, "2026-11-26");
+    int measured = 0;
+    for (const ListItem& item : listed->items) {
+        if (item.name == "Torus") {
+            EXPECT_EQ(item.measuredType, "exact");
+            ASSERT_TRUE(item.renderMilliseconds.has_value());
+            EXPECT_DOUBLE_EQ(*item.renderMilliseconds, 12.5);
+        }
+        measured += !item.measuredType.empty();
+    }
+    EXPECT_EQ(measured, 1) << "only the entry the report names is measured";
+    auto back = reportFromJson<ListReport>(toJson(*listed));
+    ASSERT_TRUE(back) << back.error().message;
+    EXPECT_TRUE(*back == *listed);
+
+    auto broken = run(ListRequest{bad.string()}, {});
+    ASSERT_TRUE(broken) << "a bad report does not stop the list";
+    EXPECT_TRUE(broken->report.empty());
+    ASSERT_FALSE(broken->problems.empty());
+    EXPECT_NE(broken->problems.back().find("bad.json: not a JSON object"), std::string::npos) << broken->problems.back();
+    for (const ListItem& item : broken->items) EXPECT_TRUE(item.measuredType.empty());
+    std::filesystem::remove_all(folder);
+}
+
 TEST(Jobs, ValidationNamesTheArgumentBeforeAnyWork) {
     AnimateRequest animate;
     animate.frame.sdf.sdf = "Torus";

@@ -35,15 +35,17 @@ DatasetBrowser::DatasetBrowser(QWidget* parent) : QWidget(parent) {
     connect(create, &QPushButton::clicked, this, &DatasetBrowser::newRequested);
     connect(m_tree, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* item) {
         int index = item ? item->data(0, Qt::UserRole).toInt() : -1;
-        if (index < 0 || index >= m_items.size()) return m_details->clear();
-        const DatasetItem& d = m_items[index];
-        const QString measured = d.measuredType.isEmpty() ? tr("not measured") : tr("measured %1").arg(d.measuredType);
-        m_details->setText(tr("<b>%1</b> (%2; declared %3, %4)<br>%5 - %6<br><small>%7</small>")
-                               .arg(d.name, d.category, d.type, measured, d.author, d.license, d.notes));
+        if (index < 0 || index >= count()) return m_details->clear();
+        const jobs::ListItem& d = m_items[std::size_t(index)];
+        auto q = [](const std::string& text) { return QString::fromStdString(text); };
+        const QString measured = d.measuredType.empty() ? tr("not measured") : tr("measured %1").arg(q(d.measuredType));
+        m_details->setText(
+            tr("<b>%1</b> (%2; declared %3, %4)<br>%5 - %6<br><small>%7</small>")
+                .arg(q(d.name), q(d.category), q(d.declaredType), measured, q(d.author), q(d.license), q(d.notes)));
     });
     connect(m_tree, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem* item) {
         int index = item->data(0, Qt::UserRole).toInt();
-        if (index >= 0 && index < m_items.size()) emit openRequested(m_items[index].path);
+        if (index >= 0 && index < count()) emit openRequested(QString::fromStdString(m_items[std::size_t(index)].path));
     });
 }
 
@@ -52,42 +54,44 @@ void DatasetBrowser::showEvent(QShowEvent* event) {
     emit shown();
 }
 
-void DatasetBrowser::setItems(const QList<DatasetItem>& items) {
+void DatasetBrowser::setItems(const std::vector<jobs::ListItem>& items) {
     m_items = items;
     m_tree->clear();
     m_byPath.clear();
     m_thumbnails.clear();
     QMap<QString, QTreeWidgetItem*> categories;
-    for (int i = 0; i < items.size(); ++i) {
-        const DatasetItem& d = items[i];
-        QTreeWidgetItem*& category = categories[d.category];
+    for (int i = 0; i < int(items.size()); ++i) {
+        const jobs::ListItem& d = items[std::size_t(i)];
+        const QString name = QString::fromStdString(d.name), declared = QString::fromStdString(d.declaredType),
+                      measured = QString::fromStdString(d.measuredType);
+        QTreeWidgetItem*& category = categories[QString::fromStdString(d.category)];
         if (!category) {
-            category = new QTreeWidgetItem(m_tree, {d.category});
+            category = new QTreeWidgetItem(m_tree, {QString::fromStdString(d.category)});
             category->setData(0, Qt::UserRole, -1);
             category->setFirstColumnSpanned(true);
         }
         // The measured type, marked when it differs from the declared one.
-        QString type = d.measuredType.isEmpty()   ? d.type + tr(" (declared)")
-                       : d.measuredType == d.type ? d.measuredType
-                                                  : tr("%1 (declared %2)").arg(d.measuredType, d.type);
+        QString type = measured.isEmpty()     ? declared + tr(" (declared)")
+                       : measured == declared ? measured
+                                              : tr("%1 (declared %2)").arg(measured, declared);
         auto* item = new QTreeWidgetItem(
-            category, {d.name, type, d.renderMilliseconds ? QString::number(*d.renderMilliseconds, 'f', 1) : QString(),
+            category, {name, type, d.renderMilliseconds ? QString::number(*d.renderMilliseconds, 'f', 1) : QString(),
                        d.animated ? tr("yes") : QString()});
         item->setData(0, Qt::UserRole, i);
-        item->setToolTip(0, d.notes);
+        item->setToolTip(0, QString::fromStdString(d.notes));
         item->setTextAlignment(2, Qt::AlignRight | Qt::AlignVCenter);
-        m_byPath.insert(d.path, item);
+        m_byPath.insert(QString::fromStdString(d.path), item);
     }
     m_tree->expandAll();
 }
 
 void DatasetBrowser::setReportNote(const QString& note) { m_note->setText(note); }
 
-int DatasetBrowser::count() const { return m_items.size(); }
+int DatasetBrowser::count() const { return int(m_items.size()); }
 
 QStringList DatasetBrowser::paths() const {
     QStringList out;
-    for (const DatasetItem& d : m_items) out << d.path;
+    for (const jobs::ListItem& d : m_items) out << QString::fromStdString(d.path);
     return out;
 }
 
@@ -102,9 +106,9 @@ bool DatasetBrowser::setThumbnail(const QString& sdfPath, const QString& imagePa
 }
 
 bool DatasetBrowser::activate(const QString& name) {
-    for (const DatasetItem& d : m_items)
-        if (d.name.compare(name, Qt::CaseInsensitive) == 0) {
-            emit openRequested(d.path);
+    for (const jobs::ListItem& d : m_items)
+        if (QString::fromStdString(d.name).compare(name, Qt::CaseInsensitive) == 0) {
+            emit openRequested(QString::fromStdString(d.path));
             return true;
         }
     return false;

@@ -32,6 +32,10 @@ std::string toJson(const ProbeReport& report, int indent = 2);
 // One item's outcome; with indent -1 the status file's line.
 std::string toJson(const RunItemReport& report, int indent = 2);
 
+// The dataset report's measurements (dataset/report.json, as scripts/dataset_report.py writes it)
+// added to the items of the same name, and its machine and date into the report.
+Expected<void> addDatasetMeasurements(const std::string& reportText, ListReport& report);
+
 // Reads a report of type T (one of the reports above) back from toJson's text.
 template <class T> Expected<T> reportFromJson(const std::string& text);
 

@@ -134,6 +134,9 @@ struct MergeRequest {
 };
 
 struct ListRequest {
+    // A dataset report (scripts/dataset_report.py's JSON) for each SDF's measured type and render
+    // time; empty: report.json in the dataset's folder, when there is one.
+    std::string report;
     bool operator==(const ListRequest&) const = default;
 };
 
@@ -322,6 +325,9 @@ struct AuditJobReport {
 struct ListItem {
     std::string name, category, declaredType, path, author, license, notes;
     bool animated = false;
+    // From the dataset report, when it has the SDF: the audit's verdict and a 1280x720 Gooch frame's time.
+    std::string measuredType;
+    std::optional<double> renderMilliseconds;
     bool operator==(const ListItem&) const = default;
 };
 
@@ -329,6 +335,9 @@ struct ListReport {
     std::vector<ListItem> items;
     std::vector<std::string> problems; // files the catalogue could not read
     std::string root;
+    // The dataset report read for the measured values: its path, and the machine and date it names
+    // (all empty when there was none; problems says why a report given could not be read).
+    std::string report, measuredOn, measuredDate;
     bool operator==(const ListReport&) const = default;
 };
 

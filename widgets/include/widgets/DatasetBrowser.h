@@ -4,10 +4,13 @@
 // (author, license, notes) as a tooltip and below the tree. Activating an entry asks to open its
 // file; "New from template" asks for a new SDF. UI thread only.
 
+#include <values/Requests.h>
+
 #include <QHash>
 #include <QWidget>
 
 #include <optional>
+#include <vector>
 
 class QLabel;
 class QTreeWidget;
@@ -15,18 +18,11 @@ class QTreeWidgetItem;
 
 namespace sdfwb::widgets {
 
-struct DatasetItem {
-    QString name, category, type, author, license, notes, path;
-    bool animated = false;
-    QString measuredType;                     // from the dataset report; empty: not measured
-    std::optional<double> renderMilliseconds; // 1280x720 Gooch frame, from the dataset report
-};
-
 class DatasetBrowser : public QWidget {
     Q_OBJECT
 public:
     explicit DatasetBrowser(QWidget* parent = nullptr);
-    void setItems(const QList<DatasetItem>& items);
+    void setItems(const std::vector<jobs::ListItem>& items); // the list job's entries, measured values included
     // The report's machine line, shown under the tree ("render times on ...").
     void setReportNote(const QString& note);
     int count() const;
@@ -51,7 +47,7 @@ private:
     QTreeWidget* m_tree = nullptr;
     QLabel* m_details = nullptr;
     QLabel* m_note = nullptr;
-    QList<DatasetItem> m_items;
+    std::vector<jobs::ListItem> m_items;
     QHash<QString, QTreeWidgetItem*> m_byPath;
     QHash<QString, QString> m_thumbnails; // SDF path -> image shown
 };
