@@ -122,8 +122,8 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
     const auto topologyStart = std::chrono::steady_clock::now();
     const meshing::Topology topology = meshing::checkTopology(mesh);
     for (const auto& [name, seconds] : stats.phaseSeconds) report.phaseSeconds.push_back({name, seconds});
-    report.phaseSeconds.emplace_back("topology",
-                                     std::chrono::duration<double>(std::chrono::steady_clock::now() - topologyStart).count());
+    report.phaseSeconds.push_back(
+        {"topology", std::chrono::duration<double>(std::chrono::steady_clock::now() - topologyStart).count()});
     report.boundaryEdges = topology.boundaryEdges;
     report.nonManifoldEdges = topology.nonManifoldEdges;
     report.degenerateTriangles = topology.degenerateTriangles;
@@ -176,8 +176,8 @@ JobResult<MeshReport> run(const MeshRequest& request, const ProgressSink& progre
     if (auto written = meshing::writeMesh(request.output, meshed->mesh, comments); !written)
         return JobError{Failure::Work, written.error().message, {}};
     MeshReport report = meshed->report;
-    report.phaseSeconds.emplace_back("write",
-                                     std::chrono::duration<double>(std::chrono::steady_clock::now() - writeStart).count());
+    report.phaseSeconds.push_back(
+        {"write", std::chrono::duration<double>(std::chrono::steady_clock::now() - writeStart).count()});
     report.output = request.output;
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;
