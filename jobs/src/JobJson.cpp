@@ -330,6 +330,7 @@ template <class V> void fields(V& v, MeshReport& r) {
     v("vertices_beside_their_cell", r.verticesBesideTheirCell);
     v("split_faces", r.splitFaces);
     v("bounds_cut_points", r.boundsCutPoints);
+    v("collinear_flips", r.collinearFlips);
     v("self_intersections", r.selfIntersections);
     v("mesh_seconds", r.meshSeconds);
     v("phase_seconds", r.phaseSeconds);

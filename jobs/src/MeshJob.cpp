@@ -139,6 +139,7 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
     report.verticesBesideTheirCell = stats.verticesBesideTheirCell;
     report.splitFaces = stats.splitFaces;
     report.boundsCutPoints = stats.boundsCutPoints;
+    report.collinearFlips = stats.collinearFlips;
     if (request.selfIntersections) report.selfIntersections = meshing::countSelfIntersections(mesh);
     report.meshSeconds = stats.seconds;
     if (request.errorSamples > 0) {

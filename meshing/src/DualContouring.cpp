@@ -482,6 +482,7 @@ Expected<std::pair<Mesh, MeshStats>> Extraction::run() {
     phase("project vertices");
     connectQuads();
     weldCoincidentVertices(mesh, float(1e-6 * std::min({grid.step.x, grid.step.y, grid.step.z})));
+    stats.collinearFlips = flipCollinearTriangles(mesh);
     phase("connect");
     progress(4, 4);
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -1166,6 +1167,81 @@ Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf
     for (int a = 0; a < 3; ++a)
         if (!(options.boundsMax[a] > options.boundsMin[a])) return makeError("--bounds: every maximum must exceed its minimum");
     return Extraction(sdf, options, progress).run();
+}
+
+std::uint64_t flipCollinearTriangles(Mesh& mesh) {
+    const std::size_t vertexCount = mesh.vertices.size();
+    // The corner of triangle t strictly between the other two when the three lie on one line, else -1.
+    auto middleCorner = [&](std::size_t t) {
+        const std::uint32_t* v = &mesh.indices[3 * t];
+        if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2] || std::max({v[0], v[1], v[2]}) >= vertexCount) return -1;
+        const glm::dvec3 p[3] = {glm::dvec3(mesh.vertices[v[0]]), glm::dvec3(mesh.vertices[v[1]]),
+                                 glm::dvec3(mesh.vertices[v[2]])};
+        const glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
+        if (n.x != 0.0 || n.y != 0.0 || n.z != 0.0) return -1;
+        for (int k = 0; k < 3; ++k) {
+            const glm::dvec3 a = p[(k + 1) % 3], b = p[(k + 2) % 3], c = p[k];
+            const double length2 = glm::dot(b - a, b - a), s = length2 > 0.0 ? glm::dot(c - a, b - a) / length2 : -1.0;
+            if (s > 0.0 && s < 1.0 && c != a && c != b) return k;
+        }
+        return -1;
+    };
+    auto key = [](std::uint64_t a, std::uint64_t b) { return (a << 32) | b; };
+    std::uint64_t flips = 0;
+    for (int round = 0; round < 4; ++round) {
+        const std::size_t triangles = mesh.triangleCount();
+        const std::size_t chunks = chunkCount(triangles, 65536);
+        std::vector<std::vector<std::pair<std::uint32_t, int>>> found(chunks); // (triangle, middle corner)
+        forEachChunk(triangles, chunks, [&](std::size_t chunk, std::size_t first, std::size_t end) {
+            for (std::size_t t = first; t < end; ++t)
+                if (const int k = middleCorner(t); k >= 0) found[chunk].emplace_back(std::uint32_t(t), k);
+        });
+        std::vector<std::pair<std::uint32_t, int>> flat;
+        for (const auto& part : found) flat.insert(flat.end(), part.begin(), part.end());
+        if (flat.empty()) break;
+        // One pass over the mesh: the triangle across each long edge (which runs it backwards), and
+        // every neighbour of each middle vertex (a flip must not make an edge that exists).
+        std::unordered_map<std::uint64_t, std::uint32_t> across;
+        std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> neighbours;
+        for (const auto& [t, k] : flat) {
+            const std::uint32_t* v = &mesh.indices[3 * std::size_t(t)];
+            across.emplace(key(v[(k + 2) % 3], v[(k + 1) % 3]), std::uint32_t(-1));
+            neighbours.emplace(v[k], std::vector<std::uint32_t>{});
+        }
+        for (std::size_t t = 0; t < triangles; ++t) {
+            const std::uint32_t* v = &mesh.indices[3 * t];
+            for (int e = 0; e < 3; ++e) {
+                if (auto it = across.find(key(v[e], v[(e + 1) % 3])); it != across.end()) it->second = std::uint32_t(t);
+                if (auto it = neighbours.find(v[e]); it != neighbours.end())
+                    it->second.insert(it->second.end(), {v[(e + 1) % 3], v[(e + 2) % 3]});
+            }
+        }
+        std::vector<bool> touched(triangles, false);
+        std::uint64_t made = 0;
+        for (const auto& [t, k] : flat) {
+            std::uint32_t* v = &mesh.indices[3 * std::size_t(t)];
+            const std::uint32_t a = v[(k + 1) % 3], b = v[(k + 2) % 3], c = v[k];
+            const std::uint32_t other = across.at(key(b, a));
+            if (other == std::uint32_t(-1) || other == t || touched[t] || touched[other]) continue;
+            std::uint32_t* w = &mesh.indices[3 * std::size_t(other)];
+            int at = 0; // w = (b, a, d) once rotated
+            while (at < 3 && !(w[at] == b && w[(at + 1) % 3] == a)) ++at;
+            if (at == 3) continue;
+            const std::uint32_t d = w[(at + 2) % 3];
+            const std::vector<std::uint32_t>& around = neighbours.at(c);                        // (c is always in the map)
+            if (d == c || std::find(around.begin(), around.end(), d) != around.end()) continue; // c-d exists
+            // (a, b, c) and (b, a, d) become (c, a, d) and (c, d, b): t' split at c, t gone.
+            v[0] = c, v[1] = a, v[2] = d;
+            w[0] = c, w[1] = d, w[2] = b;
+            touched[t] = touched[other] = true;
+            for (const auto& [from, to] : {std::pair{c, d}, std::pair{d, c}}) // the new edge, for later checks
+                if (auto it = neighbours.find(from); it != neighbours.end()) it->second.push_back(to);
+            ++made;
+        }
+        flips += made;
+        if (made == 0) break;
+    }
+    return flips;
 }
 
 Topology checkTopology(const Mesh& mesh) {

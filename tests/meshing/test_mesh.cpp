@@ -475,6 +475,50 @@ TEST_F(MeshTest, EveryThreadCountGivesTheSameMesh) {
         ::unsetenv("SDFWB_THREADS");
 }
 
+// A zero-area triangle whose middle vertex lies on its long edge (NVIDIA's driver left 24 in the
+// Mandelbox at 64; llvmpipe none) is flipped away with the triangle across that edge: an
+// octahedron with one edge split by a vertex on it, closed by such a triangle, comes out closed,
+// outward, with no zero-area triangle and the same volume.
+TEST(MeshFlips, ACollinearTriangleIsFlippedAwayKeepingTheSurfaceClosed) {
+    meshing::Mesh mesh;
+    mesh.vertices = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (int sx : {1, -1})
+        for (int sy : {1, -1})
+            for (int sz : {1, -1}) {
+                const std::uint32_t x = sx > 0 ? 0 : 1, y = sy > 0 ? 2 : 3, z = sz > 0 ? 4 : 5;
+                if (sx * sy * sz > 0)
+                    mesh.indices.insert(mesh.indices.end(), {x, y, z});
+                else
+                    mesh.indices.insert(mesh.indices.end(), {x, z, y});
+            }
+    const double volume = signedVolume(mesh);
+    // Split the edge +x, +y at its midpoint c: the face across it, (b, a, e), becomes (b, c, e) and
+    // (c, a, e), and the zero-area (b, a, c) closes the gap.
+    const std::uint32_t a = 0, b = 2, c = 6;
+    mesh.vertices.push_back({0.5f, 0.5f, 0.0f});
+    std::size_t across = mesh.triangleCount();
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t)
+        for (int e = 0; e < 3; ++e)
+            if (mesh.indices[3 * t + e] == b && mesh.indices[3 * t + (e + 1) % 3] == a) across = t;
+    ASSERT_LT(across, mesh.triangleCount());
+    std::uint32_t* f = &mesh.indices[3 * across];
+    while (!(f[0] == b && f[1] == a)) std::rotate(f, f + 1, f + 3);
+    const std::uint32_t e = f[2];
+    f[0] = b, f[1] = c, f[2] = e;
+    mesh.indices.insert(mesh.indices.end(), {c, a, e, b, a, c});
+    meshing::Topology before = meshing::checkTopology(mesh);
+    ASSERT_TRUE(before.manifold());
+    ASSERT_EQ(before.degenerateTriangles, 1u);
+
+    EXPECT_EQ(meshing::flipCollinearTriangles(mesh), 1u);
+    const meshing::Topology after = meshing::checkTopology(mesh);
+    EXPECT_TRUE(after.manifold());
+    EXPECT_EQ(after.degenerateTriangles, 0u);
+    EXPECT_TRUE(closedAndOutward(mesh));
+    EXPECT_NEAR(signedVolume(mesh), volume, 1e-9);
+    EXPECT_EQ(meshing::flipCollinearTriangles(mesh), 0u) << "nothing left to flip";
+}
+
 TEST_F(MeshTest, FilesReadBackTheSameTriangles) {
     const meshing::Mesh mesh = extract(source(kSphere), 24);
     const std::filesystem::path folder =

@@ -50,6 +50,7 @@ struct MeshStats {
     std::uint64_t clampedVertices = 0;         // QEF minimisers outside their cell, clamped into it
     std::uint64_t verticesBesideTheirCell = 0; // on a sharp edge that passes beside the cell, at most half a cell out
     std::uint64_t creasesOnFaces = 0;          // flat patches moved onto a crease lying on their upper face
+    std::uint64_t collinearFlips = 0;          // zero-area triangles removed by an edge flip (flipCollinearTriangles)
     std::uint64_t splitFaces = 0;              // ambiguous faces both of whose cells join its two segments: a vertex per segment
     // Grid points inside the shape but outside the bounds (half a cell beyond them): the shape
     // leaves the bounds and the mesh is closed by flat caps there. 0: the shape lies inside.
@@ -80,6 +81,13 @@ struct Topology {
 
 // Counts by shared vertex index (the writers keep indices; readers should merge equal positions).
 Topology checkTopology(const Mesh& mesh);
+
+// Triangles of zero area whose three vertices lie on one line, the middle one strictly between the
+// others (a crease's vertices in a row; seen on a GPU driver, not on llvmpipe): each is removed by
+// flipping its long edge with the triangle across it, which splits that triangle at the middle
+// vertex. Topology and orientation are kept; a flip that would duplicate an edge is not made.
+// Returns the flips made. Triangles with two vertices at one position are left to the welding.
+std::uint64_t flipCollinearTriangles(Mesh& mesh);
 
 // Pairs of triangles that share no vertex and cross (an edge of one passes through the other):
 // where a mesh passes through itself. Triangles that only touch a neighbour at a shared vertex or

@@ -382,6 +382,7 @@ struct MeshReport {
     std::uint64_t blocks = 0, blocksKept = 0, pointsEvaluated = 0, clampedVertices = 0, verticesBesideTheirCell = 0,
                   splitFaces = 0;
     std::uint64_t boundsCutPoints = 0;              // grid points inside the shape beyond the bounds: closed by caps there
+    std::uint64_t collinearFlips = 0;               // zero-area triangles (vertices in a row) flipped away
     std::optional<std::uint64_t> selfIntersections; // crossing triangle pairs, when asked for
     double meshSeconds = 0.0;
     // Where the time went: the mesher's steps in order, then "topology" (the checks above) and, in
