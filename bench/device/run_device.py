@@ -20,6 +20,9 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # bench/
+from machine import cpu_model  # bench/machine.py
+
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 BUNDLE = os.path.join(ROOT, ".device")
 SDFWB = os.path.join(BUNDLE, "sdfwb")
@@ -84,8 +87,7 @@ def machine():
             return subprocess.run(command, capture_output=True, text=True, timeout=30).stdout.strip()
         except (OSError, subprocess.SubprocessError):
             return ""
-    cpu = next((line.split(":", 1)[1].strip() for line in open("/proc/cpuinfo") if line.startswith("model name")),
-               platform.processor())
+    cpu = cpu_model()
     with tempfile.TemporaryDirectory() as folder:
         _, done = run([SDFWB, "--batch", "sample", "--sdf", "sphere", "--pattern", "rand", "--count", "256", "-o",
                        os.path.join(folder, "r.bin"), "--json"])
