@@ -46,8 +46,9 @@ bool ExportController::isExporting() const { return m_process->isRunning(); }
 QString ExportController::saveScreenshot(const QString& path, int width, int height) {
     QElapsedTimer timer;
     timer.start();
-    // The overlay (name, author, license) as the viewport shows it; EXR gets the float frame.
-    const std::string label = m_viewport->overlayText().toStdString();
+    // The viewport's frame settings draw it, the overlay (name, author, license) included as the
+    // viewport shows it; EXR gets the float frame.
+    const std::string label = m_viewport->frameSettings().overlay ? m_viewport->overlayText().toStdString() : std::string();
     Expected<void> written;
     if (renderer::isHighDynamicRange(path.toStdString())) {
         renderer::FloatImage image = m_viewport->renderFloatImage(width, height);

@@ -41,11 +41,16 @@ void ProbeController::setExecutable(const QString& path) { m_process->worker()->
 
 bool ProbeController::isRunning() const { return m_process->isRunning(); }
 
-void ProbeController::probe(int x, int y, int width, int height) {
+jobs::ProbeRequest ProbeController::request(int x, int y, int width, int height) const {
     jobs::ProbeRequest request;
     request.frame = m_document->frame(width, height);
     request.x = x;
     request.y = y;
+    return request;
+}
+
+void ProbeController::probe(int x, int y, int width, int height) {
+    const jobs::ProbeRequest request = this->request(x, y, width, height);
     m_viewport->setProbeMark(QPoint(x, y));
     m_panel->setMessage(tr("Probing pixel (%1, %2)...").arg(x).arg(y));
     if (m_process->isRunning()) {

@@ -30,6 +30,8 @@ public:
     void setExecutable(const QString& path);
     // Probes pixel (x, y), top row 0, of a width x height frame of the viewport's view.
     void probe(int x, int y, int width, int height);
+    // The request such a click sends: the document's frame (the viewport's frame settings whole).
+    jobs::ProbeRequest request(int x, int y, int width, int height) const;
     bool isRunning() const;
 
 signals:

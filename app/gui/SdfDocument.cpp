@@ -40,15 +40,12 @@ SdfDocument::SdfDocument(widgets::ViewportWidget* viewport, QObject* parent) : Q
 
 jobs::FrameRequest SdfDocument::frame(int width, int height) const {
     jobs::FrameRequest frame;
+    static_cast<jobs::FrameSettings&>(frame) = m_viewport->frameSettings(); // the viewport's, whole
     frame.sdf = input();
     frame.width = width;
     frame.height = height;
     frame.time = m_time;
     frame.plane = m_plane;
-    frame.shading = m_viewport->shading();
-    frame.trace = m_viewport->trace();
-    frame.camera = m_viewport->camera();
-    frame.overlay = !m_viewport->overlayText().isEmpty();
     return frame;
 }
 

@@ -120,6 +120,12 @@ TEST(Export, Mp4FrameEqualsAScreenshotOfTheSameUnsavedState) {
     EXPECT_TRUE(request.frame.plane == plane);
     EXPECT_TRUE(request.frame.shading == shading);
     EXPECT_TRUE(request.frame.camera == window.viewport()->camera());
+    // One frame-settings value: the viewport's, whole, in the video's and the probe's requests.
+    const jobs::FrameSettings& view = window.viewport()->frameSettings();
+    EXPECT_TRUE(view.shading == shading && view.trace == trace);
+    EXPECT_TRUE(static_cast<const jobs::FrameSettings&>(request.frame) == view);
+    EXPECT_TRUE(static_cast<const jobs::FrameSettings&>(window.probe()->request(10, 20, 320, 200).frame) == view);
+    EXPECT_TRUE(window.probe()->request(10, 20, 320, 200).frame.plane == plane);
     EXPECT_NE(request.frame.sdf.source.find("vec3(0.55)"), std::string::npos) << "the export must run the editor's text";
 
     window.exports()->setExecutable(SDFWB_BINARY);

@@ -98,7 +98,7 @@ bool ViewportWidget::conePass() const { return m_renderer->conePass(); }
 bool ViewportWidget::marchSettled() const { return m_renderer->marchSettled(); }
 
 void ViewportWidget::setShading(const renderer::ShadingSettings& shading) {
-    m_shading = shading;
+    m_frame.shading = shading;
     if (context() && isValid()) {
         makeCurrent();
         for (const auto& d : m_renderer->setShading(shading)) log::warning("shaders", shaders::formatDiagnostic(d));
@@ -108,7 +108,7 @@ void ViewportWidget::setShading(const renderer::ShadingSettings& shading) {
 }
 
 void ViewportWidget::setTrace(const renderer::TraceSettings& trace) {
-    m_trace = trace;
+    m_frame.trace = trace;
     if (context() && isValid()) {
         makeCurrent();
         for (const auto& d : m_renderer->setTrace(trace)) log::warning("shaders", shaders::formatDiagnostic(d));
@@ -145,13 +145,13 @@ void ViewportWidget::setParameters(const std::vector<shaders::ParameterSetting>&
 std::uint64_t ViewportWidget::programsBuilt() const { return m_renderer->programsBuilt(); }
 
 void ViewportWidget::setCamera(const renderer::Camera& camera) {
-    m_camera = camera;
+    m_frame.camera = camera;
     update();
 }
 
 void ViewportWidget::resetCamera() {
     setCamera(renderer::Camera{});
-    emit cameraChanged(m_camera);
+    emit cameraChanged(m_frame.camera);
 }
 
 void ViewportWidget::setTime(float seconds) {
@@ -170,6 +170,7 @@ void ViewportWidget::reloadShaders() {
 
 void ViewportWidget::setOverlayText(const QString& text) {
     m_overlay = text;
+    m_frame.overlay = !text.isEmpty();
     update();
 }
 
@@ -179,7 +180,7 @@ renderer::Image ViewportWidget::renderImage(int width, int height) {
     renderer::Image image;
     {
         renderer::OffscreenRenderer offscreen;
-        image = offscreen.render(*m_renderer, width, height, m_camera, m_time);
+        image = offscreen.render(*m_renderer, width, height, m_frame.camera, m_time);
     }
     doneCurrent();
     return image;
@@ -191,7 +192,7 @@ renderer::FloatImage ViewportWidget::renderFloatImage(int width, int height) {
     renderer::FloatImage image;
     {
         renderer::OffscreenRenderer offscreen;
-        image = offscreen.renderFloat(*m_renderer, width, height, m_camera, m_time);
+        image = offscreen.renderFloat(*m_renderer, width, height, m_frame.camera, m_time);
     }
     doneCurrent();
     return image;
@@ -225,13 +226,13 @@ bool ViewportWidget::planeValueAt(QPointF position, PlaneValue& out) {
     const int width = int(std::lround(this->width() * ratio)), height = int(std::lround(this->height() * ratio));
     const int x = std::clamp(int(position.x() * ratio), 0, width - 1), y = std::clamp(int(position.y() * ratio), 0, height - 1);
     // The tracer's own ray through the pixel, and the plane the way tracer/plane.glsl meets it.
-    const glm::vec3 direction = glm::vec3(renderer::primaryRayDirection(m_camera, x, y, width, height));
+    const glm::vec3 direction = glm::vec3(renderer::primaryRayDirection(m_frame.camera, x, y, width, height));
     const glm::vec3 normal = glm::length(m_plane.normal) > 0.0f ? glm::normalize(m_plane.normal) : glm::vec3(0, 0, 1);
     const float denominator = glm::dot(direction, normal);
     if (std::abs(denominator) < 1e-8f) return false;
-    const float t = (m_plane.offset - glm::dot(m_camera.position, normal)) / denominator;
-    const glm::vec3 p = m_camera.position + t * direction;
-    const float bound = 1.0f + m_trace.boxMargin;
+    const float t = (m_plane.offset - glm::dot(m_frame.camera.position, normal)) / denominator;
+    const glm::vec3 p = m_frame.camera.position + t * direction;
+    const float bound = 1.0f + m_frame.trace.boxMargin;
     if (t <= 0.0f || std::abs(p.x) > bound || std::abs(p.y) > bound || std::abs(p.z) > bound) return false;
     makeCurrent();
     if (!m_fieldAtPoint || m_fieldGeneration != m_sdfGeneration) {
@@ -266,8 +267,8 @@ void ViewportWidget::initializeGL() {
     m_contextDescription = QString::fromStdString(renderer::describe(info));
     log::info("gl", "viewport context: " + renderer::describe(info));
     if (auto ok = renderer::requireGl43(info); !ok) log::error("gl", ok.error().message);
-    (void)m_renderer->setShading(m_shading);
-    (void)m_renderer->setTrace(m_trace);
+    (void)m_renderer->setShading(m_frame.shading);
+    (void)m_renderer->setTrace(m_frame.trace);
     (void)m_renderer->setPlane(m_plane);
     if (m_pendingSdf) {
         auto diagnostics = m_renderer->setSdf(*m_pendingSdf);
@@ -320,7 +321,7 @@ void ViewportWidget::paintGL() {
     const std::optional<TimingFrame> timingFrame = m_needsTiming ? timeNewSdf(width, height) : std::nullopt;
     if (m_warmProgram) { // settleMarch() changed the program: its code generation on a tiny draw
         m_warmProgram = false;
-        m_renderer->renderScaled(width, height, renderer::FrameScaler::kTimingScale, m_camera, m_time, true);
+        m_renderer->renderScaled(width, height, renderer::FrameScaler::kTimingScale, m_frame.camera, m_time, true);
     }
     renderer::FrameStats stats;
     float scale = 1.0f;
@@ -330,7 +331,7 @@ void ViewportWidget::paintGL() {
     } else {
         scale = m_scaler.scaleFor(width, height, m_interacting);
         // finish: the status bar and the scale choice see what the frame really cost.
-        stats = m_renderer->renderScaled(width, height, scale, m_camera, m_time, true);
+        stats = m_renderer->renderScaled(width, height, scale, m_frame.camera, m_time, true);
         if (m_scaler.frameDone(width, height, scale, stats.cpuMilliseconds, m_interacting)) {
             // A view that became expensive (camera, time, plane): the next frames are capped.
             emit performanceWarning(tr("A full frame took %1 s: frames are drawn at %2 % resolution from now on")
@@ -350,9 +351,9 @@ void ViewportWidget::paintGL() {
             for (const auto& d : m_meshOverlay->setSdf(*m_lastGoodSdf)) log::warning("mesh", shaders::formatDiagnostic(d));
             m_overlayGeneration = m_sdfGeneration;
         }
-        m_meshOverlay->draw(width, height, m_camera, m_time, m_parameters, m_meshScale);
+        m_meshOverlay->draw(width, height, m_frame.camera, m_time, m_parameters, m_meshScale);
     }
-    if (m_pointCloud->hasPoints()) m_pointCloud->draw(width, height, m_camera, m_pointSize * float(devicePixelRatioF()));
+    if (m_pointCloud->hasPoints()) m_pointCloud->draw(width, height, m_frame.camera, m_pointSize * float(devicePixelRatioF()));
     if (m_probeTool && m_probeMark.x() >= 0) {
         QPainter painter(this);
         const QPointF centre = QPointF(m_probeMark) / devicePixelRatioF() + QPointF(0.5, 0.5);
@@ -394,16 +395,16 @@ std::optional<ViewportWidget::TimingFrame> ViewportWidget::timeNewSdf(int width,
     // draw twice and time the second.
     constexpr float kTimingScale = renderer::FrameScaler::kTimingScale;
     const double stallLimit = m_scaler.stallLimit();
-    renderer::FrameStats timing = m_renderer->renderScaled(width, height, kTimingScale, m_camera, m_time, true);
+    renderer::FrameStats timing = m_renderer->renderScaled(width, height, kTimingScale, m_frame.camera, m_time, true);
     float timingScale = kTimingScale; // of the last timing frame drawn
     if (timing.cpuMilliseconds <= stallLimit)
-        timing = m_renderer->renderScaled(width, height, kTimingScale, m_camera, m_time, true);
+        timing = m_renderer->renderScaled(width, height, kTimingScale, m_frame.camera, m_time, true);
     double estimate = renderer::FrameScaler::estimateFullFrame(timing.cpuMilliseconds);
     if (estimate > m_scaler.frameBudget() && timing.cpuMilliseconds <= stallLimit) {
         // Small frames are dominated by fixed costs (stretching, synchronisation): measure at 3x
         // the side too and extrapolate from the cost per pixel.
         constexpr float kLarger = 3.0f * kTimingScale;
-        renderer::FrameStats larger = m_renderer->renderScaled(width, height, kLarger, m_camera, m_time, true);
+        renderer::FrameStats larger = m_renderer->renderScaled(width, height, kLarger, m_frame.camera, m_time, true);
         estimate = renderer::FrameScaler::estimateFullFrame(timing.cpuMilliseconds, std::pair{kLarger, larger.cpuMilliseconds});
         timing = larger;
         timingScale = kLarger;
@@ -465,7 +466,7 @@ void ViewportWidget::interacted() {
     m_refineTimer.start();
     m_settleTimer.stop();
     update();
-    emit cameraChanged(m_camera);
+    emit cameraChanged(m_frame.camera);
 }
 
 // Shadertoy's iMouse: xy the pointer while the left button is down, zw where it was pressed (z
@@ -536,17 +537,17 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
         setPlane(m_plane);
         emit planeDragged(m_plane);
     } else if (event->buttons() & Qt::LeftButton) {
-        renderer::orbit(m_camera, -float(delta.x()) * 0.01f, float(delta.y()) * 0.01f);
+        renderer::orbit(m_frame.camera, -float(delta.x()) * 0.01f, float(delta.y()) * 0.01f);
         interacted();
     } else if (event->buttons() & Qt::RightButton) {
-        renderer::turn(m_camera, -float(delta.x()) * 0.005f, -float(delta.y()) * 0.005f);
+        renderer::turn(m_frame.camera, -float(delta.x()) * 0.005f, -float(delta.y()) * 0.005f);
         interacted();
     }
 }
 
 void ViewportWidget::wheelEvent(QWheelEvent* event) {
     float notches = float(event->angleDelta().y()) / 120.0f;
-    renderer::dolly(m_camera, std::pow(0.9f, notches));
+    renderer::dolly(m_frame.camera, std::pow(0.9f, notches));
     interacted();
 }
 
@@ -584,7 +585,7 @@ void ViewportWidget::flyStep() {
     if (m_keys.contains(Qt::Key_A)) move.x -= 1.0f;
     if (m_keys.contains(Qt::Key_C)) move.y += 1.0f;
     if (m_keys.contains(Qt::Key_Z)) move.y -= 1.0f;
-    renderer::fly(m_camera, move * speed * float(seconds));
+    renderer::fly(m_frame.camera, move * speed * float(seconds));
     interacted();
 }
 

@@ -6,10 +6,9 @@
 // keyword arguments or dicts; all of them run through jobs/Jobs.h. Plain values: no GL, no Qt, no
 // JSON here. The namespace is the job model's, sdfwb::jobs.
 
-#include <renderer/Camera.h>
-#include <renderer/RenderSettings.h>
 #include <sampling/FieldAudit.h>
 #include <shaders/Parameters.h>
+#include <values/FrameSettings.h>
 
 #include <cstdint>
 #include <optional>
@@ -48,17 +47,14 @@ struct FamilySpec {
     bool operator==(const FamilySpec&) const = default;
 };
 
-// Everything one picture depends on: the viewport's state.
-struct FrameRequest {
+// Everything one picture depends on: the viewport's frame settings (shading, trace, camera,
+// overlay; the base) and the document's SDF, time and plane, at a size.
+struct FrameRequest : FrameSettings {
     SdfInput sdf;
     int width = 1280;
     int height = 720;
     float time = 0.0f; // seconds; the start time for animations
-    renderer::ShadingSettings shading;
-    renderer::TraceSettings trace;
-    renderer::Camera camera;
     renderer::CuttingPlane plane;
-    bool overlay = false; // the SDF's name, author and license in the lower-left corner (its metadata block)
     bool operator==(const FrameRequest&) const = default;
 };
 

@@ -15,6 +15,7 @@
 #include <shaders/Diagnostic.h>
 #include <shaders/Parameters.h>
 #include <shaders/SdfSource.h>
+#include <values/FrameSettings.h>
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -54,8 +55,11 @@ public:
     // Before the context exists the SDF is kept and compiled at initializeGL.
     std::vector<shaders::Diagnostic> setSdf(const shaders::PreparedSdf& sdf);
 
+    // The frame settings this viewport draws with (shading, trace, camera, whether the credits
+    // show): the one value screenshots, videos and the probe take.
+    const jobs::FrameSettings& frameSettings() const { return m_frame; }
     void setShading(const renderer::ShadingSettings& shading);
-    const renderer::ShadingSettings& shading() const { return m_shading; }
+    const renderer::ShadingSettings& shading() const { return m_frame.shading; }
     void setTrace(const renderer::TraceSettings& trace);
     // Ctrl + left drag moves an enabled plane along its normal.
     void setPlane(const renderer::CuttingPlane& plane);
@@ -63,8 +67,8 @@ public:
     // The SDF's parameter values: uniforms, no recompile; frames follow at the moving rate.
     void setParameters(const std::vector<shaders::ParameterSetting>& parameters);
     const std::vector<shaders::ParameterSetting>& parameters() const { return m_parameters; }
-    const renderer::TraceSettings& trace() const { return m_trace; }
-    const renderer::Camera& camera() const { return m_camera; }
+    const renderer::TraceSettings& trace() const { return m_frame.trace; }
+    const renderer::Camera& camera() const { return m_frame.camera; }
     void setCamera(const renderer::Camera& camera);
     void resetCamera();
     void setTime(float seconds);
@@ -214,11 +218,9 @@ private:
     std::unique_ptr<shaders::PreparedSdf> m_lastGoodSdf; // passed its timing frame
     bool m_needsTiming = false;
     renderer::FrameScaler m_scaler; // resolution while moving, and the cap for slow SDFs
-    renderer::ShadingSettings m_shading;
-    renderer::TraceSettings m_trace;
+    jobs::FrameSettings m_frame;
     renderer::CuttingPlane m_plane;
     std::vector<shaders::ParameterSetting> m_parameters;
-    renderer::Camera m_camera;
     float m_time = 0.0f;
     QPoint m_lastMouse;
     QSet<int> m_keys;
