@@ -15,16 +15,10 @@ bool equalsIgnoringCase(const std::string& a, const std::string& b) {
            });
 }
 
-} // namespace
-
-Catalogue Catalogue::scan(const fs::path& root) {
-    Catalogue catalogue;
-    std::error_code ec;
-    if (!fs::is_directory(root, ec)) {
-        catalogue.m_problems.push_back(root.string() + ": dataset folder not found");
-        return catalogue;
-    }
+// The dataset's .glsl files in path order, helpers (a folder named "lib") left out.
+std::vector<fs::path> sdfFiles(const fs::path& root) {
     std::vector<fs::path> files;
+    std::error_code ec;
     for (auto it = fs::recursive_directory_iterator(root, ec); !ec && it != fs::recursive_directory_iterator();
          it.increment(ec)) {
         if (it->is_directory() && it->path().filename() == "lib") {
@@ -34,7 +28,19 @@ Catalogue Catalogue::scan(const fs::path& root) {
         if (it->is_regular_file() && it->path().extension() == ".glsl") files.push_back(it->path());
     }
     std::sort(files.begin(), files.end());
-    for (const fs::path& file : files) {
+    return files;
+}
+
+} // namespace
+
+Catalogue Catalogue::scan(const fs::path& root) {
+    Catalogue catalogue;
+    std::error_code ec;
+    if (!fs::is_directory(root, ec)) {
+        catalogue.m_problems.push_back(root.string() + ": dataset folder not found");
+        return catalogue;
+    }
+    for (const fs::path& file : sdfFiles(root)) {
         auto text = readTextFile(file);
         if (!text) {
             catalogue.m_problems.push_back(text.error().message);
@@ -63,6 +69,15 @@ Expected<fs::path> resolveSdfArgument(const std::string& argument, const Catalog
     if (argument.find('/') != std::string::npos || (argument.size() > 5 && argument.ends_with(".glsl")))
         return makeError("'" + argument + "': no such file");
     return makeError("'" + argument + "': no such file or dataset SDF (see sdfwb --batch list)");
+}
+
+Expected<fs::path> resolveSdfArgument(const std::string& argument, const fs::path& root) {
+    std::error_code ec;
+    if (fs::is_regular_file(argument, ec)) return fs::path(argument);
+    if (fs::is_directory(root, ec))
+        for (const fs::path& file : sdfFiles(root))
+            if (equalsIgnoringCase(file.stem().string(), argument)) return file;
+    return resolveSdfArgument(argument, Catalogue::scan(root)); // by metadata name, or the error
 }
 
 } // namespace sdfwb::dataset

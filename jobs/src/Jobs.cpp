@@ -57,13 +57,11 @@ Expected<fs::path> resolve(const SdfInput& input) {
         std::error_code ec;
         if (input.sdf.empty()) return fs::path();
         if (fs::is_regular_file(input.sdf, ec)) return fs::path(input.sdf);
-        dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
-        auto path = dataset::resolveSdfArgument(input.sdf, catalogue);
+        auto path = dataset::resolveSdfArgument(input.sdf, paths::datasetRoot());
         return path ? *path : fs::path(input.sdf);
     }
     if (input.sdf.empty()) return makeError("'sdf': no SDF given (a dataset name or a path to a .glsl file)");
-    dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
-    auto path = dataset::resolveSdfArgument(input.sdf, catalogue);
+    auto path = dataset::resolveSdfArgument(input.sdf, paths::datasetRoot());
     if (!path) return makeError("'sdf': " + path.error().message);
     return *path;
 }

@@ -5,6 +5,8 @@
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <vector>
@@ -47,6 +49,7 @@ EGLDeviceEXT findHardwareDevice(const char* clientExtensions) {
 } // namespace
 
 Expected<std::unique_ptr<HeadlessContext>> HeadlessContext::create() {
+    const auto start = std::chrono::steady_clock::now();
     const char* clientExtensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     if (!hasExtension(clientExtensions, "EGL_EXT_platform_base"))
         return makeError("renderer: EGL lacks EGL_EXT_platform_base; cannot create a headless OpenGL context");
@@ -121,8 +124,12 @@ Expected<std::unique_ptr<HeadlessContext>> HeadlessContext::create() {
     result->m_context = context;
     result->m_platform = platform;
     result->m_info = queryGlInfo();
+    // The time it took (the driver's loading, Mesa's LLVM among it, is most of a short job's start).
+    const double milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    char took[32];
+    std::snprintf(took, sizeof took, " (context in %.1f ms)", milliseconds);
     log::info("gl", "EGL " + std::to_string(eglMajor) + "." + std::to_string(eglMinor) + " " + platform + ": " +
-                        describe(result->m_info));
+                        describe(result->m_info) + took);
     if (auto ok = requireGl43(result->m_info); !ok) return ok.error();
     return result;
 }

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <iterator>
+#include <memory>
+#include <mutex>
 #include <regex>
 #include <set>
 #include <string_view>
@@ -204,17 +206,22 @@ CompatNeeds detectCompatNeeds(const std::string& stripped) {
     // uniform, a function or a struct of that name. A local variable or a parameter of the same
     // name (`vec3 pi = ...` inside one function) does not count: it hides the built-in only in
     // its own scope, and other functions still use the built-in.
-    // Compiled once: building the regexes per call cost more than the searches.
-    static const std::vector<std::regex> declared = [&candidates] {
-        std::vector<std::regex> patterns;
-        for (const std::string& name : candidates)
-            patterns.emplace_back(
+    // Each compiled once, the first time a text uses its name: building the regexes per call cost
+    // more than the searches, and building all of them at once cost every process ~10 ms at start.
+    static std::mutex declaredMutex;
+    static std::vector<std::unique_ptr<const std::regex>> declaredPatterns(candidates.size());
+    auto declared = [&candidates](std::size_t i) -> const std::regex& {
+        std::lock_guard lock(declaredMutex);
+        if (!declaredPatterns[i]) {
+            const std::string& name = candidates[i];
+            declaredPatterns[i] = std::make_unique<const std::regex>(
                 "(#\\s*define\\s+" + name +
                     "\\b)|(\\b(const\\s+)?(float|int|uint|bool|[iu]?vec[234]|mat[234]|sampler2D|struct|uniform\\s+\\w+)\\s+" +
                     name + "\\s*[=;(\\[{])",
                 kLinearRegex);
-        return patterns;
-    }();
+        }
+        return *declaredPatterns[i];
+    };
     // The text's words (runs of [A-Za-z0-9_], what `\bNAME\b` matches), found in one pass:
     // a regex search per symbol took ~35 ms on a 12 KB SDF with its includes, on every edit.
     std::set<std::string_view> words;
@@ -248,7 +255,7 @@ CompatNeeds detectCompatNeeds(const std::string& stripped) {
     for (std::size_t i = 0; i < candidates.size(); ++i) {
         if (!words.count(candidates[i])) continue;
         bool declaredHere = false;
-        for (auto it = std::sregex_iterator(stripped.begin(), stripped.end(), declared[i]); it != std::sregex_iterator(); ++it) {
+        for (auto it = std::sregex_iterator(stripped.begin(), stripped.end(), declared(i)); it != std::sregex_iterator(); ++it) {
             // A macro is defined wherever it stands; anything else counts at file scope only.
             if ((*it)[1].matched || depthAt(std::size_t(it->position(0))) == 0) {
                 declaredHere = true;

@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <string>
+
 using namespace sdfwb::dataset;
 
 namespace {
@@ -80,6 +84,30 @@ TEST(Catalogue, SdfArgumentErrorsSayWhatWasMissing) {
     auto byName = resolveSdfArgument("sphere", catalogue);
     ASSERT_TRUE(byName.hasValue());
     EXPECT_EQ(byName->filename(), "Sphere.glsl");
+}
+
+TEST(Catalogue, LookupUnderARootAgreesWithTheScanReadingOnlyWhatItMust) {
+    const std::filesystem::path root = std::filesystem::path(SDFWB_SOURCE_DIR) / "dataset";
+    const Catalogue catalogue = Catalogue::scan(root);
+    for (const Entry& entry : catalogue.entries()) {
+        auto byRoot = resolveSdfArgument(entry.metadata.name, root);
+        ASSERT_TRUE(byRoot.hasValue()) << entry.metadata.name;
+        EXPECT_EQ(*byRoot, *resolveSdfArgument(entry.metadata.name, catalogue)) << entry.metadata.name;
+    }
+    // A name that is no file's stem falls back to the metadata; a helper under lib/ is no SDF.
+    const std::filesystem::path temp = std::filesystem::temp_directory_path() /
+                                       ("sdfwb-catalogue-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+    std::filesystem::remove_all(temp);
+    std::filesystem::create_directories(temp / "Things" / "lib");
+    const std::string head = "/* sdfwb\nname: Wobbly Cube\ncategory: C\ntype: exact\nanimated: no\nauthor: a\nlicense: l\n*/\n";
+    std::ofstream(temp / "Things" / "cube_v2.glsl") << head << "float sdf(vec3 p) { return length(p) - 1.0; }\n";
+    std::ofstream(temp / "Things" / "lib" / "helper.glsl") << "float helper(vec3 p) { return p.x; }\n";
+    EXPECT_EQ(resolveSdfArgument("CUBE_V2", temp)->filename(), "cube_v2.glsl");
+    EXPECT_EQ(resolveSdfArgument("wobbly cube", temp)->filename(), "cube_v2.glsl");
+    auto helper = resolveSdfArgument("helper", temp);
+    ASSERT_FALSE(helper.hasValue());
+    EXPECT_EQ(helper.error().message, resolveSdfArgument("helper", Catalogue::scan(temp)).error().message);
+    std::filesystem::remove_all(temp);
 }
 
 TEST(Metadata, EntryNamesTheSdfFunction) {

@@ -36,6 +36,10 @@ private:
 // An <SDF> argument: an existing file path wins, then a dataset name. The error names the
 // argument and suggests `sdfwb --batch list`.
 Expected<std::filesystem::path> resolveSdfArgument(const std::string& argument, const Catalogue& catalogue);
+// The same against the dataset under `root`, reading only what it must: a file whose stem is the
+// name (any case) is found from the folder listing alone; only a name that is no file's stem scans
+// the metadata (a job that names "Sphere" reads one file, not the 78).
+Expected<std::filesystem::path> resolveSdfArgument(const std::string& argument, const std::filesystem::path& root);
 
 // The SDF the workbench opens with no file given.
 inline constexpr const char* kDefaultSdfName = "Torus";
