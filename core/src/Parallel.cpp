@@ -10,7 +10,9 @@ unsigned workerThreads() {
         const long n = std::strtol(text, &end, 10);
         if (end != text && *end == '\0' && n >= 1) return unsigned(std::min(n, 1024L));
     }
-    return std::max(1u, std::thread::hardware_concurrency());
+    // Asked once: the library reads the CPU list from /sys on every call.
+    static const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+    return hardware;
 }
 
 } // namespace sdfwb

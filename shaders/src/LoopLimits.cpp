@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cctype>
 #include <cmath>
+#include <deque>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -138,7 +139,12 @@ private:
     std::string_view m_driver;
 };
 
-// Whether any file of the SDF holds a number of at least 32768 (ignoring signs and fractions).
+} // namespace
+
+namespace {
+std::vector<Diagnostic> parseForLongLoops(const ComposedShader& composed, std::uint64_t limit, std::string_view driver);
+} // namespace
+
 bool hasLargeNumber(const PreparedSdf& sdf) {
     for (const SourceFile& file : sdf.source.map.files) {
         const std::string& text = file.text;
@@ -156,23 +162,53 @@ bool hasLargeNumber(const PreparedSdf& sdf) {
             if (at < text.size() && text[at] == '.')
                 while (++at < text.size() && text[at] >= '0' && text[at] <= '9') {}
             if (at + 1 < text.size() && (text[at] == 'e' || text[at] == 'E')) {
-                std::size_t digits = at + 1 + (text[at + 1] == '+');
+                std::size_t digits = at + 1 + (text[at + 1] == '+' || text[at + 1] == '-');
                 int exponent = 0;
-                while (digits < text.size() && text[digits] >= '0' && text[digits] <= '9' && exponent < 100)
-                    exponent = exponent * 10 + (text[digits++] - '0');
-                if (exponent >= 5) return true;
+                while (digits < text.size() && text[digits] >= '0' && text[digits] <= '9') {
+                    if (exponent < 100) exponent = exponent * 10 + (text[digits] - '0');
+                    ++digits;
+                }
+                if (exponent >= 5 && text[at + 1] != '-') return true;
+                at = digits;
             }
-            i = end;
+            // Past the whole literal: the digits of a fraction (0.7071067811) or of an exponent are
+            // not a number of their own.
+            i = std::max(end, at);
         }
     }
     return false;
 }
 
-} // namespace
-
 std::vector<Diagnostic> findLongLoops(const PreparedSdf& sdf, const ComposedShader& composed, std::uint64_t limit,
                                       std::string_view driver) {
     if (limit == 0 || !hasLargeNumber(sdf)) return {};
+    // The same shader again (each mesh call, each sample run in a process builds its evaluators):
+    // the warnings found last time, without a second glslang parse.
+    struct Known {
+        std::string text;
+        std::uint64_t limit;
+        std::string driver;
+        std::vector<Diagnostic> found;
+    };
+    static std::mutex knownMutex;
+    static std::deque<Known> known;  // the newest last, at most 16
+    std::string key = composed.text; // the text and the names its diagnostics use
+    for (const SourceFile& file : composed.map.files) key += '\0' + file.name;
+    {
+        std::lock_guard lock(knownMutex);
+        for (const Known& k : known)
+            if (k.limit == limit && k.driver == driver && k.text == key) return k.found;
+    }
+    std::vector<Diagnostic> found = parseForLongLoops(composed, limit, driver);
+    std::lock_guard lock(knownMutex);
+    known.push_back({std::move(key), limit, std::string(driver), found});
+    if (known.size() > 16) known.pop_front();
+    return found;
+}
+
+namespace {
+
+std::vector<Diagnostic> parseForLongLoops(const ComposedShader& composed, std::uint64_t limit, std::string_view driver) {
     static std::once_flag once;
     std::call_once(once, [] { glslang::InitializeProcess(); });
     glslang::TShader shader(toLanguage(composed.stage));
@@ -185,6 +221,8 @@ std::vector<Diagnostic> findLongLoops(const PreparedSdf& sdf, const ComposedShad
     intermediate->getTreeRoot()->traverse(&finder);
     return std::move(finder.found);
 }
+
+} // namespace
 
 std::uint64_t loopLimitOf(std::string_view rendererString) {
     return rendererString.find("llvmpipe") != std::string_view::npos ? kLlvmpipeLoopLimit : 0;

@@ -99,6 +99,25 @@ TEST(LoopLimits, ALoopInAnIncludedFileIsReportedThere) {
     fs::remove_all(folder);
 }
 
+TEST(LoopLimits, OnlyALargeNumberMakesTheShaderWorthParsing) {
+    auto large = [](const std::string& number) {
+        return hasLargeNumber(
+            prepareSdf("float sdf(vec3 p) { return length(p) - " + number + "; }\n", "<test>", {}, IncludeOptions{}));
+    };
+    // A rotation matrix's long fractions and small exponents are not loop bounds (they made every
+    // tilted shape pay a glslang parse on each build).
+    EXPECT_FALSE(large("0.7071067811865476"));
+    EXPECT_FALSE(large("9.745318556e-01"));
+    EXPECT_FALSE(large("1e-7"));
+    EXPECT_FALSE(large("1.5e4"));
+    EXPECT_FALSE(large("32767.0"));
+    EXPECT_TRUE(large("32768.0"));
+    EXPECT_TRUE(large("100000"));
+    EXPECT_TRUE(large("1e5"));
+    EXPECT_TRUE(large("2.5E+6"));
+    EXPECT_TRUE(large("0.25 * 1000000.0"));
+}
+
 TEST(LoopLimits, NothingWithoutALimitOrALargeNumber) {
     EXPECT_TRUE(longLoops(prepareSdf(withLoop("for (int i = 0; i < 200000; ++i)"), "<test>", {}, IncludeOptions{}), 0).empty())
         << "a driver without a limit";

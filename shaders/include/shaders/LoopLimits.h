@@ -27,6 +27,11 @@ std::vector<Diagnostic> findLongLoops(const PreparedSdf& sdf, const ComposedShad
 // The loop limit of the GL renderer named `rendererString` (GL_RENDERER), 0 when none is known.
 std::uint64_t loopLimitOf(std::string_view rendererString);
 
+// Whether any file of the SDF holds a number of at least 32768 (an integer of 5 digits or more, or
+// an exponent of 5 or more; signs and the digits of a fraction do not count): findLongLoops parses
+// the shader only then, since a loop cannot reach the limit without such a number.
+bool hasLargeNumber(const PreparedSdf& sdf);
+
 // The limit of the renderer this process draws with: set by the renderer module when it meets
 // its GL context, read by the editor's checks (0 until then, or when the driver has none).
 void setDriverLoopLimit(std::uint64_t limit);
