@@ -14,6 +14,10 @@ Commands: `sdfwb --version`; `sdfwb --batch sample` of 1,000 `rand` points of th
 needs the media module either way). Every way runs --repeats times, interleaved, after one untimed warm-up round
 (page cache and Mesa's shader cache warm); times are median [min, max] wall seconds of the whole process. The
 shared-object count is the number of link maps the loader makes (LD_DEBUG=files), dlopen'ed ones included.
+
+The goals (#34 point 6): `--version` and the 1,000-sample run each in at most 50 ms of process overhead. For the
+sample run that is its whole time less the job's own (the report's `setup_seconds` + `seconds`), with the EGL
+context's creation (sdfwb's `(context in N ms)` log line) stated apart.
 """
 import argparse
 import datetime
@@ -54,8 +58,10 @@ def context_seconds(stderr):
 
 
 def job_seconds(stdout):
-    """The job's own time, from the report `--json` prints (the sampler: compile, sample, write)."""
-    return float(json.loads(stdout)["seconds"])
+    """The job's own time, from the report `--json` prints: its setup (the request checked, the SDF opened, its
+    sampler compiled) and its sampling and writing."""
+    report = json.loads(stdout)
+    return float(report["setup_seconds"]) + float(report["seconds"])
 
 
 def shared_objects(command, env, cwd):
@@ -136,8 +142,8 @@ def main():
             context = statistics.median(contexts[i])
             without = over - context
             ratios.append(f"Goal: the 1,000-sample run in at most {goal * 1000:.0f} ms of process overhead. Its whole time "
-                          f"less the job's own seconds (from its `--json` report: compiling, sampling, writing), which "
-                          f"leaves the process start, loading, the EGL context, opening the SDF and exit: median "
+                          f"less the job's own seconds (from its `--json` report: `setup_seconds`, the SDF opened and its sampler compiled, plus `seconds`, sampling and writing), which "
+                          f"leaves the process start, loading, parsing the options, the EGL context and exit: median "
                           f"{fmt(overheads[i])} ms, {'met' if over <= goal else 'NOT met'} (before: "
                           f"{statistics.median(overheads[i + 1]) * 1000:.1f} ms). Of that, creating the EGL context "
                           f"(Mesa's driver with its LLVM loaded and linked: what any OpenGL program pays on this machine, "

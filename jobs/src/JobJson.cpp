@@ -419,6 +419,7 @@ template <class V> void fields(V& v, SampleReport& r) {
     v("time", r.time);
     v("bad_rows", r.badRows);
     v("seconds", r.seconds);
+    v("setup_seconds", r.setupSeconds);
     v("samples_per_second", r.samplesPerSecond);
     v("gl_renderer", r.glRenderer);
     v("parameters", r.parameters);

@@ -38,6 +38,7 @@ std::string indexPath(const std::string& output) {
 } // namespace
 
 JobResult<SampleReport> run(const SampleRequest& request, const ProgressSink& progress) {
+    const auto start = std::chrono::steady_clock::now();
     if (auto error = validate(request)) return *error;
     if (request.output.empty()) return JobError{Failure::Usage, "'output': no output file given", {}};
     auto sampler = sampling::findSampler(request.pattern, sampling::samplerFolders());
@@ -70,6 +71,7 @@ JobResult<SampleReport> run(const SampleRequest& request, const ProgressSink& pr
         return JobError{Failure::Work,
                         "sample: " + sdf->label + " with pattern '" + request.pattern + "' does not compile; nothing written",
                         diagnostics};
+    report.setupSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     sampling::SamplingJob job = samplingJob(request);
     sampling::SampleMetadata metadata;
     metadata.sdf = request.sdf.sdf;

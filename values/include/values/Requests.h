@@ -271,7 +271,8 @@ struct SampleReport {
     std::uint64_t seed = 0;
     float time = 0.0f;
     std::uint64_t badRows = 0;
-    double seconds = 0.0;
+    double seconds = 0.0;      // sampling and writing (every instance's)
+    double setupSeconds = 0.0; // before that: the request checked, the SDF opened, its sampler compiled
     double samplesPerSecond = 0.0;
     std::string glRenderer;
     std::vector<shaders::ParameterValue> parameters; // every declared parameter's value (a single run)
