@@ -18,6 +18,18 @@ namespace {
 
 bool isWordCharacter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; }
 
+// The regex for `pattern`, compiled the first time it is asked for and kept for the process (the
+// patterns are made from names: preparing an SDF asks for some on every job and mesh call, and
+// compiling them each time cost more than the searches). The cache grows by one per new name.
+const std::regex& compiledOnce(const std::string& pattern) {
+    static std::mutex mutex;
+    static std::map<std::string, std::unique_ptr<const std::regex>> compiled;
+    std::lock_guard lock(mutex);
+    std::unique_ptr<const std::regex>& slot = compiled[pattern];
+    if (!slot) slot = std::make_unique<const std::regex>(pattern, kLinearRegex);
+    return *slot;
+}
+
 // What `\s` matches.
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r'; }
 
@@ -89,24 +101,11 @@ SdfSignature detectSignature(const std::string& stripped, const std::string& ent
     SdfSignature signature;
     signature.entry = entry;
     if (!isIdentifier(entry)) return signature;
-    // A definition (with a body), not a prototype. vec3 synonyms of the G3D dialect count. Each
-    // entry name's pattern is compiled once per process (every job and mesh call prepares its SDF).
-    static std::mutex definitionsMutex;
-    static std::map<std::string, std::shared_ptr<const std::regex>> definitions;
-    std::shared_ptr<const std::regex> compiled;
-    {
-        std::lock_guard lock(definitionsMutex);
-        std::shared_ptr<const std::regex>& slot = definitions[entry];
-        if (!slot)
-            slot = std::make_shared<const std::regex>(
-                R"(\b(float|vec2|vec3|vec4)\s+)" + entry +
-                    R"(\s*\(\s*((?:in\s+|const\s+|highp\s+|mediump\s+)*)(vec3|Point3|Vector3|float3)\s+\w+\s*)"
-                    R"((,\s*((?:in\s+|const\s+|highp\s+)*)float\s+\w+\s*)?\)\s*\{)",
-                kLinearRegex);
-        compiled = slot;
-        if (definitions.size() > 256) definitions.clear(); // names typed in an editor come and go
-    }
-    const std::regex& definition = *compiled;
+    // A definition (with a body), not a prototype. vec3 synonyms of the G3D dialect count.
+    const std::regex& definition =
+        compiledOnce(R"(\b(float|vec2|vec3|vec4)\s+)" + entry +
+                     R"(\s*\(\s*((?:in\s+|const\s+|highp\s+|mediump\s+)*)(vec3|Point3|Vector3|float3)\s+\w+\s*)"
+                     R"((,\s*((?:in\s+|const\s+|highp\s+)*)float\s+\w+\s*)?\)\s*\{)");
     // Tried only at the word before each occurrence of the name: searching from every position of
     // a long text was the slow part of preparing one (1.8 s for 10 MB).
     std::smatch match;
@@ -220,21 +219,13 @@ CompatNeeds detectCompatNeeds(const std::string& stripped) {
     // uniform, a function or a struct of that name. A local variable or a parameter of the same
     // name (`vec3 pi = ...` inside one function) does not count: it hides the built-in only in
     // its own scope, and other functions still use the built-in.
-    // Each compiled once, the first time a text uses its name: building the regexes per call cost
-    // more than the searches, and building all of them at once cost every process ~10 ms at start.
-    static std::mutex declaredMutex;
-    static std::vector<std::unique_ptr<const std::regex>> declaredPatterns(candidates.size());
+    // Each compiled the first time a text uses its name (all ~60 at once cost every process ~10 ms).
     auto declared = [&candidates](std::size_t i) -> const std::regex& {
-        std::lock_guard lock(declaredMutex);
-        if (!declaredPatterns[i]) {
-            const std::string& name = candidates[i];
-            declaredPatterns[i] = std::make_unique<const std::regex>(
-                "(#\\s*define\\s+" + name +
-                    "\\b)|(\\b(const\\s+)?(float|int|uint|bool|[iu]?vec[234]|mat[234]|sampler2D|struct|uniform\\s+\\w+)\\s+" +
-                    name + "\\s*[=;(\\[{])",
-                kLinearRegex);
-        }
-        return *declaredPatterns[i];
+        const std::string& name = candidates[i];
+        return compiledOnce(
+            "(#\\s*define\\s+" + name +
+            "\\b)|(\\b(const\\s+)?(float|int|uint|bool|[iu]?vec[234]|mat[234]|sampler2D|struct|uniform\\s+\\w+)\\s+" + name +
+            "\\s*[=;(\\[{])");
     };
     // The text's words (runs of [A-Za-z0-9_], what `\bNAME\b` matches), found in one pass:
     // a regex search per symbol took ~35 ms on a 12 KB SDF with its includes, on every edit.
