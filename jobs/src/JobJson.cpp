@@ -150,6 +150,7 @@ template <class V> void fields(V& v, MeshRequest& r) {
     fields(v, r.sdf);
     v("output", r.output);
     v("resolution", r.resolution);
+    v("refine", r.refine);
     v("bounds_min", r.boundsMin);
     v("bounds_max", r.boundsMax);
     v("time", r.time);
@@ -310,6 +311,7 @@ template <class V> void fields(V& v, MeshReport& r) {
     v("sdf", r.sdf);
     v("entry", r.entry);
     v("resolution", r.resolution);
+    v("refine", r.refine);
     v("vertices", r.vertices);
     v("triangles", r.triangles);
     v("boundary_edges", r.boundaryEdges);
@@ -331,6 +333,7 @@ template <class V> void fields(V& v, MeshReport& r) {
     v("split_faces", r.splitFaces);
     v("bounds_cut_points", r.boundsCutPoints);
     v("collinear_flips", r.collinearFlips);
+    v("midpoints_kept", r.midpointsKept);
     v("self_intersections", r.selfIntersections);
     v("mesh_seconds", r.meshSeconds);
     v("phase_seconds", r.phaseSeconds);

@@ -29,6 +29,10 @@ std::optional<JobError> checkBoundsAndTime(const glm::vec3& low, const glm::vec3
 std::optional<JobError> validateSettings(const MeshRequest& request) {
     if (request.resolution < 2 || request.resolution > 2048)
         return JobError{Failure::Usage, "'resolution': must be 2..2048, got " + std::to_string(request.resolution), {}};
+    if (request.refine < 0 || request.refine > 4)
+        return JobError{Failure::Usage,
+                        "'refine': must be 0..4 (each level four times the triangles), got " + std::to_string(request.refine),
+                        {}};
     if (auto error = checkBoundsAndTime(request.boundsMin, request.boundsMax, request.time)) return error;
     if (request.lipschitz && (!std::isfinite(*request.lipschitz) || *request.lipschitz < 0.0f))
         return JobError{Failure::Usage, "'lipschitz': expected a finite number >= 0 (0 skips nothing)", {}};
@@ -62,10 +66,12 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
     report.entry = sdf->prepared.signature.entry;
     report.meshSource = sdf->meshSource();
     report.resolution = request.resolution;
+    report.refine = request.refine;
     report.parameters = shaders::valuesOf(sdf->parameters);
     report.warnings = sdf->warnings;
     meshing::MeshOptions options;
     options.resolution = request.resolution;
+    options.refine = request.refine;
     options.boundsMin = request.boundsMin;
     options.boundsMax = request.boundsMax;
     options.time = request.time;
@@ -120,7 +126,8 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
     report.vertices = mesh.vertices.size();
     report.triangles = mesh.triangleCount();
     const auto topologyStart = std::chrono::steady_clock::now();
-    const meshing::Topology topology = meshing::checkTopology(mesh);
+    // A refined mesh's topology came with it (the coarse mesh checked, the subdivision's counts).
+    const meshing::Topology topology = stats.topology ? *stats.topology : meshing::checkTopology(mesh);
     for (const auto& [name, seconds] : stats.phaseSeconds) report.phaseSeconds.push_back({name, seconds});
     report.phaseSeconds.push_back(
         {"topology", std::chrono::duration<double>(std::chrono::steady_clock::now() - topologyStart).count()});
@@ -140,6 +147,7 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
     report.splitFaces = stats.splitFaces;
     report.boundsCutPoints = stats.boundsCutPoints;
     report.collinearFlips = stats.collinearFlips;
+    report.midpointsKept = stats.midpointsKept;
     if (request.selfIntersections) report.selfIntersections = meshing::countSelfIntersections(mesh);
     report.meshSeconds = stats.seconds;
     if (request.errorSamples > 0) {

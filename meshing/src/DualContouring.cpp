@@ -8,6 +8,7 @@
 #include <meshing/Mesh.h>
 
 #include "PointEvaluator.h"
+#include "Refine.h"
 
 #include <core/Parallel.h>
 
@@ -480,9 +481,28 @@ Expected<std::pair<Mesh, MeshStats>> Extraction::run() {
     if (auto ok = projectVertices(); !ok) return ok.error();
     phase("project vertices");
     connectQuads();
-    weldCoincidentVertices(mesh, float(1e-6 * std::min({grid.step.x, grid.step.y, grid.step.z})));
+    const auto weldTolerance = float(1e-6 * std::min({grid.step.x, grid.step.y, grid.step.z}));
+    weldCoincidentVertices(mesh, weldTolerance);
     stats.collinearFlips = flipCollinearTriangles(mesh);
     phase("connect");
+    if (options.refine > 0) {
+        const Topology coarse = checkTopology(mesh);
+        const std::uint64_t coarseTriangles = mesh.triangleCount();
+        auto refined = detail::refineOntoSurface(mesh, field, options.refine, normalStep);
+        if (!refined) return refined.error();
+        stats.pointsEvaluated += refined->pointsEvaluated;
+        stats.midpointsKept = refined->midpointsKept;
+        stats.topology = subdividedTopology(coarse, coarseTriangles, options.refine);
+        // Two vertices at one position that the weld had to keep apart (a pinch in a fractal's
+        // tunnels) give their edges' midpoints one position too, and the triangles between those
+        // zero area: welded and flipped as the coarse mesh was, and then checked afresh.
+        if (countDegenerateTriangles(mesh) > 0) {
+            weldCoincidentVertices(mesh, weldTolerance);
+            stats.collinearFlips += flipCollinearTriangles(mesh);
+            stats.topology = checkTopology(mesh);
+        }
+        phase("refine");
+    }
     progress(4, 4);
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return std::pair<Mesh, MeshStats>{std::move(mesh), stats};
@@ -1006,33 +1026,87 @@ void Extraction::splitJoinedFaces() {
     }
 }
 
+// The point of the box nearest to p on the plane f + g.(x - p) = 0 (the field's linear
+// approximation at p): the Newton step, and where it leaves the box, the nearest point of the plane
+// on the faces it crossed, found by holding those coordinates at the face and stepping along the
+// rest of the gradient. A plain clamp would leave a vertex whose surface point lies just outside its
+// cell (the top of a dome that barely enters it) at the face, off the surface by up to the dome's
+// height; this puts it where the surface crosses that face (alongFace: it did). Falls back to the
+// clamp where the step leaves by two or more faces at once, where the point on the face would
+// leave the cell by another one, or where the rest of the gradient vanishes (the plane parallel to
+// the face).
+glm::vec3 stepOntoPlaneInBox(const glm::vec3& p, float f, const glm::vec3& g, const glm::vec3& lo, const glm::vec3& hi,
+                             bool& alongFace) {
+    alongFace = false;
+    const float g2 = glm::dot(g, g);
+    const glm::vec3 newton = p - g * (f / g2);
+    const glm::bvec3 held = glm::lessThan(newton, lo) || glm::greaterThan(newton, hi);
+    const int heldCount = int(held.x) + int(held.y) + int(held.z);
+    if (heldCount == 0) return newton;
+    // Held axes sit on the face they crossed; the free ones take the least step that makes the
+    // linear field zero.
+    glm::vec3 d(0.0f), free(0.0f);
+    float rest = -f;
+    for (int a = 0; a < 3; ++a) {
+        if (held[a]) {
+            d[a] = std::clamp(newton[a], lo[a], hi[a]) - p[a];
+            rest -= g[a] * d[a];
+        } else {
+            free[a] = g[a];
+        }
+    }
+    const float free2 = glm::dot(free, free);
+    if (heldCount == 1 && free2 > 1e-6f * g2) {
+        const glm::vec3 onFace = p + d + free * (rest / free2);
+        bool inside = true;
+        for (int a = 0; a < 3; ++a) inside = inside && (held[a] || (onFace[a] > lo[a] && onFace[a] < hi[a]));
+        alongFace = inside;
+        if (inside) return onFace;
+    }
+    return glm::clamp(newton, lo, hi);
+}
+
 // On curved surfaces the planes' minimiser lies off the surface by about h^2 times the
 // curvature: two Newton steps along the gradient put each vertex on it (a vertex already on a
 // sharp edge or corner has f = 0 and stays). Steps are kept within the vertex's cell (or, for a vertex
 // placed beside its cell on a sharp edge, within the same margin).
 Expected<void> Extraction::projectVertices() {
-    std::vector<float> positions(3 * mesh.vertices.size()), fieldValues, gradients;
-    for (int iteration = 0; iteration < 2; ++iteration) {
-        for (std::size_t vertex = 0; vertex < mesh.vertices.size(); ++vertex)
-            for (int a = 0; a < 3; ++a) positions[3 * vertex + std::size_t(a)] = mesh.vertices[vertex][a];
+    // Every vertex takes two steps; the few whose second step ran into a face of their cell (the
+    // surface point lies just beyond it) take two more along that face, evaluated alone.
+    std::vector<std::uint32_t> moving(mesh.vertices.size());
+    for (std::size_t vertex = 0; vertex < moving.size(); ++vertex) moving[vertex] = std::uint32_t(vertex);
+    std::vector<float> positions, fieldValues, gradients;
+    std::vector<std::uint8_t> onFace(mesh.vertices.size(), 0);
+    for (int iteration = 0; iteration < 4 && !moving.empty(); ++iteration) {
+        positions.resize(3 * moving.size());
+        for (std::size_t i = 0; i < moving.size(); ++i)
+            for (int a = 0; a < 3; ++a) positions[3 * i + std::size_t(a)] = mesh.vertices[moving[i]][a];
         if (auto ok = field.evaluate(positions, fieldValues, &gradients, normalStep); !ok) return ok.error();
         stats.pointsEvaluated += fieldValues.size();
-        forEachChunk(
-            mesh.vertices.size(), chunkCount(mesh.vertices.size(), 8192), [&](std::size_t, std::size_t first, std::size_t end) {
-                for (std::size_t vertex = first; vertex < end; ++vertex) {
-                    const float f = fieldValues[vertex];
-                    const glm::vec3 g(gradients[3 * vertex], gradients[3 * vertex + 1], gradients[3 * vertex + 2]);
-                    const float g2 = glm::dot(g, g);
-                    if (!std::isfinite(f) || !(g2 > 1e-12f) || !std::isfinite(g2)) continue;
-                    const auto& c = vertexCell[vertex];
-                    const glm::vec3 cellLo = grid.point(c[0], c[1], c[2]), cellHi = grid.point(c[0] + 1, c[1] + 1, c[2] + 1);
-                    // A vertex placed beside its cell (on a sharp edge) keeps the margin it was given.
-                    const bool beside = glm::any(glm::lessThan(mesh.vertices[vertex], cellLo)) ||
-                                        glm::any(glm::greaterThan(mesh.vertices[vertex], cellHi));
-                    const glm::vec3 margin{beside ? float(vertexMargin) : 0.0f};
-                    mesh.vertices[vertex] = glm::clamp(mesh.vertices[vertex] - g * (f / g2), cellLo - margin, cellHi + margin);
-                }
-            });
+        forEachChunk(moving.size(), chunkCount(moving.size(), 8192), [&](std::size_t, std::size_t first, std::size_t end) {
+            for (std::size_t i = first; i < end; ++i) {
+                const std::uint32_t vertex = moving[i];
+                const float f = fieldValues[i];
+                const glm::vec3 g(gradients[3 * i], gradients[3 * i + 1], gradients[3 * i + 2]);
+                const float g2 = glm::dot(g, g);
+                if (!std::isfinite(f) || !(g2 > 1e-12f) || !std::isfinite(g2)) continue;
+                const auto& c = vertexCell[vertex];
+                const glm::vec3 cellLo = grid.point(c[0], c[1], c[2]), cellHi = grid.point(c[0] + 1, c[1] + 1, c[2] + 1);
+                // A vertex placed beside its cell (on a sharp edge) keeps the margin it was given.
+                const bool beside = glm::any(glm::lessThan(mesh.vertices[vertex], cellLo)) ||
+                                    glm::any(glm::greaterThan(mesh.vertices[vertex], cellHi));
+                const glm::vec3 margin{beside ? float(vertexMargin) : 0.0f};
+                // The first step is clamped plainly: stepping along a face at once would draw the cells'
+                // vertices around a needle thinner than a cell onto one point of its axis.
+                bool alongFace = false;
+                mesh.vertices[vertex] =
+                    iteration == 0 ? glm::clamp(mesh.vertices[vertex] - g * (f / g2), cellLo - margin, cellHi + margin)
+                                   : stepOntoPlaneInBox(mesh.vertices[vertex], f, g, cellLo - margin, cellHi + margin, alongFace);
+                onFace[vertex] = alongFace ? 1 : 0;
+            }
+        });
+        if (iteration == 0) continue;
+        std::erase_if(moving, [&](std::uint32_t vertex) { return onFace[vertex] == 0; });
     }
     return {};
 }
@@ -1202,10 +1276,12 @@ std::uint64_t flipCollinearTriangles(Mesh& mesh) {
         std::vector<bool> touched(triangles, false);
         std::uint64_t made = 0;
         for (const auto& [t, k] : flat) {
+            // A triangle an earlier flip of this pass rewrote waits for the next pass.
+            if (touched[t]) continue;
             std::uint32_t* v = &mesh.indices[3 * std::size_t(t)];
             const std::uint32_t a = v[(k + 1) % 3], b = v[(k + 2) % 3], c = v[k];
             const std::uint32_t other = across.at(key(b, a));
-            if (other == std::uint32_t(-1) || other == t || touched[t] || touched[other]) continue;
+            if (other == std::uint32_t(-1) || other == t || touched[other]) continue;
             std::uint32_t* w = &mesh.indices[3 * std::size_t(other)];
             int at = 0; // w = (b, a, d) once rotated
             while (at < 3 && !(w[at] == b && w[(at + 1) % 3] == a)) ++at;
@@ -1227,27 +1303,43 @@ std::uint64_t flipCollinearTriangles(Mesh& mesh) {
     return flips;
 }
 
+std::uint64_t countDegenerateTriangles(const Mesh& mesh) {
+    const std::size_t triangles = mesh.indices.size() / 3, vertexCount = mesh.vertices.size();
+    const std::size_t chunks = chunkCount(triangles, 65536);
+    std::vector<std::uint64_t> degenerate(chunks, 0);
+    forEachChunk(triangles, chunks, [&](std::size_t chunk, std::size_t first, std::size_t end) {
+        for (std::size_t f = first; f < end; ++f) {
+            const std::uint32_t v[3] = {mesh.indices[3 * f], mesh.indices[3 * f + 1], mesh.indices[3 * f + 2]};
+            if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) {
+                ++degenerate[chunk];
+            } else if (std::max({v[0], v[1], v[2]}) < vertexCount) {
+                const glm::dvec3 p(mesh.vertices[v[0]]), q(mesh.vertices[v[1]]), r(mesh.vertices[v[2]]);
+                const glm::dvec3 n = glm::cross(q - p, r - p);
+                if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0) ++degenerate[chunk];
+            }
+        }
+    });
+    std::uint64_t total = 0;
+    for (std::uint64_t d : degenerate) total += d;
+    return total;
+}
+
+Topology subdividedTopology(Topology coarse, std::uint64_t triangles, int levels) {
+    for (int level = 0; level < levels; ++level) {
+        coarse.edges = 2 * coarse.edges + 3 * triangles;
+        triangles *= 4;
+        coarse.boundaryEdges *= 2;
+        coarse.nonManifoldEdges *= 2;
+        coarse.misorientedEdges *= 2;
+    }
+    coarse.degenerateTriangles = 0;
+    return coarse;
+}
+
 Topology checkTopology(const Mesh& mesh) {
     Topology t;
     const std::size_t triangles = mesh.indices.size() / 3, vertexCount = mesh.vertices.size();
-    // Degenerate triangles: a vertex repeated, or zero area (three points on one line).
-    {
-        const std::size_t chunks = chunkCount(triangles, 65536);
-        std::vector<std::uint64_t> degenerate(chunks, 0);
-        forEachChunk(triangles, chunks, [&](std::size_t chunk, std::size_t first, std::size_t end) {
-            for (std::size_t f = first; f < end; ++f) {
-                const std::uint32_t v[3] = {mesh.indices[3 * f], mesh.indices[3 * f + 1], mesh.indices[3 * f + 2]};
-                if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) {
-                    ++degenerate[chunk];
-                } else if (std::max({v[0], v[1], v[2]}) < vertexCount) {
-                    const glm::dvec3 p(mesh.vertices[v[0]]), q(mesh.vertices[v[1]]), r(mesh.vertices[v[2]]);
-                    const glm::dvec3 n = glm::cross(q - p, r - p);
-                    if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0) ++degenerate[chunk];
-                }
-            }
-        });
-        for (std::uint64_t d : degenerate) t.degenerateTriangles += d;
-    }
+    t.degenerateTriangles = countDegenerateTriangles(mesh);
     // Edges: each triangle's three, filed under their lower vertex as (higher vertex, whether the
     // triangle runs it downwards); a vertex's short list, sorted, has a run per undirected edge.
     std::uint32_t top = 0;

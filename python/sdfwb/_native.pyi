@@ -172,6 +172,7 @@ def mesh(
     params: Mapping[str, ParamValue] | None = None,
     sign: str = "",
     normalize: str = "",
+    refine: int = 0,
 ) -> MeshResult: ...
 def evaluate_mesh(
     mesh: str,

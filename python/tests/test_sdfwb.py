@@ -385,6 +385,7 @@ def test_mesh_and_eval_name_bad_arguments():
             (["mesh", "--sdf", "torus", "--output", os.path.join(folder, "t.xyz")], "unsupported mesh type"),
             (["mesh", "--sdf", "torus", "--output", os.path.join(folder, "t.ply"), "--bounds", "1,1,1,0,0,0"], "--bounds"),
             (["mesh", "--sdf", "torus", "--output", os.path.join(folder, "t.ply"), "--resolution", "1"], "--resolution"),
+            (["mesh", "--sdf", "torus", "--output", os.path.join(folder, "t.ply"), "--refine", "5"], "--refine"),
             (["mesh", "--sdf", "torus", "--output", os.path.join(folder, "no", "t.ply")], "does not exist"),
             (["eval", "--sdf", "torus", "--mesh", os.path.join(folder, "missing.ply")], "no such file"),
         ]
@@ -393,6 +394,8 @@ def test_mesh_and_eval_name_bad_arguments():
             assert result.returncode == 2, (arguments, result.stderr)
             assert expected in result.stderr, (arguments, result.stderr)
         assert os.listdir(folder) == []
+        with pytest.raises(ValueError, match="'refine'"):
+            sdfwb.mesh("torus", resolution=16, refine=-1)
         # a file that is not a mesh: named, exit 1, nothing written
         bad = os.path.join(folder, "bad.ply")
         with open(bad, "w") as f:

@@ -90,6 +90,7 @@ std::vector<Request> unusualRequests() {
     mesh.sdf = {"Torus", "map", "", {{"radius", {0.25f}}}};
     mesh.output = "t.glb";
     mesh.resolution = 333;
+    mesh.refine = 3;
     mesh.boundsMin = {-1.5f, -0.25f, -1.0f / 3.0f};
     mesh.boundsMax = {1.5f, 0.25f, 2.0f};
     mesh.time = 0.5f;

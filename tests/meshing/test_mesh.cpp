@@ -3,6 +3,7 @@
 // closed dataset shapes come out closed and consistently oriented, skipping empty blocks loses
 // nothing, files read back the same, and the error measure on meshes whose error is known exactly.
 #include <meshing/Mesh.h>
+#include <sampling/FieldEvaluator.h>
 
 #include "GlTestContext.h"
 #include "common/SourceSdfs.h"
@@ -255,6 +256,110 @@ TEST_F(MeshTest, ABoxKeepsItsCornersAndStraightEdges) {
     EXPECT_TRUE(closedAndOutward(mesh));
     // Outward winding: the signed volume is the box's.
     EXPECT_NEAR(signedVolume(mesh), 1.0, 1e-3);
+}
+
+// The largest |f| at the mesh's vertices.
+float largestVertexDistance(const shaders::PreparedSdf& sdf, const meshing::Mesh& mesh) {
+    sampling::FieldEvaluator field;
+    EXPECT_FALSE(shaders::hasErrors(field.build(sdf)));
+    std::vector<float> points, distances(mesh.vertices.size());
+    for (const glm::vec3& v : mesh.vertices) points.insert(points.end(), {v.x, v.y, v.z});
+    auto report = field.evaluate(points.data(), mesh.vertices.size(), distances.data(), nullptr, sampling::FieldSettings{});
+    EXPECT_TRUE(report) << (report ? "" : report.error().message);
+    float largest = 0.0f;
+    for (float d : distances) largest = std::max(largest, std::abs(d));
+    return largest;
+}
+
+void expectSameTopology(const meshing::Topology& a, const meshing::Topology& b, const std::string& what) {
+    EXPECT_EQ(a.edges, b.edges) << what;
+    EXPECT_EQ(a.boundaryEdges, b.boundaryEdges) << what;
+    EXPECT_EQ(a.nonManifoldEdges, b.nonManifoldEdges) << what;
+    EXPECT_EQ(a.degenerateTriangles, b.degenerateTriangles) << what;
+    EXPECT_EQ(a.nonManifoldVertices, b.nonManifoldVertices) << what;
+    EXPECT_EQ(a.misorientedEdges, b.misorientedEdges) << what;
+}
+
+// A vertex whose nearest surface point lies just beyond a face of its cell (the top of the tilted
+// torus barely enters the cell above it at 64 cells) steps along that face onto the surface; a
+// clamp into the cell left four such vertices 2.4e-4 off it, which no later step could mend.
+TEST_F(MeshTest, AVertexWhoseSurfacePointLiesJustBeyondItsCellReachesTheSurface) {
+    for (const char* file : {"dataset/Geometry/Torus.glsl", "dataset/Geometry/Sphere.glsl"}) {
+        const shaders::PreparedSdf sdf = sdfwb::testing::loadSourceSdf(file);
+        for (int resolution : {48, 64}) {
+            const meshing::Mesh mesh = extract(sdf, resolution);
+            EXPECT_LT(largestVertexDistance(sdf, mesh), 1e-5f) << file << " at " << resolution;
+            EXPECT_TRUE(closedAndOutward(mesh)) << file;
+        }
+    }
+}
+
+// refine: each level cuts every triangle into four and puts the new vertices on the surface, so on
+// a smooth shape the error falls as if the resolution doubled, and the topology the mesher reports
+// for the fine mesh without checking it (subdividedTopology) is what a check of it finds.
+TEST_F(MeshTest, RefinementQuartersASmoothShapesErrorAndKeepsItsTopology) {
+    for (const char* file : {"dataset/Geometry/Torus.glsl", "dataset/Geometry/Sphere.glsl"}) {
+        const shaders::PreparedSdf sdf = sdfwb::testing::loadSourceSdf(file);
+        std::vector<float> hausdorff;
+        std::size_t coarseTriangles = 0;
+        for (int refine : {0, 1, 2}) {
+            meshing::MeshOptions options;
+            options.resolution = 24;
+            options.refine = refine;
+            auto result = meshing::extractMesh(sdf, options, {});
+            ASSERT_TRUE(result) << result.error().message;
+            const auto& [mesh, stats] = *result;
+            if (refine == 0) coarseTriangles = mesh.triangleCount();
+            EXPECT_EQ(mesh.triangleCount(), coarseTriangles << (2 * refine)) << file;
+            EXPECT_TRUE(closedAndOutward(mesh)) << file << " refine " << refine;
+            EXPECT_EQ(stats.midpointsKept, 0u) << file;
+            EXPECT_LT(largestVertexDistance(sdf, mesh), 1e-5f) << file << " refine " << refine;
+            EXPECT_EQ(stats.topology.has_value(), refine > 0);
+            if (stats.topology) {
+                expectSameTopology(*stats.topology, meshing::checkTopology(mesh), std::string(file) + " refined");
+                EXPECT_TRUE(stats.topology->manifold());
+            }
+            meshing::ErrorOptions errorOptions;
+            errorOptions.meshPoints = errorOptions.surfacePoints = 50000;
+            auto error = meshing::measureError(sdf, mesh, errorOptions);
+            ASSERT_TRUE(error) << error.error().message;
+            hausdorff.push_back(error->hausdorff);
+        }
+        EXPECT_GT(hausdorff[0] / hausdorff[1], 3.0f) << file << ": " << hausdorff[0] << " -> " << hausdorff[1];
+        EXPECT_GT(hausdorff[1] / hausdorff[2], 3.0f) << file << ": " << hausdorff[1] << " -> " << hausdorff[2];
+    }
+}
+
+// Refining a creased shape keeps its corners and flat faces (a midpoint on a face has f = 0 and
+// stays), and the topology reported without a check matches one where faces were split
+// (the Menger sponge's tunnels thinner than a cell).
+TEST_F(MeshTest, RefinementKeepsCreasesAndTheReportedTopologyHoldsOnTunnels) {
+    const shaders::PreparedSdf box = source(rotatedBoxSource(kTilt, glm::dvec3(0.5)));
+    std::vector<float> hausdorff;
+    for (int refine : {0, 1}) {
+        meshing::MeshOptions options;
+        options.resolution = 32;
+        options.refine = refine;
+        auto result = meshing::extractMesh(box, options, {});
+        ASSERT_TRUE(result) << result.error().message;
+        EXPECT_TRUE(closedAndOutward(result->first));
+        meshing::ErrorOptions errorOptions;
+        errorOptions.meshPoints = errorOptions.surfacePoints = 50000;
+        auto error = meshing::measureError(box, result->first, errorOptions);
+        ASSERT_TRUE(error) << error.error().message;
+        hausdorff.push_back(error->hausdorff);
+    }
+    EXPECT_LT(hausdorff[1], 1.05f * hausdorff[0] + 1e-6f) << hausdorff[0] << " -> " << hausdorff[1];
+    for (const char* file : {"dataset/Fractal/MengerSponge.glsl", "tests/foreign/42_hg_mercury_arcade.glsl"}) {
+        meshing::MeshOptions options;
+        options.resolution = 64;
+        options.refine = 1;
+        auto result = meshing::extractMesh(sdfwb::testing::loadSourceSdf(file), options, {});
+        ASSERT_TRUE(result) << result.error().message;
+        ASSERT_TRUE(result->second.topology.has_value());
+        expectSameTopology(*result->second.topology, meshing::checkTopology(result->first), file);
+        EXPECT_TRUE(closedAndOutward(result->first)) << file;
+    }
 }
 
 TEST_F(MeshTest, TheSphereErrorFallsAtSecondOrder) {

@@ -90,6 +90,7 @@ std::string inFlagTerms(const std::string& message) {
         "samples",
         "truncation_reach",
         "resolution",
+        "refine",
         "repeats",
         "world_size",
         "rank",

@@ -39,31 +39,13 @@ struct MeshOptions {
     // steepest |grad f| there or quotient between neighbouring centres, at least 1. Either way a
     // skipped block is evaluated after all when the surface crosses its face with a kept block.
     bool estimateLipschitz = false;
+    // After extraction, cut every triangle into four this many times, each new vertex (an edge's
+    // midpoint) stepped onto the surface by the exact field: on a smooth surface each level quarters
+    // the error for four times the triangles, about what doubling the resolution gives, at a
+    // fraction of its cost. Creases stay where the grid put them; features smaller than the coarse
+    // grid's cells stay missed. 0: none.
+    int refine = 0;
 };
-
-struct MeshStats {
-    std::uint64_t blocks = 0, blocksKept = 0;  // blocks of 8^3 cells, and those that may hold surface
-    std::uint64_t blocksGrown = 0;             // of those, skipped by the bound but crossed at a face with a kept block
-    float lipschitzUsed = 0.0f;                // the bound the blocks were skipped by (given or estimated)
-    std::uint64_t pointsEvaluated = 0;         // field evaluations on the GPU (grid, crossings, centres)
-    std::uint64_t activeCells = 0;             // cells the surface crosses (one vertex each)
-    std::uint64_t clampedVertices = 0;         // QEF minimisers outside their cell, clamped into it
-    std::uint64_t verticesBesideTheirCell = 0; // on a sharp edge that passes beside the cell, at most half a cell out
-    std::uint64_t creasesOnFaces = 0;          // flat patches moved onto a crease lying on their upper face
-    std::uint64_t collinearFlips = 0;          // zero-area triangles removed by an edge flip (flipCollinearTriangles)
-    std::uint64_t splitFaces = 0;              // ambiguous faces both of whose cells join its two segments: a vertex per segment
-    // Grid points inside the shape but outside the bounds (half a cell beyond them): the shape
-    // leaves the bounds and the mesh is closed by flat caps there. 0: the shape lies inside.
-    std::uint64_t boundsCutPoints = 0;
-    double seconds = 0.0;
-    std::vector<std::pair<std::string, double>> phaseSeconds; // each step's wall time, in order
-};
-
-// The box extractMesh() cuts the field by: the bounds grown by half a cell on every side.
-std::pair<glm::vec3, glm::vec3> cutBox(const MeshOptions& options);
-
-Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf, const MeshOptions& options,
-                                                 const ProgressSink& progress);
 
 struct Topology {
     std::uint64_t edges = 0;
@@ -79,8 +61,46 @@ struct Topology {
     bool manifold() const { return watertight() && nonManifoldVertices == 0 && misorientedEdges == 0; }
 };
 
+struct MeshStats {
+    std::uint64_t blocks = 0, blocksKept = 0;  // blocks of 8^3 cells, and those that may hold surface
+    std::uint64_t blocksGrown = 0;             // of those, skipped by the bound but crossed at a face with a kept block
+    float lipschitzUsed = 0.0f;                // the bound the blocks were skipped by (given or estimated)
+    std::uint64_t pointsEvaluated = 0;         // field evaluations on the GPU (grid, crossings, centres)
+    std::uint64_t activeCells = 0;             // cells the surface crosses (one vertex each)
+    std::uint64_t clampedVertices = 0;         // QEF minimisers outside their cell, clamped into it
+    std::uint64_t verticesBesideTheirCell = 0; // on a sharp edge that passes beside the cell, at most half a cell out
+    std::uint64_t creasesOnFaces = 0;          // flat patches moved onto a crease lying on their upper face
+    std::uint64_t collinearFlips = 0;          // zero-area triangles removed by an edge flip (flipCollinearTriangles)
+    std::uint64_t splitFaces = 0;              // ambiguous faces both of whose cells join its two segments: a vertex per segment
+    std::uint64_t midpointsKept = 0;           // refinement midpoints left off the surface (no step a quarter edge or shorter)
+    // With refine > 0: the refined mesh's topology, from the coarse mesh's check (subdividedTopology)
+    // and a count of the fine mesh's degenerate triangles. Absent without refinement: checkTopology.
+    std::optional<Topology> topology;
+    // Grid points inside the shape but outside the bounds (half a cell beyond them): the shape
+    // leaves the bounds and the mesh is closed by flat caps there. 0: the shape lies inside.
+    std::uint64_t boundsCutPoints = 0;
+    double seconds = 0.0;
+    std::vector<std::pair<std::string, double>> phaseSeconds; // each step's wall time, in order
+};
+
+// The box extractMesh() cuts the field by: the bounds grown by half a cell on every side.
+std::pair<glm::vec3, glm::vec3> cutBox(const MeshOptions& options);
+
+Expected<std::pair<Mesh, MeshStats>> extractMesh(const shaders::PreparedSdf& sdf, const MeshOptions& options,
+                                                 const ProgressSink& progress);
+
 // Counts by shared vertex index (the writers keep indices; readers should merge equal positions).
 Topology checkTopology(const Mesh& mesh);
+// Triangles with a vertex repeated or zero area (three points on one line): checkTopology's
+// degenerateTriangles alone.
+std::uint64_t countDegenerateTriangles(const Mesh& mesh);
+// The topology of a mesh of `triangles` triangles with topology `coarse` after each triangle is cut
+// into four at its edges' midpoints `levels` times (MeshOptions::refine), without looking at it:
+// the cut doubles every edge and adds three inside each triangle; a new vertex lies on one coarse
+// edge, so it joins no fans that were apart, and a boundary, non-manifold or misoriented edge
+// becomes two of the same. Degenerate triangles are geometry, not topology: 0 here, count them on
+// the fine mesh (countDegenerateTriangles).
+Topology subdividedTopology(Topology coarse, std::uint64_t triangles, int levels);
 
 // Triangles of zero area whose three vertices lie on one line, the middle one strictly between the
 // others (a crease's vertices in a row; seen on a GPU driver, not on llvmpipe): each is removed by

@@ -155,6 +155,9 @@ struct MeshRequest {
     SdfInput sdf;
     std::string output; // .ply, .obj, .stl or .glb
     int resolution = 128;
+    // Times every triangle is cut into four, the new vertices stepped onto the surface
+    // (meshing::MeshOptions::refine), 0..4.
+    int refine = 0;
     glm::vec3 boundsMin{-1.0f};
     glm::vec3 boundsMax{1.0f};
     float time = 0.0f;
@@ -367,6 +370,7 @@ struct MeshReport {
     std::string sdf;
     std::string entry;
     int resolution = 0;
+    int refine = 0;
     std::uint64_t vertices = 0, triangles = 0;
     std::uint64_t boundaryEdges = 0, nonManifoldEdges = 0, degenerateTriangles = 0;
     std::uint64_t nonManifoldVertices = 0, misorientedEdges = 0;
@@ -380,6 +384,7 @@ struct MeshReport {
                   splitFaces = 0;
     std::uint64_t boundsCutPoints = 0;              // grid points inside the shape beyond the bounds: closed by caps there
     std::uint64_t collinearFlips = 0;               // zero-area triangles (vertices in a row) flipped away
+    std::uint64_t midpointsKept = 0;                // refinement midpoints that took no step onto the surface
     std::optional<std::uint64_t> selfIntersections; // crossing triangle pairs, when asked for
     double meshSeconds = 0.0;
     // Where the time went: the mesher's steps in order, then "topology" (the checks above) and, in
