@@ -32,7 +32,7 @@ public:
     QDialog* dialog() const { return m_dialog; }
     bool isRunning() const;
     // The request an export with these settings starts.
-    jobs::MeshRequest request(const QString& output, int resolution) const;
+    jobs::MeshRequest request(const QString& output, int resolution, int refine = 0) const;
 
 signals:
     void progress(quint64 done, quint64 total);
@@ -49,6 +49,7 @@ private:
     QDialog* m_dialog = nullptr;
     QLineEdit* m_output = nullptr;
     QSpinBox* m_resolution = nullptr;
+    QSpinBox* m_refine = nullptr;
     QProgressBar* m_bar = nullptr;
     QLabel* m_message = nullptr;
     QPushButton* m_export = nullptr;

@@ -206,9 +206,24 @@ TEST(MeshExport, ExportsTheUnsavedStateAndCancelsCleanly) {
     EXPECT_FALSE(QFile::exists(path));
     EXPECT_TRUE(QDir(folder.path()).entryList(QDir::Files | QDir::Hidden | QDir::NoDotAndDotDot).isEmpty()) << "no partial file";
 
-    // A finished export at 64.
+    // A finished export at 64, refined once: four times the triangles of the same export unrefined.
+    auto facesIn = [](const QByteArray& bytes) {
+        return bytes.mid(bytes.indexOf("element face ") + 13, 12).split('\n').first().toLongLong();
+    };
     done = false;
     dialog->findChild<QSpinBox*>("meshResolution")->setValue(64);
+    dialog->findChild<QPushButton*>("meshExport")->click();
+    ASSERT_TRUE(waitFor([&] { return done; }, 60000));
+    ASSERT_TRUE(ok) << dialog->findChild<QLabel*>("meshMessage")->text().toStdString();
+    qint64 coarseFaces = 0;
+    {
+        QFile coarse(path);
+        ASSERT_TRUE(coarse.open(QIODevice::ReadOnly));
+        coarseFaces = facesIn(coarse.readAll());
+        ASSERT_GT(coarseFaces, 100);
+    }
+    done = false;
+    dialog->findChild<QSpinBox*>("meshRefine")->setValue(1);
     dialog->findChild<QPushButton*>("meshExport")->click();
     ASSERT_TRUE(waitFor([&] { return done; }, 60000));
     const QString message = dialog->findChild<QLabel*>("meshMessage")->text();
@@ -220,6 +235,7 @@ TEST(MeshExport, ExportsTheUnsavedStateAndCancelsCleanly) {
     QFile file(path);
     ASSERT_TRUE(file.open(QIODevice::ReadOnly));
     const QByteArray bytes = file.readAll();
+    EXPECT_EQ(facesIn(bytes), 4 * coarseFaces) << "refine 1 reached the child";
     const int header = bytes.indexOf("end_header\n") + 11;
     const int vertices = bytes.mid(bytes.indexOf("element vertex ") + 15, 12).split('\n').first().toInt();
     ASSERT_GT(vertices, 100);
