@@ -6,7 +6,8 @@
         [--markdown docs/meshing-peers.md] [--plot docs/images/mesh_peers_error_vs_time.png]
 
 Ours: `sdfwb.mesh(sdf, resolution=R)`, the whole call timed (GL context, the bound estimated at the block centres, GPU field, dual contouring,
-projection onto the surface).
+projection onto the surface), and `sdfwb.mesh(sdf, resolution=R, refine=K)` for the --refined R:K pairs (each triangle
+cut into four K times, the new vertices put on the surface), whose rows count for the equal-error comparison.
 
 Peers, each given the same field on the same (R+1)^3 lattice over [-1,1]^3:
 - scikit-image `measure.marching_cubes` (Lewiner; single-threaded, its kernel holds the GIL);
@@ -63,6 +64,11 @@ def option(name, default):
 
 REPEATS = int(option("--repeats", "3"))
 OURS_R = [int(r) for r in option("--resolutions", "16,24,32,48,64,96,128,192,256").split(",")]
+# sdfwb.mesh(sdf, resolution=R, refine=K): the coarse grid's triangles cut into four K times, each new vertex put on the
+# surface; R:K pairs.
+REFINED = [tuple(int(v) for v in pair.split(":")) for pair in
+           option("--refined", "16:2,16:3,24:2,24:3,32:2,32:3,48:1,48:2,64:1,64:2,96:1,128:1").split(",") if pair]
+REFINED_TOOL = "sdfwb, refined"
 PEER_R = [int(r) for r in option("--peer-resolutions", "64,128,256").split(",")]
 ONLY = set(option("--only", "").split(",")) - {""}
 # --scale: each tool once at 512 (and sdfwb and Flying Edges at 1024) in a process of its own, for its time and peak
@@ -345,7 +351,9 @@ config = [
     f"started {started.strftime('%Y-%m-%d %H:%M')} UTC; GL renderer `{renderer}`"
     + (" (Mesa's CPU rasteriser, no GPU)" if "llvmpipe" in renderer else "") + ".",
     f"sdfwb {sdfwb.__version__}: `sdfwb.mesh(sdf, resolution=R)` at R = {', '.join(map(str, OURS_R))}, the whole "
-    "call timed (GL context, the bound estimated at the block centres, GPU field, dual contouring, projection onto the surface).",
+    "call timed (GL context, the bound estimated at the block centres, GPU field, dual contouring, projection onto the surface); "
+    f"and `sdfwb.mesh(sdf, resolution=R, refine=K)` ({REFINED_TOOL}: each triangle cut into four K times, every new vertex "
+    f"stepped onto the exact surface) at R:K = {', '.join(f'{r}:{k}' for r, k in REFINED)}.",
     f"scikit-image {skimage.__version__} `measure.marching_cubes` (Lewiner), 1 thread (its kernel holds the GIL).",
     f"VTK {vtk.vtkVersion.GetVTKVersion()} `vtkFlyingEdges3D`, SMP backend {vtk.vtkSMPTools.GetBackend()}, "
     f"thread counts {', '.join(map(str, THREADS))} tried at each size, the fastest kept; normals, gradients, "
@@ -381,6 +389,13 @@ with tempfile.TemporaryDirectory() as folder:
                                 triangles=len(mesh["faces"]), eval=e,
                                 watertight=mesh["report"].get("topology", {}).get("watertight")))
             print(f"{label:36s} sdfwb R={R:4d} {seconds:8.3f} s  Hausdorff {e['hausdorff']:.3g} "
+                  f"Chamfer-L1 {e['chamfer_l1']:.3g}", flush=True)
+        for R, K in REFINED:
+            seconds, mesh = median_time(lambda: sdfwb.mesh(sdf, resolution=R, refine=K))
+            e = grade(mesh["vertices"], mesh["faces"], sdf, folder)
+            results.append(dict(label=label, cls=cls, tool=REFINED_TOOL, R=R, refine=K, seconds=seconds, field_seconds=None,
+                                triangles=len(mesh["faces"]), eval=e))
+            print(f"{label:36s} sdfwb R={R:4d} refine {K} {seconds:8.3f} s  Hausdorff {e['hausdorff']:.3g} "
                   f"Chamfer-L1 {e['chamfer_l1']:.3g}", flush=True)
         for R in PEER_R:
             forms = []
@@ -456,19 +471,25 @@ def rows_of(label, tool):
 def equal_error(label):
     """Our fastest call that reaches the best peer's error at the top peer resolution (both Hausdorff and
     Chamfer-L1), against that peer's time; None when no resolution of ours reaches it."""
-    tops = [r for r in results if r["label"] == label and r["tool"] != "sdfwb" and r["R"] == TOP and r["eval"]]
+    tops = [r for r in results if r["label"] == label and r["tool"] not in ("sdfwb", REFINED_TOOL) and r["R"] == TOP
+            and r["eval"]]
     if not tops:
         return None
     best_h = min(r["eval"]["hausdorff"] for r in tops)
     best_c = min(r["eval"]["chamfer_l1"] for r in tops)
     fastest_peer = min(r["seconds"] for r in tops)
-    ours = [r for r in rows_of(label, "sdfwb")
+    ours = [r for r in rows_of(label, "sdfwb") + rows_of(label, REFINED_TOOL)
             if r["eval"]["hausdorff"] <= best_h and r["eval"]["chamfer_l1"] <= best_c]
     if not ours:
         return dict(best_h=best_h, best_c=best_c, peer_seconds=fastest_peer, ours=None)
     first = min(ours, key=lambda r: r["seconds"])
     return dict(best_h=best_h, best_c=best_c, peer_seconds=fastest_peer, ours=first,
                 ratio=fastest_peer / first["seconds"])
+
+
+def grid_of(row):
+    """R, or R + K for a grid of R cells refined K times."""
+    return f"{row['R']} + {row['refine']}" if row.get("refine") else str(row["R"])
 
 
 def fmt(v, spec=".3g"):
@@ -486,15 +507,17 @@ for label, cls, _, _ in SHAPES:
     ours_top = next((r for r in rows_of(label, "sdfwb") if r["R"] == TOP), None)
     fe_top = min((r for tool in ("VTK Flying Edges", FE_CPP) for r in rows_of(label, tool) if r["R"] == TOP),
                  key=lambda r: r["seconds"], default=None)  # the faster of Python's and C++'s
-    peers_top = [r for r in results if r["label"] == label and r["tool"] != "sdfwb" and r["R"] == TOP and r["eval"]]
+    peers_top = [r for r in results if r["label"] == label and r["tool"] not in ("sdfwb", REFINED_TOOL) and r["R"] == TOP
+                 and r["eval"]]
     summary_rows.append(dict(label=label, cls=cls, eq=eq, ours=ours_top, fe=fe_top, peers=peers_top))
 
 lines = []
 lines.append("## Equal error: the time sdfwb needs to reach the best peer's error at "
              f"{TOP}^3\n")
 lines.append(f"The best peer's Hausdorff and Chamfer-L1 at R = {TOP} (each the lowest of the peers), the fastest "
-             f"peer's whole call at R = {TOP}, and sdfwb's fastest call whose mesh is at least as good on both. Ratio = "
-             "peer time / sdfwb time (above 1: sdfwb is faster).\n")
+             f"peer's whole call at R = {TOP}, and sdfwb's fastest call whose mesh is at least as good on both, refined "
+             "or not (R + K: a grid of R cells, refined K times). Ratio = peer time / sdfwb time (above 1: sdfwb is "
+             "faster).\n")
 lines.append("| shape | class | best peer Hausdorff | best peer Chamfer-L1 | fastest peer s | sdfwb R | sdfwb s | "
              "ratio |\n|---|---|---|---|---|---|---|---|")
 for s in summary_rows:
@@ -506,7 +529,7 @@ for s in summary_rows:
                      f"{eq['peer_seconds']:.3f} | not reached by R = {max(OURS_R)} | | **slower** |")
     else:
         lines.append(f"| {s['label']} | {s['cls']} | {eq['best_h']:.3g} | {eq['best_c']:.3g} | "
-                     f"{eq['peer_seconds']:.3f} | {eq['ours']['R']} | {eq['ours']['seconds']:.3f} | "
+                     f"{eq['peer_seconds']:.3f} | {grid_of(eq['ours'])} | {eq['ours']['seconds']:.3f} | "
                      f"{eq['ratio']:.2f}x |")
 lines.append("")
 for cls in classes:
@@ -583,7 +606,7 @@ for r in results:
             field_choice.get((r["label"], r["R"]), ("", 0, []))[0])
     edges = e.get("edges") if e else None
     threads = f" ({r['threads']} threads)" if r.get("threads") else ""
-    lines.append(f"| {r['label']} | {r['tool']}{threads} | {r['R']} | {r['seconds']:.3f} | "
+    lines.append(f"| {r['label']} | {r['tool']}{threads} | {grid_of(r)} | {r['seconds']:.3f} | "
                  f"{fmt(r['field_seconds'], '.3f')}{f' ({form})' if form else ''} | {r['triangles']} | "
                  f"{fmt(e['hausdorff'] if e else None)} | {fmt(e['chamfer_l1'] if e else None)} | "
                  f"{fmt(e['normal_consistency'] if e else None, '.4f')} | {fmt(e['fscore'] if e else None, '.4f')} | "
@@ -603,14 +626,17 @@ if PLOT:
     figure, axes = plt.subplots(rows_count, columns, figsize=(5.5 * columns, 4.5 * rows_count), squeeze=False)
     for ax in axes.flat[len(classes):]:
         ax.axis("off")
-    colours = {"sdfwb": "C3", "scikit-image MC": "C0", "VTK Flying Edges": "C2", "OpenVDB volumeToMesh": "C1",
-               FE_CPP: "C4"}
+    colours = {"sdfwb": "C3", REFINED_TOOL: "C6", "scikit-image MC": "C0", "VTK Flying Edges": "C2",
+               "OpenVDB volumeToMesh": "C1", FE_CPP: "C4"}
     for ax, cls in zip(axes.flat, classes):
         for label, c, _, _ in SHAPES:
             if c != cls:
                 continue
             for tool, colour in colours.items():
-                rows = rows_of(label, tool)
+                rows = sorted(rows_of(label, tool), key=lambda r: r["seconds"])
+                if tool == REFINED_TOOL:  # the lower envelope: each row better than every faster one
+                    rows = [r for i, r in enumerate(rows) if all(r["eval"]["chamfer_l1"] < q["eval"]["chamfer_l1"]
+                                                                 for q in rows[:i])]
                 if rows:
                     ax.loglog([r["seconds"] for r in rows], [r["eval"]["chamfer_l1"] for r in rows], "o-", color=colour,
                               alpha=0.6, markersize=3, label=tool if label == next(

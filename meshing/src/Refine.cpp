@@ -49,20 +49,23 @@ Edges findEdges(const Mesh& mesh) {
 
 // One level: vertex V + e is the midpoint of edge e; edge e's halves become edges 2e (from its
 // first end) and 2e + 1, and each triangle t adds the three edges between its midpoints,
-// 2E + 3t + k. No search: every index follows from the coarse one.
-void split(Mesh& mesh, Edges& edges) {
+// 2E + 3t + k. No search: every index follows from the coarse one. The last level needs no edges.
+void split(Mesh& mesh, Edges& edges, bool last) {
     const std::size_t triangles = mesh.triangleCount(), edgeCount = edges.ends.size();
     const auto firstMidpoint = std::uint32_t(mesh.vertices.size());
     mesh.vertices.resize(mesh.vertices.size() + edgeCount);
     Edges fine;
-    fine.ends.resize(2 * edgeCount + 3 * triangles);
-    fine.ofTriangle.resize(4 * triangles);
+    if (!last) {
+        fine.ends.resize(2 * edgeCount + 3 * triangles);
+        fine.ofTriangle.resize(4 * triangles);
+    }
     std::vector<std::uint32_t> indices(12 * triangles);
     forEachChunk(edgeCount, chunkCount(edgeCount, 16384), [&](std::size_t, std::size_t first, std::size_t end) {
         for (std::size_t e = first; e < end; ++e) {
             const auto [a, b] = edges.ends[e];
             const auto m = std::uint32_t(firstMidpoint + e);
             mesh.vertices[m] = 0.5f * (mesh.vertices[a] + mesh.vertices[b]);
+            if (last) continue;
             fine.ends[2 * e] = {a, m};
             fine.ends[2 * e + 1] = {m, b};
         }
@@ -72,6 +75,10 @@ void split(Mesh& mesh, Edges& edges) {
             const std::uint32_t* v = &mesh.indices[3 * t];
             const auto& e = edges.ofTriangle[t];
             const std::uint32_t m[3] = {firstMidpoint + e[0], firstMidpoint + e[1], firstMidpoint + e[2]};
+            const std::array<std::uint32_t, 12> children = {v[0], m[0], m[2], v[1], m[1], m[0],
+                                                            v[2], m[2], m[1], m[0], m[1], m[2]};
+            std::copy(children.begin(), children.end(), indices.begin() + std::ptrdiff_t(12 * t));
+            if (last) continue;
             // The half of edge k that touches vertex `corner`.
             auto half = [&](int k, std::uint32_t corner) {
                 return std::uint32_t(2 * e[std::size_t(k)] + (edges.ends[e[std::size_t(k)]][0] == corner ? 0 : 1));
@@ -80,9 +87,6 @@ void split(Mesh& mesh, Edges& edges) {
             fine.ends[inner] = {m[0], m[1]};
             fine.ends[inner + 1] = {m[1], m[2]};
             fine.ends[inner + 2] = {m[2], m[0]};
-            const std::array<std::uint32_t, 12> children = {v[0], m[0], m[2], v[1], m[1], m[0],
-                                                            v[2], m[2], m[1], m[0], m[1], m[2]};
-            std::copy(children.begin(), children.end(), indices.begin() + std::ptrdiff_t(12 * t));
             fine.ofTriangle[4 * t] = {half(0, v[0]), inner + 2, half(2, v[0])};
             fine.ofTriangle[4 * t + 1] = {half(1, v[1]), inner, half(0, v[1])};
             fine.ofTriangle[4 * t + 2] = {half(2, v[2]), inner + 1, half(1, v[2])};
@@ -111,20 +115,38 @@ Expected<RefineCounts> refineOntoSurface(Mesh& mesh, PointEvaluator& field, int 
     std::vector<glm::vec3> gradients(mesh.vertices.size());
     for (std::size_t v = 0; v < gradients.size(); ++v)
         gradients[v] = {evaluated[3 * v], evaluated[3 * v + 1], evaluated[3 * v + 2]};
+    // Room for every level's midpoints at once: level k + 1 has 2E + 3T edges.
+    std::size_t total = mesh.vertices.size();
+    for (std::size_t level = 0, e = edges.ends.size(), t = mesh.triangleCount(); level < std::size_t(levels); ++level) {
+        total += e;
+        e = 2 * e + 3 * t;
+        t *= 4;
+    }
+    mesh.vertices.reserve(total);
+    gradients.reserve(total);
     for (int level = 0; level < levels; ++level) {
         const std::size_t firstMidpoint = mesh.vertices.size(), count = edges.ends.size();
-        std::vector<float> lengths(count);
+        // Per edge: its length, and 1 - cos of the angle its ends' normals make (about half the angle
+        // squared), which bounds how far the mean direction can be from the midpoint's normal.
+        std::vector<float> lengths(count), bends(count);
         gradients.resize(firstMidpoint + count);
         for (std::size_t e = 0; e < count; ++e) {
             const auto [a, b] = edges.ends[e];
             lengths[e] = glm::distance(mesh.vertices[a], mesh.vertices[b]);
-            gradients[firstMidpoint + e] = 0.5f * (gradients[a] + gradients[b]);
+            // The mean direction with the mean length: two unit normals a turn apart average to a
+            // shorter vector, which would stretch the step.
+            const float la = glm::length(gradients[a]), lb = glm::length(gradients[b]);
+            const glm::vec3 sum = gradients[a] + gradients[b];
+            const float ls = glm::length(sum);
+            gradients[firstMidpoint + e] = ls > 0.0f ? sum * (0.5f * (la + lb) / ls) : glm::vec3(0.0f);
+            bends[e] = la > 0.0f && lb > 0.0f ? 1.0f - glm::dot(gradients[a], gradients[b]) / (la * lb) : 2.0f;
         }
-        split(mesh, edges);
-        // A step along the edge's mean gradient from f at the midpoint; where that step was long for
-        // the edge (over 0.3% of it: a coarse edge over a tight bend, where the true gradient
-        // turns away from the mean) a second one from f where it landed. A midpoint whose step
-        // would be longer than a quarter of its edge stays.
+        split(mesh, edges, level + 1 == levels);
+        // A step along the edge's mean gradient from f at the midpoint. For a distance field the step
+        // along the true normal lands on the surface; along a direction d off it, f where it lands is
+        // about step x d^2 / 2. Where that may exceed 1e-5 of the edge (a long step over a tight
+        // bend), a second step from f where the first landed. A midpoint whose step would be longer
+        // than a quarter of its edge stays.
         std::vector<std::uint32_t> moving(count);
         for (std::size_t e = 0; e < count; ++e) moving[e] = std::uint32_t(e);
         std::uint64_t kept = 0;
@@ -146,7 +168,7 @@ Expected<RefineCounts> refineOntoSurface(Mesh& mesh, PointEvaluator& field, int 
                     continue;
                 }
                 mesh.vertices[firstMidpoint + e] += stepOnto;
-                if (length > 0.003f * lengths[e]) moving[next++] = e;
+                if (length * bends[e] > 1e-5f * lengths[e]) moving[next++] = e;
             }
             moving.resize(next);
         }
