@@ -602,7 +602,7 @@ lines.append("| shape | tool | R | whole call s | of which field s (form) | tria
              "|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 for r in results:
     e = r["eval"]
-    form = ("" if r["tool"] == "sdfwb" else "C++ inline" if r["tool"] == FE_CPP else
+    form = ("" if r["tool"] in ("sdfwb", REFINED_TOOL) else "C++ inline" if r["tool"] == FE_CPP else
             field_choice.get((r["label"], r["R"]), ("", 0, []))[0])
     edges = e.get("edges") if e else None
     threads = f" ({r['threads']} threads)" if r.get("threads") else ""
