@@ -25,6 +25,7 @@ counts for the peer. Every time is the median of --repeats runs after a warm-up.
 `sdfwb.evaluate_mesh` against the exact field (100,000 points each way, tau as printed), with the edge measures
 (points near creases). Nothing is typed by hand into the generated Markdown.
 """
+import atexit
 import concurrent.futures
 import datetime
 import json
@@ -32,6 +33,7 @@ import subprocess
 import os
 import platform
 import resource
+import shutil
 import socket
 import statistics
 import sys
@@ -75,6 +77,9 @@ ONLY = set(option("--only", "").split(",")) - {""}
 # memory (VmHWM); SCALE_SHAPES names the shapes.
 SCALE = "--scale" in args
 SCALE_SHAPES = ["Sphere", "Rotated box", "Anvil"]
+# --scale also grades every 512^3 mesh, and runs sdfwb at these (R, refine) in processes of their own, graded, for the
+# equal-error comparison at 512^3.
+SCALE_CANDIDATES = [(128, 0), (256, 0), (64, 3), (128, 2), (256, 1)]
 MARKDOWN = option("--markdown", None)
 PLOT = option("--plot", None)
 TAU = 0.002
@@ -178,6 +183,11 @@ if "--write-glsl" in args:  # the tilted shapes as files, for bench/device/bundl
     sys.exit(0)
 if ONLY:
     SHAPES = [s for s in SHAPES if s[0] in ONLY]
+
+
+def grid_of(row):
+    """R, or R + K for a grid of R cells refined K times."""
+    return f"{row['R']} + {row['refine']}" if row.get("refine") else str(row["R"])
 
 
 def timed(function):
@@ -304,20 +314,31 @@ def gl_renderer():
     return report.get("gl_renderer") or "unknown"
 
 
-def child_run(tool, label, R):
-    """One tool on one shape at R in this (fresh) process: its whole call's time and this process's peak memory."""
+def child_run(tool, label, R, refine=0, graded=False):
+    """One tool on one shape at R in this (fresh) process: its whole call's time and this process's peak memory, and
+    (graded) the mesh's Hausdorff and Chamfer-L1, measured after both."""
     sdf, field = next((s[2], s[3]) for s in SHAPES if s[0] == label)
     started = time.perf_counter()
+    folder = tempfile.mkdtemp(prefix="sdfwb-scale-")
+    atexit.register(shutil.rmtree, folder, True)
+
+    def errors(vertices, faces):
+        e = grade(vertices, faces, sdf, folder) if graded else None
+        return dict(hausdorff=e["hausdorff"], chamfer_l1=e["chamfer_l1"]) if e else {}
+
     if tool == FE_CPP:
-        with tempfile.TemporaryDirectory() as folder:
-            report, peak = cpp_flying_edges(label, R, os.path.join(folder, "m.ply"))
+        path = os.path.join(folder, "m.ply")
+        report, peak = cpp_flying_edges(label, R, path)
+        e = sdfwb.evaluate_mesh(path, sdf, tau=TAU, occupancy_resolution=0) if graded else None
         print("CHILD " + json.dumps(dict(seconds=report["seconds"], field_seconds=report["field_seconds"],
-                                         triangles=report["triangles"], peak_mb=peak)))
+                                         triangles=report["triangles"], peak_mb=peak,
+                                         **(dict(hausdorff=e["hausdorff"], chamfer_l1=e["chamfer_l1"]) if e else {}))))
         return
     if tool == "sdfwb":
-        sdfwb.mesh(sdf, resolution=32)  # shaders compiled, GL context made: what a warm process has
+        sdfwb.mesh(sdf, resolution=32, refine=refine)  # shaders compiled, GL context made: what a warm process has
         started = time.perf_counter()
-        triangles = len(sdfwb.mesh(sdf, resolution=R)["faces"])
+        mesh = sdfwb.mesh(sdf, resolution=R, refine=refine)
+        vertices, faces = mesh["vertices"], mesh["faces"]
         field_seconds = None
     else:
         if field is None:
@@ -329,17 +350,18 @@ def child_run(tool, label, R):
         field_seconds = time.perf_counter() - started
         if tool == "VTK Flying Edges":
             vtk.vtkSMPTools.Initialize(CPUS)
-        triangles = len(PEERS[tool](values, R)[1])
+        vertices, faces = PEERS[tool](values, R)
     seconds = time.perf_counter() - started
     # VmHWM: this process's own peak (ru_maxrss would carry the parent's over fork and exec).
     with open("/proc/self/status") as status:
         peak = next(int(line.split()[1]) for line in status if line.startswith("VmHWM:")) / 1024.0
-    print("CHILD " + json.dumps(dict(seconds=seconds, field_seconds=field_seconds, triangles=triangles, peak_mb=peak)))
+    print("CHILD " + json.dumps(dict(seconds=seconds, field_seconds=field_seconds, triangles=len(faces), peak_mb=peak,
+                                     **errors(vertices, faces))))
 
 
 if "--child" in args:
     at = args.index("--child")
-    child_run(args[at + 1], args[at + 2], int(args[at + 3]))
+    child_run(args[at + 1], args[at + 2], int(args[at + 3]), int(option("--child-refine", "0")), "--graded" in args)
     sys.exit(0)
 
 if not os.path.exists(CPP_PEER):
@@ -449,19 +471,26 @@ scale_rows = []
 if SCALE:
     for label in SCALE_SHAPES:
         cpp = [FE_CPP] if label in CPP_FIELDS else []
-        for R, tools in ((512, ["sdfwb", *PEERS, *cpp]), (1024, ["sdfwb", "VTK Flying Edges", *cpp])):
-            for tool in tools:
-                run = subprocess.run([sys.executable, os.path.abspath(__file__), "--child", tool, label, str(R)],
-                                     capture_output=True, text=True)
-                line = next((l for l in run.stdout.splitlines() if l.startswith("CHILD ")), None)
-                if run.returncode != 0 or line is None:
-                    scale_rows.append(dict(label=label, tool=tool, R=R, failed=f"exit {run.returncode}: "
-                                                                                f"{run.stderr.strip()[-160:]}"))
-                else:
-                    scale_rows.append(dict(label=label, tool=tool, R=R, failed=None, **json.loads(line[6:])))
-                r = scale_rows[-1]
-                print(f"scale {label:14s} {tool:22s} R={R:5d} " + (r["failed"] if r["failed"] else
-                      f"{r['seconds']:7.2f} s, peak {r['peak_mb']:7.0f} MB, {r['triangles']} triangles"), flush=True)
+        # (tool, R, refine, graded, a candidate for the equal-error table rather than a row of the scale table)
+        runs = [(tool, 512, 0, True, False) for tool in ["sdfwb", *PEERS, *cpp]]
+        runs += [("sdfwb" if k == 0 else REFINED_TOOL, r, k, True, True) for r, k in SCALE_CANDIDATES]
+        runs += [(tool, 1024, 0, False, False) for tool in ["sdfwb", "VTK Flying Edges", *cpp]]
+        for tool, R, K, graded, candidate in runs:
+            command = [sys.executable, os.path.abspath(__file__), "--child", "sdfwb" if tool == REFINED_TOOL else tool,
+                       label, str(R), "--child-refine", str(K)] + (["--graded"] if graded else [])
+            run = subprocess.run(command, capture_output=True, text=True)
+            line = next((l for l in run.stdout.splitlines() if l.startswith("CHILD ")), None)
+            row = dict(label=label, tool=tool, R=R, refine=K, candidate=candidate)
+            if run.returncode != 0 or line is None:
+                row.update(failed=f"exit {run.returncode}: {run.stderr.strip()[-160:]}")
+            else:
+                row.update(failed=None, **json.loads(line[6:]))
+            scale_rows.append(row)
+            r = scale_rows[-1]
+            print(f"scale {label:14s} {tool:22s} R={grid_of(r):>7s} " + (r["failed"] if r["failed"] else
+                  f"{r['seconds']:7.2f} s, peak {r['peak_mb']:7.0f} MB, {r['triangles']} triangles"
+                  + (f", Hausdorff {r['hausdorff']:.3g}, Chamfer-L1 {r['chamfer_l1']:.3g}" if "hausdorff" in r else "")),
+                  flush=True)
 
 
 def rows_of(label, tool):
@@ -485,11 +514,6 @@ def equal_error(label):
     first = min(ours, key=lambda r: r["seconds"])
     return dict(best_h=best_h, best_c=best_c, peer_seconds=fastest_peer, ours=first,
                 ratio=fastest_peer / first["seconds"])
-
-
-def grid_of(row):
-    """R, or R + K for a grid of R cells refined K times."""
-    return f"{row['R']} + {row['refine']}" if row.get("refine") else str(row["R"])
 
 
 def fmt(v, spec=".3g"):
@@ -587,14 +611,50 @@ if scale_rows:
     lines.append("| shape | R | tool | whole call s | of which field s | peak memory MB | triangles | time / sdfwb's |\n"
                  "|---|---|---|---|---|---|---|---|")
     for r in scale_rows:
+        if r["candidate"]:
+            continue
         ours = next((o for o in scale_rows if o["label"] == r["label"] and o["R"] == r["R"] and o["tool"] == "sdfwb"
-                     and not o["failed"]), None)
+                     and not o["failed"] and not o["candidate"]), None)
         if r["failed"]:
             lines.append(f"| {r['label']} | {r['R']} | {r['tool']} | failed: {r['failed']} | | | | |")
             continue
         lines.append(f"| {r['label']} | {r['R']} | {r['tool']} | {r['seconds']:.2f} | {fmt(r['field_seconds'], '.2f')} | "
                      f"{r['peak_mb']:.0f} | {r['triangles']} | "
                      f"{(r['seconds'] / ours['seconds']) if ours else float('nan'):.2f}x |")
+    lines.append("")
+    lines.append("### Equal error at 512^3\n")
+    lines.append("The same processes graded (after their time and memory were taken): the best peer's Hausdorff and "
+                 "Chamfer-L1 at 512^3 (each the lowest of the peers), the fastest peer's whole call at 512^3, and "
+                 "sdfwb's fastest call whose mesh is at least as good on both, among 512 and the candidates "
+                 f"{', '.join(f'{r} + {k}' if k else str(r) for r, k in SCALE_CANDIDATES)} (R + K: refined K times), each "
+                 "in a process of its own. Ratio = peer time / sdfwb time.\n")
+    lines.append("| shape | best peer Hausdorff | best peer Chamfer-L1 | fastest peer | s | sdfwb R | sdfwb s | "
+                 "sdfwb peak MB | ratio |\n|---|---|---|---|---|---|---|---|---|")
+    for label in SCALE_SHAPES:
+        graded = [r for r in scale_rows if r["label"] == label and not r["failed"] and "hausdorff" in r]
+        peers = [r for r in graded if r["tool"] not in ("sdfwb", REFINED_TOOL)]
+        if not peers:
+            continue
+        best_h = min(r["hausdorff"] for r in peers)
+        best_c = min(r["chamfer_l1"] for r in peers)
+        fastest = min(peers, key=lambda r: r["seconds"])
+        ours = [r for r in graded if r["tool"] in ("sdfwb", REFINED_TOOL) and r["hausdorff"] <= best_h
+                and r["chamfer_l1"] <= best_c]
+        if not ours:
+            lines.append(f"| {label} | {best_h:.3g} | {best_c:.3g} | {fastest['tool']} | {fastest['seconds']:.2f} | "
+                         "not reached | | | **slower** |")
+            continue
+        first = min(ours, key=lambda r: r["seconds"])
+        lines.append(f"| {label} | {best_h:.3g} | {best_c:.3g} | {fastest['tool']} | {fastest['seconds']:.2f} | "
+                     f"{grid_of(first)} | {first['seconds']:.3f} | {first['peak_mb']:.0f} | "
+                     f"{fastest['seconds'] / first['seconds']:.2f}x |")
+    lines.append("")
+    lines.append("| shape | tool | R | whole call s | peak memory MB | triangles | Hausdorff | Chamfer-L1 |\n"
+                 "|---|---|---|---|---|---|---|---|")
+    for r in scale_rows:
+        if not r["failed"] and "hausdorff" in r:
+            lines.append(f"| {r['label']} | {r['tool']} | {grid_of(r)} | {r['seconds']:.3f} | {r['peak_mb']:.0f} | "
+                         f"{r['triangles']} | {r['hausdorff']:.3g} | {r['chamfer_l1']:.3g} |")
     lines.append("")
 lines.append("## Every run\n")
 lines.append("| shape | tool | R | whole call s | of which field s (form) | triangles | Hausdorff | Chamfer-L1 | "

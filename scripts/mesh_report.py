@@ -65,7 +65,8 @@ gl = json.loads(probe[probe.index("{"):]).get("gl_renderer", "") if "{" in probe
 fig, axis = plt.subplots(figsize=(7, 4.5))
 for index, (label, _, _) in enumerate(SHAPES):
     for refined in (False, True):
-        mine = [r for r in rows if r["label"] == label and bool(r.get("refine")) == refined]
+        mine = sorted((r for r in rows if r["label"] == label and bool(r.get("refine")) == refined),
+                      key=lambda r: r["mesh_seconds"])
         axis.loglog([r["mesh_seconds"] for r in mine], [r["hausdorff"] for r in mine], "s--" if refined else "o-",
                     color=f"C{index}", alpha=0.7 if refined else 1.0, label=f"{label}, refined" if refined else label)
         for r in mine:
