@@ -656,6 +656,38 @@ if scale_rows:
             lines.append(f"| {r['label']} | {r['tool']} | {grid_of(r)} | {r['seconds']:.3f} | {r['peak_mb']:.0f} | "
                          f"{r['triangles']} | {r['hausdorff']:.3g} | {r['chamfer_l1']:.3g} |")
     lines.append("")
+# Where a peer wins, from the tables above: said plainly, one line each.
+wins = []
+for s in summary_rows:
+    eq = s["eq"]
+    if eq and eq["ours"] is None:
+        wins.append(f"equal error, {s['label']} ({s['cls']}): no sdfwb call reaches the best peer's {TOP}^3 error.")
+    elif eq and eq["ratio"] < 1.0:
+        wins.append(f"equal error, {s['label']} ({s['cls']}): the fastest peer reaches its {TOP}^3 error in "
+                    f"{eq['peer_seconds']:.3f} s, sdfwb in {eq['ours']['seconds']:.3f} s ({grid_of(eq['ours'])}): "
+                    f"the peer is {1.0 / eq['ratio']:.2f}x faster.")
+for s in summary_rows:
+    o, fe = s["ours"], s["fe"]
+    if o and fe and o["seconds"] > fe["seconds"]:
+        wins.append(f"equal resolution {TOP}^3, {s['label']} ({s['cls']}): {fe['tool']} takes {fe['seconds']:.3f} s, "
+                    f"sdfwb {o['seconds']:.3f} s ({o['seconds'] / fe['seconds']:.2f}x).")
+    for p in s["peers"]:
+        for key, name in (("hausdorff", "Hausdorff"), ("chamfer_l1", "Chamfer-L1")):
+            if o and p["eval"][key] < o["eval"][key]:
+                wins.append(f"equal resolution {TOP}^3, {s['label']}: {p['tool']}'s {name} {p['eval'][key]:.3g} is below "
+                            f"sdfwb's {o['eval'][key]:.3g}.")
+for r in scale_rows:
+    if r["failed"] or r["candidate"] or r["tool"] == "sdfwb":
+        continue
+    ours = next((o for o in scale_rows if o["label"] == r["label"] and o["R"] == r["R"] and o["tool"] == "sdfwb"
+                 and not o["failed"] and not o["candidate"]), None)
+    if ours and r["seconds"] < ours["seconds"]:
+        wins.append(f"scale {r['R']}^3, {r['label']}: {r['tool']} takes {r['seconds']:.2f} s, sdfwb {ours['seconds']:.2f} s "
+                    f"({ours['seconds'] / r['seconds']:.2f}x slower), at {r['peak_mb']:.0f} MB against sdfwb's "
+                    f"{ours['peak_mb']:.0f} MB.")
+lines.append("## Where a peer wins\n")
+lines.append("\n".join(f"- {w}" for w in wins) if wins else "- Nowhere in this run.")
+lines.append("")
 lines.append("## Every run\n")
 lines.append("| shape | tool | R | whole call s | of which field s (form) | triangles | Hausdorff | Chamfer-L1 | "
              "normal consistency | F-score | edge Chamfer-L1 | edge F-score | closed |\n"
