@@ -90,7 +90,7 @@ FE_CPP = "VTK Flying Edges, C++ field"
 CPP_PEER = option("--cpp-peer", os.path.join(ROOT, "build", "bench", "flying_edges_peer"))
 # The shapes whose field the C++ peer has (bench/device/flying_edges_peer.cpp), by label.
 CPP_FIELDS = {"Sphere": "sphere", "Torus": "torus", "Box": "box", "Rotated box": "rotated-box",
-              "Rotated cylinder": "rotated-cylinder", "Open shell with a 0.03 wall": "shell"}
+              "Rotated cylinder": "rotated-cylinder", "Anvil": "anvil", "Open shell with a 0.03 wall": "shell"}
 
 
 # NumPy forms of the SDFs that can be written in NumPy (x, y, z broadcast; x along the last axis).
@@ -364,7 +364,8 @@ if "--child" in args:
     child_run(args[at + 1], args[at + 2], int(args[at + 3]), int(option("--child-refine", "0")), "--graded" in args)
     sys.exit(0)
 
-if not os.path.exists(CPP_PEER):
+CPP_SOURCE = os.path.join(ROOT, "bench", "device", "flying_edges_peer.cpp")
+if not os.path.exists(CPP_PEER) or os.path.getmtime(CPP_PEER) < os.path.getmtime(CPP_SOURCE):
     subprocess.run(["bash", os.path.join(ROOT, "bench", "device", "build_peer.sh"), CPP_PEER], check=True)
 renderer = gl_renderer()
 started = datetime.datetime.now(datetime.timezone.utc)

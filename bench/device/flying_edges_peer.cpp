@@ -3,7 +3,7 @@
 // vtkFlyingEdges3D (vtkSMPTools, every thread count tried), normals, gradients and scalars off. Prints one JSON
 // object; writes the fastest run's mesh as binary PLY for `sdfwb --batch grade`.
 //
-//   flying_edges_peer SHAPE R THREADS,... OUT.ply     SHAPE: sphere | torus | box | shell | rotated-box | rotated-cylinder
+//   flying_edges_peer SHAPE R THREADS,... OUT.ply     SHAPE: sphere | torus | box | shell | rotated-box | rotated-cylinder | anvil
 //
 // The fields are those of bench/bench_mesh_peers.py (the same radii, half sizes and tilt: 0.3 rad about (1, 2, 3)).
 // Built by bench/device/build_peer.sh against Debian's VTK 9.1; it is not part of the CMake build.
@@ -99,6 +99,67 @@ inline float rotatedCylinder(float x, float y, float z) {
     return std::min(std::max(dx, dy), 0.0f) + std::sqrt(ox * ox + oy * oy);
 }
 
+// The dataset's Anvil (dataset/Manufactured/Anvil.glsl) and the helpers it calls from shaders/lib/primitives.glsl
+// and dataset/lib/modelling.glsl, written out in C++ the same way.
+inline float length2(float x, float y) { return std::sqrt(x * x + y * y); }
+inline float roundBox(float x, float y, float z, float hx, float hy, float hz, float r) {
+    return boxOf(x, y, z, hx - r, hy - r, hz - r) - r;
+}
+inline float cylinderY(float x, float y, float z, float radius, float halfHeight) {
+    const float dx = length2(x, z) - radius, dy = std::fabs(y) - halfHeight;
+    return std::min(std::max(dx, dy), 0.0f) + length2(std::max(dx, 0.0f), std::max(dy, 0.0f));
+}
+inline float segment2(float px, float py, float ax, float ay, float bx, float by) {
+    const float pax = px - ax, pay = py - ay, bax = bx - ax, bay = by - ay;
+    const float h = std::clamp((pax * bax + pay * bay) / (bax * bax + bay * bay), 0.0f, 1.0f);
+    return length2(pax - bax * h, pay - bay * h);
+}
+inline float frustumY(float x, float y, float z, float r0, float r1, float h) {
+    const float qx = length2(x, z), qy = y;
+    float d = std::min(segment2(qx, qy, 0.0f, -h, r0, -h), segment2(qx, qy, 0.0f, h, r1, h));
+    d = std::min(d, segment2(qx, qy, r0, -h, r1, h));
+    const float t = std::clamp((qy + h) / (2.0f * h), 0.0f, 1.0f);
+    const bool inside = std::fabs(qy) <= h && qx <= r0 + (r1 - r0) * t;
+    return inside ? -d : d;
+}
+inline float roundCone(float px, float py, float pz, const float a[3], const float b[3], float ra, float rb) {
+    const float bax = b[0] - a[0], bay = b[1] - a[1], baz = b[2] - a[2];
+    const float pax = px - a[0], pay = py - a[1], paz = pz - a[2];
+    const float len = std::sqrt(bax * bax + bay * bay + baz * baz);
+    const float ux = bax / len, uy = bay / len, uz = baz / len;
+    const float y = pax * ux + pay * uy + paz * uz;
+    const float ex = pax - ux * y, ey = pay - uy * y, ez = paz - uz * y;
+    const float x = std::sqrt(ex * ex + ey * ey + ez * ez);
+    const float s = (ra - rb) / len, c = std::sqrt(1.0f - s * s);
+    const float k = -x * s + y * c;
+    if (k < 0.0f) return length2(x, y) - ra;
+    if (k > len * c) return length2(x, y - len) - rb;
+    return x * c + y * s - ra;
+}
+inline float smoothMin(float a, float b, float k) {
+    const float h = std::clamp(0.5f + 0.5f * (b - a) / k, 0.0f, 1.0f);
+    return b + (a - b) * h - k * h * (1.0f - h);
+}
+inline float anvil(float x, float y, float z) {
+    float face = roundBox(x + 0.15f, y - 0.32f, z, 0.5f, 0.12f, 0.2f, 0.02f);
+    const float hardy = boxOf(x + 0.5f, y - 0.32f, z, 0.04f, 0.2f, 0.04f);
+    const float pritchel = cylinderY(x + 0.36f, y - 0.32f, z, 0.025f, 0.2f);
+    face = std::max(face, -std::min(hardy, pritchel));
+    const float table = roundBox(x - 0.4f, y - 0.28f, z, 0.08f, 0.08f, 0.14f, 0.02f);
+    static const float hornA[3] = {0.42f, 0.26f, 0.0f}, hornB[3] = {0.9f, 0.3f, 0.0f};
+    float horn = roundCone(x, y, z, hornA, hornB, 0.14f, 0.02f);
+    horn = std::max(horn, y - 0.35f);
+    const float top = std::min(std::min(face, table), horn);
+    const float waist = boxOf(x + 0.12f, y + 0.05f, z, 0.16f, 0.25f, 0.09f);
+    float base = frustumY(x + 0.12f, y + 0.45f, z, 0.42f, 0.22f, 0.12f);
+    base = std::max(base, boxOf(x + 0.12f, y + 0.45f, z, 0.42f, 0.12f, 0.3f));
+    const float notch = std::min(boxOf(x + 0.12f, y + 0.58f, z, 0.5f, 0.06f, 0.12f), boxOf(x + 0.12f, y + 0.58f, z, 0.2f, 0.06f, 0.5f));
+    base = std::max(base, -notch);
+    float body = smoothMin(waist, base, 0.16f);
+    body = smoothMin(body, top, 0.14f);
+    return body;
+}
+
 // The (R+1)^3 lattice over [-1,1]^3, x fastest, in z-slabs over `threads` threads.
 template <Field F> void fill(std::vector<float>& values, int R, int threads) {
     const int n = R + 1;
@@ -176,7 +237,7 @@ std::vector<int> parseThreads(const std::string& text) {
 
 int main(int argc, char** argv) {
     if (argc != 5) {
-        std::cerr << "usage: flying_edges_peer sphere|torus|box|shell|rotated-box|rotated-cylinder R THREADS,... OUT.ply\n";
+        std::cerr << "usage: flying_edges_peer sphere|torus|box|shell|rotated-box|rotated-cylinder|anvil R THREADS,... OUT.ply\n";
         return 2;
     }
     const std::string shape = argv[1];
@@ -188,6 +249,7 @@ int main(int argc, char** argv) {
                                                     : shape == "shell"            ? fill<shell>
                                                     : shape == "rotated-box"      ? fill<rotatedBox>
                                                     : shape == "rotated-cylinder" ? fill<rotatedCylinder>
+                                                    : shape == "anvil"            ? fill<anvil>
                                                                                   : nullptr;
     if (!filler || R < 2) {
         std::cerr << "flying_edges_peer: unknown shape '" << shape << "' or R < 2\n";
