@@ -3,7 +3,8 @@
 // vtkFlyingEdges3D (vtkSMPTools, every thread count tried), normals, gradients and scalars off. Prints one JSON
 // object; writes the fastest run's mesh as binary PLY for `sdfwb --batch grade`.
 //
-//   flying_edges_peer SHAPE R THREADS,... OUT.ply     SHAPE: sphere | torus | box | shell | rotated-box | rotated-cylinder | anvil
+//   flying_edges_peer SHAPE R THREADS,... OUT.ply     SHAPE: sphere | torus | box | shell | rotated-box | rotated-cylinder |
+//   anvil
 //
 // The fields are those of bench/bench_mesh_peers.py (the same radii, half sizes and tilt: 0.3 rad about (1, 2, 3)).
 // Built by bench/device/build_peer.sh against Debian's VTK 9.1; it is not part of the CMake build.
@@ -153,7 +154,8 @@ inline float anvil(float x, float y, float z) {
     const float waist = boxOf(x + 0.12f, y + 0.05f, z, 0.16f, 0.25f, 0.09f);
     float base = frustumY(x + 0.12f, y + 0.45f, z, 0.42f, 0.22f, 0.12f);
     base = std::max(base, boxOf(x + 0.12f, y + 0.45f, z, 0.42f, 0.12f, 0.3f));
-    const float notch = std::min(boxOf(x + 0.12f, y + 0.58f, z, 0.5f, 0.06f, 0.12f), boxOf(x + 0.12f, y + 0.58f, z, 0.2f, 0.06f, 0.5f));
+    const float notch =
+        std::min(boxOf(x + 0.12f, y + 0.58f, z, 0.5f, 0.06f, 0.12f), boxOf(x + 0.12f, y + 0.58f, z, 0.2f, 0.06f, 0.5f));
     base = std::max(base, -notch);
     float body = smoothMin(waist, base, 0.16f);
     body = smoothMin(body, top, 0.14f);

@@ -488,7 +488,7 @@ Expected<std::pair<Mesh, MeshStats>> Extraction::run() {
     if (options.refine > 0) {
         const Topology coarse = checkTopology(mesh);
         const std::uint64_t coarseTriangles = mesh.triangleCount();
-        auto refined = detail::refineOntoSurface(mesh, field, options.refine, normalStep);
+        auto refined = detail::refineOntoSurface(mesh, field, options.refine, normalStep, options.refineTriangleLimit);
         if (!refined) return refined.error();
         stats.pointsEvaluated += refined->pointsEvaluated;
         stats.midpointsKept = refined->midpointsKept;

@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
+#include <string>
 #include <vector>
 
 namespace sdfwb::meshing::detail {
@@ -99,9 +101,16 @@ void split(Mesh& mesh, Edges& edges, bool last) {
 
 } // namespace
 
-Expected<RefineCounts> refineOntoSurface(Mesh& mesh, PointEvaluator& field, int levels, float gradientStep) {
+Expected<RefineCounts> refineOntoSurface(Mesh& mesh, PointEvaluator& field, int levels, float gradientStep,
+                                         std::uint64_t triangleLimit) {
     RefineCounts counts;
     if (levels <= 0 || mesh.indices.empty()) return counts;
+    const std::uint64_t coarse = mesh.triangleCount();
+    const std::uint64_t fine = levels >= 12 ? std::numeric_limits<std::uint64_t>::max() : coarse << (2 * levels);
+    if (fine > triangleLimit)
+        return makeError("mesh: refine " + std::to_string(levels) + " would cut the " + std::to_string(coarse) +
+                         " triangles into " + std::to_string(fine) + ", more than the " + std::to_string(triangleLimit) +
+                         " allowed; lower the refine levels or the resolution");
     Edges edges = findEdges(mesh);
     // The gradient at every vertex: evaluated (with f) at the coarse mesh's, then each midpoint's is
     // its edge's mean. The step f / |grad f|^2 along that mean is off the true one by the angle the

@@ -19,6 +19,8 @@ struct RefineCounts {
 // its box). A step longer than a quarter of the edge is not taken (a thin wall's other sheet, a
 // gradient that vanishes): the midpoint stays. Topology and orientation are kept: a watertight,
 // manifold mesh stays so, with 4^levels times the triangles.
-Expected<RefineCounts> refineOntoSurface(Mesh& mesh, PointEvaluator& field, int levels, float gradientStep);
+// Fails, leaving the mesh as it was, when the result would have more than `triangleLimit` triangles.
+Expected<RefineCounts> refineOntoSurface(Mesh& mesh, PointEvaluator& field, int levels, float gradientStep,
+                                         std::uint64_t triangleLimit);
 
 } // namespace sdfwb::meshing::detail

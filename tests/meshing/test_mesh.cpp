@@ -350,6 +350,14 @@ TEST_F(MeshTest, RefinementKeepsCreasesAndTheReportedTopologyHoldsOnTunnels) {
         hausdorff.push_back(error->hausdorff);
     }
     EXPECT_LT(hausdorff[1], 1.05f * hausdorff[0] + 1e-6f) << hausdorff[0] << " -> " << hausdorff[1];
+    // More triangles than the limit: a message naming the counts, not an allocation that fails.
+    meshing::MeshOptions tooFine;
+    tooFine.resolution = 32;
+    tooFine.refine = 4;
+    tooFine.refineTriangleLimit = 100000;
+    auto refused = meshing::extractMesh(box, tooFine, {});
+    ASSERT_FALSE(refused);
+    EXPECT_NE(refused.error().message.find("refine 4 would cut the"), std::string::npos) << refused.error().message;
     for (const char* file : {"dataset/Fractal/MengerSponge.glsl", "tests/foreign/42_hg_mercury_arcade.glsl"}) {
         meshing::MeshOptions options;
         options.resolution = 64;

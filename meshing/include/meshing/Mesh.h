@@ -45,6 +45,9 @@ struct MeshOptions {
     // fraction of its cost. Creases stay where the grid put them; features smaller than the coarse
     // grid's cells stay missed. 0: none.
     int refine = 0;
+    // The most triangles refinement may make (4^refine times the coarse mesh's): beyond it the
+    // extraction fails with a message rather than run out of memory or of 32-bit indices.
+    std::uint64_t refineTriangleLimit = std::uint64_t(1) << 27;
 };
 
 struct Topology {
