@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <bitset>
 #include <chrono>
 #include <cmath>
 #include <iterator>
@@ -174,6 +175,12 @@ constexpr int kPoints = kSide * kSide * kSide;
 constexpr int kEdgeSlots = 3 * kPoints;
 constexpr int kCells = kBlock * kBlock * kBlock;
 constexpr int kStride[3] = {1, kSide, kSide* kSide};
+// Sub-blocks: the cubes of kSub^3 cells a block is cut into (64 a block), in octants of kOctant^3.
+constexpr int kSub = 2;
+constexpr int kSubsPerAxis = kBlock / kSub;
+constexpr int kOctant = kBlock / 2;
+static_assert(kSubsPerAxis * kSubsPerAxis * kSubsPerAxis == 64, "a sub-block mask is one 64-bit word");
+constexpr int subIndex(int x, int y, int z) { return (z * kSubsPerAxis + y) * kSubsPerAxis + x; }
 
 template <int Bits> struct RankedBits {
     static constexpr int kWords = (Bits + 63) / 64;
@@ -388,6 +395,10 @@ private:
     float estimateBound(const std::vector<float>& centreValues, const std::vector<float>& centreGradients) const;
     void keep(std::size_t block);
     Expected<void> evaluateBlocks();
+    bool maySurface(float f, double halfDiagonal) const;
+    Expected<void> selectSubBlocks(detail::PointEvaluator& lattice, std::size_t from, std::size_t to);
+    Expected<void> evaluateWanted(detail::PointEvaluator& lattice);
+    bool wantMoreSubBlocks();
     void keepNeighboursAcrossCrossedFaces(std::size_t slot);
     void findEdges();
     Expected<void> placeCrossings();
@@ -415,9 +426,11 @@ private:
     detail::PointEvaluator field; // f (and its gradient) at the points each step chooses
     const CubeTables& tables = cube();
     int blocksPerAxis = 0;
-    std::vector<std::array<int, 3>> kept; // the blocks that may hold surface
-    std::vector<std::int32_t> blockSlot;  // each block's index in kept, or -1
-    std::vector<float> values;            // the kept blocks' grid points, kPoints a block
+    std::vector<std::array<int, 3>> kept;                 // the blocks that may hold surface
+    std::vector<std::int32_t> blockSlot;                  // each block's index in kept, or -1
+    std::vector<float> values;                            // the kept blocks' grid points, kPoints a block
+    std::vector<std::uint64_t> wantedSubs, evaluatedSubs; // per kept block: a bit per sub-block (subIndex)
+    std::vector<std::bitset<kPoints>> evaluatedPoints;    // per kept block: the points holding f, not a centre's value
     std::vector<RankedBits<kEdgeSlots>> blockEdges;
     std::vector<Edge> edges;       // with a sign change
     std::vector<float> edgeValues; // f at the start and the end of each edge
@@ -532,12 +545,8 @@ Expected<void> Extraction::selectBlocks() {
     stats.lipschitzUsed = bound;
     const double halfDiagonal = 0.5 * glm::length(grid.step * double(kBlock));
     blockSlot.assign(centreValues.size(), -1);
-    for (std::size_t b = 0; b < centreValues.size(); ++b) {
-        const float f = centreValues[b];
-        const bool maySurface =
-            bound <= 0.0f || !std::isfinite(f) || std::abs(double(f)) <= double(bound) * halfDiagonal * 1.001 + 1e-6;
-        if (maySurface) keep(b);
-    }
+    for (std::size_t b = 0; b < centreValues.size(); ++b)
+        if (maySurface(centreValues[b], halfDiagonal)) keep(b);
     return {};
 }
 
@@ -570,30 +579,240 @@ void Extraction::keep(std::size_t block) {
 }
 
 // 2. The grid points of the kept blocks, (B+1)^3 per block in a dense array (a point on a face
-// two kept blocks share is evaluated by both, at the same coordinates, so to the same value). A
-// skipped block whose face with a kept block the surface crosses is kept and evaluated after all,
-// until no crossed face leads to a skipped block: a bound that was too low loses no connected surface.
+// two kept blocks share is evaluated by both, at the same coordinates, so to the same value). Only
+// the points of sub-blocks that may hold surface are evaluated (selectSubBlocks); the others hold
+// the value at the centre of the octant or sub-block the bound skipped. A skipped block whose face
+// with a kept block the surface crosses is kept and evaluated after all, until no crossed face
+// leads to a skipped block: a bound that was too low loses no connected surface.
 Expected<void> Extraction::evaluateBlocks() {
     detail::PointEvaluator lattice;
     if (auto ok = lattice.build(sdf, "analysis/lattice.glsl", options.time, options.parameters); !ok) return ok.error();
     lattice.setClip(clipLow, clipHigh);
-    std::vector<float> firstPoints, fresh;
     for (std::size_t from = 0; from < kept.size();) {
-        firstPoints.clear();
-        for (std::size_t slot = from; slot < kept.size(); ++slot)
-            for (int a = 0; a < 3; ++a) firstPoints.push_back(float(kept[slot][std::size_t(a)] * kBlock));
-        if (auto ok = lattice.evaluateLattice(firstPoints, glm::vec3(grid.origin), glm::vec3(grid.step), kBlock, grid.n, fresh);
-            !ok)
-            return ok.error();
-        values.insert(values.end(), fresh.begin(), fresh.end());
         const std::size_t to = kept.size();
-        for (std::size_t slot = from; slot < to; ++slot) keepNeighboursAcrossCrossedFaces(slot);
+        values.resize(to * std::size_t(kPoints));
+        wantedSubs.resize(to, 0);
+        evaluatedSubs.resize(to, 0);
+        evaluatedPoints.resize(to);
+        if (auto ok = selectSubBlocks(lattice, from, to); !ok) return ok.error();
+        do {
+            if (auto ok = evaluateWanted(lattice); !ok) return ok.error();
+        } while (wantMoreSubBlocks());
+        // Every block again: a repair in a later round can change an earlier block's face.
+        for (std::size_t slot = 0; slot < to; ++slot) keepNeighboursAcrossCrossedFaces(slot);
         from = to;
         if (progress.isCancelled()) return makeError("mesh: cancelled");
     }
     stats.boundsCutPoints = lattice.clipped();
-    stats.pointsEvaluated += values.size();
     return {};
+}
+
+bool Extraction::maySurface(float f, double halfDiagonal) const {
+    const float bound = stats.lipschitzUsed;
+    return bound <= 0.0f || !std::isfinite(f) || std::abs(double(f)) <= double(bound) * halfDiagonal * 1.001 + 1e-6;
+}
+
+// 2a. Which sub-blocks of blocks [from, to) may hold surface: the field at the centres of each
+// block's eight octants, then at the centres of the eight sub-blocks of each octant that may (each
+// by the bound and its half diagonal, as the blocks were). The centres are grid points and keep
+// their values; the other points of a skipped cube take its centre's. A block cut short by the
+// grid's end is evaluated whole.
+Expected<void> Extraction::selectSubBlocks(detail::PointEvaluator& lattice, std::size_t from, std::size_t to) {
+    struct Cube {
+        std::size_t slot;
+        std::array<int, 3> lo; // local corner, in cells
+    };
+    std::vector<float> indices, f;
+    auto centres = [&](const std::vector<Cube>& cubes, int size) -> Expected<void> {
+        indices.clear();
+        indices.reserve(3 * cubes.size());
+        for (const Cube& c : cubes)
+            for (int a = 0; a < 3; ++a)
+                indices.push_back(float(kept[c.slot][std::size_t(a)] * kBlock + c.lo[std::size_t(a)] + size / 2));
+        if (auto ok = lattice.evaluateLattice(indices, glm::vec3(grid.origin), glm::vec3(grid.step), 0, grid.n, f); !ok)
+            return ok.error();
+        stats.pointsEvaluated += f.size();
+        for (std::size_t q = 0; q < cubes.size(); ++q) {
+            const Cube& c = cubes[q];
+            const int p = (c.lo[2] + size / 2) * kStride[2] + (c.lo[1] + size / 2) * kStride[1] + c.lo[0] + size / 2;
+            values[c.slot * std::size_t(kPoints) + std::size_t(p)] = f[q];
+            evaluatedPoints[c.slot].set(std::size_t(p));
+        }
+        return {};
+    };
+    // The points of a skipped cube not evaluated already take its centre's value.
+    auto fill = [&](const Cube& c, int size, float value) {
+        float* v = values.data() + c.slot * std::size_t(kPoints);
+        const std::bitset<kPoints>& done = evaluatedPoints[c.slot];
+        for (int k = c.lo[2]; k <= c.lo[2] + size; ++k)
+            for (int j = c.lo[1]; j <= c.lo[1] + size; ++j)
+                for (int i = c.lo[0]; i <= c.lo[0] + size; ++i)
+                    if (const int p = (k * kSide + j) * kSide + i; !done.test(std::size_t(p))) v[p] = value;
+    };
+    std::vector<Cube> octants, subs;
+    for (std::size_t slot = from; slot < to; ++slot) {
+        const auto& b = kept[slot];
+        if (b[0] * kBlock + kBlock > grid.n || b[1] * kBlock + kBlock > grid.n || b[2] * kBlock + kBlock > grid.n) {
+            wantedSubs[slot] = ~std::uint64_t(0);
+            continue;
+        }
+        for (int o = 0; o < 8; ++o) octants.push_back({slot, {(o & 1) * kOctant, (o >> 1 & 1) * kOctant, (o >> 2) * kOctant}});
+    }
+    if (auto ok = centres(octants, kOctant); !ok) return ok.error();
+    const double octantHalfDiagonal = 0.5 * glm::length(grid.step * double(kOctant));
+    for (std::size_t q = 0; q < octants.size(); ++q) {
+        const Cube& o = octants[q];
+        if (!maySurface(f[q], octantHalfDiagonal)) {
+            fill(o, kOctant, f[q]);
+            continue;
+        }
+        for (int s = 0; s < 8; ++s)
+            subs.push_back({o.slot, {o.lo[0] + (s & 1) * kSub, o.lo[1] + (s >> 1 & 1) * kSub, o.lo[2] + (s >> 2) * kSub}});
+    }
+    if (auto ok = centres(subs, kSub); !ok) return ok.error();
+    const double subHalfDiagonal = 0.5 * glm::length(grid.step * double(kSub));
+    for (std::size_t q = 0; q < subs.size(); ++q) {
+        const Cube& s = subs[q];
+        if (maySurface(f[q], subHalfDiagonal))
+            wantedSubs[s.slot] |= std::uint64_t(1) << subIndex(s.lo[0] / kSub, s.lo[1] / kSub, s.lo[2] / kSub);
+        else
+            fill(s, kSub, f[q]);
+    }
+    return {};
+}
+
+// 2b. The grid points of every wanted sub-block not evaluated yet, each once per block: a lattice
+// of single points, so each has the float position any block's lattice gives it. Chunks of blocks
+// list their points on several threads, and write the values back the same way.
+Expected<void> Extraction::evaluateWanted(detail::PointEvaluator& lattice) {
+    const std::size_t count = wantedSubs.size();
+    const std::size_t chunks = chunkCount(count, 256);
+    std::vector<std::vector<std::uint16_t>> local(chunks); // per chunk, per block in order: its new points
+    std::vector<std::vector<std::uint32_t>> perBlock(chunks);
+    forEachChunk(count, chunks, [&](std::size_t chunk, std::size_t first, std::size_t end) {
+        for (std::size_t slot = first; slot < end; ++slot) {
+            std::uint64_t fresh = wantedSubs[slot] & ~evaluatedSubs[slot];
+            evaluatedSubs[slot] |= fresh;
+            std::bitset<kPoints>& done = evaluatedPoints[slot];
+            const std::size_t before = local[chunk].size();
+            for (; fresh != 0; fresh &= fresh - 1) {
+                const int s = std::countr_zero(fresh);
+                const int lo[3] = {kSub * (s % kSubsPerAxis), kSub * (s / kSubsPerAxis % kSubsPerAxis),
+                                   kSub * (s / (kSubsPerAxis * kSubsPerAxis))};
+                for (int k = lo[2]; k <= lo[2] + kSub; ++k)
+                    for (int j = lo[1]; j <= lo[1] + kSub; ++j)
+                        for (int i = lo[0]; i <= lo[0] + kSub; ++i)
+                            if (const int p = (k * kSide + j) * kSide + i; !done.test(std::size_t(p))) {
+                                done.set(std::size_t(p));
+                                local[chunk].push_back(std::uint16_t(p));
+                            }
+            }
+            perBlock[chunk].push_back(std::uint32_t(local[chunk].size() - before));
+        }
+    });
+    std::vector<std::size_t> offset(chunks + 1, 0);
+    for (std::size_t c = 0; c < chunks; ++c) offset[c + 1] = offset[c] + local[c].size();
+    if (offset[chunks] == 0) return {};
+    std::vector<float> indices(3 * offset[chunks]), fresh;
+    auto walk = [&](std::size_t chunk, std::size_t first, std::size_t end, auto&& visit) {
+        std::size_t at = offset[chunk], q = 0;
+        for (std::size_t slot = first; slot < end; ++slot)
+            for (std::uint32_t n = perBlock[chunk][slot - first]; n > 0; --n, ++q, ++at) visit(slot, local[chunk][q], at);
+    };
+    forEachChunk(count, chunks, [&](std::size_t chunk, std::size_t first, std::size_t end) {
+        walk(chunk, first, end, [&](std::size_t slot, int p, std::size_t at) {
+            const auto& b = kept[slot];
+            indices[3 * at] = float(b[0] * kBlock + p % kSide);
+            indices[3 * at + 1] = float(b[1] * kBlock + p / kSide % kSide);
+            indices[3 * at + 2] = float(b[2] * kBlock + p / (kSide * kSide));
+        });
+    });
+    if (auto ok = lattice.evaluateLattice(indices, glm::vec3(grid.origin), glm::vec3(grid.step), 0, grid.n, fresh); !ok)
+        return ok.error();
+    forEachChunk(count, chunks, [&](std::size_t chunk, std::size_t first, std::size_t end) {
+        walk(chunk, first, end,
+             [&](std::size_t slot, int p, std::size_t at) { values[slot * std::size_t(kPoints) + std::size_t(p)] = fresh[at]; });
+    });
+    stats.pointsEvaluated += fresh.size();
+    return {};
+}
+
+// The sub-blocks of a block that hold local grid point (i, j, k).
+std::uint64_t subsHolding(int i, int j, int k) {
+    std::uint64_t bits = 0;
+    auto candidates = [](int c, int out[2]) {
+        int count = 0;
+        if (c / kSub < kSubsPerAxis) out[count++] = c / kSub;
+        if (c % kSub == 0 && c > 0) out[count++] = c / kSub - 1;
+        return count;
+    };
+    int x[2], y[2], z[2];
+    const int nx = candidates(i, x), ny = candidates(j, y), nz = candidates(k, z);
+    for (int a = 0; a < nx; ++a)
+        for (int b = 0; b < ny; ++b)
+            for (int c = 0; c < nz; ++c) bits |= std::uint64_t(1) << subIndex(x[a], y[b], z[c]);
+    return bits;
+}
+
+// 2c. Where a bound that was too low skipped surface, more sub-blocks are wanted: a skipped one
+// whose points are not all of one sign (so every cell the surface crosses has all eight corners
+// evaluated), and those holding a point on a block's face that is not evaluated in this block and
+// whose sign the neighbouring block's copy contradicts (so both blocks see the same crossings on
+// their shared face). Returns whether any was.
+bool Extraction::wantMoreSubBlocks() {
+    const std::size_t count = wantedSubs.size();
+    const std::size_t chunks = chunkCount(count, 64);
+    std::vector<char> added(chunks, 0);
+    forEachChunk(count, chunks, [&](std::size_t chunk, std::size_t first, std::size_t end) {
+        for (std::size_t slot = first; slot < end; ++slot) {
+            const float* v = values.data() + slot * std::size_t(kPoints);
+            std::uint64_t more = 0;
+            for (std::uint64_t skipped = ~wantedSubs[slot]; skipped != 0; skipped &= skipped - 1) {
+                const int s = std::countr_zero(skipped);
+                const int lo[3] = {kSub * (s % kSubsPerAxis), kSub * (s / kSubsPerAxis % kSubsPerAxis),
+                                   kSub * (s / (kSubsPerAxis * kSubsPerAxis))};
+                bool seenInside = false, seenOutside = false;
+                for (int k = lo[2]; k <= lo[2] + kSub; ++k)
+                    for (int j = lo[1]; j <= lo[1] + kSub; ++j)
+                        for (int i = lo[0]; i <= lo[0] + kSub; ++i) {
+                            const float f = v[(k * kSide + j) * kSide + i];
+                            if (std::isfinite(f)) (inside(f) ? seenInside : seenOutside) = true;
+                        }
+                if (seenInside && seenOutside) more |= std::uint64_t(1) << s;
+            }
+            const auto& b = kept[slot];
+            const std::bitset<kPoints>& done = evaluatedPoints[slot];
+            for (int axis = 0; axis < 3; ++axis)
+                for (int side = 0; side < 2; ++side) {
+                    std::array<int, 3> next = b;
+                    next[std::size_t(axis)] += side ? 1 : -1;
+                    if (next[std::size_t(axis)] < 0 || next[std::size_t(axis)] >= blocksPerAxis) continue;
+                    const std::int32_t other =
+                        blockSlot[(std::size_t(next[2]) * std::size_t(blocksPerAxis) + std::size_t(next[1])) *
+                                      std::size_t(blocksPerAxis) +
+                                  std::size_t(next[0])];
+                    if (other < 0) continue;
+                    const float* w = values.data() + std::size_t(other) * std::size_t(kPoints);
+                    const int u = (axis + 1) % 3, t = (axis + 2) % 3;
+                    for (int j = 0; j < kSide; ++j)
+                        for (int i = 0; i < kSide; ++i) {
+                            int local[3];
+                            local[axis] = side ? kBlock : 0;
+                            local[u] = i;
+                            local[t] = j;
+                            const int p = local[0] * kStride[0] + local[1] * kStride[1] + local[2] * kStride[2];
+                            if (done.test(std::size_t(p))) continue;
+                            const int q = p + (side ? -kBlock : kBlock) * kStride[axis];
+                            if (crosses(v[p], w[q])) more |= subsHolding(local[0], local[1], local[2]);
+                        }
+                }
+            if (more & ~wantedSubs[slot]) {
+                wantedSubs[slot] |= more;
+                added[chunk] = 1;
+            }
+        }
+    });
+    return std::find(added.begin(), added.end(), 1) != added.end();
 }
 
 void Extraction::keepNeighboursAcrossCrossedFaces(std::size_t slot) {

@@ -94,7 +94,7 @@ Expected<void> PointEvaluator::evaluateLattice(const std::vector<float>& firstPo
     if (count == 0) return {};
     sampling::SamplingJob job = this->job(count);
     job.inputPoints = firstPoints.data();
-    job.inputTableFloats = firstPoints.size();
+    job.inputTableFloats = block == 0 ? 0 : firstPoints.size(); // single points go up chunk by chunk
     const float parameters[8] = {origin.x, origin.y, origin.z, float(block), step.x, step.y, step.z, float(n)};
     std::copy(std::begin(parameters), std::end(parameters), job.parameters);
     auto report = sampling::sampleInto(m_compute, job, nullptr, distances.data(), nullptr, {});

@@ -26,7 +26,8 @@ public:
     Expected<void> evaluate(const std::vector<float>& points, std::vector<float>& distances, std::vector<float>* gradients,
                             float gradientStep = 1e-4f);
     // With the analysis/lattice.glsl pattern: the field at every grid point of each block, (B+1)^3
-    // per block in x-fastest order. firstPoints: each block's first grid index (3 floats).
+    // per block in x-fastest order. firstPoints: each block's first grid index (3 floats). block 0:
+    // a list of single grid points (any number: they are uploaded chunk by chunk).
     Expected<void> evaluateLattice(const std::vector<float>& firstPoints, glm::vec3 origin, glm::vec3 step, int block, int n,
                                    std::vector<float>& distances);
     // n rows of a generating sampler (surface): positions, distances and gradients.
