@@ -333,6 +333,7 @@ template <class V> void fields(V& v, MeshReport& r) {
     v("split_faces", r.splitFaces);
     v("bounds_cut_points", r.boundsCutPoints);
     v("collinear_flips", r.collinearFlips);
+    v("folded_quads_turned", r.foldedQuadsTurned);
     v("midpoints_kept", r.midpointsKept);
     v("self_intersections", r.selfIntersections);
     v("mesh_seconds", r.meshSeconds);

@@ -147,6 +147,7 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
     report.splitFaces = stats.splitFaces;
     report.boundsCutPoints = stats.boundsCutPoints;
     report.collinearFlips = stats.collinearFlips;
+    report.foldedQuadsTurned = stats.foldedQuadsTurned;
     report.midpointsKept = stats.midpointsKept;
     if (request.selfIntersections) report.selfIntersections = meshing::countSelfIntersections(mesh);
     report.meshSeconds = stats.seconds;

@@ -415,7 +415,7 @@ private:
     }
     void splitJoinedFaces();
     Expected<void> projectVertices();
-    void connectQuads();
+    Expected<void> connectQuads();
 
     const shaders::PreparedSdf& sdf;
     const MeshOptions& options;
@@ -493,7 +493,7 @@ Expected<std::pair<Mesh, MeshStats>> Extraction::run() {
     phase("place vertices");
     if (auto ok = projectVertices(); !ok) return ok.error();
     phase("project vertices");
-    connectQuads();
+    if (auto ok = connectQuads(); !ok) return ok.error();
     const auto weldTolerance = float(1e-6 * std::min({grid.step.x, grid.step.y, grid.step.z}));
     weldCoincidentVertices(mesh, weldTolerance);
     stats.collinearFlips = flipCollinearTriangles(mesh);
@@ -1332,11 +1332,19 @@ Expected<void> Extraction::projectVertices() {
 
 // 5. A quad per sign-changing edge (from the block that owns it), wound so that it faces
 // outward (towards f > 0).
-void Extraction::connectQuads() {
+Expected<void> Extraction::connectQuads() {
     const std::uint32_t firstFaceVertexIndex = std::uint32_t(cellVertexCount);
     const int offsets[4][2] = {{-1, -1}, {0, -1}, {0, 0}, {-1, 0}}; // the cells around an edge, in (u, v)
     const std::size_t chunks = chunkCount(edges.size(), 4096);
     std::vector<std::vector<std::uint32_t>> triangles(chunks); // each chunk's, joined in edge order
+    struct Folded {
+        std::size_t at; // its first triangle's first index in its chunk's triangles
+        std::array<std::uint32_t, 4> quad;
+        int apex; // the diagonal (apex, apex + 2) the shorter-diagonal rule chose
+    };
+    std::vector<std::vector<Folded>> folded(chunks);
+    constexpr double kFold = 0.01;
+    const double cellSize = std::min({grid.step.x, grid.step.y, grid.step.z});
     forEachChunk(edges.size(), chunks, [&](std::size_t chunk, std::size_t first, std::size_t end) {
         std::vector<std::uint32_t>& out = triangles[chunk];
         out.reserve(6 * (end - first));
@@ -1416,6 +1424,15 @@ void Extraction::connectQuads() {
                 const float d13 = glm::length(mesh.vertices[polygon[1]] - mesh.vertices[polygon[3]]);
                 apex = d02 <= d13 ? 0 : 1;
                 if (!(smallest(apex) > 0.0) && smallest(1 - apex) > 0.0) apex = 1 - apex;
+                // A quad folded by more than kFold of a cell (across a crease) is decided by the field
+                // at its diagonals' middles, after this pass.
+                const glm::dvec3 p0(mesh.vertices[polygon[0]]), p1(mesh.vertices[polygon[1]]), p2(mesh.vertices[polygon[2]]),
+                    p3(mesh.vertices[polygon[3]]);
+                const glm::dvec3 normal = glm::cross(p2 - p0, p3 - p1);
+                const double length = glm::length(normal);
+                if (length > 0.0 && std::abs(glm::dot(0.5 * (p0 + p2 - p1 - p3), normal)) > kFold * cellSize * length &&
+                    smallest(0) > 0.0 && smallest(1) > 0.0)
+                    folded[chunk].push_back({out.size(), {polygon[0], polygon[1], polygon[2], polygon[3]}, apex});
             } else {
                 double best = -1.0;
                 for (int k = 0; k < size; ++k)
@@ -1429,10 +1446,37 @@ void Extraction::connectQuads() {
                 out.insert(out.end(), {polygon[apex], polygon[(apex + k) % size], polygon[(apex + k + 1) % size]});
         }
     });
+    // Each folded quad takes the diagonal whose middle lies nearer the surface (|f| smaller by a
+    // tenth at least): the one along a crease rather than the one across it, which cuts the crease
+    // off (or fills a groove) by up to the fold.
+    std::vector<float> middles, f;
+    for (const auto& part : folded)
+        for (const Folded& q : part)
+            for (int d = 0; d < 2; ++d) {
+                const glm::vec3 m = 0.5f * (mesh.vertices[q.quad[std::size_t(d)]] + mesh.vertices[q.quad[std::size_t(d + 2)]]);
+                middles.insert(middles.end(), {m.x, m.y, m.z});
+            }
+    if (auto ok = field.evaluate(middles, f, nullptr); !ok) return ok.error();
+    stats.pointsEvaluated += f.size();
+    std::size_t at = 0;
+    for (std::size_t chunk = 0; chunk < chunks; ++chunk)
+        for (const Folded& q : folded[chunk]) {
+            const float along02 = std::abs(f[at]), along13 = std::abs(f[at + 1]);
+            at += 2;
+            if (!std::isfinite(along02) || !std::isfinite(along13)) continue;
+            const int apex = along02 <= along13 ? 0 : 1;
+            if (apex == q.apex || (apex == 0 ? along02 : along13) > 0.9f * (apex == 0 ? along13 : along02)) continue;
+            std::uint32_t* t = triangles[chunk].data() + q.at;
+            const std::uint32_t a = q.quad[std::size_t(apex)], b = q.quad[std::size_t(apex + 1)],
+                                c = q.quad[std::size_t(apex + 2)], d = q.quad[std::size_t((apex + 3) % 4)];
+            t[0] = a, t[1] = b, t[2] = c, t[3] = a, t[4] = c, t[5] = d;
+            ++stats.foldedQuadsTurned;
+        }
     std::size_t total = mesh.indices.size();
     for (const auto& part : triangles) total += part.size();
     mesh.indices.reserve(total);
     for (const auto& part : triangles) mesh.indices.insert(mesh.indices.end(), part.begin(), part.end());
+    return {};
 }
 
 } // namespace

@@ -933,6 +933,32 @@ TEST_F(MeshTest, ARotatedBoxKeepsItsCornersAndEdges) {
     }
 }
 
+// A quad folded across a crease (its diagonals' middles more than a hundredth of a cell apart
+// along its normal) takes the diagonal whose middle lies nearer the surface. With the shorter
+// diagonal always, bench_mesh_peers.py's rotated box at 64 cells had a triangle cutting a crease
+// 8.7e-4 inside the box (the mesh's largest distance from the surface); now 3.7e-4, at a corner.
+// A smooth sphere has no quad folded that far, and keeps its triangles.
+TEST_F(MeshTest, AQuadFoldedAcrossACreaseTakesTheDiagonalAlongIt) {
+    const shaders::PreparedSdf box = source(
+        "float sdf(vec3 p) { vec3 q = abs(mat3(9.585267399e-01, -2.305627908e-01, 1.675329472e-01, 2.433237939e-01, "
+        "9.680974922e-01, -5.983959278e-02, -1.483914426e-01, 9.812260210e-02, 9.840487461e-01) * p) - vec3(0.55, 0.4, 0.3); "
+        "return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0); }");
+    meshing::MeshOptions options;
+    options.resolution = 64;
+    auto result = meshing::extractMesh(box, options, {});
+    ASSERT_TRUE(result) << result.error().message;
+    EXPECT_GT(result->second.foldedQuadsTurned, 0u);
+    EXPECT_TRUE(closedAndOutward(result->first));
+    meshing::ErrorOptions errorOptions;
+    errorOptions.meshPoints = errorOptions.surfacePoints = 300000;
+    auto error = meshing::measureError(box, result->first, errorOptions);
+    ASSERT_TRUE(error) << error.error().message;
+    EXPECT_LT(error->meshToSurfaceMax, 5e-4) << "a triangle still cuts a crease";
+    auto sphere = meshing::extractMesh(source(kSphere), options, {});
+    ASSERT_TRUE(sphere) << sphere.error().message;
+    EXPECT_EQ(sphere->second.foldedQuadsTurned, 0u);
+}
+
 // A corner whose tip pokes into the next cell, which has a vertex of its own (it sees two of the
 // corner's faces and puts its vertex on their edge): the corner's vertex goes there, within half a
 // cell. Clamped into its own cell, as it was, it left the corner cut off: on bench_mesh_peers.py's

@@ -74,6 +74,7 @@ struct MeshStats {
     std::uint64_t verticesBesideTheirCell = 0; // on a sharp edge that passes beside the cell, at most half a cell out
     std::uint64_t creasesOnFaces = 0;          // flat patches moved onto a crease lying on their upper face
     std::uint64_t collinearFlips = 0;          // zero-area triangles removed by an edge flip (flipCollinearTriangles)
+    std::uint64_t foldedQuadsTurned = 0;       // folded quads given the diagonal whose middle lies nearer the surface
     std::uint64_t splitFaces = 0;              // ambiguous faces both of whose cells join its two segments: a vertex per segment
     std::uint64_t midpointsKept = 0;           // refinement midpoints left off the surface (no step a quarter edge or shorter)
     // With refine > 0: the refined mesh's topology, from the coarse mesh's check (subdividedTopology)

@@ -384,6 +384,7 @@ struct MeshReport {
                   splitFaces = 0;
     std::uint64_t boundsCutPoints = 0;              // grid points inside the shape beyond the bounds: closed by caps there
     std::uint64_t collinearFlips = 0;               // zero-area triangles (vertices in a row) flipped away
+    std::uint64_t foldedQuadsTurned = 0;            // quads across a crease given the diagonal along it
     std::uint64_t midpointsKept = 0;                // refinement midpoints that took no step onto the surface
     std::optional<std::uint64_t> selfIntersections; // crossing triangle pairs, when asked for
     double meshSeconds = 0.0;
