@@ -859,10 +859,14 @@ void Extraction::findEdges() {
             const float* v = values.data() + slot * std::size_t(kPoints);
             const bool last[3] = {b[0] == blocksPerAxis - 1, b[1] == blocksPerAxis - 1, b[2] == blocksPerAxis - 1};
             RankedBits<kEdgeSlots>& bits = blockEdges[slot];
+            const std::bitset<kPoints>& evaluated = evaluatedPoints[slot];
             for (int k = 0; k < kSide; ++k)
                 for (int j = 0; j < kSide; ++j)
                     for (int i = 0; i < kSide; ++i) {
                         const int p = (k * kSide + j) * kSide + i;
+                        // A point no evaluated sub-block holds lies in skipped ones only, whose points
+                        // have one sign (wantMoreSubBlocks): none of its edges crosses.
+                        if (!evaluated.test(std::size_t(p))) continue;
                         const int local[3] = {i, j, k};
                         for (int axis = 0; axis < 3; ++axis) {
                             if (local[axis] == kBlock) continue;
@@ -998,9 +1002,11 @@ void Extraction::placeVertices() {
             const auto& b = kept[slot];
             const float* v = values.data() + slot * std::size_t(kPoints);
             const RankedBits<kEdgeSlots>& bits = blockEdges[slot];
+            const std::uint64_t evaluated = evaluatedSubs[slot];
             for (int k = 0; k < kBlock && b[2] * kBlock + k < grid.n; ++k)
                 for (int j = 0; j < kBlock && b[1] * kBlock + j < grid.n; ++j)
                     for (int i = 0; i < kBlock && b[0] * kBlock + i < grid.n; ++i) {
+                        if (!(evaluated >> subIndex(i / kSub, j / kSub, k / kSub) & 1u)) continue; // one sign throughout
                         const int p = (k * kSide + j) * kSide + i;
                         float corner[8];
                         int signs = 0;
