@@ -22,6 +22,7 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -410,6 +411,14 @@ private:
     const CellRecord* recordAt(const std::int64_t c[3]) const;
     std::uint32_t crossingOf(const std::int64_t c[3], int l) const;
     template <class Visit> void forEachCrossingOf(const std::int64_t c[3], Visit&& visit) const;
+    // The block next to block b across its face (axis, side: 0 below, 1 above); none past the grid.
+    std::optional<std::size_t> neighbourBlock(const std::array<int, 3>& b, int axis, int side) const {
+        std::array<int, 3> next = b;
+        next[std::size_t(axis)] += side ? 1 : -1;
+        if (next[std::size_t(axis)] < 0 || next[std::size_t(axis)] >= blocksPerAxis) return std::nullopt;
+        return (std::size_t(next[2]) * std::size_t(blocksPerAxis) + std::size_t(next[1])) * std::size_t(blocksPerAxis) +
+               std::size_t(next[0]);
+    }
     std::size_t blockIndexOf(const std::int64_t c[3]) const {
         return std::size_t(((c[2] / kBlock) * blocksPerAxis + c[1] / kBlock) * blocksPerAxis + c[0] / kBlock);
     }
@@ -804,13 +813,9 @@ bool Extraction::wantMoreSubBlocks() {
             const std::bitset<kPoints>& done = evaluatedPoints[slot];
             for (int axis = 0; axis < 3; ++axis)
                 for (int side = 0; side < 2; ++side) {
-                    std::array<int, 3> next = b;
-                    next[std::size_t(axis)] += side ? 1 : -1;
-                    if (next[std::size_t(axis)] < 0 || next[std::size_t(axis)] >= blocksPerAxis) continue;
-                    const std::int32_t other =
-                        blockSlot[(std::size_t(next[2]) * std::size_t(blocksPerAxis) + std::size_t(next[1])) *
-                                      std::size_t(blocksPerAxis) +
-                                  std::size_t(next[0])];
+                    const std::optional<std::size_t> next = neighbourBlock(b, axis, side);
+                    if (!next) continue;
+                    const std::int32_t other = blockSlot[*next];
                     if (other < 0) continue;
                     const float* w = values.data() + std::size_t(other) * std::size_t(kPoints);
                     const int u = (axis + 1) % 3, t = (axis + 2) % 3;
@@ -840,13 +845,9 @@ void Extraction::keepNeighboursAcrossCrossedFaces(std::size_t slot) {
     const float* v = values.data() + slot * std::size_t(kPoints);
     for (int axis = 0; axis < 3; ++axis)
         for (int side = 0; side < 2; ++side) {
-            std::array<int, 3> next = b;
-            next[std::size_t(axis)] += side ? 1 : -1;
-            if (next[std::size_t(axis)] < 0 || next[std::size_t(axis)] >= blocksPerAxis) continue;
-            const std::size_t index =
-                (std::size_t(next[2]) * std::size_t(blocksPerAxis) + std::size_t(next[1])) * std::size_t(blocksPerAxis) +
-                std::size_t(next[0]);
-            if (blockSlot[index] >= 0) continue;
+            const std::optional<std::size_t> next = neighbourBlock(b, axis, side);
+            if (!next || blockSlot[*next] >= 0) continue;
+            const std::size_t index = *next;
             const int u = (axis + 1) % 3, w = (axis + 2) % 3;
             bool seenInside = false, seenOutside = false;
             for (int j = 0; j < kSide && !(seenInside && seenOutside); ++j)
