@@ -182,6 +182,10 @@ constexpr int kSubsPerAxis = kBlock / kSub;
 constexpr int kOctant = kBlock / 2;
 static_assert(kSubsPerAxis * kSubsPerAxis * kSubsPerAxis == 64, "a sub-block mask is one 64-bit word");
 constexpr int subIndex(int x, int y, int z) { return (z * kSubsPerAxis + y) * kSubsPerAxis + x; }
+// The local grid point at sub-block s's lowest corner (the inverse of subIndex, in points).
+constexpr std::array<int, 3> subCorner(int s) {
+    return {kSub * (s % kSubsPerAxis), kSub * (s / kSubsPerAxis % kSubsPerAxis), kSub * (s / (kSubsPerAxis * kSubsPerAxis))};
+}
 
 template <int Bits> struct RankedBits {
     static constexpr int kWords = (Bits + 63) / 64;
@@ -716,8 +720,7 @@ Expected<void> Extraction::evaluateWanted(detail::PointEvaluator& lattice) {
             const std::size_t before = local[chunk].size();
             for (; fresh != 0; fresh &= fresh - 1) {
                 const int s = std::countr_zero(fresh);
-                const int lo[3] = {kSub * (s % kSubsPerAxis), kSub * (s / kSubsPerAxis % kSubsPerAxis),
-                                   kSub * (s / (kSubsPerAxis * kSubsPerAxis))};
+                const std::array<int, 3> lo = subCorner(s);
                 for (int k = lo[2]; k <= lo[2] + kSub; ++k)
                     for (int j = lo[1]; j <= lo[1] + kSub; ++j)
                         for (int i = lo[0]; i <= lo[0] + kSub; ++i)
@@ -798,8 +801,7 @@ bool Extraction::wantMoreSubBlocks() {
             std::uint64_t more = 0;
             for (std::uint64_t skipped = ~wantedSubs[slot]; skipped != 0; skipped &= skipped - 1) {
                 const int s = std::countr_zero(skipped);
-                const int lo[3] = {kSub * (s % kSubsPerAxis), kSub * (s / kSubsPerAxis % kSubsPerAxis),
-                                   kSub * (s / (kSubsPerAxis * kSubsPerAxis))};
+                const std::array<int, 3> lo = subCorner(s);
                 bool seenInside = false, seenOutside = false;
                 for (int k = lo[2]; k <= lo[2] + kSub; ++k)
                     for (int j = lo[1]; j <= lo[1] + kSub; ++j)
