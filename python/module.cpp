@@ -219,13 +219,15 @@ py::dict evaluate(const std::string& sdf, py::array_t<float, py::array::c_style 
     if (std::uint64_t(n) > 0xffffffffull) throw py::value_error("evaluate: at most 4294967295 points per call");
     sampling::SamplingJob job; // checked as the samplers check their jobs
     job.count = std::uint64_t(n);
-    job.gradientStep = gradientStep;
+    job.gradientStep = gradientStep == 0.0f ? 1e-3f : gradientStep; // a negative or NaN step fails validate()
+    job.meshGradientTaps = gradientStep != 0.0f;
     job.chunkSize = chunk;
     if (auto ok = sampling::validate(job); n > 0 && !ok) throw py::value_error(ok.error().message);
     const jobs::OpenedSdf opened = prepare(sdfInput(sdf, entry, params, sign, normalize));
     sampling::FieldSettings settings;
     settings.time = time;
-    settings.gradientStep = gradientStep;
+    settings.gradientStep = job.gradientStep;
+    settings.meshGradientTaps = job.meshGradientTaps;
     settings.chunk = chunk;
     settings.parameters = opened.parameters;
     auto distances = floatArray({n});
@@ -484,7 +486,7 @@ PYBIND11_MODULE(_native, m) {
     m.attr("__version__") = SDFWB_VERSION;
     // Float defaults spelled as written (pybind11 would print the float32 value, 0.0010000000474974513).
     m.def("sample", &sample, py::arg("sdf"), py::arg("pattern"), py::arg("n"), py::arg("seed") = 0, py::arg("time") = 0.0f,
-          py::arg_v("gradient_step", 1e-3f, "1e-3"), py::arg("chunk") = 1u << 18, py::arg_v("surface_tolerance", 1e-5f, "1e-5"),
+          py::arg_v("gradient_step", 0.0f, "0.0"), py::arg("chunk") = 1u << 18, py::arg_v("surface_tolerance", 1e-5f, "1e-5"),
           py::arg("entry") = "", py::arg("params") = py::none(), py::arg("first_index") = 0, py::arg("near_widths") = "",
           py::arg("near_truncate") = 0.0f, py::arg("sign") = "", py::arg("normalize") = "",
           R"doc(Samples `n` points of `sdf` with `pattern`: the same values as `sdfwb --batch sample` with the same seed.
@@ -500,7 +502,8 @@ Args:
     n (int): the number of rows, 1 to 4294967295.
     seed (int): 0 to 2**64 - 1; a row depends on seed and its sample index alone. Default 0.
     time (float): seconds, finite: the time an animated SDF (`ENTRY(vec3 p, float time)`) is sampled at. Default 0.
-    gradient_step (float): > 0, world units: the step of the central differences of `gradient`. Default 1e-3.
+    gradient_step (float): > 0, world units: the step of the central differences of `gradient`. Default 0:
+        1e-3, except that a mesh's own field writes its exact gradient (from the closest point).
     chunk (int): >= 1, rows per GPU dispatch (memory: 28 bytes a row); does not change the values.
         Default 262144.
     surface_tolerance (float): > 0: |f| at which the rays of surface, near and metropolis stop (accuracy
@@ -538,7 +541,7 @@ Raises:
 
 The GIL is released while sampling.)doc");
     m.def("evaluate", &evaluate, py::arg("sdf"), py::arg("points"), py::arg("params") = py::none(), py::arg("time") = 0.0f,
-          py::arg("gradient") = true, py::arg_v("gradient_step", 1e-3f, "1e-3"), py::arg("entry") = "",
+          py::arg("gradient") = true, py::arg_v("gradient_step", 0.0f, "0.0"), py::arg("entry") = "",
           py::arg("chunk") = 1u << 18, py::arg("sign") = "", py::arg("normalize") = "",
           R"doc(The field of `sdf` at the caller's points, through the samplers' own stage: bit-equal to what the samplers
 write at the same positions with the same gradient_step.
@@ -551,7 +554,8 @@ Args:
     time (float): seconds, finite, for animated SDFs. Default 0.
     gradient (bool): also return the gradient; False evaluates the field once per point instead of seven
         times. Default True.
-    gradient_step (float): > 0, world units: the step of the central differences. Default 1e-3.
+    gradient_step (float): > 0, world units: the step of the central differences. Default 0: 1e-3, except
+        that a mesh's own field gives its exact gradient (from the closest point).
     entry (str): the SDF's function when it is not `sdf`, as for sample(). Default ''.
     chunk (int): >= 1, points per GPU dispatch; does not change the values. Default 262144.
     sign (str): for a mesh file, as for sample(). Default '': winding.

@@ -514,8 +514,9 @@ int runSampleCommand(const Arguments& arguments, Mode mode) {
     app.add_option("--chunk", command.chunkSize, "samples per GPU dispatch (memory: 28 bytes each)")
         ->capture_default_str()
         ->check(CLI::Range(1u, 4194240u));
-    app.add_option("--gradient-step", command.gradientStep, "central-difference step of the written gradient")
-        ->capture_default_str()
+    app.add_option("--gradient-step", command.gradientStep,
+                   "central-difference step of the written gradient (default 1e-3; a mesh's own field writes its exact "
+                   "gradient unless a step is given)")
         ->check(numberCheck(true));
     app.add_option("--surface-tolerance", command.surfaceTolerance,
                    "|f| at which the rays of surface, near and metropolis stop (accuracy against time: docs/benchmarks.md)")

@@ -242,7 +242,8 @@ sampling::SamplingJob samplingJob(const SampleRequest& request) {
     job.shardIndex = request.shardIndex;
     job.shardCount = request.shardCount;
     job.chunkSize = request.chunkSize;
-    job.gradientStep = request.gradientStep;
+    job.gradientStep = request.gradientStep > 0.0f ? request.gradientStep : 1e-3f;
+    job.meshGradientTaps = request.gradientStep > 0.0f;
     job.surfaceTolerance = request.surfaceTolerance;
     if (auto mixture = nearMixture(request.nearWidths); mixture && !mixture->empty()) {
         float total = 0.0f;
@@ -290,7 +291,8 @@ Expected<std::vector<std::pair<float, float>>> nearMixture(const std::string& te
 std::optional<JobError> validate(const SampleRequest& request) {
     if (request.pattern.empty()) return usage("'pattern': no sampling pattern given");
     if (!std::isfinite(request.time)) return usage("'time': expected a finite number");
-    if (!(request.gradientStep > 0.0f) || !std::isfinite(request.gradientStep)) return usage("'gradient_step': must be positive");
+    if (!(request.gradientStep >= 0.0f) || !std::isfinite(request.gradientStep))
+        return usage("'gradient_step': must be positive (or 0: the default)");
     if (!(request.surfaceTolerance > 0.0f) || !std::isfinite(request.surfaceTolerance))
         return usage("'surface_tolerance': must be positive");
     if (request.shardCount == 0 || request.shardIndex >= request.shardCount)

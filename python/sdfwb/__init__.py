@@ -61,18 +61,18 @@ def _is_torch_tensor(value: object) -> bool:
 
 @overload
 def evaluate(sdf: str, points: _CpuTensor, params: Mapping[str, ParamValue] | None = None, time: float = 0.0,
-             gradient: bool = True, gradient_step: float = 1e-3, entry: str = "",
+             gradient: bool = True, gradient_step: float = 0.0, entry: str = "",
              chunk: int = 1 << 18, sign: str = "", normalize: str = "") -> dict[str, Any]: ...
 
 
 @overload
 def evaluate(sdf: str, points: npt.ArrayLike, params: Mapping[str, ParamValue] | None = None, time: float = 0.0,
-             gradient: bool = True, gradient_step: float = 1e-3, entry: str = "",
+             gradient: bool = True, gradient_step: float = 0.0, entry: str = "",
              chunk: int = 1 << 18, sign: str = "", normalize: str = "") -> EvaluateResult: ...
 
 
 def evaluate(sdf: str, points: Any, params: Mapping[str, ParamValue] | None = None, time: float = 0.0,
-             gradient: bool = True, gradient_step: float = 1e-3, entry: str = "",
+             gradient: bool = True, gradient_step: float = 0.0, entry: str = "",
              chunk: int = 1 << 18, sign: str = "", normalize: str = "") -> EvaluateResult | dict[str, Any]:
     """The field of `sdf` at the caller's points, through the samplers' own stage: bit-equal to what the
     samplers write at the same positions with the same gradient_step.
@@ -90,7 +90,8 @@ def evaluate(sdf: str, points: Any, params: Mapping[str, ParamValue] | None = No
         time (float): seconds, finite, for animated SDFs. Default 0.
         gradient (bool): also return the gradient; False evaluates the field once per point instead of
             seven times. Default True.
-        gradient_step (float): > 0, world units: the step of the central differences. Default 1e-3.
+        gradient_step (float): > 0, world units: the step of the central differences. Default 0: 1e-3,
+            except that a mesh's own field gives its exact gradient (from the closest point).
         entry (str): the SDF's function when it is not `sdf` (e.g. 'map'), as for sample(). Default ''.
         chunk (int): >= 1, points per GPU dispatch; does not change the values. Default 262144.
         sign (str): for a mesh file: 'winding' (generalized winding numbers), 'parity' or 'pseudonormal',

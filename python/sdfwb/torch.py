@@ -47,7 +47,8 @@ class SampleStream(_IterableDataset[SampleBatch]):
             Default None: the declared defaults.
         time (float): seconds, for animated SDFs. Default 0.
         entry (str): the SDF's function when it is not `sdf`, as for sdfwb.sample. Default ''.
-        gradient_step (float): > 0, the step of the central differences. Default 1e-3.
+        gradient_step (float): > 0, the step of the central differences. Default 0: 1e-3, except that a
+            mesh's own field writes its exact gradient (from the closest point).
         rank (int): this process's rank, 0 <= rank < world_size. Default 0.
         world_size (int): >= 1, the number of processes sharing the batches (as with DistributedSampler).
             Default 1.
@@ -59,7 +60,7 @@ class SampleStream(_IterableDataset[SampleBatch]):
 
     def __init__(self, sdf: str, pattern: str = "near", batch_size: int = 65536, batches_per_epoch: int = 16,
                  seed: int = 0, params: Mapping[str, ParamValue] | None = None, time: float = 0.0, entry: str = "",
-                 gradient_step: float = 1e-3, rank: int = 0, world_size: int = 1) -> None:
+                 gradient_step: float = 0.0, rank: int = 0, world_size: int = 1) -> None:
         super().__init__()
         if batch_size < 1 or batches_per_epoch < 1:
             raise ValueError("SampleStream: batch_size and batches_per_epoch must be at least 1")

@@ -3,6 +3,7 @@
 #include "GlObjects.h"
 
 #include <core/Log.h>
+#include <meshfield/MeshQuery.h>
 #include <renderer/SamplingBindings.h>
 #include <shaders/DiagnosticParser.h>
 
@@ -81,9 +82,22 @@ struct SampleCompute::Impl {
     SdfTextures textures;    // g3d_uniformRandom and iChannel0..3, made when the program reads them
     std::array<std::string, shaders::kShadertoyChannels> channels; // the SDF's channel images
     std::shared_ptr<const meshfield::MeshField> mesh;              // a mesh SDF's triangles
+    // The native engine for a mesh's own field (null: the GLSL field computes the values).
+    std::shared_ptr<const meshfield::MeshQuery> query;
+    const char* engine = "";
+    // With the CPU engine, each slot's rows on the host (the mapped buffers are read-only).
+    std::vector<float> hostRows[kSlots][3];
     std::string source;
     GLint location(const char* name) const { return glGetUniformLocation(program.id(), name); }
     Expected<void> reserve(BufferSet& set, std::uint32_t count, bool mapped, bool interleaved = false);
+    // The CPU engine's values and gradients at the positions; the rows with a non-finite value.
+    std::uint32_t evaluateOnCpu(const SampleUniforms& uniforms, const float* positions, std::size_t positionStride,
+                                float* distances, std::size_t distanceStride, float* gradients, std::size_t gradientStride,
+                                std::uint32_t count) const {
+        meshfield::RowView rows{positions, positionStride, distances, distanceStride, gradients, gradientStride};
+        meshfield::GradientMode mode{!uniforms.meshGradientTaps, uniforms.gradientStep};
+        return std::uint32_t(query->evaluate(rows, count, mode));
+    }
     Expected<std::uint32_t> dispatch(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, BufferSet& set,
                                      bool positions, bool gradients, bool interleaved = false,
                                      std::array<std::uint32_t, 3> shift = {});
@@ -136,6 +150,8 @@ SampleCompute::~SampleCompute() {
 
 const std::string& SampleCompute::source() const { return m_impl->source; }
 
+const char* SampleCompute::meshEngine() const { return m_impl->engine; }
+
 std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf& sdf, const shaders::ShaderPiece& sampler) {
     std::vector<shaders::Diagnostic> diagnostics = sdf.diagnostics;
     if (shaders::hasErrors(diagnostics)) return diagnostics;
@@ -149,7 +165,19 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     auto stage = shaders::builtinPiece("sampling/sample.comp");
     if (!stage) return {{"<sdfwb>", 0, 0, shaders::Severity::Error, stage.error().message}};
     pieces.push_back(std::move(*stage));
-    shaders::ComposedShader composed = shaders::composeSdfShader(sdf, shaders::Stage::Compute, pieces, {});
+    // A mesh's own field on a driver that runs shaders on the CPU anyway: the shader computes the
+    // positions (so they are the GPU path's, bit for bit) and the native engine the values.
+    std::shared_ptr<const meshfield::MeshQuery> query;
+    const char* engine = "";
+    if (sdf.mesh) {
+        const char* rendererName = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+        const meshfield::MeshEngine chosen = meshfield::chooseMeshEngine(rendererName ? rendererName : "");
+        engine = sdf.meshIsTheField ? meshfield::meshEngineName(chosen) : "gpu";
+        if (sdf.meshIsTheField && chosen == meshfield::MeshEngine::Cpu) query = meshfield::meshQuery(sdf.mesh);
+    }
+    shaders::FeatureDefines features;
+    if (query) features["SDFWB_POSITIONS_ONLY"] = "1";
+    shaders::ComposedShader composed = shaders::composeSdfShader(sdf, shaders::Stage::Compute, pieces, features);
 
     auto start = std::chrono::steady_clock::now();
     CompiledShader compiled = compileShader(GL_COMPUTE_SHADER, composed);
@@ -164,11 +192,14 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     }
     double milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     log::info("sampling", "compiled " + sdf.source.map.fileName(0) + " with " + sampler.name + " in " +
-                              std::to_string(int(milliseconds)) + " ms");
+                              std::to_string(int(milliseconds)) + " ms" +
+                              (*engine ? std::string("; mesh engine: ") + engine : std::string()));
     m_impl->program = std::move(program);
     m_impl->source = std::move(composed.text);
     m_impl->channels = sdf.channels;
     m_impl->mesh = sdf.mesh;
+    m_impl->query = std::move(query);
+    m_impl->engine = engine;
     return diagnostics;
 }
 
@@ -187,6 +218,7 @@ Expected<std::uint32_t> SampleCompute::Impl::dispatch(const SampleUniforms& unif
     if (GLint at = location("sdfwb_parameters"); at >= 0) glUniform4fv(at, 4, uniforms.parameters);
     if (GLint at = location("sdfwb_surfaceTolerance"); at >= 0) glUniform1f(at, uniforms.surfaceTolerance);
     if (GLint at = location("sdfwb_tetrahedralGradient"); at >= 0) glUniform1i(at, uniforms.tetrahedralGradient ? 1 : 0);
+    if (GLint at = location("sdfwb_meshGradientTaps"); at >= 0) glUniform1i(at, uniforms.meshGradientTaps ? 1 : 0);
     applyParameters(uniforms.sdfParameters, [this](const char* name) { return location(name); });
     // A target not wanted is skipped by the shader (the gradient's six evaluations included).
     if (GLint at = location("sdfwb_writePosition"); at >= 0) glUniform1i(at, positions ? 1 : 0);
@@ -245,8 +277,21 @@ Expected<std::uint32_t> SampleCompute::run(const SampleUniforms& uniforms, std::
         return makeError("sampling: chunk of " + std::to_string(count) + " exceeds " + std::to_string(kMaxChunk));
     while (glGetError() != GL_NO_ERROR) {}
     if (auto ok = m_impl->reserve(m_impl->plain, count, false); !ok) return ok.error();
+    std::vector<float> scratch;
+    if (m_impl->query && !positions) { // the engine needs the positions even where the caller does not
+        scratch.resize(std::size_t(count) * 3);
+        positions = scratch.data();
+    }
     auto bad = m_impl->dispatch(uniforms, first, count, m_impl->plain, positions, gradients);
     if (!bad) return bad;
+    if (m_impl->query) {
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, m_impl->plain.buffers[0].id());
+        glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(count) * 12, positions);
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+        if (GLenum error = glGetError(); error != GL_NO_ERROR)
+            return makeError("sampling: reading back " + std::to_string(count) + " positions failed (" + glErrorName(error) + ")");
+        return m_impl->evaluateOnCpu(uniforms, positions, 3, distances, 1, gradients, 3, count);
+    }
     float* targets[3] = {positions, distances, gradients};
     const GLsizeiptr sizes[3] = {GLsizeiptr(count) * 12, GLsizeiptr(count) * 4, GLsizeiptr(count) * 12};
     for (int i = 0; i < 3; ++i) {
@@ -295,6 +340,26 @@ Expected<MappedRows> SampleCompute::runMapped(const SampleUniforms& uniforms, st
     GLsync fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
     glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, GLuint64(60) * 1000000000u);
     glDeleteSync(fence);
+    if (m_impl->query) {
+        // The mapping is read-only: the rows are completed in this slot's host arrays, at the
+        // same shifts, and the caller reads them there.
+        std::vector<float>(&host)[3] = m_impl->hostRows[std::size_t(slot) % kSlots];
+        if (interleaved) {
+            host[0].resize(std::size_t(count) * 7);
+            std::copy(set.mapped[0], set.mapped[0] + std::size_t(count) * 7, host[0].data());
+            float* base = host[0].data();
+            const std::uint32_t cpuBad = m_impl->evaluateOnCpu(uniforms, base, 7, base + 3, 7, base + 4, 7, count);
+            return MappedRows{nullptr, nullptr, nullptr, cpuBad, base};
+        }
+        const std::size_t sizes[3] = {std::size_t(count) * 3, count, std::size_t(count) * 3};
+        for (int i = 0; i < 3; ++i) host[i].resize(shift[std::size_t(i)] + sizes[i]);
+        float* p = host[0].data() + shift[0];
+        float* d = host[1].data() + shift[1];
+        float* g = host[2].data() + shift[2];
+        std::copy(set.mapped[0] + shift[0], set.mapped[0] + shift[0] + sizes[0], p);
+        const std::uint32_t cpuBad = m_impl->evaluateOnCpu(uniforms, p, 3, d, 1, g, 3, count);
+        return MappedRows{p, d, g, cpuBad};
+    }
     MappedRows rows = interleaved
                           ? MappedRows{nullptr, nullptr, nullptr, *bad, set.mapped[0]}
                           : MappedRows{set.mapped[0] + shift[0], set.mapped[1] + shift[1], set.mapped[2] + shift[2], *bad};
@@ -309,6 +374,9 @@ void SampleCompute::releaseGl() {
     m_impl->badRows.reset();
     m_impl->inputs.reset();
     m_impl->textures.reset();
+    m_impl->query.reset();
+    for (auto& host : m_impl->hostRows)
+        for (std::vector<float>& rows : host) std::vector<float>().swap(rows);
 }
 
 } // namespace sdfwb::renderer

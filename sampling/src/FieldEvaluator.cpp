@@ -22,6 +22,7 @@ Expected<SamplingReport> FieldEvaluator::evaluate(const float* points, std::uint
     job.count = count;
     job.time = settings.time;
     job.gradientStep = settings.gradientStep;
+    job.meshGradientTaps = settings.meshGradientTaps;
     job.chunkSize = settings.chunk;
     job.inputPoints = points;
     job.sdfParameters = settings.parameters;

@@ -36,6 +36,7 @@ Expected<SamplingReport> run(const SamplingJob& job, Dispatch dispatch, Consume 
     uniforms.seed = job.seed;
     uniforms.time = job.time;
     uniforms.gradientStep = job.gradientStep;
+    uniforms.meshGradientTaps = job.meshGradientTaps;
     std::copy(std::begin(job.parameters), std::end(job.parameters), uniforms.parameters);
     uniforms.surfaceTolerance = job.surfaceTolerance;
     uniforms.inputPoints = job.inputPoints;

@@ -273,6 +273,27 @@ float sdfwb_meshSdf(vec3 p) {
     return isnan(inside) ? inside : (inside > 0.5 ? -d : d);
 }
 
+// The signed distance and its exact gradient: the unit vector from the closest point to p, times
+// the sign (the face's unit normal where p is on the surface). NaN where a walk was cut.
+float sdfwb_meshSdfGradient(vec3 p, out vec3 gradient) {
+    uint triangle;
+    int feature;
+    vec3 closest;
+    float d = sqrt(sdfwb_meshNearest(p, triangle, feature, closest));
+    float inside = sdfwb_meshInside(p, triangle, feature, closest);
+    float sign = inside > 0.5 ? -1.0 : 1.0;
+    if (d > 0.0) {
+        gradient = (p - closest) * (sign / d);
+    } else {
+        vec3 a = sdfwb_meshTriangles[3u * triangle].xyz;
+        vec3 n = cross(sdfwb_meshTriangles[3u * triangle + 1u].xyz - a, sdfwb_meshTriangles[3u * triangle + 2u].xyz - a);
+        float length2 = dot(n, n);
+        gradient = length2 > 0.0 ? n * inversesqrt(length2) : vec3(0.0);
+    }
+    if (isnan(inside) || isnan(d)) gradient = vec3(sdfwb_meshCut());
+    return isnan(inside) ? inside : sign * d;
+}
+
 // A point uniform by area on the mesh, and its triangle's unit normal (zero for a degenerate one),
 // from three uniform numbers in [0, 1): u.x picks the triangle (binary search of the cumulative
 // areas), u.yz the point in it. The surface and near samplers take their points from here when

@@ -23,6 +23,9 @@ uniform bool sdfwb_interleaved = false;
 // Floats before row 0 in each of the three arrays (separate layout): a file writer asks for them so
 // that each array lies in memory at the same offset modulo a disk block as in its file.
 uniform uvec3 sdfwb_arrayShift = uvec3(0u);
+// A mesh's own field writes its exact gradient (the closest point's direction: one nearest walk
+// and one sign a row instead of seven of each); true: six taps of sdfwb_gradientStep instead.
+uniform bool sdfwb_meshGradientTaps = false;
 
 void main() {
     uint local = gl_GlobalInvocationID.x;
@@ -32,8 +35,21 @@ void main() {
     float distance;
     vec3 gradient;
     if (sdfwb_samplePosition(index, position)) {
-        distance = sdfwb_sdf(position);
-        gradient = sdfwb_writeGradient ? sdfwb_gradientAt(position, sdfwb_gradientStep) : vec3(0.0);
+#if defined(SDFWB_POSITIONS_ONLY)
+        // The native CPU engine computes the values at these positions (renderer::SampleCompute).
+        distance = 0.0;
+        gradient = vec3(0.0);
+#else
+#if defined(SDFWB_MESH_SURFACE)
+        if (sdfwb_writeGradient && !sdfwb_meshGradientTaps && !sdfwb_tetrahedralGradient) {
+            distance = sdfwb_meshSdfGradient(position, gradient);
+        } else
+#endif
+        {
+            distance = sdfwb_sdf(position);
+            gradient = sdfwb_writeGradient ? sdfwb_gradientAt(position, sdfwb_gradientStep) : vec3(0.0);
+        }
+#endif
     } else {
         float nan = uintBitsToFloat(0x7fc00000u);
         position = vec3(nan);

@@ -24,6 +24,9 @@ struct SampleUniforms {
     float parameters[16] = {};        // u_parameters[4] (vec4s) for program-driven samplers
     float surfaceTolerance = 1e-5f;   // traceRay() (surface, near, metropolis) stops at |f| below this
     bool tetrahedralGradient = false; // written gradient by the tracer's 4-tap scheme, not 6-tap central
+    // A mesh's own field writes its exact gradient (from the closest point: one nearest walk and
+    // one sign a row); true asks for the six taps of gradientStep instead (a step the user gave).
+    bool meshGradientTaps = false;
     // Points given by the caller (3 floats per sample, sampleCount of them, indexed globally), read
     // by the analysis/points.glsl sampler through sdfwb_inputPoint(); null for every other sampler.
     const float* inputPoints = nullptr;
@@ -84,6 +87,11 @@ public:
 
     // The composed compute source (for tests and the log).
     const std::string& source() const;
+
+    // "cpu" when build() chose the native CPU engine for a mesh's own field (the shader then
+    // computes positions only, and meshfield::MeshQuery the values and gradients on every core),
+    // "gpu" for a mesh field on the GL device, "" for any other SDF. See meshfield::chooseMeshEngine.
+    const char* meshEngine() const;
 
     void releaseGl();
 

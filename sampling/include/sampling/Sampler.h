@@ -26,6 +26,7 @@ struct SamplingJob {
     std::uint32_t shardCount = 1;
     std::uint32_t chunkSize = 1u << 18; // samples per dispatch (bounded memory: 28 bytes each)
     float gradientStep = 1e-3f;         // central-difference step of the written gradient
+    bool meshGradientTaps = false;      // a mesh's own field: taps of gradientStep, not its exact gradient
     float parameters[16] = {};          // u_parameters for program-driven samplers (plane analysis)
     float surfaceTolerance = 1e-5f;     // |f| at which surface/near/metropolis rays stop (accuracy against time)
     const float* inputPoints = nullptr; // 3 * count floats for the analysis/points.glsl sampler (not owned)

@@ -90,7 +90,9 @@ struct SampleRequest {
     std::uint32_t shardIndex = 0;
     std::uint32_t shardCount = 1;
     std::uint32_t chunkSize = 1u << 18;
-    float gradientStep = 1e-3f;
+    // Central-difference step of the written gradient. 0 (the default): 1e-3, except that a mesh's
+    // own field writes its exact gradient (from the closest point); a step given asks for taps.
+    float gradientStep = 0.0f;
     float surfaceTolerance = 1e-5f; // |f| at which surface/near/metropolis rays stop
     // near only: a mixture of Gaussian offsets "W:P,W:P" (standard deviation W with weight P, up to 4;
     // weights are normalised), truncated at nearTruncation deviations (0: not truncated). Empty:

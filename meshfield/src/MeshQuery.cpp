@@ -1,0 +1,480 @@
+#include <meshfield/MeshQuery.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <numbers>
+#include <thread>
+#include <unordered_map>
+
+namespace sdfwb::meshfield {
+namespace {
+
+using glm::dvec3;
+
+constexpr int kStack = 128; // the hierarchy's depth is at most 60 (MeshField.cpp's kMaxDepth) + 2
+
+std::uint32_t asBits(float value) { return std::bit_cast<std::uint32_t>(value); }
+
+// Every triangle edge used exactly twice, once in each direction: the winding number is then an
+// integer off the surface, constant wherever no triangle separates two points (the sign cache's
+// premise). Flipped faces, holes and non-manifold edges fail this.
+bool closedAndOriented(const TriangleMesh& mesh) {
+    std::unordered_map<std::uint64_t, int> directed;
+    directed.reserve(mesh.indices.size());
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
+        for (int k = 0; k < 3; ++k) {
+            const std::uint64_t a = mesh.indices[t + std::size_t(k)];
+            const std::uint64_t b = mesh.indices[t + std::size_t((k + 1) % 3)];
+            if (a == b) return false;
+            if (++directed[(a << 32) | b] > 1) return false;
+        }
+    for (const auto& [edge, count] : directed)
+        if (!directed.count((edge << 32) | (edge >> 32))) return false;
+    return !directed.empty();
+}
+
+unsigned threadCount(unsigned asked) {
+    if (asked > 0) return asked;
+    if (const char* text = std::getenv("SDFWB_MESH_THREADS")) {
+        const int n = std::atoi(text);
+        if (n > 0) return unsigned(n);
+    }
+    return std::max(1u, std::thread::hardware_concurrency());
+}
+
+} // namespace
+
+// The parity sign's three ray directions (MeshField.cpp; the same in shaders/mesh/mesh_field.glsl).
+const std::array<glm::dvec3, 3>& parityDirections();
+
+// An inner node of the hierarchy as the CPU walks it: both children's boxes in one cache line, so
+// a step tests both children without touching their nodes. child[k] is an inner node's index
+// (count[k] == 0) or a leaf's first triangle slot (count[k] triangles).
+struct alignas(64) MeshQuery::Node {
+    float lo[2][3];
+    float hi[2][3];
+    std::uint32_t child[2];
+    std::uint32_t count[2];
+    std::uint32_t source; // its index in MeshField::nodes (the winding walk's dipoles)
+};
+
+MeshQuery::MeshQuery(const MeshField& field) : m_field(field) {
+    const std::size_t gpuNodes = field.nodes.size() / kNodeFloats;
+    auto gpu = [&](std::uint32_t index) { return field.nodes.data() + std::size_t(index) * kNodeFloats; };
+    std::vector<std::uint32_t> cpuIndex(gpuNodes, 0);
+    // Inner GPU nodes in order get CPU indices; a leaf root becomes one node with one child.
+    auto fill = [&](Node& node, int k, std::uint32_t gpuChild) {
+        const float* n = gpu(gpuChild);
+        for (int a = 0; a < 3; ++a) {
+            node.lo[k][a] = n[a];
+            node.hi[k][a] = n[4 + a];
+        }
+        node.count[k] = asBits(n[7]);
+        node.child[k] = node.count[k] > 0 ? asBits(n[3]) : gpuChild; // remapped below
+    };
+    if (gpuNodes > 0) {
+        if (asBits(gpu(0)[7]) > 0) {
+            Node root{};
+            fill(root, 0, 0);
+            for (int a = 0; a < 3; ++a) {
+                root.lo[1][a] = std::numeric_limits<float>::infinity();
+                root.hi[1][a] = -std::numeric_limits<float>::infinity();
+            }
+            root.count[1] = 0;
+            root.child[1] = 0;
+            root.source = 0;
+            m_nodes.push_back(root);
+        } else {
+            for (std::uint32_t i = 0; i < gpuNodes; ++i)
+                if (asBits(gpu(i)[7]) == 0) {
+                    cpuIndex[i] = std::uint32_t(m_nodes.size());
+                    Node node{};
+                    const std::uint32_t left = asBits(gpu(i)[3]);
+                    fill(node, 0, left);
+                    fill(node, 1, left + 1);
+                    node.source = i;
+                    m_nodes.push_back(node);
+                }
+            for (Node& node : m_nodes)
+                for (int k = 0; k < 2; ++k)
+                    if (node.count[k] == 0) node.child[k] = cpuIndex[node.child[k]];
+        }
+    }
+    const std::size_t slots = field.triangles.size() / kTriangleFloats;
+    m_corners.resize(slots * 9);
+    for (std::size_t s = 0; s < slots; ++s)
+        for (int k = 0; k < 3; ++k)
+            for (int a = 0; a < 3; ++a)
+                m_corners[s * 9 + std::size_t(k * 3 + a)] = field.triangles[s * kTriangleFloats + std::size_t(k * 4 + a)];
+
+    if (field.options.sign == SignMethod::Winding && closedAndOriented(field.mesh)) {
+        m_useCache = true;
+        const dvec3 extent = field.bounds.hi - field.bounds.lo;
+        const double side = std::max({extent.x, extent.y, extent.z}) * 1.5 + 1e-9;
+        m_cacheLo = (field.bounds.lo + field.bounds.hi) * 0.5 - dvec3(side * 0.5);
+        m_cacheSide = 128;
+        m_cacheStep = side / m_cacheSide;
+        // Levels of 2^k + 1 points a side (k = 2 .. 7), coarsest first, in one array.
+        std::size_t total = 0;
+        for (int k = 2; k <= 7; ++k) total += std::size_t((1 << k) + 1) * ((1 << k) + 1) * ((1 << k) + 1);
+        m_cache = std::make_unique<std::atomic<float>[]>(total);
+        for (std::size_t i = 0; i < total; ++i) m_cache[i].store(std::numeric_limits<float>::quiet_NaN(), std::memory_order_relaxed);
+    }
+}
+
+MeshQuery::~MeshQuery() = default;
+
+std::size_t MeshQuery::bytes() const {
+    std::size_t cache = 0;
+    if (m_useCache)
+        for (int k = 2; k <= 7; ++k) cache += std::size_t((1 << k) + 1) * ((1 << k) + 1) * ((1 << k) + 1) * sizeof(float);
+    return m_nodes.size() * sizeof(Node) + m_corners.size() * sizeof(double) + cache;
+}
+
+double MeshQuery::nearest(const dvec3& p, std::uint32_t& slot, int& feature, dvec3& closest, std::uint64_t* visits) const {
+    double best = std::numeric_limits<double>::infinity();
+    slot = 0;
+    feature = 0;
+    closest = p;
+    if (m_nodes.empty()) return best;
+    const float px = float(p.x), py = float(p.y), pz = float(p.z);
+    // A box is skipped when its float distance exceeds the best by more than float rounding can
+    // explain (boxes are rounded outward already; the slack keeps exact ties walked).
+    auto prune = [&](float d2) { return double(d2) > best * (1.0 + 1e-5) + 1e-30; };
+    struct Entry {
+        std::uint32_t node;
+        float distance2;
+    };
+    Entry stack[kStack];
+    int top = 0;
+    std::uint32_t index = 0;
+    std::uint64_t tested = 0;
+    for (;;) {
+        const Node& node = m_nodes[index];
+        ++tested;
+        float d[2];
+        for (int k = 0; k < 2; ++k) {
+            const float dx = std::max({node.lo[k][0] - px, px - node.hi[k][0], 0.0f});
+            const float dy = std::max({node.lo[k][1] - py, py - node.hi[k][1], 0.0f});
+            const float dz = std::max({node.lo[k][2] - pz, pz - node.hi[k][2], 0.0f});
+            d[k] = dx * dx + dy * dy + dz * dz;
+        }
+        const int nearK = d[1] < d[0] ? 1 : 0;
+        std::uint32_t descend = 0;
+        bool goDown = false;
+        for (int j = 0; j < 2; ++j) {
+            const int k = j == 0 ? nearK : 1 - nearK;
+            if (prune(d[k])) continue;
+            if (node.count[k] > 0) {
+                for (std::uint32_t s = node.child[k]; s < node.child[k] + node.count[k]; ++s) {
+                    const double* c = m_corners.data() + std::size_t(s) * 9;
+                    int f = 0;
+                    const dvec3 q = closestPointOnTriangle(p, dvec3(c[0], c[1], c[2]), dvec3(c[3], c[4], c[5]),
+                                                           dvec3(c[6], c[7], c[8]), &f);
+                    const double d2 = glm::dot(p - q, p - q);
+                    if (d2 < best) {
+                        best = d2;
+                        slot = s;
+                        feature = f;
+                        closest = q;
+                    }
+                }
+            } else if (!goDown) {
+                goDown = true;
+                descend = node.child[k];
+            } else if (top < kStack) {
+                stack[top++] = {node.child[k], d[k]};
+            }
+        }
+        if (goDown) {
+            index = descend;
+            continue;
+        }
+        bool found = false;
+        while (top > 0) {
+            const Entry entry = stack[--top];
+            if (prune(entry.distance2)) continue;
+            index = entry.node;
+            found = true;
+            break;
+        }
+        if (!found) break;
+    }
+    if (visits) *visits += tested;
+    return best;
+}
+
+namespace {
+
+// A far cluster's share of 4 pi times the winding number (MeshField.cpp's farCluster).
+double farCluster(const float* n, const dvec3& d, double dist2) {
+    const double inverse3 = 1.0 / (dist2 * std::sqrt(dist2));
+    double dMd = 0.0;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) dMd += d[i] * double(n[16 + 4 * i + j]) * d[j];
+    const double trace = double(n[16]) + double(n[21]) + double(n[26]);
+    return (double(n[12]) * d.x + double(n[13]) * d.y + double(n[14]) * d.z + trace - 3.0 * dMd / dist2) * inverse3;
+}
+
+} // namespace
+
+double MeshQuery::winding(const dvec3& p, std::uint64_t* visits) const {
+    const std::vector<float>& nodes = m_field.nodes;
+    if (nodes.empty()) return 0.0;
+    const double beta2 = m_field.options.beta * m_field.options.beta;
+    double sum = 0.0;
+    std::uint32_t stack[kStack];
+    int top = 0;
+    stack[top++] = 0;
+    std::uint64_t opened = 0;
+    while (top > 0) {
+        const float* n = nodes.data() + std::size_t(stack[--top]) * kNodeFloats;
+        ++opened;
+        const dvec3 d = dvec3(n[8], n[9], n[10]) - p;
+        const double dist2 = glm::dot(d, d);
+        if (dist2 > beta2 * double(n[11]) * double(n[11])) {
+            sum += farCluster(n, d, dist2);
+            continue;
+        }
+        const std::uint32_t first = asBits(n[3]);
+        const std::uint32_t count = asBits(n[7]);
+        if (count > 0) {
+            for (std::uint32_t s = first; s < first + count; ++s) {
+                const double* c = m_corners.data() + std::size_t(s) * 9;
+                sum += solidAngle(p, dvec3(c[0], c[1], c[2]), dvec3(c[3], c[4], c[5]), dvec3(c[6], c[7], c[8]));
+            }
+        } else if (top + 2 <= kStack) {
+            stack[top++] = first;
+            stack[top++] = first + 1;
+        }
+    }
+    if (visits) *visits += opened;
+    return sum / (4.0 * std::numbers::pi);
+}
+
+// A closed, consistently oriented mesh's winding number is an integer, the same at any two points
+// that no triangle separates. Every point of the open ball of radius `distance` (the nearest
+// distance) around p is such a point: so when a lattice point q of the cache lies inside that ball,
+// p's winding number is q's, computed once for every row that can use it. Levels from coarse
+// (5^3 points over 1.5 times the bounds) to fine (129^3): the coarsest level whose nearest lattice
+// point is inside the ball, so far points share a few coarse values. A lattice value not within
+// 1/4 of an integer (the hierarchy's approximation at its worst) is not used.
+bool MeshQuery::cachedWindingInside(const dvec3& p, double distance, bool& fromCache, std::uint64_t* visits) const {
+    fromCache = false;
+    if (m_useCache && distance > 0.0 && std::isfinite(distance)) {
+        const double reach2 = distance * distance * 0.998;
+        std::size_t offset = 0;
+        for (int k = 2; k <= 7; ++k) {
+            const int side = (1 << k) + 1;
+            const double step = m_cacheStep * double(m_cacheSide >> k);
+            const dvec3 cell = (p - m_cacheLo) / step;
+            int at[3];
+            dvec3 q;
+            for (int a = 0; a < 3; ++a) {
+                at[a] = int(std::clamp(std::floor(cell[a] + 0.5), 0.0, double(side - 1)));
+                q[a] = m_cacheLo[a] + double(at[a]) * step;
+            }
+            if (glm::dot(q - p, q - p) < reach2) {
+                std::atomic<float>& slot = m_cache[offset + (std::size_t(at[2]) * side + std::size_t(at[1])) * side + std::size_t(at[0])];
+                float w = slot.load(std::memory_order_relaxed);
+                if (std::isnan(w)) {
+                    w = float(winding(q, visits));
+                    slot.store(w, std::memory_order_relaxed);
+                }
+                if (std::abs(w - std::round(w)) < 0.25f) {
+                    fromCache = true;
+                    return w > 0.5f;
+                }
+                break; // an undecided lattice value: walk p itself
+            }
+            offset += std::size_t(side) * side * side;
+        }
+    }
+    return winding(p, visits) > 0.5;
+}
+
+bool MeshQuery::parityInside(const dvec3& p) const {
+    int votes = 0;
+    for (const dvec3& direction : parityDirections()) {
+        const dvec3 inverse = 1.0 / direction;
+        int crossings = 0;
+        std::uint32_t stack[kStack];
+        int top = 0;
+        stack[top++] = 0;
+        const std::vector<float>& nodes = m_field.nodes;
+        while (top > 0 && !nodes.empty()) {
+            const float* n = nodes.data() + std::size_t(stack[--top]) * kNodeFloats;
+            double t0 = 0.0;
+            double t1 = std::numeric_limits<double>::infinity();
+            for (int a = 0; a < 3; ++a) {
+                double u = (double(n[a]) - p[a]) * inverse[a];
+                double v = (double(n[4 + a]) - p[a]) * inverse[a];
+                if (u > v) std::swap(u, v);
+                t0 = std::max(t0, u);
+                t1 = std::min(t1, v);
+            }
+            if (t0 > t1) continue;
+            const std::uint32_t first = asBits(n[3]);
+            const std::uint32_t count = asBits(n[7]);
+            if (count > 0) {
+                for (std::uint32_t s = first; s < first + count; ++s) {
+                    const double* c = m_corners.data() + std::size_t(s) * 9;
+                    const dvec3 a(c[0], c[1], c[2]);
+                    const dvec3 e1 = dvec3(c[3], c[4], c[5]) - a;
+                    const dvec3 e2 = dvec3(c[6], c[7], c[8]) - a;
+                    const dvec3 h = glm::cross(direction, e2);
+                    const double det = glm::dot(e1, h);
+                    if (det == 0.0) continue;
+                    const dvec3 o = p - a;
+                    const double u = glm::dot(o, h) / det;
+                    const dvec3 q = glm::cross(o, e1);
+                    const double v = glm::dot(direction, q) / det;
+                    if (u >= 0.0 && u <= 1.0 && v >= 0.0 && u + v <= 1.0 && glm::dot(e2, q) / det > 0.0) ++crossings;
+                }
+            } else if (top + 2 <= kStack) {
+                stack[top++] = first;
+                stack[top++] = first + 1;
+            }
+        }
+        votes += crossings & 1;
+    }
+    return votes >= 2;
+}
+
+bool MeshQuery::inside(const dvec3& p, double distance, std::uint32_t slot, int feature, const dvec3& closest,
+                       QueryCounters* counters) const {
+    switch (m_field.options.sign) {
+    case SignMethod::Winding: {
+        bool fromCache = false;
+        const bool in = cachedWindingInside(p, distance, fromCache, counters ? &counters->windingNodes : nullptr);
+        if (counters && fromCache) ++counters->cachedSigns;
+        return in;
+    }
+    case SignMethod::Parity:
+        return parityInside(p);
+    case SignMethod::Pseudonormal: {
+        static constexpr int kSlotOfFeature[7] = {0, 4, 5, 6, 1, 2, 3};
+        const float* normal =
+            m_field.pseudonormals.data() + std::size_t(slot) * kPseudonormalFloats + std::size_t(kSlotOfFeature[feature]) * 4;
+        return glm::dot(p - closest, dvec3(normal[0], normal[1], normal[2])) < 0.0;
+    }
+    }
+    return false;
+}
+
+double MeshQuery::signedDistance(const dvec3& p, dvec3* gradient, QueryCounters* counters) const {
+    std::uint32_t slot = 0;
+    int feature = 0;
+    dvec3 closest(0.0);
+    const double distance = std::sqrt(nearest(p, slot, feature, closest, counters ? &counters->nearestNodes : nullptr));
+    const bool in = inside(p, distance, slot, feature, closest, counters);
+    if (gradient) {
+        if (distance > 0.0) {
+            *gradient = (p - closest) / distance * (in ? -1.0 : 1.0);
+        } else { // on the surface: the face's normal
+            const double* c = m_corners.data() + std::size_t(slot) * 9;
+            const dvec3 n = glm::cross(dvec3(c[3] - c[0], c[4] - c[1], c[5] - c[2]), dvec3(c[6] - c[0], c[7] - c[1], c[8] - c[2]));
+            const double length = glm::length(n);
+            *gradient = length > 0.0 ? n / length : dvec3(0.0);
+        }
+    }
+    return in ? -distance : distance;
+}
+
+float MeshQuery::floatField(const glm::vec3& p) const { return float(signedDistance(dvec3(p), nullptr)); }
+
+std::uint64_t MeshQuery::evaluate(const RowView& rows, std::size_t count, const GradientMode& mode, unsigned threads,
+                                  QueryCounters* counters) const {
+    constexpr std::size_t kBlock = 1024;
+    const unsigned workers = unsigned(std::min<std::size_t>(threadCount(threads), (count + kBlock - 1) / kBlock));
+    std::atomic<std::size_t> next{0};
+    std::atomic<std::uint64_t> bad{0};
+    std::mutex countersMutex;
+    auto work = [&] {
+        QueryCounters local;
+        std::uint64_t localBad = 0;
+        for (;;) {
+            const std::size_t begin = next.fetch_add(kBlock);
+            if (begin >= count) break;
+            const std::size_t end = std::min(count, begin + kBlock);
+            for (std::size_t i = begin; i < end; ++i) {
+                const float* xyz = rows.positions + i * rows.positionStride;
+                const glm::vec3 pf(xyz[0], xyz[1], xyz[2]);
+                float* value = rows.distances + i * rows.distanceStride;
+                float* gradient = rows.gradients ? rows.gradients + i * rows.gradientStride : nullptr;
+                bool finite = std::isfinite(pf.x) && std::isfinite(pf.y) && std::isfinite(pf.z);
+                if (!finite) {
+                    const float nan = std::numeric_limits<float>::quiet_NaN();
+                    *value = nan;
+                    if (gradient) gradient[0] = gradient[1] = gradient[2] = nan;
+                    ++localBad;
+                    continue;
+                }
+                dvec3 exact(0.0);
+                const bool wantExact = gradient && mode.exact;
+                *value = float(signedDistance(dvec3(pf), wantExact ? &exact : nullptr, &local));
+                if (gradient) {
+                    if (mode.exact) {
+                        gradient[0] = float(exact.x);
+                        gradient[1] = float(exact.y);
+                        gradient[2] = float(exact.z);
+                    } else { // sample.comp's six taps, in float
+                        const float h = mode.step;
+                        gradient[0] = (floatField(pf + glm::vec3(h, 0, 0)) - floatField(pf - glm::vec3(h, 0, 0))) / (2.0f * h);
+                        gradient[1] = (floatField(pf + glm::vec3(0, h, 0)) - floatField(pf - glm::vec3(0, h, 0))) / (2.0f * h);
+                        gradient[2] = (floatField(pf + glm::vec3(0, 0, h)) - floatField(pf - glm::vec3(0, 0, h))) / (2.0f * h);
+                    }
+                    finite = std::isfinite(gradient[0]) && std::isfinite(gradient[1]) && std::isfinite(gradient[2]);
+                }
+                if (!std::isfinite(*value) || !finite) ++localBad;
+            }
+        }
+        bad += localBad;
+        if (counters) {
+            std::lock_guard lock(countersMutex);
+            counters->nearestNodes += local.nearestNodes;
+            counters->windingNodes += local.windingNodes;
+            counters->cachedSigns += local.cachedSigns;
+        }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < workers; ++t) pool.emplace_back(work);
+    work();
+    for (std::thread& thread : pool) thread.join();
+    return bad.load();
+}
+
+std::shared_ptr<const MeshQuery> meshQuery(const std::shared_ptr<const MeshField>& field) {
+    if (!field) return nullptr;
+    // Queries live as long as someone holds them; each holds its field (the deleter's copy).
+    static std::mutex mutex;
+    static std::map<const MeshField*, std::weak_ptr<const MeshQuery>> cache;
+    std::lock_guard lock(mutex);
+    for (auto it = cache.begin(); it != cache.end();) it = it->second.expired() ? cache.erase(it) : std::next(it);
+    if (auto held = cache[field.get()].lock()) return held;
+    std::shared_ptr<const MeshQuery> query(new MeshQuery(*field), [keep = field](const MeshQuery* q) { delete q; });
+    cache[field.get()] = query;
+    return query;
+}
+
+MeshEngine chooseMeshEngine(const std::string& glRenderer) {
+    if (const char* forced = std::getenv("SDFWB_MESH_ENGINE")) {
+        const std::string text = forced;
+        if (text == "cpu") return MeshEngine::Cpu;
+        if (text == "gpu") return MeshEngine::Gpu;
+    }
+    const bool software = glRenderer.find("llvmpipe") != std::string::npos || glRenderer.find("softpipe") != std::string::npos;
+    return software ? MeshEngine::Cpu : MeshEngine::Gpu;
+}
+
+const char* meshEngineName(MeshEngine engine) { return engine == MeshEngine::Cpu ? "cpu" : "gpu"; }
+
+} // namespace sdfwb::meshfield
