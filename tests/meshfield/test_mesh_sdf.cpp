@@ -1,6 +1,7 @@
 // The mesh field on the GPU (shaders/mesh/mesh_field.glsl, through the samplers' own points stage)
 // against the float64 references: distances within 1e-5 of the bounding box's diagonal of a
-// brute-force scan, and the sign each method gives on the CPU; a mesh file through the job layer
+// brute-force scan, and the sign each method gives on the CPU, on both engines (the GLSL field and
+// meshfield::MeshQuery); the CPU engine writes the GLSL field's rows at the same positions; a mesh file through the job layer
 // renders, samples and refuses mesh options on GLSL files.
 #include "GlTestContext.h"
 #include "TestMeshes.h"
@@ -14,6 +15,7 @@
 #include <renderer/SdfRenderer.h>
 #include <sampling/FieldAudit.h>
 #include <sampling/Sampler.h>
+#include <sampling/SampleFile.h>
 #include <sampling/SamplerLibrary.h>
 #include <shaders/SdfSource.h>
 #include <shaders/ShaderComposer.h>
@@ -23,6 +25,8 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -53,6 +57,13 @@ protected:
         compute.releaseGl();
         return distances;
     }
+};
+
+// Sets SDFWB_MESH_ENGINE for one scope (meshfield::chooseMeshEngine reads it when a sampler builds).
+class EngineScope {
+public:
+    explicit EngineScope(const char* engine) { setenv("SDFWB_MESH_ENGINE", engine, 1); }
+    ~EngineScope() { unsetenv("SDFWB_MESH_ENGINE"); }
 };
 
 double bruteDistance(const meshfield::TriangleMesh& mesh, const dvec3& p) {
@@ -88,6 +99,8 @@ TEST_F(MeshSdfTest, GpuDistancesMatchAFloat64BruteForceScanAndEachSignMethodsCpu
         auto field = meshfield::makeMeshField(mesh, "torus.obj", options);
         ASSERT_TRUE(field.hasValue());
         const double diagonal = glm::length((*field)->bounds.hi - (*field)->bounds.lo);
+        for (const char* engine : {"gpu", "cpu"}) {
+        EngineScope scope(engine);
         const std::vector<float> gpu = evaluate(shaders::prepareMeshSdf(*field, "torus.obj"), points);
         double worst = 0.0;
         int wrongSign = 0;
@@ -99,12 +112,153 @@ TEST_F(MeshSdfTest, GpuDistancesMatchAFloat64BruteForceScanAndEachSignMethodsCpu
             ++signed_;
             if ((gpu[i] < 0.0f) != (*field)->inside(p)) ++wrongSign;
         }
-        std::printf("%-12s GPU |f| vs float64 brute force: largest error %.2e (%.2e of the diagonal); sign differs from the "
+        std::printf("%-4s engine, %-12s |f| vs float64 brute force: largest error %.2e (%.2e of the diagonal); sign differs from the "
                     "CPU's at %d of %d points\n",
-                    meshfield::signName(sign), worst, worst / diagonal, wrongSign, signed_);
-        EXPECT_LE(worst, 1e-5 * diagonal) << meshfield::signName(sign);
-        EXPECT_EQ(wrongSign, 0) << meshfield::signName(sign);
+                    engine, meshfield::signName(sign), worst, worst / diagonal, wrongSign, signed_);
+        EXPECT_LE(worst, 1e-5 * diagonal) << meshfield::signName(sign) << ' ' << engine;
+        EXPECT_EQ(wrongSign, 0) << meshfield::signName(sign) << ' ' << engine;
+        }
     }
+}
+
+struct Rows {
+    std::vector<float> positions, distances, gradients;
+    std::string engine;
+};
+
+Rows sampleRows(const shaders::PreparedSdf& sdf, const std::string& pattern, std::uint64_t n, const char* engine,
+                bool taps = false) {
+    EngineScope scope(engine);
+    renderer::SampleCompute compute;
+    auto sampler = sampling::findSampler(pattern, sampling::samplerFolders());
+    EXPECT_TRUE(sampler.hasValue());
+    auto diagnostics = compute.build(sdf, *sampler);
+    EXPECT_FALSE(shaders::hasErrors(diagnostics));
+    sampling::SamplingJob job;
+    job.count = n;
+    job.seed = 5;
+    job.meshGradientTaps = taps;
+    Rows rows{std::vector<float>(3 * n), std::vector<float>(n), std::vector<float>(3 * n), compute.meshEngine()};
+    auto report = sampling::sampleInto(compute, job, rows.positions.data(), rows.distances.data(), rows.gradients.data(), {});
+    EXPECT_TRUE(report.hasValue()) << (report ? "" : report.error().message);
+    EXPECT_EQ(report ? report->badRows : 1u, 0u) << pattern << ' ' << engine;
+    compute.releaseGl();
+    return rows;
+}
+
+TEST_F(MeshSdfTest, TheCpuEngineWritesTheGlslFieldsValuesAtTheSamePositionsBitForBit) {
+    const meshfield::TriangleMesh torus = testing::torusMesh(0.6f, 0.25f, 48, 16);
+    const std::pair<const char*, meshfield::TriangleMesh> meshes[] = {
+        {"closed", torus}, {"5% removed", testing::damaged(torus, testing::Damage::RemoveFivePercent)}};
+    for (const auto& [name, mesh] : meshes)
+        for (meshfield::SignMethod sign :
+             {meshfield::SignMethod::Winding, meshfield::SignMethod::Parity, meshfield::SignMethod::Pseudonormal}) {
+            meshfield::MeshFieldOptions options;
+            options.sign = sign;
+            auto field = meshfield::makeMeshField(mesh, "torus.obj", options);
+            ASSERT_TRUE(field.hasValue());
+            const shaders::PreparedSdf sdf = shaders::prepareMeshSdf(*field, "torus.obj");
+            const double diagonal = glm::length((*field)->bounds.hi - (*field)->bounds.lo);
+            // The grid's points lie on the torus's planes of symmetry, where two triangles are exactly
+            // equally near: it runs once, and its gradients are not compared (either is right).
+            for (const char* pattern : {"rand", "near", "grid"}) {
+                const bool grid = std::string(pattern) == "grid";
+                if (grid && (sign != meshfield::SignMethod::Winding || std::string(name) != "closed")) continue;
+                const std::uint64_t n = 3000;
+                const Rows gpu = sampleRows(sdf, pattern, n, "gpu");
+                const Rows cpu = sampleRows(sdf, pattern, n, "cpu");
+                EXPECT_EQ(gpu.engine, "gpu");
+                EXPECT_EQ(cpu.engine, "cpu");
+                EXPECT_EQ(0, std::memcmp(gpu.positions.data(), cpu.positions.data(), gpu.positions.size() * sizeof(float)))
+                    << name << ' ' << pattern << ": positions differ";
+                double worst = 0.0;
+                int wrongSign = 0;
+                int gradientsApart = 0;
+                for (std::size_t i = 0; i < n; ++i) {
+                    worst = std::max(worst, double(std::abs(gpu.distances[i] - cpu.distances[i])));
+                    if (std::abs(cpu.distances[i]) > 1e-5f && (gpu.distances[i] < 0.0f) != (cpu.distances[i] < 0.0f)) ++wrongSign;
+                    const glm::vec3 a(gpu.gradients[3 * i], gpu.gradients[3 * i + 1], gpu.gradients[3 * i + 2]);
+                    const glm::vec3 b(cpu.gradients[3 * i], cpu.gradients[3 * i + 1], cpu.gradients[3 * i + 2]);
+                    // The GPU's float closest point moves the direction by about its rounding over
+                    // |d| (1e-7 / |d|): close to the surface that is the larger term.
+                    if (glm::length(a - b) > 1e-3f + 1e-6f / std::abs(cpu.distances[i])) ++gradientsApart;
+                }
+                std::printf("%-10s %-12s %-4s: largest value difference %.2e (%.2e of the diagonal), signs differing %d, "
+                            "exact gradients more than 1e-3 apart %d of %llu\n",
+                            name, meshfield::signName(sign), pattern, worst, worst / diagonal, wrongSign, gradientsApart,
+                            (unsigned long long)n);
+                EXPECT_LE(worst, 1e-6 * diagonal) << name << ' ' << pattern;
+                EXPECT_EQ(wrongSign, 0) << name << ' ' << pattern;
+                // Only at float ties between two nearest triangles (the medial axis) may the GPU's
+                // float walk and the CPU's double walk pick different closest points.
+                if (!grid) EXPECT_LE(gradientsApart, int(n / 500)) << name << ' ' << pattern;
+            }
+        }
+}
+
+TEST_F(MeshSdfTest, ExplicitGradientStepsGiveSixTapsOnBothEnginesAndTheExactGradientOtherwise) {
+    auto field = meshfield::makeMeshField(testing::torusMesh(0.6f, 0.25f, 96, 32), "torus.obj", {});
+    ASSERT_TRUE(field.hasValue());
+    const shaders::PreparedSdf sdf = shaders::prepareMeshSdf(*field, "torus.obj");
+    const std::uint64_t n = 4000;
+    const Rows exactGpu = sampleRows(sdf, "rand", n, "gpu");
+    const Rows tapsGpu = sampleRows(sdf, "rand", n, "gpu", true);
+    const Rows tapsCpu = sampleRows(sdf, "rand", n, "cpu", true);
+    int unit = 0;
+    int tapsAgree = 0;
+    int compared = 0;
+    int close = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const glm::vec3 e(exactGpu.gradients[3 * i], exactGpu.gradients[3 * i + 1], exactGpu.gradients[3 * i + 2]);
+        const glm::vec3 g(tapsGpu.gradients[3 * i], tapsGpu.gradients[3 * i + 1], tapsGpu.gradients[3 * i + 2]);
+        const glm::vec3 c(tapsCpu.gradients[3 * i], tapsCpu.gradients[3 * i + 1], tapsCpu.gradients[3 * i + 2]);
+        unit += std::abs(glm::length(e) - 1.0f) < 1e-5f ? 1 : 0;
+        tapsAgree += glm::length(g - c) < 2e-3f ? 1 : 0; // float taps of two float-rounded fields
+        if (std::abs(glm::length(g) - 1.0f) > 1e-3f) continue; // a stencil across a kink
+        ++compared;
+        close += glm::length(e - g) < 1e-2f ? 1 : 0;
+    }
+    std::printf("exact gradients of unit length %d of %llu; GPU and CPU taps within 2e-3 at %d; exact within 1e-2 of the "
+                "taps at %d of %d smooth rows\n",
+                unit, (unsigned long long)n, tapsAgree, close, compared);
+    EXPECT_EQ(unit, int(n));
+    EXPECT_GE(tapsAgree, int(n) * 99 / 100);
+    EXPECT_GT(compared, int(n) * 9 / 10);
+    EXPECT_GE(close, compared * 99 / 100);
+    // The taps are not the exact gradient: a step of 1e-3 over a float field moves them.
+    EXPECT_NE(0, std::memcmp(exactGpu.gradients.data(), tapsGpu.gradients.data(), n * 3 * sizeof(float)));
+}
+
+TEST_F(MeshSdfTest, FilesFromTheCpuEngineAreTheSameForEveryChunkSize) {
+    const fs::path folder = fs::temp_directory_path() / ("sdfwb_meshengine_" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    auto field = meshfield::makeMeshField(testing::torusMesh(0.6f, 0.25f, 48, 16), "torus.obj", {});
+    ASSERT_TRUE(field.hasValue());
+    const shaders::PreparedSdf sdf = shaders::prepareMeshSdf(*field, "torus.obj");
+    EngineScope scope("cpu");
+    for (const char* extension : {".npz", ".ply"}) {
+        std::vector<std::string> contents;
+        for (std::uint32_t chunk : {1000u, 1u << 18}) {
+            renderer::SampleCompute compute;
+            auto sampler = sampling::findSampler("near", sampling::samplerFolders());
+            ASSERT_TRUE(sampler.hasValue());
+            ASSERT_FALSE(shaders::hasErrors(compute.build(sdf, *sampler)));
+            EXPECT_STREQ(compute.meshEngine(), "cpu");
+            sampling::SamplingJob job;
+            job.count = 9000;
+            job.chunkSize = chunk;
+            const fs::path path = folder / ("rows_" + std::to_string(chunk) + extension);
+            auto report = sampling::sampleToFile(compute, job, path, *sampling::formatFromPath(path), {}, {});
+            ASSERT_TRUE(report.hasValue()) << report.error().message;
+            EXPECT_EQ(report->badRows, 0u);
+            std::ifstream in(path, std::ios::binary);
+            contents.emplace_back(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+            compute.releaseGl();
+        }
+        EXPECT_GT(contents[0].size(), 9000u * 28u) << extension;
+        EXPECT_TRUE(contents[0] == contents[1]) << extension << ": the file depends on the chunk size";
+    }
+    fs::remove_all(folder);
 }
 
 TEST_F(MeshSdfTest, AMeshFileIsAnSdfForEveryJobAndMeshOptionsAreRefusedElsewhere) {
