@@ -1,10 +1,14 @@
 #include <meshfield/MeshQuery.h>
 
+#include <core/Log.h>
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -460,8 +464,13 @@ std::shared_ptr<const MeshQuery> meshQuery(const std::shared_ptr<const MeshField
     std::lock_guard lock(mutex);
     for (auto it = cache.begin(); it != cache.end();) it = it->second.expired() ? cache.erase(it) : std::next(it);
     if (auto held = cache[field.get()].lock()) return held;
+    const auto start = std::chrono::steady_clock::now();
     std::shared_ptr<const MeshQuery> query(new MeshQuery(*field), [keep = field](const MeshQuery* q) { delete q; });
     cache[field.get()] = query;
+    char line[256];
+    std::snprintf(line, sizeof line, "%s: CPU engine layout %.1f MB (sign cache included), built in %.3f s", field->name.c_str(),
+                  double(query->bytes()) / 1e6, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    log::info("meshfield", line);
     return query;
 }
 
