@@ -76,6 +76,11 @@ Expected<void> PointEvaluator::evaluate(const std::vector<float>& points, std::v
     sampling::FieldSettings settings;
     settings.time = m_time;
     settings.gradientStep = gradientStep;
+    // Central differences even on a mesh's own field: an open mesh's field jumps from -d to +d where
+    // its winding number crosses 1/2 (over a hole), and the mesher finds that sheet through the taps'
+    // large slope across it (the Lipschitz estimate, the vertices' projection); the exact gradient of
+    // the distance does not see it.
+    settings.meshGradientTaps = true;
     settings.chunk = kChunk;
     settings.parameters = m_parameters;
     auto report = m_points.evaluate(points.data(), n, distances.data(), gradients ? gradients->data() : nullptr, settings);
