@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cmath>
 #include <cstdlib>
+#include <deque>
 #include <limits>
 #include <map>
 #include <mutex>
@@ -30,6 +31,46 @@ std::uint32_t asBits(float value) { return std::bit_cast<std::uint32_t>(value); 
 // Every triangle edge used exactly twice, once in each direction: the winding number is then an
 // integer off the surface, constant wherever no triangle separates two points (the sign cache's
 // premise). Flipped faces, holes and non-manifold edges fail this.
+// Squared distance from p to triangle t (three corners at t[0..2], t[4..6], t[8..10]) in float:
+// Ericson's regions, as closestPointOnTriangle, for a quick test before the double one.
+inline float closestDistance2(float px, float py, float pz, const float* t) {
+    const float ax = t[0], ay = t[1], az = t[2];
+    const float abx = t[4] - ax, aby = t[5] - ay, abz = t[6] - az;
+    const float acx = t[8] - ax, acy = t[9] - ay, acz = t[10] - az;
+    const float apx = px - ax, apy = py - ay, apz = pz - az;
+    auto length2 = [](float x, float y, float z) { return x * x + y * y + z * z; };
+    const float d1 = abx * apx + aby * apy + abz * apz;
+    const float d2 = acx * apx + acy * apy + acz * apz;
+    if (d1 <= 0.0f && d2 <= 0.0f) return length2(apx, apy, apz);
+    const float bpx = apx - abx, bpy = apy - aby, bpz = apz - abz;
+    const float d3 = abx * bpx + aby * bpy + abz * bpz;
+    const float d4 = acx * bpx + acy * bpy + acz * bpz;
+    if (d3 >= 0.0f && d4 <= d3) return length2(bpx, bpy, bpz);
+    const float vc = d1 * d4 - d3 * d2;
+    if (vc <= 0.0f && d1 >= 0.0f && d3 <= 0.0f) {
+        const float v = d1 / (d1 - d3);
+        return length2(apx - v * abx, apy - v * aby, apz - v * abz);
+    }
+    const float cpx = apx - acx, cpy = apy - acy, cpz = apz - acz;
+    const float d5 = abx * cpx + aby * cpy + abz * cpz;
+    const float d6 = acx * cpx + acy * cpy + acz * cpz;
+    if (d6 >= 0.0f && d5 <= d6) return length2(cpx, cpy, cpz);
+    const float vb = d5 * d2 - d1 * d6;
+    if (vb <= 0.0f && d2 >= 0.0f && d6 <= 0.0f) {
+        const float w = d2 / (d2 - d6);
+        return length2(apx - w * acx, apy - w * acy, apz - w * acz);
+    }
+    const float va = d3 * d6 - d5 * d4;
+    if (va <= 0.0f && d4 - d3 >= 0.0f && d5 - d6 >= 0.0f) {
+        const float w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        return length2(bpx - w * (acx - abx), bpy - w * (acy - aby), bpz - w * (acz - abz));
+    }
+    const float sum = va + vb + vc;
+    if (!(sum > 0.0f)) return 0.0f; // degenerate: leave it to the double computation
+    const float v = vb / sum, w = vc / sum;
+    return length2(apx - abx * v - acx * w, apy - aby * v - acy * w, apz - abz * v - acz * w);
+}
+
 bool closedAndOriented(const TriangleMesh& mesh) {
     std::unordered_map<std::uint64_t, int> directed;
     directed.reserve(mesh.indices.size());
@@ -119,6 +160,9 @@ MeshQuery::MeshQuery(const MeshField& field) : m_field(field) {
             for (int a = 0; a < 3; ++a)
                 m_corners[s * 9 + std::size_t(k * 3 + a)] = field.triangles[s * kTriangleFloats + std::size_t(k * 4 + a)];
 
+    m_scale = std::max({std::abs(field.bounds.lo.x), std::abs(field.bounds.lo.y), std::abs(field.bounds.lo.z),
+                        std::abs(field.bounds.hi.x), std::abs(field.bounds.hi.y), std::abs(field.bounds.hi.z)});
+    if (!std::isfinite(m_scale)) m_scale = 0.0;
     if (field.options.sign == SignMethod::Winding && closedAndOriented(field.mesh)) {
         m_useCache = true;
         const dvec3 extent = field.bounds.hi - field.bounds.lo;
@@ -153,9 +197,33 @@ double MeshQuery::nearest(const dvec3& p, std::uint32_t& slot, int& feature, dve
     // A box is skipped when its float distance exceeds the best by more than float rounding can
     // explain (boxes are rounded outward already; the slack keeps exact ties walked).
     auto prune = [&](float d2) { return double(d2) > best * (1.0 + 1e-5) + 1e-30; };
+    // Float rounding of a point-triangle distance: a few units in the last place of the coordinates.
+    const double margin = 1e-6 * (m_scale + std::abs(p.x) + std::abs(p.y) + std::abs(p.z));
+    double bound = std::numeric_limits<double>::infinity();
     struct Entry {
-        std::uint32_t node;
+        std::uint32_t node; // an inner node, or a leaf's first triangle slot
+        std::uint32_t count; // 0: an inner node; else the leaf's triangles
         float distance2;
+    };
+    auto testLeaf = [&](std::uint32_t first, std::uint32_t count) {
+        for (std::uint32_t s = first; s < first + count; ++s) {
+            // A float distance first: a triangle farther than the best by more than float rounding
+            // can explain is not computed again in double.
+            const float* t = m_field.triangles.data() + std::size_t(s) * kTriangleFloats;
+            if (double(closestDistance2(px, py, pz, t)) > bound) continue;
+            const double* c = m_corners.data() + std::size_t(s) * 9;
+            int f = 0;
+            const dvec3 q = closestPointOnTriangle(p, dvec3(c[0], c[1], c[2]), dvec3(c[3], c[4], c[5]), dvec3(c[6], c[7], c[8]), &f);
+            const double d2 = glm::dot(p - q, p - q);
+            if (d2 < best) {
+                best = d2;
+                slot = s;
+                feature = f;
+                closest = q;
+                const double reach = std::sqrt(best) + margin;
+                bound = reach * reach;
+            }
+        }
     };
     Entry stack[kStack];
     int top = 0;
@@ -166,46 +234,40 @@ double MeshQuery::nearest(const dvec3& p, std::uint32_t& slot, int& feature, dve
         ++tested;
         float d[2];
         for (int k = 0; k < 2; ++k) {
-            const float dx = std::max({node.lo[k][0] - px, px - node.hi[k][0], 0.0f});
-            const float dy = std::max({node.lo[k][1] - py, py - node.hi[k][1], 0.0f});
-            const float dz = std::max({node.lo[k][2] - pz, pz - node.hi[k][2], 0.0f});
+            const float dx = std::max(std::max(node.lo[k][0] - px, px - node.hi[k][0]), 0.0f);
+            const float dy = std::max(std::max(node.lo[k][1] - py, py - node.hi[k][1]), 0.0f);
+            const float dz = std::max(std::max(node.lo[k][2] - pz, pz - node.hi[k][2]), 0.0f);
             d[k] = dx * dx + dy * dy + dz * dz;
         }
         const int nearK = d[1] < d[0] ? 1 : 0;
-        std::uint32_t descend = 0;
+        const int farK = 1 - nearK;
         bool goDown = false;
-        for (int j = 0; j < 2; ++j) {
-            const int k = j == 0 ? nearK : 1 - nearK;
-            if (prune(d[k])) continue;
-            if (node.count[k] > 0) {
-                for (std::uint32_t s = node.child[k]; s < node.child[k] + node.count[k]; ++s) {
-                    const double* c = m_corners.data() + std::size_t(s) * 9;
-                    int f = 0;
-                    const dvec3 q = closestPointOnTriangle(p, dvec3(c[0], c[1], c[2]), dvec3(c[3], c[4], c[5]),
-                                                           dvec3(c[6], c[7], c[8]), &f);
-                    const double d2 = glm::dot(p - q, p - q);
-                    if (d2 < best) {
-                        best = d2;
-                        slot = s;
-                        feature = f;
-                        closest = q;
-                    }
-                }
-            } else if (!goDown) {
+        // The nearer child first: a leaf is tested now, an inner node is walked next. The farther
+        // child waits on the stack unless both are leaves, so that the nearer subtree's best can
+        // prune it.
+        if (!prune(d[nearK])) {
+            if (node.count[nearK] > 0) {
+                testLeaf(node.child[nearK], node.count[nearK]);
+            } else {
                 goDown = true;
-                descend = node.child[k];
-            } else if (top < kStack) {
-                stack[top++] = {node.child[k], d[k]};
+                index = node.child[nearK];
             }
         }
-        if (goDown) {
-            index = descend;
-            continue;
+        if (!prune(d[farK])) {
+            if (node.count[farK] > 0 && !goDown)
+                testLeaf(node.child[farK], node.count[farK]);
+            else if (top < kStack)
+                stack[top++] = {node.child[farK], node.count[farK], d[farK]};
         }
+        if (goDown) continue;
         bool found = false;
         while (top > 0) {
             const Entry entry = stack[--top];
             if (prune(entry.distance2)) continue;
+            if (entry.count > 0) {
+                testLeaf(entry.node, entry.count);
+                continue;
+            }
             index = entry.node;
             found = true;
             break;
@@ -467,6 +529,11 @@ std::shared_ptr<const MeshQuery> meshQuery(const std::shared_ptr<const MeshField
     const auto start = std::chrono::steady_clock::now();
     std::shared_ptr<const MeshQuery> query(new MeshQuery(*field), [keep = field](const MeshQuery* q) { delete q; });
     cache[field.get()] = query;
+    // The last few queries stay built between calls (a script that evaluates a mesh again and again
+    // keeps its layout and its sign cache).
+    static std::deque<std::shared_ptr<const MeshQuery>> recent;
+    recent.push_back(query);
+    if (recent.size() > 2) recent.pop_front();
     char line[256];
     std::snprintf(line, sizeof line, "%s: CPU engine layout %.1f MB (sign cache included), built in %.3f s", field->name.c_str(),
                   double(query->bytes()) / 1e6, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

@@ -91,6 +91,11 @@ struct SampleCompute::Impl {
     GLint location(const char* name) const { return glGetUniformLocation(program.id(), name); }
     Expected<void> reserve(BufferSet& set, std::uint32_t count, bool mapped, bool interleaved = false);
     // The CPU engine's values and gradients at the positions; the rows with a non-finite value.
+    // The sampler's positions are the caller's points one for one (analysis/points.glsl is the
+    // only sampler that reads per-sample inputs; the mesher's lattice reads a table).
+    static bool positionsAreInputs(const SampleUniforms& uniforms) {
+        return uniforms.inputPoints && uniforms.inputTableFloats == 0;
+    }
     std::uint32_t evaluateOnCpu(const SampleUniforms& uniforms, const float* positions, std::size_t positionStride,
                                 float* distances, std::size_t distanceStride, float* gradients, std::size_t gradientStride,
                                 std::uint32_t count) const {
@@ -276,6 +281,11 @@ Expected<std::uint32_t> SampleCompute::run(const SampleUniforms& uniforms, std::
     if (count > kMaxChunk)
         return makeError("sampling: chunk of " + std::to_string(count) + " exceeds " + std::to_string(kMaxChunk));
     while (glGetError() != GL_NO_ERROR) {}
+    if (m_impl->query && m_impl->positionsAreInputs(uniforms)) { // analysis/points.glsl: no GL work at all
+        const float* in = uniforms.inputPoints + 3 * std::size_t(first);
+        if (positions) std::copy(in, in + 3 * std::size_t(count), positions);
+        return m_impl->evaluateOnCpu(uniforms, in, 3, distances, 1, gradients, 3, count);
+    }
     if (auto ok = m_impl->reserve(m_impl->plain, count, false); !ok) return ok.error();
     std::vector<float> scratch;
     if (m_impl->query && !positions) { // the engine needs the positions even where the caller does not
@@ -333,21 +343,29 @@ Expected<MappedRows> SampleCompute::runMapped(const SampleUniforms& uniforms, st
     if (interleaved) shift = {};
     for (std::uint32_t floats : shift)
         if (floats >= kMaxShift) return makeError("sampling: array shift of " + std::to_string(floats) + " floats");
-    if (auto ok = m_impl->reserve(set, std::max(count, 1u), true, interleaved); !ok) return ok.error();
-    auto bad = m_impl->dispatch(uniforms, first, count, set, true, true, interleaved, shift);
+    const float* inputs = m_impl->query && Impl::positionsAreInputs(uniforms) ? uniforms.inputPoints + 3 * std::size_t(first) : nullptr;
+    if (!inputs) {
+        if (auto ok = m_impl->reserve(set, std::max(count, 1u), true, interleaved); !ok) return ok.error();
+    }
+    auto bad = inputs ? Expected<std::uint32_t>(0u) : m_impl->dispatch(uniforms, first, count, set, true, true, interleaved, shift);
     if (!bad) return bad.error();
     // The count's read-back waited for the dispatch; coherent mappings see its writes after a fence.
-    GLsync fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
-    glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, GLuint64(60) * 1000000000u);
-    glDeleteSync(fence);
+    if (!inputs) {
+        GLsync fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+        glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, GLuint64(60) * 1000000000u);
+        glDeleteSync(fence);
+    }
     if (m_impl->query) {
         // The mapping is read-only: the rows are completed in this slot's host arrays, at the
         // same shifts, and the caller reads them there.
         std::vector<float>(&host)[3] = m_impl->hostRows[std::size_t(slot) % kSlots];
         if (interleaved) {
             host[0].resize(std::size_t(count) * 7);
-            std::copy(set.mapped[0], set.mapped[0] + std::size_t(count) * 7, host[0].data());
             float* base = host[0].data();
+            if (inputs)
+                for (std::size_t i = 0; i < count; ++i) std::copy(inputs + 3 * i, inputs + 3 * i + 3, base + 7 * i);
+            else
+                std::copy(set.mapped[0], set.mapped[0] + std::size_t(count) * 7, base);
             const std::uint32_t cpuBad = m_impl->evaluateOnCpu(uniforms, base, 7, base + 3, 7, base + 4, 7, count);
             return MappedRows{nullptr, nullptr, nullptr, cpuBad, base};
         }
@@ -356,7 +374,8 @@ Expected<MappedRows> SampleCompute::runMapped(const SampleUniforms& uniforms, st
         float* p = host[0].data() + shift[0];
         float* d = host[1].data() + shift[1];
         float* g = host[2].data() + shift[2];
-        std::copy(set.mapped[0] + shift[0], set.mapped[0] + shift[0] + sizes[0], p);
+        const float* from = inputs ? inputs : set.mapped[0] + shift[0];
+        std::copy(from, from + sizes[0], p);
         const std::uint32_t cpuBad = m_impl->evaluateOnCpu(uniforms, p, 3, d, 1, g, 3, count);
         return MappedRows{p, d, g, cpuBad};
     }
