@@ -13,8 +13,8 @@ duplicated shell) is graded against its closed original's truth. Open meshes hav
 table gives how often each method disagrees with winding numbers.
 Speed: the same M points and the same normalised mesh file through sdfwb.evaluate (value + exact
 gradient; the CPU engine on 1 and all threads, the GLSL field on llvmpipe for scale), the C++
-references of bench/mesh_sdf_reference.cpp (Embree and CGAL, each sign method, every compile
-variant of bench/build_mesh_sdf_reference.sh, 1 and all threads) and Open3D's unsigned
+references of bench/mesh_sdf_peer.cpp (Embree and CGAL, each sign method, every compile
+variant of bench/build_mesh_sdf_peer.sh, 1 and all threads) and Open3D's unsigned
 compute_distance, each timed after a warm-up, best of 3; accuracy beside each against
 bench/mesh_sdf_truth.py (float64 brute force, exact winding numbers) on a subset.
 Scale: a 1.1 M-triangle mesh made from the bunny (two rounds of midpoint subdivision) at
@@ -177,7 +177,7 @@ def best_of(call, repeats=3):
     return min(times)
 
 
-REFERENCE_SOURCE = os.path.join(ROOT, "bench", "mesh_sdf_reference.cpp")
+REFERENCE_SOURCE = os.path.join(ROOT, "bench", "mesh_sdf_peer.cpp")
 REFERENCE_DIR = os.path.join(work, "reference")
 TRUTH_POINTS = option("--truth-points", 1000)
 THREADS = sorted({1, os.cpu_count() or 1})
@@ -186,7 +186,7 @@ reference_lines = []
 
 def build_references():
     # The C++ references, compiled here in every variant the build script makes (it prints its lines).
-    built = subprocess.run(["bash", os.path.join(ROOT, "bench", "build_mesh_sdf_reference.sh"), REFERENCE_DIR],
+    built = subprocess.run(["bash", os.path.join(ROOT, "bench", "build_mesh_sdf_peer.sh"), REFERENCE_DIR],
                            capture_output=True, text=True)
     if built.returncode != 0:
         raise SystemExit("bench_mesh_sdf: building the C++ references failed:\n" + built.stdout + built.stderr)
@@ -472,7 +472,7 @@ with open(OUT, "w") as out:
               "signs\" the share of those farther than 1e-4 from the surface whose sign differs from the exact "
               "float64 winding number (every triangle's solid angle summed; shares no code with sdfwb), "
               "`bench/mesh_sdf_truth.py`.\n\n"
-              "The references (`bench/mesh_sdf_reference.cpp`, compiled by `bench/build_mesh_sdf_reference.sh` in "
+              "The references (`bench/mesh_sdf_peer.cpp`, compiled by `bench/build_mesh_sdf_peer.sh` in "
               "every variant below): a C++ program on Debian's Embree 3 (closest point by `rtcPointQuery`; sign by "
               "the majority of three rays' crossing parities, or by the angle-weighted pseudonormal of the closest "
               "feature) and on CGAL's AABB tree (`closest_point_and_primitive`; sign by `Side_of_triangle_mesh`, or "

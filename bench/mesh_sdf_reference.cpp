@@ -189,29 +189,30 @@ template <class T> V3<T> onSegment(V3<T> p, V3<T> a, V3<T> b, int edge, int& fea
     return a + ab * t;
 }
 
-template <class T> V3<T> closestOnTriangle(V3<T> p, V3<T> a, V3<T> b, V3<T> c, int& feature) {
-    const V3<T> ab = b - a, ac = c - a, ap = p - a;
+// With ab = b - a, ac = c - a and their products precomputed: of the six dot products the regions
+// need only dot(ab, p - a) and dot(ac, p - a) remain, the rest follow from them.
+template <class T>
+V3<T> closestOnTriangle(V3<T> p, V3<T> a, V3<T> ab, V3<T> ac, T abab, T abac, T acac, int& feature) {
+    const V3<T> ap = p - a;
     const T d1 = dot(ab, ap), d2 = dot(ac, ap);
     if (d1 <= T(0) && d2 <= T(0)) {
         feature = kVertexA;
         return a;
     }
-    const V3<T> bp = p - b;
-    const T d3 = dot(ab, bp), d4 = dot(ac, bp);
+    const T d3 = d1 - abab, d4 = d2 - abac; // dot(ab, p - b), dot(ac, p - b)
     if (d3 >= T(0) && d4 <= d3) {
         feature = kVertexB;
-        return b;
+        return a + ab;
     }
     const T vc = d1 * d4 - d3 * d2;
     if (vc <= T(0) && d1 >= T(0) && d3 <= T(0)) {
         feature = kEdgeAB;
         return a + ab * (d1 / (d1 - d3));
     }
-    const V3<T> cp = p - c;
-    const T d5 = dot(ab, cp), d6 = dot(ac, cp);
+    const T d5 = d1 - abac, d6 = d2 - acac; // dot(ab, p - c), dot(ac, p - c)
     if (d6 >= T(0) && d5 <= d6) {
         feature = kVertexC;
-        return c;
+        return a + ac;
     }
     const T vb = d5 * d2 - d1 * d6;
     if (vb <= T(0) && d2 >= T(0) && d6 <= T(0)) {
@@ -221,10 +222,11 @@ template <class T> V3<T> closestOnTriangle(V3<T> p, V3<T> a, V3<T> b, V3<T> c, i
     const T va = d3 * d6 - d5 * d4;
     if (va <= T(0) && d4 - d3 >= T(0) && d5 - d6 >= T(0)) {
         feature = kEdgeBC;
-        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+        return a + ab + (ac - ab) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
     }
     const T sum = va + vb + vc;
     if (!(sum > T(0))) { // degenerate (zero-area) triangle: the nearest of its three edges
+        const V3<T> b = a + ab, c = a + ac;
         int f0, f1, f2;
         const V3<T> q0 = onSegment(p, a, b, 0, f0), q1 = onSegment(p, b, c, 1, f1), q2 = onSegment(p, c, a, 2, f2);
         const T e0 = dot(p - q0, p - q0), e1 = dot(p - q1, p - q1), e2 = dot(p - q2, p - q2);
@@ -235,6 +237,11 @@ template <class T> V3<T> closestOnTriangle(V3<T> p, V3<T> a, V3<T> b, V3<T> c, i
     feature = kFace;
     const T inverse = T(1) / sum;
     return a + ab * (vb * inverse) + ac * (vc * inverse);
+}
+
+template <class T> V3<T> closestOnTriangle(V3<T> p, V3<T> a, V3<T> b, V3<T> c, int& feature) {
+    const V3<T> ab = b - a, ac = c - a;
+    return closestOnTriangle(p, a, ab, ac, dot(ab, ab), dot(ab, ac), dot(ac, ac), feature);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -411,22 +418,44 @@ Vec3f parityDirection(int k) {
     return {float(d[k][0] / length), float(d[k][1] / length), float(d[k][2] / length)};
 }
 
+// What the point query callback reads of a triangle, one cache line: its corners and the products of
+// its edge vectors (in double, as the callback computes).
+struct alignas(64) TriangleRecord {
+    float corner[3][3];
+    double abab, abac, acac;
+    Vec3d vertex(int k) const { return {corner[k][0], corner[k][1], corner[k][2]}; }
+    Vec3d closest(Vec3d p, int& feature) const {
+        const Vec3d a = vertex(0), ab = vertex(1) - a, ac = vertex(2) - a; // differences of floats: exact
+        return closestOnTriangle(p, a, ab, ac, abab, abac, acac, feature);
+    }
+};
+
+TriangleRecord makeRecord(Vec3f a, Vec3f b, Vec3f c) {
+    TriangleRecord r{};
+    const Vec3f corners[3] = {a, b, c};
+    for (int k = 0; k < 3; ++k) r.corner[k][0] = corners[k].x, r.corner[k][1] = corners[k].y, r.corner[k][2] = corners[k].z;
+    const Vec3d ab = r.vertex(1) - r.vertex(0), ac = r.vertex(2) - r.vertex(0);
+    r.abab = dot(ab, ab), r.abac = dot(ab, ac), r.acac = dot(ac, ac);
+    return r;
+}
+
 struct EmbreeClosest {
     Vec3d p;
-    const float* triangles; // 9 floats per triangle
+    const TriangleRecord* triangles;
     double distance2;
     std::uint32_t triangle;
     int feature;
     Vec3d closest;
 };
 
-// In double: in float, two triangles whose distances differ by less than float's resolution of the
-// squared distance tie, and the wrong one's closest point shows in the gradient (~1e-5 at d ~ 1).
+// Embree calls this for every triangle of each leaf it reaches: the closest point, in double (in float, two
+// triangles whose distances differ by less than float's resolution of the squared distance tie,
+// and the wrong one's closest point shows in the gradient, ~1e-5 at d ~ 1).
 bool embreeClosestCallback(RTCPointQueryFunctionArguments* args) {
     EmbreeClosest& q = *static_cast<EmbreeClosest*>(args->userPtr);
-    const float* t = q.triangles + 9 * std::size_t(args->primID);
+    const TriangleRecord& t = q.triangles[args->primID];
     int feature;
-    const Vec3d c = closestOnTriangle(q.p, Vec3d{t[0], t[1], t[2]}, Vec3d{t[3], t[4], t[5]}, Vec3d{t[6], t[7], t[8]}, feature);
+    const Vec3d c = t.closest(q.p, feature);
     const Vec3d d = q.p - c;
     const double distance2 = dot(d, d);
     if (!(distance2 < q.distance2)) return false;
@@ -461,7 +490,7 @@ void countCrossing(const RTCFilterFunctionNArguments* args) {
 struct EmbreeEngine {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
-    std::vector<float> triangles;
+    std::vector<TriangleRecord> triangles;
 
     void build(const Mesh& mesh, int threads) {
         const std::string config = "threads=" + std::to_string(threads);
@@ -486,12 +515,10 @@ struct EmbreeEngine {
         rtcCommitScene(scene);
         if (rtcGetDeviceError(device) != RTC_ERROR_NONE) fail("Embree failed to build the scene");
         // The callback's copy of each triangle's corners, 9 contiguous floats.
-        triangles.resize(9 * triangleCount);
+        triangles.resize(triangleCount);
         for (std::size_t t = 0; t < triangleCount; ++t)
-            for (int k = 0; k < 3; ++k) {
-                const Vec3f v = mesh.vertex(mesh.corners[3 * t + k]);
-                triangles[9 * t + 3 * k] = v.x, triangles[9 * t + 3 * k + 1] = v.y, triangles[9 * t + 3 * k + 2] = v.z;
-            }
+            triangles[t] = makeRecord(mesh.vertex(mesh.corners[3 * t]), mesh.vertex(mesh.corners[3 * t + 1]),
+                                      mesh.vertex(mesh.corners[3 * t + 2]));
     }
     ~EmbreeEngine() {
         if (scene) rtcReleaseScene(scene);
@@ -518,8 +545,8 @@ struct EmbreeEngine {
         query.x = p.x, query.y = p.y, query.z = p.z, query.time = 0.0f;
         query.radius = std::numeric_limits<float>::infinity();
         if (seed != ~0u) {
-            const float* t = triangles.data() + 9 * std::size_t(seed);
-            q.closest = closestOnTriangle(q.p, Vec3d{t[0], t[1], t[2]}, Vec3d{t[3], t[4], t[5]}, Vec3d{t[6], t[7], t[8]}, q.feature);
+            const TriangleRecord& t = triangles[seed];
+            q.closest = t.closest(q.p, q.feature);
             q.distance2 = dot(q.p - q.closest, q.p - q.closest);
             q.triangle = seed;
             query.radius = std::nextafter(float(std::sqrt(q.distance2)), std::numeric_limits<float>::infinity());

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <deque>
 #include <limits>
 #include <map>
@@ -100,59 +101,64 @@ unsigned threadCount(unsigned asked) {
 // The parity sign's three ray directions (MeshField.cpp; the same in shaders/mesh/mesh_field.glsl).
 const std::array<glm::dvec3, 3>& parityDirections();
 
-// An inner node of the hierarchy as the CPU walks it: both children's boxes in one cache line, so
-// a step tests both children without touching their nodes. child[k] is an inner node's index
-// (count[k] == 0) or a leaf's first triangle slot (count[k] triangles).
+// An inner node of the hierarchy as the CPU walks it: up to four children (a binary node's
+// grandchildren) with their boxes side by side, so that one step tests four boxes in one vector
+// operation without touching the children. child[k] is an inner node's index (count[k] == 0) or a
+// leaf's first triangle slot (count[k] triangles); an empty slot has an empty box (lo +inf, hi -inf),
+// whose distance is infinite.
 struct alignas(64) MeshQuery::Node {
-    float lo[2][3];
-    float hi[2][3];
-    std::uint32_t child[2];
-    std::uint32_t count[2];
-    std::uint32_t source; // its index in MeshField::nodes (the winding walk's dipoles)
+    float lo[3][4];
+    float hi[3][4];
+    std::uint32_t child[4];
+    std::uint32_t count[4];
 };
 
 MeshQuery::MeshQuery(const MeshField& field) : m_field(field) {
     const std::size_t gpuNodes = field.nodes.size() / kNodeFloats;
     auto gpu = [&](std::uint32_t index) { return field.nodes.data() + std::size_t(index) * kNodeFloats; };
-    std::vector<std::uint32_t> cpuIndex(gpuNodes, 0);
-    // Inner GPU nodes in order get CPU indices; a leaf root becomes one node with one child.
-    auto fill = [&](Node& node, int k, std::uint32_t gpuChild) {
-        const float* n = gpu(gpuChild);
-        for (int a = 0; a < 3; ++a) {
-            node.lo[k][a] = n[a];
-            node.hi[k][a] = n[4 + a];
-        }
-        node.count[k] = asBits(n[7]);
-        node.child[k] = node.count[k] > 0 ? asBits(n[3]) : gpuChild; // remapped below
-    };
-    if (gpuNodes > 0) {
-        if (asBits(gpu(0)[7]) > 0) {
-            Node root{};
-            fill(root, 0, 0);
-            for (int a = 0; a < 3; ++a) {
-                root.lo[1][a] = std::numeric_limits<float>::infinity();
-                root.hi[1][a] = -std::numeric_limits<float>::infinity();
-            }
-            root.count[1] = 0;
-            root.child[1] = 0;
-            root.source = 0;
-            m_nodes.push_back(root);
+    auto isLeaf = [&](std::uint32_t index) { return asBits(gpu(index)[7]) > 0; };
+    // Collapses binary node `index` with its children into one four-wide node; returns its index.
+    auto collapse = [&](auto& self, std::uint32_t index) -> std::uint32_t {
+        std::uint32_t members[4];
+        int n = 0;
+        if (isLeaf(index)) {
+            members[n++] = index;
         } else {
-            for (std::uint32_t i = 0; i < gpuNodes; ++i)
-                if (asBits(gpu(i)[7]) == 0) {
-                    cpuIndex[i] = std::uint32_t(m_nodes.size());
-                    Node node{};
-                    const std::uint32_t left = asBits(gpu(i)[3]);
-                    fill(node, 0, left);
-                    fill(node, 1, left + 1);
-                    node.source = i;
-                    m_nodes.push_back(node);
+            const std::uint32_t left = asBits(gpu(index)[3]);
+            for (std::uint32_t c : {left, left + 1}) {
+                if (isLeaf(c)) {
+                    members[n++] = c;
+                } else {
+                    const std::uint32_t grand = asBits(gpu(c)[3]);
+                    members[n++] = grand;
+                    members[n++] = grand + 1;
                 }
-            for (Node& node : m_nodes)
-                for (int k = 0; k < 2; ++k)
-                    if (node.count[k] == 0) node.child[k] = cpuIndex[node.child[k]];
+            }
         }
-    }
+        const std::uint32_t at = std::uint32_t(m_nodes.size());
+        m_nodes.emplace_back();
+        Node node{};
+        for (int k = 0; k < 4; ++k) {
+            for (int a = 0; a < 3; ++a) {
+                node.lo[a][k] = std::numeric_limits<float>::infinity();
+                node.hi[a][k] = -std::numeric_limits<float>::infinity();
+            }
+            node.child[k] = 0;
+            node.count[k] = 0;
+        }
+        for (int k = 0; k < n; ++k) {
+            const float* m = gpu(members[k]);
+            for (int a = 0; a < 3; ++a) {
+                node.lo[a][k] = m[a];
+                node.hi[a][k] = m[4 + a];
+            }
+            node.count[k] = asBits(m[7]);
+            node.child[k] = node.count[k] > 0 ? asBits(m[3]) : self(self, members[k]);
+        }
+        m_nodes[at] = node;
+        return at;
+    };
+    if (gpuNodes > 0) collapse(collapse, 0);
     const std::size_t slots = field.triangles.size() / kTriangleFloats;
     m_corners.resize(slots * 9);
     for (std::size_t s = 0; s < slots; ++s)
@@ -201,7 +207,7 @@ double MeshQuery::nearest(const dvec3& p, std::uint32_t& slot, int& feature, dve
     const double margin = 1e-6 * (m_scale + std::abs(p.x) + std::abs(p.y) + std::abs(p.z));
     double bound = std::numeric_limits<double>::infinity();
     struct Entry {
-        std::uint32_t node; // an inner node, or a leaf's first triangle slot
+        std::uint32_t node;  // an inner node, or a leaf's first triangle slot
         std::uint32_t count; // 0: an inner node; else the leaf's triangles
         float distance2;
     };
@@ -225,54 +231,53 @@ double MeshQuery::nearest(const dvec3& p, std::uint32_t& slot, int& feature, dve
             }
         }
     };
+    using Float4 = float __attribute__((vector_size(16)));
+    const Float4 vx = {px, px, px, px}, vy = {py, py, py, py}, vz = {pz, pz, pz, pz};
+    const Float4 zero = {0.0f, 0.0f, 0.0f, 0.0f};
     Entry stack[kStack];
     int top = 0;
-    std::uint32_t index = 0;
+    stack[top++] = {0, 0, 0.0f};
     std::uint64_t tested = 0;
-    for (;;) {
-        const Node& node = m_nodes[index];
+    while (top > 0) {
+        const Entry entry = stack[--top];
+        if (prune(entry.distance2)) continue;
+        if (entry.count > 0) {
+            testLeaf(entry.node, entry.count);
+            continue;
+        }
+        const Node& node = m_nodes[entry.node];
         ++tested;
-        float d[2];
-        for (int k = 0; k < 2; ++k) {
-            const float dx = std::max(std::max(node.lo[k][0] - px, px - node.hi[k][0]), 0.0f);
-            const float dy = std::max(std::max(node.lo[k][1] - py, py - node.hi[k][1]), 0.0f);
-            const float dz = std::max(std::max(node.lo[k][2] - pz, pz - node.hi[k][2]), 0.0f);
-            d[k] = dx * dx + dy * dy + dz * dz;
-        }
-        const int nearK = d[1] < d[0] ? 1 : 0;
-        const int farK = 1 - nearK;
-        bool goDown = false;
-        // The nearer child first: a leaf is tested now, an inner node is walked next. The farther
-        // child waits on the stack unless both are leaves, so that the nearer subtree's best can
-        // prune it.
-        if (!prune(d[nearK])) {
-            if (node.count[nearK] > 0) {
-                testLeaf(node.child[nearK], node.count[nearK]);
-            } else {
-                goDown = true;
-                index = node.child[nearK];
+        Float4 lx, ly, lz, hx, hy, hz;
+        std::memcpy(&lx, node.lo[0], 16);
+        std::memcpy(&ly, node.lo[1], 16);
+        std::memcpy(&lz, node.lo[2], 16);
+        std::memcpy(&hx, node.hi[0], 16);
+        std::memcpy(&hy, node.hi[1], 16);
+        std::memcpy(&hz, node.hi[2], 16);
+        auto gap = [&](Float4 lo, Float4 hi, Float4 v) {
+            const Float4 below = lo - v, above = v - hi;
+            const Float4 larger = below > above ? below : above;
+            return larger > zero ? larger : zero;
+        };
+        const Float4 dx = gap(lx, hx, vx), dy = gap(ly, hy, vy), dz = gap(lz, hz, vz);
+        const Float4 d2 = dx * dx + dy * dy + dz * dz;
+        // The children that may hold a nearer triangle, farthest first onto the stack so that the
+        // nearest is walked next.
+        int order[4];
+        int n = 0;
+        for (int k = 0; k < 4; ++k) {
+            if ((node.count[k] == 0 && node.child[k] == 0) || prune(d2[k])) continue; // empty slot (0 is the root)
+            int at = n++;
+            while (at > 0 && d2[order[at - 1]] < d2[k]) {
+                order[at] = order[at - 1];
+                --at;
             }
+            order[at] = k;
         }
-        if (!prune(d[farK])) {
-            if (node.count[farK] > 0 && !goDown)
-                testLeaf(node.child[farK], node.count[farK]);
-            else if (top < kStack)
-                stack[top++] = {node.child[farK], node.count[farK], d[farK]};
+        for (int j = 0; j < n && top < kStack; ++j) {
+            const int k = order[j];
+            stack[top++] = {node.child[k], node.count[k], d2[k]};
         }
-        if (goDown) continue;
-        bool found = false;
-        while (top > 0) {
-            const Entry entry = stack[--top];
-            if (prune(entry.distance2)) continue;
-            if (entry.count > 0) {
-                testLeaf(entry.node, entry.count);
-                continue;
-            }
-            index = entry.node;
-            found = true;
-            break;
-        }
-        if (!found) break;
     }
     if (visits) *visits += tested;
     return best;
