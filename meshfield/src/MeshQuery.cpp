@@ -29,9 +29,6 @@ constexpr int kStack = 128; // the hierarchy's depth is at most 60 (MeshField.cp
 
 std::uint32_t asBits(float value) { return std::bit_cast<std::uint32_t>(value); }
 
-// Every triangle edge used exactly twice, once in each direction: the winding number is then an
-// integer off the surface, constant wherever no triangle separates two points (the sign cache's
-// premise). Flipped faces, holes and non-manifold edges fail this.
 // Squared distance from p to triangle t (three corners at t[0..2], t[4..6], t[8..10]) in float:
 // Ericson's regions, as closestPointOnTriangle, for a quick test before the double one.
 inline float closestDistance2(float px, float py, float pz, const float* t) {
@@ -72,19 +69,26 @@ inline float closestDistance2(float px, float py, float pz, const float* t) {
     return length2(apx - abx * v - acx * w, apy - aby * v - acy * w, apz - abz * v - acz * w);
 }
 
-bool closedAndOriented(const TriangleMesh& mesh) {
-    std::unordered_map<std::uint64_t, int> directed;
-    directed.reserve(mesh.indices.size());
+// The length of the mesh's boundary as an oriented chain: every edge times the absolute value of
+// its net use (times used a -> b minus times used b -> a). 0 for a closed, consistently oriented
+// mesh (or several); a hole's rim counts once, a flipped face's rim twice. The winding number's
+// gradient is the Biot-Savart integral over that boundary (the solid angle is the potential of a
+// current loop), so |grad w(x)| <= length / (4 pi r^2), r the distance from x to the boundary.
+double boundaryLength(const TriangleMesh& mesh) {
+    std::unordered_map<std::uint64_t, int> net;
+    net.reserve(mesh.indices.size());
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
         for (int k = 0; k < 3; ++k) {
             const std::uint64_t a = mesh.indices[t + std::size_t(k)];
             const std::uint64_t b = mesh.indices[t + std::size_t((k + 1) % 3)];
-            if (a == b) return false;
-            if (++directed[(a << 32) | b] > 1) return false;
+            if (a == b) continue;
+            net[std::min(a, b) << 32 | std::max(a, b)] += a < b ? 1 : -1;
         }
-    for (const auto& [edge, count] : directed)
-        if (!directed.count((edge << 32) | (edge >> 32))) return false;
-    return !directed.empty();
+    double length = 0.0;
+    for (const auto& [edge, count] : net)
+        if (count != 0)
+            length += std::abs(count) * glm::length(glm::dvec3(mesh.vertices[edge >> 32]) - glm::dvec3(mesh.vertices[edge & 0xffffffffu]));
+    return length;
 }
 
 unsigned threadCount(unsigned asked) {
@@ -169,8 +173,9 @@ MeshQuery::MeshQuery(const MeshField& field) : m_field(field) {
     m_scale = std::max({std::abs(field.bounds.lo.x), std::abs(field.bounds.lo.y), std::abs(field.bounds.lo.z),
                         std::abs(field.bounds.hi.x), std::abs(field.bounds.hi.y), std::abs(field.bounds.hi.z)});
     if (!std::isfinite(m_scale)) m_scale = 0.0;
-    if (field.options.sign == SignMethod::Winding && closedAndOriented(field.mesh)) {
+    if (field.options.sign == SignMethod::Winding) {
         m_useCache = true;
+        m_boundaryLength = boundaryLength(field.mesh);
         const dvec3 extent = field.bounds.hi - field.bounds.lo;
         const double side = std::max({extent.x, extent.y, extent.z}) * 1.5 + 1e-9;
         m_cacheLo = (field.bounds.lo + field.bounds.hi) * 0.5 - dvec3(side * 0.5);
@@ -283,19 +288,8 @@ double MeshQuery::nearest(const dvec3& p, std::uint32_t& slot, int& feature, dve
     return best;
 }
 
-namespace {
-
-// A far cluster's share of 4 pi times the winding number (MeshField.cpp's farCluster).
-double farCluster(const float* n, const dvec3& d, double dist2) {
-    const double inverse3 = 1.0 / (dist2 * std::sqrt(dist2));
-    double dMd = 0.0;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) dMd += d[i] * double(n[16 + 4 * i + j]) * d[j];
-    const double trace = double(n[16]) + double(n[21]) + double(n[26]);
-    return (double(n[12]) * d.x + double(n[13]) * d.y + double(n[14]) * d.z + trace - 3.0 * dMd / dist2) * inverse3;
-}
-
-} // namespace
+// A far cluster's share of 4 pi times the winding number (MeshField.cpp).
+double farCluster(const float* n, const dvec3& d, double dist2);
 
 double MeshQuery::winding(const dvec3& p, std::uint64_t* visits) const {
     const std::vector<float>& nodes = m_field.nodes;
@@ -331,13 +325,14 @@ double MeshQuery::winding(const dvec3& p, std::uint64_t* visits) const {
     return sum / (4.0 * std::numbers::pi);
 }
 
-// A closed, consistently oriented mesh's winding number is an integer, the same at any two points
-// that no triangle separates. Every point of the open ball of radius `distance` (the nearest
-// distance) around p is such a point: so when a lattice point q of the cache lies inside that ball,
-// p's winding number is q's, computed once for every row that can use it. Levels from coarse
-// (5^3 points over 1.5 times the bounds) to fine (129^3): the coarsest level whose nearest lattice
-// point is inside the ball, so far points share a few coarse values. A lattice value not within
-// 1/4 of an integer (the hierarchy's approximation at its worst) is not used.
+// The sign cache. Every point of the open ball of radius `distance` (the nearest distance) around
+// p is joined to p by a segment no triangle crosses, along which the winding number changes by at
+// most boundary length x s / (4 pi (distance - s)^2) (s the segment's length; see boundaryLength):
+// nothing at all on a closed, consistently oriented mesh. So a lattice point q inside that ball
+// whose winding number is farther from 1/2 than that bound, plus 1/4 for the hierarchy's
+// approximation at p and at q, gives p's sign, and its winding number is computed once for every
+// row that can use it. Levels from coarse (5^3 points over 1.5 times the bounds) to fine (129^3):
+// the coarsest level that decides, so that far rows share a few coarse values.
 bool MeshQuery::cachedWindingInside(const dvec3& p, double distance, bool& fromCache, std::uint64_t* visits) const {
     fromCache = false;
     if (m_useCache && distance > 0.0 && std::isfinite(distance)) {
@@ -353,20 +348,23 @@ bool MeshQuery::cachedWindingInside(const dvec3& p, double distance, bool& fromC
                 at[a] = int(std::clamp(std::floor(cell[a] + 0.5), 0.0, double(side - 1)));
                 q[a] = m_cacheLo[a] + double(at[a]) * step;
             }
-            if (glm::dot(q - p, q - p) < reach2) {
-                std::atomic<float>& slot = m_cache[offset + (std::size_t(at[2]) * side + std::size_t(at[1])) * side + std::size_t(at[0])];
-                float w = slot.load(std::memory_order_relaxed);
-                if (std::isnan(w)) {
-                    w = float(winding(q, visits));
-                    slot.store(w, std::memory_order_relaxed);
-                }
-                if (std::abs(w - std::round(w)) < 0.25f) {
-                    fromCache = true;
-                    return w > 0.5f;
-                }
-                break; // an undecided lattice value: walk p itself
-            }
+            const double s2 = glm::dot(q - p, q - p);
+            const std::size_t here = offset + (std::size_t(at[2]) * side + std::size_t(at[1])) * side + std::size_t(at[0]);
             offset += std::size_t(side) * side * side;
+            if (!(s2 < reach2)) continue;
+            const double s = std::sqrt(s2);
+            const double change = m_boundaryLength * s / (4.0 * std::numbers::pi * (distance - s) * (distance - s));
+            if (!(change < 0.25)) continue; // a finer level comes closer
+            std::atomic<float>& slot = m_cache[here];
+            float w = slot.load(std::memory_order_relaxed);
+            if (std::isnan(w)) {
+                w = float(winding(q, visits));
+                slot.store(w, std::memory_order_relaxed);
+            }
+            if (std::abs(double(w) - 0.5) >= change + 0.25) {
+                fromCache = true;
+                return w > 0.5f;
+            }
         }
     }
     return winding(p, visits) > 0.5;

@@ -65,8 +65,8 @@ public:
                    std::uint64_t* visits = nullptr) const;
     // The hierarchical winding number (the field's beta), as MeshField::winding.
     double winding(const glm::dvec3& p, std::uint64_t* visits = nullptr) const;
-    // Inside by the field's sign method; `distance` (the nearest distance) lets a closed mesh's
-    // winding sign come from the sign cache (exact there: see the .cpp).
+    // Inside by the field's sign method; `distance` (the nearest distance) lets the winding sign
+    // come from the sign cache where a bound on the winding number's change proves it (see the .cpp).
     bool inside(const glm::dvec3& p, double distance, std::uint32_t slot, int feature, const glm::dvec3& closest,
                 QueryCounters* counters = nullptr) const;
     // The signed distance, and its gradient when `gradient` is not null.
@@ -91,9 +91,10 @@ private:
     std::vector<Node> m_nodes; // inner nodes; m_nodes[0] is the root (a leaf root has a one-child node)
     std::vector<double> m_corners; // 9 doubles per triangle slot, leaf order
     double m_scale = 0.0;          // the largest coordinate of the bounds (float rounding's scale)
-    // The sign cache (closed meshes, winding sign): a lattice over the bounds, each point's
-    // winding number once computed (NaN: not yet).
+    // The sign cache (winding sign): lattices over the bounds, each point's winding number once
+    // computed (NaN: not yet).
     bool m_useCache = false;
+    double m_boundaryLength = 0.0; // of the mesh as an oriented chain (0: closed and oriented)
     glm::dvec3 m_cacheLo{0.0};
     double m_cacheStep = 0.0;
     int m_cacheSide = 0;
