@@ -221,15 +221,24 @@ int main(int argc, char** argv) {
             if (i + 1 >= argc) fail(arg + ": expected a value");
             return argv[++i];
         };
-        if (arg == "--engine") engine = value();
-        else if (arg == "--sign") sign = value();
-        else if (arg == "--mesh") meshPath = value();
-        else if (arg == "--points") pointsPath = value();
-        else if (arg == "--out") outPath = value();
-        else if (arg == "--gradient") gradientPath = value();
-        else if (arg == "--threads") threads = std::stoi(value());
-        else if (arg == "--repeat") repeat = std::stoi(value());
-        else fail("unknown argument '" + arg + "'");
+        if (arg == "--engine")
+            engine = value();
+        else if (arg == "--sign")
+            sign = value();
+        else if (arg == "--mesh")
+            meshPath = value();
+        else if (arg == "--points")
+            pointsPath = value();
+        else if (arg == "--out")
+            outPath = value();
+        else if (arg == "--gradient")
+            gradientPath = value();
+        else if (arg == "--threads")
+            threads = std::stoi(value());
+        else if (arg == "--repeat")
+            repeat = std::stoi(value());
+        else
+            fail("unknown argument '" + arg + "'");
     }
     if (engine != "embree" && engine != "cgal") fail("--engine: expected embree or cgal, got '" + engine + "'");
     if (sign != "parity" && sign != "pseudonormal" && sign != "none") fail("--sign: expected parity, pseudonormal or none");
@@ -262,15 +271,15 @@ int main(int argc, char** argv) {
         rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
         rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST); // watertight: a ray through a shared edge counts once
         RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        auto* v = static_cast<float*>(
-            rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertices.size()));
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                              3 * sizeof(float), mesh.vertices.size()));
         for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
             v[3 * i] = float(mesh.vertices[i].x);
             v[3 * i + 1] = float(mesh.vertices[i].y);
             v[3 * i + 2] = float(mesh.vertices[i].z);
         }
-        auto* f = static_cast<std::uint32_t*>(
-            rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), mesh.faces.size()));
+        auto* f = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                      3 * sizeof(std::uint32_t), mesh.faces.size()));
         for (std::size_t i = 0; i < mesh.faces.size(); ++i) std::memcpy(f + 3 * i, mesh.faces[i].data(), 12);
         rtcSetGeometryIntersectFilterFunction(geometry, countAndContinue);
         rtcCommitGeometry(geometry);
@@ -358,7 +367,8 @@ int main(int argc, char** argv) {
     }
     std::ofstream(outPath, std::ios::binary).write(reinterpret_cast<const char*>(values.data()), std::streamsize(4 * n));
     if (!gradientPath.empty())
-        std::ofstream(gradientPath, std::ios::binary).write(reinterpret_cast<const char*>(gradients.data()), std::streamsize(12 * n));
+        std::ofstream(gradientPath, std::ios::binary)
+            .write(reinterpret_cast<const char*>(gradients.data()), std::streamsize(12 * n));
     std::printf("{\"engine\": \"%s\", \"sign\": \"%s\", \"threads\": %d, \"points\": %zu, \"triangles\": %zu, "
                 "\"build_seconds\": %.6f, \"query_seconds\": %.6f, \"points_per_second\": %.1f, \"compiler_flags\": \"%s\", "
                 "\"notes\": \"%s\"}\n",

@@ -541,8 +541,8 @@ Raises:
 
 The GIL is released while sampling.)doc");
     m.def("evaluate", &evaluate, py::arg("sdf"), py::arg("points"), py::arg("params") = py::none(), py::arg("time") = 0.0f,
-          py::arg("gradient") = true, py::arg_v("gradient_step", 0.0f, "0.0"), py::arg("entry") = "",
-          py::arg("chunk") = 1u << 18, py::arg("sign") = "", py::arg("normalize") = "",
+          py::arg("gradient") = true, py::arg_v("gradient_step", 0.0f, "0.0"), py::arg("entry") = "", py::arg("chunk") = 1u << 18,
+          py::arg("sign") = "", py::arg("normalize") = "",
           R"doc(The field of `sdf` at the caller's points, through the samplers' own stage: bit-equal to what the samplers
 write at the same positions with the same gradient_step.
 

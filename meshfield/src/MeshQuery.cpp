@@ -8,8 +8,8 @@
 #include <array>
 #include <bit>
 #include <chrono>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <deque>
@@ -87,7 +87,8 @@ double boundaryLength(const TriangleMesh& mesh) {
     double length = 0.0;
     for (const auto& [edge, count] : net)
         if (count != 0)
-            length += std::abs(count) * glm::length(glm::dvec3(mesh.vertices[edge >> 32]) - glm::dvec3(mesh.vertices[edge & 0xffffffffu]));
+            length += std::abs(count) *
+                      glm::length(glm::dvec3(mesh.vertices[edge >> 32]) - glm::dvec3(mesh.vertices[edge & 0xffffffffu]));
     return length;
 }
 
@@ -185,7 +186,8 @@ MeshQuery::MeshQuery(const MeshField& field) : m_field(field) {
         std::size_t total = 0;
         for (int k = 2; k <= 7; ++k) total += std::size_t((1 << k) + 1) * ((1 << k) + 1) * ((1 << k) + 1);
         m_cache = std::make_unique<std::atomic<float>[]>(total);
-        for (std::size_t i = 0; i < total; ++i) m_cache[i].store(std::numeric_limits<float>::quiet_NaN(), std::memory_order_relaxed);
+        for (std::size_t i = 0; i < total; ++i)
+            m_cache[i].store(std::numeric_limits<float>::quiet_NaN(), std::memory_order_relaxed);
     }
 }
 
@@ -224,7 +226,8 @@ double MeshQuery::nearest(const dvec3& p, std::uint32_t& slot, int& feature, dve
             if (double(closestDistance2(px, py, pz, t)) > bound) continue;
             const double* c = m_corners.data() + std::size_t(s) * 9;
             int f = 0;
-            const dvec3 q = closestPointOnTriangle(p, dvec3(c[0], c[1], c[2]), dvec3(c[3], c[4], c[5]), dvec3(c[6], c[7], c[8]), &f);
+            const dvec3 q =
+                closestPointOnTriangle(p, dvec3(c[0], c[1], c[2]), dvec3(c[3], c[4], c[5]), dvec3(c[6], c[7], c[8]), &f);
             const double d2 = glm::dot(p - q, p - q);
             if (d2 < best) {
                 best = d2;
@@ -450,7 +453,8 @@ double MeshQuery::signedDistance(const dvec3& p, dvec3* gradient, QueryCounters*
             *gradient = (p - closest) / distance * (in ? -1.0 : 1.0);
         } else { // on the surface: the face's normal
             const double* c = m_corners.data() + std::size_t(slot) * 9;
-            const dvec3 n = glm::cross(dvec3(c[3] - c[0], c[4] - c[1], c[5] - c[2]), dvec3(c[6] - c[0], c[7] - c[1], c[8] - c[2]));
+            const dvec3 n =
+                glm::cross(dvec3(c[3] - c[0], c[4] - c[1], c[5] - c[2]), dvec3(c[6] - c[0], c[7] - c[1], c[8] - c[2]));
             const double length = glm::length(n);
             *gradient = length > 0.0 ? n / length : dvec3(0.0);
         }

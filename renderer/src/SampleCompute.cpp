@@ -299,7 +299,8 @@ Expected<std::uint32_t> SampleCompute::run(const SampleUniforms& uniforms, std::
         glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(count) * 12, positions);
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
         if (GLenum error = glGetError(); error != GL_NO_ERROR)
-            return makeError("sampling: reading back " + std::to_string(count) + " positions failed (" + glErrorName(error) + ")");
+            return makeError("sampling: reading back " + std::to_string(count) + " positions failed (" + glErrorName(error) +
+                             ")");
         return m_impl->evaluateOnCpu(uniforms, positions, 3, distances, 1, gradients, 3, count);
     }
     float* targets[3] = {positions, distances, gradients};
@@ -343,11 +344,13 @@ Expected<MappedRows> SampleCompute::runMapped(const SampleUniforms& uniforms, st
     if (interleaved) shift = {};
     for (std::uint32_t floats : shift)
         if (floats >= kMaxShift) return makeError("sampling: array shift of " + std::to_string(floats) + " floats");
-    const float* inputs = m_impl->query && Impl::positionsAreInputs(uniforms) ? uniforms.inputPoints + 3 * std::size_t(first) : nullptr;
+    const float* inputs =
+        m_impl->query && Impl::positionsAreInputs(uniforms) ? uniforms.inputPoints + 3 * std::size_t(first) : nullptr;
     if (!inputs) {
         if (auto ok = m_impl->reserve(set, std::max(count, 1u), true, interleaved); !ok) return ok.error();
     }
-    auto bad = inputs ? Expected<std::uint32_t>(0u) : m_impl->dispatch(uniforms, first, count, set, true, true, interleaved, shift);
+    auto bad =
+        inputs ? Expected<std::uint32_t>(0u) : m_impl->dispatch(uniforms, first, count, set, true, true, interleaved, shift);
     if (!bad) return bad.error();
     // The count's read-back waited for the dispatch; coherent mappings see its writes after a fence.
     if (!inputs) {

@@ -12,8 +12,8 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <random>
 
@@ -110,7 +110,8 @@ TEST(MeshQueryCpu, EveryThreadCountWritesTheSameRowsBitForBit) {
         // A new query each time: the sign cache fills in a different order on every run.
         auto query = std::make_unique<MeshQuery>(*field);
         std::vector<float> rows(7 * n);
-        for (std::size_t i = 0; i < n; ++i) std::copy(points.begin() + long(3 * i), points.begin() + long(3 * i + 3), rows.begin() + long(7 * i));
+        for (std::size_t i = 0; i < n; ++i)
+            std::copy(points.begin() + long(3 * i), points.begin() + long(3 * i + 3), rows.begin() + long(7 * i));
         const std::uint64_t bad = query->evaluate({rows.data(), 7, rows.data() + 3, 7, rows.data() + 4, 7}, n, {}, threads);
         EXPECT_EQ(bad, 0u);
         if (reference.empty())

@@ -14,8 +14,8 @@
 #include <renderer/SampleCompute.h>
 #include <renderer/SdfRenderer.h>
 #include <sampling/FieldAudit.h>
-#include <sampling/Sampler.h>
 #include <sampling/SampleFile.h>
+#include <sampling/Sampler.h>
 #include <sampling/SamplerLibrary.h>
 #include <shaders/SdfSource.h>
 #include <shaders/ShaderComposer.h>
@@ -100,23 +100,24 @@ TEST_F(MeshSdfTest, GpuDistancesMatchAFloat64BruteForceScanAndEachSignMethodsCpu
         ASSERT_TRUE(field.hasValue());
         const double diagonal = glm::length((*field)->bounds.hi - (*field)->bounds.lo);
         for (const char* engine : {"gpu", "cpu"}) {
-        EngineScope scope(engine);
-        const std::vector<float> gpu = evaluate(shaders::prepareMeshSdf(*field, "torus.obj"), points);
-        double worst = 0.0;
-        int wrongSign = 0;
-        int signed_ = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            const dvec3 p(points[3 * i], points[3 * i + 1], points[3 * i + 2]);
-            worst = std::max(worst, std::abs(std::abs(double(gpu[i])) - reference[i]));
-            if (reference[i] < 1e-4) continue; // the sign of a point on the surface is either
-            ++signed_;
-            if ((gpu[i] < 0.0f) != (*field)->inside(p)) ++wrongSign;
-        }
-        std::printf("%-4s engine, %-12s |f| vs float64 brute force: largest error %.2e (%.2e of the diagonal); sign differs from the "
-                    "CPU's at %d of %d points\n",
-                    engine, meshfield::signName(sign), worst, worst / diagonal, wrongSign, signed_);
-        EXPECT_LE(worst, 1e-5 * diagonal) << meshfield::signName(sign) << ' ' << engine;
-        EXPECT_EQ(wrongSign, 0) << meshfield::signName(sign) << ' ' << engine;
+            EngineScope scope(engine);
+            const std::vector<float> gpu = evaluate(shaders::prepareMeshSdf(*field, "torus.obj"), points);
+            double worst = 0.0;
+            int wrongSign = 0;
+            int signed_ = 0;
+            for (std::size_t i = 0; i < n; ++i) {
+                const dvec3 p(points[3 * i], points[3 * i + 1], points[3 * i + 2]);
+                worst = std::max(worst, std::abs(std::abs(double(gpu[i])) - reference[i]));
+                if (reference[i] < 1e-4) continue; // the sign of a point on the surface is either
+                ++signed_;
+                if ((gpu[i] < 0.0f) != (*field)->inside(p)) ++wrongSign;
+            }
+            std::printf(
+                "%-4s engine, %-12s |f| vs float64 brute force: largest error %.2e (%.2e of the diagonal); sign differs from the "
+                "CPU's at %d of %d points\n",
+                engine, meshfield::signName(sign), worst, worst / diagonal, wrongSign, signed_);
+            EXPECT_LE(worst, 1e-5 * diagonal) << meshfield::signName(sign) << ' ' << engine;
+            EXPECT_EQ(wrongSign, 0) << meshfield::signName(sign) << ' ' << engine;
         }
     }
 }
@@ -213,7 +214,7 @@ TEST_F(MeshSdfTest, ExplicitGradientStepsGiveSixTapsOnBothEnginesAndTheExactGrad
         const glm::vec3 g(tapsGpu.gradients[3 * i], tapsGpu.gradients[3 * i + 1], tapsGpu.gradients[3 * i + 2]);
         const glm::vec3 c(tapsCpu.gradients[3 * i], tapsCpu.gradients[3 * i + 1], tapsCpu.gradients[3 * i + 2]);
         unit += std::abs(glm::length(e) - 1.0f) < 1e-5f ? 1 : 0;
-        tapsAgree += glm::length(g - c) < 2e-3f ? 1 : 0; // float taps of two float-rounded fields
+        tapsAgree += glm::length(g - c) < 2e-3f ? 1 : 0;       // float taps of two float-rounded fields
         if (std::abs(glm::length(g) - 1.0f) > 1e-3f) continue; // a stencil across a kink
         ++compared;
         close += glm::length(e - g) < 1e-2f ? 1 : 0;

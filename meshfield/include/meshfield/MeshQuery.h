@@ -88,7 +88,7 @@ private:
     bool cachedWindingInside(const glm::dvec3& p, double distance, bool& fromCache, std::uint64_t* visits) const;
 
     const MeshField& m_field;
-    std::vector<Node> m_nodes; // inner nodes; m_nodes[0] is the root (a leaf root has a one-child node)
+    std::vector<Node> m_nodes;     // inner nodes; m_nodes[0] is the root (a leaf root has a one-child node)
     std::vector<double> m_corners; // 9 doubles per triangle slot, leaf order
     double m_scale = 0.0;          // the largest coordinate of the bounds (float rounding's scale)
     // The sign cache (winding sign): lattices over the bounds, each point's winding number once
