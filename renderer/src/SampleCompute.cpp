@@ -91,10 +91,11 @@ struct SampleCompute::Impl {
     GLint location(const char* name) const { return glGetUniformLocation(program.id(), name); }
     Expected<void> reserve(BufferSet& set, std::uint32_t count, bool mapped, bool interleaved = false);
     // The CPU engine's values and gradients at the positions; the rows with a non-finite value.
-    // The sampler's positions are the caller's points one for one (analysis/points.glsl is the
-    // only sampler that reads per-sample inputs; the mesher's lattice reads a table).
-    static bool positionsAreInputs(const SampleUniforms& uniforms) {
-        return uniforms.inputPoints && uniforms.inputTableFloats == 0;
+    // The sampler is analysis/points.glsl: its positions are the caller's points one for one (the
+    // mesher's lattice also reads per-sample inputs when B = 0, but those are grid indices).
+    bool pointsSampler = false;
+    bool positionsAreInputs(const SampleUniforms& uniforms) const {
+        return pointsSampler && uniforms.inputPoints && uniforms.inputTableFloats == 0;
     }
     std::uint32_t evaluateOnCpu(const SampleUniforms& uniforms, const float* positions, std::size_t positionStride,
                                 float* distances, std::size_t distanceStride, float* gradients, std::size_t gradientStride,
@@ -205,6 +206,7 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     m_impl->mesh = sdf.mesh;
     m_impl->query = std::move(query);
     m_impl->engine = engine;
+    m_impl->pointsSampler = sampler.name == "sdfwb:analysis/points.glsl";
     return diagnostics;
 }
 
@@ -345,7 +347,7 @@ Expected<MappedRows> SampleCompute::runMapped(const SampleUniforms& uniforms, st
     for (std::uint32_t floats : shift)
         if (floats >= kMaxShift) return makeError("sampling: array shift of " + std::to_string(floats) + " floats");
     const float* inputs =
-        m_impl->query && Impl::positionsAreInputs(uniforms) ? uniforms.inputPoints + 3 * std::size_t(first) : nullptr;
+        m_impl->query && m_impl->positionsAreInputs(uniforms) ? uniforms.inputPoints + 3 * std::size_t(first) : nullptr;
     if (!inputs) {
         if (auto ok = m_impl->reserve(set, std::max(count, 1u), true, interleaved); !ok) return ok.error();
     }
