@@ -13,8 +13,8 @@ duplicated shell) is graded against its closed original's truth. Open meshes hav
 table gives how often each method disagrees with winding numbers.
 Speed: the same M points and the same normalised mesh file through sdfwb.evaluate (value + exact
 gradient; the CPU engine on 1 and all threads, the GLSL field on llvmpipe for scale), the C++
-references of bench/mesh_sdf_peer.cpp (Embree and CGAL, each sign method, every compile
-variant of bench/build_mesh_sdf_peer.sh, 1 and all threads) and Open3D's unsigned
+references of bench/mesh_sdf_reference.cpp (Embree and CGAL, each sign method, every compile
+variant of bench/build_mesh_sdf_reference.sh, 1 and all threads) and Open3D's unsigned
 compute_distance, each timed after a warm-up, best of 3; accuracy beside each against
 bench/mesh_sdf_truth.py (float64 brute force, exact winding numbers) on a subset.
 Scale: a 1.1 M-triangle mesh made from the bunny (two rounds of midpoint subdivision) at
@@ -177,16 +177,17 @@ def best_of(call, repeats=3):
     return min(times)
 
 
-REFERENCE_SOURCE = os.path.join(ROOT, "bench", "mesh_sdf_peer.cpp")
+REFERENCE_SOURCE = os.path.join(ROOT, "bench", "mesh_sdf_reference.cpp")
 REFERENCE_DIR = os.path.join(work, "reference")
 TRUTH_POINTS = option("--truth-points", 1000)
 THREADS = sorted({1, os.cpu_count() or 1})
 reference_lines = []
+reference_notes = {}
 
 
 def build_references():
     # The C++ references, compiled here in every variant the build script makes (it prints its lines).
-    built = subprocess.run(["bash", os.path.join(ROOT, "bench", "build_mesh_sdf_peer.sh"), REFERENCE_DIR],
+    built = subprocess.run(["bash", os.path.join(ROOT, "bench", "build_mesh_sdf_reference.sh"), REFERENCE_DIR],
                            capture_output=True, text=True)
     if built.returncode != 0:
         raise SystemExit("bench_mesh_sdf: building the C++ references failed:\n" + built.stdout + built.stderr)
@@ -206,6 +207,7 @@ def run_reference(binary, engine, sign, mesh_path, points_path, threads, repeat=
         return None
     info = json.loads(done.stdout.strip().splitlines()[-1])
     info["binary"] = os.path.basename(binary)
+    reference_notes.setdefault(f"{engine}, {sign}", info.get("notes", ""))
     info["values"] = np.fromfile(values, "<f4")
     return info
 
@@ -472,12 +474,16 @@ with open(OUT, "w") as out:
               "signs\" the share of those farther than 1e-4 from the surface whose sign differs from the exact "
               "float64 winding number (every triangle's solid angle summed; shares no code with sdfwb), "
               "`bench/mesh_sdf_truth.py`.\n\n"
-              "The references (`bench/mesh_sdf_peer.cpp`, compiled by `bench/build_mesh_sdf_peer.sh` in "
+              "The references (`bench/mesh_sdf_reference.cpp`, compiled by `bench/build_mesh_sdf_reference.sh` in "
               "every variant below): a C++ program on Debian's Embree 3 (closest point by `rtcPointQuery`; sign by "
               "the majority of three rays' crossing parities, or by the angle-weighted pseudonormal of the closest "
               "feature) and on CGAL's AABB tree (`closest_point_and_primitive`; sign by `Side_of_triangle_mesh`, or "
-              "pseudonormals), OpenMP over the points, the gradient from the closest point as sdfwb's. Compile "
-              "lines:\n\n```\n" + "\n".join(reference_lines) + "\n```\n\n")
+              "pseudonormals), OpenMP over the points, the points visited in Morton order (sorted inside the timed "
+              "phase) with each query started from the previous point's closest triangle, the gradient from the "
+              "closest point as sdfwb's. sdfwb's CPU engine orders its rows the same way (Morton order, each walk "
+              "seeded by the last row's triangle within a block of 1024). Compile lines:\n\n```\n" +
+              "\n".join(reference_lines) + "\n```\n\nWhat each reference does, in its own words:\n\n" +
+              "".join(f"- {k}: {v}\n" for k, v in sorted(reference_notes.items())) + "\n")
     for r in speed_rows:
         entries = sorted(r["entries"], key=lambda e: -e["rate"])
         out.write(f"### {r['mesh']} ({r['triangles']:,} triangles)\n\n| program | configuration | points/s | "

@@ -3,28 +3,32 @@
 // parallel over points with OpenMP. bench/build_mesh_sdf_reference.sh compiles it (with and
 // without -ffast-math) and passes the flags in as REF_FLAGS.
 //
-//   mesh_sdf_reference --engine embree|cgal --sign parity|pseudonormal|none --mesh M.obj
+//   mesh_sdf_reference --engine embree|cgal --sign parity|pseudonormal|none --mesh M.obj|M.ply
 //                      --points P.f32 --out V.f32 [--gradient G.f32] [--threads T] [--repeat R]
 //                      [--order morton|input]
 //
-// Choices (each measured; see the notes the program prints):
-// - embree: one triangle geometry, RTC_BUILD_QUALITY_HIGH, no robust flag (parity takes the majority
-//   of three rays, which absorbs the rare ray that slips through an edge). Closest point with
-//   rtcPointQuery and a float closest-point-on-triangle callback that shrinks the query radius.
-//   Parity counts every crossing in one traversal per ray (rtcOccluded1 with an occlusion filter that
-//   counts the hit and rejects it), duplicates of one triangle (spatial splits) ignored.
-// - cgal: AABB_tree over a triangle soup (cached triangles) in CGAL::Simple_cartesian<double>,
-//   accelerate_distance_queries(), closest_point_and_primitive; parity with Side_of_triangle_mesh
-//   sharing that tree.
-// - both: the points are visited in Morton order (sorted in the timed phase) and each query starts
-//   from the previous point's closest triangle: its distance is the initial search radius (Embree) or
-//   the hint (CGAL). Points outside the mesh's bounding box are outside without casting a ray.
+// Choices (the faster where there was one to make, measured on fandisk and the bunny):
+// - embree: one triangle geometry, RTC_BUILD_QUALITY_HIGH, no RTC_SCENE_FLAG_ROBUST (a few % faster;
+//   parity's majority of three rays absorbs the rare ray that slips through an edge). Closest point
+//   with rtcPointQuery and a callback computing Ericson's closest point on the triangle in double
+//   (from float corners; float was ~5 % faster but lets near-ties pick the wrong triangle: 3e-5
+//   off in the gradient on a unit cube), shrinking the query radius. Parity counts every crossing in one traversal
+//   per ray: rtcOccluded1 with an occlusion filter that counts the hit and rejects it (as fast as
+//   rtcIntersect1 with an intersection filter, faster than re-casting from past each hit); a triangle
+//   seen twice (spatial splits put it in several leaves) counts once.
+// - cgal: AABB_tree over a triangle soup (AABB_triangle_primitive with cached triangles) in
+//   CGAL::Simple_cartesian<double> (~25 % faster than Epick here), accelerate_distance_queries(),
+//   closest_point_and_primitive. Parity: Side_of_triangle_mesh on a Surface_mesh of the same
+//   triangles (its own tree, built with the rest).
+// - both: the points are visited in Morton order (sorted inside the timed phase) and each query starts
+//   from the previous point's closest triangle: its distance is the initial search radius (Embree),
+//   its closest point the hint (CGAL); about 2x on random points. Parity: a point outside the mesh's
+//   bounding box is outside without a ray. --order input turns the ordering and seeding off.
 // - pseudonormal: angle-weighted pseudonormals (Baerentzen & Aanaes 2005) after merging equal vertex
-//   positions; the closest feature (face, edge or vertex) decides.
+//   positions; the feature (face, edge or vertex) of the closest point decides.
 
 #include <embree3/rtcore.h>
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
@@ -37,6 +41,8 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -47,7 +53,6 @@
 #include <fstream>
 #include <limits>
 #include <map>
-#include <array>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -63,9 +68,7 @@ namespace {
 // ---------------------------------------------------------------------------------------------
 // Small vectors
 
-template <class T> struct V3 {
-    T x, y, z;
-};
+template <class T> struct V3 { T x, y, z; };
 template <class T> inline V3<T> operator+(V3<T> a, V3<T> b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 template <class T> inline V3<T> operator-(V3<T> a, V3<T> b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 template <class T> inline V3<T> operator*(V3<T> a, T s) { return {a.x * s, a.y * s, a.z * s}; }
@@ -85,7 +88,7 @@ using Vec3d = V3<double>;
 // Input and output
 
 struct Mesh {
-    std::vector<float> positions;      // 3 per vertex
+    std::vector<float> positions;       // 3 per vertex
     std::vector<std::uint32_t> corners; // 3 per triangle
     std::size_t triangles() const { return corners.size() / 3; }
     Vec3f vertex(std::uint32_t v) const { return {positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]}; }
@@ -125,8 +128,11 @@ Mesh readObj(const std::string& path) {
                 q = skipSpace(q);
                 if (q < eol && *q == '+') ++q;
                 float value = 0.0f;
-                const auto [next, error] = std::from_chars(q, eol, value);
-                if (error != std::errc()) bad("expected three coordinates after 'v'");
+                auto [next, error] = std::from_chars(q, eol, value);
+                if (error == std::errc::result_out_of_range)
+                    value = std::strtof(std::string(q, next).c_str(), nullptr);
+                else if (error != std::errc())
+                    bad("expected three coordinates after 'v'");
                 mesh.positions.push_back(value);
                 q = next;
             }
@@ -157,6 +163,133 @@ Mesh readObj(const std::string& path) {
     }
     if (mesh.corners.empty()) fail("mesh '" + path + "' has no faces");
     return mesh;
+}
+
+// PLY (bench_mesh_sdf.py hands its big mesh over as one): ascii or binary_little_endian, the vertex
+// element's x, y, z and the face element's vertex_indices (or vertex_index) list, polygons as fans.
+Mesh readPly(const std::string& path) {
+    const std::string text = readFile(path, "mesh");
+    auto bad = [&](const std::string& why) -> void { fail("mesh '" + path + "' (PLY): " + why); };
+    struct Property {
+        std::string name;
+        std::string type, countType; // countType: non-empty for a list
+    };
+    struct Element {
+        std::string name;
+        std::size_t count;
+        std::vector<Property> properties;
+    };
+    std::vector<Element> elements;
+    std::string format;
+    std::size_t at = 0;
+    while (true) {
+        const std::size_t eol = text.find('\n', at);
+        if (eol == std::string::npos) bad("no end_header");
+        std::istringstream line(text.substr(at, eol - at));
+        at = eol + 1;
+        std::string word;
+        line >> word;
+        if (word == "end_header") break;
+        if (word == "format")
+            line >> format;
+        else if (word == "element") {
+            Element e{};
+            line >> e.name >> e.count;
+            elements.push_back(e);
+        } else if (word == "property") {
+            if (elements.empty()) bad("a property before any element");
+            Property property;
+            line >> property.type;
+            if (property.type == "list") line >> property.countType >> property.type;
+            line >> property.name;
+            elements.back().properties.push_back(property);
+        }
+    }
+    const bool binary = format == "binary_little_endian";
+    if (!binary && format != "ascii") bad("format '" + format + "' is not supported (ascii or binary_little_endian)");
+    auto size = [&](const std::string& type) -> std::size_t {
+        if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+        if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+        if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32")
+            return 4;
+        if (type == "double" || type == "float64") return 8;
+        bad("unknown property type '" + type + "'");
+        return 0;
+    };
+    const char* q = text.data() + at;
+    const char* end = text.data() + text.size();
+    auto next = [&](const std::string& type) -> double { // the next value, as a double
+        if (!binary) {
+            while (q < end && std::isspace(static_cast<unsigned char>(*q))) ++q;
+            char* stop = nullptr;
+            const double value = std::strtod(q, &stop);
+            if (stop == q) bad("expected a number");
+            q = stop;
+            return value;
+        }
+        const std::size_t n = size(type);
+        if (std::size_t(end - q) < n) bad("file ends early");
+        unsigned char b[8];
+        std::memcpy(b, q, n);
+        q += n;
+        if (type == "char" || type == "int8") return double(std::int8_t(b[0]));
+        if (type == "uchar" || type == "uint8") return double(b[0]);
+        if (type == "short" || type == "int16") return double(std::int16_t(b[0] | b[1] << 8));
+        if (type == "ushort" || type == "uint16") return double(std::uint16_t(b[0] | b[1] << 8));
+        std::uint32_t u32;
+        std::memcpy(&u32, b, 4);
+        if (type == "int" || type == "int32") return double(std::int32_t(u32));
+        if (type == "uint" || type == "uint32") return double(u32);
+        if (n == 4) {
+            float f;
+            std::memcpy(&f, b, 4);
+            return double(f);
+        }
+        double d;
+        std::memcpy(&d, b, 8);
+        return d;
+    };
+    Mesh mesh;
+    std::vector<std::int64_t> polygon;
+    for (const Element& element : elements) {
+        for (std::size_t i = 0; i < element.count; ++i) {
+            double xyz[3] = {0.0, 0.0, 0.0};
+            for (const Property& property : element.properties) {
+                if (property.countType.empty()) {
+                    const double value = next(property.type);
+                    if (element.name == "vertex" && property.name.size() == 1 && property.name[0] >= 'x' &&
+                        property.name[0] <= 'z')
+                        xyz[property.name[0] - 'x'] = value;
+                    continue;
+                }
+                const std::size_t count = std::size_t(next(property.countType));
+                const bool indices =
+                    element.name == "face" && (property.name == "vertex_indices" || property.name == "vertex_index");
+                polygon.clear();
+                for (std::size_t k = 0; k < count; ++k) polygon.push_back(std::int64_t(next(property.type)));
+                if (!indices) continue;
+                if (count < 3) bad("a face needs at least three vertices");
+                for (std::int64_t v : polygon)
+                    if (v < 0 || v >= std::int64_t(mesh.positions.size() / 3)) bad("vertex index out of range");
+                for (std::size_t k = 1; k + 1 < count; ++k) {
+                    mesh.corners.push_back(std::uint32_t(polygon[0]));
+                    mesh.corners.push_back(std::uint32_t(polygon[k]));
+                    mesh.corners.push_back(std::uint32_t(polygon[k + 1]));
+                }
+            }
+            if (element.name == "vertex")
+                for (double c : xyz) mesh.positions.push_back(float(c));
+        }
+    }
+    if (mesh.corners.empty()) fail("mesh '" + path + "' has no faces");
+    return mesh;
+}
+
+Mesh readMesh(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    char magic[4] = {};
+    in.read(magic, 4);
+    return std::string(magic, 4) == "ply\n" || std::string(magic, 4) == "ply\r" ? readPly(path) : readObj(path);
 }
 
 std::vector<float> readPoints(const std::string& path) {
@@ -191,8 +324,7 @@ template <class T> V3<T> onSegment(V3<T> p, V3<T> a, V3<T> b, int edge, int& fea
 
 // With ab = b - a, ac = c - a and their products precomputed: of the six dot products the regions
 // need only dot(ab, p - a) and dot(ac, p - a) remain, the rest follow from them.
-template <class T>
-V3<T> closestOnTriangle(V3<T> p, V3<T> a, V3<T> ab, V3<T> ac, T abab, T abac, T acac, int& feature) {
+template <class T> V3<T> closestOnTriangle(V3<T> p, V3<T> a, V3<T> ab, V3<T> ac, T abab, T abac, T acac, int& feature) {
     const V3<T> ap = p - a;
     const T d1 = dot(ab, ap), d2 = dot(ac, ap);
     if (d1 <= T(0) && d2 <= T(0)) {
@@ -250,7 +382,7 @@ template <class T> V3<T> closestOnTriangle(V3<T> p, V3<T> a, V3<T> b, V3<T> c, i
 
 std::vector<float> buildPseudonormals(const Mesh& mesh) {
     const std::size_t triangleCount = mesh.triangles();
-    // Merge equal positions (+0.0f turns -0 into 0).
+    // Merge equal positions.
     std::vector<std::uint32_t> merged(mesh.positions.size() / 3);
     {
         struct Key {
@@ -268,11 +400,11 @@ std::vector<float> buildPseudonormals(const Mesh& mesh) {
         std::unordered_map<Key, std::uint32_t, Hash> ids;
         ids.reserve(merged.size());
         for (std::size_t v = 0; v < merged.size(); ++v) {
-            Key key;
-            const float x = mesh.positions[3 * v] + 0.0f, y = mesh.positions[3 * v + 1] + 0.0f, z = mesh.positions[3 * v + 2] + 0.0f;
-            std::memcpy(&key.x, &x, 4);
-            std::memcpy(&key.y, &y, 4);
-            std::memcpy(&key.z, &z, 4);
+            std::uint32_t bits[3];
+            std::memcpy(bits, &mesh.positions[3 * v], sizeof bits);
+            for (std::uint32_t& b : bits)
+                if ((b & 0x7fffffffu) == 0) b = 0; // -0 is 0
+            const Key key{bits[0], bits[1], bits[2]};
             merged[v] = ids.emplace(key, std::uint32_t(ids.size())).first->second;
         }
     }
@@ -385,10 +517,11 @@ struct Box {
 
 Box boundsOf(const Mesh& mesh) {
     Box box;
-    for (int k = 0; k < 3; ++k) box.lo[k] = std::numeric_limits<float>::infinity(), box.hi[k] = -box.lo[k];
+    for (int k = 0; k < 3; ++k) box.lo[k] = std::numeric_limits<float>::max(), box.hi[k] = -box.lo[k];
     for (std::uint32_t v : mesh.corners)
         for (int k = 0; k < 3; ++k)
-            box.lo[k] = std::min(box.lo[k], mesh.positions[3 * v + k]), box.hi[k] = std::max(box.hi[k], mesh.positions[3 * v + k]);
+            box.lo[k] = std::min(box.lo[k], mesh.positions[3 * v + k]),
+            box.hi[k] = std::max(box.hi[k], mesh.positions[3 * v + k]);
     return box;
 }
 
@@ -439,6 +572,10 @@ TriangleRecord makeRecord(Vec3f a, Vec3f b, Vec3f c) {
     return r;
 }
 
+// The search radius a little above the distance found: rounding to float must not cut off a triangle
+// that is closer by less than float's resolution.
+constexpr float kRadiusMargin = 1.0f + 1e-6f;
+
 struct EmbreeClosest {
     Vec3d p;
     const TriangleRecord* triangles;
@@ -448,9 +585,9 @@ struct EmbreeClosest {
     Vec3d closest;
 };
 
-// Embree calls this for every triangle of each leaf it reaches: the closest point, in double (in float, two
-// triangles whose distances differ by less than float's resolution of the squared distance tie,
-// and the wrong one's closest point shows in the gradient, ~1e-5 at d ~ 1).
+// Embree calls this for every triangle of each leaf it reaches. In double: in float, two triangles
+// whose distances differ by less than float's resolution of the squared distance tie, and the wrong
+// one's closest point shows in the gradient (~1e-5 at d ~ 1).
 bool embreeClosestCallback(RTCPointQueryFunctionArguments* args) {
     EmbreeClosest& q = *static_cast<EmbreeClosest*>(args->userPtr);
     const TriangleRecord& t = q.triangles[args->primID];
@@ -463,7 +600,7 @@ bool embreeClosestCallback(RTCPointQueryFunctionArguments* args) {
     q.triangle = args->primID;
     q.feature = feature;
     q.closest = c;
-    args->query->radius = std::nextafter(float(std::sqrt(distance2)), std::numeric_limits<float>::infinity());
+    args->query->radius = float(std::sqrt(distance2)) * kRadiusMargin;
     return true;
 }
 
@@ -503,8 +640,8 @@ struct EmbreeEngine {
         const std::size_t vertexCount = mesh.positions.size() / 3, triangleCount = mesh.triangles();
         float* vertices = static_cast<float*>(
             rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertexCount));
-        std::uint32_t* indices = static_cast<std::uint32_t*>(
-            rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), triangleCount));
+        std::uint32_t* indices = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
+            geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), triangleCount));
         if (!vertices || !indices) fail("Embree could not allocate the mesh's buffers");
         std::memcpy(vertices, mesh.positions.data(), mesh.positions.size() * sizeof(float));
         std::memcpy(indices, mesh.corners.data(), mesh.corners.size() * sizeof(std::uint32_t));
@@ -514,7 +651,6 @@ struct EmbreeEngine {
         rtcReleaseGeometry(geometry);
         rtcCommitScene(scene);
         if (rtcGetDeviceError(device) != RTC_ERROR_NONE) fail("Embree failed to build the scene");
-        // The callback's copy of each triangle's corners, 9 contiguous floats.
         triangles.resize(triangleCount);
         for (std::size_t t = 0; t < triangleCount; ++t)
             triangles[t] = makeRecord(mesh.vertex(mesh.corners[3 * t]), mesh.vertex(mesh.corners[3 * t + 1]),
@@ -540,16 +676,17 @@ struct EmbreeEngine {
 
     // Closest point of p; `seed` (a triangle index or ~0u) gives the initial search radius.
     EmbreeClosest closest(Vec3f p, std::uint32_t seed) const {
-        EmbreeClosest q{Vec3d{p.x, p.y, p.z}, triangles.data(), std::numeric_limits<double>::infinity(), 0, kFace, Vec3d{p.x, p.y, p.z}};
+        EmbreeClosest q{Vec3d{p.x, p.y, p.z}, triangles.data(), std::numeric_limits<double>::max(), 0, kFace,
+                        Vec3d{p.x, p.y, p.z}};
         RTCPointQuery query;
         query.x = p.x, query.y = p.y, query.z = p.z, query.time = 0.0f;
-        query.radius = std::numeric_limits<float>::infinity();
+        query.radius = std::numeric_limits<float>::max(); // (finite: -ffast-math)
         if (seed != ~0u) {
             const TriangleRecord& t = triangles[seed];
             q.closest = t.closest(q.p, q.feature);
             q.distance2 = dot(q.p - q.closest, q.p - q.closest);
             q.triangle = seed;
-            query.radius = std::nextafter(float(std::sqrt(q.distance2)), std::numeric_limits<float>::infinity());
+            query.radius = float(std::sqrt(q.distance2)) * kRadiusMargin;
         }
         RTCPointQueryContext context;
         rtcInitPointQueryContext(&context);
@@ -567,13 +704,7 @@ using CgalTriangle = Kernel::Triangle_3;
 using CgalPrimitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<CgalTriangle>::const_iterator, CGAL::Tag_true>;
 using CgalTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CgalPrimitive>>;
 using CgalMesh = CGAL::Surface_mesh<CgalPoint>;
-#ifdef SIDE_CACHED
-using CgalSideTree =
-    CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<CgalMesh, CGAL::Default, CGAL::Tag_true, CGAL::Tag_true>>>;
-using CgalSide = CGAL::Side_of_triangle_mesh<CgalMesh, Kernel, CGAL::Default, CgalSideTree>;
-#else
 using CgalSide = CGAL::Side_of_triangle_mesh<CgalMesh, Kernel>;
-#endif
 
 struct CgalEngine {
     std::vector<CgalTriangle> soup;
@@ -594,17 +725,17 @@ struct CgalEngine {
         tree->build();
         tree->accelerate_distance_queries();
         if (!parity) return;
-        // Side_of_triangle_mesh needs a Surface_mesh: equal positions merged; a soup that is not a
-        // manifold polygon mesh is made one by orient_polygon_soup (which duplicates what it must).
+        // Side_of_triangle_mesh needs a Surface_mesh: equal positions merged, degenerate faces dropped;
+        // a soup that is not a manifold polygon mesh is made one by orient_polygon_soup (which
+        // duplicates what it must; crossings are counted whatever the faces' orientation).
         std::vector<CgalPoint> vertices;
         std::vector<std::array<std::size_t, 3>> faces;
         {
             std::map<std::array<float, 3>, std::size_t> ids;
             std::vector<std::size_t> merged(mesh.positions.size() / 3);
             for (std::size_t v = 0; v < merged.size(); ++v) {
-                const auto [it, added] = ids.try_emplace({mesh.positions[3 * v] + 0.0f, mesh.positions[3 * v + 1] + 0.0f,
-                                                          mesh.positions[3 * v + 2] + 0.0f},
-                                                         vertices.size());
+                const auto [it, added] = ids.try_emplace( // (-0 == 0 for std::less)
+                    {mesh.positions[3 * v], mesh.positions[3 * v + 1], mesh.positions[3 * v + 2]}, vertices.size());
                 if (added) vertices.push_back(point(std::uint32_t(v)));
                 merged[v] = it->second;
             }
@@ -622,7 +753,8 @@ struct CgalEngine {
         PMP::polygon_soup_to_polygon_mesh(vertices, faces, surface);
         side = std::make_unique<CgalSide>(surface);
         const CGAL::Bbox_3 box = tree->bbox();
-        (*side)(CgalPoint((box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2, (box.zmin() + box.zmax()) / 2)); // builds its tree
+        (*side)(CgalPoint((box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2,
+                          (box.zmin() + box.zmax()) / 2)); // builds its tree
     }
 };
 
@@ -665,16 +797,26 @@ Options parseArguments(int argc, char** argv) {
         }
         if (i + 1 >= argc) fail("argument " + name + " needs a value\n" + kUsage);
         const std::string value = argv[++i];
-        if (name == "--engine") o.engine = value;
-        else if (name == "--sign") o.sign = value;
-        else if (name == "--mesh") o.mesh = value;
-        else if (name == "--points") o.points = value;
-        else if (name == "--out") o.out = value;
-        else if (name == "--gradient") o.gradient = value;
-        else if (name == "--threads") o.threads = integer(name, value);
-        else if (name == "--repeat") o.repeat = integer(name, value);
-        else if (name == "--order") o.order = value;
-        else fail("unknown argument '" + name + "'\n" + kUsage);
+        if (name == "--engine")
+            o.engine = value;
+        else if (name == "--sign")
+            o.sign = value;
+        else if (name == "--mesh")
+            o.mesh = value;
+        else if (name == "--points")
+            o.points = value;
+        else if (name == "--out")
+            o.out = value;
+        else if (name == "--gradient")
+            o.gradient = value;
+        else if (name == "--threads")
+            o.threads = integer(name, value);
+        else if (name == "--repeat")
+            o.repeat = integer(name, value);
+        else if (name == "--order")
+            o.order = value;
+        else
+            fail("unknown argument '" + name + "'\n" + kUsage);
     }
     if (o.engine != "embree" && o.engine != "cgal") fail("argument --engine: expected embree or cgal, got '" + o.engine + "'");
     if (o.sign != "parity" && o.sign != "pseudonormal" && o.sign != "none")
@@ -695,7 +837,7 @@ int main(int argc, char** argv) {
     omp_set_num_threads(threads);
     omp_set_dynamic(0);
 
-    const Mesh mesh = readObj(options.mesh);
+    const Mesh mesh = readMesh(options.mesh);
     const std::vector<float> points = readPoints(options.points);
     const std::size_t n = points.size() / 3;
     const bool morton = options.order == "morton";
@@ -705,10 +847,13 @@ int main(int argc, char** argv) {
     const auto buildStart = std::chrono::steady_clock::now();
     EmbreeEngine embree;
     CgalEngine cgal;
-    if (options.engine == "embree") embree.build(mesh, threads);
-    else cgal.build(mesh, sign == Sign::Parity);
+    if (options.engine == "embree")
+        embree.build(mesh, threads);
+    else
+        cgal.build(mesh, sign == Sign::Parity);
     std::vector<float> normals;
-    if (sign == Sign::Pseudonormal) normals = buildPseudonormals(mesh);
+    if (sign == Sign::Pseudonormal)
+        normals = buildPseudonormals(mesh);
     else { // face normals only, for the gradient where p is on the surface
         normals.assign(mesh.triangles() * 21, 0.0f);
         for (std::size_t t = 0; t < mesh.triangles(); ++t) {
@@ -716,7 +861,8 @@ int main(int argc, char** argv) {
                         c = mesh.vertex(mesh.corners[3 * t + 2]);
             const Vec3f n = cross(b - a, c - a);
             const float length = std::sqrt(dot(n, n));
-            if (length > 0.0f) normals[21 * t] = n.x / length, normals[21 * t + 1] = n.y / length, normals[21 * t + 2] = n.z / length;
+            if (length > 0.0f)
+                normals[21 * t] = n.x / length, normals[21 * t + 1] = n.y / length, normals[21 * t + 2] = n.z / length;
         }
     }
     const Box box = boundsOf(mesh);
@@ -753,7 +899,8 @@ int main(int argc, char** argv) {
                     const float* nrm = normalsIn + 21 * std::size_t(q.triangle) + 3 * q.feature;
                     s = dot(q.p - q.closest, Vec3d{nrm[0], nrm[1], nrm[2]}) < 0.0 ? -1.0 : 1.0;
                 }
-                store(valuesOut, gradientsOut, i, q.p, q.closest, std::sqrt(q.distance2), s, normalsIn + 21 * std::size_t(q.triangle));
+                store(valuesOut, gradientsOut, i, q.p, q.closest, std::sqrt(q.distance2), s,
+                      normalsIn + 21 * std::size_t(q.triangle));
             }
         }
     };
@@ -791,12 +938,14 @@ int main(int argc, char** argv) {
         }
     };
 
-    double best = std::numeric_limits<double>::infinity();
+    double best = std::numeric_limits<double>::max();
     for (int r = 0; r < options.repeat; ++r) {
         const auto start = std::chrono::steady_clock::now();
         if (morton) mortonOrder(points, order, keys, scratch);
-        if (options.engine == "embree") queryEmbree();
-        else queryCgal();
+        if (options.engine == "embree")
+            queryEmbree();
+        else
+            queryCgal();
         best = std::min(best, secondsSince(start));
     }
 
@@ -808,7 +957,7 @@ int main(int argc, char** argv) {
         notes = "Embree " + std::to_string(RTC_VERSION_MAJOR) + "." + std::to_string(RTC_VERSION_MINOR) + "." +
                 std::to_string(RTC_VERSION_PATCH) +
                 ": one triangle geometry, RTC_BUILD_QUALITY_HIGH, no RTC_SCENE_FLAG_ROBUST; closest point by rtcPointQuery "
-                "with a float closest-point-on-triangle callback (Ericson) that shrinks the radius";
+                "with a callback that computes Ericson's closest point on the triangle in double and shrinks the radius";
         if (sign == Sign::Parity)
             notes += "; parity: majority of 3 rays (the third only when the first two disagree), every crossing counted in "
                      "one rtcOccluded1 per ray by an occlusion filter that counts and rejects each hit (duplicate triangles "
@@ -816,16 +965,19 @@ int main(int argc, char** argv) {
     } else {
         notes = "CGAL " CGAL_VERSION_STR ": AABB_tree of a triangle soup (AABB_triangle_primitive, cached triangles) in "
                 "Simple_cartesian<double>, accelerate_distance_queries(), closest_point_and_primitive";
-        if (sign == Sign::Parity) notes += "; parity: Side_of_triangle_mesh over the same tree (meaningful on closed meshes only)";
+        if (sign == Sign::Parity)
+            notes += std::string("; parity: Side_of_triangle_mesh on a Surface_mesh of the same triangles") +
+                     (cgal.repaired ? " (not a manifold soup: made one by orient_polygon_soup)" : "") +
+                     " (meaningful on closed meshes only)";
     }
-    if (sign == Sign::Parity) notes += "; points outside the mesh's bounding box are outside without a ray";
+    if (sign == Sign::Parity) notes += "; a point outside the mesh's bounding box is outside without a ray";
     if (sign == Sign::Pseudonormal)
         notes += "; pseudonormal: angle-weighted vertex, edge (sum of adjacent faces) and face normals after merging equal "
                  "positions, the closest point's feature decides";
     if (morton)
         notes += "; points visited in Morton order (sort timed) with each query seeded by the previous point's closest "
                  "triangle (Embree: initial radius; CGAL: hint)";
-    notes += "; build_seconds: acceleration structure" + std::string(sign == Sign::Pseudonormal ? " and pseudonormals" : "") +
+    notes += "; build_seconds: acceleration structure(s)" + std::string(sign == Sign::Pseudonormal ? " and pseudonormals" : "") +
              "; query_seconds: best of " + std::to_string(options.repeat) + ", value + " +
              (wantGradient ? "gradient" : "no gradient");
 

@@ -200,12 +200,19 @@ std::size_t MeshQuery::bytes() const {
     return m_nodes.size() * sizeof(Node) + m_corners.size() * sizeof(double) + cache;
 }
 
-double MeshQuery::nearest(const dvec3& p, std::uint32_t& slot, int& feature, dvec3& closest, std::uint64_t* visits) const {
+double MeshQuery::nearest(const dvec3& p, std::uint32_t& slot, int& feature, dvec3& closest, std::uint64_t* visits,
+                          std::uint32_t seed) const {
     double best = std::numeric_limits<double>::infinity();
     slot = 0;
     feature = 0;
     closest = p;
     if (m_nodes.empty()) return best;
+    if (seed < m_corners.size() / 9) { // a triangle near the last row's: its distance bounds the walk
+        const double* c = m_corners.data() + std::size_t(seed) * 9;
+        closest = closestPointOnTriangle(p, dvec3(c[0], c[1], c[2]), dvec3(c[3], c[4], c[5]), dvec3(c[6], c[7], c[8]), &feature);
+        best = glm::dot(p - closest, p - closest);
+        slot = seed;
+    }
     const float px = float(p.x), py = float(p.y), pz = float(p.z);
     // A box is skipped when its float distance exceeds the best by more than float rounding can
     // explain (boxes are rounded outward already; the slack keeps exact ties walked).
@@ -213,6 +220,7 @@ double MeshQuery::nearest(const dvec3& p, std::uint32_t& slot, int& feature, dve
     // Float rounding of a point-triangle distance: a few units in the last place of the coordinates.
     const double margin = 1e-6 * (m_scale + std::abs(p.x) + std::abs(p.y) + std::abs(p.z));
     double bound = std::numeric_limits<double>::infinity();
+    if (std::isfinite(best)) bound = (std::sqrt(best) + margin) * (std::sqrt(best) + margin);
     struct Entry {
         std::uint32_t node;  // an inner node, or a leaf's first triangle slot
         std::uint32_t count; // 0: an inner node; else the leaf's triangles
@@ -229,7 +237,9 @@ double MeshQuery::nearest(const dvec3& p, std::uint32_t& slot, int& feature, dve
             const dvec3 q =
                 closestPointOnTriangle(p, dvec3(c[0], c[1], c[2]), dvec3(c[3], c[4], c[5]), dvec3(c[6], c[7], c[8]), &f);
             const double d2 = glm::dot(p - q, p - q);
-            if (d2 < best) {
+            // The lowest slot among equally near triangles: the answer does not depend on the walk's
+            // order or on a seed.
+            if (d2 < best || (d2 == best && s < slot)) {
                 best = d2;
                 slot = s;
                 feature = f;
@@ -443,10 +453,16 @@ bool MeshQuery::inside(const dvec3& p, double distance, std::uint32_t slot, int 
 }
 
 double MeshQuery::signedDistance(const dvec3& p, dvec3* gradient, QueryCounters* counters) const {
+    std::uint32_t seed = kNoSeed;
+    return seededDistance(p, gradient, counters, seed);
+}
+
+double MeshQuery::seededDistance(const dvec3& p, dvec3* gradient, QueryCounters* counters, std::uint32_t& seed) const {
     std::uint32_t slot = 0;
     int feature = 0;
     dvec3 closest(0.0);
-    const double distance = std::sqrt(nearest(p, slot, feature, closest, counters ? &counters->nearestNodes : nullptr));
+    const double distance = std::sqrt(nearest(p, slot, feature, closest, counters ? &counters->nearestNodes : nullptr, seed));
+    seed = slot;
     const bool in = inside(p, distance, slot, feature, closest, counters);
     if (gradient) {
         if (distance > 0.0) {
@@ -468,6 +484,32 @@ std::uint64_t MeshQuery::evaluate(const RowView& rows, std::size_t count, const 
                                   QueryCounters* counters) const {
     constexpr std::size_t kBlock = 1024;
     const unsigned workers = unsigned(std::min<std::size_t>(threadCount(threads), (count + kBlock - 1) / kBlock));
+    // Rows in Morton order (10 bits an axis over the cache's box): neighbours in the order are
+    // neighbours in space, so each row's walk starts from the last row's triangle (seeded within a
+    // block of the order, so the rows do not depend on the threads) and finds the caches warm.
+    std::vector<std::uint64_t> order(count);
+    {
+        auto spread = [](std::uint64_t v) {
+            v &= 0x3ff;
+            v = (v | (v << 16)) & 0x30000ff;
+            v = (v | (v << 8)) & 0x300f00f;
+            v = (v | (v << 4)) & 0x30c30c3;
+            v = (v | (v << 2)) & 0x9249249;
+            return v;
+        };
+        const double scale = m_cacheSide > 0 ? 1023.0 / (m_cacheStep * m_cacheSide) : 0.0;
+        for (std::size_t i = 0; i < count; ++i) {
+            const float* xyz = rows.positions + i * rows.positionStride;
+            std::uint64_t key = 0;
+            for (int a = 0; a < 3; ++a) {
+                const double cell = (double(xyz[a]) - m_cacheLo[a]) * scale;
+                const double clamped = cell >= 0.0 ? std::min(cell, 1023.0) : 0.0; // NaN: 0
+                key |= spread(std::uint64_t(clamped)) << a;
+            }
+            order[i] = key << 32 | i;
+        }
+        std::sort(order.begin(), order.end());
+    }
     std::atomic<std::size_t> next{0};
     std::atomic<std::uint64_t> bad{0};
     std::mutex countersMutex;
@@ -478,7 +520,9 @@ std::uint64_t MeshQuery::evaluate(const RowView& rows, std::size_t count, const 
             const std::size_t begin = next.fetch_add(kBlock);
             if (begin >= count) break;
             const std::size_t end = std::min(count, begin + kBlock);
-            for (std::size_t i = begin; i < end; ++i) {
+            std::uint32_t seed = kNoSeed;
+            for (std::size_t j = begin; j < end; ++j) {
+                const std::size_t i = std::size_t(order[j] & 0xffffffffu);
                 const float* xyz = rows.positions + i * rows.positionStride;
                 const glm::vec3 pf(xyz[0], xyz[1], xyz[2]);
                 float* value = rows.distances + i * rows.distanceStride;
@@ -493,7 +537,7 @@ std::uint64_t MeshQuery::evaluate(const RowView& rows, std::size_t count, const 
                 }
                 dvec3 exact(0.0);
                 const bool wantExact = gradient && mode.exact;
-                *value = float(signedDistance(dvec3(pf), wantExact ? &exact : nullptr, &local));
+                *value = float(seededDistance(dvec3(pf), wantExact ? &exact : nullptr, &local, seed));
                 if (gradient) {
                     if (mode.exact) {
                         gradient[0] = float(exact.x);

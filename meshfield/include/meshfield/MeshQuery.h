@@ -50,6 +50,7 @@ struct QueryCounters {
 
 class MeshQuery {
 public:
+    static constexpr std::uint32_t kNoSeed = 0xffffffffu;
     // Builds the CPU layout (inner nodes holding both children's boxes) from `field`'s hierarchy.
     // `field` must outlive the query (meshQuery() keeps it alive).
     explicit MeshQuery(const MeshField& field);
@@ -61,8 +62,11 @@ public:
 
     // Squared distance to the nearest triangle, which triangle (leaf order), its feature (as in
     // closestPointOnTriangle) and the closest point. `visits` (optional) counts nodes tested.
-    double nearest(const glm::dvec3& p, std::uint32_t& slot, int& feature, glm::dvec3& closest,
-                   std::uint64_t* visits = nullptr) const;
+    // `seed` (optional): a triangle slot whose distance bounds the walk from the start (a
+    // neighbour's nearest); the answer is the same with or without it (among equally near
+    // triangles the lowest slot wins).
+    double nearest(const glm::dvec3& p, std::uint32_t& slot, int& feature, glm::dvec3& closest, std::uint64_t* visits = nullptr,
+                   std::uint32_t seed = kNoSeed) const;
     // The hierarchical winding number (the field's beta), as MeshField::winding.
     double winding(const glm::dvec3& p, std::uint64_t* visits = nullptr) const;
     // Inside by the field's sign method; `distance` (the nearest distance) lets the winding sign
@@ -84,6 +88,8 @@ public:
 private:
     struct Node;
     float floatField(const glm::vec3& p) const;
+    // signedDistance walking from `seed` (kNoSeed: none); leaves the nearest triangle's slot there.
+    double seededDistance(const glm::dvec3& p, glm::dvec3* gradient, QueryCounters* counters, std::uint32_t& seed) const;
     bool parityInside(const glm::dvec3& p) const;
     bool cachedWindingInside(const glm::dvec3& p, double distance, bool& fromCache, std::uint64_t* visits) const;
 
