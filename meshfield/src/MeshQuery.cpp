@@ -508,7 +508,17 @@ std::uint64_t MeshQuery::evaluate(const RowView& rows, std::size_t count, const 
             }
             order[i] = key << 32 | i;
         }
-        std::sort(order.begin(), order.end());
+        // Least significant digit first, 10 bits a pass over the 30-bit codes: a few milliseconds
+        // for a chunk where std::sort took a tenth of the queries' time. Stable, so equal codes keep
+        // their rows' order.
+        std::vector<std::uint64_t> scratch(count);
+        for (int shift = 32; shift < 62; shift += 10) {
+            std::size_t bucket[1025] = {};
+            for (std::uint64_t v : order) ++bucket[((v >> shift) & 0x3ff) + 1];
+            for (int b = 0; b < 1024; ++b) bucket[b + 1] += bucket[b];
+            for (std::uint64_t v : order) scratch[bucket[(v >> shift) & 0x3ff]++] = v;
+            order.swap(scratch);
+        }
     }
     std::atomic<std::size_t> next{0};
     std::atomic<std::uint64_t> bad{0};
