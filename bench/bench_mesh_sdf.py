@@ -236,16 +236,22 @@ def with_environment(variables, call):
                 os.environ[k] = v
 
 
+def shared_points(unit, faces, seed, count, truth_count, stem):
+    # Uniform points in [-1.1, 1.1]^3 as every program reads them (a float32 file), and the truth on
+    # the first truth_count: float64 brute-force distances and exact winding numbers' inside.
+    points = np.random.default_rng(seed).uniform(-1.1, 1.1, (count, 3)).astype(np.float32)
+    points_path = os.path.join(work, stem + ".f32")
+    points.tofile(points_path)
+    subset = points[:truth_count]
+    truth_distance = mesh_sdf_truth.closest_distances(unit, faces, subset)
+    return points, points_path, truth_distance, mesh_sdf_truth.winding_numbers(unit, faces, subset) > 0.5
+
+
 def speed_row(name, vertices, faces):
     # The same points and the same (normalised) mesh file for sdfwb and every reference.
     unit = unit_cube(vertices)
     mesh_path = write_obj(os.path.join(work, "unit_" + name), unit, faces)
-    points = np.random.default_rng(2).uniform(-1.1, 1.1, (SPEED_POINTS, 3)).astype(np.float32)
-    points_path = os.path.join(work, "points.f32")
-    points.tofile(points_path)
-    subset = points[:TRUTH_POINTS]
-    truth_distance = mesh_sdf_truth.closest_distances(unit, faces, subset)
-    truth_inside = mesh_sdf_truth.winding_numbers(unit, faces, subset) > 0.5
+    points, points_path, truth_distance, truth_inside = shared_points(unit, faces, 2, SPEED_POINTS, TRUTH_POINTS, "points")
     row = {"mesh": name, "triangles": len(faces), "entries": []}
 
     def add(label, configuration, seconds, count, values, signed=True):
@@ -296,12 +302,8 @@ def big_row(name, vertices, faces, small):
     unit = unit_cube(vertices)
     mesh_path = os.path.join(work, "big.ply")
     write_ply(mesh_path, unit, faces)
-    points = np.random.default_rng(4).uniform(-1.1, 1.1, (BIG_POINTS, 3)).astype(np.float32)
-    points_path = os.path.join(work, "big_points.f32")
-    points.tofile(points_path)
-    subset = points[:BIG_TRUTH_POINTS]
-    truth_distance = mesh_sdf_truth.closest_distances(unit, faces, subset)
-    truth_inside = mesh_sdf_truth.winding_numbers(unit, faces, subset) > 0.5
+    points, points_path, truth_distance, truth_inside = shared_points(unit, faces, 4, BIG_POINTS, BIG_TRUTH_POINTS,
+                                                                      "big_points")
     row = {"mesh": name, "triangles": len(faces), "hierarchy": hierarchy_line(mesh_path), "entries": []}
     sdfwb.evaluate(mesh_path, points[:1000])  # builds the hierarchy and the CPU layout
     seconds, ours = timed(lambda: sdfwb.evaluate(mesh_path, points))
