@@ -12,10 +12,13 @@
 // `sdfwb --batch bench` (jobs/src/Benchmarks.cpp).
 //
 //   build/bench/bench_tracer [NAME ...]     (dataset names; default: every SDF)
+//   build/bench/bench_tracer --mesh FILE... (meshes as SDFs, normalised to the unit cube as the
+//                                            workbench opens them: the walk against the march)
 //   SDFWB_CONES=on|off forces the cone pass (default auto: tried at rest, as in the viewport).
 
 #include <core/Paths.h>
 #include <dataset/Catalogue.h>
+#include <meshfield/MeshField.h>
 #include <renderer/HeadlessContext.h>
 #include <renderer/ImageIO.h>
 #include <renderer/OffscreenRenderer.h>
@@ -324,6 +327,117 @@ void datasetReport(const std::vector<std::string>& names) {
                 movingFrames.back(), movingFrames[movingFrames.size() / 2]);
 }
 
+// Frames of a mesh's own field: the picture as the workbench draws it (one walk of the hierarchy
+// a pixel, SdfRenderer's default) against the sphere tracer on the same field
+// (SDFWB_MESH_TRACE=march), in the same run. Accuracy beside each time: pixels whose hit or miss
+// differ and the angle between their normals (normals shading, read back from the picture) where
+// both hit; the walk's normal is the face's, the march's the taps' across a pixel's footprint.
+// Then the walk with the cutting plane shown and clipping, and with ambient occlusion.
+void meshReport(const std::vector<std::string>& files) {
+    std::printf(
+        "| mesh | triangles | march 320x240 (ms) | walk 320x240 (ms) | walk / march | hit differs (pixels) | "
+        "normal angle p50 / p99 (degrees) | walk 1280x720 (ms) | moving: scale, frame (ms) | + plane (ms) | plane field (ms) | "
+        "+ AO (ms) |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    renderer::OffscreenRenderer offscreen;
+    meshfield::MeshFieldOptions options;
+    options.normalize = meshfield::Normalization::UnitCube;
+    constexpr int kW = 320, kH = 240;
+    constexpr double kGoalMilliseconds = 100.0; // issue 46: a mesh's frame at 320x240 on llvmpipe
+    double worstWalk = 0.0, worstMarch = 0.0;
+    std::string worstName;
+    for (const std::string& file : files) {
+        const shaders::PreparedSdf prepared = shaders::prepareMeshFile(file, options);
+        if (shaders::hasErrors(prepared.diagnostics)) {
+            std::printf("| %s | does not load: %s |\n", file.c_str(), prepared.diagnostics[0].message.c_str());
+            continue;
+        }
+        double planeField = 0.0;
+        float movingScale = 1.0f;
+        double moving = 0.0;
+        auto picture = [&](bool walk, renderer::ShadingSettings shading, const renderer::CuttingPlane& plane, int width,
+                           int height, renderer::Image* image) {
+            if (walk)
+                unsetenv("SDFWB_MESH_TRACE");
+            else
+                setenv("SDFWB_MESH_TRACE", "march", 1);
+            renderer::SdfRenderer sdfRenderer;
+            (void)sdfRenderer.setShading(shading);
+            (void)sdfRenderer.setPlane(plane);
+            auto diagnostics = sdfRenderer.setSdf(prepared);
+            double ms = -1.0;
+            if (!shaders::hasErrors(diagnostics)) {
+                ms = frameMilliseconds(offscreen, sdfRenderer, width, height, 1.0f);
+                if (image) *image = offscreen.render(sdfRenderer, width, height, renderer::Camera{}, 0.0f);
+                if (plane.enabled) planeField = sdfRenderer.planeFieldMilliseconds();
+                if (walk && !plane.enabled && !shading.ambientOcclusion && width == 1280) {
+                    // The viewport's rule while the camera moves (as datasetReport).
+                    float scale = std::clamp(float(std::sqrt(0.8 * 33.0 / ms)), 0.1f, 1.0f);
+                    for (int frame = 0; frame < 6; ++frame) {
+                        movingScale = scale;
+                        moving = frameMilliseconds(offscreen, sdfRenderer, width, height, scale);
+                        scale = std::clamp(0.5f * (scale + scale * float(std::sqrt(0.8 * 33.0 / moving))), 0.1f, 1.0f);
+                    }
+                }
+            }
+            sdfRenderer.releaseGl();
+            unsetenv("SDFWB_MESH_TRACE");
+            return ms;
+        };
+        renderer::ShadingSettings normals;
+        normals.mode = renderer::ShadingMode::Normals;
+        renderer::Image walked, marched;
+        const double march = picture(false, normals, {}, kW, kH, &marched);
+        const double walk = picture(true, normals, {}, kW, kH, &walked);
+        // The background is (0.16, 0.17, 0.19); a normal's colour is n * 0.5 + 0.5.
+        auto background = [](const std::uint8_t* rgba) {
+            return std::abs(rgba[0] - 41) <= 1 && std::abs(rgba[1] - 43) <= 1 && std::abs(rgba[2] - 48) <= 1;
+        };
+        long differ = 0;
+        std::vector<double> angles;
+        for (int y = 0; y < kH && !walked.rgba.empty() && !marched.rgba.empty(); ++y)
+            for (int x = 0; x < kW; ++x) {
+                const std::uint8_t *a = walked.pixel(x, y), *b = marched.pixel(x, y);
+                if (background(a) != background(b)) {
+                    ++differ;
+                    continue;
+                }
+                if (background(a)) continue;
+                glm::vec3 na = glm::vec3(a[0], a[1], a[2]) / 127.5f - 1.0f, nb = glm::vec3(b[0], b[1], b[2]) / 127.5f - 1.0f;
+                if (glm::length(na) < 0.5f || glm::length(nb) < 0.5f) continue;
+                angles.push_back(std::acos(std::clamp(double(glm::dot(glm::normalize(na), glm::normalize(nb))), -1.0, 1.0)) *
+                                 180.0 / 3.14159265358979);
+            }
+        renderer::ShadingSettings gooch;
+        gooch.mode = renderer::ShadingMode::Gooch;
+        const double full = picture(true, gooch, {}, 1280, 720, nullptr);
+        renderer::CuttingPlane plane;
+        plane.enabled = true;
+        plane.normal = {0.0f, 0.0f, 1.0f};
+        const double withPlane = picture(true, gooch, plane, 1280, 720, nullptr);
+        renderer::ShadingSettings occluded = gooch;
+        occluded.ambientOcclusion = true;
+        const double withAo = picture(true, occluded, {}, 1280, 720, nullptr);
+        if (const char* folder = std::getenv("SDFWB_REFERENCE_IMAGES")) {
+            const std::string stem = std::filesystem::path(file).stem().string();
+            (void)renderer::writeImage(std::filesystem::path(folder) / (stem + "-walk.png"), walked);
+            (void)renderer::writeImage(std::filesystem::path(folder) / (stem + "-march.png"), marched);
+        }
+        if (walk > worstWalk) worstWalk = walk, worstName = std::filesystem::path(file).filename().string();
+        worstMarch = std::max(worstMarch, march);
+        std::printf("| %s | %zu | %.1f | %.1f | %.3f | %ld of %d | %.2f / %.2f | %.1f | %.0f %%, %.1f | %.1f | %.0f | %.1f |\n",
+                    std::filesystem::path(file).filename().string().c_str(),
+                    prepared.mesh ? prepared.mesh->mesh.triangles() : std::size_t(0), march, walk, walk / march, differ, kW * kH,
+                    percentile(angles, 0.5), percentile(angles, 0.99), full, movingScale * 100.0f, moving, withPlane, planeField,
+                    withAo);
+        std::fflush(stdout);
+    }
+    if (worstName.empty()) return;
+    std::printf("\nGoal: at most %.0f ms a frame at 320x240 for every mesh. The walk's slowest: %.1f ms (%s): %s. "
+                "The march's slowest: %.1f ms.\n",
+                kGoalMilliseconds, worstWalk, worstName.c_str(), worstWalk <= kGoalMilliseconds ? "met" : "NOT met", worstMarch);
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -333,6 +447,10 @@ int main(int argc, char** argv) {
         return 3;
     }
     std::printf("GL: %s\n\n", renderer::describe(context.value()->info()).c_str());
-    datasetReport(std::vector<std::string>(argv + 1, argv + argc));
+    std::vector<std::string> arguments(argv + 1, argv + argc);
+    if (!arguments.empty() && arguments.front() == "--mesh")
+        meshReport(std::vector<std::string>(arguments.begin() + 1, arguments.end()));
+    else
+        datasetReport(arguments);
     return 0;
 }

@@ -3,7 +3,9 @@
 #include "GlObjects.h"
 
 #include <core/Log.h>
+#include <core/Parallel.h>
 #include <core/Paths.h>
+#include <meshfield/MeshQuery.h>
 #include <renderer/GlInfo.h>
 #include <renderer/ImageIO.h>
 #include <shaders/DiagnosticParser.h>
@@ -33,6 +35,9 @@ namespace {
 using shaders::Diagnostic;
 
 constexpr std::size_t kMaxCachedVariants = 16;
+// Texels a side of the plane's field: about 0.004 units apart on an axis-aligned plane
+// (2.1 units across), a quarter of the default contour spacing (1/64).
+constexpr int kPlaneFieldSize = 512;
 constexpr std::ptrdiff_t kFusedMarchFromCharacters = 1000;
 // Below this many characters of code, and without loops, an SDF's normal taps are unrolled
 // (TracerFeatures::unrolledTaps): the primitives (a box is about 200), whose four more inlined
@@ -49,6 +54,13 @@ std::optional<bool> forcedFusedMarch() {
     const char* forced = std::getenv("SDFWB_FUSED_MARCH");
     if (!forced || !*forced) return std::nullopt;
     return forced[0] == '1';
+}
+
+// Whether a mesh's own field is drawn by one walk of its hierarchy a pixel (the default) or
+// marched like any field: SDFWB_MESH_TRACE=march, for benchmarks (bench/bench_tracer --mesh).
+bool meshRaycastEnabled() {
+    const char* forced = std::getenv("SDFWB_MESH_TRACE");
+    return !(forced && std::string_view(forced) == "march");
 }
 
 // Whether the code has a loop (for or while followed by a parenthesis): a loop with a constant
@@ -88,6 +100,7 @@ struct Variant {
     std::string fragmentSource;
     bool fusedMarch = false;
     bool cones = false;
+    bool meshRaycast = false; // shaders::meshRaycastApplies: no march to choose, no cone pass
     std::unordered_map<std::string, GLint> uniforms;
     std::uint64_t lastUse = 0;
 
@@ -162,6 +175,14 @@ struct SdfRenderer::Impl {
     int lowWidth = 0, lowHeight = 0;
     GlTexture coneStarts; // the cone pass's starts, copied out of the target
     int coneWidth = 0, coneHeight = 0;
+    // A mesh's own field on the cutting plane (SDFWB_PLANE_FIELD), and what it was computed for.
+    GlTexture planeField;
+    std::shared_ptr<const meshfield::MeshField> planeFieldMesh;
+    glm::vec4 planeFieldPlane{0.0f}; // normal, offset
+    float planeFieldMargin = -1.0f;
+    double planeFieldMilliseconds = 0.0;
+    glm::vec3 planeFieldOrigin{0.0f}, planeFieldU{0.0f}, planeFieldV{0.0f};
+    void ensurePlaneField(const glm::vec3& normal, float offset, float margin);
 
     // A width x height RGBA8 texture.
     static GlTexture makeTexture(int width, int height, GLenum filter) {
@@ -266,8 +287,11 @@ struct SdfRenderer::Impl {
     Variant* build(const shaders::PreparedSdf& prepared, shaders::TracerFeatures tracerFeatures,
                    std::vector<Diagnostic>& diagnostics) {
         const CodeShape shape = codeShape(prepared);
-        tracerFeatures.fusedMarch = shape.fusedMarch && !separateChosen;
+        tracerFeatures.meshRaycast = meshRaycastEnabled();
+        const bool meshRaycast = shaders::meshRaycastApplies(prepared, tracerFeatures);
+        tracerFeatures.fusedMarch = shape.fusedMarch && !separateChosen && !meshRaycast;
         tracerFeatures.unrolledTaps = shape.unrolledTaps;
+        if (meshRaycast) tracerFeatures.cones = false;
         auto fragment = shaders::composeTracer(prepared, tracerFeatures);
         if (!fragment) {
             diagnostics.push_back({"<sdfwb>", 0, 0, shaders::Severity::Error, fragment.error().message});
@@ -305,6 +329,7 @@ struct SdfRenderer::Impl {
         variant.fragmentSource = fragment->text;
         variant.fusedMarch = tracerFeatures.fusedMarch;
         variant.cones = tracerFeatures.cones;
+        variant.meshRaycast = meshRaycast;
         variant.lastUse = ++clock;
         return &variant;
     }
@@ -378,6 +403,8 @@ SdfRenderer::~SdfRenderer() {
     m_impl->lowFramebuffer.release();
     m_impl->lowColor.release();
     m_impl->coneStarts.release();
+    m_impl->planeField.release();
+    m_impl->planeFieldMesh.reset();
 }
 
 std::vector<Diagnostic> SdfRenderer::setSdf(const shaders::PreparedSdf& sdf) {
@@ -420,7 +447,9 @@ bool SdfRenderer::settleMarch(double fullFrameMilliseconds) {
     // The last trial: the cone pass on the march chosen so far. Returns whether the program changed.
     auto tryCones = [&] {
         impl.settle = Impl::Settle::Done;
-        if (m_trace.cones != TraceSettings::Cones::Auto || !conesApply(m_shading, m_trace) || impl.conesChosen) return false;
+        if (m_trace.cones != TraceSettings::Cones::Auto || !conesApply(m_shading, m_trace) || impl.conesChosen ||
+            impl.current->meshRaycast)
+            return false;
         impl.conesChosen = true;
         if (!rebuild()) { // the driver refused it: the program without cones stays (from the cache)
             impl.conesChosen = false;
@@ -515,7 +544,8 @@ void SdfRenderer::Impl::setFrameUniforms(Variant& variant, const FrameInputs& in
     glUniform1f(v->location("sdfwb_boxMargin"), trace.boxMargin);
     glUniform3f(v->location("sdfwb_background"), shading.background.r, shading.background.g, shading.background.b);
     if (GLint location = v->location("sdfwb_time"); location >= 0) glUniform1f(location, time);
-    if (GLint location = v->location("g3d_SceneTime"); location >= 0) glUniform1f(location, time); // declared by the file
+    for (const char* name : {"g3d_SceneTime", "iTime"}) // declared by the file, or uniforms its macro wraps
+        if (GLint location = v->location(name); location >= 0) glUniform1f(location, time);
     applyParameters(in.parameters, [v](const char* name) { return v->location(name); });
     bindSdfTextures(v->program.id(), textures, sdf ? sdf->channels : decltype(sdf->channels){}, sdf ? sdf->mesh : nullptr);
     if (GLint location = v->location("sdfwb_relaxation"); location >= 0) glUniform1f(location, trace.overRelaxation);
@@ -529,6 +559,17 @@ void SdfRenderer::Impl::setFrameUniforms(Variant& variant, const FrameInputs& in
             glUniform1f(location, std::max(plane.contourSpacing, 1e-6f));
         if (GLint location = v->location("sdfwb_rampDistance"); location >= 0)
             glUniform1f(location, std::max(plane.rampDistance, 1e-6f));
+        if (GLint location = v->location("sdfwb_planeField"); location >= 0 && sdf && sdf->mesh) {
+            ensurePlaneField(normal, plane.offset, trace.boxMargin);
+            glActiveTexture(GL_TEXTURE3); // 0 to 2: the matcap, the background image, the cone starts
+            glBindTexture(GL_TEXTURE_2D, planeField.id());
+            glActiveTexture(GL_TEXTURE0);
+            glUniform1i(location, 3);
+            glUniform3fv(v->location("sdfwb_planeFieldOrigin"), 1, &planeFieldOrigin.x);
+            glUniform3fv(v->location("sdfwb_planeFieldU"), 1, &planeFieldU.x);
+            glUniform3fv(v->location("sdfwb_planeFieldV"), 1, &planeFieldV.x);
+            glUniform1f(v->location("sdfwb_planeFieldHalfTexel"), 0.5f / float(kPlaneFieldSize));
+        }
     }
     if (GLint location = v->location("sdfwb_lightDirection"); location >= 0) {
         glm::vec3 light = glm::normalize(shading.lightDirection);
@@ -540,6 +581,73 @@ void SdfRenderer::Impl::setFrameUniforms(Variant& variant, const FrameInputs& in
         if (count > 0) glUniform3fv(location, count, &shading.markers[0].x);
         glUniform1i(v->location("sdfwb_markerCount"), count);
     }
+}
+
+// The field of the mesh on the plane dot(normal, p) = offset, over the rectangle of the plane that
+// holds the box's cross-section, on the CPU engine (MeshQuery: the same values as the field's
+// samples): f, |f| and, on an open or non-manifold mesh, the winding number (plane.glsl hatches
+// where it is near 1/2); computed again only when the plane, the box or the mesh changes.
+void SdfRenderer::Impl::ensurePlaneField(const glm::vec3& normal, float offset, float margin) {
+    const glm::vec4 plane(normal, offset);
+    if (planeField && planeFieldMesh == sdf->mesh && planeFieldPlane == plane && planeFieldMargin == margin) return;
+    const auto start = std::chrono::steady_clock::now();
+    const glm::vec3 axis = std::abs(normal.x) < 0.6f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    const glm::vec3 u = glm::normalize(glm::cross(normal, axis)), v = glm::cross(normal, u);
+    const float half = 1.0f + margin;
+    glm::vec2 lo(1e30f), hi(-1e30f);
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 c((corner & 1) ? half : -half, (corner & 2) ? half : -half, (corner & 4) ? half : -half);
+        const glm::vec2 at(glm::dot(c, u), glm::dot(c, v));
+        lo = glm::min(lo, at);
+        hi = glm::max(hi, at);
+    }
+    constexpr int n = kPlaneFieldSize;
+    const glm::vec2 step = (hi - lo) / float(n - 1);
+    const glm::vec3 origin = normal * offset + lo.x * u + lo.y * v;
+    std::vector<float> positions(std::size_t(n) * n * 3);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const glm::vec3 p = origin + (float(i) * step.x) * u + (float(j) * step.y) * v;
+            std::copy(&p.x, &p.x + 3, positions.begin() + (std::ptrdiff_t(j) * n + i) * 3);
+        }
+    std::vector<float> texels(std::size_t(n) * n * 4);
+    const auto query = meshfield::meshQuery(sdf->mesh);
+    meshfield::RowView rows;
+    rows.positions = positions.data();
+    rows.distances = texels.data();
+    rows.distanceStride = 4;
+    (void)query->evaluate(rows, std::size_t(n) * n, {});
+    const bool windings = !sdf->mesh->closed();
+    forEachChunk(std::size_t(n) * n, chunkCount(std::size_t(n) * n, 4096), [&](std::size_t, std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) {
+            float* texel = &texels[k * 4];
+            texel[1] = std::abs(texel[0]);
+            texel[2] = windings ? float(query->winding(glm::dvec3(positions[k * 3], positions[k * 3 + 1], positions[k * 3 + 2])))
+                                : (texel[0] < 0.0f ? 1.0f : 0.0f);
+        }
+    });
+    if (!planeField) {
+        GLuint id = 0;
+        glGenTextures(1, &id);
+        planeField = GlTexture(id);
+    }
+    glBindTexture(GL_TEXTURE_2D, planeField.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, n, n, 0, GL_RGBA, GL_FLOAT, texels.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    planeFieldMesh = sdf->mesh;
+    planeFieldPlane = plane;
+    planeFieldMargin = margin;
+    planeFieldOrigin = origin;
+    planeFieldU = u / (step.x * float(n));
+    planeFieldV = v / (step.y * float(n));
+    const double milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    planeFieldMilliseconds = milliseconds;
+    log::info("render", "plane field: " + std::to_string(n) + "x" + std::to_string(n) + " points on the CPU engine in " +
+                            std::to_string(int(std::lround(milliseconds))) + " ms");
 }
 
 // The matcap and the background image, on texture units 0 and 1.
@@ -730,6 +838,8 @@ void SdfRenderer::releaseGl() {
     m_impl->lowWidth = m_impl->lowHeight = 0;
     m_impl->coneStarts.reset();
     m_impl->coneWidth = m_impl->coneHeight = 0;
+    m_impl->planeField.reset();
+    m_impl->planeFieldMesh.reset();
     m_impl->current = nullptr;
     m_impl->cache.clear();
     m_impl->vertexArray.reset();
@@ -741,6 +851,8 @@ void SdfRenderer::releaseGl() {
 }
 
 std::uint64_t SdfRenderer::programsBuilt() const { return m_impl->programsBuilt; }
+
+double SdfRenderer::planeFieldMilliseconds() const { return m_impl->planeFieldMilliseconds; }
 
 void SdfRenderer::setParameters(std::vector<shaders::ParameterSetting> parameters) { m_parameters = std::move(parameters); }
 

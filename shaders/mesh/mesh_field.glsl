@@ -93,8 +93,10 @@ vec3 sdfwb_meshClosest(vec3 p, vec3 a, vec3 b, vec3 c, out int feature) {
     return a + ab * (vb / sum) + ac * (vc / sum);
 }
 
-// The squared distance to the nearest triangle, which triangle (leaf order), its feature and point.
-float sdfwb_meshNearest(vec3 p, out uint triangle, out int feature, out vec3 closest) {
+// The squared distance to the nearest triangle, which triangle (leaf order), its feature and point;
+// `bound2` when no triangle is nearer than its root (then triangle 0 and closest p): a walk that
+// needs the distance only below a bound prunes every box beyond it.
+float sdfwb_meshNearestWithin(vec3 p, float bound2, out uint triangle, out int feature, out vec3 closest) {
     triangle = 0u;
     feature = 0;
     closest = p;
@@ -102,7 +104,7 @@ float sdfwb_meshNearest(vec3 p, out uint triangle, out int feature, out vec3 clo
     uint stack[SDFWB_MESH_STACK];
     int top = 0;
     stack[top++] = 0u;
-    float best = 3.0e38;
+    float best = bound2;
     while (top > 0) {
         uint n = stack[--top];
         vec4 lo = sdfwb_meshNodes[SDFWB_MESH_NODE * n];
@@ -139,6 +141,18 @@ float sdfwb_meshNearest(vec3 p, out uint triangle, out int feature, out vec3 clo
         if (min(dl, dr) < best) stack[top++] = nearChild;
     }
     return top > 0 ? sdfwb_meshCut() : best;
+}
+
+float sdfwb_meshNearest(vec3 p, out uint triangle, out int feature, out vec3 closest) {
+    return sdfwb_meshNearestWithin(p, 3.0e38, triangle, feature, closest);
+}
+
+// The unsigned distance, or `bound` when it is larger.
+float sdfwb_meshDistanceWithin(vec3 p, float bound) {
+    uint t;
+    int f;
+    vec3 q;
+    return sqrt(sdfwb_meshNearestWithin(p, bound * bound, t, f, q));
 }
 
 float sdfwb_meshDistance(vec3 p) {
@@ -244,6 +258,79 @@ int sdfwb_meshCrossings(vec3 p, vec3 d) {
         }
     }
     return top > 0 ? -1 : crossings;
+}
+
+// The first triangle the ray origin + t direction meets for t in [tMin, tMax]: its t, and its slot
+// in `triangle` (0xffffffff and tMax when none does; NaN when the walk was cut). Nearer child
+// first, and a box is entered only when it starts before the best hit so far: one walk a pixel
+// where a sphere tracer calls the whole field (nearest triangle and sign) at every step.
+float sdfwb_meshRaycast(vec3 origin, vec3 direction, float tMin, float tMax, out uint triangle) {
+    triangle = 0xffffffffu;
+    if (sdfwb_meshIdleLane()) return tMax;
+    vec3 inverse = 1.0 / direction;
+    uint stack[SDFWB_MESH_STACK];
+    float stackEnter[SDFWB_MESH_STACK]; // where the ray enters each pushed node's box
+    int top = 0;
+    stack[top] = 0u;
+    stackEnter[top++] = tMin;
+    float best = tMax;
+    while (top > 0) {
+        --top;
+        if (stackEnter[top] > best) continue; // a nearer hit was found since it was pushed
+        uint n = stack[top];
+        vec4 lo = sdfwb_meshNodes[SDFWB_MESH_NODE * n];
+        vec4 hi = sdfwb_meshNodes[SDFWB_MESH_NODE * n + 1u];
+        uint first = floatBitsToUint(lo.w);
+        uint count = floatBitsToUint(hi.w);
+        if (count > 0u) {
+            for (uint k = 0u; k < SDFWB_MESH_LEAF; ++k) { // unrolled, as in sdfwb_meshNearest
+                if (k >= count) break;
+                uint s = first + k;
+                vec3 a = sdfwb_meshTriangles[3u * s].xyz;
+                vec3 e1 = sdfwb_meshTriangles[3u * s + 1u].xyz - a;
+                vec3 e2 = sdfwb_meshTriangles[3u * s + 2u].xyz - a;
+                vec3 h = cross(direction, e2);
+                float det = dot(e1, h);
+                if (det == 0.0) continue;
+                float inverseDet = 1.0 / det;
+                vec3 o = origin - a;
+                float u = dot(o, h) * inverseDet;
+                vec3 q = cross(o, e1);
+                float v = dot(direction, q) * inverseDet;
+                float t = dot(e2, q) * inverseDet;
+                if (u >= 0.0 && v >= 0.0 && u + v <= 1.0 && t >= tMin && t < best) {
+                    best = t;
+                    triangle = s;
+                }
+            }
+            continue;
+        }
+        // Where the ray enters each child's box (within [tMin, best]); +inf when it does not.
+        vec2 enter = vec2(3.0e38);
+        for (int c = 0; c < 2; ++c) {
+            uint child = first + uint(c);
+            vec3 t0 = (sdfwb_meshNodes[SDFWB_MESH_NODE * child].xyz - origin) * inverse;
+            vec3 t1 = (sdfwb_meshNodes[SDFWB_MESH_NODE * child + 1u].xyz - origin) * inverse;
+            vec3 tNear = min(t0, t1);
+            vec3 tFar = max(t0, t1);
+            float from = max(max(tNear.x, tNear.y), max(tNear.z, tMin));
+            float to = min(min(tFar.x, tFar.y), min(tFar.z, best));
+            if (from <= to) enter[c] = from;
+        }
+        bool leftFirst = enter.x <= enter.y;
+        float nearEnter = leftFirst ? enter.x : enter.y;
+        float farEnter = leftFirst ? enter.y : enter.x;
+        if (farEnter < 3.0e38) {
+            stack[top] = leftFirst ? first + 1u : first;
+            stackEnter[top++] = farEnter;
+        }
+        if (nearEnter < 3.0e38) {
+            stack[top] = leftFirst ? first : first + 1u;
+            stackEnter[top++] = nearEnter;
+        }
+    }
+    if (top > 0) return sdfwb_meshCut();
+    return best;
 }
 
 // 1 inside, 0 outside, NaN when a walk was cut (see sdfwb_meshCut).

@@ -35,6 +35,11 @@ std::string shadingModeNames() {
     return names;
 }
 
+bool meshRaycastApplies(const PreparedSdf& sdf, const TracerFeatures& features) {
+    return features.meshRaycast && sdf.mesh && sdf.meshIsTheField && !features.probe && !features.statsOutput &&
+           features.shading != ShadingMode::Steps;
+}
+
 Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatures& features) {
     FeatureDefines defines;
     std::string mode = shadingModeName(features.shading);
@@ -51,11 +56,18 @@ Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatu
     if (features.stepFactor) defines["SDFWB_STEP_FACTOR"] = "1";
     if (features.fusedMarch) defines["SDFWB_FUSED_MARCH"] = "1";
     if (features.unrolledTaps && !features.fusedMarch) defines["SDFWB_UNROLLED_TAPS"] = "1";
-    if (features.cones && !features.probe && features.shading != ShadingMode::Steps) defines["SDFWB_CONES"] = "1";
+    const bool meshRaycast = meshRaycastApplies(sdf, features);
+    if (meshRaycast) defines["SDFWB_MESH_RAYCAST"] = "1";
+    if (features.cones && !meshRaycast && !features.probe && features.shading != ShadingMode::Steps) defines["SDFWB_CONES"] = "1";
     if (features.cuttingPlane) {
         defines["SDFWB_PLANE"] = "1";
         if (features.planeClipsSurface) defines["SDFWB_PLANE_CLIP"] = "1";
-        if (features.planeLipschitzOverlay) defines["SDFWB_PLANE_LIPSCHITZ"] = "1";
+        // A mesh's own field is a distance by construction (its sign jumps over an open mesh's
+        // holes are hatched): the plane reads it from the texture and has no slope overlay.
+        if (meshRaycast)
+            defines["SDFWB_PLANE_FIELD"] = "1";
+        else if (features.planeLipschitzOverlay)
+            defines["SDFWB_PLANE_LIPSCHITZ"] = "1";
         files.insert(files.end() - 1, "tracer/plane.glsl");
     }
     if (features.statsOutput) defines["SDFWB_OUTPUT_STATS"] = "1";

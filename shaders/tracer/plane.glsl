@@ -29,7 +29,12 @@ float sdfwb_lineCoverage(float value, float perPixel, float widthPixels) {
 }
 
 vec3 sdfwb_planeColor(vec3 p) {
+#ifdef SDFWB_PLANE_FIELD
+    vec2 field = sdfwb_planeFieldAt(p); // a mesh's own field, computed once per plane (trace_core.glsl)
+    float f = field.x;
+#else
     float f = sdfwb_sdf(p);
+#endif
     float fPerPixel = sdfwb_fieldPerPixel(f, p); // before any return: derivatives need the whole quad
     if (isnan(f) || isinf(f)) return vec3(1.0, 0.0, 1.0);
     vec3 color;
@@ -60,7 +65,11 @@ vec3 sdfwb_planeColor(vec3 p) {
     // A triangle mesh's field: violet hatching where its winding number is within 1/4 of 1/2, where
     // the mesh is open or overlaps itself and inside or outside is a guess (the audit's
     // sign-uncertain flag counts the same points).
+#ifdef SDFWB_PLANE_FIELD
+    float winding = field.y;
+#else
     float winding = sdfwb_meshWinding(p);
+#endif
     if (abs(winding - 0.5) < 0.25) {
         float stripe = step(4.0, mod(gl_FragCoord.x + gl_FragCoord.y, 8.0));
         color = mix(color, vec3(0.55, 0.2, 0.85), 0.3 + 0.4 * stripe);

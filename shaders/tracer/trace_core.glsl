@@ -43,6 +43,32 @@ float sdfwb_sceneMap(vec3 p) { return max(sdfwb_sdf(p), dot(p, sdfwb_clipNormal)
 float sdfwb_sceneMap(vec3 p) { return sdfwb_sdf(p); }
 #endif
 
+#ifdef SDFWB_PLANE_FIELD
+// A mesh's own field on the cutting plane, computed once per plane (SdfRenderer, on the CPU
+// engine) instead of a whole field's walks per pixel and frame: a square of the plane covering
+// the box, texel (i, j) holding f, |f| and the winding number at origin + i * step * u + j * step * v.
+uniform sampler2D sdfwb_planeField;
+uniform vec3 sdfwb_planeFieldOrigin;
+uniform vec3 sdfwb_planeFieldU;        // u / (step * size): a point's texture coordinate along u
+uniform vec3 sdfwb_planeFieldV;
+uniform float sdfwb_planeFieldHalfTexel; // 0.5 / size: texel centres sit on the grid points
+
+// f and the winding number at plane point p. Bilinear f, except across an open mesh's sign jump
+// (f from -d to +d without a zero), where interpolating f would draw a zero line that the field
+// does not have: there |f| is interpolated and the nearest grid point gives the sign.
+vec2 sdfwb_planeFieldAt(vec3 p) {
+    vec3 d = p - sdfwb_planeFieldOrigin;
+    vec2 uv = vec2(dot(d, sdfwb_planeFieldU), dot(d, sdfwb_planeFieldV)) + sdfwb_planeFieldHalfTexel;
+    vec4 field = texture(sdfwb_planeField, uv);
+    float f = field.r;
+    if (abs(f) < 0.5 * field.g) {
+        float nearestSign = texelFetch(sdfwb_planeField, ivec2(uv * vec2(textureSize(sdfwb_planeField, 0))), 0).r;
+        f = nearestSign < 0.0 ? -field.g : field.g;
+    }
+    return vec2(f, field.b);
+}
+#endif
+
 // Why a ray ended: a hit, or one of three honest kinds of miss.
 const int sdfwb_kRayHit = 0;
 const int sdfwb_kRayLeftBox = 1;    // passed the far side of the box (or the far plane): nothing there
@@ -455,3 +481,72 @@ sdfwb_Hit sdfwb_traceWithNormal(vec3 origin, vec3 direction, out vec3 normal) {
     }
     return hit;
 }
+
+#ifdef SDFWB_MESH_RAYCAST
+// The picture of a mesh's own field (SDFWB_MESH_RAYCAST: not the march debugger, the heat map or
+// the statistics output, which show a march): the field's zero set is the triangles, so one walk
+// of the hierarchy finds the hit (sdfwb_meshRaycast) where a sphere tracer evaluates the whole
+// field, nearest triangle and sign, at every step. The normal is the field's gradient there, the
+// face's unit normal, turned to the ray (a face seen from behind through an open mesh's hole
+// shades as its front). With the cutting plane clipping the shape, a ray entering the kept
+// half-space inside the shape (the field's sign where it enters) hits the cut face there.
+// An open mesh's sign jumps across its holes without a zero: a sphere tracer stops at that jump
+// as if it were a surface, this walk sees the triangles behind it (the plane shows the jump).
+sdfwb_Hit sdfwb_meshTrace(vec3 origin, vec3 direction, out vec3 normal) {
+    sdfwb_Hit hit = sdfwb_Hit(false, 0.0, 0, origin, sdfwb_kRayLeftBox, 0.0);
+    normal = -direction;
+    sdfwb_March march;
+    if (!sdfwb_startMarch(origin, direction, march)) return hit;
+    hit.steps = 1;
+    float tFrom = march.tStart;
+    float tTo = march.tStart + march.sEnd;
+#ifdef SDFWB_PLANE_CLIP
+    // The kept half-space is dot(p, n) <= offset.
+    float along = dot(direction, sdfwb_clipNormal);
+    float startSide = dot(origin, sdfwb_clipNormal) - sdfwb_clipOffset;
+    if (along == 0.0) {
+        if (startSide > 0.0) tTo = -1.0; // parallel to the plane, on the cut side
+    } else {
+        float tPlane = -startSide / along;
+        if (along > 0.0) {
+            tTo = min(tTo, tPlane);
+        } else if (tPlane > tFrom) {
+            tFrom = tPlane;
+#ifdef SDFWB_PLANE_FIELD
+            float entered = sdfwb_planeFieldAt(origin + tFrom * direction).x;
+#else
+            float entered = sdfwb_sdf(origin + tFrom * direction);
+#endif
+            if (tFrom <= tTo && entered < 0.0) {
+                hit.found = true;
+                hit.status = sdfwb_kRayHit;
+                hit.t = tFrom;
+                hit.position = origin + tFrom * direction;
+                normal = sdfwb_clipNormal;
+                return hit;
+            }
+        }
+    }
+    if (tFrom > tTo) {
+        hit.t = max(tTo, march.tStart);
+        hit.position = origin + hit.t * direction;
+        return hit;
+    }
+#endif
+    uint triangle;
+    float t = sdfwb_meshRaycast(origin, direction, tFrom, tTo, triangle);
+    if (isnan(t)) {
+        hit.status = sdfwb_kRayNotFinite;
+        return hit;
+    }
+    hit.t = t;
+    hit.position = origin + t * direction;
+    if (triangle == 0xffffffffu) return hit;
+    hit.found = true;
+    hit.status = sdfwb_kRayHit;
+    vec3 a = sdfwb_meshTriangles[3u * triangle].xyz;
+    vec3 n = cross(sdfwb_meshTriangles[3u * triangle + 1u].xyz - a, sdfwb_meshTriangles[3u * triangle + 2u].xyz - a);
+    normal = sdfwb_unitNormal(dot(n, direction) > 0.0 ? -n : n, direction);
+    return hit;
+}
+#endif

@@ -20,7 +20,11 @@ vec3 sdfwb_missColor() {
 }
 
 vec4 sdfwb_pixel(vec3 direction) {
-#if defined(SDFWB_OUTPUT_STATS) || defined(SDFWB_PROBE) || defined(SDFWB_SHADING_STEPS) || !defined(SDFWB_FUSED_MARCH)
+#if defined(SDFWB_MESH_RAYCAST)
+    // A mesh's own field: one walk for the hit and its face (trace_core.glsl).
+    vec3 normal;
+    sdfwb_Hit hit = sdfwb_meshTrace(sdfwb_cameraPosition, direction, normal);
+#elif defined(SDFWB_OUTPUT_STATS) || defined(SDFWB_PROBE) || defined(SDFWB_SHADING_STEPS) || !defined(SDFWB_FUSED_MARCH)
     sdfwb_Hit hit = sdfwb_traceRay(sdfwb_cameraPosition, direction);
 #else
     // The picture: march and normal in one loop (one copy of the SDF for the driver to compile).
@@ -52,7 +56,7 @@ vec4 sdfwb_pixel(vec3 direction) {
         return vec4(sdfwb_planeColor(sdfwb_cameraPosition + tPlane * direction), 1.0);
 #endif
     if (!hit.found) return vec4(sdfwb_missColor(), 1.0);
-#if defined(SDFWB_PROBE) || !defined(SDFWB_FUSED_MARCH)
+#if (defined(SDFWB_PROBE) || !defined(SDFWB_FUSED_MARCH)) && !defined(SDFWB_MESH_RAYCAST)
     vec3 normal = sdfwb_normalAt(hit.position, hit.t, hit.value, direction);
 #endif
     vec3 color = sdfwb_shade(hit.position, normal, direction, hit);

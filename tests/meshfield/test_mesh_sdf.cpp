@@ -523,6 +523,103 @@ TEST_F(MeshSdfTest, TheTracerShadesEveryPixelOfAMeshWithItsFacesNormal) {
     EXPECT_EQ(wrongNormals, 0u);
 }
 
+// The picture of a mesh's own field is drawn by one walk of its hierarchy a pixel
+// (SDFWB_MESH_RAYCAST, trace_core.glsl) where the sphere tracer evaluates the whole field at every
+// step (SDFWB_MESH_TRACE=march draws that): the two pictures agree pixel by pixel, without and
+// with the cutting plane shown and clipping the shape, where the walk reads the plane's field from
+// the texture the CPU engine fills once per plane and the march evaluates it at every pixel. The
+// march debugger's program and the step heat map still march.
+TEST_F(MeshSdfTest, TheMeshWalkDrawsWhatTheSphereTracerDraws) {
+    const auto mesh = testing::torusMesh(0.6f, 0.3f, 64, 32);
+    auto field = meshfield::makeMeshField(mesh, "torus.obj", {});
+    ASSERT_TRUE(field.hasValue());
+    const shaders::PreparedSdf prepared = shaders::prepareMeshSdf(*field, "torus.obj");
+    renderer::Camera camera;
+    camera.position = {1.2f, -1.5f, 1.8f};
+    constexpr int kW = 160, kH = 120;
+    renderer::OffscreenRenderer offscreen;
+    // No plane; the plane with the camera on its cut side (the plane's colours over the whole
+    // cross-section); with the camera on the kept side (the shape in front of the plane).
+    auto draw = [&](bool walk, int plane, renderer::ShadingMode mode, std::string& fragment) {
+        if (walk)
+            unsetenv("SDFWB_MESH_TRACE");
+        else
+            setenv("SDFWB_MESH_TRACE", "march", 1);
+        renderer::SdfRenderer sdfRenderer;
+        renderer::ShadingSettings shading;
+        shading.mode = mode;
+        (void)sdfRenderer.setShading(shading);
+        if (plane) {
+            renderer::CuttingPlane cut;
+            cut.enabled = true;
+            cut.normal = plane == 1 ? glm::vec3(0.3f, -0.2f, 1.0f) : glm::vec3(-0.3f, 0.2f, -1.0f);
+            cut.offset = plane == 1 ? 0.05f : -0.05f;
+            (void)sdfRenderer.setPlane(cut);
+        }
+        const auto diagnostics = sdfRenderer.setSdf(prepared);
+        EXPECT_FALSE(shaders::hasErrors(diagnostics));
+        fragment = sdfRenderer.fragmentSource();
+        renderer::Image image = offscreen.render(sdfRenderer, kW, kH, camera, 0.0f);
+        sdfRenderer.releaseGl();
+        unsetenv("SDFWB_MESH_TRACE");
+        return image;
+    };
+    for (const int plane : {0, 1, 2}) {
+        std::string walkSource, marchSource;
+        const renderer::Image walked = draw(true, plane, renderer::ShadingMode::Normals, walkSource);
+        const renderer::Image marched = draw(false, plane, renderer::ShadingMode::Normals, marchSource);
+        EXPECT_NE(walkSource.find("#define SDFWB_MESH_RAYCAST"), std::string::npos);
+        EXPECT_EQ(marchSource.find("#define SDFWB_MESH_RAYCAST"), std::string::npos);
+        EXPECT_EQ(walkSource.find("#define SDFWB_PLANE_FIELD") != std::string::npos, plane != 0);
+        ASSERT_EQ(walked.rgba.size(), marched.rgba.size());
+        // The march counts a ray passing within its hit tolerance (half a pixel's footprint) of
+        // the surface as a hit: its silhouettes are up to a pixel wider. A pixel only one picture
+        // shows the shape in must lie next to one both show it in; where both do, the colours agree.
+        auto background = [](const std::uint8_t* rgba) {
+            return std::abs(rgba[0] - 41) <= 1 && std::abs(rgba[1] - 43) <= 1 && std::abs(rgba[2] - 48) <= 1;
+        };
+        auto bothShow = [&](int x, int y) {
+            return x >= 0 && y >= 0 && x < kW && y < kH && !background(walked.pixel(x, y)) && !background(marched.pixel(x, y));
+        };
+        auto colourDistance = [](const std::uint8_t* a, const std::uint8_t* b) {
+            int worst = 0;
+            for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(int(a[c]) - int(b[c])));
+            return worst;
+        };
+        std::size_t differ = 0, shape = 0, rim = 0, strayHits = 0;
+        for (int y = 0; y < kH; ++y)
+            for (int x = 0; x < kW; ++x) {
+                const std::uint8_t *a = walked.pixel(x, y), *b = marched.pixel(x, y);
+                if (!background(a)) ++shape;
+                if (background(a) != background(b)) {
+                    ++rim;
+                    if (!(bothShow(x - 1, y) || bothShow(x + 1, y) || bothShow(x, y - 1) || bothShow(x, y + 1))) ++strayHits;
+                    continue;
+                }
+                if (colourDistance(a, b) <= 40) continue;
+                // Against the plane the march's wider silhouette covers plane pixels.
+                bool edge = false;
+                for (const auto& [dx, dy] : {std::pair{-1, 0}, std::pair{1, 0}, std::pair{0, -1}, std::pair{0, 1}})
+                    if (x + dx >= 0 && y + dy >= 0 && x + dx < kW && y + dy < kH)
+                        edge = edge || colourDistance(a, walked.pixel(x + dx, y + dy)) > 40;
+                ++(edge ? rim : differ);
+            }
+        std::printf("torus mesh%s, %dx%d: %zu pixels show the shape; %zu on a silhouette differ (%zu show the shape in "
+                    "one picture only and lie beside no pixel where both do); %zu others differ by more than 40 of 255\n",
+                    plane == 0   ? ""
+                    : plane == 1 ? ", the plane in front"
+                                 : ", the plane behind",
+                    kW, kH, shape, rim, strayHits, differ);
+        EXPECT_EQ(strayHits, 0u);
+        EXPECT_LT(rim, shape / 20);
+        EXPECT_GT(shape, std::size_t(kW * kH / 10));
+        EXPECT_LT(differ, std::size_t(kW * kH / 200)); // edges between faces, where the march's taps blend them
+    }
+    std::string heatMap;
+    (void)draw(true, 0, renderer::ShadingMode::Steps, heatMap);
+    EXPECT_EQ(heatMap.find("#define SDFWB_MESH_RAYCAST"), std::string::npos);
+}
+
 // Every output of a job on a mesh says where its field came from (the file, the sign method, the
 // normalisation's transform and the file's bounds): each report as "mesh_source", and the files
 // themselves (PNG and EXR attributes, MP4 tags, PLY and OBJ comments; samples are tested with

@@ -59,6 +59,9 @@ public:
     bool hasProgram() const;
     // Programs compiled and linked so far (variant cache misses): what a change cost.
     std::uint64_t programsBuilt() const;
+    // How long the cutting plane's field of a mesh (computed once per plane on the CPU engine)
+    // took the last time; 0 before any.
+    double planeFieldMilliseconds() const;
 
     // The frame-speed choices at rest. A long SDF is first drawn with the fused march (one copy of
     // the SDF for the driver: the quickest code generation after an edit). When its full frame

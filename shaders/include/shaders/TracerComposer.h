@@ -40,7 +40,16 @@ struct TracerFeatures {
     // SDFWB_CONES): fewer steps per pixel for a texture fetch per pixel and a second draw. Not
     // with the march debugger or the step heat map, which show a pixel's own march.
     bool cones = false;
+    // A mesh's own field drawn by one walk of its hierarchy a pixel (trace_core.glsl's
+    // sdfwb_meshTrace) instead of a march; see meshRaycastApplies. Off: the sphere tracer, for
+    // benchmarks (SDFWB_MESH_TRACE=march).
+    bool meshRaycast = true;
 };
+
+// Whether the picture of `sdf` is drawn by the mesh walk: a mesh's own field (not a text over it),
+// and not the march debugger, the step heat map or the statistics output, which show a march.
+// The cone pass does not apply then.
+bool meshRaycastApplies(const PreparedSdf& sdf, const TracerFeatures& features);
 
 Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatures& features);
 
