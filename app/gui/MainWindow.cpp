@@ -46,6 +46,7 @@
 
 #include <QApplication>
 #include <QCloseEvent>
+#include <QCompleter>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -259,8 +260,22 @@ void MainWindow::connectDocument() {
     connect(m_document, &SdfDocument::sdfApplied, this, [this] {
         // Shows what "automatic" chose, and how its value is read.
         const shaders::SdfSignature& s = m_document->signature();
-        m_entry->setPlaceholderText(
-            tr("automatic: %1%2").arg(QString::fromStdString(s.entry), s.returnType == "float" ? QString() : QString(" (.x)")));
+        const std::string& reason = m_document->lastGoodSource().entryReason; // a whole shader's march chose it
+        m_entry->setPlaceholderText(tr("automatic: %1%2")
+                                        .arg(QString::fromStdString(reason.empty() ? s.entry : reason),
+                                             s.returnType == "float" ? QString() : QString(" (.x)")));
+    });
+    // A whole shader whose march steps by two functions equally often: the entry box lists them.
+    connect(m_document, &SdfDocument::entryCandidatesChanged, this, [this](const QStringList& names) {
+        if (QCompleter* old = m_entry->completer()) {
+            m_entry->setCompleter(nullptr);
+            old->deleteLater();
+        }
+        if (names.isEmpty()) return;
+        auto* completer = new QCompleter(names, m_entry);
+        completer->setCompletionMode(QCompleter::UnfilteredPopupCompletion);
+        m_entry->setCompleter(completer);
+        m_entry->setPlaceholderText(tr("choose: %1").arg(names.join(", ")));
     });
     connect(m_document, &SdfDocument::signaturesChanged, this,
             [this](const QStringList& signatures) { m_editor->setCompletionFunctions(m_librarySignatures, signatures); });

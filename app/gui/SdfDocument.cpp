@@ -175,6 +175,9 @@ void SdfDocument::finishCheck(std::uint64_t generation, shaders::PreparedSdf pre
     // glslang's verdict goes on screen at once; the driver compile (on this thread, where the GL
     // context lives) follows in the next event-loop turn and adds its own errors if it finds any.
     m_diagnostics = std::move(diagnostics);
+    QStringList candidates;
+    for (const std::string& name : prepared.entryCandidates) candidates << QString::fromStdString(name);
+    emit entryCandidatesChanged(candidates);
     emit diagnosticsChanged(m_diagnostics);
     if (shaders::hasErrors(m_diagnostics)) return;
     QTimer::singleShot(0, this, [this, generation, prepared = std::move(prepared)] {

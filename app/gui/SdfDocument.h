@@ -102,6 +102,9 @@ signals:
     void sdfApplied();
     // The viewport fell back to the previous SDF, which jobs now run too; `file` is its path.
     void sdfReverted(const QString& file);
+    // After each check: the functions a whole shader's march steps by equally often, when it
+    // cannot tell which is the field (empty otherwise); the entry box offers them.
+    void entryCandidatesChanged(const QStringList& names);
     // The functions the checked text defines changed (for autocompletion).
     void signaturesChanged(const QStringList& signatures);
     // The time or the plane changed (through the setters, or a Ctrl + drag in the viewport).

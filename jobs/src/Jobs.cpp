@@ -201,6 +201,7 @@ JobResult<OpenedSdf> openSdf(const SdfInput& input, const std::string& what) {
     if (!sdf.ok())
         return JobError{Failure::Work, what + ": " + label + " has errors" + (what == "audit" ? "" : "; nothing written"),
                         sdf.diagnostics};
+    if (sdf.entrySource == shaders::EntrySource::March) log::info(what, label + ": entry automatic: " + sdf.entryReason);
     auto resolved = shaders::resolveParameters(sdf.parameters, input.params);
     if (!resolved) return usage("'params': " + label + ": " + resolved.error().message);
     for (const std::string& warning : resolved->warnings) log::warning(what, warning);

@@ -97,7 +97,8 @@ void MeshOverlay::draw(int width, int height, const Camera& camera, float time,
     setOverlayCamera(d.mesh.id(), camera, width, height);
     glUniform1f(d.location("sdfwb_deviationScale"), scale > 0.0f ? scale : 1e-3f);
     if (GLint location = d.location("sdfwb_time"); location >= 0) glUniform1f(location, time);
-    if (GLint location = d.location("g3d_SceneTime"); location >= 0) glUniform1f(location, time);
+    for (const char* name : {"g3d_SceneTime", "iTime"}) // uniforms where the file's macro wraps them
+        if (GLint location = d.location(name); location >= 0) glUniform1f(location, time);
     bindSdfTextures(d.mesh.id(), d.textures, d.sdf ? d.sdf->channels : decltype(d.sdf->channels){},
                     d.sdf ? d.sdf->mesh : nullptr);
     applyParameters(parameters, [&d](const char* name) { return d.location(name); });

@@ -220,7 +220,8 @@ Expected<std::uint32_t> SampleCompute::Impl::dispatch(const SampleUniforms& unif
     glUniform1ui(location("sdfwb_cubeSide"), cubeSide(uniforms.sampleCount));
     glUniform1ui(location("sdfwb_squareSide"), squareSide(uniforms.sampleCount));
     if (GLint at = location("sdfwb_time"); at >= 0) glUniform1f(at, uniforms.time);
-    if (GLint at = location("g3d_SceneTime"); at >= 0) glUniform1f(at, uniforms.time); // declared by the file
+    for (const char* name : {"g3d_SceneTime", "iTime"}) // declared by the file, or uniforms its macro wraps
+        if (GLint at = location(name); at >= 0) glUniform1f(at, uniforms.time);
     bindSdfTextures(program.id(), textures, channels, mesh);
     if (GLint at = location("sdfwb_parameters"); at >= 0) glUniform4fv(at, 4, uniforms.parameters);
     if (GLint at = location("sdfwb_surfaceTolerance"); at >= 0) glUniform1f(at, uniforms.surfaceTolerance);

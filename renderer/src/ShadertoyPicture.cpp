@@ -89,7 +89,7 @@ void ShadertoyPicture::draw(int width, int height, const ShadertoyInputs& inputs
     }
     glUseProgram(d.program.id());
     if (GLint at = d.location("iResolution"); at >= 0) glUniform3f(at, float(width), float(height), 1.0f);
-    for (const char* name : {"sdfwb_time", "g3d_SceneTime"})
+    for (const char* name : {"sdfwb_time", "g3d_SceneTime", "iTime"}) // the last two: uniforms where a macro wraps them
         if (GLint at = d.location(name); at >= 0) glUniform1f(at, inputs.time);
     if (GLint at = d.location("iTimeDelta"); at >= 0) glUniform1f(at, inputs.timeDelta);
     if (GLint at = d.location("iFrameRate"); at >= 0) glUniform1f(at, inputs.timeDelta > 0.0f ? 1.0f / inputs.timeDelta : 60.0f);

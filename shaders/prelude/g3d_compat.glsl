@@ -57,11 +57,17 @@ float lengthSquared(vec4 v) { return dot(v, v); }
 #endif
 
 // The scene time: the composer declares `uniform float sdfwb_time` before this prelude.
-#ifdef SDFWB_COMPAT_g3d_SceneTime
+// Where the file's own macro wraps the name (`#define iTime (iTime - 25. + mx)`), the name it
+// wraps must be a variable: a uniform the renderer sets to the same time.
+#if defined(SDFWB_COMPAT_g3d_SceneTime) && defined(SDFWB_COMPAT_WRAPPED_g3d_SceneTime)
+uniform float g3d_SceneTime;
+#elif defined(SDFWB_COMPAT_g3d_SceneTime)
 #define g3d_SceneTime sdfwb_time
 #endif
 // Shadertoy's time uniform, which its code uses without declaring.
-#ifdef SDFWB_COMPAT_iTime
+#if defined(SDFWB_COMPAT_iTime) && defined(SDFWB_COMPAT_WRAPPED_iTime)
+uniform float iTime;
+#elif defined(SDFWB_COMPAT_iTime)
 #define iTime sdfwb_time
 #endif
 
@@ -143,6 +149,19 @@ layout(binding = SDFWB_CHANNEL3_UNIT) uniform sampler2D iChannel3;
 
 // Derivatives outside a fragment shader (the composer defines these only there): zero, as for a
 // constant. Only uncalled code (a Shadertoy's mainImage) should reach them.
+// The pixel's position outside a fragment shader (the composer renames the code's gl_FragCoord,
+// a name no macro may take): the origin.
+#ifdef SDFWB_COMPAT_gl_FragCoord
+const vec4 sdfwb_FragCoord = vec4(0.0, 0.0, 0.0, 1.0);
+#endif
+// texture()'s bias form exists in fragment shaders only; elsewhere the composer renames the code's
+// three-argument texture, texture2D and textureCube calls to these (overloading texture itself
+// would hide its built-in forms on Mesa): the level-0 lookup, what texture() does there anyway.
+#ifdef SDFWB_COMPAT_texture
+vec4 sdfwb_textureBias(sampler2D s, vec2 uv, float bias) { return textureLod(s, uv, 0.0); }
+vec4 sdfwb_textureBias(sampler3D s, vec3 uvw, float bias) { return textureLod(s, uvw, 0.0); }
+vec4 sdfwb_textureBias(samplerCube s, vec3 direction, float bias) { return textureLod(s, direction, 0.0); }
+#endif
 #ifdef SDFWB_COMPAT_dFdx
 #define dFdx(x) ((x) - (x))
 #endif

@@ -1,5 +1,8 @@
 #include <shaders/SdfSource.h>
 
+#include <shaders/MarchAnalysis.h>
+#include <shaders/ShaderComposer.h>
+
 #include <core/Regex.h>
 #include <core/TextFile.h>
 #include <shaders/SourceChecks.h>
@@ -209,9 +212,78 @@ const std::vector<std::string>& compatCandidates() {
         "texture2D", "texture2DLod", "textureCube", "textureCubeLod",
         // Derivatives exist in fragment shaders only; elsewhere (the sampler's compute stage) the
         // composer maps them onto zero (a Shadertoy's mainImage uses them, and it is never called).
-        "dFdx", "dFdy", "fwidth"};
+        "dFdx", "dFdy", "fwidth",
+        // Fragment-only too, in the helpers mainImage calls: the pixel's position (a dither's or a
+        // jitter's seed; zero elsewhere) and texture()'s bias form (the level-0 lookup elsewhere).
+        "gl_FragCoord", "texture"};
     return names;
 }
+
+namespace {
+
+// The rest of a #define's logical line from `at` (backslash continuations joined).
+std::string macroBody(const std::string& text, std::size_t at) {
+    std::string body;
+    for (std::size_t i = at; i < text.size() && text[i] != '\n'; ++i) {
+        if (text[i] == '\\' && i + 1 < text.size() && text[i + 1] == '\n') {
+            ++i;
+            continue;
+        }
+        body += text[i];
+    }
+    return body;
+}
+
+// Whether `text` holds `name` as a whole word.
+bool mentions(const std::string& text, const std::string& name) {
+    for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1))
+        if ((at == 0 || !isWordCharacter(text[at - 1])) &&
+            (at + name.size() >= text.size() || !isWordCharacter(text[at + name.size()])))
+            return true;
+    return false;
+}
+
+// Whether `name` is a later declarator of a file-scope declaration's comma list
+// (`float det = .005, maxdist = 50., pi = 3.1416;`): after a comma outside parentheses, followed by
+// `=`, `;`, `,` or `[`, in a statement that starts with a type or a qualifier.
+template <class Depth> bool declaredInList(const std::string& text, const std::string& name, Depth&& depthAt) {
+    static const std::regex declarationStart(
+        R"(^\s*(?:(?:const|uniform|highp|mediump|lowp|precise)\s+)*(?:float|int|uint|bool|double|[iud]?vec[234]|mat[234](?:x[234])?|Point3|Vector3|Color3|float[234])\b)",
+        kLinearRegex);
+    for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) {
+        const std::size_t end = at + name.size();
+        if ((at > 0 && isWordCharacter(text[at - 1])) || (end < text.size() && isWordCharacter(text[end]))) continue;
+        if (depthAt(at) != 0) continue;
+        std::size_t before = at;
+        while (before > 0 && std::isspace(static_cast<unsigned char>(text[before - 1]))) --before;
+        if (before == 0 || text[before - 1] != ',') continue;
+        std::size_t after = end;
+        while (after < text.size() && std::isspace(static_cast<unsigned char>(text[after]))) ++after;
+        if (after >= text.size() || std::string_view("=;,[").find(text[after]) == std::string_view::npos) continue;
+        std::size_t lineStart = text.rfind('\n', before - 1);
+        lineStart = lineStart == std::string::npos ? 0 : lineStart + 1;
+        const std::size_t lineText = text.find_first_not_of(" \t", lineStart);
+        if (lineText != std::string::npos && text[lineText] == '#') continue; // a directive (#define A a, b)
+        const std::size_t start = text.find_last_of(";{}", before - 1);
+        const std::size_t from = start == std::string::npos ? 0 : start + 1;
+        // The statement, without the directive lines before it.
+        std::string statement;
+        for (std::size_t line = from; line < before;) {
+            std::size_t next = std::min(text.find('\n', line), before);
+            const std::size_t first = text.find_first_not_of(" \t", line);
+            if (first >= next || text[first] != '#') statement.append(text, line, next - line);
+            line = next + 1;
+        }
+        int parentheses = 0;
+        for (char c : statement) parentheses += c == '(' ? 1 : c == ')' ? -1 : 0;
+        if (parentheses != 0) continue;
+        std::smatch match;
+        if (std::regex_search(statement, match, declarationStart)) return true;
+    }
+    return false;
+}
+
+} // namespace
 
 CompatNeeds detectCompatNeeds(const std::string& stripped) {
     const std::vector<std::string>& candidates = compatCandidates();
@@ -259,15 +331,23 @@ CompatNeeds detectCompatNeeds(const std::string& stripped) {
     CompatNeeds needs;
     for (std::size_t i = 0; i < candidates.size(); ++i) {
         if (!words.count(candidates[i])) continue;
-        bool declaredHere = false;
+        bool declaredHere = false, wraps = false;
         for (auto it = std::sregex_iterator(stripped.begin(), stripped.end(), declared(i)); it != std::sregex_iterator(); ++it) {
+            // A macro whose body names itself wraps the input (`#define iTime (iTime - 25.)`): the
+            // preprocessor leaves the inner name alone, so it still needs the input.
+            if ((*it)[1].matched && mentions(macroBody(stripped, std::size_t(it->position(0) + it->length(0))), candidates[i])) {
+                wraps = true;
+                continue;
+            }
             // A macro is defined wherever it stands; anything else counts at file scope only.
             if ((*it)[1].matched || depthAt(std::size_t(it->position(0))) == 0) {
                 declaredHere = true;
                 break;
             }
         }
-        if (!declaredHere) needs.symbols.push_back(candidates[i]);
+        if (declaredHere || declaredInList(stripped, candidates[i], depthAt)) continue;
+        needs.symbols.push_back(candidates[i]);
+        if (wraps) needs.wrapped.push_back(candidates[i]);
     }
     return needs;
 }
@@ -301,6 +381,50 @@ Diagnostic missingEntryDiagnostic(const ResolvedSource& source, const std::strin
     return {source.map.files.front().name, 1, 1, Severity::Error,
             "no SDF here: define `float sdf(vec3 p)` or `float sdf(vec3 p, float time)`, one of " + conventional +
                 " with that form, or name your function with --entry NAME or an `entry: NAME` metadata line"};
+}
+
+// A whole shader without an `sdf`: the function its own march steps by (marchedFunctions), when
+// it has an entry's form. The one most loops step by wins; a tie is broken by a conventional name,
+// else it is an error naming the candidates (entryCandidates).
+void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
+    PreparedSdf userCode = prepared;
+    userCode.signature.entry.clear(); // no entry: the user's code alone
+    std::vector<std::pair<MarchedFunction, SdfSignature>> valid;
+    for (MarchedFunction& marched :
+         marchedFunctions(composeSdfShader(userCode, Stage::Fragment, std::vector<ShaderPiece>{}, FeatureDefines{}))) {
+        SdfSignature signature = detectSignature(stripped, marched.name);
+        if (signature.found) valid.emplace_back(std::move(marched), std::move(signature));
+    }
+    if (valid.empty()) return;
+    int most = 0;
+    for (const auto& [marched, signature] : valid) most = std::max(most, marched.loops);
+    std::erase_if(valid, [most](const auto& candidate) { return candidate.first.loops < most; });
+    if (valid.size() > 1) {
+        const auto& names = conventionalEntries();
+        auto conventional = [&names](const auto& candidate) {
+            return std::find(names.begin(), names.end(), candidate.first.name) != names.end();
+        };
+        if (std::count_if(valid.begin(), valid.end(), conventional) == 1)
+            std::erase_if(valid, [&](const auto& candidate) { return !conventional(candidate); });
+    }
+    const auto where = [](const MarchedFunction& m) {
+        return m.name + " (called by the march at line " + std::to_string(m.line) + ")";
+    };
+    if (valid.size() > 1) {
+        std::string list;
+        for (const auto& [marched, signature] : valid) {
+            list += (list.empty() ? "" : ", ") + where(marched);
+            prepared.entryCandidates.push_back(marched.name);
+        }
+        prepared.signature.entry = valid.front().first.name;
+        prepared.diagnostics.push_back({valid.front().first.file, valid.front().first.line, 1, Severity::Error,
+                                        "this shader marches " + std::to_string(valid.size()) + " functions equally often: " +
+                                            list + "; choose the field with --entry NAME (or an `entry: NAME` metadata line)"});
+        return;
+    }
+    prepared.signature = std::move(valid.front().second);
+    prepared.entrySource = EntrySource::March;
+    prepared.entryReason = where(valid.front().first);
 }
 
 } // namespace
@@ -347,6 +471,10 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
         return prepared;
     }
     prepared.signature = detectSignature(stripped, chosen);
+    if (!prepared.signature.found && prepared.entrySource == EntrySource::Default && prepared.shadertoyMainImage) {
+        chooseMarchedEntry(prepared, stripped);
+        if (!prepared.entryCandidates.empty()) return prepared;
+    }
     if (!prepared.signature.found && prepared.entrySource == EntrySource::Default) {
         for (const std::string& conventional : conventionalEntries()) {
             SdfSignature candidate = detectSignature(stripped, conventional);

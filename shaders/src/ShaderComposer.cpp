@@ -2,6 +2,7 @@
 
 #include <shaders/BuiltinShaders.h>
 
+#include <cctype>
 #include <cstdio>
 
 namespace sdfwb::shaders {
@@ -33,6 +34,60 @@ void appendDefines(ComposedShader& shader, const FeatureDefines& features, bool 
     shader.map.files.push_back({"<sdfwb feature defines>", defines});
     shader.text += lineDirective(1, index);
     shader.text += defines;
+}
+
+// `text` with every whole-word `word` replaced by `replacement`.
+std::string renameWord(const std::string& text, const std::string& word, const std::string& replacement) {
+    auto wordCharacter = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    std::string out;
+    std::size_t from = 0;
+    for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + word.size())) {
+        if ((at > 0 && wordCharacter(text[at - 1])) || (at + word.size() < text.size() && wordCharacter(text[at + word.size()])))
+            continue;
+        out.append(text, from, at - from);
+        out += replacement;
+        from = at + word.size();
+    }
+    out.append(text, from, std::string::npos);
+    return out;
+}
+
+// `text` with each call of texture, texture2D or textureCube that passes three arguments (the
+// bias form) calling sdfwb_textureBias instead. Arguments are counted at the call's own level of
+// parentheses and brackets.
+std::string renameBiasLookups(const std::string& text) {
+    auto wordCharacter = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    std::string out;
+    std::size_t from = 0;
+    for (std::size_t at = 0; at < text.size();) {
+        if (!wordCharacter(text[at])) {
+            ++at;
+            continue;
+        }
+        std::size_t end = at;
+        while (end < text.size() && wordCharacter(text[end])) ++end;
+        const std::string_view word(text.data() + at, end - at);
+        std::size_t open = end;
+        while (open < text.size() && std::isspace(static_cast<unsigned char>(text[open]))) ++open;
+        if ((word == "texture" || word == "texture2D" || word == "textureCube") && open < text.size() && text[open] == '(') {
+            int depth = 0, commas = 0;
+            for (std::size_t i = open; i < text.size(); ++i) {
+                const char c = text[i];
+                if (c == '(' || c == '[') ++depth;
+                if (c == ')' || c == ']') --depth;
+                if (c == ',' && depth == 1) ++commas;
+                if (depth == 0) break;
+            }
+            if (commas == 2) {
+                out.append(text, from, at - from);
+                out += "sdfwb_textureBias";
+                from = end;
+            }
+        }
+        at = end;
+    }
+    out.append(text, from, std::string::npos);
+    return out;
 }
 
 } // namespace
@@ -71,9 +126,11 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
     if (sdf.usesTime()) all["SDFWB_USES_TIME"] = "1";
     for (const std::string& symbol : sdf.compat.symbols) {
         // Fragment shaders have derivatives; the prelude stands in for them in other stages only.
-        const bool derivative = symbol == "dFdx" || symbol == "dFdy" || symbol == "fwidth";
+        const bool derivative =
+            symbol == "dFdx" || symbol == "dFdy" || symbol == "fwidth" || symbol == "gl_FragCoord" || symbol == "texture";
         if (!(derivative && stage == Stage::Fragment)) all["SDFWB_COMPAT_" + symbol] = "1";
     }
+    for (const std::string& symbol : sdf.compat.wrapped) all["SDFWB_COMPAT_WRAPPED_" + symbol] = "1";
     if (all.count("SDFWB_COMPAT_g3d_uniformRandom")) all["SDFWB_NOISE_TEXTURE_UNIT"] = std::to_string(kNoiseTextureUnit);
     for (int n = 0; n < kShadertoyChannels; ++n)
         if (all.count("SDFWB_COMPAT_iChannel" + std::to_string(n)))
@@ -120,9 +177,16 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
         auto mesh = builtinShader("mesh/mesh_field.glsl");
         appendFile(shader, "sdfwb:mesh/mesh_field.glsl", mesh ? *mesh : std::string("#error mesh_field.glsl missing\n"));
     }
-    shader.text += sdf.source.text;
+    // gl_FragCoord is a fragment shader's: elsewhere the code reads the prelude's stand-in (a macro
+    // may not take a gl_ name). No line moves, so the source map holds.
+    std::string userText = sdf.source.text;
+    if (all.count("SDFWB_COMPAT_gl_FragCoord")) userText = renameWord(userText, "gl_FragCoord", "sdfwb_FragCoord");
+    // So are texture()'s bias form (g3d_compat.glsl).
+    if (all.count("SDFWB_COMPAT_texture")) userText = renameBiasLookups(userText);
+    shader.text += userText;
     if (!sdf.source.text.empty() && sdf.source.text.back() != '\n') shader.text += '\n';
-    appendFile(shader, "<sdfwb entry point>", entryWrapper(sdf));
+    // No entry yet (the entry's search reads the user's code alone): no wrapper.
+    if (!sdf.signature.entry.empty()) appendFile(shader, "<sdfwb entry point>", entryWrapper(sdf));
     for (const ShaderPiece& piece : pieces) appendFile(shader, piece.name, piece.text);
     return shader;
 }

@@ -123,14 +123,33 @@ TEST(ForeignCorpus, HasTheStylesTheIssueAsksFor) {
 TEST_P(ForeignCode, OpensRendersSamplesAndGetsItsFlags) {
     const fs::path file = kFolder / GetParam();
     const Expectation expected = readExpectation(file);
-    // Opens unmodified: `sdf` and the conventional names are found without being named.
+    // Opens unmodified: `sdf` and the conventional names are found without being named, and a
+    // whole shader's field by its own march, whatever it is called (issue 47).
     const auto& conventional = shaders::conventionalEntries();
-    const bool findable =
-        expected.entry == "sdf" || std::find(conventional.begin(), conventional.end(), expected.entry) != conventional.end();
+    std::ifstream in(file);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const bool wholeShader = text.find("mainImage") != std::string::npos;
+    const bool findable = wholeShader || expected.entry == "sdf" ||
+                          std::find(conventional.begin(), conventional.end(), expected.entry) != conventional.end();
     shaders::PreparedSdf sdf = prepare(file, findable ? std::string() : expected.entry);
     ASSERT_TRUE(sdf.ok()) << firstError(sdf);
     EXPECT_EQ(sdf.signature.entry, expected.entry);
     EXPECT_EQ(sdf.usesTime(), expected.animated);
+    if (sdf.entrySource == shaders::EntrySource::March) {
+        EXPECT_EQ(sdf.entryReason.rfind(expected.entry + " (called by the march at line ", 0), 0u) << sdf.entryReason;
+    }
+
+    // Compiles in the march debugger's program too (the sampler's compute stage is below).
+    {
+        renderer::SdfRenderer probe;
+        renderer::ShadingSettings probing;
+        probing.probe = true;
+        ASSERT_FALSE(shaders::hasErrors(probe.setShading(probing)));
+        auto probeDiagnostics = probe.setSdf(sdf);
+        EXPECT_FALSE(shaders::hasErrors(probeDiagnostics))
+            << (probeDiagnostics.empty() ? "" : shaders::formatDiagnostic(probeDiagnostics.front()));
+        probe.releaseGl();
+    }
 
     // Renders: the shape is in view.
     renderer::SdfRenderer sdfRenderer;

@@ -384,3 +384,198 @@ TEST(Composer, WholeShadertoyShaderCompilesInEveryStage) {
     EXPECT_EQ(composed->text.rfind("#version 430 core\n#extension GL_ARB_gpu_shader_fp64 : enable\n", 0), 0u);
     EXPECT_FALSE(hasErrors(checkWithGlslang(*composed)));
 }
+
+namespace {
+
+// A whole shader in the common Shadertoy layout around `fieldCode` (which defines the functions
+// named) and a march loop `march`, with an AO loop and a glow loop over other functions.
+std::string wholeShader(const std::string& fieldCode, const std::string& march) {
+    return fieldCode +
+           "float occluder(vec3 p) { return length(p) - 0.3; }\n"
+           "float glowField(vec3 p) { return length(p - vec3(0.2)) - 0.1; }\n"
+           "float calcAO(vec3 pos, vec3 nor) {\n"
+           "    float occ = 0.0;\n"
+           "    for (int i = 0; i < 5; i++) { float h = 0.01 + 0.12 * float(i) / 4.0; occ += (h - occluder(pos + h * nor)); }\n"
+           "    return clamp(1.0 - 3.0 * occ, 0.0, 1.0);\n"
+           "}\n"
+           "float glow(vec3 ro, vec3 rd) {\n"
+           "    float g = 0.0, s = 0.0;\n"
+           "    for (int i = 0; i < 32; i++) { g += 0.01 / (0.01 + abs(glowField(ro + rd * s))); s += 0.05; }\n"
+           "    return g;\n"
+           "}\n"
+           "float castRay(vec3 ro, vec3 rd) {\n" +
+           march +
+           "}\n"
+           "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+           "    vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;\n"
+           "    vec3 ro = vec3(0.0, 0.0, 3.0), rd = normalize(vec3(uv, -2.0));\n"
+           "    float t = castRay(ro, rd);\n"
+           "    fragColor = vec4(vec3(calcAO(ro + t * rd, vec3(0.0, 1.0, 0.0)) + glow(ro, rd)), 1.0);\n"
+           "}\n";
+}
+
+} // namespace
+
+// Issue 47, point 1: a whole shader's field is the function its own march steps by, whatever its
+// name: by t (`t += h`), by the point (`p += rd * d`), by a vec2's .x; not a function only an AO
+// loop or a glow loop (whose accumulator the point does not depend on) calls.
+TEST(EntryPoint, AWholeShadersFieldIsTheFunctionItsMarchStepsBy) {
+    struct Case {
+        const char* field;
+        const char* march;
+        const char* entry;
+    };
+    const Case cases[] = {
+        {"float Map(vec3 p) { return length(p) - 0.5; }\n",
+         "    float t = 0.0;\n    for (int i = 0; i < 128; i++) {\n        float h = Map(ro + rd * t);\n"
+         "        if (h < 0.001) break;\n        t += h;\n    }\n    return t;\n",
+         "Map"},
+        {"float GetDist(vec3 p) { return length(p) - 0.5; }\n",
+         "    float dO = 0.0;\n    for (int i = 0; i < 100; i++) {\n        vec3 p = ro + rd * dO;\n"
+         "        float dS = GetDist(p);\n        dO += dS;\n        if (dO > 100.0 || dS < 0.01) break;\n    }\n"
+         "    return dO;\n",
+         "GetDist"},
+        {"vec2 sceneDist(vec3 p) { return vec2(length(p) - 0.5, 1.0); }\n",
+         "    vec3 p = ro;\n    for (int i = 0; i < 90; i++) {\n        vec2 res = sceneDist(p);\n"
+         "        p += rd * res.x;\n    }\n    return length(p - ro);\n",
+         "sceneDist"},
+        {"float field(vec3 p) { return length(p) - 0.5; }\n",
+         "    float t = 0.1;\n    for (float h = 1.0; t < 20.0 && h > 1e-3; t += h) h = field(ro + rd * t);\n    return t;\n",
+         "field"},
+    };
+    for (const Case& c : cases) {
+        const std::string text = wholeShader(c.field, c.march);
+        PreparedSdf sdf = prepare(text);
+        ASSERT_TRUE(sdf.ok()) << c.entry << ": " << (sdf.diagnostics.empty() ? "" : formatDiagnostic(sdf.diagnostics.front()));
+        EXPECT_EQ(sdf.signature.entry, c.entry);
+        EXPECT_EQ(sdf.entrySource, EntrySource::March);
+        // The reason names the call's line in the file.
+        const std::size_t call = text.find(std::string(c.entry) + "(", text.find("float castRay"));
+        const int line = 1 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(call), '\n'));
+        EXPECT_EQ(sdf.entryReason, std::string(c.entry) + " (called by the march at line " + std::to_string(line) + ")");
+        auto tracer = composeTracer(sdf, TracerFeatures{});
+        ASSERT_TRUE(tracer.hasValue());
+        EXPECT_FALSE(hasErrors(checkWithGlslang(*tracer))) << c.entry;
+    }
+
+    // The march steps by a constant: no field is found (the AO and glow functions are not one).
+    PreparedSdf none =
+        prepare(wholeShader("", "    float t = 0.0;\n    for (int i = 0; i < 10; i++) t += 0.1;\n    return t;\n"));
+    EXPECT_FALSE(none.ok());
+    EXPECT_NE(none.diagnostics.back().message.find("no SDF here"), std::string::npos) << none.diagnostics.back().message;
+
+    // A conventional name the march does not step by loses to the one it does.
+    PreparedSdf preferred =
+        prepare(wholeShader("float map(vec3 p) { return 1.0; }\nfloat Map(vec3 p) { return length(p) - 0.5; }\n",
+                            "    float t = 0.0;\n    for (int i = 0; i < 64; i++) t += Map(ro + rd * t);\n"
+                            "    return t + map(ro);\n"));
+    ASSERT_TRUE(preferred.ok());
+    EXPECT_EQ(preferred.signature.entry, "Map");
+}
+
+// Two functions marched equally often (a scene and its reflection): an error naming both, and
+// both offered; a conventional name among them breaks the tie.
+TEST(EntryPoint, TwoEquallyMarchedFunctionsAreNamedAndOffered) {
+    const std::string marches = "    float t = 0.0, s = 0.0;\n"
+                                "    for (int i = 0; i < 64; i++) t += Solid(ro + rd * t);\n"
+                                "    for (int i = 0; i < 64; i++) s += Water(ro + rd * s);\n"
+                                "    return min(t, s);\n";
+    PreparedSdf tied = prepare(wholeShader("float Solid(vec3 p) { return length(p) - 0.5; }\n"
+                                           "float Water(vec3 p) { return p.y + 0.4; }\n",
+                                           marches));
+    ASSERT_FALSE(tied.ok());
+    EXPECT_EQ(tied.entryCandidates, (std::vector<std::string>{"Solid", "Water"}));
+    const std::string& message = tied.diagnostics.back().message;
+    EXPECT_NE(message.find("Solid (called by the march at line"), std::string::npos) << message;
+    EXPECT_NE(message.find("Water (called by the march at line"), std::string::npos) << message;
+    EXPECT_NE(message.find("--entry NAME"), std::string::npos) << message;
+    // Named, either opens.
+    PreparedSdf named = prepareSdf(wholeShader("float Solid(vec3 p) { return length(p) - 0.5; }\n"
+                                               "float Water(vec3 p) { return p.y + 0.4; }\n",
+                                               marches),
+                                   "<test>", {}, IncludeOptions{}, "Water");
+    EXPECT_TRUE(named.ok());
+    EXPECT_EQ(named.entrySource, EntrySource::Requested);
+
+    std::string withMap = marches;
+    withMap.replace(withMap.find("Solid"), 5, "map");
+    PreparedSdf conventional = prepare(wholeShader("float map(vec3 p) { return length(p) - 0.5; }\n"
+                                                   "float Water(vec3 p) { return p.y + 0.4; }\n",
+                                                   withMap));
+    ASSERT_TRUE(conventional.ok());
+    EXPECT_EQ(conventional.signature.entry, "map");
+    EXPECT_EQ(conventional.entrySource, EntrySource::March);
+}
+
+// Issue 47, point 2: a macro whose body names itself wraps the input; the input is still provided
+// (for time, as a uniform the renderer sets) and the composed shader compiles. A macro that
+// replaces the name outright still declares it.
+TEST(CompatNeeds, AMacroThatWrapsAnInputStillGetsTheInput) {
+    PreparedSdf wrapped = prepare("const float mx = 1.6;\n#define iTime (iTime - 25. + mx)\n"
+                                  "#define iResolution (iResolution * 0.5)\n"
+                                  "float map(vec3 p) { return length(p) - 0.5 + 0.1 * sin(iTime) + 0.0 * iResolution.x; }\n");
+    ASSERT_TRUE(wrapped.ok());
+    EXPECT_TRUE(wrapped.usesTime());
+    for (const char* name : {"iTime", "iResolution"}) {
+        EXPECT_NE(std::find(wrapped.compat.symbols.begin(), wrapped.compat.symbols.end(), name), wrapped.compat.symbols.end())
+            << name;
+        EXPECT_NE(std::find(wrapped.compat.wrapped.begin(), wrapped.compat.wrapped.end(), name), wrapped.compat.wrapped.end())
+            << name;
+    }
+    auto tracer = composeTracer(wrapped, TracerFeatures{});
+    ASSERT_TRUE(tracer.hasValue());
+    EXPECT_NE(tracer->text.find("uniform float iTime;"), std::string::npos);
+    auto diagnostics = checkWithGlslang(*tracer);
+    EXPECT_FALSE(hasErrors(diagnostics)) << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
+
+    PreparedSdf replaced = prepare("#define iTime 2.0\nfloat map(vec3 p) { return length(p) - 0.5 + 0.1 * sin(iTime); }\n");
+    ASSERT_TRUE(replaced.ok());
+    EXPECT_TRUE(replaced.compat.symbols.empty());
+}
+
+// Issue 47, point 3: every declarator of a file-scope declaration declares its name; a name in an
+// initializer's arguments, a function's or a local declaration does not.
+TEST(CompatNeeds, EveryDeclaratorOfAFileScopeListDeclaresItsName) {
+    auto needs = [](const std::string& text) { return prepare(text).compat.symbols; };
+    const std::string use = "float map(vec3 p) { return length(p) - 0.5 + 0.0 * pi; }\n";
+    EXPECT_TRUE(needs("float det = .005, maxdist = 50., pi = 3.1416;\n" + use).empty());
+    EXPECT_TRUE(needs("const float EPS = 1e-3,\n    FAR = 40.0,\n    pi = 3.1416;\n" + use).empty());
+    EXPECT_TRUE(needs("float a, pi;\n" + use).empty());
+    EXPECT_EQ(needs("const vec3 v = vec3(1.0, pi, 2.0);\n" + use), (std::vector<std::string>{"pi"}));
+    EXPECT_EQ(needs("float g(float a, float b) { float c, pi = 1.0; return a + pi; }\n" + use), (std::vector<std::string>{"pi"}));
+    PreparedSdf listed = prepare("float det = .005, maxdist = 50., pi = 3.1416;\n" + use);
+    auto tracer = composeTracer(listed, TracerFeatures{});
+    ASSERT_TRUE(tracer.hasValue());
+    EXPECT_FALSE(hasErrors(checkWithGlslang(*tracer)));
+}
+
+// Issue 47, points 4 and 5: mainImage's helpers read gl_FragCoord and call texture() with a bias;
+// outside the fragment stage the composer renames them (the origin; the level-0 lookup), so the
+// sampler's compute stage compiles; the fragment stage keeps them.
+TEST(CompatNeeds, FragmentOnlyBuiltinsInHelpersCompileInTheComputeStage) {
+    PreparedSdf sdf = prepare("float hash12(vec2 p) { return fract(sin(dot(p, vec2(12.9898, 78.233))) * 43758.5453); }\n"
+                              "float dither() { return hash12(gl_FragCoord.xy) / 255.0; }\n"
+                              "vec3 sky(vec3 rd) { return texture(iChannel0, rd.xy * .5 + .5, -100.).rgb\n"
+                              "    + texture(iChannel0, vec2(rd.x, (rd.y)), 4.0).rgb + texture(iChannel0, rd.xy).rgb; }\n"
+                              "float map(vec3 p) { return length(p) - 0.5; }\n"
+                              "void mainImage(out vec4 c, in vec2 f) { c = vec4(sky(vec3(f, 1.0)) + dither(), 1.0); }\n");
+    ASSERT_TRUE(sdf.ok());
+    auto sampler = builtinPiece("samplers/rand.glsl");
+    auto common = builtinPiece("sampling/common.glsl");
+    auto bindings = builtinPiece("sampling/bindings.glsl");
+    auto main = builtinPiece("sampling/sample.comp");
+    ASSERT_TRUE(sampler.hasValue() && common.hasValue() && bindings.hasValue() && main.hasValue());
+    ComposedShader compute = composeSdfShader(sdf, Stage::Compute, {*bindings, *common, *sampler, *main}, {});
+    EXPECT_EQ(compute.text.find("gl_FragCoord.xy"), std::string::npos);
+    EXPECT_NE(compute.text.find("hash12(sdfwb_FragCoord.xy)"), std::string::npos);
+    EXPECT_NE(compute.text.find("sdfwb_textureBias(iChannel0, rd.xy * .5 + .5, -100.)"), std::string::npos);
+    EXPECT_NE(compute.text.find("sdfwb_textureBias(iChannel0, vec2(rd.x, (rd.y)), 4.0)"), std::string::npos);
+    EXPECT_NE(compute.text.find("+ texture(iChannel0, rd.xy)"), std::string::npos) << "the two-argument form stays";
+    auto diagnostics = checkWithGlslang(compute);
+    EXPECT_FALSE(hasErrors(diagnostics)) << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
+    auto tracer = composeTracer(sdf, TracerFeatures{});
+    ASSERT_TRUE(tracer.hasValue());
+    EXPECT_NE(tracer->text.find("hash12(gl_FragCoord.xy)"), std::string::npos);
+    EXPECT_NE(tracer->text.find("texture(iChannel0, rd.xy * .5 + .5, -100.)"), std::string::npos);
+    EXPECT_FALSE(hasErrors(checkWithGlslang(*tracer)));
+}

@@ -26,7 +26,10 @@ struct SdfSignature {
     std::string returnType = "float"; // float | vec2 | vec3 | vec4
 };
 
-enum class EntrySource { Default, Requested, Metadata, Convention };
+// Where the entry point came from: `sdf` (Default), --entry or the GUI (Requested), an `entry:`
+// metadata line, the function a whole shader's own march steps by (March, shaders/MarchAnalysis.h),
+// or the first conventional name defined (Convention).
+enum class EntrySource { Default, Requested, Metadata, March, Convention };
 
 // Shadertoy's texture inputs iChannel0..3.
 constexpr int kShadertoyChannels = 4;
@@ -37,6 +40,9 @@ constexpr int kShadertoyChannels = 4;
 // Each becomes a `#define SDFWB_COMPAT_<NAME>` that selects a section of prelude/g3d_compat.glsl.
 struct CompatNeeds {
     std::vector<std::string> symbols; // e.g. "pi", "saturate", "float3", "g3d_SceneTime", "iMouse"
+    // Those of them the file's own macro wraps (`#define iTime (iTime - 25.)`): the macro still
+    // needs what it wraps, so the prelude declares it as a variable rather than a macro.
+    std::vector<std::string> wrapped;
     bool any() const { return !symbols.empty(); }
     bool usesTimeSymbol() const;       // g3d_SceneTime or Shadertoy's iTime
     bool usesShadertoyChannel() const; // iChannel0..3
@@ -51,6 +57,11 @@ struct PreparedSdf {
     CompatNeeds compat;
     std::vector<Diagnostic> diagnostics; // resolver errors + a missing/ill-typed entry point
     EntrySource entrySource = EntrySource::Default;
+    // Why an automatic entry was chosen ("Map, called by the march at line 123"); empty otherwise.
+    std::string entryReason;
+    // Functions equally likely to be the field (the march steps by each as often): the error
+    // names them and the workbench offers them; empty otherwise.
+    std::vector<std::string> entryCandidates;
     // Names the file (with its includes) #defines. The composer #undefs them after the SDF, so a
     // user's `#define normal ...` cannot reach the workbench's code composed after it.
     std::vector<std::string> macros;
