@@ -191,7 +191,7 @@ TEST(Files, OpenMeshTracesItAndItsJobsSeeTheSameField) {
         "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n";
     const QString path = writeScratch("far_cube.obj", cube);
     app::MainWindow window;
-    window.resize(900, 560); // llvmpipe traces a mesh slowly (docs/mesh-sdf.md): a small viewport
+    window.resize(900, 560); // a small viewport keeps the test quick on llvmpipe
     window.show();
     window.plane()->setExecutable(SDFWB_BINARY);
     bool applied = false;
