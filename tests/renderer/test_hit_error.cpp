@@ -102,6 +102,8 @@ struct HitErrors {
     long falseHitsFar = 0; // ... where the ray passes the shape by more than 2 tolerances
     long deepMisses = 0;   // a miss whose ray meets the surface at an angle (not a graze)
     long hits = 0;
+    long ambiguous = 0; // pixels whose exact ray grazes the shape too closely to tell (not compared)
+    long pixels = 0;
     double meanSteps = 0; // per pixel, misses included
 };
 
@@ -125,12 +127,16 @@ protected:
         HitErrors result;
         std::vector<double> errors;
         for (const auto& pixel : pixels) result.meanSteps += double(pixel.steps) / double(pixels.size());
+        result.pixels = long(pixels.size());
         for (int row = 0; row < kHeight; ++row)
             for (int x = 0; x < kWidth; ++x) {
                 const auto& pixel = pixels[std::size_t(row) * kWidth + std::size_t(x)];
                 const glm::dvec3 direction = sdfwb::testing::pixelRay(camera, x, row, kWidth, kHeight);
                 const Exact exact = intersect(shape, origin, direction);
-                if (exact.ambiguous) continue;
+                if (exact.ambiguous) {
+                    ++result.ambiguous;
+                    continue;
+                }
                 if (pixel.hit()) {
                     ++result.hits;
                     const double tolerance = double(trace.epsilonScale) * pixelAngle * double(pixel.t);
@@ -163,9 +169,10 @@ protected:
 };
 
 void print(const char* what, const Shape& shape, const HitErrors& e) {
-    std::printf("%s %s: %ld hits, %ld compared, |t - t*| median %.3g p99 %.3g, false hits %ld (far %ld), deep misses %ld, "
-                "%.2f steps a pixel\n",
-                what, shape.name, e.hits, e.compared, e.median, e.p99, e.falseHits, e.falseHitsFar, e.deepMisses, e.meanSteps);
+    std::printf("%s %s: %ld hits, %ld compared, %ld of %ld pixels ambiguous, |t - t*| median %.3g p99 %.3g, false hits %ld "
+                "(far %ld), deep misses %ld, %.2f steps a pixel\n",
+                what, shape.name, e.hits, e.compared, e.ambiguous, e.pixels, e.median, e.p99, e.falseHits, e.falseHitsFar,
+                e.deepMisses, e.meanSteps);
 }
 
 } // namespace
@@ -203,6 +210,9 @@ TEST_F(HitErrorTest, ConePassAndOverRelaxationKeepTheAccuracy) {
             const HitErrors reference = measure(shape, renderer::TraceSettings{});
             const HitErrors e = measure(shape, trace);
             print(what, shape, e);
+            // As many pixels compared as the defaults' test asks, and few left out as ambiguous.
+            EXPECT_GT(e.compared, 10000) << shape.name << " " << what;
+            EXPECT_LT(e.ambiguous, e.pixels / 100) << shape.name << " " << what;
             EXPECT_LT(e.median, 1.5 * reference.median + 1e-5) << shape.name << " " << what;
             EXPECT_LT(e.p99, 1.5 * reference.p99 + 1e-5) << shape.name << " " << what;
             EXPECT_EQ(e.falseHitsFar, 0) << shape.name << " " << what;
