@@ -263,7 +263,9 @@ void MainWindow::connectDocument() {
         const std::string& reason = m_document->lastGoodSource().entryReason; // a whole shader's march chose it
         m_entry->setPlaceholderText(tr("automatic: %1%2")
                                         .arg(QString::fromStdString(reason.empty() ? s.entry : reason),
-                                             s.returnType == "float" ? QString() : QString(" (.x)")));
+                                             !s.member.empty()         ? QString(" (.%1)").arg(QString::fromStdString(s.member))
+                                             : s.returnType == "float" ? QString()
+                                                                       : QString(" (.x)")));
     });
     // A whole shader whose march steps by two functions equally often: the entry box lists them.
     connect(m_document, &SdfDocument::entryCandidatesChanged, this, [this](const QStringList& names) {

@@ -83,8 +83,45 @@ bool isFloatVec3(const glslang::TType& type) {
     return type.getBasicType() == glslang::EbtFloat && type.isVector() && type.getVectorSize() == 3 && !type.isArray();
 }
 
+// A distance's return: float, vec2 or vec4 (a value and a material id or colour). Not vec3: what a
+// march loop calls and returns a vec3 is a normal or a colour (a reflection loop's `ro += nor * eps`
+// grows the point by calcNormal's result), and a field returning vec3 is rare enough to be named.
 bool returnsFloats(const glslang::TType& type) {
-    return type.getBasicType() == glslang::EbtFloat && (type.isScalar() || type.isVector()) && !type.isArray();
+    return type.getBasicType() == glslang::EbtFloat && !type.isArray() &&
+           (type.isScalar() || (type.isVector() && type.getVectorSize() != 3));
+}
+
+bool returnsStruct(const glslang::TType& type) { return type.getBasicType() == glslang::EbtStruct && !type.isArray(); }
+
+// The float member of the struct `call` returns that the loop reads first, from the call itself
+// or from a variable assigned the call (`Hit h = map(p); ... t += h.d;`); empty when none.
+std::string distanceMember(TIntermNode* loop, TIntermAggregate* call, const std::vector<TIntermBinary*>& assignments) {
+    std::set<long long> holders;
+    for (TIntermBinary* a : assignments)
+        if (a->getOp() == glslang::EOpAssign && a->getRight() == call) holders.insert(assignedSymbol(a->getLeft()));
+    struct Members : glslang::TIntermTraverser {
+        TIntermAggregate* call = nullptr;
+        const std::set<long long>* holders = nullptr;
+        std::string found;
+        bool visitBinary(glslang::TVisit, TIntermBinary* node) override {
+            if (!found.empty() || node->getOp() != glslang::EOpIndexDirectStruct) return true;
+            TIntermTyped* base = node->getLeft();
+            TIntermSymbol* symbol = base->getAsSymbolNode();
+            if (base != call && !(symbol && holders->count(symbol->getId()))) return true;
+            const glslang::TTypeList* members = base->getType().getStruct();
+            const glslang::TIntermConstantUnion* index = node->getRight()->getAsConstantUnion();
+            if (!members || !index) return true;
+            const int i = index->getConstArray()[0].getIConst();
+            if (i < 0 || i >= int(members->size())) return true;
+            const glslang::TType& member = *(*members)[std::size_t(i)].type;
+            if (member.getBasicType() == glslang::EbtFloat && member.isScalar()) found = member.getFieldName().c_str();
+            return true;
+        }
+    } members;
+    members.call = call;
+    members.holders = &holders;
+    loop->traverse(&members);
+    return members.found;
 }
 
 struct Assignment {
@@ -179,15 +216,22 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                 auto callee = definitions.functions.find(call->getName().c_str());
                 if (callee == definitions.functions.end() || call->getSequence().empty()) continue;
                 TIntermTyped* point = call->getSequence().front()->getAsTyped();
-                if (!point || !isFloatVec3(point->getType()) || !returnsFloats(callee->second->getType())) continue;
+                const glslang::TType& returned = callee->second->getType();
+                if (!point || !isFloatVec3(point->getType()) || !(returnsFloats(returned) || returnsStruct(returned))) continue;
                 const std::string name = plainName(call->getName());
                 if (counted.count(name) || !stepsBy(assignments, call)) continue;
+                std::string member;
+                if (returnsStruct(returned)) {
+                    member = distanceMember(loop, call, inside.assignments);
+                    if (member.empty()) continue;
+                }
                 counted.insert(name);
                 auto entry =
                     std::find_if(marched.begin(), marched.end(), [&](const MarchedFunction& m) { return m.name == name; });
                 if (entry == marched.end()) {
                     const glslang::TSourceLoc& loc = call->getLoc();
-                    marched.push_back({name, composed.map.fileName(loc.string), loc.line, 0});
+                    marched.push_back({name, composed.map.fileName(loc.string), loc.line, 0,
+                                       member.empty() ? std::string() : std::string(returned.getTypeName().c_str()), member});
                     entry = marched.end() - 1;
                 }
                 ++entry->loops;

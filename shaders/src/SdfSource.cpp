@@ -98,17 +98,31 @@ std::size_t previousWord(const std::string& text, std::size_t at) {
     return start;
 }
 
+// The first `float` member of `struct NAME { ... }` in the text: a struct an entry returns holds
+// its distance there (`struct Hit { float d; int id; }`). Empty when there is none.
+std::string firstFloatMember(const std::string& stripped, const std::string& name) {
+    if (!isIdentifier(name)) return {};
+    const std::regex& definition = compiledOnce(R"(\bstruct\s+)" + name + R"(\s*\{([^}]*)\})");
+    std::smatch match;
+    if (!std::regex_search(stripped, match, definition)) return {};
+    static const std::regex member(R"((?:^|[;{\s])(?:highp\s+|mediump\s+|lowp\s+)?float\s+(\w+)\s*[;,])", kLinearRegex);
+    const std::string body = match[1].str();
+    std::smatch found;
+    return std::regex_search(body, found, member) ? found[1].str() : std::string();
+}
+
 } // namespace
 
-SdfSignature detectSignature(const std::string& stripped, const std::string& entry) {
+SdfSignature detectSignature(const std::string& stripped, const std::string& entry, const std::string& returnTypes) {
     SdfSignature signature;
     signature.entry = entry;
     if (!isIdentifier(entry)) return signature;
     // A definition (with a body), not a prototype. vec3 synonyms of the G3D dialect count.
     const std::regex& definition =
-        compiledOnce(R"(\b(float|vec2|vec3|vec4)\s+)" + entry +
+        compiledOnce(R"(\b()" + returnTypes + R"()\s+)" + entry +
                      R"(\s*\(\s*((?:in\s+|const\s+|highp\s+|mediump\s+)*)(vec3|Point3|Vector3|float3)\s+\w+\s*)"
-                     R"((,\s*((?:in\s+|const\s+|highp\s+)*)float\s+\w+\s*)?\)\s*\{)");
+                     R"((,\s*((?:in\s+|const\s+|highp\s+)*)float\s+\w+\s*)?)"
+                     R"(((?:,\s*(?:out|inout)\s+(?:highp\s+|mediump\s+|lowp\s+)?\w+\s+\w+\s*)*)\)\s*\{)");
     // Tried only at the word before each occurrence of the name: searching from every position of
     // a long text was the slow part of preparing one (1.8 s for 10 MB).
     std::smatch match;
@@ -118,9 +132,23 @@ SdfSignature detectSignature(const std::string& stripped, const std::string& ent
             continue;
         std::size_t type = previousWord(stripped, at);
         if (type == std::string::npos || !matchAt(stripped, type, definition, match)) continue;
+        const std::string returned = match[1].str();
+        std::string member;
+        if (returned != "float" && returned != "vec2" && returned != "vec3" && returned != "vec4") {
+            member = firstFloatMember(stripped, returned); // a struct: its distance member
+            if (member.empty()) continue;
+        }
         signature.found = true;
-        signature.returnType = match[1].str();
+        signature.returnType = returned;
+        signature.member = member;
         if (match[4].matched) signature.animated = true;
+        // Out parameters after the point (`out float id`, `out Material m`): the wrapper passes
+        // locals of their types and drops what they receive.
+        signature.outParameters.clear();
+        static const std::regex outParameter(R"(,\s*(?:out|inout)\s+(?:highp\s+|mediump\s+|lowp\s+)?(\w+)\s+\w+)", kLinearRegex);
+        const std::string outs = match[6].str();
+        for (auto it = std::sregex_iterator(outs.begin(), outs.end(), outParameter); it != std::sregex_iterator(); ++it)
+            signature.outParameters.push_back((*it)[1].str());
     }
     return signature;
 }
@@ -329,6 +357,15 @@ CompatNeeds detectCompatNeeds(const std::string& stripped) {
         return int(depth[at]);
     };
     CompatNeeds needs;
+    for (const char* noise : {"noise1", "noise2", "noise3", "noise4"}) {
+        if (!words.count(noise)) continue;
+        const std::regex& definition = compiledOnce(R"(\b\w+\s+)" + std::string(noise) + R"(\s*\([^)]*\)\s*\{)");
+        for (auto it = std::sregex_iterator(stripped.begin(), stripped.end(), definition); it != std::sregex_iterator(); ++it)
+            if (depthAt(std::size_t(it->position(0))) == 0) {
+                needs.renamed.push_back(noise);
+                break;
+            }
+    }
     for (std::size_t i = 0; i < candidates.size(); ++i) {
         if (!words.count(candidates[i])) continue;
         bool declaredHere = false, wraps = false;
@@ -392,7 +429,10 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
     std::vector<std::pair<MarchedFunction, SdfSignature>> valid;
     for (MarchedFunction& marched :
          marchedFunctions(composeSdfShader(userCode, Stage::Fragment, std::vector<ShaderPiece>{}, FeatureDefines{}))) {
-        SdfSignature signature = detectSignature(stripped, marched.name);
+        // A struct's float member the march steps by (`Hit map(vec3 p)`, `t += h.d`) is the distance.
+        SdfSignature signature =
+            detectSignature(stripped, marched.name, marched.member.empty() ? "float|vec2|vec4" : marched.returnType);
+        if (!marched.member.empty()) signature.member = marched.member; // the one the march reads
         if (signature.found) valid.emplace_back(std::move(marched), std::move(signature));
     }
     if (valid.empty()) return;

@@ -94,8 +94,17 @@ std::string renameBiasLookups(const std::string& text) {
 
 std::string entryWrapper(const PreparedSdf& sdf) {
     const SdfSignature& signature = sdf.signature;
-    std::string text = "float sdfwb_sdf(vec3 p) { return " + signature.entry + (signature.animated ? "(p, sdfwb_time)" : "(p)") +
-                       (signature.returnType == "float" ? "" : ".x") + "; }\n";
+    std::string locals, arguments;
+    for (std::size_t i = 0; i < signature.outParameters.size(); ++i) {
+        locals += signature.outParameters[i] + " sdfwb_out" + std::to_string(i) + "; ";
+        arguments += ", sdfwb_out" + std::to_string(i);
+    }
+    std::string text = "float sdfwb_sdf(vec3 p) { " + locals + "return " + signature.entry + "(p" +
+                       (signature.animated ? ", sdfwb_time" : "") + arguments + ")" +
+                       (!signature.member.empty()         ? "." + signature.member
+                        : signature.returnType == "float" ? ""
+                                                          : ".x") +
+                       "; }\n";
     // The user's macros end with the user's code: what follows is the workbench's.
     for (const std::string& macro : sdf.macros) text += "#undef " + macro + "\n";
     return text;
@@ -180,6 +189,7 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
     // gl_FragCoord is a fragment shader's: elsewhere the code reads the prelude's stand-in (a macro
     // may not take a gl_ name). No line moves, so the source map holds.
     std::string userText = sdf.source.text;
+    for (const std::string& name : sdf.compat.renamed) userText = renameWord(userText, name, "sdfwb_" + name);
     if (all.count("SDFWB_COMPAT_gl_FragCoord")) userText = renameWord(userText, "gl_FragCoord", "sdfwb_FragCoord");
     // So are texture()'s bias form (g3d_compat.glsl).
     if (all.count("SDFWB_COMPAT_texture")) userText = renameBiasLookups(userText);

@@ -579,3 +579,58 @@ TEST(CompatNeeds, FragmentOnlyBuiltinsInHelpersCompileInTheComputeStage) {
     EXPECT_NE(tracer->text.find("texture(iChannel0, rd.xy * .5 + .5, -100.)"), std::string::npos);
     EXPECT_FALSE(hasErrors(checkWithGlslang(*tracer)));
 }
+
+// Real shaders' fields come in more forms than `float map(vec3)`: a struct (the march's member is
+// the distance, else the struct's first float), out parameters (the wrapper passes locals), and
+// helpers named like GLSL's deprecated noise1..4 (renamed: glslang refuses them at 4.30). A vec3
+// a reflection loop grows the point by (calcNormal) is not a field.
+TEST(EntryPoint, StructReturnsOutParametersAndNoiseNamedHelpers) {
+    const std::string structField = "struct Hit { float id; float dist; };\n"
+                                    "Hit scene(vec3 p) { Hit h; h.id = 1.0; h.dist = length(p) - 0.5; return h; }\n";
+    PreparedSdf hit = prepare(wholeShader(structField, "    float t = 0.0;\n    for (int i = 0; i < 64; i++) {\n"
+                                                       "        Hit h = scene(ro + rd * t);\n        if (h.dist < 1e-3) break;\n"
+                                                       "        t += h.dist;\n    }\n    return t;\n"));
+    ASSERT_TRUE(hit.ok()) << (hit.diagnostics.empty() ? "" : formatDiagnostic(hit.diagnostics.front()));
+    EXPECT_EQ(hit.signature.entry, "scene");
+    EXPECT_EQ(hit.signature.member, "dist") << "the member the march steps by, not the first float";
+    EXPECT_NE(entryWrapper(hit).find("return scene(p).dist;"), std::string::npos) << entryWrapper(hit);
+    auto tracer = composeTracer(hit, TracerFeatures{});
+    ASSERT_TRUE(tracer.hasValue());
+    EXPECT_FALSE(hasErrors(checkWithGlslang(*tracer)));
+    // By name (no march to read), the struct's first float member.
+    PreparedSdf named = prepare("struct Res { float d; int mat; };\nRes map(vec3 p) { Res r; r.d = length(p) - 0.5; r.mat = 1; "
+                                "return r; }\n");
+    ASSERT_TRUE(named.ok());
+    EXPECT_EQ(named.signature.member, "d");
+
+    PreparedSdf withOut = prepare("struct Material { vec3 albedo; float rough; };\n"
+                                  "float sdf(in vec3 pt, out Material mat, inout float glow) { mat.albedo = vec3(1.0); "
+                                  "mat.rough = 0.5; glow += 0.1; return length(pt) - 0.5; }\n");
+    ASSERT_TRUE(withOut.ok()) << (withOut.diagnostics.empty() ? "" : formatDiagnostic(withOut.diagnostics.front()));
+    EXPECT_EQ(withOut.signature.outParameters, (std::vector<std::string>{"Material", "float"}));
+    EXPECT_NE(entryWrapper(withOut).find("Material sdfwb_out0; float sdfwb_out1; return sdf(p, sdfwb_out0, sdfwb_out1);"),
+              std::string::npos)
+        << entryWrapper(withOut);
+    tracer = composeTracer(withOut, TracerFeatures{});
+    ASSERT_TRUE(tracer.hasValue());
+    EXPECT_FALSE(hasErrors(checkWithGlslang(*tracer)));
+
+    PreparedSdf noise = prepare("float noise2(vec2 p) { return fract(sin(dot(p, vec2(12.9, 78.2))) * 43758.5); }\n"
+                                "float map(vec3 p) { return length(p) - 0.5 + 0.01 * noise2(p.xz); }\n");
+    ASSERT_TRUE(noise.ok());
+    EXPECT_EQ(noise.compat.renamed, (std::vector<std::string>{"noise2"}));
+    tracer = composeTracer(noise, TracerFeatures{});
+    ASSERT_TRUE(tracer.hasValue());
+    EXPECT_NE(tracer->text.find("float sdfwb_noise2(vec2 p)"), std::string::npos);
+    auto diagnostics = checkWithGlslang(*tracer);
+    EXPECT_FALSE(hasErrors(diagnostics)) << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
+
+    // calcNormal grows the point in a reflection loop; the field is found by name (no march loop).
+    PreparedSdf reflection = prepare(wholeShader(
+        "float map(vec3 p) { return length(p) - 0.5; }\n"
+        "vec3 calcNormal(vec3 p) { return normalize(p); }\n",
+        "    vec3 p = ro;\n    for (int i = 0; i < 3; i++) { vec3 n = calcNormal(p); p += n * 0.01; }\n    return p.x;\n"));
+    ASSERT_TRUE(reflection.ok());
+    EXPECT_EQ(reflection.signature.entry, "map");
+    EXPECT_EQ(reflection.entrySource, EntrySource::Convention);
+}

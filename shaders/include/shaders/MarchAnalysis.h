@@ -18,6 +18,9 @@ struct MarchedFunction {
     std::string file; // where its first march call is (the composed map's file name)
     int line = 0;     // that call's line
     int loops = 0;    // loops that step by it
+    // A struct return: the struct's name and the float member the march reads (the distance).
+    std::string returnType;
+    std::string member;
 };
 
 // The functions `composed` (a fragment stage holding the user's code and mainImage; no main is

@@ -23,7 +23,13 @@ struct SdfSignature {
     bool found = false;    // a definition of ENTRY(vec3) or ENTRY(vec3, float) exists
     bool animated = false; // ENTRY(vec3 p, float time)
     std::string entry = "sdf";
-    std::string returnType = "float"; // float | vec2 | vec3 | vec4
+    std::string returnType = "float"; // float | vec2 | vec3 | vec4, or a struct's name (see member)
+    // A struct return (`Hit map(vec3 p)`, found from a whole shader's march): the float member the
+    // march steps by is the distance. Empty otherwise.
+    std::string member;
+    // The types of `out`/`inout` parameters after the point (and the time), in order
+    // (`float sdf(vec3 p, out Material m)`): the wrapper passes locals of these types.
+    std::vector<std::string> outParameters;
 };
 
 // Where the entry point came from: `sdf` (Default), --entry or the GUI (Requested), an `entry:`
@@ -43,6 +49,10 @@ struct CompatNeeds {
     // Those of them the file's own macro wraps (`#define iTime (iTime - 25.)`): the macro still
     // needs what it wraps, so the prelude declares it as a variable rather than a macro.
     std::vector<std::string> wrapped;
+    // Functions the file defines under the names of GLSL's deprecated noise1..noise4 (GLSL ES has
+    // none, so Shadertoy code uses the names freely; glslang refuses a definition with another
+    // return type): the composer renames them in the file's code (sdfwb_noise2).
+    std::vector<std::string> renamed;
     bool any() const { return !symbols.empty(); }
     bool usesTimeSymbol() const;       // g3d_SceneTime or Shadertoy's iTime
     bool usesShadertoyChannel() const; // iChannel0..3
@@ -89,7 +99,10 @@ struct PreparedSdf {
 std::string stripComments(const std::string& text);
 
 // Finds a definition of `entry` taking (vec3) or (vec3, float) and returning float or vec2-4.
-SdfSignature detectSignature(const std::string& strippedText, const std::string& entry = "sdf");
+// `returnTypes`: the return types allowed, as a regex alternation; a struct's name among them
+// (or \\w+) takes its first float member as the distance.
+SdfSignature detectSignature(const std::string& strippedText, const std::string& entry = "sdf",
+                             const std::string& returnTypes = "float|vec2|vec3|vec4|\\w+");
 
 // The `entry:` value of the leading `/* sdfwb ... */` metadata block, or "" when it has none.
 std::string metadataEntry(const std::string& text);
