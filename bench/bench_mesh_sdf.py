@@ -348,8 +348,8 @@ speed_rows = []
 for name, closed in files:
     path = os.path.join(MESHES, name)
     if not os.path.exists(path):
-        print(f"skipping {name}: not in {MESHES}", file=sys.stderr)
-        continue
+        sys.exit(f"bench_mesh_sdf.py: {name} is not in {MESHES}: the doc would silently lose its rows "
+                 "(give the shared meshes' folder with --meshes)")
     vertices, faces = read_obj(path)
     points = far_points(vertices, faces, POINTS, seed=1)
     ours = {m: sdfwb_signs(path, points, m) for m in METHODS}

@@ -418,7 +418,7 @@ TEST_F(MeshSdfTest, SurfaceAndNearDrawPointsOnTheMeshItselfByArea) {
         EXPECT_NEAR((*field)->signedDistance(p), 0.05, 1e-3) << "row " << i;
         if (HasFailure()) break;
     }
-    EXPECT_GT(checked, 0u);
+    EXPECT_GE(checked, distances.size() / 2) << "most rows are on the shell (a cut walk's NaN row is bad, not checked)";
     std::printf("surface over an offset shell: %zu rows on the shell, %llu bad rows (llvmpipe's loop budget)\n", checked,
                 (unsigned long long)bad);
 }
