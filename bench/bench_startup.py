@@ -15,9 +15,10 @@ needs the media module either way). Every way runs --repeats times, interleaved,
 (page cache and Mesa's shader cache warm); times are median [min, max] wall seconds of the whole process. The
 shared-object count is the number of link maps the loader makes (LD_DEBUG=files), dlopen'ed ones included.
 
-The goals (#34 point 6): `--version` and the 1,000-sample run each in at most 50 ms of process overhead. For the
-sample run that is its whole time less the job's own (the report's `setup_seconds` + `seconds`), with the EGL
-context's creation (sdfwb's `(context in N ms)` log line) stated apart.
+The goals: `--version` in at most 50 ms of process overhead (#34 point 6), and the whole 1,000-sample run, the
+process a user waits for, in at most 50 ms above the floor (#48 point 2, written before the run); the job's own
+time (the report's `setup_seconds` + `seconds`) and the EGL context's creation (sdfwb's `(context in N ms)` log
+line) are shown beside it, not subtracted.
 """
 import argparse
 import datetime
@@ -138,17 +139,19 @@ def main():
             ratios.append(f"Goal: `sdfwb --version` in at most {goal * 1000:.0f} ms of process overhead (above the floor): "
                           f"{over * 1000:.1f} ms, {'met' if over <= goal else 'NOT met'}.")
         if key == "sample" and ways[i][2] is env:
-            over = statistics.median(overheads[i])
-            context = statistics.median(contexts[i])
-            without = over - context
-            ratios.append(f"Goal: the 1,000-sample run in at most {goal * 1000:.0f} ms of process overhead. Its whole time "
-                          f"less the job's own seconds (from its `--json` report: `setup_seconds`, the SDF opened and its sampler compiled, plus `seconds`, sampling and writing), which "
-                          f"leaves the process start, loading, parsing the options, the EGL context and exit: median "
-                          f"{fmt(overheads[i])} ms, {'met' if over <= goal else 'NOT met'} (before: "
-                          f"{statistics.median(overheads[i + 1]) * 1000:.1f} ms). Of that, creating the EGL context "
-                          f"(Mesa's driver with its LLVM loaded and linked: what any OpenGL program pays on this machine, "
-                          f"from sdfwb's log line in a second, untimed run of the same command without `--json`) took median {fmt(contexts[i])} ms; the rest, sdfwb's own overhead, "
-                          f"median {without * 1000:.1f} ms ({'met' if without <= goal else 'NOT met'}).")
+            # The goal is on the whole process, what the user waits for; where the time goes is shown
+            # beside it, nothing subtracted (issue 48, point 2).
+            whole = statistics.median(times[i]) - floor
+            job = [t - o for t, o in zip(times[i], overheads[i])]
+            rest = [o - c for o, c in zip(overheads[i], contexts[i])]
+            ratios.append(f"Goal: the whole 1,000-sample run (the process a user waits for) in at most {goal * 1000:.0f} ms "
+                          f"above the floor: {whole * 1000:.1f} ms, {'met' if whole <= goal else 'NOT met'} (before: "
+                          f"{(statistics.median(times[i + 1]) - floor) * 1000:.1f} ms). Where it goes (medians, nothing "
+                          f"subtracted from the goal): the job itself, {fmt(job)} ms (its `--json` report's `setup_seconds`, "
+                          f"the SDF opened and its sampler compiled, plus `seconds`, sampling and writing); creating the EGL "
+                          f"context, {fmt(contexts[i])} ms (Mesa's driver with its LLVM loaded and linked: what any OpenGL "
+                          f"program pays on this machine, from sdfwb's log line in a second, untimed run without `--json`); "
+                          f"the rest (process start, loading, parsing the options, exit), {fmt(rest)} ms.")
     config = [
         f"Machine: {socket.gethostname()}, nproc {os.cpu_count()} ({cpu_model()}), {platform.system()} "
         f"{platform.release()}; started {started.strftime('%Y-%m-%d %H:%M')} UTC.",
@@ -172,6 +175,9 @@ def main():
                       "run. Times are of the whole process, as a shell or a job runner sees them.\n\n")
             out.write("\n".join(lines) + "\n\n")
             out.write("".join(f"- {line}\n" for line in ratios))
+        # The tracked doc at its default settings: stamp it with its inputs (scripts/check_docs).
+        if os.path.abspath(args.markdown) == os.path.join(ROOT, "docs", "startup.md") and args.repeats == 30:
+            subprocess.run([os.path.join(ROOT, "scripts", "check_docs"), "--stamp", args.markdown], check=True)
 
 
 if __name__ == "__main__":
