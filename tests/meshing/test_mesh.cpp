@@ -390,11 +390,10 @@ TEST_F(MeshTest, TheSphereErrorFallsAtSecondOrder) {
     EXPECT_LT(hausdorff[2], 2e-3f);
 }
 
-// Issue 33, point 1: every dataset shape and every closed foreign file (Shadertoy, IQ, hg_sdf and
-// G3D styles) meshes watertight, edge- and vertex-manifold and consistently oriented at 64 cells,
-// with no triangle of zero area. Left out: the three foreign files whose field is NaN over half
-// of space (their `expect:` line flags nan), where the surface ends at the NaN region.
-TEST_F(MeshTest, EveryDatasetShapeAndClosedForeignFileMeshesManifold) {
+// Every dataset shape and every closed foreign file (Shadertoy, IQ, hg_sdf and G3D styles), as
+// paths from the source root. Left out: the three foreign files whose field is NaN over half of
+// space (their `expect:` line flags nan), where the surface ends at the NaN region.
+std::vector<std::string> manifoldCorpus() {
     const std::filesystem::path root(SDFWB_SOURCE_DIR);
     std::vector<std::string> files;
     for (const auto& folder : std::filesystem::directory_iterator(root / "dataset"))
@@ -419,18 +418,33 @@ TEST_F(MeshTest, EveryDatasetShapeAndClosedForeignFileMeshesManifold) {
     EXPECT_EQ(nanFiles, 3u);
     EXPECT_GE(files.size() - datasetShapes, 45u);
     std::sort(files.begin(), files.end());
-    for (const std::string& file : files) {
-        // Every block evaluated: several foreign fields are steeper than 1 (the CLI's quick audit
-        // finds their bound; a bound of 1 would skip blocks that hold surface).
-        const meshing::Mesh mesh = extract(sdfwb::testing::loadSourceSdf(file), 64, 0.0f);
+    return files;
+}
+
+// Issue 33, point 1, on the path `sdfwb --batch mesh` takes by default (issue 48, point 4): the
+// Lipschitz bound estimated from the block centres, blocks without surface skipped. Every file
+// meshes watertight, edge- and vertex-manifold and consistently oriented, with no triangle of zero
+// area, at `resolution` cells.
+void expectManifoldOnTheDefaultPath(int resolution) {
+    for (const std::string& file : manifoldCorpus()) {
+        meshing::MeshOptions options;
+        options.resolution = resolution;
+        options.estimateLipschitz = true; // what the CLI does without --lipschitz or --audit
+        auto extracted = meshing::extractMesh(sdfwb::testing::loadSourceSdf(file), options, {});
+        ASSERT_TRUE(extracted) << file << ": " << extracted.error().message;
+        const meshing::Mesh& mesh = extracted->first;
         ASSERT_GT(mesh.triangleCount(), 100u) << file;
         const meshing::Topology topology = meshing::checkTopology(mesh);
-        EXPECT_TRUE(topology.manifold()) << file << ": " << topology.boundaryEdges << " boundary edges, "
+        EXPECT_TRUE(topology.manifold()) << file << " at " << resolution << ": " << topology.boundaryEdges << " boundary edges, "
                                          << topology.nonManifoldEdges << " non-manifold edges, " << topology.nonManifoldVertices
                                          << " non-manifold vertices, " << topology.misorientedEdges << " misoriented edges";
-        EXPECT_TRUE(closedAndOutward(mesh)) << file;
+        EXPECT_TRUE(closedAndOutward(mesh)) << file << " at " << resolution;
     }
 }
+
+TEST_F(MeshTest, EveryDatasetShapeAndClosedForeignFileMeshesManifold) { expectManifoldOnTheDefaultPath(64); }
+
+TEST_F(MeshTest, EveryDatasetShapeAndClosedForeignFileMeshesManifoldAt256) { expectManifoldOnTheDefaultPath(256); }
 
 // Where a tunnel is thinner than a cell, the patches on both sides of an ambiguous face join its
 // two segments; the edge between their vertices would be shared by four triangles. A vertex per
