@@ -56,6 +56,7 @@
 #include <QRegularExpressionValidator>
 #include <QSettings>
 #include <QStatusBar>
+#include <QStringListModel>
 #include <QToolBar>
 #include <fstream>
 #include <memory>
@@ -269,15 +270,16 @@ void MainWindow::connectDocument() {
     });
     // A whole shader whose march steps by two functions equally often: the entry box lists them.
     connect(m_document, &SdfDocument::entryCandidatesChanged, this, [this](const QStringList& names) {
-        if (QCompleter* old = m_entry->completer()) {
-            m_entry->setCompleter(nullptr);
-            old->deleteLater();
+        // One completer, made the first time, whose list follows the checks.
+        auto* completer = m_entry->findChild<QCompleter*>("entry_choices");
+        if (!completer) {
+            completer = new QCompleter(new QStringListModel(m_entry), m_entry);
+            completer->setObjectName("entry_choices");
+            completer->setCompletionMode(QCompleter::UnfilteredPopupCompletion);
         }
-        if (names.isEmpty()) return;
-        auto* completer = new QCompleter(names, m_entry);
-        completer->setCompletionMode(QCompleter::UnfilteredPopupCompletion);
-        m_entry->setCompleter(completer);
-        m_entry->setPlaceholderText(tr("choose: %1").arg(names.join(", ")));
+        static_cast<QStringListModel*>(completer->model())->setStringList(names);
+        m_entry->setCompleter(names.isEmpty() ? nullptr : completer);
+        if (!names.isEmpty()) m_entry->setPlaceholderText(tr("choose: %1").arg(names.join(", ")));
     });
     connect(m_document, &SdfDocument::signaturesChanged, this,
             [this](const QStringList& signatures) { m_editor->setCompletionFunctions(m_librarySignatures, signatures); });

@@ -4,6 +4,9 @@
 
 #include "GuiTestSupport.h"
 
+#include <QAbstractItemModel>
+#include <QCompleter>
+
 using namespace sdfwb;
 using namespace sdfwb::guitest;
 
@@ -98,6 +101,66 @@ TEST(ForeignCode, EntryFieldAndShowWhere) {
     ASSERT_TRUE(waitFor([&] { return applied; }));
     EXPECT_TRUE(entry->text().isEmpty());
     EXPECT_EQ(window.document()->signature().entry, "sdf");
+}
+
+// Issue 47, point 1: a pasted whole shader's field is the function its own march steps by: the
+// entry box says which and why. When its marches step by two functions equally often, the file
+// does not open, the error names both, the entry box offers them, and picking one (typed, Return)
+// opens it.
+TEST(ForeignCode, TheEntryBoxSaysWhatTheMarchChoseAndOffersATie) {
+    const std::string caster =
+        "void mainImage(out vec4 c, in vec2 f) {\n"
+        "    vec3 ro = vec3(0.0, 0.0, 3.0), rd = normalize(vec3((f - 0.5 * iResolution.xy) / iResolution.y, -2.0));\n";
+    const QString single =
+        writeScratch("marched.glsl", QByteArray::fromStdString("float Map(vec3 p) { return length(p) - 0.5; }\n" + caster +
+                                                               "    float t = 0.0;\n"
+                                                               "    for (int i = 0; i < 64; i++) t += Map(ro + rd * t);\n"
+                                                               "    c = vec4(vec3(t * 0.1), 1.0);\n}\n"));
+    const QString tied =
+        writeScratch("tied.glsl", QByteArray::fromStdString("float Solid(vec3 p) { return length(p) - 0.5; }\n"
+                                                            "float Water(vec3 p) { return p.y + 0.4; }\n" +
+                                                            caster +
+                                                            "    float t = 0.0, s = 0.0;\n"
+                                                            "    for (int i = 0; i < 64; i++) t += Solid(ro + rd * t);\n"
+                                                            "    for (int i = 0; i < 64; i++) s += Water(ro + rd * s);\n"
+                                                            "    c = vec4(vec3(min(t, s) * 0.1), 1.0);\n}\n"));
+    app::MainWindow window;
+    window.resize(1000, 640);
+    window.show();
+    bool applied = false;
+    QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
+    ASSERT_TRUE(window.openFile(single));
+    ASSERT_TRUE(waitFor([&] { return applied; })) << "Map() was not found from the march";
+    EXPECT_EQ(window.document()->signature().entry, "Map");
+    auto* entry = window.findChild<QLineEdit*>("entry");
+    ASSERT_TRUE(entry);
+    EXPECT_TRUE(entry->placeholderText().contains("Map (called by the march at line 5)"))
+        << entry->placeholderText().toStdString();
+    EXPECT_EQ(entry->completer(), nullptr);
+
+    bool failed = false;
+    QObject::connect(window.document(), &app::SdfDocument::diagnosticsChanged,
+                     [&](const std::vector<shaders::Diagnostic>& d) { failed = failed || shaders::hasErrors(d); });
+    applied = false;
+    ASSERT_TRUE(window.openFile(tied));
+    ASSERT_TRUE(waitFor([&] { return failed; })) << "the tie was not reported";
+    ASSERT_TRUE(entry->completer());
+    QStringList offered;
+    for (int row = 0; row < entry->completer()->model()->rowCount(); ++row)
+        offered << entry->completer()->model()->index(row, 0).data().toString();
+    EXPECT_EQ(offered, (QStringList{"Solid", "Water"}));
+    EXPECT_TRUE(entry->placeholderText().contains("Solid, Water")) << entry->placeholderText().toStdString();
+    EXPECT_FALSE(applied);
+
+    entry->setFocus();
+    for (QChar c : QString("Water")) {
+        QKeyEvent press(QEvent::KeyPress, 0, Qt::NoModifier, QString(c));
+        QApplication::sendEvent(entry, &press);
+    }
+    QKeyEvent enter(QEvent::KeyPress, Qt::Key_Return, Qt::NoModifier);
+    QApplication::sendEvent(entry, &enter);
+    ASSERT_TRUE(waitFor([&] { return applied; })) << "the chosen function did not open";
+    EXPECT_EQ(window.document()->signature().entry, "Water");
 }
 
 TEST(Files, SaveAutosaveRecoverAndPromptOnClose) {
