@@ -533,8 +533,10 @@ with open(OUT, "w") as out:
               "lanes (pixels outside the primitive, run only for derivatives) walk nothing: llvmpipe drops their "
               "stack writes but not their loop iterations, so their walks spun and spent the budget of the pixels "
               "beside them, drawing lines along the tracer's proxy box. On llvmpipe a mesh's own field is "
-              "evaluated by the CPU engine instead (no loop budget there); the GLSL field still serves text that "
-              "changes a mesh's field, the tracer, and every GPU driver. Bad rows of the GLSL field's near sampler "
+              "evaluated by the CPU engine instead (no loop budget there), and the tracer draws it by one ray walk "
+              "of the hierarchy a pixel, its cutting plane from a texture the CPU engine fills (docs/viewport.md); "
+              "the GLSL field still serves text that changes a mesh's field, the march debugger, and every GPU "
+              "driver. Bad rows of the GLSL field's near sampler "
               "(`SDFWB_MESH_ENGINE=gpu`) on each mesh's own field (20000 rows, gradient on):\n\n"
               "| mesh | triangles | near: bad rows |\n|---|---|---|\n")
     for r in speed_rows:
