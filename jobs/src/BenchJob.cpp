@@ -13,8 +13,8 @@ JobResult<BenchReport> run(const BenchRequest& request, const ProgressSink& prog
     options.repeats = request.repeats;
     options.quick = request.quick;
     options.glDescription = renderer::describe(renderer::queryGlInfo());
-    options.commandLine =
-        "sdfwb --batch bench" + std::string(request.quick ? " --quick" : "") + " --repeats " + std::to_string(request.repeats);
+    options.commandLine = "sdfwb --batch bench" + std::string(request.quick ? " --quick" : "") + " -o " +
+                          request.outputDirectory + " --repeats " + std::to_string(request.repeats);
     auto files = bench::runBenchmarks(options, progress);
     if (!files) return JobError{Failure::Work, files.error().message, {}};
     BenchReport report;
