@@ -217,6 +217,22 @@ float sdfwb_meshWinding(vec3 p) {
     return top > 0 ? sdfwb_meshCut() : sum / (4.0 * 3.14159265358979);
 }
 
+// Where the line origin + t direction meets triangle slot s (Moller-Trumbore): its t, or -1e38
+// when it passes the triangle or runs parallel to it.
+float sdfwb_meshRayTriangle(vec3 origin, vec3 direction, uint s) {
+    vec3 a = sdfwb_meshTriangles[3u * s].xyz;
+    vec3 e1 = sdfwb_meshTriangles[3u * s + 1u].xyz - a;
+    vec3 e2 = sdfwb_meshTriangles[3u * s + 2u].xyz - a;
+    vec3 h = cross(direction, e2);
+    float det = dot(e1, h);
+    if (det == 0.0) return -1e38;
+    vec3 o = origin - a;
+    float u = dot(o, h) / det;
+    vec3 q = cross(o, e1);
+    float v = dot(direction, q) / det;
+    return u >= 0.0 && v >= 0.0 && u + v <= 1.0 ? dot(e2, q) / det : -1e38;
+}
+
 // Crossings of the ray p + t d (t > 0) with the mesh.
 int sdfwb_meshCrossings(vec3 p, vec3 d) {
     if (sdfwb_meshIdleLane()) return 0;
@@ -239,18 +255,7 @@ int sdfwb_meshCrossings(vec3 p, vec3 d) {
         if (count > 0u) {
             for (uint k = 0u; k < SDFWB_MESH_LEAF; ++k) {
                 if (k >= count) break;
-                uint s = first + k;
-                vec3 a = sdfwb_meshTriangles[3u * s].xyz;
-                vec3 e1 = sdfwb_meshTriangles[3u * s + 1u].xyz - a;
-                vec3 e2 = sdfwb_meshTriangles[3u * s + 2u].xyz - a;
-                vec3 h = cross(d, e2);
-                float det = dot(e1, h);
-                if (det == 0.0) continue;
-                vec3 o = p - a;
-                float u = dot(o, h) / det;
-                vec3 q = cross(o, e1);
-                float v = dot(d, q) / det;
-                if (u >= 0.0 && u <= 1.0 && v >= 0.0 && u + v <= 1.0 && dot(e2, q) / det > 0.0) ++crossings;
+                if (sdfwb_meshRayTriangle(p, d, first + k) > 0.0) ++crossings;
             }
         } else {
             stack[top++] = first;
@@ -285,22 +290,10 @@ float sdfwb_meshRaycast(vec3 origin, vec3 direction, float tMin, float tMax, out
         if (count > 0u) {
             for (uint k = 0u; k < SDFWB_MESH_LEAF; ++k) { // unrolled, as in sdfwb_meshNearest
                 if (k >= count) break;
-                uint s = first + k;
-                vec3 a = sdfwb_meshTriangles[3u * s].xyz;
-                vec3 e1 = sdfwb_meshTriangles[3u * s + 1u].xyz - a;
-                vec3 e2 = sdfwb_meshTriangles[3u * s + 2u].xyz - a;
-                vec3 h = cross(direction, e2);
-                float det = dot(e1, h);
-                if (det == 0.0) continue;
-                float inverseDet = 1.0 / det;
-                vec3 o = origin - a;
-                float u = dot(o, h) * inverseDet;
-                vec3 q = cross(o, e1);
-                float v = dot(direction, q) * inverseDet;
-                float t = dot(e2, q) * inverseDet;
-                if (u >= 0.0 && v >= 0.0 && u + v <= 1.0 && t >= tMin && t < best) {
+                float t = sdfwb_meshRayTriangle(origin, direction, first + k);
+                if (t >= tMin && t < best) {
                     best = t;
-                    triangle = s;
+                    triangle = first + k;
                 }
             }
             continue;
