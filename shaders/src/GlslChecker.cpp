@@ -10,12 +10,6 @@
 namespace sdfwb::shaders {
 namespace {
 
-// glslang needs one process-wide initialisation; FinalizeProcess is left to process exit.
-void ensureGlslangInitialised() {
-    static std::once_flag once;
-    std::call_once(once, [] { glslang::InitializeProcess(); });
-}
-
 EShLanguage toLanguage(Stage stage) {
     switch (stage) {
     case Stage::Vertex:
@@ -29,6 +23,12 @@ EShLanguage toLanguage(Stage stage) {
 }
 
 } // namespace
+
+// FinalizeProcess is left to process exit.
+void ensureGlslangInitialised() {
+    static std::once_flag once;
+    std::call_once(once, [] { glslang::InitializeProcess(); });
+}
 
 std::vector<Diagnostic> checkWithGlslang(const ComposedShader& composed) {
     ensureGlslangInitialised();

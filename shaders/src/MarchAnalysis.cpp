@@ -1,5 +1,7 @@
 #include <shaders/MarchAnalysis.h>
 
+#include <shaders/GlslChecker.h>
+
 #include <glslang/Include/intermediate.h>
 #include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ResourceLimits.h>
@@ -8,7 +10,6 @@
 #include <algorithm>
 #include <deque>
 #include <map>
-#include <mutex>
 #include <set>
 
 namespace sdfwb::shaders {
@@ -157,11 +158,6 @@ bool stepsBy(const std::vector<Assignment>& assignments, TIntermAggregate* call)
             return true;
     }
     return false;
-}
-
-void ensureGlslangInitialised() {
-    static std::once_flag once;
-    std::call_once(once, [] { glslang::InitializeProcess(); });
 }
 
 } // namespace

@@ -11,4 +11,7 @@ namespace sdfwb::shaders {
 
 std::vector<Diagnostic> checkWithGlslang(const ComposedShader& shader);
 
+// glslang's one process-wide initialisation (every in-process use of glslang calls this first).
+void ensureGlslangInitialised();
+
 } // namespace sdfwb::shaders
