@@ -158,7 +158,7 @@ TEST_F(Probe, ShowsFallbacksAndOversteps) {
 TEST_F(Probe, CommandLineForm) {
     auto result = sdfwb::testing::runCommand(SDFWB_BINARY, "--batch probe --sdf Sphere --size 64x36 --pixel 32,18 --json");
     ASSERT_EQ(result.exitCode, 0) << result.output;
-    auto report = jobs::reportFromJson<jobs::ProbeReport>(result.output);
+    auto report = jobs::reportFromJson<jobs::ProbeReport>(result.standardOutput);
     ASSERT_TRUE(report) << report.error().message << "\n" << result.output;
     EXPECT_EQ(report->outcome, "hit");
     EXPECT_EQ(int(report->events.size()) >= report->steps, true);

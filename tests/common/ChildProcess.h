@@ -38,27 +38,36 @@ inline void drain(int fd) {
     while (::read(fd, buffer, sizeof buffer) > 0) {}
 }
 
+inline std::string readBytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
 struct RunResult {
     int exitCode = -1;
-    std::string output; // stdout and stderr together
+    std::string output;         // stdout, then stderr
+    std::string standardOutput; // stdout alone: what a caller parses (a sanitizer's exit report goes to stderr)
 };
 
 // Runs `binary arguments` through the shell without a display and waits for it to end.
 inline RunResult runCommand(const std::string& binary, const std::string& arguments) {
-    const std::string command = "env -u DISPLAY " + binary + " " + arguments + " 2>&1";
+    char errorPath[] = "/tmp/sdfwb-run-stderr-XXXXXX";
+    const int errorFile = mkstemp(errorPath);
     RunResult result;
+    if (errorFile < 0) return result;
+    ::close(errorFile);
+    const std::string command = "env -u DISPLAY " + binary + " " + arguments + " 2>" + errorPath;
     FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return result;
-    std::array<char, 4096> buffer;
-    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) result.output.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    if (pipe) {
+        std::array<char, 4096> buffer;
+        while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
+            result.standardOutput.append(buffer.data(), n);
+        const int status = pclose(pipe);
+        result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+    result.output = result.standardOutput + readBytes(errorPath);
+    std::filesystem::remove(errorPath);
     return result;
-}
-
-inline std::string readBytes(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 } // namespace sdfwb::testing
