@@ -60,8 +60,7 @@ inline RunResult runCommand(const std::string& binary, const std::string& argume
     FILE* pipe = popen(command.c_str(), "r");
     if (pipe) {
         std::array<char, 4096> buffer;
-        while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
-            result.standardOutput.append(buffer.data(), n);
+        while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) result.standardOutput.append(buffer.data(), n);
         const int status = pclose(pipe);
         result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     }
