@@ -26,6 +26,9 @@ namespace {
 using glm::dvec3;
 
 constexpr int kStack = 128; // the hierarchy's depth is at most 60 (MeshField.cpp's kMaxDepth) + 2
+// The sign cache's level whose points start the crossing segments: 2^6 + 1 points a side.
+constexpr int kCrossingLevel = 6;
+constexpr int kCrossingSide = (1 << kCrossingLevel) + 1;
 
 std::uint32_t asBits(float value) { return std::bit_cast<std::uint32_t>(value); }
 
@@ -69,12 +72,13 @@ inline float closestDistance2(float px, float py, float pz, const float* t) {
     return length2(apx - abx * v - acx * w, apy - aby * v - acy * w, apz - abz * v - acz * w);
 }
 
-// The length of the mesh's boundary as an oriented chain: every edge times the absolute value of
-// its net use (times used a -> b minus times used b -> a). 0 for a closed, consistently oriented
-// mesh (or several); a hole's rim counts once, a flipped face's rim twice. The winding number's
-// gradient is the Biot-Savart integral over that boundary (the solid angle is the potential of a
-// current loop), so |grad w(x)| <= length / (4 pi r^2), r the distance from x to the boundary.
-double boundaryLength(const TriangleMesh& mesh) {
+// The mesh's boundary as an oriented chain: every edge whose net use (times used a -> b minus times
+// used b -> a) is not zero, with that count's absolute value; none on a closed, consistently
+// oriented mesh (or several). A hole's rim counts once, a flipped face's rim twice. The winding
+// number's gradient is the Biot-Savart integral over that boundary (the solid angle is the
+// potential of a current loop), so |grad w(x)| <= sum of weight x length / (4 pi r^2) over the
+// edges, r the distance from x to each.
+template <class Visit> void forEachOpenEdge(const TriangleMesh& mesh, Visit visit) {
     std::unordered_map<std::uint64_t, int> net;
     net.reserve(mesh.indices.size());
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
@@ -84,12 +88,22 @@ double boundaryLength(const TriangleMesh& mesh) {
             if (a == b) continue;
             net[std::min(a, b) << 32 | std::max(a, b)] += a < b ? 1 : -1;
         }
-    double length = 0.0;
     for (const auto& [edge, count] : net)
         if (count != 0)
-            length += std::abs(count) *
-                      glm::length(glm::dvec3(mesh.vertices[edge >> 32]) - glm::dvec3(mesh.vertices[edge & 0xffffffffu]));
-    return length;
+            visit(glm::dvec3(mesh.vertices[edge >> 32]), glm::dvec3(mesh.vertices[edge & 0xffffffffu]), double(std::abs(count)));
+}
+
+double segmentDistance(const dvec3& x, const dvec3& a, const dvec3& b) {
+    const dvec3 ab = b - a;
+    const double length2 = glm::dot(ab, ab);
+    const double t = length2 > 0.0 ? std::clamp(glm::dot(x - a, ab) / length2, 0.0, 1.0) : 0.0;
+    return glm::length(x - (a + t * ab));
+}
+
+// A float no smaller than `value`.
+float roundedUp(double value) {
+    float f = float(value);
+    return double(f) < value ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
 unsigned threadCount(unsigned asked) {
@@ -174,20 +188,31 @@ MeshQuery::MeshQuery(const MeshField& field) : m_field(field) {
     m_scale = std::max({std::abs(field.bounds.lo.x), std::abs(field.bounds.lo.y), std::abs(field.bounds.lo.z),
                         std::abs(field.bounds.hi.x), std::abs(field.bounds.hi.y), std::abs(field.bounds.hi.z)});
     if (!std::isfinite(m_scale)) m_scale = 0.0;
+    // The sign cache's box also orders the rows (Morton codes over it), whatever the sign method.
+    const dvec3 extent = field.bounds.hi - field.bounds.lo;
+    const double side = std::max({extent.x, extent.y, extent.z}) * 1.5 + 1e-9;
+    m_cacheLo = (field.bounds.lo + field.bounds.hi) * 0.5 - dvec3(side * 0.5);
+    m_cacheSide = 128;
+    m_cacheStep = side / m_cacheSide;
     if (field.options.sign == SignMethod::Winding) {
         m_useCache = true;
-        m_boundaryLength = boundaryLength(field.mesh);
-        const dvec3 extent = field.bounds.hi - field.bounds.lo;
-        const double side = std::max({extent.x, extent.y, extent.z}) * 1.5 + 1e-9;
-        m_cacheLo = (field.bounds.lo + field.bounds.hi) * 0.5 - dvec3(side * 0.5);
-        m_cacheSide = 128;
-        m_cacheStep = side / m_cacheSide;
+        m_boundaryLength = 0.0;
+        forEachOpenEdge(field.mesh, [&](const dvec3& a, const dvec3& b, double weight) {
+            m_boundary.push_back({a, b, weight});
+            m_boundaryLength += weight * glm::length(b - a);
+        });
         // Levels of 2^k + 1 points a side (k = 2 .. 7), coarsest first, in one array.
         std::size_t total = 0;
         for (int k = 2; k <= 7; ++k) total += std::size_t((1 << k) + 1) * ((1 << k) + 1) * ((1 << k) + 1);
         m_cache = std::make_unique<std::atomic<float>[]>(total);
         for (std::size_t i = 0; i < total; ++i)
             m_cache[i].store(std::numeric_limits<float>::quiet_NaN(), std::memory_order_relaxed);
+        if (!m_boundary.empty()) {
+            const std::size_t points = std::size_t(kCrossingSide) * kCrossingSide * kCrossingSide;
+            m_slopes = std::make_unique<std::atomic<float>[]>(points);
+            for (std::size_t i = 0; i < points; ++i)
+                m_slopes[i].store(std::numeric_limits<float>::quiet_NaN(), std::memory_order_relaxed);
+        }
     }
 }
 
@@ -197,6 +222,8 @@ std::size_t MeshQuery::bytes() const {
     std::size_t cache = 0;
     if (m_useCache)
         for (int k = 2; k <= 7; ++k) cache += std::size_t((1 << k) + 1) * ((1 << k) + 1) * ((1 << k) + 1) * sizeof(float);
+    if (m_slopes) cache += std::size_t(kCrossingSide) * kCrossingSide * kCrossingSide * sizeof(float);
+    cache += m_boundary.size() * sizeof(BoundaryEdge);
     return m_nodes.size() * sizeof(Node) + m_corners.size() * sizeof(double) + cache;
 }
 
@@ -346,8 +373,9 @@ double MeshQuery::winding(const dvec3& p, std::uint64_t* visits) const {
 // approximation at p and at q, gives p's sign, and its winding number is computed once for every
 // row that can use it. Levels from coarse (5^3 points over 1.5 times the bounds) to fine (129^3):
 // the coarsest level that decides, so that far rows share a few coarse values.
-bool MeshQuery::cachedWindingInside(const dvec3& p, double distance, bool& fromCache, std::uint64_t* visits) const {
+bool MeshQuery::cachedWindingInside(const dvec3& p, double distance, bool& fromCache, QueryCounters* counters) const {
     fromCache = false;
+    std::uint64_t* visits = counters ? &counters->windingNodes : nullptr;
     if (m_useCache && distance > 0.0 && std::isfinite(distance)) {
         const double reach2 = distance * distance * 0.998;
         std::size_t offset = 0;
@@ -380,7 +408,149 @@ bool MeshQuery::cachedWindingInside(const dvec3& p, double distance, bool& fromC
             }
         }
     }
+    if (bool in = false; distance > 0.0 && crossedWindingInside(p, in, counters)) {
+        if (counters) ++counters->crossedSigns;
+        return in;
+    }
     return winding(p, visits) > 0.5;
+}
+
+// The crossing sign, for rows too near the surface for the ball above to hold a lattice point (or
+// too near an open boundary for its bound). Along a segment from a lattice point q to p the winding
+// number jumps by exactly 1 wherever the segment crosses a triangle (down when it leaves through
+// the front, up through the back) and between crossings changes only as the open boundary's field
+// allows: |w(p) - w(q) - crossings| <= slope(q) x |p - q| (boundarySlope; zero on a closed,
+// oriented mesh, however many shells overlap). So w(q), once computed for the rows around it, and
+// one short segment walk give p's sign wherever that estimate is farther from 1/2 than the bound
+// plus 1/4 for the hierarchy's approximation at p and q, as in the ball's test. A crossing too near
+// a triangle's edge or corner, or an end on a triangle's plane, could be counted twice or missed:
+// the row then takes the walk.
+bool MeshQuery::crossedWindingInside(const dvec3& p, bool& inside, QueryCounters* counters) const {
+    if (!m_useCache) return false;
+    const double step = m_cacheStep * double(m_cacheSide >> kCrossingLevel);
+    const double reach = step * std::sqrt(3.0) * 0.5 * (1.0 + 1e-9); // a lattice cell's half diagonal
+    int at[3];
+    dvec3 q;
+    for (int a = 0; a < 3; ++a) {
+        const double cell = (p[a] - m_cacheLo[a]) / step;
+        at[a] = int(std::clamp(std::floor(cell + 0.5), 0.0, double(kCrossingSide - 1)));
+        q[a] = m_cacheLo[a] + double(at[a]) * step;
+    }
+    const double s = glm::length(p - q);
+    if (!(s <= reach)) return false; // outside the lattice
+    const std::size_t index = (std::size_t(at[2]) * kCrossingSide + std::size_t(at[1])) * kCrossingSide + std::size_t(at[0]);
+    double slope = 0.0;
+    if (m_slopes) {
+        float stored = m_slopes[index].load(std::memory_order_relaxed);
+        if (std::isnan(stored)) {
+            stored = roundedUp(boundarySlope(q));
+            m_slopes[index].store(stored, std::memory_order_relaxed);
+        }
+        slope = double(stored);
+    }
+    const double change = slope * s;
+    if (!(change < 0.25)) return false;
+    std::size_t offset = 0;
+    for (int k = 2; k < kCrossingLevel; ++k) offset += std::size_t((1 << k) + 1) * ((1 << k) + 1) * ((1 << k) + 1);
+    std::atomic<float>& cached = m_cache[offset + index];
+    float w = cached.load(std::memory_order_relaxed);
+    if (std::isnan(w)) {
+        w = float(winding(q, counters ? &counters->windingNodes : nullptr));
+        cached.store(w, std::memory_order_relaxed);
+    }
+    int net = 0;
+    if (!segmentCrossings(q, p, net, counters ? &counters->segmentNodes : nullptr)) return false;
+    const double estimate = double(w) + double(net);
+    if (!(std::abs(estimate - 0.5) >= change + 0.25)) return false;
+    inside = estimate > 0.5;
+    return true;
+}
+
+double MeshQuery::boundarySlope(const dvec3& q) const {
+    const double step = m_cacheStep * double(m_cacheSide >> kCrossingLevel);
+    const double reach = step * std::sqrt(3.0) * 0.5 * (1.0 + 1e-9);
+    double sum = 0.0;
+    for (const BoundaryEdge& e : m_boundary) {
+        const double r = segmentDistance(q, e.a, e.b) - reach;
+        if (!(r > 0.0)) return std::numeric_limits<double>::infinity();
+        sum += e.weight * glm::length(e.b - e.a) / (r * r);
+    }
+    return sum / (4.0 * std::numbers::pi) * (1.0 + 1e-9);
+}
+
+bool MeshQuery::segmentCrossings(const dvec3& q, const dvec3& p, int& net, std::uint64_t* visits) const {
+    net = 0;
+    if (m_nodes.empty()) return true;
+    const dvec3 direction = p - q;
+    // Boxes widened by more than the float rounding of the ends and of the boxes' own test.
+    const float slack = float(1e-5 * (m_scale + 1.0));
+    using Float4 = float __attribute__((vector_size(16)));
+    auto splat = [](float v) { return Float4{v, v, v, v}; };
+    Float4 origin[3], inverse[3];
+    for (int a = 0; a < 3; ++a) {
+        origin[a] = splat(float(q[a]));
+        const float d = float(direction[a]);
+        inverse[a] = splat(1.0f / (std::abs(d) > 1e-30f ? d : 1e-30f));
+    }
+    const double tolerance = 1e-9 * (m_scale + 1.0); // an end this near a triangle's plane is on it
+    constexpr double kEdge = 1e-7;                   // a crossing this near an edge (barycentric) is on it
+    struct Entry {
+        std::uint32_t node, count;
+    };
+    Entry stack[kStack];
+    int top = 0;
+    stack[top++] = {0, 0};
+    std::uint64_t tested = 0;
+    bool certain = true;
+    while (top > 0 && certain) {
+        const Entry entry = stack[--top];
+        if (entry.count > 0) {
+            for (std::uint32_t slot = entry.node; slot < entry.node + entry.count; ++slot) {
+                const double* c = m_corners.data() + std::size_t(slot) * 9;
+                const dvec3 a(c[0], c[1], c[2]), b(c[3], c[4], c[5]), d(c[6], c[7], c[8]);
+                const dvec3 n = glm::cross(b - a, d - a);
+                const double area2 = glm::dot(n, n);
+                if (!(area2 > 0.0)) continue; // no area: its solid angle is zero everywhere
+                const dvec3 unit = n / std::sqrt(area2);
+                const double sq = glm::dot(q - a, unit), sp = glm::dot(p - a, unit);
+                if ((sq > tolerance && sp > tolerance) || (sq < -tolerance && sp < -tolerance)) continue;
+                if (std::abs(sq) <= tolerance || std::abs(sp) <= tolerance) {
+                    certain = false; // an end on the triangle's plane, and the boxes met
+                    break;
+                }
+                const dvec3 x = q + direction * (sq / (sq - sp));
+                const double la = glm::dot(glm::cross(d - b, x - b), n) / area2;
+                const double lb = glm::dot(glm::cross(a - d, x - d), n) / area2;
+                const double lc = glm::dot(glm::cross(b - a, x - a), n) / area2;
+                if (la < -kEdge || lb < -kEdge || lc < -kEdge) continue; // beside the triangle
+                if (la <= kEdge || lb <= kEdge || lc <= kEdge) {
+                    certain = false;
+                    break;
+                }
+                net += glm::dot(direction, n) > 0.0 ? -1 : 1; // out through the front: w falls by one
+            }
+            continue;
+        }
+        const Node& node = m_nodes[entry.node];
+        ++tested;
+        Float4 near = splat(0.0f), far = splat(1.0f);
+        for (int a = 0; a < 3; ++a) {
+            Float4 lo, hi;
+            std::memcpy(&lo, node.lo[a], 16);
+            std::memcpy(&hi, node.hi[a], 16);
+            const Float4 t0 = (lo - slack - origin[a]) * inverse[a];
+            const Float4 t1 = (hi + slack - origin[a]) * inverse[a];
+            const Float4 enter = t0 < t1 ? t0 : t1, leave = t0 < t1 ? t1 : t0;
+            near = enter > near ? enter : near;
+            far = leave < far ? leave : far;
+        }
+        for (int k = 0; k < 4 && top < kStack; ++k) {
+            if (node.count[k] == 0 && node.child[k] == 0) continue; // an empty slot (0 is the root)
+            if (near[k] <= far[k] * (1.0f + 1e-5f) + 1e-5f) stack[top++] = {node.child[k], node.count[k]};
+        }
+    }
+    if (visits) *visits += tested;
+    return certain;
 }
 
 bool MeshQuery::parityInside(const dvec3& p) const {
@@ -436,7 +606,7 @@ bool MeshQuery::inside(const dvec3& p, double distance, std::uint32_t slot, int 
     switch (m_field.options.sign) {
     case SignMethod::Winding: {
         bool fromCache = false;
-        const bool in = cachedWindingInside(p, distance, fromCache, counters ? &counters->windingNodes : nullptr);
+        const bool in = cachedWindingInside(p, distance, fromCache, counters);
         if (counters && fromCache) ++counters->cachedSigns;
         return in;
     }
@@ -570,6 +740,8 @@ std::uint64_t MeshQuery::evaluate(const RowView& rows, std::size_t count, const 
             counters->nearestNodes += local.nearestNodes;
             counters->windingNodes += local.windingNodes;
             counters->cachedSigns += local.cachedSigns;
+            counters->crossedSigns += local.crossedSigns;
+            counters->segmentNodes += local.segmentNodes;
         }
     };
     std::vector<std::thread> pool;

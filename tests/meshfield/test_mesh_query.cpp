@@ -101,6 +101,76 @@ TEST(MeshQueryCpu, TheSignCacheServesAnOpenMeshWhereItsBoundHoldsAndNeverChanges
     EXPECT_EQ(differ, 0);
 }
 
+// Points within a few triangle sizes of the surface, where no lattice point fits inside the empty
+// ball around a row: random points on random triangles, moved off along random directions by
+// 1e-5 to 3e-2, and some exactly on corners and edges' midpoints moved by 1e-6.
+std::vector<float> pointsNearTheSurface(const TriangleMesh& mesh, std::size_t n, unsigned seed) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::normal_distribution<double> g(0.0, 1.0);
+    const std::size_t triangles = mesh.indices.size() / 3;
+    std::vector<float> points;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t t = std::size_t(u(random) * double(triangles)) % triangles;
+        const dvec3 a(mesh.vertices[mesh.indices[3 * t]]), b(mesh.vertices[mesh.indices[3 * t + 1]]),
+            c(mesh.vertices[mesh.indices[3 * t + 2]]);
+        double x = u(random), y = u(random);
+        if (x + y > 1.0) x = 1.0 - x, y = 1.0 - y;
+        dvec3 on = a + x * (b - a) + y * (c - a);
+        if (i % 8 == 0) on = a;             // a corner
+        if (i % 8 == 1) on = (a + b) * 0.5; // an edge
+        const dvec3 direction = glm::normalize(dvec3(g(random), g(random), g(random)));
+        const double offset = i % 8 < 2 ? 1e-6 : std::pow(10.0, -5.0 + 3.5 * u(random));
+        const dvec3 p = on + direction * offset;
+        points.insert(points.end(), {float(p.x), float(p.y), float(p.z)});
+    }
+    return points;
+}
+
+TEST(MeshQueryCpu, RowsNearTheSurfaceTakeTheirSignFromALatticePointAndTheTrianglesBetween) {
+    const TriangleMesh torus = testing::torusMesh(0.6f, 0.25f, 48, 16);
+    TriangleMesh holed = torus;
+    holed.indices.erase(holed.indices.begin(), holed.indices.begin() + 6);
+    struct Case {
+        const char* name;
+        TriangleMesh mesh;
+        double crossedShare; // the least share of rows that must cross (see below)
+    };
+    // On a closed, oriented mesh every row off the surface can cross; on an open one, those far
+    // enough from the open boundary: most with one hole, fewer with 5 % of the faces gone, next to
+    // none with 10 % flipped (every flipped face's rim is open boundary), where the walk decides.
+    const Case cases[] = {{"closed", torus, 0.9},
+                          {"one quad missing", holed, 0.9},
+                          {"5% removed", testing::damaged(torus, testing::Damage::RemoveFivePercent), 0.3},
+                          {"10% flipped", testing::damaged(torus, testing::Damage::FlipTenPercent), 0.0},
+                          {"shell duplicated", testing::damaged(torus, testing::Damage::DuplicateShell), 0.9}};
+    for (const Case& c : cases) {
+        auto field = makeField(c.mesh, SignMethod::Winding);
+        auto query = std::make_unique<MeshQuery>(*field);
+        const std::vector<float> points = pointsNearTheSurface(c.mesh, 20000, 21);
+        const std::size_t n = points.size() / 3;
+        std::vector<float> values(n);
+        QueryCounters counters;
+        query->evaluate({points.data(), 3, values.data(), 1, nullptr, 3}, n, {}, 0, &counters);
+        int differ = 0, compared = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const dvec3 p(points[3 * i], points[3 * i + 1], points[3 * i + 2]);
+            const double w = query->winding(p);
+            // The walk's own sign where it is clear of 1/2 (the hierarchy's approximation): the
+            // sign the rows must have.
+            if (std::abs(values[i]) < 1e-7f || std::abs(w - 0.5) < 0.1) continue;
+            ++compared;
+            if ((values[i] < 0.0f) != (w > 0.5)) ++differ;
+        }
+        std::printf("%-16s %d rows compared, %d differ from the walk; signs: %llu cached, %llu crossed (%.1f nodes a segment)\n",
+                    c.name, compared, differ, (unsigned long long)counters.cachedSigns, (unsigned long long)counters.crossedSigns,
+                    double(counters.segmentNodes) / double(std::max<std::uint64_t>(1, counters.crossedSigns)));
+        EXPECT_EQ(differ, 0) << c.name;
+        EXPECT_GT(compared, int(n) * 9 / 10) << c.name;
+        EXPECT_GE(double(counters.crossedSigns), c.crossedShare * double(n)) << c.name;
+    }
+}
+
 TEST(MeshQueryCpu, EveryThreadCountWritesTheSameRowsBitForBit) {
     auto field = makeField(testing::torusMesh(0.6f, 0.25f, 64, 24), SignMethod::Winding);
     const std::vector<float> points = randomPoints(20000, 5);

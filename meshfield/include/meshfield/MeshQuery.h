@@ -46,6 +46,8 @@ struct QueryCounters {
     std::uint64_t nearestNodes = 0; // nodes whose children's boxes a nearest walk tested
     std::uint64_t windingNodes = 0; // nodes the winding walks opened or took as dipoles
     std::uint64_t cachedSigns = 0;  // rows whose sign came from the sign cache
+    std::uint64_t crossedSigns = 0; // rows whose sign came from a lattice point and the triangles between
+    std::uint64_t segmentNodes = 0; // nodes those segments' walks tested
 };
 
 class MeshQuery {
@@ -91,7 +93,16 @@ private:
     // signedDistance walking from `seed` (kNoSeed: none); leaves the nearest triangle's slot there.
     double seededDistance(const glm::dvec3& p, glm::dvec3* gradient, QueryCounters* counters, std::uint32_t& seed) const;
     bool parityInside(const glm::dvec3& p) const;
-    bool cachedWindingInside(const glm::dvec3& p, double distance, bool& fromCache, std::uint64_t* visits) const;
+    bool cachedWindingInside(const glm::dvec3& p, double distance, bool& fromCache, QueryCounters* counters) const;
+    // The winding sign from the nearest lattice point of the crossing level and the triangles the
+    // segment between them crosses; false when that cannot decide (see the .cpp).
+    bool crossedWindingInside(const glm::dvec3& p, bool& inside, QueryCounters* counters) const;
+    // The oriented crossings of segment q -> p (w(p) - w(q) on the surface's account); false when
+    // a crossing lies too near an edge, a corner or an end to be counted with certainty.
+    bool segmentCrossings(const glm::dvec3& q, const glm::dvec3& p, int& net, std::uint64_t* visits) const;
+    // Bounds |grad w| over the ball of the crossing level's reach around lattice point q (the
+    // open boundary's Biot-Savart field); infinity where the boundary comes that close.
+    double boundarySlope(const glm::dvec3& q) const;
 
     const MeshField& m_field;
     std::vector<Node> m_nodes;     // inner nodes; m_nodes[0] is the root (a leaf root has a one-child node)
@@ -105,6 +116,14 @@ private:
     double m_cacheStep = 0.0;
     int m_cacheSide = 0;
     mutable std::unique_ptr<std::atomic<float>[]> m_cache;
+    // The crossing level (one of the cache's levels) and each of its points' boundary slope
+    // (NaN: not yet); the open boundary as edges (a, b, |net use|).
+    struct BoundaryEdge {
+        glm::dvec3 a, b;
+        double weight;
+    };
+    std::vector<BoundaryEdge> m_boundary;
+    mutable std::unique_ptr<std::atomic<float>[]> m_slopes;
 };
 
 // The query for `field`, built once per field (a process-wide cache holding it as long as the
