@@ -29,6 +29,12 @@ constexpr int kStack = 128; // the hierarchy's depth is at most 60 (MeshField.cp
 // The sign cache's level whose points start the crossing segments: 2^6 + 1 points a side.
 constexpr int kCrossingLevel = 6;
 constexpr int kCrossingSide = (1 << kCrossingLevel) + 1;
+// Where level k (2 .. 7, 2^k + 1 points a side) of the sign cache starts in its one array.
+constexpr std::size_t levelOffset(int k) {
+    std::size_t offset = 0;
+    for (int j = 2; j < k; ++j) offset += std::size_t((1 << j) + 1) * ((1 << j) + 1) * ((1 << j) + 1);
+    return offset;
+}
 
 std::uint32_t asBits(float value) { return std::bit_cast<std::uint32_t>(value); }
 
@@ -100,10 +106,10 @@ double segmentDistance(const dvec3& x, const dvec3& a, const dvec3& b) {
     return glm::length(x - (a + t * ab));
 }
 
-// A float no smaller than `value`.
-float roundedUp(double value) {
-    float f = float(value);
-    return double(f) < value ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+// A float no smaller than `value` (>= 0, or NaN).
+inline float roundedUp(double value) {
+    const float f = float(value);
+    return double(f) < value ? std::bit_cast<float>(std::bit_cast<std::uint32_t>(f) + 1u) : f; // the next float up
 }
 
 unsigned threadCount(unsigned asked) {
@@ -243,11 +249,17 @@ double MeshQuery::nearest(const dvec3& p, std::uint32_t& slot, int& feature, dve
     const float px = float(p.x), py = float(p.y), pz = float(p.z);
     // A box is skipped when its float distance exceeds the best by more than float rounding can
     // explain (boxes are rounded outward already; the slack keeps exact ties walked).
-    auto prune = [&](float d2) { return double(d2) > best * (1.0 + 1e-5) + 1e-30; };
+    // `limit` is that threshold as a float no smaller, so that the test is one float comparison
+    // (four at once for a node's children).
+    const float infinity = std::numeric_limits<float>::infinity();
+    float limit = infinity;
+    auto setLimit = [&] { limit = std::isfinite(best) ? roundedUp(best * (1.0 + 1e-5) + 1e-30) : infinity; };
+    setLimit();
     // Float rounding of a point-triangle distance: a few units in the last place of the coordinates.
     const double margin = 1e-6 * (m_scale + std::abs(p.x) + std::abs(p.y) + std::abs(p.z));
     double bound = std::numeric_limits<double>::infinity();
     if (std::isfinite(best)) bound = (std::sqrt(best) + margin) * (std::sqrt(best) + margin);
+    float boundFloat = roundedUp(bound); // the triangles' float pre-test against `bound`
     struct Entry {
         std::uint32_t node;  // an inner node, or a leaf's first triangle slot
         std::uint32_t count; // 0: an inner node; else the leaf's triangles
@@ -258,7 +270,7 @@ double MeshQuery::nearest(const dvec3& p, std::uint32_t& slot, int& feature, dve
             // A float distance first: a triangle farther than the best by more than float rounding
             // can explain is not computed again in double.
             const float* t = m_field.triangles.data() + std::size_t(s) * kTriangleFloats;
-            if (double(closestDistance2(px, py, pz, t)) > bound) continue;
+            if (closestDistance2(px, py, pz, t) > boundFloat) continue;
             const double* c = m_corners.data() + std::size_t(s) * 9;
             int f = 0;
             const dvec3 q =
@@ -273,6 +285,8 @@ double MeshQuery::nearest(const dvec3& p, std::uint32_t& slot, int& feature, dve
                 closest = q;
                 const double reach = std::sqrt(best) + margin;
                 bound = reach * reach;
+                boundFloat = roundedUp(bound);
+                setLimit();
             }
         }
     };
@@ -285,7 +299,7 @@ double MeshQuery::nearest(const dvec3& p, std::uint32_t& slot, int& feature, dve
     std::uint64_t tested = 0;
     while (top > 0) {
         const Entry entry = stack[--top];
-        if (prune(entry.distance2)) continue;
+        if (entry.distance2 > limit) continue;
         if (entry.count > 0) {
             testLeaf(entry.node, entry.count);
             continue;
@@ -307,11 +321,13 @@ double MeshQuery::nearest(const dvec3& p, std::uint32_t& slot, int& feature, dve
         const Float4 dx = gap(lx, hx, vx), dy = gap(ly, hy, vy), dz = gap(lz, hz, vz);
         const Float4 d2 = dx * dx + dy * dy + dz * dz;
         // The children that may hold a nearer triangle, farthest first onto the stack so that the
-        // nearest is walked next.
+        // nearest is walked next. An empty slot's distance is infinite: above any finite limit.
+        const Float4 limits = {limit, limit, limit, limit};
+        const auto open = d2 <= limits;
         int order[4];
         int n = 0;
         for (int k = 0; k < 4; ++k) {
-            if ((node.count[k] == 0 && node.child[k] == 0) || prune(d2[k])) continue; // empty slot (0 is the root)
+            if (!open[k] || (limit == infinity && node.count[k] == 0 && node.child[k] == 0)) continue; // (0 is the root)
             int at = n++;
             while (at > 0 && d2[order[at - 1]] < d2[k]) {
                 order[at] = order[at - 1];
@@ -378,9 +394,18 @@ bool MeshQuery::cachedWindingInside(const dvec3& p, double distance, bool& fromC
     std::uint64_t* visits = counters ? &counters->windingNodes : nullptr;
     if (m_useCache && distance > 0.0 && std::isfinite(distance)) {
         const double reach2 = distance * distance * 0.998;
-        std::size_t offset = 0;
-        for (int k = 2; k <= 7; ++k) {
+        // The coarsest level whose every point of a cell lies inside the ball (half a cell's
+        // diagonal shorter than the distance), and one coarser, whose nearest point may: the
+        // coarser levels hardly ever hold one, and trying them cost a fifth of a row's time.
+        int coarsest = 7;
+        for (int k = 2; k < 7; ++k)
+            if (m_cacheStep * double(m_cacheSide >> k) * 0.8661 < distance * 0.999) {
+                coarsest = k;
+                break;
+            }
+        for (int k = std::max(2, coarsest - 1); k <= 7; ++k) {
             const int side = (1 << k) + 1;
+            const std::size_t offset = levelOffset(k);
             const double step = m_cacheStep * double(m_cacheSide >> k);
             const dvec3 cell = (p - m_cacheLo) / step;
             int at[3];
@@ -391,7 +416,6 @@ bool MeshQuery::cachedWindingInside(const dvec3& p, double distance, bool& fromC
             }
             const double s2 = glm::dot(q - p, q - p);
             const std::size_t here = offset + (std::size_t(at[2]) * side + std::size_t(at[1])) * side + std::size_t(at[0]);
-            offset += std::size_t(side) * side * side;
             if (!(s2 < reach2)) continue;
             const double s = std::sqrt(s2);
             const double change = m_boundaryLength * s / (4.0 * std::numbers::pi * (distance - s) * (distance - s));
@@ -450,9 +474,7 @@ bool MeshQuery::crossedWindingInside(const dvec3& p, bool& inside, QueryCounters
     }
     const double change = slope * s;
     if (!(change < 0.25)) return false;
-    std::size_t offset = 0;
-    for (int k = 2; k < kCrossingLevel; ++k) offset += std::size_t((1 << k) + 1) * ((1 << k) + 1) * ((1 << k) + 1);
-    std::atomic<float>& cached = m_cache[offset + index];
+    std::atomic<float>& cached = m_cache[levelOffset(kCrossingLevel) + index];
     float w = cached.load(std::memory_order_relaxed);
     if (std::isnan(w)) {
         w = float(winding(q, counters ? &counters->windingNodes : nullptr));

@@ -3,6 +3,9 @@
 #include <shaders/SdfSource.h>
 #include <shaders/ShaderComposer.h>
 
+#include <algorithm>
+#include <string_view>
+
 namespace sdfwb::sampling {
 
 std::vector<shaders::Diagnostic> FieldEvaluator::build(const shaders::PreparedSdf& sdf) {
@@ -24,6 +27,11 @@ Expected<SamplingReport> FieldEvaluator::evaluate(const float* points, std::uint
     job.gradientStep = settings.gradientStep;
     job.meshGradientTaps = settings.meshGradientTaps;
     job.chunkSize = settings.chunk;
+    // On the CPU engine a chunk of points costs no GL memory (the engine writes the caller's arrays),
+    // and the larger the chunk the nearer its points lie to each other in the engine's Morton order
+    // (a 1.1 M-triangle mesh at 2 M points: 0.22 M points/s in chunks of 2^18, 0.27 M in one).
+    if (std::string_view(m_compute.meshEngine()) == "cpu")
+        job.chunkSize = std::max(job.chunkSize, renderer::SampleCompute::kMaxChunk);
     job.inputPoints = points;
     job.sdfParameters = settings.parameters;
     // The points are the caller's: no positions back, and no gradient taps unless asked for.
