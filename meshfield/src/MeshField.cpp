@@ -61,6 +61,60 @@ double boxDistance2(const dvec3& p, const Box& box) {
     return glm::dot(d, d);
 }
 
+// The four-wide hierarchy (kWideNodeFloats) from the binary one: each node takes its binary node's
+// children, or a child's children where that child is inner, so that one step tests four boxes.
+void buildWideNodes(MeshField& field) {
+    field.wideNodes.clear();
+    field.wideDepth = 0;
+    if (field.nodes.empty()) return;
+    auto binary = [&](std::uint32_t index) { return field.nodes.data() + std::size_t(index) * kNodeFloats; };
+    auto isLeaf = [&](std::uint32_t index) { return asBits(binary(index)[7]) > 0; };
+    // Returns the wide node's index; `level` counts inner nodes from the root.
+    auto collapse = [&](auto& self, std::uint32_t index, std::size_t level) -> std::uint32_t {
+        field.wideDepth = std::max(field.wideDepth, level + 1);
+        std::uint32_t members[4];
+        int n = 0;
+        if (isLeaf(index)) { // a leaf root: one child
+            members[n++] = index;
+        } else {
+            const std::uint32_t left = asBits(binary(index)[3]);
+            for (std::uint32_t c : {left, left + 1}) {
+                if (isLeaf(c)) {
+                    members[n++] = c;
+                } else {
+                    const std::uint32_t grand = asBits(binary(c)[3]);
+                    members[n++] = grand;
+                    members[n++] = grand + 1;
+                }
+            }
+        }
+        const std::uint32_t at = std::uint32_t(field.wideNodes.size() / kWideNodeFloats);
+        field.wideNodes.resize(field.wideNodes.size() + kWideNodeFloats);
+        float node[kWideNodeFloats];
+        for (int k = 0; k < 4; ++k) {
+            for (int a = 0; a < 3; ++a) {
+                node[4 * a + k] = std::numeric_limits<float>::infinity();
+                node[12 + 4 * a + k] = -std::numeric_limits<float>::infinity();
+            }
+            node[24 + k] = asFloat(0u);
+            node[28 + k] = asFloat(0u);
+        }
+        for (int k = 0; k < n; ++k) {
+            const float* m = binary(members[k]);
+            for (int a = 0; a < 3; ++a) {
+                node[4 * a + k] = m[a];
+                node[12 + 4 * a + k] = m[4 + a];
+            }
+            const std::uint32_t count = asBits(m[7]);
+            node[28 + k] = asFloat(count);
+            node[24 + k] = asFloat(count > 0 ? asBits(m[3]) : self(self, members[k], level + 1));
+        }
+        std::copy(node, node + kWideNodeFloats, field.wideNodes.begin() + std::ptrdiff_t(at) * kWideNodeFloats);
+        return at;
+    };
+    collapse(collapse, 0, 0);
+}
+
 struct Builder {
     const std::vector<dvec3>& centroid;
     const std::vector<Box>& triBox;
@@ -536,6 +590,9 @@ Expected<std::shared_ptr<MeshField>> buildField(TriangleMesh mesh, const std::st
         if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
             return Error{name + ": a vertex is not a finite number"};
     if (!(options.beta >= 1.0)) return Error{name + ": beta must be at least 1"};
+    // The GPU's nearest walk keeps a leaf's first triangle in 28 bits (mesh_field.glsl).
+    if (mesh.triangles() >= (std::size_t(1) << 28))
+        return Error{name + ": " + std::to_string(mesh.triangles()) + " triangles; sdfwb holds at most 268,435,455"};
     auto field = std::make_shared<MeshField>();
     field->name = name;
     field->options = options;
@@ -705,6 +762,8 @@ Expected<std::shared_ptr<MeshField>> buildField(TriangleMesh mesh, const std::st
             n[19 + 4 * row] = 0.0f;
         }
     }
+
+    buildWideNodes(*field);
 
     if (options.sign == SignMethod::Pseudonormal) {
         // Angle-weighted vertex normals, edge normals as the sum of the faces' normals.

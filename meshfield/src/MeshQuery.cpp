@@ -126,10 +126,10 @@ unsigned threadCount(unsigned asked) {
 // The parity sign's three ray directions (MeshField.cpp; the same in shaders/mesh/mesh_field.glsl).
 const std::array<glm::dvec3, 3>& parityDirections();
 
-// An inner node of the hierarchy as the CPU walks it: up to four children (a binary node's
-// grandchildren) with their boxes side by side, so that one step tests four boxes in one vector
-// operation without touching the children. child[k] is an inner node's index (count[k] == 0) or a
-// leaf's first triangle slot (count[k] triangles); an empty slot has an empty box (lo +inf, hi -inf),
+// An inner node of the hierarchy as the CPU walks it: MeshField's four-wide node (kWideNodeFloats),
+// the children's boxes side by side, so that one step tests four boxes in one vector operation
+// without touching the children. child[k] is an inner node's index (count[k] == 0) or a leaf's
+// first triangle slot (count[k] triangles); an empty slot has an empty box (lo +inf, hi -inf),
 // whose distance is infinite.
 struct alignas(64) MeshQuery::Node {
     float lo[3][4];
@@ -139,51 +139,9 @@ struct alignas(64) MeshQuery::Node {
 };
 
 MeshQuery::MeshQuery(const MeshField& field) : m_field(field) {
-    const std::size_t gpuNodes = field.nodes.size() / kNodeFloats;
-    auto gpu = [&](std::uint32_t index) { return field.nodes.data() + std::size_t(index) * kNodeFloats; };
-    auto isLeaf = [&](std::uint32_t index) { return asBits(gpu(index)[7]) > 0; };
-    // Collapses binary node `index` with its children into one four-wide node; returns its index.
-    auto collapse = [&](auto& self, std::uint32_t index) -> std::uint32_t {
-        std::uint32_t members[4];
-        int n = 0;
-        if (isLeaf(index)) {
-            members[n++] = index;
-        } else {
-            const std::uint32_t left = asBits(gpu(index)[3]);
-            for (std::uint32_t c : {left, left + 1}) {
-                if (isLeaf(c)) {
-                    members[n++] = c;
-                } else {
-                    const std::uint32_t grand = asBits(gpu(c)[3]);
-                    members[n++] = grand;
-                    members[n++] = grand + 1;
-                }
-            }
-        }
-        const std::uint32_t at = std::uint32_t(m_nodes.size());
-        m_nodes.emplace_back();
-        Node node{};
-        for (int k = 0; k < 4; ++k) {
-            for (int a = 0; a < 3; ++a) {
-                node.lo[a][k] = std::numeric_limits<float>::infinity();
-                node.hi[a][k] = -std::numeric_limits<float>::infinity();
-            }
-            node.child[k] = 0;
-            node.count[k] = 0;
-        }
-        for (int k = 0; k < n; ++k) {
-            const float* m = gpu(members[k]);
-            for (int a = 0; a < 3; ++a) {
-                node.lo[a][k] = m[a];
-                node.hi[a][k] = m[4 + a];
-            }
-            node.count[k] = asBits(m[7]);
-            node.child[k] = node.count[k] > 0 ? asBits(m[3]) : self(self, members[k]);
-        }
-        m_nodes[at] = node;
-        return at;
-    };
-    if (gpuNodes > 0) collapse(collapse, 0);
+    static_assert(sizeof(Node) == kWideNodeFloats * sizeof(float), "MeshQuery::Node is MeshField's four-wide node");
+    m_nodes.resize(field.wideNodes.size() / kWideNodeFloats);
+    if (!m_nodes.empty()) std::memcpy(static_cast<void*>(m_nodes.data()), field.wideNodes.data(), m_nodes.size() * sizeof(Node));
     const std::size_t slots = field.triangles.size() / kTriangleFloats;
     m_corners.resize(slots * 9);
     for (std::size_t s = 0; s < slots; ++s)

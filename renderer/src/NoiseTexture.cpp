@@ -102,7 +102,10 @@ GlBuffer storageBuffer(const std::vector<float>& data) {
 void bindMesh(SdfTextures& textures, const std::shared_ptr<const meshfield::MeshField>& mesh) {
     if (textures.mesh != mesh) {
         textures.mesh = mesh;
-        textures.meshNodes = storageBuffer(mesh->nodes);
+        // The binary hierarchy, then the four-wide one (SDFWB_MESH_WIDE: where it starts).
+        std::vector<float> nodes = mesh->nodes;
+        nodes.insert(nodes.end(), mesh->wideNodes.begin(), mesh->wideNodes.end());
+        textures.meshNodes = storageBuffer(nodes);
         textures.meshTriangles = storageBuffer(mesh->triangles);
         textures.meshPseudonormals = storageBuffer(mesh->pseudonormals);
     }

@@ -93,26 +93,41 @@ vec3 sdfwb_meshClosest(vec3 p, vec3 a, vec3 b, vec3 c, out int feature) {
     return a + ab * (vb / sum) + ac * (vc / sum);
 }
 
+// One compare-exchange of a sorting network: order[i] before order[j] when farther.
+void sdfwb_meshOrder(inout ivec4 order, vec4 d2, int i, int j) {
+    if (d2[order[i]] < d2[order[j]]) {
+        int swapped = order[i];
+        order[i] = order[j];
+        order[j] = swapped;
+    }
+}
+
 // The squared distance to the nearest triangle, which triangle (leaf order), its feature and point;
 // `bound2` when no triangle is nearer than its root (then triangle 0 and closest p): a walk that
-// needs the distance only below a bound prunes every box beyond it.
+// needs the distance only below a bound prunes every box beyond it. It walks the four-wide
+// hierarchy (meshfield::kWideNodeFloats, from vec4 SDFWB_MESH_WIDE on): one step reads a node's
+// eight vec4 and tests its four children's boxes at once, nearest child walked next; a stack entry
+// is an inner node, or a leaf (top bit set, its first triangle times 8 plus its count), with the
+// distance of its box, so that an entry a nearer triangle has since put out of reach costs no read.
 float sdfwb_meshNearestWithin(vec3 p, float bound2, out uint triangle, out int feature, out vec3 closest) {
     triangle = 0u;
     feature = 0;
     closest = p;
     if (sdfwb_meshIdleLane()) return 1.0;
-    uint stack[SDFWB_MESH_STACK];
+    uint stack[SDFWB_MESH_WIDE_STACK];
+    float reach[SDFWB_MESH_WIDE_STACK];
     int top = 0;
-    stack[top++] = 0u;
+    stack[0] = 0u;
+    reach[0] = 0.0;
+    top = 1;
     float best = bound2;
     while (top > 0) {
-        uint n = stack[--top];
-        vec4 lo = sdfwb_meshNodes[SDFWB_MESH_NODE * n];
-        vec4 hi = sdfwb_meshNodes[SDFWB_MESH_NODE * n + 1u];
-        if (sdfwb_meshBoxDistance2(p, lo.xyz, hi.xyz) >= best) continue;
-        uint first = floatBitsToUint(lo.w);
-        uint count = floatBitsToUint(hi.w);
-        if (count > 0u) {
+        --top;
+        if (reach[top] >= best) continue;
+        uint entry = stack[top];
+        if ((entry & 0x80000000u) != 0u) {
+            uint first = (entry & 0x7fffffffu) >> 3u;
+            uint count = entry & 7u;
             // A constant bound: the driver unrolls the leaf, so that its triangles cost no loop budget.
             for (uint k = 0u; k < SDFWB_MESH_LEAF; ++k) {
                 if (k >= count) break;
@@ -130,15 +145,28 @@ float sdfwb_meshNearestWithin(vec3 p, float bound2, out uint triangle, out int f
             }
             continue;
         }
-        float dl = sdfwb_meshBoxDistance2(p, sdfwb_meshNodes[SDFWB_MESH_NODE * first].xyz,
-                                          sdfwb_meshNodes[SDFWB_MESH_NODE * first + 1u].xyz);
-        float dr = sdfwb_meshBoxDistance2(p, sdfwb_meshNodes[SDFWB_MESH_NODE * (first + 1u)].xyz,
-                                          sdfwb_meshNodes[SDFWB_MESH_NODE * (first + 1u) + 1u].xyz);
-        // The nearer child on top; a child already farther than the best is never pushed.
-        uint nearChild = dl < dr ? first : first + 1u;
-        uint farChild = dl < dr ? first + 1u : first;
-        if (max(dl, dr) < best) stack[top++] = farChild;
-        if (min(dl, dr) < best) stack[top++] = nearChild;
+        uint at = SDFWB_MESH_WIDE + 8u * entry;
+        vec4 dx = max(max(sdfwb_meshNodes[at] - p.x, p.x - sdfwb_meshNodes[at + 3u]), vec4(0.0));
+        vec4 dy = max(max(sdfwb_meshNodes[at + 1u] - p.y, p.y - sdfwb_meshNodes[at + 4u]), vec4(0.0));
+        vec4 dz = max(max(sdfwb_meshNodes[at + 2u] - p.z, p.z - sdfwb_meshNodes[at + 5u]), vec4(0.0));
+        vec4 d2 = dx * dx + dy * dy + dz * dz; // an empty slot's is infinite
+        uvec4 child = floatBitsToUint(sdfwb_meshNodes[at + 6u]);
+        uvec4 count = floatBitsToUint(sdfwb_meshNodes[at + 7u]);
+        // The children by distance, farthest first (five compare-exchanges), pushed while nearer
+        // than the best: the nearest ends on top.
+        ivec4 order = ivec4(0, 1, 2, 3);
+        sdfwb_meshOrder(order, d2, 0, 1);
+        sdfwb_meshOrder(order, d2, 2, 3);
+        sdfwb_meshOrder(order, d2, 0, 2);
+        sdfwb_meshOrder(order, d2, 1, 3);
+        sdfwb_meshOrder(order, d2, 1, 2);
+        for (int j = 0; j < 4; ++j) {
+            int k = order[j];
+            if (!(d2[k] < best) || top >= SDFWB_MESH_WIDE_STACK) continue;
+            stack[top] = count[k] > 0u ? (0x80000000u | (child[k] << 3u) | count[k]) : child[k];
+            reach[top] = d2[k];
+            ++top;
+        }
     }
     return top > 0 ? sdfwb_meshCut() : best;
 }

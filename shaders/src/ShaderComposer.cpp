@@ -152,6 +152,10 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
         all["SDFWB_MESH_NODE"] = std::to_string(meshfield::kNodeFloats / 4) + "u";
         all["SDFWB_MESH_LEAF"] = std::to_string(meshfield::kMaxLeafTriangles) + "u";
         all["SDFWB_MESH_STACK"] = std::to_string(sdf.mesh->depth + 2);
+        all["SDFWB_MESH_WIDE"] = std::to_string(sdf.mesh->nodes.size() / 4) + "u";
+        // A walk of the four-wide hierarchy leaves at most three siblings a level on its stack,
+        // and a last node's four children.
+        all["SDFWB_MESH_WIDE_STACK"] = std::to_string(3 * sdf.mesh->wideDepth + 4);
         if (sdf.meshIsTheField) all["SDFWB_MESH_SURFACE"] = "1";
         if (stage == Stage::Fragment) all["SDFWB_MESH_FRAGMENT"] = "1"; // mesh_field.glsl's helper lanes
         char beta[32];

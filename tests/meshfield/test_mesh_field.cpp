@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -73,6 +74,64 @@ TEST(MeshFieldCpu, TheHierarchyFindsTheNearestTriangleABruteForceScanFinds) {
     }
     for (const dvec3& p : points) worst = std::max(worst, std::abs(f->distance(p) - bruteDistance(mesh, p)));
     EXPECT_LT(worst, 1e-12) << "the hierarchy's nearest distance differs from the brute-force scan";
+}
+
+// The four-wide hierarchy (what the CPU engine and the GPU's nearest walk read): every triangle
+// slot in exactly one leaf, each child's box holding its triangles (or its children's boxes), and
+// no path from the root longer than wideDepth inner nodes (mesh_field.glsl sizes its stack by it).
+TEST(MeshFieldCpu, TheFourWideHierarchyHoldsEveryTriangleOnceInsideItsBoxes) {
+    const TriangleMesh torus = testing::torusMesh(kR, kr, 64, 24);
+    for (const TriangleMesh& mesh : {torus, testing::damaged(torus, testing::Damage::RemoveFivePercent)}) {
+        auto f = makeMeshField(mesh, "torus.obj", {});
+        ASSERT_TRUE(f.hasValue());
+        const MeshField& field = **f;
+        const std::size_t slots = field.triangles.size() / kTriangleFloats;
+        std::vector<int> seen(slots, 0);
+        auto bits = [](float v) { return std::bit_cast<std::uint32_t>(v); };
+        std::size_t deepest = 0;
+        // (node, depth), and the box the node's children must lie in.
+        struct Visit {
+            std::uint32_t node;
+            std::size_t depth;
+            float lo[3], hi[3];
+        };
+        const float inf = std::numeric_limits<float>::infinity();
+        std::vector<Visit> stack = {{0, 1, {-inf, -inf, -inf}, {inf, inf, inf}}};
+        while (!stack.empty()) {
+            const Visit v = stack.back();
+            stack.pop_back();
+            deepest = std::max(deepest, v.depth);
+            const float* n = field.wideNodes.data() + std::size_t(v.node) * kWideNodeFloats;
+            for (int k = 0; k < 4; ++k) {
+                const std::uint32_t child = bits(n[24 + k]), count = bits(n[28 + k]);
+                const float lo[3] = {n[k], n[4 + k], n[8 + k]}, hi[3] = {n[12 + k], n[16 + k], n[20 + k]};
+                if (count == 0 && child == 0) { // an empty slot: an empty box
+                    EXPECT_GT(lo[0], hi[0]);
+                    continue;
+                }
+                for (int a = 0; a < 3; ++a) {
+                    EXPECT_GE(lo[a], v.lo[a]);
+                    EXPECT_LE(hi[a], v.hi[a]);
+                }
+                if (count == 0) {
+                    stack.push_back({child, v.depth + 1, {lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}});
+                    continue;
+                }
+                EXPECT_LE(count, kMaxLeafTriangles);
+                for (std::uint32_t s = child; s < child + count && s < slots; ++s) {
+                    ++seen[s];
+                    for (int corner = 0; corner < 3; ++corner)
+                        for (int a = 0; a < 3; ++a) {
+                            const float x = field.triangles[s * kTriangleFloats + std::size_t(corner * 4 + a)];
+                            EXPECT_TRUE(x >= lo[a] && x <= hi[a]) << "slot " << s;
+                        }
+                }
+            }
+        }
+        EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), std::ptrdiff_t(slots));
+        EXPECT_EQ(deepest, field.wideDepth);
+        EXPECT_LE(field.wideDepth, field.depth / 2 + 1); // two binary levels a step
+    }
 }
 
 TEST(MeshFieldCpu, HierarchicalWindingNumbersMatchTheExactSum) {

@@ -81,6 +81,14 @@ inline constexpr std::uint32_t kMaxLeafTriangles = 4;
 //   centroid; exact, since n is constant on a triangle), row i at [16 + 4i .. 18 + 4i]; [19], [23],
 //   [27] unused. Far clusters add the dipole's term and M's (Barill et al. 2018, second order).
 inline constexpr int kNodeFloats = 28;
+// The same hierarchy with four children a node (a binary node's children, or where a child is a
+// leaf, that leaf), for walks that test a node's children's boxes at once (the CPU engine, and the
+// GPU's nearest walk): 32 floats (eight vec4) a node, node 0 the root.
+//   [0..3] the four children's box min x, [4..7] min y, [8..11] min z, [12..23] box max x, y, z
+//   [24..27] each child as bits: an inner node's index (count 0) or a leaf's first triangle slot
+//   [28..31] each child's triangle count as bits (0: an inner node)
+// An empty slot has the box +inf..-inf, child 0 and count 0.
+inline constexpr int kWideNodeFloats = 32;
 // One triangle: three vec4 (corners, w unused), in leaf order.
 inline constexpr int kTriangleFloats = 12;
 // Pseudonormals of one triangle (only for SignMethod::Pseudonormal): face, edges ab bc ca,
@@ -98,14 +106,18 @@ struct MeshField {
     std::size_t nonManifoldEdges = 0;   // edges used by more than two
     double readSeconds = 0.0;
     double buildSeconds = 0.0;
-    std::size_t depth = 0; // of the hierarchy
+    std::size_t depth = 0;     // of the hierarchy
+    std::size_t wideDepth = 0; // inner nodes on the longest path from the root of the four-wide one
 
     // What the GPU reads (see kNodeFloats ...).
     std::vector<float> nodes;
+    std::vector<float> wideNodes;
     std::vector<float> triangles;
     std::vector<float> pseudonormals;
     bool closed() const { return boundaryEdges == 0 && nonManifoldEdges == 0; }
-    std::size_t gpuBytes() const { return (nodes.size() + triangles.size() + pseudonormals.size()) * sizeof(float); }
+    std::size_t gpuBytes() const {
+        return (nodes.size() + wideNodes.size() + triangles.size() + pseudonormals.size()) * sizeof(float);
+    }
 
     // Unsigned distance to the mesh (BVH, double precision).
     double distance(const glm::dvec3& p) const;
