@@ -512,12 +512,18 @@ with open(OUT, "w") as out:
                   "reference (above 1: sdfwb is faster). What sdfwb does: one nearest walk a row over four-wide nodes "
                   "that hold their children's boxes, rows in Morton order with each walk seeded by the last row's "
                   "triangle, the exact gradient from that walk's closest point, and winding numbers shared between "
-                  "rows (a lattice point inside the empty ball of radius |d| around a row gives that row's sign "
-                  "when the winding number cannot change by enough on the way, a bound from the length of the "
-                  "mesh's open boundary: none on closed, oriented meshes). Where it loses: the references' "
-                  "pseudonormal sign costs nothing once the closest point is known, but is wrong behind holes and "
-                  "flipped faces (the wrong-signs column); sdfwb's winding sign is right there and costs a "
-                  "hierarchy walk wherever the cache cannot decide.\n\n")
+                  "rows: a lattice point inside the empty ball of radius |d| around a row gives that row's sign "
+                  "when the winding number cannot change by enough on the way (a bound from the mesh's open "
+                  "boundary: none on closed, oriented meshes); nearer the surface, the nearest point of a 65^3 "
+                  "lattice plus the triangles the short segment from it to the row crosses (each crossing changes "
+                  "the winding number by exactly one), within the same kind of bound. Only rows whose segment "
+                  "passes within rounding of an edge, or that lie too near an open boundary, walk the winding "
+                  "hierarchy. ")
+        if min(ratios) < 1.0:
+            out.write("Where it loses: the references' pseudonormal sign costs nothing once the closest point is "
+                      "known, but is wrong behind holes and flipped faces (the wrong-signs column); sdfwb's winding "
+                      "sign is right there and costs a lattice lookup, a segment walk or a hierarchy walk a row.")
+        out.write("\n\n")
     out.write("\n## What runs out of budget on llvmpipe\n\nllvmpipe (Mesa's CPU driver, what this machine has) ends "
               "a shader invocation's loops after 65535 iterations in all, counted across every call the invocation "
               "makes. A mesh SDF walks its hierarchy in loops (a nearest-triangle walk and a winding-number walk per "
