@@ -1,6 +1,7 @@
 #include <shaders/MarchAnalysis.h>
 
 #include <shaders/GlslChecker.h>
+#include <shaders/SdfSource.h>
 
 #include <glslang/Include/intermediate.h>
 #include <glslang/MachineIndependent/localintermediate.h>
@@ -8,6 +9,7 @@
 #include <glslang/Public/ShaderLang.h>
 
 #include <algorithm>
+#include <cctype>
 #include <deque>
 #include <map>
 #include <set>
@@ -160,6 +162,239 @@ bool stepsBy(const std::vector<Assignment>& assignments, TIntermAggregate* call)
     return false;
 }
 
+// A type as GLSL writes it (float, ivec3, mat3, a struct's name); empty for arrays and others.
+std::string glslTypeName(const glslang::TType& type) {
+    if (type.isArray()) return {};
+    if (type.getBasicType() == glslang::EbtStruct) return type.getTypeName().c_str();
+    const char* scalar = nullptr;
+    const char* prefix = nullptr;
+    switch (type.getBasicType()) {
+    case glslang::EbtFloat:
+        scalar = "float", prefix = "";
+        break;
+    case glslang::EbtInt:
+        scalar = "int", prefix = "i";
+        break;
+    case glslang::EbtUint:
+        scalar = "uint", prefix = "u";
+        break;
+    case glslang::EbtBool:
+        scalar = "bool", prefix = "b";
+        break;
+    default:
+        return {};
+    }
+    if (type.isScalar()) return scalar;
+    if (type.isVector()) return std::string(prefix) + "vec" + std::to_string(type.getVectorSize());
+    if (type.isMatrix() && type.getBasicType() == glslang::EbtFloat) {
+        const int columns = type.getMatrixCols(), rows = type.getMatrixRows();
+        return "mat" + std::to_string(columns) + (columns == rows ? "" : "x" + std::to_string(rows));
+    }
+    return {};
+}
+
+std::vector<TIntermSymbol*> parametersOf(TIntermAggregate* function) {
+    std::vector<TIntermSymbol*> parameters;
+    if (function->getSequence().empty()) return parameters;
+    if (TIntermAggregate* list = function->getSequence().front()->getAsAggregate())
+        for (TIntermNode* node : list->getSequence())
+            if (TIntermSymbol* symbol = node->getAsSymbolNode()) parameters.push_back(symbol);
+    return parameters;
+}
+
+bool isInParameter(const TIntermSymbol* symbol) {
+    const glslang::TStorageQualifier storage = symbol->getQualifier().storage;
+    return storage == glslang::EvqIn || storage == glslang::EvqConstReadOnly;
+}
+
+std::size_t lineStart(const std::string& text, int line) {
+    std::size_t at = 0;
+    for (int i = 1; i < line; ++i) {
+        at = text.find('\n', at);
+        if (at == std::string::npos) return std::string::npos;
+        ++at;
+    }
+    return at;
+}
+
+std::string trimmed(const std::string& text) {
+    const std::size_t first = text.find_first_not_of(" \t\r\n");
+    if (first == std::string::npos) return {};
+    return text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
+}
+
+bool isWordCharacter(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// The arguments of the first call of `name` on `line` of `text` (comments blanked), split at the
+// call's own commas; `before` receives the line's text before the name. Empty when none is found.
+std::vector<std::string> callArguments(const std::string& text, int line, const std::string& name, std::string* before) {
+    const std::size_t start = lineStart(text, line);
+    if (start == std::string::npos) return {};
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    for (std::size_t at = text.find(name, start); at != std::string::npos && at < end; at = text.find(name, at + 1)) {
+        if ((at > 0 && isWordCharacter(text[at - 1])) ||
+            (at + name.size() < text.size() && isWordCharacter(text[at + name.size()])))
+            continue;
+        std::size_t open = text.find_first_not_of(" \t\r\n", at + name.size());
+        if (open == std::string::npos || text[open] != '(') continue;
+        std::vector<std::string> arguments;
+        std::string current;
+        int depth = 0;
+        for (std::size_t i = open; i < text.size(); ++i) {
+            const char c = text[i];
+            if (c == '(' || c == '[' || c == '{') {
+                if (depth++ == 0) continue;
+            } else if (c == ')' || c == ']' || c == '}') {
+                if (--depth == 0) {
+                    arguments.push_back(trimmed(current));
+                    if (before) *before = text.substr(start, at - start);
+                    return arguments;
+                }
+            } else if (c == ',' && depth == 1) {
+                arguments.push_back(trimmed(current));
+                current.clear();
+                continue;
+            }
+            current += c;
+        }
+        return {};
+    }
+    return {};
+}
+
+// Traces the values of a field's parameters after the point (see MarchedFunction) from the march's
+// call in `marcher` back to mainImage's call of `marcher`. Fills `m`'s prelude, bindings and
+// arguments, or its `unresolved`.
+void traceArguments(MarchedFunction& m, TIntermAggregate* call, TIntermAggregate* callee, TIntermAggregate* marcher,
+                    TIntermAggregate* mainImage, const ComposedShader& composed) {
+    auto fail = [&m](std::string reason) {
+        m.unresolved = std::move(reason);
+        m.prelude.clear(), m.bindings.clear(), m.scoped.clear(), m.arguments.clear();
+    };
+    const std::vector<TIntermSymbol*> fieldParameters = parametersOf(callee);
+    m.extraParameters = int(fieldParameters.size()) - 1;
+    if (m.extraParameters <= 0) return;
+    for (std::size_t i = 1; i < fieldParameters.size(); ++i)
+        if (!isInParameter(fieldParameters[i])) {
+            fail("its parameter '" + std::string(fieldParameters[i]->getName().c_str()) + "' is out or inout");
+            return;
+        }
+    if (marcher == mainImage) {
+        fail("mainImage marches it itself");
+        return;
+    }
+    // The march's arguments after the point read only the marching function's parameters and
+    // file-scope names (not its locals: what computes those runs inside the march).
+    const std::vector<TIntermSymbol*> marcherParameters = parametersOf(marcher);
+    std::set<std::string> read;
+    struct Symbols : glslang::TIntermTraverser {
+        std::vector<TIntermSymbol*> found;
+        void visitSymbol(TIntermSymbol* node) override { found.push_back(node); }
+    };
+    for (std::size_t i = 1; i < call->getSequence().size(); ++i) {
+        Symbols symbols;
+        call->getSequence()[i]->traverse(&symbols);
+        for (TIntermSymbol* symbol : symbols.found) {
+            const bool parameter = std::any_of(marcherParameters.begin(), marcherParameters.end(),
+                                               [&](TIntermSymbol* p) { return p->getId() == symbol->getId(); });
+            if (parameter) {
+                read.insert(symbol->getName().c_str());
+            } else if (symbol->getQualifier().storage == glslang::EvqTemporary) {
+                fail("'" + std::string(symbol->getName().c_str()) + "' is computed inside " + plainName(marcher->getName()));
+                return;
+            }
+        }
+    }
+    const int file = call->getLoc().string;
+    if (file < 0 || file >= int(composed.map.files.size()) || mainImage->getLoc().string != file ||
+        marcher->getLoc().string != file) {
+        fail("the march and mainImage are in different files");
+        return;
+    }
+    const std::string text = stripComments(composed.map.files[std::size_t(file)].text);
+    const std::vector<std::string> fieldArguments = callArguments(text, call->getLoc().line, m.name, nullptr);
+    if (fieldArguments.size() != fieldParameters.size()) {
+        fail("its call's arguments could not be read");
+        return;
+    }
+    for (std::size_t i = 1; i < fieldArguments.size(); ++i) m.arguments += ", " + fieldArguments[i];
+    // mainImage's statement that calls the marching function: at the top of its body, so that the
+    // statements before it are the prelude.
+    TIntermAggregate* body = mainImage->getSequence().size() > 1 ? mainImage->getSequence()[1]->getAsAggregate() : nullptr;
+    TIntermAggregate* marcherCall = nullptr;
+    if (!body) {
+        fail("mainImage has no body");
+        return;
+    }
+    for (TIntermNode* statement : body->getSequence()) {
+        for (TIntermAggregate* c : contentsOf(statement).calls)
+            if (c->getName() == marcher->getName()) {
+                marcherCall = c;
+                break;
+            }
+        if (!marcherCall) continue;
+        if (statement->getAsLoopNode() || statement->getAsSelectionNode() || statement->getAsBranchNode()) marcherCall = nullptr;
+        break;
+    }
+    std::string before;
+    const std::vector<std::string> values =
+        marcherCall ? callArguments(text, marcherCall->getLoc().line, plainName(marcher->getName()), &before)
+                    : std::vector<std::string>();
+    if (values.size() != marcherParameters.size() || before.find_first_of(";{}") != std::string::npos) {
+        fail("mainImage calls " + plainName(marcher->getName()) + " inside a loop or a condition");
+        return;
+    }
+    for (std::size_t k = 0; k < marcherParameters.size(); ++k) {
+        const std::string name = marcherParameters[k]->getName().c_str();
+        if (!read.count(name)) continue;
+        const std::string type = glslTypeName(marcherParameters[k]->getType());
+        if (type.empty()) {
+            fail("parameter '" + name + "' has a type the wrapper cannot declare");
+            return;
+        }
+        m.bindings += type + " sdfwb_value" + std::to_string(k) + " = " + values[k] + ";\n";
+        m.scoped += type + " " + name + " = sdfwb_value" + std::to_string(k) + ";\n";
+    }
+    // The prelude: mainImage's body up to the line of that call.
+    // (The definition's location is its name's or its body's line: the last mention up to it.)
+    const std::size_t definition = lineStart(text, mainImage->getLoc().line + 1);
+    const std::size_t named = text.rfind("mainImage", definition == std::string::npos ? text.size() : definition);
+    std::size_t open = std::string::npos;
+    if (named != std::string::npos) {
+        int depth = 0;
+        for (std::size_t i = text.find('(', named); i != std::string::npos && i < text.size(); ++i) {
+            if (text[i] == '(') ++depth;
+            if (text[i] == ')' && --depth == 0) {
+                open = text.find('{', i);
+                break;
+            }
+        }
+    }
+    const std::size_t callLine = lineStart(text, marcherCall->getLoc().line);
+    if (open == std::string::npos || callLine == std::string::npos || open >= callLine) {
+        fail("mainImage's code before the march could not be read");
+        return;
+    }
+    const std::string prelude = text.substr(open + 1, callLine - open - 1);
+    const std::string end = trimmed(prelude);
+    int braces = 0, parentheses = 0;
+    for (char c : prelude) {
+        braces += c == '{' ? 1 : c == '}' ? -1 : 0;
+        parentheses += c == '(' ? 1 : c == ')' ? -1 : 0;
+    }
+    if (braces != 0 || parentheses != 0 || (!end.empty() && end.back() != ';' && end.back() != '}') ||
+        mentions(prelude, "return") || mentions(prelude, "discard")) {
+        fail("mainImage's code before the march is not whole statements");
+        return;
+    }
+    m.prelude = prelude;
+    const std::vector<TIntermSymbol*> mainParameters = parametersOf(mainImage);
+    if (mainParameters.size() == 2) {
+        m.colour = mainParameters[0]->getName().c_str();
+        m.coordinate = mainParameters[1]->getName().c_str();
+    }
+}
+
 } // namespace
 
 std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
@@ -183,11 +418,15 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
     intermediate->getTreeRoot()->traverse(&definitions);
 
     // The functions mainImage reaches, mainImage first.
+    TIntermAggregate* mainImage = nullptr;
     std::vector<TIntermAggregate*> reached;
     std::set<std::string> seen;
     std::deque<std::string> queue;
     for (const auto& [mangled, node] : definitions.functions)
-        if (plainName(node->getName()) == "mainImage") queue.push_back(mangled);
+        if (plainName(node->getName()) == "mainImage") {
+            queue.push_back(mangled);
+            mainImage = node;
+        }
     while (!queue.empty()) {
         const std::string mangled = queue.front();
         queue.pop_front();
@@ -227,8 +466,10 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                 if (entry == marched.end()) {
                     const glslang::TSourceLoc& loc = call->getLoc();
                     marched.push_back({name, composed.map.fileName(loc.string), loc.line, 0,
-                                       member.empty() ? std::string() : std::string(returned.getTypeName().c_str()), member});
+                                       member.empty() ? std::string() : std::string(returned.getTypeName().c_str()), member,
+                                       glslTypeName(returned)});
                     entry = marched.end() - 1;
+                    if (mainImage) traceArguments(*entry, call, callee->second, function, mainImage, composed);
                 }
                 ++entry->loops;
             }

@@ -45,6 +45,14 @@ bool matchAt(const std::string& text, std::size_t at, const std::regex& pattern,
 
 } // namespace
 
+bool mentions(const std::string& text, const std::string& name) {
+    for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1))
+        if ((at == 0 || !isWordCharacter(text[at - 1])) &&
+            (at + name.size() >= text.size() || !isWordCharacter(text[at + name.size()])))
+            return true;
+    return false;
+}
+
 std::string stripComments(const std::string& text) {
     std::string out = text;
     enum class State { Code, Line, Block } state = State::Code;
@@ -262,15 +270,6 @@ std::string macroBody(const std::string& text, std::size_t at) {
     return body;
 }
 
-// Whether `text` holds `name` as a whole word.
-bool mentions(const std::string& text, const std::string& name) {
-    for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1))
-        if ((at == 0 || !isWordCharacter(text[at - 1])) &&
-            (at + name.size() >= text.size() || !isWordCharacter(text[at + name.size()])))
-            return true;
-    return false;
-}
-
 // Whether `name` is a later declarator of a file-scope declaration's comma list
 // (`float det = .005, maxdist = 50., pi = 3.1416;`): after a comma outside parentheses, followed by
 // `=`, `;`, `,` or `[`, in a statement that starts with a type or a qualifier.
@@ -427,15 +426,36 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
     PreparedSdf userCode = prepared;
     userCode.signature.entry.clear(); // no entry: the user's code alone
     std::vector<std::pair<MarchedFunction, SdfSignature>> valid;
+    std::string untraced; // why a marched field with parameters after the point could not be wrapped
     for (MarchedFunction& marched :
          marchedFunctions(composeSdfShader(userCode, Stage::Fragment, std::vector<ShaderPiece>{}, FeatureDefines{}))) {
         // A struct's float member the march steps by (`Hit map(vec3 p)`, `t += h.d`) is the distance.
         SdfSignature signature =
             detectSignature(stripped, marched.name, marched.member.empty() ? "float|vec2|vec4" : marched.returnType);
         if (!marched.member.empty()) signature.member = marched.member; // the one the march reads
+        if (!signature.found && marched.extraParameters > 0 && !marched.arguments.empty() && !marched.valueType.empty()) {
+            // Parameters after the point, computed by mainImage: the wrapper computes them the same way.
+            signature.found = true;
+            signature.entry = marched.name;
+            signature.returnType = marched.valueType;
+            signature.member = marched.member;
+            const std::string centre = mentions(stripped, "iResolution") ? "0.5 * iResolution.xy" : "vec2(0.0)";
+            signature.prelude = "vec2 " + (marched.coordinate.empty() ? "fragCoord" : marched.coordinate) + " = " + centre +
+                                "; vec4 " + (marched.colour.empty() ? "fragColor" : marched.colour) + " = vec4(0.0);\n" +
+                                marched.prelude;
+            signature.bindings = marched.bindings;
+            signature.scoped = marched.scoped;
+            signature.arguments = marched.arguments;
+        }
+        if (!signature.found && marched.extraParameters > 0 && untraced.empty() && !marched.unresolved.empty())
+            untraced = "the march steps by " + marched.name + " (line " + std::to_string(marched.line) +
+                       "), whose parameters after the point sdfwb cannot compute: " + marched.unresolved;
         if (signature.found) valid.emplace_back(std::move(marched), std::move(signature));
     }
-    if (valid.empty()) return;
+    if (valid.empty()) {
+        if (!untraced.empty()) prepared.entryReason = untraced;
+        return;
+    }
     int most = 0;
     for (const auto& [marched, signature] : valid) most = std::max(most, marched.loops);
     std::erase_if(valid, [most](const auto& candidate) { return candidate.first.loops < most; });
@@ -448,7 +468,8 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
             std::erase_if(valid, [&](const auto& candidate) { return !conventional(candidate); });
     }
     const auto where = [](const MarchedFunction& m) {
-        return m.name + " (called by the march at line " + std::to_string(m.line) + ")";
+        return m.name + " (called by the march at line " + std::to_string(m.line) + ")" +
+               (m.arguments.empty() ? "" : ", with" + m.arguments.substr(1) + " as mainImage computes it");
     };
     if (valid.size() > 1) {
         std::string list;
@@ -524,9 +545,13 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
             break;
         }
     }
-    if (!prepared.signature.found)
-        prepared.diagnostics.push_back(
-            missingEntryDiagnostic(prepared.source, chosen, prepared.entrySource != EntrySource::Default));
+    if (!prepared.signature.found) {
+        Diagnostic missing = missingEntryDiagnostic(prepared.source, chosen, prepared.entrySource != EntrySource::Default);
+        // The march's field, where its parameters after the point could not be traced: why.
+        if (prepared.entrySource == EntrySource::Default && !prepared.entryReason.empty())
+            missing.message += " (" + prepared.entryReason + ")";
+        prepared.diagnostics.push_back(std::move(missing));
+    }
     return prepared;
 }
 

@@ -94,17 +94,21 @@ std::string renameBiasLookups(const std::string& text) {
 
 std::string entryWrapper(const PreparedSdf& sdf) {
     const SdfSignature& signature = sdf.signature;
+    const std::string value = !signature.member.empty() ? "." + signature.member : signature.returnType == "float" ? "" : ".x";
+    if (!signature.arguments.empty()) { // parameters after the point, computed as mainImage does
+        std::string text = "float sdfwb_sdf(vec3 sdfwb_point) {\n" + signature.prelude + "\n" + signature.bindings + "{\n" +
+                           signature.scoped + "return " + signature.entry + "(sdfwb_point" + signature.arguments + ")" + value +
+                           ";\n}\n}\n";
+        for (const std::string& macro : sdf.macros) text += "#undef " + macro + "\n";
+        return text;
+    }
     std::string locals, arguments;
     for (std::size_t i = 0; i < signature.outParameters.size(); ++i) {
         locals += signature.outParameters[i] + " sdfwb_out" + std::to_string(i) + "; ";
         arguments += ", sdfwb_out" + std::to_string(i);
     }
     std::string text = "float sdfwb_sdf(vec3 p) { " + locals + "return " + signature.entry + "(p" +
-                       (signature.animated ? ", sdfwb_time" : "") + arguments + ")" +
-                       (!signature.member.empty()         ? "." + signature.member
-                        : signature.returnType == "float" ? ""
-                                                          : ".x") +
-                       "; }\n";
+                       (signature.animated ? ", sdfwb_time" : "") + arguments + ")" + value + "; }\n";
     // The user's macros end with the user's code: what follows is the workbench's.
     for (const std::string& macro : sdf.macros) text += "#undef " + macro + "\n";
     return text;

@@ -392,6 +392,56 @@ class ShadertoyPictureOf : public sdfwb::testing::GlTest, public ::testing::With
 
 } // namespace
 
+// A field whose parameters after the point mainImage computes (issue 47): the wrapper runs
+// mainImage's code before the march at the sampler's time. 62's ball is centred at
+// (0.6, 0.1 + 0.15 sin(1.7 t), 0) with radius 0.2, so its centre at t = 1 reads -0.2 at t = 1 and
+// 0.15 sin(1.7) - 0.2 at t = 0; 61's tilt is 0 with iMouse at rest, so its ball's centre reads -0.15.
+class FieldParameters : public sdfwb::testing::GlTest {};
+
+TEST_F(FieldParameters, ThoseMainImageComputesReachTheField) {
+    shaders::PreparedSdf breathing = prepare(kFolder / "62_st_breathing_box_parameters.glsl");
+    ASSERT_TRUE(breathing.ok()) << firstError(breathing);
+    EXPECT_EQ(breathing.signature.arguments, ", grow, offset");
+    EXPECT_NE(breathing.entryReason.find("with grow, offset as mainImage computes it"), std::string::npos)
+        << breathing.entryReason;
+    shaders::PreparedSdf plate = prepare(kFolder / "61_st_tilted_plate_parameter.glsl");
+    ASSERT_TRUE(plate.ok()) << firstError(plate);
+    EXPECT_EQ(plate.signature.arguments, ", tilt");
+    auto valueAt = [](const shaders::PreparedSdf& sdf, glm::vec3 p, float time) {
+        renderer::SampleCompute compute;
+        EXPECT_FALSE(shaders::hasErrors(compute.build(sdf, *shaders::builtinPiece("analysis/points.glsl"))));
+        sampling::SamplingJob job;
+        job.count = 1;
+        job.time = time;
+        job.inputPoints = &p.x;
+        float position[3], distance = 0.0f, gradient[3];
+        EXPECT_TRUE(sampling::sampleInto(compute, job, position, &distance, gradient, {}).hasValue());
+        compute.releaseGl();
+        return distance;
+    };
+    const float y1 = 0.1f + 0.15f * std::sin(1.7f);
+    EXPECT_NEAR(valueAt(breathing, {0.6f, y1, 0.0f}, 1.0f), -0.2f, 1e-4f);
+    EXPECT_NEAR(valueAt(breathing, {0.6f, y1, 0.0f}, 0.0f), 0.15f * std::sin(1.7f) - 0.2f, 1e-4f);
+    EXPECT_NEAR(valueAt(plate, {0.0f, 0.47f, 0.0f}, 0.0f), -0.15f, 1e-4f);
+
+    // A march whose parameter is computed inside the marching function cannot be traced: the file
+    // then does not open, and the error says what to do.
+    const fs::path folder = fs::temp_directory_path() / ("sdfwb-foreign-params-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    std::ofstream(folder / "inner.glsl")
+        << "float field(vec3 p, vec2 r) { return length(p) - r.x; }\n"
+           "float march(vec3 ro, vec3 rd) {\n"
+           "    float t = 0.0;\n"
+           "    for (int i = 0; i < 64; i++) { vec2 r = vec2(0.5, float(i)); t += field(ro + rd * t, r); }\n"
+           "    return t;\n"
+           "}\n"
+           "void mainImage(out vec4 c, in vec2 u) { c = vec4(march(vec3(0.0, 0.0, -3.0), vec3(0.0, 0.0, 1.0))); }\n";
+    shaders::PreparedSdf inner = prepare(folder / "inner.glsl");
+    EXPECT_FALSE(inner.ok());
+    EXPECT_NE(firstError(inner).find("'r' is computed inside march"), std::string::npos) << firstError(inner);
+    fs::remove_all(folder);
+}
+
 TEST(ForeignCorpus, HasWholeShadertoyShaders) {
     int whole = 0, versioned = 0, channels = 0;
     for (const std::string& name : corpusFiles()) {

@@ -21,6 +21,20 @@ struct MarchedFunction {
     // A struct return: the struct's name and the float member the march reads (the distance).
     std::string returnType;
     std::string member;
+    std::string valueType; // what it returns: float, vec2, vec4 or the struct's name
+
+    // A field with `in` parameters after the point (`vec2 Scene(vec3 p, vec3 plateRot)`) whose
+    // values mainImage computes and hands to the marching function: how a wrapper gets them.
+    //   prelude     mainImage's statements before the one that calls the marching function
+    //   bindings    temporaries holding the values mainImage passes the marching function, and
+    //   scoped      the marching function's parameters the call reads, declared from them in a
+    //               block of their own (a parameter may have the name of a local of mainImage)
+    //   arguments   the text after the point in the march's call (", plateRot")
+    //   coordinate, colour   mainImage's parameter names (the wrapper declares them)
+    // Empty `arguments` with extraParameters > 0: the values could not be traced (`unresolved`
+    // says why).
+    int extraParameters = 0;
+    std::string prelude, bindings, scoped, arguments, coordinate, colour, unresolved;
 };
 
 // The functions `composed` (a fragment stage holding the user's code and mainImage; no main is

@@ -30,6 +30,11 @@ struct SdfSignature {
     // The types of `out`/`inout` parameters after the point (and the time), in order
     // (`float sdf(vec3 p, out Material m)`): the wrapper passes locals of these types.
     std::vector<std::string> outParameters;
+    // A field with parameters after the point whose values mainImage computes (a whole shader's
+    // march, shaders/MarchAnalysis.h): the wrapper runs `prelude` (mainImage's code before the
+    // march, its parameters declared first), then `bindings`, and calls ENTRY(p`arguments`) in a
+    // block that declares `scoped`. Empty otherwise.
+    std::string prelude, bindings, scoped, arguments;
 };
 
 // Where the entry point came from: `sdf` (Default), --entry or the GUI (Requested), an `entry:`
@@ -97,6 +102,8 @@ struct PreparedSdf {
 
 // Returns `text` with comments replaced by spaces (newlines kept, so line numbers still match).
 std::string stripComments(const std::string& text);
+// Whether `text` holds `name` as a whole word (not inside a longer identifier).
+bool mentions(const std::string& text, const std::string& name);
 
 // Finds a definition of `entry` taking (vec3) or (vec3, float) and returning float or vec2-4.
 // `returnTypes`: the return types allowed, as a regex alternation; a struct's name among them
