@@ -26,9 +26,13 @@ namespace {
 using glm::dvec3;
 
 constexpr int kStack = 128; // the hierarchy's depth is at most 60 (MeshField.cpp's kMaxDepth) + 2
-// The sign cache's level whose points start the crossing segments: 2^6 + 1 points a side.
-constexpr int kCrossingLevel = 6;
-constexpr int kCrossingSide = (1 << kCrossingLevel) + 1;
+// The sign cache's levels whose points start the crossing segments, tried in this order: 2^6 + 1
+// points a side, then the finest, whose shorter segments pass nearer an open boundary.
+constexpr int kCrossingLevels[2] = {6, 7};
+constexpr std::size_t latticePoints(int level) {
+    const std::size_t side = (std::size_t(1) << level) + 1;
+    return side * side * side;
+}
 // Where level k (2 .. 7, 2^k + 1 points a side) of the sign cache starts in its one array.
 constexpr std::size_t levelOffset(int k) {
     std::size_t offset = 0;
@@ -171,12 +175,13 @@ MeshQuery::MeshQuery(const MeshField& field) : m_field(field) {
         m_cache = std::make_unique<std::atomic<float>[]>(total);
         for (std::size_t i = 0; i < total; ++i)
             m_cache[i].store(std::numeric_limits<float>::quiet_NaN(), std::memory_order_relaxed);
-        if (!m_boundary.empty()) {
-            const std::size_t points = std::size_t(kCrossingSide) * kCrossingSide * kCrossingSide;
-            m_slopes = std::make_unique<std::atomic<float>[]>(points);
-            for (std::size_t i = 0; i < points; ++i)
-                m_slopes[i].store(std::numeric_limits<float>::quiet_NaN(), std::memory_order_relaxed);
-        }
+        if (!m_boundary.empty())
+            for (int k = 0; k < 2; ++k) {
+                const std::size_t points = latticePoints(kCrossingLevels[k]);
+                m_slopes[k] = std::make_unique<std::atomic<float>[]>(points);
+                for (std::size_t i = 0; i < points; ++i)
+                    m_slopes[k][i].store(std::numeric_limits<float>::quiet_NaN(), std::memory_order_relaxed);
+            }
     }
 }
 
@@ -186,7 +191,8 @@ std::size_t MeshQuery::bytes() const {
     std::size_t cache = 0;
     if (m_useCache)
         for (int k = 2; k <= 7; ++k) cache += std::size_t((1 << k) + 1) * ((1 << k) + 1) * ((1 << k) + 1) * sizeof(float);
-    if (m_slopes) cache += std::size_t(kCrossingSide) * kCrossingSide * kCrossingSide * sizeof(float);
+    for (int k = 0; k < 2; ++k)
+        if (m_slopes[k]) cache += latticePoints(kCrossingLevels[k]) * sizeof(float);
     cache += m_boundary.size() * sizeof(BoundaryEdge);
     return m_nodes.size() * sizeof(Node) + m_corners.size() * sizeof(double) + cache;
 }
@@ -353,14 +359,18 @@ bool MeshQuery::cachedWindingInside(const dvec3& p, double distance, bool& fromC
     if (m_useCache && distance > 0.0 && std::isfinite(distance)) {
         const double reach2 = distance * distance * 0.998;
         // The coarsest level whose every point of a cell lies inside the ball (half a cell's
-        // diagonal shorter than the distance), and one coarser, whose nearest point may: the
-        // coarser levels hardly ever hold one, and trying them cost a fifth of a row's time.
+        // diagonal shorter than the distance) near enough for the boundary's bound below, and one
+        // coarser, whose nearest point may be: the coarser levels hardly ever hold one, and trying
+        // them cost a fifth of a row's time.
         int coarsest = 7;
-        for (int k = 2; k < 7; ++k)
-            if (m_cacheStep * double(m_cacheSide >> k) * 0.8661 < distance * 0.999) {
+        for (int k = 2; k < 7; ++k) {
+            const double half = m_cacheStep * double(m_cacheSide >> k) * 0.8661;
+            if (half < distance * 0.999 &&
+                m_boundaryLength * half < 0.25 * 4.0 * std::numbers::pi * (distance - half) * (distance - half)) {
                 coarsest = k;
                 break;
             }
+        }
         for (int k = std::max(2, coarsest - 1); k <= 7; ++k) {
             const int side = (1 << k) + 1;
             const std::size_t offset = levelOffset(k);
@@ -406,49 +416,52 @@ bool MeshQuery::cachedWindingInside(const dvec3& p, double distance, bool& fromC
 // one short segment walk give p's sign wherever that estimate is farther from 1/2 than the bound
 // plus 1/4 for the hierarchy's approximation at p and q, as in the ball's test. A crossing too near
 // a triangle's edge or corner, or an end on a triangle's plane, could be counted twice or missed:
-// the row then takes the walk.
+// the row then tries the finer level's point, and then takes the walk.
 bool MeshQuery::crossedWindingInside(const dvec3& p, bool& inside, QueryCounters* counters) const {
     if (!m_useCache) return false;
-    const double step = m_cacheStep * double(m_cacheSide >> kCrossingLevel);
-    const double reach = step * std::sqrt(3.0) * 0.5 * (1.0 + 1e-9); // a lattice cell's half diagonal
-    int at[3];
-    dvec3 q;
-    for (int a = 0; a < 3; ++a) {
-        const double cell = (p[a] - m_cacheLo[a]) / step;
-        at[a] = int(std::clamp(std::floor(cell + 0.5), 0.0, double(kCrossingSide - 1)));
-        q[a] = m_cacheLo[a] + double(at[a]) * step;
-    }
-    const double s = glm::length(p - q);
-    if (!(s <= reach)) return false; // outside the lattice
-    const std::size_t index = (std::size_t(at[2]) * kCrossingSide + std::size_t(at[1])) * kCrossingSide + std::size_t(at[0]);
-    double slope = 0.0;
-    if (m_slopes) {
-        float stored = m_slopes[index].load(std::memory_order_relaxed);
-        if (std::isnan(stored)) {
-            stored = roundedUp(boundarySlope(q));
-            m_slopes[index].store(stored, std::memory_order_relaxed);
+    for (int k = 0; k < 2; ++k) {
+        const int level = kCrossingLevels[k];
+        const int side = (1 << level) + 1;
+        const double step = m_cacheStep * double(m_cacheSide >> level);
+        const double reach = step * std::sqrt(3.0) * 0.5 * (1.0 + 1e-9); // a lattice cell's half diagonal
+        int at[3];
+        dvec3 q;
+        for (int a = 0; a < 3; ++a) {
+            const double cell = (p[a] - m_cacheLo[a]) / step;
+            at[a] = int(std::clamp(std::floor(cell + 0.5), 0.0, double(side - 1)));
+            q[a] = m_cacheLo[a] + double(at[a]) * step;
         }
-        slope = double(stored);
+        const double s = glm::length(p - q);
+        if (!(s <= reach)) return false; // outside the lattice
+        const std::size_t index = (std::size_t(at[2]) * side + std::size_t(at[1])) * side + std::size_t(at[0]);
+        double slope = 0.0;
+        if (m_slopes[k]) {
+            float stored = m_slopes[k][index].load(std::memory_order_relaxed);
+            if (std::isnan(stored)) {
+                stored = roundedUp(boundarySlope(q, reach));
+                m_slopes[k][index].store(stored, std::memory_order_relaxed);
+            }
+            slope = double(stored);
+        }
+        const double change = slope * s;
+        if (!(change < 0.25)) continue; // the finer level's segment is shorter
+        std::atomic<float>& cached = m_cache[levelOffset(level) + index];
+        float w = cached.load(std::memory_order_relaxed);
+        if (std::isnan(w)) {
+            w = float(winding(q, counters ? &counters->windingNodes : nullptr));
+            cached.store(w, std::memory_order_relaxed);
+        }
+        int net = 0;
+        if (!segmentCrossings(q, p, net, counters ? &counters->segmentNodes : nullptr)) continue; // another segment
+        const double estimate = double(w) + double(net);
+        if (!(std::abs(estimate - 0.5) >= change + 0.25)) continue;
+        inside = estimate > 0.5;
+        return true;
     }
-    const double change = slope * s;
-    if (!(change < 0.25)) return false;
-    std::atomic<float>& cached = m_cache[levelOffset(kCrossingLevel) + index];
-    float w = cached.load(std::memory_order_relaxed);
-    if (std::isnan(w)) {
-        w = float(winding(q, counters ? &counters->windingNodes : nullptr));
-        cached.store(w, std::memory_order_relaxed);
-    }
-    int net = 0;
-    if (!segmentCrossings(q, p, net, counters ? &counters->segmentNodes : nullptr)) return false;
-    const double estimate = double(w) + double(net);
-    if (!(std::abs(estimate - 0.5) >= change + 0.25)) return false;
-    inside = estimate > 0.5;
-    return true;
+    return false;
 }
 
-double MeshQuery::boundarySlope(const dvec3& q) const {
-    const double step = m_cacheStep * double(m_cacheSide >> kCrossingLevel);
-    const double reach = step * std::sqrt(3.0) * 0.5 * (1.0 + 1e-9);
+double MeshQuery::boundarySlope(const dvec3& q, double reach) const {
     double sum = 0.0;
     for (const BoundaryEdge& e : m_boundary) {
         const double r = segmentDistance(q, e.a, e.b) - reach;
@@ -633,6 +646,7 @@ float MeshQuery::floatField(const glm::vec3& p) const { return float(signedDista
 std::uint64_t MeshQuery::evaluate(const RowView& rows, std::size_t count, const GradientMode& mode, unsigned threads,
                                   QueryCounters* counters) const {
     constexpr std::size_t kBlock = 1024;
+    constexpr std::size_t kAhead = 4;
     const unsigned workers = unsigned(std::min<std::size_t>(threadCount(threads), (count + kBlock - 1) / kBlock));
     // Rows in Morton order (10 bits an axis over the cache's box): neighbours in the order are
     // neighbours in space, so each row's walk starts from the last row's triangle (seeded within a
@@ -682,6 +696,14 @@ std::uint64_t MeshQuery::evaluate(const RowView& rows, std::size_t count, const 
             const std::size_t end = std::min(count, begin + kBlock);
             std::uint32_t seed = kNoSeed;
             for (std::size_t j = begin; j < end; ++j) {
+                // Rows in Morton order are scattered in memory: the row a few ahead is fetched now,
+                // so that its position (and where its values go) is in the cache when it comes.
+                if (j + kAhead < end) {
+                    const std::size_t ahead = std::size_t(order[j + kAhead] & 0xffffffffu);
+                    __builtin_prefetch(rows.positions + ahead * rows.positionStride);
+                    __builtin_prefetch(rows.distances + ahead * rows.distanceStride, 1);
+                    if (rows.gradients) __builtin_prefetch(rows.gradients + ahead * rows.gradientStride, 1);
+                }
                 const std::size_t i = std::size_t(order[j] & 0xffffffffu);
                 const float* xyz = rows.positions + i * rows.positionStride;
                 const glm::vec3 pf(xyz[0], xyz[1], xyz[2]);

@@ -100,9 +100,10 @@ private:
     // The oriented crossings of segment q -> p (w(p) - w(q) on the surface's account); false when
     // a crossing lies too near an edge, a corner or an end to be counted with certainty.
     bool segmentCrossings(const glm::dvec3& q, const glm::dvec3& p, int& net, std::uint64_t* visits) const;
-    // Bounds |grad w| over the ball of the crossing level's reach around lattice point q (the
-    // open boundary's Biot-Savart field); infinity where the boundary comes that close.
-    double boundarySlope(const glm::dvec3& q) const;
+    // Bounds |grad w| over the ball of radius `reach` (a crossing level's half cell diagonal) around
+    // lattice point q (the open boundary's Biot-Savart field); infinity where the boundary comes
+    // that close.
+    double boundarySlope(const glm::dvec3& q, double reach) const;
 
     const MeshField& m_field;
     std::vector<Node> m_nodes;     // inner nodes; m_nodes[0] is the root (a leaf root has a one-child node)
@@ -116,14 +117,14 @@ private:
     double m_cacheStep = 0.0;
     int m_cacheSide = 0;
     mutable std::unique_ptr<std::atomic<float>[]> m_cache;
-    // The crossing level (one of the cache's levels) and each of its points' boundary slope
-    // (NaN: not yet); the open boundary as edges (a, b, |net use|).
+    // Each crossing level's points' boundary slopes (NaN: not yet; open meshes only); the open
+    // boundary as edges (a, b, |net use|).
     struct BoundaryEdge {
         glm::dvec3 a, b;
         double weight;
     };
     std::vector<BoundaryEdge> m_boundary;
-    mutable std::unique_ptr<std::atomic<float>[]> m_slopes;
+    mutable std::unique_ptr<std::atomic<float>[]> m_slopes[2];
 };
 
 // The query for `field`, built once per field (a process-wide cache holding it as long as the
