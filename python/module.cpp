@@ -21,6 +21,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <mutex>
@@ -476,12 +478,25 @@ py::list listSdfs() {
     return out;
 }
 
+#if defined(__SANITIZE_ADDRESS__)
+// scripts/sanitize plants a leak here (SDFWB_PLANT_LEAK=1, sanitizer builds only) to show that the
+// LeakSanitizer suppression for the Python interpreter's own allocations hides no leak of sdfwb's.
+[[gnu::noinline]] void sdfwbPlantedLeak() {
+    auto* leaked = new std::uint64_t[8]{};
+    asm volatile("" : : "r"(leaked) : "memory"); // made, then forgotten
+}
+#endif
+
 } // namespace
 
 // The docstrings below are what help(sdfwb.X) shows after pybind11's signature line; each says
 // what every argument takes. python/sdfwb/_native.pyi types the same functions for mypy, and
 // python/tests/test_package.py checks that the two name the same arguments and defaults.
+
 PYBIND11_MODULE(_native, m) {
+#if defined(__SANITIZE_ADDRESS__)
+    if (const char* plant = std::getenv("SDFWB_PLANT_LEAK"); plant && std::string(plant) == "1") sdfwbPlantedLeak();
+#endif
     m.doc() = "sdfwb: sample, audit and load signed distance functions written in GLSL (headless, EGL).";
     m.attr("__version__") = SDFWB_VERSION;
     // Float defaults spelled as written (pybind11 would print the float32 value, 0.0010000000474974513).
