@@ -345,6 +345,26 @@ double MeshQuery::winding(const dvec3& p, std::uint64_t* visits) const {
     return sum / (4.0 * std::numbers::pi);
 }
 
+std::size_t MeshQuery::nearestLatticePoint(const dvec3& p, int level, dvec3& q) const {
+    const int side = (1 << level) + 1;
+    const double step = m_cacheStep * double(m_cacheSide >> level);
+    int at[3];
+    for (int a = 0; a < 3; ++a) {
+        at[a] = int(std::clamp(std::floor((p[a] - m_cacheLo[a]) / step + 0.5), 0.0, double(side - 1)));
+        q[a] = m_cacheLo[a] + double(at[a]) * step;
+    }
+    return (std::size_t(at[2]) * side + std::size_t(at[1])) * side + std::size_t(at[0]);
+}
+
+float MeshQuery::latticeWinding(std::size_t slot, const dvec3& q, std::uint64_t* visits) const {
+    float w = m_cache[slot].load(std::memory_order_relaxed);
+    if (std::isnan(w)) {
+        w = float(winding(q, visits));
+        m_cache[slot].store(w, std::memory_order_relaxed);
+    }
+    return w;
+}
+
 // The sign cache. Every point of the open ball of radius `distance` (the nearest distance) around
 // p is joined to p by a segment no triangle crosses, along which the winding number changes by at
 // most boundary length x s / (4 pi (distance - s)^2) (s the segment's length; see boundaryLength):
@@ -372,28 +392,14 @@ bool MeshQuery::cachedWindingInside(const dvec3& p, double distance, bool& fromC
             }
         }
         for (int k = std::max(2, coarsest - 1); k <= 7; ++k) {
-            const int side = (1 << k) + 1;
-            const std::size_t offset = levelOffset(k);
-            const double step = m_cacheStep * double(m_cacheSide >> k);
-            const dvec3 cell = (p - m_cacheLo) / step;
-            int at[3];
             dvec3 q;
-            for (int a = 0; a < 3; ++a) {
-                at[a] = int(std::clamp(std::floor(cell[a] + 0.5), 0.0, double(side - 1)));
-                q[a] = m_cacheLo[a] + double(at[a]) * step;
-            }
+            const std::size_t here = levelOffset(k) + nearestLatticePoint(p, k, q);
             const double s2 = glm::dot(q - p, q - p);
-            const std::size_t here = offset + (std::size_t(at[2]) * side + std::size_t(at[1])) * side + std::size_t(at[0]);
             if (!(s2 < reach2)) continue;
             const double s = std::sqrt(s2);
             const double change = m_boundaryLength * s / (4.0 * std::numbers::pi * (distance - s) * (distance - s));
             if (!(change < 0.25)) continue; // a finer level comes closer
-            std::atomic<float>& slot = m_cache[here];
-            float w = slot.load(std::memory_order_relaxed);
-            if (std::isnan(w)) {
-                w = float(winding(q, visits));
-                slot.store(w, std::memory_order_relaxed);
-            }
+            const float w = latticeWinding(here, q, visits);
             if (std::abs(double(w) - 0.5) >= change + 0.25) {
                 fromCache = true;
                 return w > 0.5f;
@@ -421,19 +427,12 @@ bool MeshQuery::crossedWindingInside(const dvec3& p, bool& inside, QueryCounters
     if (!m_useCache) return false;
     for (int k = 0; k < 2; ++k) {
         const int level = kCrossingLevels[k];
-        const int side = (1 << level) + 1;
         const double step = m_cacheStep * double(m_cacheSide >> level);
         const double reach = step * std::sqrt(3.0) * 0.5 * (1.0 + 1e-9); // a lattice cell's half diagonal
-        int at[3];
         dvec3 q;
-        for (int a = 0; a < 3; ++a) {
-            const double cell = (p[a] - m_cacheLo[a]) / step;
-            at[a] = int(std::clamp(std::floor(cell + 0.5), 0.0, double(side - 1)));
-            q[a] = m_cacheLo[a] + double(at[a]) * step;
-        }
+        const std::size_t index = nearestLatticePoint(p, level, q);
         const double s = glm::length(p - q);
         if (!(s <= reach)) return false; // outside the lattice
-        const std::size_t index = (std::size_t(at[2]) * side + std::size_t(at[1])) * side + std::size_t(at[0]);
         double slope = 0.0;
         if (m_slopes[k]) {
             float stored = m_slopes[k][index].load(std::memory_order_relaxed);
@@ -445,12 +444,7 @@ bool MeshQuery::crossedWindingInside(const dvec3& p, bool& inside, QueryCounters
         }
         const double change = slope * s;
         if (!(change < 0.25)) continue; // the finer level's segment is shorter
-        std::atomic<float>& cached = m_cache[levelOffset(level) + index];
-        float w = cached.load(std::memory_order_relaxed);
-        if (std::isnan(w)) {
-            w = float(winding(q, counters ? &counters->windingNodes : nullptr));
-            cached.store(w, std::memory_order_relaxed);
-        }
+        const float w = latticeWinding(levelOffset(level) + index, q, counters ? &counters->windingNodes : nullptr);
         int net = 0;
         if (!segmentCrossings(q, p, net, counters ? &counters->segmentNodes : nullptr)) continue; // another segment
         const double estimate = double(w) + double(net);

@@ -9,7 +9,6 @@
 #include <glslang/Public/ShaderLang.h>
 
 #include <algorithm>
-#include <cctype>
 #include <deque>
 #include <map>
 #include <set>
@@ -222,8 +221,6 @@ std::string trimmed(const std::string& text) {
     if (first == std::string::npos) return {};
     return text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
 }
-
-bool isWordCharacter(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // The arguments of the first call of `name` on `line` of `text` (comments blanked), split at the
 // call's own commas; `before` receives the line's text before the name. Empty when none is found.

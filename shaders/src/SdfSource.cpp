@@ -19,8 +19,6 @@
 namespace sdfwb::shaders {
 namespace {
 
-bool isWordCharacter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; }
-
 // The regex for `pattern`, compiled the first time it is asked for and kept for the process (the
 // patterns are made from names: preparing an SDF asks for some on every job and mesh call, and
 // compiling them each time cost more than the searches). The cache grows by one per new name.
@@ -44,6 +42,8 @@ bool matchAt(const std::string& text, std::size_t at, const std::regex& pattern,
 }
 
 } // namespace
+
+bool isWordCharacter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; }
 
 bool mentions(const std::string& text, const std::string& name) {
     for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1))

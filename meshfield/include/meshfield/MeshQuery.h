@@ -94,6 +94,10 @@ private:
     double seededDistance(const glm::dvec3& p, glm::dvec3* gradient, QueryCounters* counters, std::uint32_t& seed) const;
     bool parityInside(const glm::dvec3& p) const;
     bool cachedWindingInside(const glm::dvec3& p, double distance, bool& fromCache, QueryCounters* counters) const;
+    // The sign cache's level `level` point nearest p (clamped to the lattice) in `q`; its index in
+    // the level. And the winding number at cache slot `slot` (point q), computed on first use.
+    std::size_t nearestLatticePoint(const glm::dvec3& p, int level, glm::dvec3& q) const;
+    float latticeWinding(std::size_t slot, const glm::dvec3& q, std::uint64_t* visits) const;
     // The winding sign from the nearest lattice point of the crossing level and the triangles the
     // segment between them crosses; false when that cannot decide (see the .cpp).
     bool crossedWindingInside(const glm::dvec3& p, bool& inside, QueryCounters* counters) const;

@@ -102,6 +102,8 @@ struct PreparedSdf {
 
 // Returns `text` with comments replaced by spaces (newlines kept, so line numbers still match).
 std::string stripComments(const std::string& text);
+// A letter, digit or underscore: a character of a GLSL identifier.
+bool isWordCharacter(char c);
 // Whether `text` holds `name` as a whole word (not inside a longer identifier).
 bool mentions(const std::string& text, const std::string& name);
 
