@@ -15,18 +15,47 @@ uniform float sdfwb_surfaceTolerance = 1e-5;  // sdfwb_traceRay() hits at |f| be
 uniform uint sdfwb_chunkFirst;     // global index of this chunk's first sample
 uniform bool sdfwb_tetrahedralGradient = false;  // sdfwb_gradientAt(): the tracer's 4-tap scheme (benchmarks)
 
-// Raw gradient by 6-tap central differences (not normalised: its length shows the field's
-// Lipschitz behaviour).
-vec3 sdfwb_gradientAt(vec3 p, float h) {
-    if (sdfwb_tetrahedralGradient) {
-        // 4 taps at the corners of a tetrahedron, as the sphere tracer's normals use.
-        const vec2 k = vec2(1.0, -1.0);
-        return (k.xyy * sdfwb_sdf(p + k.xyy * h) + k.yyx * sdfwb_sdf(p + k.yyx * h) + k.yxy * sdfwb_sdf(p + k.yxy * h) + k.xxx * sdfwb_sdf(p + k.xxx * h)) /
-               (4.0 * h);
+// The field at p (when `value` is asked for) and, when `gradient` is, its raw gradient: 6-tap central differences
+// of step h (not normalised: its length shows the field's Lipschitz behaviour) or the tracer's 4
+// tetrahedron taps (sdfwb_tetrahedralGradient). A mesh's own field (SDFWB_MESH_SURFACE) without
+// taps writes the exact gradient of the value's own walk.
+// Every evaluation goes through one call of the field in a loop whose count is a uniform's: a
+// driver inlines the field at every call site, so seven written-out calls compiled a heavy field
+// seven times (a mesh's walks took seconds to compile on llvmpipe). Each tap's point and the sums
+// are the written-out form's, bit for bit.
+float sdfwb_valueAndGradient(vec3 p, float h, bool value, bool gradient, bool taps, out vec3 result) {
+    const vec2 k = vec2(1.0, -1.0);
+    const vec3 offsets[11] = vec3[11](vec3(0.0), vec3(1.0, 0.0, 0.0), vec3(-1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0),
+                                      vec3(0.0, -1.0, 0.0), vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, -1.0), k.xyy, k.yyx, k.yxy, k.xxx);
+    bool tetrahedral = sdfwb_tetrahedralGradient;
+    int count = !gradient || !taps ? 0 : tetrahedral ? 4 : 6;
+    int first = tetrahedral ? 6 : 0;
+    float f[7];
+    vec3 exact = vec3(0.0);
+    for (int i = value ? 0 : 1; i <= count; ++i) {
+        vec3 q = i == 0 ? p : p + offsets[first + i] * h;
+#if defined(SDFWB_MESH_SURFACE)
+        vec3 g;
+        f[i] = sdfwb_meshSdfGradient(q, g);
+        if (i == 0) exact = g;
+#else
+        f[i] = sdfwb_sdf(q);
+#endif
     }
-    return vec3(sdfwb_sdf(p + vec3(h, 0.0, 0.0)) - sdfwb_sdf(p - vec3(h, 0.0, 0.0)),
-                sdfwb_sdf(p + vec3(0.0, h, 0.0)) - sdfwb_sdf(p - vec3(0.0, h, 0.0)),
-                sdfwb_sdf(p + vec3(0.0, 0.0, h)) - sdfwb_sdf(p - vec3(0.0, 0.0, h))) / (2.0 * h);
+    if (count == 0)
+        result = gradient ? exact : vec3(0.0);
+    else if (tetrahedral)
+        result = (k.xyy * f[1] + k.yyx * f[2] + k.yxy * f[3] + k.xxx * f[4]) / (4.0 * h);
+    else
+        result = vec3(f[1] - f[2], f[3] - f[4], f[5] - f[6]) / (2.0 * h);
+    return value ? f[0] : 0.0;
+}
+
+// The raw gradient alone (see sdfwb_valueAndGradient), by taps on every field.
+vec3 sdfwb_gradientAt(vec3 p, float h) {
+    vec3 gradient;
+    sdfwb_valueAndGradient(p, h, false, true, true, gradient);
+    return gradient;
 }
 
 // 32-bit integer finaliser: xorshift-multiply rounds. The multipliers are the "lowbias32"

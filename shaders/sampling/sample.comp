@@ -41,14 +41,11 @@ void main() {
         gradient = vec3(0.0);
 #else
 #if defined(SDFWB_MESH_SURFACE)
-        if (sdfwb_writeGradient && !sdfwb_meshGradientTaps && !sdfwb_tetrahedralGradient) {
-            distance = sdfwb_meshSdfGradient(position, gradient);
-        } else
+        bool taps = sdfwb_meshGradientTaps || sdfwb_tetrahedralGradient;
+#else
+        bool taps = true;
 #endif
-        {
-            distance = sdfwb_sdf(position);
-            gradient = sdfwb_writeGradient ? sdfwb_gradientAt(position, sdfwb_gradientStep) : vec3(0.0);
-        }
+        distance = sdfwb_valueAndGradient(position, sdfwb_gradientStep, true, sdfwb_writeGradient, taps, gradient);
 #endif
     } else {
         float nan = uintBitsToFloat(0x7fc00000u);
