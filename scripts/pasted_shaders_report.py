@@ -32,6 +32,7 @@ BINARY = option("--binary", os.path.join(ROOT, "build", "app", "sdfwb"))
 DOC = option("--doc", "")
 ENV = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
 ENTRY = re.compile(r"entry automatic: (\S+) \(called by the march at line (\d+)\)")
+INLINE_ENTRY = re.compile(r"entry automatic: (\S+) \(its march at line (\d+) writes the field inline")
 
 
 def run(command):
@@ -63,27 +64,42 @@ with tempfile.TemporaryDirectory() as scratch:
                                 os.path.join(scratch, "picture.png")])
         rendered = code == 0
         match = ENTRY.search(log)
-        entry = f"{match.group(1)} (march, line {match.group(2)})" if match else ""
+        inline_match = INLINE_ENTRY.search(log)
+        entry = (f"{match.group(1)} (march, line {match.group(2)})" if match else
+                 f"{inline_match.group(1)} (inline march, line {inline_match.group(2)})" if inline_match else "")
         sample_code, sample_error, _ = run([BINARY, "--batch", "sample", "--sdf", path, "--pattern", "rand", "-n", "2000",
                                             "--output", os.path.join(scratch, "rows.npz")])
         sampled = sample_code == 0
+        # Whether the field changes sign among the 2,000 rows: a surface in the box (a glow's
+        # density never does).
+        surface = False
+        if sampled:
+            import numpy
+            with numpy.load(os.path.join(scratch, "rows.npz")) as rows_file:
+                distances = rows_file["distance"]
+            finite = distances[numpy.isfinite(distances)]
+            surface = bool(finite.size) and bool((finite < 0).any() and (finite > 0).any())
         renders += rendered
         samples += sampled
         both += rendered and sampled
         problem = "" if rendered and sampled else first_error(error if not rendered else sample_error)
         inline = not POINT_FUNCTION.search(open(path, errors="replace").read())
-        rows.append((name, entry, rendered, sampled, problem, inline))
+        rows.append((name, entry, rendered, sampled, problem, inline, surface))
         print(f"{name}: render {'ok' if rendered else 'FAILED'}, sample {'ok' if sampled else 'FAILED'} {entry} {problem}",
               flush=True)
 
 n = max(len(rows), 1)
-inline = sum(1 for row in rows if row[5])
+inlines = [row for row in rows if row[5]]
 functions = [row for row in rows if not row[5]]
 ok = sum(1 for row in functions if row[2] and row[3])
+inline_ok = [row for row in inlines if row[2] and row[3]]
 summary = (f"{len(rows)} shaders: {renders} render ({100 * renders / n:.1f} %), {samples} sample "
-           f"({100 * samples / n:.1f} %), {both} both ({100 * both / n:.1f} %). {inline} write their field inline in "
-           f"mainImage (no function of a point to open); of the {len(functions)} with one, {ok} render and sample "
-           f"({100 * ok / max(len(functions), 1):.1f} %)")
+           f"({100 * samples / n:.1f} %), {both} both ({100 * both / n:.1f} %). Of the {len(functions)} with a function "
+           f"of a point, {ok} render and sample ({100 * ok / max(len(functions), 1):.1f} %); of the {len(inlines)} that "
+           f"write their field inline in a march loop, {len(inline_ok)} "
+           f"({100 * len(inline_ok) / max(len(inlines), 1):.1f} %), and the field of "
+           f"{sum(1 for row in inline_ok if row[6])} of those changes sign in the box (a surface; a glow's density "
+           f"does not). Surface: the 2,000 sampled values hold both signs")
 print(summary)
 if DOC:
     renderer = subprocess.run([BINARY, "--batch", "audit", "--sdf", "sphere", "--samples", "64"], capture_output=True, text=True,
@@ -97,7 +113,7 @@ if DOC:
         out.write("Each file a whole single-pass Shadertoy image shader from public repositories, pasted as is and opened with "
                   "no `--entry` (the files are not in this repository). Render: `sdfwb --batch render --size 320x180`; "
                   "sample: `sdfwb --batch sample --pattern rand -n 2000`. Entry: the function the shader's march steps by "
-                  "where that chose it (else a conventional name).\n\n")
+                  "where that chose it, the function whose march loop writes the field inline (inline march), else a conventional name.\n\n")
         sources = os.path.join(FOLDER, "SOURCES.txt")  # local name, repository, path, commit (tab-separated)
         if os.path.exists(sources):
             repos = {}
@@ -107,8 +123,9 @@ if DOC:
                     repos[fields[1]] = repos.get(fields[1], 0) + 1
             out.write("Sources (GitHub repositories, files): " +
                       ", ".join(f"{repo} ({count})" for repo, count in sorted(repos.items(), key=lambda kv: -kv[1])) + ".\n\n")
-        out.write(summary + ".\n\n| file | entry | render | sample | first error |\n|---|---|---|---|---|\n")
-        for name, entry, rendered, sampled, problem, inline_field in rows:
+        out.write(summary + ".\n\n| file | entry | render | sample | surface | first error |\n|---|---|---|---|---|---|\n")
+        for name, entry, rendered, sampled, problem, inline_field, surface in rows:
             out.write(f"| {name} | {entry or ('none: inline field' if inline_field else 'by name')} | "
-                      f"{'yes' if rendered else 'no'} | {'yes' if sampled else 'no'} | {problem or '-'} |\n")
+                      f"{'yes' if rendered else 'no'} | {'yes' if sampled else 'no'} | {'yes' if surface else 'no'} | "
+                      f"{problem or '-'} |\n")
     print(f"wrote {DOC}")

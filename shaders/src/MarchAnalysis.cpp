@@ -1,5 +1,7 @@
 #include <shaders/MarchAnalysis.h>
 
+#include "InlineField.h"
+
 #include <shaders/GlslChecker.h>
 #include <shaders/SdfSource.h>
 
@@ -259,6 +261,34 @@ std::vector<std::string> callArguments(const std::string& text, int line, const 
     return {};
 }
 
+// The offset of the '{' that opens `function`'s body in `text`, or npos. (A definition's location
+// is its name's or its body's line: the last mention of the name up to it.)
+std::size_t bodyOpen(const std::string& text, TIntermAggregate* function) {
+    const std::string name = plainName(function->getName());
+    const std::size_t definition = lineStart(text, function->getLoc().line + 1);
+    const std::size_t named = text.rfind(name, definition == std::string::npos ? text.size() : definition);
+    if (named == std::string::npos) return std::string::npos;
+    int depth = 0;
+    for (std::size_t i = text.find('(', named); i != std::string::npos && i < text.size(); ++i) {
+        if (text[i] == '(') ++depth;
+        if (text[i] == ')' && --depth == 0) return text.find('{', i);
+    }
+    return std::string::npos;
+}
+
+// Whether `code` is whole statements a wrapper can run before its own: balanced, ending with a
+// statement, and neither returning nor discarding.
+bool wholeStatements(const std::string& code) {
+    const std::string end = trimmed(code);
+    int braces = 0, parentheses = 0;
+    for (char c : code) {
+        braces += c == '{' ? 1 : c == '}' ? -1 : 0;
+        parentheses += c == '(' ? 1 : c == ')' ? -1 : 0;
+    }
+    return braces == 0 && parentheses == 0 && (end.empty() || end.back() == ';' || end.back() == '}') &&
+           !mentions(code, "return") && !mentions(code, "discard");
+}
+
 // Traces the values of a field's parameters after the point (see MarchedFunction) from the march's
 // call in `marcher` back to mainImage's call of `marcher`. Fills `m`'s prelude, bindings and
 // arguments, or its `unresolved`.
@@ -353,37 +383,14 @@ void traceArguments(MarchedFunction& m, TIntermAggregate* call, TIntermAggregate
         m.scoped += type + " " + name + " = sdfwb_value" + std::to_string(k) + ";\n";
     }
     // The prelude: mainImage's body up to the line of that call.
-    // (The definition's location is its name's or its body's line: the last mention up to it.)
-    const std::size_t definition = lineStart(text, mainImage->getLoc().line + 1);
-    const std::size_t named = text.rfind("mainImage", definition == std::string::npos ? text.size() : definition);
-    std::size_t open = std::string::npos;
-    if (named != std::string::npos) {
-        int depth = 0;
-        for (std::size_t i = text.find('(', named); i != std::string::npos && i < text.size(); ++i) {
-            if (text[i] == '(') ++depth;
-            if (text[i] == ')' && --depth == 0) {
-                open = text.find('{', i);
-                break;
-            }
-        }
-    }
+    const std::size_t open = bodyOpen(text, mainImage);
     const std::size_t callLine = lineStart(text, marcherCall->getLoc().line);
-    if (open == std::string::npos || callLine == std::string::npos || open >= callLine) {
-        fail("mainImage's code before the march could not be read");
-        return;
-    }
-    const std::string prelude = text.substr(open + 1, callLine - open - 1);
-    const std::string end = trimmed(prelude);
-    int braces = 0, parentheses = 0;
-    for (char c : prelude) {
-        braces += c == '{' ? 1 : c == '}' ? -1 : 0;
-        parentheses += c == '(' ? 1 : c == ')' ? -1 : 0;
-    }
-    if (braces != 0 || parentheses != 0 || (!end.empty() && end.back() != ';' && end.back() != '}') ||
-        mentions(prelude, "return") || mentions(prelude, "discard")) {
+    if (open == std::string::npos || callLine == std::string::npos || open >= callLine ||
+        !wholeStatements(text.substr(open + 1, callLine - open - 1))) {
         fail("mainImage's code before the march is not whole statements");
         return;
     }
+    const std::string prelude = text.substr(open + 1, callLine - open - 1);
     m.prelude = prelude;
     const std::vector<TIntermSymbol*> mainParameters = parametersOf(mainImage);
     if (mainParameters.size() == 2) {
@@ -392,46 +399,124 @@ void traceArguments(MarchedFunction& m, TIntermAggregate* call, TIntermAggregate
     }
 }
 
+// Fills an inline march's prelude and body from its loop's text (InlineField.h), or its unresolved.
+void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* function, bool isMainImage,
+                     const ComposedShader& composed) {
+    const int file = loop->getLoc().string;
+    if (file < 0 || file >= int(composed.map.files.size()) || function->getLoc().string != file) {
+        march.unresolved = "the loop and its function are in different files";
+        return;
+    }
+    const std::string text = stripComments(composed.map.files[std::size_t(file)].text);
+    const std::size_t line = lineStart(text, loop->getLoc().line);
+    if (line == std::string::npos) {
+        march.unresolved = "the loop's line could not be read";
+        return;
+    }
+    // The loop's keyword: at glslang's column, else the line's first loop keyword.
+    const std::size_t lineEnd = std::min(text.find('\n', line), text.size());
+    auto isKeyword = [&](std::size_t at) {
+        if (at >= lineEnd || (at > 0 && isWordCharacter(text[at - 1]))) return false;
+        for (const std::string word : {"for", "while"})
+            if (text.compare(at, word.size(), word) == 0 &&
+                (at + word.size() >= text.size() || !isWordCharacter(text[at + word.size()])))
+                return true;
+        return false;
+    };
+    std::size_t keyword = std::string::npos;
+    const std::size_t column = line + std::size_t(std::max(1, loop->getLoc().column));
+    if (isKeyword(column - 1))
+        keyword = column - 1;
+    else
+        for (std::size_t at = line; at < lineEnd && keyword == std::string::npos; ++at)
+            if (isKeyword(at)) keyword = at;
+    const std::size_t open = bodyOpen(text, function);
+    if (keyword == std::string::npos || open == std::string::npos || open >= keyword ||
+        !wholeStatements(text.substr(open + 1, keyword - open - 1))) {
+        march.unresolved = march.function + "'s code before the loop is not whole statements";
+        return;
+    }
+    std::string why;
+    march.body = inlineFieldBody(text, keyword, march.counter, march.point, march.step, why);
+    if (march.body.empty()) {
+        march.unresolved = why;
+        return;
+    }
+    const std::vector<TIntermSymbol*> parameters = parametersOf(function);
+    std::string declarations;
+    if (isMainImage && parameters.size() == 2) {
+        march.colour = parameters[0]->getName().c_str();
+        march.coordinate = parameters[1]->getName().c_str();
+    } else {
+        // Another function's parameters (the ray's origin and direction): zero, since the point is given.
+        for (TIntermSymbol* parameter : parameters) {
+            const std::string type = glslTypeName(parameter->getType());
+            if (type.empty()) {
+                march.body.clear();
+                march.unresolved =
+                    "parameter '" + std::string(parameter->getName().c_str()) + "' has a type the wrapper cannot declare";
+                return;
+            }
+            declarations += type + " " + parameter->getName().c_str() + " = " + type + "(0);\n";
+        }
+    }
+    march.prelude = declarations + text.substr(open + 1, keyword - open - 1);
+}
+
 } // namespace
 
-std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
-    ensureGlslangInitialised();
-    glslang::TShader shader(EShLangFragment);
-    const char* text = composed.text.c_str();
-    shader.setStrings(&text, 1);
-    if (!shader.parse(GetDefaultResources(), 430, ECoreProfile, false, false, EShMsgDefault)) return {};
-    const glslang::TIntermediate* intermediate = shader.getIntermediate();
-    if (!intermediate || !intermediate->getTreeRoot()) return {};
+namespace {
 
-    // Function definitions by mangled name.
+// A shader's tree and the functions mainImage reaches, mainImage first.
+struct Reached {
+    glslang::TShader shader{EShLangFragment};
+    std::map<std::string, TIntermAggregate*> functions; // definitions by mangled name
+    TIntermAggregate* mainImage = nullptr;
+    std::vector<TIntermAggregate*> reached;
+};
+
+bool parseReached(const ComposedShader& composed, Reached& tree) {
+    ensureGlslangInitialised();
+    const char* text = composed.text.c_str();
+    tree.shader.setStrings(&text, 1);
+    if (!tree.shader.parse(GetDefaultResources(), 430, ECoreProfile, false, false, EShMsgDefault)) return false;
+    const glslang::TIntermediate* intermediate = tree.shader.getIntermediate();
+    if (!intermediate || !intermediate->getTreeRoot()) return false;
     struct Definitions : glslang::TIntermTraverser {
-        std::map<std::string, TIntermAggregate*> functions;
+        std::map<std::string, TIntermAggregate*>* functions = nullptr;
         bool visitAggregate(glslang::TVisit, TIntermAggregate* node) override {
             if (node->getOp() != glslang::EOpFunction) return true;
-            functions[node->getName().c_str()] = node;
+            (*functions)[node->getName().c_str()] = node;
             return false;
         }
     } definitions;
+    definitions.functions = &tree.functions;
     intermediate->getTreeRoot()->traverse(&definitions);
-
-    // The functions mainImage reaches, mainImage first.
-    TIntermAggregate* mainImage = nullptr;
-    std::vector<TIntermAggregate*> reached;
     std::set<std::string> seen;
     std::deque<std::string> queue;
-    for (const auto& [mangled, node] : definitions.functions)
+    for (const auto& [mangled, node] : tree.functions)
         if (plainName(node->getName()) == "mainImage") {
             queue.push_back(mangled);
-            mainImage = node;
+            tree.mainImage = node;
         }
     while (!queue.empty()) {
         const std::string mangled = queue.front();
         queue.pop_front();
-        auto it = definitions.functions.find(mangled);
-        if (it == definitions.functions.end() || !seen.insert(mangled).second) continue;
-        reached.push_back(it->second);
+        auto it = tree.functions.find(mangled);
+        if (it == tree.functions.end() || !seen.insert(mangled).second) continue;
+        tree.reached.push_back(it->second);
         for (TIntermAggregate* call : contentsOf(it->second).calls) queue.push_back(call->getName().c_str());
     }
+    return true;
+}
+
+} // namespace
+
+std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
+    Reached tree;
+    if (!parseReached(composed, tree)) return {};
+    TIntermAggregate* mainImage = tree.mainImage;
+    const std::vector<TIntermAggregate*>& reached = tree.reached;
 
     std::vector<MarchedFunction> marched;
     for (TIntermAggregate* function : reached) {
@@ -445,8 +530,8 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
             }
             std::set<std::string> counted; // each function once per loop
             for (TIntermAggregate* call : inside.calls) {
-                auto callee = definitions.functions.find(call->getName().c_str());
-                if (callee == definitions.functions.end() || call->getSequence().empty()) continue;
+                auto callee = tree.functions.find(call->getName().c_str());
+                if (callee == tree.functions.end() || call->getSequence().empty()) continue;
                 TIntermTyped* point = call->getSequence().front()->getAsTyped();
                 const glslang::TType& returned = callee->second->getType();
                 if (!point || !isFloatVec3(point->getType()) || !(returnsFloats(returned) || returnsStruct(returned))) continue;
@@ -473,6 +558,67 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
         }
     }
     return marched;
+}
+
+std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
+    Reached tree;
+    if (!parseReached(composed, tree)) return {};
+    std::vector<InlineMarch> found;
+    for (TIntermAggregate* function : tree.reached) {
+        for (TIntermLoop* loop : contentsOf(function).loops) {
+            Contents inside = contentsOf(loop);
+            std::vector<Assignment> assignments;
+            for (TIntermBinary* node : inside.assignments) {
+                Contents right = contentsOf(node->getRight());
+                assignments.push_back({assignedSymbol(node->getLeft()), node->getOp(), right.symbols,
+                                       std::set<TIntermAggregate*>(right.calls.begin(), right.calls.end())});
+            }
+            // Names and types of the loop's symbols.
+            struct Symbols : glslang::TIntermTraverser {
+                std::map<long long, TIntermSymbol*> byId;
+                void visitSymbol(TIntermSymbol* node) override { byId.emplace(node->getId(), node); }
+            } symbols;
+            loop->traverse(&symbols);
+            auto typeOf = [&](long long id) -> const glslang::TType* {
+                auto it = symbols.byId.find(id);
+                return it == symbols.byId.end() ? nullptr : &it->second->getType();
+            };
+            for (std::size_t s = 0; s < inside.assignments.size(); ++s) {
+                const Assignment& stepping = assignments[s];
+                TIntermSymbol* counter = inside.assignments[s]->getLeft()->getAsSymbolNode();
+                if (stepping.op != glslang::EOpAddAssign || !counter || !counter->getType().isScalar() ||
+                    counter->getType().getBasicType() != glslang::EbtFloat)
+                    continue;
+                // What the step is computed from, through the loop's assignments.
+                std::set<long long> from = stepping.reads;
+                for (bool grew = true; grew;) {
+                    grew = false;
+                    for (const Assignment& a : assignments)
+                        if (a.target >= 0 && a.target != stepping.target && from.count(a.target))
+                            for (long long read : a.reads) grew |= read != stepping.target && from.insert(read).second;
+                }
+                // The point: a vec3 it is computed from that the loop computes from the counter.
+                long long point = -1;
+                for (const Assignment& a : assignments)
+                    if (a.target >= 0 && from.count(a.target) && a.reads.count(stepping.target) && typeOf(a.target) &&
+                        isFloatVec3(*typeOf(a.target))) {
+                        point = a.target;
+                        break;
+                    }
+                if (point < 0) continue;
+                InlineMarch march;
+                march.function = plainName(function->getName());
+                march.file = composed.map.fileName(loop->getLoc().string);
+                march.line = loop->getLoc().line;
+                march.counter = counter->getName().c_str();
+                march.point = symbols.byId[point]->getName().c_str();
+                readInlineMarch(march, loop, function, function == tree.mainImage, composed);
+                found.push_back(std::move(march));
+                break;
+            }
+        }
+    }
+    return found;
 }
 
 } // namespace sdfwb::shaders

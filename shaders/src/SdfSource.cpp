@@ -419,6 +419,37 @@ Diagnostic missingEntryDiagnostic(const ResolvedSource& source, const std::strin
                 " with that form, or name your function with --entry NAME or an `entry: NAME` metadata line"};
 }
 
+// A whole shader whose march writes its field inline (shaders::InlineMarch), with no function the
+// march steps by and no conventional name: the first such loop whose text the wrapper can run.
+void chooseInlineField(PreparedSdf& prepared, const std::string& stripped) {
+    PreparedSdf userCode = prepared;
+    userCode.signature.entry.clear(); // no entry: the user's code alone
+    std::string unresolved;
+    for (InlineMarch& march :
+         inlineMarches(composeSdfShader(userCode, Stage::Fragment, std::vector<ShaderPiece>{}, FeatureDefines{}))) {
+        if (march.body.empty()) {
+            if (unresolved.empty())
+                unresolved =
+                    "the march at line " + std::to_string(march.line) + " writes its field inline, but " + march.unresolved;
+            continue;
+        }
+        SdfSignature& signature = prepared.signature;
+        signature = SdfSignature{};
+        signature.found = true;
+        signature.entry = march.function;
+        const std::string centre = mentions(stripped, "iResolution") ? "0.5 * iResolution.xy" : "vec2(0.0)";
+        if (!march.coordinate.empty())
+            signature.prelude = "vec2 " + march.coordinate + " = " + centre + "; vec4 " + march.colour + " = vec4(0.0);\n";
+        signature.prelude += march.prelude;
+        signature.inlineBody = march.body;
+        prepared.entrySource = EntrySource::March;
+        prepared.entryReason = march.function + " (its march at line " + std::to_string(march.line) +
+                               " writes the field inline: the step " + march.counter + " += " + march.step + ")";
+        return;
+    }
+    if (!unresolved.empty()) prepared.entryReason = unresolved;
+}
+
 // A whole shader without an `sdf`: the function its own march steps by (marchedFunctions), when
 // it has an entry's form. The one most loops step by wins; a tie is broken by a conventional name,
 // else it is an error naming the candidates (entryCandidates).
@@ -545,6 +576,9 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
             break;
         }
     }
+    if (!prepared.signature.found && prepared.entrySource == EntrySource::Default && prepared.shadertoyMainImage &&
+        prepared.entryReason.empty())
+        chooseInlineField(prepared, stripped);
     if (!prepared.signature.found) {
         Diagnostic missing = missingEntryDiagnostic(prepared.source, chosen, prepared.entrySource != EntrySource::Default);
         // The march's field, where its parameters after the point could not be traced: why.

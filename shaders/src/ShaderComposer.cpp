@@ -95,6 +95,11 @@ std::string renameBiasLookups(const std::string& text) {
 std::string entryWrapper(const PreparedSdf& sdf) {
     const SdfSignature& signature = sdf.signature;
     const std::string value = !signature.member.empty() ? "." + signature.member : signature.returnType == "float" ? "" : ".x";
+    if (!signature.inlineBody.empty()) { // the march's own loop body, run once at the point
+        std::string text = "float sdfwb_sdf(vec3 sdfwb_point) {\n" + signature.prelude + "\n" + signature.inlineBody + "}\n";
+        for (const std::string& macro : sdf.macros) text += "#undef " + macro + "\n";
+        return text;
+    }
     if (!signature.arguments.empty()) { // parameters after the point, computed as mainImage does
         std::string text = "float sdfwb_sdf(vec3 sdfwb_point) {\n" + signature.prelude + "\n" + signature.bindings + "{\n" +
                            signature.scoped + "return " + signature.entry + "(sdfwb_point" + signature.arguments + ")" + value +

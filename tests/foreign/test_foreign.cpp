@@ -19,6 +19,7 @@
 
 #include "GlTestContext.h"
 
+#include <glm/glm.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -136,7 +137,10 @@ TEST_P(ForeignCode, OpensRendersSamplesAndGetsItsFlags) {
     EXPECT_EQ(sdf.signature.entry, expected.entry);
     EXPECT_EQ(sdf.usesTime(), expected.animated);
     if (sdf.entrySource == shaders::EntrySource::March) {
-        EXPECT_EQ(sdf.entryReason.rfind(expected.entry + " (called by the march at line ", 0), 0u) << sdf.entryReason;
+        // A function the march calls, or the field the march writes inline in ENTRY's loop.
+        EXPECT_TRUE(sdf.entryReason.rfind(expected.entry + " (called by the march at line ", 0) == 0 ||
+                    sdf.entryReason.rfind(expected.entry + " (its march at line ", 0) == 0)
+            << sdf.entryReason;
     }
 
     // Compiles in the march debugger's program too (the sampler's compute stage is below).
@@ -439,6 +443,59 @@ TEST_F(FieldParameters, ThoseMainImageComputesReachTheField) {
     shaders::PreparedSdf inner = prepare(folder / "inner.glsl");
     EXPECT_FALSE(inner.ok());
     EXPECT_NE(firstError(inner).find("'r' is computed inside march"), std::string::npos) << firstError(inner);
+    fs::remove_all(folder);
+}
+
+// A field the march writes inline (issue 47): the loop's body run once at the point. 63's ball
+// (centre (0, 0.1, 0), radius 0.45) reads -0.45 at its centre; 65's rounded box, in a helper's
+// loop that returns from inside, -0.45 at the origin; 66's torus, stepped in the loop's header,
+// -0.22 on its core circle; 64's golfed fractal is placed by its camera's statements (`p.z -= 3.`
+// then a turn), which are skipped: at the origin it reads the folds' value there, not 3 units off.
+class InlineFields : public sdfwb::testing::GlTest {};
+
+TEST_F(InlineFields, TheLoopBodyRunOnceIsTheField) {
+    auto valueAt = [](const std::string& name, glm::vec3 p) {
+        shaders::PreparedSdf sdf = prepare(kFolder / name);
+        EXPECT_TRUE(sdf.ok()) << firstError(sdf);
+        EXPECT_FALSE(sdf.signature.inlineBody.empty()) << name;
+        renderer::SampleCompute compute;
+        EXPECT_FALSE(shaders::hasErrors(compute.build(sdf, *shaders::builtinPiece("analysis/points.glsl"))));
+        sampling::SamplingJob job;
+        job.count = 1;
+        job.inputPoints = &p.x;
+        float position[3], distance = 0.0f, gradient[3];
+        EXPECT_TRUE(sampling::sampleInto(compute, job, position, &distance, gradient, {}).hasValue());
+        compute.releaseGl();
+        return distance;
+    };
+    EXPECT_NEAR(valueAt("63_st_inline_sphere_on_floor.glsl", {0.0f, 0.1f, 0.0f}), -0.45f, 1e-5f);
+    EXPECT_NEAR(valueAt("63_st_inline_sphere_on_floor.glsl", {0.0f, 2.0f, 0.0f}), 1.45f, 1e-5f);
+    EXPECT_NEAR(valueAt("65_st_inline_trace_function.glsl", {0.0f, 0.0f, 0.0f}), -0.45f, 1e-5f);
+    EXPECT_NEAR(valueAt("66_st_inline_step_in_header.glsl", {0.6f, 0.0f, 0.0f}), -0.22f, 1e-5f);
+    EXPECT_NEAR(valueAt("66_st_inline_step_in_header.glsl", {0.0f, 0.0f, 0.0f}), 0.38f, 1e-5f);
+    // 64 near the origin: three folds p = |p| 2 - (.8, .7, .8), then (|p| - .6) / 2^3.
+    const glm::vec3 at(0.05f, -0.1f, 0.2f);
+    glm::vec3 folded = at;
+    for (int j = 0; j < 3; ++j) folded = glm::abs(folded) * 2.0f - glm::vec3(0.8f, 0.7f, 0.8f);
+    EXPECT_NEAR(valueAt("64_st_golfed_glow_ifs.glsl", at), (glm::length(folded) - 0.6f) / 8.0f, 1e-5f);
+
+    // A loop whose step is taken only on a condition is not a field run once: the file does not
+    // open, and the error says why.
+    const fs::path folder = fs::temp_directory_path() / ("sdfwb-foreign-inline-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    std::ofstream(folder / "conditional.glsl") << "void mainImage(out vec4 c, in vec2 f) {\n"
+                                                  "    float t = 0.0;\n"
+                                                  "    for (int i = 0; i < 64; i++) {\n"
+                                                  "        vec3 p = vec3(0.0, 0.0, -3.0) + vec3(0.0, 0.0, 1.0) * t;\n"
+                                                  "        float d = length(p) - 1.0;\n"
+                                                  "        if (d > 0.001) t += d;\n"
+                                                  "    }\n"
+                                                  "    c = vec4(t);\n"
+                                                  "}\n";
+    shaders::PreparedSdf conditional = prepare(folder / "conditional.glsl");
+    EXPECT_FALSE(conditional.ok());
+    EXPECT_NE(firstError(conditional).find("writes its field inline, but the statement that advances 't'"), std::string::npos)
+        << firstError(conditional);
     fs::remove_all(folder);
 }
 

@@ -35,6 +35,9 @@ struct SdfSignature {
     // march, its parameters declared first), then `bindings`, and calls ENTRY(p`arguments`) in a
     // block that declares `scoped`. Empty otherwise.
     std::string prelude, bindings, scoped, arguments;
+    // A field a whole shader's march writes inline (shaders::InlineMarch): the wrapper runs
+    // `prelude` and then this block, which returns the field at sdfwb_point. Empty otherwise.
+    std::string inlineBody;
 };
 
 // Where the entry point came from: `sdf` (Default), --entry or the GUI (Requested), an `entry:`

@@ -1,0 +1,223 @@
+#include "InlineField.h"
+
+#include <shaders/SdfSource.h>
+
+#include <regex>
+
+namespace sdfwb::shaders {
+namespace {
+
+bool isWordAt(const std::string& text, std::size_t at, const char* word) {
+    const std::size_t n = std::char_traits<char>::length(word);
+    if (text.compare(at, n, word) != 0) return false;
+    if (at > 0 && isWordCharacter(text[at - 1])) return false;
+    return at + n >= text.size() || !isWordCharacter(text[at + n]);
+}
+
+std::size_t skipSpace(const std::string& text, std::size_t at) {
+    while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at]))) ++at;
+    return at;
+}
+
+// Just past the bracket that closes the one at `open` ((, [ or {), or npos.
+std::size_t pastMatching(const std::string& text, std::size_t open) {
+    int depth = 0;
+    for (std::size_t i = open; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '(' || c == '[' || c == '{') ++depth;
+        if ((c == ')' || c == ']' || c == '}') && --depth == 0) return i + 1;
+    }
+    return std::string::npos;
+}
+
+// Just past the `( ... )` after `at` (spaces allowed before it), or npos.
+std::size_t pastParentheses(const std::string& text, std::size_t at) {
+    at = skipSpace(text, at);
+    return at < text.size() && text[at] == '(' ? pastMatching(text, at) : std::string::npos;
+}
+
+bool isLoopKeyword(const std::string& text, std::size_t at) {
+    return isWordAt(text, at, "for") || isWordAt(text, at, "while") || isWordAt(text, at, "do") || isWordAt(text, at, "switch");
+}
+
+std::string trimmedText(const std::string& text) {
+    const std::size_t first = text.find_first_not_of(" \t\r\n");
+    if (first == std::string::npos) return {};
+    return text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
+}
+
+} // namespace
+
+std::size_t statementEnd(const std::string& text, std::size_t at) {
+    at = skipSpace(text, at);
+    if (at >= text.size()) return std::string::npos;
+    if (text[at] == '{') return pastMatching(text, at);
+    if (isWordAt(text, at, "if")) {
+        std::size_t end = statementEnd(text, pastParentheses(text, at + 2));
+        if (end == std::string::npos) return end;
+        const std::size_t next = skipSpace(text, end);
+        return isWordAt(text, next, "else") ? statementEnd(text, next + 4) : end;
+    }
+    if (isWordAt(text, at, "for") || isWordAt(text, at, "while"))
+        return statementEnd(text, pastParentheses(text, at + (text[at] == 'f' ? 3 : 5)));
+    if (isWordAt(text, at, "switch")) {
+        const std::size_t header = skipSpace(text, pastParentheses(text, at + 6));
+        return header < text.size() && text[header] == '{' ? pastMatching(text, header) : std::string::npos;
+    }
+    if (isWordAt(text, at, "do")) {
+        const std::size_t body = statementEnd(text, at + 2);
+        const std::size_t keyword = skipSpace(text, body);
+        if (body == std::string::npos || !isWordAt(text, keyword, "while")) return std::string::npos;
+        const std::size_t semicolon = skipSpace(text, pastParentheses(text, keyword + 5));
+        return semicolon < text.size() && text[semicolon] == ';' ? semicolon + 1 : std::string::npos;
+    }
+    int depth = 0;
+    for (std::size_t i = at; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '(' || c == '[' || c == '{') ++depth;
+        if (c == ')' || c == ']' || c == '}') {
+            if (--depth < 0) return std::string::npos;
+        }
+        if (c == ';' && depth == 0) return i + 1;
+    }
+    return std::string::npos;
+}
+
+std::vector<std::string> splitStatements(const std::string& text) {
+    std::vector<std::string> statements;
+    for (std::size_t at = skipSpace(text, 0); at < text.size(); at = skipSpace(text, at)) {
+        const std::size_t end = statementEnd(text, at);
+        if (end == std::string::npos) return {};
+        statements.push_back(text.substr(at, end - at));
+        at = end;
+    }
+    return statements;
+}
+
+std::string withoutLoopExits(const std::string& text) {
+    std::string out = text;
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        if (i > 0 && isWordCharacter(out[i - 1])) continue;
+        if (isLoopKeyword(out, i)) { // a nested loop keeps its own exits
+            const std::size_t end = statementEnd(out, i);
+            if (end == std::string::npos) return out;
+            i = end - 1;
+            continue;
+        }
+        for (const char* exit : {"break", "continue", "return", "discard"})
+            if (isWordAt(out, i, exit)) {
+                out.replace(i, std::char_traits<char>::length(exit), std::char_traits<char>::length(exit), ' ');
+                break;
+            }
+    }
+    return out;
+}
+
+std::string inlineFieldBody(const std::string& text, std::size_t keyword, const std::string& counter, const std::string& point,
+                            std::string& step, std::string& why) {
+    std::string init, increment;
+    std::size_t bodyAt = std::string::npos;
+    if (isWordAt(text, keyword, "for")) {
+        const std::size_t open = skipSpace(text, keyword + 3);
+        const std::size_t close = pastParentheses(text, keyword + 3);
+        if (close == std::string::npos) {
+            why = "its loop's header could not be read";
+            return {};
+        }
+        const std::string header = text.substr(open + 1, close - open - 2);
+        std::vector<std::string> clauses(1);
+        int depth = 0;
+        for (char c : header) {
+            depth += (c == '(' || c == '[') ? 1 : (c == ')' || c == ']') ? -1 : 0;
+            if (c == ';' && depth == 0)
+                clauses.emplace_back();
+            else
+                clauses.back() += c;
+        }
+        if (clauses.size() != 3) {
+            why = "its loop's header could not be read";
+            return {};
+        }
+        init = trimmedText(clauses[0]);
+        increment = clauses[2];
+        bodyAt = close;
+    } else if (isWordAt(text, keyword, "while")) {
+        bodyAt = pastParentheses(text, keyword + 5);
+    } else {
+        why = "its loop is not a for or while loop";
+        return {};
+    }
+    const std::size_t bodyEnd = bodyAt == std::string::npos ? bodyAt : statementEnd(text, bodyAt);
+    if (bodyEnd == std::string::npos) {
+        why = "its loop's body could not be read";
+        return {};
+    }
+    std::string body = trimmedText(text.substr(bodyAt, bodyEnd - bodyAt));
+    if (!body.empty() && body.front() == '{') body = body.substr(1, body.size() - 2);
+    const std::vector<std::string> statements = splitStatements(body);
+    if (statements.empty()) {
+        why = "its loop's body could not be split into statements";
+        return {};
+    }
+    // The point: the first statement that assigns it from the counter (`vec3 p = ro + rd * t;`).
+    const std::regex assigns(R"((^|[^\w.])()" + point + R"()\s*(\.\s*\w+|\[[^\]]*\])?\s*[-+*/]?=[^=])");
+    const std::regex steps(R"(^\s*)" + counter + R"(\s*\+=\s*([\s\S]*);\s*$)");
+    std::size_t pointAt = statements.size();
+    for (std::size_t i = 0; i < statements.size() && pointAt == statements.size(); ++i)
+        if (mentions(statements[i], counter) && std::regex_search(statements[i], assigns)) pointAt = i;
+    if (pointAt == statements.size()) {
+        why = "the statement that computes '" + point + "' from '" + counter + "' was not found";
+        return {};
+    }
+    // Statements right after it that only move or turn the ray's point (`p.z -= 3.;`,
+    // `p.xz *= rot(iTime)`: +=, -= or *= by what reads neither the point nor the counter) place the
+    // camera: the given point is set after them, so that the scene sits where the shader's camera
+    // looks, not at the camera's distance from the origin.
+    const std::regex moves(R"(^\s*)" + point + R"(\s*(\.\s*[xyzrgbstpq]+)?\s*[-+*]=([\s\S]*);\s*$)");
+    std::size_t setAt = pointAt;
+    for (std::size_t i = pointAt + 1; i < statements.size(); ++i) {
+        std::smatch moved;
+        if (!std::regex_match(statements[i], moved, moves) || mentions(moved[2].str(), point) ||
+            mentions(moved[2].str(), counter))
+            break;
+        setAt = i;
+    }
+    std::size_t stepAt = statements.size();
+    std::smatch match;
+    for (std::size_t i = pointAt + 1; i < statements.size(); ++i)
+        if (std::regex_match(statements[i], match, steps)) {
+            step = trimmedText(match[1].str());
+            stepAt = i;
+            break;
+        }
+    if (stepAt == statements.size()) {
+        // `for (...; ...; i++, t += d)`: the step ends the body.
+        std::string part;
+        int depth = 0;
+        for (std::size_t i = 0; i <= increment.size(); ++i) {
+            const char c = i < increment.size() ? increment[i] : ',';
+            depth += (c == '(' || c == '[') ? 1 : (c == ')' || c == ']') ? -1 : 0;
+            if (c != ',' || depth != 0) {
+                part += c;
+                continue;
+            }
+            const std::string statement = part + ";";
+            if (std::regex_match(statement, match, steps)) step = trimmedText(match[1].str());
+            part.clear();
+        }
+    }
+    if (step.empty()) {
+        why = "the statement that advances '" + counter + "' is not one of its loop's own statements";
+        return {};
+    }
+    std::string out = "{\n";
+    if (!init.empty()) out += init + ";\n";
+    for (std::size_t i = 0; i < std::min(stepAt, statements.size()); ++i) {
+        out += withoutLoopExits(statements[i]) + "\n";
+        if (i == setAt) out += point + " = sdfwb_point;\n";
+    }
+    out += "return float(" + step + ");\n}\n";
+    return out;
+}
+
+} // namespace sdfwb::shaders

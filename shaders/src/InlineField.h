@@ -1,0 +1,32 @@
+#pragma once
+// A field written inline in a march loop (`for (...) { vec3 p = ro + rd * t; float d = length(p) - 1.;
+// if (d < 1e-3) break; t += d; }`, golfed `g += e = ...`), as text: the loop's body run once at a
+// given point. MarchAnalysis finds the loop, its counter and its point from glslang's tree; this
+// file reads the loop's text.
+
+#include <string>
+#include <vector>
+
+namespace sdfwb::shaders {
+
+// Just past the statement that starts at or after `at` in `text` (comments blanked): a block, an
+// if/else, a loop, a switch or a simple statement up to its semicolon; npos when it does not end.
+std::size_t statementEnd(const std::string& text, std::size_t at);
+
+// The statements of a block's inside, in order (empty when one does not end).
+std::vector<std::string> splitStatements(const std::string& text);
+
+// `text` with the break, continue, return and discard that leave the enclosing loop blanked (those
+// of loops and switches nested in it stay): the loop's body run once must reach its step.
+std::string withoutLoopExits(const std::string& text);
+
+// The block that computes the field at `sdfwb_point` from the loop whose keyword is at `keyword`
+// in `text`: the loop's initialisation, its body's statements up to the one that advances
+// `counter` (`counter += STEP;`) with `point` set to sdfwb_point after the statement that computes
+// it from `counter` and those right after it that only move or turn it (the camera's placement),
+// then `return float(STEP);`. `step` receives STEP. Empty, with `why`,
+// when the loop does not have that form.
+std::string inlineFieldBody(const std::string& text, std::size_t keyword, const std::string& counter, const std::string& point,
+                            std::string& step, std::string& why);
+
+} // namespace sdfwb::shaders
