@@ -35,8 +35,13 @@ struct Contents : glslang::TIntermTraverser {
     std::vector<TIntermAggregate*> calls;
     std::vector<TIntermLoop*> loops;
     std::set<long long> symbols;
+    bool everyMove = false; // every assignment (`*=`, `/=`, ...), not only =, += and -=
 
     bool visitBinary(glslang::TVisit, TIntermBinary* node) override {
+        if (everyMove && node->getOp() >= glslang::EOpAssign && node->getOp() <= glslang::EOpRightShiftAssign) {
+            assignments.push_back(node);
+            return true;
+        }
         switch (node->getOp()) {
         case glslang::EOpAssign:
         case glslang::EOpAddAssign:
@@ -566,12 +571,16 @@ std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
     std::vector<InlineMarch> found;
     for (TIntermAggregate* function : tree.reached) {
         for (TIntermLoop* loop : contentsOf(function).loops) {
-            Contents inside = contentsOf(loop);
+            Contents inside;
+            inside.everyMove = true; // `d /= o` carries the point into the step as `d = d / o` does
+            loop->traverse(&inside);
             std::vector<Assignment> assignments;
             for (TIntermBinary* node : inside.assignments) {
                 Contents right = contentsOf(node->getRight());
-                assignments.push_back({assignedSymbol(node->getLeft()), node->getOp(), right.symbols,
-                                       std::set<TIntermAggregate*>(right.calls.begin(), right.calls.end())});
+                Assignment a{assignedSymbol(node->getLeft()), node->getOp(), right.symbols,
+                             std::set<TIntermAggregate*>(right.calls.begin(), right.calls.end())};
+                if (a.op != glslang::EOpAssign && a.target >= 0) a.reads.insert(a.target);
+                assignments.push_back(std::move(a));
             }
             // Names and types of the loop's symbols.
             struct Symbols : glslang::TIntermTraverser {
