@@ -27,14 +27,13 @@ bool samplePosition(uint index, out vec3 position) {
     return true;
 #else
     vec3 hit;
-    for (uint attempt = 0u; attempt < 100u; ++attempt) {
-        if (!sdfwb_traceRandomRay(index, attempt, hit)) continue;
-        vec3 gradient = sdfwb_gradientAt(hit, 1e-4);
-        float length2 = dot(gradient, gradient);
-        vec3 normal = length2 > 0.0 ? gradient * inversesqrt(length2) : vec3(0.0);
-        position = hit + sdfwb_nearOffset(index) * normal;
-        return true;
-    }
-    return false;
+    bool found = false;
+    for (uint attempt = 0u; attempt < 100u && !found; ++attempt) found = sdfwb_traceRandomRay(index, attempt, hit);
+    if (!found) return false;
+    vec3 gradient = sdfwb_gradientAt(hit, 1e-4);
+    float length2 = dot(gradient, gradient);
+    vec3 normal = length2 > 0.0 ? gradient * inversesqrt(length2) : vec3(0.0);
+    position = hit + sdfwb_nearOffset(index) * normal;
+    return true;
 #endif
 }

@@ -15,40 +15,48 @@ uniform float sdfwb_surfaceTolerance = 1e-5;  // sdfwb_traceRay() hits at |f| be
 uniform uint sdfwb_chunkFirst;     // global index of this chunk's first sample
 uniform bool sdfwb_tetrahedralGradient = false;  // sdfwb_gradientAt(): the tracer's 4-tap scheme (benchmarks)
 
-// The field at p (when `value` is asked for) and, when `gradient` is, its raw gradient: 6-tap central differences
-// of step h (not normalised: its length shows the field's Lipschitz behaviour) or the tracer's 4
-// tetrahedron taps (sdfwb_tetrahedralGradient). A mesh's own field (SDFWB_MESH_SURFACE) without
+// The field at p (when `value` is asked for) and, when `gradient` is, its raw gradient: 6-tap
+// central differences of step h (not normalised: its length shows the field's Lipschitz
+// behaviour) or the tracer's 4 tetrahedron taps (sdfwb_tetrahedralGradient). A mesh's own field (SDFWB_MESH_SURFACE) without
 // taps writes the exact gradient of the value's own walk.
 // Every evaluation goes through one call of the field in a loop whose count is a uniform's: a
 // driver inlines the field at every call site, so seven written-out calls compiled a heavy field
-// seven times (a mesh's walks took seconds to compile on llvmpipe). Each tap's point and the sums
-// are the written-out form's, bit for bit.
+// seven times (a mesh's walks took seconds to compile on llvmpipe). Each tap's point is the
+// written-out form's, and so is each component's sum (up to the sign of a zero).
 float sdfwb_valueAndGradient(vec3 p, float h, bool value, bool gradient, bool taps, out vec3 result) {
-    const vec2 k = vec2(1.0, -1.0);
-    const vec3 offsets[11] = vec3[11](vec3(0.0), vec3(1.0, 0.0, 0.0), vec3(-1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0),
-                                      vec3(0.0, -1.0, 0.0), vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, -1.0), k.xyy, k.yyx, k.yxy, k.xxx);
     bool tetrahedral = sdfwb_tetrahedralGradient;
     int count = !gradient || !taps ? 0 : tetrahedral ? 4 : 6;
-    int first = tetrahedral ? 6 : 0;
-    float f[7];
+    float f0 = 0.0;
+    vec3 sum = vec3(0.0); // the taps' offsets times their values
     vec3 exact = vec3(0.0);
     for (int i = value ? 0 : 1; i <= count; ++i) {
-        vec3 q = i == 0 ? p : p + offsets[first + i] * h;
+        // Tap i: +x -x +y -y +z -z, or the tetrahedron's corners (1,-1,-1) (-1,-1,1) (-1,1,-1) (1,1,1).
+        int axis = (i - 1) / 2;
+        float side = (i & 1) == 1 ? 1.0 : -1.0;
+        vec3 offset = vec3(0.0);
+        if (i > 0 && !tetrahedral) offset[axis] = side;
+        if (i > 0 && tetrahedral)
+            offset = vec3(i == 1 || i == 4 ? 1.0 : -1.0, i >= 3 ? 1.0 : -1.0, i == 2 || i == 4 ? 1.0 : -1.0);
+        vec3 q = i == 0 ? p : p + offset * h;
 #if defined(SDFWB_MESH_SURFACE)
         vec3 g;
-        f[i] = sdfwb_meshSdfGradient(q, g);
+        float f = sdfwb_meshSdfGradient(q, g);
         if (i == 0) exact = g;
 #else
-        f[i] = sdfwb_sdf(q);
+        float f = sdfwb_sdf(q);
 #endif
+        if (i == 0)
+            f0 = f;
+        else if (tetrahedral)
+            sum += offset * f;
+        else
+            sum[axis] += side * f; // one axis: an infinite tap leaves the other two alone
     }
     if (count == 0)
         result = gradient ? exact : vec3(0.0);
-    else if (tetrahedral)
-        result = (k.xyy * f[1] + k.yyx * f[2] + k.yxy * f[3] + k.xxx * f[4]) / (4.0 * h);
     else
-        result = vec3(f[1] - f[2], f[3] - f[4], f[5] - f[6]) / (2.0 * h);
-    return value ? f[0] : 0.0;
+        result = sum / ((tetrahedral ? 4.0 : 2.0) * h);
+    return f0;
 }
 
 // The raw gradient alone (see sdfwb_valueAndGradient), by taps on every field.
