@@ -113,16 +113,19 @@ std::string withoutLoopExits(const std::string& text) {
     return out;
 }
 
-std::string inlineFieldBody(const std::string& text, std::size_t keyword, const std::string& counter, const std::string& point,
-                            std::string& step, std::string& why) {
-    std::string init, increment;
+namespace {
+
+// A loop's initialisation, increment and body statements, from its keyword at `keyword`; false,
+// with `why`, when they cannot be read.
+bool readLoop(const std::string& text, std::size_t keyword, std::string& init, std::string& increment,
+              std::vector<std::string>& statements, std::string& why) {
     std::size_t bodyAt = std::string::npos;
     if (isWordAt(text, keyword, "for")) {
         const std::size_t open = skipSpace(text, keyword + 3);
         const std::size_t close = pastParentheses(text, keyword + 3);
         if (close == std::string::npos) {
             why = "its loop's header could not be read";
-            return {};
+            return false;
         }
         const std::string header = text.substr(open + 1, close - open - 2);
         std::vector<std::string> clauses(1);
@@ -136,7 +139,7 @@ std::string inlineFieldBody(const std::string& text, std::size_t keyword, const 
         }
         if (clauses.size() != 3) {
             why = "its loop's header could not be read";
-            return {};
+            return false;
         }
         init = trimmedText(clauses[0]);
         increment = clauses[2];
@@ -145,20 +148,30 @@ std::string inlineFieldBody(const std::string& text, std::size_t keyword, const 
         bodyAt = pastParentheses(text, keyword + 5);
     } else {
         why = "its loop is not a for or while loop";
-        return {};
+        return false;
     }
     const std::size_t bodyEnd = bodyAt == std::string::npos ? bodyAt : statementEnd(text, bodyAt);
     if (bodyEnd == std::string::npos) {
         why = "its loop's body could not be read";
-        return {};
+        return false;
     }
     std::string body = trimmedText(text.substr(bodyAt, bodyEnd - bodyAt));
     if (!body.empty() && body.front() == '{') body = body.substr(1, body.size() - 2);
-    const std::vector<std::string> statements = splitStatements(body);
+    statements = splitStatements(body);
     if (statements.empty()) {
         why = "its loop's body could not be split into statements";
-        return {};
+        return false;
     }
+    return true;
+}
+
+} // namespace
+
+std::string inlineFieldBody(const std::string& text, std::size_t keyword, const std::string& counter, const std::string& point,
+                            std::string& step, std::string& why) {
+    std::string init, increment;
+    std::vector<std::string> statements;
+    if (!readLoop(text, keyword, init, increment, statements, why)) return {};
     // The point: the first statement that assigns it from the counter (`vec3 p = ro + rd * t;`).
     const std::regex assigns(R"((^|[^\w.])()" + point + R"()\s*(\.\s*\w+|\[[^\]]*\])?\s*[-+*/]?=[^=])");
     const std::regex steps(R"(^\s*)" + counter + R"(\s*\+=\s*([\s\S]*);\s*$)");
@@ -217,6 +230,46 @@ std::string inlineFieldBody(const std::string& text, std::size_t keyword, const 
         if (i == setAt) out += point + " = sdfwb_point;\n";
     }
     out += "return float(" + step + ");\n}\n";
+    return out;
+}
+
+std::string pointMarchBody(const std::string& text, std::size_t keyword, const std::string& point, const std::string& field,
+                           std::string& step, std::string& why) {
+    std::string init, increment;
+    std::vector<std::string> statements;
+    if (!readLoop(text, keyword, init, increment, statements, why)) return {};
+    // The step: `p += rd * d;`, or `q = p += ...;` that also copies the point.
+    const std::regex steps(R"(^\s*((?:\w+\s*=\s*)?)()" + point + R"()\s*\+=\s*([\s\S]*);\s*$)");
+    const std::regex assigns(R"((^|[^\w.])()" + field + R"()\s*[-+*/]?=[^=])");
+    std::smatch match;
+    std::size_t stepAt = statements.size();
+    std::string copy;
+    for (std::size_t i = 0; i < statements.size(); ++i)
+        if (std::regex_match(statements[i], match, steps)) {
+            copy = match[1].str();
+            step = trimmedText(match[3].str());
+            stepAt = i;
+            break;
+        }
+    if (stepAt == statements.size()) {
+        why = "the statement that advances '" + point + "' is not one of its loop's own statements";
+        return {};
+    }
+    // The field computed before the step (`d = ...; p += rd * d;`): the body up to the step. Else
+    // (`p += rd * d; ... d = ...;`) the whole body, the step replaced by the point given.
+    bool before = false;
+    for (std::size_t i = 0; i < stepAt; ++i) before = before || std::regex_search(statements[i], assigns);
+    std::string out = "{\n";
+    if (!init.empty()) out += init + ";\n";
+    out += point + " = sdfwb_point;\n";
+    for (std::size_t i = 0; i < (before ? stepAt : statements.size()); ++i) {
+        if (i == stepAt) {
+            if (!trimmedText(copy).empty()) out += copy + point + ";\n";
+            continue;
+        }
+        out += withoutLoopExits(statements[i]) + "\n";
+    }
+    out += "return float(" + field + ");\n}\n";
     return out;
 }
 

@@ -29,4 +29,11 @@ std::string withoutLoopExits(const std::string& text);
 std::string inlineFieldBody(const std::string& text, std::size_t keyword, const std::string& counter, const std::string& point,
                             std::string& step, std::string& why);
 
+// The same for a loop that marches the point itself (`p += rd * d;`, `p = c += e * dir;`) by a
+// float `field` computed from it: the body with `point` set to sdfwb_point at its start, up to the
+// step when the field is computed before it, else all of it with the step left out (a copy it
+// makes, `p = c`, kept); then `return float(field);`. `step` receives what the point grows by.
+std::string pointMarchBody(const std::string& text, std::size_t keyword, const std::string& point, const std::string& field,
+                           std::string& step, std::string& why);
+
 } // namespace sdfwb::shaders

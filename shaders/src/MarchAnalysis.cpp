@@ -442,7 +442,8 @@ void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* fu
         return;
     }
     std::string why;
-    march.body = inlineFieldBody(text, keyword, march.counter, march.point, march.step, why);
+    march.body = march.field.empty() ? inlineFieldBody(text, keyword, march.counter, march.point, march.step, why)
+                                     : pointMarchBody(text, keyword, march.point, march.field, march.step, why);
     if (march.body.empty()) {
         march.unresolved = why;
         return;
@@ -592,7 +593,37 @@ std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
                 auto it = symbols.byId.find(id);
                 return it == symbols.byId.end() ? nullptr : &it->second->getType();
             };
-            for (std::size_t s = 0; s < inside.assignments.size(); ++s) {
+            bool marched = false;
+            // A point that grows itself (`p += rd * d`) by a float the loop computes from it.
+            for (std::size_t s = 0; s < inside.assignments.size() && !marched; ++s) {
+                const Assignment& stepping = assignments[s];
+                TIntermSymbol* point = inside.assignments[s]->getLeft()->getAsSymbolNode();
+                if (stepping.op != glslang::EOpAddAssign || !point || !isFloatVec3(point->getType())) continue;
+                for (long long read : stepping.reads) {
+                    const glslang::TType* type = typeOf(read);
+                    if (read == stepping.target || !type || !type->isScalar() || type->getBasicType() != glslang::EbtFloat)
+                        continue;
+                    std::set<long long> from{read};
+                    for (bool grew = true; grew;) {
+                        grew = false;
+                        for (const Assignment& a : assignments)
+                            if (&a != &stepping && a.target >= 0 && from.count(a.target))
+                                for (long long r : a.reads) grew |= from.insert(r).second;
+                    }
+                    if (!from.count(stepping.target)) continue;
+                    InlineMarch march;
+                    march.function = plainName(function->getName());
+                    march.file = composed.map.fileName(loop->getLoc().string);
+                    march.line = loop->getLoc().line;
+                    march.counter = march.point = point->getName().c_str();
+                    march.field = symbols.byId[read]->getName().c_str();
+                    readInlineMarch(march, loop, function, function == tree.mainImage, composed);
+                    found.push_back(std::move(march));
+                    marched = true;
+                    break;
+                }
+            }
+            for (std::size_t s = 0; s < inside.assignments.size() && !marched; ++s) {
                 const Assignment& stepping = assignments[s];
                 TIntermSymbol* counter = inside.assignments[s]->getLeft()->getAsSymbolNode();
                 if (stepping.op != glslang::EOpAddAssign || !counter || !counter->getType().isScalar() ||

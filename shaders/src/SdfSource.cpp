@@ -444,10 +444,11 @@ void chooseInlineField(PreparedSdf& prepared, const std::string& stripped) {
         signature.inlineBody = march.body;
         prepared.entrySource = EntrySource::March;
         prepared.entryReason = march.function + " (its march at line " + std::to_string(march.line) +
-                               " writes the field inline: the step " + march.counter + " += " + march.step + ")";
+                               " writes the field inline: " + (march.field.empty() ? "" : march.field + ", ") + "the step " +
+                               march.counter + " += " + march.step + ")";
         return;
     }
-    if (!unresolved.empty()) prepared.entryReason = unresolved;
+    if (!unresolved.empty() && prepared.entryReason.empty()) prepared.entryReason = unresolved;
 }
 
 // A whole shader without an `sdf`: the function its own march steps by (marchedFunctions), when
@@ -576,8 +577,9 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
             break;
         }
     }
-    if (!prepared.signature.found && prepared.entrySource == EntrySource::Default && prepared.shadertoyMainImage &&
-        prepared.entryReason.empty())
+    // Also where the march calls a field whose parameters cannot be traced (mainImage marches
+    // `capsule(p, a, b, r)` itself): the loop's body run once makes that call as the march does.
+    if (!prepared.signature.found && prepared.entrySource == EntrySource::Default && prepared.shadertoyMainImage)
         chooseInlineField(prepared, stripped);
     if (!prepared.signature.found) {
         Diagnostic missing = missingEntryDiagnostic(prepared.source, chosen, prepared.entrySource != EntrySource::Default);

@@ -479,6 +479,14 @@ TEST_F(InlineFields, TheLoopBodyRunOnceIsTheField) {
     for (int j = 0; j < 3; ++j) folded = glm::abs(folded) * 2.0f - glm::vec3(0.8f, 0.7f, 0.8f);
     EXPECT_NEAR(valueAt("64_st_golfed_glow_ifs.glsl", at), (glm::length(folded) - 0.6f) / 8.0f, 1e-5f);
 
+    // Loops that march the point itself: 67 (`p += rd * d`, d computed before the step: a capsule
+    // on y = 0.2 and a ball squashed in y) and 68 (`p = c += e * d`, e computed after it: tori of
+    // radii 0.5 and 0.12 repeated every 0.6 in y, cut at |y| = 0.9).
+    EXPECT_NEAR(valueAt("67_st_point_march_capsules.glsl", {0.0f, -0.3f, 0.0f}), 0.7f * (0.3f / 0.7f - 0.5f), 1e-5f);
+    EXPECT_NEAR(valueAt("67_st_point_march_capsules.glsl", {0.6f, 0.2f, 0.0f}), -0.15f, 1e-5f);
+    EXPECT_NEAR(valueAt("68_st_golfed_point_copy.glsl", {0.5f, 0.6f, 0.0f}), -0.12f, 1e-5f);
+    EXPECT_NEAR(valueAt("68_st_golfed_point_copy.glsl", {0.5f, 1.2f, 0.0f}), 0.3f, 1e-5f);
+
     // A loop whose step is taken only on a condition is not a field run once: the file does not
     // open, and the error says why.
     const fs::path folder = fs::temp_directory_path() / ("sdfwb-foreign-inline-" + std::to_string(::getpid()));

@@ -45,12 +45,14 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed);
 // A march that writes its field inline, with no function to call: a loop whose float counter grows
 // by a value computed from a vec3 point the loop computes from the counter (`vec3 p = ro + rd * t;
 // float d = length(p) - 1.; t += d;`, golfed `vec3 p = g * d; ... g += e = length(p) - 1.;`).
+// Or the point itself grows by a float computed from it (`p += rd * d;`, `p = c += e * dir;`).
 // The field at a point is the loop's body run once with the point set to it (shaders/src/InlineField.h).
 struct InlineMarch {
     std::string function;       // the function holding the loop (mainImage or one it reaches)
     std::string file;           // the composed map's file name of the loop
     int line = 0;               // the loop's line
-    std::string counter, point; // `t` and `p`
+    std::string counter, point; // `t` and `p` (the same where the loop marches the point itself)
+    std::string field;          // where the point itself grows (`p += rd * d`): the float it grows by
     std::string step;           // what the counter grows by (`d`, `e * .7`)
     // The wrapper's body: the function's parameters declared (mainImage's as coordinate and
     // colour name them: the caller declares those), its statements before the loop, then `body`.
