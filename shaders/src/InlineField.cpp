@@ -252,6 +252,23 @@ std::string pointMarchBody(const std::string& text, std::size_t keyword, const s
             break;
         }
     if (stepAt == statements.size()) {
+        // `for (...; ...; p += D * d)`: the step follows the whole body.
+        std::string part;
+        int depth = 0;
+        for (std::size_t i = 0; i <= increment.size(); ++i) {
+            const char c = i < increment.size() ? increment[i] : ',';
+            depth += (c == '(' || c == '[') ? 1 : (c == ')' || c == ']') ? -1 : 0;
+            if (c != ',' || depth != 0) {
+                part += c;
+                continue;
+            }
+            const std::string statement = part + ";";
+            if (step.empty() && std::regex_match(statement, match, steps) && trimmedText(match[1].str()).empty())
+                step = trimmedText(match[3].str());
+            part.clear();
+        }
+    }
+    if (stepAt == statements.size() && step.empty()) {
         why = "the statement that advances '" + point + "' is not one of its loop's own statements";
         return {};
     }

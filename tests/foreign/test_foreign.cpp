@@ -500,6 +500,28 @@ TEST_F(InlineFields, TheLoopBodyRunOnceIsTheField) {
                                                   "    }\n"
                                                   "    c = vec4(t);\n"
                                                   "}\n";
+    // The point marched in the for header, the body a single statement without braces.
+    std::ofstream(folder / "header.glsl")
+        << "void mainImage(out vec4 c, in vec2 f) {\n"
+           "    vec3 p = vec3(0.0, 0.0, -3.0), rd = vec3(0.0, 0.0, 1.0);\n"
+           "    float d = 1.0;\n"
+           "    for (int i = 0; i < 64; i++, p += rd * d) d = length(p - vec3(0.2, 0.0, 0.0)) - 0.5;\n"
+           "    c = vec4(d);\n"
+           "}\n";
+    {
+        shaders::PreparedSdf header = prepare(folder / "header.glsl");
+        ASSERT_TRUE(header.ok()) << firstError(header);
+        renderer::SampleCompute compute;
+        EXPECT_FALSE(shaders::hasErrors(compute.build(header, *shaders::builtinPiece("analysis/points.glsl"))));
+        sampling::SamplingJob job;
+        job.count = 1;
+        const glm::vec3 centre(0.2f, 0.0f, 0.0f);
+        job.inputPoints = &centre.x;
+        float position[3], distance = 0.0f, gradient[3];
+        EXPECT_TRUE(sampling::sampleInto(compute, job, position, &distance, gradient, {}).hasValue());
+        compute.releaseGl();
+        EXPECT_NEAR(distance, -0.5f, 1e-5f);
+    }
     shaders::PreparedSdf conditional = prepare(folder / "conditional.glsl");
     EXPECT_FALSE(conditional.ok());
     EXPECT_NE(firstError(conditional).find("writes its field inline, but the statement that advances 't'"), std::string::npos)
