@@ -277,6 +277,13 @@ def speed_row(name, vertices, faces):
     for pattern in ["rand", "near"]:
         seconds = best_of(lambda: sdfwb.sample(mesh_path, pattern, SPEED_POINTS))
         row[pattern] = SPEED_POINTS / seconds
+    # Hierarchy nodes a row's walks visit in the CPU engine (a count no driver changes), at the shared
+    # uniform points and at the near sampler's points.
+    near_points = sdfwb.sample(mesh_path, "near", SPEED_POINTS)["position"]
+    for pattern, at in (("rand", points), ("near", near_points)):
+        nodes = with_environment({"SDFWB_MESH_ENGINE": "cpu"}, lambda: sdfwb.evaluate(mesh_path, at)["mesh_nodes"])
+        row["nodes_" + pattern] = {k: v / nodes["rows"] for k, v in nodes.items() if k != "rows"}
+        print(name, pattern, "nodes per row", row["nodes_" + pattern], flush=True)
     # Bad rows of the GLSL field's near sampler (the loop budget, below).
     marched = with_environment({"SDFWB_MESH_ENGINE": "gpu"}, lambda: sdfwb.sample(mesh_path, "near", 20000))
     row["near_bad"] = marched["bad_rows"] / 20000
@@ -524,6 +531,20 @@ with open(OUT, "w") as out:
                       "known, but is wrong behind holes and flipped faces (the wrong-signs column); sdfwb's winding "
                       "sign is right there and costs a lattice lookup, a segment walk or a hierarchy walk a row.")
         out.write("\n\n")
+    out.write("### Hierarchy nodes a row visits\n\nThe CPU engine's walks, counted per row "
+              "(`sdfwb.evaluate(...)['mesh_nodes']`): a count that does not depend on the driver or the machine's "
+              "speed. nearest: nodes the closest-point walk tests; winding: nodes the winding-number walks open "
+              "or take as dipoles (the sign cache's lattice included); segment: nodes the walks of segments from a "
+              "lattice point test; cached / crossed: the share of rows whose sign came from the sign cache's ball "
+              "or from a lattice point and the triangles between. rand: the shared uniform points; near: "
+              f"{SPEED_POINTS:,} points of `sdfwb.sample(path, 'near')`.\n\n"
+              "| mesh | points | nearest | winding | segment | cached | crossed |\n|---|---|---|---|---|---|---|\n")
+    for r in speed_rows:
+        for pattern in ("rand", "near"):
+            n = r.get("nodes_" + pattern)
+            if n:
+                out.write(f"| {r['mesh']} | {pattern} | {n['nearest']:.1f} | {n['winding']:.1f} | {n['segment']:.1f} | "
+                          f"{100 * n['cached_signs']:.0f} % | {100 * n['crossed_signs']:.0f} % |\n")
     out.write("\n## What runs out of budget on llvmpipe\n\nllvmpipe (Mesa's CPU driver, what this machine has) ends "
               "a shader invocation's loops after 65535 iterations in all, counted across every call the invocation "
               "makes. A mesh SDF walks its hierarchy in loops (a nearest-triangle walk and a winding-number walk per "

@@ -6,6 +6,7 @@
 #include <dataset/Catalogue.h>
 #include <jobs/JobJson.h>
 #include <jobs/Jobs.h>
+#include <meshfield/MeshQuery.h>
 #include <renderer/HeadlessContext.h>
 #include <renderer/SampleCompute.h>
 #include <sampling/FieldAudit.h>
@@ -26,6 +27,8 @@
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <optional>
+#include <string_view>
 
 namespace py = pybind11;
 using namespace sdfwb;
@@ -243,6 +246,7 @@ py::dict evaluate(const std::string& sdf, py::array_t<float, py::array::c_style 
     float* d = distances.mutable_data();
     Expected<sampling::SamplingReport> report = sampling::SamplingReport{};
     std::string compileErrors;
+    std::optional<meshfield::QueryCounters> meshCounters;
     if (n > 0) {
         py::gil_scoped_release release;
         std::lock_guard lock(g_glMutex);
@@ -253,6 +257,10 @@ py::dict evaluate(const std::string& sdf, py::array_t<float, py::array::c_style 
             for (const auto& diagnostic : diagnostics) compileErrors += shaders::formatDiagnostic(diagnostic) + "\n";
         } else {
             report = field.evaluate(points.data(), std::uint64_t(n), d, g, settings);
+            if (std::string_view(field.meshEngine()) == "cpu") {
+                meshCounters.emplace();
+                field.addMeshCounters(*meshCounters);
+            }
         }
         field.releaseGl();
         releaseContext();
@@ -265,6 +273,18 @@ py::dict evaluate(const std::string& sdf, py::array_t<float, py::array::c_style 
     result["bad_rows"] = report->badRows;
     result["seconds"] = report->seconds;
     result["mesh_source"] = meshSourceOf(opened);
+    py::object nodes = py::none();
+    if (meshCounters) {
+        py::dict counts;
+        counts["rows"] = std::uint64_t(n);
+        counts["nearest"] = meshCounters->nearestNodes;
+        counts["winding"] = meshCounters->windingNodes;
+        counts["segment"] = meshCounters->segmentNodes;
+        counts["cached_signs"] = meshCounters->cachedSigns;
+        counts["crossed_signs"] = meshCounters->crossedSigns;
+        nodes = counts;
+    }
+    result["mesh_nodes"] = nodes;
     return result;
 }
 
@@ -579,7 +599,11 @@ Args:
 Returns:
     dict: distance (N,) float32; gradient (N, 3) float32 (raw central differences), or None when
     gradient=False; bad_rows (int: rows with NaN or Inf); seconds (float); mesh_source (dict for a mesh file, as
-    for sample(); None for GLSL).
+    for sample(); None for GLSL); mesh_nodes (dict when the native CPU engine evaluated a mesh's own field, else
+    None: rows, and the hierarchy nodes its walks visited, a count that does not depend on the driver:
+    nearest (the closest-point walks), winding (the winding-number walks), segment (the walks of the
+    segments from a lattice point), and how many rows took their sign from the sign cache (cached_signs) or
+    from a lattice point and the triangles between (crossed_signs)).
 
 Raises:
     ValueError: points not of shape (N, 3), an argument out of range, an unknown SDF or parameter, or GLSL

@@ -49,6 +49,7 @@ class EvaluateResult(TypedDict):
     bad_rows: int
     seconds: float
     mesh_source: dict[str, Any] | None
+    mesh_nodes: dict[str, int] | None
 
 @type_check_only
 class SampleMetadata(TypedDict):

@@ -185,3 +185,34 @@ def test_a_broken_mesh_remeshes_watertight_and_grades_against_its_input(tmp_path
     # within a cell of the sphere they were cut from; a cell is 2/48).
     assert graded["chamfer_l1"] < 0.01 and graded["hausdorff"] < 2 * 2 / 48
     assert graded["fscore"] > 0.95
+
+
+def test_evaluate_counts_the_hierarchy_nodes_the_cpu_engine_visits(tmp_path, monkeypatch):
+    """Issue 46, point 3: node visits per query, a count that does not depend on the driver. A point
+    far from the cube needs few nearest-walk nodes; points on a shell just off its faces need more and
+    take their sign from the sign cache or a lattice point (closed cube: no winding walk remains)."""
+    monkeypatch.setenv("SDFWB_MESH_ENGINE", "cpu")
+    cube = write_cube(tmp_path / "cube.obj")
+    rng = np.random.default_rng(5)
+    far = rng.normal(size=(4000, 3))
+    far = (3.0 * far / np.linalg.norm(far, axis=1, keepdims=True)).astype(np.float32)
+    near = rng.uniform(-0.5, 0.5, (4000, 3))
+    near[:, 0] = np.where(rng.random(4000) < 0.5, -0.5, 0.5) + rng.normal(scale=1e-3, size=4000)
+    near = near.astype(np.float32)
+    counts = {}
+    for name, points in (("far", far), ("near", near)):
+        result = sdfwb.evaluate(cube, points, gradient=True)
+        nodes = result["mesh_nodes"]
+        assert nodes is not None and nodes["rows"] == len(points), nodes
+        assert set(nodes) == {"rows", "nearest", "winding", "segment", "cached_signs", "crossed_signs"}
+        assert 1 <= nodes["nearest"] / len(points) < 64, nodes
+        assert nodes["cached_signs"] + nodes["crossed_signs"] <= len(points), nodes
+        exact = box_sdf(points.astype(np.float64))
+        assert np.abs(result["distance"] - exact).max() < 1e-5
+        counts[name] = nodes
+    assert counts["far"]["cached_signs"] == len(far), counts["far"]
+    assert counts["near"]["cached_signs"] + counts["near"]["crossed_signs"] > 0.5 * len(near), counts["near"]
+    # GLSL fields and the GPU engine have no CPU walks to count.
+    assert sdfwb.evaluate("sphere", far[:10])["mesh_nodes"] is None
+    monkeypatch.setenv("SDFWB_MESH_ENGINE", "gpu")
+    assert sdfwb.evaluate(cube, far[:10])["mesh_nodes"] is None

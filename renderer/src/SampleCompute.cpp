@@ -85,6 +85,7 @@ struct SampleCompute::Impl {
     // The native engine for a mesh's own field (null: the GLSL field computes the values).
     std::shared_ptr<const meshfield::MeshQuery> query;
     const char* engine = "";
+    meshfield::QueryCounters counters; // the CPU engine's, since build()
     // With the CPU engine, each slot's rows on the host (the mapped buffers are read-only).
     std::vector<float> hostRows[kSlots][3];
     std::string source;
@@ -99,10 +100,10 @@ struct SampleCompute::Impl {
     }
     std::uint32_t evaluateOnCpu(const SampleUniforms& uniforms, const float* positions, std::size_t positionStride,
                                 float* distances, std::size_t distanceStride, float* gradients, std::size_t gradientStride,
-                                std::uint32_t count) const {
+                                std::uint32_t count) {
         meshfield::RowView rows{positions, positionStride, distances, distanceStride, gradients, gradientStride};
         meshfield::GradientMode mode{!uniforms.meshGradientTaps, uniforms.gradientStep};
-        return std::uint32_t(query->evaluate(rows, count, mode));
+        return std::uint32_t(query->evaluate(rows, count, mode, 0, &counters));
     }
     Expected<std::uint32_t> dispatch(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, BufferSet& set,
                                      bool positions, bool gradients, bool interleaved = false,
@@ -158,6 +159,15 @@ const std::string& SampleCompute::source() const { return m_impl->source; }
 
 const char* SampleCompute::meshEngine() const { return m_impl->engine; }
 
+void SampleCompute::addMeshCounters(meshfield::QueryCounters& into) const {
+    const meshfield::QueryCounters& c = m_impl->counters;
+    into.nearestNodes += c.nearestNodes;
+    into.windingNodes += c.windingNodes;
+    into.cachedSigns += c.cachedSigns;
+    into.crossedSigns += c.crossedSigns;
+    into.segmentNodes += c.segmentNodes;
+}
+
 std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf& sdf, const shaders::ShaderPiece& sampler) {
     std::vector<shaders::Diagnostic> diagnostics = sdf.diagnostics;
     if (shaders::hasErrors(diagnostics)) return diagnostics;
@@ -206,6 +216,7 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     m_impl->mesh = sdf.mesh;
     m_impl->query = std::move(query);
     m_impl->engine = engine;
+    m_impl->counters = {};
     m_impl->pointsSampler = sampler.name == "sdfwb:analysis/points.glsl";
     return diagnostics;
 }

@@ -14,6 +14,10 @@
 #include <memory>
 #include <vector>
 
+namespace sdfwb::meshfield {
+struct QueryCounters;
+} // namespace sdfwb::meshfield
+
 namespace sdfwb::renderer {
 
 struct SampleUniforms {
@@ -92,6 +96,10 @@ public:
     // computes positions only, and meshfield::MeshQuery the values and gradients on every core),
     // "gpu" for a mesh field on the GL device, "" for any other SDF. See meshfield::chooseMeshEngine.
     const char* meshEngine() const;
+    // The CPU engine's work since build(): hierarchy nodes its walks visited and how its rows got
+    // their signs (meshfield::QueryCounters), a count that does not depend on the driver. Zero
+    // when the engine is not the CPU's.
+    void addMeshCounters(meshfield::QueryCounters& into) const;
 
     void releaseGl();
 

@@ -47,6 +47,11 @@ public:
     Expected<SamplingReport> evaluate(const float* points, std::uint64_t count, float* distances, float* gradients,
                                       const FieldSettings& settings, const ProgressSink& progress = {});
 
+    // The native CPU engine's hierarchy work since build() (renderer::SampleCompute::addMeshCounters),
+    // and which engine ran ("cpu", "gpu", or "" for GLSL).
+    void addMeshCounters(meshfield::QueryCounters& into) const { m_compute.addMeshCounters(into); }
+    const char* meshEngine() const { return m_compute.meshEngine(); }
+
     void releaseGl();
 
 private:
