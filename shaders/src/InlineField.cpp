@@ -1,5 +1,6 @@
 #include "InlineField.h"
 
+#include <core/Regex.h>
 #include <shaders/SdfSource.h>
 
 #include <regex>
@@ -173,8 +174,8 @@ std::string inlineFieldBody(const std::string& text, std::size_t keyword, const 
     std::vector<std::string> statements;
     if (!readLoop(text, keyword, init, increment, statements, why)) return {};
     // The point: the first statement that assigns it from the counter (`vec3 p = ro + rd * t;`).
-    const std::regex assigns(R"((^|[^\w.])()" + point + R"()\s*(\.\s*\w+|\[[^\]]*\])?\s*[-+*/]?=[^=])");
-    const std::regex steps(R"(^\s*)" + counter + R"(\s*\+=\s*([\s\S]*);\s*$)");
+    const std::regex assigns(R"((^|[^\w.])()" + point + R"()\s*(\.\s*\w+|\[[^\]]*\])?\s*[-+*/]?=[^=])", kLinearRegex);
+    const std::regex steps(R"(^\s*)" + counter + R"(\s*\+=\s*([\s\S]*);\s*$)", kLinearRegex);
     std::size_t pointAt = statements.size();
     for (std::size_t i = 0; i < statements.size() && pointAt == statements.size(); ++i)
         if (mentions(statements[i], counter) && std::regex_search(statements[i], assigns)) pointAt = i;
@@ -186,7 +187,7 @@ std::string inlineFieldBody(const std::string& text, std::size_t keyword, const 
     // `p.xz *= rot(iTime)`: +=, -= or *= by what reads neither the point nor the counter) place the
     // camera: the given point is set after them, so that the scene sits where the shader's camera
     // looks, not at the camera's distance from the origin.
-    const std::regex moves(R"(^\s*)" + point + R"(\s*(\.\s*[xyzrgbstpq]+)?\s*[-+*]=([\s\S]*);\s*$)");
+    const std::regex moves(R"(^\s*)" + point + R"(\s*(\.\s*[xyzrgbstpq]+)?\s*[-+*]=([\s\S]*);\s*$)", kLinearRegex);
     std::size_t setAt = pointAt;
     for (std::size_t i = pointAt + 1; i < statements.size(); ++i) {
         std::smatch moved;
@@ -239,8 +240,8 @@ std::string pointMarchBody(const std::string& text, std::size_t keyword, const s
     std::vector<std::string> statements;
     if (!readLoop(text, keyword, init, increment, statements, why)) return {};
     // The step: `p += rd * d;`, or `q = p += ...;` that also copies the point.
-    const std::regex steps(R"(^\s*((?:\w+\s*=\s*)?)()" + point + R"()\s*\+=\s*([\s\S]*);\s*$)");
-    const std::regex assigns(R"((^|[^\w.])()" + field + R"()\s*[-+*/]?=[^=])");
+    const std::regex steps(R"(^\s*((?:\w+\s*=\s*)?)()" + point + R"()\s*\+=\s*([\s\S]*);\s*$)", kLinearRegex);
+    const std::regex assigns(R"((^|[^\w.])()" + field + R"()\s*[-+*/]?=[^=])", kLinearRegex);
     std::smatch match;
     std::size_t stepAt = statements.size();
     std::string copy;

@@ -660,3 +660,20 @@ TEST(SamplingStage, CallsTheFieldFromOnePlace) {
     EXPECT_EQ(calls("sdfwb_meshSdf"), 0);
     EXPECT_EQ(calls("sdfwb_valueAndGradient"), 2) << "the row's value, and sdfwb_gradientAt";
 }
+
+// Issue 47: an inline field's statements are read by regular expressions; one of 200,000
+// characters (a golfed one-liner, or spaces) must neither overflow the stack nor stop the file
+// from opening (core/Regex.h's linear executor).
+TEST(EntryPoint, AnInlineFieldWithAVeryLongStatementOpens) {
+    const std::string spaces(200000, ' ');
+    const std::string text = "void mainImage(out vec4 c, in vec2 f) {\n"
+                             "    float t = 0.0;\n"
+                             "    for (int i = 0; i < 64; i++) {\n"
+                             "        vec3 p = vec3(0.0, 0.0, -3.0) +" +
+                             spaces + "vec3(0.0, 0.0, 1.0) * t;\n        float d = length(p) - 1.0;\n        t +=" + spaces +
+                             "d;\n    }\n    c = vec4(t);\n}\n";
+    PreparedSdf sdf = prepare(text);
+    ASSERT_TRUE(sdf.ok());
+    EXPECT_FALSE(sdf.signature.inlineBody.empty());
+    EXPECT_NE(sdf.entryReason.find("writes the field inline"), std::string::npos) << sdf.entryReason;
+}
