@@ -116,6 +116,21 @@ std::string withoutLoopExits(const std::string& text) {
 
 namespace {
 
+// `text` split at each `separator` outside parentheses and brackets (a for header's clauses, an
+// increment's comma-separated parts).
+std::vector<std::string> splitOutside(const std::string& text, char separator) {
+    std::vector<std::string> parts(1);
+    int depth = 0;
+    for (char c : text) {
+        depth += (c == '(' || c == '[') ? 1 : (c == ')' || c == ']') ? -1 : 0;
+        if (c == separator && depth == 0)
+            parts.emplace_back();
+        else
+            parts.back() += c;
+    }
+    return parts;
+}
+
 // A loop's initialisation, increment and body statements, from its keyword at `keyword`; false,
 // with `why`, when they cannot be read.
 bool readLoop(const std::string& text, std::size_t keyword, std::string& init, std::string& increment,
@@ -128,16 +143,7 @@ bool readLoop(const std::string& text, std::size_t keyword, std::string& init, s
             why = "its loop's header could not be read";
             return false;
         }
-        const std::string header = text.substr(open + 1, close - open - 2);
-        std::vector<std::string> clauses(1);
-        int depth = 0;
-        for (char c : header) {
-            depth += (c == '(' || c == '[') ? 1 : (c == ')' || c == ']') ? -1 : 0;
-            if (c == ';' && depth == 0)
-                clauses.emplace_back();
-            else
-                clauses.back() += c;
-        }
+        const std::vector<std::string> clauses = splitOutside(text.substr(open + 1, close - open - 2), ';');
         if (clauses.size() != 3) {
             why = "its loop's header could not be read";
             return false;
@@ -206,18 +212,9 @@ std::string inlineFieldBody(const std::string& text, std::size_t keyword, const 
         }
     if (stepAt == statements.size()) {
         // `for (...; ...; i++, t += d)`: the step ends the body.
-        std::string part;
-        int depth = 0;
-        for (std::size_t i = 0; i <= increment.size(); ++i) {
-            const char c = i < increment.size() ? increment[i] : ',';
-            depth += (c == '(' || c == '[') ? 1 : (c == ')' || c == ']') ? -1 : 0;
-            if (c != ',' || depth != 0) {
-                part += c;
-                continue;
-            }
+        for (const std::string& part : splitOutside(increment, ',')) {
             const std::string statement = part + ";";
             if (std::regex_match(statement, match, steps)) step = trimmedText(match[1].str());
-            part.clear();
         }
     }
     if (step.empty()) {
@@ -254,19 +251,10 @@ std::string pointMarchBody(const std::string& text, std::size_t keyword, const s
         }
     if (stepAt == statements.size()) {
         // `for (...; ...; p += D * d)`: the step follows the whole body.
-        std::string part;
-        int depth = 0;
-        for (std::size_t i = 0; i <= increment.size(); ++i) {
-            const char c = i < increment.size() ? increment[i] : ',';
-            depth += (c == '(' || c == '[') ? 1 : (c == ')' || c == ']') ? -1 : 0;
-            if (c != ',' || depth != 0) {
-                part += c;
-                continue;
-            }
+        for (const std::string& part : splitOutside(increment, ',')) {
             const std::string statement = part + ";";
             if (step.empty() && std::regex_match(statement, match, steps) && trimmedText(match[1].str()).empty())
                 step = trimmedText(match[3].str());
-            part.clear();
         }
     }
     if (stepAt == statements.size() && step.empty()) {

@@ -454,8 +454,8 @@ TEST_F(FieldParameters, ThoseMainImageComputesReachTheField) {
 class InlineFields : public sdfwb::testing::GlTest {};
 
 TEST_F(InlineFields, TheLoopBodyRunOnceIsTheField) {
-    auto valueAt = [](const std::string& name, glm::vec3 p) {
-        shaders::PreparedSdf sdf = prepare(kFolder / name);
+    auto valueAt = [](const fs::path& name, glm::vec3 p) {
+        shaders::PreparedSdf sdf = prepare(kFolder / name); // an absolute `name` stands for itself
         EXPECT_TRUE(sdf.ok()) << firstError(sdf);
         EXPECT_FALSE(sdf.signature.inlineBody.empty()) << name;
         renderer::SampleCompute compute;
@@ -508,20 +508,7 @@ TEST_F(InlineFields, TheLoopBodyRunOnceIsTheField) {
            "    for (int i = 0; i < 64; i++, p += rd * d) d = length(p - vec3(0.2, 0.0, 0.0)) - 0.5;\n"
            "    c = vec4(d);\n"
            "}\n";
-    {
-        shaders::PreparedSdf header = prepare(folder / "header.glsl");
-        ASSERT_TRUE(header.ok()) << firstError(header);
-        renderer::SampleCompute compute;
-        EXPECT_FALSE(shaders::hasErrors(compute.build(header, *shaders::builtinPiece("analysis/points.glsl"))));
-        sampling::SamplingJob job;
-        job.count = 1;
-        const glm::vec3 centre(0.2f, 0.0f, 0.0f);
-        job.inputPoints = &centre.x;
-        float position[3], distance = 0.0f, gradient[3];
-        EXPECT_TRUE(sampling::sampleInto(compute, job, position, &distance, gradient, {}).hasValue());
-        compute.releaseGl();
-        EXPECT_NEAR(distance, -0.5f, 1e-5f);
-    }
+    EXPECT_NEAR(valueAt(folder / "header.glsl", {0.2f, 0.0f, 0.0f}), -0.5f, 1e-5f);
     shaders::PreparedSdf conditional = prepare(folder / "conditional.glsl");
     EXPECT_FALSE(conditional.ok());
     EXPECT_NE(firstError(conditional).find("writes its field inline, but the statement that advances 't'"), std::string::npos)
