@@ -23,6 +23,30 @@ uniform bool sdfwb_tetrahedralGradient = false;  // sdfwb_gradientAt(): the trac
 // driver inlines the field at every call site, so seven written-out calls compiled a heavy field
 // seven times (a mesh's walks took seconds to compile on llvmpipe). Each tap's point is the
 // written-out form's, and so is each component's sum (up to the sign of a zero).
+// A field without loops (SDFWB_FIELD_WITHOUT_LOOPS, set by the composer) compiles small, and its
+// calls written out run faster than the loop on cheap fields: the same points and sums, in order.
+#if defined(SDFWB_FIELD_WITHOUT_LOOPS) && !defined(SDFWB_MESH_SURFACE)
+float sdfwb_valueAndGradient(vec3 p, float h, bool value, bool gradient, bool taps, out vec3 result) {
+    float f0 = value ? sdfwb_sdf(p) : 0.0;
+    result = vec3(0.0);
+    if (!gradient || !taps) return f0;
+    if (sdfwb_tetrahedralGradient) {
+        const vec3 a = vec3(1.0, -1.0, -1.0), b = vec3(-1.0, -1.0, 1.0), c = vec3(-1.0, 1.0, -1.0), d = vec3(1.0);
+        vec3 sum = vec3(0.0);
+        sum += a * sdfwb_sdf(p + a * h);
+        sum += b * sdfwb_sdf(p + b * h);
+        sum += c * sdfwb_sdf(p + c * h);
+        sum += d * sdfwb_sdf(p + d * h);
+        result = sum / (4.0 * h);
+    } else {
+        const vec3 x = vec3(1.0, 0.0, 0.0), y = vec3(0.0, 1.0, 0.0), z = vec3(0.0, 0.0, 1.0);
+        result = vec3(sdfwb_sdf(p + x * h) - sdfwb_sdf(p - x * h), sdfwb_sdf(p + y * h) - sdfwb_sdf(p - y * h),
+                      sdfwb_sdf(p + z * h) - sdfwb_sdf(p - z * h)) /
+                 (2.0 * h);
+    }
+    return f0;
+}
+#else
 float sdfwb_valueAndGradient(vec3 p, float h, bool value, bool gradient, bool taps, out vec3 result) {
     bool tetrahedral = sdfwb_tetrahedralGradient;
     int count = !gradient || !taps ? 0 : tetrahedral ? 4 : 6;
@@ -58,6 +82,7 @@ float sdfwb_valueAndGradient(vec3 p, float h, bool value, bool gradient, bool ta
         result = sum / ((tetrahedral ? 4.0 : 2.0) * h);
     return f0;
 }
+#endif
 
 // The raw gradient alone (see sdfwb_valueAndGradient), by taps on every field.
 vec3 sdfwb_gradientAt(vec3 p, float h) {

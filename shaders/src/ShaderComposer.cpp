@@ -90,6 +90,24 @@ std::string renameBiasLookups(const std::string& text) {
     return out;
 }
 
+// Whether `text` (comments stripped first) has a for, while or do keyword: a field without one is
+// cheap to inline at every call site (SDFWB_FIELD_WITHOUT_LOOPS, sampling/common.glsl).
+bool hasLoopKeyword(const std::string& text) {
+    auto wordCharacter = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    for (std::size_t at = 0; at < text.size();) {
+        if (!wordCharacter(text[at])) {
+            ++at;
+            continue;
+        }
+        std::size_t end = at;
+        while (end < text.size() && wordCharacter(text[end])) ++end;
+        const std::string_view word(text.data() + at, end - at);
+        if (word == "for" || word == "while" || word == "do") return true;
+        at = end;
+    }
+    return false;
+}
+
 } // namespace
 
 std::string entryWrapper(const PreparedSdf& sdf) {
@@ -154,6 +172,8 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
         if (all.count("SDFWB_COMPAT_iChannel" + std::to_string(n)))
             all["SDFWB_CHANNEL" + std::to_string(n) + "_UNIT"] = std::to_string(kChannelTextureUnit + n);
 
+    if (!sdf.mesh && !hasLoopKeyword(stripComments(sdf.source.text + sdf.signature.prelude + sdf.signature.inlineBody)))
+        all["SDFWB_FIELD_WITHOUT_LOOPS"] = "1";
     if (sdf.mesh) {
         all["SDFWB_MESH_NODES_BINDING"] = std::to_string(kMeshNodesBinding);
         all["SDFWB_MESH_TRIANGLES_BINDING"] = std::to_string(kMeshTrianglesBinding);
