@@ -302,7 +302,8 @@ TEST_F(SamplerTest, WrittenOutTapsGiveTheLoopsRows) {
     std::string looped = csg;
     looped.insert(looped.find("    return"), "    for (int i = 0; i < 2; ++i) q += 0.0;\n");
     auto defines = [](const std::string& text) {
-        auto composed = shaders::composeSdfShader(prepare(text), shaders::Stage::Compute, std::string("sampling/sample.comp"), {});
+        auto composed =
+            shaders::composeSdfShader(prepare(text), shaders::Stage::Compute, std::string("sampling/sample.comp"), {});
         EXPECT_TRUE(composed.hasValue());
         return composed && composed->text.find("#define SDFWB_FIELD_WITHOUT_LOOPS") != std::string::npos;
     };
@@ -316,7 +317,8 @@ TEST_F(SamplerTest, WrittenOutTapsGiveTheLoopsRows) {
         EXPECT_EQ(written.positions, loop.positions) << pattern;
         EXPECT_EQ(written.distances, loop.distances) << pattern;
         EXPECT_EQ(written.gradients, loop.gradients) << pattern;
-        EXPECT_GT(std::count_if(written.distances.begin(), written.distances.end(), [](float d) { return std::isfinite(d); }), 2900)
+        EXPECT_GT(std::count_if(written.distances.begin(), written.distances.end(), [](float d) { return std::isfinite(d); }),
+                  2900)
             << pattern;
     }
 }
