@@ -357,12 +357,17 @@ float sdfwb_meshRaycast(vec3 origin, vec3 direction, float tMin, float tMax, out
 // 1 inside, 0 outside, NaN when a walk was cut (see sdfwb_meshCut).
 float sdfwb_meshInside(vec3 p, uint triangle, int feature, vec3 closest) {
 #if defined(SDFWB_MESH_SIGN_PARITY)
-    // The majority of three skewed rays (meshfield's parityDirections()).
-    int a = sdfwb_meshCrossings(p, normalize(vec3(1.0, 0.3183, 0.1415)));
-    int b = sdfwb_meshCrossings(p, normalize(vec3(-0.2718, 1.0, 0.5772)));
-    int c = sdfwb_meshCrossings(p, normalize(vec3(0.1618, -0.4142, 1.0)));
-    if (a < 0 || b < 0 || c < 0) return sdfwb_meshCut();
-    return (a & 1) + (b & 1) + (c & 1) >= 2 ? 1.0 : 0.0;
+    // The majority of three skewed rays (meshfield's parityDirections()); the third is cast only
+    // when the first two disagree. One call site in a loop: the walk is compiled once.
+    const vec3 directions[3] = vec3[3](vec3(1.0, 0.3183, 0.1415), vec3(-0.2718, 1.0, 0.5772), vec3(0.1618, -0.4142, 1.0));
+    int odd = 0;
+    for (int r = 0; r < 3; ++r) {
+        if (r == 2 && odd != 1) break;
+        int crossings = sdfwb_meshCrossings(p, normalize(directions[r]));
+        if (crossings < 0) return sdfwb_meshCut();
+        odd += crossings & 1;
+    }
+    return odd >= 2 ? 1.0 : 0.0;
 #elif defined(SDFWB_MESH_SIGN_PSEUDONORMAL)
     const int slot[7] = int[7](0, 4, 5, 6, 1, 2, 3);
     return dot(p - closest, sdfwb_meshPseudonormals[7u * triangle + uint(slot[feature])].xyz) < 0.0 ? 1.0 : 0.0;
