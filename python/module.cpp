@@ -257,7 +257,7 @@ py::dict evaluate(const std::string& sdf, py::array_t<float, py::array::c_style 
             for (const auto& diagnostic : diagnostics) compileErrors += shaders::formatDiagnostic(diagnostic) + "\n";
         } else {
             report = field.evaluate(points.data(), std::uint64_t(n), d, g, settings);
-            if (std::string_view(field.meshEngine()) == "cpu") {
+            if (std::string_view(field.meshEngine()) == "cpu" || field.countsMeshWalks()) {
                 meshCounters.emplace();
                 field.addMeshCounters(*meshCounters);
             }
@@ -599,8 +599,9 @@ Args:
 Returns:
     dict: distance (N,) float32; gradient (N, 3) float32 (raw central differences), or None when
     gradient=False; bad_rows (int: rows with NaN or Inf); seconds (float); mesh_source (dict for a mesh file, as
-    for sample(); None for GLSL); mesh_nodes (dict when the native CPU engine evaluated a mesh's own field, else
-    None: rows, and the hierarchy nodes its walks visited, a count that does not depend on the driver:
+    for sample(); None for GLSL); mesh_nodes (dict when the native CPU engine evaluated a mesh's own field, or the GLSL
+    field did with SDFWB_MESH_COUNT=1 set (its counts are per field evaluation: a sign from its lattice
+    is a cached_sign), else None: rows, and the hierarchy nodes its walks visited, a count that does not depend on the driver:
     nearest (the closest-point walks), winding (the winding-number walks), segment (the walks of the
     segments from a lattice point), and how many rows took their sign from the sign cache (cached_signs) or
     from a lattice point and the triangles between (crossed_signs)).

@@ -747,6 +747,35 @@ std::uint64_t MeshQuery::evaluate(const RowView& rows, std::size_t count, const 
     return bad.load();
 }
 
+std::vector<float> MeshQuery::signLattice(int level, unsigned threads) const {
+    level = std::clamp(level, 2, 7);
+    const double step = m_cacheStep * double(m_cacheSide >> level);
+    const int side = m_useCache ? (1 << level) + 1 : 0;
+    std::vector<float> out = {float(m_cacheLo.x), float(m_cacheLo.y), float(m_cacheLo.z), float(step),
+                              float(side),        float(m_boundaryLength), 0.0f, 0.0f};
+    if (side == 0) return out;
+    // The GLSL field rounds p to the float lattice point the header gives: computed there.
+    const glm::vec3 lo(out[0], out[1], out[2]);
+    const float stepF = out[3];
+    const std::size_t points = latticePoints(level);
+    out.resize(8 + points);
+    std::atomic<std::size_t> next{0};
+    auto work = [&] {
+        for (std::size_t i; (i = next.fetch_add(256)) < points;)
+            for (std::size_t j = i; j < std::min(points, i + 256); ++j) {
+                const std::size_t x = j % std::size_t(side), y = (j / std::size_t(side)) % std::size_t(side),
+                                  z = j / (std::size_t(side) * std::size_t(side));
+                out[8 + j] = float(winding(dvec3(lo + glm::vec3(float(x), float(y), float(z)) * stepF)));
+            }
+    };
+    std::vector<std::thread> pool;
+    const unsigned workers = std::min<unsigned>(threadCount(threads), unsigned(points / 256 + 1));
+    for (unsigned t = 1; t < workers; ++t) pool.emplace_back(work);
+    work();
+    for (std::thread& thread : pool) thread.join();
+    return out;
+}
+
 std::shared_ptr<const MeshQuery> meshQuery(const std::shared_ptr<const MeshField>& field) {
     if (!field) return nullptr;
     // Queries live as long as someone holds them; each holds its field (the deleter's copy).

@@ -215,4 +215,14 @@ def test_evaluate_counts_the_hierarchy_nodes_the_cpu_engine_visits(tmp_path, mon
     # GLSL fields and the GPU engine have no CPU walks to count.
     assert sdfwb.evaluate("sphere", far[:10])["mesh_nodes"] is None
     monkeypatch.setenv("SDFWB_MESH_ENGINE", "gpu")
+    monkeypatch.delenv("SDFWB_MESH_COUNT", raising=False)
     assert sdfwb.evaluate(cube, far[:10])["mesh_nodes"] is None
+    # ... unless asked to count (SDFWB_MESH_COUNT=1): the GLSL field's walks, per evaluation; far
+    # from a closed mesh its lattice of winding numbers gives every sign.
+    monkeypatch.setenv("SDFWB_MESH_COUNT", "1")
+    glsl = sdfwb.evaluate(cube, far)
+    nodes = glsl["mesh_nodes"]
+    assert nodes is not None and nodes["rows"] == len(far), nodes
+    assert 1 <= nodes["nearest"] / len(far) < 64, nodes
+    assert nodes["cached_signs"] == len(far), nodes
+    assert np.abs(glsl["distance"] - box_sdf(far.astype(np.float64))).max() < 1e-5

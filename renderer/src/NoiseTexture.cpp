@@ -1,5 +1,7 @@
 #include <renderer/NoiseTexture.h>
 
+#include <meshfield/MeshQuery.h>
+
 #include "GlObjects.h"
 
 #include <core/Hash.h>
@@ -105,6 +107,11 @@ void bindMesh(SdfTextures& textures, const std::shared_ptr<const meshfield::Mesh
         // The binary hierarchy, then the four-wide one (SDFWB_MESH_WIDE: where it starts).
         std::vector<float> nodes = mesh->nodes;
         nodes.insert(nodes.end(), mesh->wideNodes.begin(), mesh->wideNodes.end());
+        // Winding numbers: then the sign lattice (SDFWB_MESH_SIGNS: where it starts).
+        if (mesh->options.sign == meshfield::SignMethod::Winding) {
+            const std::vector<float> signs = meshfield::meshQuery(mesh)->signLattice();
+            nodes.insert(nodes.end(), signs.begin(), signs.end());
+        }
         textures.meshNodes = storageBuffer(nodes);
         textures.meshTriangles = storageBuffer(mesh->triangles);
         textures.meshPseudonormals = storageBuffer(mesh->pseudonormals);

@@ -9,6 +9,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <string_view>
 
 namespace sdfwb::renderer {
 namespace {
@@ -77,7 +79,8 @@ struct SampleCompute::Impl {
     GlProgram program;
     BufferSet plain;         // run(): read back with glGetBufferSubData
     BufferSet slots[kSlots]; // runMapped()
-    GlBuffer badRows;        // one uint: the dispatch's rows with a non-finite value
+    GlBuffer badRows;        // four uints: the dispatch's rows with a non-finite value, then the GLSL
+                             // mesh walks' counts (SDFWB_MESH_COUNT)
     GlBuffer inputs;         // caller's points (analysis/points.glsl)
     SdfTextures textures;    // g3d_uniformRandom and iChannel0..3, made when the program reads them
     std::array<std::string, shaders::kShadertoyChannels> channels; // the SDF's channel images
@@ -85,7 +88,8 @@ struct SampleCompute::Impl {
     // The native engine for a mesh's own field (null: the GLSL field computes the values).
     std::shared_ptr<const meshfield::MeshQuery> query;
     const char* engine = "";
-    meshfield::QueryCounters counters; // the CPU engine's, since build()
+    meshfield::QueryCounters counters; // the CPU engine's, or the GLSL field's when counting, since build()
+    bool countWalks = false;           // the GLSL mesh field counts its walks (SDFWB_MESH_COUNT=1)
     // With the CPU engine, each slot's rows on the host (the mapped buffers are read-only).
     std::vector<float> hostRows[kSlots][3];
     std::string source;
@@ -159,6 +163,8 @@ const std::string& SampleCompute::source() const { return m_impl->source; }
 
 const char* SampleCompute::meshEngine() const { return m_impl->engine; }
 
+bool SampleCompute::countsMeshWalks() const { return m_impl->countWalks; }
+
 void SampleCompute::addMeshCounters(meshfield::QueryCounters& into) const {
     const meshfield::QueryCounters& c = m_impl->counters;
     into.nearestNodes += c.nearestNodes;
@@ -193,6 +199,10 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     }
     shaders::FeatureDefines features;
     if (query) features["SDFWB_POSITIONS_ONLY"] = "1";
+    // Benchmarks: the GLSL mesh field counts the nodes its walks visit (a count no driver changes).
+    const char* count = std::getenv("SDFWB_MESH_COUNT");
+    const bool countWalks = sdf.mesh && !query && count && std::string_view(count) == "1";
+    if (countWalks) features["SDFWB_MESH_COUNT"] = "1";
     shaders::ComposedShader composed = shaders::composeSdfShader(sdf, shaders::Stage::Compute, pieces, features);
 
     auto start = std::chrono::steady_clock::now();
@@ -217,6 +227,7 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     m_impl->query = std::move(query);
     m_impl->engine = engine;
     m_impl->counters = {};
+    m_impl->countWalks = countWalks;
     m_impl->pointsSampler = sampler.name == "sdfwb:analysis/points.glsl";
     return diagnostics;
 }
@@ -254,11 +265,12 @@ Expected<std::uint32_t> SampleCompute::Impl::dispatch(const SampleUniforms& unif
         glGenBuffers(1, &id);
         badRows = GlBuffer(id);
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
-        glBufferData(GL_SHADER_STORAGE_BUFFER, 4, nullptr, GL_DYNAMIC_READ);
+        glBufferData(GL_SHADER_STORAGE_BUFFER, 16, nullptr, GL_DYNAMIC_READ);
     }
-    const std::uint32_t zero = 0;
+    const std::uint32_t zero[4] = {0, 0, 0, 0};
+    const GLsizeiptr countBytes = countWalks ? 16 : 4;
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, badRows.id());
-    glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 4, &zero);
+    glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, countBytes, zero);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingBadRows, badRows.id());
     if (uniforms.inputPoints) {
         if (!inputs) {
@@ -277,9 +289,15 @@ Expected<std::uint32_t> SampleCompute::Impl::dispatch(const SampleUniforms& unif
     }
     glDispatchCompute((count + 63u) / 64u, 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
-    std::uint32_t bad = 0;
+    std::uint32_t counts[4] = {0, 0, 0, 0};
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, badRows.id());
-    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 4, &bad); // waits for the dispatch
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, countBytes, counts); // waits for the dispatch
+    const std::uint32_t bad = counts[0];
+    if (countWalks) {
+        counters.nearestNodes += counts[1];
+        counters.windingNodes += counts[2];
+        counters.cachedSigns += counts[3];
+    }
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     glUseProgram(0);
     if (GLenum error = glGetError(); error != GL_NO_ERROR)

@@ -11,12 +11,24 @@
 //   SDFWB_MESH_STACK                entries of the traversal stack (the hierarchy's depth + 2)
 //   SDFWB_MESH_BETA                 winding numbers: a cluster farther than beta radii is a dipole
 //   SDFWB_MESH_SIGN_WINDING | SDFWB_MESH_SIGN_PARITY | SDFWB_MESH_SIGN_PSEUDONORMAL
+//   SDFWB_MESH_SIGNS                (winding sign) where the sign lattice starts in the nodes' buffer
 //   SDFWB_MESH_SURFACE              the SDF is the mesh's own field: samplers may use sdfwb_meshSurfacePoint
 //   SDFWB_MESH_FRAGMENT             composed into a fragment shader (see sdfwb_meshIdleLane)
+//   SDFWB_MESH_COUNT                count the walks' nodes (benchmarks; sampling/sample.comp reads them)
 layout(std430, binding = SDFWB_MESH_NODES_BINDING) readonly buffer sdfwb_MeshNodes { vec4 sdfwb_meshNodes[]; };
 layout(std430, binding = SDFWB_MESH_TRIANGLES_BINDING) readonly buffer sdfwb_MeshTriangles { vec4 sdfwb_meshTriangles[]; };
 #ifdef SDFWB_MESH_SIGN_PSEUDONORMAL
 layout(std430, binding = SDFWB_MESH_PSEUDONORMALS_BINDING) readonly buffer sdfwb_MeshPseudonormals { vec4 sdfwb_meshPseudonormals[]; };
+#endif
+#ifdef SDFWB_MESH_COUNT
+// The invocation's walk counts (benchmarks; sample.comp adds them up): nodes whose children's boxes
+// a nearest walk tested, nodes a winding walk opened or took as a dipole, signs the lattice gave.
+uint sdfwb_meshNearestCount = 0u;
+uint sdfwb_meshWindingCount = 0u;
+uint sdfwb_meshLatticeCount = 0u;
+#define SDFWB_MESH_COUNTS(counter) ++counter
+#else
+#define SDFWB_MESH_COUNTS(counter)
 #endif
 
 // A walk that stopped before its stack emptied returns NaN: llvmpipe ends a shader invocation's
@@ -146,6 +158,7 @@ float sdfwb_meshNearestWithin(vec3 p, float bound2, out uint triangle, out int f
             continue;
         }
         uint at = SDFWB_MESH_WIDE + 8u * entry;
+        SDFWB_MESH_COUNTS(sdfwb_meshNearestCount);
         vec4 dx = max(max(sdfwb_meshNodes[at] - p.x, p.x - sdfwb_meshNodes[at + 3u]), vec4(0.0));
         vec4 dy = max(max(sdfwb_meshNodes[at + 1u] - p.y, p.y - sdfwb_meshNodes[at + 4u]), vec4(0.0));
         vec4 dz = max(max(sdfwb_meshNodes[at + 2u] - p.z, p.z - sdfwb_meshNodes[at + 5u]), vec4(0.0));
@@ -213,6 +226,7 @@ float sdfwb_meshWinding(vec3 p) {
     float sum = 0.0;
     while (top > 0) {
         uint n = stack[--top];
+        SDFWB_MESH_COUNTS(sdfwb_meshWindingCount);
         vec4 centre = sdfwb_meshNodes[SDFWB_MESH_NODE * n + 2u];
         vec3 d = centre.xyz - p;
         float dist2 = dot(d, d);
@@ -354,6 +368,31 @@ float sdfwb_meshRaycast(vec3 origin, vec3 direction, float tMin, float tMax, out
     return best;
 }
 
+#if defined(SDFWB_MESH_SIGN_WINDING) && defined(SDFWB_MESH_SIGNS)
+// The sign from the lattice of winding numbers after the hierarchy (MeshQuery::signLattice): 1
+// inside, 0 outside, -1 when it cannot decide. No triangle lies within the nearest distance d of
+// p, so the winding number changes along the segment from p to a lattice point q in that ball
+// only by the open boundary's field: at most L s / (4 pi (d - s)^2) (L the boundary's length, s
+// = |p - q|; nothing on a closed, oriented mesh). q's winding number farther from 1/2 than that
+// plus 1/4 (the hierarchy's approximation at p and at q) decides p's sign without a walk, as the
+// CPU engine's sign cache does.
+float sdfwb_meshLatticeInside(vec3 p, float d) {
+    vec4 origin = sdfwb_meshNodes[SDFWB_MESH_SIGNS];
+    vec4 header = sdfwb_meshNodes[SDFWB_MESH_SIGNS + 1u];
+    float side = header.x;
+    if (side < 2.0 || !(d > 0.0)) return -1.0;
+    vec3 at = clamp(floor((p - origin.xyz) / origin.w + 0.5), vec3(0.0), vec3(side - 1.0));
+    float s = length(p - (origin.xyz + at * origin.w));
+    if (!(s < d * 0.999)) return -1.0;
+    float change = header.y * s / (12.566370614 * (d - s) * (d - s));
+    if (!(change < 0.25)) return -1.0;
+    uint n = uint(side);
+    uint i = (uint(at.z) * n + uint(at.y)) * n + uint(at.x) + 8u;
+    float w = sdfwb_meshNodes[SDFWB_MESH_SIGNS + i / 4u][i % 4u];
+    return abs(w - 0.5) >= change + 0.25 ? (w > 0.5 ? 1.0 : 0.0) : -1.0;
+}
+#endif
+
 // 1 inside, 0 outside, NaN when a walk was cut (see sdfwb_meshCut).
 float sdfwb_meshInside(vec3 p, uint triangle, int feature, vec3 closest) {
 #if defined(SDFWB_MESH_SIGN_PARITY)
@@ -372,6 +411,13 @@ float sdfwb_meshInside(vec3 p, uint triangle, int feature, vec3 closest) {
     const int slot[7] = int[7](0, 4, 5, 6, 1, 2, 3);
     return dot(p - closest, sdfwb_meshPseudonormals[7u * triangle + uint(slot[feature])].xyz) < 0.0 ? 1.0 : 0.0;
 #else
+#if defined(SDFWB_MESH_SIGNS)
+    float cached = sdfwb_meshLatticeInside(p, length(p - closest));
+    if (cached >= 0.0) {
+        SDFWB_MESH_COUNTS(sdfwb_meshLatticeCount);
+        return cached;
+    }
+#endif
     float winding = sdfwb_meshWinding(p);
     return isnan(winding) ? winding : (winding > 0.5 ? 1.0 : 0.0);
 #endif

@@ -10,7 +10,11 @@ layout(std430, binding = SDFWB_BINDING_DISTANCES) writeonly buffer sdfwb_Distanc
 layout(std430, binding = SDFWB_BINDING_GRADIENTS) writeonly buffer sdfwb_Gradients { float sdfwb_gradients[]; };
 // Rows with a NaN or infinity in any value written (misses, broken fields), counted here so the
 // host does not read every row again.
-layout(std430, binding = SDFWB_BINDING_BAD_ROWS) buffer sdfwb_BadRowCount { uint sdfwb_badRows; };
+// The bad rows, and (SDFWB_MESH_COUNT) the mesh walks' counts (mesh_field.glsl) of the chunk.
+layout(std430, binding = SDFWB_BINDING_BAD_ROWS) buffer sdfwb_BadRowCount {
+    uint sdfwb_badRows;
+    uint sdfwb_meshCounts[3];
+};
 
 uniform uint sdfwb_chunkCount;  // samples in this chunk
 // Callers that need only the field's value (a mesher's lattice, evaluate(gradient=False)) turn
@@ -59,6 +63,11 @@ void main() {
     if (sdfwb_writePosition) finite = finite && all(notEqual(floatBitsToUint(position) & exponent, uvec3(exponent)));
     if (sdfwb_writeGradient) finite = finite && all(notEqual(floatBitsToUint(gradient) & exponent, uvec3(exponent)));
     if (!finite) atomicAdd(sdfwb_badRows, 1u);
+#ifdef SDFWB_MESH_COUNT
+    if (sdfwb_meshNearestCount > 0u) atomicAdd(sdfwb_meshCounts[0], sdfwb_meshNearestCount);
+    if (sdfwb_meshWindingCount > 0u) atomicAdd(sdfwb_meshCounts[1], sdfwb_meshWindingCount);
+    if (sdfwb_meshLatticeCount > 0u) atomicAdd(sdfwb_meshCounts[2], sdfwb_meshLatticeCount);
+#endif
     if (sdfwb_interleaved) {
         uint row = 7u * local;
         sdfwb_positions[row + 0u] = position.x;

@@ -10,6 +10,7 @@
 #include <jobs/JobJson.h>
 #include <jobs/Jobs.h>
 #include <meshfield/MeshField.h>
+#include <meshfield/MeshQuery.h>
 #include <renderer/OffscreenRenderer.h>
 #include <renderer/SampleCompute.h>
 #include <renderer/SdfRenderer.h>
@@ -120,6 +121,55 @@ TEST_F(MeshSdfTest, GpuDistancesMatchAFloat64BruteForceScanAndEachSignMethodsCpu
             EXPECT_EQ(wrongSign, 0) << meshfield::signName(sign) << ' ' << engine;
         }
     }
+}
+
+// Issue 46: the GLSL field takes a row's winding sign from the lattice of winding numbers after
+// the hierarchy (MeshQuery::signLattice) where the empty ball of the nearest distance holds a
+// lattice point: the same signs as the CPU's exact reference, and most far rows served without a
+// winding walk on a closed mesh (SDFWB_MESH_COUNT=1 counts them, whatever the driver); open meshes
+// only where the boundary's bound allows.
+TEST_F(MeshSdfTest, TheGlslFieldTakesFarSignsFromTheLatticeAndKeepsEverySign) {
+    const meshfield::TriangleMesh torus = testing::torusMesh(0.6f, 0.25f, 48, 16);
+    std::mt19937 random(11);
+    std::uniform_real_distribution<float> u(-1.1f, 1.1f);
+    std::vector<float> points;
+    for (int i = 0; i < 6000; ++i) points.insert(points.end(), {u(random), u(random), u(random)});
+    const std::size_t n = points.size() / 3;
+    EngineScope scope("gpu");
+    setenv("SDFWB_MESH_COUNT", "1", 1);
+    for (bool open : {false, true}) {
+        const meshfield::TriangleMesh mesh = open ? testing::damaged(torus, testing::Damage::RemoveFivePercent) : torus;
+        auto field = meshfield::makeMeshField(mesh, "torus.obj", {});
+        ASSERT_TRUE(field.hasValue());
+        const shaders::PreparedSdf sdf = shaders::prepareMeshSdf(*field, "torus.obj");
+        renderer::SampleCompute compute;
+        auto stage = shaders::builtinPiece("analysis/points.glsl");
+        ASSERT_TRUE(stage.hasValue());
+        ASSERT_FALSE(shaders::hasErrors(compute.build(sdf, *stage)));
+        ASSERT_TRUE(compute.countsMeshWalks());
+        sampling::SamplingJob job;
+        job.count = n;
+        job.inputPoints = points.data();
+        std::vector<float> values(n);
+        ASSERT_TRUE(sampling::sampleInto(compute, job, nullptr, values.data(), nullptr, {}).hasValue());
+        meshfield::QueryCounters counters;
+        compute.addMeshCounters(counters);
+        compute.releaseGl();
+        int wrongSign = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const dvec3 p(points[3 * i], points[3 * i + 1], points[3 * i + 2]);
+            if ((*field)->distance(p) > 1e-4 && (values[i] < 0.0f) != (*field)->inside(p)) ++wrongSign;
+        }
+        std::printf("%s torus: %llu of %zu signs from the lattice, %.1f winding nodes and %.1f nearest nodes a row\n",
+                    open ? "open" : "closed", (unsigned long long)counters.cachedSigns, n,
+                    double(counters.windingNodes) / double(n), double(counters.nearestNodes) / double(n));
+        EXPECT_EQ(wrongSign, 0) << (open ? "open" : "closed");
+        EXPECT_GE(counters.nearestNodes, n) << "every row walks the nearest hierarchy";
+        EXPECT_GT(counters.cachedSigns, open ? n / 10 : n * 8 / 10) << (open ? "open" : "closed");
+        EXPECT_LT(counters.cachedSigns, n) << "rows near the surface still walk";
+        EXPECT_GT(counters.windingNodes, 0u);
+    }
+    unsetenv("SDFWB_MESH_COUNT");
 }
 
 struct Rows {

@@ -84,6 +84,14 @@ public:
     std::uint64_t evaluate(const RowView& rows, std::size_t count, const GradientMode& mode, unsigned threads = 0,
                            QueryCounters* counters = nullptr) const;
 
+    // The sign cache's level of 2^level + 1 points a side (level 2 .. 7) for the GLSL field
+    // (shaders/mesh/mesh_field.glsl reads it after the hierarchy): a header of eight floats (the
+    // lattice's first point x y z, its step, its points a side, the open boundary's length, 0, 0),
+    // then every point's winding number (x fastest). Filled on `threads` threads (0: every core);
+    // only the header, with 0 points a side, when the sign is not winding numbers.
+    static constexpr int kGpuSignLevel = 5;
+    std::vector<float> signLattice(int level = kGpuSignLevel, unsigned threads = 0) const;
+
     // Bytes the CPU layout and the sign cache take.
     std::size_t bytes() const;
 

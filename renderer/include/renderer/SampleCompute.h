@@ -97,8 +97,10 @@ public:
     // "gpu" for a mesh field on the GL device, "" for any other SDF. See meshfield::chooseMeshEngine.
     const char* meshEngine() const;
     // The CPU engine's work since build(): hierarchy nodes its walks visited and how its rows got
-    // their signs (meshfield::QueryCounters), a count that does not depend on the driver. Zero
-    // when the engine is not the CPU's.
+    // their signs (meshfield::QueryCounters), a count that does not depend on the driver. The GLSL
+    // field's when SDFWB_MESH_COUNT=1 was set at build() (nearest and winding nodes, and signs the
+    // lattice gave, per field evaluation); zero otherwise.
+    bool countsMeshWalks() const;
     void addMeshCounters(meshfield::QueryCounters& into) const;
 
     void releaseGl();

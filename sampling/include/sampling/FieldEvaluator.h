@@ -51,6 +51,7 @@ public:
     // and which engine ran ("cpu", "gpu", or "" for GLSL).
     void addMeshCounters(meshfield::QueryCounters& into) const { m_compute.addMeshCounters(into); }
     const char* meshEngine() const { return m_compute.meshEngine(); }
+    bool countsMeshWalks() const { return m_compute.countsMeshWalks(); }
 
     void releaseGl();
 
