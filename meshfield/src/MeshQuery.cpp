@@ -751,8 +751,14 @@ std::vector<float> MeshQuery::signLattice(int level, unsigned threads) const {
     level = std::clamp(level, 2, 7);
     const double step = m_cacheStep * double(m_cacheSide >> level);
     const int side = m_useCache ? (1 << level) + 1 : 0;
-    std::vector<float> out = {float(m_cacheLo.x), float(m_cacheLo.y), float(m_cacheLo.z), float(step),
-                              float(side),        float(m_boundaryLength), 0.0f, 0.0f};
+    std::vector<float> out = {float(m_cacheLo.x),
+                              float(m_cacheLo.y),
+                              float(m_cacheLo.z),
+                              float(step),
+                              float(side),
+                              float(m_boundaryLength),
+                              0.0f,
+                              0.0f};
     if (side == 0) return out;
     // The GLSL field rounds p to the float lattice point the header gives: computed there.
     const glm::vec3 lo(out[0], out[1], out[2]);
