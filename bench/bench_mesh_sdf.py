@@ -284,6 +284,11 @@ def speed_row(name, vertices, faces):
         nodes = with_environment({"SDFWB_MESH_ENGINE": "cpu"}, lambda: sdfwb.evaluate(mesh_path, at)["mesh_nodes"])
         row["nodes_" + pattern] = {k: v / nodes["rows"] for k, v in nodes.items() if k != "rows"}
         print(name, pattern, "nodes per row", row["nodes_" + pattern], flush=True)
+        # The GLSL field's walks (what a GPU runs), counted by the shader on the first GLSL_POINTS.
+        nodes = with_environment({"SDFWB_MESH_ENGINE": "gpu", "SDFWB_MESH_COUNT": "1"},
+                                 lambda: sdfwb.evaluate(mesh_path, at[:GLSL_POINTS])["mesh_nodes"])
+        row["glsl_nodes_" + pattern] = {k: v / nodes["rows"] for k, v in nodes.items() if k != "rows"}
+        print(name, pattern, "GLSL nodes per row", row["glsl_nodes_" + pattern], flush=True)
     # Bad rows of the GLSL field's near sampler (the loop budget, below).
     marched = with_environment({"SDFWB_MESH_ENGINE": "gpu"}, lambda: sdfwb.sample(mesh_path, "near", 20000))
     row["near_bad"] = marched["bad_rows"] / 20000
@@ -538,13 +543,19 @@ with open(OUT, "w") as out:
               "lattice point test; cached / crossed: the share of rows whose sign came from the sign cache's ball "
               "or from a lattice point and the triangles between. rand: the shared uniform points; near: "
               f"{SPEED_POINTS:,} points of `sdfwb.sample(path, 'near')`.\n\n"
-              "| mesh | points | nearest | winding | segment | cached | crossed |\n|---|---|---|---|---|---|---|\n")
+              "The GLSL field (what a GPU runs; `SDFWB_MESH_ENGINE=gpu SDFWB_MESH_COUNT=1`, the shader counts its "
+              f"own walks) on the first {GLSL_POINTS:,} of the same points: one nearest walk and one sign a row; "
+              "its cached share is the rows whose sign came from its lattice of winding numbers (33^3 points, the "
+              "same ball test), and it has no segment walks.\n\n"
+              "| mesh | points | engine | nearest | winding | segment | cached | crossed |\n"
+              "|---|---|---|---|---|---|---|---|\n")
     for r in speed_rows:
         for pattern in ("rand", "near"):
-            n = r.get("nodes_" + pattern)
-            if n:
-                out.write(f"| {r['mesh']} | {pattern} | {n['nearest']:.1f} | {n['winding']:.1f} | {n['segment']:.1f} | "
-                          f"{100 * n['cached_signs']:.0f} % | {100 * n['crossed_signs']:.0f} % |\n")
+            for engine, key in (("CPU", "nodes_"), ("GLSL", "glsl_nodes_")):
+                n = r.get(key + pattern)
+                if n:
+                    out.write(f"| {r['mesh']} | {pattern} | {engine} | {n['nearest']:.1f} | {n['winding']:.1f} | "
+                              f"{n['segment']:.1f} | {100 * n['cached_signs']:.0f} % | {100 * n['crossed_signs']:.0f} % |\n")
     out.write("\n## What runs out of budget on llvmpipe\n\nllvmpipe (Mesa's CPU driver, what this machine has) ends "
               "a shader invocation's loops after 65535 iterations in all, counted across every call the invocation "
               "makes. A mesh SDF walks its hierarchy in loops (a nearest-triangle walk and a winding-number walk per "
