@@ -172,6 +172,33 @@ TEST_F(MeshSdfTest, TheGlslFieldTakesFarSignsFromTheLatticeAndKeepsEverySign) {
     unsetenv("SDFWB_MESH_COUNT");
 }
 
+// The GLSL field evaluates the caller's points in Morton order (neighbouring invocations walk
+// alike) and returns each value to its point: the same values whatever order the points come in.
+TEST_F(MeshSdfTest, TheGlslFieldReturnsEachPointsValueInTheCallersOrder) {
+    auto field = meshfield::makeMeshField(testing::torusMesh(0.6f, 0.25f, 48, 16), "torus.obj", {});
+    ASSERT_TRUE(field.hasValue());
+    const shaders::PreparedSdf sdf = shaders::prepareMeshSdf(*field, "torus.obj");
+    std::mt19937 random(3);
+    std::uniform_real_distribution<float> u(-1.1f, 1.1f);
+    std::vector<float> points;
+    for (int i = 0; i < 5000; ++i) points.insert(points.end(), {u(random), u(random), u(random)});
+    std::vector<float> reversed(points.size());
+    for (std::size_t i = 0; i < points.size() / 3; ++i)
+        std::copy(points.begin() + long(3 * i), points.begin() + long(3 * i + 3), reversed.end() - long(3 * i + 3));
+    EngineScope scope("gpu");
+    const std::vector<float> forward = evaluate(sdf, points);
+    const std::vector<float> backward = evaluate(sdf, reversed);
+    ASSERT_EQ(forward.size(), backward.size());
+    int differing = 0;
+    for (std::size_t i = 0; i < forward.size(); ++i)
+        differing += forward[i] == backward[forward.size() - 1 - i] && std::isfinite(forward[i]) ? 0 : 1;
+    EXPECT_EQ(differing, 0);
+    for (std::size_t i = 0; i < 50; ++i) {
+        const dvec3 p(points[3 * i], points[3 * i + 1], points[3 * i + 2]);
+        EXPECT_NEAR(std::abs(forward[i]), (*field)->distance(p), 1e-5) << i;
+    }
+}
+
 struct Rows {
     std::vector<float> positions, distances, gradients;
     std::string engine;

@@ -139,6 +139,15 @@ private:
     mutable std::unique_ptr<std::atomic<float>[]> m_slopes[2];
 };
 
+// Rows [0, count) of `xyz` (row i's x y z at xyz[i * stride]) in Morton order, 10 bits an axis
+// over the cube of side `side` from `lo` (clamped to it; NaN as its low end): each entry is the
+// row's code << 32 | i, sorted, stable. Neighbours in the order are neighbours in space.
+std::vector<std::uint64_t> mortonOrder(const float* xyz, std::size_t stride, std::size_t count, const glm::dvec3& lo,
+                                       double side);
+// The cube the engine orders rows and caches signs over: 1.5 times the bounds' largest side, about
+// their centre. Returns its low corner and sets `side`.
+glm::dvec3 mortonBoxCorner(const MeshField& field, double& side);
+
 // The query for `field`, built once per field (a process-wide cache holding it as long as the
 // field lives).
 std::shared_ptr<const MeshQuery> meshQuery(const std::shared_ptr<const MeshField>& field);
