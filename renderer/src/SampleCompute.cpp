@@ -104,12 +104,40 @@ struct SampleCompute::Impl {
     bool positionsAreInputs(const SampleUniforms& uniforms) const {
         return pointsSampler && uniforms.inputPoints && uniforms.inputTableFloats == 0;
     }
-    std::uint32_t evaluateOnCpu(const SampleUniforms& uniforms, const float* positions, std::size_t positionStride,
-                                float* distances, std::size_t distanceStride, float* gradients, std::size_t gradientStride,
-                                std::uint32_t count) {
-        meshfield::RowView rows{positions, positionStride, distances, distanceStride, gradients, gradientStride};
-        meshfield::GradientMode mode{!uniforms.meshGradientTaps, uniforms.gradientStep};
-        return std::uint32_t(query->evaluate(rows, count, mode, 0, &counters));
+    // The values and gradients at positions this program computed: the CPU engine's, or `values`'s.
+    Expected<std::uint32_t> evaluateRows(const SampleUniforms& uniforms, const float* positions, std::size_t positionStride,
+                                         float* distances, std::size_t distanceStride, float* gradients,
+                                         std::size_t gradientStride, std::uint32_t count) {
+        if (query) {
+            meshfield::RowView rows{positions, positionStride, distances, distanceStride, gradients, gradientStride};
+            meshfield::GradientMode mode{!uniforms.meshGradientTaps, uniforms.gradientStep};
+            return std::uint32_t(query->evaluate(rows, count, mode, 0, &counters));
+        }
+        std::vector<float> xyz(3 * std::size_t(count)), d(count), g(gradients ? 3 * std::size_t(count) : 0);
+        for (std::size_t i = 0; i < count; ++i)
+            std::copy(positions + i * positionStride, positions + i * positionStride + 3, &xyz[3 * i]);
+        SampleUniforms at = uniforms;
+        at.inputPoints = xyz.data();
+        at.inputTableFloats = 0;
+        auto bad = values->run(at, 0, count, nullptr, d.data(), gradients ? g.data() : nullptr);
+        if (!bad) return bad;
+        // A row whose position is not finite (a sampler's miss) is a NaN row, as on the one-pass path.
+        std::uint32_t nonFinite = 0;
+        const float nan = std::numeric_limits<float>::quiet_NaN();
+        for (std::size_t i = 0; i < count; ++i) {
+            const bool placed = std::isfinite(xyz[3 * i]) && std::isfinite(xyz[3 * i + 1]) && std::isfinite(xyz[3 * i + 2]);
+            if (!placed) d[i] = nan;
+            if (distances) distances[i * distanceStride] = d[i];
+            if (gradients) {
+                if (!placed) g[3 * i] = g[3 * i + 1] = g[3 * i + 2] = nan;
+                std::copy(&g[3 * i], &g[3 * i] + 3, gradients + i * gradientStride);
+            }
+            const bool finite =
+                placed && std::isfinite(d[i]) &&
+                (!gradients || (std::isfinite(g[3 * i]) && std::isfinite(g[3 * i + 1]) && std::isfinite(g[3 * i + 2])));
+            nonFinite += finite ? 0u : 1u;
+        }
+        return nonFinite;
     }
     Expected<std::uint32_t> dispatch(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, BufferSet& set,
                                      bool positions, bool gradients, bool interleaved = false,
@@ -119,6 +147,9 @@ struct SampleCompute::Impl {
     // box and the results come back to the caller's order. 1.4-1.7x the points/s on llvmpipe's
     // eight lanes (spot, teapot, bunny; 200,000 uniform points); wider GPU lanes gain more.
     bool mortonInputs = false;
+    // A mesh's own field on the GPU engine: this program computes the positions, `values` (the
+    // same SDF through analysis/points.glsl) the values in Morton order (runSorted).
+    std::unique_ptr<SampleCompute> values;
     glm::dvec3 mortonLo{0.0};
     double mortonSide = 0.0;
     Expected<std::uint32_t> runSorted(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, float* positions,
@@ -215,7 +246,9 @@ const std::string& SampleCompute::source() const { return m_impl->source; }
 
 const char* SampleCompute::meshEngine() const { return m_impl->engine; }
 
-bool SampleCompute::countsMeshWalks() const { return m_impl->countWalks; }
+bool SampleCompute::countsMeshWalks() const {
+    return m_impl->countWalks || (m_impl->values && m_impl->values->countsMeshWalks());
+}
 
 void SampleCompute::addMeshCounters(meshfield::QueryCounters& into) const {
     const meshfield::QueryCounters& c = m_impl->counters;
@@ -224,6 +257,7 @@ void SampleCompute::addMeshCounters(meshfield::QueryCounters& into) const {
     into.cachedSigns += c.cachedSigns;
     into.crossedSigns += c.crossedSigns;
     into.segmentNodes += c.segmentNodes;
+    if (m_impl->values) m_impl->values->addMeshCounters(into);
 }
 
 std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf& sdf, const shaders::ShaderPiece& sampler) {
@@ -250,7 +284,12 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
         if (sdf.meshIsTheField && chosen == meshfield::MeshEngine::Cpu) query = meshfield::meshQuery(sdf.mesh);
     }
     shaders::FeatureDefines features;
-    if (query) features["SDFWB_POSITIONS_ONLY"] = "1";
+    // The GPU engine on a mesh's own field: positions here, values in Morton order by a second
+    // program (SDFWB_MESH_MORTON=0: one pass, the rows in their sampler's order; for benchmarks).
+    const char* morton = std::getenv("SDFWB_MESH_MORTON");
+    const bool sorted = !(morton && std::string_view(morton) == "0");
+    const bool twoPass = sdf.mesh && sdf.meshIsTheField && !query && sorted && sampler.name != "sdfwb:analysis/points.glsl";
+    if (query || twoPass) features["SDFWB_POSITIONS_ONLY"] = "1";
     // Benchmarks: the GLSL mesh field counts the nodes its walks visit (a count no driver changes).
     const char* count = std::getenv("SDFWB_MESH_COUNT");
     const bool countWalks = sdf.mesh && !query && count && std::string_view(count) == "1";
@@ -280,7 +319,19 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     m_impl->engine = engine;
     m_impl->counters = {};
     m_impl->countWalks = countWalks;
-    m_impl->mortonInputs = sdf.mesh && !m_impl->query;
+    m_impl->mortonInputs = sdf.mesh && !m_impl->query && sorted;
+    m_impl->values.reset();
+    if (twoPass) {
+        auto points = shaders::builtinPiece("analysis/points.glsl");
+        if (!points) return {{"<sdfwb>", 0, 0, shaders::Severity::Error, points.error().message}};
+        auto values = std::make_unique<SampleCompute>();
+        std::vector<shaders::Diagnostic> more = values->build(sdf, *points);
+        if (shaders::hasErrors(more)) {
+            m_impl->program.reset();
+            return more;
+        }
+        m_impl->values = std::move(values);
+    }
     if (m_impl->mortonInputs) m_impl->mortonLo = meshfield::mortonBoxCorner(*sdf.mesh, m_impl->mortonSide);
     m_impl->pointsSampler = sampler.name == "sdfwb:analysis/points.glsl";
     return diagnostics;
@@ -370,26 +421,27 @@ Expected<std::uint32_t> SampleCompute::run(const SampleUniforms& uniforms, std::
     if (m_impl->query && m_impl->positionsAreInputs(uniforms)) { // analysis/points.glsl: no GL work at all
         const float* in = uniforms.inputPoints + 3 * std::size_t(first);
         if (positions) std::copy(in, in + 3 * std::size_t(count), positions);
-        return m_impl->evaluateOnCpu(uniforms, in, 3, distances, 1, gradients, 3, count);
+        return m_impl->evaluateRows(uniforms, in, 3, distances, 1, gradients, 3, count);
     }
     if (m_impl->mortonInputs && m_impl->positionsAreInputs(uniforms) && distances)
         return m_impl->runSorted(uniforms, first, count, positions, distances, gradients);
     if (auto ok = m_impl->reserve(m_impl->plain, count, false); !ok) return ok.error();
     std::vector<float> scratch;
-    if (m_impl->query && !positions) { // the engine needs the positions even where the caller does not
+    const bool valuesElsewhere = m_impl->query || m_impl->values;
+    if (valuesElsewhere && !positions) { // the engine needs the positions even where the caller does not
         scratch.resize(std::size_t(count) * 3);
         positions = scratch.data();
     }
     auto bad = m_impl->dispatch(uniforms, first, count, m_impl->plain, positions, gradients);
     if (!bad) return bad;
-    if (m_impl->query) {
+    if (valuesElsewhere) {
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, m_impl->plain.buffers[0].id());
         glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(count) * 12, positions);
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
         if (GLenum error = glGetError(); error != GL_NO_ERROR)
             return makeError("sampling: reading back " + std::to_string(count) + " positions failed (" + glErrorName(error) +
                              ")");
-        return m_impl->evaluateOnCpu(uniforms, positions, 3, distances, 1, gradients, 3, count);
+        return m_impl->evaluateRows(uniforms, positions, 3, distances, 1, gradients, 3, count);
     }
     float* targets[3] = {positions, distances, gradients};
     const GLsizeiptr sizes[3] = {GLsizeiptr(count) * 12, GLsizeiptr(count) * 4, GLsizeiptr(count) * 12};
@@ -446,7 +498,7 @@ Expected<MappedRows> SampleCompute::runMapped(const SampleUniforms& uniforms, st
         glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, GLuint64(60) * 1000000000u);
         glDeleteSync(fence);
     }
-    if (m_impl->query) {
+    if (m_impl->query || m_impl->values) {
         // The mapping is read-only: the rows are completed in this slot's host arrays, at the
         // same shifts, and the caller reads them there.
         std::vector<float>(&host)[3] = m_impl->hostRows[std::size_t(slot) % kSlots];
@@ -457,8 +509,9 @@ Expected<MappedRows> SampleCompute::runMapped(const SampleUniforms& uniforms, st
                 for (std::size_t i = 0; i < count; ++i) std::copy(inputs + 3 * i, inputs + 3 * i + 3, base + 7 * i);
             else
                 std::copy(set.mapped[0], set.mapped[0] + std::size_t(count) * 7, base);
-            const std::uint32_t cpuBad = m_impl->evaluateOnCpu(uniforms, base, 7, base + 3, 7, base + 4, 7, count);
-            return MappedRows{nullptr, nullptr, nullptr, cpuBad, base};
+            auto valuesBad = m_impl->evaluateRows(uniforms, base, 7, base + 3, 7, base + 4, 7, count);
+            if (!valuesBad) return valuesBad.error();
+            return MappedRows{nullptr, nullptr, nullptr, *valuesBad, base};
         }
         const std::size_t sizes[3] = {std::size_t(count) * 3, count, std::size_t(count) * 3};
         for (int i = 0; i < 3; ++i) host[i].resize(shift[std::size_t(i)] + sizes[i]);
@@ -467,8 +520,9 @@ Expected<MappedRows> SampleCompute::runMapped(const SampleUniforms& uniforms, st
         float* g = host[2].data() + shift[2];
         const float* from = inputs ? inputs : set.mapped[0] + shift[0];
         std::copy(from, from + sizes[0], p);
-        const std::uint32_t cpuBad = m_impl->evaluateOnCpu(uniforms, p, 3, d, 1, g, 3, count);
-        return MappedRows{p, d, g, cpuBad};
+        auto valuesBad = m_impl->evaluateRows(uniforms, p, 3, d, 1, g, 3, count);
+        if (!valuesBad) return valuesBad.error();
+        return MappedRows{p, d, g, *valuesBad};
     }
     MappedRows rows = interleaved
                           ? MappedRows{nullptr, nullptr, nullptr, *bad, set.mapped[0]}
@@ -485,6 +539,7 @@ void SampleCompute::releaseGl() {
     m_impl->inputs.reset();
     m_impl->textures.reset();
     m_impl->query.reset();
+    if (m_impl->values) m_impl->values->releaseGl();
     for (auto& host : m_impl->hostRows)
         for (std::vector<float>& rows : host) std::vector<float>().swap(rows);
 }
