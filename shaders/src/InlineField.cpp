@@ -131,6 +131,26 @@ std::vector<std::string> splitOutside(const std::string& text, char separator) {
     return parts;
 }
 
+// `e += I, c += e * .35;`: an expression statement whose top-level commas sequence assignments,
+// as separate statements (the comma operator's order). Declarations and calls stay whole.
+std::vector<std::string> expandedCommas(const std::vector<std::string>& statements) {
+    static const std::regex assignment(
+        R"(^\s*(?:(?:--|\+\+)\s*)?[A-Za-z_]\w*\s*(?:\.\s*\w+\s*|\[[^\]]*\]\s*)*(?:[-+*/%&|^]?=[^=]|\+\+|--))", kLinearRegex);
+    std::vector<std::string> out;
+    for (const std::string& statement : statements) {
+        const std::string text = trimmedText(statement);
+        const std::vector<std::string> parts = !text.empty() && text.back() == ';' && std::regex_search(text, assignment)
+                                                   ? splitOutside(text.substr(0, text.size() - 1), ',')
+                                                   : std::vector<std::string>{};
+        if (parts.size() < 2) {
+            out.push_back(statement);
+            continue;
+        }
+        for (const std::string& part : parts) out.push_back(trimmedText(part) + ";");
+    }
+    return out;
+}
+
 // A loop's initialisation, increment and body statements, from its keyword at `keyword`; false,
 // with `why`, when they cannot be read.
 bool readLoop(const std::string& text, std::size_t keyword, std::string& init, std::string& increment,
@@ -164,7 +184,7 @@ bool readLoop(const std::string& text, std::size_t keyword, std::string& init, s
     }
     std::string body = trimmedText(text.substr(bodyAt, bodyEnd - bodyAt));
     if (!body.empty() && body.front() == '{') body = body.substr(1, body.size() - 2);
-    statements = splitStatements(body);
+    statements = expandedCommas(splitStatements(body));
     if (statements.empty()) {
         why = "its loop's body could not be split into statements";
         return false;
@@ -181,7 +201,12 @@ std::string inlineFieldBody(const std::string& text, std::size_t keyword, const 
     if (!readLoop(text, keyword, init, increment, statements, why)) return {};
     // The point: the first statement that assigns it from the counter (`vec3 p = ro + rd * t;`).
     const std::regex assigns(R"((^|[^\w.])()" + point + R"()\s*(\.\s*\w+|\[[^\]]*\])?\s*[-+*/]?=[^=])", kLinearRegex);
-    const std::regex steps(R"(^\s*)" + counter + R"(\s*\+=\s*([\s\S]*);\s*$)", kLinearRegex);
+    // `t += STEP`, or backwards `t -= STEP` (the field is then -STEP).
+    const std::regex steps(R"(^\s*)" + counter + R"(\s*([-+])=\s*([\s\S]*);\s*$)", kLinearRegex);
+    auto stepOf = [](const std::smatch& m) {
+        const std::string by = trimmedText(m[2].str());
+        return m[1].str() == "-" ? "-(" + by + ")" : by;
+    };
     std::size_t pointAt = statements.size();
     for (std::size_t i = 0; i < statements.size() && pointAt == statements.size(); ++i)
         if (mentions(statements[i], counter) && std::regex_search(statements[i], assigns)) pointAt = i;
@@ -194,8 +219,13 @@ std::string inlineFieldBody(const std::string& text, std::size_t keyword, const 
     // camera: the given point is set after them, so that the scene sits where the shader's camera
     // looks, not at the camera's distance from the origin.
     const std::regex moves(R"(^\s*)" + point + R"(\s*(\.\s*[xyzrgbstpq]+)?\s*[-+*]=([\s\S]*);\s*$)", kLinearRegex);
+    const std::regex unitMove(R"(^\s*(?:(?:--|\+\+)\s*)" + point + R"(|)" + point + R"(\s*(?:--|\+\+))\s*;\s*$)", kLinearRegex);
     std::size_t setAt = pointAt;
     for (std::size_t i = pointAt + 1; i < statements.size(); ++i) {
+        if (std::regex_match(statements[i], unitMove)) { // `--p;`: a move by one
+            setAt = i;
+            continue;
+        }
         std::smatch moved;
         if (!std::regex_match(statements[i], moved, moves) || mentions(moved[2].str(), point) ||
             mentions(moved[2].str(), counter))
@@ -206,7 +236,7 @@ std::string inlineFieldBody(const std::string& text, std::size_t keyword, const 
     std::smatch match;
     for (std::size_t i = pointAt + 1; i < statements.size(); ++i)
         if (std::regex_match(statements[i], match, steps)) {
-            step = trimmedText(match[1].str());
+            step = stepOf(match);
             stepAt = i;
             break;
         }
@@ -214,7 +244,7 @@ std::string inlineFieldBody(const std::string& text, std::size_t keyword, const 
         // `for (...; ...; i++, t += d)`: the step ends the body.
         for (const std::string& part : splitOutside(increment, ',')) {
             const std::string statement = part + ";";
-            if (std::regex_match(statement, match, steps)) step = trimmedText(match[1].str());
+            if (std::regex_match(statement, match, steps)) step = stepOf(match);
         }
     }
     if (step.empty()) {
@@ -237,7 +267,7 @@ std::string pointMarchBody(const std::string& text, std::size_t keyword, const s
     std::vector<std::string> statements;
     if (!readLoop(text, keyword, init, increment, statements, why)) return {};
     // The step: `p += rd * d;`, or `q = p += ...;` that also copies the point.
-    const std::regex steps(R"(^\s*((?:\w+\s*=\s*)?)()" + point + R"()\s*\+=\s*([\s\S]*);\s*$)", kLinearRegex);
+    const std::regex steps(R"(^\s*((?:\w+\s*=\s*)?)()" + point + R"()\s*[-+]=\s*([\s\S]*);\s*$)", kLinearRegex);
     const std::regex assigns(R"((^|[^\w.])()" + field + R"()\s*[-+*/]?=[^=])", kLinearRegex);
     std::smatch match;
     std::size_t stepAt = statements.size();

@@ -405,6 +405,74 @@ void traceArguments(MarchedFunction& m, TIntermAggregate* call, TIntermAggregate
 }
 
 // Fills an inline march's prelude and body from its loop's text (InlineField.h), or its unresolved.
+// The code before a loop nested in others (an anti-aliasing loop around the march, a loop over
+// cameras), entered as one pass of each: every block still open at its end keeps its brace, a
+// `for (INIT; ...; ...)` before one becomes `INIT;` (its first pass), and a while, if, else or do
+// header is dropped. `opened` receives how many blocks are left open (-1: the code cannot be read).
+std::string enteredBlocks(std::string code, int& opened) {
+    std::vector<std::size_t> open;
+    for (std::size_t i = 0; i < code.size(); ++i) {
+        if (code[i] == '{') open.push_back(i);
+        if (code[i] == '}') {
+            if (open.empty()) {
+                opened = -1;
+                return code;
+            }
+            open.pop_back();
+        }
+    }
+    opened = int(open.size());
+    auto spaceBefore = [&code](std::size_t at) {
+        while (at > 0 && std::isspace(static_cast<unsigned char>(code[at - 1]))) --at;
+        return at;
+    };
+    for (auto brace = open.rbegin(); brace != open.rend(); ++brace) {
+        // The headers before the brace, innermost first: `for (...) for (...) {`, `else if (...) {`.
+        std::size_t spanStart = spaceBefore(*brace);
+        const std::size_t spanEnd = spanStart;
+        std::string inits;
+        for (;;) {
+            const std::size_t at = spaceBefore(spanStart);
+            if (at > 0 && code[at - 1] == ')') {
+                int depth = 0;
+                std::size_t paren = at - 1;
+                for (;; --paren) {
+                    depth += code[paren] == ')' ? 1 : code[paren] == '(' ? -1 : 0;
+                    if (depth == 0 || paren == 0) break;
+                }
+                const std::size_t word = spaceBefore(paren);
+                std::size_t wordStart = word;
+                while (wordStart > 0 && isWordCharacter(code[wordStart - 1])) --wordStart;
+                const std::string keyword = code.substr(wordStart, word - wordStart);
+                if (depth != 0 || (keyword != "for" && keyword != "while" && keyword != "if")) break;
+                if (keyword == "for") {
+                    const std::string clauses = code.substr(paren + 1, at - 2 - paren);
+                    int inner = 0;
+                    std::size_t semicolon = 0;
+                    while (semicolon < clauses.size() && !(clauses[semicolon] == ';' && inner == 0)) {
+                        inner += clauses[semicolon] == '(' ? 1 : clauses[semicolon] == ')' ? -1 : 0;
+                        ++semicolon;
+                    }
+                    const std::string init = trimmed(clauses.substr(0, semicolon));
+                    if (!init.empty()) inits = init + "; " + inits;
+                }
+                spanStart = wordStart;
+                continue;
+            }
+            std::size_t wordStart = at;
+            while (wordStart > 0 && isWordCharacter(code[wordStart - 1])) --wordStart;
+            const std::string keyword = code.substr(wordStart, at - wordStart);
+            if (keyword == "else" || keyword == "do") {
+                spanStart = wordStart;
+                continue;
+            }
+            break;
+        }
+        code.replace(spanStart, spanEnd - spanStart, inits);
+    }
+    return code;
+}
+
 void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* function, bool isMainImage,
                      const ComposedShader& composed) {
     const int file = loop->getLoc().string;
@@ -436,8 +504,12 @@ void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* fu
         for (std::size_t at = line; at < lineEnd && keyword == std::string::npos; ++at)
             if (isKeyword(at)) keyword = at;
     const std::size_t open = bodyOpen(text, function);
+    int enclosing = 0;
+    const std::string before = open == std::string::npos || keyword == std::string::npos || open >= keyword
+                                   ? std::string()
+                                   : enteredBlocks(text.substr(open + 1, keyword - open - 1), enclosing);
     if (keyword == std::string::npos || open == std::string::npos || open >= keyword ||
-        !wholeStatements(text.substr(open + 1, keyword - open - 1))) {
+        !wholeStatements(before + std::string(std::size_t(std::max(0, enclosing)), '}'))) {
         march.unresolved = march.function + "'s code before the loop is not whole statements";
         return;
     }
@@ -466,7 +538,8 @@ void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* fu
             declarations += type + " " + parameter->getName().c_str() + " = " + type + "(0);\n";
         }
     }
-    march.prelude = declarations + text.substr(open + 1, keyword - open - 1);
+    march.prelude = declarations + before;
+    march.body += std::string(std::size_t(enclosing), '}'); // the blocks the prelude entered
 }
 
 } // namespace
@@ -575,6 +648,15 @@ std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
             Contents inside;
             inside.everyMove = true; // `d /= o` carries the point into the step as `d = d / o` does
             loop->traverse(&inside);
+            // A loop nested in this one advances its own march: found when that loop's turn comes.
+            std::set<TIntermBinary*> nested;
+            for (TIntermLoop* inner : inside.loops) {
+                if (inner == loop) continue;
+                Contents innerContents;
+                innerContents.everyMove = true;
+                inner->traverse(&innerContents);
+                nested.insert(innerContents.assignments.begin(), innerContents.assignments.end());
+            }
             std::vector<Assignment> assignments;
             for (TIntermBinary* node : inside.assignments) {
                 Contents right = contentsOf(node->getRight());
@@ -598,7 +680,9 @@ std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
             for (std::size_t s = 0; s < inside.assignments.size() && !marched; ++s) {
                 const Assignment& stepping = assignments[s];
                 TIntermSymbol* point = inside.assignments[s]->getLeft()->getAsSymbolNode();
-                if (stepping.op != glslang::EOpAddAssign || !point || !isFloatVec3(point->getType())) continue;
+                if ((stepping.op != glslang::EOpAddAssign && stepping.op != glslang::EOpSubAssign) || !point ||
+                    !isFloatVec3(point->getType()) || nested.count(inside.assignments[s]))
+                    continue;
                 for (long long read : stepping.reads) {
                     const glslang::TType* type = typeOf(read);
                     if (read == stepping.target || !type || !type->isScalar() || type->getBasicType() != glslang::EbtFloat)
@@ -626,8 +710,10 @@ std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
             for (std::size_t s = 0; s < inside.assignments.size() && !marched; ++s) {
                 const Assignment& stepping = assignments[s];
                 TIntermSymbol* counter = inside.assignments[s]->getLeft()->getAsSymbolNode();
-                if (stepping.op != glslang::EOpAddAssign || !counter || !counter->getType().isScalar() ||
-                    counter->getType().getBasicType() != glslang::EbtFloat)
+                // `t += d`, or a march backwards (`t -= d`: the field is -d).
+                if ((stepping.op != glslang::EOpAddAssign && stepping.op != glslang::EOpSubAssign) || !counter ||
+                    !counter->getType().isScalar() || counter->getType().getBasicType() != glslang::EbtFloat ||
+                    nested.count(inside.assignments[s]))
                     continue;
                 // What the step is computed from, through the loop's assignments.
                 std::set<long long> from = stepping.reads;

@@ -443,9 +443,13 @@ void chooseInlineField(PreparedSdf& prepared, const std::string& stripped) {
         signature.prelude += march.prelude;
         signature.inlineBody = march.body;
         prepared.entrySource = EntrySource::March;
+        // A march backwards (`t -= d`) has the step -(d): said as the shader writes it.
+        const bool backwards =
+            march.field.empty() && march.step.size() > 3 && march.step.compare(0, 2, "-(") == 0 && march.step.back() == ')';
         prepared.entryReason = march.function + " (its march at line " + std::to_string(march.line) +
                                " writes the field inline: " + (march.field.empty() ? "" : march.field + ", ") + "the step " +
-                               march.counter + " += " + march.step + ")";
+                               march.counter +
+                               (backwards ? " -= " + march.step.substr(2, march.step.size() - 3) : " += " + march.step) + ")";
         return;
     }
     if (!unresolved.empty() && prepared.entryReason.empty()) prepared.entryReason = unresolved;

@@ -487,6 +487,18 @@ TEST_F(InlineFields, TheLoopBodyRunOnceIsTheField) {
     EXPECT_NEAR(valueAt("68_st_golfed_point_copy.glsl", {0.5f, 0.6f, 0.0f}), -0.12f, 1e-5f);
     EXPECT_NEAR(valueAt("68_st_golfed_point_copy.glsl", {0.5f, 1.2f, 0.0f}), 0.3f, 1e-5f);
 
+    // 69 steps by the comma operator (`d = min(...), t += d;`): a rounded box and a ball. 70 marches
+    // backwards (`z -= d`, d positive inside): the field is -d. 71's march sits in two
+    // anti-aliasing loops, entered at their first pass: a capped cylinder on a torus.
+    EXPECT_NEAR(valueAt("69_st_comma_step_glow.glsl", {0.55f, 0.0f, 0.0f}), -0.25f, 1e-5f);
+    EXPECT_NEAR(valueAt("69_st_comma_step_glow.glsl", {0.0f, 0.0f, 0.0f}), -0.30f, 1e-5f);
+    EXPECT_NEAR(valueAt("70_st_inside_positive_march.glsl", {0.0f, 0.25f, 0.0f}), -0.35f, 1e-5f);
+    EXPECT_NEAR(valueAt("70_st_inside_positive_march.glsl", {0.0f, 2.0f, 0.0f}), 1.4f, 1e-5f);
+    EXPECT_NEAR(valueAt("71_st_antialiased_inline_march.glsl", {0.0f, 0.1f, 0.0f}), -0.2f, 1e-5f);
+    EXPECT_NEAR(valueAt("71_st_antialiased_inline_march.glsl", {0.45f, -0.25f, 0.0f}), -0.1f, 1e-5f);
+    const shaders::PreparedSdf backwards = prepare(kFolder / "70_st_inside_positive_march.glsl");
+    EXPECT_NE(backwards.entryReason.find("the step z -= d)"), std::string::npos) << backwards.entryReason;
+
     // A loop whose step is taken only on a condition is not a field run once: the file does not
     // open, and the error says why.
     const fs::path folder = fs::temp_directory_path() / ("sdfwb-foreign-inline-" + std::to_string(::getpid()));
