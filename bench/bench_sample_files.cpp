@@ -128,8 +128,9 @@ int main(int argc, char** argv) {
         "runs\n\n",
         (unsigned long long)n, folder.c_str(), context.value()->info().renderer.c_str());
     std::printf(
-        "| pattern | format | file MB | compute s | write s | sdfwb s | sdfwb Msamples/s | max(compute, write) / sdfwb |\n");
-    std::printf("|---|---|---|---|---|---|---|---|\n");
+        "| pattern | format | file MB | compute s | write s | sdfwb s | sdfwb Msamples/s | max(compute, write) / sdfwb | in "
+        "sdfwb's run: kernel s (GPU timer) / writer busy s / GL thread waiting for the writer s |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|\n");
     std::vector<std::string> patterns = {"rand", "near"};
     if (argc > 3) patterns = {argv[3]};
     for (const std::string& pattern : patterns) {
@@ -161,6 +162,7 @@ int main(int argc, char** argv) {
             // Each repetition writes the file and then the same bytes raw, one after the other, so
             // both see the disk in the same state (its speed drifts between minutes here).
             double endToEndRuns[5], writeRuns[5];
+            sampling::SamplingReport reports[5];
             for (int k = 0; k < 5; ++k) {
                 ::sync(); // neither measurement pays for the other's writeback or the last file's removal
                 auto report = sampling::sampleToFile(compute, job, path, format, metadata, {});
@@ -171,18 +173,24 @@ int main(int argc, char** argv) {
                 const std::uint64_t bytes = fs::file_size(path);
                 fs::remove(path);
                 endToEndRuns[k] = report->seconds;
+                reports[k] = *report;
                 ::sync();
                 writeRuns[k] = writeSeconds(folder, bytes, std::size_t(job.chunkSize) * 28);
                 if (k == 0) std::printf("| %s | %s | %.0f ", pattern.c_str(), sampling::formatName(format), double(bytes) / 1e6);
             }
+            // The split of the run whose time is the median.
+            std::sort(reports, reports + 5, [](const auto& a, const auto& b) { return a.seconds < b.seconds; });
+            const sampling::SamplingReport& middle = reports[2];
+            char kernel[32] = "-";
+            if (middle.kernelSeconds >= 0.0) std::snprintf(kernel, sizeof kernel, "%.3f", middle.kernelSeconds);
             std::sort(endToEndRuns, endToEndRuns + 5);
             std::sort(writeRuns, writeRuns + 5);
             const double endToEnd = endToEndRuns[2], writeTime = writeRuns[2];
             // .ply's writer takes the rows interleaved as the file stores them (the shader writes them so).
             const double computeTime = format == sampling::SampleFormat::Ply ? computeInterleaved : computeSeparate;
             const double bound = std::max(computeTime, writeTime);
-            std::printf("| %.3f | %.3f | %.3f | %.1f | %.2f |\n", computeTime, writeTime, endToEnd, double(n) / endToEnd / 1e6,
-                        bound / endToEnd);
+            std::printf("| %.3f | %.3f | %.3f | %.1f | %.2f | %s / %.3f / %.3f |\n", computeTime, writeTime, endToEnd,
+                        double(n) / endToEnd / 1e6, bound / endToEnd, kernel, middle.writeSeconds, middle.waitSeconds);
             std::fflush(stdout);
         }
         compute.releaseGl();

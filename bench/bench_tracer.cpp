@@ -37,6 +37,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -58,6 +59,33 @@ double frameMilliseconds(renderer::OffscreenRenderer& offscreen, renderer::SdfRe
         value = stats.cpuMilliseconds;
     }
     return median3(t[0], t[1], t[2]);
+}
+
+// llvmpipe or softpipe: the GL runs on the CPU, and its timer queries miss the deferred rasterisation.
+bool softwareRasteriser() {
+    const char* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    return name && (std::strstr(name, "llvmpipe") || std::strstr(name, "softpipe"));
+}
+
+// The frame's GPU time (a GL_TIME_ELAPSED query around its draws): the median over 50 frames, or
+// over the frames that fit in 3 s when they are slower (llvmpipe: at least 5). -1 without timer.
+struct GpuFrames {
+    double milliseconds = -1.0;
+    int frames = 0;
+};
+GpuFrames gpuFrameMilliseconds(renderer::OffscreenRenderer& offscreen, renderer::SdfRenderer& sdfRenderer, int width,
+                               int height) {
+    std::vector<double> times;
+    const auto start = std::chrono::steady_clock::now();
+    while (times.size() < 50 &&
+           (times.size() < 5 || std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 3.0)) {
+        renderer::FrameStats stats;
+        offscreen.render(sdfRenderer, width, height, renderer::Camera{}, 0.0f, &stats, 1.0f);
+        if (stats.gpuMilliseconds < 0.0) return {};
+        times.push_back(stats.gpuMilliseconds);
+    }
+    std::sort(times.begin(), times.end());
+    return {times[times.size() / 2], int(times.size())};
 }
 
 // The reference: the textbook loop, nothing else.
@@ -230,10 +258,9 @@ shaders::IncludeOptions includeOptions() {
 
 void datasetReport(const std::vector<std::string>& names) {
     dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
-    std::printf("| SDF | full-resolution frame (ms) | march | reference tracer (ms) | ours / reference | moving: scale | moving "
-                "frame (ms) | "
-                "steps/pixel (all) | steps/pixel (hits) |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("| SDF | full-resolution frame (ms) | GPU time a frame (ms; frames) | march | reference tracer (ms) | ours / "
+                "reference | moving: scale | moving frame (ms) | steps/pixel (all) | steps/pixel (hits) |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
     renderer::OffscreenRenderer offscreen;
     std::vector<double> ratios, movingFrames;
     std::vector<std::string> coneRows;
@@ -252,7 +279,7 @@ void datasetReport(const std::vector<std::string>& names) {
         const shaders::PreparedSdf prepared = shaders::prepareSdfFile(entry.path, includeOptions());
         auto diagnostics = sdfRenderer.setSdf(prepared);
         if (shaders::hasErrors(diagnostics)) {
-            std::printf("| %s | does not compile | | | | | | | |\n", entry.metadata.name.c_str());
+            std::printf("| %s | does not compile | | | | | | | | |\n", entry.metadata.name.c_str());
             continue;
         }
         double full = frameMilliseconds(offscreen, sdfRenderer, 1280, 720, 1.0f);
@@ -263,6 +290,9 @@ void datasetReport(const std::vector<std::string>& names) {
         // Measured afresh with the settled program: the timing that won a comparison is biased low.
         full = frameMilliseconds(offscreen, sdfRenderer, 1280, 720, 1.0f);
         const bool fused = sdfRenderer.fusedMarch(), cones = sdfRenderer.conePass();
+        const GpuFrames gpu = softwareRasteriser() ? GpuFrames{} : gpuFrameMilliseconds(offscreen, sdfRenderer, 1280, 720);
+        const std::string gpuCell =
+            gpu.frames > 0 ? std::to_string(gpu.milliseconds).substr(0, 6) + "; " + std::to_string(gpu.frames) : "-";
         const double reference = referenceMilliseconds(prepared, entry.metadata.name, 1280, 720);
         // The viewport's rule: start from the full frame's cost, then adapt frame by frame.
         float scale = std::clamp(float(std::sqrt(0.8 * 33.0 / full)), 0.1f, 1.0f);
@@ -300,13 +330,17 @@ void datasetReport(const std::vector<std::string>& names) {
         }
         if (reference > 0.0) ratios.push_back(full / reference);
         movingFrames.push_back(moving);
-        std::printf("| %s | %.1f | %s%s | %.1f | %.2f | %.0f %% | %.1f | %.1f | %.1f |\n", entry.metadata.name.c_str(), full,
-                    fused ? "fused" : "separate", cones ? " + cones" : "", reference, reference > 0.0 ? full / reference : 0.0,
-                    scale * 100.0f, moving, steps / double(stats.size()), hits ? hitSteps / double(hits) : 0.0);
+        std::printf("| %s | %.1f | %s | %s%s | %.1f | %.2f | %.0f %% | %.1f | %.1f | %.1f |\n", entry.metadata.name.c_str(), full,
+                    gpuCell.c_str(), fused ? "fused" : "separate", cones ? " + cones" : "", reference,
+                    reference > 0.0 ? full / reference : 0.0, scale * 100.0f, moving, steps / double(stats.size()),
+                    hits ? hitSteps / double(hits) : 0.0);
         std::fflush(stdout);
         sdfRenderer.releaseGl();
     }
     std::printf("\n");
+    if (softwareRasteriser())
+        std::printf("GPU time: \"-\" on this driver: llvmpipe's timer queries time the commands' recording, not the "
+                    "rasterisation it defers to glFinish, so the frame's time is the CPU column's.\n\n");
     if (!coneRows.empty()) {
         std::printf("Where the cone pass was kept: the full-resolution frame without and with it, and what it did to the "
                     "hits (320x180 statistics frames of the same program): pixels whose ray hit in one and not in the "

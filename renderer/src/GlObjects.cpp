@@ -40,6 +40,7 @@ void deleteRenderbuffer(GLuint id) { glDeleteRenderbuffers(1, &id); }
 void deleteTexture(GLuint id) { glDeleteTextures(1, &id); }
 void deleteBuffer(GLuint id) { glDeleteBuffers(1, &id); }
 void deleteProgramPipeline(GLuint id) { glDeleteProgramPipelines(1, &id); }
+void deleteQuery(GLuint id) { glDeleteQueries(1, &id); }
 
 GlProgram linkProgram(std::initializer_list<GLuint> shaders, std::string& log, bool separable) {
     GlProgram program(glCreateProgram());

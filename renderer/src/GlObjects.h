@@ -68,6 +68,7 @@ void deleteRenderbuffer(GLuint id);
 void deleteTexture(GLuint id);
 void deleteBuffer(GLuint id);
 void deleteProgramPipeline(GLuint id);
+void deleteQuery(GLuint id);
 
 using GlProgram = GlName<deleteProgram>;
 using GlShader = GlName<deleteShader>;
@@ -77,6 +78,44 @@ using GlRenderbuffer = GlName<deleteRenderbuffer>;
 using GlTexture = GlName<deleteTexture>;
 using GlBuffer = GlName<deleteBuffer>;
 using GlProgramPipeline = GlName<deleteProgramPipeline>;
+using GlQuery = GlName<deleteQuery>;
+
+// GPU time of the commands between begin() and end() (a GL_TIME_ELAPSED query; queries of one
+// target do not nest): milliseconds() waits for the result, -1 when none was taken or when it
+// exceeds `wall`, the wall time that brackets the commands and the wait for them (llvmpipe's
+// first query after a program's link reads hours).
+class GpuTimer {
+public:
+    void begin() {
+        if (!m_query) {
+            GLuint id = 0;
+            glGenQueries(1, &id);
+            m_query = GlQuery(id);
+        }
+        glBeginQuery(GL_TIME_ELAPSED, m_query.id());
+        m_running = true;
+    }
+    void end() {
+        if (!m_running) return;
+        glEndQuery(GL_TIME_ELAPSED);
+        m_running = false;
+        m_taken = true;
+    }
+    double milliseconds(double wall) {
+        if (!m_taken) return -1.0;
+        GLuint64 nanoseconds = 0;
+        glGetQueryObjectui64v(m_query.id(), GL_QUERY_RESULT, &nanoseconds);
+        m_taken = false;
+        const double milliseconds = double(nanoseconds) * 1e-6;
+        return milliseconds <= wall ? milliseconds : -1.0;
+    }
+    void reset() { m_query.reset(), m_running = m_taken = false; }
+    void release() { m_query.release(), m_running = m_taken = false; }
+
+private:
+    GlQuery m_query;
+    bool m_running = false, m_taken = false;
+};
 
 // A compiled shader stage and what the driver said about it, mapped to the user's files.
 struct CompiledShader {

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <string_view>
 
@@ -92,6 +93,8 @@ struct SampleCompute::Impl {
     const char* engine = "";
     meshfield::QueryCounters counters; // the CPU engine's, or the GLSL field's when counting, since build()
     bool countWalks = false;           // the GLSL mesh field counts its walks (SDFWB_MESH_COUNT=1)
+    GpuTimer kernelTimer;
+    double kernelMilliseconds = 0.0; // since build(); -1 once a timer could not be trusted
     // With the CPU engine, each slot's rows on the host (the mapped buffers are read-only).
     std::vector<float> hostRows[kSlots][3];
     std::string source;
@@ -240,11 +243,18 @@ SampleCompute::~SampleCompute() {
     m_impl->badRows.release();
     m_impl->inputs.release();
     m_impl->textures.release();
+    m_impl->kernelTimer.release();
 }
 
 const std::string& SampleCompute::source() const { return m_impl->source; }
 
 const char* SampleCompute::meshEngine() const { return m_impl->engine; }
+
+double SampleCompute::kernelMilliseconds() const {
+    const double own = m_impl->kernelMilliseconds;
+    const double values = m_impl->values ? m_impl->values->kernelMilliseconds() : 0.0;
+    return own < 0.0 || values < 0.0 ? -1.0 : own + values;
+}
 
 bool SampleCompute::countsMeshWalks() const {
     return m_impl->countWalks || (m_impl->values && m_impl->values->countsMeshWalks());
@@ -319,6 +329,11 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     m_impl->engine = engine;
     m_impl->counters = {};
     m_impl->countWalks = countWalks;
+    // llvmpipe's and softpipe's timer queries end before the work they time (0 for a dispatch that
+    // took seconds): no kernel time there.
+    const char* driver = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const bool software = driver && (std::strstr(driver, "llvmpipe") || std::strstr(driver, "softpipe"));
+    m_impl->kernelMilliseconds = software ? -1.0 : 0.0;
     m_impl->mortonInputs = sdf.mesh && !m_impl->query && sorted;
     m_impl->values.reset();
     if (twoPass) {
@@ -392,12 +407,18 @@ Expected<std::uint32_t> SampleCompute::Impl::dispatch(const SampleUniforms& unif
                          inputRows ? inputRows : uniforms.inputPoints + 3 * std::size_t(first), GL_STREAM_DRAW);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingInputs, inputs.id());
     }
+    const auto dispatched = std::chrono::steady_clock::now();
+    kernelTimer.begin();
     glDispatchCompute((count + 63u) / 64u, 1, 1);
+    kernelTimer.end();
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
     std::uint32_t counts[4] = {0, 0, 0, 0};
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, badRows.id());
     glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, countBytes, counts); // waits for the dispatch
     const std::uint32_t bad = counts[0];
+    const double kernel = kernelTimer.milliseconds(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - dispatched).count());
+    kernelMilliseconds = kernel < 0.0 || kernelMilliseconds < 0.0 ? -1.0 : kernelMilliseconds + kernel;
     if (countWalks) {
         counters.nearestNodes += counts[1];
         counters.windingNodes += counts[2];
@@ -538,6 +559,7 @@ void SampleCompute::releaseGl() {
     m_impl->badRows.reset();
     m_impl->inputs.reset();
     m_impl->textures.reset();
+    m_impl->kernelTimer.reset();
     m_impl->query.reset();
     if (m_impl->values) m_impl->values->releaseGl();
     for (auto& host : m_impl->hostRows)

@@ -144,6 +144,7 @@ glm::mat4 proxyClip(const Camera& camera, const CameraBasis& basis, float aspect
 
 struct SdfRenderer::Impl {
     std::optional<shaders::PreparedSdf> sdf; // the last SDF that compiled
+    GpuTimer frameTimer;                     // a timed frame's GPU time (render(.., finish))
     // settleMarch(): where the choice between the fused and the separate march stands.
     // ConesOpen: the march is chosen; the cone pass is still to try (Cones::Auto chosen again).
     enum class Settle { Open, TryingSeparate, ConesOpen, TryingCones, Done };
@@ -393,6 +394,7 @@ SdfRenderer::SdfRenderer() : m_impl(std::make_unique<Impl>()) {}
 
 SdfRenderer::~SdfRenderer() {
     // GL names cannot be freed without the context; the owner calls releaseGl() first.
+    m_impl->frameTimer.release();
     for (auto& [text, variant] : m_impl->cache) variant.program.release();
     m_impl->vertexArray.release();
     m_impl->vertexProgram.release();
@@ -748,6 +750,7 @@ bool SdfRenderer::Impl::drawPicture(const ShadingSettings& shading, const TraceS
 FrameStats SdfRenderer::render(int width, int height, const Camera& camera, float time, bool finish) {
     auto start = std::chrono::steady_clock::now();
     FrameStats stats;
+    if (finish) m_impl->frameTimer.begin();
     glViewport(0, 0, width, height);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
@@ -791,15 +794,20 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
         glBindVertexArray(0);
         glBindProgramPipeline(0);
     }
-    if (finish) glFinish();
+    if (finish) {
+        m_impl->frameTimer.end();
+        glFinish();
+    }
     logGlErrors("a frame");
     stats.cpuMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (finish) stats.gpuMilliseconds = m_impl->frameTimer.milliseconds(stats.cpuMilliseconds);
     return stats;
 }
 
 FrameStats SdfRenderer::renderScaled(int width, int height, float scale, const Camera& camera, float time, bool finish) {
     if (scale >= 0.999f) return render(width, height, camera, time, finish);
     auto start = std::chrono::steady_clock::now();
+    if (finish) m_impl->frameTimer.begin();
     int lowWidth = std::max(1, int(std::lround(width * scale)));
     int lowHeight = std::max(1, int(std::lround(height * scale)));
     GLint target = 0;
@@ -825,14 +833,19 @@ FrameStats SdfRenderer::renderScaled(int width, int height, float scale, const C
     glViewport(0, 0, width, height);
     glBlitFramebuffer(0, 0, lowWidth, lowHeight, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
     glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
-    if (finish) glFinish();
+    if (finish) {
+        m_impl->frameTimer.end();
+        glFinish();
+    }
     FrameStats stats;
     stats.boxProxy = boxProxy;
     stats.cpuMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (finish) stats.gpuMilliseconds = m_impl->frameTimer.milliseconds(stats.cpuMilliseconds);
     return stats;
 }
 
 void SdfRenderer::releaseGl() {
+    m_impl->frameTimer.reset();
     m_impl->lowFramebuffer.reset();
     m_impl->lowColor.reset();
     m_impl->lowWidth = m_impl->lowHeight = 0;

@@ -97,9 +97,18 @@ public:
 
     // The slot the next chunk is computed into, once the writer no longer reads it.
     int nextSlot() {
+        const auto start = std::chrono::steady_clock::now();
         std::unique_lock lock(m_mutex);
         m_changed.wait(lock, [&] { return !m_busy[m_next]; });
+        m_waitSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return m_next;
+    }
+
+    // The GL thread's time waiting in nextSlot(), and the writer's in its appends (after drain()).
+    double waitSeconds() const { return m_waitSeconds; }
+    double writeSeconds() {
+        std::lock_guard lock(m_mutex);
+        return m_writeSeconds;
     }
 
     // Hands the chunk computed into nextSlot() to the writer.
@@ -142,10 +151,13 @@ private:
             const bool skip = m_error.has_value();
             lock.unlock();
             Expected<void> ok;
+            const auto start = std::chrono::steady_clock::now();
             if (!skip)
                 ok = chunk.rows.rows ? m_writer.appendRows(chunk.rows.rows, chunk.n)
                                      : m_writer.append(chunk.rows.positions, chunk.rows.distances, chunk.rows.gradients, chunk.n);
+            const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             lock.lock();
+            m_writeSeconds += took;
             if (!ok && !m_error) m_error = ok.error();
             m_busy[chunk.slot] = false;
             m_changed.notify_all();
@@ -154,7 +166,9 @@ private:
 
     SampleWriter& m_writer;
     bool m_busy[renderer::SampleCompute::kSlots] = {};
-    int m_next = 0; // the slot the GL thread computes into next (its thread only)
+    int m_next = 0;              // the slot the GL thread computes into next (its thread only)
+    double m_waitSeconds = 0.0;  // GL thread only
+    double m_writeSeconds = 0.0; // under m_mutex
     std::deque<Chunk> m_queue;
     std::optional<Error> m_error;
     bool m_stop = false;
@@ -194,7 +208,11 @@ Expected<SamplingReport> sampleInto(renderer::SampleCompute& compute, const Samp
         return renderer::MappedRows{nullptr, nullptr, nullptr, *bad};
     };
     auto consume = [](const renderer::MappedRows&, std::size_t) -> Expected<void> { return {}; };
-    return run(job, dispatch, consume, progress);
+    const double kernelBefore = compute.kernelMilliseconds();
+    auto report = run(job, dispatch, consume, progress);
+    const double kernelAfter = compute.kernelMilliseconds();
+    if (report && kernelBefore >= 0.0 && kernelAfter >= 0.0) report->kernelSeconds = (kernelAfter - kernelBefore) / 1000.0;
+    return report;
 }
 
 Expected<SamplingReport> sampleToFile(renderer::SampleCompute& compute, const SamplingJob& job, const std::filesystem::path& path,
@@ -214,9 +232,14 @@ Expected<SamplingReport> sampleToFile(renderer::SampleCompute& compute, const Sa
         return compute.runMapped(uniforms, first, count, pipeline.nextSlot(), layout, (*writer)->arrayShift(done));
     };
     auto consume = [&](const renderer::MappedRows& rows, std::size_t n) { return pipeline.submit(rows, n); };
+    const double kernelBefore = compute.kernelMilliseconds();
     auto report = run(job, dispatch, consume, progress);
     if (auto ok = pipeline.drain(); !ok) return ok.error();
     if (!report) return report;
+    const double kernelAfter = compute.kernelMilliseconds();
+    if (kernelBefore >= 0.0 && kernelAfter >= 0.0) report->kernelSeconds = (kernelAfter - kernelBefore) / 1000.0;
+    report->writeSeconds = pipeline.writeSeconds();
+    report->waitSeconds = pipeline.waitSeconds();
     if (!report->cancelled)
         if (auto ok = (*writer)->commit(); !ok) return ok.error();
     // End to end: the last chunk's writing and the flush to disk included.

@@ -627,6 +627,22 @@ TEST_F(RendererTest, BoxProxyIsNotUsedWhereThePictureReachesPastTheBox) {
     sdfRenderer.releaseGl();
 }
 
+// Issue 49: a timed frame (drawn to glFinish) carries its GPU time from a timer query, full size
+// and scaled, within the frame's wall time (a frame the viewport does not wait for takes none).
+TEST_F(RendererTest, TimedFramesCarryTheirGpuTime) {
+    renderer::SdfRenderer sdfRenderer;
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n"))));
+    renderer::OffscreenRenderer offscreen;
+    renderer::FrameStats stats;
+    (void)offscreen.render(sdfRenderer, 60, 40, renderer::Camera{}, 0.0f, &stats); // the program's first draw
+    (void)offscreen.render(sdfRenderer, 60, 40, renderer::Camera{}, 0.0f, &stats);
+    EXPECT_GE(stats.gpuMilliseconds, 0.0);
+    EXPECT_LE(stats.gpuMilliseconds, stats.cpuMilliseconds) << "the commands lie inside the frame's wall time";
+    (void)offscreen.render(sdfRenderer, 60, 40, renderer::Camera{}, 0.0f, &stats, 0.5f);
+    EXPECT_GE(stats.gpuMilliseconds, 0.0) << "scaled";
+    sdfRenderer.releaseGl();
+}
+
 // Every SDF's fragment program is paired with one vertex program (a program pipeline): after
 // releaseGl() (the context is about to go) the renderer makes them again and draws the same
 // picture, without a GL error, for a second SDF too.

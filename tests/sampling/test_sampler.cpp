@@ -1,10 +1,12 @@
 // The 8 sampling patterns through the real compute path (EGL, llvmpipe without a GPU), checked
 // against closed forms on a sphere, plus determinism across chunk sizes, shards and merges.
 
+#include <core/Log.h>
 #include <renderer/HeadlessContext.h>
 #include <renderer/SampleCompute.h>
 #include <renderer/SamplingBindings.h>
 #include <sampling/FieldEvaluator.h>
+#include <sampling/SampleFile.h>
 #include <sampling/Sampler.h>
 #include <sampling/SamplerLibrary.h>
 #include <shaders/ShaderComposer.h>
@@ -20,6 +22,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unistd.h>
 
 using namespace sdfwb;
 namespace fs = std::filesystem;
@@ -271,6 +274,62 @@ TEST_F(SamplerTest, MissesBecomeNanRowsAndAreCounted) {
     auto report = sample("float sdf(vec3 p) { return 1.0; }\n", "surface", job(300), samples);
     EXPECT_EQ(report.badRows, 300u);
     EXPECT_TRUE(std::isnan(samples.distances[0]) && std::isnan(samples.positions[0]) && std::isnan(samples.gradients[0]));
+}
+
+// Issue 49, point 4: the bad-row count the GPU reports equals a count of the rows written, for
+// every pattern and file format, through the mapped file path (where the count once read
+// 0x20202020, the .npy header's padding) and into arrays; no count is corrected on the host (a
+// correction logs a warning). The field is NaN for x > 0.6 and a sphere elsewhere.
+TEST_F(SamplerTest, TheGpuBadRowCountEqualsTheRowsWrittenForEveryPatternAndFormat) {
+    const std::string field = "float sdf(vec3 p) { return p.x > 0.6 ? sqrt(-1.0 - p.y * p.y) : length(p) - 0.5; }\n";
+    std::vector<std::string> warnings;
+    const int sink = log::addSink([&](log::Level level, std::string_view category, std::string_view message) {
+        if (level == log::Level::Warning && category == "sampling") warnings.emplace_back(message);
+    });
+    const fs::path folder = fs::temp_directory_path() / ("sdfwb-badrows-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    for (const std::string& pattern : sampling::builtinPatterns()) {
+        renderer::SampleCompute compute;
+        auto sampler = sampling::findSampler(pattern, {});
+        ASSERT_TRUE(sampler.hasValue());
+        ASSERT_FALSE(shaders::hasErrors(compute.build(prepare(field), *sampler)));
+        sampling::SamplingJob j = job(5000, 9);
+        j.chunkSize = 1500; // several chunks, the last one short
+        for (sampling::SampleFormat format :
+             {sampling::SampleFormat::Bin, sampling::SampleFormat::Npz, sampling::SampleFormat::Ply}) {
+            const fs::path path = folder / (pattern + "." + sampling::formatName(format));
+            auto report = sampling::sampleToFile(compute, j, path, format, {}, {});
+            ASSERT_TRUE(report.hasValue()) << report.error().message;
+            auto rows = sampling::readSamples(path);
+            ASSERT_TRUE(rows.hasValue()) << rows.error().message;
+            std::uint64_t host = 0;
+            for (std::size_t i = 0; i < rows->size(); ++i) {
+                bool finite = std::isfinite(rows->distances[i]);
+                for (int k = 0; k < 3; ++k)
+                    finite = finite && std::isfinite(rows->positions[3 * i + k]) && std::isfinite(rows->gradients[3 * i + k]);
+                host += finite ? 0 : 1;
+            }
+            EXPECT_EQ(report->badRows, host) << pattern << ' ' << sampling::formatName(format);
+            if (pattern == "rand") EXPECT_GT(host, 0u) << "rand's points reach x > 0.6";
+        }
+        sampling::SampleSet arrays;
+        arrays.resize(std::size_t(j.rows()));
+        auto report =
+            sampling::sampleInto(compute, j, arrays.positions.data(), arrays.distances.data(), arrays.gradients.data(), {});
+        ASSERT_TRUE(report.hasValue());
+        std::uint64_t host = 0;
+        for (std::size_t i = 0; i < arrays.size(); ++i) {
+            bool finite = std::isfinite(arrays.distances[i]);
+            for (int k = 0; k < 3; ++k)
+                finite = finite && std::isfinite(arrays.positions[3 * i + k]) && std::isfinite(arrays.gradients[3 * i + k]);
+            host += finite ? 0 : 1;
+        }
+        EXPECT_EQ(report->badRows, host) << pattern << " into arrays";
+        compute.releaseGl();
+    }
+    log::removeSink(sink);
+    fs::remove_all(folder);
+    EXPECT_TRUE(warnings.empty()) << warnings.front();
 }
 
 TEST_F(SamplerTest, SameSeedSameRowsWhateverTheChunkSize) {

@@ -101,6 +101,9 @@ public:
     // field's when SDFWB_MESH_COUNT=1 was set at build() (nearest and winding nodes, and signs the
     // lattice gave, per field evaluation); zero otherwise.
     bool countsMeshWalks() const;
+    // The GPU time of this program's dispatches since build(), by timer queries (the values
+    // program's included); -1 when a dispatch's timer read more than the wall time around it.
+    double kernelMilliseconds() const;
     void addMeshCounters(meshfield::QueryCounters& into) const;
 
     void releaseGl();

@@ -48,6 +48,13 @@ struct SamplingReport {
     std::uint64_t badRows = 0; // rows with NaN or Inf anywhere (misses of surface/near, broken fields)
     double seconds = 0.0;
     bool cancelled = false;
+    // Where the time went (issue 49): the dispatches' GPU time by timer queries (-1 where the
+    // driver's timer cannot be trusted: llvmpipe's runs no later than the dispatch's own call),
+    // and for a file the writer thread's time in its appends and the GL thread's time waiting for
+    // the writer to free a buffer set.
+    double kernelSeconds = -1.0;
+    double writeSeconds = 0.0;
+    double waitSeconds = 0.0;
 };
 
 // Writes rows into caller-owned arrays of job.rows() rows (3n, n, 3n floats): no copies. Null
