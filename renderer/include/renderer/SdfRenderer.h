@@ -21,9 +21,9 @@
 namespace sdfwb::renderer {
 
 struct FrameStats {
-    double cpuMilliseconds = 0.0; // time spent in render(), including glFinish when asked
+    double cpuMilliseconds = 0.0;  // time spent in render(), including glFinish when asked
     double gpuMilliseconds = -1.0; // the frame's GPU time (a timer query) when glFinish was asked, else -1
-    bool boxProxy = false;        // only the pixels whose ray meets the box ran the tracer
+    bool boxProxy = false;         // only the pixels whose ray meets the box ran the tracer
 };
 
 // The tracer variant these settings select (what SdfRenderer composes and the driver compiles), so
