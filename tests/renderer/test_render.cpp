@@ -12,6 +12,8 @@
 
 #include <epoxy/gl.h>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -625,6 +627,26 @@ TEST_F(RendererTest, BoxProxyIsNotUsedWhereThePictureReachesPastTheBox) {
         EXPECT_FALSE(stats.boxProxy) << "setting " << setting;
     }
     sdfRenderer.releaseGl();
+}
+
+// Issue 49, point 5: where the media module cannot load (the GPU machine gets only the headless
+// binaries, scripts/device_bundle), .png files go through libpng: the golden images and a batch
+// render pass in a child process whose plugin folder is empty, and the log says why.
+TEST_F(RendererTest, GoldenImagesAndPngRendersPassWithoutTheMediaModule) {
+    const fs::path empty = fs::temp_directory_path() / ("sdfwb-no-media-" + std::to_string(::getpid()));
+    fs::create_directories(empty);
+    const std::string command = "env SDFWB_PLUGIN_DIR=" + empty.string() + " " + fs::read_symlink("/proc/self/exe").string() +
+                                " '--gtest_filter=ShadingModes/GoldenTest.*:RendererTest.BatchRenderWritesAPng*' 2>&1";
+    std::string output;
+    FILE* pipe = popen(command.c_str(), "r");
+    ASSERT_NE(pipe, nullptr);
+    char buffer[4096];
+    while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
+    const int status = pclose(pipe);
+    fs::remove_all(empty);
+    EXPECT_EQ(status, 0) << output;
+    EXPECT_NE(output.find(".png through libpng only"), std::string::npos) << output;
+    EXPECT_NE(output.find("[  PASSED  ] 13 tests."), std::string::npos) << output;
 }
 
 // Issue 49: a timed frame (drawn to glFinish) carries its GPU time from a timer query, full size
