@@ -14,6 +14,7 @@
 #include <cstring>
 #include <limits>
 #include <string_view>
+#include <unordered_map>
 
 namespace sdfwb::renderer {
 namespace {
@@ -98,7 +99,13 @@ struct SampleCompute::Impl {
     // With the CPU engine, each slot's rows on the host (the mapped buffers are read-only).
     std::vector<float> hostRows[kSlots][3];
     std::string source;
-    GLint location(const char* name) const { return glGetUniformLocation(program.id(), name); }
+    // Uniform locations, each asked of the driver once per program (issue 49: not per chunk).
+    mutable std::unordered_map<std::string, GLint> locations;
+    GLint location(const char* name) const {
+        auto it = locations.find(name);
+        if (it == locations.end()) it = locations.emplace(name, glGetUniformLocation(program.id(), name)).first;
+        return it->second;
+    }
     Expected<void> reserve(BufferSet& set, std::uint32_t count, bool mapped, bool interleaved = false);
     // The CPU engine's values and gradients at the positions; the rows with a non-finite value.
     // The sampler is analysis/points.glsl: its positions are the caller's points one for one (the
@@ -322,6 +329,7 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
                               std::to_string(int(milliseconds)) + " ms" +
                               (*engine ? std::string("; mesh engine: ") + engine : std::string()));
     m_impl->program = std::move(program);
+    m_impl->locations.clear();
     m_impl->source = std::move(composed.text);
     m_impl->channels = sdf.channels;
     m_impl->mesh = sdf.mesh;
@@ -554,6 +562,7 @@ Expected<MappedRows> SampleCompute::runMapped(const SampleUniforms& uniforms, st
 
 void SampleCompute::releaseGl() {
     m_impl->program.reset();
+    m_impl->locations.clear();
     m_impl->plain.reset();
     for (BufferSet& set : m_impl->slots) set.reset();
     m_impl->badRows.reset();
