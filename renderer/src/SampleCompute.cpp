@@ -123,11 +123,16 @@ struct SampleCompute::Impl {
             meshfield::GradientMode mode{!uniforms.meshGradientTaps, uniforms.gradientStep};
             return std::uint32_t(query->evaluate(rows, count, mode, 0, &counters));
         }
-        std::vector<float> xyz(3 * std::size_t(count)), d(count), g(gradients ? 3 * std::size_t(count) : 0);
-        for (std::size_t i = 0; i < count; ++i)
-            std::copy(positions + i * positionStride, positions + i * positionStride + 3, &xyz[3 * i]);
+        // Contiguous positions go as they are; interleaved rows (.ply) are gathered first.
+        std::vector<float> gathered, d(count), g(gradients ? 3 * std::size_t(count) : 0);
+        if (positionStride != 3) {
+            gathered.resize(3 * std::size_t(count));
+            for (std::size_t i = 0; i < count; ++i)
+                std::copy(positions + i * positionStride, positions + i * positionStride + 3, &gathered[3 * i]);
+        }
+        const float* xyz = positionStride == 3 ? positions : gathered.data();
         SampleUniforms at = uniforms;
-        at.inputPoints = xyz.data();
+        at.inputPoints = xyz;
         at.inputTableFloats = 0;
         auto bad = values->run(at, 0, count, nullptr, d.data(), gradients ? g.data() : nullptr);
         if (!bad) return bad;

@@ -52,20 +52,28 @@ std::string renameWord(const std::string& text, const std::string& word, const s
     return out;
 }
 
-// `text` with each call of texture, texture2D or textureCube that passes three arguments (the
-// bias form) calling sdfwb_textureBias instead. Arguments are counted at the call's own level of
-// parentheses and brackets.
-std::string renameBiasLookups(const std::string& text) {
-    auto wordCharacter = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-    std::string out;
-    std::size_t from = 0;
+// Calls `visit(at, end)` for each word of `text` (a run of letters, digits and _) in order, until
+// it returns false.
+template <class Visit> void forEachWord(const std::string& text, Visit visit) {
     for (std::size_t at = 0; at < text.size();) {
-        if (!wordCharacter(text[at])) {
+        if (!isWordCharacter(text[at])) {
             ++at;
             continue;
         }
         std::size_t end = at;
-        while (end < text.size() && wordCharacter(text[end])) ++end;
+        while (end < text.size() && isWordCharacter(text[end])) ++end;
+        if (!visit(at, end)) return;
+        at = end;
+    }
+}
+
+// `text` with each call of texture, texture2D or textureCube that passes three arguments (the
+// bias form) calling sdfwb_textureBias instead. Arguments are counted at the call's own level of
+// parentheses and brackets.
+std::string renameBiasLookups(const std::string& text) {
+    std::string out;
+    std::size_t from = 0;
+    forEachWord(text, [&](std::size_t at, std::size_t end) {
         const std::string_view word(text.data() + at, end - at);
         std::size_t open = end;
         while (open < text.size() && std::isspace(static_cast<unsigned char>(text[open]))) ++open;
@@ -84,8 +92,8 @@ std::string renameBiasLookups(const std::string& text) {
                 from = end;
             }
         }
-        at = end;
-    }
+        return true;
+    });
     out.append(text, from, std::string::npos);
     return out;
 }
@@ -93,19 +101,13 @@ std::string renameBiasLookups(const std::string& text) {
 // Whether `text` (comments stripped first) has a for, while or do keyword: a field without one is
 // cheap to inline at every call site (SDFWB_FIELD_WITHOUT_LOOPS, sampling/common.glsl).
 bool hasLoopKeyword(const std::string& text) {
-    auto wordCharacter = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-    for (std::size_t at = 0; at < text.size();) {
-        if (!wordCharacter(text[at])) {
-            ++at;
-            continue;
-        }
-        std::size_t end = at;
-        while (end < text.size() && wordCharacter(text[end])) ++end;
+    bool found = false;
+    forEachWord(text, [&](std::size_t at, std::size_t end) {
         const std::string_view word(text.data() + at, end - at);
-        if (word == "for" || word == "while" || word == "do") return true;
-        at = end;
-    }
-    return false;
+        found = word == "for" || word == "while" || word == "do";
+        return !found;
+    });
+    return found;
 }
 
 } // namespace

@@ -42,19 +42,23 @@ namespace fs = std::filesystem;
 
 class MeshSdfTest : public testing::GlTest {
 protected:
-    // The field at `points` (xyz triples) through analysis/points.glsl.
-    static std::vector<float> evaluate(const shaders::PreparedSdf& sdf, const std::vector<float>& points) {
+    // The field at `points` (xyz triples) through analysis/points.glsl; `counters` (optional)
+    // receives the mesh walks' counts (SampleCompute::addMeshCounters).
+    static std::vector<float> evaluate(const shaders::PreparedSdf& sdf, const std::vector<float>& points,
+                                       meshfield::QueryCounters* counters = nullptr) {
         renderer::SampleCompute compute;
         auto stage = shaders::builtinPiece("analysis/points.glsl");
         EXPECT_TRUE(stage.hasValue());
         auto diagnostics = compute.build(sdf, *stage);
         EXPECT_FALSE(shaders::hasErrors(diagnostics)) << (diagnostics.empty() ? "" : shaders::formatDiagnostic(diagnostics[0]));
+        if (counters) EXPECT_TRUE(compute.countsMeshWalks());
         sampling::SamplingJob job;
         job.count = points.size() / 3;
         job.inputPoints = points.data();
         std::vector<float> distances(job.count);
         auto report = sampling::sampleInto(compute, job, nullptr, distances.data(), nullptr, {});
         EXPECT_TRUE(report.hasValue()) << (report ? "" : report.error().message);
+        if (counters) compute.addMeshCounters(*counters);
         compute.releaseGl();
         return distances;
     }
@@ -66,6 +70,15 @@ public:
     explicit EngineScope(const char* engine) { setenv("SDFWB_MESH_ENGINE", engine, 1); }
     ~EngineScope() { unsetenv("SDFWB_MESH_ENGINE"); }
 };
+
+// `n` points uniform in [-reach, reach]^3, as xyz triples.
+std::vector<float> uniformPoints(int n, unsigned seed, float reach) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<float> u(-reach, reach);
+    std::vector<float> points;
+    for (int i = 0; i < n; ++i) points.insert(points.end(), {u(random), u(random), u(random)});
+    return points;
+}
 
 double bruteDistance(const meshfield::TriangleMesh& mesh, const dvec3& p) {
     double best = std::numeric_limits<double>::infinity();
@@ -80,10 +93,7 @@ double bruteDistance(const meshfield::TriangleMesh& mesh, const dvec3& p) {
 
 TEST_F(MeshSdfTest, GpuDistancesMatchAFloat64BruteForceScanAndEachSignMethodsCpuSign) {
     const meshfield::TriangleMesh mesh = testing::torusMesh(0.6f, 0.25f, 64, 24);
-    std::mt19937 random(11);
-    std::uniform_real_distribution<float> u(-1.2f, 1.2f);
-    std::vector<float> points;
-    for (int i = 0; i < 4000; ++i) points.insert(points.end(), {u(random), u(random), u(random)});
+    std::vector<float> points = uniformPoints(4000, 11, 1.2f);
     // points near the surface, where the nearest feature changes
     for (std::size_t k = 0; k < 1000; ++k) {
         const glm::vec3 v = mesh.vertices[(k * 13) % mesh.vertices.size()];
@@ -130,10 +140,7 @@ TEST_F(MeshSdfTest, GpuDistancesMatchAFloat64BruteForceScanAndEachSignMethodsCpu
 // only where the boundary's bound allows.
 TEST_F(MeshSdfTest, TheGlslFieldTakesFarSignsFromTheLatticeAndKeepsEverySign) {
     const meshfield::TriangleMesh torus = testing::torusMesh(0.6f, 0.25f, 48, 16);
-    std::mt19937 random(11);
-    std::uniform_real_distribution<float> u(-1.1f, 1.1f);
-    std::vector<float> points;
-    for (int i = 0; i < 6000; ++i) points.insert(points.end(), {u(random), u(random), u(random)});
+    const std::vector<float> points = uniformPoints(6000, 11, 1.1f);
     const std::size_t n = points.size() / 3;
     EngineScope scope("gpu");
     setenv("SDFWB_MESH_COUNT", "1", 1);
@@ -141,20 +148,8 @@ TEST_F(MeshSdfTest, TheGlslFieldTakesFarSignsFromTheLatticeAndKeepsEverySign) {
         const meshfield::TriangleMesh mesh = open ? testing::damaged(torus, testing::Damage::RemoveFivePercent) : torus;
         auto field = meshfield::makeMeshField(mesh, "torus.obj", {});
         ASSERT_TRUE(field.hasValue());
-        const shaders::PreparedSdf sdf = shaders::prepareMeshSdf(*field, "torus.obj");
-        renderer::SampleCompute compute;
-        auto stage = shaders::builtinPiece("analysis/points.glsl");
-        ASSERT_TRUE(stage.hasValue());
-        ASSERT_FALSE(shaders::hasErrors(compute.build(sdf, *stage)));
-        ASSERT_TRUE(compute.countsMeshWalks());
-        sampling::SamplingJob job;
-        job.count = n;
-        job.inputPoints = points.data();
-        std::vector<float> values(n);
-        ASSERT_TRUE(sampling::sampleInto(compute, job, nullptr, values.data(), nullptr, {}).hasValue());
         meshfield::QueryCounters counters;
-        compute.addMeshCounters(counters);
-        compute.releaseGl();
+        const std::vector<float> values = evaluate(shaders::prepareMeshSdf(*field, "torus.obj"), points, &counters);
         int wrongSign = 0;
         for (std::size_t i = 0; i < n; ++i) {
             const dvec3 p(points[3 * i], points[3 * i + 1], points[3 * i + 2]);
@@ -178,10 +173,7 @@ TEST_F(MeshSdfTest, TheGlslFieldReturnsEachPointsValueInTheCallersOrder) {
     auto field = meshfield::makeMeshField(testing::torusMesh(0.6f, 0.25f, 48, 16), "torus.obj", {});
     ASSERT_TRUE(field.hasValue());
     const shaders::PreparedSdf sdf = shaders::prepareMeshSdf(*field, "torus.obj");
-    std::mt19937 random(3);
-    std::uniform_real_distribution<float> u(-1.1f, 1.1f);
-    std::vector<float> points;
-    for (int i = 0; i < 5000; ++i) points.insert(points.end(), {u(random), u(random), u(random)});
+    const std::vector<float> points = uniformPoints(5000, 3, 1.1f);
     std::vector<float> reversed(points.size());
     for (std::size_t i = 0; i < points.size() / 3; ++i)
         std::copy(points.begin() + long(3 * i), points.begin() + long(3 * i + 3), reversed.end() - long(3 * i + 3));
