@@ -143,6 +143,7 @@ struct SdfTextures {
     std::array<GlTexture, shaders::kShadertoyChannels> channels;
     std::array<std::string, shaders::kShadertoyChannels> channelFiles; // what each holds ("": the noise texels)
     std::array<glm::vec2, shaders::kShadertoyChannels> channelSizes{};
+    std::array<bool, shaders::kShadertoyChannels> channelCubes{}; // a cube map (the program's samplerCube)
     // A mesh SDF's buffers (shaders/mesh/mesh_field.glsl), uploaded once per mesh.
     std::shared_ptr<const meshfield::MeshField> mesh;
     GlBuffer meshNodes;
@@ -155,7 +156,8 @@ struct SdfTextures {
 // Binds what `program` reads: the noise texture to shaders::kNoiseTextureUnit (see NoiseTexture.h),
 // iChannelN to shaders::kChannelTextureUnit + N, holding the image `files[N]` (rows from the
 // bottom, as Shadertoy shows images; mipmapped) or, when that is empty or unreadable (logged), the
-// noise texels; sets iChannelResolution to the sizes; binds a mesh SDF's buffers to
+// noise texels (a channel the program declares samplerCube: a cube map with that image on each
+// face); sets iChannelResolution to the sizes; binds a mesh SDF's buffers to
 // shaders::kMesh*Binding (uploaded on first use). Needs a current context.
 void bindSdfTextures(GLuint program, SdfTextures& textures, const std::array<std::string, shaders::kShadertoyChannels>& files,
                      const std::shared_ptr<const meshfield::MeshField>& mesh);

@@ -54,14 +54,44 @@ GlTexture makeTexture(int width, int height, const std::uint8_t* texels, bool mi
     return texture;
 }
 
+// A cube map with the same RGBA8 image on each of its six faces.
+GlTexture makeCubeTexture(int width, int height, const std::uint8_t* texels) {
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    GlTexture texture(id);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, id);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (int face = 0; face < 6; ++face)
+        glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                     texels);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+        glTexParameteri(GL_TEXTURE_CUBE_MAP, wrap, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    return texture;
+}
+
+// Whether `program`'s uniform `name` is a samplerCube.
+bool isCubeSampler(GLuint program, const char* name) {
+    const GLuint index = glGetProgramResourceIndex(program, GL_UNIFORM, name);
+    if (index == GL_INVALID_INDEX) return false;
+    const GLenum property = GL_TYPE;
+    GLint type = 0;
+    glGetProgramResourceiv(program, GL_UNIFORM, index, 1, &property, 1, nullptr, &type);
+    return type == GL_SAMPLER_CUBE;
+}
+
 GlTexture makeNoiseTexture() {
     const std::vector<std::uint8_t> texels = noiseTexels();
     return makeTexture(kNoiseTextureSize, kNoiseTextureSize, texels.data(), false);
 }
 
-void bindUnit(int unit, const GlTexture& texture) {
+void bindUnit(int unit, const GlTexture& texture, GLenum target = GL_TEXTURE_2D) {
     glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-    glBindTexture(GL_TEXTURE_2D, texture.id());
+    glBindTexture(target, texture.id());
     glActiveTexture(GL_TEXTURE0);
 }
 
@@ -136,7 +166,9 @@ void bindSdfTextures(GLuint program, SdfTextures& textures, const std::array<std
     for (int n = 0; n < shaders::kShadertoyChannels; ++n) {
         if (glGetUniformLocation(program, names[n]) < 0) continue;
         const std::size_t i = std::size_t(n);
-        if (!textures.channels[i] || textures.channelFiles[i] != files[i]) {
+        const bool cube = isCubeSampler(program, names[n]);
+        if (!textures.channels[i] || textures.channelFiles[i] != files[i] || textures.channelCubes[i] != cube) {
+            textures.channelCubes[i] = cube;
             textures.channels[i].reset();
             textures.channelFiles[i] = files[i];
             textures.channelSizes[i] = glm::vec2(float(kNoiseTextureSize));
@@ -148,7 +180,8 @@ void bindSdfTextures(GLuint program, SdfTextures& textures, const std::array<std
                     for (int y = 0; y < image->height; ++y)
                         std::copy_n(image->rgba.data() + std::size_t(image->height - 1 - y) * row, row,
                                     flipped.data() + std::size_t(y) * row);
-                    textures.channels[i] = makeTexture(image->width, image->height, flipped.data(), true);
+                    textures.channels[i] = cube ? makeCubeTexture(image->width, image->height, flipped.data())
+                                                : makeTexture(image->width, image->height, flipped.data(), true);
                     textures.channelSizes[i] = glm::vec2(float(image->width), float(image->height));
                 } else {
                     log::warning("render", std::string(names[n]) + ": " + image.error().message + "; using the noise texture");
@@ -156,10 +189,11 @@ void bindSdfTextures(GLuint program, SdfTextures& textures, const std::array<std
             }
             if (!textures.channels[i]) {
                 const std::vector<std::uint8_t> texels = shadertoyNoiseTexels();
-                textures.channels[i] = makeTexture(kNoiseTextureSize, kNoiseTextureSize, texels.data(), false);
+                textures.channels[i] = cube ? makeCubeTexture(kNoiseTextureSize, kNoiseTextureSize, texels.data())
+                                            : makeTexture(kNoiseTextureSize, kNoiseTextureSize, texels.data(), false);
             }
         }
-        bindUnit(shaders::kChannelTextureUnit + n, textures.channels[i]);
+        bindUnit(shaders::kChannelTextureUnit + n, textures.channels[i], cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D);
         if (GLint at = glGetUniformLocation(program, resolutions[n]); at >= 0)
             glProgramUniform3f(program, at, textures.channelSizes[i].x, textures.channelSizes[i].y, 1.0f);
     }

@@ -114,18 +114,27 @@ uniform vec3 iChannelResolution[4] = vec3[4](vec3(256.0, 256.0, 1.0), vec3(256.0
 // Channels: the G3D noise texels (256 x 256 RGBA uniform values, repeating,
 // linearly filtered, with green and alpha the red and blue channels moved by (37, 17) texels like
 // Shadertoy's "RGBA noise" textures: renderer/NoiseTexture.h), or an image the user picked
-// (--channel N=FILE, the GUI's Shadertoy channels). Bound to unit SDFWB_CHANNELN_UNIT (GLSL 4.30
+// (--channel N=FILE, the GUI's Shadertoy channels); a channel read with a direction is a cube map
+// with that image on each face (SDFWB_COMPAT_CUBE_iChannelN). Bound to unit SDFWB_CHANNELN_UNIT (GLSL 4.30
 // takes a literal binding, not an expression).
-#ifdef SDFWB_COMPAT_iChannel0
+#if defined(SDFWB_COMPAT_CUBE_iChannel0)
+layout(binding = SDFWB_CHANNEL0_UNIT) uniform samplerCube iChannel0;
+#elif defined(SDFWB_COMPAT_iChannel0)
 layout(binding = SDFWB_CHANNEL0_UNIT) uniform sampler2D iChannel0;
 #endif
-#ifdef SDFWB_COMPAT_iChannel1
+#if defined(SDFWB_COMPAT_CUBE_iChannel1)
+layout(binding = SDFWB_CHANNEL1_UNIT) uniform samplerCube iChannel1;
+#elif defined(SDFWB_COMPAT_iChannel1)
 layout(binding = SDFWB_CHANNEL1_UNIT) uniform sampler2D iChannel1;
 #endif
-#ifdef SDFWB_COMPAT_iChannel2
+#if defined(SDFWB_COMPAT_CUBE_iChannel2)
+layout(binding = SDFWB_CHANNEL2_UNIT) uniform samplerCube iChannel2;
+#elif defined(SDFWB_COMPAT_iChannel2)
 layout(binding = SDFWB_CHANNEL2_UNIT) uniform sampler2D iChannel2;
 #endif
-#ifdef SDFWB_COMPAT_iChannel3
+#if defined(SDFWB_COMPAT_CUBE_iChannel3)
+layout(binding = SDFWB_CHANNEL3_UNIT) uniform samplerCube iChannel3;
+#elif defined(SDFWB_COMPAT_iChannel3)
 layout(binding = SDFWB_CHANNEL3_UNIT) uniform sampler2D iChannel3;
 #endif
 // Shadertoy defines this (1 on desktop GPUs) for `#if HW_PERFORMANCE == 0` quality switches.

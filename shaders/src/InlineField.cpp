@@ -3,7 +3,9 @@
 #include <core/Regex.h>
 #include <shaders/SdfSource.h>
 
+#include <map>
 #include <regex>
+#include <set>
 
 namespace sdfwb::shaders {
 namespace {
@@ -112,6 +114,87 @@ std::string withoutLoopExits(const std::string& text) {
             }
     }
     return out;
+}
+
+namespace {
+
+// Object-like macros (`#define NAME body`, continuation lines joined) by name.
+std::map<std::string, std::string> objectMacros(const std::string& text) {
+    std::map<std::string, std::string> macros;
+    for (std::size_t at = 0; at < text.size();) {
+        std::size_t end = text.find('\n', at);
+        while (end != std::string::npos && end > at && text[end - 1] == '\\') end = text.find('\n', end + 1);
+        if (end == std::string::npos) end = text.size();
+        std::string line = text.substr(at, end - at);
+        at = end + 1;
+        std::size_t i = skipSpace(line, 0);
+        if (i >= line.size() || line[i] != '#') continue;
+        i = skipSpace(line, i + 1);
+        if (!isWordAt(line, i, "define")) continue;
+        i = skipSpace(line, i + 6);
+        std::size_t nameEnd = i;
+        while (nameEnd < line.size() && isWordCharacter(line[nameEnd])) ++nameEnd;
+        if (nameEnd == i || (nameEnd < line.size() && line[nameEnd] == '(')) continue; // function-like
+        std::string body = line.substr(nameEnd);
+        for (char& c : body)
+            if (c == '\\' || c == '\n' || c == '\r') c = ' ';
+        macros[line.substr(i, nameEnd - i)] = trimmedText(body);
+    }
+    return macros;
+}
+
+// `code` with each object-like macro replaced by its expansion, `depth` levels deep; a macro does
+// not expand inside its own expansion, as the preprocessor's rule is.
+std::string expandedMacros(const std::string& code, const std::map<std::string, std::string>& macros,
+                           const std::set<std::string>& expanding, int depth) {
+    std::string out;
+    for (std::size_t i = 0; i < code.size();) {
+        if (!isWordCharacter(code[i]) || (i > 0 && isWordCharacter(code[i - 1]))) {
+            out += code[i++];
+            continue;
+        }
+        std::size_t end = i;
+        while (end < code.size() && isWordCharacter(code[end])) ++end;
+        const std::string word = code.substr(i, end - i);
+        auto macro = macros.find(word);
+        if (macro == macros.end() || expanding.count(word) || depth <= 0 || std::isdigit(static_cast<unsigned char>(word[0]))) {
+            out += word;
+        } else {
+            std::set<std::string> inner = expanding;
+            inner.insert(word);
+            out += " " + expandedMacros(macro->second, macros, inner, depth - 1) + " ";
+        }
+        i = end;
+    }
+    return out;
+}
+
+bool holdsLoopKeyword(const std::string& code) {
+    for (std::size_t i = 0; i < code.size(); ++i)
+        if ((i == 0 || !isWordCharacter(code[i - 1])) && (isWordAt(code, i, "for") || isWordAt(code, i, "while"))) return true;
+    return false;
+}
+
+} // namespace
+
+std::string withLoopMacroExpanded(const std::string& text, std::size_t line) {
+    const std::size_t lineEnd = std::min(text.find('\n', line), text.size());
+    const std::string code = text.substr(line, lineEnd - line);
+    if (holdsLoopKeyword(code) || code.find('#') != std::string::npos) return text;
+    const std::map<std::string, std::string> macros = objectMacros(text);
+    for (std::size_t i = 0; i < code.size(); ++i) {
+        if (!isWordCharacter(code[i]) || (i > 0 && isWordCharacter(code[i - 1]))) continue;
+        const std::size_t start = i;
+        while (i + 1 < code.size() && isWordCharacter(code[i + 1])) ++i;
+        const std::string word = code.substr(start, i + 1 - start);
+        if (!macros.count(word)) continue;
+        const std::string expansion = expandedMacros(word, macros, {}, 16);
+        if (!holdsLoopKeyword(expansion)) continue;
+        std::string out = text;
+        out.replace(line + start, word.size(), expansion);
+        return out;
+    }
+    return text;
 }
 
 namespace {

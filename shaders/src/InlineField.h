@@ -20,6 +20,12 @@ std::vector<std::string> splitStatements(const std::string& text);
 // of loops and switches nested in it stay): the loop's body run once must reach its step.
 std::string withoutLoopExits(const std::string& text);
 
+// `text` with the line that starts at `line` rewritten when it holds no loop keyword but uses an
+// object-like macro that expands to a loop (`#define c F{...}` with `#define F for(...)`, golfed
+// code): that use replaced by its expansion, every object-like macro in it expanded too, on the
+// same line (the lines after it keep their numbers). Else `text` as it is.
+std::string withLoopMacroExpanded(const std::string& text, std::size_t line);
+
 // The block that computes the field at `sdfwb_point` from the loop whose keyword is at `keyword`
 // in `text`: the loop's initialisation, its body's statements up to the one that advances
 // `counter` (`counter += STEP;`) with `point` set to sdfwb_point after the statement that computes

@@ -480,12 +480,14 @@ void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* fu
         march.unresolved = "the loop and its function are in different files";
         return;
     }
-    const std::string text = stripComments(composed.map.files[std::size_t(file)].text);
-    const std::size_t line = lineStart(text, loop->getLoc().line);
+    const std::string stripped = stripComments(composed.map.files[std::size_t(file)].text);
+    const std::size_t line = lineStart(stripped, loop->getLoc().line);
     if (line == std::string::npos) {
         march.unresolved = "the loop's line could not be read";
         return;
     }
+    // A loop a macro writes (golfed `#define c F{...}`): read from the macro's expansion.
+    const std::string text = withLoopMacroExpanded(stripped, line);
     // The loop's keyword: at glslang's column, else the line's first loop keyword.
     const std::size_t lineEnd = std::min(text.find('\n', line), text.size());
     auto isKeyword = [&](std::size_t at) {

@@ -1,5 +1,6 @@
 #include <shaders/SdfSource.h>
 
+#include <shaders/GlslChecker.h>
 #include <shaders/MarchAnalysis.h>
 #include <shaders/ShaderComposer.h>
 
@@ -419,6 +420,32 @@ Diagnostic missingEntryDiagnostic(const ResolvedSource& source, const std::strin
                 " with that form, or name your function with --entry NAME or an `entry: NAME` metadata line"};
 }
 
+// Shadertoy's cube-map channels: a channel the code reads with a direction (`texture(iChannel0,
+// rd)`, `textureCube(iChannel1, n)`) does not compile as a sampler2D. Each channel the code uses is
+// tried as a samplerCube, and kept as one where that leaves fewer errors; code that compiles as it
+// is is parsed once.
+void chooseCubeChannels(PreparedSdf& prepared) {
+    if (!prepared.compat.usesShadertoyChannel()) return;
+    auto errors = [&prepared] {
+        PreparedSdf userCode = prepared;
+        userCode.signature.entry.clear(); // the user's code alone
+        const std::vector<Diagnostic> found =
+            checkWithGlslang(composeSdfShader(userCode, Stage::Fragment, std::vector<ShaderPiece>{}, FeatureDefines{}));
+        return std::count_if(found.begin(), found.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; });
+    };
+    auto least = errors();
+    for (const std::string& symbol : prepared.compat.symbols) {
+        if (least == 0) return;
+        if (symbol.rfind("iChannel", 0) != 0 || symbol.size() != 9) continue; // not iChannelTime/Resolution
+        prepared.compat.cubeChannels.push_back(symbol);
+        const auto now = errors();
+        if (now < least)
+            least = now;
+        else
+            prepared.compat.cubeChannels.pop_back();
+    }
+}
+
 // A whole shader whose march writes its field inline (shaders::InlineMarch), with no function the
 // march steps by and no conventional name: the first such loop whose text the wrapper can run.
 void chooseInlineField(PreparedSdf& prepared, const std::string& stripped) {
@@ -538,6 +565,7 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
     std::string stripped = stripComments(prepared.source.text);
     prepared.compat = detectCompatNeeds(stripped);
     prepared.macros = definedMacros(stripped);
+    chooseCubeChannels(prepared);
     static const std::regex mainImage(
         R"(\bvoid\s+mainImage\s*\(\s*out\s+vec4\s+\w+\s*,\s*(?:in\s+|const\s+)*vec2\s+\w+\s*\)\s*\{)", kLinearRegex);
     prepared.shadertoyMainImage = stripped.find("mainImage") != std::string::npos && std::regex_search(stripped, mainImage);

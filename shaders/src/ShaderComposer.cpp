@@ -169,6 +169,7 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
         if (!(derivative && stage == Stage::Fragment)) all["SDFWB_COMPAT_" + symbol] = "1";
     }
     for (const std::string& symbol : sdf.compat.wrapped) all["SDFWB_COMPAT_WRAPPED_" + symbol] = "1";
+    for (const std::string& channel : sdf.compat.cubeChannels) all["SDFWB_COMPAT_CUBE_" + channel] = "1";
     if (all.count("SDFWB_COMPAT_g3d_uniformRandom")) all["SDFWB_NOISE_TEXTURE_UNIT"] = std::to_string(kNoiseTextureUnit);
     for (int n = 0; n < kShadertoyChannels; ++n)
         if (all.count("SDFWB_COMPAT_iChannel" + std::to_string(n)))

@@ -496,6 +496,24 @@ TEST_F(InlineFields, TheLoopBodyRunOnceIsTheField) {
     EXPECT_NEAR(valueAt("70_st_inside_positive_march.glsl", {0.0f, 2.0f, 0.0f}), 1.4f, 1e-5f);
     EXPECT_NEAR(valueAt("71_st_antialiased_inline_march.glsl", {0.0f, 0.1f, 0.0f}), -0.2f, 1e-5f);
     EXPECT_NEAR(valueAt("71_st_antialiased_inline_march.glsl", {0.45f, -0.25f, 0.0f}), -0.1f, 1e-5f);
+    // 73's march is written in a macro used twice (view and shadow): the view's is the field, the
+    // union of four balls on the x axis and the floor y = -1.
+    EXPECT_NEAR(valueAt("73_st_golfed_macro_march.glsl", {-0.5f, 0.0f, 0.0f}), -0.4f, 1e-5f);
+    EXPECT_NEAR(valueAt("73_st_golfed_macro_march.glsl", {0.0f, 2.0f, 0.0f}), std::sqrt(4.25f) - 0.4f, 1e-5f);
+    EXPECT_NEAR(valueAt("73_st_golfed_macro_march.glsl", {3.0f, -0.5f, 0.0f}), 0.5f, 1e-5f);
+    // 74's distance comes from a loop nested in the march: a smooth minimum of the floor and balls.
+    auto blobs = [](glm::vec3 p) {
+        float s = p.y + 1.5f;
+        for (int j = 0; j < 3; ++j) {
+            const float b = glm::length(p - glm::vec3(float(j) * 0.8f - 0.8f, 0.0f, 0.0f)) - 0.35f;
+            const float h = glm::clamp(0.5f + 0.5f * (b - s) / 0.25f, 0.0f, 1.0f);
+            s = glm::mix(b, s, h) - 0.25f * h * (1.0f - h);
+        }
+        return s;
+    };
+    for (const glm::vec3 p : {glm::vec3(-0.8f, 0.0f, 0.0f), glm::vec3(0.0f, 1.5f, 0.0f), glm::vec3(0.4f, -0.9f, 0.3f)})
+        EXPECT_NEAR(valueAt("74_st_golfed_blob_cube.glsl", p), blobs(p), 1e-5f);
+    EXPECT_NEAR(valueAt("74_st_golfed_blob_cube.glsl", {-0.8f, 0.0f, 0.0f}), -0.35f, 1e-5f);
     const shaders::PreparedSdf backwards = prepare(kFolder / "70_st_inside_positive_march.glsl");
     EXPECT_NE(backwards.entryReason.find("the step z -= d)"), std::string::npos) << backwards.entryReason;
 
@@ -526,6 +544,40 @@ TEST_F(InlineFields, TheLoopBodyRunOnceIsTheField) {
     EXPECT_NE(firstError(conditional).find("writes its field inline, but the statement that advances 't'"), std::string::npos)
         << firstError(conditional);
     fs::remove_all(folder);
+}
+
+// Shadertoy's cube maps (issue 47): a channel read with a direction is declared samplerCube, the
+// others stay sampler2D, and the author's picture reads a real cube texture (the noise texels on
+// each face: an unbound or wrongly bound cube map reads black).
+class CubeChannels : public sdfwb::testing::GlTest {};
+
+TEST_F(CubeChannels, AreDeclaredByUseAndBoundAsCubeMaps) {
+    EXPECT_EQ(prepare(kFolder / "72_st_cubemap_reflection.glsl").compat.cubeChannels, std::vector<std::string>{"iChannel0"});
+    EXPECT_EQ(prepare(kFolder / "74_st_golfed_blob_cube.glsl").compat.cubeChannels, std::vector<std::string>{"iChannel0"});
+    EXPECT_TRUE(prepare(kFolder / "35_st_channel_bumps.glsl").compat.cubeChannels.empty());
+    EXPECT_TRUE(prepare(kFolder / "59_st_blurry_reflection_bias.glsl").compat.cubeChannels.empty());
+
+    shaders::PreparedSdf sdf = prepare(kFolder / "72_st_cubemap_reflection.glsl");
+    ASSERT_TRUE(sdf.ok()) << firstError(sdf);
+    renderer::ShadertoyPicture picture;
+    auto diagnostics = picture.setSdf(sdf);
+    ASSERT_FALSE(shaders::hasErrors(diagnostics)) << shaders::formatDiagnostic(diagnostics.front());
+    renderer::OffscreenRenderer offscreen;
+    const int width = 96, height = 54;
+    const renderer::Image image = offscreen.renderPicture(picture, width, height, renderer::ShadertoyInputs{});
+    picture.releaseGl();
+    // The corner (sky: the cube map's texels, gamma 0.4545) is noise of mean ~0.5^0.4545 = 0.73;
+    // neighbouring pixels differ.
+    double sum = 0.0, steps = 0.0;
+    int pixels = 0;
+    for (int y = 0; y < 12; ++y)
+        for (int x = 0; x + 1 < 24; ++x, ++pixels)
+            for (int c = 0; c < 3; ++c) {
+                sum += image.pixel(x, y)[c] / 255.0;
+                steps += std::abs(int(image.pixel(x + 1, y)[c]) - int(image.pixel(x, y)[c])) / 255.0;
+            }
+    EXPECT_GT(sum / (3.0 * pixels), 0.5) << "the sky reads the cube map";
+    EXPECT_GT(steps / (3.0 * pixels), 0.02) << "the cube map holds the noise texels";
 }
 
 TEST(ForeignCorpus, HasWholeShadertoyShaders) {

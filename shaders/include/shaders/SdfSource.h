@@ -61,6 +61,9 @@ struct CompatNeeds {
     // none, so Shadertoy code uses the names freely; glslang refuses a definition with another
     // return type): the composer renames them in the file's code (sdfwb_noise2).
     std::vector<std::string> renamed;
+    // Channels the code reads with a direction (`texture(iChannel0, rd)`): Shadertoy's cube maps,
+    // declared samplerCube (chosen by glslang in prepareSdf: the declaration that compiles).
+    std::vector<std::string> cubeChannels;
     bool any() const { return !symbols.empty(); }
     bool usesTimeSymbol() const;       // g3d_SceneTime or Shadertoy's iTime
     bool usesShadertoyChannel() const; // iChannel0..3
