@@ -732,14 +732,19 @@ std::vector<float> MeshQuery::signLattice(int level, unsigned threads) const {
     const glm::vec3 lo(out[0], out[1], out[2]);
     const float stepF = out[3];
     const std::size_t points = latticePoints(level);
-    out.resize(8 + points);
+    const bool open = !m_boundary.empty();
+    out[6] = open ? 1.0f : 0.0f;
+    out.resize(8 + (open ? 2 : 1) * points);
+    const double reach = double(stepF) * std::sqrt(3.0) * 0.5 * (1.0 + 1e-6); // the half diagonal, and float slack
     std::atomic<std::size_t> next{0};
     auto work = [&] {
         for (std::size_t i; (i = next.fetch_add(256)) < points;)
             for (std::size_t j = i; j < std::min(points, i + 256); ++j) {
                 const std::size_t x = j % std::size_t(side), y = (j / std::size_t(side)) % std::size_t(side),
                                   z = j / (std::size_t(side) * std::size_t(side));
-                out[8 + j] = float(winding(dvec3(lo + glm::vec3(float(x), float(y), float(z)) * stepF)));
+                const dvec3 q(lo + glm::vec3(float(x), float(y), float(z)) * stepF);
+                out[8 + j] = float(winding(q));
+                if (open) out[8 + points + j] = roundedUp(boundarySlope(q, reach));
             }
     };
     std::vector<std::thread> pool;

@@ -398,10 +398,10 @@ Expected<std::uint32_t> SampleCompute::Impl::dispatch(const SampleUniforms& unif
         glGenBuffers(1, &id);
         badRows = GlBuffer(id);
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
-        glBufferData(GL_SHADER_STORAGE_BUFFER, 16, nullptr, GL_DYNAMIC_READ);
+        glBufferData(GL_SHADER_STORAGE_BUFFER, 32, nullptr, GL_DYNAMIC_READ);
     }
-    const std::uint32_t zero[4] = {0, 0, 0, 0};
-    const GLsizeiptr countBytes = countWalks ? 16 : 4;
+    const std::uint32_t zero[6] = {0, 0, 0, 0, 0, 0};
+    const GLsizeiptr countBytes = countWalks ? 24 : 4;
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, badRows.id());
     glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, countBytes, zero);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingBadRows, badRows.id());
@@ -425,7 +425,7 @@ Expected<std::uint32_t> SampleCompute::Impl::dispatch(const SampleUniforms& unif
     glDispatchCompute((count + 63u) / 64u, 1, 1);
     kernelTimer.end();
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
-    std::uint32_t counts[4] = {0, 0, 0, 0};
+    std::uint32_t counts[6] = {0, 0, 0, 0, 0, 0};
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, badRows.id());
     glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, countBytes, counts); // waits for the dispatch
     const std::uint32_t bad = counts[0];
@@ -436,6 +436,8 @@ Expected<std::uint32_t> SampleCompute::Impl::dispatch(const SampleUniforms& unif
         counters.nearestNodes += counts[1];
         counters.windingNodes += counts[2];
         counters.cachedSigns += counts[3];
+        counters.segmentNodes += counts[4];
+        counters.crossedSigns += counts[5];
     }
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     glUseProgram(0);

@@ -22,10 +22,13 @@ layout(std430, binding = SDFWB_MESH_PSEUDONORMALS_BINDING) readonly buffer sdfwb
 #endif
 #ifdef SDFWB_MESH_COUNT
 // The invocation's walk counts (benchmarks; sample.comp adds them up): nodes whose children's boxes
-// a nearest walk tested, nodes a winding walk opened or took as a dipole, signs the lattice gave.
+// a nearest walk tested, nodes a winding walk opened or took as a dipole, signs the lattice gave,
+// and the crossing sign's segment nodes and signs.
 uint sdfwb_meshNearestCount = 0u;
 uint sdfwb_meshWindingCount = 0u;
 uint sdfwb_meshLatticeCount = 0u;
+uint sdfwb_meshSegmentCount = 0u; // nodes the crossing sign's segment walks tested
+uint sdfwb_meshCrossedCount = 0u; // signs the crossing sign gave
 #define SDFWB_MESH_COUNTS(counter) ++counter
 #else
 #define SDFWB_MESH_COUNTS(counter)
@@ -391,6 +394,87 @@ float sdfwb_meshLatticeInside(vec3 p, float d) {
     float w = sdfwb_meshNodes[SDFWB_MESH_SIGNS + i / 4u][i % 4u];
     return abs(w - 0.5) >= change + 0.25 ? (w > 0.5 ? 1.0 : 0.0) : -1.0;
 }
+
+// The oriented crossings of the segment q -> p with the mesh in `net` (w(p) - w(q) on the surface's
+// account: -1 out through a triangle's front, +1 in through its back); false when a crossing lies
+// too near a triangle's edge or corner, or an end too near its plane, to be counted with certainty
+// in float (MeshQuery::segmentCrossings with float tolerances), or the walk was cut.
+bool sdfwb_meshSegmentCrossings(vec3 q, vec3 p, out int net) {
+    net = 0;
+    vec3 direction = p - q;
+    vec3 inverse = 1.0 / direction;
+    float scale = max(max(abs(q.x), abs(q.y)), max(abs(q.z), 1.0));
+    float slack = 1e-5 * scale;     // boxes widened by more than the float rounding of the ends
+    float tolerance = 1e-6 * scale; // an end this near a triangle's plane is on it
+    const float edge = 1e-4;        // a crossing this near an edge (barycentric) is on it
+    uint stack[2 * SDFWB_MESH_STACK];
+    int top = 0;
+    stack[top++] = 0u;
+    while (top > 0) {
+        uint n = stack[--top];
+        SDFWB_MESH_COUNTS(sdfwb_meshSegmentCount);
+        vec4 lo = sdfwb_meshNodes[SDFWB_MESH_NODE * n];
+        vec4 hi = sdfwb_meshNodes[SDFWB_MESH_NODE * n + 1u];
+        vec3 t0 = (lo.xyz - slack - q) * inverse;
+        vec3 t1 = (hi.xyz + slack - q) * inverse;
+        vec3 tmin = min(t0, t1);
+        vec3 tmax = max(t0, t1);
+        if (max(max(tmin.x, tmin.y), max(tmin.z, 0.0)) > min(min(tmax.x, tmax.y), min(tmax.z, 1.0)) * 1.00001 + 1e-5) continue;
+        uint first = floatBitsToUint(lo.w);
+        uint count = floatBitsToUint(hi.w);
+        if (count == 0u) {
+            stack[top++] = first;
+            stack[top++] = first + 1u;
+            continue;
+        }
+        for (uint k = 0u; k < SDFWB_MESH_LEAF; ++k) {
+            if (k >= count) break;
+            uint s = first + k;
+            vec3 a = sdfwb_meshTriangles[3u * s].xyz;
+            vec3 b = sdfwb_meshTriangles[3u * s + 1u].xyz;
+            vec3 c = sdfwb_meshTriangles[3u * s + 2u].xyz;
+            vec3 normal = cross(b - a, c - a);
+            float area2 = dot(normal, normal);
+            if (!(area2 > 0.0)) continue; // no area: its solid angle is zero everywhere
+            float unit = inversesqrt(area2);
+            float sq = dot(q - a, normal) * unit;
+            float sp = dot(p - a, normal) * unit;
+            if ((sq > tolerance && sp > tolerance) || (sq < -tolerance && sp < -tolerance)) continue;
+            if (abs(sq) <= tolerance || abs(sp) <= tolerance) return false;
+            vec3 x = q + direction * (sq / (sq - sp));
+            float la = dot(cross(c - b, x - b), normal) / area2;
+            float lb = dot(cross(a - c, x - c), normal) / area2;
+            float lc = dot(cross(b - a, x - a), normal) / area2;
+            if (la < -edge || lb < -edge || lc < -edge) continue; // beside the triangle
+            if (la <= edge || lb <= edge || lc <= edge) return false;
+            net += dot(direction, normal) > 0.0 ? -1 : 1;
+        }
+    }
+    return top == 0;
+}
+
+// The crossing sign (MeshQuery::crossedWindingInside), for rows too near the surface for a lattice
+// point to lie in their empty ball: from the nearest lattice point q, w(p) = w(q) + the segment's
+// oriented crossings, give or take the open boundary's field along it (its slope bound at q times
+// |p - q|; none on a closed, oriented mesh). 1 inside, 0 outside, -1 when that cannot decide.
+float sdfwb_meshCrossedInside(vec3 p) {
+    vec4 origin = sdfwb_meshNodes[SDFWB_MESH_SIGNS];
+    vec4 header = sdfwb_meshNodes[SDFWB_MESH_SIGNS + 1u];
+    float side = header.x;
+    if (side < 2.0) return -1.0;
+    vec3 at = floor((p - origin.xyz) / origin.w + 0.5);
+    if (any(lessThan(at, vec3(0.0))) || any(greaterThan(at, vec3(side - 1.0)))) return -1.0; // outside the lattice
+    vec3 q = origin.xyz + at * origin.w;
+    uint n = uint(side);
+    uint i = (uint(at.z) * n + uint(at.y)) * n + uint(at.x) + 8u;
+    float slope = header.z > 0.5 ? sdfwb_meshNodes[SDFWB_MESH_SIGNS + (i + n * n * n) / 4u][(i + n * n * n) % 4u] : 0.0;
+    float change = slope * length(p - q);
+    if (!(change < 0.25)) return -1.0;
+    int net;
+    if (!sdfwb_meshSegmentCrossings(q, p, net)) return -1.0;
+    float estimate = sdfwb_meshNodes[SDFWB_MESH_SIGNS + i / 4u][i % 4u] + float(net);
+    return abs(estimate - 0.5) >= change + 0.25 ? (estimate > 0.5 ? 1.0 : 0.0) : -1.0;
+}
 #endif
 
 // 1 inside, 0 outside, NaN when a walk was cut (see sdfwb_meshCut).
@@ -412,10 +496,16 @@ float sdfwb_meshInside(vec3 p, uint triangle, int feature, vec3 closest) {
     return dot(p - closest, sdfwb_meshPseudonormals[7u * triangle + uint(slot[feature])].xyz) < 0.0 ? 1.0 : 0.0;
 #else
 #if defined(SDFWB_MESH_SIGNS)
-    float cached = sdfwb_meshLatticeInside(p, length(p - closest));
+    float d = length(p - closest);
+    float cached = sdfwb_meshLatticeInside(p, d);
     if (cached >= 0.0) {
         SDFWB_MESH_COUNTS(sdfwb_meshLatticeCount);
         return cached;
+    }
+    float crossed = d > 0.0 ? sdfwb_meshCrossedInside(p) : -1.0;
+    if (crossed >= 0.0) {
+        SDFWB_MESH_COUNTS(sdfwb_meshCrossedCount);
+        return crossed;
     }
 #endif
     float winding = sdfwb_meshWinding(p);

@@ -13,7 +13,7 @@ layout(std430, binding = SDFWB_BINDING_GRADIENTS) writeonly buffer sdfwb_Gradien
 // The bad rows, and (SDFWB_MESH_COUNT) the mesh walks' counts (mesh_field.glsl) of the chunk.
 layout(std430, binding = SDFWB_BINDING_BAD_ROWS) buffer sdfwb_BadRowCount {
     uint sdfwb_badRows;
-    uint sdfwb_meshCounts[3];
+    uint sdfwb_meshCounts[5];
 };
 
 uniform uint sdfwb_chunkCount;  // samples in this chunk
@@ -67,6 +67,8 @@ void main() {
     if (sdfwb_meshNearestCount > 0u) atomicAdd(sdfwb_meshCounts[0], sdfwb_meshNearestCount);
     if (sdfwb_meshWindingCount > 0u) atomicAdd(sdfwb_meshCounts[1], sdfwb_meshWindingCount);
     if (sdfwb_meshLatticeCount > 0u) atomicAdd(sdfwb_meshCounts[2], sdfwb_meshLatticeCount);
+    if (sdfwb_meshSegmentCount > 0u) atomicAdd(sdfwb_meshCounts[3], sdfwb_meshSegmentCount);
+    if (sdfwb_meshCrossedCount > 0u) atomicAdd(sdfwb_meshCounts[4], sdfwb_meshCrossedCount);
 #endif
     if (sdfwb_interleaved) {
         uint row = 7u * local;

@@ -162,7 +162,58 @@ TEST_F(MeshSdfTest, TheGlslFieldTakesFarSignsFromTheLatticeAndKeepsEverySign) {
         EXPECT_GE(counters.nearestNodes, n) << "every row walks the nearest hierarchy";
         EXPECT_GT(counters.cachedSigns, open ? n / 10 : n * 8 / 10) << (open ? "open" : "closed");
         EXPECT_LT(counters.cachedSigns, n) << "rows near the surface still walk";
-        EXPECT_GT(counters.windingNodes, 0u);
+        EXPECT_GT(counters.windingNodes + counters.segmentNodes, 0u) << "rows the lattice cannot sign walk";
+    }
+    unsetenv("SDFWB_MESH_COUNT");
+}
+
+// Rows too near the surface for the lattice ball (near samples) take the crossing sign: the nearest
+// lattice point's winding number plus the oriented crossings of the segment to the row (a short
+// segment walk instead of a winding walk), bounded by the open boundary's slope there. The same
+// signs as the CPU's exact reference, most near rows on a closed mesh served that way, and far
+// fewer winding nodes a row; on an open mesh only where the boundary's slope allows.
+TEST_F(MeshSdfTest, TheGlslFieldTakesNearSignsFromSegmentCrossingsAndKeepsEverySign) {
+    const meshfield::TriangleMesh torus = testing::torusMesh(0.6f, 0.25f, 48, 16);
+    EngineScope scope("gpu");
+    setenv("SDFWB_MESH_COUNT", "1", 1);
+    for (bool open : {false, true}) {
+        const meshfield::TriangleMesh mesh = open ? testing::damaged(torus, testing::Damage::RemoveFivePercent) : torus;
+        auto field = meshfield::makeMeshField(mesh, "torus.obj", {});
+        ASSERT_TRUE(field.hasValue());
+        // Points near the surface: the smooth torus's points (within 0.007 of the mesh's facets)
+        // moved by up to 0.004 along each axis.
+        std::vector<float> points;
+        std::uint32_t state = 7;
+        auto uniform = [&state] {
+            state = state * 1664525u + 1013904223u;
+            return float(state >> 8) / float(1u << 24);
+        };
+        for (int i = 0; i < 6000; ++i) {
+            const float u = 6.2831853f * uniform(), v = 6.2831853f * uniform();
+            const glm::vec3 on((0.6f + 0.25f * std::cos(v)) * std::cos(u), (0.6f + 0.25f * std::cos(v)) * std::sin(u),
+                               0.25f * std::sin(v));
+            const glm::vec3 off = glm::vec3(uniform(), uniform(), uniform()) * 0.008f - 0.004f;
+            for (int a = 0; a < 3; ++a) points.push_back(on[a] + off[a]);
+        }
+        const std::size_t n = points.size() / 3;
+        meshfield::QueryCounters counters;
+        const std::vector<float> values = evaluate(shaders::prepareMeshSdf(*field, "torus.obj"), points, &counters);
+        int wrongSign = 0, compared = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const dvec3 p(points[3 * i], points[3 * i + 1], points[3 * i + 2]);
+            if ((*field)->distance(p) <= 1e-5) continue;
+            ++compared;
+            if ((values[i] < 0.0f) != (*field)->inside(p)) ++wrongSign;
+        }
+        std::printf("%s torus, near rows: %llu of %zu signs by crossings (%llu from the lattice), %.1f segment nodes and %.1f winding nodes a row\n",
+                    open ? "open" : "closed", (unsigned long long)counters.crossedSigns, n, (unsigned long long)counters.cachedSigns,
+                    double(counters.segmentNodes) / double(n), double(counters.windingNodes) / double(n));
+        EXPECT_GT(compared, int(n) * 9 / 10);
+        EXPECT_EQ(wrongSign, 0) << (open ? "open" : "closed");
+        // The damaged torus has holes all over: the boundary's slope bound allows few segments.
+        EXPECT_GT(counters.crossedSigns, open ? n / 20 : n * 9 / 10) << (open ? "open" : "closed");
+        EXPECT_GT(counters.segmentNodes, counters.crossedSigns) << "each crossing sign walks its segment";
+        if (!open) EXPECT_LT(double(counters.windingNodes) / double(n), 5.0) << "few near rows walk the winding numbers";
     }
     unsetenv("SDFWB_MESH_COUNT");
 }
