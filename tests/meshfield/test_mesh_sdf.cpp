@@ -205,9 +205,11 @@ TEST_F(MeshSdfTest, TheGlslFieldTakesNearSignsFromSegmentCrossingsAndKeepsEveryS
             ++compared;
             if ((values[i] < 0.0f) != (*field)->inside(p)) ++wrongSign;
         }
-        std::printf("%s torus, near rows: %llu of %zu signs by crossings (%llu from the lattice), %.1f segment nodes and %.1f winding nodes a row\n",
-                    open ? "open" : "closed", (unsigned long long)counters.crossedSigns, n, (unsigned long long)counters.cachedSigns,
-                    double(counters.segmentNodes) / double(n), double(counters.windingNodes) / double(n));
+        std::printf("%s torus, near rows: %llu of %zu signs by crossings (%llu from the lattice), %.1f segment nodes and %.1f "
+                    "winding nodes a row\n",
+                    open ? "open" : "closed", (unsigned long long)counters.crossedSigns, n,
+                    (unsigned long long)counters.cachedSigns, double(counters.segmentNodes) / double(n),
+                    double(counters.windingNodes) / double(n));
         EXPECT_GT(compared, int(n) * 9 / 10);
         EXPECT_EQ(wrongSign, 0) << (open ? "open" : "closed");
         // The damaged torus has holes all over: the boundary's slope bound allows few segments.
