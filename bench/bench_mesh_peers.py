@@ -9,21 +9,22 @@ Ours: `sdfwb.mesh(sdf, resolution=R)`, the whole call timed (GL context, the bou
 projection onto the surface), and `sdfwb.mesh(sdf, resolution=R, refine=K)` for the --refined R:K pairs (each triangle
 cut into four K times, the new vertices put on the surface), whose rows count for the equal-error comparison.
 
-Peers, each given the same field on the same (R+1)^3 lattice over [-1,1]^3:
+Peers, each given the same field on the same (R+1)^3 lattice over [-1,1]^3, written for the peer (never sdfwb's):
 - scikit-image `measure.marching_cubes` (Lewiner; single-threaded, its kernel holds the GIL);
 - VTK `vtkFlyingEdges3D` (threaded through vtkSMPTools; every thread count from 1 to nproc is tried and the
   fastest kept), normals, gradients and scalars off;
 - OpenVDB `volumeToMesh` through pyopenvdb's `FloatGrid.convertToPolygons(isovalue=0, adaptivity=0)` (threaded
-  by TBB), the grid filled by `copyFromArray`, whose time counts.
-- VTK `vtkFlyingEdges3D` from C++ (bench/device/flying_edges_peer.cpp, built by bench/device/build_peer.sh), for the
-  SDFs written in C++ there: the field inline C++ over z-slabs, every thread count tried for the field and for Flying
-  Edges, the fastest of each kept. This is the reference a C++ user would write; it is far faster than any NumPy field.
-The peers' field: the fastest of a NumPy float32 lattice (whole, and in z-slabs over a ThreadPool of 1..nproc
-threads) where the SDF is written below in NumPy, sdfwb's own `grid` sampler (GPU; it also writes gradients) and
-`sdfwb.evaluate(points, gradient=False)` on the lattice's points (made once, untimed) for every SDF; its time
-counts for the peer. Every time is the median of --repeats runs after a warm-up. Every mesh is graded by
-`sdfwb.evaluate_mesh` against the exact field (100,000 points each way, tau as printed), with the edge measures
-(points near creases). Nothing is typed by hand into the generated Markdown.
+  by TBB), the grid filled by `copyFromArray`, whose time counts; and the same on a narrow band (3 voxels a side
+  active, the rest inactive tiles), as OpenVDB keeps level sets;
+- VTK `vtkFlyingEdges3D` from C++ (bench/device/flying_edges_peer.cpp, built strict and with -ffast-math by
+  bench/device/build_peer.sh, -march=native; the faster build kept, both printed): the field inline C++ over
+  z-slabs, every thread count tried for the field and for Flying Edges, the fastest of each kept; and the same
+  given sdfwb's post-processing (two Newton steps onto the surface; refinement at --peer-refined R:K).
+The Python peers' field: bench/peer_fields.py (NumPy float32, checked against sdfwb by bench/check_peer_fields.py),
+the fastest of the whole lattice and z-slabs over a ThreadPool of 1..nproc threads; its time counts for the peer.
+Every time is the median of --repeats runs after a warm-up. Every mesh is graded by `sdfwb.evaluate_mesh` against
+the exact field (100,000 points each way, tau as printed), with the edge measures (points near creases). One goal per
+table is fixed in GOALS before the run. Nothing is typed by hand into the generated Markdown.
 """
 import atexit
 import concurrent.futures
@@ -54,6 +55,7 @@ from vtk.util import numpy_support
 
 import sdfwb
 
+import peer_fields  # bench/peer_fields.py: the peers' own fields
 from machine import cpu_model  # bench/machine.py
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -87,95 +89,51 @@ CPUS = os.cpu_count()
 THREADS = list(range(1, CPUS + 1))
 TOP = max(PEER_R)
 FE_CPP = "VTK Flying Edges, C++ field"
+# The same mesher given sdfwb's post-processing: two Newton steps onto the surface with the exact field (C++), and
+# refinement (each triangle cut into four K times, the new vertices projected) at PEER_REFINED.
+FE_PROJECTED = "Flying Edges C++ + projection"
+NEWTON_STEPS = 2  # sdfwb's projection: two Newton steps along the gradient (meshing/src/DualContouring.cpp)
+FE_REFINED = "Flying Edges C++ + projection, refined"
+PEER_REFINED = [tuple(int(v) for v in pair.split(":")) for pair in
+                option("--peer-refined", "32:2,64:1,64:2,128:1").split(",") if pair]
+VDB_BAND = "OpenVDB volumeToMesh, narrow band"
 CPP_PEER = option("--cpp-peer", os.path.join(ROOT, "build", "bench", "flying_edges_peer"))
-# The shapes whose field the C++ peer has (bench/device/flying_edges_peer.cpp), by label.
-CPP_FIELDS = {"Sphere": "sphere", "Torus": "torus", "Box": "box", "Rotated box": "rotated-box",
-              "Rotated cylinder": "rotated-cylinder", "Anvil": "anvil", "Open shell with a 0.03 wall": "shell"}
+# The C++ peer built strict (IEEE) and with -ffast-math, both -march=native: the faster is kept, both printed.
+CPP_BUILDS = {"strict": CPP_PEER, "fast-math": CPP_PEER + "-fast"}
+
+# One goal per table, fixed before the run (the generated page prints each and whether this run met it).
+GOALS = {
+    "equal error": "in every class the median equal-error ratio is at least 1: sdfwb reaches the best peer's "
+                   "256^3 error no slower than the fastest peer run that reaches it, post-processed peers included",
+    "equal resolution": "in every class sdfwb's median 256^3 whole call takes at most Flying Edges' time (ratio <= 1)",
+    "scale": "at 512^3 and 1024^3 sdfwb's whole call is faster than every peer's, warm on both sides",
+    "scale equal error": "at 512^3 sdfwb reaches the best peer's error faster than the fastest peer, on every shape",
+}
 
 
-# NumPy forms of the SDFs that can be written in NumPy (x, y, z broadcast; x along the last axis).
-def np_sphere(x, y, z):
-    return np.sqrt(x * x + y * y + z * z) - np.float32(0.8)
-
-
-def np_torus(x, y, z):  # the dataset's Torus: tilted 30 degrees about x
-    c, s = np.float32(0.8660254), np.float32(0.5)
-    y, z = c * y + s * z, -s * y + c * z
-    q = np.sqrt(x * x + z * z) - np.float32(0.65)
-    return np.sqrt(q * q + y * y) - np.float32(0.25)
-
-
-def np_box_of(x, y, z, hx, hy, hz):
-    qx, qy, qz = np.abs(x) - np.float32(hx), np.abs(y) - np.float32(hy), np.abs(z) - np.float32(hz)
-    outside = np.sqrt(np.maximum(qx, 0) ** 2 + np.maximum(qy, 0) ** 2 + np.maximum(qz, 0) ** 2)
-    return outside + np.minimum(np.maximum(qx, np.maximum(qy, qz)), 0)
-
-
-def np_box(x, y, z):
-    return np_box_of(x, y, z, 0.8, 0.5, 0.6)
-
-
-# A rotation by an irrational angle (0.3 rad about (1, 2, 3)), rows of R^T for the fields below.
-def rotation(axis, angle):
-    k = np.asarray(axis, float) / np.linalg.norm(axis)
-    K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
-    return np.eye(3) + np.sin(angle) * K + (1 - np.cos(angle)) * K @ K
-
-
-TILT = rotation((1.0, 2.0, 3.0), 0.3)
-T = TILT.T.astype(np.float32)  # the field is the upright shape's at R^T p
-
-
-def untilt(x, y, z):
-    return (T[0, 0] * x + T[0, 1] * y + T[0, 2] * z, T[1, 0] * x + T[1, 1] * y + T[1, 2] * z,
-            T[2, 0] * x + T[2, 1] * y + T[2, 2] * z)
-
-
-def np_rotated_box(x, y, z):
-    return np_box_of(*untilt(x, y, z), 0.55, 0.4, 0.3)
-
-
-def np_rotated_cylinder(x, y, z):  # a capped cylinder along the tilted y axis: radius 0.45, half height 0.6
-    u, v, w = untilt(x, y, z)
-    dx, dy = np.sqrt(u * u + w * w) - np.float32(0.45), np.abs(v) - np.float32(0.6)
-    return np.minimum(np.maximum(dx, dy), 0) + np.sqrt(np.maximum(dx, 0) ** 2 + np.maximum(dy, 0) ** 2)
-
-
-def np_shell(x, y, z):  # a hollow ball, wall 0.03 thick, cut open by the plane y = 0.5
-    ball = np.abs(np.sqrt(x * x + y * y + z * z) - np.float32(0.7)) - np.float32(0.015)
-    return np.maximum(ball, y - np.float32(0.5))
-
-
-def glsl_matrix():
-    return ", ".join(f"{TILT.T[row, col]:.9e}" for col in range(3) for row in range(3))  # mat3 takes columns
-
-
-ROTATED_BOX = (f"float sdf(vec3 p) {{ vec3 q = abs(mat3({glsl_matrix()}) * p) - vec3(0.55, 0.4, 0.3); "
-               "return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0); }")
-ROTATED_CYLINDER = (f"float sdf(vec3 p) {{ vec3 q = mat3({glsl_matrix()}) * p; "
-                    "vec2 d = vec2(length(q.xz) - 0.45, abs(q.y) - 0.6); "
-                    "return min(max(d.x, d.y), 0.0) + length(max(d, 0.0)); }")
-SHELL = "float sdf(vec3 p) { return max(abs(length(p) - 0.7) - 0.015, p.y - 0.5); }"
-FOREIGN = os.path.join(ROOT, "tests", "foreign")
-
-# (label, class, sdf as sdfwb takes it, NumPy field or None)
-SHAPES = [
-    ("Sphere", "smooth", "sphere", np_sphere),
-    ("Torus", "smooth", "torus", np_torus),
-    ("Capsule", "smooth", "capsule", None),
-    ("Box", "box-like", "box", np_box),
-    ("Rotated box", "box-like", ROTATED_BOX, np_rotated_box),
-    ("Hexagonal prism", "box-like", "hexagonalprism", None),
-    ("Rotated cylinder", "creased", ROTATED_CYLINDER, np_rotated_cylinder),
-    ("Anvil", "creased", "anvil", None),
-    ("hg_sdf arcade with chamfers (foreign)", "creased", os.path.join(FOREIGN, "42_hg_mercury_arcade.glsl"), None),
-    ("IQ primitives (foreign)", "creased", os.path.join(FOREIGN, "01_iq_primitives.glsl"), None),
-    ("jw CSG (foreign)", "creased", os.path.join(FOREIGN, "43_jw_csg_phong.glsl"), None),
-    ("Open shell with a 0.03 wall", "thin-walled", SHELL, np_shell),
-    ("Mug", "thin-walled", "mug", None),
-    ("Menger sponge", "fractal", "mengersponge", None),
-    ("Sierpinski tetrahedron", "fractal", "sierpinskitetrahedron", None),
+# (label, class, the peers' name for it: bench/peer_fields.py's field and the C++ peer's SHAPE)
+SHAPE_LIST = [
+    ("Sphere", "smooth", "sphere"),
+    ("Torus", "smooth", "torus"),
+    ("Capsule", "smooth", "capsule"),
+    ("Box", "box-like", "box"),
+    ("Rotated box", "box-like", "rotated-box"),
+    ("Hexagonal prism", "box-like", "hexagonalprism"),
+    ("Rotated cylinder", "creased", "rotated-cylinder"),
+    ("Anvil", "creased", "anvil"),
+    ("hg_sdf arcade with chamfers (foreign)", "creased", "hg-arcade"),
+    ("IQ primitives (foreign)", "creased", "iq-primitives"),
+    ("jw CSG (foreign)", "creased", "jw-csg"),
+    ("Open shell with a 0.03 wall", "thin-walled", "shell"),
+    ("Mug", "thin-walled", "mug"),
+    ("Menger sponge", "fractal", "mengersponge"),
+    ("Sierpinski tetrahedron", "fractal", "sierpinskitetrahedron"),
 ]
+# (label, class, sdf as sdfwb takes it, the peers' NumPy field)
+SHAPES = [(label, cls, peer_fields.SDFWB_SOURCES[name], peer_fields.FIELDS[name]) for label, cls, name in SHAPE_LIST]
+# The C++ peer's SHAPE for each label (bench/device/flying_edges_peer.cpp has every shape).
+CPP_FIELDS = {label: name for label, _, name in SHAPE_LIST}
+ROTATED_BOX, ROTATED_CYLINDER = peer_fields.ROTATED_BOX, peer_fields.ROTATED_CYLINDER
 if "--write-glsl" in args:  # the tilted shapes as files, for bench/device/bundle.sh
     for name, text in (("rotated_box", ROTATED_BOX), ("rotated_cylinder", ROTATED_CYLINDER)):
         with open(os.path.join(option("--write-glsl", "."), name + ".glsl"), "w") as file:
@@ -221,28 +179,12 @@ def lattice_numpy(field, R, pool=None, slab=32):
     return values
 
 
-def lattice_sdfwb(sdf, R):
-    return sdfwb.sample(sdf, "grid", (R + 1) ** 3)["distance"].reshape((R + 1,) * 3)
-
-
-def lattice_points(R):
-    axis = np.linspace(-1.0, 1.0, R + 1, dtype=np.float32)
-    z, y, x = np.meshgrid(axis, axis, axis, indexing="ij")
-    return np.ascontiguousarray(np.stack([x.ravel(), y.ravel(), z.ravel()], axis=1))
-
-
-def lattice_evaluate(sdf, points, R):
-    return sdfwb.evaluate(sdf, points, gradient=False)["distance"].reshape((R + 1,) * 3)
-
-
-def field_forms(sdf, field, R, pools):
-    points = lattice_points(R)  # made once, outside the timing: the peer's best case
-    forms = [("sdfwb grid sampler (GPU)", lambda: lattice_sdfwb(sdf, R)),
-             ("sdfwb.evaluate(lattice points, gradient=False) (GPU)", lambda: lattice_evaluate(sdf, points, R))]
-    if field is not None:
-        forms.append(("NumPy whole lattice, 1 thread", lambda: lattice_numpy(field, R)))
-        for k in THREADS[1:]:
-            forms.append((f"NumPy z-slabs, ThreadPool of {k}", lambda k=k: lattice_numpy(field, R, pools[k])))
+def field_forms(field, R, pools):
+    """The peer's own field (bench/peer_fields.py, NumPy float32): the whole lattice on one thread, and z-slabs over a
+    ThreadPool of every thread count. No peer's field comes from sdfwb."""
+    forms = [("NumPy whole lattice, 1 thread", lambda: lattice_numpy(field, R))]
+    for k in THREADS[1:]:
+        forms.append((f"NumPy z-slabs, ThreadPool of {k}", lambda k=k: lattice_numpy(field, R, pools[k])))
     return forms
 
 
@@ -283,17 +225,35 @@ def openvdb_mesh(values, R):
     return (points - 1.0).astype(np.float32), faces
 
 
-PEERS = {"scikit-image MC": skimage_mc, "VTK Flying Edges": flying_edges, "OpenVDB volumeToMesh": openvdb_mesh}
+def openvdb_band_mesh(values, R):
+    """OpenVDB as its users keep a level set: a narrow band of 3 voxels active, the rest inactive tiles (outside the
+    background, inside its negative by signedFloodFill), so volumeToMesh visits the band only. The lattice is still
+    filled densely by the peer's field."""
+    h = 2.0 / R
+    band = np.float32(3.0 * h)
+    banded = np.where(np.abs(values) < band, values, band)
+    grid = pyopenvdb.FloatGrid(background=float(band))
+    grid.copyFromArray(np.ascontiguousarray(banded.transpose(2, 1, 0)), ijk=(0, 0, 0), tolerance=0.0)
+    grid.signedFloodFill()
+    grid.transform = pyopenvdb.createLinearTransform(voxelSize=h)
+    points, triangles, quads = grid.convertToPolygons(isovalue=0.0, adaptivity=0.0)
+    faces = np.concatenate([triangles.reshape(-1, 3), quads[:, [0, 1, 2]], quads[:, [0, 2, 3]]]) if len(quads) else triangles
+    return (points - 1.0).astype(np.float32), faces
 
 
-def cpp_flying_edges(label, R, mesh_path, threads=None):
-    """One run of the C++ peer (its field and Flying Edges each the fastest over the thread counts): its report, and
-    its peak resident memory in MB."""
-    process = subprocess.Popen([CPP_PEER, CPP_FIELDS[label], str(R), ",".join(map(str, threads or THREADS)), mesh_path],
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+PEERS = {"scikit-image MC": skimage_mc, "VTK Flying Edges": flying_edges, "OpenVDB volumeToMesh": openvdb_mesh,
+         VDB_BAND: openvdb_band_mesh}
+
+
+def cpp_flying_edges(label, R, mesh_path, threads=None, binary=CPP_PEER, project=0, refine=0):
+    """One run of the C++ peer (its field and Flying Edges each the fastest over the thread counts; `project` Newton
+    steps and `refine` levels after it): its report, and its peak resident memory in MB."""
+    extra = (["--project", str(project)] if project else []) + (["--refine", str(refine)] if refine else [])
+    process = subprocess.Popen([binary, CPP_FIELDS[label], str(R), ",".join(map(str, threads or THREADS)), mesh_path]
+                               + extra, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     out, err = process.communicate()
     if process.returncode != 0:
-        raise RuntimeError(f"{CPP_PEER} {CPP_FIELDS[label]} {R}: exit {process.returncode}: {err.strip()[-300:]}")
+        raise RuntimeError(f"{binary} {CPP_FIELDS[label]} {R}: exit {process.returncode}: {err.strip()[-300:]}")
     peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024.0  # the largest child so far
     return json.loads(out), peak
 
@@ -328,7 +288,9 @@ def child_run(tool, label, R, refine=0, graded=False):
 
     if tool == FE_CPP:
         path = os.path.join(folder, "m.ply")
-        report, peak = cpp_flying_edges(label, R, path)
+        binary = CPP_BUILDS[option("--child-build", "strict")]
+        cpp_flying_edges(label, 32, path, binary=binary)  # warm: the program and its libraries in the page cache
+        report, peak = cpp_flying_edges(label, R, path, binary=binary)
         e = sdfwb.evaluate_mesh(path, sdf, tau=TAU, occupancy_resolution=0) if graded else None
         print("CHILD " + json.dumps(dict(seconds=report["seconds"], field_seconds=report["field_seconds"],
                                          triangles=report["triangles"], peak_mb=peak,
@@ -341,15 +303,14 @@ def child_run(tool, label, R, refine=0, graded=False):
         vertices, faces = mesh["vertices"], mesh["faces"]
         field_seconds = None
     else:
-        if field is None:
-            points = lattice_points(R)
-            started = time.perf_counter()
-            values = lattice_evaluate(sdf, points, R)
-        else:
-            values = lattice_numpy(field, R)
-        field_seconds = time.perf_counter() - started
+        # Warm, as sdfwb is: the pool made, the field and the mesher run once at 32^3.
+        pool = concurrent.futures.ThreadPoolExecutor(CPUS)
         if tool == "VTK Flying Edges":
             vtk.vtkSMPTools.Initialize(CPUS)
+        PEERS[tool](lattice_numpy(field, 32, pool), 32)
+        started = time.perf_counter()
+        values = lattice_numpy(field, R, pool)
+        field_seconds = time.perf_counter() - started
         vertices, faces = PEERS[tool](values, R)
     seconds = time.perf_counter() - started
     # VmHWM: this process's own peak (ru_maxrss would carry the parent's over fork and exec).
@@ -365,8 +326,8 @@ if "--child" in args:
     sys.exit(0)
 
 CPP_SOURCE = os.path.join(ROOT, "bench", "device", "flying_edges_peer.cpp")
-if not os.path.exists(CPP_PEER) or os.path.getmtime(CPP_PEER) < os.path.getmtime(CPP_SOURCE):
-    subprocess.run(["bash", os.path.join(ROOT, "bench", "device", "build_peer.sh"), CPP_PEER], check=True)
+if any(not os.path.exists(b) or os.path.getmtime(b) < os.path.getmtime(CPP_SOURCE) for b in CPP_BUILDS.values()):
+    subprocess.run(["bash", os.path.join(ROOT, "bench", "device", "build_peer.sh"), CPP_PEER, "native"], check=True)
 renderer = gl_renderer()
 started = datetime.datetime.now(datetime.timezone.utc)
 config = [
@@ -382,16 +343,21 @@ config = [
     f"thread counts {', '.join(map(str, THREADS))} tried at each size, the fastest kept; normals, gradients, "
     "scalars off.",
     f"{FE_CPP}: VTK 9.1 `vtkFlyingEdges3D` called from C++ (`bench/device/flying_edges_peer.cpp`, g++ -O3 "
-    "-march=x86-64-v3, Debian's libvtk9.1), the field written inline in C++ and filled in z-slabs; thread counts "
-    f"{', '.join(map(str, THREADS))} tried for the field and for Flying Edges, the fastest of each kept; for "
-    f"{', '.join(CPP_FIELDS)}. Its time is the median of {REPEATS} runs of the program.",
+    "-march=native, Debian's libvtk9.1), the field written inline in C++ and filled in z-slabs; thread counts "
+    f"{', '.join(map(str, THREADS))} tried for the field and for Flying Edges, the fastest of each kept; built strict "
+    "(IEEE) and with -ffast-math, the faster kept for each run (both in \"The C++ peer's builds\"); every shape. Its time "
+    f"is the median of {REPEATS} runs of the program. {FE_PROJECTED}: the same, then {NEWTON_STEPS} Newton steps onto "
+    f"the surface with its C++ field (sdfwb's projection); {FE_REFINED}: then each triangle cut into four K times, the "
+    f"new vertices projected (sdfwb's refinement) at R:K = {', '.join(f'{r}:{k}' for r, k in PEER_REFINED)}.",
     f"OpenVDB {'.'.join(map(str, pyopenvdb.LIBRARY_VERSION))} `volumeToMesh` (pyopenvdb "
     "`FloatGrid.convertToPolygons(isovalue=0, adaptivity=0)`, TBB threads), the dense lattice copied in by "
-    "`copyFromArray` (timed with it); quads split into two triangles.",
-    f"The peers' field: the fastest of sdfwb's `grid` sampler (GPU; it writes gradients too), `sdfwb.evaluate(lattice "
-    f"points, gradient=False)` (GPU, the field alone; the points made once, untimed) and NumPy {np.__version__} float32 "
-    f"(whole lattice, or z-slabs over a ThreadPool of {', '.join(map(str, THREADS[1:]))} threads; for the SDFs "
-    "written in NumPy in the bench), timed and added to each peer's time: the whole call, as a user would run it.",
+    f"`copyFromArray` (timed with it); quads split into two triangles. {VDB_BAND}: the same with only a band of 3 "
+    "voxels each side of the surface active (the rest inactive tiles, signs by `signedFloodFill`), as OpenVDB keeps "
+    "a level set.",
+    f"The peers' field: written for the peer in NumPy {np.__version__} float32 (bench/peer_fields.py; checked against "
+    "sdfwb's by bench/check_peer_fields.py), the fastest of the whole lattice on 1 thread and z-slabs over a ThreadPool "
+    f"of {', '.join(map(str, THREADS[1:]))} threads, timed and added to each peer's time: the whole call, as a user "
+    "would run it. No peer's field comes from sdfwb.",
     f"Peers at R = {', '.join(map(str, PEER_R))}. Every time is the median of {REPEATS} runs after a warm-up. "
     f"Errors: `sdfwb.evaluate_mesh(mesh, sdf, tau={TAU})`, 100,000 points each way against the exact field; edge "
     "measures over the points within 0.02 of a crease (the field's normal turning by over 30 degrees).",
@@ -401,6 +367,34 @@ print("\n".join(config), flush=True)
 pools = {k: concurrent.futures.ThreadPoolExecutor(k) for k in THREADS}
 results = []  # dict(label, cls, tool, R, seconds, field_seconds, triangles, eval)
 field_choice = {}
+cpp_choice = {}  # (label, tool, R, refine): (the build kept, {build: median seconds})
+
+
+def cpp_row(label, cls, sdf, tool, R, folder, project=0, refine=0):
+    """The C++ peer, strict and fast-math builds each REPEATS times; the faster build's median run kept (its mesh
+    written again for grading), both builds' times recorded."""
+    path = os.path.join(folder, "cpp.ply")
+    medians = {}
+    for build, binary in CPP_BUILDS.items():
+        reports = [cpp_flying_edges(label, R, path, binary=binary, project=project, refine=refine)[0]
+                   for _ in range(REPEATS)]
+        medians[build] = sorted(reports, key=lambda r: r["seconds"])[len(reports) // 2]
+    build = min(medians, key=lambda b: medians[b]["seconds"])
+    report = medians[build]
+    cpp_flying_edges(label, R, path, binary=CPP_BUILDS[build], project=project, refine=refine)  # its mesh, untimed
+    cpp_choice[(label, tool, R, refine)] = (build, {b: r["seconds"] for b, r in medians.items()})
+    e = sdfwb.evaluate_mesh(path, sdf, tau=TAU, occupancy_resolution=0)
+    results.append(dict(label=label, cls=cls, tool=tool, R=R, refine=refine, seconds=report["seconds"],
+                        mesh_seconds=report["mesh_seconds"], field_seconds=report["field_seconds"],
+                        threads=report["mesh_threads"], triangles=report["triangles"], eval=e, build=build))
+    post = f"; projection {report.get('project_seconds', 0):.3f}, refinement {report.get('refine_seconds', 0):.3f}" \
+        if project or refine else ""
+    print(f"{label:36s} {tool:20s} R={R:4d}{f' refine {refine}' if refine else ''} {report['seconds']:8.3f} s ({build}; "
+          f"strict {medians['strict']['seconds']:.3f}, fast-math {medians['fast-math']['seconds']:.3f}; field "
+          f"{report['field_seconds']:.3f}, {report['field_threads']} threads; mesher {report['mesh_seconds']:.3f}, "
+          f"{report['mesh_threads']} threads{post})  Hausdorff {e['hausdorff']:.3g} Chamfer-L1 {e['chamfer_l1']:.3g}",
+          flush=True)
+
 wall_start = time.perf_counter()
 with tempfile.TemporaryDirectory() as folder:
     for label, cls, sdf, field in SHAPES:
@@ -422,7 +416,7 @@ with tempfile.TemporaryDirectory() as folder:
                   f"Chamfer-L1 {e['chamfer_l1']:.3g}", flush=True)
         for R in PEER_R:
             forms = []
-            for name, function in field_forms(sdf, field, R, pools):
+            for name, function in field_forms(field, R, pools):
                 t, values = median_time(function)
                 forms.append((t, name, values))
             field_seconds, field_name, values = min(forms, key=lambda f: f[0])
@@ -450,16 +444,11 @@ with tempfile.TemporaryDirectory() as folder:
                       f"{e['hausdorff'] if e else float('nan'):.3g} Chamfer-L1 {e['chamfer_l1'] if e else float('nan'):.3g}",
                       flush=True)
             if label in CPP_FIELDS:
-                path = os.path.join(folder, "cpp.ply")
-                reports = [cpp_flying_edges(label, R, path)[0] for _ in range(REPEATS)]
-                report = sorted(reports, key=lambda r: r["seconds"])[len(reports) // 2]
-                e = sdfwb.evaluate_mesh(path, sdf, tau=TAU, occupancy_resolution=0)
-                results.append(dict(label=label, cls=cls, tool=FE_CPP, R=R, seconds=report["seconds"],
-                                    mesh_seconds=report["mesh_seconds"], field_seconds=report["field_seconds"],
-                                    threads=report["mesh_threads"], triangles=report["triangles"], eval=e))
-                print(f"{label:36s} {FE_CPP:20s} R={R:4d} {report['seconds']:8.3f} s (field {report['field_seconds']:.3f}, "
-                      f"{report['field_threads']} threads; mesher {report['mesh_seconds']:.3f}, {report['mesh_threads']} "
-                      f"threads)  Hausdorff {e['hausdorff']:.3g} Chamfer-L1 {e['chamfer_l1']:.3g}", flush=True)
+                for tool, project in ((FE_CPP, 0), (FE_PROJECTED, NEWTON_STEPS)):
+                    cpp_row(label, cls, sdf, tool, R, folder, project=project)
+        if label in CPP_FIELDS:
+            for R, K in PEER_REFINED:
+                cpp_row(label, cls, sdf, FE_REFINED, R, folder, project=NEWTON_STEPS, refine=K)
 wall = time.perf_counter() - wall_start
 for pool in pools.values():
     pool.shutdown()
@@ -477,8 +466,9 @@ if SCALE:
         runs += [("sdfwb" if k == 0 else REFINED_TOOL, r, k, True, True) for r, k in SCALE_CANDIDATES]
         runs += [(tool, 1024, 0, False, False) for tool in ["sdfwb", "VTK Flying Edges", *cpp]]
         for tool, R, K, graded, candidate in runs:
+            build = cpp_choice.get((label, FE_CPP, TOP, 0), ("strict",))[0]  # the faster build at TOP^3
             command = [sys.executable, os.path.abspath(__file__), "--child", "sdfwb" if tool == REFINED_TOOL else tool,
-                       label, str(R), "--child-refine", str(K)] + (["--graded"] if graded else [])
+                       label, str(R), "--child-refine", str(K), "--child-build", build] + (["--graded"] if graded else [])
             run = subprocess.run(command, capture_output=True, text=True)
             line = next((l for l in run.stdout.splitlines() if l.startswith("CHILD ")), None)
             row = dict(label=label, tool=tool, R=R, refine=K, candidate=candidate)
@@ -500,20 +490,24 @@ def rows_of(label, tool):
 
 def equal_error(label):
     """Our fastest call that reaches the best peer's error at the top peer resolution (both Hausdorff and
-    Chamfer-L1), against that peer's time; None when no resolution of ours reaches it."""
-    tops = [r for r in results if r["label"] == label and r["tool"] not in ("sdfwb", REFINED_TOOL) and r["R"] == TOP
-            and r["eval"]]
+    Chamfer-L1, each the lowest of the peers there, post-processed peers included), against the fastest peer run of
+    any size that reaches it too (else the fastest peer at the top resolution); None when no resolution of ours
+    reaches it."""
+    peer_rows = [r for r in results if r["label"] == label and r["tool"] not in ("sdfwb", REFINED_TOOL) and r["eval"]]
+    tops = [r for r in peer_rows if r["R"] == TOP and not r.get("refine")]
     if not tops:
         return None
     best_h = min(r["eval"]["hausdorff"] for r in tops)
     best_c = min(r["eval"]["chamfer_l1"] for r in tops)
-    fastest_peer = min(r["seconds"] for r in tops)
+    reaching = [r for r in peer_rows if r["eval"]["hausdorff"] <= best_h and r["eval"]["chamfer_l1"] <= best_c]
+    peer = min(reaching or tops, key=lambda r: r["seconds"])
+    fastest_peer = peer["seconds"]
     ours = [r for r in rows_of(label, "sdfwb") + rows_of(label, REFINED_TOOL)
             if r["eval"]["hausdorff"] <= best_h and r["eval"]["chamfer_l1"] <= best_c]
     if not ours:
-        return dict(best_h=best_h, best_c=best_c, peer_seconds=fastest_peer, ours=None)
+        return dict(best_h=best_h, best_c=best_c, peer_seconds=fastest_peer, peer=peer, ours=None)
     first = min(ours, key=lambda r: r["seconds"])
-    return dict(best_h=best_h, best_c=best_c, peer_seconds=fastest_peer, ours=first,
+    return dict(best_h=best_h, best_c=best_c, peer_seconds=fastest_peer, peer=peer, ours=first,
                 ratio=fastest_peer / first["seconds"])
 
 
@@ -533,49 +527,72 @@ for label, cls, _, _ in SHAPES:
     fe_top = min((r for tool in ("VTK Flying Edges", FE_CPP) for r in rows_of(label, tool) if r["R"] == TOP),
                  key=lambda r: r["seconds"], default=None)  # the faster of Python's and C++'s
     peers_top = [r for r in results if r["label"] == label and r["tool"] not in ("sdfwb", REFINED_TOOL) and r["R"] == TOP
-                 and r["eval"]]
+                 and not r.get("refine") and r["eval"]]
     summary_rows.append(dict(label=label, cls=cls, eq=eq, ours=ours_top, fe=fe_top, peers=peers_top))
 
+def goal_line(name, met):
+    return f"- **Goal** (fixed before the run): {GOALS[name]}. **{'Met' if met else 'Not met'}** in this run.\n"
+
+
+SPARSE = ("What is compared: sdfwb evaluates its field sparsely (blocks its Lipschitz bound rules out are skipped); every "
+          "peer here fills the dense (R+1)^3 lattice with its own field. The OpenVDB narrow-band row meshes a sparse "
+          "grid (3 voxels a side of the surface active) but its field is still filled densely: no peer in this bench "
+          "evaluates its field sparsely.\n")
 lines = []
 lines.append("## Equal error: the time sdfwb needs to reach the best peer's error at "
              f"{TOP}^3\n")
-lines.append(f"The best peer's Hausdorff and Chamfer-L1 at R = {TOP} (each the lowest of the peers), the fastest "
-             f"peer's whole call at R = {TOP}, and sdfwb's fastest call whose mesh is at least as good on both, refined "
-             "or not (R + K: a grid of R cells, refined K times). Ratio = peer time / sdfwb time (above 1: sdfwb is "
-             "faster).\n")
-lines.append("| shape | class | best peer Hausdorff | best peer Chamfer-L1 | fastest peer s | sdfwb R | sdfwb s | "
-             "ratio |\n|---|---|---|---|---|---|---|---|")
-for s in summary_rows:
-    eq = s["eq"]
-    if eq is None:
-        lines.append(f"| {s['label']} | {s['cls']} | n/a | n/a | n/a | n/a | n/a | n/a |")
-    elif eq["ours"] is None:
-        lines.append(f"| {s['label']} | {s['cls']} | {eq['best_h']:.3g} | {eq['best_c']:.3g} | "
-                     f"{eq['peer_seconds']:.3f} | not reached by R = {max(OURS_R)} | | **slower** |")
-    else:
-        lines.append(f"| {s['label']} | {s['cls']} | {eq['best_h']:.3g} | {eq['best_c']:.3g} | "
-                     f"{eq['peer_seconds']:.3f} | {grid_of(eq['ours'])} | {eq['ours']['seconds']:.3f} | "
-                     f"{eq['ratio']:.2f}x |")
-lines.append("")
+lines.append(f"The best peer's Hausdorff and Chamfer-L1 at R = {TOP} (each the lowest of the peers, {FE_PROJECTED} "
+             "included: the same two Newton steps sdfwb takes), the fastest peer run of any size that reaches both "
+             f"({FE_REFINED} included: the same refinement sdfwb's refined rows get; else the fastest peer at R = "
+             f"{TOP}), and sdfwb's fastest call whose mesh is at least as good on both, refined or not (R + K: a grid "
+             "of R cells, refined K times). Ratio = peer time / sdfwb time (above 1: sdfwb is faster).\n")
+lines.append(SPARSE)
+equal_error_ratios = {}
 for cls in classes:
     ratios = [s["eq"]["ratio"] if s["eq"] and s["eq"]["ours"] else 0.0 for s in summary_rows if s["cls"] == cls]
     if ratios:
-        lines.append(f"- {cls}: median equal-error ratio {statistics.median(ratios):.2f}x over {len(ratios)} shapes "
-                     "(a shape whose error sdfwb does not reach counts as 0).")
+        equal_error_ratios[cls] = (statistics.median(ratios), len(ratios))
+lines.append(goal_line("equal error", all(m >= 1.0 for m, _ in equal_error_ratios.values())))
+lines.append("| shape | class | best peer Hausdorff | best peer Chamfer-L1 | fastest peer reaching it | s | sdfwb R | "
+             "sdfwb s | ratio |\n|---|---|---|---|---|---|---|---|---|")
+for s in summary_rows:
+    eq = s["eq"]
+    if eq is None:
+        lines.append(f"| {s['label']} | {s['cls']} | n/a | n/a | n/a | n/a | n/a | n/a | n/a |")
+        continue
+    peer = f"{eq['peer']['tool']}, {grid_of(eq['peer'])}"
+    if eq["ours"] is None:
+        lines.append(f"| {s['label']} | {s['cls']} | {eq['best_h']:.3g} | {eq['best_c']:.3g} | {peer} | "
+                     f"{eq['peer_seconds']:.3f} | not reached by R = {max(OURS_R)} | | **slower** |")
+    else:
+        lines.append(f"| {s['label']} | {s['cls']} | {eq['best_h']:.3g} | {eq['best_c']:.3g} | {peer} | "
+                     f"{eq['peer_seconds']:.3f} | {grid_of(eq['ours'])} | {eq['ours']['seconds']:.3f} | "
+                     f"{eq['ratio']:.2f}x |")
+lines.append("")
+for cls, (median, count) in equal_error_ratios.items():
+    lines.append(f"- {cls}: median equal-error ratio {median:.2f}x over {count} shapes "
+                 "(a shape whose error sdfwb does not reach counts as 0).")
 lines.append("")
 lines.append(f"## Equal resolution {TOP}^3\n")
-lines.append("Time ratio = sdfwb's whole call / Flying Edges' whole call (field + mesher, from C++ where the bench has the "
-             "field in C++, else from Python, whichever is faster; below 1: sdfwb is faster). "
-             "Error ratios = sdfwb's / the peer's (below 1: sdfwb is more accurate).\n")
-lines.append("| shape | class | sdfwb s | Flying Edges s | time ratio | Hausdorff sdfwb | Hausdorff / MC, FE, VDB | "
-             "Chamfer-L1 sdfwb | Chamfer-L1 / MC, FE, VDB | edge F sdfwb | edge F MC, FE, VDB |\n"
+lines.append("Time ratio = sdfwb's whole call / Flying Edges' whole call (field + mesher, from C++ or from Python, "
+             "whichever is faster; below 1: sdfwb is faster). Error ratios = sdfwb's / the peer's (below 1: sdfwb is more "
+             f"accurate); FE+P is {FE_PROJECTED}.\n")
+lines.append(SPARSE)
+resolution_ratios = {}
+for cls in classes:
+    group = [s for s in summary_rows if s["cls"] == cls and s["ours"] and s["fe"]]
+    if group:
+        resolution_ratios[cls] = statistics.median(s["ours"]["seconds"] / s["fe"]["seconds"] for s in group)
+lines.append(goal_line("equal resolution", all(r <= 1.0 for r in resolution_ratios.values())))
+lines.append("| shape | class | sdfwb s | Flying Edges s | time ratio | Hausdorff sdfwb | Hausdorff / MC, FE, VDB, FE+P | "
+             "Chamfer-L1 sdfwb | Chamfer-L1 / MC, FE, VDB, FE+P | edge F sdfwb | edge F MC, FE, VDB, FE+P |\n"
              "|---|---|---|---|---|---|---|---|---|---|---|")
 for s in summary_rows:
     o, fe = s["ours"], s["fe"]
     if not o or not fe:
         continue
     peers = {r["tool"]: r for r in s["peers"]}
-    order = ["scikit-image MC", "VTK Flying Edges", "OpenVDB volumeToMesh"]
+    order = ["scikit-image MC", "VTK Flying Edges", "OpenVDB volumeToMesh", FE_PROJECTED]
 
     def ratio(key):
         return ", ".join(fmt(o["eval"][key] / peers[t]["eval"][key], ".2f") if t in peers and peers[t]["eval"][key] > 0
@@ -600,15 +617,21 @@ for cls in classes:
                                 for s in group)
     lines.append(f"- {cls} ({len(group)} shapes), medians: sdfwb takes {time_ratio:.2f}x Flying Edges' time; its "
                  f"Hausdorff is {h_ratio:.2f}x and its Chamfer-L1 {c_ratio:.2f}x the most accurate peer's "
-                 "(the largest of its three ratios per shape).")
+                 "(the largest of its ratios to the peers per shape).")
 lines.append("")
 if scale_rows:
     lines.append("## Scale: 512^3 and 1024^3\n")
-    lines.append("Each tool once, in a process of its own (`--scale`): the whole call's time (the peers' field by NumPy "
-                 f"where the SDF is written in NumPy, else `sdfwb.evaluate`; {FE_CPP}'s by C++ threads; sdfwb after a "
-                 "32^3 call that compiles its "
-                 "shaders) and the process's peak resident memory (VmHWM, Python and the libraries included). "
-                 "Ratio = the tool's time / sdfwb's at the same size.\n")
+    lines.append("Each tool once, in a process of its own (`--scale`), warm on both sides: each process first runs the "
+                 "same tool at 32^3 (sdfwb compiles its shaders and makes its GL context; a peer makes its thread pool "
+                 "and runs its field and mesher; the C++ peer runs once, its faster build at 256^3), then is timed: the "
+                 f"whole call (the peers' field by NumPy z-slabs on {CPUS} threads; {FE_CPP}'s by C++ threads) and the "
+                 "process's peak resident memory (VmHWM, Python and the libraries included). Ratio = the tool's time / "
+                 "sdfwb's at the same size.\n")
+    lines.append(SPARSE)
+    slower = [r for r in scale_rows if not r["failed"] and not r["candidate"] and r["tool"] != "sdfwb" and any(
+        o["label"] == r["label"] and o["R"] == r["R"] and o["tool"] == "sdfwb" and not o["failed"] and not o["candidate"]
+        and o["seconds"] >= r["seconds"] for o in scale_rows)]
+    lines.append(goal_line("scale", not slower and not any(r["failed"] for r in scale_rows)))
     lines.append("| shape | R | tool | whole call s | of which field s | peak memory MB | triangles | time / sdfwb's |\n"
                  "|---|---|---|---|---|---|---|---|")
     for r in scale_rows:
@@ -629,6 +652,17 @@ if scale_rows:
                  "sdfwb's fastest call whose mesh is at least as good on both, among 512 and the candidates "
                  f"{', '.join(f'{r} + {k}' if k else str(r) for r, k in SCALE_CANDIDATES)} (R + K: refined K times), each "
                  "in a process of its own. Ratio = peer time / sdfwb time.\n")
+    scale_met = True
+    for label in SCALE_SHAPES:
+        graded = [r for r in scale_rows if r["label"] == label and not r["failed"] and "hausdorff" in r]
+        peers = [r for r in graded if r["tool"] not in ("sdfwb", REFINED_TOOL)]
+        if peers:
+            best_h = min(r["hausdorff"] for r in peers)
+            best_c = min(r["chamfer_l1"] for r in peers)
+            fastest = min(r["seconds"] for r in peers)
+            scale_met = scale_met and any(r["tool"] in ("sdfwb", REFINED_TOOL) and r["hausdorff"] <= best_h
+                                          and r["chamfer_l1"] <= best_c and r["seconds"] <= fastest for r in graded)
+    lines.append(goal_line("scale equal error", scale_met))
     lines.append("| shape | best peer Hausdorff | best peer Chamfer-L1 | fastest peer | s | sdfwb R | sdfwb s | "
                  "sdfwb peak MB | ratio |\n|---|---|---|---|---|---|---|---|---|")
     for label in SCALE_SHAPES:
@@ -686,6 +720,21 @@ for r in scale_rows:
         wins.append(f"scale {r['R']}^3, {r['label']}: {r['tool']} takes {r['seconds']:.2f} s, sdfwb {ours['seconds']:.2f} s "
                     f"({ours['seconds'] / r['seconds']:.2f}x slower), at {r['peak_mb']:.0f} MB against sdfwb's "
                     f"{ours['peak_mb']:.0f} MB.")
+# The lent GPU machine's run (docs/meshing-gpu.md, raw rows in docs/data/meshing-gpu.jsonl): where Flying Edges from
+# C++ beat sdfwb there, quoted with that run's machine line.
+gpu_rows_path = os.path.join(ROOT, "docs", "data", "meshing-gpu.jsonl")
+if os.path.exists(gpu_rows_path):
+    with open(gpu_rows_path) as rows_file:
+        gpu_rows = [json.loads(line) for line in rows_file if line.strip()]
+    machine = next((r for r in gpu_rows if r.get("kind") == "machine"), {})
+    for fe in (r for r in gpu_rows if r.get("kind") == "flying_edges"):
+        ours = next((r for r in gpu_rows if r.get("kind") == "ours" and r["label"] == fe["label"] and r["R"] == fe["R"]),
+                    None)
+        if ours and fe["R"] >= 512 and fe["seconds"] < ours["seconds"]:
+            wins.append(f"GPU run (docs/meshing-gpu.md, {machine.get('gpu', '?')}, nproc {machine.get('nproc', '?')}, "
+                        f"{machine.get('started', '?')}), {fe['R']}^3, {fe['label']}: Flying Edges from C++ takes "
+                        f"{fe['seconds']:.3f} s, sdfwb {ours['seconds']:.3f} s ({ours['seconds'] / fe['seconds']:.1f}x "
+                        "slower); not re-run since (no GPU lent).")
 lines.append("## Where a peer wins\n")
 lines.append("\n".join(f"- {w}" for w in wins) if wins else "- Nowhere in this run.")
 lines.append("")
@@ -695,7 +744,7 @@ lines.append("| shape | tool | R | whole call s | of which field s (form) | tria
              "|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 for r in results:
     e = r["eval"]
-    form = ("" if r["tool"] in ("sdfwb", REFINED_TOOL) else "C++ inline" if r["tool"] == FE_CPP else
+    form = ("" if r["tool"] in ("sdfwb", REFINED_TOOL) else f"C++ inline, {r['build']} build" if r.get("build") else
             field_choice.get((r["label"], r["R"]), ("", 0, []))[0])
     edges = e.get("edges") if e else None
     threads = f" ({r['threads']} threads)" if r.get("threads") else ""
@@ -711,6 +760,14 @@ lines.append("| shape | R | form | s |\n|---|---|---|---|")
 for (label, R), (_, _, forms) in field_choice.items():
     for name, t in forms:
         lines.append(f"| {label} | {R} | {name} | {t:.3f} |")
+lines.append("")
+lines.append("## The C++ peer's builds\n")
+lines.append("Each C++ run in both builds (g++ -O3 -march=native, strict IEEE and -ffast-math), the median of "
+             f"{REPEATS} runs each; the faster is the row above.\n")
+lines.append("| shape | tool | R | strict s | fast-math s | kept |\n|---|---|---|---|---|---|")
+for (label, tool, R, refine), (build, times) in cpp_choice.items():
+    lines.append(f"| {label} | {tool} | {f'{R} + {refine}' if refine else R} | {times['strict']:.3f} | "
+                 f"{times['fast-math']:.3f} | {build} |")
 print("\n".join(lines))
 
 if PLOT:
@@ -720,7 +777,7 @@ if PLOT:
     for ax in axes.flat[len(classes):]:
         ax.axis("off")
     colours = {"sdfwb": "C3", REFINED_TOOL: "C6", "scikit-image MC": "C0", "VTK Flying Edges": "C2",
-               "OpenVDB volumeToMesh": "C1", FE_CPP: "C4"}
+               "OpenVDB volumeToMesh": "C1", VDB_BAND: "C8", FE_CPP: "C4", FE_PROJECTED: "C5", FE_REFINED: "C9"}
     for ax, cls in zip(axes.flat, classes):
         for label, c, _, _ in SHAPES:
             if c != cls:
