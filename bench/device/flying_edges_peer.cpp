@@ -18,7 +18,8 @@
 //                given, the fastest kept ("project_seconds", "project_threads"). Default 0: none.
 //   --refine K   after the projection, each triangle cut into four K times (the edges' midpoints shared between the
 //                two triangles on the edge), each new vertex projected with the same Newton steps (N of --project,
-//                2 when --project is not given), every thread count tried, the fastest kept ("refine_seconds",
+//                2 when --project is not given; a midpoint whose step would exceed a quarter of its edge stays, as in
+//                sdfwb), every thread count tried, the fastest kept ("refine_seconds",
 //                "refine_threads"). Default 0: none.
 //   --values     writes the field on the (R+1)^3 lattice over [-1,1]^3 (x fastest, then y, then z; raw little-endian
 //                float32), the very values Flying Edges is given, for checking the inline fields against sdfwb.
@@ -394,12 +395,15 @@ template <class Body> void parallelFor(size_t first, size_t end, int threads, co
 }
 
 // `steps` Newton steps v -= f(v) g / |g|^2 at the vertices [first, end) of `xyz` (x, y, z each), g the central
-// difference of the field with step 1e-4, threaded over the vertices.
-template <Field F> void project(float* xyz, size_t first, size_t end, int steps, int threads) {
-    parallelFor(first, end, threads, [xyz, steps](size_t begin, size_t stop) {
+// difference of the field with step 1e-4, threaded over the vertices. With `limits` (refinement: a quarter of each
+// midpoint's edge, indexed from `first`), a vertex that would move farther stays where it was, as sdfwb's refinement
+// keeps a midpoint whose step is longer than a quarter of its edge (a step across a thin wall to the other sheet).
+template <Field F> void project(float* xyz, size_t first, size_t end, int steps, int threads, const float* limits) {
+    parallelFor(first, end, threads, [xyz, steps, first, limits](size_t begin, size_t stop) {
         const float e = 1e-4f, inverse = 1.0f / (2.0f * e);
         for (size_t v = begin; v < stop; ++v) {
-            float x = xyz[3 * v], y = xyz[3 * v + 1], z = xyz[3 * v + 2];
+            const float x0 = xyz[3 * v], y0 = xyz[3 * v + 1], z0 = xyz[3 * v + 2];
+            float x = x0, y = y0, z = z0;
             for (int step = 0; step < steps; ++step) {
                 const float f = F(x, y, z);
                 const float gx = (F(x + e, y, z) - F(x - e, y, z)) * inverse;
@@ -410,6 +414,10 @@ template <Field F> void project(float* xyz, size_t first, size_t end, int steps,
                 const float s = f / g2;
                 x -= s * gx, y -= s * gy, z -= s * gz;
             }
+            if (limits) {
+                const float limit = limits[v - first];
+                if (!((x - x0) * (x - x0) + (y - y0) * (y - y0) + (z - z0) * (z - z0) <= limit * limit)) continue;
+            }
             xyz[3 * v] = x, xyz[3 * v + 1] = y, xyz[3 * v + 2] = z;
         }
     });
@@ -418,7 +426,7 @@ template <Field F> void project(float* xyz, size_t first, size_t end, int steps,
 struct Shape {
     const char* name;
     void (*fill)(std::vector<float>&, int, int);
-    void (*project)(float*, size_t, size_t, int, int);
+    void (*project)(float*, size_t, size_t, int, int, const float*);
 };
 
 template <Field F> constexpr Shape shapeOf(const char* name) { return {name, fill<F>, project<F>}; }
@@ -569,8 +577,15 @@ void refine(Mesh& mesh, const Shape& shape, int levels, int steps, int threads) 
     Edges edges = findEdges(mesh);
     for (int level = 0; level < levels; ++level) {
         const size_t firstMidpoint = mesh.vertexCount();
+        std::vector<float> limits(edges.ends.size()); // a quarter of each edge: the farthest its midpoint may move
+        for (size_t e = 0; e < edges.ends.size(); ++e) {
+            const float* a = &mesh.xyz[3 * size_t(edges.ends[e][0])];
+            const float* b = &mesh.xyz[3 * size_t(edges.ends[e][1])];
+            limits[e] = 0.25f * std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
+                                          (b[2] - a[2]) * (b[2] - a[2]));
+        }
         split(mesh, edges, level + 1 == levels, threads);
-        shape.project(mesh.xyz.data(), firstMidpoint, mesh.vertexCount(), steps, threads);
+        shape.project(mesh.xyz.data(), firstMidpoint, mesh.vertexCount(), steps, threads, limits.data());
     }
 }
 
@@ -696,7 +711,7 @@ int main(int argc, char** argv) {
         for (int k : threads) {
             Mesh trial = extracted;
             const auto start = Clock::now();
-            shape->project(trial.xyz.data(), 0, trial.vertexCount(), steps, k);
+            shape->project(trial.xyz.data(), 0, trial.vertexCount(), steps, k, nullptr);
             const double t = secondsSince(start);
             if (t < projectBest) projectBest = t, projectThreads = k, mesh = std::move(trial);
         }

@@ -103,38 +103,62 @@ glm::vec3 faceNormal(const Mesh& mesh, std::size_t t) {
 
 // The nearest triangle to a point: the k-d tree gives the nearest centre; every triangle whose
 // centre lies within that distance plus the largest centre-to-corner radius may be nearer, and
-// those are measured exactly.
+// those are measured exactly. Triangles far larger than the mesh's usual ones (over 4 times the
+// 99th percentile of the radii: slivers across a thin wall, a broken mesh's spikes) would widen
+// every search to most of the mesh; they stay out of the tree and are measured at every query.
 class TriangleLocator {
 public:
     explicit TriangleLocator(const Mesh& mesh)
         : m_mesh(mesh), m_tree(3, m_centres, nanoflann::KDTreeSingleIndexAdaptorParams(16)) {
-        for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const std::size_t triangles = mesh.triangleCount();
+        std::vector<float> radii(triangles);
+        std::vector<glm::vec3> centres(triangles);
+        for (std::size_t t = 0; t < triangles; ++t) {
             const glm::vec3 &a = mesh.vertices[mesh.indices[3 * t]], &b = mesh.vertices[mesh.indices[3 * t + 1]],
                             &c = mesh.vertices[mesh.indices[3 * t + 2]];
-            const glm::vec3 m = (a + b + c) / 3.0f;
-            m_centres.xyz.insert(m_centres.xyz.end(), {m.x, m.y, m.z});
-            m_radius = std::max({m_radius, glm::length(a - m), glm::length(b - m), glm::length(c - m)});
+            centres[t] = (a + b + c) / 3.0f;
+            radii[t] = std::max({glm::length(a - centres[t]), glm::length(b - centres[t]), glm::length(c - centres[t])});
+        }
+        float large = std::numeric_limits<float>::infinity();
+        if (triangles > 0) {
+            std::vector<float> sorted = radii;
+            const auto at = sorted.begin() + std::ptrdiff_t(0.99 * double(triangles - 1));
+            std::nth_element(sorted.begin(), at, sorted.end());
+            large = 4.0f * *at;
+        }
+        for (std::size_t t = 0; t < triangles; ++t) {
+            if (radii[t] > large) { // NaN radii stay in the tree, as before
+                m_large.push_back(std::uint32_t(t));
+                continue;
+            }
+            m_inTree.push_back(std::uint32_t(t));
+            m_centres.xyz.insert(m_centres.xyz.end(), {centres[t].x, centres[t].y, centres[t].z});
+            m_radius = std::max(m_radius, radii[t]);
         }
         m_tree.buildIndex();
     }
     // Distance and triangle; infinity for a non-finite point.
     std::pair<float, std::uint32_t> nearest(const glm::vec3& p) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return {std::numeric_limits<float>::infinity(), 0};
-        const float query[3] = {p.x, p.y, p.z};
-        std::uint32_t closest = 0;
-        float closestSquared = 0.0f;
-        m_tree.knnSearch(query, 1, &closest, &closestSquared);
-        const float radius = std::sqrt(closestSquared) + m_radius;
-        m_found.clear();
-        m_tree.radiusSearch(query, radius * radius, m_found, nanoflann::SearchParams(32, 0.0f, false));
-        std::pair<float, std::uint32_t> best{std::numeric_limits<float>::infinity(), closest};
-        for (const auto& item : m_found) {
-            const std::size_t t = item.first;
+        std::pair<float, std::uint32_t> best{std::numeric_limits<float>::infinity(), 0};
+        auto measure = [&](std::uint32_t t) {
             const float d =
                 pointTriangleDistance(p, m_mesh.vertices[m_mesh.indices[3 * t]], m_mesh.vertices[m_mesh.indices[3 * t + 1]],
                                       m_mesh.vertices[m_mesh.indices[3 * t + 2]]);
-            if (d < best.first) best = {d, std::uint32_t(t)};
+            if (d < best.first) best = {d, t};
+        };
+        if (!m_inTree.empty()) {
+            const float query[3] = {p.x, p.y, p.z};
+            std::uint32_t closest = 0;
+            float closestSquared = 0.0f;
+            m_tree.knnSearch(query, 1, &closest, &closestSquared);
+            best.second = m_inTree[closest];
+            const float radius = std::sqrt(closestSquared) + m_radius;
+            m_found.clear();
+            m_tree.radiusSearch(query, radius * radius, m_found, nanoflann::SearchParams(32, 0.0f, false));
+            for (const auto& item : m_found) measure(m_inTree[item.first]);
         }
+        for (std::uint32_t t : m_large) measure(t);
         return best;
     }
 
@@ -143,6 +167,8 @@ private:
     Centres m_centres;
     Tree m_tree;
     float m_radius = 0.0f;
+    std::vector<std::uint32_t> m_inTree; // the tree's points' triangles
+    std::vector<std::uint32_t> m_large;  // measured at every query
     std::vector<std::pair<std::uint32_t, float>> m_found;
 };
 

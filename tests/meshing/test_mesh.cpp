@@ -1194,6 +1194,27 @@ meshing::Mesh chamferedPrism(float c) {
 
 } // namespace
 
+// The grader's nearest-triangle search keeps triangles far larger than the rest (a projection
+// across a thin wall, a broken mesh's spike) out of its k-d tree, where their size would widen
+// every search to the whole mesh, and measures them at every query. The concentric spheres below
+// plus one huge triangle in the plane z = 0.6, touching the graded sphere's top: surface points
+// near the top are nearer to it than to the ball (completeness below 0.02 there), and no point is
+// farther from the mesh than from the ball alone.
+TEST_F(MeshTest, TheEvaluationMeasuresTrianglesFarLargerThanTheRest) {
+    meshing::Mesh mesh = icosphere(7, 0.62);
+    const auto first = std::uint32_t(mesh.vertices.size());
+    for (const glm::vec3& v : {glm::vec3(-2.0f, -2.0f, 0.6f), glm::vec3(2.0f, -2.0f, 0.6f), glm::vec3(0.0f, 2.5f, 0.6f)})
+        mesh.vertices.push_back(v);
+    mesh.indices.insert(mesh.indices.end(), {first, first + 1, first + 2});
+    meshing::EvalOptions options;
+    options.occupancyResolution = 0;
+    auto e = meshing::evaluateMesh(source(kSphere), mesh, options);
+    ASSERT_TRUE(e) << e.error().message;
+    EXPECT_LE(e->completenessMax, 0.02 + 1e-6) << "a surface point's nearest triangle was missed";
+    EXPECT_LT(e->completenessMean, 0.02 - 1e-4) << "the huge triangle is measured";
+    EXPECT_NEAR(e->completenessMax, 0.02, 1.2e-5) << "the sphere's bottom is 0.02 from the ball";
+}
+
 // Issue 33, point 2: evaluateMesh against answers known exactly, at the 1e-5 level.
 // Concentric spheres: an icosphere with its vertices on the sphere of radius 0.62 (every face within
 // its sag, 1.2e-5, of that sphere) graded against the sphere of radius 0.6. An offset slab: two
