@@ -240,8 +240,8 @@ inline float mengerSponge(float x, float y, float z) {
     const float halfSize = 0.78f;
     const float qx = x / halfSize, qy = y / halfSize, qz = z / halfSize;
     const float ox = std::fabs(qx) - 1.0f, oy = std::fabs(qy) - 1.0f, oz = std::fabs(qz) - 1.0f;
-    float solid = length3(std::max(ox, 0.0f), std::max(oy, 0.0f), std::max(oz, 0.0f)) +
-                  std::min(std::max(ox, std::max(oy, oz)), 0.0f);
+    float solid =
+        length3(std::max(ox, 0.0f), std::max(oy, 0.0f), std::max(oz, 0.0f)) + std::min(std::max(ox, std::max(oy, oz)), 0.0f);
     float cellSize = 2.0f;
     for (int level = 0; level < 4; ++level) {
         const float lx = glslMod(qx + 1.0f, cellSize) - 0.5f * cellSize;
@@ -266,9 +266,18 @@ inline float sierpinskiTetrahedron(float x, float y, float z) {
     float b = qx * 0.4082483f + qy * 0.5773503f + qz * -0.7071068f;
     float c = qx * -0.8164966f + qy * 0.5773503f + qz * 0.0f;
     for (int level = 0; level < 6; ++level) {
-        if (a + b < 0.0f) { const float t = a; a = -b, b = -t; }
-        if (a + c < 0.0f) { const float t = a; a = -c, c = -t; }
-        if (b + c < 0.0f) { const float t = b; b = -c, c = -t; }
+        if (a + b < 0.0f) {
+            const float t = a;
+            a = -b, b = -t;
+        }
+        if (a + c < 0.0f) {
+            const float t = a;
+            a = -c, c = -t;
+        }
+        if (b + c < 0.0f) {
+            const float t = b;
+            b = -c, c = -t;
+        }
         a = 2.0f * a - 1.0f, b = 2.0f * b - 1.0f, c = 2.0f * c - 1.0f;
     }
     const float planes = std::max(std::max(-a - b - c, a + b - c), std::max(-a + b + c, a - b + c));
@@ -388,8 +397,7 @@ template <class Body> void parallelFor(size_t first, size_t end, int threads, co
         return;
     }
     std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t)
-        pool.emplace_back(body, first + count * t / threads, first + count * (t + 1) / threads);
+    for (int t = 1; t < threads; ++t) pool.emplace_back(body, first + count * t / threads, first + count * (t + 1) / threads);
     body(first, first + count / threads);
     for (auto& thread : pool) thread.join();
 }
@@ -581,8 +589,8 @@ void refine(Mesh& mesh, const Shape& shape, int levels, int steps, int threads) 
         for (size_t e = 0; e < edges.ends.size(); ++e) {
             const float* a = &mesh.xyz[3 * size_t(edges.ends[e][0])];
             const float* b = &mesh.xyz[3 * size_t(edges.ends[e][1])];
-            limits[e] = 0.25f * std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
-                                          (b[2] - a[2]) * (b[2] - a[2]));
+            limits[e] =
+                0.25f * std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2]));
         }
         split(mesh, edges, level + 1 == levels, threads);
         shape.project(mesh.xyz.data(), firstMidpoint, mesh.vertexCount(), steps, threads, limits.data());
@@ -644,8 +652,10 @@ int main(int argc, char** argv) {
             if (i + 1 >= argc) return usage();
             const int value = std::stoi(argv[++i]);
             if (value < 0) return usage();
-            if (arg == "--project") steps = value, projectGiven = true;
-            else levels = value;
+            if (arg == "--project")
+                steps = value, projectGiven = true;
+            else
+                levels = value;
         } else if (arg.size() > 2 && arg.compare(0, 2, "--") == 0) {
             return usage();
         } else {
@@ -735,8 +745,8 @@ int main(int argc, char** argv) {
                 "\"seconds\": %.6f, \"triangles\": %zu, \"vertices\": %zu, \"flying_edges_triangles\": %zu, "
                 "\"smp_backend\": \"%s\", \"flags\": \"%s\", \"mesh_seconds_by_threads\": {%s}}\n",
                 shapeName.c_str(), R, fieldBest, fieldThreads, meshBest, meshThreads, projectBest, projectThreads, steps,
-                refineBest, refineThreads, levels, levels > 0 ? refineSteps : 0,
-                fieldBest + meshBest + projectBest + refineBest, mesh.triangleCount(), mesh.vertexCount(),
-                flyingEdgesTriangles, vtkSMPTools::GetBackend(), PEER_FLAGS, perThreads.str().c_str());
+                refineBest, refineThreads, levels, levels > 0 ? refineSteps : 0, fieldBest + meshBest + projectBest + refineBest,
+                mesh.triangleCount(), mesh.vertexCount(), flyingEdgesTriangles, vtkSMPTools::GetBackend(), PEER_FLAGS,
+                perThreads.str().c_str());
     return 0;
 }
