@@ -199,6 +199,11 @@ void ParametersPanel::resetAll() {
     if (changed) emit valuesChanged();
 }
 
+// The rows' widgets are children of the rows' host, which Qt deletes; the rows themselves are ours.
+ParametersPanel::~ParametersPanel() {
+    for (Row* row : m_rows) delete row;
+}
+
 void ParametersPanel::rebuild() {
     for (Row* row : m_rows) {
         delete row->label;

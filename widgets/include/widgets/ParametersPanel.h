@@ -21,6 +21,7 @@ class ParametersPanel : public QWidget {
     Q_OBJECT
 public:
     explicit ParametersPanel(QWidget* parent = nullptr);
+    ~ParametersPanel() override;
 
     // New declarations (after each good compile). Rows are rebuilt when the set of names, types
     // or annotations changed; a parameter that keeps its name and type keeps its value.
