@@ -2,6 +2,7 @@
 """Error against run time of `sdfwb --batch mesh`: docs/meshing.md and docs/images/mesh_error_vs_time.png.
 
     PYTHONPATH=build/python /usr/bin/python3 scripts/mesh_report.py [build/app/sdfwb] [--max-resolution 512]
+    /usr/bin/python3 scripts/mesh_report.py --quote-peers   (only the section quoted from docs/meshing-peers.md)
 
 For each shape and each resolution (32, 64, ..., up to --max-resolution) it runs
 `sdfwb --batch mesh --json` and tabulates the extraction time, the mesh's size and topology, and
@@ -30,6 +31,51 @@ args = [a for a in sys.argv[1:] if not a.startswith("--")]
 BINARY = args[0] if args else os.path.join(ROOT, "build", "app", "sdfwb")
 LARGEST = int(sys.argv[sys.argv.index("--max-resolution") + 1]) if "--max-resolution" in sys.argv else 512
 ENV = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
+
+
+# The peers' run (bench/bench_mesh_peers.py) is too long for this script; its plot and its own generated summary
+# lines are quoted from docs/meshing-peers.md, with that run's machine line, so that this page says where a peer wins.
+PEERS_TITLE = "## Against scikit-image, VTK Flying Edges and OpenVDB (quoted from meshing-peers.md)"
+
+
+def quote_peers():
+    """Appends the peers' section to docs/meshing.md."""
+    peers_path = os.path.join(ROOT, "docs", "meshing-peers.md")
+    if os.path.exists(peers_path):
+        peers = open(peers_path).read().splitlines()
+        machine = next((line[2:] for line in peers if line.startswith("- Machine:")), "machine unknown")
+
+        def section(title):
+            at = next((k for k, line in enumerate(peers) if line.startswith(title)), None)
+            if at is None:
+                return []
+            end = next((k for k in range(at + 1, len(peers)) if peers[k].startswith("## ")), len(peers))
+            return peers[at + 1:end]
+
+        equal_error = [line for line in section("## Equal error: the time") if line.startswith("- ")]
+        equal_resolution = [line for line in section("## Equal resolution") if line.startswith("- ")]
+        wins = [line for line in section("## Where a peer wins") if line.startswith("- ")]
+        with open(os.path.join(ROOT, "docs", "meshing.md"), "a") as out:
+            out.write("\n" + PEERS_TITLE + "\n\n")
+            out.write(f"Quoted by this script from [meshing-peers.md](meshing-peers.md), which `bench/bench_mesh_peers.py "
+                      f"--scale` generates ({machine}); every table, configuration and scale run is there.\n\n")
+            out.write("![Chamfer-L1 against time, every peer and shape class](images/mesh_peers_error_vs_time.png)\n\n")
+            out.write("Equal error (sdfwb's time to reach the best peer's 256^3 error; above 1: sdfwb is faster):\n\n" +
+                      "\n".join(equal_error) + "\n\nEqual resolution 256^3:\n\n" + "\n".join(equal_resolution) + "\n\n")
+            out.write("Where a peer wins:\n\n" + ("\n".join(wins) if wins else "- nowhere in that run") + "\n")
+
+
+# --quote-peers: only the peers' section at the end of docs/meshing.md, re-quoted from a new
+# docs/meshing-peers.md (bench/bench_mesh_peers.py), the rest of the page left as generated.
+if "--quote-peers" in sys.argv:
+    page_path = os.path.join(ROOT, "docs", "meshing.md")
+    page = open(page_path).read()
+    at = page.find("\n" + PEERS_TITLE)
+    with open(page_path, "w") as page_file:
+        page_file.write(page if at < 0 else page[:at])
+    quote_peers()
+    print("rewrote the peers' section of docs/meshing.md")
+    sys.exit(0)
 SHAPES = [
     ("Sphere (dataset)", "sphere", []),
     ("Box (dataset, sharp edges)", "box", []),
@@ -306,29 +352,5 @@ with open(os.path.join(ROOT, "docs", "meshing.md"), "a") as out:
         out.write(f"| {c['label']} | {c['resolution']} | {c['method']} | {c['triangles']} | {c['seconds']:.2f} | {lattice} | "
                   f"{e['chamfer_l1']:.2g} | {e['hausdorff']:.2g} | {e['normal_consistency']:.4f} | {e['fscore']:.4f} | "
                   f"{e['iou']:.4f} |\n")
-# The peers' run (bench/bench_mesh_peers.py) is too long for this script; its plot and its own generated summary
-# lines are quoted from docs/meshing-peers.md, with that run's machine line, so that this page says where a peer wins.
-peers_path = os.path.join(ROOT, "docs", "meshing-peers.md")
-if os.path.exists(peers_path):
-    peers = open(peers_path).read().splitlines()
-    machine = next((line[2:] for line in peers if line.startswith("- Machine:")), "machine unknown")
-
-    def section(title):
-        at = next((k for k, line in enumerate(peers) if line.startswith(title)), None)
-        if at is None:
-            return []
-        end = next((k for k in range(at + 1, len(peers)) if peers[k].startswith("## ")), len(peers))
-        return peers[at + 1:end]
-
-    equal_error = [line for line in section("## Equal error: the time") if line.startswith("- ")]
-    equal_resolution = [line for line in section("## Equal resolution") if line.startswith("- ")]
-    wins = [line for line in section("## Where a peer wins") if line.startswith("- ")]
-    with open(os.path.join(ROOT, "docs", "meshing.md"), "a") as out:
-        out.write("\n## Against scikit-image, VTK Flying Edges and OpenVDB (quoted from meshing-peers.md)\n\n")
-        out.write(f"Quoted by this script from [meshing-peers.md](meshing-peers.md), which `bench/bench_mesh_peers.py "
-                  f"--scale` generates ({machine}); every table, configuration and scale run is there.\n\n")
-        out.write("![Chamfer-L1 against time, every peer and shape class](images/mesh_peers_error_vs_time.png)\n\n")
-        out.write("Equal error (sdfwb's time to reach the best peer's 256^3 error; above 1: sdfwb is faster):\n\n" +
-                  "\n".join(equal_error) + "\n\nEqual resolution 256^3:\n\n" + "\n".join(equal_resolution) + "\n\n")
-        out.write("Where a peer wins:\n\n" + ("\n".join(wins) if wins else "- nowhere in that run") + "\n")
+quote_peers()
 print("wrote docs/meshing.md and docs/images/mesh_error_vs_time.png")
