@@ -27,6 +27,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <deque>
 #include <fcntl.h>
 #include <filesystem>
 #include <memory>
@@ -55,26 +56,37 @@ template <class M> double median3(M measure) {
     return runs[1];
 }
 
-// Bare compute, through the same GL path as sdfwb: every chunk dispatched into the persistently
-// mapped buffer sets in turn (SampleCompute::runMapped, the layout the format's writer asks for),
-// nothing written.
+// Bare compute, through the same GL path as sdfwb: every chunk dispatched into the ring's buffer
+// sets in turn (SampleCompute::submitMapped and collectMapped, the layout the format's writer asks
+// for, as many chunks ahead as sdfwb keeps), nothing written.
 double computeSeconds(renderer::SampleCompute& compute, const sampling::SamplingJob& job, renderer::RowLayout layout) {
     renderer::SampleUniforms uniforms;
     uniforms.sampleCount = std::uint32_t(job.count);
     uniforms.seed = job.seed;
     uniforms.gradientStep = job.gradientStep;
     uniforms.surfaceTolerance = job.surfaceTolerance;
+    const renderer::SamplePipeline ring = compute.pipeline();
+    const std::uint32_t chunk = job.chunkSize > 0 ? job.chunkSize : compute.preferredChunk();
     auto start = std::chrono::steady_clock::now();
+    auto check = [](const auto& ok) {
+        if (ok) return;
+        std::fprintf(stderr, "bench_sample_files: %s\n", ok.error().message.c_str());
+        std::exit(1);
+    };
+    std::deque<int> inFlight;
     int slot = 0;
     for (std::uint64_t done = 0; done < job.count;) {
-        const std::uint32_t count = std::uint32_t(std::min<std::uint64_t>(job.chunkSize, job.count - done));
-        if (auto rows = compute.runMapped(uniforms, std::uint32_t(done), count, slot, layout); !rows) {
-            std::fprintf(stderr, "bench_sample_files: %s\n", rows.error().message.c_str());
-            std::exit(1);
+        if (inFlight.size() >= std::size_t(ring.ahead)) {
+            check(compute.collectMapped(inFlight.front()));
+            inFlight.pop_front();
         }
-        slot = (slot + 1) % renderer::SampleCompute::kSlots;
+        const std::uint32_t count = std::uint32_t(std::min<std::uint64_t>(chunk, job.count - done));
+        check(compute.submitMapped(uniforms, std::uint32_t(done), count, slot, layout));
+        inFlight.push_back(slot);
+        slot = (slot + 1) % ring.sets;
         done += count;
     }
+    for (int pending : inFlight) check(compute.collectMapped(pending));
     return seconds(start);
 }
 
@@ -175,7 +187,8 @@ int main(int argc, char** argv) {
                 endToEndRuns[k] = report->seconds;
                 reports[k] = *report;
                 ::sync();
-                writeRuns[k] = writeSeconds(folder, bytes, std::size_t(job.chunkSize) * 28);
+                writeRuns[k] =
+                    writeSeconds(folder, bytes, std::size_t(job.chunkSize > 0 ? job.chunkSize : compute.preferredChunk()) * 28);
                 if (k == 0) std::printf("| %s | %s | %.0f ", pattern.c_str(), sampling::formatName(format), double(bytes) / 1e6);
             }
             // The split of the run whose time is the median.

@@ -521,7 +521,7 @@ PYBIND11_MODULE(_native, m) {
     m.attr("__version__") = SDFWB_VERSION;
     // Float defaults spelled as written (pybind11 would print the float32 value, 0.0010000000474974513).
     m.def("sample", &sample, py::arg("sdf"), py::arg("pattern"), py::arg("n"), py::arg("seed") = 0, py::arg("time") = 0.0f,
-          py::arg_v("gradient_step", 0.0f, "0.0"), py::arg("chunk") = 1u << 18, py::arg_v("surface_tolerance", 1e-5f, "1e-5"),
+          py::arg_v("gradient_step", 0.0f, "0.0"), py::arg("chunk") = 0u, py::arg_v("surface_tolerance", 1e-5f, "1e-5"),
           py::arg("entry") = "", py::arg("params") = py::none(), py::arg("first_index") = 0, py::arg("near_widths") = "",
           py::arg("near_truncate") = 0.0f, py::arg("sign") = "", py::arg("normalize") = "",
           R"doc(Samples `n` points of `sdf` with `pattern`: the same values as `sdfwb --batch sample` with the same seed.
@@ -539,8 +539,8 @@ Args:
     time (float): seconds, finite: the time an animated SDF (`ENTRY(vec3 p, float time)`) is sampled at. Default 0.
     gradient_step (float): > 0, world units: the step of the central differences of `gradient`. Default 0:
         1e-3, except that a mesh's own field writes its exact gradient (from the closest point).
-    chunk (int): >= 1, rows per GPU dispatch (memory: 28 bytes a row); does not change the values.
-        Default 262144.
+    chunk (int): rows per GPU dispatch (memory: 28 bytes a row), 1 to 33554432; does not change the values.
+        Default 0: chosen per driver (262144 on llvmpipe, 16777216 on a GPU).
     surface_tolerance (float): > 0: |f| at which the rays of surface, near and metropolis stop (accuracy
         against time; see docs/benchmarks.md). Default 1e-5.
     entry (str): the SDF's function when it is not `sdf`, a GLSL identifier other than main, gl_* and sdfwb_*
@@ -576,7 +576,7 @@ Raises:
 
 The GIL is released while sampling.)doc");
     m.def("evaluate", &evaluate, py::arg("sdf"), py::arg("points"), py::arg("params") = py::none(), py::arg("time") = 0.0f,
-          py::arg("gradient") = true, py::arg_v("gradient_step", 0.0f, "0.0"), py::arg("entry") = "", py::arg("chunk") = 1u << 18,
+          py::arg("gradient") = true, py::arg_v("gradient_step", 0.0f, "0.0"), py::arg("entry") = "", py::arg("chunk") = 0u,
           py::arg("sign") = "", py::arg("normalize") = "",
           R"doc(The field of `sdf` at the caller's points, through the samplers' own stage: bit-equal to what the samplers
 write at the same positions with the same gradient_step.
@@ -592,7 +592,8 @@ Args:
     gradient_step (float): > 0, world units: the step of the central differences. Default 0: 1e-3, except
         that a mesh's own field gives its exact gradient (from the closest point).
     entry (str): the SDF's function when it is not `sdf`, as for sample(). Default ''.
-    chunk (int): >= 1, points per GPU dispatch; does not change the values. Default 262144.
+    chunk (int): points per GPU dispatch, 1 to 33554432; does not change the values. Default 0: chosen per
+        driver (262144 on llvmpipe, 16777216 on a GPU).
     sign (str): for a mesh file, as for sample(). Default '': winding.
     normalize (str): for a mesh file, as for sample(). Default '': none.
 

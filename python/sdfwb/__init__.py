@@ -62,18 +62,18 @@ def _is_torch_tensor(value: object) -> bool:
 @overload
 def evaluate(sdf: str, points: _CpuTensor, params: Mapping[str, ParamValue] | None = None, time: float = 0.0,
              gradient: bool = True, gradient_step: float = 0.0, entry: str = "",
-             chunk: int = 1 << 18, sign: str = "", normalize: str = "") -> dict[str, Any]: ...
+             chunk: int = 0, sign: str = "", normalize: str = "") -> dict[str, Any]: ...
 
 
 @overload
 def evaluate(sdf: str, points: npt.ArrayLike, params: Mapping[str, ParamValue] | None = None, time: float = 0.0,
              gradient: bool = True, gradient_step: float = 0.0, entry: str = "",
-             chunk: int = 1 << 18, sign: str = "", normalize: str = "") -> EvaluateResult: ...
+             chunk: int = 0, sign: str = "", normalize: str = "") -> EvaluateResult: ...
 
 
 def evaluate(sdf: str, points: Any, params: Mapping[str, ParamValue] | None = None, time: float = 0.0,
              gradient: bool = True, gradient_step: float = 0.0, entry: str = "",
-             chunk: int = 1 << 18, sign: str = "", normalize: str = "") -> EvaluateResult | dict[str, Any]:
+             chunk: int = 0, sign: str = "", normalize: str = "") -> EvaluateResult | dict[str, Any]:
     """The field of `sdf` at the caller's points, through the samplers' own stage: bit-equal to what the
     samplers write at the same positions with the same gradient_step.
 
@@ -93,7 +93,8 @@ def evaluate(sdf: str, points: Any, params: Mapping[str, ParamValue] | None = No
         gradient_step (float): > 0, world units: the step of the central differences. Default 0: 1e-3,
             except that a mesh's own field gives its exact gradient (from the closest point).
         entry (str): the SDF's function when it is not `sdf` (e.g. 'map'), as for sample(). Default ''.
-        chunk (int): >= 1, points per GPU dispatch; does not change the values. Default 262144.
+        chunk (int): points per GPU dispatch, 1 to 33554432; does not change the values. Default 0: chosen
+            per driver (262144 on llvmpipe, 16777216 on a GPU).
         sign (str): for a mesh file: 'winding' (generalized winding numbers), 'parity' or 'pseudonormal',
             as for sample(). Default '': winding.
         normalize (str): for a mesh file: 'none', 'unit-cube' or 'unit-sphere', as for sample().

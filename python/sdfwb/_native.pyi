@@ -112,7 +112,7 @@ def sample(
     seed: int = 0,
     time: float = 0.0,
     gradient_step: float = 0.0,
-    chunk: int = 262144,
+    chunk: int = 0,
     surface_tolerance: float = 1e-5,
     entry: str = "",
     params: Mapping[str, ParamValue] | None = None,
@@ -130,7 +130,7 @@ def evaluate(
     gradient: bool = True,
     gradient_step: float = 0.0,
     entry: str = "",
-    chunk: int = 262144,
+    chunk: int = 0,
     sign: str = "",
     normalize: str = "",
 ) -> EvaluateResult: ...

@@ -60,33 +60,86 @@ std::uint32_t squareSide(std::uint64_t count) {
     return std::uint32_t(std::max<std::uint64_t>(n, 1));
 }
 
-// Positions, distances and gradients of one dispatch. Mapped sets are allocated immutable and
-// stay mapped (persistent, coherent), so the host reads the rows where the shader wrote them.
+// Positions, distances and gradients of one dispatch, in one of three kinds of memory.
+enum class BufferKind {
+    ReadBack, // run(): read back with glGetBufferSubData
+    Mapped,   // immutable, persistently and coherently mapped: the host reads the rows in place
+    Device,   // immutable GPU memory, copied by the GPU into a Mapped set (staging)
+};
+
 struct BufferSet {
     GlBuffer buffers[3];
     const float* mapped[3] = {};
     std::uint32_t capacity = 0;
     bool interleaved = false; // buffers[0] holds 7-float rows; the other two are placeholders
+    BufferKind kind = BufferKind::ReadBack;
 
     void reset() {
         for (GlBuffer& buffer : buffers) buffer.reset(); // deleting a buffer unmaps it
         for (const float*& pointer : mapped) pointer = nullptr;
         capacity = 0;
         interleaved = false;
+        kind = BufferKind::ReadBack;
     }
     void release() {
         for (GlBuffer& buffer : buffers) buffer.release();
     }
 };
 
+// The counts one dispatch adds up (the rows with a non-finite value, then the GLSL mesh walks'
+// counts under SDFWB_MESH_COUNT), read by the host through a persistent mapping once the
+// dispatch's fence has signalled: no read-back that waits on each chunk.
+constexpr int kCountWords = 6;
+
+// A chunk that submitMapped() dispatched and collectMapped() has not yet returned.
+struct PendingChunk {
+    bool active = false;
+    std::uint32_t count = 0;
+    bool interleaved = false;
+    bool staged = false; // the rows are in the staging set
+    std::array<std::uint32_t, 3> shift{};
+    const float* inputs = nullptr; // the caller's points (the CPU engine: nothing was dispatched)
+    SampleUniforms uniforms;       // for the values computed on collection (CPU engine, values program)
+    GLsync fence = nullptr;
+    GpuTimer timer;
+    std::chrono::steady_clock::time_point issued;
+
+    void dropFence() {
+        if (fence) glDeleteSync(fence);
+        fence = nullptr;
+    }
+};
+
+// Waits until `fence` has signalled (the driver is flushed on the first wait). False: the wait failed.
+bool waitFor(GLsync fence) {
+    GLbitfield flags = GL_SYNC_FLUSH_COMMANDS_BIT;
+    for (;;) {
+        const GLenum result = glClientWaitSync(fence, flags, GLuint64(1000000000u));
+        if (result == GL_ALREADY_SIGNALED || result == GL_CONDITION_SATISFIED) return true;
+        if (result == GL_WAIT_FAILED) return false;
+        flags = 0;
+    }
+}
+
+bool softwareDriver() {
+    const char* driver = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    return driver && (std::strstr(driver, "llvmpipe") || std::strstr(driver, "softpipe"));
+}
+
 struct SampleCompute::Impl {
     GlProgram program;
-    BufferSet plain;         // run(): read back with glGetBufferSubData
-    BufferSet slots[kSlots]; // runMapped()
-    GlBuffer badRows;        // four uints: the dispatch's rows with a non-finite value, then the GLSL
-                             // mesh walks' counts (SDFWB_MESH_COUNT)
-    GlBuffer inputs;         // caller's points (analysis/points.glsl)
-    SdfTextures textures;    // g3d_uniformRandom and iChannel0..3, made when the program reads them
+    BufferSet plain;              // run(): read back with glGetBufferSubData
+    BufferSet slots[kMaxSlots];   // runMapped(): mapped, or on the GPU when staging
+    BufferSet staging[kMaxSlots]; // staging: the mapped copies of `slots`
+    PendingChunk pending[kMaxSlots];
+    SamplePipeline settings; // as set (zeros and -1: per driver)
+    // One region of kCountWords uints per slot and one for run(), at a stride the driver's
+    // shader-storage offset alignment allows, mapped for good.
+    GlBuffer counts;
+    std::uint32_t* countWords = nullptr;
+    GLsizeiptr countStride = 0;
+    GlBuffer inputs;      // caller's points (analysis/points.glsl)
+    SdfTextures textures; // g3d_uniformRandom and iChannel0..3, made when the program reads them
     std::array<std::string, shaders::kShadertoyChannels> channels; // the SDF's channel images
     std::shared_ptr<const meshfield::MeshField> mesh;              // a mesh SDF's triangles
     // The native engine for a mesh's own field (null: the GLSL field computes the values).
@@ -97,7 +150,7 @@ struct SampleCompute::Impl {
     GpuTimer kernelTimer;
     double kernelMilliseconds = 0.0; // since build(); -1 once a timer could not be trusted
     // With the CPU engine, each slot's rows on the host (the mapped buffers are read-only).
-    std::vector<float> hostRows[kSlots][3];
+    std::vector<float> hostRows[kMaxSlots][3];
     std::string source;
     // Uniform locations, each asked of the driver once per program (issue 49: not per chunk).
     mutable std::unordered_map<std::string, GLint> locations;
@@ -106,7 +159,17 @@ struct SampleCompute::Impl {
         if (it == locations.end()) it = locations.emplace(name, glGetUniformLocation(program.id(), name)).first;
         return it->second;
     }
-    Expected<void> reserve(BufferSet& set, std::uint32_t count, bool mapped, bool interleaved = false);
+    Expected<void> reserve(BufferSet& set, std::uint32_t count, BufferKind kind, bool interleaved = false);
+    Expected<void> reserveCounts();
+    int slotCount() const { return std::clamp(settings.sets, 3, kMaxSlots); }
+    bool staged() const { return settings.staging < 0 ? !softwareDriver() : settings.staging > 0; }
+    // Binds the uniforms and buffers, zeroes count region `region` and dispatches; waits for nothing.
+    Expected<void> issue(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, BufferSet& set, bool positions,
+                         bool gradients, bool interleaved, std::array<std::uint32_t, 3> shift, const float* inputRows,
+                         int region);
+    // Region `region`'s counts, once the dispatch that made them has finished: the bad rows.
+    std::uint32_t takeCounts(int region);
+    void finishPending();
     // The CPU engine's values and gradients at the positions; the rows with a non-finite value.
     // The sampler is analysis/points.glsl: its positions are the caller's points one for one (the
     // mesher's lattice also reads per-sample inputs when B = 0, but those are grid indices).
@@ -154,9 +217,9 @@ struct SampleCompute::Impl {
         }
         return nonFinite;
     }
+    // issue() into run()'s region, then waits for it: the bad rows.
     Expected<std::uint32_t> dispatch(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, BufferSet& set,
-                                     bool positions, bool gradients, bool interleaved = false,
-                                     std::array<std::uint32_t, 3> shift = {}, const float* inputRows = nullptr);
+                                     bool positions, bool gradients, const float* inputRows = nullptr);
     // The GLSL mesh field at the caller's points (analysis/points.glsl): a mesh's walks diverge
     // less between neighbouring invocations, so the points go up in Morton order over the mesh's
     // box and the results come back to the caller's order. 1.4-1.7x the points/s on llvmpipe's
@@ -190,8 +253,8 @@ Expected<std::uint32_t> SampleCompute::Impl::runSorted(const SampleUniforms& uni
         const std::size_t row = std::size_t(order[i] & 0xffffffffu);
         std::copy(in + 3 * row, in + 3 * row + 3, sorted.data() + 3 * i);
     }
-    if (auto ok = reserve(plain, count, false); !ok) return ok.error();
-    auto bad = dispatch(uniforms, first, count, plain, false, gradients != nullptr, false, {}, sorted.data());
+    if (auto ok = reserve(plain, count, BufferKind::ReadBack); !ok) return ok.error();
+    auto bad = dispatch(uniforms, first, count, plain, false, gradients != nullptr, sorted.data());
     if (!bad) return bad;
     std::vector<float> values(count), slopes(gradients ? 3 * std::size_t(count) : 0);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, plain.buffers[1].id());
@@ -212,12 +275,12 @@ Expected<std::uint32_t> SampleCompute::Impl::runSorted(const SampleUniforms& uni
     return checkedBadRows(MappedRows{positions, distances, gradients, *bad}, count);
 }
 
-Expected<void> SampleCompute::Impl::reserve(BufferSet& set, std::uint32_t count, bool mapped, bool interleaved) {
-    if (count <= set.capacity && interleaved == set.interleaved) return {};
+Expected<void> SampleCompute::Impl::reserve(BufferSet& set, std::uint32_t count, BufferKind kind, bool interleaved) {
+    if (count <= set.capacity && interleaved == set.interleaved && kind == set.kind) return {};
     set.reset();
     while (glGetError() != GL_NO_ERROR) {}
-    // Mapped arrays have room for runMapped()'s shift before their rows.
-    const GLsizeiptr room = mapped && !interleaved ? GLsizeiptr(kMaxShift) * 4 : 0;
+    // Mapped arrays, and the GPU arrays they copy, have room for runMapped()'s shift before their rows.
+    const GLsizeiptr room = kind != BufferKind::ReadBack && !interleaved ? GLsizeiptr(kMaxShift) * 4 : 0;
     const GLsizeiptr sizes[3] = {GLsizeiptr(count) * (interleaved ? 28 : 12) + room,
                                  interleaved ? 4 : GLsizeiptr(count) * 4 + room, interleaved ? 4 : GLsizeiptr(count) * 12 + room};
     const GLbitfield access = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
@@ -226,15 +289,18 @@ Expected<void> SampleCompute::Impl::reserve(BufferSet& set, std::uint32_t count,
         glGenBuffers(1, &id);
         set.buffers[i] = GlBuffer(id);
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
-        if (mapped) {
+        if (kind == BufferKind::Mapped) {
             glBufferStorage(GL_SHADER_STORAGE_BUFFER, sizes[i], nullptr, access);
             set.mapped[i] = static_cast<const float*>(glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, sizes[i], access));
+        } else if (kind == BufferKind::Device) {
+            glBufferStorage(GL_SHADER_STORAGE_BUFFER, sizes[i], nullptr, 0);
         } else {
             glBufferData(GL_SHADER_STORAGE_BUFFER, sizes[i], nullptr, GL_DYNAMIC_READ);
         }
     }
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     const GLenum error = glGetError();
+    const bool mapped = kind == BufferKind::Mapped;
     if (error != GL_NO_ERROR || (mapped && (!set.mapped[0] || !set.mapped[1] || !set.mapped[2]))) {
         set.reset();
         return makeError("sampling: cannot allocate buffers for " + std::to_string(count) + " samples (" +
@@ -243,7 +309,56 @@ Expected<void> SampleCompute::Impl::reserve(BufferSet& set, std::uint32_t count,
     }
     set.capacity = count;
     set.interleaved = interleaved;
+    set.kind = kind;
     return {};
+}
+
+Expected<void> SampleCompute::Impl::reserveCounts() {
+    if (countWords) return {};
+    GLint alignment = 16;
+    glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &alignment);
+    alignment = std::max(alignment, 4);
+    const GLsizeiptr words = GLsizeiptr(kCountWords) * 4;
+    countStride = (words + alignment - 1) / alignment * alignment;
+    const GLsizeiptr size = countStride * (kMaxSlots + 1);
+    const GLbitfield access = GL_MAP_READ_BIT | GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+    while (glGetError() != GL_NO_ERROR) {}
+    GLuint id = 0;
+    glGenBuffers(1, &id);
+    counts = GlBuffer(id);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
+    glBufferStorage(GL_SHADER_STORAGE_BUFFER, size, nullptr, access);
+    countWords = static_cast<std::uint32_t*>(glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, size, access));
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    if (const GLenum error = glGetError(); error != GL_NO_ERROR || !countWords) {
+        counts.reset();
+        countWords = nullptr;
+        return makeError("sampling: cannot map the count buffer (" +
+                         (error != GL_NO_ERROR ? glErrorName(error) : std::string("mapping failed")) + ")");
+    }
+    std::memset(countWords, 0, std::size_t(size));
+    return {};
+}
+
+std::uint32_t SampleCompute::Impl::takeCounts(int region) {
+    const std::uint32_t* words = countWords + std::size_t(region) * std::size_t(countStride) / 4;
+    if (countWalks) {
+        counters.nearestNodes += words[1];
+        counters.windingNodes += words[2];
+        counters.cachedSigns += words[3];
+        counters.segmentNodes += words[4];
+        counters.crossedSigns += words[5];
+    }
+    return words[0];
+}
+
+void SampleCompute::Impl::finishPending() {
+    for (PendingChunk& chunk : pending) {
+        if (chunk.fence) waitFor(chunk.fence);
+        chunk.dropFence();
+        chunk.timer.reset();
+        chunk.active = false;
+    }
 }
 
 SampleCompute::SampleCompute() : m_impl(std::make_unique<Impl>()) {}
@@ -252,7 +367,9 @@ SampleCompute::~SampleCompute() {
     m_impl->program.release();
     m_impl->plain.release();
     for (BufferSet& set : m_impl->slots) set.release();
-    m_impl->badRows.release();
+    for (BufferSet& set : m_impl->staging) set.release();
+    for (PendingChunk& chunk : m_impl->pending) chunk.timer.release(); // fences: the context is gone
+    m_impl->counts.release();
     m_impl->inputs.release();
     m_impl->textures.release();
     m_impl->kernelTimer.release();
@@ -365,9 +482,10 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     return diagnostics;
 }
 
-Expected<std::uint32_t> SampleCompute::Impl::dispatch(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count,
-                                                      BufferSet& set, bool positions, bool gradients, bool interleaved,
-                                                      std::array<std::uint32_t, 3> shift, const float* inputRows) {
+Expected<void> SampleCompute::Impl::issue(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count,
+                                          BufferSet& set, bool positions, bool gradients, bool interleaved,
+                                          std::array<std::uint32_t, 3> shift, const float* inputRows, int region) {
+    if (auto ok = reserveCounts(); !ok) return ok;
     glUseProgram(program.id());
     glUniform1ui(location("sdfwb_sampleCount"), uniforms.sampleCount);
     glUniform2ui(location("sdfwb_seed"), GLuint(uniforms.seed & 0xffffffffu), GLuint(uniforms.seed >> 32));
@@ -393,18 +511,11 @@ Expected<std::uint32_t> SampleCompute::Impl::dispatch(const SampleUniforms& unif
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingPositions, set.buffers[0].id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingDistances, set.buffers[1].id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingGradients, set.buffers[2].id());
-    if (!badRows) {
-        GLuint id = 0;
-        glGenBuffers(1, &id);
-        badRows = GlBuffer(id);
-        glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
-        glBufferData(GL_SHADER_STORAGE_BUFFER, 32, nullptr, GL_DYNAMIC_READ);
-    }
-    const std::uint32_t zero[6] = {0, 0, 0, 0, 0, 0};
-    const GLsizeiptr countBytes = countWalks ? 24 : 4;
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, badRows.id());
-    glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, countBytes, zero);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingBadRows, badRows.id());
+    // The region's last chunk has finished (its fence was waited on): zeroed through the mapping.
+    std::uint32_t* words = countWords + std::size_t(region) * std::size_t(countStride) / 4;
+    std::fill(words, words + kCountWords, 0u);
+    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, kBindingBadRows, counts.id(), GLintptr(region) * countStride,
+                      GLsizeiptr(kCountWords) * 4);
     if (uniforms.inputPoints) {
         if (!inputs) {
             GLuint id = 0;
@@ -419,32 +530,36 @@ Expected<std::uint32_t> SampleCompute::Impl::dispatch(const SampleUniforms& unif
             glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(count) * 12,
                          inputRows ? inputRows : uniforms.inputPoints + 3 * std::size_t(first), GL_STREAM_DRAW);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingInputs, inputs.id());
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     }
-    const auto dispatched = std::chrono::steady_clock::now();
-    kernelTimer.begin();
-    glDispatchCompute((count + 63u) / 64u, 1, 1);
-    kernelTimer.end();
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
-    std::uint32_t counts[6] = {0, 0, 0, 0, 0, 0};
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, badRows.id());
-    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, countBytes, counts); // waits for the dispatch
-    const std::uint32_t bad = counts[0];
-    const double kernel = kernelTimer.milliseconds(
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - dispatched).count());
-    kernelMilliseconds = kernel < 0.0 || kernelMilliseconds < 0.0 ? -1.0 : kernelMilliseconds + kernel;
-    if (countWalks) {
-        counters.nearestNodes += counts[1];
-        counters.windingNodes += counts[2];
-        counters.cachedSigns += counts[3];
-        counters.segmentNodes += counts[4];
-        counters.crossedSigns += counts[5];
-    }
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    // Past 65,535 groups of 64 (the least every driver allows in x), the groups go in rows of
+    // gx; sample.comp numbers the invocations across them.
+    const std::uint32_t groups = (count + 63u) / 64u;
+    const std::uint32_t gx = std::clamp(groups, 1u, 65535u);
+    glDispatchCompute(gx, (groups + gx - 1u) / gx, 1);
     glUseProgram(0);
     if (GLenum error = glGetError(); error != GL_NO_ERROR)
         return makeError("sampling: dispatch of " + std::to_string(count) + " samples failed (" + glErrorName(error) +
                          "); try a smaller --chunk");
-    return bad;
+    return {};
+}
+
+Expected<std::uint32_t> SampleCompute::Impl::dispatch(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count,
+                                                      BufferSet& set, bool positions, bool gradients, const float* inputRows) {
+    const auto dispatched = std::chrono::steady_clock::now();
+    kernelTimer.begin();
+    auto ok = issue(uniforms, first, count, set, positions, gradients, false, {}, inputRows, kMaxSlots);
+    kernelTimer.end();
+    if (!ok) return ok.error();
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
+    GLsync fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    const bool done = fence && waitFor(fence);
+    if (fence) glDeleteSync(fence);
+    if (!done) return makeError("sampling: waiting for the dispatch of " + std::to_string(count) + " samples failed");
+    const double kernel = kernelTimer.milliseconds(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - dispatched).count());
+    kernelMilliseconds = kernel < 0.0 || kernelMilliseconds < 0.0 ? -1.0 : kernelMilliseconds + kernel;
+    return takeCounts(kMaxSlots);
 }
 
 Expected<std::uint32_t> SampleCompute::run(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count,
@@ -461,7 +576,7 @@ Expected<std::uint32_t> SampleCompute::run(const SampleUniforms& uniforms, std::
     }
     if (m_impl->mortonInputs && m_impl->positionsAreInputs(uniforms) && distances)
         return m_impl->runSorted(uniforms, first, count, positions, distances, gradients);
-    if (auto ok = m_impl->reserve(m_impl->plain, count, false); !ok) return ok.error();
+    if (auto ok = m_impl->reserve(m_impl->plain, count, BufferKind::ReadBack); !ok) return ok.error();
     std::vector<float> scratch;
     const bool valuesElsewhere = m_impl->query || m_impl->values;
     if (valuesElsewhere && !positions) { // the engine needs the positions even where the caller does not
@@ -509,43 +624,104 @@ std::uint32_t countNonFiniteRows(const MappedRows& rows, std::uint32_t count) {
     return bad;
 }
 
-Expected<MappedRows> SampleCompute::runMapped(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, int slot,
-                                              RowLayout layout, std::array<std::uint32_t, 3> shift) {
+Expected<void> SampleCompute::submitMapped(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, int slot,
+                                           RowLayout layout, std::array<std::uint32_t, 3> shift) {
     if (!m_impl->program) return makeError("sampling: no compiled sampler");
     if (count > kMaxChunk)
         return makeError("sampling: chunk of " + std::to_string(count) + " exceeds " + std::to_string(kMaxChunk));
-    BufferSet& set = m_impl->slots[std::size_t(slot) % kSlots];
+    const int at = slot % m_impl->slotCount();
+    PendingChunk& chunk = m_impl->pending[at];
+    if (chunk.fence) waitFor(chunk.fence); // a chunk submitted and never collected
+    chunk.dropFence();
+    chunk.active = false;
     while (glGetError() != GL_NO_ERROR) {}
     const bool interleaved = layout == RowLayout::Interleaved;
     if (interleaved) shift = {};
     for (std::uint32_t floats : shift)
         if (floats >= kMaxShift) return makeError("sampling: array shift of " + std::to_string(floats) + " floats");
-    const float* inputs =
+    chunk.count = count;
+    chunk.interleaved = interleaved;
+    chunk.shift = shift;
+    chunk.inputs =
         m_impl->query && m_impl->positionsAreInputs(uniforms) ? uniforms.inputPoints + 3 * std::size_t(first) : nullptr;
-    if (!inputs) {
-        if (auto ok = m_impl->reserve(set, std::max(count, 1u), true, interleaved); !ok) return ok.error();
+    if (m_impl->query || m_impl->values) chunk.uniforms = uniforms;
+    if (chunk.inputs) { // the CPU engine at the caller's points: nothing for the GL to do
+        chunk.active = true;
+        return {};
     }
-    auto bad =
-        inputs ? Expected<std::uint32_t>(0u) : m_impl->dispatch(uniforms, first, count, set, true, true, interleaved, shift);
-    if (!bad) return bad.error();
-    // The count's read-back waited for the dispatch; coherent mappings see its writes after a fence.
+    const bool staged = m_impl->staged();
+    chunk.staged = staged;
+    BufferSet& set = m_impl->slots[at];
+    const std::uint32_t rows = std::max(count, 1u);
+    if (auto ok = m_impl->reserve(set, rows, staged ? BufferKind::Device : BufferKind::Mapped, interleaved); !ok) return ok;
+    if (staged)
+        if (auto ok = m_impl->reserve(m_impl->staging[at], rows, BufferKind::Mapped, interleaved); !ok) return ok;
+    chunk.issued = std::chrono::steady_clock::now();
+    chunk.timer.begin();
+    auto ok = m_impl->issue(uniforms, first, count, set, true, true, interleaved, shift, nullptr, at);
+    chunk.timer.end();
+    if (!ok) return ok;
+    if (staged) { // the GPU copies the rows (and the shift before them) into the mapped buffers
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        const GLsizeiptr room = interleaved ? 0 : GLsizeiptr(kMaxShift) * 4;
+        const GLsizeiptr sizes[3] = {GLsizeiptr(count) * (interleaved ? 28 : 12) + room,
+                                     interleaved ? 0 : GLsizeiptr(count) * 4 + room,
+                                     interleaved ? 0 : GLsizeiptr(count) * 12 + room};
+        for (int i = 0; i < 3; ++i) {
+            if (sizes[i] == 0) continue;
+            glBindBuffer(GL_COPY_READ_BUFFER, set.buffers[i].id());
+            glBindBuffer(GL_COPY_WRITE_BUFFER, m_impl->staging[at].buffers[i].id());
+            glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, sizes[i]);
+        }
+        glBindBuffer(GL_COPY_READ_BUFFER, 0);
+        glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+    }
+    glMemoryBarrier(GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
+    chunk.fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    glFlush(); // the GPU starts on it now, not at the first wait
+    if (GLenum error = glGetError(); error != GL_NO_ERROR || !chunk.fence) {
+        chunk.dropFence();
+        return makeError("sampling: dispatch of " + std::to_string(count) + " samples failed (" +
+                         (error != GL_NO_ERROR ? glErrorName(error) : std::string("no fence")) + "); try a smaller --chunk");
+    }
+    chunk.active = true;
+    return {};
+}
+
+Expected<MappedRows> SampleCompute::collectMapped(int slot) {
+    const int at = slot % m_impl->slotCount();
+    PendingChunk& chunk = m_impl->pending[at];
+    if (!chunk.active) return makeError("sampling: nothing was submitted into slot " + std::to_string(slot));
+    chunk.active = false;
+    const std::uint32_t count = chunk.count;
+    const bool interleaved = chunk.interleaved;
+    const std::array<std::uint32_t, 3> shift = chunk.shift;
+    const float* inputs = chunk.inputs;
+    std::uint32_t bad = 0;
+    const float* const* mapped = m_impl->slots[at].mapped;
     if (!inputs) {
-        GLsync fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
-        glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, GLuint64(60) * 1000000000u);
-        glDeleteSync(fence);
+        const bool done = waitFor(chunk.fence);
+        chunk.dropFence();
+        if (!done) return makeError("sampling: waiting for the dispatch of " + std::to_string(count) + " samples failed");
+        const double kernel = chunk.timer.milliseconds(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - chunk.issued).count());
+        double& total = m_impl->kernelMilliseconds;
+        total = kernel < 0.0 || total < 0.0 ? -1.0 : total + kernel;
+        bad = m_impl->takeCounts(at);
+        if (chunk.staged) mapped = m_impl->staging[at].mapped;
     }
     if (m_impl->query || m_impl->values) {
         // The mapping is read-only: the rows are completed in this slot's host arrays, at the
         // same shifts, and the caller reads them there.
-        std::vector<float>(&host)[3] = m_impl->hostRows[std::size_t(slot) % kSlots];
+        std::vector<float>(&host)[3] = m_impl->hostRows[at];
         if (interleaved) {
             host[0].resize(std::size_t(count) * 7);
             float* base = host[0].data();
             if (inputs)
                 for (std::size_t i = 0; i < count; ++i) std::copy(inputs + 3 * i, inputs + 3 * i + 3, base + 7 * i);
             else
-                std::copy(set.mapped[0], set.mapped[0] + std::size_t(count) * 7, base);
-            auto valuesBad = m_impl->evaluateRows(uniforms, base, 7, base + 3, 7, base + 4, 7, count);
+                std::copy(mapped[0], mapped[0] + std::size_t(count) * 7, base);
+            auto valuesBad = m_impl->evaluateRows(chunk.uniforms, base, 7, base + 3, 7, base + 4, 7, count);
             if (!valuesBad) return valuesBad.error();
             return MappedRows{nullptr, nullptr, nullptr, *valuesBad, base};
         }
@@ -554,25 +730,50 @@ Expected<MappedRows> SampleCompute::runMapped(const SampleUniforms& uniforms, st
         float* p = host[0].data() + shift[0];
         float* d = host[1].data() + shift[1];
         float* g = host[2].data() + shift[2];
-        const float* from = inputs ? inputs : set.mapped[0] + shift[0];
+        const float* from = inputs ? inputs : mapped[0] + shift[0];
         std::copy(from, from + sizes[0], p);
-        auto valuesBad = m_impl->evaluateRows(uniforms, p, 3, d, 1, g, 3, count);
+        auto valuesBad = m_impl->evaluateRows(chunk.uniforms, p, 3, d, 1, g, 3, count);
         if (!valuesBad) return valuesBad.error();
         return MappedRows{p, d, g, *valuesBad};
     }
-    MappedRows rows = interleaved
-                          ? MappedRows{nullptr, nullptr, nullptr, *bad, set.mapped[0]}
-                          : MappedRows{set.mapped[0] + shift[0], set.mapped[1] + shift[1], set.mapped[2] + shift[2], *bad};
+    MappedRows rows = interleaved ? MappedRows{nullptr, nullptr, nullptr, bad, mapped[0]}
+                                  : MappedRows{mapped[0] + shift[0], mapped[1] + shift[1], mapped[2] + shift[2], bad};
     rows.badRows = checkedBadRows(rows, count);
     return rows;
 }
+
+Expected<MappedRows> SampleCompute::runMapped(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, int slot,
+                                              RowLayout layout, std::array<std::uint32_t, 3> shift) {
+    if (auto ok = submitMapped(uniforms, first, count, slot, layout, shift); !ok) return ok.error();
+    return collectMapped(slot);
+}
+
+void SampleCompute::setPipeline(const SamplePipeline& pipeline) {
+    m_impl->finishPending();
+    m_impl->settings = pipeline;
+}
+
+SamplePipeline SampleCompute::pipeline() const {
+    SamplePipeline resolved = m_impl->settings;
+    resolved.sets = m_impl->slotCount();
+    const bool software = softwareDriver();
+    const int most = resolved.sets - 2;
+    resolved.ahead = resolved.ahead > 0 ? std::min(resolved.ahead, most) : software ? 1 : most;
+    resolved.staging = m_impl->staged() ? 1 : 0;
+    return resolved;
+}
+
+std::uint32_t SampleCompute::preferredChunk() const { return softwareDriver() ? kSoftwareChunk : kGpuChunk; }
 
 void SampleCompute::releaseGl() {
     m_impl->program.reset();
     m_impl->locations.clear();
     m_impl->plain.reset();
+    m_impl->finishPending();
     for (BufferSet& set : m_impl->slots) set.reset();
-    m_impl->badRows.reset();
+    for (BufferSet& set : m_impl->staging) set.reset();
+    m_impl->counts.reset();
+    m_impl->countWords = nullptr;
     m_impl->inputs.reset();
     m_impl->textures.reset();
     m_impl->kernelTimer.reset();

@@ -20,17 +20,20 @@ namespace {
 
 constexpr std::uint32_t kSmallestChunk = 4096;
 
-// Runs the job chunk by chunk. `dispatch(uniforms, first, done, count)` computes rows [done,
-// done + count) of this run (global index first) and returns them as renderer::MappedRows;
-// `consume(rows, count)` receives each chunk's rows in order.
-template <class Dispatch, class Consume>
-Expected<SamplingReport> run(const SamplingJob& job, Dispatch dispatch, Consume consume, const ProgressSink& progress) {
+// Runs the job chunk by chunk, `chunk` rows at a time. `submit(uniforms, first, done, count)`
+// starts rows [done, done + count) of this run (global index first) and returns a token;
+// `collect(token)` returns them as renderer::MappedRows once they are made; `consume(rows, count,
+// token)` receives each chunk's rows in order. Up to `ahead` chunks are submitted before the
+// oldest is collected, so a GPU computes the next while the host takes the last.
+template <class Submit, class Collect, class Consume>
+Expected<SamplingReport> run(const SamplingJob& job, std::uint32_t chunk, int ahead, Submit submit, Collect collect,
+                             Consume consume, const ProgressSink& progress) {
     if (auto ok = validate(job); !ok) return ok.error();
     auto start = std::chrono::steady_clock::now();
     SamplingReport report;
     report.firstIndex = job.firstIndex();
     const std::uint64_t rows = job.rows();
-    std::uint32_t chunk = std::min(job.chunkSize, renderer::SampleCompute::kMaxChunk);
+    chunk = std::clamp(chunk, 1u, renderer::SampleCompute::kMaxChunk);
     renderer::SampleUniforms uniforms;
     uniforms.sampleCount = std::uint32_t(job.count);
     uniforms.seed = job.seed;
@@ -42,48 +45,73 @@ Expected<SamplingReport> run(const SamplingJob& job, Dispatch dispatch, Consume 
     uniforms.inputPoints = job.inputPoints;
     uniforms.inputTableFloats = job.inputTableFloats;
     uniforms.sdfParameters = job.sdfParameters;
+    struct InFlight {
+        std::uint64_t done;
+        std::uint32_t count;
+        int token;
+    };
+    std::deque<InFlight> inFlight;
+    // Collects the oldest chunk in flight; hands it on unless the run was cancelled.
+    auto retire = [&](bool keep) -> Expected<void> {
+        const InFlight oldest = inFlight.front();
+        inFlight.pop_front();
+        Expected<renderer::MappedRows> chunkRows = collect(oldest.token);
+        if (!chunkRows) return chunkRows.error();
+        if (!keep) return {};
+        report.badRows += chunkRows->badRows;
+        if (auto ok = consume(*chunkRows, oldest.count, oldest.token); !ok) return ok.error();
+        report.rows = oldest.done + oldest.count;
+        progress(report.rows, rows);
+        return {};
+    };
     progress(0, rows);
-    for (std::uint64_t done = 0; done < rows;) {
+    for (std::uint64_t submitted = 0; submitted < rows;) {
         if (progress.isCancelled()) {
             report.cancelled = true;
             break;
         }
-        std::uint32_t count = std::uint32_t(std::min<std::uint64_t>(chunk, rows - done));
-        Expected<renderer::MappedRows> chunkRows = makeError("");
+        while (inFlight.size() >= std::size_t(std::max(ahead, 1)))
+            if (auto ok = retire(true); !ok) return ok.error();
+        std::uint32_t count = std::uint32_t(std::min<std::uint64_t>(chunk, rows - submitted));
+        Expected<int> token = makeError("");
         try {
-            chunkRows = dispatch(uniforms, std::uint32_t(report.firstIndex + done), done, count);
+            token = submit(uniforms, std::uint32_t(report.firstIndex + submitted), submitted, count);
         } catch (const std::bad_alloc&) {
-            chunkRows = makeError("sampling: out of memory for a chunk of " + std::to_string(count) + " samples (" +
-                                  std::to_string(std::uint64_t(count) * 28u >> 20) + " MiB on the host)");
+            token = makeError("sampling: out of memory for a chunk of " + std::to_string(count) + " samples (" +
+                              std::to_string(std::uint64_t(count) * 28u >> 20) + " MiB on the host)");
         }
-        if (!chunkRows) {
+        if (!token) {
             // Out of GPU/driver memory (or another failed dispatch): rows depend only on their
             // index, so the same rows can be made in smaller pieces. Halve down to 4096.
-            if (count <= kSmallestChunk) return chunkRows.error();
+            if (count <= kSmallestChunk) return token.error();
             chunk = std::max(kSmallestChunk, count / 2);
-            std::string message = chunkRows.error().message;
+            std::string message = token.error().message;
             if (message.rfind("sampling: ", 0) == 0) message.erase(0, 10);
             log::warning("sampling", message + "; continuing in chunks of " + std::to_string(chunk) + " samples");
             continue;
         }
-        report.badRows += chunkRows->badRows;
-        if (auto ok = consume(*chunkRows, count); !ok) return ok.error();
-        done += count;
-        report.rows = done;
-        progress(done, rows);
+        inFlight.push_back({submitted, count, *token});
+        submitted += count;
     }
+    while (!inFlight.empty())
+        if (auto ok = retire(!report.cancelled); !ok) return ok.error();
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;
 }
 
+// The chunk a job asks for, or the driver's when it leaves it (0).
+std::uint32_t chunkFor(const SamplingJob& job, const renderer::SampleCompute& compute) {
+    return job.chunkSize > 0 ? job.chunkSize : compute.preferredChunk();
+}
+
 // Writes chunk k on its own thread while the GL thread computes the next chunks into the other
-// SampleCompute::kSlots mapped buffer sets: the writer reads the rows where the shader wrote them.
-// Four slots rather than two absorb the writer's uneven pace (a write that waits on the disk), so
-// the GL thread seldom waits for a free slot.
+// mapped buffer sets of the ring (SampleCompute::pipeline().sets): the writer reads the rows where
+// the shader (or the GPU's copy) left them. Four slots rather than two absorb the writer's uneven
+// pace (a write that waits on the disk), so the GL thread seldom waits for a free slot.
 // The first write error stops the run at the next chunk.
 class PipelinedWriter {
 public:
-    explicit PipelinedWriter(SampleWriter& writer) : m_writer(writer), m_thread([this] { loop(); }) {}
+    PipelinedWriter(SampleWriter& writer, int slots) : m_writer(writer), m_slots(slots), m_thread([this] { loop(); }) {}
     PipelinedWriter(const PipelinedWriter&) = delete;
     PipelinedWriter& operator=(const PipelinedWriter&) = delete;
     ~PipelinedWriter() {
@@ -95,13 +123,16 @@ public:
         m_thread.join();
     }
 
-    // The slot the next chunk is computed into, once the writer no longer reads it.
-    int nextSlot() {
+    // The slot the next chunk is computed into, once the writer no longer reads it. Slots are
+    // taken in turn, so the chunks still on the GPU (fewer than the slots) are never taken.
+    int acquire() {
         const auto start = std::chrono::steady_clock::now();
         std::unique_lock lock(m_mutex);
         m_changed.wait(lock, [&] { return !m_busy[m_next]; });
         m_waitSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        return m_next;
+        const int slot = m_next;
+        m_next = (m_next + 1) % m_slots;
+        return slot;
     }
 
     // The GL thread's time waiting in nextSlot(), and the writer's in its appends (after drain()).
@@ -111,16 +142,15 @@ public:
         return m_writeSeconds;
     }
 
-    // Hands the chunk computed into nextSlot() to the writer.
-    Expected<void> submit(const renderer::MappedRows& rows, std::size_t n) {
+    // Hands the chunk computed into `slot` to the writer.
+    Expected<void> submit(const renderer::MappedRows& rows, std::size_t n, int slot) {
         {
             std::lock_guard lock(m_mutex);
             if (m_error) return *m_error;
-            m_busy[m_next] = true;
-            m_queue.push_back({rows, n, m_next});
+            m_busy[slot] = true;
+            m_queue.push_back({rows, n, slot});
         }
         m_changed.notify_all();
-        m_next = (m_next + 1) % renderer::SampleCompute::kSlots;
         return {};
     }
 
@@ -165,7 +195,8 @@ private:
     }
 
     SampleWriter& m_writer;
-    bool m_busy[renderer::SampleCompute::kSlots] = {};
+    const int m_slots;
+    bool m_busy[renderer::SampleCompute::kMaxSlots] = {};
     int m_next = 0;              // the slot the GL thread computes into next (its thread only)
     double m_waitSeconds = 0.0;  // GL thread only
     double m_writeSeconds = 0.0; // under m_mutex
@@ -191,7 +222,6 @@ Expected<void> validate(const SamplingJob& job) {
     if (job.shardCount == 0 || job.shardIndex >= job.shardCount)
         return makeError("'shard_index', 'shard_count': " + std::to_string(job.shardIndex) + "/" +
                          std::to_string(job.shardCount) + " is not a slice (0 <= K < COUNT)");
-    if (job.chunkSize == 0) return makeError("--chunk: must be at least 1");
     if (!(job.gradientStep > 0.0f) || !std::isfinite(job.gradientStep)) return makeError("'gradient_step': must be positive");
     if (!(job.surfaceTolerance > 0.0f) || !std::isfinite(job.surfaceTolerance))
         return makeError("'surface_tolerance': must be positive");
@@ -200,16 +230,22 @@ Expected<void> validate(const SamplingJob& job) {
 
 Expected<SamplingReport> sampleInto(renderer::SampleCompute& compute, const SamplingJob& job, float* positions, float* distances,
                                     float* gradients, const ProgressSink& progress) {
-    auto dispatch = [&](const renderer::SampleUniforms& uniforms, std::uint32_t first, std::uint64_t done,
-                        std::uint32_t count) -> Expected<renderer::MappedRows> {
+    // One chunk at a time, each finished before the next (the rows go to the caller's arrays).
+    std::uint32_t lastBad = 0;
+    auto submit = [&](const renderer::SampleUniforms& uniforms, std::uint32_t first, std::uint64_t done,
+                      std::uint32_t count) -> Expected<int> {
         auto bad = compute.run(uniforms, first, count, positions ? positions + 3 * done : nullptr, distances + done,
                                gradients ? gradients + 3 * done : nullptr);
         if (!bad) return bad.error();
-        return renderer::MappedRows{nullptr, nullptr, nullptr, *bad};
+        lastBad = *bad;
+        return 0;
     };
-    auto consume = [](const renderer::MappedRows&, std::size_t) -> Expected<void> { return {}; };
+    auto collect = [&](int) -> Expected<renderer::MappedRows> {
+        return renderer::MappedRows{nullptr, nullptr, nullptr, lastBad};
+    };
+    auto consume = [](const renderer::MappedRows&, std::size_t, int) -> Expected<void> { return {}; };
     const double kernelBefore = compute.kernelMilliseconds();
-    auto report = run(job, dispatch, consume, progress);
+    auto report = run(job, chunkFor(job, compute), 1, submit, collect, consume, progress);
     const double kernelAfter = compute.kernelMilliseconds();
     if (report && kernelBefore >= 0.0 && kernelAfter >= 0.0) report->kernelSeconds = (kernelAfter - kernelBefore) / 1000.0;
     return report;
@@ -226,14 +262,24 @@ Expected<SamplingReport> sampleToFile(renderer::SampleCompute& compute, const Sa
     full.totalCount = job.count;
     auto writer = SampleWriter::create(path, format, job.rows(), full);
     if (!writer) return writer.error();
-    PipelinedWriter pipeline(**writer);
+    const renderer::SamplePipeline ring = compute.pipeline();
+    PipelinedWriter pipeline(**writer, ring.sets);
     const renderer::RowLayout layout = (*writer)->takesRows() ? renderer::RowLayout::Interleaved : renderer::RowLayout::Separate;
-    auto dispatch = [&](const renderer::SampleUniforms& uniforms, std::uint32_t first, std::uint64_t done, std::uint32_t count) {
-        return compute.runMapped(uniforms, first, count, pipeline.nextSlot(), layout, (*writer)->arrayShift(done));
+    auto submit = [&](const renderer::SampleUniforms& uniforms, std::uint32_t first, std::uint64_t done,
+                      std::uint32_t count) -> Expected<int> {
+        const int slot = pipeline.acquire();
+        if (auto ok = compute.submitMapped(uniforms, first, count, slot, layout, (*writer)->arrayShift(done)); !ok)
+            return ok.error();
+        return slot;
     };
-    auto consume = [&](const renderer::MappedRows& rows, std::size_t n) { return pipeline.submit(rows, n); };
+    auto collect = [&](int slot) { return compute.collectMapped(slot); };
+    auto consume = [&](const renderer::MappedRows& rows, std::size_t n, int slot) { return pipeline.submit(rows, n, slot); };
     const double kernelBefore = compute.kernelMilliseconds();
-    auto report = run(job, dispatch, consume, progress);
+    const std::uint32_t chunk = chunkFor(job, compute);
+    log::info("sampling", "chunks of " + std::to_string(std::min<std::uint64_t>(chunk, job.rows())) + " rows, " +
+                              std::to_string(ring.ahead) + " on the GPU ahead of the one collected, a ring of " +
+                              std::to_string(ring.sets) + (ring.staging ? " (copied into mapped host buffers)" : ""));
+    auto report = run(job, chunk, ring.ahead, submit, collect, consume, progress);
     if (auto ok = pipeline.drain(); !ok) return ok.error();
     if (!report) return report;
     const double kernelAfter = compute.kernelMilliseconds();

@@ -32,7 +32,8 @@ uniform uvec3 sdfwb_arrayShift = uvec3(0u);
 uniform bool sdfwb_meshGradientTaps = false;
 
 void main() {
-    uint local = gl_GlobalInvocationID.x;
+    // Chunks past 65,535 groups dispatch their groups in rows (renderer::SampleCompute).
+    uint local = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * gl_WorkGroupSize.x);
     if (local >= sdfwb_chunkCount) return;
     uint index = sdfwb_chunkFirst + local;
     vec3 position;

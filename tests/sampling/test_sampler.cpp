@@ -22,6 +22,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 #include <unistd.h>
 
 using namespace sdfwb;
@@ -346,6 +347,121 @@ TEST_F(SamplerTest, SameSeedSameRowsWhateverTheChunkSize) {
         sample(kSphere, pattern, job(5000, 43), c);
         EXPECT_NE(a.positions, c.positions) << pattern << ": another seed must give other points";
     }
+}
+
+// The ring of buffer sets (issue 49): how many sets, how many chunks go to the GPU before the
+// oldest is collected, and whether the GPU copies the rows into mapped host buffers (a GPU's
+// default, forced on here on llvmpipe) change nothing in the files: not a byte, not a bad-row count.
+TEST_F(SamplerTest, FilesAreTheSameBitForBitWhateverTheChunkTheRingAndTheStaging) {
+    const std::string field = "float sdf(vec3 p) { return p.x > 0.6 ? sqrt(-1.0 - p.y * p.y) : length(p) - 0.5; }\n";
+    const fs::path folder = fs::temp_directory_path() / ("sdfwb-ring-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    struct Variant {
+        std::uint32_t chunk;
+        renderer::SamplePipeline ring;
+    };
+    const Variant variants[] = {
+        {4096, {4, 1, 0}}, // the reference: one chunk at a time, read in place
+        {1500, {3, 1, 1}}, {777, {8, 6, 0}}, {2048, {4, 2, 1}}, {0, {5, 3, 1}}, // 0: the driver's chunk
+    };
+    for (const char* pattern : {"rand", "near"}) {
+        renderer::SampleCompute compute;
+        auto sampler = sampling::findSampler(pattern, {});
+        ASSERT_TRUE(sampler.hasValue());
+        ASSERT_FALSE(shaders::hasErrors(compute.build(prepare(field), *sampler)));
+        for (sampling::SampleFormat format :
+             {sampling::SampleFormat::Bin, sampling::SampleFormat::Npz, sampling::SampleFormat::Ply}) {
+            std::string reference;
+            std::uint64_t referenceBad = 0;
+            for (const Variant& variant : variants) {
+                compute.setPipeline(variant.ring);
+                const renderer::SamplePipeline resolved = compute.pipeline();
+                EXPECT_EQ(resolved.sets, variant.ring.sets);
+                EXPECT_EQ(resolved.ahead, variant.ring.ahead);
+                EXPECT_EQ(resolved.staging, variant.ring.staging);
+                sampling::SamplingJob j = job(10007, 3);
+                j.chunkSize = variant.chunk;
+                const fs::path path = folder / (std::string(pattern) + "." + sampling::formatName(format));
+                auto report = sampling::sampleToFile(compute, j, path, format, {}, {});
+                ASSERT_TRUE(report.hasValue()) << report.error().message;
+                const std::string bytes = fileBytes(path);
+                const std::string what = std::string(pattern) + " " + sampling::formatName(format) + ", chunk " +
+                                         std::to_string(variant.chunk) + ", ring " + std::to_string(variant.ring.sets) +
+                                         ", ahead " + std::to_string(variant.ring.ahead) + ", staging " +
+                                         std::to_string(variant.ring.staging);
+                if (reference.empty()) {
+                    reference = bytes;
+                    referenceBad = report->badRows;
+                    if (std::string_view(pattern) == "rand") EXPECT_GT(referenceBad, 0u) << "rand's points reach x > 0.6";
+                    continue;
+                }
+                EXPECT_EQ(bytes.size(), reference.size()) << what;
+                EXPECT_TRUE(bytes == reference) << what;
+                EXPECT_EQ(report->badRows, referenceBad) << what;
+            }
+        }
+        compute.releaseGl();
+    }
+    fs::remove_all(folder);
+}
+
+// On llvmpipe a dispatch runs before it returns: one chunk at a time, read where the shader wrote
+// it, 2^18 rows; the settings a caller gives are kept within their bounds.
+TEST_F(SamplerTest, TheRingIsChosenPerDriverAndKeptWithinItsBounds) {
+    renderer::SampleCompute compute;
+    auto sampler = sampling::findSampler("rand", {});
+    ASSERT_TRUE(sampler.hasValue());
+    ASSERT_FALSE(shaders::hasErrors(compute.build(prepare(kSphere), *sampler)));
+    const renderer::SamplePipeline chosen = compute.pipeline();
+    EXPECT_EQ(chosen.sets, 4);
+    EXPECT_EQ(chosen.ahead, 1);
+    EXPECT_EQ(chosen.staging, 0);
+    EXPECT_EQ(compute.preferredChunk(), renderer::SampleCompute::kSoftwareChunk);
+    compute.setPipeline({2, 9, 1}); // too few slots, too many ahead
+    EXPECT_EQ(compute.pipeline().sets, 3);
+    EXPECT_EQ(compute.pipeline().ahead, 1);
+    compute.setPipeline({20, 0, -1});
+    EXPECT_EQ(compute.pipeline().sets, renderer::SampleCompute::kMaxSlots);
+    EXPECT_EQ(compute.pipeline().ahead, 1) << "per driver";
+    // Submitted ahead and collected in turn: the same rows as one chunk at a time.
+    renderer::SampleUniforms uniforms;
+    uniforms.sampleCount = 3000;
+    uniforms.seed = 11;
+    std::vector<float> inTurn;
+    for (std::uint32_t first = 0; first < 3000; first += 1000) {
+        auto rows = compute.runMapped(uniforms, first, 1000, 0);
+        ASSERT_TRUE(rows.hasValue()) << rows.error().message;
+        inTurn.insert(inTurn.end(), rows->distances, rows->distances + 1000);
+    }
+    for (int slot = 0; slot < 3; ++slot)
+        ASSERT_TRUE(compute.submitMapped(uniforms, std::uint32_t(slot) * 1000u, 1000, slot).hasValue());
+    for (int slot = 0; slot < 3; ++slot) {
+        auto rows = compute.collectMapped(slot);
+        ASSERT_TRUE(rows.hasValue()) << rows.error().message;
+        EXPECT_TRUE(std::equal(rows->distances, rows->distances + 1000, inTurn.begin() + slot * 1000)) << "slot " << slot;
+    }
+    auto again = compute.collectMapped(0);
+    ASSERT_FALSE(again.hasValue()) << "a slot is collected once";
+    EXPECT_NE(again.error().message.find("nothing was submitted"), std::string::npos) << again.error().message;
+    compute.releaseGl();
+}
+
+// Past 65,535 work groups of 64 (4,194,240 rows) a chunk's groups go in two dimensions: the rows
+// are the same as in chunks of 2^20, across the row where the second dimension starts.
+TEST_F(SamplerTest, ChunksPastOneDimensionOfWorkGroupsGiveTheSameRows) {
+    sampling::SampleSet big, small;
+    sampling::SamplingJob j = job(4300000, 5);
+    j.chunkSize = 4300000;
+    sample(kSphere, "rand", j, big);
+    j.chunkSize = 1u << 20;
+    sample(kSphere, "rand", j, small);
+    ASSERT_EQ(big.size(), 4300000u);
+    EXPECT_TRUE(big.positions == small.positions);
+    EXPECT_TRUE(big.distances == small.distances);
+    EXPECT_TRUE(big.gradients == small.gradients);
+    const std::size_t last = big.size() - 1; // written by the second row of groups
+    EXPECT_NE(big.distances[last], 0.0f);
+    EXPECT_TRUE(std::isfinite(big.distances[last]));
 }
 
 // A field without loops calls itself at every tap written out (SDFWB_FIELD_WITHOUT_LOOPS: up to

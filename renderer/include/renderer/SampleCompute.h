@@ -57,10 +57,29 @@ std::uint32_t countNonFiniteRows(const MappedRows& rows, std::uint32_t count);
 // the shader (what .ply stores, so the host copies it to the file as it is).
 enum class RowLayout { Separate, Interleaved };
 
+// How runMapped()'s chunks flow through the GL: chosen per driver unless a caller sets them
+// (tests and benchmarks). Files are the same bit for bit whatever they are.
+struct SamplePipeline {
+    // Buffer sets in the ring (3 to SampleCompute::kMaxSlots): chunks on the GPU, the one the host
+    // collects, the ones the writer still reads (not `slots`: a Qt macro).
+    int sets = 4;
+    // Chunks dispatched before the oldest is collected (1 to sets - 2). 0: per driver (1 where the
+    // driver runs a dispatch on the CPU before it returns, as llvmpipe does; sets - 2 on a GPU).
+    int ahead = 0;
+    // -1: per driver (on a GPU: rows computed into GPU memory, then copied by the GPU into mapped
+    // host buffers; on llvmpipe: computed into the mapped buffers, read in place). 0: off, 1: on.
+    int staging = -1;
+};
+
 class SampleCompute {
 public:
-    // Largest chunk one dispatch may take (65535 work groups of 64).
-    static constexpr std::uint32_t kMaxChunk = 65535u * 64u;
+    // Largest chunk one dispatch may take: past 65,535 work groups of 64 the groups go in two
+    // dimensions. 2^25 rows are 896 MiB of rows a buffer set.
+    static constexpr std::uint32_t kMaxChunk = 1u << 25;
+    // The chunk when a caller leaves it to the driver (0): 2^18 rows where the driver runs shaders
+    // on the CPU (a chunk's rows stay in its cache), 2^24 on a GPU (a dispatch fills it).
+    static constexpr std::uint32_t kSoftwareChunk = 1u << 18;
+    static constexpr std::uint32_t kGpuChunk = 1u << 24;
 
     SampleCompute();
     ~SampleCompute();
@@ -77,17 +96,29 @@ public:
     Expected<std::uint32_t> run(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, float* positions,
                                 float* distances, float* gradients);
 
-    // The same rows (all three arrays), left where the shader wrote them: buffer set `slot` (0 to
-    // kSlots - 1) stays mapped, so nothing is copied on the host. The pointers are valid until the
-    // next runMapped() into the same slot, releaseGl() or destruction; several slots let chunks be
-    // written out while the next is computed.
+    // The same rows (all three arrays), left where the shader (or the GPU's copy) wrote them:
+    // buffer set `slot` (0 to pipeline().sets - 1) stays mapped, so nothing is copied on the host.
+    // submitMapped() dispatches and returns at once; collectMapped() waits for that slot's fence
+    // and returns its rows, valid until the next submitMapped() into the same slot, releaseGl() or
+    // destruction. Several slots let chunks be computed while earlier ones are written out.
+    // runMapped() is the two in one call.
     // In the separate layout, `shift` puts each array that many floats (below kMaxShift) after the
     // start of its page-aligned buffer: a file writer that asks so finds each array at the same
     // offset modulo a disk block as in its file, and can hand whole blocks to the disk directly.
-    static constexpr int kSlots = 4;
+    static constexpr int kMaxSlots = 8;
     static constexpr std::uint32_t kMaxShift = 1024;
+    Expected<void> submitMapped(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, int slot,
+                                RowLayout layout = RowLayout::Separate, std::array<std::uint32_t, 3> shift = {});
+    Expected<MappedRows> collectMapped(int slot);
     Expected<MappedRows> runMapped(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, int slot,
                                    RowLayout layout = RowLayout::Separate, std::array<std::uint32_t, 3> shift = {});
+
+    // The ring's settings: what was set, with what the driver chooses filled in (after build()).
+    // Setting it waits for every chunk still on the GPU.
+    void setPipeline(const SamplePipeline& pipeline);
+    SamplePipeline pipeline() const;
+    // kSoftwareChunk or kGpuChunk, by the driver of the current context.
+    std::uint32_t preferredChunk() const;
 
     // The composed compute source (for tests and the log).
     const std::string& source() const;

@@ -25,7 +25,7 @@ struct FieldSettings {
     float time = 0.0f;
     float gradientStep = 1e-3f;                        // central-difference step of the gradient
     bool meshGradientTaps = false;                     // a mesh's own field: taps, not its exact gradient
-    std::uint32_t chunk = 1u << 18;                    // points a dispatch (bounded memory; the values do not change)
+    std::uint32_t chunk = 0;                           // points a dispatch (0: the driver's; the values do not change)
     std::vector<shaders::ParameterSetting> parameters; // the SDF's parameter values (others: defaults)
 };
 

@@ -24,7 +24,7 @@ struct SamplingJob {
     float time = 0.0f;            // for animated SDFs
     std::uint32_t shardIndex = 0; // this run writes slice shardIndex (0-based) of shardCount
     std::uint32_t shardCount = 1;
-    std::uint32_t chunkSize = 1u << 18; // samples per dispatch (bounded memory: 28 bytes each)
+    std::uint32_t chunkSize = 0;        // samples per dispatch (28 bytes each); 0: the driver's (SampleCompute::preferredChunk)
     float gradientStep = 1e-3f;         // central-difference step of the written gradient
     bool meshGradientTaps = false;      // a mesh's own field: taps of gradientStep, not its exact gradient
     float parameters[16] = {};          // u_parameters for program-driven samplers (plane analysis)

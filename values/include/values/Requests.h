@@ -89,7 +89,7 @@ struct SampleRequest {
     float time = 0.0f;
     std::uint32_t shardIndex = 0;
     std::uint32_t shardCount = 1;
-    std::uint32_t chunkSize = 1u << 18;
+    std::uint32_t chunkSize = 0; // rows per dispatch; 0: chosen per driver (2^18 on llvmpipe, 2^24 on a GPU)
     // Central-difference step of the written gradient. 0 (the default): 1e-3, except that a mesh's
     // own field writes its exact gradient (from the closest point); a step given asks for taps.
     float gradientStep = 0.0f;
