@@ -1,5 +1,7 @@
 #include <meshfield/MeshQuery.h>
 
+#include "FloatBits.h"
+
 #include <core/Log.h>
 
 #include <glm/geometric.hpp>
@@ -40,7 +42,7 @@ constexpr std::size_t levelOffset(int k) {
     return offset;
 }
 
-std::uint32_t asBits(float value) { return std::bit_cast<std::uint32_t>(value); }
+using detail::asBits;
 
 // Squared distance from p to triangle t (three corners at t[0..2], t[4..6], t[8..10]) in float:
 // Ericson's regions, as closestPointOnTriangle, for a quick test before the double one.
