@@ -1,0 +1,146 @@
+#pragma once
+// SdfRenderer's private state, shared by SdfRenderer.cpp (frames, uniforms, the march's settling)
+// and SdfPrograms.cpp (composing, compiling and caching the tracer's programs; its textures).
+
+#include <renderer/SdfRenderer.h>
+
+#include "GlObjects.h"
+
+#include <renderer/Image.h>
+#include <shaders/TracerComposer.h>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace sdfwb::meshfield {
+struct MeshField;
+} // namespace sdfwb::meshfield
+
+namespace sdfwb::renderer {
+
+using shaders::Diagnostic;
+
+// Texels a side of the plane's field: about 0.004 units apart on an axis-aligned plane
+// (2.1 units across), a quarter of the default contour spacing (1/64).
+inline constexpr int kPlaneFieldSize = 512;
+
+struct Variant {
+    GlProgram program;
+    std::string fragmentSource;
+    bool fusedMarch = false;
+    bool cones = false;
+    bool meshRaycast = false; // shaders::meshRaycastApplies: no march to choose, no cone pass
+    std::unordered_map<std::string, GLint> uniforms;
+    std::uint64_t lastUse = 0;
+
+    GLint location(const char* name) {
+        auto it = uniforms.find(name);
+        if (it != uniforms.end()) return it->second;
+        GLint found = glGetUniformLocation(program.id(), name);
+        uniforms.emplace(name, found);
+        return found;
+    }
+};
+
+// Whether a cone pass can serve these settings (the march debugger and the step heat map show
+// each pixel's own march).
+bool conesApply(const ShadingSettings& shading, const TraceSettings& trace);
+// SDFWB_FUSED_MARCH=0/1, for benchmarks: the march forced fused or separate.
+std::optional<bool> forcedFusedMarch();
+
+struct SdfRenderer::Impl {
+    std::optional<shaders::PreparedSdf> sdf; // the last SDF that compiled
+    GpuTimer frameTimer;                     // a timed frame's GPU time (render(.., finish))
+    // settleMarch(): where the choice between the fused and the separate march stands.
+    // ConesOpen: the march is chosen; the cone pass is still to try (Cones::Auto chosen again).
+    enum class Settle { Open, TryingSeparate, ConesOpen, TryingCones, Done };
+    Settle settle = Settle::Open;
+    bool separateChosen = false;          // a long SDF marches separately (its frames were faster so)
+    bool conesChosen = false;             // TraceSettings::Cones::Auto: the cone pass made full frames faster
+    double bestMilliseconds = 0.0;        // the fastest full frame of the programs tried so far
+    std::map<std::string, Variant> cache; // by composed fragment text
+    Variant* current = nullptr;
+    GlVertexArray vertexArray;
+    // The vertex stage, one program for every variant (trace.vert): a program pipeline pairs it
+    // with each variant's fragment program, so the driver generates its code once, not for every
+    // new SDF (on llvmpipe about 16 ms of each edit's first frame).
+    GlProgram vertexProgram;
+    GlProgramPipeline pipeline;
+    GLint proxyBox = -1, proxyClip = -1, proxyHalf = -1; // its uniforms
+    std::uint64_t clock = 0;
+    std::uint64_t programsBuilt = 0;
+    std::string empty;
+
+    GlTexture matcap;
+    SdfTextures textures; // g3d_uniformRandom and iChannel0..3, made when a program reads them
+    std::string matcapName;
+    GlTexture background; // ShadingSettings::backgroundImage
+    std::string backgroundName;
+    float backgroundAspect = 1.0f;
+    GlFramebuffer lowFramebuffer;
+    GlTexture lowColor;
+    int lowWidth = 0, lowHeight = 0;
+    GlTexture coneStarts; // the cone pass's starts, copied out of the target
+    int coneWidth = 0, coneHeight = 0;
+    // A mesh's own field on the cutting plane (SDFWB_PLANE_FIELD), and what it was computed for.
+    GlTexture planeField;
+    std::shared_ptr<const meshfield::MeshField> planeFieldMesh;
+    glm::vec4 planeFieldPlane{0.0f}; // normal, offset
+    float planeFieldMargin = -1.0f;
+    double planeFieldMilliseconds = 0.0;
+    glm::vec3 planeFieldOrigin{0.0f}, planeFieldU{0.0f}, planeFieldV{0.0f};
+    void ensurePlaneField(const glm::vec3& normal, float offset, float margin);
+
+    // A width x height RGBA8 texture, and such a texture with a framebuffer around it.
+    static GlTexture makeTexture(int width, int height, GLenum filter);
+    static void makeTarget(int width, int height, GLenum filter, GlTexture& texture, GlFramebuffer& framebuffer);
+
+    // render()'s steps, each one named thing.
+    struct FrameInputs {
+        const ShadingSettings& shading;
+        const TraceSettings& trace;
+        const CuttingPlane& plane;
+        const std::vector<shaders::ParameterSetting>& parameters;
+    };
+    void setFrameUniforms(Variant& variant, const FrameInputs& in, int width, int height, const Camera& camera,
+                          const CameraBasis& basis, float time);
+    void bindShadingTextures(Variant& variant, const ShadingSettings& shading, int width, int height);
+    void drawConePass(Variant& variant, const TraceSettings& trace, const Camera& camera, int width, int height);
+    bool drawPicture(const ShadingSettings& shading, const TraceSettings& trace, const Camera& camera, const CameraBasis& basis,
+                     int width, int height);
+
+    shaders::TracerFeatures features(const ShadingSettings& shading, const TraceSettings& trace,
+                                     const CuttingPlane& plane) const {
+        shaders::TracerFeatures result = tracerFeatures(shading, trace, plane);
+        result.cones = conesApply(shading, trace) &&
+                       (trace.cones == TraceSettings::Cones::On || (trace.cones == TraceSettings::Cones::Auto && conesChosen));
+        return result;
+    }
+
+    // An image as a linear-filtered, edge-clamped texture.
+    static GlTexture uploadTexture(const Image& image);
+    // Loads the matcap image (a name in resources/matcaps or a path) into a texture, once.
+    void ensureMatcap(const std::string& name);
+    // Loads the background image once per path; an unreadable one shows the background colour.
+    void ensureBackground(const std::string& path, const glm::vec3& colour);
+
+    // Builds (or finds) the program for `sdf` with `features`. Null on failure, with diagnostics.
+    Variant* build(const shaders::PreparedSdf& prepared, shaders::TracerFeatures tracerFeatures,
+                   std::vector<Diagnostic>& diagnostics);
+    // The vertex program and the pipeline, made once per context. False, with diagnostics, when
+    // the driver refuses them.
+    bool ensureVertexStage(std::vector<Diagnostic>& diagnostics);
+    // Drops the least recently used programs past kMaxCachedVariants (never the current one).
+    void evictIfFull();
+};
+
+} // namespace sdfwb::renderer
