@@ -141,7 +141,8 @@ int main(int argc, char** argv) {
         (unsigned long long)n, folder.c_str(), context.value()->info().renderer.c_str());
     std::printf(
         "| pattern | format | file MB | compute s | write s | sdfwb s | sdfwb Msamples/s | max(compute, write) / sdfwb | in "
-        "sdfwb's run: kernel s (GPU timer) / writer busy s / GL thread waiting for the writer s |\n");
+        "sdfwb's run: kernel s / copy into host buffers s (GPU timers) / writer busy s / GL thread waiting for the writer s "
+        "|\n");
     std::printf("|---|---|---|---|---|---|---|---|---|\n");
     std::vector<std::string> patterns = {"rand", "near"};
     if (argc > 3) patterns = {argv[3]};
@@ -195,15 +196,17 @@ int main(int argc, char** argv) {
             std::sort(reports, reports + 5, [](const auto& a, const auto& b) { return a.seconds < b.seconds; });
             const sampling::SamplingReport& middle = reports[2];
             char kernel[32] = "-";
+            char copy[32] = "-";
             if (middle.kernelSeconds >= 0.0) std::snprintf(kernel, sizeof kernel, "%.3f", middle.kernelSeconds);
+            if (middle.copySeconds >= 0.0) std::snprintf(copy, sizeof copy, "%.3f", middle.copySeconds);
             std::sort(endToEndRuns, endToEndRuns + 5);
             std::sort(writeRuns, writeRuns + 5);
             const double endToEnd = endToEndRuns[2], writeTime = writeRuns[2];
             // .ply's writer takes the rows interleaved as the file stores them (the shader writes them so).
             const double computeTime = format == sampling::SampleFormat::Ply ? computeInterleaved : computeSeparate;
             const double bound = std::max(computeTime, writeTime);
-            std::printf("| %.3f | %.3f | %.3f | %.1f | %.2f | %s / %.3f / %.3f |\n", computeTime, writeTime, endToEnd,
-                        double(n) / endToEnd / 1e6, bound / endToEnd, kernel, middle.writeSeconds, middle.waitSeconds);
+            std::printf("| %.3f | %.3f | %.3f | %.1f | %.2f | %s / %s / %.3f / %.3f |\n", computeTime, writeTime, endToEnd,
+                        double(n) / endToEnd / 1e6, bound / endToEnd, kernel, copy, middle.writeSeconds, middle.waitSeconds);
             std::fflush(stdout);
         }
         compute.releaseGl();

@@ -101,7 +101,8 @@ struct PendingChunk {
     const float* inputs = nullptr; // the caller's points (the CPU engine: nothing was dispatched)
     SampleUniforms uniforms;       // for the values computed on collection (CPU engine, values program)
     GLsync fence = nullptr;
-    GpuTimer timer;
+    GpuTimer timer;     // the dispatch
+    GpuTimer copyTimer; // staging: the GPU's copies into the mapped buffers
     std::chrono::steady_clock::time_point issued;
 
     void dropFence() {
@@ -149,6 +150,7 @@ struct SampleCompute::Impl {
     bool countWalks = false;           // the GLSL mesh field counts its walks (SDFWB_MESH_COUNT=1)
     GpuTimer kernelTimer;
     double kernelMilliseconds = 0.0; // since build(); -1 once a timer could not be trusted
+    double copyMilliseconds = 0.0;   // the staging copies' GPU time, the same way
     // With the CPU engine, each slot's rows on the host (the mapped buffers are read-only).
     std::vector<float> hostRows[kMaxSlots][3];
     std::string source;
@@ -357,6 +359,7 @@ void SampleCompute::Impl::finishPending() {
         if (chunk.fence) waitFor(chunk.fence);
         chunk.dropFence();
         chunk.timer.reset();
+        chunk.copyTimer.reset();
         chunk.active = false;
     }
 }
@@ -368,7 +371,10 @@ SampleCompute::~SampleCompute() {
     m_impl->plain.release();
     for (BufferSet& set : m_impl->slots) set.release();
     for (BufferSet& set : m_impl->staging) set.release();
-    for (PendingChunk& chunk : m_impl->pending) chunk.timer.release(); // fences: the context is gone
+    for (PendingChunk& chunk : m_impl->pending) { // fences: the context is gone
+        chunk.timer.release();
+        chunk.copyTimer.release();
+    }
     m_impl->counts.release();
     m_impl->inputs.release();
     m_impl->textures.release();
@@ -384,6 +390,8 @@ double SampleCompute::kernelMilliseconds() const {
     const double values = m_impl->values ? m_impl->values->kernelMilliseconds() : 0.0;
     return own < 0.0 || values < 0.0 ? -1.0 : own + values;
 }
+
+double SampleCompute::copyMilliseconds() const { return m_impl->copyMilliseconds; }
 
 bool SampleCompute::countsMeshWalks() const {
     return m_impl->countWalks || (m_impl->values && m_impl->values->countsMeshWalks());
@@ -464,6 +472,7 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     const char* driver = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     const bool software = driver && (std::strstr(driver, "llvmpipe") || std::strstr(driver, "softpipe"));
     m_impl->kernelMilliseconds = software ? -1.0 : 0.0;
+    m_impl->copyMilliseconds = software ? -1.0 : 0.0;
     m_impl->mortonInputs = sdf.mesh && !m_impl->query && sorted;
     m_impl->values.reset();
     if (twoPass) {
@@ -663,6 +672,7 @@ Expected<void> SampleCompute::submitMapped(const SampleUniforms& uniforms, std::
     if (!ok) return ok;
     if (staged) { // the GPU copies the rows (and the shift before them) into the mapped buffers
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        chunk.copyTimer.begin();
         const GLsizeiptr room = interleaved ? 0 : GLsizeiptr(kMaxShift) * 4;
         const GLsizeiptr sizes[3] = {GLsizeiptr(count) * (interleaved ? 28 : 12) + room,
                                      interleaved ? 0 : GLsizeiptr(count) * 4 + room,
@@ -673,6 +683,7 @@ Expected<void> SampleCompute::submitMapped(const SampleUniforms& uniforms, std::
             glBindBuffer(GL_COPY_WRITE_BUFFER, m_impl->staging[at].buffers[i].id());
             glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, sizes[i]);
         }
+        chunk.copyTimer.end();
         glBindBuffer(GL_COPY_READ_BUFFER, 0);
         glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
     }
@@ -703,10 +714,12 @@ Expected<MappedRows> SampleCompute::collectMapped(int slot) {
         const bool done = waitFor(chunk.fence);
         chunk.dropFence();
         if (!done) return makeError("sampling: waiting for the dispatch of " + std::to_string(count) + " samples failed");
-        const double kernel = chunk.timer.milliseconds(
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - chunk.issued).count());
-        double& total = m_impl->kernelMilliseconds;
-        total = kernel < 0.0 || total < 0.0 ? -1.0 : total + kernel;
+        const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - chunk.issued).count();
+        auto add = [](double& total, double milliseconds) {
+            total = milliseconds < 0.0 || total < 0.0 ? -1.0 : total + milliseconds;
+        };
+        add(m_impl->kernelMilliseconds, chunk.timer.milliseconds(wall));
+        if (chunk.staged) add(m_impl->copyMilliseconds, chunk.copyTimer.milliseconds(wall));
         bad = m_impl->takeCounts(at);
         if (chunk.staged) mapped = m_impl->staging[at].mapped;
     }

@@ -274,7 +274,7 @@ Expected<SamplingReport> sampleToFile(renderer::SampleCompute& compute, const Sa
     };
     auto collect = [&](int slot) { return compute.collectMapped(slot); };
     auto consume = [&](const renderer::MappedRows& rows, std::size_t n, int slot) { return pipeline.submit(rows, n, slot); };
-    const double kernelBefore = compute.kernelMilliseconds();
+    const double kernelBefore = compute.kernelMilliseconds(), copyBefore = compute.copyMilliseconds();
     const std::uint32_t chunk = chunkFor(job, compute);
     log::info("sampling", "chunks of " + std::to_string(std::min<std::uint64_t>(chunk, job.rows())) + " rows, " +
                               std::to_string(ring.ahead) + " on the GPU ahead of the one collected, a ring of " +
@@ -282,8 +282,9 @@ Expected<SamplingReport> sampleToFile(renderer::SampleCompute& compute, const Sa
     auto report = run(job, chunk, ring.ahead, submit, collect, consume, progress);
     if (auto ok = pipeline.drain(); !ok) return ok.error();
     if (!report) return report;
-    const double kernelAfter = compute.kernelMilliseconds();
+    const double kernelAfter = compute.kernelMilliseconds(), copyAfter = compute.copyMilliseconds();
     if (kernelBefore >= 0.0 && kernelAfter >= 0.0) report->kernelSeconds = (kernelAfter - kernelBefore) / 1000.0;
+    if (copyBefore >= 0.0 && copyAfter >= 0.0) report->copySeconds = (copyAfter - copyBefore) / 1000.0;
     report->writeSeconds = pipeline.writeSeconds();
     report->waitSeconds = pipeline.waitSeconds();
     if (!report->cancelled)

@@ -135,6 +135,9 @@ public:
     // The GPU time of this program's dispatches since build(), by timer queries (the values
     // program's included); -1 when a dispatch's timer read more than the wall time around it.
     double kernelMilliseconds() const;
+    // The GPU time of the staging copies into mapped host buffers since build() (0 without
+    // staging; -1 where the driver's timer cannot be trusted, as kernelMilliseconds()).
+    double copyMilliseconds() const;
     void addMeshCounters(meshfield::QueryCounters& into) const;
 
     void releaseGl();

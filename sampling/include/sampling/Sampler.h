@@ -53,6 +53,7 @@ struct SamplingReport {
     // and for a file the writer thread's time in its appends and the GL thread's time waiting for
     // the writer to free a buffer set.
     double kernelSeconds = -1.0;
+    double copySeconds = -1.0; // the GPU's copies of the rows into mapped host buffers (staging), the same way
     double writeSeconds = 0.0;
     double waitSeconds = 0.0;
 };
