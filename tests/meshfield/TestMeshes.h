@@ -11,10 +11,24 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <random>
 
 namespace sdfwb::testing {
+
+// The distance from p to the mesh by a scan of every triangle in double precision: the reference
+// the hierarchy's answers are checked against.
+inline double bruteDistance(const meshfield::TriangleMesh& mesh, const glm::dvec3& p) {
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
+        const glm::dvec3 q = meshfield::closestPointOnTriangle(p, glm::dvec3(mesh.vertices[mesh.indices[t]]),
+                                                               glm::dvec3(mesh.vertices[mesh.indices[t + 1]]),
+                                                               glm::dvec3(mesh.vertices[mesh.indices[t + 2]]));
+        best = std::min(best, glm::length(p - q));
+    }
+    return best;
+}
 
 // A torus around z (major radius R, minor r), `around` x `across` quads, two triangles each.
 inline meshfield::TriangleMesh torusMesh(float R, float r, int around, int across) {

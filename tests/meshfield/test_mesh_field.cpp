@@ -37,17 +37,6 @@ std::shared_ptr<const MeshField> field(const TriangleMesh& mesh, SignMethod sign
     return made ? *made : nullptr;
 }
 
-double bruteDistance(const TriangleMesh& mesh, const dvec3& p) {
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
-        const dvec3 q =
-            closestPointOnTriangle(p, dvec3(mesh.vertices[mesh.indices[t]]), dvec3(mesh.vertices[mesh.indices[t + 1]]),
-                                   dvec3(mesh.vertices[mesh.indices[t + 2]]));
-        best = std::min(best, glm::length(p - q));
-    }
-    return best;
-}
-
 std::vector<dvec3> randomPoints(std::size_t count, double extent, unsigned seed) {
     std::mt19937 random(seed);
     std::uniform_real_distribution<double> u(-extent, extent);
@@ -72,7 +61,7 @@ TEST(MeshFieldCpu, TheHierarchyFindsTheNearestTriangleABruteForceScanFinds) {
         const dvec3 v(mesh.vertices[std::size_t(k * 7) % mesh.vertices.size()]);
         points.push_back(v + dvec3(1e-4 * (k % 3), -2e-4 * (k % 5), 3e-5 * (k % 7)));
     }
-    for (const dvec3& p : points) worst = std::max(worst, std::abs(f->distance(p) - bruteDistance(mesh, p)));
+    for (const dvec3& p : points) worst = std::max(worst, std::abs(f->distance(p) - testing::bruteDistance(mesh, p)));
     EXPECT_LT(worst, 1e-12) << "the hierarchy's nearest distance differs from the brute-force scan";
 }
 

@@ -80,17 +80,6 @@ std::vector<float> uniformPoints(int n, unsigned seed, float reach) {
     return points;
 }
 
-double bruteDistance(const meshfield::TriangleMesh& mesh, const dvec3& p) {
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
-        const dvec3 q =
-            meshfield::closestPointOnTriangle(p, dvec3(mesh.vertices[mesh.indices[t]]), dvec3(mesh.vertices[mesh.indices[t + 1]]),
-                                              dvec3(mesh.vertices[mesh.indices[t + 2]]));
-        best = std::min(best, glm::length(p - q));
-    }
-    return best;
-}
-
 TEST_F(MeshSdfTest, GpuDistancesMatchAFloat64BruteForceScanAndEachSignMethodsCpuSign) {
     const meshfield::TriangleMesh mesh = testing::torusMesh(0.6f, 0.25f, 64, 24);
     std::vector<float> points = uniformPoints(4000, 11, 1.2f);
@@ -102,7 +91,7 @@ TEST_F(MeshSdfTest, GpuDistancesMatchAFloat64BruteForceScanAndEachSignMethodsCpu
     const std::size_t n = points.size() / 3;
     std::vector<double> reference(n);
     for (std::size_t i = 0; i < n; ++i)
-        reference[i] = bruteDistance(mesh, dvec3(points[3 * i], points[3 * i + 1], points[3 * i + 2]));
+        reference[i] = testing::bruteDistance(mesh, dvec3(points[3 * i], points[3 * i + 1], points[3 * i + 2]));
     for (meshfield::SignMethod sign :
          {meshfield::SignMethod::Winding, meshfield::SignMethod::Parity, meshfield::SignMethod::Pseudonormal}) {
         meshfield::MeshFieldOptions options;
@@ -918,7 +907,7 @@ TEST_F(MeshSdfTest, ThePlaneOverAMeshIsCleanAlongThePrimitivesEdges) {
             const dvec3 d = testing::pixelRay(camera, x, y, kW, kH);
             const dvec3 p = origin + (-origin.z / d.z) * d; // on z = 0
             // Deep inside the section: more than 4 pixels (about 0.03) from its rim.
-            if (testing::torusDistance(p, 0.6, 0.3) > -0.06 || bruteDistance(mesh, p) < 0.05) continue;
+            if (testing::torusDistance(p, 0.6, 0.3) > -0.06 || testing::bruteDistance(mesh, p) < 0.05) continue;
             ++inside;
             const std::uint8_t* rgba = image.pixel(x, y);
             const int expected[3] = {237, 140, 46}; // vec3(0.93, 0.55, 0.18)
