@@ -94,12 +94,12 @@ shaders::TracerFeatures tracerFeatures(const ShadingSettings& shading, const Tra
     return features;
 }
 
-// A width x height RGBA8 texture.
-GlTexture SdfRenderer::Impl::makeTexture(int width, int height, GLenum filter) {
+// A width x height texture (RGBA8 unless asked), one level.
+GlTexture SdfRenderer::Impl::makeTexture(int width, int height, GLenum filter, GLenum format) {
     GLuint id = 0;
     glGenTextures(1, &id);
     glBindTexture(GL_TEXTURE_2D, id);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexImage2D(GL_TEXTURE_2D, 0, format, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
     glBindTexture(GL_TEXTURE_2D, 0);
@@ -189,9 +189,10 @@ Variant* SdfRenderer::Impl::build(const shaders::PreparedSdf& prepared, shaders:
         it->second.lastUse = ++clock;
         return &it->second;
     }
-    if (!ensureVertexStage(diagnostics)) return nullptr;
+    const bool compute = fragment->stage == shaders::Stage::Compute;
+    if (!compute && !ensureVertexStage(diagnostics)) return nullptr;
     auto start = std::chrono::steady_clock::now();
-    CompiledShader fs = compileShader(GL_FRAGMENT_SHADER, *fragment);
+    CompiledShader fs = compileShader(compute ? GL_COMPUTE_SHADER : GL_FRAGMENT_SHADER, *fragment);
     diagnostics.insert(diagnostics.end(), fs.diagnostics.begin(), fs.diagnostics.end());
     if (shaders::hasErrors(diagnostics)) return nullptr;
     for (shaders::Diagnostic& warning : driverLoopWarnings(prepared, *fragment)) diagnostics.push_back(std::move(warning));
@@ -207,8 +208,8 @@ Variant* SdfRenderer::Impl::build(const shaders::PreparedSdf& prepared, shaders:
     }
     double milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     log::info("shaders", "compiled " + prepared.source.map.fileName(0) + " (" + shaders::shadingModeName(tracerFeatures.shading) +
-                             (tracerFeatures.ambientOcclusion ? ", AO" : "") + ") in " + std::to_string(int(milliseconds)) +
-                             " ms");
+                             (tracerFeatures.ambientOcclusion ? ", AO" : "") + (compute ? ", compute tracer" : "") + ") in " +
+                             std::to_string(int(milliseconds)) + " ms");
 
     ++programsBuilt;
     evictIfFull();
@@ -218,6 +219,7 @@ Variant* SdfRenderer::Impl::build(const shaders::PreparedSdf& prepared, shaders:
     variant.fusedMarch = tracerFeatures.fusedMarch;
     variant.cones = tracerFeatures.cones;
     variant.meshRaycast = meshRaycast;
+    variant.compute = compute;
     variant.lastUse = ++clock;
     return &variant;
 }

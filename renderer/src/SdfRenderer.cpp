@@ -62,6 +62,8 @@ SdfRenderer::~SdfRenderer() {
     m_impl->lowFramebuffer.release();
     m_impl->lowColor.release();
     m_impl->coneStarts.release();
+    m_impl->computeColor.release();
+    m_impl->computeFramebuffer.release();
     m_impl->planeField.release();
     m_impl->planeFieldMesh.reset();
 }
@@ -70,15 +72,18 @@ std::vector<Diagnostic> SdfRenderer::setSdf(const shaders::PreparedSdf& sdf) {
     std::vector<Diagnostic> diagnostics = sdf.diagnostics;
     if (shaders::hasErrors(diagnostics)) return diagnostics;
     const bool separateBefore = m_impl->separateChosen, conesBefore = m_impl->conesChosen;
+    const bool computeBefore = m_impl->computeChosen;
     m_impl->separateChosen = false; // a new SDF starts with the quickest code generation
     // An edit of the same file keeps the cone pass its last version kept (its code generation
     // costs next to nothing more, and a dear SDF's frames stay fast while it is edited).
     const bool sameFile = m_impl->sdf && m_impl->sdf->source.map.fileName(0) == sdf.source.map.fileName(0);
     m_impl->conesChosen = conesBefore && sameFile;
+    m_impl->computeChosen = computeBefore && sameFile; // the same for the compute tracer
     Variant* variant = m_impl->build(sdf, m_impl->features(m_shading, m_trace, m_plane), diagnostics);
     if (!variant) {
         m_impl->separateChosen = separateBefore; // the last good SDF keeps its program
         m_impl->conesChosen = conesBefore;
+        m_impl->computeChosen = computeBefore;
         return diagnostics;
     }
     m_impl->sdf = sdf;
@@ -90,6 +95,8 @@ std::vector<Diagnostic> SdfRenderer::setSdf(const shaders::PreparedSdf& sdf) {
 bool SdfRenderer::fusedMarch() const { return m_impl->current && m_impl->current->fusedMarch; }
 
 bool SdfRenderer::conePass() const { return m_impl->current && m_impl->current->cones; }
+
+bool SdfRenderer::computeTracer() const { return m_impl->current && m_impl->current->compute; }
 
 bool SdfRenderer::marchSettled() const { return m_impl->settle == Impl::Settle::Done; }
 
@@ -103,17 +110,32 @@ bool SdfRenderer::settleMarch(double fullFrameMilliseconds) {
         return variant != nullptr;
     };
     auto milliseconds = [](double value) { return std::to_string(int(std::lround(value))); };
-    // The last trial: the cone pass on the march chosen so far. Returns whether the program changed.
-    auto tryCones = [&] {
+    // The last trial: the compute tracer instead of the fragment program chosen so far. Returns
+    // whether the program changed.
+    auto tryCompute = [&] {
         impl.settle = Impl::Settle::Done;
-        if (m_trace.cones != TraceSettings::Cones::Auto || !conesApply(m_shading, m_trace) || impl.conesChosen ||
-            impl.current->meshRaycast)
+        if (m_trace.tracer != TraceSettings::Tracer::Auto || impl.computeChosen || impl.current->compute) return false;
+        impl.computeChosen = true;
+        if (!impl.features(m_shading, m_trace, m_plane).compute || !rebuild()) { // not for this frame, or refused
+            impl.computeChosen = false;
+            rebuild();
             return false;
+        }
+        impl.settle = Impl::Settle::TryingCompute;
+        log::info("render", "trying the compute tracer: a full frame took " + milliseconds(impl.bestMilliseconds) +
+                                " ms with the fragment tracer");
+        return true;
+    };
+    // The cone pass on the march chosen so far, then the compute tracer.
+    auto tryCones = [&] {
+        if (m_trace.cones != TraceSettings::Cones::Auto || !conesApply(m_shading, m_trace) || impl.conesChosen ||
+            impl.current->meshRaycast || impl.current->compute)
+            return tryCompute();
         impl.conesChosen = true;
         if (!rebuild()) { // the driver refused it: the program without cones stays (from the cache)
             impl.conesChosen = false;
             rebuild();
-            return false;
+            return tryCompute();
         }
         impl.settle = Impl::Settle::TryingCones;
         log::info("render", "trying the cone pass: a full frame took " + milliseconds(impl.bestMilliseconds) + " ms without");
@@ -151,13 +173,26 @@ bool SdfRenderer::settleMarch(double fullFrameMilliseconds) {
         return tryCones() || !keep;
     }
     case Impl::Settle::TryingCones: {
-        impl.settle = Impl::Settle::Done;
         const bool keep = fullFrameMilliseconds <= impl.bestMilliseconds;
         log::info("render", std::string(keep ? "keeping" : "dropping") +
                                 " the cone pass: " + milliseconds(fullFrameMilliseconds) + " ms a full frame against " +
                                 milliseconds(impl.bestMilliseconds) + " without");
+        if (keep) {
+            impl.bestMilliseconds = fullFrameMilliseconds;
+        } else {
+            impl.conesChosen = false;
+            rebuild();
+        }
+        return tryCompute() || !keep;
+    }
+    case Impl::Settle::TryingCompute: {
+        impl.settle = Impl::Settle::Done;
+        const bool keep = fullFrameMilliseconds <= impl.bestMilliseconds;
+        log::info("render", std::string(keep ? "keeping" : "dropping") +
+                                " the compute tracer: " + milliseconds(fullFrameMilliseconds) + " ms a full frame against " +
+                                milliseconds(impl.bestMilliseconds) + " with the fragment tracer");
         if (keep) return false;
-        impl.conesChosen = false;
+        impl.computeChosen = false;
         return rebuild();
     }
     case Impl::Settle::Done:
@@ -404,6 +439,38 @@ bool SdfRenderer::Impl::drawPicture(const ShadingSettings& shading, const TraceS
     return boxProxy;
 }
 
+// The compute tracer's frame (trace_main.frag, SDFWB_COMPUTE): one invocation a pixel in 8x8
+// groups, into a float image, then blitted over the bound draw framebuffer, whose format rounds
+// (or keeps) the values as the fragment tracer's output would be.
+void SdfRenderer::Impl::ensureComputeTarget(int width, int height) {
+    if (computeColor && computeWidth >= width && computeHeight >= height) return; // grown, never shrunk
+    GLint reading = 0;
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &reading);
+    computeWidth = std::max(computeWidth, width);
+    computeHeight = std::max(computeHeight, height);
+    computeColor = makeTexture(computeWidth, computeHeight, GL_NEAREST, GL_RGBA32F);
+    GLuint id = 0;
+    glGenFramebuffers(1, &id);
+    computeFramebuffer = GlFramebuffer(id);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, id);
+    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, computeColor.id(), 0);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(reading));
+}
+
+void SdfRenderer::Impl::traceCompute(int width, int height) {
+    GLint target = 0, reading = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &reading);
+    glBindImageTexture(0, computeColor.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glDispatchCompute(GLuint((width + 7) / 8), GLuint((height + 7) / 8), 1);
+    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, computeFramebuffer.id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(target));
+    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(reading));
+}
+
 FrameStats SdfRenderer::render(int width, int height, const Camera& camera, float time, bool finish) {
     auto start = std::chrono::steady_clock::now();
     FrameStats stats;
@@ -428,28 +495,38 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
             m_impl->vertexArray = GlVertexArray(id);
         }
         const CameraBasis basis = cameraBasis(camera);
-        // The variant's fragment program with the shared vertex program; glUniform* reach the
-        // fragment program (the active one), the vertex stage's uniforms are set by name.
-        const GLuint pipeline = m_impl->pipeline.id();
-        glUseProgram(0);
-        glBindProgramPipeline(pipeline);
-        glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, v->program.id());
-        glActiveShaderProgram(pipeline, v->program.id());
-        m_impl->setFrameUniforms(*v, {m_shading, m_trace, m_plane, m_parameters}, width, height, camera, basis, time);
-        m_impl->bindShadingTextures(*v, m_shading, width, height);
-        glBindVertexArray(m_impl->vertexArray.id());
-        // Blending that changes nothing (source times one, plus zero): llvmpipe generates an
-        // opaque draw's fragment code twice (for whole tiles and for edge tiles), a blended one
-        // once, which halves a new program's first-draw stall (trefoil knot 177 ms to 96, torus 78
-        // to 45) for about 3 % on the cheapest SDFs' frames.
-        glEnable(GL_BLEND);
-        glBlendEquation(GL_FUNC_ADD);
-        glBlendFunc(GL_ONE, GL_ZERO);
-        if (v->cones) m_impl->drawConePass(*v, m_trace, camera, width, height);
-        stats.boxProxy = m_impl->drawPicture(m_shading, m_trace, camera, basis, width, height);
-        glDisable(GL_BLEND);
-        glBindVertexArray(0);
-        glBindProgramPipeline(0);
+        if (v->compute) {
+            m_impl->ensureComputeTarget(width, height); // first: making it rebinds the active texture unit
+            glBindProgramPipeline(0);
+            glUseProgram(v->program.id());
+            m_impl->setFrameUniforms(*v, {m_shading, m_trace, m_plane, m_parameters}, width, height, camera, basis, time);
+            m_impl->bindShadingTextures(*v, m_shading, width, height);
+            m_impl->traceCompute(width, height);
+            glUseProgram(0);
+        } else {
+            // The variant's fragment program with the shared vertex program; glUniform* reach the
+            // fragment program (the active one), the vertex stage's uniforms are set by name.
+            const GLuint pipeline = m_impl->pipeline.id();
+            glUseProgram(0);
+            glBindProgramPipeline(pipeline);
+            glUseProgramStages(pipeline, GL_FRAGMENT_SHADER_BIT, v->program.id());
+            glActiveShaderProgram(pipeline, v->program.id());
+            m_impl->setFrameUniforms(*v, {m_shading, m_trace, m_plane, m_parameters}, width, height, camera, basis, time);
+            m_impl->bindShadingTextures(*v, m_shading, width, height);
+            glBindVertexArray(m_impl->vertexArray.id());
+            // Blending that changes nothing (source times one, plus zero): llvmpipe generates an
+            // opaque draw's fragment code twice (for whole tiles and for edge tiles), a blended one
+            // once, which halves a new program's first-draw stall (trefoil knot 177 ms to 96, torus 78
+            // to 45) for about 3 % on the cheapest SDFs' frames.
+            glEnable(GL_BLEND);
+            glBlendEquation(GL_FUNC_ADD);
+            glBlendFunc(GL_ONE, GL_ZERO);
+            if (v->cones) m_impl->drawConePass(*v, m_trace, camera, width, height);
+            stats.boxProxy = m_impl->drawPicture(m_shading, m_trace, camera, basis, width, height);
+            glDisable(GL_BLEND);
+            glBindVertexArray(0);
+            glBindProgramPipeline(0);
+        }
     }
     if (finish) {
         m_impl->frameTimer.end();
@@ -508,6 +585,9 @@ void SdfRenderer::releaseGl() {
     m_impl->lowWidth = m_impl->lowHeight = 0;
     m_impl->coneStarts.reset();
     m_impl->coneWidth = m_impl->coneHeight = 0;
+    m_impl->computeColor.reset();
+    m_impl->computeFramebuffer.reset();
+    m_impl->computeWidth = m_impl->computeHeight = 0;
     m_impl->planeField.reset();
     m_impl->planeFieldMesh.reset();
     m_impl->current = nullptr;
@@ -545,10 +625,17 @@ std::vector<Diagnostic> SdfRenderer::setTrace(const TraceSettings& trace) {
         m_impl->conesChosen = false;
         if (trace.cones == TraceSettings::Cones::Auto) m_impl->settle = Impl::Settle::ConesOpen;
     }
+    if (trace.tracer != m_trace.tracer && m_impl->settle == Impl::Settle::Done) {
+        // The same for the compute tracer (its trial follows the cone pass's).
+        m_impl->computeChosen = false;
+        if (trace.tracer == TraceSettings::Tracer::Auto) m_impl->settle = Impl::Settle::ConesOpen;
+    }
     m_trace = trace;
     std::vector<Diagnostic> diagnostics;
-    const bool conesChange = m_impl->current && m_impl->features(m_shading, m_trace, m_plane).cones != m_impl->current->cones;
-    if (!(relaxationOrFactorChanges || conesChange) || !m_impl->sdf) return diagnostics;
+    const shaders::TracerFeatures wanted = m_impl->features(m_shading, m_trace, m_plane);
+    const bool programChanges =
+        m_impl->current && (wanted.cones != m_impl->current->cones || wanted.compute != m_impl->current->compute);
+    if (!(relaxationOrFactorChanges || programChanges) || !m_impl->sdf) return diagnostics;
     if (Variant* variant = m_impl->build(*m_impl->sdf, m_impl->features(m_shading, m_trace, m_plane), diagnostics))
         m_impl->current = variant;
     return diagnostics;

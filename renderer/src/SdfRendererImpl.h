@@ -39,6 +39,7 @@ struct Variant {
     bool fusedMarch = false;
     bool cones = false;
     bool meshRaycast = false; // shaders::meshRaycastApplies: no march to choose, no cone pass
+    bool compute = false;     // the compute tracer (dispatched, then blitted), not a fragment program
     std::unordered_map<std::string, GLint> uniforms;
     std::uint64_t lastUse = 0;
 
@@ -62,10 +63,12 @@ struct SdfRenderer::Impl {
     GpuTimer frameTimer;                     // a timed frame's GPU time (render(.., finish))
     // settleMarch(): where the choice between the fused and the separate march stands.
     // ConesOpen: the march is chosen; the cone pass is still to try (Cones::Auto chosen again).
-    enum class Settle { Open, TryingSeparate, ConesOpen, TryingCones, Done };
+    // TryingCompute: the compute tracer's full frame is being measured against bestMilliseconds.
+    enum class Settle { Open, TryingSeparate, ConesOpen, TryingCones, TryingCompute, Done };
     Settle settle = Settle::Open;
     bool separateChosen = false;          // a long SDF marches separately (its frames were faster so)
     bool conesChosen = false;             // TraceSettings::Cones::Auto: the cone pass made full frames faster
+    bool computeChosen = false;           // TraceSettings::Tracer::Auto: the compute tracer made full frames faster
     double bestMilliseconds = 0.0;        // the fastest full frame of the programs tried so far
     std::map<std::string, Variant> cache; // by composed fragment text
     Variant* current = nullptr;
@@ -90,6 +93,10 @@ struct SdfRenderer::Impl {
     GlTexture lowColor;
     int lowWidth = 0, lowHeight = 0;
     GlTexture coneStarts; // the cone pass's starts, copied out of the target
+    // The compute tracer's image (RGBA32F, grown, never shrunk) and a framebuffer to blit it from.
+    GlTexture computeColor;
+    GlFramebuffer computeFramebuffer;
+    int computeWidth = 0, computeHeight = 0;
     int coneWidth = 0, coneHeight = 0;
     // A mesh's own field on the cutting plane (SDFWB_PLANE_FIELD), and what it was computed for.
     GlTexture planeField;
@@ -101,7 +108,7 @@ struct SdfRenderer::Impl {
     void ensurePlaneField(const glm::vec3& normal, float offset, float margin);
 
     // A width x height RGBA8 texture, and such a texture with a framebuffer around it.
-    static GlTexture makeTexture(int width, int height, GLenum filter);
+    static GlTexture makeTexture(int width, int height, GLenum filter, GLenum format = GL_RGBA8);
     static void makeTarget(int width, int height, GLenum filter, GlTexture& texture, GlFramebuffer& framebuffer);
 
     // render()'s steps, each one named thing.
@@ -117,13 +124,24 @@ struct SdfRenderer::Impl {
     void drawConePass(Variant& variant, const TraceSettings& trace, const Camera& camera, int width, int height);
     bool drawPicture(const ShadingSettings& shading, const TraceSettings& trace, const Camera& camera, const CameraBasis& basis,
                      int width, int height);
+    // The compute tracer's frame: dispatched into computeColor (made or grown first by
+    // ensureComputeTarget), then blitted over the bound draw framebuffer's lower-left width x
+    // height pixels.
+    void ensureComputeTarget(int width, int height);
+    void traceCompute(int width, int height);
 
     shaders::TracerFeatures features(const ShadingSettings& shading, const TraceSettings& trace,
                                      const CuttingPlane& plane) const {
         shaders::TracerFeatures result = tracerFeatures(shading, trace, plane);
         result.cones = conesApply(shading, trace) &&
                        (trace.cones == TraceSettings::Cones::On || (trace.cones == TraceSettings::Cones::Auto && conesChosen));
-        return result;
+        // The compute tracer draws without the cone pass (when it applies, it replaces it).
+        shaders::TracerFeatures compute = result;
+        compute.cones = false;
+        compute.compute = true;
+        const bool wanted =
+            trace.tracer == TraceSettings::Tracer::Compute || (trace.tracer == TraceSettings::Tracer::Auto && computeChosen);
+        return wanted && shaders::computeTracerApplies(compute) ? compute : result;
     }
 
     // An image as a linear-filtered, edge-clamped texture.

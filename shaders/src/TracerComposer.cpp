@@ -40,6 +40,10 @@ bool meshRaycastApplies(const PreparedSdf& sdf, const TracerFeatures& features) 
            features.shading != ShadingMode::Steps;
 }
 
+bool computeTracerApplies(const TracerFeatures& features) {
+    return !features.cuttingPlane && !features.cones && !features.probe && !features.statsOutput;
+}
+
 Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatures& features) {
     FeatureDefines defines;
     std::string mode = shadingModeName(features.shading);
@@ -81,13 +85,15 @@ Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatu
         defines["SDFWB_PROBE"] = "1";
         files.insert(files.begin(), "tracer/probe.glsl");
     }
+    const bool compute = features.compute && computeTracerApplies(features);
+    if (compute) defines["SDFWB_COMPUTE"] = "1";
     std::vector<ShaderPiece> pieces;
     for (const std::string& file : files) {
         auto piece = builtinPiece(file);
         if (!piece) return piece.error();
         pieces.push_back(std::move(*piece));
     }
-    return composeSdfShader(sdf, Stage::Fragment, pieces, defines);
+    return composeSdfShader(sdf, compute ? Stage::Compute : Stage::Fragment, pieces, defines);
 }
 
 Expected<ComposedShader> composeTracerVertex() { return composeBuiltinShader(Stage::Vertex, "tracer/trace.vert", {}); }

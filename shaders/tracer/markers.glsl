@@ -11,7 +11,7 @@ vec3 sdfwb_drawMarkers(vec3 color) {
         if (z <= sdfwb_nearPlane) continue;
         vec2 ndc = vec2(dot(v, sdfwb_cameraRight) / (z * sdfwb_tanHalfFovY * aspect), dot(v, sdfwb_cameraUp) / (z * sdfwb_tanHalfFovY));
         vec2 centre = (ndc * 0.5 + 0.5) * sdfwb_resolution;
-        float d = length(gl_FragCoord.xy - centre);
+        float d = length(SDFWB_PIXEL_CENTRE - centre);
         // a white ring with a dark rim, readable on any shading
         float ring = 1.0 - smoothstep(1.0, 2.0, abs(d - 7.0));
         float rim = 1.0 - smoothstep(1.0, 2.0, abs(d - 9.5));

@@ -71,7 +71,7 @@ vec3 sdfwb_planeColor(vec3 p) {
     float winding = sdfwb_meshWinding(p);
 #endif
     if (abs(winding - 0.5) < 0.25) {
-        float stripe = step(4.0, mod(gl_FragCoord.x + gl_FragCoord.y, 8.0));
+        float stripe = step(4.0, mod(SDFWB_PIXEL_CENTRE.x + SDFWB_PIXEL_CENTRE.y, 8.0));
         color = mix(color, vec3(0.55, 0.2, 0.85), 0.3 + 0.4 * stripe);
     }
 #endif

@@ -8,6 +8,15 @@
 #define SDFWB_RECORD(kind, t, position, d)
 #endif
 
+// The pixel's centre in framebuffer coordinates (gl_FragCoord.xy in the fragment tracer; the
+// compute tracer, SDFWB_COMPUTE in trace_main.frag, sets it per invocation).
+#ifdef SDFWB_COMPUTE
+vec2 sdfwb_computePixel;
+#define SDFWB_PIXEL_CENTRE sdfwb_computePixel
+#else
+#define SDFWB_PIXEL_CENTRE gl_FragCoord.xy
+#endif
+
 uniform vec2 sdfwb_resolution;        // framebuffer size in pixels
 uniform vec3 sdfwb_cameraPosition;
 uniform vec3 sdfwb_cameraRight;       // unit camera basis
@@ -141,7 +150,7 @@ vec4 sdfwb_packConeStart(float t) {
 
 // Where this pixel's march may start: its tile's cone start (past its box when the cone left it).
 float sdfwb_coneStart() {
-    uvec3 bytes = uvec3(texelFetch(sdfwb_coneStarts, ivec2(gl_FragCoord.xy) / sdfwb_coneTile, 0).rgb * 255.0 + 0.5);
+    uvec3 bytes = uvec3(texelFetch(sdfwb_coneStarts, ivec2(SDFWB_PIXEL_CENTRE) / sdfwb_coneTile, 0).rgb * 255.0 + 0.5);
     uint code = (bytes.r << 16u) | (bytes.g << 8u) | bytes.b;
     return code >= 16777214u ? 1e30 : float(code) * (sdfwb_coneRange / 16777215.0);
 }

@@ -1,8 +1,11 @@
-// Fragment main of the sphere tracer: trace, then shade with the composed shading piece, which
-// defines vec3 sdfwb_shade(vec3 position, vec3 normal, vec3 direction, sdfwb_Hit hit); markers
-// (markers.glsl, SDFWB_MARKERS) are drawn over the result.
+// Main of the sphere tracer: trace, then shade with the composed shading piece, which defines
+// vec3 sdfwb_shade(vec3 position, vec3 normal, vec3 direction, sdfwb_Hit hit); markers
+// (markers.glsl, SDFWB_MARKERS) are drawn over the result. A fragment shader, or with
+// SDFWB_COMPUTE a compute shader that writes 8x8 tiles of pixels into sdfwb_target.
 
+#ifndef SDFWB_COMPUTE
 out vec4 sdfwb_color;
+#endif
 
 #ifdef SDFWB_BACKGROUND_IMAGE
 uniform sampler2D sdfwb_backgroundImage;
@@ -12,8 +15,8 @@ uniform vec4 sdfwb_backgroundFit; // uv = fragCoord / resolution * xy + zw: the 
 // What a ray that hits nothing shows: the background colour, or the image behind the shape.
 vec3 sdfwb_missColor() {
 #ifdef SDFWB_BACKGROUND_IMAGE
-    vec2 uv = gl_FragCoord.xy / sdfwb_resolution * sdfwb_backgroundFit.xy + sdfwb_backgroundFit.zw;
-    return texture(sdfwb_backgroundImage, vec2(uv.x, 1.0 - uv.y)).rgb;
+    vec2 uv = SDFWB_PIXEL_CENTRE / sdfwb_resolution * sdfwb_backgroundFit.xy + sdfwb_backgroundFit.zw;
+    return textureLod(sdfwb_backgroundImage, vec2(uv.x, 1.0 - uv.y), 0.0).rgb; // one level (as the matcap)
 #else
     return sdfwb_background;
 #endif
@@ -68,6 +71,26 @@ vec4 sdfwb_pixel(vec3 direction) {
 #endif
 }
 
+#ifdef SDFWB_COMPUTE
+layout(local_size_x = 8, local_size_y = 8) in;
+// Floats, so that the blit into the caller's framebuffer rounds (or keeps, in a float target for
+// .exr) exactly what the fragment tracer's output would. Row 0 at the bottom, as a framebuffer's.
+layout(rgba32f, binding = 0) uniform writeonly image2D sdfwb_target;
+
+// One invocation a pixel; the tiles past the frame's edge have idle lanes. A ray that misses the
+// box ends at its entry test (sdfwb_intersectBox), which is what the fragment tracer's proxy box
+// saves it.
+void main() {
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    if (pixel.x >= int(sdfwb_resolution.x) || pixel.y >= int(sdfwb_resolution.y)) return;
+    sdfwb_computePixel = vec2(pixel) + 0.5;
+    vec4 color = sdfwb_pixel(sdfwb_primaryRay(sdfwb_computePixel));
+#if defined(SDFWB_MARKERS) && !defined(SDFWB_OUTPUT_STATS)
+    color.rgb = sdfwb_drawMarkers(color.rgb);
+#endif
+    imageStore(sdfwb_target, pixel, color);
+}
+#else
 void main() {
     // The cone pass draws one fragment per tile: its ray goes through the tile's centre.
 #ifdef SDFWB_CONES
@@ -80,3 +103,4 @@ void main() {
     if (!SDFWB_CONE_PASS) sdfwb_color.rgb = sdfwb_drawMarkers(sdfwb_color.rgb);
 #endif
 }
+#endif

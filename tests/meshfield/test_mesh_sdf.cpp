@@ -623,8 +623,20 @@ TEST_F(MeshSdfTest, TheTracerShadesEveryPixelOfAMeshWithItsFacesNormal) {
     constexpr int kW = 192, kH = 144;
     renderer::OffscreenRenderer offscreen;
     const renderer::Image image = offscreen.render(sdfRenderer, kW, kH, camera, 0.0f);
+    // The compute tracer's walk draws the same pixels (issue 49).
+    renderer::TraceSettings trace;
+    trace.tracer = renderer::TraceSettings::Tracer::Compute;
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
+    EXPECT_TRUE(sdfRenderer.computeTracer());
+    const renderer::Image computed = offscreen.render(sdfRenderer, kW, kH, camera, 0.0f);
     sdfRenderer.releaseGl();
     ASSERT_EQ(image.width, kW);
+    ASSERT_EQ(computed.rgba.size(), image.rgba.size());
+    std::size_t tracersDiffer = 0;
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4)
+        tracersDiffer += !std::equal(&image.rgba[i], &image.rgba[i] + 3, &computed.rgba[i]);
+    std::printf("torus mesh: %zu of %d pixels differ between the fragment and the compute tracer\n", tracersDiffer, kW * kH);
+    EXPECT_LE(tracersDiffer, std::size_t(kW * kH / 1000));
     const dvec3 origin(camera.position);
     std::size_t compared = 0, wrongNormals = 0, misses = 0, worstX = 0, worstY = 0;
     double worst = 0.0;

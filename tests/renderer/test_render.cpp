@@ -206,7 +206,8 @@ TEST_F(RendererTest, SettleMarchKeepsTheFasterOfTheTwoMarches) {
     renderer::OffscreenRenderer offscreen;
     renderer::SdfRenderer sdfRenderer;
     renderer::TraceSettings trace;
-    trace.cones = renderer::TraceSettings::Cones::Off; // the march alone (ConePassIsKeptWhenItMakesFramesFaster)
+    trace.cones = renderer::TraceSettings::Cones::Off;        // the march alone (ConePassIsKeptWhenItMakesFramesFaster)
+    trace.tracer = renderer::TraceSettings::Tracer::Fragment; // (ComputeTracerIsTriedLastAndKeptWhenFaster)
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(longSdf)));
     EXPECT_TRUE(sdfRenderer.fusedMarch());
@@ -380,6 +381,9 @@ TEST_F(RendererTest, ConePassIsKeptWhenItMakesFramesFaster) {
     const shaders::PreparedSdf sdf = prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n");
     renderer::OffscreenRenderer offscreen;
     renderer::SdfRenderer sdfRenderer;
+    renderer::TraceSettings fragmentOnly; // the compute tracer's trial: ComputeTracerIsTriedLastAndKeptWhenFaster
+    fragmentOnly.tracer = renderer::TraceSettings::Tracer::Fragment;
+    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(fragmentOnly)));
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(sdf)));
     EXPECT_FALSE(sdfRenderer.conePass()) << "a new SDF starts without";
     const renderer::Image without = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
@@ -411,7 +415,7 @@ TEST_F(RendererTest, ConePassIsKeptWhenItMakesFramesFaster) {
     EXPECT_EQ(sdfRenderer.programsBuilt(), built) << "the program without cones comes from the cache";
     EXPECT_FALSE(sdfRenderer.settleMarch(10.0));
 
-    renderer::TraceSettings trace;
+    renderer::TraceSettings trace = fragmentOnly;
     trace.cones = renderer::TraceSettings::Cones::Off;
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(sdf)));
@@ -439,6 +443,105 @@ TEST_F(RendererTest, ConePassIsKeptWhenItMakesFramesFaster) {
     shading.probe = true;
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
     EXPECT_FALSE(sdfRenderer.conePass()) << "the march debugger records each pixel's own march";
+    sdfRenderer.releaseGl();
+}
+
+// The compute tracer (issue 49) is tried at rest after the march and the cone pass, and kept when
+// a full frame is faster; it draws the fragment tracer's picture (markers and a background image
+// included); forced on, it serves every frame it applies to, and the cutting plane, the march
+// debugger and the statistics output stay with the fragment tracer.
+TEST_F(RendererTest, ComputeTracerIsTriedLastAndKeptWhenFaster) {
+    const shaders::PreparedSdf sdf = prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n");
+    renderer::OffscreenRenderer offscreen;
+    renderer::SdfRenderer sdfRenderer;
+    renderer::TraceSettings trace;
+    trace.cones = renderer::TraceSettings::Cones::Off;
+    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(sdf)));
+    EXPECT_FALSE(sdfRenderer.computeTracer()) << "a new SDF starts with the fragment tracer";
+    const renderer::Image fragment = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
+    EXPECT_TRUE(sdfRenderer.settleMarch(40.0));
+    EXPECT_TRUE(sdfRenderer.computeTracer());
+    EXPECT_NE(sdfRenderer.fragmentSource().find("#define SDFWB_COMPUTE"), std::string::npos);
+    EXPECT_FALSE(sdfRenderer.marchSettled()) << "on trial";
+    const renderer::Image compute = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
+    EXPECT_FALSE(sdfRenderer.settleMarch(30.0)) << "faster: kept";
+    EXPECT_TRUE(sdfRenderer.computeTracer());
+    EXPECT_TRUE(sdfRenderer.marchSettled());
+    EXPECT_GT(foreground(compute, renderer::ShadingSettings{}.background), 200 * 120 / 10);
+    long differing = 0;
+    for (std::size_t i = 0; i < compute.rgba.size(); ++i) differing += compute.rgba[i] != fragment.rgba[i];
+    EXPECT_LE(differing, long(compute.rgba.size() / 1000));
+
+    // An edit of the same file keeps it; another file tries again, and a slower compute frame
+    // goes back to the fragment program, from the cache.
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.5; }\n"))));
+    EXPECT_TRUE(sdfRenderer.computeTracer()) << "an edit of the same file keeps the compute tracer";
+    ASSERT_FALSE(
+        shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n", "other.glsl"))));
+    EXPECT_FALSE(sdfRenderer.computeTracer());
+    EXPECT_TRUE(sdfRenderer.settleMarch(40.0));
+    EXPECT_TRUE(sdfRenderer.computeTracer());
+    const std::uint64_t built = sdfRenderer.programsBuilt();
+    EXPECT_TRUE(sdfRenderer.settleMarch(45.0)) << "slower: dropped, and the caller draws again";
+    EXPECT_FALSE(sdfRenderer.computeTracer());
+    EXPECT_EQ(sdfRenderer.programsBuilt(), built);
+    EXPECT_FALSE(sdfRenderer.settleMarch(10.0));
+
+    // After the cone pass: kept cones, then the compute tracer (without them) tried against them.
+    trace.cones = renderer::TraceSettings::Cones::Auto;
+    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
+    ASSERT_FALSE(
+        shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n", "third.glsl"))));
+    EXPECT_TRUE(sdfRenderer.settleMarch(40.0));
+    EXPECT_TRUE(sdfRenderer.conePass());
+    EXPECT_TRUE(sdfRenderer.settleMarch(30.0)) << "cones kept; the compute tracer on trial";
+    EXPECT_TRUE(sdfRenderer.computeTracer());
+    EXPECT_FALSE(sdfRenderer.conePass());
+    EXPECT_TRUE(sdfRenderer.settleMarch(35.0)) << "slower than the cone pass: dropped";
+    EXPECT_FALSE(sdfRenderer.computeTracer());
+    EXPECT_TRUE(sdfRenderer.conePass());
+    EXPECT_TRUE(sdfRenderer.marchSettled());
+
+    // Forced: no trial; where it does not apply, the fragment tracer draws.
+    trace.tracer = renderer::TraceSettings::Tracer::Compute;
+    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
+    EXPECT_TRUE(sdfRenderer.computeTracer()) << "forced on";
+    EXPECT_FALSE(sdfRenderer.conePass());
+    renderer::CuttingPlane plane;
+    plane.enabled = true;
+    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setPlane(plane)));
+    EXPECT_FALSE(sdfRenderer.computeTracer()) << "the plane's lines need a fragment shader's derivatives";
+    plane.enabled = false;
+    EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setPlane(plane)));
+    EXPECT_TRUE(sdfRenderer.computeTracer());
+    for (int which = 0; which < 2; ++which) {
+        renderer::ShadingSettings shading;
+        (which == 0 ? shading.probe : shading.statsOutput) = true;
+        EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
+        EXPECT_FALSE(sdfRenderer.computeTracer()) << (which == 0 ? "the march debugger" : "the statistics output");
+    }
+
+    // Markers and a background image: the same picture from both tracers.
+    renderer::ShadingSettings shading;
+    shading.mode = renderer::ShadingMode::Matcap;
+    shading.markers = {{0.0f, 0.0f, 0.6f}, {0.5f, 0.3f, 0.2f}};
+    shading.backgroundImage = (fs::path(SDFWB_SOURCE_DIR) / "resources" / "matcaps" / "clay.png").string();
+    std::vector<renderer::Image> pictures;
+    for (auto tracer : {renderer::TraceSettings::Tracer::Fragment, renderer::TraceSettings::Tracer::Compute}) {
+        renderer::SdfRenderer drawing;
+        renderer::TraceSettings forced;
+        forced.tracer = tracer;
+        EXPECT_FALSE(shaders::hasErrors(drawing.setTrace(forced)));
+        EXPECT_FALSE(shaders::hasErrors(drawing.setShading(shading)));
+        ASSERT_FALSE(shaders::hasErrors(drawing.setSdf(sdf)));
+        EXPECT_EQ(drawing.computeTracer(), tracer == renderer::TraceSettings::Tracer::Compute);
+        pictures.push_back(offscreen.render(drawing, 200, 120, renderer::Camera{}, 0.0f));
+        drawing.releaseGl();
+    }
+    differing = 0;
+    for (std::size_t i = 0; i < pictures[0].rgba.size(); ++i) differing += pictures[0].rgba[i] != pictures[1].rgba[i];
+    EXPECT_LE(differing, long(pictures[0].rgba.size() / 1000));
     sdfRenderer.releaseGl();
 }
 

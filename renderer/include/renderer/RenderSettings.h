@@ -33,8 +33,23 @@ struct TraceSettings {
     // background) where the picture shows only the background outside it. Off: every pixel runs
     // the tracer (for measurements against a full-frame reference).
     bool boxProxy = true;
+    // Which program draws the picture: the fragment tracer or the compute tracer (8x8 tiles into
+    // an image, blitted; shaders::computeTracerApplies). Auto: the fragment tracer, and at rest the
+    // compute tracer is tried once and kept when a full frame is faster (SdfRenderer::settleMarch).
+    enum class Tracer { Auto, Fragment, Compute };
+    Tracer tracer = Tracer::Auto;
     bool operator==(const TraceSettings&) const = default;
 };
+
+// "auto", "fragment", "compute" (the CLI's --tracer).
+inline const char* tracerName(TraceSettings::Tracer tracer) {
+    return tracer == TraceSettings::Tracer::Fragment ? "fragment" : tracer == TraceSettings::Tracer::Compute ? "compute" : "auto";
+}
+inline std::optional<TraceSettings::Tracer> parseTracer(std::string_view name) {
+    for (auto tracer : {TraceSettings::Tracer::Auto, TraceSettings::Tracer::Fragment, TraceSettings::Tracer::Compute})
+        if (name == tracerName(tracer)) return tracer;
+    return std::nullopt;
+}
 
 // "auto", "off", "on" (the CLI's --cones and the job files' trace.cones).
 inline const char* conesName(TraceSettings::Cones cones) {

@@ -69,7 +69,8 @@ public:
     // took under kTrySeparateMarchBelowMilliseconds, it is traded once for the separate march and
     // normal, which draws SDFs that are cheap per evaluation faster; the next full frame's time
     // decides which program stays. Then (TraceSettings::Cones::Auto) the cone pass is tried the
-    // same way: it pays when steps are dear. Call with the time of a full-resolution frame at rest
+    // same way: it pays when steps are dear; and last (TraceSettings::Tracer::Auto) the compute
+    // tracer, which pays on GPUs that run few graphics units. Call with the time of a full-resolution frame at rest
     // (never a program's first draw, which includes code generation). Returns true when the
     // program changed and the caller should draw again; false once the choice is made. setSdf()
     // starts over, except that an edit of the same file keeps the cone pass if it was kept.
@@ -79,10 +80,13 @@ public:
     bool fusedMarch() const;
     // Whether the current program draws the cone pass first (TraceSettings::cones).
     bool conePass() const;
+    // Whether the current program is the compute tracer (TraceSettings::tracer).
+    bool computeTracer() const;
     // Whether settleMarch() has made its choices for this SDF (no trial is open or to come).
     bool marchSettled() const;
 
-    // The composed fragment source of the current variant (for tests and the log).
+    // The composed source of the current variant: the fragment shader's, or the compute shader's
+    // for the compute tracer (for tests and the log).
     const std::string& fragmentSource() const;
 
     // Draws a width x height frame into the bound framebuffer. Without a good program, clears to

@@ -44,7 +44,16 @@ struct TracerFeatures {
     // sdfwb_meshTrace) instead of a march; see meshRaycastApplies. Off: the sphere tracer, for
     // benchmarks (SDFWB_MESH_TRACE=march).
     bool meshRaycast = true;
+    // The compute tracer: the same tracer in a compute shader over 8x8 tiles of pixels, written
+    // into an image (trace_main.frag, SDFWB_COMPUTE). Only where computeTracerApplies.
+    bool compute = false;
 };
+
+// Whether the compute tracer can draw a frame with these features: not the cutting plane (its
+// lines are anti-aliased by screen-space derivatives, which compute shaders do not have), the
+// cone pass (a second draw into the target), the march debugger or the statistics output (the
+// fragment tracer's own outputs).
+bool computeTracerApplies(const TracerFeatures& features);
 
 // Whether the picture of `sdf` is drawn by the mesh walk: a mesh's own field (not a text over it),
 // and not the march debugger, the step heat map or the statistics output, which show a march.
