@@ -252,7 +252,7 @@ std::optional<int> parse(CLI::App& app, const std::string& context, Arguments ar
 
 // Options shared by render and animate; `finish` validates the strings into `job`.
 struct FrameOptions {
-    std::string size = "1280x720", shading = "normals", camera, target, plane, background, cones = "auto";
+    std::string size = "1280x720", shading = "normals", camera, target, plane, background, cones = "auto", tracer = "auto";
     bool planeNoClip = false;
 };
 
@@ -292,6 +292,10 @@ void addFrameOptions(CLI::App& app, jobs::FrameRequest& job, FrameOptions& optio
     app.add_option("--cone-tile", job.trace.coneTile, "the cone pass's tile size in pixels")
         ->capture_default_str()
         ->check(CLI::Range(1, 64));
+    app.add_option("--tracer", options.tracer,
+                   "fragment or compute shader: auto (the fragment tracer; the compute one tried on animations' frames, "
+                   "kept when faster), fragment, compute (not with --plane)")
+        ->capture_default_str();
     app.add_option("--plane", options.plane, "cutting plane NX,NY,NZ,OFFSET (dot(N, p) = OFFSET), drawn with isocontours");
     app.add_flag("--plane-no-clip", options.planeNoClip, "keep the surface in front of the cutting plane");
     app.add_option("--contour-spacing", job.plane.contourSpacing, "isocontour spacing on the plane")
@@ -320,6 +324,12 @@ std::optional<int> finishFrameOptions(jobs::FrameRequest& job, const FrameOption
         return 2;
     }
     job.trace.cones = *cones;
+    auto tracer = renderer::parseTracer(options.tracer);
+    if (!tracer) {
+        printError("--tracer: expected auto, fragment or compute, got '" + options.tracer + "'");
+        return kExitUsage;
+    }
+    job.trace.tracer = *tracer;
     if (!options.camera.empty()) {
         auto position = parseVec3(options.camera);
         if (!position) {

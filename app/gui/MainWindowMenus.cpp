@@ -61,6 +61,7 @@
 #include <QStatusBar>
 #include <QStringListModel>
 #include <QToolBar>
+#include <array>
 #include <fstream>
 #include <memory>
 
@@ -211,22 +212,33 @@ void MainWindow::createViewMenu() {
         m_viewport->setTrace(trace);
     });
     relaxation->setCheckable(true);
-    // The cone pass: tried at rest and kept when it makes frames faster (auto), or forced.
-    QMenu* cones = view->addMenu(tr("&Cone pass"));
-    auto* conesGroup = new QActionGroup(this);
-    for (auto [mode, label] :
-         {std::pair{renderer::TraceSettings::Cones::Auto, tr("&Automatic (kept when faster)")},
-          std::pair{renderer::TraceSettings::Cones::On, tr("&On")}, std::pair{renderer::TraceSettings::Cones::Off, tr("O&ff")}}) {
-        QAction* action = cones->addAction(label, this, [this, mode] {
-            renderer::TraceSettings trace = m_viewport->trace();
-            trace.cones = mode;
-            m_viewport->setTrace(trace);
-        });
-        action->setCheckable(true);
-        action->setChecked(mode == m_viewport->trace().cones);
-        action->setObjectName(QString("cones_") + renderer::conesName(mode));
-        conesGroup->addAction(action);
-    }
+    // A choice among a trace setting's values, one checkable item each (objectName prefix + name).
+    auto addChoices = [this, view](const QString& title, const QString& prefix, auto member, auto nameOf, auto choices) {
+        QMenu* menu = view->addMenu(title);
+        auto* group = new QActionGroup(this);
+        for (auto [value, label] : choices) {
+            QAction* action = menu->addAction(label, this, [this, member, value] {
+                renderer::TraceSettings trace = m_viewport->trace();
+                trace.*member = value;
+                m_viewport->setTrace(trace);
+            });
+            action->setCheckable(true);
+            action->setChecked(value == m_viewport->trace().*member);
+            action->setObjectName(prefix + nameOf(value));
+            group->addAction(action);
+        }
+    };
+    // The cone pass and the compute tracer: tried at rest and kept when they make frames faster
+    // (auto), or forced.
+    using Cones = renderer::TraceSettings::Cones;
+    using Tracer = renderer::TraceSettings::Tracer;
+    addChoices(tr("&Cone pass"), "cones_", &renderer::TraceSettings::cones, renderer::conesName,
+               std::array{std::pair{Cones::Auto, tr("&Automatic (kept when faster)")}, std::pair{Cones::On, tr("&On")},
+                          std::pair{Cones::Off, tr("O&ff")}});
+    addChoices(tr("&Tracer"), "tracer_", &renderer::TraceSettings::tracer, renderer::tracerName,
+               std::array{std::pair{Tracer::Auto, tr("&Automatic (compute shader kept when faster)")},
+                          std::pair{Tracer::Fragment, tr("&Fragment shader")},
+                          std::pair{Tracer::Compute, tr("&Compute shader (not with the cutting plane)")}});
     m_overlayAction = view->addAction(tr("Show name, author and &license"), this, [this] { updateOverlay(); });
     m_overlayAction->setCheckable(true);
     m_overlayAction->setObjectName("overlay");

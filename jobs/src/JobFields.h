@@ -37,6 +37,7 @@ template <class V> void fields(V& v, renderer::TraceSettings& t) {
     v("over_relaxation", t.overRelaxation);
     v("cones", t.cones);
     v("cone_tile", t.coneTile);
+    v("tracer", t.tracer);
 }
 
 template <class V> void fields(V& v, renderer::Camera& c) {

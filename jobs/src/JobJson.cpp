@@ -35,6 +35,7 @@ json encode(bool value) { return value; }
 json encode(const std::string& value) { return value; }
 json encode(renderer::ShadingMode mode) { return renderer::shadingModeName(mode); }
 json encode(renderer::TraceSettings::Cones cones) { return renderer::conesName(cones); }
+json encode(renderer::TraceSettings::Tracer tracer) { return renderer::tracerName(tracer); }
 // A float as the shortest decimal that reads back as the same float (0.01f is 0.01, not
 // 0.009999999776482582): written as that double, it parses back to the same float bits.
 json encode(float value) {
@@ -237,6 +238,13 @@ bool decode(const json& in, renderer::TraceSettings::Cones& value, const std::st
     auto cones = in.is_string() ? renderer::parseCones(in.get<std::string>()) : std::nullopt;
     if (!cones) return fail(error, path, "auto, off or on", in);
     value = *cones;
+    return true;
+}
+
+bool decode(const json& in, renderer::TraceSettings::Tracer& value, const std::string& path, bool, std::string& error) {
+    auto tracer = in.is_string() ? renderer::parseTracer(in.get<std::string>()) : std::nullopt;
+    if (!tracer) return fail(error, path, "auto, fragment or compute", in);
+    value = *tracer;
     return true;
 }
 

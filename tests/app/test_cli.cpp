@@ -110,6 +110,17 @@ TEST(CommandLine, NonFiniteAndOutOfRangeNumbersAreRefusedWhileParsing) {
     EXPECT_FALSE(fs::exists(out));
 }
 
+TEST(CommandLine, UnknownTracerAndConesAreNamed) {
+    fs::path out = outputPath("tracer.png");
+    for (const std::string option : {"--tracer vertex", "--cones maybe"}) {
+        Result r = run("--batch render --sdf sphere --output " + out.string() + " " + option);
+        EXPECT_EQ(r.exitCode, 2) << r.output;
+        EXPECT_NE(r.output.find(option.substr(0, option.find(' ')) + ": expected auto"), std::string::npos) << r.output;
+        EXPECT_EQ(lineCount(r.output), 1) << r.output;
+        EXPECT_FALSE(fs::exists(out));
+    }
+}
+
 TEST(CommandLine, UnsupportedImageTypeAndMissingFolder) {
     Result r = run("--batch render --sdf sphere --output /tmp/sdfwb-cli-image.xyz");
     EXPECT_EQ(r.exitCode, 2) << r.output;

@@ -112,8 +112,8 @@ TEST(Viewport, AtRestALongSdfKeepsTheFasterOfTheFusedAndTheSeparateMarch) {
         window.resize(1000, 600);
         widgets::ViewportWidget* viewport = window.viewport();
         // The cone pass always costs more here, so only the march is traded.
-        viewport->setSettleTiming([separateFaster](bool fused, bool cones, double) {
-            return (fused ? 60.0 : separateFaster ? 30.0 : 90.0) + (cones ? 20.0 : 0.0);
+        viewport->setSettleTiming([separateFaster](bool fused, bool cones, bool compute, double) {
+            return (fused ? 60.0 : separateFaster ? 30.0 : 90.0) + (cones ? 20.0 : 0.0) + (compute ? 10.0 : 0.0);
         });
         window.show();
         ASSERT_TRUE(openAndWait(window, "Manufactured/Mug.glsl"));
@@ -123,6 +123,7 @@ TEST(Viewport, AtRestALongSdfKeepsTheFasterOfTheFusedAndTheSeparateMarch) {
         EXPECT_EQ(viewport->fusedMarch(), !separateFaster)
             << (separateFaster ? "the faster separate march was not kept" : "the slower separate march was kept");
         EXPECT_FALSE(viewport->conePass()) << "the slower cone pass was kept";
+        EXPECT_FALSE(viewport->computeTracer()) << "the slower compute tracer was kept";
         EXPECT_FALSE(viewport->isInteracting());
         expectSamePicture(fused, fullResolutionFrame(window), 50);
     }
@@ -136,8 +137,9 @@ TEST(Viewport, AtRestTheConePassIsKeptOnlyWhenItMakesFramesFaster) {
         app::MainWindow window;
         window.resize(1000, 600);
         widgets::ViewportWidget* viewport = window.viewport();
-        viewport->setSettleTiming(
-            [conesFaster](bool, bool cones, double) { return cones ? (conesFaster ? 50.0 : 150.0) : 100.0; });
+        viewport->setSettleTiming([conesFaster](bool, bool cones, bool compute, double) {
+            return compute ? 500.0 : cones ? (conesFaster ? 50.0 : 150.0) : 100.0;
+        });
         window.show();
         ASSERT_TRUE(openAndWait(window, "Geometry/TrefoilKnot.glsl"));
         EXPECT_FALSE(viewport->conePass()) << "a new SDF opens without the cone pass";
@@ -165,6 +167,37 @@ TEST(Viewport, AtRestTheConePassIsKeptOnlyWhenItMakesFramesFaster) {
         window.editor()->setText(window.editor()->text() + "\n// edited\n"); // as if typed
         ASSERT_TRUE(waitFor([&] { return applied; }));
         EXPECT_TRUE(viewport->conePass()) << "the edit dropped the cone pass its file had kept";
+    }
+}
+
+// The compute tracer is tried last at rest and kept when its full frame is faster (injected
+// timings: both outcomes); it draws the same picture; View > Tracer forces either tracer.
+TEST(Viewport, AtRestTheComputeTracerIsKeptOnlyWhenItMakesFramesFaster) {
+    for (const bool computeFaster : {false, true}) {
+        app::MainWindow window;
+        window.resize(1000, 600);
+        widgets::ViewportWidget* viewport = window.viewport();
+        viewport->setSettleTiming([computeFaster](bool, bool cones, bool compute, double) {
+            return compute ? (computeFaster ? 50.0 : 150.0) : cones ? 200.0 : 100.0;
+        });
+        window.show();
+        ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
+        EXPECT_FALSE(viewport->computeTracer()) << "a new SDF opens with the fragment tracer";
+        const QImage fragment = fullResolutionFrame(window);
+        ASSERT_TRUE(waitFor([&] { return viewport->marchSettled(); }, 30000)) << "never settled at rest";
+        EXPECT_EQ(viewport->computeTracer(), computeFaster)
+            << (computeFaster ? "the faster compute tracer was dropped" : "the slower compute tracer was kept");
+        EXPECT_FALSE(viewport->conePass()) << "the slower cone pass was kept";
+        expectSamePicture(fragment, fullResolutionFrame(window), 20);
+        if (!computeFaster) continue;
+        auto* forceFragment = window.findChild<QAction*>("tracer_fragment");
+        auto* forceCompute = window.findChild<QAction*>("tracer_compute");
+        ASSERT_TRUE(forceFragment && forceCompute);
+        forceFragment->trigger();
+        EXPECT_FALSE(viewport->computeTracer());
+        forceCompute->trigger();
+        EXPECT_TRUE(viewport->computeTracer());
+        expectSamePicture(fragment, fullResolutionFrame(window), 20);
     }
 }
 

@@ -41,6 +41,8 @@ FrameRequest unusualFrame() {
     f.trace.epsilonScale = 0.125f;
     f.trace.boxMargin = 0.2f;
     f.trace.overRelaxation = 1.6f;
+    f.trace.cones = renderer::TraceSettings::Cones::On;
+    f.trace.tracer = renderer::TraceSettings::Tracer::Compute;
     f.camera.position = {3.0f, -2.0f, 1.0e-3f};
     f.camera.target = {0.1f, 0.2f, 0.3f};
     f.camera.up = {0.0f, 0.0f, 1.0f};
@@ -150,6 +152,7 @@ TEST(JobJson, MalformedRequestsAreRefusedNamingTheKey) {
         {R"({"kind": "render", "shading": {"markers": [[1, 2]]}})", "'shading.markers[0]': expected [x, y, z]"},
         {R"({"kind": "render", "trace": {"max_steps": 2.5}})", "'trace.max_steps': expected an integer"},
         {R"({"kind": "render", "trace": {"max_steps": 99999999999}})", "'trace.max_steps': expected an integer in range"},
+        {R"({"kind": "render", "trace": {"tracer": "vertex"}})", "'trace.tracer': expected auto, fragment or compute"},
         {R"({"kind": "sample", "n": -1})", "'n': expected a non-negative integer"},
         {R"({"kind": "audit", "plane": [0, 0, 1]})", "'plane': expected [nx, ny, nz, offset]"},
         {R"({"kind": "merge", "parts": "a.ply"})", "'parts': expected an array"},

@@ -144,7 +144,20 @@ TEST_F(RendererTest, BatchRenderWritesAPngWithoutADisplay) {
     const long drawn = foreground(*image, background);
     EXPECT_GT(drawn, 640L * 360 / 20) << "too little of the torus";
     EXPECT_LT(drawn, 640L * 360 / 2) << "too much: not the torus";
+    // --tracer compute: the compute tracer draws the same image.
+    const fs::path computed = fs::temp_directory_path() / "sdfwb-batch-render-compute.png";
+    fs::remove(computed);
+    command = "env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(SDFWB_BINARY) + " --batch render --sdf torus --output " +
+              computed.string() + " --size 640x360 --tracer compute --quiet";
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    auto other = renderer::readImage(computed);
+    ASSERT_TRUE(other.hasValue()) << other.error().message;
+    ASSERT_EQ(other->rgba.size(), image->rgba.size());
+    long differing = 0;
+    for (std::size_t i = 0; i < image->rgba.size(); ++i) differing += image->rgba[i] != other->rgba[i];
+    EXPECT_LE(differing, long(image->rgba.size() / 1000));
     fs::remove(out);
+    fs::remove(computed);
 }
 
 // A step factor of 1 (the default) compiles without the multiply on every step; any other value

@@ -95,6 +95,8 @@ bool ViewportWidget::fusedMarch() const { return m_renderer->fusedMarch(); }
 
 bool ViewportWidget::conePass() const { return m_renderer->conePass(); }
 
+bool ViewportWidget::computeTracer() const { return m_renderer->computeTracer(); }
+
 bool ViewportWidget::marchSettled() const { return m_renderer->marchSettled(); }
 
 void ViewportWidget::setShading(const renderer::ShadingSettings& shading) {
@@ -342,8 +344,9 @@ void ViewportWidget::paintGL() {
     m_lastFrameMilliseconds = stats.cpuMilliseconds;
     m_lastScale = scale;
     if (scale >= 1.0f && !m_interacting) {
-        m_settleFrameMilliseconds =
-            m_settleTiming ? m_settleTiming(fusedMarch(), conePass(), stats.cpuMilliseconds) : stats.cpuMilliseconds;
+        m_settleFrameMilliseconds = m_settleTiming
+                                        ? m_settleTiming(fusedMarch(), conePass(), computeTracer(), stats.cpuMilliseconds)
+                                        : stats.cpuMilliseconds;
         m_settleTimer.start();
     }
     if (m_meshOverlay->hasMesh() && m_lastGoodSdf) {

@@ -93,12 +93,14 @@ public:
     bool fusedMarch() const;
     // Whether the picture draws the cone pass first (tried and kept at rest when frames got faster).
     bool conePass() const;
+    // Whether the compute tracer draws the picture (tried and kept at rest when frames got faster).
+    bool computeTracer() const;
     // Whether those choices are made for the current SDF.
     bool marchSettled() const;
     // The full-frame time those choices are made from, given the program's march (fused or not),
-    // its cone pass and the time measured: tests set it to decide with known timings instead of a
-    // wall clock's. Unset (the default): the measured time.
-    using SettleTiming = std::function<double(bool fusedMarch, bool conePass, double measuredMilliseconds)>;
+    // its cone pass, its tracer (compute or fragment) and the time measured: tests set it to decide with known timings instead of
+    // a wall clock's. Unset (the default): the measured time.
+    using SettleTiming = std::function<double(bool fusedMarch, bool conePass, bool computeTracer, double measuredMilliseconds)>;
     void setSettleTiming(SettleTiming timing) { m_settleTiming = std::move(timing); }
 
     // Renders one full-quality frame at width x height (screenshots). Empty image without GL.
