@@ -6,8 +6,8 @@
 // the same way (the box's far faces as geometry over a cleared background, so both trace the same
 // pixels); none of our refinement, retaken normal taps, miss reasons or feature switches. Timings
 // are medians of 3 frames after a warm-up frame (shader JIT excluded), draw to glFinish for both.
-// Ours settles its program choices first (the fused or separate march, the cone pass: what the
-// viewport does at rest) and its full frame is then measured afresh, so the figure is not the
+// Ours settles its program choices first (the fused or separate march, the cone pass, the compute
+// tracer: what the viewport does at rest) and its full frame is then measured afresh, so the figure is not the
 // timing that won a comparison. Error against run time (hit error, samplers, gradients, audit) is
 // `sdfwb --batch bench` (jobs/src/Benchmarks.cpp).
 //
@@ -19,6 +19,7 @@
 #include <core/Paths.h>
 #include <dataset/Catalogue.h>
 #include <meshfield/MeshField.h>
+#include <renderer/GlInfo.h>
 #include <renderer/HeadlessContext.h>
 #include <renderer/ImageIO.h>
 #include <renderer/OffscreenRenderer.h>
@@ -61,11 +62,7 @@ double frameMilliseconds(renderer::OffscreenRenderer& offscreen, renderer::SdfRe
     return median3(t[0], t[1], t[2]);
 }
 
-// llvmpipe or softpipe: the GL runs on the CPU, and its timer queries miss the deferred rasterisation.
-bool softwareRasteriser() {
-    const char* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    return name && (std::strstr(name, "llvmpipe") || std::strstr(name, "softpipe"));
-}
+using renderer::softwareRasteriser; // the GL on the CPU: its timer queries miss the deferred rasterisation
 
 // The frame's GPU time (a GL_TIME_ELAPSED query around its draws): the median over 50 frames, or
 // over the frames that fit in 3 s when they are slower (llvmpipe: at least 5). -1 without timer.
@@ -250,6 +247,36 @@ std::string compareCones(const std::string& name, double without, double with,
     return row;
 }
 
+// The settled program's full frame drawn by the fragment tracer and by the compute tracer (both
+// forced): medians of 3 frames to glFinish, on a GPU the GPU time too, and, for accuracy, how
+// many pixels of the two pictures differ. The renderer's tracer choice is reset afterwards.
+std::string tracerComparison(renderer::OffscreenRenderer& offscreen, renderer::SdfRenderer& sdfRenderer) {
+    renderer::TraceSettings trace = sdfRenderer.trace();
+    const renderer::TraceSettings saved = trace;
+    double cpu[2] = {0.0, 0.0}, gpu[2] = {-1.0, -1.0};
+    renderer::Image pictures[2];
+    const renderer::TraceSettings::Tracer tracers[2] = {renderer::TraceSettings::Tracer::Fragment,
+                                                        renderer::TraceSettings::Tracer::Compute};
+    for (int k = 0; k < 2; ++k) {
+        trace.tracer = tracers[k];
+        (void)sdfRenderer.setTrace(trace);
+        pictures[k] = offscreen.render(sdfRenderer, 1280, 720, renderer::Camera{}, 0.0f);
+        cpu[k] = frameMilliseconds(offscreen, sdfRenderer, 1280, 720, 1.0f);
+        if (!softwareRasteriser()) gpu[k] = gpuFrameMilliseconds(offscreen, sdfRenderer, 1280, 720).milliseconds;
+    }
+    (void)sdfRenderer.setTrace(saved);
+    long differing = 0;
+    for (std::size_t i = 0; i + 3 < pictures[0].rgba.size() && pictures[0].rgba.size() == pictures[1].rgba.size(); i += 4)
+        differing += !std::equal(&pictures[0].rgba[i], &pictures[0].rgba[i] + 3, &pictures[1].rgba[i]);
+    char cell[160];
+    if (gpu[0] >= 0.0 && gpu[1] >= 0.0)
+        std::snprintf(cell, sizeof cell, "%.1f / %.1f (GPU %.3f / %.3f); %ld px differ", cpu[0], cpu[1], gpu[0], gpu[1],
+                      differing);
+    else
+        std::snprintf(cell, sizeof cell, "%.1f / %.1f; %ld px differ", cpu[0], cpu[1], differing);
+    return cell;
+}
+
 shaders::IncludeOptions includeOptions() {
     shaders::IncludeOptions options;
     options.libraryRoots = {paths::shaderLibraryRoot(), paths::datasetRoot()};
@@ -259,8 +286,9 @@ shaders::IncludeOptions includeOptions() {
 void datasetReport(const std::vector<std::string>& names) {
     dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
     std::printf("| SDF | full-resolution frame (ms) | GPU time a frame (ms; frames) | march | reference tracer (ms) | ours / "
-                "reference | moving: scale | moving frame (ms) | steps/pixel (all) | steps/pixel (hits) |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+                "reference | moving: scale | moving frame (ms) | steps/pixel (all) | steps/pixel (hits) | fragment / compute "
+                "tracer (ms) |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
     renderer::OffscreenRenderer offscreen;
     std::vector<double> ratios, movingFrames;
     std::vector<std::string> coneRows;
@@ -279,7 +307,7 @@ void datasetReport(const std::vector<std::string>& names) {
         const shaders::PreparedSdf prepared = shaders::prepareSdfFile(entry.path, includeOptions());
         auto diagnostics = sdfRenderer.setSdf(prepared);
         if (shaders::hasErrors(diagnostics)) {
-            std::printf("| %s | does not compile | | | | | | | | |\n", entry.metadata.name.c_str());
+            std::printf("| %s | does not compile | | | | | | | | | |\n", entry.metadata.name.c_str());
             continue;
         }
         double full = frameMilliseconds(offscreen, sdfRenderer, 1280, 720, 1.0f);
@@ -289,7 +317,7 @@ void datasetReport(const std::vector<std::string>& names) {
         while (sdfRenderer.settleMarch(full)) full = frameMilliseconds(offscreen, sdfRenderer, 1280, 720, 1.0f);
         // Measured afresh with the settled program: the timing that won a comparison is biased low.
         full = frameMilliseconds(offscreen, sdfRenderer, 1280, 720, 1.0f);
-        const bool fused = sdfRenderer.fusedMarch(), cones = sdfRenderer.conePass();
+        const bool fused = sdfRenderer.fusedMarch(), cones = sdfRenderer.conePass(), compute = sdfRenderer.computeTracer();
         const GpuFrames gpu = softwareRasteriser() ? GpuFrames{} : gpuFrameMilliseconds(offscreen, sdfRenderer, 1280, 720);
         const std::string gpuCell =
             gpu.frames > 0 ? std::to_string(gpu.milliseconds).substr(0, 6) + "; " + std::to_string(gpu.frames) : "-";
@@ -330,10 +358,13 @@ void datasetReport(const std::vector<std::string>& names) {
         }
         if (reference > 0.0) ratios.push_back(full / reference);
         movingFrames.push_back(moving);
-        std::printf("| %s | %.1f | %s | %s%s | %.1f | %.2f | %.0f %% | %.1f | %.1f | %.1f |\n", entry.metadata.name.c_str(), full,
-                    gpuCell.c_str(), fused ? "fused" : "separate", cones ? " + cones" : "", reference,
-                    reference > 0.0 ? full / reference : 0.0, scale * 100.0f, moving, steps / double(stats.size()),
-                    hits ? hitSteps / double(hits) : 0.0);
+        shading.statsOutput = false;
+        (void)sdfRenderer.setShading(shading);
+        const std::string tracers = tracerComparison(offscreen, sdfRenderer);
+        std::printf("| %s | %.1f | %s | %s%s%s | %.1f | %.2f | %.0f %% | %.1f | %.1f | %.1f | %s |\n",
+                    entry.metadata.name.c_str(), full, gpuCell.c_str(), fused ? "fused" : "separate", cones ? " + cones" : "",
+                    compute ? ", compute tracer" : "", reference, reference > 0.0 ? full / reference : 0.0, scale * 100.0f,
+                    moving, steps / double(stats.size()), hits ? hitSteps / double(hits) : 0.0, tracers.c_str());
         std::fflush(stdout);
         sdfRenderer.releaseGl();
     }

@@ -4,6 +4,8 @@
 
 #include <epoxy/gl.h>
 
+#include <cstring>
+
 namespace sdfwb::renderer {
 namespace {
 
@@ -52,6 +54,11 @@ Expected<void> requireGl43(const GlInfo& info) {
 std::string describe(const GlInfo& info) {
     return info.renderer + " / " + info.vendor + " / " + info.version + (info.coreProfile ? " [core]" : "") + " / GLSL " +
            info.glslVersion + (info.computeShaders ? " / compute" : " / no compute");
+}
+
+bool softwareRasteriser() {
+    const char* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    return name && (std::strstr(name, "llvmpipe") || std::strstr(name, "softpipe"));
 }
 
 } // namespace sdfwb::renderer

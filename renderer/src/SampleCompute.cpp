@@ -4,6 +4,7 @@
 
 #include <core/Log.h>
 #include <meshfield/MeshQuery.h>
+#include <renderer/GlInfo.h>
 #include <renderer/SamplingBindings.h>
 #include <shaders/DiagnosticParser.h>
 
@@ -122,11 +123,6 @@ bool waitFor(GLsync fence) {
     }
 }
 
-bool softwareDriver() {
-    const char* driver = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    return driver && (std::strstr(driver, "llvmpipe") || std::strstr(driver, "softpipe"));
-}
-
 struct SampleCompute::Impl {
     GlProgram program;
     BufferSet plain;              // run(): read back with glGetBufferSubData
@@ -164,7 +160,7 @@ struct SampleCompute::Impl {
     Expected<void> reserve(BufferSet& set, std::uint32_t count, BufferKind kind, bool interleaved = false);
     Expected<void> reserveCounts();
     int slotCount() const { return std::clamp(settings.sets, 3, kMaxSlots); }
-    bool staged() const { return settings.staging < 0 ? !softwareDriver() : settings.staging > 0; }
+    bool staged() const { return settings.staging < 0 ? !softwareRasteriser() : settings.staging > 0; }
     // Binds the uniforms and buffers, zeroes count region `region` and dispatches; waits for nothing.
     Expected<void> issue(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, BufferSet& set, bool positions,
                          bool gradients, bool interleaved, std::array<std::uint32_t, 3> shift, const float* inputRows,
@@ -469,8 +465,7 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     m_impl->countWalks = countWalks;
     // llvmpipe's and softpipe's timer queries end before the work they time (0 for a dispatch that
     // took seconds): no kernel time there.
-    const char* driver = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    const bool software = driver && (std::strstr(driver, "llvmpipe") || std::strstr(driver, "softpipe"));
+    const bool software = softwareRasteriser();
     m_impl->kernelMilliseconds = software ? -1.0 : 0.0;
     m_impl->copyMilliseconds = software ? -1.0 : 0.0;
     m_impl->mortonInputs = sdf.mesh && !m_impl->query && sorted;
@@ -769,14 +764,14 @@ void SampleCompute::setPipeline(const SamplePipeline& pipeline) {
 SamplePipeline SampleCompute::pipeline() const {
     SamplePipeline resolved = m_impl->settings;
     resolved.sets = m_impl->slotCount();
-    const bool software = softwareDriver();
+    const bool software = softwareRasteriser();
     const int most = resolved.sets - 2;
     resolved.ahead = resolved.ahead > 0 ? std::min(resolved.ahead, most) : software ? 1 : most;
     resolved.staging = m_impl->staged() ? 1 : 0;
     return resolved;
 }
 
-std::uint32_t SampleCompute::preferredChunk() const { return softwareDriver() ? kSoftwareChunk : kGpuChunk; }
+std::uint32_t SampleCompute::preferredChunk() const { return softwareRasteriser() ? kSoftwareChunk : kGpuChunk; }
 
 void SampleCompute::releaseGl() {
     m_impl->program.reset();

@@ -214,6 +214,7 @@ Variant* SdfRenderer::Impl::build(const shaders::PreparedSdf& prepared, shaders:
     ++programsBuilt;
     evictIfFull();
     Variant& variant = cache[fragment->text];
+    variant.id = programsBuilt;
     variant.program = std::move(program);
     variant.fragmentSource = fragment->text;
     variant.fusedMarch = tracerFeatures.fusedMarch;

@@ -52,6 +52,7 @@ SdfRenderer::SdfRenderer() : m_impl(std::make_unique<Impl>()) {}
 SdfRenderer::~SdfRenderer() {
     // GL names cannot be freed without the context; the owner calls releaseGl() first.
     m_impl->frameTimer.release();
+    m_impl->frameQueries.release();
     for (auto& [text, variant] : m_impl->cache) variant.program.release();
     m_impl->vertexArray.release();
     m_impl->vertexProgram.release();
@@ -475,6 +476,7 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
     auto start = std::chrono::steady_clock::now();
     FrameStats stats;
     if (finish) m_impl->frameTimer.begin();
+    stats.serial = m_impl->beginQueryFrame(finish);
     glViewport(0, 0, width, height);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
@@ -532,6 +534,7 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
         m_impl->frameTimer.end();
         glFinish();
     }
+    if (stats.serial) m_impl->frameQueries.end();
     logGlErrors("a frame");
     stats.cpuMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (finish) stats.gpuMilliseconds = m_impl->frameTimer.milliseconds(stats.cpuMilliseconds);
@@ -542,6 +545,7 @@ FrameStats SdfRenderer::renderScaled(int width, int height, float scale, const C
     if (scale >= 0.999f) return render(width, height, camera, time, finish);
     auto start = std::chrono::steady_clock::now();
     if (finish) m_impl->frameTimer.begin();
+    const std::uint64_t serial = m_impl->beginQueryFrame(finish);
     int lowWidth = std::max(1, int(std::lround(width * scale)));
     int lowHeight = std::max(1, int(std::lround(height * scale)));
     GLint target = 0;
@@ -558,7 +562,9 @@ FrameStats SdfRenderer::renderScaled(int width, int height, float scale, const C
     // generates code per framebuffer configuration: a separate low-resolution target made it
     // compile every SDF twice, once for the timing frame and once for the full one.)
     glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
+    impl.insideScaled = true;
     const bool boxProxy = render(lowWidth, lowHeight, camera, time, false).boxProxy;
+    impl.insideScaled = false;
     glBindTexture(GL_TEXTURE_2D, impl.lowColor.id());
     glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, lowWidth, lowHeight);
     glBindTexture(GL_TEXTURE_2D, 0);
@@ -571,15 +577,29 @@ FrameStats SdfRenderer::renderScaled(int width, int height, float scale, const C
         m_impl->frameTimer.end();
         glFinish();
     }
+    if (serial) m_impl->frameQueries.end();
     FrameStats stats;
     stats.boxProxy = boxProxy;
+    stats.serial = serial;
     stats.cpuMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (finish) stats.gpuMilliseconds = m_impl->frameTimer.milliseconds(stats.cpuMilliseconds);
     return stats;
 }
 
+void SdfRenderer::setQueryTiming(bool on) { m_impl->queryTiming = on; }
+
+std::vector<TimedFrame> SdfRenderer::timedFrames() {
+    std::vector<TimedFrame> frames;
+    const std::uint64_t current = m_impl->current ? m_impl->current->id : 0;
+    m_impl->frameQueries.collect([&](std::uint64_t serial, std::uint64_t program, double milliseconds) {
+        frames.push_back({serial, milliseconds, program != 0 && program == current});
+    });
+    return frames;
+}
+
 void SdfRenderer::releaseGl() {
     m_impl->frameTimer.reset();
+    m_impl->frameQueries.reset();
     m_impl->lowFramebuffer.reset();
     m_impl->lowColor.reset();
     m_impl->lowWidth = m_impl->lowHeight = 0;

@@ -40,6 +40,7 @@ struct Variant {
     bool cones = false;
     bool meshRaycast = false; // shaders::meshRaycastApplies: no march to choose, no cone pass
     bool compute = false;     // the compute tracer (dispatched, then blitted), not a fragment program
+    std::uint64_t id = 0;     // which program this is (TimedFrame::currentProgram)
     std::unordered_map<std::string, GLint> uniforms;
     std::uint64_t lastUse = 0;
 
@@ -58,9 +59,76 @@ bool conesApply(const ShadingSettings& shading, const TraceSettings& trace);
 // SDFWB_FUSED_MARCH=0/1, for benchmarks: the march forced fused or separate.
 std::optional<bool> forcedFusedMarch();
 
+// Frames timed without waiting (SdfRenderer::setQueryTiming): a ring of GL_TIME_ELAPSED queries,
+// read in order once their results are available.
+class QueryRing {
+public:
+    static constexpr int kSlots = 4;
+    // False (the frame goes untimed) when every slot is still out.
+    bool begin(std::uint64_t serial, std::uint64_t program) {
+        if (m_pending == kSlots || m_running) return false;
+        if (!m_queries[m_head]) {
+            GLuint id = 0;
+            glGenQueries(1, &id);
+            m_queries[m_head] = GlQuery(id);
+        }
+        glBeginQuery(GL_TIME_ELAPSED, m_queries[m_head].id());
+        m_serials[m_head] = serial;
+        m_programs[m_head] = program;
+        m_running = true;
+        return true;
+    }
+    void end() {
+        if (!m_running) return;
+        glEndQuery(GL_TIME_ELAPSED);
+        m_running = false;
+        m_head = (m_head + 1) % kSlots;
+        ++m_pending;
+    }
+    // Calls done(serial, program, milliseconds) for each result that has come back, oldest first.
+    template <class Done> void collect(Done done) {
+        while (m_pending > 0) {
+            const int slot = (m_head - m_pending + kSlots) % kSlots;
+            GLuint available = 0;
+            glGetQueryObjectuiv(m_queries[slot].id(), GL_QUERY_RESULT_AVAILABLE, &available);
+            if (!available) return;
+            GLuint64 nanoseconds = 0;
+            glGetQueryObjectui64v(m_queries[slot].id(), GL_QUERY_RESULT, &nanoseconds);
+            --m_pending;
+            done(m_serials[slot], m_programs[slot], double(nanoseconds) * 1e-6);
+        }
+    }
+    void reset() {
+        for (GlQuery& query : m_queries) query.reset();
+        m_head = m_pending = 0;
+        m_running = false;
+    }
+    void release() {
+        for (GlQuery& query : m_queries) query.release();
+        m_head = m_pending = 0;
+        m_running = false;
+    }
+
+private:
+    GlQuery m_queries[kSlots];
+    std::uint64_t m_serials[kSlots] = {}, m_programs[kSlots] = {};
+    int m_head = 0, m_pending = 0;
+    bool m_running = false;
+};
+
 struct SdfRenderer::Impl {
     std::optional<shaders::PreparedSdf> sdf; // the last SDF that compiled
     GpuTimer frameTimer;                     // a timed frame's GPU time (render(.., finish))
+    bool queryTiming = false;                // setQueryTiming
+    QueryRing frameQueries;                  // frames timed without waiting
+    std::uint64_t frameSerial = 0;
+    bool insideScaled = false; // renderScaled's own render(): timed as part of the scaled frame
+    // Starts timing a frame without waiting when query timing is on; its serial, or 0.
+    std::uint64_t beginQueryFrame(bool finish) {
+        if (!queryTiming || finish || insideScaled) return 0;
+        const std::uint64_t serial = ++frameSerial;
+        return frameQueries.begin(serial, current ? current->id : 0) ? serial : 0;
+    }
     // settleMarch(): where the choice between the fused and the separate march stands.
     // ConesOpen: the march is chosen; the cone pass is still to try (Cones::Auto chosen again).
     // TryingCompute: the compute tracer's full frame is being measured against bestMilliseconds.

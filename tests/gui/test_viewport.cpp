@@ -201,6 +201,34 @@ TEST(Viewport, AtRestTheComputeTracerIsKeptOnlyWhenItMakesFramesFaster) {
     }
 }
 
+// Frames timed by queries read at later paints (a GPU's default; forced here on llvmpipe): the
+// viewport draws without glFinish, its frame times come from the queries, and the march still
+// settles at rest from the full frame's time once its query is back.
+TEST(Viewport, QueryTimedFramesNeedNoGlFinishAndStillSettle) {
+    app::MainWindow window;
+    window.resize(1000, 600);
+    widgets::ViewportWidget* viewport = window.viewport();
+    viewport->setFrameTiming(widgets::ViewportWidget::FrameTiming::Query);
+    std::vector<double> settleTimes;
+    viewport->setSettleTiming([&settleTimes](bool, bool cones, bool compute, double measured) {
+        settleTimes.push_back(measured);
+        return cones || compute ? 200.0 : 100.0;
+    });
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
+    const QImage picture = fullResolutionFrame(window);
+    ASSERT_TRUE(waitFor([&] { return viewport->marchSettled(); }, 30000)) << "never settled at rest";
+    EXPECT_FALSE(viewport->computeTracer());
+    EXPECT_FALSE(viewport->conePass());
+    for (int paint = 0; paint < 5; ++paint) viewport->repaint();
+    EXPECT_EQ(viewport->finishedFrames(), 0u) << "a paint waited for the GPU";
+    EXPECT_EQ(viewport->frameTiming(), widgets::ViewportWidget::FrameTiming::Query);
+    EXPECT_GE(viewport->lastFrameMilliseconds(), 0.0);
+    ASSERT_FALSE(settleTimes.empty()) << "no full frame's query came back";
+    for (double time : settleTimes) EXPECT_GE(time, 0.0);
+    expectSamePicture(picture, fullResolutionFrame(window), 20);
+}
+
 // A new SDF whose full frame would take longer than the frame budget shows its last timing frame
 // (15 % of the side, the same paint) as its first frame, then the full-resolution frame; the
 // timing frame's picture is the new shape, read from the viewport's framebuffer as it is drawn.

@@ -686,7 +686,9 @@ TEST_F(RendererTest, BoxProxyDrawsTheFullFramePicture) {
         ASSERT_FALSE(shaders::hasErrors(sdf.diagnostics)) << shaders::formatDiagnostic(sdf.diagnostics[0]);
         const std::string label = sdf.source.map.fileName(0);
         for (std::size_t c = 0; c < cameras.size(); ++c) {
-            for (int variant = 0; variant < 4; ++variant) { // full scale, half scale, cone pass, cutting plane
+            // Full scale, half scale, cone pass, cutting plane: without and with the proxy box;
+            // then the fragment tracer without the proxy against the compute tracer (issue 49).
+            for (int variant = 0; variant < 5; ++variant) {
                 renderer::Image images[2];
                 for (int proxy = 0; proxy < 2; ++proxy) {
                     renderer::SdfRenderer sdfRenderer;
@@ -694,8 +696,10 @@ TEST_F(RendererTest, BoxProxyDrawsTheFullFramePicture) {
                     shading.mode = renderer::ShadingMode::Gooch;
                     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
                     renderer::TraceSettings trace;
-                    trace.boxProxy = proxy == 1;
+                    trace.boxProxy = proxy == 1 && variant != 4;
                     trace.cones = variant == 2 ? renderer::TraceSettings::Cones::On : renderer::TraceSettings::Cones::Off;
+                    trace.tracer = variant == 4 && proxy == 1 ? renderer::TraceSettings::Tracer::Compute
+                                                              : renderer::TraceSettings::Tracer::Fragment;
                     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
                     if (variant == 3) {
                         renderer::CuttingPlane plane;
@@ -707,7 +711,8 @@ TEST_F(RendererTest, BoxProxyDrawsTheFullFramePicture) {
                     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(sdf)));
                     renderer::FrameStats stats;
                     images[proxy] = offscreen.render(sdfRenderer, 160, 100, cameras[c], 0.0f, &stats, variant == 1 ? 0.5f : 1.0f);
-                    EXPECT_EQ(stats.boxProxy, proxy == 1);
+                    EXPECT_EQ(stats.boxProxy, proxy == 1 && variant != 4);
+                    EXPECT_EQ(sdfRenderer.computeTracer(), proxy == 1 && variant == 4);
                     sdfRenderer.releaseGl();
                 }
                 long differing = 0;
@@ -779,6 +784,51 @@ TEST_F(RendererTest, TimedFramesCarryTheirGpuTime) {
     (void)offscreen.render(sdfRenderer, 60, 40, renderer::Camera{}, 0.0f, &stats, 0.5f);
     EXPECT_GE(stats.gpuMilliseconds, 0.0) << "scaled";
     sdfRenderer.releaseGl();
+}
+
+// With query timing (the viewport's on a GPU), a frame drawn without finish is timed by a query
+// read later, without waiting: its serial comes back with its GPU time, oldest first, marked
+// with whether the program that drew it is still current; at most four are out at once.
+TEST_F(RendererTest, QueryTimedFramesComeBackLaterWithoutWaiting) {
+    GLuint texture = 0, framebuffer = 0;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 64, 48, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glGenFramebuffers(1, &framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+    renderer::SdfRenderer sdfRenderer;
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n"))));
+    EXPECT_EQ(sdfRenderer.render(64, 48, renderer::Camera{}, 0.0f).serial, 0u) << "off by default";
+    sdfRenderer.setQueryTiming(true);
+    EXPECT_EQ(sdfRenderer.render(64, 48, renderer::Camera{}, 0.0f, true).serial, 0u) << "a finished frame has its own time";
+    std::vector<std::uint64_t> serials;
+    for (int frame = 0; frame < 5; ++frame)
+        serials.push_back(frame % 2 ? sdfRenderer.renderScaled(64, 48, 0.5f, renderer::Camera{}, 0.0f).serial
+                                    : sdfRenderer.render(64, 48, renderer::Camera{}, 0.0f).serial);
+    for (int frame = 0; frame < 4; ++frame) EXPECT_NE(serials[std::size_t(frame)], 0u);
+    EXPECT_EQ(serials[4], 0u) << "four frames are out: the fifth goes untimed";
+    ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.5; }\n"))));
+    glFinish();
+    const std::vector<renderer::TimedFrame> timed = sdfRenderer.timedFrames();
+    ASSERT_EQ(timed.size(), 4u);
+    for (std::size_t k = 0; k < timed.size(); ++k) {
+        EXPECT_EQ(timed[k].serial, serials[k]);
+        EXPECT_GE(timed[k].gpuMilliseconds, 0.0);
+        EXPECT_FALSE(timed[k].currentProgram) << "drawn by the sphere before the edit";
+    }
+    EXPECT_TRUE(sdfRenderer.timedFrames().empty()) << "each time is handed over once";
+    const std::uint64_t next = sdfRenderer.render(64, 48, renderer::Camera{}, 0.0f).serial;
+    EXPECT_GT(next, serials[3]);
+    glFinish();
+    const auto after = sdfRenderer.timedFrames();
+    ASSERT_EQ(after.size(), 1u);
+    EXPECT_EQ(after[0].serial, next);
+    EXPECT_TRUE(after[0].currentProgram);
+    sdfRenderer.releaseGl();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &framebuffer);
+    glDeleteTextures(1, &texture);
 }
 
 // Every SDF's fragment program is paired with one vertex program (a program pipeline): after

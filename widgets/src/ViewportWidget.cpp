@@ -21,6 +21,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <string>
+#include <string_view>
 
 namespace sdfwb::widgets {
 
@@ -45,6 +48,12 @@ ViewportWidget::ViewportWidget(QWidget* parent)
     connect(&m_settleTimer, &QTimer::timeout, this, [this] {
         if (m_interacting || m_needsTiming || !context() || !isValid()) return;
         makeCurrent();
+        collectTimedFrames();
+        if (m_settleFrameMilliseconds < 0.0) { // the full frame's time is not back yet
+            doneCurrent();
+            m_settleTimer.start();
+            return;
+        }
         const bool changed = m_renderer->settleMarch(m_settleFrameMilliseconds);
         doneCurrent();
         if (changed) {
@@ -96,6 +105,36 @@ bool ViewportWidget::fusedMarch() const { return m_renderer->fusedMarch(); }
 bool ViewportWidget::conePass() const { return m_renderer->conePass(); }
 
 bool ViewportWidget::computeTracer() const { return m_renderer->computeTracer(); }
+
+void ViewportWidget::setFrameTiming(FrameTiming timing) {
+    m_forcedFrameTiming = timing;
+    m_frameTiming = timing;
+    m_renderer->setQueryTiming(timing == FrameTiming::Query);
+}
+
+void ViewportWidget::frameCost(int width, int height, float scale, double milliseconds, bool interacting, bool currentProgram) {
+    m_lastFrameMilliseconds = milliseconds;
+    if (m_scaler.frameDone(width, height, scale, milliseconds, interacting)) {
+        // A view that became expensive (camera, time, plane): the next frames are capped.
+        emit performanceWarning(tr("A full frame took %1 s: frames are drawn at %2 % resolution from now on")
+                                    .arg(milliseconds / 1000.0, 0, 'f', 1)
+                                    .arg(int(resolutionCap() * 100.0f)));
+    }
+    if (scale >= 1.0f && !interacting && currentProgram)
+        m_settleFrameMilliseconds =
+            m_settleTiming ? m_settleTiming(fusedMarch(), conePass(), computeTracer(), milliseconds) : milliseconds;
+}
+
+void ViewportWidget::collectTimedFrames() {
+    for (const renderer::TimedFrame& timed : m_renderer->timedFrames()) {
+        auto it = std::find_if(m_pendingFrames.begin(), m_pendingFrames.end(),
+                               [&](const PendingFrame& frame) { return frame.serial == timed.serial; });
+        if (it == m_pendingFrames.end()) continue;
+        const PendingFrame frame = *it;
+        m_pendingFrames.erase(m_pendingFrames.begin(), it + 1); // older ones never come back
+        frameCost(frame.width, frame.height, frame.scale, timed.gpuMilliseconds, frame.interacting, timed.currentProgram);
+    }
+}
 
 bool ViewportWidget::marchSettled() const { return m_renderer->marchSettled(); }
 
@@ -269,6 +308,17 @@ void ViewportWidget::initializeGL() {
     m_contextDescription = QString::fromStdString(renderer::describe(info));
     log::info("gl", "viewport context: " + renderer::describe(info));
     if (auto ok = renderer::requireGl43(info); !ok) log::error("gl", ok.error().message);
+    if (!m_forcedFrameTiming) {
+        const char* forced = std::getenv("SDFWB_FRAME_TIMING");
+        const std::string_view name = forced ? forced : "";
+        m_frameTiming = name == "query"                  ? FrameTiming::Query
+                        : name == "finish"               ? FrameTiming::Finish
+                        : renderer::softwareRasteriser() ? FrameTiming::Finish
+                                                         : FrameTiming::Query;
+    }
+    m_renderer->setQueryTiming(m_frameTiming == FrameTiming::Query);
+    log::info("gl", std::string("viewport frames timed ") +
+                        (m_frameTiming == FrameTiming::Query ? "by timer queries read later (no glFinish)" : "to glFinish"));
     (void)m_renderer->setShading(m_frame.shading);
     (void)m_renderer->setTrace(m_frame.trace);
     (void)m_renderer->setPlane(m_plane);
@@ -332,23 +382,29 @@ void ViewportWidget::paintGL() {
         scale = timingFrame->scale;
     } else {
         scale = m_scaler.scaleFor(width, height, m_interacting);
-        // finish: the status bar and the scale choice see what the frame really cost.
-        stats = m_renderer->renderScaled(width, height, scale, m_frame.camera, m_time, true);
-        if (m_scaler.frameDone(width, height, scale, stats.cpuMilliseconds, m_interacting)) {
-            // A view that became expensive (camera, time, plane): the next frames are capped.
-            emit performanceWarning(tr("A full frame took %1 s: frames are drawn at %2 % resolution from now on")
-                                        .arg(stats.cpuMilliseconds / 1000.0, 0, 'f', 1)
-                                        .arg(int(resolutionCap() * 100.0f)));
+        // The status bar and the scale choice see what the frame really cost: measured to
+        // glFinish, or by a query read at a later paint (FrameTiming).
+        const bool finish = m_frameTiming == FrameTiming::Finish;
+        stats = m_renderer->renderScaled(width, height, scale, m_frame.camera, m_time, finish);
+        if (finish) {
+            ++m_finishedFrames;
+            frameCost(width, height, scale, stats.cpuMilliseconds, m_interacting, true);
+        } else {
+            if (scale >= 1.0f && !m_interacting) m_settleFrameMilliseconds = -1.0; // until its query is back
+            if (stats.serial) m_pendingFrames.push_back({stats.serial, width, height, scale, m_interacting});
+            if (m_pendingFrames.size() > 64) m_pendingFrames.erase(m_pendingFrames.begin());
+            collectTimedFrames();
         }
     }
-    m_lastFrameMilliseconds = stats.cpuMilliseconds;
     m_lastScale = scale;
-    if (scale >= 1.0f && !m_interacting) {
-        m_settleFrameMilliseconds = m_settleTiming
-                                        ? m_settleTiming(fusedMarch(), conePass(), computeTracer(), stats.cpuMilliseconds)
-                                        : stats.cpuMilliseconds;
-        m_settleTimer.start();
+    if (timingFrame) {
+        m_lastFrameMilliseconds = stats.cpuMilliseconds;
+        if (scale >= 1.0f && !m_interacting)
+            m_settleFrameMilliseconds = m_settleTiming
+                                            ? m_settleTiming(fusedMarch(), conePass(), computeTracer(), stats.cpuMilliseconds)
+                                            : stats.cpuMilliseconds;
     }
+    if (scale >= 1.0f && !m_interacting) m_settleTimer.start();
     if (m_meshOverlay->hasMesh() && m_lastGoodSdf) {
         if (m_overlayGeneration != m_sdfGeneration) {
             for (const auto& d : m_meshOverlay->setSdf(*m_lastGoodSdf)) log::warning("mesh", shaders::formatDiagnostic(d));
@@ -382,7 +438,7 @@ void ViewportWidget::paintGL() {
         painter.setPen(QColor(235, 235, 235));
         painter.drawText(box, Qt::TextWordWrap, m_overlay);
     }
-    emit frameRendered(stats.cpuMilliseconds, scale);
+    emit frameRendered(m_lastFrameMilliseconds, scale);
     if (timingFrame && !m_refineTimer.isActive()) update(); // the full-resolution frame (not while the camera moves)
 }
 

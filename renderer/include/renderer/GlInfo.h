@@ -29,6 +29,10 @@ Expected<void> requireGl43(const GlInfo& info);
 // "llvmpipe (LLVM 15.0.6, 256 bits) / Mesa / 4.5 (Core Profile) Mesa 22.3.6"
 std::string describe(const GlInfo& info);
 
+// Whether the current context runs on the CPU (Mesa's llvmpipe or softpipe): its draws and
+// dispatches run when they are flushed, and its timer queries end before the work they time.
+bool softwareRasteriser();
+
 // GL objects (programs, shaders, buffers, textures, framebuffers, vertex arrays) the renderer
 // holds right now, over all contexts: a count that keeps growing is a leak.
 long liveGlObjects();

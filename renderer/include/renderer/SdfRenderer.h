@@ -24,6 +24,14 @@ struct FrameStats {
     double cpuMilliseconds = 0.0;  // time spent in render(), including glFinish when asked
     double gpuMilliseconds = -1.0; // the frame's GPU time (a timer query) when glFinish was asked, else -1
     bool boxProxy = false;         // only the pixels whose ray meets the box ran the tracer
+    std::uint64_t serial = 0;      // a frame timed by a query read later (setQueryTiming): its number, else 0
+};
+
+// A frame's GPU time from a timer query read after it came back (SdfRenderer::timedFrames).
+struct TimedFrame {
+    std::uint64_t serial = 0;     // FrameStats::serial of the frame
+    double gpuMilliseconds = 0.0; // GL_TIME_ELAPSED around its draws
+    bool currentProgram = false;  // drawn by the program that is current now
 };
 
 // The tracer variant these settings select (what SdfRenderer composes and the driver compiles), so
@@ -96,6 +104,14 @@ public:
     // Renders at `scale` (0 < scale <= 1) of width x height into an internal framebuffer and
     // stretches the result over the bound framebuffer: cheap frames while the camera moves.
     FrameStats renderScaled(int width, int height, float scale, const Camera& camera, float time, bool finish = false);
+
+    // With query timing on, a frame drawn without `finish` is timed by a timer query that is read
+    // later, once it has come back, so the CPU never waits for the GPU (FrameStats::serial names
+    // it; a frame drawn while four earlier ones are still out is not timed). timedFrames() hands
+    // over the times that have come back, oldest first. For GPUs: on llvmpipe the timers end
+    // before the work they time (softwareRasteriser), and only `finish` measures a frame.
+    void setQueryTiming(bool on);
+    std::vector<TimedFrame> timedFrames();
 
     // Frees every GL object; the context must be current. The renderer can be used again later.
     void releaseGl();

@@ -102,6 +102,15 @@ public:
     // a wall clock's. Unset (the default): the measured time.
     using SettleTiming = std::function<double(bool fusedMarch, bool conePass, bool computeTracer, double measuredMilliseconds)>;
     void setSettleTiming(SettleTiming timing) { m_settleTiming = std::move(timing); }
+    // How a frame's cost is measured. Finish: glFinish after each frame (llvmpipe, where the CPU
+    // draws the frame anyway and timer queries end before the work). Query: a timer query read at
+    // a later paint, so the CPU does not wait for a GPU (its default). Only a new SDF's timing
+    // frames always finish. SDFWB_FRAME_TIMING=finish|query overrides the driver's default.
+    enum class FrameTiming { Finish, Query };
+    void setFrameTiming(FrameTiming timing);
+    FrameTiming frameTiming() const { return m_frameTiming; }
+    // Paints whose frame was drawn to glFinish so far (a new SDF's timing frames not counted).
+    std::uint64_t finishedFrames() const { return m_finishedFrames; }
 
     // Renders one full-quality frame at width x height (screenshots). Empty image without GL.
     renderer::Image renderImage(int width, int height);
@@ -231,8 +240,23 @@ private:
     QTimer m_refineTimer;
     // A while after a full frame at rest: SdfRenderer::settleMarch() with that frame's time.
     QTimer m_settleTimer;
-    double m_settleFrameMilliseconds = 0.0;
+    double m_settleFrameMilliseconds = 0.0; // -1: the frame's query has not come back yet
     SettleTiming m_settleTiming;
+    FrameTiming m_frameTiming = FrameTiming::Finish;
+    std::optional<FrameTiming> m_forcedFrameTiming;
+    std::uint64_t m_finishedFrames = 0;
+    // Frames timed by queries that have not come back: what each was.
+    struct PendingFrame {
+        std::uint64_t serial;
+        int width, height;
+        float scale;
+        bool interacting;
+    };
+    std::vector<PendingFrame> m_pendingFrames;
+    // A frame's cost, measured: the scale choice, the status line and the march's settling.
+    void frameCost(int width, int height, float scale, double milliseconds, bool interacting, bool currentProgram);
+    // The query-timed frames that have come back, through frameCost (context current).
+    void collectTimedFrames();
     bool m_warmProgram = false; // a new program: a small draw takes its code generation first
     bool m_interacting = false;
     float m_lastScale = 1.0f;
