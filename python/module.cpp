@@ -782,6 +782,15 @@ Raises:
     ValueError: a missing mesh file, an argument out of range, an unknown SDF or parameter, or GLSL errors.
     TypeError: params is not a mapping of parameter values.
     RuntimeError: an unreadable mesh, no EGL/GL, or a GPU failure.)doc");
+    m.def(
+        "_job_kinds",
+        [] {
+            py::list rows;
+            for (const jobs::JobKind& kind : jobs::kJobKinds)
+                rows.append(py::make_tuple(std::string(kind.name), kind.needsGl, std::string(kind.python)));
+            return rows;
+        },
+        "The job kinds' table (values/JobKinds.h): (kind, needs GL, Python function or '' for run only).");
     m.def("list_sdfs", &listSdfs,
           R"doc(The dataset's SDFs.
 

@@ -7,6 +7,7 @@
 #include "CommandTable.h"
 
 #include <jobs/JobJson.h>
+#include <values/JobKinds.h>
 
 #include <core/Regex.h>
 

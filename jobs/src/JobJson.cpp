@@ -330,29 +330,17 @@ Expected<Request> requestFromJson(const std::string& text) {
     if (!in) return makeError("request: " + error);
     if (!in->is_object()) return makeError("request: expected a JSON object with a \"kind\"");
     auto kind = in->find("kind");
-    if (kind == in->end() || !kind->is_string())
-        return makeError(
-            "request: missing \"kind\" (render, animate, sample, audit, merge, list, bench, params, mesh, eval, run, probe)");
+    if (kind == in->end() || !kind->is_string()) return makeError("request: missing \"kind\" (" + jobKindNames() + ")");
     const std::string name = kind->get<std::string>();
-    auto as = [&]<class T>(T*) -> Expected<Request> {
-        auto value = readObject<T>(*in, true, (name + " request").c_str());
-        if (!value) return value.error();
-        return Request(std::move(*value));
-    };
-    if (name == "render") return as((RenderRequest*)nullptr);
-    if (name == "animate") return as((AnimateRequest*)nullptr);
-    if (name == "sample") return as((SampleRequest*)nullptr);
-    if (name == "audit") return as((AuditRequest*)nullptr);
-    if (name == "merge") return as((MergeRequest*)nullptr);
-    if (name == "list") return as((ListRequest*)nullptr);
-    if (name == "bench") return as((BenchRequest*)nullptr);
-    if (name == "params") return as((ParamsRequest*)nullptr);
-    if (name == "mesh") return as((MeshRequest*)nullptr);
-    if (name == "grade" || name == "eval") return as((EvalRequest*)nullptr); // "eval": the old name
-    if (name == "run") return as((RunRequest*)nullptr);
-    if (name == "probe") return as((ProbeRequest*)nullptr);
-    return makeError("request: unknown kind '" + name +
-                     "' (render, animate, sample, audit, merge, list, bench, params, mesh, grade, run, probe)");
+    // The kind's request type from the one table (values/JobKinds.h), its former name included.
+    return withJobKind(
+        name,
+        [&]<class T>(T*) -> Expected<Request> {
+            auto value = readObject<T>(*in, true, (name + " request").c_str());
+            if (!value) return value.error();
+            return Request(std::move(*value));
+        },
+        Expected<Request>(makeError("request: unknown kind '" + name + "' (" + jobKindNames() + ")")));
 }
 
 namespace {

@@ -18,29 +18,6 @@
 namespace sdfwb::jobs {
 namespace fs = std::filesystem;
 
-const char* kindName(const Request& request) {
-    struct Names {
-        const char* operator()(const RenderRequest&) const { return "render"; }
-        const char* operator()(const AnimateRequest&) const { return "animate"; }
-        const char* operator()(const SampleRequest&) const { return "sample"; }
-        const char* operator()(const AuditRequest&) const { return "audit"; }
-        const char* operator()(const MergeRequest&) const { return "merge"; }
-        const char* operator()(const ListRequest&) const { return "list"; }
-        const char* operator()(const BenchRequest&) const { return "bench"; }
-        const char* operator()(const ParamsRequest&) const { return "params"; }
-        const char* operator()(const MeshRequest&) const { return "mesh"; }
-        const char* operator()(const EvalRequest&) const { return "grade"; }
-        const char* operator()(const RunRequest&) const { return "run"; }
-        const char* operator()(const ProbeRequest&) const { return "probe"; }
-    };
-    return std::visit(Names{}, request);
-}
-
-bool needsGl(const Request& request) {
-    return !std::holds_alternative<MergeRequest>(request) && !std::holds_alternative<ListRequest>(request) &&
-           !std::holds_alternative<ParamsRequest>(request) && !std::holds_alternative<RunRequest>(request);
-}
-
 namespace {
 
 JobError usage(const std::string& message) { return {Failure::Usage, message, {}}; }

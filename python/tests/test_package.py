@@ -214,3 +214,21 @@ def test_pyproject_describes_the_package_built_here():
     for extra, module in (("torch", "torch"), ("dask", "distributed"), ("open3d", "open3d")):
         assert extra in project["optional-dependencies"]
         importlib.import_module(module)  # bootstrap installs every extra here: the tests use them all
+
+
+def test_every_job_kind_runs_through_run_and_its_python_function_exists():
+    # The job kinds' one table (values/JobKinds.h), as the native module exports it: each kind's Python function
+    # exists and is public; every kind is a request sdfwb.run reads (an empty request names the missing fields).
+    kinds = _native._job_kinds()
+    assert len(kinds) >= 12
+    names = [name for name, _, _ in kinds]
+    assert len(set(names)) == len(names)
+    for name, needs_gl, function in kinds:
+        assert isinstance(needs_gl, bool)
+        if function:
+            assert function in sdfwb.__all__, f"{name}: sdfwb.{function} is not public"
+            assert callable(getattr(sdfwb, function)), f"{name}: sdfwb.{function}"
+    with pytest.raises(Exception, match="unknown kind 'paint'") as refused:
+        sdfwb.run({"kind": "paint"})
+    for name in names:  # the message lists every kind of the table
+        assert name in str(refused.value)

@@ -1,12 +1,15 @@
 // The command line as a user meets it: bad input gives one clear line, a non-zero exit and no file.
 // These runs fail before any GL work, so they need no GL context.
 
+#include <values/JobKinds.h>
+
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <sys/wait.h>
 
 namespace fs = std::filesystem;
@@ -108,6 +111,18 @@ TEST(CommandLine, NonFiniteAndOutOfRangeNumbersAreRefusedWhileParsing) {
         EXPECT_EQ(lineCount(r.output), 1) << r.output;
     }
     EXPECT_FALSE(fs::exists(out));
+}
+
+// The job kinds' table (values/JobKinds.h) and the CLI's commands agree: every kind, and every
+// former name of one, is a batch command whose help shows the kind's name.
+TEST(CommandLine, EveryJobKindIsABatchCommand) {
+    for (const sdfwb::jobs::JobKind& kind : sdfwb::jobs::kJobKinds)
+        for (const std::string_view name : {kind.name, kind.formerName}) {
+            if (name.empty()) continue;
+            Result r = run("--batch " + std::string(name) + " --help");
+            EXPECT_EQ(r.exitCode, 0) << name << ": " << r.output;
+            EXPECT_NE(r.output.find("--batch " + std::string(kind.name)), std::string::npos) << r.output; // its usage line
+        }
 }
 
 TEST(CommandLine, UnknownTracerAndConesAreNamed) {

@@ -7,6 +7,7 @@
 
 #include <meshing/Mesh.h>
 #include <renderer/Image.h>
+#include <values/JobKinds.h>
 #include <values/Requests.h>
 
 #include <core/Progress.h>
@@ -111,8 +112,5 @@ JobResult<BenchReport> run(const BenchRequest& request, const ProgressSink& prog
 sampling::SamplingJob samplingJob(const SampleRequest& request);
 // "W:P,W:P,..." (near's mixture of Gaussian widths): the (width, weight) pairs, or what is wrong.
 Expected<std::vector<std::pair<float, float>>> nearMixture(const std::string& text);
-
-// Whether a request kind needs a GL context.
-bool needsGl(const Request& request);
 
 } // namespace sdfwb::jobs

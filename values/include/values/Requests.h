@@ -214,9 +214,7 @@ struct RunRequest {
 
 using Request = std::variant<RenderRequest, AnimateRequest, SampleRequest, AuditRequest, MergeRequest, ListRequest, BenchRequest,
                              ParamsRequest, MeshRequest, EvalRequest, RunRequest, ProbeRequest>;
-
-// "render", "animate", "sample", "audit", "merge", "list", "bench", "params": the CLI command of each kind.
-const char* kindName(const Request& request);
+// Each kind's name and what it needs: values/JobKinds.h, the one table of them.
 
 // ---- reports ----
 
