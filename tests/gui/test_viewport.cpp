@@ -198,6 +198,9 @@ TEST(Viewport, AtRestTheComputeTracerIsKeptOnlyWhenItMakesFramesFaster) {
         forceCompute->trigger();
         EXPECT_TRUE(viewport->computeTracer());
         expectSamePicture(fragment, fullResolutionFrame(window), 20);
+        // SDFWB_SCREENSHOT_DIR keeps the window as the compute tracer draws it (to look at).
+        if (const char* folder = std::getenv("SDFWB_SCREENSHOT_DIR"))
+            window.grab().save(QDir(folder).filePath("compute_tracer.png"));
     }
 }
 
