@@ -30,9 +30,9 @@ ProbeController::ProbeController(widgets::ProbePanel* panel, widgets::ViewportWi
             return;
         }
         m_panel->setReport(*report);
-        log::info("probe", "pixel " + std::to_string(report->x) + "," + std::to_string(report->y) + ": " + report->outcome +
-                               " after " + std::to_string(report->steps) + " steps, " + std::to_string(report->oversteps) +
-                               " oversteps");
+        log::info("probe", "pixel " + std::to_string(report->x) + "," + std::to_string(report->y) + ": " +
+                               jobs::marchEventName(report->outcome) + " after " + std::to_string(report->steps) + " steps, " +
+                               std::to_string(report->oversteps) + " oversteps");
         emit probed(true);
     });
 }

@@ -36,6 +36,7 @@ json encode(const std::string& value) { return value; }
 json encode(renderer::ShadingMode mode) { return renderer::shadingModeName(mode); }
 json encode(renderer::TraceSettings::Cones cones) { return renderer::conesName(cones); }
 json encode(renderer::TraceSettings::Tracer tracer) { return renderer::tracerName(tracer); }
+json encode(MarchEvent event) { return marchEventName(event); }
 // A float as the shortest decimal that reads back as the same float (0.01f is 0.01, not
 // 0.009999999776482582): written as that double, it parses back to the same float bits.
 json encode(float value) {
@@ -238,6 +239,13 @@ bool decode(const json& in, renderer::TraceSettings::Cones& value, const std::st
     auto cones = in.is_string() ? renderer::parseCones(in.get<std::string>()) : std::nullopt;
     if (!cones) return fail(error, path, "auto, off or on", in);
     value = *cones;
+    return true;
+}
+
+bool decode(const json& in, MarchEvent& value, const std::string& path, bool, std::string& error) {
+    auto event = in.is_string() ? parseMarchEvent(in.get<std::string>()) : std::nullopt;
+    if (!event) return fail(error, path, "a march event (step, hit, left the box, ...)", in);
+    value = *event;
     return true;
 }
 

@@ -178,31 +178,32 @@ JobResult<RenderReport> run(const RenderRequest& request, const ProgressSink&) {
 
 namespace {
 
-const char* probeEventName(renderer::OffscreenRenderer::ProbeEvent::Kind kind) {
+// The recorder's event kind as the job model's (values/Requests.h, which names them).
+MarchEvent marchEvent(renderer::OffscreenRenderer::ProbeEvent::Kind kind) {
     using Event = renderer::OffscreenRenderer::ProbeEvent;
     switch (kind) {
     case Event::Step:
-        return "step";
+        return MarchEvent::Step;
     case Event::RelaxedStep:
-        return "relaxed step";
+        return MarchEvent::RelaxedStep;
     case Event::Fallback:
-        return "fallback";
+        return MarchEvent::Fallback;
     case Event::Hit:
-        return "hit";
+        return MarchEvent::Hit;
     case Event::RefineKept:
-        return "refine";
+        return MarchEvent::Refine;
     case Event::RefineUndone:
-        return "refine undone";
+        return MarchEvent::RefineUndone;
     case Event::LeftBox:
-        return "left the box";
+        return MarchEvent::LeftBox;
     case Event::NotFinite:
-        return "not finite";
+        return MarchEvent::NotFinite;
     case Event::OutOfSteps:
-        return "out of steps";
+        return MarchEvent::OutOfSteps;
     case Event::MissedBox:
-        return "missed the box";
+        return MarchEvent::MissedBox;
     }
-    return "unknown";
+    return MarchEvent::NotFinite;
 }
 
 // The march's events with what follows from them: f, the step each one led to, oversteps.
@@ -216,7 +217,7 @@ void describeMarch(ProbeReport& report, const renderer::OffscreenRenderer::Probe
     for (std::size_t k = 0; k < events.size(); ++k) {
         const Event& e = events[k];
         ProbeStep step;
-        step.event = probeEventName(e.kind);
+        step.event = marchEvent(e.kind);
         step.t = e.t;
         step.position = e.position;
         step.f = e.d / stepFactor;
@@ -279,7 +280,7 @@ JobResult<ProbeReport> run(const ProbeRequest& request, const ProgressSink&) {
     char text[320];
     using Stats = renderer::OffscreenRenderer::PixelStats;
     if (trace.pixel.hit()) {
-        report.outcome = "hit";
+        report.outcome = MarchEvent::Hit;
         report.hitT = trace.pixel.t;
         report.hitResidual = trace.pixel.residual;
         report.footprint = frame.trace.epsilonScale * pixelAngle * trace.pixel.t;
@@ -290,29 +291,30 @@ JobResult<ProbeReport> run(const ProbeRequest& request, const ProgressSink&) {
         report.footprint = frame.trace.epsilonScale * pixelAngle * lastT;
         float closest = INFINITY, closestT = 0.0f;
         for (const ProbeStep& e : report.events)
-            if (std::isfinite(e.f) && std::abs(e.f) < closest && e.event != "left the box" && e.event != "out of steps") {
+            if (std::isfinite(e.f) && std::abs(e.f) < closest && e.event != MarchEvent::LeftBox &&
+                e.event != MarchEvent::OutOfSteps) {
                 closest = std::abs(e.f);
                 closestT = e.t;
             }
-        if (!report.events.empty() && report.events.back().event == "missed the box") {
-            report.outcome = "missed the box";
+        if (!report.events.empty() && report.events.back().event == MarchEvent::MissedBox) {
+            report.outcome = MarchEvent::MissedBox;
             std::snprintf(text, sizeof text, "the ray does not enter the box [-%g, %g]^3 that bounds the shape: nothing to march",
                           double(1.0f + frame.trace.boxMargin), double(1.0f + frame.trace.boxMargin));
         } else if (trace.pixel.t == Stats::kLeftBox) {
-            report.outcome = "left the box";
+            report.outcome = MarchEvent::LeftBox;
             std::snprintf(
                 text, sizeof text,
                 "the ray left the box after %d steps without |f| falling below the tolerance (nearest: |f| = %.3g at t = %.4g)",
                 report.steps, double(closest), double(closestT));
         } else if (trace.pixel.t == Stats::kOutOfSteps) {
-            report.outcome = "out of steps";
+            report.outcome = MarchEvent::OutOfSteps;
             const float lastF = report.events.size() > 1 ? report.events[report.events.size() - 2].f : 0.0f;
             std::snprintf(text, sizeof text,
                           "the step budget of %d ran out at t = %.4g with |f| = %.3g still above the tolerance %.3g (raise "
                           "--max-steps; small steps that do not shrink mean a flat or grazing field)",
                           report.maxSteps, double(lastT), double(std::abs(lastF)), double(report.footprint));
         } else {
-            report.outcome = "not finite";
+            report.outcome = MarchEvent::NotFinite;
             const glm::vec3 p = report.events.empty() ? glm::vec3(0.0f) : report.events.back().position;
             std::snprintf(text, sizeof text, "f was NaN or Inf at t = %.4g, position (%.4g, %.4g, %.4g)", double(lastT),
                           double(p.x), double(p.y), double(p.z));

@@ -61,8 +61,9 @@ protected:
     static int marchEvaluations(const jobs::ProbeReport& r) {
         int count = 0;
         for (const auto& e : r.events)
-            count += e.event == "step" || e.event == "relaxed step" || e.event == "fallback" || e.event == "hit" ||
-                     e.event == "not finite";
+            count += e.event == jobs::MarchEvent::Step || e.event == jobs::MarchEvent::RelaxedStep ||
+                     e.event == jobs::MarchEvent::Fallback || e.event == jobs::MarchEvent::Hit ||
+                     e.event == jobs::MarchEvent::NotFinite;
         return count;
     }
 };
@@ -82,20 +83,20 @@ TEST_F(Probe, ReplaysTheMarchTheFrameIsDrawnWith) {
                 EXPECT_EQ(marchEvaluations(r), r.steps) << x << "," << y;
                 if (expected.hit()) {
                     ++hits;
-                    ASSERT_EQ(r.outcome, "hit") << x << "," << y;
+                    ASSERT_EQ(r.outcome, jobs::MarchEvent::Hit) << x << "," << y;
                     EXPECT_EQ(*r.hitT, expected.t) << x << "," << y; // the same float: the same arithmetic
                     for (const auto& e : r.events)
-                        if (e.event == "hit") {
+                        if (e.event == jobs::MarchEvent::Hit) {
                             EXPECT_LT(std::abs(glm::length(e.position) - 0.5f), 1.01f * r.footprint); // within the hit tolerance
                         }
                 } else {
                     ++misses;
-                    EXPECT_TRUE(r.outcome == "left the box" || r.outcome == "missed the box")
+                    EXPECT_TRUE(r.outcome == jobs::MarchEvent::LeftBox || r.outcome == jobs::MarchEvent::MissedBox)
                         << x << "," << y << ": " << r.reason;
                 }
                 // The march moves by d (times omega when relaxed) from each step's point.
                 for (std::size_t k = 0; k + 1 < r.events.size(); ++k) {
-                    if (r.events[k].event == "step" && r.events[k + 1].event != "left the box") {
+                    if (r.events[k].event == jobs::MarchEvent::Step && r.events[k + 1].event != jobs::MarchEvent::LeftBox) {
                         EXPECT_NEAR(r.events[k].step, r.events[k].f, 1e-5f * (1.0f + r.events[k].t)) << k;
                     }
                 }
@@ -110,13 +111,13 @@ TEST_F(Probe, SaysWhyARayMissed) {
     jobs::FrameRequest f = frame(kSphere);
     f.trace.maxSteps = 1;
     jobs::ProbeReport r = probe(f, kWidth / 2, kHeight / 2);
-    EXPECT_EQ(r.outcome, "out of steps");
-    EXPECT_EQ(r.events.back().event, "out of steps");
+    EXPECT_EQ(r.outcome, jobs::MarchEvent::OutOfSteps);
+    EXPECT_EQ(r.events.back().event, jobs::MarchEvent::OutOfSteps);
     EXPECT_NE(r.reason.find("step budget of 1"), std::string::npos) << r.reason;
 
     f = frame("float sdf(vec3 p) { return length(p) - 0.5 + 1e-3 * sqrt(p.z - 2.0); }\n"); // NaN inside the box
     r = probe(f, kWidth / 2, kHeight / 2);
-    EXPECT_EQ(r.outcome, "not finite");
+    EXPECT_EQ(r.outcome, jobs::MarchEvent::NotFinite);
     EXPECT_EQ(r.events.size(), 1u);
     EXPECT_NE(r.reason.find("NaN or Inf"), std::string::npos);
 
@@ -124,7 +125,7 @@ TEST_F(Probe, SaysWhyARayMissed) {
     f.camera.position = {0.0f, 3.0f, 3.0f};
     f.camera.target = {0.0f, 3.0f, 0.0f}; // looking past the box
     r = probe(f, kWidth / 2, kHeight / 2);
-    EXPECT_EQ(r.outcome, "missed the box");
+    EXPECT_EQ(r.outcome, jobs::MarchEvent::MissedBox);
     EXPECT_EQ(r.steps, 0);
 }
 
@@ -146,7 +147,7 @@ TEST_F(Probe, ShowsFallbacksAndOversteps) {
     f.trace.stepFactor = 1.0f / 1.6f;
     r = probe(f, kWidth / 2, kHeight / 2);
     EXPECT_EQ(r.oversteps, 0u);
-    EXPECT_EQ(r.outcome, "hit");
+    EXPECT_EQ(r.outcome, jobs::MarchEvent::Hit);
     // Over-relaxation takes long steps and falls back when they went too far.
     f = frame(kSphere);
     f.trace.overRelaxation = 1.9f;
@@ -160,7 +161,7 @@ TEST_F(Probe, CommandLineForm) {
     ASSERT_EQ(result.exitCode, 0) << result.output;
     auto report = jobs::reportFromJson<jobs::ProbeReport>(result.standardOutput);
     ASSERT_TRUE(report) << report.error().message << "\n" << result.output;
-    EXPECT_EQ(report->outcome, "hit");
+    EXPECT_EQ(report->outcome, jobs::MarchEvent::Hit);
     EXPECT_EQ(int(report->events.size()) >= report->steps, true);
     result = sdfwb::testing::runCommand(SDFWB_BINARY, "--batch probe --sdf Torus --size 64x36 --pixel 64,0");
     EXPECT_EQ(result.exitCode, 2);

@@ -45,15 +45,17 @@ TEST(MarchDebugger, ClickingAPixelShowsItsMarchAndHoveringThePlaneShowsTheField)
         EXPECT_GT(yellow, 20) << "the probed pixel is marked";
     }
     const jobs::ProbeReport& hit = window.probePanel()->report();
-    EXPECT_EQ(hit.outcome, "hit") << hit.reason;
+    EXPECT_EQ(hit.outcome, jobs::MarchEvent::Hit) << hit.reason;
     EXPECT_EQ(hit.x, viewport->width() / 2);
     ASSERT_FALSE(hit.events.empty());
-    EXPECT_EQ(hit.events.front().event, "step");
-    EXPECT_TRUE(std::any_of(hit.events.begin(), hit.events.end(), [](const auto& r) { return r.event == "hit"; }));
+    EXPECT_EQ(hit.events.front().event, jobs::MarchEvent::Step);
+    EXPECT_TRUE(
+        std::any_of(hit.events.begin(), hit.events.end(), [](const auto& r) { return r.event == jobs::MarchEvent::Hit; }));
     EXPECT_EQ(hit.oversteps, 0u) << "an exact field never oversteps";
     ASSERT_TRUE(hit.hitT.has_value());
     // The hit lies on the sphere of radius 0.8: the distance from the camera along the ray.
-    const auto& last = *std::find_if(hit.events.begin(), hit.events.end(), [](const auto& r) { return r.event == "hit"; });
+    const auto& last =
+        *std::find_if(hit.events.begin(), hit.events.end(), [](const auto& r) { return r.event == jobs::MarchEvent::Hit; });
     EXPECT_NEAR(glm::length(last.position), 0.8f, 2e-3f);
     EXPECT_EQ(window.probePanel()->table()->rowCount(), int(hit.events.size()));
     EXPECT_GE(window.probePanel()->plot()->markerCount(), hit.steps);
@@ -66,8 +68,9 @@ TEST(MarchDebugger, ClickingAPixelShowsItsMarchAndHoveringThePlaneShowsTheField)
     QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, QPoint(2, 2));
     ASSERT_TRUE(waitFor([&] { return probes == 2; }, 30000));
     const jobs::ProbeReport& miss = window.probePanel()->report();
-    EXPECT_TRUE(miss.outcome == "missed the box" || miss.outcome == "left the box") << miss.outcome;
-    EXPECT_TRUE(window.probePanel()->summary().contains(QString::fromStdString(miss.outcome)));
+    EXPECT_TRUE(miss.outcome == jobs::MarchEvent::MissedBox || miss.outcome == jobs::MarchEvent::LeftBox)
+        << jobs::marchEventName(miss.outcome);
+    EXPECT_TRUE(window.probePanel()->summary().contains(jobs::marchEventName(miss.outcome)));
 
     // The probe tool off: a drag orbits again.
     QTest::mouseClick(button, Qt::LeftButton);

@@ -233,6 +233,27 @@ TEST(JobJson, ReportsSurviveARoundTrip) {
     ASSERT_TRUE(line) << line.error().message;
     EXPECT_TRUE(*line == run.results[1]);
     EXPECT_EQ(toJson(run.results[1], -1).find('\n'), std::string::npos); // one status-file line
+    // A probe's events and outcome travel by their names (MarchEvent's one table): every event
+    // survives, and a name no event has is refused at its key.
+    ProbeReport probe;
+    probe.outcome = MarchEvent::OutOfSteps;
+    for (const auto& [event, name] : kMarchEventNames) {
+        ProbeStep step;
+        step.event = event;
+        step.t = 0.5f;
+        probe.events.push_back(step);
+        EXPECT_EQ(parseMarchEvent(name), event);
+    }
+    const std::string probeJson = toJson(probe);
+    EXPECT_NE(probeJson.find(R"("refine undone")"), std::string::npos) << probeJson;
+    auto pr = reportFromJson<ProbeReport>(probeJson);
+    ASSERT_TRUE(pr) << pr.error().message;
+    EXPECT_TRUE(*pr == probe);
+    std::string renamed = probeJson;
+    renamed.replace(renamed.find(R"("missed the box")"), 16, R"("missed the bus")");
+    auto refused = reportFromJson<ProbeReport>(renamed);
+    ASSERT_FALSE(refused);
+    EXPECT_NE(refused.error().message.find("'events[9].event'"), std::string::npos) << refused.error().message;
     // Reports grow: a key this build does not know is skipped, not refused.
     auto grown = reportFromJson<MergeReport>(R"({"output": "m.bin", "rows": 7, "parts": 2, "seconds": 0.5, "new_figure": 1})");
     ASSERT_TRUE(grown) << grown.error().message;

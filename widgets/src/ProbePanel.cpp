@@ -14,11 +14,6 @@
 namespace sdfwb::widgets {
 namespace {
 
-bool evaluates(const std::string& event) {
-    return event == "step" || event == "relaxed step" || event == "fallback" || event == "hit" || event == "refine" ||
-           event == "refine undone";
-}
-
 QString number(float value) { return std::isfinite(value) ? QString::number(double(value), 'g', 6) : QString("nan"); }
 
 } // namespace
@@ -56,17 +51,17 @@ QString ProbePanel::summary() const { return m_summary->text(); }
 
 void ProbePanel::setReport(const jobs::ProbeReport& report) {
     m_report = report;
-    QString text =
-        tr("<b>Pixel (%1, %2)</b> of %3x%4: <b>%5</b>. %6<br>%7 steps, %8 oversteps, %9 fallbacks; probed in %10 s.")
-            .arg(report.x)
-            .arg(report.y)
-            .arg(report.width)
-            .arg(report.height)
-            .arg(QString::fromStdString(report.outcome).toHtmlEscaped(), QString::fromStdString(report.reason).toHtmlEscaped())
-            .arg(report.steps)
-            .arg(qulonglong(report.oversteps))
-            .arg(qulonglong(report.fallbacks))
-            .arg(report.seconds, 0, 'f', 2);
+    QString text = tr("<b>Pixel (%1, %2)</b> of %3x%4: <b>%5</b>. %6<br>%7 steps, %8 oversteps, %9 fallbacks; probed in %10 s.")
+                       .arg(report.x)
+                       .arg(report.y)
+                       .arg(report.width)
+                       .arg(report.height)
+                       .arg(QString(jobs::marchEventName(report.outcome)).toHtmlEscaped(),
+                            QString::fromStdString(report.reason).toHtmlEscaped())
+                       .arg(report.steps)
+                       .arg(qulonglong(report.oversteps))
+                       .arg(qulonglong(report.fallbacks))
+                       .arg(report.seconds, 0, 'f', 2);
     if (report.oversteps > 0)
         text += tr("<br><span style='color:#d03030'>Oversteps: steps longer than the distance to the surface (f changed "
                    "sign). Lower the step factor or fix the field's Lipschitz bound.</span>");
@@ -74,23 +69,23 @@ void ProbePanel::setReport(const jobs::ProbeReport& report) {
     m_table->setRowCount(int(report.events.size()));
     for (int r = 0; r < int(report.events.size()); ++r) {
         const jobs::ProbeStep& row = report.events[std::size_t(r)];
-        const QString event = QString::fromStdString(row.event);
+        const QString event = jobs::marchEventName(row.event);
         const QStringList cells = {QString::number(r),
                                    row.overstep ? event + tr(" (overstep)") : event,
                                    number(row.t),
                                    number(row.position.x),
                                    number(row.position.y),
                                    number(row.position.z),
-                                   evaluates(row.event) ? number(row.f) : QString(),
+                                   jobs::evaluatesField(row.event) ? number(row.f) : QString(),
                                    row.step != 0.0f ? number(row.step) : QString(),
-                                   evaluates(row.event) ? number(row.gradientLength) : QString()};
+                                   jobs::evaluatesField(row.event) ? number(row.gradientLength) : QString()};
         for (int c = 0; c < cells.size(); ++c) {
             auto* item = new QTableWidgetItem(cells[c]);
             if (row.overstep)
                 item->setForeground(QColor(210, 40, 40));
-            else if (row.event == "fallback")
+            else if (row.event == jobs::MarchEvent::Fallback)
                 item->setForeground(QColor(220, 130, 20));
-            else if (row.event == "hit")
+            else if (row.event == jobs::MarchEvent::Hit)
                 item->setForeground(QColor(30, 150, 60));
             m_table->setItem(r, c, item);
         }
@@ -107,12 +102,14 @@ void MarchPlot::setEvents(const std::vector<jobs::ProbeStep>& events) {
     m_points.clear();
     for (int r = 0; r < int(events.size()); ++r) {
         const jobs::ProbeStep& row = events[std::size_t(r)];
-        if (!evaluates(row.event) || !std::isfinite(row.f) || !std::isfinite(row.t)) continue;
-        QColor colour = row.overstep                      ? QColor(220, 40, 40)
-                        : row.event == "fallback"         ? QColor(235, 140, 20)
-                        : row.event == "hit"              ? QColor(30, 170, 70)
-                        : row.event.starts_with("refine") ? QColor(120, 120, 200)
-                                                          : QColor(40, 90, 200);
+        if (!jobs::evaluatesField(row.event) || !std::isfinite(row.f) || !std::isfinite(row.t)) continue;
+        using Event = jobs::MarchEvent;
+        const bool refine = row.event == Event::Refine || row.event == Event::RefineUndone;
+        QColor colour = row.overstep                   ? QColor(220, 40, 40)
+                        : row.event == Event::Fallback ? QColor(235, 140, 20)
+                        : row.event == Event::Hit      ? QColor(30, 170, 70)
+                        : refine                       ? QColor(120, 120, 200)
+                                                       : QColor(40, 90, 200);
         m_points.push_back({row.t, row.f, r, colour});
     }
     m_selected = -1;

@@ -16,9 +16,9 @@ int runProbe(const jobs::ProbeRequest& request, const OutputOptions& output) {
         std::printf("  %5s  %-14s %12s %13s %13s %9s  %s\n", "#", "event", "t", "f", "step", "|grad f|", "position");
         for (std::size_t k = 0; k < r.events.size(); ++k) {
             const jobs::ProbeStep& e = r.events[k];
-            std::printf("  %5zu  %-14s %12.7g %13.6g %13.6g %9.4g  (%.5g, %.5g, %.5g)%s\n", k, e.event.c_str(), double(e.t),
-                        double(e.f), double(e.step), double(e.gradientLength), double(e.position.x), double(e.position.y),
-                        double(e.position.z), e.overstep ? "  overstep: passed the surface" : "");
+            std::printf("  %5zu  %-14s %12.7g %13.6g %13.6g %9.4g  (%.5g, %.5g, %.5g)%s\n", k, jobs::marchEventName(e.event),
+                        double(e.t), double(e.f), double(e.step), double(e.gradientLength), double(e.position.x),
+                        double(e.position.y), double(e.position.z), e.overstep ? "  overstep: passed the surface" : "");
         }
         std::printf("  %llu oversteps, %llu fallbacks%s\n", (unsigned long long)r.oversteps, (unsigned long long)r.fallbacks,
                     r.dropped ? " (events past the recorder's capacity were dropped)" : "");

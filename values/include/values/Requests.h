@@ -13,6 +13,8 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -431,11 +433,42 @@ struct EvalReport {
     bool operator==(const EvalReport&) const = default;
 };
 
+// What a probed ray's march did at one event; the last ones are also how a march ends
+// (ProbeReport::outcome). Its names (the JSON's and every front end's words) are in
+// kMarchEventNames, once.
+enum class MarchEvent { Step, RelaxedStep, Fallback, Hit, Refine, RefineUndone, LeftBox, NotFinite, OutOfSteps, MissedBox };
+inline constexpr std::pair<MarchEvent, const char*> kMarchEventNames[] = {
+    {MarchEvent::Step, "step"},
+    {MarchEvent::RelaxedStep, "relaxed step"},
+    {MarchEvent::Fallback, "fallback"},
+    {MarchEvent::Hit, "hit"},
+    {MarchEvent::Refine, "refine"},
+    {MarchEvent::RefineUndone, "refine undone"},
+    {MarchEvent::LeftBox, "left the box"},
+    {MarchEvent::NotFinite, "not finite"},
+    {MarchEvent::OutOfSteps, "out of steps"},
+    {MarchEvent::MissedBox, "missed the box"},
+};
+inline const char* marchEventName(MarchEvent event) {
+    for (const auto& [value, name] : kMarchEventNames)
+        if (value == event) return name;
+    return "?";
+}
+inline std::optional<MarchEvent> parseMarchEvent(std::string_view name) {
+    for (const auto& [value, text] : kMarchEventNames)
+        if (name == text) return value;
+    return std::nullopt;
+}
+// Whether the field was evaluated at this event (its f and |grad f| mean something).
+inline bool evaluatesField(MarchEvent event) {
+    return event == MarchEvent::Step || event == MarchEvent::RelaxedStep || event == MarchEvent::Fallback ||
+           event == MarchEvent::Hit || event == MarchEvent::Refine || event == MarchEvent::RefineUndone;
+}
+
 // One event of a probed ray's march (renderer::OffscreenRenderer::ProbeEvent, with what follows
 // from it).
 struct ProbeStep {
-    std::string
-        event; // step, relaxed step, fallback, hit, refine, refine undone, left the box, not finite, out of steps, missed the box
+    MarchEvent event = MarchEvent::Step;
     float t = 0.0f; // distance along the ray
     glm::vec3 position{0.0f};
     float f = 0.0f;              // the field there (of the traced scene: clipped by the plane when it cuts)
@@ -451,9 +484,9 @@ struct ProbeReport {
     std::string sdf, entry;
     int width = 0, height = 0, x = 0, y = 0;
     glm::vec3 origin{0.0f}, direction{0.0f};
-    std::string outcome; // hit, left the box, out of steps, not finite, missed the box
-    std::string reason;  // the outcome in a sentence
-    int steps = 0;       // the tracer's step count for the pixel (what the steps shading shows)
+    MarchEvent outcome = MarchEvent::MissedBox; // hit, left the box, out of steps, not finite or missed the box
+    std::string reason;                         // the outcome in a sentence
+    int steps = 0;                              // the tracer's step count for the pixel (what the steps shading shows)
     std::optional<float> hitT;
     std::optional<float> hitResidual; // |f| at the hit, after refining
     float footprint = 0.0f;           // the hit tolerance at the hit distance (or at the last step)
