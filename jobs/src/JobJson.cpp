@@ -227,33 +227,31 @@ bool decode(const json& in, PlaneSpec& value, const std::string& path, bool, std
     return true;
 }
 
-bool decode(const json& in, renderer::ShadingMode& value, const std::string& path, bool, std::string& error) {
-    if (!in.is_string()) return fail(error, path, "a shading mode (" + renderer::shadingModeNames() + ")", in);
-    auto mode = renderer::parseShadingMode(in.get<std::string>());
-    if (!mode) return fail(error, path, "a shading mode (" + renderer::shadingModeNames() + ")", in);
-    value = *mode;
+// An enum written as its name: `parse` reads the name; `expected` says what may stand there.
+template <class Enum, class Parse>
+bool decodeNamed(const json& in, Enum& value, const std::string& path, std::string& error, Parse parse,
+                 const std::string& expected) {
+    const std::optional<Enum> named = in.is_string() ? parse(in.get<std::string>()) : std::nullopt;
+    if (!named) return fail(error, path, expected, in);
+    value = *named;
     return true;
+}
+
+bool decode(const json& in, renderer::ShadingMode& value, const std::string& path, bool, std::string& error) {
+    return decodeNamed(in, value, path, error, renderer::parseShadingMode,
+                       "a shading mode (" + renderer::shadingModeNames() + ")");
 }
 
 bool decode(const json& in, renderer::TraceSettings::Cones& value, const std::string& path, bool, std::string& error) {
-    auto cones = in.is_string() ? renderer::parseCones(in.get<std::string>()) : std::nullopt;
-    if (!cones) return fail(error, path, "auto, off or on", in);
-    value = *cones;
-    return true;
-}
-
-bool decode(const json& in, MarchEvent& value, const std::string& path, bool, std::string& error) {
-    auto event = in.is_string() ? parseMarchEvent(in.get<std::string>()) : std::nullopt;
-    if (!event) return fail(error, path, "a march event (step, hit, left the box, ...)", in);
-    value = *event;
-    return true;
+    return decodeNamed(in, value, path, error, renderer::parseCones, "auto, off or on");
 }
 
 bool decode(const json& in, renderer::TraceSettings::Tracer& value, const std::string& path, bool, std::string& error) {
-    auto tracer = in.is_string() ? renderer::parseTracer(in.get<std::string>()) : std::nullopt;
-    if (!tracer) return fail(error, path, "auto, fragment or compute", in);
-    value = *tracer;
-    return true;
+    return decodeNamed(in, value, path, error, renderer::parseTracer, "auto, fragment or compute");
+}
+
+bool decode(const json& in, MarchEvent& value, const std::string& path, bool, std::string& error) {
+    return decodeNamed(in, value, path, error, parseMarchEvent, "a march event (step, hit, left the box, ...)");
 }
 
 template <class T> bool decode(const json& in, std::optional<T>& value, const std::string& path, bool strict, std::string& error);

@@ -111,91 +111,76 @@ bool SdfRenderer::settleMarch(double fullFrameMilliseconds) {
         return variant != nullptr;
     };
     auto milliseconds = [](double value) { return std::to_string(int(std::lround(value))); };
-    // The last trial: the compute tracer instead of the fragment program chosen so far. Returns
-    // whether the program changed.
+    // Starts a trial of the program `chosen` selects, drawn at the next full frame; false (the
+    // program before stays, from the cache) when the driver refuses it.
+    auto startTrial = [&](bool& chosen, Impl::Settle trying, const std::string& message) {
+        chosen = true;
+        if (!rebuild()) {
+            chosen = false;
+            rebuild();
+            return false;
+        }
+        impl.settle = trying;
+        log::info("render", "trying " + message);
+        return true;
+    };
+    // Ends the open trial: the tried program stays when its full frame was no slower than the best
+    // so far, else `chosen` is dropped and the program before comes back. Returns whether it stayed.
+    auto endTrial = [&](bool& chosen, const char* what, const char* before) {
+        const bool keep = fullFrameMilliseconds <= impl.bestMilliseconds;
+        log::info("render", std::string(keep ? "keeping " : "dropping ") + what + ": " + milliseconds(fullFrameMilliseconds) +
+                                " ms a full frame against " + milliseconds(impl.bestMilliseconds) + " " + before);
+        if (keep) {
+            impl.bestMilliseconds = fullFrameMilliseconds;
+        } else {
+            chosen = false;
+            rebuild();
+        }
+        return keep;
+    };
+    // The last trial: the compute tracer instead of the fragment program chosen so far, where it
+    // can draw these frames. Returns whether the program changed.
     auto tryCompute = [&] {
         impl.settle = Impl::Settle::Done;
         if (m_trace.tracer != TraceSettings::Tracer::Auto || impl.computeChosen || impl.current->compute) return false;
         impl.computeChosen = true;
-        if (!impl.features(m_shading, m_trace, m_plane).compute || !rebuild()) { // not for this frame, or refused
-            impl.computeChosen = false;
-            rebuild();
-            return false;
-        }
-        impl.settle = Impl::Settle::TryingCompute;
-        log::info("render", "trying the compute tracer: a full frame took " + milliseconds(impl.bestMilliseconds) +
-                                " ms with the fragment tracer");
-        return true;
+        const bool applies = impl.features(m_shading, m_trace, m_plane).compute;
+        impl.computeChosen = false;
+        return applies && startTrial(impl.computeChosen, Impl::Settle::TryingCompute,
+                                     "the compute tracer: a full frame took " + milliseconds(impl.bestMilliseconds) +
+                                         " ms with the fragment tracer");
     };
     // The cone pass on the march chosen so far, then the compute tracer.
     auto tryCones = [&] {
         if (m_trace.cones != TraceSettings::Cones::Auto || !conesApply(m_shading, m_trace) || impl.conesChosen ||
             impl.current->meshRaycast || impl.current->compute)
             return tryCompute();
-        impl.conesChosen = true;
-        if (!rebuild()) { // the driver refused it: the program without cones stays (from the cache)
-            impl.conesChosen = false;
-            rebuild();
-            return tryCompute();
-        }
-        impl.settle = Impl::Settle::TryingCones;
-        log::info("render", "trying the cone pass: a full frame took " + milliseconds(impl.bestMilliseconds) + " ms without");
-        return true;
+        return startTrial(impl.conesChosen, Impl::Settle::TryingCones,
+                          "the cone pass: a full frame took " + milliseconds(impl.bestMilliseconds) + " ms without") ||
+               tryCompute();
     };
     switch (impl.settle) {
     case Impl::Settle::Open:
         impl.bestMilliseconds = fullFrameMilliseconds;
-        if (!forcedFusedMarch() && fusedMarch() && fullFrameMilliseconds < kTrySeparateMarchBelowMilliseconds) {
-            impl.separateChosen = true;
-            if (rebuild()) {
-                impl.settle = Impl::Settle::TryingSeparate;
-                log::info("render", "trying the separate march: the fused one drew a full frame in " +
-                                        milliseconds(fullFrameMilliseconds) + " ms");
-                return true;
-            }
-            impl.separateChosen = false;
-            rebuild();
-        }
+        if (!forcedFusedMarch() && fusedMarch() && fullFrameMilliseconds < kTrySeparateMarchBelowMilliseconds &&
+            startTrial(impl.separateChosen, Impl::Settle::TryingSeparate,
+                       "the separate march: the fused one drew a full frame in " + milliseconds(fullFrameMilliseconds) + " ms"))
+            return true;
         return tryCones();
     case Impl::Settle::ConesOpen:
         impl.bestMilliseconds = fullFrameMilliseconds;
         return tryCones();
     case Impl::Settle::TryingSeparate: {
-        const bool keep = fullFrameMilliseconds <= impl.bestMilliseconds;
-        log::info("render", std::string(keep ? "keeping" : "dropping") +
-                                " the separate march: " + milliseconds(fullFrameMilliseconds) + " ms a full frame against " +
-                                milliseconds(impl.bestMilliseconds) + " fused");
-        if (keep) {
-            impl.bestMilliseconds = fullFrameMilliseconds;
-        } else {
-            impl.separateChosen = false;
-            rebuild();
-        }
+        const bool keep = endTrial(impl.separateChosen, "the separate march", "fused");
         return tryCones() || !keep;
     }
     case Impl::Settle::TryingCones: {
-        const bool keep = fullFrameMilliseconds <= impl.bestMilliseconds;
-        log::info("render", std::string(keep ? "keeping" : "dropping") +
-                                " the cone pass: " + milliseconds(fullFrameMilliseconds) + " ms a full frame against " +
-                                milliseconds(impl.bestMilliseconds) + " without");
-        if (keep) {
-            impl.bestMilliseconds = fullFrameMilliseconds;
-        } else {
-            impl.conesChosen = false;
-            rebuild();
-        }
+        const bool keep = endTrial(impl.conesChosen, "the cone pass", "without");
         return tryCompute() || !keep;
     }
-    case Impl::Settle::TryingCompute: {
+    case Impl::Settle::TryingCompute:
         impl.settle = Impl::Settle::Done;
-        const bool keep = fullFrameMilliseconds <= impl.bestMilliseconds;
-        log::info("render", std::string(keep ? "keeping" : "dropping") +
-                                " the compute tracer: " + milliseconds(fullFrameMilliseconds) + " ms a full frame against " +
-                                milliseconds(impl.bestMilliseconds) + " with the fragment tracer");
-        if (keep) return false;
-        impl.computeChosen = false;
-        return rebuild();
-    }
+        return !endTrial(impl.computeChosen, "the compute tracer", "with the fragment tracer");
     case Impl::Settle::Done:
         break;
     }

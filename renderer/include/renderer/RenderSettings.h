@@ -1,6 +1,7 @@
 #pragma once
 // GL-free settings that widgets and the CLI edit and the renderer consumes.
 
+#include <core/NameTable.h>
 #include <shaders/TracerComposer.h>
 
 #include <glm/vec3.hpp>
@@ -8,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace sdfwb::renderer {
@@ -41,25 +43,17 @@ struct TraceSettings {
     bool operator==(const TraceSettings&) const = default;
 };
 
-// "auto", "fragment", "compute" (the CLI's --tracer).
-inline const char* tracerName(TraceSettings::Tracer tracer) {
-    return tracer == TraceSettings::Tracer::Fragment ? "fragment" : tracer == TraceSettings::Tracer::Compute ? "compute" : "auto";
-}
-inline std::optional<TraceSettings::Tracer> parseTracer(std::string_view name) {
-    for (auto tracer : {TraceSettings::Tracer::Auto, TraceSettings::Tracer::Fragment, TraceSettings::Tracer::Compute})
-        if (name == tracerName(tracer)) return tracer;
-    return std::nullopt;
-}
-
-// "auto", "off", "on" (the CLI's --cones and the job files' trace.cones).
-inline const char* conesName(TraceSettings::Cones cones) {
-    return cones == TraceSettings::Cones::Off ? "off" : cones == TraceSettings::Cones::On ? "on" : "auto";
-}
-inline std::optional<TraceSettings::Cones> parseCones(std::string_view name) {
-    for (auto cones : {TraceSettings::Cones::Auto, TraceSettings::Cones::Off, TraceSettings::Cones::On})
-        if (name == conesName(cones)) return cones;
-    return std::nullopt;
-}
+// The names of the tracer and cone-pass choices (the CLI's --tracer and --cones, the job files'
+// trace.tracer and trace.cones).
+inline constexpr std::pair<TraceSettings::Tracer, const char*> kTracerNames[] = {{TraceSettings::Tracer::Auto, "auto"},
+                                                                                 {TraceSettings::Tracer::Fragment, "fragment"},
+                                                                                 {TraceSettings::Tracer::Compute, "compute"}};
+inline constexpr std::pair<TraceSettings::Cones, const char*> kConesNames[] = {
+    {TraceSettings::Cones::Auto, "auto"}, {TraceSettings::Cones::Off, "off"}, {TraceSettings::Cones::On, "on"}};
+inline const char* tracerName(TraceSettings::Tracer tracer) { return nameOf(kTracerNames, tracer); }
+inline std::optional<TraceSettings::Tracer> parseTracer(std::string_view name) { return valueNamed(kTracerNames, name); }
+inline const char* conesName(TraceSettings::Cones cones) { return nameOf(kConesNames, cones); }
+inline std::optional<TraceSettings::Cones> parseCones(std::string_view name) { return valueNamed(kConesNames, name); }
 
 struct ShadingSettings {
     ShadingMode mode = ShadingMode::Normals;

@@ -6,6 +6,7 @@
 // keyword arguments or dicts; all of them run through jobs/Jobs.h. Plain values: no GL, no Qt, no
 // JSON here. The namespace is the job model's, sdfwb::jobs.
 
+#include <core/NameTable.h>
 #include <sampling/FieldAudit.h>
 #include <shaders/Parameters.h>
 #include <values/FrameSettings.h>
@@ -449,16 +450,8 @@ inline constexpr std::pair<MarchEvent, const char*> kMarchEventNames[] = {
     {MarchEvent::OutOfSteps, "out of steps"},
     {MarchEvent::MissedBox, "missed the box"},
 };
-inline const char* marchEventName(MarchEvent event) {
-    for (const auto& [value, name] : kMarchEventNames)
-        if (value == event) return name;
-    return "?";
-}
-inline std::optional<MarchEvent> parseMarchEvent(std::string_view name) {
-    for (const auto& [value, text] : kMarchEventNames)
-        if (name == text) return value;
-    return std::nullopt;
-}
+inline const char* marchEventName(MarchEvent event) { return nameOf(kMarchEventNames, event); }
+inline std::optional<MarchEvent> parseMarchEvent(std::string_view name) { return valueNamed(kMarchEventNames, name); }
 // Whether the field was evaluated at this event (its f and |grad f| mean something).
 inline bool evaluatesField(MarchEvent event) {
     return event == MarchEvent::Step || event == MarchEvent::RelaxedStep || event == MarchEvent::Fallback ||
