@@ -1,6 +1,4 @@
-#include <renderer/SampleCompute.h>
-
-#include "GlObjects.h"
+#include "SampleComputeImpl.h"
 
 #include <core/Log.h>
 #include <meshfield/MeshQuery.h>
@@ -18,7 +16,6 @@
 #include <unordered_map>
 
 namespace sdfwb::renderer {
-namespace {
 
 std::string glErrorName(GLenum error) {
     switch (error) {
@@ -45,8 +42,6 @@ std::uint32_t checkedBadRows(const MappedRows& rows, std::uint32_t count) {
     return countNonFiniteRows(rows, count);
 }
 
-} // namespace
-
 std::uint32_t cubeSide(std::uint64_t count) {
     std::uint64_t n = std::uint64_t(std::cbrt(double(count)));
     while (n * n * n < count) ++n;
@@ -61,58 +56,6 @@ std::uint32_t squareSide(std::uint64_t count) {
     return std::uint32_t(std::max<std::uint64_t>(n, 1));
 }
 
-// Positions, distances and gradients of one dispatch, in one of three kinds of memory.
-enum class BufferKind {
-    ReadBack, // run(): read back with glGetBufferSubData
-    Mapped,   // immutable, persistently and coherently mapped: the host reads the rows in place
-    Device,   // immutable GPU memory, copied by the GPU into a Mapped set (staging)
-};
-
-struct BufferSet {
-    GlBuffer buffers[3];
-    const float* mapped[3] = {};
-    std::uint32_t capacity = 0;
-    bool interleaved = false; // buffers[0] holds 7-float rows; the other two are placeholders
-    BufferKind kind = BufferKind::ReadBack;
-
-    void reset() {
-        for (GlBuffer& buffer : buffers) buffer.reset(); // deleting a buffer unmaps it
-        for (const float*& pointer : mapped) pointer = nullptr;
-        capacity = 0;
-        interleaved = false;
-        kind = BufferKind::ReadBack;
-    }
-    void release() {
-        for (GlBuffer& buffer : buffers) buffer.release();
-    }
-};
-
-// The counts one dispatch adds up (the rows with a non-finite value, then the GLSL mesh walks'
-// counts under SDFWB_MESH_COUNT), read by the host through a persistent mapping once the
-// dispatch's fence has signalled: no read-back that waits on each chunk.
-constexpr int kCountWords = 6;
-
-// A chunk that submitMapped() dispatched and collectMapped() has not yet returned.
-struct PendingChunk {
-    bool active = false;
-    std::uint32_t count = 0;
-    bool interleaved = false;
-    bool staged = false; // the rows are in the staging set
-    std::array<std::uint32_t, 3> shift{};
-    const float* inputs = nullptr; // the caller's points (the CPU engine: nothing was dispatched)
-    SampleUniforms uniforms;       // for the values computed on collection (CPU engine, values program)
-    GLsync fence = nullptr;
-    GpuTimer timer;     // the dispatch
-    GpuTimer copyTimer; // staging: the GPU's copies into the mapped buffers
-    std::chrono::steady_clock::time_point issued;
-
-    void dropFence() {
-        if (fence) glDeleteSync(fence);
-        fence = nullptr;
-    }
-};
-
-// Waits until `fence` has signalled (the driver is flushed on the first wait). False: the wait failed.
 bool waitFor(GLsync fence) {
     GLbitfield flags = GL_SYNC_FLUSH_COMMANDS_BIT;
     for (;;) {
@@ -122,115 +65,6 @@ bool waitFor(GLsync fence) {
         flags = 0;
     }
 }
-
-struct SampleCompute::Impl {
-    GlProgram program;
-    BufferSet plain;              // run(): read back with glGetBufferSubData
-    BufferSet slots[kMaxSlots];   // runMapped(): mapped, or on the GPU when staging
-    BufferSet staging[kMaxSlots]; // staging: the mapped copies of `slots`
-    PendingChunk pending[kMaxSlots];
-    SamplePipeline settings; // as set (zeros and -1: per driver)
-    // One region of kCountWords uints per slot and one for run(), at a stride the driver's
-    // shader-storage offset alignment allows, mapped for good.
-    GlBuffer counts;
-    std::uint32_t* countWords = nullptr;
-    GLsizeiptr countStride = 0;
-    GlBuffer inputs;      // caller's points (analysis/points.glsl)
-    SdfTextures textures; // g3d_uniformRandom and iChannel0..3, made when the program reads them
-    std::array<std::string, shaders::kShadertoyChannels> channels; // the SDF's channel images
-    std::shared_ptr<const meshfield::MeshField> mesh;              // a mesh SDF's triangles
-    // The native engine for a mesh's own field (null: the GLSL field computes the values).
-    std::shared_ptr<const meshfield::MeshQuery> query;
-    const char* engine = "";
-    meshfield::QueryCounters counters; // the CPU engine's, or the GLSL field's when counting, since build()
-    bool countWalks = false;           // the GLSL mesh field counts its walks (SDFWB_MESH_COUNT=1)
-    GpuTimer kernelTimer;
-    double kernelMilliseconds = 0.0; // since build(); -1 once a timer could not be trusted
-    double copyMilliseconds = 0.0;   // the staging copies' GPU time, the same way
-    // With the CPU engine, each slot's rows on the host (the mapped buffers are read-only).
-    std::vector<float> hostRows[kMaxSlots][3];
-    std::string source;
-    // Uniform locations, each asked of the driver once per program (issue 49: not per chunk).
-    mutable std::unordered_map<std::string, GLint> locations;
-    GLint location(const char* name) const {
-        auto it = locations.find(name);
-        if (it == locations.end()) it = locations.emplace(name, glGetUniformLocation(program.id(), name)).first;
-        return it->second;
-    }
-    Expected<void> reserve(BufferSet& set, std::uint32_t count, BufferKind kind, bool interleaved = false);
-    Expected<void> reserveCounts();
-    int slotCount() const { return std::clamp(settings.sets, 3, kMaxSlots); }
-    bool staged() const { return settings.staging < 0 ? !softwareRasteriser() : settings.staging > 0; }
-    // Binds the uniforms and buffers, zeroes count region `region` and dispatches; waits for nothing.
-    Expected<void> issue(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, BufferSet& set, bool positions,
-                         bool gradients, bool interleaved, std::array<std::uint32_t, 3> shift, const float* inputRows,
-                         int region);
-    // Region `region`'s counts, once the dispatch that made them has finished: the bad rows.
-    std::uint32_t takeCounts(int region);
-    void finishPending();
-    // The CPU engine's values and gradients at the positions; the rows with a non-finite value.
-    // The sampler is analysis/points.glsl: its positions are the caller's points one for one (the
-    // mesher's lattice also reads per-sample inputs when B = 0, but those are grid indices).
-    bool pointsSampler = false;
-    bool positionsAreInputs(const SampleUniforms& uniforms) const {
-        return pointsSampler && uniforms.inputPoints && uniforms.inputTableFloats == 0;
-    }
-    // The values and gradients at positions this program computed: the CPU engine's, or `values`'s.
-    Expected<std::uint32_t> evaluateRows(const SampleUniforms& uniforms, const float* positions, std::size_t positionStride,
-                                         float* distances, std::size_t distanceStride, float* gradients,
-                                         std::size_t gradientStride, std::uint32_t count) {
-        if (query) {
-            meshfield::RowView rows{positions, positionStride, distances, distanceStride, gradients, gradientStride};
-            meshfield::GradientMode mode{!uniforms.meshGradientTaps, uniforms.gradientStep};
-            return std::uint32_t(query->evaluate(rows, count, mode, 0, &counters));
-        }
-        // Contiguous positions go as they are; interleaved rows (.ply) are gathered first.
-        std::vector<float> gathered, d(count), g(gradients ? 3 * std::size_t(count) : 0);
-        if (positionStride != 3) {
-            gathered.resize(3 * std::size_t(count));
-            for (std::size_t i = 0; i < count; ++i)
-                std::copy(positions + i * positionStride, positions + i * positionStride + 3, &gathered[3 * i]);
-        }
-        const float* xyz = positionStride == 3 ? positions : gathered.data();
-        SampleUniforms at = uniforms;
-        at.inputPoints = xyz;
-        at.inputTableFloats = 0;
-        auto bad = values->run(at, 0, count, nullptr, d.data(), gradients ? g.data() : nullptr);
-        if (!bad) return bad;
-        // A row whose position is not finite (a sampler's miss) is a NaN row, as on the one-pass path.
-        std::uint32_t nonFinite = 0;
-        const float nan = std::numeric_limits<float>::quiet_NaN();
-        for (std::size_t i = 0; i < count; ++i) {
-            const bool placed = std::isfinite(xyz[3 * i]) && std::isfinite(xyz[3 * i + 1]) && std::isfinite(xyz[3 * i + 2]);
-            if (!placed) d[i] = nan;
-            if (distances) distances[i * distanceStride] = d[i];
-            if (gradients) {
-                if (!placed) g[3 * i] = g[3 * i + 1] = g[3 * i + 2] = nan;
-                std::copy(&g[3 * i], &g[3 * i] + 3, gradients + i * gradientStride);
-            }
-            const bool finite =
-                placed && std::isfinite(d[i]) &&
-                (!gradients || (std::isfinite(g[3 * i]) && std::isfinite(g[3 * i + 1]) && std::isfinite(g[3 * i + 2])));
-            nonFinite += finite ? 0u : 1u;
-        }
-        return nonFinite;
-    }
-    // issue() into run()'s region, then waits for it: the bad rows.
-    Expected<std::uint32_t> dispatch(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, BufferSet& set,
-                                     bool positions, bool gradients, const float* inputRows = nullptr);
-    // The GLSL mesh field at the caller's points (analysis/points.glsl): a mesh's walks diverge
-    // less between neighbouring invocations, so the points go up in Morton order over the mesh's
-    // box and the results come back to the caller's order. 1.4-1.7x the points/s on llvmpipe's
-    // eight lanes (spot, teapot, bunny; 200,000 uniform points); wider GPU lanes gain more.
-    bool mortonInputs = false;
-    // A mesh's own field on the GPU engine: this program computes the positions, `values` (the
-    // same SDF through analysis/points.glsl) the values in Morton order (runSorted).
-    std::unique_ptr<SampleCompute> values;
-    glm::dvec3 mortonLo{0.0};
-    double mortonSide = 0.0;
-    Expected<std::uint32_t> runSorted(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, float* positions,
-                                      float* distances, float* gradients);
-};
 
 Expected<std::uint32_t> SampleCompute::Impl::runSorted(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count,
                                                        float* positions, float* distances, float* gradients) {
@@ -609,186 +443,6 @@ Expected<std::uint32_t> SampleCompute::run(const SampleUniforms& uniforms, std::
     if (GLenum error = glGetError(); error != GL_NO_ERROR)
         return makeError("sampling: reading back " + std::to_string(count) + " samples failed (" + glErrorName(error) + ")");
     return checkedBadRows(MappedRows{positions, distances, gradients, *bad}, count);
-}
-
-std::uint32_t countNonFiniteRows(const MappedRows& rows, std::uint32_t count) {
-    auto finite = [](const float* values, std::size_t n) {
-        for (std::size_t i = 0; i < n; ++i)
-            if (!std::isfinite(values[i])) return false;
-        return true;
-    };
-    std::uint32_t bad = 0;
-    for (std::uint32_t row = 0; row < count; ++row) {
-        const bool ok = rows.rows ? finite(rows.rows + 7 * std::size_t(row), 7)
-                                  : (!rows.positions || finite(rows.positions + 3 * std::size_t(row), 3)) &&
-                                        (!rows.distances || finite(rows.distances + row, 1)) &&
-                                        (!rows.gradients || finite(rows.gradients + 3 * std::size_t(row), 3));
-        bad += ok ? 0u : 1u;
-    }
-    return bad;
-}
-
-Expected<void> SampleCompute::submitMapped(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, int slot,
-                                           RowLayout layout, std::array<std::uint32_t, 3> shift) {
-    if (!m_impl->program) return makeError("sampling: no compiled sampler");
-    if (count > kMaxChunk)
-        return makeError("sampling: chunk of " + std::to_string(count) + " exceeds " + std::to_string(kMaxChunk));
-    const int at = slot % m_impl->slotCount();
-    PendingChunk& chunk = m_impl->pending[at];
-    if (chunk.fence) waitFor(chunk.fence); // a chunk submitted and never collected
-    chunk.dropFence();
-    chunk.active = false;
-    while (glGetError() != GL_NO_ERROR) {}
-    const bool interleaved = layout == RowLayout::Interleaved;
-    if (interleaved) shift = {};
-    for (std::uint32_t floats : shift)
-        if (floats >= kMaxShift) return makeError("sampling: array shift of " + std::to_string(floats) + " floats");
-    chunk.count = count;
-    chunk.interleaved = interleaved;
-    chunk.shift = shift;
-    chunk.inputs =
-        m_impl->query && m_impl->positionsAreInputs(uniforms) ? uniforms.inputPoints + 3 * std::size_t(first) : nullptr;
-    if (m_impl->query || m_impl->values) chunk.uniforms = uniforms;
-    if (chunk.inputs) { // the CPU engine at the caller's points: nothing for the GL to do
-        chunk.active = true;
-        return {};
-    }
-    const bool staged = m_impl->staged();
-    chunk.staged = staged;
-    BufferSet& set = m_impl->slots[at];
-    const std::uint32_t rows = std::max(count, 1u);
-    if (auto ok = m_impl->reserve(set, rows, staged ? BufferKind::Device : BufferKind::Mapped, interleaved); !ok) return ok;
-    if (staged)
-        if (auto ok = m_impl->reserve(m_impl->staging[at], rows, BufferKind::Mapped, interleaved); !ok) return ok;
-    chunk.issued = std::chrono::steady_clock::now();
-    chunk.timer.begin();
-    auto ok = m_impl->issue(uniforms, first, count, set, true, true, interleaved, shift, nullptr, at);
-    chunk.timer.end();
-    if (!ok) return ok;
-    if (staged) { // the GPU copies the rows (and the shift before them) into the mapped buffers
-        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-        chunk.copyTimer.begin();
-        const GLsizeiptr room = interleaved ? 0 : GLsizeiptr(kMaxShift) * 4;
-        const GLsizeiptr sizes[3] = {GLsizeiptr(count) * (interleaved ? 28 : 12) + room,
-                                     interleaved ? 0 : GLsizeiptr(count) * 4 + room,
-                                     interleaved ? 0 : GLsizeiptr(count) * 12 + room};
-        for (int i = 0; i < 3; ++i) {
-            if (sizes[i] == 0) continue;
-            glBindBuffer(GL_COPY_READ_BUFFER, set.buffers[i].id());
-            glBindBuffer(GL_COPY_WRITE_BUFFER, m_impl->staging[at].buffers[i].id());
-            glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, sizes[i]);
-        }
-        chunk.copyTimer.end();
-        glBindBuffer(GL_COPY_READ_BUFFER, 0);
-        glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
-    }
-    glMemoryBarrier(GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
-    chunk.fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
-    glFlush(); // the GPU starts on it now, not at the first wait
-    if (GLenum error = glGetError(); error != GL_NO_ERROR || !chunk.fence) {
-        chunk.dropFence();
-        return makeError("sampling: dispatch of " + std::to_string(count) + " samples failed (" +
-                         (error != GL_NO_ERROR ? glErrorName(error) : std::string("no fence")) + "); try a smaller --chunk");
-    }
-    chunk.active = true;
-    return {};
-}
-
-Expected<MappedRows> SampleCompute::collectMapped(int slot) {
-    const int at = slot % m_impl->slotCount();
-    PendingChunk& chunk = m_impl->pending[at];
-    if (!chunk.active) return makeError("sampling: nothing was submitted into slot " + std::to_string(slot));
-    chunk.active = false;
-    const std::uint32_t count = chunk.count;
-    const bool interleaved = chunk.interleaved;
-    const std::array<std::uint32_t, 3> shift = chunk.shift;
-    const float* inputs = chunk.inputs;
-    std::uint32_t bad = 0;
-    const float* const* mapped = m_impl->slots[at].mapped;
-    if (!inputs) {
-        const bool done = waitFor(chunk.fence);
-        chunk.dropFence();
-        if (!done) return makeError("sampling: waiting for the dispatch of " + std::to_string(count) + " samples failed");
-        const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - chunk.issued).count();
-        auto add = [](double& total, double milliseconds) {
-            total = milliseconds < 0.0 || total < 0.0 ? -1.0 : total + milliseconds;
-        };
-        add(m_impl->kernelMilliseconds, chunk.timer.milliseconds(wall));
-        if (chunk.staged) add(m_impl->copyMilliseconds, chunk.copyTimer.milliseconds(wall));
-        bad = m_impl->takeCounts(at);
-        if (chunk.staged) mapped = m_impl->staging[at].mapped;
-    }
-    if (m_impl->query || m_impl->values) {
-        // The mapping is read-only: the rows are completed in this slot's host arrays, at the
-        // same shifts, and the caller reads them there.
-        std::vector<float>(&host)[3] = m_impl->hostRows[at];
-        if (interleaved) {
-            host[0].resize(std::size_t(count) * 7);
-            float* base = host[0].data();
-            if (inputs)
-                for (std::size_t i = 0; i < count; ++i) std::copy(inputs + 3 * i, inputs + 3 * i + 3, base + 7 * i);
-            else
-                std::copy(mapped[0], mapped[0] + std::size_t(count) * 7, base);
-            auto valuesBad = m_impl->evaluateRows(chunk.uniforms, base, 7, base + 3, 7, base + 4, 7, count);
-            if (!valuesBad) return valuesBad.error();
-            return MappedRows{nullptr, nullptr, nullptr, *valuesBad, base};
-        }
-        const std::size_t sizes[3] = {std::size_t(count) * 3, count, std::size_t(count) * 3};
-        for (int i = 0; i < 3; ++i) host[i].resize(shift[std::size_t(i)] + sizes[i]);
-        float* p = host[0].data() + shift[0];
-        float* d = host[1].data() + shift[1];
-        float* g = host[2].data() + shift[2];
-        const float* from = inputs ? inputs : mapped[0] + shift[0];
-        std::copy(from, from + sizes[0], p);
-        auto valuesBad = m_impl->evaluateRows(chunk.uniforms, p, 3, d, 1, g, 3, count);
-        if (!valuesBad) return valuesBad.error();
-        return MappedRows{p, d, g, *valuesBad};
-    }
-    MappedRows rows = interleaved ? MappedRows{nullptr, nullptr, nullptr, bad, mapped[0]}
-                                  : MappedRows{mapped[0] + shift[0], mapped[1] + shift[1], mapped[2] + shift[2], bad};
-    rows.badRows = checkedBadRows(rows, count);
-    return rows;
-}
-
-Expected<MappedRows> SampleCompute::runMapped(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, int slot,
-                                              RowLayout layout, std::array<std::uint32_t, 3> shift) {
-    if (auto ok = submitMapped(uniforms, first, count, slot, layout, shift); !ok) return ok.error();
-    return collectMapped(slot);
-}
-
-void SampleCompute::setPipeline(const SamplePipeline& pipeline) {
-    m_impl->finishPending();
-    m_impl->settings = pipeline;
-}
-
-SamplePipeline SampleCompute::pipeline() const {
-    SamplePipeline resolved = m_impl->settings;
-    resolved.sets = m_impl->slotCount();
-    const bool software = softwareRasteriser();
-    const int most = resolved.sets - 2;
-    resolved.ahead = resolved.ahead > 0 ? std::min(resolved.ahead, most) : software ? 1 : most;
-    resolved.staging = m_impl->staged() ? 1 : 0;
-    return resolved;
-}
-
-std::uint32_t SampleCompute::preferredChunk() const { return softwareRasteriser() ? kSoftwareChunk : kGpuChunk; }
-
-void SampleCompute::releaseGl() {
-    m_impl->program.reset();
-    m_impl->locations.clear();
-    m_impl->plain.reset();
-    m_impl->finishPending();
-    for (BufferSet& set : m_impl->slots) set.reset();
-    for (BufferSet& set : m_impl->staging) set.reset();
-    m_impl->counts.reset();
-    m_impl->countWords = nullptr;
-    m_impl->inputs.reset();
-    m_impl->textures.reset();
-    m_impl->kernelTimer.reset();
-    m_impl->query.reset();
-    if (m_impl->values) m_impl->values->releaseGl();
-    for (auto& host : m_impl->hostRows)
-        for (std::vector<float>& rows : host) std::vector<float>().swap(rows);
 }
 
 } // namespace sdfwb::renderer

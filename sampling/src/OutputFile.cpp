@@ -5,6 +5,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
+#ifdef __linux__
+#include <linux/magic.h>
+#include <sys/vfs.h>
+#endif
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -40,6 +44,10 @@ OutputFile::~OutputFile() {
 
 void OutputFile::reserve(std::uint64_t bytes) {
 #ifdef __linux__
+    // Not on tmpfs: there it allocates and zeroes every page up front that the writes then fill
+    // (0.06 s for 560 MB here; the writes alone allocate them anyway), with no extents to gain.
+    struct statfs system {};
+    if (::fstatfs(m_fd, &system) == 0 && system.f_type == TMPFS_MAGIC) return;
     if (bytes > 0) (void)::fallocate(m_fd, 0, 0, off_t(bytes));
 #endif
 }
