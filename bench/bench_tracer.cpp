@@ -492,9 +492,9 @@ void meshReport(const std::vector<std::string>& files) {
         worstMarch = std::max(worstMarch, march);
         std::printf("| %s | %zu | %.1f | %.1f | %.3f | %ld of %d | %.2f / %.2f | %.1f | %.0f %%, %.1f | %.1f | %.0f | %.1f |\n",
                     std::filesystem::path(file).filename().string().c_str(),
-                    prepared.mesh ? prepared.mesh->mesh.triangles() : std::size_t(0), march, walk, walk / march, differ, kW * kH,
-                    percentile(angles, 0.5), percentile(angles, 0.99), full, movingScale * 100.0f, moving, withPlane, planeField,
-                    withAo);
+                    prepared.mesh ? prepared.mesh->mesh.triangleCount() : std::size_t(0), march, walk, walk / march, differ,
+                    kW * kH, percentile(angles, 0.5), percentile(angles, 0.99), full, movingScale * 100.0f, moving, withPlane,
+                    planeField, withAo);
         std::fflush(stdout);
     }
     if (worstName.empty()) return;

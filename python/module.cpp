@@ -16,6 +16,8 @@
 #include <sampling/SamplerLibrary.h>
 #include <shaders/ShaderComposer.h>
 
+#include "Native.h"
+
 #include <pybind11/numpy.h>
 
 #include <glm/vec3.hpp>
@@ -30,16 +32,17 @@
 #include <optional>
 #include <string_view>
 
-namespace py = pybind11;
 using namespace sdfwb;
 namespace fs = std::filesystem;
 
-namespace {
+namespace sdfwb::native {
 
 // One EGL context for the module, created on first use. GL work is serialised by this mutex and
 // the context is made current on whichever Python thread calls.
 std::mutex g_glMutex;
 std::unique_ptr<renderer::HeadlessContext> g_context;
+
+std::mutex& glMutex() { return g_glMutex; }
 
 // Each call makes the context current on its own thread and releases it at the end, so the next
 // call may come from another Python thread.
@@ -72,12 +75,8 @@ renderer::HeadlessContext& context() {
     return *g_context;
 }
 
-// `sdf` is a dataset name, a path, or GLSL source (anything with a brace and a parenthesis, which
-// names and paths of SDF files do not have). `entry` names the SDF's function (empty: the default).
-// `params`: None or a mapping of parameter values, {"radius": 0.3, "hollow": True, "offset": (1, 2, 0)}
-// (a dict, or any collections.abc.Mapping, as the type stubs promise).
-jobs::SdfInput sdfInput(const std::string& sdf, const std::string& entry, const py::object& params = py::none(),
-                        const std::string& sign = {}, const std::string& normalize = {}) {
+jobs::SdfInput sdfInput(const std::string& sdf, const std::string& entry, const py::object& params, const std::string& sign,
+                        const std::string& normalize) {
     jobs::SdfInput input;
     if (sdf.find('{') != std::string::npos && sdf.find('(') != std::string::npos)
         input = {"", entry, sdf, {}};
@@ -118,7 +117,6 @@ jobs::OpenedSdf prepare(const jobs::SdfInput& input) {
     return *opened.report;
 }
 
-// Parameter values as a dict (bools as bools, scalars as floats, vectors as tuples).
 py::dict parameterDict(const std::vector<shaders::ParameterSetting>& settings) {
     py::dict out;
     for (const shaders::ParameterSetting& s : settings) {
@@ -138,7 +136,6 @@ py::dict parameterDict(const std::vector<shaders::ParameterSetting>& settings) {
     return out;
 }
 
-// The report's JSON (jobs/JobJson.h) as Python objects: the same keys `--json` prints.
 py::object fromJson(const std::string& json) { return py::module_::import("json").attr("loads")(json); }
 
 // A mesh file's provenance (file, triangles, sign, normalisation's transform, original bounds) as a
@@ -149,144 +146,6 @@ py::object meshSourceOf(const jobs::OpenedSdf& opened) {
 }
 
 py::array_t<float> floatArray(std::vector<py::ssize_t> shape) { return py::array_t<float>(shape); }
-
-py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_t n, std::uint64_t seed, float time,
-                float gradientStep, std::uint32_t chunk, float surfaceTolerance, const std::string& entry,
-                const py::object& params, std::uint64_t firstIndex, const std::string& nearWidths, float nearTruncation,
-                const std::string& sign, const std::string& normalize) {
-    jobs::SampleRequest request;
-    request.sdf = sdfInput(sdf, entry, params, sign, normalize);
-    request.pattern = pattern;
-    request.count = n;
-    request.seed = seed;
-    request.time = time;
-    request.gradientStep = gradientStep;
-    request.chunkSize = chunk;
-    request.surfaceTolerance = surfaceTolerance;
-    request.nearWidths = nearWidths;
-    request.nearTruncation = nearTruncation;
-    if (auto error = jobs::validate(request)) raise(*error);
-    sampling::SamplingJob job = jobs::samplingJob(request);
-    job.indexOffset = firstIndex;
-    if (auto ok = sampling::validate(job); !ok) throw py::value_error(ok.error().message);
-    const jobs::OpenedSdf opened = prepare(request.sdf);
-    const shaders::PreparedSdf& prepared = opened.prepared;
-    job.sdfParameters = opened.parameters;
-    auto sampler = sampling::findSampler(pattern, sampling::samplerFolders());
-    if (!sampler) throw py::value_error("pattern: " + sampler.error().message);
-    auto positions = floatArray({py::ssize_t(n), 3});
-    auto distances = floatArray({py::ssize_t(n)});
-    auto gradients = floatArray({py::ssize_t(n), 3});
-    float* p = positions.mutable_data();
-    float* d = distances.mutable_data();
-    float* g = gradients.mutable_data();
-    Expected<sampling::SamplingReport> report = makeError("not run");
-    std::string compileErrors;
-    {
-        py::gil_scoped_release release;
-        std::lock_guard lock(g_glMutex);
-        context();
-        renderer::SampleCompute compute;
-        auto diagnostics = compute.build(prepared, *sampler);
-        if (shaders::hasErrors(diagnostics)) {
-            for (const auto& diagnostic : diagnostics) compileErrors += shaders::formatDiagnostic(diagnostic) + "\n";
-        } else {
-            report = sampling::sampleInto(compute, job, p, d, g, {});
-        }
-        compute.releaseGl();
-        releaseContext();
-    }
-    if (!compileErrors.empty()) throw py::value_error(compileErrors); // the user's GLSL: a value error
-    if (!report) throw std::runtime_error(report.error().message);
-    py::dict result;
-    result["position"] = positions;
-    result["distance"] = distances;
-    result["gradient"] = gradients;
-    result["bad_rows"] = report->badRows;
-    result["seconds"] = report->seconds;
-    result["mesh_source"] = meshSourceOf(opened);
-    result["parameters"] = parameterDict(opened.parameters);
-    return result;
-}
-
-// The field at the caller's points through the samplers' own stage (analysis/points.glsl): the
-// same compiled SDF, gradient stencil and step as `sample`, so the values are bit-equal to what a
-// sampler writes at those positions. The points are read in place (float32, C order: no copy).
-py::dict evaluate(const std::string& sdf, py::array_t<float, py::array::c_style | py::array::forcecast> points,
-                  const py::object& params, float time, bool gradient, float gradientStep, const std::string& entry,
-                  std::uint32_t chunk, const std::string& sign, const std::string& normalize) {
-    if (points.ndim() != 2 || points.shape(1) != 3) {
-        std::string shape;
-        for (py::ssize_t a = 0; a < points.ndim(); ++a) shape += (a ? ", " : "") + std::to_string(points.shape(a));
-        throw py::value_error("evaluate: points must have shape (N, 3), not (" + shape + ")");
-    }
-    const auto n = points.shape(0);
-    if (std::uint64_t(n) > 0xffffffffull) throw py::value_error("evaluate: at most 4294967295 points per call");
-    sampling::SamplingJob job; // checked as the samplers check their jobs
-    job.count = std::uint64_t(n);
-    job.gradientStep = gradientStep == 0.0f ? 1e-3f : gradientStep; // a negative or NaN step fails validate()
-    job.meshGradientTaps = gradientStep != 0.0f;
-    job.chunkSize = chunk;
-    if (auto ok = sampling::validate(job); n > 0 && !ok) throw py::value_error(ok.error().message);
-    const jobs::OpenedSdf opened = prepare(sdfInput(sdf, entry, params, sign, normalize));
-    sampling::FieldSettings settings;
-    settings.time = time;
-    settings.gradientStep = job.gradientStep;
-    settings.meshGradientTaps = job.meshGradientTaps;
-    settings.chunk = chunk;
-    settings.parameters = opened.parameters;
-    auto distances = floatArray({n});
-    py::object gradients = py::none();
-    float* g = nullptr;
-    if (gradient) {
-        auto array = floatArray({n, 3});
-        g = array.mutable_data();
-        gradients = array;
-    }
-    float* d = distances.mutable_data();
-    Expected<sampling::SamplingReport> report = sampling::SamplingReport{};
-    std::string compileErrors;
-    std::optional<meshfield::QueryCounters> meshCounters;
-    if (n > 0) {
-        py::gil_scoped_release release;
-        std::lock_guard lock(g_glMutex);
-        context();
-        sampling::FieldEvaluator field;
-        auto diagnostics = field.build(opened.prepared);
-        if (shaders::hasErrors(diagnostics)) {
-            for (const auto& diagnostic : diagnostics) compileErrors += shaders::formatDiagnostic(diagnostic) + "\n";
-        } else {
-            report = field.evaluate(points.data(), std::uint64_t(n), d, g, settings);
-            if (std::string_view(field.meshEngine()) == "cpu" || field.countsMeshWalks()) {
-                meshCounters.emplace();
-                field.addMeshCounters(*meshCounters);
-            }
-        }
-        field.releaseGl();
-        releaseContext();
-    }
-    if (!compileErrors.empty()) throw py::value_error(compileErrors);
-    if (!report) throw std::runtime_error(report.error().message);
-    py::dict result;
-    result["distance"] = distances;
-    result["gradient"] = gradients;
-    result["bad_rows"] = report->badRows;
-    result["seconds"] = report->seconds;
-    result["mesh_source"] = meshSourceOf(opened);
-    py::object nodes = py::none();
-    if (meshCounters) {
-        py::dict counts;
-        counts["rows"] = std::uint64_t(n);
-        counts["nearest"] = meshCounters->nearestNodes;
-        counts["winding"] = meshCounters->windingNodes;
-        counts["segment"] = meshCounters->segmentNodes;
-        counts["cached_signs"] = meshCounters->cachedSigns;
-        counts["crossed_signs"] = meshCounters->crossedSigns;
-        nodes = counts;
-    }
-    result["mesh_nodes"] = nodes;
-    return result;
-}
 
 py::dict load(const std::string& path) {
     auto reader = sampling::SampleReader::open(path);
@@ -355,35 +214,6 @@ void save(const std::string& path, py::array_t<float, py::array::c_style | py::a
     if (!written) throw std::runtime_error(written.error().message);
 }
 
-// Runs `work(request)` (a job returning a JobResult) with the GIL released and the module's GL
-// context current; raises its failure as a Python exception.
-template <class Request, class Work> auto runOnGl(const Request& request, Work work) {
-    std::optional<decltype(work(request))> result;
-    {
-        py::gil_scoped_release release;
-        std::lock_guard lock(g_glMutex);
-        context();
-        result.emplace(work(request));
-        releaseContext();
-    }
-    if (!*result) raise(result->error);
-    return std::move(*result);
-}
-
-py::object audit(const std::string& sdf, std::uint64_t samples, std::uint64_t seed, float time, const std::string& entry,
-                 float truncationReach, const py::object& params, const std::string& sign, const std::string& normalize,
-                 const py::object& probeDistance) {
-    jobs::AuditRequest request;
-    request.sdf = sdfInput(sdf, entry, params, sign, normalize);
-    request.samples = samples;
-    request.seed = seed;
-    request.time = time;
-    request.truncationReach = probeDistance.is_none() ? truncationReach : probeDistance.cast<float>(); // the old name
-    if (auto error = jobs::validate(request)) raise(*error);
-    auto result = runOnGl(request, [](const jobs::AuditRequest& r) { return jobs::run(r, {}); });
-    return fromJson(jobs::toJson(*result));
-}
-
 // Any request, as a dict or its JSON text (what `sdfwb --batch CMD ... --print-request` prints);
 // returns its report as `--json` prints it.
 py::object run(const py::object& given) {
@@ -428,59 +258,6 @@ py::object params(const std::string& sdf, const std::string& entry) {
     return fromJson(jobs::toJson(*result));
 }
 
-// The zero set as a mesh: vertices (V,3) float32 and faces (F,3) uint32, arrays over the
-// extraction's own buffers (no copies), and the report `sdfwb --batch mesh --json` prints.
-py::dict mesh(const std::string& sdf, int resolution, const py::object& bounds, float time, const py::object& lipschitz,
-              std::uint64_t errorSamples, std::uint64_t seed, const std::string& entry, const py::object& params,
-              const std::string& sign, const std::string& normalize, int refine) {
-    jobs::MeshRequest request;
-    request.sdf = sdfInput(sdf, entry, params, sign, normalize);
-    request.resolution = resolution;
-    request.refine = refine;
-    request.time = time;
-    request.errorSamples = errorSamples;
-    request.seed = seed;
-    if (!bounds.is_none()) {
-        auto values = bounds.cast<std::vector<float>>();
-        if (values.size() != 6) throw py::value_error("bounds: expected (minx, miny, minz, maxx, maxy, maxz)");
-        request.boundsMin = {values[0], values[1], values[2]};
-        request.boundsMax = {values[3], values[4], values[5]};
-    }
-    if (!lipschitz.is_none()) request.lipschitz = lipschitz.cast<float>();
-    auto result = runOnGl(request, [](const jobs::MeshRequest& r) { return jobs::meshSdf(r, {}); });
-    jobs::MeshedSdf& meshed = *result.report;
-    auto* vertices = new std::vector<glm::vec3>(std::move(meshed.mesh.vertices));
-    auto* indices = new std::vector<std::uint32_t>(std::move(meshed.mesh.indices));
-    py::capsule ownsVertices(vertices, [](void* p) { delete static_cast<std::vector<glm::vec3>*>(p); });
-    py::capsule ownsIndices(indices, [](void* p) { delete static_cast<std::vector<std::uint32_t>*>(p); });
-    static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "vertices are three packed floats");
-    py::dict out;
-    out["vertices"] = py::array_t<float>({py::ssize_t(vertices->size()), py::ssize_t(3)},
-                                         reinterpret_cast<float*>(vertices->data()), ownsVertices);
-    out["faces"] = py::array_t<std::uint32_t>({py::ssize_t(indices->size() / 3), py::ssize_t(3)}, indices->data(), ownsIndices);
-    out["report"] = fromJson(jobs::toJson(meshed.report));
-    return out;
-}
-
-// Grades any mesh file against the exact field: the report `sdfwb --batch grade --json` prints.
-py::object evaluateMesh(const std::string& mesh, const std::string& sdf, float tau, std::uint64_t points, int occupancyResolution,
-                        float edgeRadius, float edgeAngle, std::uint64_t seed, float time, const std::string& entry,
-                        const py::object& params) {
-    jobs::EvalRequest request;
-    request.sdf = sdfInput(sdf, entry, params);
-    request.mesh = mesh;
-    request.tau = tau;
-    request.points = points;
-    request.occupancyResolution = occupancyResolution;
-    request.edgeRadius = edgeRadius;
-    request.edgeAngle = edgeAngle;
-    request.seed = seed;
-    request.time = time;
-    if (auto error = jobs::validate(request)) raise(*error);
-    auto result = runOnGl(request, [](const jobs::EvalRequest& r) { return jobs::run(r, {}); });
-    return fromJson(jobs::toJson(*result));
-}
-
 py::list listSdfs() {
     dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
     py::list out;
@@ -507,7 +284,9 @@ py::list listSdfs() {
 }
 #endif
 
-} // namespace
+} // namespace sdfwb::native
+
+using namespace sdfwb::native;
 
 // The docstrings below are what help(sdfwb.X) shows after pybind11's signature line; each says
 // what every argument takes. python/sdfwb/_native.pyi types the same functions for mypy, and
@@ -519,101 +298,8 @@ PYBIND11_MODULE(_native, m) {
 #endif
     m.doc() = "sdfwb: sample, audit and load signed distance functions written in GLSL (headless, EGL).";
     m.attr("__version__") = SDFWB_VERSION;
-    // Float defaults spelled as written (pybind11 would print the float32 value, 0.0010000000474974513).
-    m.def("sample", &sample, py::arg("sdf"), py::arg("pattern"), py::arg("n"), py::arg("seed") = 0, py::arg("time") = 0.0f,
-          py::arg_v("gradient_step", 0.0f, "0.0"), py::arg("chunk") = 0u, py::arg_v("surface_tolerance", 1e-5f, "1e-5"),
-          py::arg("entry") = "", py::arg("params") = py::none(), py::arg("first_index") = 0, py::arg("near_widths") = "",
-          py::arg("near_truncate") = 0.0f, py::arg("sign") = "", py::arg("normalize") = "",
-          R"doc(Samples `n` points of `sdf` with `pattern`: the same values as `sdfwb --batch sample` with the same seed.
-
-Args:
-    sdf (str): a dataset name (any case, see list_sdfs()), a path to a .glsl file or a triangle mesh (see sign),
-        or GLSL source text (anything
-        containing both '{' and '(') defining `float sdf(vec3 p)` or the function `entry` names.
-    pattern (str): a built-in pattern (grid, image, jitter, rand, surface, near, metropolis, metropolis_curvature),
-        a path to a sampler .glsl file (contains '/' or ends in .glsl) defining
-        `bool samplePosition(uint index, out vec3 position)`, or the name of such a file in a folder of
-        $SDFWB_SAMPLER_PATH (':'-separated) or $XDG_DATA_HOME/sdfwb/samplers (~/.local/share/sdfwb/samplers).
-    n (int): the number of rows, 1 to 4294967295.
-    seed (int): 0 to 2**64 - 1; a row depends on seed and its sample index alone. Default 0.
-    time (float): seconds, finite: the time an animated SDF (`ENTRY(vec3 p, float time)`) is sampled at. Default 0.
-    gradient_step (float): > 0, world units: the step of the central differences of `gradient`. Default 0:
-        1e-3, except that a mesh's own field writes its exact gradient (from the closest point).
-    chunk (int): rows per GPU dispatch (memory: 28 bytes a row), 1 to 33554432; does not change the values.
-        Default 0: chosen per driver (262144 on llvmpipe, 16777216 on a GPU).
-    surface_tolerance (float): > 0: |f| at which the rays of surface, near and metropolis stop (accuracy
-        against time; see docs/benchmarks.md). Default 1e-5.
-    entry (str): the SDF's function when it is not `sdf`, a GLSL identifier other than main, gl_* and sdfwb_*
-        (e.g. 'map'; vec2/vec4 returns give the distance in .x). Default '': the file's `entry:` metadata, else
-        sdf, else the first of map, scene, sceneSDF, sdScene, de, DE that it defines.
-    params (Mapping[str, bool | float | Sequence[float]] | None): values for the SDF's declared parameters,
-        e.g. {'radius': 0.3, 'offset': (0, 0.1, 0), 'capped': True}: 1 to 4 finite numbers each
-        (sdfwb.params(sdf) lists them). Default None: the declared defaults.
-    first_index (int): the first row's sample index; first_index + n <= 2**32. first_index=k*n gives the
-        k-th batch of an endless stream. Default 0.
-    near_widths (str): pattern 'near' only: a mixture of up to 4 Gaussian offsets 'W:P,...' (widths and weights
-        positive, e.g. '0.005:0.8,0.05:0.2'). Default '': one width, 0.005.
-    near_truncate (float): >= 0: with near_widths, offsets beyond this many standard deviations are redrawn
-        (not clamped). Default 0: no truncation.
-    sign (str): for a mesh file (.obj .ply .stl .off .glb ...): how inside is decided: 'winding' (generalized
-        winding numbers; right behind holes, flipped faces and duplicated parts), 'parity' (ray crossings) or
-        'pseudonormal' (exact on closed meshes). Default '': winding.
-    normalize (str): for a mesh file: 'none', 'unit-cube' (bounding box centred, longest side 2) or
-        'unit-sphere' (box centred, farthest vertex at 1). Default '': none.
-
-Returns:
-    dict: position (n, 3), distance (n,) and gradient (n, 3) as float32 NumPy arrays that own their memory
-    (gradient raw, not normalised); bad_rows (int: rows with NaN or Inf, e.g. near rays that found no surface);
-    seconds (float); parameters (dict: every declared parameter's value, bools as bool, vectors as tuples);
-    mesh_source (dict for a mesh file: file, triangles, closed, sign, normalize, transform (4x4, column-major),
-    bounds (the file's box); None for GLSL).
-
-Raises:
-    ValueError: an argument out of range, an unknown SDF, pattern or parameter, or GLSL errors (with
-        file:line:column).
-    TypeError: params is not a mapping, or a value is not a number, a bool or a sequence of numbers.
-    RuntimeError: no EGL/GL, a GPU failure, or a process forked after its parent used the GPU.
-
-The GIL is released while sampling.)doc");
-    m.def("evaluate", &evaluate, py::arg("sdf"), py::arg("points"), py::arg("params") = py::none(), py::arg("time") = 0.0f,
-          py::arg("gradient") = true, py::arg_v("gradient_step", 0.0f, "0.0"), py::arg("entry") = "", py::arg("chunk") = 0u,
-          py::arg("sign") = "", py::arg("normalize") = "",
-          R"doc(The field of `sdf` at the caller's points, through the samplers' own stage: bit-equal to what the samplers
-write at the same positions with the same gradient_step.
-
-Args:
-    sdf (str): a dataset name, a path to a .glsl file, or GLSL source text, as for sample().
-    points (array_like): shape (N, 3), N <= 4294967295 (N = 0 gives empty arrays); float32 C-order arrays are
-        read in place, anything else is converted to float32 once.
-    params (Mapping[str, bool | float | Sequence[float]] | None): parameter values, as for sample(). Default None.
-    time (float): seconds, finite, for animated SDFs. Default 0.
-    gradient (bool): also return the gradient; False evaluates the field once per point instead of seven
-        times. Default True.
-    gradient_step (float): > 0, world units: the step of the central differences. Default 0: 1e-3, except
-        that a mesh's own field gives its exact gradient (from the closest point).
-    entry (str): the SDF's function when it is not `sdf`, as for sample(). Default ''.
-    chunk (int): points per GPU dispatch, 1 to 33554432; does not change the values. Default 0: chosen per
-        driver (262144 on llvmpipe, 16777216 on a GPU).
-    sign (str): for a mesh file, as for sample(). Default '': winding.
-    normalize (str): for a mesh file, as for sample(). Default '': none.
-
-Returns:
-    dict: distance (N,) float32; gradient (N, 3) float32 (raw central differences), or None when
-    gradient=False; bad_rows (int: rows with NaN or Inf); seconds (float); mesh_source (dict for a mesh file, as
-    for sample(); None for GLSL); mesh_nodes (dict when the native CPU engine evaluated a mesh's own field, or the GLSL
-    field did with SDFWB_MESH_COUNT=1 set (its counts are per field evaluation: a sign from its lattice
-    is a cached_sign), else None: rows, and the hierarchy nodes its walks visited, a count that does not depend on the driver:
-    nearest (the closest-point walks), winding (the winding-number walks), segment (the walks of the
-    segments from a lattice point), and how many rows took their sign from the sign cache (cached_signs) or
-    from a lattice point and the triangles between (crossed_signs)).
-
-Raises:
-    ValueError: points not of shape (N, 3), an argument out of range, an unknown SDF or parameter, or GLSL
-        errors (with file:line:column).
-    TypeError: params is not a mapping of numbers, bools or sequences of numbers.
-    RuntimeError: no EGL/GL, a GPU failure, or a process forked after its parent used the GPU.
-
-The GIL is released while the GPU works.)doc");
+    defineSampling(m); // sample, evaluate, audit: SamplingFunctions.cpp
+    defineMeshing(m);  // mesh, evaluate_mesh: MeshFunctions.cpp
     m.def("_forget_context_after_fork", &forgetContextAfterFork,
           "Called by os.register_at_fork in a forked child: the child makes its own EGL context, or is told to use "
           "'spawn' when its parent had used the GPU.");
@@ -652,36 +338,6 @@ Returns:
 Raises:
     ValueError: arrays of the wrong shapes, or an unknown format or extension.
     RuntimeError: the file cannot be written.)doc");
-    m.def("audit", &audit, py::arg("sdf"), py::arg("samples") = 100000, py::arg("seed") = 0, py::arg("time") = 0.0f,
-          py::arg("entry") = "", py::arg("truncation_reach") = 3.0f, py::arg("params") = py::none(), py::arg("sign") = "",
-          py::arg("normalize") = "", py::arg("probe_distance") = py::none(),
-          R"doc(Audits the field of `sdf`: is it an exact distance, a conservative bound, or worse?
-
-Args:
-    sdf (str): a dataset name, a path to a .glsl file, or GLSL source text, as for sample().
-    samples (int): points probed, 64 to 100000000. Default 100000.
-    seed (int): 0 to 2**64 - 1. Default 0.
-    time (float): seconds, finite, for animated SDFs. Default 0.
-    entry (str): the SDF's function when it is not `sdf`, as for sample(). Default ''.
-    truncation_reach (float): 0.1 to 100, world units: how far rays from the surface outward look for a
-        plateau (truncation). Default 3.
-    params (Mapping[str, bool | float | Sequence[float]] | None): parameter values, as for sample(). Default None.
-    sign (str): for a mesh file, as for sample(). Default '': winding.
-    normalize (str): for a mesh file, as for sample(). Default '': none.
-    probe_distance (float | None): truncation_reach's old name, still accepted. Default None.
-
-Returns:
-    dict: the report `sdfwb --batch audit --json` prints: verdict (the most severe finding: exact,
-    conservative, non-conservative, truncated, discontinuous, nan), flags (every finding with its evidence and
-    up to 16 example points), reason, lipschitz, safe_step_factor, truncation_distance, nan_fraction, entry,
-    seconds, ...
-
-Raises:
-    ValueError: an argument out of range, an unknown SDF or parameter, or GLSL errors (with file:line:column).
-    TypeError: params is not a mapping of numbers, bools or sequences of numbers.
-    RuntimeError: no EGL/GL, a GPU failure, or a process forked after its parent used the GPU.
-
-The GIL is released while auditing.)doc");
     m.def("run", &run, py::arg("request"),
           R"doc(Runs one request of any kind, as `sdfwb --batch` would.
 
@@ -715,73 +371,6 @@ Returns:
 Raises:
     ValueError: an unknown SDF, a bad entry, or declarations with errors (with file:line:column).
     RuntimeError: the file cannot be read.)doc");
-    m.def("mesh", &mesh, py::arg("sdf"), py::arg("resolution") = 128, py::arg("bounds") = py::none(), py::arg("time") = 0.0f,
-          py::arg("lipschitz") = py::none(), py::arg("error_samples") = 0, py::arg("seed") = 0, py::arg("entry") = "",
-          py::arg("params") = py::none(), py::arg("sign") = "", py::arg("normalize") = "", py::arg("refine") = 0,
-          R"doc(The zero set of `sdf` as a triangle mesh, by dual contouring (sharp edges and corners kept).
-
-Args:
-    sdf (str): a dataset name, a path to a .glsl file, or GLSL source text, as for sample().
-    resolution (int): grid cells per axis, 2 to 2048. Default 128.
-    bounds (Sequence[float] | None): (minx, miny, minz, maxx, maxy, maxz), finite, each maximum above its
-        minimum. Default None: the box [-1, 1]^3.
-    time (float): seconds, finite, for animated SDFs. Default 0.
-    lipschitz (float | None): the bound on |grad f| that lets empty blocks be skipped, finite, >= 0 (0: skip
-        nothing). Default None: 1.25 x the steepest |grad f| at the block centres, at least 1 (the audit's
-        estimate when error_samples is given).
-    error_samples (int): points each way for the error against the field, 0 to 10000000 (0: not measured).
-        Default 0.
-    seed (int): 0 to 2**64 - 1, for the error's points. Default 0.
-    entry (str): the SDF's function when it is not `sdf`, as for sample(). Default ''.
-    params (Mapping[str, bool | float | Sequence[float]] | None): parameter values, as for sample(). Default None.
-    sign (str): for a mesh file, as for sample() (meshing a broken mesh's winding-number inside gives a
-        watertight mesh). Default '': winding.
-    normalize (str): for a mesh file, as for sample(). Default '': none.
-    refine (int): 0 to 4: times every triangle is cut into four after extraction, each new vertex stepped onto
-        the exact surface. On smooth surfaces each level quarters the error (as doubling the resolution does) at
-        far less cost; creases stay where the grid put them. Default 0.
-
-Returns:
-    dict: vertices (V, 3) float32 and faces (F, 3) uint32, arrays over the extraction's own memory (no
-    copies), and report (what `sdfwb --batch mesh --json` prints: topology, the Lipschitz bound used, timings;
-    the error against the field when error_samples > 0).
-
-Raises:
-    ValueError: an argument out of range, an unknown SDF or parameter, or GLSL errors (with file:line:column).
-    TypeError: params is not a mapping of numbers, bools or sequences of numbers.
-    RuntimeError: bounds or lipschitz holding something other than numbers (pybind11's cast error), no EGL/GL,
-        a GPU failure, or a process forked after its parent used the GPU.)doc");
-    m.def("evaluate_mesh", &evaluateMesh, py::arg("mesh"), py::arg("sdf"), py::arg_v("tau", 0.01f, "0.01"),
-          py::arg("points") = 100000, py::arg("occupancy_resolution") = 128, py::arg_v("edge_radius", 0.02f, "0.02"),
-          py::arg_v("edge_angle", 30.0f, "30.0"), py::arg("seed") = 0, py::arg("time") = 0.0f, py::arg("entry") = "",
-          py::arg("params") = py::none(),
-          R"doc(Grades a mesh file against the exact field of `sdf`.
-
-Args:
-    mesh (str): a mesh file in any format assimp reads (.ply, .obj, .stl, .glb, .off, ...).
-    sdf (str): a dataset name, a path to a .glsl file, or GLSL source text, as for sample().
-    tau (float): > 0, world units: the distance threshold of the F-score. Default 0.01.
-    points (int): points each way (mesh to surface, surface to mesh), 100 to 10000000. Default 100000.
-    occupancy_resolution (int): the IoU grid's side, 0 to 512 (0: no IoU). Default 128.
-    edge_radius (float): >= 0, world units: points this near a crease of the exact field count for the edge
-        measures (0: none). Default 0.02.
-    edge_angle (float): degrees, between 0 and 180: how far the field's normal turns across a crease. Default 30.
-    seed (int): 0 to 2**64 - 1. Default 0.
-    time (float): seconds, finite, for animated SDFs. Default 0.
-    entry (str): the SDF's function when it is not `sdf`, as for sample(). Default ''.
-    params (Mapping[str, bool | float | Sequence[float]] | None): parameter values, as for sample(). Default None.
-
-Returns:
-    dict: what `sdfwb --batch grade --json` prints: chamfer_l1 (mean of the two mean unsquared distances),
-    chamfer_l2 (the same, squared), fscore at tau (with precision and recall), normal_consistency, hausdorff,
-    iou (None without an IoU grid), edges (the same measures over the points near creases: chamfer_l1, fscore,
-    precision, recall, hausdorff and their point counts; None when the exact surface has no crease), the point
-    counts and conventions.
-
-Raises:
-    ValueError: a missing mesh file, an argument out of range, an unknown SDF or parameter, or GLSL errors.
-    TypeError: params is not a mapping of parameter values.
-    RuntimeError: an unreadable mesh, no EGL/GL, or a GPU failure.)doc");
     m.def(
         "_job_kinds",
         [] {

@@ -231,8 +231,8 @@ Expected<void> checkMesh(const TriangleMesh& mesh, const std::string& name, cons
             return Error{name + ": a vertex is not a finite number"};
     if (!(options.beta >= 1.0)) return Error{name + ": beta must be at least 1"};
     // The GPU's nearest walk keeps a leaf's first triangle in 28 bits (mesh_field.glsl).
-    if (mesh.triangles() >= (std::size_t(1) << 28))
-        return Error{name + ": " + std::to_string(mesh.triangles()) + " triangles; sdfwb holds at most 268,435,455"};
+    if (mesh.triangleCount() >= (std::size_t(1) << 28))
+        return Error{name + ": " + std::to_string(mesh.triangleCount()) + " triangles; sdfwb holds at most 268,435,455"};
     return {};
 }
 
@@ -287,7 +287,7 @@ EdgeUses countEdges(const TriangleMesh& mesh, MeshField& field) {
 // `order` maps a leaf slot to the mesh's triangle.
 Builder buildHierarchy(const TriangleMesh& mesh, MeshField& field, std::vector<dvec3>& centroid, std::vector<Box>& triBox,
                        std::vector<std::uint32_t>& order) {
-    const std::size_t count = mesh.triangles();
+    const std::size_t count = mesh.triangleCount();
     centroid.resize(count);
     triBox.resize(count);
     order.resize(count);
@@ -419,7 +419,7 @@ void writeNodes(const TriangleMesh& mesh, const Builder& builder, const std::vec
 // Angle-weighted vertex normals, edge normals as the sum of the faces' normals (Baerentzen and
 // Aanaes), seven a triangle in leaf order.
 void writePseudonormals(const TriangleMesh& mesh, const std::vector<std::uint32_t>& order, std::size_t edges, MeshField& field) {
-    const std::size_t count = mesh.triangles();
+    const std::size_t count = mesh.triangleCount();
     std::vector<dvec3> vertexNormal(mesh.vertices.size(), dvec3(0.0));
     std::unordered_map<std::uint64_t, dvec3> edgeNormal;
     edgeNormal.reserve(edges);

@@ -342,7 +342,7 @@ std::string MeshField::glslSource() const {
                   "*/\n"
                   "// The mesh's signed distance: shaders/mesh/mesh_field.glsl traverses its hierarchy on the GPU.\n"
                   "float sdf(vec3 p) { return sdfwb_meshSdf(p); }\n",
-                  label.c_str(), mesh.triangles(), closed() ? "closed" : "open or non-manifold", signName(options.sign),
+                  label.c_str(), mesh.triangleCount(), closed() ? "closed" : "open or non-manifold", signName(options.sign),
                   normalizationName(options.normalize));
     return line;
 }
@@ -358,7 +358,7 @@ std::string MeshField::provenanceJson() const {
         std::snprintf(text, sizeof text, "%.17g", value);
         return std::string(text);
     };
-    std::string json = "{\"file\": \"" + file + "\", \"triangles\": " + std::to_string(mesh.triangles()) +
+    std::string json = "{\"file\": \"" + file + "\", \"triangles\": " + std::to_string(mesh.triangleCount()) +
                        ", \"closed\": " + (closed() ? "true" : "false") + ", \"sign\": \"" + signName(options.sign) +
                        "\", \"normalize\": \"" + normalizationName(options.normalize) + "\", \"transform\": [";
     for (std::size_t k = 0; k < transform.size(); ++k) json += (k ? ", " : "") + number(transform[k]);
@@ -374,7 +374,7 @@ std::string MeshField::summary() const {
                   "%s: %zu triangles, %zu boundary and %zu non-manifold edges; bounds [%.4g %.4g %.4g]..[%.4g %.4g %.4g] "
                   "(file: [%.4g %.4g %.4g]..[%.4g %.4g %.4g]); sign %s, normalize %s; hierarchy of %zu nodes, depth %zu, "
                   "built in %.3f s, %.1f MB on the GPU",
-                  name.c_str(), mesh.triangles(), boundaryEdges, nonManifoldEdges, bounds.lo.x, bounds.lo.y, bounds.lo.z,
+                  name.c_str(), mesh.triangleCount(), boundaryEdges, nonManifoldEdges, bounds.lo.x, bounds.lo.y, bounds.lo.z,
                   bounds.hi.x, bounds.hi.y, bounds.hi.z, originalBounds.lo.x, originalBounds.lo.y, originalBounds.lo.z,
                   originalBounds.hi.x, originalBounds.hi.y, originalBounds.hi.z, signName(options.sign),
                   normalizationName(options.normalize), nodes.size() / kNodeFloats, depth, buildSeconds,

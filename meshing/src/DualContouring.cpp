@@ -248,6 +248,58 @@ Expected<void> Extraction::placeCrossings() {
     return {};
 }
 
+namespace {
+
+// Twice the area of the smallest triangle of the fan from polygon[apex] over the polygon.
+double smallestFanTriangle(const std::vector<glm::vec3>& vertices, const std::uint32_t* polygon, int size, int apex) {
+    double least = std::numeric_limits<double>::infinity();
+    for (int k = 1; k + 1 < size; ++k) {
+        const glm::dvec3 a(vertices[polygon[apex]]), b(vertices[polygon[(apex + k) % size]]),
+            c(vertices[polygon[(apex + k + 1) % size]]);
+        least = std::min(least, glm::length(glm::cross(b - a, c - a)));
+    }
+    return least;
+}
+
+// A fan from polygon[apex] never takes the diagonal between the two neighbours of a face vertex
+// (indices from firstFaceVertex on): that edge would gain a third triangle.
+bool fanAllowed(const std::uint32_t* polygon, int size, int apex, std::uint32_t firstFaceVertex) {
+    for (int k = 2; k + 1 < size; ++k) { // the diagonals (apex, apex + k)
+        const int other = (apex + k) % size;
+        for (int between = 0; between < size; ++between) {
+            const int before = (between + size - 1) % size, after = (between + 1) % size;
+            if (polygon[between] >= firstFaceVertex && ((apex == before && other == after) || (other == before && apex == after)))
+                return false;
+        }
+    }
+    return true;
+}
+
+// Among the fans allowed, the one whose smallest triangle is largest (none of zero area first).
+int bestFanApex(const std::vector<glm::vec3>& vertices, const std::uint32_t* polygon, int size, std::uint32_t firstFaceVertex) {
+    int apex = 0;
+    double best = -1.0;
+    for (int k = 0; k < size; ++k)
+        if (fanAllowed(polygon, size, k, firstFaceVertex))
+            if (const double least = smallestFanTriangle(vertices, polygon, size, k); least > best) {
+                best = least;
+                apex = k;
+            }
+    return apex;
+}
+
+// A quad whose two diagonals lie further apart than `fold` along its normal (across a crease),
+// with no triangle of zero area either way it is cut.
+bool foldedQuad(const std::vector<glm::vec3>& vertices, const std::uint32_t* quad, double fold) {
+    const glm::dvec3 p0(vertices[quad[0]]), p1(vertices[quad[1]]), p2(vertices[quad[2]]), p3(vertices[quad[3]]);
+    const glm::dvec3 normal = glm::cross(p2 - p0, p3 - p1);
+    const double length = glm::length(normal);
+    return length > 0.0 && std::abs(glm::dot(0.5 * (p0 + p2 - p1 - p3), normal)) > fold * length &&
+           smallestFanTriangle(vertices, quad, 4, 0) > 0.0 && smallestFanTriangle(vertices, quad, 4, 1) > 0.0;
+}
+
+} // namespace
+
 // 5. A quad per sign-changing edge (from the block that owns it), wound so that it faces
 // outward (towards f > 0).
 Expected<void> Extraction::connectQuads() {
@@ -315,50 +367,21 @@ Expected<void> Extraction::connectQuads() {
             // edge that would gain a third triangle); every other diagonal is this polygon's alone.
             // Among the fans allowed, one with no triangle of zero area (vertices on one crease line),
             // then the one whose smallest triangle is largest.
-            auto area = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-                const glm::dvec3 pa(mesh.vertices[a]), pb(mesh.vertices[b]), pc(mesh.vertices[c]);
-                return glm::length(glm::cross(pb - pa, pc - pa));
-            };
-            auto smallest = [&](int apex) {
-                double least = std::numeric_limits<double>::infinity();
-                for (int k = 1; k + 1 < size; ++k)
-                    least = std::min(least, area(polygon[apex], polygon[(apex + k) % size], polygon[(apex + k + 1) % size]));
-                return least;
-            };
-            auto isFaceVertex = [&](int k) { return polygon[k] >= firstFaceVertexIndex; };
-            auto allowed = [&](int apex) {
-                for (int k = 2; k + 1 < size; ++k) { // the diagonals (apex, apex + k)
-                    const int other = (apex + k) % size;
-                    for (int between = 0; between < size; ++between)
-                        if (isFaceVertex(between) && ((apex == (between + size - 1) % size && other == (between + 1) % size) ||
-                                                      (other == (between + size - 1) % size && apex == (between + 1) % size)))
-                            return false;
-                }
-                return true;
-            };
+            const std::vector<glm::vec3>& vertices = mesh.vertices;
             int apex = 0;
             if (size == 4) {
-                const float d02 = glm::length(mesh.vertices[polygon[0]] - mesh.vertices[polygon[2]]);
-                const float d13 = glm::length(mesh.vertices[polygon[1]] - mesh.vertices[polygon[3]]);
+                const float d02 = glm::length(vertices[polygon[0]] - vertices[polygon[2]]);
+                const float d13 = glm::length(vertices[polygon[1]] - vertices[polygon[3]]);
                 apex = d02 <= d13 ? 0 : 1;
-                if (!(smallest(apex) > 0.0) && smallest(1 - apex) > 0.0) apex = 1 - apex;
+                if (!(smallestFanTriangle(vertices, polygon, 4, apex) > 0.0) &&
+                    smallestFanTriangle(vertices, polygon, 4, 1 - apex) > 0.0)
+                    apex = 1 - apex;
                 // A quad folded by more than kFold of a cell (across a crease) is decided by the field
                 // at its diagonals' middles, after this pass.
-                const glm::dvec3 p0(mesh.vertices[polygon[0]]), p1(mesh.vertices[polygon[1]]), p2(mesh.vertices[polygon[2]]),
-                    p3(mesh.vertices[polygon[3]]);
-                const glm::dvec3 normal = glm::cross(p2 - p0, p3 - p1);
-                const double length = glm::length(normal);
-                if (length > 0.0 && std::abs(glm::dot(0.5 * (p0 + p2 - p1 - p3), normal)) > kFold * cellSize * length &&
-                    smallest(0) > 0.0 && smallest(1) > 0.0)
+                if (foldedQuad(vertices, polygon, kFold * cellSize))
                     folded[chunk].push_back({out.size(), {polygon[0], polygon[1], polygon[2], polygon[3]}, apex});
             } else {
-                double best = -1.0;
-                for (int k = 0; k < size; ++k)
-                    if (allowed(k))
-                        if (const double least = smallest(k); least > best) {
-                            best = least;
-                            apex = k;
-                        }
+                apex = bestFanApex(vertices, polygon, size, firstFaceVertexIndex);
             }
             for (int k = 1; k + 1 < size; ++k)
                 out.insert(out.end(), {polygon[apex], polygon[(apex + k) % size], polygon[(apex + k + 1) % size]});

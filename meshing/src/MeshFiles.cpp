@@ -142,10 +142,6 @@ Expected<void> writeMesh(const fs::path& path, const Mesh& mesh, const std::vect
     return {};
 }
 
-Expected<Mesh> readMesh(const fs::path& path) {
-    auto triangles = meshfield::readTriangleMesh(path);
-    if (!triangles) return triangles.error();
-    return Mesh{std::move(triangles->vertices), std::move(triangles->indices)};
-}
+Expected<Mesh> readMesh(const fs::path& path) { return meshfield::readTriangleMesh(path); }
 
 } // namespace sdfwb::meshing

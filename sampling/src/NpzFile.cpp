@@ -452,7 +452,10 @@ Expected<std::unique_ptr<SampleWriter>> createNpzWriter(OutputFile file, std::ui
     return std::unique_ptr<SampleWriter>(new NpzWriter(std::move(file), rows, metadata, forceZip64));
 }
 
-Expected<std::unique_ptr<SampleReader>> openNpzReader(InputFile file) {
+namespace {
+
+// The archive's entries by name, from its central directory (ZIP64 records read); errors name the file.
+Expected<std::map<std::string, ZipEntry>> readZipDirectory(const InputFile& file) {
     const std::string& name = file.name();
     if (file.size() < 22) return makeError(name + ": not an .npz file (too small for a ZIP archive)");
     std::size_t tailSize = std::size_t(std::min<std::uint64_t>(file.size(), 65536 + 22));
@@ -530,8 +533,13 @@ Expected<std::unique_ptr<SampleReader>> openNpzReader(InputFile file) {
             return makeError(name + ": " + entryName + ": data runs past the end of the file");
         found[entryName] = entry;
     }
+    return found;
+}
 
-    NpyArray arrays[3];
+// The three sample arrays (position, distance, gradient) into `arrays`: their row count.
+Expected<std::uint64_t> readSampleArrays(const InputFile& file, const std::map<std::string, ZipEntry>& found,
+                                         NpyArray (&arrays)[3]) {
+    const std::string& name = file.name();
     const char* required[3] = {"position", "distance", "gradient"};
     std::uint64_t rows = 0;
     for (int i = 0; i < 3; ++i) {
@@ -554,8 +562,12 @@ Expected<std::unique_ptr<SampleReader>> openNpzReader(InputFile file) {
         if (rows > array->dataSize / (vector ? 12 : 4)) return makeError(name + ": '" + required[i] + "' is truncated");
         arrays[i] = std::move(*array);
     }
+    return rows;
+}
 
-    // Optional metadata; malformed metadata is ignored rather than failing the data.
+// The run's metadata arrays, where there are any; malformed metadata is ignored rather than
+// failing the data.
+std::optional<SampleMetadata> readNpzMetadata(const InputFile& file, const std::map<std::string, ZipEntry>& found) {
     SampleMetadata metadata;
     bool any = false;
     auto readSmall = [&](const char* key, std::string& bytes, std::string& descr) -> bool {
@@ -602,9 +614,20 @@ Expected<std::unique_ptr<SampleReader>> openNpzReader(InputFile file) {
                 metadata.time = float(get<double>(bytes.data()));
         }
     }
-    std::optional<SampleMetadata> optional;
-    if (any) optional = metadata;
-    return std::unique_ptr<SampleReader>(new NpzReader(std::move(file), rows, arrays, std::move(optional)));
+    if (!any) return std::nullopt;
+    return metadata;
+}
+
+} // namespace
+
+Expected<std::unique_ptr<SampleReader>> openNpzReader(InputFile file) {
+    auto found = readZipDirectory(file);
+    if (!found) return found.error();
+    NpyArray arrays[3];
+    auto rows = readSampleArrays(file, *found, arrays);
+    if (!rows) return rows.error();
+    std::optional<SampleMetadata> metadata = readNpzMetadata(file, *found);
+    return std::unique_ptr<SampleReader>(new NpzReader(std::move(file), *rows, arrays, std::move(metadata)));
 }
 
 } // namespace sdfwb::sampling::detail

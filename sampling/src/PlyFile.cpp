@@ -3,6 +3,8 @@
 
 #include "Formats.h"
 
+#include <meshfield/PlyHeader.h>
+
 #include <cstdio>
 #include <sstream>
 #include <vector>
@@ -145,12 +147,33 @@ private:
     int m_offsets[7];
 };
 
-int typeSize(const std::string& type) {
-    if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
-    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-    if (type == "int" || type == "uint" || type == "float" || type == "int32" || type == "uint32" || type == "float32") return 4;
-    if (type == "double" || type == "float64") return 8;
-    return 0;
+// `comment sdfwb <key> <value>` header lines into the metadata; false: a malformed value.
+bool readMetadataComment(const std::string& comment, SampleMetadata& metadata, std::string& key, std::string& value) {
+    std::istringstream words(comment);
+    std::string tag;
+    words >> tag >> key;
+    std::getline(words >> std::ws, value);
+    try {
+        if (key == "sdf")
+            metadata.sdf = value;
+        else if (key == "pattern")
+            metadata.pattern = value;
+        else if (key == "seed")
+            metadata.seed = std::stoull(value);
+        else if (key == "time")
+            metadata.time = std::stof(value);
+        else if (key == "first_index")
+            metadata.firstIndex = std::stoull(value);
+        else if (key == "total_count")
+            metadata.totalCount = std::stoull(value);
+        else if (key == "version")
+            metadata.version = value;
+        else if (key == "parameters")
+            metadata.parameters = value;
+        else if (key == "mesh")
+            metadata.mesh = value;
+    } catch (const std::exception&) { return false; }
+    return true;
 }
 
 } // namespace
@@ -160,104 +183,48 @@ Expected<std::unique_ptr<SampleWriter>> createPlyWriter(OutputFile file, std::ui
 }
 
 Expected<std::unique_ptr<SampleReader>> openPlyReader(InputFile file) {
-    // The header is text up to "end_header\n"; 64 KiB is far more than any sane header.
+    // The header is text up to "end_header"; 64 KiB is far more than any sane header. It is read
+    // by the one PLY header parser (meshfield/PlyHeader.h).
     std::string head(std::size_t(std::min<std::uint64_t>(file.size(), 65536)), '\0');
     if (auto ok = file.readAt(0, head.data(), head.size()); !ok) return ok.error();
     const std::string& name = file.name();
     if (head.rfind("ply\n", 0) != 0) return makeError(name + ": not a PLY file (no 'ply' magic line)");
-    std::size_t end = head.find("end_header\n");
-    if (end == std::string::npos) return makeError(name + ": PLY header has no end_header line within 64 KiB");
-    std::istringstream lines(head.substr(0, end));
-    std::string line;
-    int lineNumber = 0;
-    bool inVertex = false, sawVertex = false, binaryLittle = false;
-    std::uint64_t rows = 0;
+    auto header = meshfield::parsePlyHeader(head, name);
+    if (!header) return header.error();
+    if (header->format != "binary_little_endian")
+        return makeError(name + ": PLY format '" + header->format + "' is not supported (binary_little_endian only)");
+    if (header->elements.empty() || header->elements[0].name != "vertex")
+        return makeError(name + ": the PLY file's first element must be 'vertex' (" +
+                         (header->elements.empty() ? std::string("it has none") : "'" + header->elements[0].name + "'") + ")");
+    const meshfield::PlyElement& vertex = header->elements[0];
     std::size_t stride = 0;
     int offsets[7] = {-1, -1, -1, -1, -1, -1, -1};
-    SampleMetadata metadata;
-    bool hasMetadata = false;
-    while (std::getline(lines, line)) {
-        ++lineNumber;
-        std::istringstream words(line);
-        std::string keyword;
-        words >> keyword;
-        auto where = [&] { return name + ": header line " + std::to_string(lineNumber) + ": "; };
-        if (keyword == "format") {
-            std::string format, version;
-            words >> format >> version;
-            if (format != "binary_little_endian")
-                return makeError(where() + "format '" + format + "' is not supported (binary_little_endian only)");
-            binaryLittle = true;
-        } else if (keyword == "comment") {
-            std::string tag, key;
-            words >> tag >> key;
-            if (tag != "sdfwb") continue;
-            std::string value;
-            std::getline(words >> std::ws, value);
-            hasMetadata = true;
-            try {
-                if (key == "sdf")
-                    metadata.sdf = value;
-                else if (key == "pattern")
-                    metadata.pattern = value;
-                else if (key == "seed")
-                    metadata.seed = std::stoull(value);
-                else if (key == "time")
-                    metadata.time = std::stof(value);
-                else if (key == "first_index")
-                    metadata.firstIndex = std::stoull(value);
-                else if (key == "total_count")
-                    metadata.totalCount = std::stoull(value);
-                else if (key == "version")
-                    metadata.version = value;
-                else if (key == "parameters")
-                    metadata.parameters = value;
-                else if (key == "mesh")
-                    metadata.mesh = value;
-            } catch (const std::exception&) { return makeError(where() + "malformed sdfwb " + key + " value '" + value + "'"); }
-        } else if (keyword == "element") {
-            std::string element;
-            std::string countText;
-            words >> element >> countText;
-            if (sawVertex && inVertex) inVertex = false;
-            if (element == "vertex") {
-                if (sawVertex) return makeError(where() + "second vertex element");
-                try {
-                    rows = std::stoull(countText);
-                } catch (const std::exception&) { return makeError(where() + "malformed vertex count '" + countText + "'"); }
-                sawVertex = inVertex = true;
-            } else if (!sawVertex) {
-                return makeError(where() + "element '" + element + "' before the vertex element is not supported");
+    for (const meshfield::PlyProperty& property : vertex.properties) {
+        if (property.isList()) return makeError(name + ": list properties in the vertex element are not supported");
+        for (int i = 0; i < 7; ++i)
+            if (property.name == kProperties[i]) {
+                if (property.type != meshfield::PlyType::Float32)
+                    return makeError(name + ": PLY vertex property '" + property.name + "' must be float");
+                offsets[i] = int(stride);
             }
-        } else if (keyword == "property") {
-            if (!inVertex) continue;
-            std::string type, property;
-            words >> type;
-            if (type == "list") return makeError(where() + "list properties in the vertex element are not supported");
-            words >> property;
-            int size = typeSize(type);
-            if (size == 0) return makeError(where() + "unknown property type '" + type + "'");
-            for (int i = 0; i < 7; ++i)
-                if (property == kProperties[i]) {
-                    if (type != "float" && type != "float32")
-                        return makeError(where() + "property '" + property + "' must be float, is " + type);
-                    offsets[i] = int(stride);
-                }
-            stride += std::size_t(size);
-        } else if (keyword == "ply" || keyword == "obj_info" || keyword.empty()) {
-            continue;
-        } else {
-            return makeError(where() + "unknown keyword '" + keyword + "'");
-        }
+        stride += std::size_t(meshfield::plySize(property.type));
     }
-    if (!binaryLittle) return makeError(name + ": PLY header lacks 'format binary_little_endian 1.0'");
-    if (!sawVertex) return makeError(name + ": PLY file has no vertex element");
     for (int i = 0; i < 7; ++i)
         if (offsets[i] < 0) return makeError(name + ": PLY vertices lack the float property '" + kProperties[i] + "'");
-    const std::uint64_t dataOffset = end + std::string("end_header\n").size();
-    if (stride == 0 || rows > (file.size() - dataOffset) / stride)
+    SampleMetadata metadata;
+    bool hasMetadata = false;
+    for (const std::string& comment : header->comments) {
+        if (comment.rfind("sdfwb ", 0) != 0) continue;
+        hasMetadata = true;
+        std::string key, value;
+        if (!readMetadataComment(comment, metadata, key, value))
+            return makeError(name + ": malformed sdfwb " + key + " value '" + value + "' in the PLY header");
+    }
+    const std::uint64_t rows = vertex.count, dataOffset = header->bodyOffset;
+    if (stride == 0 || dataOffset > file.size() || rows > (file.size() - dataOffset) / stride)
         return makeError(name + ": " + std::to_string(rows) + " vertices of " + std::to_string(stride) +
-                         " bytes do not fit in the file's " + std::to_string(file.size() - dataOffset) + " bytes of data");
+                         " bytes do not fit in the file's " + std::to_string(file.size() - std::min(dataOffset, file.size())) +
+                         " bytes of data");
     std::optional<SampleMetadata> found;
     if (hasMetadata) found = metadata;
     return std::unique_ptr<SampleReader>(new PlyReader(std::move(file), rows, dataOffset, stride, offsets, std::move(found)));

@@ -3,6 +3,7 @@
 // an edited initializer would, families write one file per instance that equals a plain run,
 // the audit across a family finds where the field stops being conservative, and mistakes are named.
 #include "common/ChildProcess.h"
+#include "common/Scratch.h"
 
 #include <gtest/gtest.h>
 
@@ -25,11 +26,7 @@ RunResult run(const std::string& arguments) { return sdfwb::testing::runCommand(
 
 std::string params(const std::string& name) { return std::string(SDFWB_SOURCE_DIR) + "/tests/params/" + name; }
 
-fs::path scratch(const std::string& name) {
-    const fs::path folder = fs::temp_directory_path() / ("sdfwb-batch-params-test-" + std::to_string(::getpid()));
-    fs::create_directories(folder); // this process's own folder: nothing of another run in it
-    return folder / name;
-}
+fs::path scratch(const std::string& name) { return sdfwb::testing::scratchPath("batch-params", name); }
 
 // `text` with the first `from` replaced by `to` (which must be there).
 std::string replaced(std::string text, const std::string& from, const std::string& to) {

@@ -2,6 +2,7 @@
 // bounded memory for N = 50 million. Runs the real binary without a display (EGL).
 
 #include "common/ChildProcess.h"
+#include "common/Scratch.h"
 
 #include <gtest/gtest.h>
 
@@ -39,11 +40,11 @@ Result run(const std::string& arguments) { return sdfwb::testing::runCommand(SDF
 // case that looks for partial files must not see another case's.
 fs::path scratchFolder() { return fs::temp_directory_path() / ("sdfwb-batch-sample-test-" + std::to_string(::getpid())); }
 
+// Nothing is left at the path: a case checks that its run made the file.
 fs::path scratch(const std::string& name) {
-    fs::path folder = scratchFolder();
-    fs::create_directories(folder);
-    fs::remove(folder / name);
-    return folder / name;
+    const fs::path path = sdfwb::testing::scratchPath("batch-sample", name);
+    fs::remove(path);
+    return path;
 }
 
 bool partialFilesIn(const fs::path& folder) {

@@ -18,6 +18,7 @@
 #include <shaders/SdfSource.h>
 
 #include "GlTestContext.h"
+#include "common/FirstError.h"
 
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>
@@ -84,11 +85,7 @@ shaders::PreparedSdf prepare(const fs::path& file, const std::string& entry = {}
     return shaders::prepareSdfFile(file, options, entry);
 }
 
-std::string firstError(const shaders::PreparedSdf& sdf) {
-    for (const auto& d : sdf.diagnostics)
-        if (d.severity == shaders::Severity::Error) return shaders::formatDiagnostic(d);
-    return {};
-}
+std::string firstError(const shaders::PreparedSdf& sdf) { return sdfwb::testing::firstErrorText(sdf.diagnostics); }
 
 // A test's name from its file: the stem, with anything but letters and digits as '_'.
 std::string fileTestName(const ::testing::TestParamInfo<std::string>& info) {

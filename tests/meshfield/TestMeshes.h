@@ -82,7 +82,7 @@ inline const char* damageName(Damage damage) {
 
 inline meshfield::TriangleMesh damaged(const meshfield::TriangleMesh& mesh, Damage damage, unsigned seed = 7) {
     std::mt19937 random(seed);
-    std::vector<std::size_t> faces(mesh.triangles());
+    std::vector<std::size_t> faces(mesh.triangleCount());
     for (std::size_t f = 0; f < faces.size(); ++f) faces[f] = f;
     std::shuffle(faces.begin(), faces.end(), random);
     meshfield::TriangleMesh out;

@@ -47,7 +47,7 @@ std::vector<dvec3> randomPoints(std::size_t count, double extent, unsigned seed)
 
 TEST(MeshFieldCpu, TheHierarchyFindsTheNearestTriangleABruteForceScanFinds) {
     const TriangleMesh mesh = testing::torusMesh(kR, kr, 64, 24);
-    ASSERT_EQ(mesh.triangles(), 3072u);
+    ASSERT_EQ(mesh.triangleCount(), 3072u);
     auto f = field(mesh);
     ASSERT_TRUE(f);
     EXPECT_EQ(f->boundaryEdges, 0u);
@@ -231,7 +231,7 @@ TEST(MeshFieldCpu, FilesAreReadThroughAssimpAndCached) {
     testing::writeObj(folder / "torus.obj", mesh);
     {
         std::ofstream off(folder / "torus.off");
-        off << "OFF\n" << mesh.vertices.size() << ' ' << mesh.triangles() << " 0\n";
+        off << "OFF\n" << mesh.vertices.size() << ' ' << mesh.triangleCount() << " 0\n";
         for (const glm::vec3& v : mesh.vertices) off << v.x << ' ' << v.y << ' ' << v.z << '\n';
         for (std::size_t t = 0; t < mesh.indices.size(); t += 3)
             off << "3 " << mesh.indices[t] << ' ' << mesh.indices[t + 1] << ' ' << mesh.indices[t + 2] << '\n';
@@ -240,7 +240,7 @@ TEST(MeshFieldCpu, FilesAreReadThroughAssimpAndCached) {
         EXPECT_TRUE(isMeshPath(folder / name));
         auto loaded = loadMeshField(folder / name, {});
         ASSERT_TRUE(loaded.hasValue()) << loaded.error().message;
-        EXPECT_EQ((*loaded)->mesh.triangles(), mesh.triangles()) << name;
+        EXPECT_EQ((*loaded)->mesh.triangleCount(), mesh.triangleCount()) << name;
         EXPECT_EQ((*loaded)->boundaryEdges, 0u) << name;
         auto again = loadMeshField(folder / name, {});
         ASSERT_TRUE(again.hasValue());
@@ -376,7 +376,7 @@ TEST(MeshFieldCpu, PlyFilesAreReadWhateverTheirFirstDataByte) {
     for (const char* name : {"little.ply", "big.ply"}) {
         auto mesh = readTriangleMesh(folder / name);
         ASSERT_TRUE(mesh.hasValue()) << name << ": " << mesh.error().message;
-        EXPECT_EQ(mesh->triangles(), 4u) << name;
+        EXPECT_EQ(mesh->triangleCount(), 4u) << name;
         ASSERT_EQ(mesh->vertices.size(), 4u) << name;
         EXPECT_EQ(mesh->vertices[0].x, first) << name;
         EXPECT_EQ(mesh->vertices[2].z, 1.0f) << name;
@@ -386,7 +386,7 @@ TEST(MeshFieldCpu, PlyFilesAreReadWhateverTheirFirstDataByte) {
     }
     auto ascii = readTriangleMesh(folder / "ascii.ply");
     ASSERT_TRUE(ascii.hasValue()) << ascii.error().message;
-    EXPECT_EQ(ascii->triangles(), 3u) << "a quad as two triangles and a triangle";
+    EXPECT_EQ(ascii->triangleCount(), 3u) << "a quad as two triangles and a triangle";
     EXPECT_EQ(ascii->vertices.size(), 5u);
     EXPECT_EQ(ascii->vertices[4], glm::vec3(0.5f, 0.5f, 1.0f));
     // Broken files: a face naming a missing vertex, data cut short, a header that is not PLY's.

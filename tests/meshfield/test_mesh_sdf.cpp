@@ -578,7 +578,7 @@ TEST_F(MeshSdfTest, TheAuditFlagsWhereAnOpenMeshsSignIsAGuess) {
         closed.indices.insert(closed.indices.end(), sides[side], sides[side] + 6);
         if (side != 5) open.indices.insert(open.indices.end(), sides[side], sides[side] + 6); // side 5: +z
     }
-    ASSERT_LT(open.triangles(), closed.triangles());
+    ASSERT_LT(open.triangleCount(), closed.triangleCount());
     sampling::AuditOptions options;
     options.samples = 500;
     options.convergence = false;

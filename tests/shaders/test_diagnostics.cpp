@@ -5,6 +5,8 @@
 #include <shaders/SdfSource.h>
 #include <shaders/TracerComposer.h>
 
+#include "common/FirstError.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -33,10 +35,9 @@ std::string dump(const std::vector<Diagnostic>& diagnostics) {
 
 // The first error, which must exist.
 Diagnostic firstError(const std::vector<Diagnostic>& diagnostics) {
-    for (const auto& d : diagnostics)
-        if (d.severity == Severity::Error) return d;
-    ADD_FAILURE() << "no error in:\n" << dump(diagnostics);
-    return {};
+    const Diagnostic d = sdfwb::testing::firstError(diagnostics);
+    if (d.message.empty()) ADD_FAILURE() << "no error in:\n" << dump(diagnostics);
+    return d;
 }
 
 } // namespace

@@ -5,6 +5,8 @@
 #include <shaders/SdfSource.h>
 #include <shaders/TracerComposer.h>
 
+#include "common/FirstError.h"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -25,12 +27,7 @@ shaders::PreparedSdf prepare(const std::string& text, const fs::path& path = {})
     return shaders::prepareSdf(text, path.empty() ? "hostile.glsl" : path.string(), path, shaders::IncludeOptions{});
 }
 
-// The first error, or an empty diagnostic.
-shaders::Diagnostic firstError(const shaders::PreparedSdf& sdf) {
-    for (const auto& d : sdf.diagnostics)
-        if (d.severity == shaders::Severity::Error) return d;
-    return {};
-}
+shaders::Diagnostic firstError(const shaders::PreparedSdf& sdf) { return sdfwb::testing::firstError(sdf.diagnostics); }
 
 } // namespace
 

@@ -35,10 +35,12 @@ const char* normalizationName(Normalization method); // "none", "unit-cube", "un
 Expected<SignMethod> parseSign(const std::string& text);
 Expected<Normalization> parseNormalization(const std::string& text);
 
+// sdfwb's one triangle mesh: what files give, what a mesh SDF is built from, and what meshing
+// makes (meshing::Mesh is this type).
 struct TriangleMesh {
     std::vector<glm::vec3> vertices;
-    std::vector<std::uint32_t> indices; // three per triangle
-    std::size_t triangles() const { return indices.size() / 3; }
+    std::vector<std::uint32_t> indices; // three per triangle (meshing's: counter-clockwise seen from outside, f > 0)
+    std::size_t triangleCount() const { return indices.size() / 3; }
 };
 
 // The file extensions read as meshes (lower case, with the dot): .obj .ply .stl .off .glb .gltf

@@ -6,6 +6,7 @@
 
 #include <core/Expected.h>
 #include <core/Progress.h>
+#include <meshfield/MeshField.h>
 #include <shaders/Parameters.h>
 #include <shaders/SdfSource.h>
 
@@ -20,11 +21,9 @@
 
 namespace sdfwb::meshing {
 
-struct Mesh {
-    std::vector<glm::vec3> vertices;
-    std::vector<std::uint32_t> indices; // three per triangle, counter-clockwise seen from outside (f > 0)
-    std::size_t triangleCount() const { return indices.size() / 3; }
-};
+// The one triangle mesh type (meshfield::TriangleMesh): a mesh read from a file and a mesh made
+// here are the same value.
+using Mesh = meshfield::TriangleMesh;
 
 struct MeshOptions {
     int resolution = 128; // cells along each axis of the bounds
