@@ -242,7 +242,7 @@ int sdfwb_marchStep(inout sdfwb_March march, float d) {
 // each evaluated where it lands and kept only when |f| shrank there: for a field steeper than the
 // step factor assumes (or a broken one) a step would overshoot, and the hit stays where it was,
 // within its tolerance. For exact fields each kept step takes the error down by 1 - cos of the
-// angle between the ray and the surface's normal (the tests in tests/renderer/test_hit_error.cpp
+// angle between the ray and the surface's normal (the tests in tests/renderer/test_hit_error_gl.cpp
 // bound what the two leave). A second step left unevaluated would cost nothing, but on fields
 // that are not linear along the ray (fractals) it lands where |f| may exceed the tolerance.
 const int sdfwb_kRefiningSteps = 2;

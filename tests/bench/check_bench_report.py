@@ -45,7 +45,7 @@ pixel_angle = 2 * math.tan(math.radians(20)) / 90
 for tolerance, row in plain.items():
     assert float(row["error_p50"]) < 0.12 * tolerance * pixel_angle * 3.0, row
 # Hits where the exact ray misses are rays passing the silhouette within the hit tolerance: their
-# band narrows with the tolerance (tests/renderer/test_hit_error.cpp checks that none lies farther).
+# band narrows with the tolerance (tests/renderer/test_hit_error_gl.cpp checks that none lies farther).
 assert int(plain[0.5]["false_hits"]) < int(plain[2.0]["false_hits"]), plain
 
 samplers = table("samplers.csv", 8)
