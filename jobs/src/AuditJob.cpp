@@ -62,7 +62,7 @@ JobResult<AuditJobReport> run(const AuditRequest& request, const ProgressSink& p
         instance.parameters = shaders::valuesOf(resolved->settings);
         instance.verdict = volume->verdict;
         instance.reason = volume->reason;
-        for (const sampling::AuditFlag& flag : volume->flags) instance.flags.push_back(flag.name);
+        for (const sampling::AuditFlag& flag : volume->flags) instance.flags.push_back(flag.finding);
         instance.lipschitz = volume->lipschitz;
         instance.lipschitzMax = volume->lipschitzMax;
         instance.exactnessP99 = volume->exactnessP99;

@@ -448,7 +448,7 @@ template <class V> void fields(V& v, MergeReport& r) {
 }
 
 template <class V> void fields(V& v, sampling::AuditFlag& f) {
-    v("flag", f.name);
+    v("flag", f.finding);
     v("evidence", f.evidence);
     v("value", f.value);
     v("maximum", f.maximum);

@@ -37,6 +37,7 @@ json encode(renderer::ShadingMode mode) { return renderer::shadingModeName(mode)
 json encode(renderer::TraceSettings::Cones cones) { return renderer::conesName(cones); }
 json encode(renderer::TraceSettings::Tracer tracer) { return renderer::tracerName(tracer); }
 json encode(MarchEvent event) { return marchEventName(event); }
+json encode(sampling::Finding finding) { return sampling::findingName(finding); }
 // A float as the shortest decimal that reads back as the same float (0.01f is 0.01, not
 // 0.009999999776482582): written as that double, it parses back to the same float bits.
 json encode(float value) {
@@ -252,6 +253,12 @@ bool decode(const json& in, renderer::TraceSettings::Tracer& value, const std::s
 
 bool decode(const json& in, MarchEvent& value, const std::string& path, bool, std::string& error) {
     return decodeNamed(in, value, path, error, parseMarchEvent, "a march event (step, hit, left the box, ...)");
+}
+
+bool decode(const json& in, sampling::Finding& value, const std::string& path, bool, std::string& error) {
+    return decodeNamed(
+        in, value, path, error, [](const std::string& name) { return valueNamed(sampling::kFindingNames, name); },
+        "an audit finding (exact, conservative, non-conservative, truncated, ...)");
 }
 
 template <class T> bool decode(const json& in, std::optional<T>& value, const std::string& path, bool strict, std::string& error);

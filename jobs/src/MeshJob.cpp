@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 namespace sdfwb::jobs {
 
@@ -79,7 +80,7 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
     // The audit says whether |f| is the distance (exact) or only a bound, which the error's method
     // depends on: it runs when the error is wanted, and its Lipschitz estimate then skips the blocks.
     // Otherwise the bound is the mesher's own estimate from the block centres (--lipschitz: given).
-    std::string verdict;
+    std::optional<sampling::Finding> verdict;
     if (request.errorSamples > 0) {
         sampling::AuditOptions audit;
         audit.samples = 4000;
@@ -91,9 +92,11 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
         if (!found) return JobError{Failure::Work, found.error().message, {}};
         verdict = found->verdict;
         if (!request.lipschitz) {
-            if (!std::isfinite(found->lipschitzMax) || found->verdict == "nan" || found->verdict == "discontinuous") {
+            if (!std::isfinite(found->lipschitzMax) || found->verdict == sampling::Finding::Nan ||
+                found->verdict == sampling::Finding::Discontinuous) {
                 options.lipschitz = 0.0f;
-                report.boundSource = "none: the audit found the field " + found->verdict + ", so every block is evaluated";
+                report.boundSource = std::string("none: the audit found the field ") + sampling::findingName(found->verdict) +
+                                     ", so every block is evaluated";
             } else {
                 options.lipschitz = std::max(1.0f, 1.25f * found->lipschitzMax);
                 char text[160];
@@ -110,7 +113,7 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
         options.lipschitz = *request.lipschitz;
         report.boundSource = *request.lipschitz > 0.0f ? "given (--lipschitz)" : "none: every block evaluated (--lipschitz 0)";
     }
-    report.fieldVerdict = verdict;
+    report.fieldVerdict = verdict ? sampling::findingName(*verdict) : "";
     auto extracted = meshing::extractMesh(sdf->prepared, options, progress);
     if (progress.isCancelled()) return JobError{Failure::Cancelled, "mesh: cancelled; nothing written", {}};
     if (!extracted) return JobError{Failure::Work, extracted.error().message, {}};
@@ -157,7 +160,7 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
         errorOptions.seed = request.seed;
         errorOptions.time = request.time;
         errorOptions.parameters = sdf->parameters;
-        errorOptions.fieldIsExact = verdict == "exact";
+        errorOptions.fieldIsExact = verdict == sampling::Finding::Exact;
         if (stats.boundsCutPoints > 0) errorOptions.cut = meshing::cutBox(options);
         auto error = meshing::measureError(sdf->prepared, mesh, errorOptions);
         if (!error) return JobError{Failure::Work, error.error().message, {}};

@@ -99,7 +99,7 @@ Expected<AuditFlag> measureJumps(const shaders::PreparedSdf& sdf, const AuditOpt
                                  const std::vector<JumpCandidate>& candidates, float noiseFloor) {
     constexpr int kLine = 64;
     AuditFlag flag;
-    flag.name = "discontinuous";
+    flag.finding = Finding::Discontinuous;
     const std::size_t used = std::min<std::size_t>(candidates.size(), 1024);
     std::vector<float> points;
     auto line = [&](glm::vec3 from, glm::vec3 to) {
@@ -156,7 +156,7 @@ Expected<AuditFlag> measureJumps(const shaders::PreparedSdf& sdf, const AuditOpt
 Expected<AuditFlag> traceTruncationRays(const shaders::PreparedSdf& sdf, const AuditOptions& options, const SampleSet& surface,
                                         float noiseFloor) {
     AuditFlag flag;
-    flag.name = "truncated";
+    flag.finding = Finding::Truncated;
     constexpr int kProbes = 32;
     const float reach = std::max(options.truncationReach, 0.1f);
     float distances[kProbes];
@@ -211,7 +211,7 @@ Expected<AuditFlag> traceTruncationRays(const shaders::PreparedSdf& sdf, const A
 
 AuditFlag signUncertainty(const meshfield::MeshField& mesh, const SampleSet& points, std::size_t limit) {
     AuditFlag flag;
-    flag.name = "sign-uncertain";
+    flag.finding = Finding::SignUncertain;
     const std::size_t n = std::min(points.size(), limit);
     std::vector<float> ambiguous;
     for (std::size_t i = 0; i < n; ++i) {
@@ -426,7 +426,7 @@ void estimateLipschitz(const AuditPasses& p, bool discontinuous, AuditReport& re
     report.safeStepFactor = 1.0f / std::max(report.lipschitz, 1.0f);
     if (report.lipschitz > 1.05f) {
         AuditFlag flag;
-        flag.name = "non-conservative";
+        flag.finding = Finding::NonConservative;
         flag.value = report.lipschitz;
         flag.maximum = report.lipschitzMax;
         flag.count = above;
@@ -472,7 +472,7 @@ Expected<void> findTruncation(const shaders::PreparedSdf& sdf, const AuditOption
         report.flags.push_back(std::move(*plateau));
     } else if (positive > 0 && double(flatValues.size()) > 0.02 * double(positive) && percentile(flatValues, 0.05) > 0.01f) {
         AuditFlag flag;
-        flag.name = "truncated";
+        flag.finding = Finding::Truncated;
         flag.value = percentile(flatValues, 0.05);
         flag.maximum = percentile(flatValues, 0.95);
         flag.count = flatValues.size();
@@ -558,7 +558,7 @@ void flagNonFinite(const AuditPasses& p, AuditReport& report) {
     const std::uint64_t bad = countNonFinite(p.random[1]);
     if (bad > 0) {
         AuditFlag flag;
-        flag.name = "nan";
+        flag.finding = Finding::Nan;
         flag.count = bad;
         flag.share = report.nanFraction;
         for (std::size_t i = 0; i < p.n && flag.examples.size() < kMaxExamples; ++i)
@@ -585,12 +585,12 @@ void settleVerdict(const AuditPasses& p, AuditReport& report) {
     const bool hasSignChange = minimum <= 0.0f && maximum >= 0.0f;
 
     // Most severe first: the verdict is the first.
-    static const char* const severity[] = {"nan", "discontinuous", "truncated", "non-conservative"};
+    static const Finding severity[] = {Finding::Nan, Finding::Discontinuous, Finding::Truncated, Finding::NonConservative};
     std::stable_sort(report.flags.begin(), report.flags.end(), [](const AuditFlag& a, const AuditFlag& b) {
-        auto rank = [](const std::string& name) {
-            return std::find(std::begin(severity), std::end(severity), name) - std::begin(severity);
+        auto rank = [](Finding finding) {
+            return std::find(std::begin(severity), std::end(severity), finding) - std::begin(severity);
         };
-        return rank(a.name) < rank(b.name);
+        return rank(a.finding) < rank(b.finding);
     });
 
     // The verdict: the most severe finding (no-surface ranks below discontinuities, above the rest).
@@ -598,30 +598,30 @@ void settleVerdict(const AuditPasses& p, AuditReport& report) {
     const float exactTolerance = 3.0f * report.surfaceSpacing + 2e-3f;
     char text[256];
     const AuditFlag* worst = report.flags.empty() ? nullptr : &report.flags.front();
-    if (worst && (worst->name == "nan" || worst->name == "discontinuous")) {
-        report.verdict = worst->name;
+    if (worst && (worst->finding == Finding::Nan || worst->finding == Finding::Discontinuous)) {
+        report.verdict = worst->finding;
         report.reason = worst->evidence;
     } else if (report.surfacePoints == 0 && !hasSignChange) {
-        report.verdict = "no-surface";
+        report.verdict = Finding::NoSurface;
         std::snprintf(text, sizeof text, "f never changes sign (%.4g to %.4g over %llu points) and no ray finds a surface",
                       double(minimum), double(maximum), (unsigned long long)p.n);
         report.reason = text;
     } else if (worst) {
-        report.verdict = worst->name;
+        report.verdict = worst->finding;
         report.reason = worst->evidence;
     } else if (report.surfacePoints < 16) {
-        report.verdict = "conservative";
+        report.verdict = Finding::Conservative;
         std::snprintf(text, sizeof text, "1-Lipschitz, but too few surface points (%llu) to test exactness",
                       (unsigned long long)report.surfacePoints);
         report.reason = text;
     } else if (report.exactnessP99 <= exactTolerance && report.exactnessMax <= 2.0f * exactTolerance) {
-        report.verdict = "exact";
+        report.verdict = Finding::Exact;
         std::snprintf(text, sizeof text,
                       "|f| matches the distance to the surface within %.2g (99th percentile; sampling allows %.2g)",
                       double(report.exactnessP99), double(exactTolerance));
         report.reason = text;
     } else {
-        report.verdict = "conservative";
+        report.verdict = Finding::Conservative;
         std::snprintf(
             text, sizeof text,
             "1-Lipschitz and |f| underestimates the distance (error 99th percentile %.2g, max %.2g; exact allows %.2g, %.2g)",
@@ -629,7 +629,7 @@ void settleVerdict(const AuditPasses& p, AuditReport& report) {
         report.reason = text;
     }
     for (std::size_t k = 1; k < report.flags.size(); ++k)
-        report.reason += "; also " + report.flags[k].name + ": " + report.flags[k].evidence;
+        report.reason += std::string("; also ") + findingName(report.flags[k].finding) + ": " + report.flags[k].evidence;
 }
 
 // Findings beside the verdict: a mesh's uncertain sign, and warnings that go with any verdict.
@@ -640,7 +640,7 @@ void addFindingsBesideTheVerdict(const shaders::PreparedSdf& sdf, const AuditPas
     if (sdf.mesh) {
         AuditFlag flag = signUncertainty(*sdf.mesh, p.random[1]);
         if (flag.count > 0) {
-            report.reason += "; also " + flag.name + ": " + flag.evidence;
+            report.reason += std::string("; also ") + findingName(flag.finding) + ": " + flag.evidence;
             report.flags.push_back(std::move(flag));
         }
     }
@@ -684,15 +684,15 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
 } // namespace
 
 std::vector<std::pair<const char*, float>> namedFigures(const AuditFlag& flag) {
-    if (flag.name == "truncated") return {{"value", flag.value}, {"start", flag.start}};
-    if (flag.name == "discontinuous") return {{"jump", flag.value}, {"jump_max", flag.maximum}};
-    if (flag.name == "non-conservative") return {{"lipschitz", flag.value}, {"lipschitz_max", flag.maximum}};
+    if (flag.finding == Finding::Truncated) return {{"value", flag.value}, {"start", flag.start}};
+    if (flag.finding == Finding::Discontinuous) return {{"jump", flag.value}, {"jump_max", flag.maximum}};
+    if (flag.finding == Finding::NonConservative) return {{"lipschitz", flag.value}, {"lipschitz_max", flag.maximum}};
     return {};
 }
 
-const AuditFlag* findFlag(const std::vector<AuditFlag>& flags, const std::string& name) {
+const AuditFlag* findFlag(const std::vector<AuditFlag>& flags, Finding finding) {
     for (const AuditFlag& flag : flags)
-        if (flag.name == name) return &flag;
+        if (flag.finding == finding) return &flag;
     return nullptr;
 }
 

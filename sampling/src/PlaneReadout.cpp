@@ -116,7 +116,7 @@ void addPlaneFlags(PlaneScan& scan, PlaneReadout& readout) {
     spread(scan.flatPoints);
     char text[256];
     if (readout.nanCount > 0) {
-        AuditFlag flag{"nan",
+        AuditFlag flag{Finding::Nan,
                        "",
                        0.0f,
                        0.0f,
@@ -130,7 +130,7 @@ void addPlaneFlags(PlaneScan& scan, PlaneReadout& readout) {
         readout.flags.push_back(std::move(flag));
     }
     if (!scan.jumps.empty()) {
-        AuditFlag flag{"discontinuous",
+        AuditFlag flag{Finding::Discontinuous,
                        "",
                        percentile(scan.jumps, 0.5),
                        *std::max_element(scan.jumps.begin(), scan.jumps.end()),
@@ -144,7 +144,7 @@ void addPlaneFlags(PlaneScan& scan, PlaneReadout& readout) {
         readout.flags.push_back(std::move(flag));
     }
     if (readout.truncationDistance) {
-        AuditFlag flag{"truncated",
+        AuditFlag flag{Finding::Truncated,
                        "",
                        *readout.truncationDistance,
                        percentile(scan.flat, 0.95),
@@ -160,8 +160,8 @@ void addPlaneFlags(PlaneScan& scan, PlaneReadout& readout) {
     }
     if (readout.lipschitz99 > 1.05f) {
         std::sort(scan.steep.begin(), scan.steep.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-        AuditFlag flag{"non-conservative", "", readout.lipschitz99, readout.lipschitzMax, 0.0f, readout.shareAboveOne,
-                       scan.steep.size(),  {}};
+        AuditFlag flag{Finding::NonConservative, "", readout.lipschitz99, readout.lipschitzMax, 0.0f, readout.shareAboveOne,
+                       scan.steep.size(),        {}};
         for (std::size_t k = 0; k < scan.steep.size() && k < kMaxExamples; ++k) flag.examples.push_back(scan.steep[k].second);
         std::snprintf(text, sizeof text, "|grad f| reaches %.4g (99th percentile; largest %.4g) on the plane: step factor %.3g",
                       double(flag.value), double(flag.maximum), double(readout.safeStepFactor));

@@ -220,10 +220,10 @@ TEST_P(ForeignCode, OpensRendersSamplesAndGetsItsFlags) {
     auto audit = sampling::auditField(sdf, options, {});
     ASSERT_TRUE(audit.hasValue()) << audit.error().message;
     std::vector<std::string> flags;
-    for (const auto& f : audit->flags) flags.push_back(f.name);
+    for (const auto& f : audit->flags) flags.push_back(sampling::findingName(f.finding));
     std::sort(flags.begin(), flags.end());
-    EXPECT_EQ(flags, expected.flags) << GetParam() << ": " << audit->verdict << ": " << audit->reason;
-    if (!expected.flags.empty()) { EXPECT_EQ(audit->verdict, audit->flags.front().name); }
+    EXPECT_EQ(flags, expected.flags) << GetParam() << ": " << sampling::findingName(audit->verdict) << ": " << audit->reason;
+    if (!expected.flags.empty()) { EXPECT_EQ(audit->verdict, audit->flags.front().finding); }
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, ForeignCode, ::testing::ValuesIn(corpusFiles()), fileTestName);

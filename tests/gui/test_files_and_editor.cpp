@@ -43,7 +43,7 @@ TEST(ForeignCode, EntryFieldAndShowWhere) {
     QObject::connect(window.plane(), &app::PlaneController::readoutUpdated, [&] { ++readouts; });
     auto findingsNamed = [&](const char* name) {
         for (const auto& f : window.planePanel()->readout().flags)
-            if (f.name == name) return true;
+            if (std::string(sampling::findingName(f.finding)) == name) return true;
         return false;
     };
     window.planePanel()->findChild<QPushButton*>("axis_Z")->click();
@@ -56,7 +56,7 @@ TEST(ForeignCode, EntryFieldAndShowWhere) {
     auto showAndCheck = [&](const char* name, const char* screenshot) {
         std::vector<glm::vec3> examples;
         for (const auto& f : window.planePanel()->readout().flags)
-            if (f.name == name) examples = f.examples;
+            if (std::string(sampling::findingName(f.finding)) == name) examples = f.examples;
         ASSERT_FALSE(examples.empty());
         const QImage before = window.viewport()->grabFramebuffer();
         const int seen = readouts;

@@ -200,12 +200,22 @@ TEST(JobJson, ReportsSurviveARoundTrip) {
     family.sdf = "blend.glsl";
     family.entry = "map";
     family.truncationReach = 3.0f;
-    family.family = {{{{"stretch", {0.5f}}}, "conservative", "L <= 1", {}, 1.0f, 1.01f, 1e-3f, 0.4},
-                     {{{"stretch", {2.0f}}}, "non-conservative", "L = 2", {"non-conservative"}, 2.0f, 2.1f, 0.3f, 0.2}};
+    using sampling::Finding;
+    family.family = {
+        {{{"stretch", {0.5f}}}, Finding::Conservative, "L <= 1", {}, 1.0f, 1.01f, 1e-3f, 0.4},
+        {{{"stretch", {2.0f}}}, Finding::NonConservative, "L = 2", {Finding::NonConservative}, 2.0f, 2.1f, 0.3f, 0.2}};
     auto f = reportFromJson<AuditJobReport>(toJson(family));
     ASSERT_TRUE(f) << f.error().message;
     EXPECT_EQ(f->family, family.family);
     EXPECT_FALSE(f->volume);
+    // Findings travel by their names (sampling::kFindingNames), and a name no finding has is
+    // refused at its key.
+    for (const auto& [finding, name] : sampling::kFindingNames) EXPECT_EQ(valueNamed(sampling::kFindingNames, name), finding);
+    std::string misnamed = toJson(family);
+    misnamed.replace(misnamed.find(R"("non-conservative")"), 18, R"("non-conservatory")");
+    auto refusedFinding = reportFromJson<AuditJobReport>(misnamed);
+    ASSERT_FALSE(refusedFinding);
+    EXPECT_NE(refusedFinding.error().message.find("'family[1].verdict'"), std::string::npos) << refusedFinding.error().message;
     ListReport list{{{"Torus", "Geometry", "exact", "/d/Torus.glsl", "iq", "MIT", "", false}}, {"bad.glsl: no metadata"}, "/d"};
     auto l = reportFromJson<ListReport>(toJson(list));
     ASSERT_TRUE(l) << l.error().message;
@@ -266,10 +276,17 @@ TEST(JobJson, AuditReportsKeepEveryFindingAndFigure) {
     volume.entry = "map";
     volume.truncationReach = 2.0f;
     sampling::AuditReport a;
-    a.verdict = "discontinuous";
+    a.verdict = sampling::Finding::Discontinuous;
     a.reason = "f jumps";
-    a.flags.push_back({"discontinuous", "jumps of 0.2", 0.2f, 0.4f, 0.0f, 0.01, 37, {{0.1f, 0.2f, 0.3f}, {-1.0f, 0.0f, 0.5f}}});
-    a.flags.push_back({"truncated", "plateau at 0.3", 0.3f, 0.0f, 0.25f, 0.5, 0, {}});
+    a.flags.push_back({sampling::Finding::Discontinuous,
+                       "jumps of 0.2",
+                       0.2f,
+                       0.4f,
+                       0.0f,
+                       0.01,
+                       37,
+                       {{0.1f, 0.2f, 0.3f}, {-1.0f, 0.0f, 0.5f}}});
+    a.flags.push_back({sampling::Finding::Truncated, "plateau at 0.3", 0.3f, 0.0f, 0.25f, 0.5, 0, {}});
     a.lipschitz = 1.25f;
     a.truncationDistance = 0.3f;
     a.scales = {{0.02f, 1.0f, 1.1f, 1.2f, 3.0f}};

@@ -588,7 +588,7 @@ TEST_F(MeshSdfTest, TheAuditFlagsWhereAnOpenMeshsSignIsAGuess) {
         ASSERT_TRUE(field.hasValue());
         auto report = sampling::auditField(shaders::prepareMeshSdf(*field, (*field)->name), options, {});
         ASSERT_TRUE(report.hasValue()) << report.error().message;
-        const sampling::AuditFlag* flag = sampling::findFlag(report->flags, "sign-uncertain");
+        const sampling::AuditFlag* flag = sampling::findFlag(report->flags, sampling::Finding::SignUncertain);
         if (mesh == &closed) {
             EXPECT_EQ(flag, nullptr) << report->reason;
             continue;

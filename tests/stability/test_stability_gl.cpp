@@ -168,7 +168,7 @@ TEST_F(StabilityTest, SteepFieldMissesHonestlyAtStepOneAndHitsWithItsStepFactor)
     EXPECT_LT(overshoot.hits, expected / 2) << "most rays jump through the sphere; they must not count as hits";
 
     auto report = audit("tests/stability/steep_sphere.glsl");
-    EXPECT_EQ(report.verdict, "non-conservative");
+    EXPECT_EQ(std::string(sampling::findingName(report.verdict)), "non-conservative");
     renderer::TraceSettings safe;
     safe.stepFactor = report.safeStepFactor;
     auto traced = trace("tests/stability/steep_sphere.glsl", camera, safe);
@@ -234,7 +234,8 @@ TEST_F(StabilityTest, FieldEvaluatedFarFromTheOriginReportsItsPrecisionFloor) {
     EXPECT_LT(report.noiseFloor, 1e-2f);
     EXPECT_NE(report.reason.find("precision"), std::string::npos) << report.reason;
     // Judged by its shape (an exact sphere), with the noise taken off the quotients.
-    EXPECT_TRUE(report.verdict == "exact" || report.verdict == "conservative") << report.verdict << ": " << report.reason;
+    EXPECT_TRUE(report.verdict == sampling::Finding::Exact || report.verdict == sampling::Finding::Conservative)
+        << sampling::findingName(report.verdict) << ": " << report.reason;
     EXPECT_NEAR(report.lipschitz, 1.0f, 0.05f);
     auto clean = audit("dataset/Geometry/Sphere.glsl");
     EXPECT_LT(clean.noiseFloor, 1e-5f) << "a field computed near the origin is clean";
@@ -292,7 +293,7 @@ TEST_F(StabilityTest, NanRegionEndsRaysAsNotFiniteAndCountsBadRows) {
     EXPECT_EQ(rows.report.badRows, rows.nanRows);
     EXPECT_NEAR(double(rows.nanRows) / 20000.0, 0.2, 0.015) << "x > 0.6 is 20 % of the cube";
     auto report = audit("tests/stability/nan_region.glsl");
-    EXPECT_EQ(report.verdict, "nan");
+    EXPECT_EQ(std::string(sampling::findingName(report.verdict)), "nan");
 }
 
 TEST_F(StabilityTest, TruncatedAndDiscontinuousFieldsTraceAndGetTheirVerdicts) {
@@ -301,12 +302,12 @@ TEST_F(StabilityTest, TruncatedAndDiscontinuousFieldsTraceAndGetTheirVerdicts) {
     auto truncated = trace("tests/stability/truncated.glsl", camera, settings);
     expectHonest(truncated, settings, "truncated");
     expectSphereSilhouette(truncated.hits, camera, 0.5f, settings);
-    EXPECT_EQ(audit("tests/stability/truncated.glsl").verdict, "truncated");
+    EXPECT_EQ(std::string(sampling::findingName(audit("tests/stability/truncated.glsl").verdict)), "truncated");
 
     auto jump = trace("tests/stability/discontinuous.glsl", camera, settings);
     expectHonest(jump, settings, "discontinuous");
     EXPECT_GT(jump.hits, 0);
-    EXPECT_EQ(audit("tests/stability/discontinuous.glsl").verdict, "discontinuous");
+    EXPECT_EQ(std::string(sampling::findingName(audit("tests/stability/discontinuous.glsl").verdict)), "discontinuous");
 }
 
 TEST_F(StabilityTest, ConstantFieldHasNoSurfaceAnywhere) {
@@ -320,7 +321,7 @@ TEST_F(StabilityTest, ConstantFieldHasNoSurfaceAnywhere) {
     EXPECT_EQ(rows.report.badRows, 512u) << "no surface: every surface row is bad and counted";
     EXPECT_EQ(rows.nanRows, 512u);
     auto report = audit("tests/stability/constant.glsl", 8000);
-    EXPECT_EQ(report.verdict, "no-surface") << report.reason;
+    EXPECT_EQ(std::string(sampling::findingName(report.verdict)), "no-surface") << report.reason;
 }
 
 TEST_F(StabilityTest, VanishingGradientAtTheSurfaceIsFlagged) {
@@ -331,7 +332,7 @@ TEST_F(StabilityTest, VanishingGradientAtTheSurfaceIsFlagged) {
     expectHonest(traced, settings, "cubed sphere");
     EXPECT_GE(traced.hits, analyticSphereHits(camera, 0.5f));
     auto report = audit("tests/stability/cubed_sphere.glsl");
-    EXPECT_EQ(report.verdict, "non-conservative");
+    EXPECT_EQ(std::string(sampling::findingName(report.verdict)), "non-conservative");
     EXPECT_LT(report.surfaceGradient, 0.05f) << "the audit measures |grad f| at the surface";
     EXPECT_NE(report.reason.find("vanishes"), std::string::npos) << report.reason;
     auto sphere = audit("dataset/Geometry/Sphere.glsl");
@@ -359,7 +360,7 @@ TEST_F(StabilityTest, EveryCaseCountsItsBadRowsAndGetsItsVerdict) {
         }
         if (c.verdict) {
             auto report = audit(file, 8000);
-            EXPECT_EQ(report.verdict, c.verdict) << file << ": " << report.reason;
+            EXPECT_EQ(std::string(sampling::findingName(report.verdict)), c.verdict) << file << ": " << report.reason;
         }
     }
 }

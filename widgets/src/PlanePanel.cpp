@@ -186,7 +186,7 @@ QString findingsHtml(const std::vector<sampling::AuditFlag>& findings) {
     if (findings.empty()) return QObject::tr("<p>No findings: no NaN/Inf, jump, plateau or |grad f| &gt; 1.05 on the plane.</p>");
     QString html = "<p>";
     for (const sampling::AuditFlag& finding : findings)
-        html += "<b>" + QString::fromStdString(finding.name).toHtmlEscaped() +
+        html += "<b>" + QString::fromUtf8(sampling::findingName(finding.finding)).toHtmlEscaped() +
                 "</b>: " + QString::fromStdString(finding.evidence).toHtmlEscaped() + "<br>";
     return html + "</p>";
 }
@@ -218,7 +218,8 @@ void PlanePanel::setReadout(const sampling::PlaneReadout& r) {
                                .arg(r.seconds, 0, 'f', 2)
                                .arg(findingsHtml(r.flags)));
     m_findings->clear();
-    for (const sampling::AuditFlag& finding : r.flags) m_findings->addItem(QString::fromStdString(finding.name));
+    for (const sampling::AuditFlag& finding : r.flags)
+        m_findings->addItem(QString::fromUtf8(sampling::findingName(finding.finding)));
     m_findings->setEnabled(!r.flags.empty());
     m_showWhere->setEnabled(!r.flags.empty());
     m_histogram->setBins(r.histogram);

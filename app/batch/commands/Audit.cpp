@@ -12,7 +12,7 @@ namespace {
 void printFlags(const std::vector<sampling::AuditFlag>& flags) {
     if (flags.empty()) std::printf("  findings           none (no NaN/Inf, jump, plateau or |grad f| > 1.05 found)\n");
     for (const sampling::AuditFlag& f : flags) {
-        std::printf("  %-18s %s\n", f.name.c_str(), f.evidence.c_str());
+        std::printf("  %-18s %s\n", sampling::findingName(f.finding), f.evidence.c_str());
         if (f.examples.empty()) continue;
         std::printf("  %-18s", "");
         for (std::size_t k = 0; k < f.examples.size() && k < 4; ++k)
@@ -65,9 +65,9 @@ void printFamily(const jobs::AuditJobReport& report) {
         for (int k = 0; k < filled; ++k) bar[std::size_t(k)] = '#';
         bar[std::size_t(one)] = '|';
         std::string flags;
-        for (const std::string& f : i.flags) flags += (flags.empty() ? "" : ",") + f;
-        std::printf("  %-*s  %-16s %9.4g  %s  %7.2f  %s\n", int(width), valuesText(i.parameters).c_str(), i.verdict.c_str(),
-                    i.lipschitz, bar.c_str(), i.seconds, flags.empty() ? "-" : flags.c_str());
+        for (sampling::Finding f : i.flags) flags += (flags.empty() ? "" : ",") + std::string(sampling::findingName(f));
+        std::printf("  %-*s  %-16s %9.4g  %s  %7.2f  %s\n", int(width), valuesText(i.parameters).c_str(),
+                    sampling::findingName(i.verdict), i.lipschitz, bar.c_str(), i.seconds, flags.empty() ? "-" : flags.c_str());
         total += i.seconds;
     }
     std::printf("  %.2f s in all\n", total);
@@ -75,7 +75,7 @@ void printFamily(const jobs::AuditJobReport& report) {
 
 void printVolume(const jobs::AuditJobReport& report) {
     const sampling::AuditReport& r = *report.volume;
-    std::printf("%s: %s\n  %s\n\n", report.sdf.c_str(), r.verdict.c_str(), r.reason.c_str());
+    std::printf("%s: %s\n  %s\n\n", report.sdf.c_str(), sampling::findingName(r.verdict), r.reason.c_str());
     printFlags(r.flags);
     std::printf("\n");
     std::printf("  Lipschitz estimate   %.4g (a lower bound of the true constant; largest quotient seen %.4g, spread %.2g)\n",

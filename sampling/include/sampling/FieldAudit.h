@@ -9,6 +9,7 @@
 // Both run on the GPU compute path: the GL context must be current on the calling thread.
 
 #include <core/Expected.h>
+#include <core/NameTable.h>
 #include <core/Progress.h>
 #include <meshfield/MeshField.h>
 #include <shaders/SdfSource.h>
@@ -23,7 +24,23 @@
 
 namespace sdfwb::sampling {
 
-// One finding of the audit, with its evidence. `name` is one of
+// What the audit can find about a field. A report's verdict is its most severe flag, or else
+// no-surface, exact or conservative; sign-uncertain is a finding beside the verdict. The names are
+// what the reports (JSON), the CLI and Python show.
+enum class Finding { Exact, Conservative, NonConservative, Truncated, Discontinuous, Nan, NoSurface, SignUncertain };
+inline constexpr std::pair<Finding, const char*> kFindingNames[] = {
+    {Finding::Exact, "exact"},
+    {Finding::Conservative, "conservative"},
+    {Finding::NonConservative, "non-conservative"},
+    {Finding::Truncated, "truncated"},
+    {Finding::Discontinuous, "discontinuous"},
+    {Finding::Nan, "nan"},
+    {Finding::NoSurface, "no-surface"},
+    {Finding::SignUncertain, "sign-uncertain"},
+};
+inline const char* findingName(Finding finding) { return nameOf(kFindingNames, finding); }
+
+// One finding of the audit, with its evidence. `finding` is one of
 //   non-conservative  |grad f| > 1.05 somewhere: value = the Lipschitz estimate, share = of the probed
 //                     points above 1.05, examples = where the quotient is largest;
 //   truncated         the field stops growing away from the surface: value = the plateau's f,
@@ -34,7 +51,7 @@ namespace sdfwb::sampling {
 //                     examples = points on the jump;
 //   nan               f or its gradient is NaN/Inf: share and count of points, examples = where.
 struct AuditFlag {
-    std::string name;
+    Finding finding = Finding::NonConservative;
     std::string evidence; // one sentence with the figures
     float value = 0.0f;
     float maximum = 0.0f;
@@ -57,8 +74,8 @@ inline constexpr double kSignUncertainBand = 0.25;
 struct SampleSet;
 AuditFlag signUncertainty(const meshfield::MeshField& mesh, const SampleSet& points, std::size_t limit = 50000);
 
-// The flag named `name`, or null.
-const AuditFlag* findFlag(const std::vector<AuditFlag>& flags, const std::string& name);
+// The flag of that finding, or null.
+const AuditFlag* findFlag(const std::vector<AuditFlag>& flags, Finding finding);
 
 struct PlaneReadout {
     int resolution = 0;                      // grid side on the plane
@@ -108,13 +125,12 @@ struct ConvergencePoint {
 };
 
 struct AuditReport {
-    std::string verdict;               // exact | conservative | non-conservative | truncated | discontinuous | nan | no-surface
-                                       // (the most severe finding)
-    std::string reason;                // one sentence: why this verdict
-    std::vector<AuditFlag> flags;      // every finding, most severe first
-    float lipschitz = 0.0f;            // estimate: 99.9th percentile of |grad f| over all scales but the largest
-    float lipschitzMax = 0.0f;         // the largest quotient seen (an outlier-prone upper estimate)
-    float lipschitzUncertainty = 0.0f; // spread between the two (the estimate is a lower bound of the true L)
+    Finding verdict = Finding::Conservative; // the most severe finding (never sign-uncertain)
+    std::string reason;                      // one sentence: why this verdict
+    std::vector<AuditFlag> flags;            // every finding, most severe first
+    float lipschitz = 0.0f;                  // estimate: 99.9th percentile of |grad f| over all scales but the largest
+    float lipschitzMax = 0.0f;               // the largest quotient seen (an outlier-prone upper estimate)
+    float lipschitzUncertainty = 0.0f;       // spread between the two (the estimate is a lower bound of the true L)
     float safeStepFactor = 1.0f;
     std::optional<float> truncationDistance;
     double nanFraction = 0.0;

@@ -300,9 +300,9 @@ struct MergeReport {
 // One instance of an audited family: what the volume audit found at these values.
 struct AuditInstance {
     std::vector<shaders::ParameterValue> parameters; // every declared parameter's value
-    std::string verdict;
+    sampling::Finding verdict = sampling::Finding::Conservative;
     std::string reason;
-    std::vector<std::string> flags; // the flags' names, most severe first
+    std::vector<sampling::Finding> flags; // most severe first
     float lipschitz = 0.0f;
     float lipschitzMax = 0.0f;
     float exactnessP99 = 0.0f;
