@@ -1,9 +1,10 @@
-# Type stubs for sdfwb._native, the pybind11 module built from python/module.cpp.
+# Type stubs for sdfwb._native, the pybind11 module built from python/module.cpp and the files beside it.
 #
 # Every function of the module is here with its exact parameter names and defaults (the docstrings in
-# module.cpp say what each one takes); python/tests/test_package.py compares them with the signatures
+# python/*.cpp say what each one takes); python/tests/test_package.py compares them with the signatures
 # pybind11 writes into the native docstrings, so the two cannot drift apart. The TypedDicts describe the
-# dicts the functions return; they exist for type checkers only (import them under TYPE_CHECKING).
+# dicts the functions return (the same test compares their keys with the dicts); they exist for type
+# checkers only (import them under TYPE_CHECKING).
 
 from collections.abc import Mapping, Sequence
 from typing import Any, NotRequired, TypedDict, type_check_only

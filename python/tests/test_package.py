@@ -232,3 +232,47 @@ def test_every_job_kind_runs_through_run_and_its_python_function_exists():
         sdfwb.run({"kind": "paint"})
     for name in names:  # the message lists every kind of the table
         assert name in str(refused.value)
+
+
+# --- the stubs' TypedDicts against the dicts the functions return ----------------------------------------------------
+# The TypedDicts in the stubs are the one place the Python side names the keys of what the functions return; this
+# compares them with the dicts themselves, so a key added, renamed or dropped on either side fails here.
+def typed_dicts():
+    """Each TypedDict of the stubs: (its required keys, its NotRequired keys)."""
+    out = {}
+    for node in ast.parse(open(STUB).read()).body:
+        if isinstance(node, ast.ClassDef) and any(getattr(base, "id", "") == "TypedDict" for base in node.bases):
+            required, optional = set(), set()
+            for item in node.body:
+                if isinstance(item, ast.AnnAssign):
+                    wrapped = ast.unparse(item.annotation).startswith("NotRequired[")
+                    (optional if wrapped else required).add(item.target.id)
+            out[node.name] = (required, optional)
+    return out
+
+
+def assert_keys_as_stubbed(result, name, stubs):
+    required, optional = stubs[name]
+    keys = set(result)
+    assert required <= keys, f"{name}: the stubs promise {sorted(required - keys)}, which the function does not return"
+    assert keys <= required | optional, f"{name}: the function returns {sorted(keys - required - optional)}, unstubbed"
+
+
+def test_the_stubs_typed_dicts_name_the_keys_the_functions_return(tmp_path):
+    stubs = typed_dicts()
+    assert {"SampleResult", "EvaluateResult", "SampleMetadata", "LoadResult", "MeshResult", "ParameterInfo",
+            "ParamsReport", "SdfEntry"} <= set(stubs)
+    sample = sdfwb.sample("sphere", "rand", 64)
+    assert_keys_as_stubbed(sample, "SampleResult", stubs)
+    assert_keys_as_stubbed(sdfwb.evaluate("sphere", np.zeros((4, 3), np.float32)), "EvaluateResult", stubs)
+    out = str(tmp_path / "rows.npz")
+    sdfwb.run({"kind": "sample", "sdf": "sphere", "pattern": "rand", "n": 64, "output": out})
+    loaded = sdfwb.load(out)
+    assert_keys_as_stubbed(loaded, "LoadResult", stubs)
+    assert_keys_as_stubbed(loaded["metadata"], "SampleMetadata", stubs)
+    assert_keys_as_stubbed(sdfwb.mesh("sphere", resolution=16), "MeshResult", stubs)
+    report = sdfwb.params("uniform float radius = 0.5; // @range 0.1 1.0\nfloat sdf(vec3 p) { return length(p) - radius; }\n")
+    assert_keys_as_stubbed(report, "ParamsReport", stubs)
+    assert_keys_as_stubbed(report["parameters"][0], "ParameterInfo", stubs)
+    for entry in sdfwb.list_sdfs()[:3]:
+        assert_keys_as_stubbed(entry, "SdfEntry", stubs)
