@@ -136,7 +136,9 @@ TEST(Abuse, AMinuteOfSwitchingDockingResizingDialogsAndTyping) {
     const long baseline = renderer::liveGlObjects();
     QElapsedTimer clock;
     clock.start();
-    for (int i = 12; clock.elapsed() < 60000; ++i) act(i);
+    // A minute of it, and at least every action 12 times over (72): a slower build (ASan) runs longer
+    // rather than checking less.
+    for (int i = 12; clock.elapsed() < 60000 || i < 12 + 72; ++i) act(i);
     window.resize(1000, 700);
     if (dock->isFloating()) dock->setFloating(false);
     ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
@@ -145,8 +147,6 @@ TEST(Abuse, AMinuteOfSwitchingDockingResizingDialogsAndTyping) {
     log::removeSink(sink);
     std::printf("abuse: %d actions (%d keystrokes, %d float/re-docks, %d dialogs) in %.0f s; GL objects %ld -> %ld\n", actions,
                 typed, docked, dialogs, clock.elapsed() / 1000.0, baseline, renderer::liveGlObjects());
-    EXPECT_GT(actions, 60);
-    EXPECT_GT(docked, 10);
     EXPECT_TRUE(glErrors.empty()) << glErrors.size() << " GL errors, first: " << glErrors.front();
     EXPECT_LE(renderer::liveGlObjects(), baseline + 8) << "GL objects pile up";
     EXPECT_GT(foreground(last, kBackground), 1000) << "the torus is still drawn";
