@@ -40,7 +40,7 @@ double median(std::vector<double> values) {
 }
 
 // Milliseconds from start() to finished(), through a BatchProcess or a JobChannel.
-template <class Runner> double roundTrip(Runner& runner, const jobs::Request& request) {
+template <class Runner> double roundTrip(Runner& runner, const values::Request& request) {
     QEventLoop loop;
     bool ok = false;
     auto connection =
@@ -58,7 +58,7 @@ template <class Runner> double roundTrip(Runner& runner, const jobs::Request& re
     return ok ? ms : -1.0;
 }
 
-double computeMs(const jobs::Request& request) {
+double computeMs(const values::Request& request) {
     const auto start = std::chrono::steady_clock::now();
     const bool ok = std::visit([](const auto& r) { return bool(jobs::run(r, ProgressSink{})); }, request);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -103,11 +103,11 @@ int main(int argc, char** argv) {
         const std::size_t comma = std::min(sdfs.find(',', from), sdfs.size());
         const std::string sdf = sdfs.substr(from, comma - from);
         from = comma + 1;
-        jobs::AuditRequest plane; // what PlaneController::refresh sends
+        values::AuditRequest plane; // what PlaneController::refresh sends
         plane.sdf.sdf = sdf;
-        plane.plane = jobs::PlaneSpec{glm::vec3(0.0f, 0.0f, 1.0f), 0.1f};
+        plane.plane = values::PlaneSpec{glm::vec3(0.0f, 0.0f, 1.0f), 0.1f};
         plane.resolution = 192;
-        jobs::ProbeRequest probe; // what ProbeController::probe sends for a click in a 960x540 view
+        values::ProbeRequest probe; // what ProbeController::probe sends for a click in a 960x540 view
         probe.frame.sdf.sdf = sdf;
         probe.frame.width = 960;
         probe.frame.height = 540;
@@ -116,7 +116,7 @@ int main(int argc, char** argv) {
 
         struct Case {
             const char* name;
-            jobs::Request request;
+            values::Request request;
             int debounceBefore, debounceAfter;
         };
         const Case cases[] = {

@@ -53,10 +53,10 @@ double median3(double a, double b, double c) { return std::max(std::min(a, b), s
 double frameMilliseconds(renderer::OffscreenRenderer& offscreen, renderer::SdfRenderer& sdfRenderer, int width, int height,
                          float scale) {
     renderer::FrameStats stats;
-    offscreen.render(sdfRenderer, width, height, renderer::Camera{}, 0.0f, &stats, scale);
+    offscreen.render(sdfRenderer, width, height, values::Camera{}, 0.0f, &stats, scale);
     double t[3];
     for (double& value : t) {
-        offscreen.render(sdfRenderer, width, height, renderer::Camera{}, 0.0f, &stats, scale);
+        offscreen.render(sdfRenderer, width, height, values::Camera{}, 0.0f, &stats, scale);
         value = stats.cpuMilliseconds;
     }
     return median3(t[0], t[1], t[2]);
@@ -77,7 +77,7 @@ GpuFrames gpuFrameMilliseconds(renderer::OffscreenRenderer& offscreen, renderer:
     while (times.size() < 50 &&
            (times.size() < 5 || std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 3.0)) {
         renderer::FrameStats stats;
-        offscreen.render(sdfRenderer, width, height, renderer::Camera{}, 0.0f, &stats, 1.0f);
+        offscreen.render(sdfRenderer, width, height, values::Camera{}, 0.0f, &stats, 1.0f);
         if (stats.gpuMilliseconds < 0.0) return {};
         times.push_back(stats.gpuMilliseconds);
     }
@@ -161,8 +161,8 @@ double referenceMilliseconds(const shaders::PreparedSdf& sdf, const std::string&
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
     glGenVertexArrays(1, &vertexArray);
-    const renderer::Camera camera;
-    const renderer::CameraBasis basis = renderer::cameraBasis(camera);
+    const values::Camera camera;
+    const values::CameraBasis basis = values::cameraBasis(camera);
     // World to clip space of the camera (a textbook perspective; the box lies beyond its near plane).
     const glm::mat4 clip =
         glm::perspective(glm::radians(camera.fovYDegrees), float(width) / float(height), camera.nearPlane, camera.farPlane) *
@@ -226,7 +226,7 @@ double percentile(std::vector<double> values, double p) {
 std::string compareCones(const std::string& name, double without, double with,
                          const std::vector<renderer::OffscreenRenderer::PixelStats>& plain,
                          const std::vector<renderer::OffscreenRenderer::PixelStats>& coned) {
-    const double pixelAngle = 2.0 * std::tan(renderer::Camera{}.fovYDegrees * 3.14159265 / 360.0) / kStatsHeight;
+    const double pixelAngle = 2.0 * std::tan(values::Camera{}.fovYDegrees * 3.14159265 / 360.0) / kStatsHeight;
     long changed = 0;
     double stepsPlain = 0.0, stepsConed = 0.0;
     std::vector<double> moved, residualPlain, residualConed;
@@ -251,16 +251,16 @@ std::string compareCones(const std::string& name, double without, double with,
 // forced): medians of 3 frames to glFinish, on a GPU the GPU time too, and, for accuracy, how
 // many pixels of the two pictures differ. The renderer's tracer choice is reset afterwards.
 std::string tracerComparison(renderer::OffscreenRenderer& offscreen, renderer::SdfRenderer& sdfRenderer) {
-    renderer::TraceSettings trace = sdfRenderer.trace();
-    const renderer::TraceSettings saved = trace;
+    values::TraceSettings trace = sdfRenderer.trace();
+    const values::TraceSettings saved = trace;
     double cpu[2] = {0.0, 0.0}, gpu[2] = {-1.0, -1.0};
     renderer::Image pictures[2];
-    const renderer::TraceSettings::Tracer tracers[2] = {renderer::TraceSettings::Tracer::Fragment,
-                                                        renderer::TraceSettings::Tracer::Compute};
+    const values::TraceSettings::Tracer tracers[2] = {values::TraceSettings::Tracer::Fragment,
+                                                      values::TraceSettings::Tracer::Compute};
     for (int k = 0; k < 2; ++k) {
         trace.tracer = tracers[k];
         (void)sdfRenderer.setTrace(trace);
-        pictures[k] = offscreen.render(sdfRenderer, 1280, 720, renderer::Camera{}, 0.0f);
+        pictures[k] = offscreen.render(sdfRenderer, 1280, 720, values::Camera{}, 0.0f);
         cpu[k] = frameMilliseconds(offscreen, sdfRenderer, 1280, 720, 1.0f);
         if (!softwareRasteriser()) gpu[k] = gpuFrameMilliseconds(offscreen, sdfRenderer, 1280, 720).milliseconds;
     }
@@ -295,12 +295,12 @@ void datasetReport(const std::vector<std::string>& names) {
     for (const dataset::Entry& entry : catalogue.entries()) {
         if (!names.empty() && std::find(names.begin(), names.end(), entry.metadata.name) == names.end()) continue;
         renderer::SdfRenderer sdfRenderer;
-        renderer::ShadingSettings shading;
-        shading.mode = renderer::ShadingMode::Gooch;
+        values::ShadingSettings shading;
+        shading.mode = shaders::ShadingMode::Gooch;
         (void)sdfRenderer.setShading(shading);
         if (const char* forced = std::getenv("SDFWB_CONES"))
-            if (auto cones = renderer::parseCones(forced)) {
-                renderer::TraceSettings trace;
+            if (auto cones = values::parseCones(forced)) {
+                values::TraceSettings trace;
                 trace.cones = *cones;
                 (void)sdfRenderer.setTrace(trace);
             }
@@ -335,13 +335,13 @@ void datasetReport(const std::vector<std::string>& names) {
         scale = measuredScale;
         shading.statsOutput = true;
         (void)sdfRenderer.setShading(shading);
-        auto stats = offscreen.renderStats(sdfRenderer, kStatsWidth, kStatsHeight, renderer::Camera{}, 0.0f);
+        auto stats = offscreen.renderStats(sdfRenderer, kStatsWidth, kStatsHeight, values::Camera{}, 0.0f);
         if (cones) {
             // What the cone pass gained, and what it did to the hits: the same program without it.
-            renderer::TraceSettings trace = sdfRenderer.trace();
-            trace.cones = renderer::TraceSettings::Cones::Off;
+            values::TraceSettings trace = sdfRenderer.trace();
+            trace.cones = values::TraceSettings::Cones::Off;
             (void)sdfRenderer.setTrace(trace);
-            auto plain = offscreen.renderStats(sdfRenderer, kStatsWidth, kStatsHeight, renderer::Camera{}, 0.0f);
+            auto plain = offscreen.renderStats(sdfRenderer, kStatsWidth, kStatsHeight, values::Camera{}, 0.0f);
             shading.statsOutput = false;
             (void)sdfRenderer.setShading(shading);
             coneRows.push_back(compareCones(entry.metadata.name, frameMilliseconds(offscreen, sdfRenderer, 1280, 720, 1.0f), full,
@@ -420,8 +420,8 @@ void meshReport(const std::vector<std::string>& files) {
         double planeField = 0.0;
         float movingScale = 1.0f;
         double moving = 0.0;
-        auto picture = [&](bool walk, renderer::ShadingSettings shading, const renderer::CuttingPlane& plane, int width,
-                           int height, renderer::Image* image) {
+        auto picture = [&](bool walk, values::ShadingSettings shading, const values::CuttingPlane& plane, int width, int height,
+                           renderer::Image* image) {
             if (walk)
                 unsetenv("SDFWB_MESH_TRACE");
             else
@@ -433,7 +433,7 @@ void meshReport(const std::vector<std::string>& files) {
             double ms = -1.0;
             if (!shaders::hasErrors(diagnostics)) {
                 ms = frameMilliseconds(offscreen, sdfRenderer, width, height, 1.0f);
-                if (image) *image = offscreen.render(sdfRenderer, width, height, renderer::Camera{}, 0.0f);
+                if (image) *image = offscreen.render(sdfRenderer, width, height, values::Camera{}, 0.0f);
                 if (plane.enabled) planeField = sdfRenderer.planeFieldMilliseconds();
                 if (walk && !plane.enabled && !shading.ambientOcclusion && width == 1280) {
                     // The viewport's rule while the camera moves (as datasetReport).
@@ -449,8 +449,8 @@ void meshReport(const std::vector<std::string>& files) {
             unsetenv("SDFWB_MESH_TRACE");
             return ms;
         };
-        renderer::ShadingSettings normals;
-        normals.mode = renderer::ShadingMode::Normals;
+        values::ShadingSettings normals;
+        normals.mode = shaders::ShadingMode::Normals;
         renderer::Image walked, marched;
         const double march = picture(false, normals, {}, kW, kH, &marched);
         const double walk = picture(true, normals, {}, kW, kH, &walked);
@@ -473,14 +473,14 @@ void meshReport(const std::vector<std::string>& files) {
                 angles.push_back(std::acos(std::clamp(double(glm::dot(glm::normalize(na), glm::normalize(nb))), -1.0, 1.0)) *
                                  180.0 / 3.14159265358979);
             }
-        renderer::ShadingSettings gooch;
-        gooch.mode = renderer::ShadingMode::Gooch;
+        values::ShadingSettings gooch;
+        gooch.mode = shaders::ShadingMode::Gooch;
         const double full = picture(true, gooch, {}, 1280, 720, nullptr);
-        renderer::CuttingPlane plane;
+        values::CuttingPlane plane;
         plane.enabled = true;
         plane.normal = {0.0f, 0.0f, 1.0f};
         const double withPlane = picture(true, gooch, plane, 1280, 720, nullptr);
-        renderer::ShadingSettings occluded = gooch;
+        values::ShadingSettings occluded = gooch;
         occluded.ambientOcclusion = true;
         const double withAo = picture(true, occluded, {}, 1280, 720, nullptr);
         if (const char* folder = std::getenv("SDFWB_REFERENCE_IMAGES")) {

@@ -17,7 +17,7 @@ namespace sdfwb::native {
 py::dict mesh(const std::string& sdf, int resolution, const py::object& bounds, float time, const py::object& lipschitz,
               std::uint64_t errorSamples, std::uint64_t seed, const std::string& entry, const py::object& params,
               const std::string& sign, const std::string& normalize, int refine) {
-    jobs::MeshRequest request;
+    values::MeshRequest request;
     request.sdf = sdfInput(sdf, entry, params, sign, normalize);
     request.resolution = resolution;
     request.refine = refine;
@@ -31,7 +31,7 @@ py::dict mesh(const std::string& sdf, int resolution, const py::object& bounds, 
         request.boundsMax = {values[3], values[4], values[5]};
     }
     if (!lipschitz.is_none()) request.lipschitz = lipschitz.cast<float>();
-    auto result = runOnGl(request, [](const jobs::MeshRequest& r) { return jobs::meshSdf(r, {}); });
+    auto result = runOnGl(request, [](const values::MeshRequest& r) { return jobs::meshSdf(r, {}); });
     jobs::MeshedSdf& meshed = *result.report;
     auto* vertices = new std::vector<glm::vec3>(std::move(meshed.mesh.vertices));
     auto* indices = new std::vector<std::uint32_t>(std::move(meshed.mesh.indices));
@@ -50,7 +50,7 @@ py::dict mesh(const std::string& sdf, int resolution, const py::object& bounds, 
 py::object evaluateMesh(const std::string& mesh, const std::string& sdf, float tau, std::uint64_t points, int occupancyResolution,
                         float edgeRadius, float edgeAngle, std::uint64_t seed, float time, const std::string& entry,
                         const py::object& params) {
-    jobs::EvalRequest request;
+    values::EvalRequest request;
     request.sdf = sdfInput(sdf, entry, params);
     request.mesh = mesh;
     request.tau = tau;
@@ -61,7 +61,7 @@ py::object evaluateMesh(const std::string& mesh, const std::string& sdf, float t
     request.seed = seed;
     request.time = time;
     if (auto error = jobs::validate(request)) raise(*error);
-    auto result = runOnGl(request, [](const jobs::EvalRequest& r) { return jobs::run(r, {}); });
+    auto result = runOnGl(request, [](const values::EvalRequest& r) { return jobs::run(r, {}); });
     return fromJson(jobs::toJson(*result));
 }
 

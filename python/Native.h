@@ -29,11 +29,11 @@ void releaseContext();
 // names and paths of SDF files do not have). `entry` names the SDF's function (empty: the default).
 // `params`: None or a mapping of parameter values, {"radius": 0.3, "hollow": True, "offset": (1, 2, 0)}
 // (a dict, or any collections.abc.Mapping, as the type stubs promise).
-jobs::SdfInput sdfInput(const std::string& sdf, const std::string& entry, const py::object& params = py::none(),
-                        const std::string& sign = {}, const std::string& normalize = {});
+values::SdfInput sdfInput(const std::string& sdf, const std::string& entry, const py::object& params = py::none(),
+                          const std::string& sign = {}, const std::string& normalize = {});
 // A job's failure as ValueError (usage, GLSL diagnostics) or RuntimeError.
 [[noreturn]] void raise(const jobs::JobError& error);
-jobs::OpenedSdf prepare(const jobs::SdfInput& input);
+jobs::OpenedSdf prepare(const values::SdfInput& input);
 // Parameter values as a dict (bools as bools, scalars as floats, vectors as tuples).
 py::dict parameterDict(const std::vector<shaders::ParameterSetting>& settings);
 // The report's JSON (jobs/JobJson.h) as Python objects: the same keys `--json` prints.

@@ -20,7 +20,7 @@ py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_
                 float gradientStep, std::uint32_t chunk, float surfaceTolerance, const std::string& entry,
                 const py::object& params, std::uint64_t firstIndex, const std::string& nearWidths, float nearTruncation,
                 const std::string& sign, const std::string& normalize) {
-    jobs::SampleRequest request;
+    values::SampleRequest request;
     request.sdf = sdfInput(sdf, entry, params, sign, normalize);
     request.pattern = pattern;
     request.count = n;
@@ -157,14 +157,14 @@ py::dict evaluate(const std::string& sdf, py::array_t<float, py::array::c_style 
 py::object audit(const std::string& sdf, std::uint64_t samples, std::uint64_t seed, float time, const std::string& entry,
                  float truncationReach, const py::object& params, const std::string& sign, const std::string& normalize,
                  const py::object& probeDistance) {
-    jobs::AuditRequest request;
+    values::AuditRequest request;
     request.sdf = sdfInput(sdf, entry, params, sign, normalize);
     request.samples = samples;
     request.seed = seed;
     request.time = time;
     request.truncationReach = probeDistance.is_none() ? truncationReach : probeDistance.cast<float>(); // the old name
     if (auto error = jobs::validate(request)) raise(*error);
-    auto result = runOnGl(request, [](const jobs::AuditRequest& r) { return jobs::run(r, {}); });
+    auto result = runOnGl(request, [](const values::AuditRequest& r) { return jobs::run(r, {}); });
     return fromJson(jobs::toJson(*result));
 }
 

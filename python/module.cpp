@@ -75,9 +75,9 @@ renderer::HeadlessContext& context() {
     return *g_context;
 }
 
-jobs::SdfInput sdfInput(const std::string& sdf, const std::string& entry, const py::object& params, const std::string& sign,
-                        const std::string& normalize) {
-    jobs::SdfInput input;
+values::SdfInput sdfInput(const std::string& sdf, const std::string& entry, const py::object& params, const std::string& sign,
+                          const std::string& normalize) {
+    values::SdfInput input;
     if (sdf.find('{') != std::string::npos && sdf.find('(') != std::string::npos)
         input = {"", entry, sdf, {}};
     else
@@ -111,7 +111,7 @@ jobs::SdfInput sdfInput(const std::string& sdf, const std::string& entry, const 
     throw std::runtime_error(message);
 }
 
-jobs::OpenedSdf prepare(const jobs::SdfInput& input) {
+jobs::OpenedSdf prepare(const values::SdfInput& input) {
     auto opened = jobs::openSdf(input, "sdfwb");
     if (!opened) raise(opened.error);
     return *opened.report;
@@ -141,7 +141,7 @@ py::object fromJson(const std::string& json) { return py::module_::import("json"
 // A mesh file's provenance (file, triangles, sign, normalisation's transform, original bounds) as a
 // dict, or None for GLSL.
 py::object meshSourceOf(const jobs::OpenedSdf& opened) {
-    const jobs::MeshSource source = opened.meshSource();
+    const values::MeshSource source = opened.meshSource();
     return source.json.empty() ? py::object(py::none()) : fromJson(source.json);
 }
 
@@ -227,7 +227,7 @@ py::object run(const py::object& given) {
     {
         py::gil_scoped_release release;
         std::unique_lock lock(g_glMutex, std::defer_lock);
-        if (jobs::needsGl(*request)) {
+        if (values::needsGl(*request)) {
             lock.lock();
             context();
         }
@@ -251,7 +251,7 @@ py::object run(const py::object& given) {
 }
 
 py::object params(const std::string& sdf, const std::string& entry) {
-    jobs::ParamsRequest request;
+    values::ParamsRequest request;
     request.sdf = sdfInput(sdf, entry);
     auto result = jobs::run(request, {});
     if (!result) raise(result.error);
@@ -375,7 +375,7 @@ Raises:
         "_job_kinds",
         [] {
             py::list rows;
-            for (const jobs::JobKind& kind : jobs::kJobKinds)
+            for (const values::JobKind& kind : values::kJobKinds)
                 rows.append(py::make_tuple(std::string(kind.name), kind.needsGl, std::string(kind.python)));
             return rows;
         },

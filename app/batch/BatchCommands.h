@@ -24,24 +24,24 @@ struct OutputOptions {
     bool protocol = false;      // the worker protocol (jobs/Protocol.h) on stdout: progress, error, report, end
 };
 
-int runRender(const jobs::RenderRequest& request, const OutputOptions& output);
-int runAnimate(const jobs::AnimateRequest& request, const OutputOptions& output);
-int runSample(const jobs::SampleRequest& request, const OutputOptions& output);
-int runAudit(const jobs::AuditRequest& request, const OutputOptions& output);
-int runMerge(const jobs::MergeRequest& request, const OutputOptions& output);
-int runList(const jobs::ListRequest& request, const OutputOptions& output);
-int runParams(const jobs::ParamsRequest& request, const OutputOptions& output);
-int runMesh(const jobs::MeshRequest& request, const OutputOptions& output);
-int runEval(const jobs::EvalRequest& request, const OutputOptions& output);
+int runRender(const values::RenderRequest& request, const OutputOptions& output);
+int runAnimate(const values::AnimateRequest& request, const OutputOptions& output);
+int runSample(const values::SampleRequest& request, const OutputOptions& output);
+int runAudit(const values::AuditRequest& request, const OutputOptions& output);
+int runMerge(const values::MergeRequest& request, const OutputOptions& output);
+int runList(const values::ListRequest& request, const OutputOptions& output);
+int runParams(const values::ParamsRequest& request, const OutputOptions& output);
+int runMesh(const values::MeshRequest& request, const OutputOptions& output);
+int runEval(const values::EvalRequest& request, const OutputOptions& output);
 // Exit 1 when any item failed (the others still ran), 130 when cancelled.
-int runRun(const jobs::RunRequest& request, const OutputOptions& output);
+int runRun(const values::RunRequest& request, const OutputOptions& output);
 // The march debugger: every step of one pixel's ray.
-int runProbe(const jobs::ProbeRequest& request, const OutputOptions& output);
+int runProbe(const values::ProbeRequest& request, const OutputOptions& output);
 // Error against run time for the tracer, the samplers, gradients and the audit (jobs/Benchmarks.h).
-int runBench(const jobs::BenchRequest& request, const OutputOptions& output);
+int runBench(const values::BenchRequest& request, const OutputOptions& output);
 
 // Runs any request with the command of its kind.
-int runRequest(const jobs::Request& request, const OutputOptions& output);
+int runRequest(const values::Request& request, const OutputOptions& output);
 
 // Prints "sdfwb: <message>" to stderr, or, under the worker protocol, its error message on stdout.
 void printError(const std::string& message);

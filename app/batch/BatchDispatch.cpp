@@ -116,9 +116,9 @@ int runJobText(const std::string& text, const std::string& name, Mode mode) {
     // Check every line before running any, so a typo on line 9 does not waste lines 1-8.
     struct Step {
         int line = 0;
-        Arguments words;                      // a command as typed after --batch
-        std::optional<jobs::Request> request; // or a request's JSON on one line
-        std::string name() const { return request ? jobs::kindName(*request) : words.front(); }
+        Arguments words;                        // a command as typed after --batch
+        std::optional<values::Request> request; // or a request's JSON on one line
+        std::string name() const { return request ? values::kindName(*request) : words.front(); }
     };
     std::vector<Step> steps;
     std::string line;
@@ -223,7 +223,7 @@ std::optional<int> commandLine(const Arguments& arguments, Mode mode) {
             printError("--sample: expected <Pattern> <N> <SDF> <outfile>; see sdfwb --help");
             return kExitUsage;
         }
-        jobs::SampleRequest command;
+        values::SampleRequest command;
         command.pattern = arguments[1];
         command.sdf.sdf = arguments[3];
         command.output = arguments[4];

@@ -127,7 +127,7 @@ void addParameterOption(CLI::App& app, const std::string& name, std::vector<shad
 }
 
 // --sdf, --entry and --param NAME=VALUE (repeatable), shared by every command that runs an SDF.
-void addSdfOptions(CLI::App& app, jobs::SdfInput& input) {
+void addSdfOptions(CLI::App& app, values::SdfInput& input) {
     app.add_option("--sdf", input.sdf, "dataset name, path to a .glsl file, or a triangle mesh (.obj .ply .stl .off .glb)")
         ->required();
     app.add_option("--sign", input.sign,
@@ -163,7 +163,7 @@ void addSdfOptions(CLI::App& app, jobs::SdfInput& input) {
 }
 
 // --sweep NAME=FROM:TO:COUNT (repeatable: a grid) and --randomize COUNT: a shape family.
-void addFamilyOptions(CLI::App& app, jobs::FamilySpec& family, const char* what) {
+void addFamilyOptions(CLI::App& app, values::FamilySpec& family, const char* what) {
     app.add_option_function<std::vector<std::string>>(
            "--sweep",
            [&family](const std::vector<std::string>& texts) {
@@ -256,13 +256,13 @@ struct FrameOptions {
     bool planeNoClip = false;
 };
 
-void addFrameOptions(CLI::App& app, jobs::FrameRequest& job, FrameOptions& options) {
+void addFrameOptions(CLI::App& app, values::FrameRequest& job, FrameOptions& options) {
     addSdfOptions(app, job.sdf);
     app.add_option("--size", options.size, "image size WxH")->capture_default_str();
     app.add_option("--time", job.time, "time in seconds for animated SDFs (start time for animate)")
         ->capture_default_str()
         ->check(numberCheck(false));
-    app.add_option("--shading", options.shading, "shading mode: " + renderer::shadingModeNames())->capture_default_str();
+    app.add_option("--shading", options.shading, "shading mode: " + shaders::shadingModeNames())->capture_default_str();
     app.add_flag("--ao", job.shading.ambientOcclusion, "ambient occlusion");
     app.add_option("--matcap", job.shading.matcap, "matcap for --shading matcap: clay, chrome, jade, wax, or an image path")
         ->capture_default_str();
@@ -304,7 +304,7 @@ void addFrameOptions(CLI::App& app, jobs::FrameRequest& job, FrameOptions& optio
 }
 
 // Returns an exit code when an option is malformed.
-std::optional<int> finishFrameOptions(jobs::FrameRequest& job, const FrameOptions& options) {
+std::optional<int> finishFrameOptions(values::FrameRequest& job, const FrameOptions& options) {
     auto parsedSize = parseSize(options.size);
     if (!parsedSize) {
         printError("--size: expected WxH with integers from 1 to 16384, got '" + options.size + "'");
@@ -312,19 +312,19 @@ std::optional<int> finishFrameOptions(jobs::FrameRequest& job, const FrameOption
     }
     job.width = parsedSize->width;
     job.height = parsedSize->height;
-    auto mode = renderer::parseShadingMode(options.shading);
+    auto mode = shaders::parseShadingMode(options.shading);
     if (!mode) {
-        printError("--shading: unknown mode '" + options.shading + "' (" + renderer::shadingModeNames() + ")");
+        printError("--shading: unknown mode '" + options.shading + "' (" + shaders::shadingModeNames() + ")");
         return kExitUsage;
     }
     job.shading.mode = *mode;
-    auto cones = renderer::parseCones(options.cones);
+    auto cones = values::parseCones(options.cones);
     if (!cones) {
         printError("--cones: expected auto, on or off, got '" + options.cones + "'");
         return 2;
     }
     job.trace.cones = *cones;
-    auto tracer = renderer::parseTracer(options.tracer);
+    auto tracer = values::parseTracer(options.tracer);
     if (!tracer) {
         printError("--tracer: expected auto, fragment or compute, got '" + options.tracer + "'");
         return kExitUsage;
@@ -371,13 +371,13 @@ std::optional<int> finishFrameOptions(jobs::FrameRequest& job, const FrameOption
 }
 
 // The common end of every command: print the request, stop (Check), or run it.
-int finish(const jobs::Request& request, const Ending& ending, Mode mode) {
+int finish(const values::Request& request, const Ending& ending, Mode mode) {
     if (ending.printRequest) {
         std::printf("%s\n", jobs::toJson(request, 2).c_str());
         return kExitOk;
     }
     if (mode == Mode::Check) return kExitOk;
-    if (ending.output.quiet || (ending.output.json && !std::holds_alternative<jobs::RenderRequest>(request)))
+    if (ending.output.quiet || (ending.output.json && !std::holds_alternative<values::RenderRequest>(request)))
         log::setMinimumLevel(log::Level::Warning);
     if (!ending.output.protocol) return runRequest(request, ending.output);
     OutputOptions output = ending.output;
@@ -388,7 +388,7 @@ int finish(const jobs::Request& request, const Ending& ending, Mode mode) {
 
 int runRenderCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Sphere-trace an SDF into an image, without a display.", "sdfwb --batch render");
-    jobs::RenderRequest request;
+    values::RenderRequest request;
     Ending ending;
     FrameOptions options;
     addFrameOptions(app, request.frame, options);
@@ -404,7 +404,7 @@ int runRenderCommand(const Arguments& arguments, Mode mode) {
 
 int runAnimateCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Render an MP4 (H.264) of an SDF: over time, as a turntable, or both.", "sdfwb --batch animate");
-    jobs::AnimateRequest request;
+    values::AnimateRequest request;
     Ending ending;
     FrameOptions options;
     addFrameOptions(app, request.frame, options);
@@ -428,7 +428,7 @@ int runProbeCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("The march debugger: replay one pixel's ray through the program that draws the frame and print every step "
                  "(position, f, the step taken, |grad f|, over-relaxation fallbacks, oversteps) and how it ended.",
                  "sdfwb --batch probe");
-    jobs::ProbeRequest request;
+    values::ProbeRequest request;
     Ending ending;
     FrameOptions options;
     std::string pixel;
@@ -450,7 +450,7 @@ int runListCommand(const Arguments& arguments, Mode mode) {
     Ending ending;
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch list", arguments)) return *exit;
-    return finish(jobs::ListRequest{}, ending, mode);
+    return finish(values::ListRequest{}, ending, mode);
 }
 
 // "3/8" -> 3, 8
@@ -465,7 +465,7 @@ bool parseShard(const std::string& text, std::uint32_t& index, std::uint32_t& co
 
 int runSampleCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Sample an SDF: N rows of (position, distance, raw gradient).", "sdfwb --batch sample");
-    jobs::SampleRequest command;
+    values::SampleRequest command;
     Ending ending;
     std::string shard;
     addSdfOptions(app, command.sdf);
@@ -510,7 +510,7 @@ int runSampleCommand(const Arguments& arguments, Mode mode) {
 
 int runMergeCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Join shard files (from --shard K/COUNT) into the file the single run writes.", "sdfwb --batch merge");
-    jobs::MergeRequest command;
+    values::MergeRequest command;
     Ending ending;
     app.add_option("--output,-o", command.output, "merged file: .bin, .npz or .ply")->required();
     app.add_option("--format", command.format, "bin, npz or ply (default: from the output's extension)");
@@ -523,7 +523,7 @@ int runMergeCommand(const Arguments& arguments, Mode mode) {
 int runAuditCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Analyse an SDF's field: exact, conservative, non-conservative, truncated, discontinuous or NaN?",
                  "sdfwb --batch audit");
-    jobs::AuditRequest command;
+    values::AuditRequest command;
     Ending ending;
     std::string plane;
     addSdfOptions(app, command.sdf);
@@ -548,7 +548,7 @@ int runAuditCommand(const Arguments& arguments, Mode mode) {
     if (auto exit = parse(app, "--batch audit", arguments)) return *exit;
     if (!plane.empty()) {
         char tail;
-        jobs::PlaneSpec spec;
+        values::PlaneSpec spec;
         glm::vec3& n = spec.normal;
         if (std::sscanf(plane.c_str(), " %f , %f , %f , %f %c", &n.x, &n.y, &n.z, &spec.offset, &tail) != 4 ||
             n == glm::vec3(0.0f)) {
@@ -564,7 +564,7 @@ int runBenchCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Measure error against run time (sphere tracer, surface/near samplers, gradients, audit) on this "
                  "machine and write a report: benchmarks.md, CSV tables and plots.",
                  "sdfwb --batch bench");
-    jobs::BenchRequest command;
+    values::BenchRequest command;
     Ending ending;
     app.add_option("--output,-o", command.outputDirectory, "report folder (benchmarks.md, *.csv, images/*.png)")
         ->capture_default_str();
@@ -582,7 +582,7 @@ int runMeshCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Extract the SDF's zero set as a mesh by dual contouring (sharp edges and corners kept), and measure its "
                  "error against the exact field both ways.",
                  "sdfwb --batch mesh");
-    jobs::MeshRequest request;
+    values::MeshRequest request;
     Ending ending;
     addSdfOptions(app, request.sdf);
     app.add_option("--output,-o", request.output, "mesh file: .ply, .obj, .stl or .glb")->required();
@@ -618,7 +618,7 @@ int runEvalCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Grade any mesh against the SDF's exact field: Chamfer L1/L2, F-score at tau, normal consistency, Hausdorff "
                  "and volume IoU (conventions in the report).",
                  "sdfwb --batch grade");
-    jobs::EvalRequest request;
+    values::EvalRequest request;
     Ending ending;
     addSdfOptions(app, request.sdf);
     app.add_option("--mesh", request.mesh, "the mesh to grade: .ply, .obj, .stl, .glb, .off, ... (anything assimp reads)")
@@ -650,7 +650,7 @@ int runParamsCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("List the parameters an SDF declares: uniforms with a default, annotated // @range MIN MAX @step S @log "
                  "@label \"...\" @color.",
                  "sdfwb --batch params");
-    jobs::ParamsRequest request;
+    values::ParamsRequest request;
     Ending ending;
     app.add_option("--sdf", request.sdf.sdf, "dataset name or path to a .glsl file")->required();
     addEntryOption(app, request.sdf.entry);
@@ -663,7 +663,7 @@ int runRunCommand(const Arguments& arguments, Mode mode) {
     CLI::App app("Run every item of a manifest (many shapes): each in a child process of its own, recorded in a status file "
                  "so a second run skips what is done, with failures isolated and the manifest sliced across processes.",
                  "sdfwb --batch run");
-    jobs::RunRequest request;
+    values::RunRequest request;
     Ending ending;
     app.add_option("manifest", request.manifest,
                    "CSV with a header (sdf, entry, params, pattern or recipe, n, seed, output, ...) or JSON lines, one item "

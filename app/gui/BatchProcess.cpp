@@ -29,7 +29,7 @@ QString describeFailure(const jobs::JobError& error) {
     return text + QString::fromStdString(error.message);
 }
 
-bool BatchProcess::start(const jobs::Request& request) {
+bool BatchProcess::start(const values::Request& request) {
     if (isRunning()) return false;
     m_process = new QProcess(this);
     m_pending.clear();

@@ -49,7 +49,7 @@ public:
     const QString& executable() const { return m_executable; }
 
     // Starts the request in a child. False when one is running.
-    bool start(const jobs::Request& request);
+    bool start(const values::Request& request);
     void cancel();
     bool isRunning() const;
 

@@ -20,7 +20,7 @@ ExportController::ExportController(QWidget* window, widgets::ViewportWidget* vie
     });
     connect(m_process, &BatchProcess::finished, this, [this](bool ok, bool, const std::string& json, const QString& error) {
         QString message = error;
-        auto report = ok ? jobs::reportFromJson<jobs::AnimateReport>(json) : Expected<jobs::AnimateReport>(makeError(""));
+        auto report = ok ? jobs::reportFromJson<values::AnimateReport>(json) : Expected<values::AnimateReport>(makeError(""));
         if (ok && !report) {
             ok = false;
             message = QString::fromStdString(report.error().message);
@@ -70,7 +70,7 @@ QString ExportController::saveScreenshot(const QString& path, int width, int hei
 void ExportController::showScreenshotDialog() {
     if (!m_screenshotDialog) {
         m_screenshotDialog = new widgets::ExportDialog(widgets::ExportDialog::Kind::Screenshot, m_window);
-        connect(m_screenshotDialog, &widgets::ExportDialog::startRequested, this, [this](const jobs::AnimateRequest& r) {
+        connect(m_screenshotDialog, &widgets::ExportDialog::startRequested, this, [this](const values::AnimateRequest& r) {
             const QString output = QString::fromStdString(r.output);
             QString error = saveScreenshot(output, r.frame.width, r.frame.height);
             m_screenshotDialog->setMessage(
@@ -78,7 +78,7 @@ void ExportController::showScreenshotDialog() {
                 !error.isEmpty());
         });
     }
-    jobs::AnimateRequest shot = m_screenshotDialog->request();
+    values::AnimateRequest shot = m_screenshotDialog->request();
     const qreal ratio = m_viewport->devicePixelRatioF();
     shot.frame.width = int(m_viewport->width() * ratio);
     shot.frame.height = int(m_viewport->height() * ratio);
@@ -93,7 +93,7 @@ void ExportController::showVideoDialog() {
         m_videoDialog = new widgets::ExportDialog(widgets::ExportDialog::Kind::Video, m_window);
         connect(m_videoDialog, &widgets::ExportDialog::startRequested, this, &ExportController::startVideo);
         connect(m_videoDialog, &widgets::ExportDialog::cancelRequested, m_process, &BatchProcess::cancel);
-        jobs::AnimateRequest first;
+        values::AnimateRequest first;
         first.output = "animation.mp4";
         first.turntable = true; // the workbench offers a turntable first: a still shape's clip would not move
         m_videoDialog->setRequest(first);
@@ -102,14 +102,14 @@ void ExportController::showVideoDialog() {
     m_videoDialog->raise();
 }
 
-jobs::AnimateRequest ExportController::videoRequest(const jobs::AnimateRequest& fromDialog) const {
-    jobs::AnimateRequest request = fromDialog;
+values::AnimateRequest ExportController::videoRequest(const values::AnimateRequest& fromDialog) const {
+    values::AnimateRequest request = fromDialog;
     request.frame = m_document->frame(fromDialog.frame.width, fromDialog.frame.height);
     if (m_clipEnd) request.paramsEnd = m_clipEnd();
     return request;
 }
 
-void ExportController::startVideo(const jobs::AnimateRequest& fromDialog) {
+void ExportController::startVideo(const values::AnimateRequest& fromDialog) {
     m_videoDialog->setRunning(true);
     m_videoDialog->setMessage(tr("Exporting..."), false);
     m_process->start(videoRequest(fromDialog));

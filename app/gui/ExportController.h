@@ -39,13 +39,13 @@ public:
     bool isExporting() const;
     // The animate request an export with `settings` starts: the document's frame (its shown SDF,
     // time and plane; the viewport's camera, shading, trace settings and markers).
-    jobs::AnimateRequest videoRequest(const jobs::AnimateRequest& fromDialog) const; // on the document's frame
+    values::AnimateRequest videoRequest(const values::AnimateRequest& fromDialog) const; // on the document's frame
 
 signals:
     void videoFinished(bool ok, const QString& message);
 
 private:
-    void startVideo(const jobs::AnimateRequest& fromDialog);
+    void startVideo(const values::AnimateRequest& fromDialog);
 
     QWidget* m_window;
     widgets::ViewportWidget* m_viewport;

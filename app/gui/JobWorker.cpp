@@ -43,7 +43,7 @@ void JobWorker::retire() {
 
 qint64 JobWorker::processId() const { return m_process ? m_process->processId() : 0; }
 
-void JobWorker::submit(JobChannel* channel, const jobs::Request& request) {
+void JobWorker::submit(JobChannel* channel, const values::Request& request) {
     m_queue.push_back({channel, jobs::toJson(request)});
     next();
 }
@@ -176,7 +176,7 @@ JobChannel::~JobChannel() {
     if (m_worker) m_worker->forget(this);
 }
 
-bool JobChannel::start(const jobs::Request& request) {
+bool JobChannel::start(const values::Request& request) {
     if (m_running || !m_worker) return false;
     m_running = true;
     m_worker->submit(this, request);

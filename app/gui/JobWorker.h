@@ -51,7 +51,7 @@ private:
         JobChannel* channel;
         std::string line; // the request's JSON
     };
-    void submit(JobChannel* channel, const jobs::Request& request);
+    void submit(JobChannel* channel, const values::Request& request);
     void cancel(JobChannel* channel);
     void forget(JobChannel* channel);
     void next();
@@ -85,7 +85,7 @@ public:
 
     JobWorker* worker() const { return m_worker; }
     // Queues the request. False when one of this channel's is queued or running.
-    bool start(const jobs::Request& request);
+    bool start(const values::Request& request);
     void cancel();
     bool isRunning() const { return m_running; }
     // The last failure as the child reported it (kind, message, the SDF's diagnostics).

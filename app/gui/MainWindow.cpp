@@ -389,7 +389,7 @@ void MainWindow::setUpLog() {
 void MainWindow::loadDatasetItems(const QString& reportPath) {
     // The list job's entries, with the measured type and render time from the dataset report
     // (scripts/dataset_report.py), as `sdfwb --batch list` gives them.
-    jobs::ListRequest request;
+    values::ListRequest request;
     request.report = reportPath.toStdString();
     auto listed = jobs::run(request, {});
     if (!listed) {
@@ -406,7 +406,7 @@ void MainWindow::loadDatasetItems(const QString& reportPath) {
 
 void MainWindow::updatePrecision() {
     const auto floor =
-        renderer::precisionFloor(m_viewport->camera(), m_viewport->trace().epsilonScale, std::max(m_viewport->height(), 1));
+        values::precisionFloor(m_viewport->camera(), m_viewport->trace().epsilonScale, std::max(m_viewport->height(), 1));
     if (floor.exceeded) {
         m_precision->setText(tr("<span style='color:#e04040'>below float32 precision: positions known to %1, hit tolerance %2 "
                                 "(surface noise; bring the camera nearer the origin)</span>")
@@ -445,27 +445,27 @@ void MainWindow::saveAsWithDialog() {
 }
 
 void MainWindow::setBackgroundColour(const glm::vec3& colour) {
-    renderer::ShadingSettings shading = m_viewport->shading();
+    values::ShadingSettings shading = m_viewport->shading();
     shading.background = colour;
     shading.backgroundImage.clear();
     m_viewport->setShading(shading);
 }
 
 void MainWindow::setBackgroundImage(const QString& path) {
-    renderer::ShadingSettings shading = m_viewport->shading();
+    values::ShadingSettings shading = m_viewport->shading();
     shading.backgroundImage = path.toStdString();
     m_viewport->setShading(shading);
 }
 
-void MainWindow::setShadingMode(renderer::ShadingMode mode) {
-    renderer::ShadingSettings shading = m_viewport->shading();
+void MainWindow::setShadingMode(shaders::ShadingMode mode) {
+    values::ShadingSettings shading = m_viewport->shading();
     shading.mode = mode;
     m_viewport->setShading(shading);
     for (QAction* action : m_shadingGroup->actions()) action->setChecked(action->data().toInt() == int(mode));
 }
 
 void MainWindow::setAmbientOcclusion(bool enabled) {
-    renderer::ShadingSettings shading = m_viewport->shading();
+    values::ShadingSettings shading = m_viewport->shading();
     shading.ambientOcclusion = enabled;
     m_viewport->setShading(shading);
     m_aoAction->setChecked(enabled);
@@ -488,7 +488,7 @@ void MainWindow::restoreSession() {
     QSettings settings;
     restoreGeometry(settings.value("window/geometry").toByteArray());
     restoreState(settings.value("window/state").toByteArray());
-    renderer::Camera camera;
+    values::Camera camera;
     auto readVector = [&](const char* key, glm::vec3& value) {
         QList<QVariant> list = settings.value(key).toList();
         if (list.size() == 3)
@@ -501,9 +501,9 @@ void MainWindow::restoreSession() {
     camera.farPlane = settings.value("camera/far", camera.farPlane).toFloat();
     m_viewport->setCamera(camera);
     m_cameraPanel->setCamera(camera);
-    renderer::ShadingSettings shading = m_viewport->shading();
-    shading.mode = renderer::parseShadingMode(settings.value("shading/mode", "gooch").toString().toStdString())
-                       .value_or(renderer::ShadingMode::Gooch);
+    values::ShadingSettings shading = m_viewport->shading();
+    shading.mode = shaders::parseShadingMode(settings.value("shading/mode", "gooch").toString().toStdString())
+                       .value_or(shaders::ShadingMode::Gooch);
     shading.ambientOcclusion = settings.value("shading/ao", false).toBool();
     shading.matcap = settings.value("shading/matcap", "clay").toString().toStdString();
     m_viewport->setShading(shading);
@@ -518,7 +518,7 @@ void MainWindow::saveSession() {
     QSettings settings;
     settings.setValue("window/geometry", saveGeometry());
     settings.setValue("window/state", saveState());
-    const renderer::Camera& camera = m_viewport->camera();
+    const values::Camera& camera = m_viewport->camera();
     auto vector = [](const glm::vec3& v) { return QList<QVariant>{v.x, v.y, v.z}; };
     settings.setValue("camera/position", vector(camera.position));
     settings.setValue("camera/target", vector(camera.target));

@@ -3,7 +3,7 @@
 // session (layout, camera, shading) saved on close and restored on start. It lays widgets out and
 // wires them to controllers; the work happens in the controllers and below.
 
-#include <renderer/RenderSettings.h>
+#include <values/RenderSettings.h>
 
 #include <glm/vec3.hpp>
 
@@ -90,7 +90,7 @@ public:
     void setBackgroundColour(const glm::vec3& colour);
     void setBackgroundImage(const QString& path);
 
-    void setShadingMode(renderer::ShadingMode mode);
+    void setShadingMode(shaders::ShadingMode mode);
     void setAmbientOcclusion(bool enabled);
     // Shows the mesh in `path` over the surface, coloured by its deviation from the field (View >
     // Show mesh deviation; an export shows its mesh by itself). False, with the reason in the

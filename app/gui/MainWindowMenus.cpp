@@ -69,21 +69,20 @@ namespace sdfwb::app {
 
 namespace {
 
-const renderer::ShadingMode kModes[] = {renderer::ShadingMode::Gooch, renderer::ShadingMode::Matcap,
-                                        renderer::ShadingMode::Normals, renderer::ShadingMode::Curvature,
-                                        renderer::ShadingMode::Steps};
+const shaders::ShadingMode kModes[] = {shaders::ShadingMode::Gooch, shaders::ShadingMode::Matcap, shaders::ShadingMode::Normals,
+                                       shaders::ShadingMode::Curvature, shaders::ShadingMode::Steps};
 
-QString modeLabel(renderer::ShadingMode mode) {
+QString modeLabel(shaders::ShadingMode mode) {
     switch (mode) {
-    case renderer::ShadingMode::Gooch:
+    case shaders::ShadingMode::Gooch:
         return QObject::tr("&Gooch (warm/cool)");
-    case renderer::ShadingMode::Matcap:
+    case shaders::ShadingMode::Matcap:
         return QObject::tr("&Matcap");
-    case renderer::ShadingMode::Normals:
+    case shaders::ShadingMode::Normals:
         return QObject::tr("&Normals as RGB");
-    case renderer::ShadingMode::Curvature:
+    case shaders::ShadingMode::Curvature:
         return QObject::tr("&Curvature |H|");
-    case renderer::ShadingMode::Steps:
+    case shaders::ShadingMode::Steps:
         return QObject::tr("&Step-count heat map");
     }
     return {};
@@ -186,7 +185,7 @@ void MainWindow::createViewMenu() {
     QMenu* view = menuBar()->addMenu(tr("&View"));
     QMenu* shadingMenu = view->addMenu(tr("&Shading"));
     m_shadingGroup = new QActionGroup(this);
-    for (renderer::ShadingMode mode : kModes) {
+    for (shaders::ShadingMode mode : kModes) {
         QAction* action = shadingMenu->addAction(modeLabel(mode));
         action->setCheckable(true);
         action->setData(int(mode));
@@ -197,17 +196,17 @@ void MainWindow::createViewMenu() {
     QMenu* matcaps = shadingMenu->addMenu(tr("Matcap &material"));
     for (const char* name : {"clay", "chrome", "jade", "wax"}) {
         matcaps->addAction(QString(name), this, [this, name] {
-            renderer::ShadingSettings shading = m_viewport->shading();
+            values::ShadingSettings shading = m_viewport->shading();
             shading.matcap = name;
             m_viewport->setShading(shading);
-            setShadingMode(renderer::ShadingMode::Matcap);
+            setShadingMode(shaders::ShadingMode::Matcap);
         });
     }
     m_aoAction = view->addAction(tr("&Ambient occlusion"), this, &MainWindow::setAmbientOcclusion);
     m_aoAction->setCheckable(true);
     m_aoAction->setObjectName("ambient_occlusion");
     QAction* relaxation = view->addAction(tr("Over-&relaxed tracing"), this, [this](bool on) {
-        renderer::TraceSettings trace = m_viewport->trace();
+        values::TraceSettings trace = m_viewport->trace();
         trace.overRelaxation = on ? 1.6f : 1.0f;
         m_viewport->setTrace(trace);
     });
@@ -218,7 +217,7 @@ void MainWindow::createViewMenu() {
         auto* group = new QActionGroup(this);
         for (auto [value, label] : choices) {
             QAction* action = menu->addAction(label, this, [this, member, value] {
-                renderer::TraceSettings trace = m_viewport->trace();
+                values::TraceSettings trace = m_viewport->trace();
                 trace.*member = value;
                 m_viewport->setTrace(trace);
             });
@@ -230,12 +229,12 @@ void MainWindow::createViewMenu() {
     };
     // The cone pass and the compute tracer: tried at rest and kept when they make frames faster
     // (auto), or forced.
-    using Cones = renderer::TraceSettings::Cones;
-    using Tracer = renderer::TraceSettings::Tracer;
-    addChoices(tr("&Cone pass"), "cones_", &renderer::TraceSettings::cones, renderer::conesName,
+    using Cones = values::TraceSettings::Cones;
+    using Tracer = values::TraceSettings::Tracer;
+    addChoices(tr("&Cone pass"), "cones_", &values::TraceSettings::cones, values::conesName,
                std::array{std::pair{Cones::Auto, tr("&Automatic (kept when faster)")}, std::pair{Cones::On, tr("&On")},
                           std::pair{Cones::Off, tr("O&ff")}});
-    addChoices(tr("&Tracer"), "tracer_", &renderer::TraceSettings::tracer, renderer::tracerName,
+    addChoices(tr("&Tracer"), "tracer_", &values::TraceSettings::tracer, values::tracerName,
                std::array{std::pair{Tracer::Auto, tr("&Automatic (compute shader kept when faster)")},
                           std::pair{Tracer::Fragment, tr("&Fragment shader")},
                           std::pair{Tracer::Compute, tr("&Compute shader (not with the cutting plane)")}});

@@ -18,7 +18,7 @@
 
 namespace sdfwb::app {
 
-MeshExportController::MeshExportController(QWidget* window, std::function<jobs::SdfInput()> currentSdf, QObject* parent)
+MeshExportController::MeshExportController(QWidget* window, std::function<values::SdfInput()> currentSdf, QObject* parent)
     : QObject(parent), m_window(window), m_currentSdf(std::move(currentSdf)), m_process(new BatchProcess(this)) {
     connect(m_process, &BatchProcess::progress, this, [this](quint64 done, quint64 total) {
         if (m_bar && total > 0) {
@@ -30,7 +30,7 @@ MeshExportController::MeshExportController(QWidget* window, std::function<jobs::
     connect(m_process, &BatchProcess::finished, this,
             [this](bool ok, bool cancelled, const std::string& json, const QString& error) {
                 QString message = error;
-                auto report = ok ? jobs::reportFromJson<jobs::MeshReport>(json) : Expected<jobs::MeshReport>(makeError(""));
+                auto report = ok ? jobs::reportFromJson<values::MeshReport>(json) : Expected<values::MeshReport>(makeError(""));
                 if (ok && !report) {
                     ok = false;
                     message = QString::fromStdString(report.error().message);
@@ -65,8 +65,8 @@ void MeshExportController::setExecutable(const QString& path) { m_process->setEx
 
 bool MeshExportController::isRunning() const { return m_process->isRunning(); }
 
-jobs::MeshRequest MeshExportController::request(const QString& output, int resolution, int refine) const {
-    jobs::MeshRequest request;
+values::MeshRequest MeshExportController::request(const QString& output, int resolution, int refine) const {
+    values::MeshRequest request;
     request.sdf = m_currentSdf();
     request.output = output.toStdString();
     request.resolution = resolution;

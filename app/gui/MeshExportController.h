@@ -25,14 +25,14 @@ class BatchProcess;
 class MeshExportController : public QObject {
     Q_OBJECT
 public:
-    MeshExportController(QWidget* window, std::function<jobs::SdfInput()> currentSdf, QObject* parent = nullptr);
+    MeshExportController(QWidget* window, std::function<values::SdfInput()> currentSdf, QObject* parent = nullptr);
 
     void setExecutable(const QString& path);
     void showDialog();
     QDialog* dialog() const { return m_dialog; }
     bool isRunning() const;
     // The request an export with these settings starts.
-    jobs::MeshRequest request(const QString& output, int resolution, int refine = 0) const;
+    values::MeshRequest request(const QString& output, int resolution, int refine = 0) const;
 
 signals:
     void progress(quint64 done, quint64 total);
@@ -44,7 +44,7 @@ private:
     void start();
 
     QWidget* m_window;
-    std::function<jobs::SdfInput()> m_currentSdf;
+    std::function<values::SdfInput()> m_currentSdf;
     BatchProcess* m_process;
     QDialog* m_dialog = nullptr;
     QLineEdit* m_output = nullptr;

@@ -19,29 +19,29 @@ PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWi
     m_debounce.setInterval(kDebounceMs);
     connect(&m_debounce, &QTimer::timeout, this, &PlaneController::refresh);
     connect(m_panel, &widgets::PlanePanel::planeEdited, m_document, &SdfDocument::setPlane);
-    connect(m_document, &SdfDocument::planeChanged, this, [this](const renderer::CuttingPlane& plane) {
+    connect(m_document, &SdfDocument::planeChanged, this, [this](const values::CuttingPlane& plane) {
         m_panel->setPlane(plane); // no planeEdited: the panel only tells of the user's edits
         m_debounce.start();
     });
     connect(m_panel, &widgets::PlanePanel::applyStepFactor, this, [this](float factor) {
-        renderer::TraceSettings trace = m_viewport->trace();
+        values::TraceSettings trace = m_viewport->trace();
         trace.stepFactor = std::clamp(factor, 0.01f, 1.0f);
         m_viewport->setTrace(trace);
     });
     // Show where: ring the examples, move the plane through the first (the readouts follow).
     connect(m_panel, &widgets::PlanePanel::showWhere, this, [this](const std::vector<glm::vec3>& examples) {
         if (examples.empty()) return;
-        renderer::ShadingSettings shading = m_viewport->shading();
+        values::ShadingSettings shading = m_viewport->shading();
         shading.markers = examples;
         m_viewport->setShading(shading);
-        renderer::CuttingPlane plane = m_document->plane();
+        values::CuttingPlane plane = m_document->plane();
         plane.offset = glm::dot(glm::normalize(plane.normal), examples.front());
         m_document->setPlane(plane);
         emit markersShown(int(examples.size()));
     });
     connect(m_process, &JobChannel::finished, this, [this](bool ok, bool, const std::string& json, const QString& message) {
-        auto report = ok ? jobs::reportFromJson<jobs::AuditJobReport>(json)
-                         : Expected<jobs::AuditJobReport>(makeError(message.toStdString()));
+        auto report = ok ? jobs::reportFromJson<values::AuditJobReport>(json)
+                         : Expected<values::AuditJobReport>(makeError(message.toStdString()));
         if (report && !report->readout) report = makeError("plane readouts: the report holds no readout");
         if (!report) {
             m_panel->setReadoutMessage(QString::fromStdString(report.error().message));
@@ -59,15 +59,15 @@ PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWi
 void PlaneController::setExecutable(const QString& path) { m_process->worker()->setExecutable(path); }
 
 void PlaneController::refresh() {
-    const renderer::CuttingPlane& plane = m_document->plane();
+    const values::CuttingPlane& plane = m_document->plane();
     if (!plane.enabled) return;
     if (m_process->isRunning()) {
         m_pending = true; // one more run with the newest plane when this one ends
         return;
     }
-    jobs::AuditRequest request;
+    values::AuditRequest request;
     request.sdf = m_document->input();
-    request.plane = jobs::PlaneSpec{plane.normal, plane.offset};
+    request.plane = values::PlaneSpec{plane.normal, plane.offset};
     request.resolution = 192;
     request.time = m_document->time();
     m_process->start(request);

@@ -16,13 +16,13 @@ ProbeController::ProbeController(widgets::ProbePanel* panel, widgets::ViewportWi
     connect(m_viewport, &widgets::ViewportWidget::pixelProbed, this, &ProbeController::probe);
     connect(m_process, &JobChannel::finished, this, [this](bool ok, bool, const std::string& json, const QString& message) {
         if (m_next) { // a newer click: show that one
-            jobs::ProbeRequest next = *m_next;
+            values::ProbeRequest next = *m_next;
             m_next.reset();
             m_process->start(next);
             return;
         }
-        auto report =
-            ok ? jobs::reportFromJson<jobs::ProbeReport>(json) : Expected<jobs::ProbeReport>(makeError(message.toStdString()));
+        auto report = ok ? jobs::reportFromJson<values::ProbeReport>(json)
+                         : Expected<values::ProbeReport>(makeError(message.toStdString()));
         if (!report) {
             m_panel->setMessage(tr("Probe failed: %1").arg(QString::fromStdString(report.error().message)));
             log::warning("probe", report.error().message);
@@ -31,7 +31,7 @@ ProbeController::ProbeController(widgets::ProbePanel* panel, widgets::ViewportWi
         }
         m_panel->setReport(*report);
         log::info("probe", "pixel " + std::to_string(report->x) + "," + std::to_string(report->y) + ": " +
-                               jobs::marchEventName(report->outcome) + " after " + std::to_string(report->steps) + " steps, " +
+                               values::marchEventName(report->outcome) + " after " + std::to_string(report->steps) + " steps, " +
                                std::to_string(report->oversteps) + " oversteps");
         emit probed(true);
     });
@@ -41,8 +41,8 @@ void ProbeController::setExecutable(const QString& path) { m_process->worker()->
 
 bool ProbeController::isRunning() const { return m_process->isRunning(); }
 
-jobs::ProbeRequest ProbeController::request(int x, int y, int width, int height) const {
-    jobs::ProbeRequest request;
+values::ProbeRequest ProbeController::request(int x, int y, int width, int height) const {
+    values::ProbeRequest request;
     request.frame = m_document->frame(width, height);
     request.x = x;
     request.y = y;
@@ -50,7 +50,7 @@ jobs::ProbeRequest ProbeController::request(int x, int y, int width, int height)
 }
 
 void ProbeController::probe(int x, int y, int width, int height) {
-    const jobs::ProbeRequest request = this->request(x, y, width, height);
+    const values::ProbeRequest request = this->request(x, y, width, height);
     m_viewport->setProbeMark(QPoint(x, y));
     m_panel->setMessage(tr("Probing pixel (%1, %2)...").arg(x).arg(y));
     if (m_process->isRunning()) {

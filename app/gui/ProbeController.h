@@ -31,7 +31,7 @@ public:
     // Probes pixel (x, y), top row 0, of a width x height frame of the viewport's view.
     void probe(int x, int y, int width, int height);
     // The request such a click sends: the document's frame (the viewport's frame settings whole).
-    jobs::ProbeRequest request(int x, int y, int width, int height) const;
+    values::ProbeRequest request(int x, int y, int width, int height) const;
     bool isRunning() const;
 
 signals:
@@ -41,8 +41,8 @@ private:
     widgets::ProbePanel* m_panel;
     widgets::ViewportWidget* m_viewport;
     SdfDocument* m_document;
-    JobChannel* m_process;                    // on the workbench's persistent worker
-    std::optional<jobs::ProbeRequest> m_next; // clicked while one ran
+    JobChannel* m_process;                      // on the workbench's persistent worker
+    std::optional<values::ProbeRequest> m_next; // clicked while one ran
 };
 
 } // namespace sdfwb::app

@@ -12,7 +12,7 @@
 
 namespace sdfwb::app {
 
-SamplingController::SamplingController(QWidget* window, std::function<jobs::SdfInput()> currentSdf, QObject* parent)
+SamplingController::SamplingController(QWidget* window, std::function<values::SdfInput()> currentSdf, QObject* parent)
     : QObject(parent), m_window(window), m_currentSdf(std::move(currentSdf)), m_process(new BatchProcess(this)) {
     connect(m_process, &BatchProcess::progress, this, [this](quint64 done, quint64 total) {
         if (m_dialog) m_dialog->setProgress(done, total);
@@ -20,7 +20,7 @@ SamplingController::SamplingController(QWidget* window, std::function<jobs::SdfI
     });
     connect(m_process, &BatchProcess::finished, this, [this](bool ok, bool, const std::string& json, const QString& error) {
         QString message = error;
-        auto report = ok ? jobs::reportFromJson<jobs::SampleReport>(json) : Expected<jobs::SampleReport>(makeError(""));
+        auto report = ok ? jobs::reportFromJson<values::SampleReport>(json) : Expected<values::SampleReport>(makeError(""));
         if (ok && !report) {
             ok = false;
             message = QString::fromStdString(report.error().message);
@@ -67,19 +67,19 @@ void SamplingController::showDialog() {
         connect(m_dialog, &widgets::SamplingDialog::pointSizeChanged, this, &SamplingController::pointSizeChanged);
         connect(m_dialog, &widgets::SamplingDialog::cancelRequested, m_process, &BatchProcess::cancel);
     }
-    const jobs::SdfInput sdf = m_currentSdf();
+    const values::SdfInput sdf = m_currentSdf();
     m_dialog->setSdfName(sdf.sdf.empty() ? tr("untitled (the editor's text)") : QString::fromStdString(sdf.sdf));
     m_dialog->show();
     m_dialog->raise();
 }
 
-jobs::SampleRequest SamplingController::requestFor(const jobs::SampleRequest& fromDialog) const {
-    jobs::SampleRequest request = fromDialog;
+values::SampleRequest SamplingController::requestFor(const values::SampleRequest& fromDialog) const {
+    values::SampleRequest request = fromDialog;
     request.sdf = m_currentSdf();
     return request;
 }
 
-void SamplingController::preview(const jobs::SampleRequest& fromDialog) {
+void SamplingController::preview(const values::SampleRequest& fromDialog) {
     if (isRunning()) return;
     if (m_previewFolder.isEmpty()) {
         QTemporaryDir folder(QDir::temp().filePath("sdfwb-preview-XXXXXX"));
@@ -90,7 +90,7 @@ void SamplingController::preview(const jobs::SampleRequest& fromDialog) {
         }
         m_previewFolder = folder.path();
     }
-    jobs::SampleRequest request = requestFor(fromDialog);
+    values::SampleRequest request = requestFor(fromDialog);
     // Rows depend on the seed and their index only, so a preview shows the first points the file
     // will hold (grid and image size their lattice by N: theirs is a coarser lattice).
     request.count = std::min<std::uint64_t>(fromDialog.count, widgets::SamplingDialog::kPreviewPoints);
@@ -106,9 +106,9 @@ SamplingController::~SamplingController() {
     if (!m_previewFolder.isEmpty()) QDir(m_previewFolder).removeRecursively();
 }
 
-void SamplingController::start(const jobs::SampleRequest& fromDialog) {
+void SamplingController::start(const values::SampleRequest& fromDialog) {
     if (isRunning()) return;
-    const jobs::SampleRequest request = requestFor(fromDialog);
+    const values::SampleRequest request = requestFor(fromDialog);
     m_dialog->setRunning(true);
     m_dialog->setMessage(tr("Sampling..."), false);
     m_process->start(request);

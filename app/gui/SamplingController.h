@@ -20,7 +20,7 @@ class SamplingController : public QObject {
     Q_OBJECT
 public:
     // `currentSdf` gives the SDF as the viewport shows it (saved or not).
-    SamplingController(QWidget* window, std::function<jobs::SdfInput()> currentSdf, QObject* parent = nullptr);
+    SamplingController(QWidget* window, std::function<values::SdfInput()> currentSdf, QObject* parent = nullptr);
     ~SamplingController() override;
 
     void setExecutable(const QString& path);
@@ -38,12 +38,12 @@ signals:
     void progress(quint64 done, quint64 total);
 
 private:
-    void start(const jobs::SampleRequest& fromDialog);
-    void preview(const jobs::SampleRequest& fromDialog);
-    jobs::SampleRequest requestFor(const jobs::SampleRequest& fromDialog) const; // the dialog's, on the current SDF
+    void start(const values::SampleRequest& fromDialog);
+    void preview(const values::SampleRequest& fromDialog);
+    values::SampleRequest requestFor(const values::SampleRequest& fromDialog) const; // the dialog's, on the current SDF
 
     QWidget* m_window;
-    std::function<jobs::SdfInput()> m_currentSdf;
+    std::function<values::SdfInput()> m_currentSdf;
     BatchProcess* m_process;
     widgets::SamplingDialog* m_dialog = nullptr;
     QString m_previewFolder; // a temporary folder for previews, removed with the controller

@@ -30,7 +30,7 @@ SdfDocument::SdfDocument(widgets::ViewportWidget* viewport, QObject* parent) : Q
         emit sdfReverted(m_good.path);
     });
     // A Ctrl + drag moves the viewport's plane: the document takes the plane it moved to.
-    connect(m_viewport, &widgets::ViewportWidget::planeDragged, this, [this](const renderer::CuttingPlane& plane) {
+    connect(m_viewport, &widgets::ViewportWidget::planeDragged, this, [this](const values::CuttingPlane& plane) {
         m_plane = plane;
         emit planeChanged(m_plane);
     });
@@ -38,9 +38,9 @@ SdfDocument::SdfDocument(widgets::ViewportWidget* viewport, QObject* parent) : Q
     m_plane = m_viewport->plane();
 }
 
-jobs::FrameRequest SdfDocument::frame(int width, int height) const {
-    jobs::FrameRequest frame;
-    static_cast<jobs::FrameSettings&>(frame) = m_viewport->frameSettings(); // the viewport's, whole
+values::FrameRequest SdfDocument::frame(int width, int height) const {
+    values::FrameRequest frame;
+    static_cast<values::FrameSettings&>(frame) = m_viewport->frameSettings(); // the viewport's, whole
     frame.sdf = input();
     frame.width = width;
     frame.height = height;
@@ -55,17 +55,17 @@ void SdfDocument::setTime(float seconds) {
     emit timeChanged(seconds);
 }
 
-void SdfDocument::setPlane(const renderer::CuttingPlane& plane) {
+void SdfDocument::setPlane(const values::CuttingPlane& plane) {
     m_plane = plane;
     m_viewport->setPlane(plane);
     emit planeChanged(m_plane);
 }
 
-jobs::SdfInput SdfDocument::input() const {
+values::SdfInput SdfDocument::input() const {
     // The viewport's SDF, except before anything compiled and for a new file that has not yet.
     const bool shown = !m_good.text.isEmpty() && (m_good.path == m_path || m_reverted);
-    jobs::SdfInput input{(shown ? m_good.path : m_path).toStdString(), m_entry.toStdString(),
-                         (shown ? m_good.text : m_text).toStdString(), shaders::valuesOf(m_parameterValues)};
+    values::SdfInput input{(shown ? m_good.path : m_path).toStdString(), m_entry.toStdString(),
+                           (shown ? m_good.text : m_text).toStdString(), shaders::valuesOf(m_parameterValues)};
     input.channels.assign(m_channels.begin(), m_channels.end());
     while (!input.channels.empty() && input.channels.back().empty()) input.channels.pop_back();
     if (isMesh()) {

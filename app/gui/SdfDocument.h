@@ -8,9 +8,9 @@
 // diagnostics. Jobs (sampling, exports, plane readouts) take `input()`: the shown text, not the
 // file on disk. Owns its worker threads; never blocks the UI thread.
 
-#include <renderer/RenderSettings.h>
 #include <shaders/Diagnostic.h>
 #include <shaders/SdfSource.h>
+#include <values/RenderSettings.h>
 #include <values/Requests.h>
 
 #include <QObject>
@@ -58,7 +58,7 @@ public:
     bool reverted() const { return m_reverted; }
     // What a job runs on: the path (for includes and labels), the entry, and the viewport's text
     // (the editor's text until something has compiled, and for a newly opened file until it does).
-    jobs::SdfInput input() const;
+    values::SdfInput input() const;
 
     // The parameter values the viewport draws with (and jobs run with); uniforms, no recompile.
     void setParameterValues(const std::vector<shaders::ParameterSetting>& values);
@@ -68,11 +68,11 @@ public:
     // viewport draws with them, and plane readouts, the probe, screenshots and videos run with them.
     void setTime(float seconds);
     float time() const { return m_time; }
-    void setPlane(const renderer::CuttingPlane& plane);
-    const renderer::CuttingPlane& plane() const { return m_plane; }
+    void setPlane(const values::CuttingPlane& plane);
+    const values::CuttingPlane& plane() const { return m_plane; }
     // The frame the viewport shows, as a job takes it (the probe, videos): the shown SDF, the
     // time and the plane from here; the camera, shading, trace settings and overlay from the viewport.
-    jobs::FrameRequest frame(int width, int height) const;
+    values::FrameRequest frame(int width, int height) const;
 
     // Schedules a check of `text` after the debounce delay; newer text supersedes older.
     void textEdited(const QString& text);
@@ -109,7 +109,7 @@ signals:
     void signaturesChanged(const QStringList& signatures);
     // The time or the plane changed (through the setters, or a Ctrl + drag in the viewport).
     void timeChanged(float seconds);
-    void planeChanged(const sdfwb::renderer::CuttingPlane& plane);
+    void planeChanged(const sdfwb::values::CuttingPlane& plane);
 
 private:
     void startCheck(const QString& text);
@@ -138,7 +138,7 @@ private:
     QStringList m_fileSignatures;
     std::vector<shaders::ParameterSetting> m_parameterValues;
     float m_time = 0.0f;
-    renderer::CuttingPlane m_plane;
+    values::CuttingPlane m_plane;
 };
 
 } // namespace sdfwb::app

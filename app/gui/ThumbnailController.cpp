@@ -75,10 +75,10 @@ void ThumbnailController::request(const QStringList& sdfPaths) {
         m_process->start(m_executable, {"--batch", "request", "-", "--protocol", "--each-line", "--quiet"});
     }
     for (const QString& sdf : missing) {
-        jobs::RenderRequest request;
+        values::RenderRequest request;
         request.frame.sdf.sdf = sdf.toStdString();
         request.frame.width = request.frame.height = kSize;
-        request.frame.shading.mode = renderer::ShadingMode::Gooch;
+        request.frame.shading.mode = shaders::ShadingMode::Gooch;
         const QString destination = thumbnailPath(sdf);
         request.output = destination.toStdString();
         m_destination.insert(sdf, destination);

@@ -5,11 +5,11 @@
 
 namespace sdfwb::jobs {
 
-JobResult<AuditJobReport> run(const AuditRequest& request, const ProgressSink& progress) {
+JobResult<values::AuditJobReport> run(const values::AuditRequest& request, const ProgressSink& progress) {
     if (auto error = validate(request)) return *error;
     auto sdf = openSdf(request.sdf, "audit");
     if (!sdf) return sdf.error;
-    AuditJobReport report;
+    values::AuditJobReport report;
     report.sdf = sdf->label;
     report.entry = sdf->prepared.signature.entry;
     report.meshSource = sdf->meshSource();
@@ -58,11 +58,11 @@ JobResult<AuditJobReport> run(const AuditRequest& request, const ProgressSink& p
         auto volume = sampling::auditField(sdf->prepared, options, step);
         if (progress.isCancelled()) return JobError{Failure::Cancelled, "audit: cancelled", {}};
         if (!volume) return JobError{Failure::Work, volume.error().message, {}};
-        AuditInstance instance;
+        values::AuditInstance instance;
         instance.parameters = shaders::valuesOf(resolved->settings);
         instance.verdict = volume->verdict;
         instance.reason = volume->reason;
-        for (const sampling::AuditFlag& flag : volume->flags) instance.flags.push_back(flag.finding);
+        for (const values::AuditFlag& flag : volume->flags) instance.flags.push_back(flag.finding);
         instance.lipschitz = volume->lipschitz;
         instance.lipschitzMax = volume->lipschitzMax;
         instance.exactnessP99 = volume->exactnessP99;

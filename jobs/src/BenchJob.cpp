@@ -6,7 +6,7 @@
 
 namespace sdfwb::jobs {
 
-JobResult<BenchReport> run(const BenchRequest& request, const ProgressSink& progress) {
+JobResult<values::BenchReport> run(const values::BenchRequest& request, const ProgressSink& progress) {
     if (auto error = validate(request)) return *error;
     bench::BenchOptions options;
     options.outputDirectory = request.outputDirectory;
@@ -17,7 +17,7 @@ JobResult<BenchReport> run(const BenchRequest& request, const ProgressSink& prog
                           request.outputDirectory + " --repeats " + std::to_string(request.repeats);
     auto files = bench::runBenchmarks(options, progress);
     if (!files) return JobError{Failure::Work, files.error().message, {}};
-    BenchReport report;
+    values::BenchReport report;
     report.markdown = files->markdown.string();
     report.csvDirectory = files->csvDirectory.string();
     report.imageDirectory = files->imageDirectory.string();

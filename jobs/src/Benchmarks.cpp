@@ -3,13 +3,13 @@
 #include "References.h"
 
 #include <core/TextFile.h>
-#include <renderer/Camera.h>
 #include <renderer/OffscreenRenderer.h>
 #include <renderer/SampleCompute.h>
 #include <renderer/SdfRenderer.h>
 #include <sampling/FieldAudit.h>
 #include <sampling/SamplerLibrary.h>
 #include <shaders/SdfSource.h>
+#include <values/Camera.h>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -111,7 +111,7 @@ Expected<Report> tracerBenchmark(const BenchOptions& options) {
                               {"plain + cone pass", 1.0f, 1.0f, true}};
     std::vector<float> tolerances =
         options.quick ? std::vector<float>{2.0f, 0.5f} : std::vector<float>{4.0f, 2.0f, 1.0f, 0.5f, 0.25f, 0.1f, 0.05f};
-    const renderer::Camera camera;
+    const values::Camera camera;
 
     Report report;
     report.csv =
@@ -136,21 +136,21 @@ Expected<Report> tracerBenchmark(const BenchOptions& options) {
         std::vector<double> reference(std::size_t(width) * std::size_t(height), -1.0);
         for (int y = 0; y < height; ++y)
             for (int x = 0; x < width; ++x) {
-                const glm::dvec3 direction = renderer::primaryRayDirection(camera, x, y, width, height);
+                const glm::dvec3 direction = values::primaryRayDirection(camera, x, y, width, height);
                 if (auto t = intersect(shape.shape, glm::dvec3(camera.position), direction))
                     reference[std::size_t(y * width + x)] = *t;
             }
         for (const Method& method : methods)
             for (float tolerance : tolerances) {
                 renderer::SdfRenderer sdfRenderer;
-                renderer::ShadingSettings shading;
+                values::ShadingSettings shading;
                 shading.statsOutput = true;
-                renderer::TraceSettings trace;
+                values::TraceSettings trace;
                 trace.overRelaxation = method.relaxation;
                 trace.stepFactor = method.stepFactor;
                 trace.epsilonScale = tolerance;
                 trace.maxSteps = 512;
-                trace.cones = method.cones ? renderer::TraceSettings::Cones::On : renderer::TraceSettings::Cones::Off;
+                trace.cones = method.cones ? values::TraceSettings::Cones::On : values::TraceSettings::Cones::Off;
                 (void)sdfRenderer.setShading(shading);
                 (void)sdfRenderer.setTrace(trace);
                 if (auto d = sdfRenderer.setSdf(prepare(shape.glsl, shape.name)); shaders::hasErrors(d))

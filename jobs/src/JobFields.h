@@ -8,7 +8,7 @@
 
 namespace sdfwb::jobs::detail {
 
-template <class V> void fields(V& v, SdfInput& s) {
+template <class V> void fields(V& v, values::SdfInput& s) {
     v("sdf", s.sdf);
     v("entry", s.entry);
     v("source", s.source);
@@ -18,7 +18,7 @@ template <class V> void fields(V& v, SdfInput& s) {
     v("normalize", s.normalize);
 }
 
-template <class V> void fields(V& v, renderer::ShadingSettings& s) {
+template <class V> void fields(V& v, values::ShadingSettings& s) {
     v("mode", s.mode);
     v("ambient_occlusion", s.ambientOcclusion);
     v("background", s.background);
@@ -29,7 +29,7 @@ template <class V> void fields(V& v, renderer::ShadingSettings& s) {
     v("markers", s.markers);
 }
 
-template <class V> void fields(V& v, renderer::TraceSettings& t) {
+template <class V> void fields(V& v, values::TraceSettings& t) {
     v("max_steps", t.maxSteps);
     v("step_factor", t.stepFactor);
     v("epsilon_scale", t.epsilonScale);
@@ -40,7 +40,7 @@ template <class V> void fields(V& v, renderer::TraceSettings& t) {
     v("tracer", t.tracer);
 }
 
-template <class V> void fields(V& v, renderer::Camera& c) {
+template <class V> void fields(V& v, values::Camera& c) {
     v("position", c.position);
     v("target", c.target);
     v("up", c.up);
@@ -49,7 +49,7 @@ template <class V> void fields(V& v, renderer::Camera& c) {
     v("far", c.farPlane);
 }
 
-template <class V> void fields(V& v, renderer::CuttingPlane& p) {
+template <class V> void fields(V& v, values::CuttingPlane& p) {
     v("enabled", p.enabled);
     v("normal", p.normal);
     v("offset", p.offset);
@@ -59,7 +59,7 @@ template <class V> void fields(V& v, renderer::CuttingPlane& p) {
     v("lipschitz_overlay", p.lipschitzOverlay);
 }
 
-template <class V> void fields(V& v, FrameRequest& f) {
+template <class V> void fields(V& v, values::FrameRequest& f) {
     fields(v, f.sdf);
     v("width", f.width);
     v("height", f.height);
@@ -71,13 +71,13 @@ template <class V> void fields(V& v, FrameRequest& f) {
     v("overlay", f.overlay);
 }
 
-template <class V> void fields(V& v, RenderRequest& r) {
+template <class V> void fields(V& v, values::RenderRequest& r) {
     fields(v, r.frame);
     v("output", r.output);
     v("shadertoy_picture", r.shadertoyPicture);
 }
 
-template <class V> void fields(V& v, AnimateRequest& r) {
+template <class V> void fields(V& v, values::AnimateRequest& r) {
     fields(v, r.frame);
     v("output", r.output);
     v("seconds", r.seconds);
@@ -86,7 +86,7 @@ template <class V> void fields(V& v, AnimateRequest& r) {
     v("params_end", r.paramsEnd);
 }
 
-template <class V> void fields(V& v, SampleRequest& r) {
+template <class V> void fields(V& v, values::SampleRequest& r) {
     fields(v, r.sdf);
     v("pattern", r.pattern);
     v("n", r.count);
@@ -112,7 +112,7 @@ template <class V, class T> void renamed(V& v, const char* key, const char* oldK
     v(key, value);
 }
 
-template <class V> void fields(V& v, AuditRequest& r) {
+template <class V> void fields(V& v, values::AuditRequest& r) {
     fields(v, r.sdf);
     v("samples", r.samples);
     v("seed", r.seed);
@@ -124,17 +124,17 @@ template <class V> void fields(V& v, AuditRequest& r) {
     v("randomize", r.family.randomize);
 }
 
-template <class V> void fields(V& v, MergeRequest& r) {
+template <class V> void fields(V& v, values::MergeRequest& r) {
     v("output", r.output);
     v("format", r.format);
     v("parts", r.parts);
 }
 
-template <class V> void fields(V& v, ListRequest& r) { v("report", r.report); }
+template <class V> void fields(V& v, values::ListRequest& r) { v("report", r.report); }
 
-template <class V> void fields(V& v, ParamsRequest& r) { fields(v, r.sdf); }
+template <class V> void fields(V& v, values::ParamsRequest& r) { fields(v, r.sdf); }
 
-template <class V> void fields(V& v, MeshRequest& r) {
+template <class V> void fields(V& v, values::MeshRequest& r) {
     fields(v, r.sdf);
     v("output", r.output);
     v("resolution", r.resolution);
@@ -148,7 +148,7 @@ template <class V> void fields(V& v, MeshRequest& r) {
     v("self_intersections", r.selfIntersections);
 }
 
-template <class V> void fields(V& v, EvalRequest& r) {
+template <class V> void fields(V& v, values::EvalRequest& r) {
     fields(v, r.sdf);
     v("mesh", r.mesh);
     v("points", r.points);
@@ -162,7 +162,7 @@ template <class V> void fields(V& v, EvalRequest& r) {
     v("seed", r.seed);
 }
 
-template <class V> void fields(V& v, RunRequest& r) {
+template <class V> void fields(V& v, values::RunRequest& r) {
     v("manifest", r.manifest);
     v("status", r.status);
     v("item_timeout", r.itemTimeout);
@@ -174,13 +174,13 @@ template <class V> void fields(V& v, RunRequest& r) {
     v("python", r.python);
 }
 
-template <class V> void fields(V& v, ProbeRequest& r) {
+template <class V> void fields(V& v, values::ProbeRequest& r) {
     fields(v, r.frame);
     v("x", r.x);
     v("y", r.y);
 }
 
-template <class V> void fields(V& v, ProbeStep& s) {
+template <class V> void fields(V& v, values::ProbeStep& s) {
     v("event", s.event);
     v("t", s.t);
     v("position", s.position);
@@ -190,7 +190,7 @@ template <class V> void fields(V& v, ProbeStep& s) {
     v("overstep", s.overstep);
 }
 
-template <class V> void fields(V& v, ProbeReport& r) {
+template <class V> void fields(V& v, values::ProbeReport& r) {
     v("sdf", r.sdf);
     v("entry", r.entry);
     v("width", r.width);
@@ -217,7 +217,7 @@ template <class V> void fields(V& v, ProbeReport& r) {
     v("mesh_source", r.meshSource);
 }
 
-template <class V> void fields(V& v, RunItemReport& r) {
+template <class V> void fields(V& v, values::RunItemReport& r) {
     v("index", r.index);
     v("line", r.line);
     v("task", r.task);
@@ -234,7 +234,7 @@ template <class V> void fields(V& v, RunItemReport& r) {
     v("finished", r.finished);
 }
 
-template <class V> void fields(V& v, RunReport& r) {
+template <class V> void fields(V& v, values::RunReport& r) {
     v("manifest", r.manifest);
     v("status", r.status);
     v("rank", r.rank);
@@ -250,7 +250,7 @@ template <class V> void fields(V& v, RunReport& r) {
     v("results", r.results);
 }
 
-template <class V> void fields(V& v, EvalEdges& e) {
+template <class V> void fields(V& v, values::EvalEdges& e) {
     v("chamfer_l1", e.chamferL1);
     v("fscore", e.fscore);
     v("precision", e.precision);
@@ -262,7 +262,7 @@ template <class V> void fields(V& v, EvalEdges& e) {
     v("surface_points", e.surfacePoints);
 }
 
-template <class V> void fields(V& v, EvalReport& r) {
+template <class V> void fields(V& v, values::EvalReport& r) {
     v("mesh", r.mesh);
     v("sdf", r.sdf);
     v("vertices", r.vertices);
@@ -294,7 +294,7 @@ template <class V> void fields(V& v, EvalReport& r) {
     v("seconds", r.seconds);
 }
 
-template <class V> void fields(V& v, MeshReport& r) {
+template <class V> void fields(V& v, values::MeshReport& r) {
     v("output", r.output);
     v("sdf", r.sdf);
     v("entry", r.entry);
@@ -340,12 +340,12 @@ template <class V> void fields(V& v, MeshReport& r) {
     v("seconds", r.seconds);
 }
 
-template <class V> void fields(V& v, PhaseTime& p) {
+template <class V> void fields(V& v, values::PhaseTime& p) {
     v("name", p.name);
     v("seconds", p.seconds);
 }
 
-template <class V> void fields(V& v, ParamItem& p) {
+template <class V> void fields(V& v, values::ParamItem& p) {
     v("name", p.name);
     v("type", p.type);
     v("default", p.value);
@@ -359,20 +359,20 @@ template <class V> void fields(V& v, ParamItem& p) {
     v("column", p.column);
 }
 
-template <class V> void fields(V& v, ParamsReport& r) {
+template <class V> void fields(V& v, values::ParamsReport& r) {
     v("sdf", r.sdf);
     v("parameters", r.parameters);
     v("warnings", r.warnings);
 }
 
-template <class V> void fields(V& v, BenchRequest& r) {
+template <class V> void fields(V& v, values::BenchRequest& r) {
     v("output", r.outputDirectory);
     v("repeats", r.repeats);
     v("quick", r.quick);
     v("no_plots", r.noPlots);
 }
 
-template <class V> void fields(V& v, RenderReport& r) {
+template <class V> void fields(V& v, values::RenderReport& r) {
     v("output", r.output);
     v("sdf", r.sdf);
     v("entry", r.entry);
@@ -386,7 +386,7 @@ template <class V> void fields(V& v, RenderReport& r) {
     v("warnings", r.warnings);
 }
 
-template <class V> void fields(V& v, AnimateReport& r) {
+template <class V> void fields(V& v, values::AnimateReport& r) {
     v("output", r.output);
     v("sdf", r.sdf);
     v("frames", r.frames);
@@ -399,7 +399,7 @@ template <class V> void fields(V& v, AnimateReport& r) {
     v("warnings", r.warnings);
 }
 
-template <class V> void fields(V& v, SampleReport& r) {
+template <class V> void fields(V& v, values::SampleReport& r) {
     v("output", r.output);
     v("format", r.format);
     v("sdf", r.sdf);
@@ -421,7 +421,7 @@ template <class V> void fields(V& v, SampleReport& r) {
     v("warnings", r.warnings);
 }
 
-template <class V> void fields(V& v, SampleInstance& i) {
+template <class V> void fields(V& v, values::SampleInstance& i) {
     v("output", i.output);
     v("parameters", i.parameters);
     v("rows", i.rows);
@@ -429,7 +429,7 @@ template <class V> void fields(V& v, SampleInstance& i) {
     v("seconds", i.seconds);
 }
 
-template <class V> void fields(V& v, AuditInstance& i) {
+template <class V> void fields(V& v, values::AuditInstance& i) {
     v("parameters", i.parameters);
     v("verdict", i.verdict);
     v("reason", i.reason);
@@ -440,14 +440,14 @@ template <class V> void fields(V& v, AuditInstance& i) {
     v("seconds", i.seconds);
 }
 
-template <class V> void fields(V& v, MergeReport& r) {
+template <class V> void fields(V& v, values::MergeReport& r) {
     v("output", r.output);
     v("rows", r.rows);
     v("parts", r.parts);
     v("seconds", r.seconds);
 }
 
-template <class V> void fields(V& v, sampling::AuditFlag& f) {
+template <class V> void fields(V& v, values::AuditFlag& f) {
     v("flag", f.finding);
     v("evidence", f.evidence);
     v("value", f.value);
@@ -458,7 +458,7 @@ template <class V> void fields(V& v, sampling::AuditFlag& f) {
     v("examples", f.examples);
 }
 
-template <class V> void fields(V& v, sampling::QuotientScale& q) {
+template <class V> void fields(V& v, values::QuotientScale& q) {
     v("scale", q.step);
     v("p50", q.p50);
     v("p99", q.p99);
@@ -466,14 +466,14 @@ template <class V> void fields(V& v, sampling::QuotientScale& q) {
     v("max", q.max);
 }
 
-template <class V> void fields(V& v, sampling::ConvergencePoint& c) {
+template <class V> void fields(V& v, values::ConvergencePoint& c) {
     v("samples", c.samples);
     v("lipschitz", c.lipschitz);
     v("exactness_p99", c.exactnessP99);
     v("seconds", c.seconds);
 }
 
-template <class V> void fields(V& v, sampling::AuditReport& r) {
+template <class V> void fields(V& v, values::AuditReport& r) {
     v("verdict", r.verdict);
     v("reason", r.reason);
     v("flags", r.flags);
@@ -501,7 +501,7 @@ template <class V> void fields(V& v, sampling::AuditReport& r) {
     v("seconds", r.seconds);
 }
 
-template <class V> void fields(V& v, sampling::PlaneReadout& r) {
+template <class V> void fields(V& v, values::PlaneReadout& r) {
     v("resolution", r.resolution);
     v("points", r.points);
     v("minimum", r.minimum);
@@ -518,7 +518,7 @@ template <class V> void fields(V& v, sampling::PlaneReadout& r) {
     v("seconds", r.seconds);
 }
 
-template <class V> void fields(V& v, ListItem& i) {
+template <class V> void fields(V& v, values::ListItem& i) {
     v("name", i.name);
     v("category", i.category);
     v("declared_type", i.declaredType);
@@ -531,7 +531,7 @@ template <class V> void fields(V& v, ListItem& i) {
     v("render_ms", i.renderMilliseconds);
 }
 
-template <class V> void fields(V& v, ListReport& r) {
+template <class V> void fields(V& v, values::ListReport& r) {
     v("sdfs", r.items);
     v("problems", r.problems);
     v("root", r.root);
@@ -540,7 +540,7 @@ template <class V> void fields(V& v, ListReport& r) {
     v("measured_date", r.measuredDate);
 }
 
-template <class V> void fields(V& v, BenchReport& r) {
+template <class V> void fields(V& v, values::BenchReport& r) {
     v("markdown", r.markdown);
     v("csv_directory", r.csvDirectory);
     v("image_directory", r.imageDirectory);

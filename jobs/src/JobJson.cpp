@@ -33,11 +33,11 @@ concept Described = requires(Writer& w, T& t) {
 
 json encode(bool value) { return value; }
 json encode(const std::string& value) { return value; }
-json encode(renderer::ShadingMode mode) { return renderer::shadingModeName(mode); }
-json encode(renderer::TraceSettings::Cones cones) { return renderer::conesName(cones); }
-json encode(renderer::TraceSettings::Tracer tracer) { return renderer::tracerName(tracer); }
-json encode(MarchEvent event) { return marchEventName(event); }
-json encode(sampling::Finding finding) { return sampling::findingName(finding); }
+json encode(shaders::ShadingMode mode) { return shaders::shadingModeName(mode); }
+json encode(values::TraceSettings::Cones cones) { return values::conesName(cones); }
+json encode(values::TraceSettings::Tracer tracer) { return values::tracerName(tracer); }
+json encode(values::MarchEvent event) { return marchEventName(event); }
+json encode(values::Finding finding) { return values::findingName(finding); }
 // A float as the shortest decimal that reads back as the same float (0.01f is 0.01, not
 // 0.009999999776482582): written as that double, it parses back to the same float bits.
 json encode(float value) {
@@ -47,7 +47,7 @@ json encode(float value) {
     return std::strtod(std::string(text, end).c_str(), nullptr);
 }
 // A mesh's provenance as the object its text holds (null for a GLSL SDF).
-json encode(const MeshSource& source) {
+json encode(const values::MeshSource& source) {
     if (source.json.empty()) return nullptr;
     json parsed = json::parse(source.json, nullptr, false); // no exceptions: text that is no JSON stays text
     return parsed.is_discarded() ? json(source.json) : parsed;
@@ -68,7 +68,7 @@ json encode(const std::vector<shaders::ParameterValue>& values) {
     return out;
 }
 json encode(const shaders::ParameterSweep& sweep) { return shaders::formatParameterSweep(sweep); }
-json encode(const PlaneSpec& p) {
+json encode(const values::PlaneSpec& p) {
     return json::array({encode(p.normal.x), encode(p.normal.y), encode(p.normal.z), encode(p.offset)});
 }
 template <class T>
@@ -135,7 +135,7 @@ bool decode(const json& in, bool& value, const std::string& path, bool, std::str
     return true;
 }
 
-bool decode(const json& in, MeshSource& value, const std::string& path, bool, std::string& error) {
+bool decode(const json& in, values::MeshSource& value, const std::string& path, bool, std::string& error) {
     if (in.is_null()) return value.json.clear(), true;
     if (!in.is_object()) return fail(error, path, "an object or null", in);
     value.json = in.dump();
@@ -217,7 +217,7 @@ bool decode(const json& in, shaders::ParameterSweep& value, const std::string& p
     return true;
 }
 
-bool decode(const json& in, PlaneSpec& value, const std::string& path, bool, std::string& error) {
+bool decode(const json& in, values::PlaneSpec& value, const std::string& path, bool, std::string& error) {
     if (!in.is_array() || in.size() != 4) return fail(error, path, "[nx, ny, nz, offset]", in);
     for (const json& item : in)
         if (!item.is_number()) return fail(error, path, "[nx, ny, nz, offset]", in);
@@ -238,26 +238,25 @@ bool decodeNamed(const json& in, Enum& value, const std::string& path, std::stri
     return true;
 }
 
-bool decode(const json& in, renderer::ShadingMode& value, const std::string& path, bool, std::string& error) {
-    return decodeNamed(in, value, path, error, renderer::parseShadingMode,
-                       "a shading mode (" + renderer::shadingModeNames() + ")");
+bool decode(const json& in, shaders::ShadingMode& value, const std::string& path, bool, std::string& error) {
+    return decodeNamed(in, value, path, error, shaders::parseShadingMode, "a shading mode (" + shaders::shadingModeNames() + ")");
 }
 
-bool decode(const json& in, renderer::TraceSettings::Cones& value, const std::string& path, bool, std::string& error) {
-    return decodeNamed(in, value, path, error, renderer::parseCones, "auto, off or on");
+bool decode(const json& in, values::TraceSettings::Cones& value, const std::string& path, bool, std::string& error) {
+    return decodeNamed(in, value, path, error, values::parseCones, "auto, off or on");
 }
 
-bool decode(const json& in, renderer::TraceSettings::Tracer& value, const std::string& path, bool, std::string& error) {
-    return decodeNamed(in, value, path, error, renderer::parseTracer, "auto, fragment or compute");
+bool decode(const json& in, values::TraceSettings::Tracer& value, const std::string& path, bool, std::string& error) {
+    return decodeNamed(in, value, path, error, values::parseTracer, "auto, fragment or compute");
 }
 
-bool decode(const json& in, MarchEvent& value, const std::string& path, bool, std::string& error) {
-    return decodeNamed(in, value, path, error, parseMarchEvent, "a march event (step, hit, left the box, ...)");
+bool decode(const json& in, values::MarchEvent& value, const std::string& path, bool, std::string& error) {
+    return decodeNamed(in, value, path, error, values::parseMarchEvent, "a march event (step, hit, left the box, ...)");
 }
 
-bool decode(const json& in, sampling::Finding& value, const std::string& path, bool, std::string& error) {
+bool decode(const json& in, values::Finding& value, const std::string& path, bool, std::string& error) {
     return decodeNamed(
-        in, value, path, error, [](const std::string& name) { return valueNamed(sampling::kFindingNames, name); },
+        in, value, path, error, [](const std::string& name) { return valueNamed(values::kFindingNames, name); },
         "an audit finding (exact, conservative, non-conservative, truncated, ...)");
 }
 
@@ -331,34 +330,34 @@ std::string dump(const json& value, int indent) { return value.dump(indent, ' ',
 
 } // namespace
 
-std::string toJson(const Request& request, int indent) {
+std::string toJson(const values::Request& request, int indent) {
     json out = {{"kind", kindName(request)}};
     std::visit([&](const auto& r) { out.update(encode(r)); }, request);
     return dump(out, indent);
 }
 
-Expected<Request> requestFromJson(const std::string& text) {
+Expected<values::Request> requestFromJson(const std::string& text) {
     std::string error;
     auto in = parse(text, error);
     if (!in) return makeError("request: " + error);
     if (!in->is_object()) return makeError("request: expected a JSON object with a \"kind\"");
     auto kind = in->find("kind");
-    if (kind == in->end() || !kind->is_string()) return makeError("request: missing \"kind\" (" + jobKindNames() + ")");
+    if (kind == in->end() || !kind->is_string()) return makeError("request: missing \"kind\" (" + values::jobKindNames() + ")");
     const std::string name = kind->get<std::string>();
     // The kind's request type from the one table (values/JobKinds.h), its former name included.
-    return withJobKind(
+    return values::withJobKind(
         name,
-        [&]<class T>(T*) -> Expected<Request> {
+        [&]<class T>(T*) -> Expected<values::Request> {
             auto value = readObject<T>(*in, true, (name + " request").c_str());
             if (!value) return value.error();
-            return Request(std::move(*value));
+            return values::Request(std::move(*value));
         },
-        Expected<Request>(makeError("request: unknown kind '" + name + "' (" + jobKindNames() + ")")));
+        Expected<values::Request>(makeError("request: unknown kind '" + name + "' (" + values::jobKindNames() + ")")));
 }
 
 namespace {
 
-json encodeAudit(const AuditJobReport& report) {
+json encodeAudit(const values::AuditJobReport& report) {
     json out = {{"sdf", report.sdf}, {"entry", report.entry}};
     out["parameters"] = encode(report.parameters);
     out["mesh_source"] = encode(report.meshSource);
@@ -367,7 +366,7 @@ json encodeAudit(const AuditJobReport& report) {
         out["truncation_reach"] = report.truncationReach;
         out["family"] = encode(report.family);
     } else if (report.readout) {
-        out["plane"] = encode(report.plane.value_or(PlaneSpec{}));
+        out["plane"] = encode(report.plane.value_or(values::PlaneSpec{}));
         out.update(encode(*report.readout));
         out["histogram_bin_width"] = 0.05;
     } else if (report.volume) {
@@ -378,20 +377,20 @@ json encodeAudit(const AuditJobReport& report) {
     if (out.contains("flags")) {
         const auto& flags = report.readout ? report.readout->flags : report.volume->flags;
         for (std::size_t i = 0; i < flags.size(); ++i)
-            for (const auto& [name, value] : sampling::namedFigures(flags[i])) out["flags"][i][name] = value;
+            for (const auto& [name, value] : values::namedFigures(flags[i])) out["flags"][i][name] = value;
     }
     return out;
 }
 
 } // namespace
 
-std::string toJson(const RenderReport& report, int indent) { return dump(encode(report), indent); }
-std::string toJson(const AnimateReport& report, int indent) { return dump(encode(report), indent); }
-std::string toJson(const SampleReport& report, int indent) { return dump(encode(report), indent); }
-std::string toJson(const MergeReport& report, int indent) { return dump(encode(report), indent); }
-std::string toJson(const ListReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const values::RenderReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const values::AnimateReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const values::SampleReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const values::MergeReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const values::ListReport& report, int indent) { return dump(encode(report), indent); }
 
-Expected<void> addDatasetMeasurements(const std::string& reportText, ListReport& report) {
+Expected<void> addDatasetMeasurements(const std::string& reportText, values::ListReport& report) {
     const json root = json::parse(reportText, nullptr, false);
     if (root.is_discarded() || !root.is_object()) return makeError("not a JSON object");
     auto text = [](const json& object, const char* key) {
@@ -405,7 +404,7 @@ Expected<void> addDatasetMeasurements(const std::string& reportText, ListReport&
     for (const json& entry : *sdfs) {
         if (!entry.is_object()) continue;
         const std::string name = text(entry, "name");
-        for (ListItem& item : report.items) {
+        for (values::ListItem& item : report.items) {
             if (item.name != name) continue;
             item.measuredType = text(entry, "measured_type");
             if (const auto ms = entry.find("render_ms"); ms != entry.end() && ms->is_number())
@@ -414,14 +413,14 @@ Expected<void> addDatasetMeasurements(const std::string& reportText, ListReport&
     }
     return {};
 }
-std::string toJson(const BenchReport& report, int indent) { return dump(encode(report), indent); }
-std::string toJson(const ParamsReport& report, int indent) { return dump(encode(report), indent); }
-std::string toJson(const MeshReport& report, int indent) { return dump(encode(report), indent); }
-std::string toJson(const EvalReport& report, int indent) { return dump(encode(report), indent); }
-std::string toJson(const RunReport& report, int indent) { return dump(encode(report), indent); }
-std::string toJson(const ProbeReport& report, int indent) { return dump(encode(report), indent); }
-std::string toJson(const RunItemReport& report, int indent) { return dump(encode(report), indent); }
-std::string toJson(const AuditJobReport& report, int indent) { return dump(encodeAudit(report), indent); }
+std::string toJson(const values::BenchReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const values::ParamsReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const values::MeshReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const values::EvalReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const values::RunReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const values::ProbeReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const values::RunItemReport& report, int indent) { return dump(encode(report), indent); }
+std::string toJson(const values::AuditJobReport& report, int indent) { return dump(encodeAudit(report), indent); }
 
 template <class T> Expected<T> reportFromJson(const std::string& text) {
     std::string error;
@@ -430,12 +429,12 @@ template <class T> Expected<T> reportFromJson(const std::string& text) {
     return readObject<T>(*in, false, "report");
 }
 
-template <> Expected<AuditJobReport> reportFromJson<AuditJobReport>(const std::string& text) {
+template <> Expected<values::AuditJobReport> reportFromJson<values::AuditJobReport>(const std::string& text) {
     std::string error;
     auto in = parse(text, error);
     if (!in) return makeError("report: " + error);
     if (!in->is_object()) return makeError("report: expected a JSON object");
-    AuditJobReport report;
+    values::AuditJobReport report;
     auto read = [&](const char* key, auto& value) {
         if (auto it = in->find(key); it != in->end() && error.empty()) decode(*it, value, key, false, error);
     };
@@ -449,12 +448,12 @@ template <> Expected<AuditJobReport> reportFromJson<AuditJobReport>(const std::s
         read("family", report.family);
     } else if (in->contains("plane")) {
         read("plane", report.plane);
-        auto readout = readObject<sampling::PlaneReadout>(*in, false, "report");
+        auto readout = readObject<values::PlaneReadout>(*in, false, "report");
         if (!readout) return readout.error();
         report.readout = std::move(*readout);
     } else {
         read(in->contains("truncation_reach") ? "truncation_reach" : "probe_distance", report.truncationReach);
-        auto volume = readObject<sampling::AuditReport>(*in, false, "report");
+        auto volume = readObject<values::AuditReport>(*in, false, "report");
         if (!volume) return volume.error();
         report.volume = std::move(*volume);
     }
@@ -462,18 +461,18 @@ template <> Expected<AuditJobReport> reportFromJson<AuditJobReport>(const std::s
     return report;
 }
 
-template Expected<RenderReport> reportFromJson<RenderReport>(const std::string&);
-template Expected<AnimateReport> reportFromJson<AnimateReport>(const std::string&);
-template Expected<SampleReport> reportFromJson<SampleReport>(const std::string&);
-template Expected<MergeReport> reportFromJson<MergeReport>(const std::string&);
-template Expected<ListReport> reportFromJson<ListReport>(const std::string&);
-template Expected<BenchReport> reportFromJson<BenchReport>(const std::string&);
-template Expected<ParamsReport> reportFromJson<ParamsReport>(const std::string&);
-template Expected<MeshReport> reportFromJson<MeshReport>(const std::string&);
-template Expected<EvalReport> reportFromJson<EvalReport>(const std::string&);
-template Expected<RunReport> reportFromJson<RunReport>(const std::string&);
-template Expected<ProbeReport> reportFromJson<ProbeReport>(const std::string&);
-template Expected<RunItemReport> reportFromJson<RunItemReport>(const std::string&);
+template Expected<values::RenderReport> reportFromJson<values::RenderReport>(const std::string&);
+template Expected<values::AnimateReport> reportFromJson<values::AnimateReport>(const std::string&);
+template Expected<values::SampleReport> reportFromJson<values::SampleReport>(const std::string&);
+template Expected<values::MergeReport> reportFromJson<values::MergeReport>(const std::string&);
+template Expected<values::ListReport> reportFromJson<values::ListReport>(const std::string&);
+template Expected<values::BenchReport> reportFromJson<values::BenchReport>(const std::string&);
+template Expected<values::ParamsReport> reportFromJson<values::ParamsReport>(const std::string&);
+template Expected<values::MeshReport> reportFromJson<values::MeshReport>(const std::string&);
+template Expected<values::EvalReport> reportFromJson<values::EvalReport>(const std::string&);
+template Expected<values::RunReport> reportFromJson<values::RunReport>(const std::string&);
+template Expected<values::ProbeReport> reportFromJson<values::ProbeReport>(const std::string&);
+template Expected<values::RunItemReport> reportFromJson<values::RunItemReport>(const std::string&);
 
 // The worker protocol (Protocol.h).
 const char* failureName(Failure failure) {

@@ -29,7 +29,7 @@ std::string quotedKey(const std::string& message) {
 }
 
 // Resolves `input.sdf` to a file; with source text a name that is not a file is kept as a label.
-Expected<fs::path> resolve(const SdfInput& input) {
+Expected<fs::path> resolve(const values::SdfInput& input) {
     if (!input.source.empty()) {
         std::error_code ec;
         if (input.sdf.empty()) return fs::path();
@@ -43,7 +43,7 @@ Expected<fs::path> resolve(const SdfInput& input) {
     return *path;
 }
 
-std::optional<JobError> checkSdf(const SdfInput& input) {
+std::optional<JobError> checkSdf(const values::SdfInput& input) {
     if (!input.entry.empty()) {
         std::string lower;
         for (char c : input.entry) lower += char(std::tolower(static_cast<unsigned char>(c)));
@@ -76,7 +76,7 @@ std::optional<JobError> checkSdf(const SdfInput& input) {
     return std::nullopt;
 }
 
-std::optional<JobError> checkFamily(const FamilySpec& family) {
+std::optional<JobError> checkFamily(const values::FamilySpec& family) {
     if (family.randomize > 100000) return usage("'randomize': at most 100000 instances");
     if (family.randomize > 0 && !family.sweeps.empty()) return usage("'sweep' and 'randomize' cannot be combined");
     std::uint64_t total = 1;
@@ -106,7 +106,7 @@ std::string text(double value) {
     return buffer;
 }
 
-std::optional<JobError> checkFrame(const FrameRequest& frame) {
+std::optional<JobError> checkFrame(const values::FrameRequest& frame) {
     if (frame.width < 1 || frame.height < 1 || frame.width > 16384 || frame.height > 16384)
         return usage("'width', 'height': expected WxH with integers from 1 to 16384, got '" + std::to_string(frame.width) + "x" +
                      std::to_string(frame.height) + "'");
@@ -139,14 +139,16 @@ std::optional<JobError> checkFrame(const FrameRequest& frame) {
 
 } // namespace
 
-MeshSource OpenedSdf::meshSource() const { return prepared.mesh ? MeshSource{prepared.mesh->provenanceJson()} : MeshSource{}; }
+values::MeshSource OpenedSdf::meshSource() const {
+    return prepared.mesh ? values::MeshSource{prepared.mesh->provenanceJson()} : values::MeshSource{};
+}
 
 renderer::FileMetadata OpenedSdf::fileMetadata() const {
     if (!prepared.mesh) return {};
     return {{"sdfwb_mesh_source", prepared.mesh->provenanceJson()}};
 }
 
-JobResult<OpenedSdf> openSdf(const SdfInput& input, const std::string& what) {
+JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& what) {
     auto path = resolve(input);
     if (!path) return usage(path.error().message);
     shaders::IncludeOptions options;
@@ -185,7 +187,7 @@ JobResult<OpenedSdf> openSdf(const SdfInput& input, const std::string& what) {
     return OpenedSdf{std::move(sdf), label, std::move(resolved->settings), std::move(resolved->warnings)};
 }
 
-std::optional<JobError> validate(const RenderRequest& request) {
+std::optional<JobError> validate(const values::RenderRequest& request) {
     if (auto error = checkFrame(request.frame)) return error;
     const std::string extension = fs::path(request.output).extension().string();
     auto writable = renderer::canWriteImageExtension(extension);
@@ -195,7 +197,7 @@ std::optional<JobError> validate(const RenderRequest& request) {
     return checkOutputFolder(request.output);
 }
 
-std::optional<JobError> validate(const ProbeRequest& request) {
+std::optional<JobError> validate(const values::ProbeRequest& request) {
     if (auto error = checkFrame(request.frame)) return error;
     if (request.x < 0 || request.y < 0 || request.x >= request.frame.width || request.y >= request.frame.height)
         return usage("'x', 'y': " + std::to_string(request.x) + "," + std::to_string(request.y) + " lies outside the " +
@@ -203,7 +205,7 @@ std::optional<JobError> validate(const ProbeRequest& request) {
     return std::nullopt;
 }
 
-std::optional<JobError> validate(const AnimateRequest& request) {
+std::optional<JobError> validate(const values::AnimateRequest& request) {
     if (auto error = checkFrame(request.frame)) return error;
     if (fs::path(request.output).extension() != ".mp4")
         return usage("'output': '" + request.output + "': animations are written as .mp4 (H.264)");
@@ -212,7 +214,7 @@ std::optional<JobError> validate(const AnimateRequest& request) {
     return checkOutputFolder(request.output);
 }
 
-sampling::SamplingJob samplingJob(const SampleRequest& request) {
+sampling::SamplingJob samplingJob(const values::SampleRequest& request) {
     sampling::SamplingJob job;
     job.count = request.count;
     job.seed = request.seed;
@@ -266,7 +268,7 @@ Expected<std::vector<std::pair<float, float>>> nearMixture(const std::string& te
     return mixture;
 }
 
-std::optional<JobError> validate(const SampleRequest& request) {
+std::optional<JobError> validate(const values::SampleRequest& request) {
     if (request.pattern.empty()) return usage("'pattern': no sampling pattern given");
     if (!std::isfinite(request.time)) return usage("'time': expected a finite number");
     if (!(request.gradientStep >= 0.0f) || !std::isfinite(request.gradientStep))
@@ -302,13 +304,13 @@ std::optional<JobError> validate(const SampleRequest& request) {
     return checkSdf(request.sdf);
 }
 
-std::optional<JobError> validate(const AuditRequest& request) {
+std::optional<JobError> validate(const values::AuditRequest& request) {
     if (request.samples < 64 || request.samples > 100000000) return usage("'samples': must be 64..100000000");
     if (!std::isfinite(request.time)) return usage("'time': expected a finite number");
     if (!inRange(request.truncationReach, 0.1, 100.0)) return usage("'truncation_reach': must be 0.1..100");
     if (request.resolution < 2 || request.resolution > 4096) return usage("'resolution': must be 2..4096");
     if (request.plane) {
-        const PlaneSpec& plane = *request.plane;
+        const values::PlaneSpec& plane = *request.plane;
         if (plane.normal == glm::vec3(0.0f) || !std::isfinite(plane.offset) || !std::isfinite(plane.normal.x) ||
             !std::isfinite(plane.normal.y) || !std::isfinite(plane.normal.z))
             return usage("'plane': expected NX,NY,NZ,OFFSET with a non-zero normal");
@@ -318,7 +320,7 @@ std::optional<JobError> validate(const AuditRequest& request) {
     return checkSdf(request.sdf);
 }
 
-std::optional<JobError> validate(const MergeRequest& request) {
+std::optional<JobError> validate(const values::MergeRequest& request) {
     std::optional<sampling::SampleFormat> format =
         request.format.empty() ? sampling::formatFromPath(request.output) : sampling::parseFormat(request.format);
     if (!format)
@@ -329,9 +331,9 @@ std::optional<JobError> validate(const MergeRequest& request) {
     return std::nullopt;
 }
 
-std::optional<JobError> validate(const ParamsRequest& request) { return checkSdf(request.sdf); }
+std::optional<JobError> validate(const values::ParamsRequest& request) { return checkSdf(request.sdf); }
 
-JobResult<ParamsReport> run(const ParamsRequest& request, const ProgressSink&) {
+JobResult<values::ParamsReport> run(const values::ParamsRequest& request, const ProgressSink&) {
     if (auto error = validate(request)) return *error;
     auto path = resolve(request.sdf);
     if (!path) return usage(path.error().message);
@@ -345,11 +347,11 @@ JobResult<ParamsReport> run(const ParamsRequest& request, const ProgressSink&) {
     shaders::ParameterScan scan = shaders::parseParameters(text, label);
     if (shaders::hasErrors(scan.diagnostics))
         return JobError{Failure::Work, "params: " + label + " declares parameters with errors", scan.diagnostics};
-    ParamsReport report;
+    values::ParamsReport report;
     report.sdf = label;
     for (const shaders::Diagnostic& d : scan.diagnostics) report.warnings.push_back(shaders::formatDiagnostic(d));
     for (const shaders::Parameter& p : scan.parameters) {
-        ParamItem item;
+        values::ParamItem item;
         item.name = p.name;
         item.type = shaders::parameterTypeName(p.type);
         item.value.assign(p.defaultValue.begin(), p.defaultValue.begin() + shaders::componentCount(p.type));
@@ -366,7 +368,7 @@ JobResult<ParamsReport> run(const ParamsRequest& request, const ProgressSink&) {
     return report;
 }
 
-std::optional<JobError> validate(const BenchRequest& request) {
+std::optional<JobError> validate(const values::BenchRequest& request) {
     if (request.repeats < 1 || request.repeats > 100) return usage("'repeats': must be 1..100");
     if (request.outputDirectory.empty()) return usage("'output': no report folder given");
     return std::nullopt;

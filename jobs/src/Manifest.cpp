@@ -101,7 +101,7 @@ Expected<ManifestItem> sampleItem(const json& given, const fs::path& folder, con
         if (in[key].is_string()) in[key] = besideManifest(folder, in[key].get<std::string>(), key != std::string("output"));
     auto request = requestFromJson(in.dump());
     if (!request) return makeError(where + request.error().message);
-    const auto& sample = std::get<SampleRequest>(*request);
+    const auto& sample = std::get<values::SampleRequest>(*request);
     ManifestItem item;
     item.kind = "sample";
     item.sdf = sample.sdf.sdf;
@@ -240,7 +240,7 @@ Expected<std::vector<json>> csvItems(const std::string& text, const std::string&
             return makeError(file + ":" + std::to_string(records->front().line) + ": column '" + header.back() +
                              "' appears twice");
     }
-    const json sampleDefaults = json::parse(toJson(Request(SampleRequest{})));
+    const json sampleDefaults = json::parse(toJson(values::Request(values::SampleRequest{})));
     const json recipeTypes = {{"n", 0}, {"seed", 0}, {"time", 0.5}, {"padding", 0.5}};
     std::vector<json> items;
     for (std::size_t r = 1; r < records->size(); ++r) {

@@ -27,7 +27,7 @@ std::optional<JobError> checkBoundsAndTime(const glm::vec3& low, const glm::vec3
 }
 
 // Everything but the output file.
-std::optional<JobError> validateSettings(const MeshRequest& request) {
+std::optional<JobError> validateSettings(const values::MeshRequest& request) {
     if (request.resolution < 2 || request.resolution > 2048)
         return JobError{Failure::Usage, "'resolution': must be 2..2048, got " + std::to_string(request.resolution), {}};
     if (request.refine < 0 || request.refine > 4)
@@ -38,13 +38,13 @@ std::optional<JobError> validateSettings(const MeshRequest& request) {
     if (request.lipschitz && (!std::isfinite(*request.lipschitz) || *request.lipschitz < 0.0f))
         return JobError{Failure::Usage, "'lipschitz': expected a finite number >= 0 (0 skips nothing)", {}};
     if (request.errorSamples > 10000000) return JobError{Failure::Usage, "'error_samples': at most 10000000", {}};
-    ParamsRequest sdfOnly{request.sdf};
+    values::ParamsRequest sdfOnly{request.sdf};
     return validate(sdfOnly); // the SDF's name, entry and parameter values
 }
 
 } // namespace
 
-std::optional<JobError> validate(const MeshRequest& request) {
+std::optional<JobError> validate(const values::MeshRequest& request) {
     if (!meshing::canWriteMesh(request.output))
         return JobError{
             Failure::Usage, "'output': '" + request.output + "': unsupported mesh type (use .ply, .obj, .stl or .glb)", {}};
@@ -57,12 +57,12 @@ std::optional<JobError> validate(const MeshRequest& request) {
     return validateSettings(request);
 }
 
-JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& progress) {
+JobResult<MeshedSdf> meshSdf(const values::MeshRequest& request, const ProgressSink& progress) {
     const auto start = std::chrono::steady_clock::now();
     if (auto error = validateSettings(request)) return *error;
     auto sdf = openSdf(request.sdf, "mesh");
     if (!sdf) return sdf.error;
-    MeshReport report;
+    values::MeshReport report;
     report.sdf = sdf->label;
     report.entry = sdf->prepared.signature.entry;
     report.meshSource = sdf->meshSource();
@@ -80,7 +80,7 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
     // The audit says whether |f| is the distance (exact) or only a bound, which the error's method
     // depends on: it runs when the error is wanted, and its Lipschitz estimate then skips the blocks.
     // Otherwise the bound is the mesher's own estimate from the block centres (--lipschitz: given).
-    std::optional<sampling::Finding> verdict;
+    std::optional<values::Finding> verdict;
     if (request.errorSamples > 0) {
         sampling::AuditOptions audit;
         audit.samples = 4000;
@@ -92,10 +92,10 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
         if (!found) return JobError{Failure::Work, found.error().message, {}};
         verdict = found->verdict;
         if (!request.lipschitz) {
-            if (!std::isfinite(found->lipschitzMax) || found->verdict == sampling::Finding::Nan ||
-                found->verdict == sampling::Finding::Discontinuous) {
+            if (!std::isfinite(found->lipschitzMax) || found->verdict == values::Finding::Nan ||
+                found->verdict == values::Finding::Discontinuous) {
                 options.lipschitz = 0.0f;
-                report.boundSource = std::string("none: the audit found the field ") + sampling::findingName(found->verdict) +
+                report.boundSource = std::string("none: the audit found the field ") + values::findingName(found->verdict) +
                                      ", so every block is evaluated";
             } else {
                 options.lipschitz = std::max(1.0f, 1.25f * found->lipschitzMax);
@@ -113,7 +113,7 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
         options.lipschitz = *request.lipschitz;
         report.boundSource = *request.lipschitz > 0.0f ? "given (--lipschitz)" : "none: every block evaluated (--lipschitz 0)";
     }
-    report.fieldVerdict = verdict ? sampling::findingName(*verdict) : "";
+    report.fieldVerdict = verdict ? values::findingName(*verdict) : "";
     auto extracted = meshing::extractMesh(sdf->prepared, options, progress);
     if (progress.isCancelled()) return JobError{Failure::Cancelled, "mesh: cancelled; nothing written", {}};
     if (!extracted) return JobError{Failure::Work, extracted.error().message, {}};
@@ -160,7 +160,7 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
         errorOptions.seed = request.seed;
         errorOptions.time = request.time;
         errorOptions.parameters = sdf->parameters;
-        errorOptions.fieldIsExact = verdict == sampling::Finding::Exact;
+        errorOptions.fieldIsExact = verdict == values::Finding::Exact;
         if (stats.boundsCutPoints > 0) errorOptions.cut = meshing::cutBox(options);
         auto error = meshing::measureError(sdf->prepared, mesh, errorOptions);
         if (!error) return JobError{Failure::Work, error.error().message, {}};
@@ -178,7 +178,7 @@ JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& pro
     return result;
 }
 
-JobResult<MeshReport> run(const MeshRequest& request, const ProgressSink& progress) {
+JobResult<values::MeshReport> run(const values::MeshRequest& request, const ProgressSink& progress) {
     const auto start = std::chrono::steady_clock::now();
     if (auto error = validate(request)) return *error;
     auto meshed = meshSdf(request, progress);
@@ -188,7 +188,7 @@ JobResult<MeshReport> run(const MeshRequest& request, const ProgressSink& progre
     const auto writeStart = std::chrono::steady_clock::now();
     if (auto written = meshing::writeMesh(request.output, meshed->mesh, comments); !written)
         return JobError{Failure::Work, written.error().message, {}};
-    MeshReport report = meshed->report;
+    values::MeshReport report = meshed->report;
     report.phaseSeconds.push_back(
         {"write", std::chrono::duration<double>(std::chrono::steady_clock::now() - writeStart).count()});
     report.output = request.output;
@@ -200,7 +200,7 @@ JobResult<MeshReport> run(const MeshRequest& request, const ProgressSink& progre
 
 namespace sdfwb::jobs {
 
-std::optional<JobError> validate(const EvalRequest& request) {
+std::optional<JobError> validate(const values::EvalRequest& request) {
     if (request.mesh.empty()) return JobError{Failure::Usage, "'mesh': no mesh file given", {}};
     std::error_code ec;
     if (!std::filesystem::is_regular_file(request.mesh, ec))
@@ -215,11 +215,11 @@ std::optional<JobError> validate(const EvalRequest& request) {
     if (!(request.edgeAngle > 0.0f && request.edgeAngle < 180.0f))
         return JobError{Failure::Usage, "'edge_angle': must be between 0 and 180 degrees", {}};
     if (auto error = checkBoundsAndTime(request.boundsMin, request.boundsMax, request.time)) return error;
-    ParamsRequest sdfOnly{request.sdf};
+    values::ParamsRequest sdfOnly{request.sdf};
     return validate(sdfOnly);
 }
 
-JobResult<EvalReport> run(const EvalRequest& request, const ProgressSink&) {
+JobResult<values::EvalReport> run(const values::EvalRequest& request, const ProgressSink&) {
     const auto start = std::chrono::steady_clock::now();
     if (auto error = validate(request)) return *error;
     auto mesh = meshing::readMesh(request.mesh);
@@ -239,7 +239,7 @@ JobResult<EvalReport> run(const EvalRequest& request, const ProgressSink&) {
     options.parameters = sdf->parameters;
     auto e = meshing::evaluateMesh(sdf->prepared, *mesh, options);
     if (!e) return JobError{Failure::Work, e.error().message, {}};
-    EvalReport report;
+    values::EvalReport report;
     report.mesh = request.mesh;
     report.sdf = sdf->label;
     report.meshSource = sdf->meshSource();
@@ -267,8 +267,8 @@ JobResult<EvalReport> run(const EvalRequest& request, const ProgressSink&) {
     if (e->edges) {
         const meshing::EdgeEvaluation& edges = *e->edges;
         report.edges =
-            EvalEdges{edges.chamferL1,    edges.fscore,           edges.precision,  edges.recall,       edges.hausdorff,
-                      edges.accuracyMean, edges.completenessMean, edges.meshPoints, edges.surfacePoints};
+            values::EvalEdges{edges.chamferL1,    edges.fscore,           edges.precision,  edges.recall,       edges.hausdorff,
+                              edges.accuracyMean, edges.completenessMean, edges.meshPoints, edges.surfacePoints};
     }
     report.conventions =
         "accuracy: mesh points (by area) -> |f|, the exact distance for an exact field; completeness: exact-surface points -> "

@@ -26,10 +26,10 @@ using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // Warnings about a view that cannot show what the user expects (logged and reported).
-std::vector<std::string> viewWarnings(const FrameRequest& frame) {
+std::vector<std::string> viewWarnings(const values::FrameRequest& frame) {
     std::vector<std::string> warnings;
     char text[256];
-    if (auto floor = renderer::precisionFloor(frame.camera, frame.trace.epsilonScale, frame.height); floor.exceeded) {
+    if (auto floor = values::precisionFloor(frame.camera, frame.trace.epsilonScale, frame.height); floor.exceeded) {
         std::snprintf(
             text, sizeof text,
             "below float32 precision: positions are known to %.2g at this camera distance, the hit tolerance is %.2g (expect "
@@ -66,7 +66,7 @@ std::vector<shaders::ParameterSetting> interpolateParameters(const std::vector<s
 }
 
 // The overlay's text: the metadata block's name, author and license (the file's name without one).
-std::string overlayText(const FrameRequest& frame, const OpenedSdf& sdf, std::vector<std::string>& warnings) {
+std::string overlayText(const values::FrameRequest& frame, const OpenedSdf& sdf, std::vector<std::string>& warnings) {
     Expected<std::string> text = frame.sdf.source.empty() ? readTextFile(sdf.label) : Expected<std::string>(frame.sdf.source);
     if (text)
         if (auto metadata = dataset::parseMetadata(*text, sdf.label)) return dataset::overlayText(*metadata);
@@ -85,7 +85,7 @@ template <class Frame> void drawOverlay(Frame& image, const std::string& text, s
 }
 
 // The tracer set up with the frame's settings and SDF; errors carry the driver's diagnostics.
-std::optional<JobError> setUp(renderer::SdfRenderer& tracer, const FrameRequest& frame, const OpenedSdf& sdf,
+std::optional<JobError> setUp(renderer::SdfRenderer& tracer, const values::FrameRequest& frame, const OpenedSdf& sdf,
                               const std::string& what) {
     (void)tracer.setTrace(frame.trace);
     (void)tracer.setShading(frame.shading);
@@ -98,15 +98,15 @@ std::optional<JobError> setUp(renderer::SdfRenderer& tracer, const FrameRequest&
 
 } // namespace
 
-JobResult<RenderReport> run(const RenderRequest& request, const ProgressSink&) {
+JobResult<values::RenderReport> run(const values::RenderRequest& request, const ProgressSink&) {
     const auto start = Clock::now();
     if (auto error = validate(request)) return *error;
     auto sdf = openSdf(request.frame.sdf, "render");
     if (!sdf) return sdf.error;
-    RenderReport report;
+    values::RenderReport report;
     report.warnings = viewWarnings(request.frame);
     report.warnings.insert(report.warnings.end(), sdf->warnings.begin(), sdf->warnings.end());
-    const FrameRequest& frame = request.frame;
+    const values::FrameRequest& frame = request.frame;
     if (request.shadertoyPicture) {
         // The author's picture: one 8-bit frame from the file's mainImage.
         renderer::ShadertoyPicture picture;
@@ -169,7 +169,7 @@ JobResult<RenderReport> run(const RenderRequest& request, const ProgressSink&) {
     report.meshSource = sdf->meshSource();
     report.width = request.frame.width;
     report.height = request.frame.height;
-    report.shading = renderer::shadingModeName(request.frame.shading.mode);
+    report.shading = shaders::shadingModeName(request.frame.shading.mode);
     report.frameMilliseconds = stats.cpuMilliseconds;
     report.glRenderer = renderer::queryGlInfo().renderer;
     report.seconds = secondsSince(start);
@@ -179,35 +179,35 @@ JobResult<RenderReport> run(const RenderRequest& request, const ProgressSink&) {
 namespace {
 
 // The recorder's event kind as the job model's (values/Requests.h, which names them).
-MarchEvent marchEvent(renderer::OffscreenRenderer::ProbeEvent::Kind kind) {
+values::MarchEvent marchEvent(renderer::OffscreenRenderer::ProbeEvent::Kind kind) {
     using Event = renderer::OffscreenRenderer::ProbeEvent;
     switch (kind) {
     case Event::Step:
-        return MarchEvent::Step;
+        return values::MarchEvent::Step;
     case Event::RelaxedStep:
-        return MarchEvent::RelaxedStep;
+        return values::MarchEvent::RelaxedStep;
     case Event::Fallback:
-        return MarchEvent::Fallback;
+        return values::MarchEvent::Fallback;
     case Event::Hit:
-        return MarchEvent::Hit;
+        return values::MarchEvent::Hit;
     case Event::RefineKept:
-        return MarchEvent::Refine;
+        return values::MarchEvent::Refine;
     case Event::RefineUndone:
-        return MarchEvent::RefineUndone;
+        return values::MarchEvent::RefineUndone;
     case Event::LeftBox:
-        return MarchEvent::LeftBox;
+        return values::MarchEvent::LeftBox;
     case Event::NotFinite:
-        return MarchEvent::NotFinite;
+        return values::MarchEvent::NotFinite;
     case Event::OutOfSteps:
-        return MarchEvent::OutOfSteps;
+        return values::MarchEvent::OutOfSteps;
     case Event::MissedBox:
-        return MarchEvent::MissedBox;
+        return values::MarchEvent::MissedBox;
     }
-    return MarchEvent::NotFinite;
+    return values::MarchEvent::NotFinite;
 }
 
 // The march's events with what follows from them: f, the step each one led to, oversteps.
-void describeMarch(ProbeReport& report, const renderer::OffscreenRenderer::ProbeTrace& trace, float stepFactor) {
+void describeMarch(values::ProbeReport& report, const renderer::OffscreenRenderer::ProbeTrace& trace, float stepFactor) {
     using Event = renderer::OffscreenRenderer::ProbeEvent;
     const auto& events = trace.events;
     auto evaluates = [](Event::Kind kind) {
@@ -216,7 +216,7 @@ void describeMarch(ProbeReport& report, const renderer::OffscreenRenderer::Probe
     };
     for (std::size_t k = 0; k < events.size(); ++k) {
         const Event& e = events[k];
-        ProbeStep step;
+        values::ProbeStep step;
         step.event = marchEvent(e.kind);
         step.t = e.t;
         step.position = e.position;
@@ -242,12 +242,12 @@ void describeMarch(ProbeReport& report, const renderer::OffscreenRenderer::Probe
 
 } // namespace
 
-JobResult<ProbeReport> run(const ProbeRequest& request, const ProgressSink&) {
+JobResult<values::ProbeReport> run(const values::ProbeRequest& request, const ProgressSink&) {
     const auto start = Clock::now();
     if (auto error = validate(request)) return *error;
     auto sdf = openSdf(request.frame.sdf, "probe");
     if (!sdf) return sdf.error;
-    FrameRequest frame = request.frame;
+    values::FrameRequest frame = request.frame;
     frame.shading.statsOutput = true; // the pixel's steps and t, from the same draw
     frame.shading.probe = true;
     renderer::SdfRenderer tracer;
@@ -258,7 +258,7 @@ JobResult<ProbeReport> run(const ProbeRequest& request, const ProgressSink&) {
         trace = offscreen.probe(tracer, frame.width, frame.height, frame.camera, frame.time, request.x, request.y);
     }
     tracer.releaseGl();
-    ProbeReport report;
+    values::ProbeReport report;
     report.sdf = sdf->label;
     report.meshSource = sdf->meshSource();
     report.entry = sdf->prepared.signature.entry;
@@ -267,7 +267,7 @@ JobResult<ProbeReport> run(const ProbeRequest& request, const ProgressSink&) {
     report.x = request.x;
     report.y = request.y;
     report.origin = frame.camera.position;
-    report.direction = glm::vec3(renderer::primaryRayDirection(frame.camera, request.x, request.y, frame.width, frame.height));
+    report.direction = glm::vec3(values::primaryRayDirection(frame.camera, request.x, request.y, frame.width, frame.height));
     report.steps = int(trace.pixel.steps);
     report.maxSteps = frame.trace.maxSteps;
     report.stepFactor = frame.trace.stepFactor;
@@ -280,7 +280,7 @@ JobResult<ProbeReport> run(const ProbeRequest& request, const ProgressSink&) {
     char text[320];
     using Stats = renderer::OffscreenRenderer::PixelStats;
     if (trace.pixel.hit()) {
-        report.outcome = MarchEvent::Hit;
+        report.outcome = values::MarchEvent::Hit;
         report.hitT = trace.pixel.t;
         report.hitResidual = trace.pixel.residual;
         report.footprint = frame.trace.epsilonScale * pixelAngle * trace.pixel.t;
@@ -290,31 +290,31 @@ JobResult<ProbeReport> run(const ProbeRequest& request, const ProgressSink&) {
     } else {
         report.footprint = frame.trace.epsilonScale * pixelAngle * lastT;
         float closest = INFINITY, closestT = 0.0f;
-        for (const ProbeStep& e : report.events)
-            if (std::isfinite(e.f) && std::abs(e.f) < closest && e.event != MarchEvent::LeftBox &&
-                e.event != MarchEvent::OutOfSteps) {
+        for (const values::ProbeStep& e : report.events)
+            if (std::isfinite(e.f) && std::abs(e.f) < closest && e.event != values::MarchEvent::LeftBox &&
+                e.event != values::MarchEvent::OutOfSteps) {
                 closest = std::abs(e.f);
                 closestT = e.t;
             }
-        if (!report.events.empty() && report.events.back().event == MarchEvent::MissedBox) {
-            report.outcome = MarchEvent::MissedBox;
+        if (!report.events.empty() && report.events.back().event == values::MarchEvent::MissedBox) {
+            report.outcome = values::MarchEvent::MissedBox;
             std::snprintf(text, sizeof text, "the ray does not enter the box [-%g, %g]^3 that bounds the shape: nothing to march",
                           double(1.0f + frame.trace.boxMargin), double(1.0f + frame.trace.boxMargin));
         } else if (trace.pixel.t == Stats::kLeftBox) {
-            report.outcome = MarchEvent::LeftBox;
+            report.outcome = values::MarchEvent::LeftBox;
             std::snprintf(
                 text, sizeof text,
                 "the ray left the box after %d steps without |f| falling below the tolerance (nearest: |f| = %.3g at t = %.4g)",
                 report.steps, double(closest), double(closestT));
         } else if (trace.pixel.t == Stats::kOutOfSteps) {
-            report.outcome = MarchEvent::OutOfSteps;
+            report.outcome = values::MarchEvent::OutOfSteps;
             const float lastF = report.events.size() > 1 ? report.events[report.events.size() - 2].f : 0.0f;
             std::snprintf(text, sizeof text,
                           "the step budget of %d ran out at t = %.4g with |f| = %.3g still above the tolerance %.3g (raise "
                           "--max-steps; small steps that do not shrink mean a flat or grazing field)",
                           report.maxSteps, double(lastT), double(std::abs(lastF)), double(report.footprint));
         } else {
-            report.outcome = MarchEvent::NotFinite;
+            report.outcome = values::MarchEvent::NotFinite;
             const glm::vec3 p = report.events.empty() ? glm::vec3(0.0f) : report.events.back().position;
             std::snprintf(text, sizeof text, "f was NaN or Inf at t = %.4g, position (%.4g, %.4g, %.4g)", double(lastT),
                           double(p.x), double(p.y), double(p.z));
@@ -325,12 +325,12 @@ JobResult<ProbeReport> run(const ProbeRequest& request, const ProgressSink&) {
     return report;
 }
 
-JobResult<AnimateReport> run(const AnimateRequest& request, const ProgressSink& progress) {
+JobResult<values::AnimateReport> run(const values::AnimateRequest& request, const ProgressSink& progress) {
     const auto start = Clock::now();
     if (auto error = validate(request)) return *error;
     auto sdf = openSdf(request.frame.sdf, "animate");
     if (!sdf) return sdf.error;
-    AnimateReport report;
+    values::AnimateReport report;
     report.warnings = viewWarnings(request.frame);
     report.warnings.insert(report.warnings.end(), sdf->warnings.begin(), sdf->warnings.end());
     std::vector<shaders::ParameterValue> endValues = request.frame.sdf.params;
@@ -348,7 +348,7 @@ JobResult<AnimateReport> run(const AnimateRequest& request, const ProgressSink& 
     }
     renderer::SdfRenderer tracer;
     if (auto error = setUp(tracer, request.frame, *sdf, "animate")) return *error;
-    const FrameRequest& frame = request.frame;
+    const values::FrameRequest& frame = request.frame;
     auto writer =
         renderer::VideoWriter::open(request.output, frame.width, frame.height, request.framesPerSecond, sdf->fileMetadata());
     if (!writer) return JobError{Failure::Work, writer.error().message, {}};
@@ -360,8 +360,8 @@ JobResult<AnimateReport> run(const AnimateRequest& request, const ProgressSink& 
         std::vector<std::string> ignoredWarnings; // the first frame's are reported
         for (int i = 0; i < frames; ++i) {
             if (progress.isCancelled()) break;
-            renderer::Camera camera = frame.camera;
-            if (request.turntable) renderer::orbit(camera, float(2.0 * 3.14159265358979 * i / frames), 0.0f);
+            values::Camera camera = frame.camera;
+            if (request.turntable) values::orbit(camera, float(2.0 * 3.14159265358979 * i / frames), 0.0f);
             const float time = frame.time + float(i) / float(request.framesPerSecond);
             if (keyframed)
                 tracer.setParameters(

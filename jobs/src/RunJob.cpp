@@ -38,7 +38,7 @@ using Clock = std::chrono::steady_clock;
 
 JobError usage(const std::string& message) { return {Failure::Usage, message, {}}; }
 
-std::string statusPath(const RunRequest& request) {
+std::string statusPath(const values::RunRequest& request) {
     if (!request.status.empty()) return request.status;
     if (request.worldSize > 1)
         return request.manifest + ".status-" + std::to_string(request.rank) + "-of-" + std::to_string(request.worldSize) +
@@ -46,13 +46,13 @@ std::string statusPath(const RunRequest& request) {
     return request.manifest + ".status.jsonl";
 }
 
-fs::path executable(const RunRequest& request) {
+fs::path executable(const values::RunRequest& request) {
     if (!request.executable.empty()) return request.executable;
     std::error_code ec;
     return fs::read_symlink("/proc/self/exe", ec);
 }
 
-std::string python(const RunRequest& request) {
+std::string python(const values::RunRequest& request) {
     if (!request.python.empty()) return request.python;
     if (const char* given = std::getenv("SDFWB_PYTHON"); given && *given) return given;
 #ifdef SDFWB_PYTHON
@@ -278,7 +278,7 @@ std::string lastMessage(const std::string& err) {
     return text.size() > 1000 ? "..." + text.substr(text.size() - 997) : text;
 }
 
-Expected<void> appendStatus(const std::string& path, const RunItemReport& item) {
+Expected<void> appendStatus(const std::string& path, const values::RunItemReport& item) {
     const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
     if (fd < 0) return makeError(path + ": cannot open the status file: " + std::strerror(errno));
     const std::string line = toJson(item, -1) + "\n";
@@ -291,8 +291,8 @@ Expected<void> appendStatus(const std::string& path, const RunItemReport& item) 
 }
 
 // The last record of each item index; lines that do not read (a torn last line) are ignored.
-std::map<std::uint64_t, RunItemReport> readStatus(const std::string& path) {
-    std::map<std::uint64_t, RunItemReport> records;
+std::map<std::uint64_t, values::RunItemReport> readStatus(const std::string& path) {
+    std::map<std::uint64_t, values::RunItemReport> records;
     std::error_code ec;
     if (!fs::exists(path, ec)) return records;
     auto text = readTextFile(path);
@@ -301,18 +301,18 @@ std::map<std::uint64_t, RunItemReport> readStatus(const std::string& path) {
     std::string line;
     while (std::getline(lines, line)) {
         if (line.empty()) continue;
-        if (auto record = reportFromJson<RunItemReport>(line)) records[record->index] = std::move(*record);
+        if (auto record = reportFromJson<values::RunItemReport>(line)) records[record->index] = std::move(*record);
     }
     return records;
 }
 
-bool recordedDone(const RunItemReport& record, const ManifestItem& item) {
+bool recordedDone(const values::RunItemReport& record, const ManifestItem& item) {
     std::error_code ec;
     return record.status == "done" && record.key == item.key && fs::is_regular_file(item.output, ec) &&
            fs::file_size(item.output, ec) == record.bytes;
 }
 
-std::vector<ManifestItem> selected(const std::vector<ManifestItem>& items, const RunRequest& request) {
+std::vector<ManifestItem> selected(const std::vector<ManifestItem>& items, const values::RunRequest& request) {
     std::vector<ManifestItem> mine;
     for (const ManifestItem& item : items)
         if (request.items.empty() ? item.index % request.worldSize == request.rank
@@ -321,8 +321,8 @@ std::vector<ManifestItem> selected(const std::vector<ManifestItem>& items, const
     return mine;
 }
 
-RunItemReport itemReport(const ManifestItem& item) {
-    RunItemReport report;
+values::RunItemReport itemReport(const ManifestItem& item) {
+    values::RunItemReport report;
     report.index = item.index;
     report.line = item.line;
     report.task = item.kind;
@@ -340,7 +340,7 @@ struct Launcher {
     std::vector<std::string> environment;
 };
 
-Launcher launcher(const RunRequest& request) {
+Launcher launcher(const values::RunRequest& request) {
     Launcher launch{executable(request), python(request), {}};
     for (char** e = environ; *e; ++e)
         if (std::strncmp(*e, "PYTHONPATH=", 11) != 0 && std::strncmp(*e, "SDFWB_BINARY=", 13) != 0)
@@ -352,9 +352,9 @@ Launcher launcher(const RunRequest& request) {
 
 // Runs one item: sample items on the worker (started, or restarted after a crash or a kill, as
 // needed), recipes in a Python child of their own.
-RunItemReport runItem(const ManifestItem& item, const RunRequest& request, const Launcher& launch, std::unique_ptr<Child>& worker,
-                      const ProgressSink& sink) {
-    RunItemReport report = itemReport(item);
+values::RunItemReport runItem(const ManifestItem& item, const values::RunRequest& request, const Launcher& launch,
+                              std::unique_ptr<Child>& worker, const ProgressSink& sink) {
+    values::RunItemReport report = itemReport(item);
     std::error_code ec;
     const fs::path output(item.output);
     if (!output.parent_path().empty()) fs::create_directories(output.parent_path(), ec);
@@ -399,7 +399,7 @@ RunItemReport runItem(const ManifestItem& item, const RunRequest& request, const
         report.status = "done";
         report.bytes = fs::file_size(output, ec);
         // Sample items print their SampleReport; recipes a JSON line with the same rows and bad_rows keys.
-        if (auto written = reportFromJson<SampleReport>(child.out)) {
+        if (auto written = reportFromJson<values::SampleReport>(child.out)) {
             report.rows = written->rows;
             report.badRows = written->badRows;
         }
@@ -422,7 +422,7 @@ struct IgnoreSigpipe {
 
 } // namespace
 
-std::optional<JobError> validate(const RunRequest& request) {
+std::optional<JobError> validate(const values::RunRequest& request) {
     if (request.manifest.empty()) return usage("run: no manifest given");
     if (request.worldSize < 1) return usage("'world_size': must be at least 1");
     if (request.rank >= request.worldSize)
@@ -450,12 +450,12 @@ std::optional<JobError> validate(const RunRequest& request) {
     return std::nullopt;
 }
 
-JobResult<RunReport> run(const RunRequest& request, const ProgressSink& progress,
-                         const std::function<void(const RunItemReport&)>& onItem) {
+JobResult<values::RunReport> run(const values::RunRequest& request, const ProgressSink& progress,
+                                 const std::function<void(const values::RunItemReport&)>& onItem) {
     if (auto error = validate(request)) return *error;
     const auto start = Clock::now();
     auto items = readManifest(request.manifest);
-    RunReport report;
+    values::RunReport report;
     report.manifest = request.manifest;
     report.status = statusPath(request);
     report.rank = request.rank;
@@ -470,7 +470,7 @@ JobResult<RunReport> run(const RunRequest& request, const ProgressSink& progress
     for (std::size_t k = 0; k < mine.size(); ++k) {
         const ManifestItem& item = mine[k];
         const auto record = records.find(item.index);
-        RunItemReport result;
+        values::RunItemReport result;
         if (record != records.end() && recordedDone(record->second, item)) {
             result = record->second;
             result.status = request.list ? "done" : "skipped";

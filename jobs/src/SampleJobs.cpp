@@ -37,7 +37,7 @@ std::string indexPath(const std::string& output) {
 
 } // namespace
 
-JobResult<SampleReport> run(const SampleRequest& request, const ProgressSink& progress) {
+JobResult<values::SampleReport> run(const values::SampleRequest& request, const ProgressSink& progress) {
     const auto start = std::chrono::steady_clock::now();
     if (auto error = validate(request)) return *error;
     if (request.output.empty()) return JobError{Failure::Usage, "'output': no output file given", {}};
@@ -58,7 +58,7 @@ JobResult<SampleReport> run(const SampleRequest& request, const ProgressSink& pr
         instances = std::move(*family);
     }
     std::vector<std::vector<shaders::ParameterSetting>> settings;
-    SampleReport report;
+    values::SampleReport report;
     report.warnings = sdf->warnings;
     for (const auto& values : instances) {
         auto resolved = shaders::resolveParameters(sdf->prepared.parameters, values);
@@ -144,7 +144,7 @@ JobResult<SampleReport> run(const SampleRequest& request, const ProgressSink& pr
     return report;
 }
 
-JobResult<MergeReport> run(const MergeRequest& request, const ProgressSink&) {
+JobResult<values::MergeReport> run(const values::MergeRequest& request, const ProgressSink&) {
     if (auto error = validate(request)) return *error;
     const sampling::SampleFormat format =
         *(request.format.empty() ? sampling::formatFromPath(request.output) : sampling::parseFormat(request.format));
@@ -152,7 +152,7 @@ JobResult<MergeReport> run(const MergeRequest& request, const ProgressSink&) {
     const auto start = std::chrono::steady_clock::now();
     auto merged = sampling::mergeSampleFiles(request.output, format, parts);
     if (!merged) return JobError{Failure::Work, merged.error().message, {}};
-    MergeReport report;
+    values::MergeReport report;
     report.output = request.output;
     report.rows = merged->rows;
     report.parts = merged->parts;
@@ -160,9 +160,9 @@ JobResult<MergeReport> run(const MergeRequest& request, const ProgressSink&) {
     return report;
 }
 
-JobResult<ListReport> run(const ListRequest& request, const ProgressSink&) {
+JobResult<values::ListReport> run(const values::ListRequest& request, const ProgressSink&) {
     dataset::Catalogue catalogue = dataset::Catalogue::scan(paths::datasetRoot());
-    ListReport report;
+    values::ListReport report;
     report.root = paths::datasetRoot().string();
     report.problems = catalogue.problems();
     for (const std::string& problem : report.problems) log::warning("dataset", problem);

@@ -85,7 +85,7 @@ bool MeshOverlay::hasMesh() const { return !m_impl->pendingIndices.empty(); }
 
 std::uint64_t MeshOverlay::triangleCount() const { return m_impl->pendingIndices.size() / 3; }
 
-void MeshOverlay::draw(int width, int height, const Camera& camera, float time,
+void MeshOverlay::draw(int width, int height, const values::Camera& camera, float time,
                        const std::vector<shaders::ParameterSetting>& parameters, float scale) {
     Impl& d = *m_impl;
     if (!d.mesh && d.sdf) (void)setSdf(*d.sdf); // after releaseGl() (a new context)

@@ -66,8 +66,8 @@ struct OffscreenRenderer::Impl {
 OffscreenRenderer::OffscreenRenderer() : m_impl(std::make_unique<Impl>()) {}
 OffscreenRenderer::~OffscreenRenderer() = default;
 
-Image OffscreenRenderer::render(SdfRenderer& renderer, int width, int height, const Camera& camera, float time, FrameStats* stats,
-                                float scale) {
+Image OffscreenRenderer::render(SdfRenderer& renderer, int width, int height, const values::Camera& camera, float time,
+                                FrameStats* stats, float scale) {
     m_impl->ensureSize(width, height);
     glBindFramebuffer(GL_FRAMEBUFFER, m_impl->framebuffer.id());
     FrameStats frame = renderer.renderScaled(width, height, scale, camera, time, true);
@@ -87,7 +87,7 @@ Image OffscreenRenderer::renderPicture(ShadertoyPicture& picture, int width, int
     return image;
 }
 
-FloatImage OffscreenRenderer::renderFloat(SdfRenderer& renderer, int width, int height, const Camera& camera, float time,
+FloatImage OffscreenRenderer::renderFloat(SdfRenderer& renderer, int width, int height, const values::Camera& camera, float time,
                                           FrameStats* stats) {
     m_impl->ensureFloatSize(width, height);
     glBindFramebuffer(GL_FRAMEBUFFER, m_impl->floatFramebuffer.id());
@@ -99,7 +99,8 @@ FloatImage OffscreenRenderer::renderFloat(SdfRenderer& renderer, int width, int 
 }
 
 std::vector<OffscreenRenderer::PixelStats> OffscreenRenderer::renderStats(SdfRenderer& renderer, int width, int height,
-                                                                          const Camera& camera, float time, FrameStats* stats) {
+                                                                          const values::Camera& camera, float time,
+                                                                          FrameStats* stats) {
     m_impl->ensureFloatSize(width, height);
     glBindFramebuffer(GL_FRAMEBUFFER, m_impl->floatFramebuffer.id());
     FrameStats frame = renderer.render(width, height, camera, time, true);
@@ -120,7 +121,7 @@ std::vector<OffscreenRenderer::PixelStats> OffscreenRenderer::renderStats(SdfRen
 // The probe's storage binding point, tracer/probe.glsl's SDFWB_BINDING_PROBE.
 constexpr GLuint kBindingProbe = 4;
 
-OffscreenRenderer::ProbeTrace OffscreenRenderer::probe(SdfRenderer& renderer, int width, int height, const Camera& camera,
+OffscreenRenderer::ProbeTrace OffscreenRenderer::probe(SdfRenderer& renderer, int width, int height, const values::Camera& camera,
                                                        float time, int x, int y, int capacity) {
     ProbeTrace trace;
     m_impl->ensureFloatSize(width, height);

@@ -26,9 +26,9 @@ GlProgram buildOverlayProgram(const std::string& vertexFile, const Expected<shad
     return program;
 }
 
-void setOverlayCamera(GLuint program, const Camera& camera, int width, int height) {
+void setOverlayCamera(GLuint program, const values::Camera& camera, int width, int height) {
     auto location = [program](const char* name) { return glGetUniformLocation(program, name); };
-    const CameraBasis basis = cameraBasis(camera);
+    const values::CameraBasis basis = cameraBasis(camera);
     glUniform3fv(location("sdfwb_cameraPosition"), 1, &camera.position.x);
     glUniform3fv(location("sdfwb_cameraRight"), 1, &basis.right.x);
     glUniform3fv(location("sdfwb_cameraUp"), 1, &basis.up.x);

@@ -6,7 +6,7 @@
 
 #include "GlObjects.h"
 
-#include <renderer/Camera.h>
+#include <values/Camera.h>
 
 #include <string>
 #include <vector>
@@ -19,7 +19,7 @@ GlProgram buildOverlayProgram(const std::string& vertexFile, const Expected<shad
 
 // Sets overlay/mesh.vert's camera uniforms: the tracer's pinhole, so what lies on the zero set
 // covers the traced surface's pixels exactly.
-void setOverlayCamera(GLuint program, const Camera& camera, int width, int height);
+void setOverlayCamera(GLuint program, const values::Camera& camera, int width, int height);
 
 class OverlayFrame {
 public:

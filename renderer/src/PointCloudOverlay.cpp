@@ -49,7 +49,7 @@ bool PointCloudOverlay::hasPoints() const { return !m_impl->pending.empty(); }
 
 std::uint64_t PointCloudOverlay::pointCount() const { return m_impl->pending.size() / 6; }
 
-void PointCloudOverlay::draw(int width, int height, const Camera& camera, float pointSize) {
+void PointCloudOverlay::draw(int width, int height, const values::Camera& camera, float pointSize) {
     Impl& d = *m_impl;
     if (d.pending.empty() || width <= 0 || height <= 0) return;
     if (!d.program) {

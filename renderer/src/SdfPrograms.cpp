@@ -78,7 +78,8 @@ std::optional<bool> forcedFusedMarch() {
     return forced[0] == '1';
 }
 
-shaders::TracerFeatures tracerFeatures(const ShadingSettings& shading, const TraceSettings& trace, const CuttingPlane& plane) {
+shaders::TracerFeatures tracerFeatures(const values::ShadingSettings& shading, const values::TraceSettings& trace,
+                                       const values::CuttingPlane& plane) {
     shaders::TracerFeatures features;
     features.shading = shading.mode;
     features.ambientOcclusion = shading.ambientOcclusion;

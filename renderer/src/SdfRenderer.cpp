@@ -20,17 +20,18 @@ namespace sdfwb::renderer {
 
 // Whether a cone pass can serve these settings: not for the march debugger or the step heat
 // map, which show each pixel's own march.
-bool conesApply(const ShadingSettings& shading, const TraceSettings& trace) {
-    return trace.coneTile > 0 && trace.cones != TraceSettings::Cones::Off && !shading.probe && shading.mode != ShadingMode::Steps;
+bool conesApply(const values::ShadingSettings& shading, const values::TraceSettings& trace) {
+    return trace.coneTile > 0 && trace.cones != values::TraceSettings::Cones::Off && !shading.probe &&
+           shading.mode != shaders::ShadingMode::Steps;
 }
 
 // Whether a frame may be drawn as the box's far faces over a cleared background (trace.vert),
 // which leaves every pixel whose ray misses the box the background: not where the picture shows
 // something else there (a background image, markers, the step heat map's misses, the measurement
 // outputs, the march debugger). The cutting plane is drawn only inside the box (plane.glsl).
-bool boxProxyApplies(const ShadingSettings& shading, const TraceSettings& trace) {
-    return trace.boxProxy && shading.backgroundImage.empty() && shading.markers.empty() && shading.mode != ShadingMode::Steps &&
-           !shading.statsOutput && !shading.probe;
+bool boxProxyApplies(const values::ShadingSettings& shading, const values::TraceSettings& trace) {
+    return trace.boxProxy && shading.backgroundImage.empty() && shading.markers.empty() &&
+           shading.mode != shaders::ShadingMode::Steps && !shading.statsOutput && !shading.probe;
 }
 
 // World to clip space for trace.vert's proxy box, for a frame of the given aspect: x and y as
@@ -38,7 +39,7 @@ bool boxProxyApplies(const ShadingSettings& shading, const TraceSettings& trace)
 // which clips only what lies nearer than wNear / 2, where wNear is the least depth of a point at
 // the near plane that the frame shows (at its corners). Nothing is clipped at the far side: the
 // tracer clips the rays there.
-glm::mat4 proxyClip(const Camera& camera, const CameraBasis& basis, float aspect) {
+glm::mat4 proxyClip(const values::Camera& camera, const values::CameraBasis& basis, float aspect) {
     const float tanHalf = std::tan(glm::radians(camera.fovYDegrees) * 0.5f);
     const float wNear = camera.nearPlane / std::sqrt(1.0f + tanHalf * tanHalf * (1.0f + aspect * aspect));
     auto row = [&camera](glm::vec3 axis) { return glm::vec4(axis, -glm::dot(axis, camera.position)); };
@@ -142,7 +143,7 @@ bool SdfRenderer::settleMarch(double fullFrameMilliseconds) {
     // can draw these frames. Returns whether the program changed.
     auto tryCompute = [&] {
         impl.settle = Impl::Settle::Done;
-        if (m_trace.tracer != TraceSettings::Tracer::Auto || impl.computeChosen || impl.current->compute) return false;
+        if (m_trace.tracer != values::TraceSettings::Tracer::Auto || impl.computeChosen || impl.current->compute) return false;
         impl.computeChosen = true;
         const bool applies = impl.features(m_shading, m_trace, m_plane).compute;
         impl.computeChosen = false;
@@ -152,7 +153,7 @@ bool SdfRenderer::settleMarch(double fullFrameMilliseconds) {
     };
     // The cone pass on the march chosen so far, then the compute tracer.
     auto tryCones = [&] {
-        if (m_trace.cones != TraceSettings::Cones::Auto || !conesApply(m_shading, m_trace) || impl.conesChosen ||
+        if (m_trace.cones != values::TraceSettings::Cones::Auto || !conesApply(m_shading, m_trace) || impl.conesChosen ||
             impl.current->meshRaycast || impl.current->compute)
             return tryCompute();
         return startTrial(impl.conesChosen, Impl::Settle::TryingCones,
@@ -187,7 +188,7 @@ bool SdfRenderer::settleMarch(double fullFrameMilliseconds) {
     return false;
 }
 
-std::vector<Diagnostic> SdfRenderer::setShading(const ShadingSettings& shading) {
+std::vector<Diagnostic> SdfRenderer::setShading(const values::ShadingSettings& shading) {
     m_shading = shading;
     std::vector<Diagnostic> diagnostics;
     if (!m_impl->sdf) return diagnostics;
@@ -204,12 +205,12 @@ const std::string& SdfRenderer::fragmentSource() const {
 
 // The frame's uniforms: resolution, camera, trace settings, time, the SDF's parameters and
 // textures, the plane, the light and the markers.
-void SdfRenderer::Impl::setFrameUniforms(Variant& variant, const FrameInputs& in, int width, int height, const Camera& camera,
-                                         const CameraBasis& basis, float time) {
+void SdfRenderer::Impl::setFrameUniforms(Variant& variant, const FrameInputs& in, int width, int height,
+                                         const values::Camera& camera, const values::CameraBasis& basis, float time) {
     Variant* v = &variant;
-    const TraceSettings& trace = in.trace;
-    const ShadingSettings& shading = in.shading;
-    const CuttingPlane& plane = in.plane;
+    const values::TraceSettings& trace = in.trace;
+    const values::ShadingSettings& shading = in.shading;
+    const values::CuttingPlane& plane = in.plane;
     glUniform2f(v->location("sdfwb_resolution"), float(width), float(height));
     glUniform3f(v->location("sdfwb_cameraPosition"), camera.position.x, camera.position.y, camera.position.z);
     glUniform3f(v->location("sdfwb_cameraRight"), basis.right.x, basis.right.y, basis.right.z);
@@ -331,7 +332,7 @@ void SdfRenderer::Impl::ensurePlaneField(const glm::vec3& normal, float offset, 
 }
 
 // The matcap and the background image, on texture units 0 and 1.
-void SdfRenderer::Impl::bindShadingTextures(Variant& variant, const ShadingSettings& shading, int width, int height) {
+void SdfRenderer::Impl::bindShadingTextures(Variant& variant, const values::ShadingSettings& shading, int width, int height) {
     Variant* v = &variant;
     if (GLint location = v->location("sdfwb_matcap"); location >= 0) {
         ensureMatcap(shading.matcap);
@@ -359,7 +360,8 @@ void SdfRenderer::Impl::bindShadingTextures(Variant& variant, const ShadingSetti
 // rays may start. Drawn into the target's lower-left corner, then copied into the texture the
 // picture reads. It draws into the same framebuffer with the same state as the picture, so the
 // driver compiles one variant of the program for both.
-void SdfRenderer::Impl::drawConePass(Variant& variant, const TraceSettings& trace, const Camera& camera, int width, int height) {
+void SdfRenderer::Impl::drawConePass(Variant& variant, const values::TraceSettings& trace, const values::Camera& camera,
+                                     int width, int height) {
     Variant* v = &variant;
     const GLuint vertexProgram = this->vertexProgram.id();
     const int coneTile = std::max(trace.coneTile, 1);
@@ -395,8 +397,8 @@ void SdfRenderer::Impl::drawConePass(Variant& variant, const TraceSettings& trac
 
 // The picture: over the box's far faces (only the pixels whose ray meets the box run the tracer)
 // when the box proxy applies, else over the whole frame. Returns whether the proxy applied.
-bool SdfRenderer::Impl::drawPicture(const ShadingSettings& shading, const TraceSettings& trace, const Camera& camera,
-                                    const CameraBasis& basis, int width, int height) {
+bool SdfRenderer::Impl::drawPicture(const values::ShadingSettings& shading, const values::TraceSettings& trace,
+                                    const values::Camera& camera, const values::CameraBasis& basis, int width, int height) {
     const GLuint vertexProgram = this->vertexProgram.id();
     const bool boxProxy = boxProxyApplies(shading, trace);
     glProgramUniform1i(vertexProgram, proxyBox, boxProxy ? 1 : 0);
@@ -457,7 +459,7 @@ void SdfRenderer::Impl::traceCompute(int width, int height) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(reading));
 }
 
-FrameStats SdfRenderer::render(int width, int height, const Camera& camera, float time, bool finish) {
+FrameStats SdfRenderer::render(int width, int height, const values::Camera& camera, float time, bool finish) {
     auto start = std::chrono::steady_clock::now();
     FrameStats stats;
     if (finish) m_impl->frameTimer.begin();
@@ -481,7 +483,7 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
             glGenVertexArrays(1, &id);
             m_impl->vertexArray = GlVertexArray(id);
         }
-        const CameraBasis basis = cameraBasis(camera);
+        const values::CameraBasis basis = cameraBasis(camera);
         if (v->compute) {
             m_impl->ensureComputeTarget(width, height); // first: making it rebinds the active texture unit
             glBindProgramPipeline(0);
@@ -526,7 +528,7 @@ FrameStats SdfRenderer::render(int width, int height, const Camera& camera, floa
     return stats;
 }
 
-FrameStats SdfRenderer::renderScaled(int width, int height, float scale, const Camera& camera, float time, bool finish) {
+FrameStats SdfRenderer::renderScaled(int width, int height, float scale, const values::Camera& camera, float time, bool finish) {
     if (scale >= 0.999f) return render(width, height, camera, time, finish);
     auto start = std::chrono::steady_clock::now();
     if (finish) m_impl->frameTimer.begin();
@@ -611,7 +613,7 @@ double SdfRenderer::planeFieldMilliseconds() const { return m_impl->planeFieldMi
 
 void SdfRenderer::setParameters(std::vector<shaders::ParameterSetting> parameters) { m_parameters = std::move(parameters); }
 
-std::vector<Diagnostic> SdfRenderer::setPlane(const CuttingPlane& plane) {
+std::vector<Diagnostic> SdfRenderer::setPlane(const values::CuttingPlane& plane) {
     bool variantChanges = plane.enabled != m_plane.enabled || plane.clipSurface != m_plane.clipSurface ||
                           plane.lipschitzOverlay != m_plane.lipschitzOverlay;
     m_plane = plane;
@@ -622,18 +624,18 @@ std::vector<Diagnostic> SdfRenderer::setPlane(const CuttingPlane& plane) {
     return diagnostics;
 }
 
-std::vector<Diagnostic> SdfRenderer::setTrace(const TraceSettings& trace) {
+std::vector<Diagnostic> SdfRenderer::setTrace(const values::TraceSettings& trace) {
     const bool relaxationOrFactorChanges = (trace.overRelaxation > 1.0f) != (m_trace.overRelaxation > 1.0f) ||
                                            (trace.stepFactor != 1.0f) != (m_trace.stepFactor != 1.0f);
     if (trace.cones != m_trace.cones && m_impl->settle == Impl::Settle::Done) {
         // Back to Auto: the cone pass is tried again at rest; On and Off end a trial.
         m_impl->conesChosen = false;
-        if (trace.cones == TraceSettings::Cones::Auto) m_impl->settle = Impl::Settle::ConesOpen;
+        if (trace.cones == values::TraceSettings::Cones::Auto) m_impl->settle = Impl::Settle::ConesOpen;
     }
     if (trace.tracer != m_trace.tracer && m_impl->settle == Impl::Settle::Done) {
         // The same for the compute tracer (its trial follows the cone pass's).
         m_impl->computeChosen = false;
-        if (trace.tracer == TraceSettings::Tracer::Auto) m_impl->settle = Impl::Settle::ConesOpen;
+        if (trace.tracer == values::TraceSettings::Tracer::Auto) m_impl->settle = Impl::Settle::ConesOpen;
     }
     m_trace = trace;
     std::vector<Diagnostic> diagnostics;

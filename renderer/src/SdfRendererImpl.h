@@ -55,7 +55,7 @@ struct Variant {
 
 // Whether a cone pass can serve these settings (the march debugger and the step heat map show
 // each pixel's own march).
-bool conesApply(const ShadingSettings& shading, const TraceSettings& trace);
+bool conesApply(const values::ShadingSettings& shading, const values::TraceSettings& trace);
 // SDFWB_FUSED_MARCH=0/1, for benchmarks: the march forced fused or separate.
 std::optional<bool> forcedFusedMarch();
 
@@ -181,34 +181,34 @@ struct SdfRenderer::Impl {
 
     // render()'s steps, each one named thing.
     struct FrameInputs {
-        const ShadingSettings& shading;
-        const TraceSettings& trace;
-        const CuttingPlane& plane;
+        const values::ShadingSettings& shading;
+        const values::TraceSettings& trace;
+        const values::CuttingPlane& plane;
         const std::vector<shaders::ParameterSetting>& parameters;
     };
-    void setFrameUniforms(Variant& variant, const FrameInputs& in, int width, int height, const Camera& camera,
-                          const CameraBasis& basis, float time);
-    void bindShadingTextures(Variant& variant, const ShadingSettings& shading, int width, int height);
-    void drawConePass(Variant& variant, const TraceSettings& trace, const Camera& camera, int width, int height);
-    bool drawPicture(const ShadingSettings& shading, const TraceSettings& trace, const Camera& camera, const CameraBasis& basis,
-                     int width, int height);
+    void setFrameUniforms(Variant& variant, const FrameInputs& in, int width, int height, const values::Camera& camera,
+                          const values::CameraBasis& basis, float time);
+    void bindShadingTextures(Variant& variant, const values::ShadingSettings& shading, int width, int height);
+    void drawConePass(Variant& variant, const values::TraceSettings& trace, const values::Camera& camera, int width, int height);
+    bool drawPicture(const values::ShadingSettings& shading, const values::TraceSettings& trace, const values::Camera& camera,
+                     const values::CameraBasis& basis, int width, int height);
     // The compute tracer's frame: dispatched into computeColor (made or grown first by
     // ensureComputeTarget), then blitted over the bound draw framebuffer's lower-left width x
     // height pixels.
     void ensureComputeTarget(int width, int height);
     void traceCompute(int width, int height);
 
-    shaders::TracerFeatures features(const ShadingSettings& shading, const TraceSettings& trace,
-                                     const CuttingPlane& plane) const {
+    shaders::TracerFeatures features(const values::ShadingSettings& shading, const values::TraceSettings& trace,
+                                     const values::CuttingPlane& plane) const {
         shaders::TracerFeatures result = tracerFeatures(shading, trace, plane);
-        result.cones = conesApply(shading, trace) &&
-                       (trace.cones == TraceSettings::Cones::On || (trace.cones == TraceSettings::Cones::Auto && conesChosen));
+        result.cones = conesApply(shading, trace) && (trace.cones == values::TraceSettings::Cones::On ||
+                                                      (trace.cones == values::TraceSettings::Cones::Auto && conesChosen));
         // The compute tracer draws without the cone pass (when it applies, it replaces it).
         shaders::TracerFeatures compute = result;
         compute.cones = false;
         compute.compute = true;
-        const bool wanted =
-            trace.tracer == TraceSettings::Tracer::Compute || (trace.tracer == TraceSettings::Tracer::Auto && computeChosen);
+        const bool wanted = trace.tracer == values::TraceSettings::Tracer::Compute ||
+                            (trace.tracer == values::TraceSettings::Tracer::Auto && computeChosen);
         return wanted && shaders::computeTracerApplies(compute) ? compute : result;
     }
 

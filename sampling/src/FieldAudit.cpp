@@ -95,11 +95,11 @@ struct JumpCandidate {
 // the same rise. A continuous field's rise shrinks with the interval (even an infinitely steep one
 // like sqrt near 0 shrinks 8-fold here); a jump does not. Rises within 4x the noise floor are
 // rounding. Examples are the midpoints of the final intervals: on the jump, within 1/63 of it.
-Expected<AuditFlag> measureJumps(const shaders::PreparedSdf& sdf, const AuditOptions& options,
-                                 const std::vector<JumpCandidate>& candidates, float noiseFloor) {
+Expected<values::AuditFlag> measureJumps(const shaders::PreparedSdf& sdf, const AuditOptions& options,
+                                         const std::vector<JumpCandidate>& candidates, float noiseFloor) {
     constexpr int kLine = 64;
-    AuditFlag flag;
-    flag.finding = Finding::Discontinuous;
+    values::AuditFlag flag;
+    flag.finding = values::Finding::Discontinuous;
     const std::size_t used = std::min<std::size_t>(candidates.size(), 1024);
     std::vector<float> points;
     auto line = [&](glm::vec3 from, glm::vec3 to) {
@@ -137,7 +137,7 @@ Expected<AuditFlag> measureJumps(const shaders::PreparedSdf& sdf, const AuditOpt
         if (!(rise > floor) || rise < 0.5f * intervals[c].rise) continue;
         jumps.push_back(rise);
         const float* p = &points[3 * (std::size_t(kLine) * c + std::size_t(k))];
-        if (flag.examples.size() < kMaxExamples)
+        if (flag.examples.size() < values::kMaxExamples)
             flag.examples.push_back(0.5f * (glm::vec3(p[0], p[1], p[2]) + glm::vec3(p[3], p[4], p[5])));
     }
     flag.count = jumps.size();
@@ -153,10 +153,10 @@ Expected<AuditFlag> measureJumps(const shaders::PreparedSdf& sdf, const AuditOpt
 // some probe on, f stays put (changes by less than 0.02 per unit of distance, up to noise) at a
 // positive value: the field has stopped growing. Returns a "truncated" flag whose count is the
 // number of rays that end on one (0: none).
-Expected<AuditFlag> traceTruncationRays(const shaders::PreparedSdf& sdf, const AuditOptions& options, const SampleSet& surface,
-                                        float noiseFloor) {
-    AuditFlag flag;
-    flag.finding = Finding::Truncated;
+Expected<values::AuditFlag> traceTruncationRays(const shaders::PreparedSdf& sdf, const AuditOptions& options,
+                                                const SampleSet& surface, float noiseFloor) {
+    values::AuditFlag flag;
+    flag.finding = values::Finding::Truncated;
     constexpr int kProbes = 32;
     const float reach = std::max(options.truncationReach, 0.1f);
     float distances[kProbes];
@@ -186,7 +186,7 @@ Expected<AuditFlag> traceTruncationRays(const shaders::PreparedSdf& sdf, const A
         if (first < 0) continue;
         plateauValues.push_back(f[kProbes - 1]);
         starts.push_back(distances[first]);
-        if (flag.examples.size() < kMaxExamples) flag.examples.push_back(origins[r] + distances[first] * normals[r]);
+        if (flag.examples.size() < values::kMaxExamples) flag.examples.push_back(origins[r] + distances[first] * normals[r]);
     }
     flag.count = plateauValues.size();
     flag.share = double(plateauValues.size()) / double(origins.size());
@@ -209,9 +209,9 @@ Expected<AuditFlag> traceTruncationRays(const shaders::PreparedSdf& sdf, const A
 // The audit at one sample count (no convergence runs).
 } // namespace
 
-AuditFlag signUncertainty(const meshfield::MeshField& mesh, const SampleSet& points, std::size_t limit) {
-    AuditFlag flag;
-    flag.finding = Finding::SignUncertain;
+values::AuditFlag signUncertainty(const meshfield::MeshField& mesh, const SampleSet& points, std::size_t limit) {
+    values::AuditFlag flag;
+    flag.finding = values::Finding::SignUncertain;
     const std::size_t n = std::min(points.size(), limit);
     std::vector<float> ambiguous;
     for (std::size_t i = 0; i < n; ++i) {
@@ -219,7 +219,7 @@ AuditFlag signUncertainty(const meshfield::MeshField& mesh, const SampleSet& poi
         const double w = mesh.winding(p);
         if (std::abs(w - 0.5) >= kSignUncertainBand) continue;
         ambiguous.push_back(float(w));
-        if (flag.examples.size() < kMaxExamples) flag.examples.push_back(glm::vec3(p));
+        if (flag.examples.size() < values::kMaxExamples) flag.examples.push_back(glm::vec3(p));
     }
     flag.count = ambiguous.size();
     flag.share = n ? double(flag.count) / double(n) : 0.0;
@@ -256,11 +256,11 @@ std::uint64_t countNonFinite(const SampleSet& set) {
 // q / step, and its tails (the 99.9th percentile; each tap rounds on its own) by up to ~3 q /
 // step: that much is taken off, so a far-from-the-origin field is judged by its shape, not its
 // noise. For a field computed near the origin q ~ 1e-7 and nothing changes.
-float noiseSlope(const AuditReport& report, std::size_t s) { return 3.0f * report.noiseFloor / report.scales[s].step; }
+float noiseSlope(const values::AuditReport& report, std::size_t s) { return 3.0f * report.noiseFloor / report.scales[s].step; }
 
 // Draws every pass (7 progress steps) and measures the precision floor.
 Expected<AuditPasses> drawPasses(const shaders::PreparedSdf& sdf, const AuditOptions& options, const ProgressSink& progress,
-                                 AuditReport& report) {
+                                 values::AuditReport& report) {
     AuditPasses p;
     p.n = report.samples;
     Runner randomRunner, nearRunner, surfaceRunner;
@@ -301,7 +301,7 @@ Expected<AuditPasses> drawPasses(const shaders::PreparedSdf& sdf, const AuditOpt
 
 // The share of NaN or Inf rows (random points, middle step), and the difference quotients'
 // percentiles: between consecutive random points (scale ~1) and at each step.
-void measureQuotients(const AuditPasses& p, AuditReport& report) {
+void measureQuotients(const AuditPasses& p, values::AuditReport& report) {
     const std::uint64_t bad = countNonFinite(p.random[1]);
     report.nanFraction = double(bad) / double(p.n);
     report.nanFractionError =
@@ -322,7 +322,7 @@ void measureQuotients(const AuditPasses& p, AuditReport& report) {
         if (distance > 1e-3f) wide.push_back(std::abs(p.random[1].distances[i] - p.random[1].distances[i + 1]) / distance);
     }
     auto summarise = [](float scale, const std::vector<float>& values) {
-        QuotientScale q;
+        values::QuotientScale q;
         q.step = scale;
         q.p50 = percentile(values, 0.5);
         q.p99 = percentile(values, 0.99);
@@ -336,9 +336,9 @@ void measureQuotients(const AuditPasses& p, AuditReport& report) {
 
 // Discontinuities: points whose quotient grows as the step shrinks, confirmed by line searches
 // (measureJumps). The flag, when any jump is confirmed; report.discontinuities counts the points.
-Expected<std::optional<AuditFlag>> findDiscontinuities(const shaders::PreparedSdf& sdf, const AuditOptions& options,
-                                                       const AuditPasses& p, AuditReport& report) {
-    std::optional<AuditFlag> discontinuous;
+Expected<std::optional<values::AuditFlag>> findDiscontinuities(const shaders::PreparedSdf& sdf, const AuditOptions& options,
+                                                               const AuditPasses& p, values::AuditReport& report) {
+    std::optional<values::AuditFlag> discontinuous;
     // Discontinuities: the quotient grows as the step shrinks (a jump of J gives J / 2h), at
     // points within the finest step of the jump.
     std::uint64_t tested = 0;
@@ -394,7 +394,7 @@ Expected<std::optional<AuditFlag>> findDiscontinuities(const shaders::PreparedSd
 // step h is J / 2h while at the finest step it is the field's slope; a steep but continuous field
 // has the same quotient at every step. The quotient between distant points is used only when
 // no jump was found (across a jump it is J / distance). Flags non-conservative fields.
-void estimateLipschitz(const AuditPasses& p, bool discontinuous, AuditReport& report) {
+void estimateLipschitz(const AuditPasses& p, bool discontinuous, values::AuditReport& report) {
     std::vector<float> unaffected[2];
     std::vector<std::pair<float, glm::vec3>> steepest;
     std::uint64_t above = 0, counted = 0;
@@ -425,14 +425,14 @@ void estimateLipschitz(const AuditPasses& p, bool discontinuous, AuditReport& re
     report.lipschitzUncertainty = report.lipschitzMax - report.lipschitz;
     report.safeStepFactor = 1.0f / std::max(report.lipschitz, 1.0f);
     if (report.lipschitz > 1.05f) {
-        AuditFlag flag;
-        flag.finding = Finding::NonConservative;
+        values::AuditFlag flag;
+        flag.finding = values::Finding::NonConservative;
         flag.value = report.lipschitz;
         flag.maximum = report.lipschitzMax;
         flag.count = above;
         flag.share = counted ? double(above) / double(counted) : 0.0;
         std::sort(steepest.begin(), steepest.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-        for (std::size_t k = 0; k < steepest.size() && k < kMaxExamples; ++k) flag.examples.push_back(steepest[k].second);
+        for (std::size_t k = 0; k < steepest.size() && k < values::kMaxExamples; ++k) flag.examples.push_back(steepest[k].second);
         char text[256];
         std::snprintf(
             text, sizeof text,
@@ -446,7 +446,7 @@ void estimateLipschitz(const AuditPasses& p, bool discontinuous, AuditReport& re
 
 // Truncation: a field that stops growing away from its surface.
 Expected<void> findTruncation(const shaders::PreparedSdf& sdf, const AuditOptions& options, const AuditPasses& p,
-                              AuditReport& report) {
+                              values::AuditReport& report) {
     // Truncation: outside points where the field has stopped growing, in the cube...
     std::uint64_t positive = 0;
     std::vector<float> flatValues;
@@ -456,7 +456,7 @@ Expected<void> findTruncation(const shaders::PreparedSdf& sdf, const AuditOption
         ++positive;
         if (gradientLength(p.random[0], i) < 0.02f) {
             flatValues.push_back(p.random[0].distances[i]);
-            if (flatPoints.size() < kMaxExamples)
+            if (flatPoints.size() < values::kMaxExamples)
                 flatPoints.push_back(
                     glm::vec3(p.random[0].positions[3 * i], p.random[0].positions[3 * i + 1], p.random[0].positions[3 * i + 2]));
         }
@@ -471,8 +471,8 @@ Expected<void> findTruncation(const shaders::PreparedSdf& sdf, const AuditOption
         report.truncationDistance = plateau->value;
         report.flags.push_back(std::move(*plateau));
     } else if (positive > 0 && double(flatValues.size()) > 0.02 * double(positive) && percentile(flatValues, 0.05) > 0.01f) {
-        AuditFlag flag;
-        flag.finding = Finding::Truncated;
+        values::AuditFlag flag;
+        flag.finding = values::Finding::Truncated;
         flag.value = percentile(flatValues, 0.05);
         flag.maximum = percentile(flatValues, 0.95);
         flag.count = flatValues.size();
@@ -491,7 +491,7 @@ Expected<void> findTruncation(const shaders::PreparedSdf& sdf, const AuditOption
 
 // Eikonal error near the surface, and exactness: |f| against the distance to the nearest of a
 // dense set of surface points.
-void measureExactness(const AuditPasses& p, AuditReport& report) {
+void measureExactness(const AuditPasses& p, values::AuditReport& report) {
     // Eikonal error near the surface.
     std::vector<float> eikonal;
     for (std::size_t i = 0; i < p.n; ++i)
@@ -554,14 +554,14 @@ void measureExactness(const AuditPasses& p, AuditReport& report) {
 }
 
 // NaN / Inf, with where.
-void flagNonFinite(const AuditPasses& p, AuditReport& report) {
+void flagNonFinite(const AuditPasses& p, values::AuditReport& report) {
     const std::uint64_t bad = countNonFinite(p.random[1]);
     if (bad > 0) {
-        AuditFlag flag;
-        flag.finding = Finding::Nan;
+        values::AuditFlag flag;
+        flag.finding = values::Finding::Nan;
         flag.count = bad;
         flag.share = report.nanFraction;
-        for (std::size_t i = 0; i < p.n && flag.examples.size() < kMaxExamples; ++i)
+        for (std::size_t i = 0; i < p.n && flag.examples.size() < values::kMaxExamples; ++i)
             if (!finiteRow(p.random[1], i))
                 flag.examples.push_back(
                     glm::vec3(p.random[1].positions[3 * i], p.random[1].positions[3 * i + 1], p.random[1].positions[3 * i + 2]));
@@ -575,7 +575,7 @@ void flagNonFinite(const AuditPasses& p, AuditReport& report) {
 
 // Orders the flags, most severe first, and gives the verdict: the most severe finding
 // (no-surface ranks below discontinuities, above the rest), else exact or conservative.
-void settleVerdict(const AuditPasses& p, AuditReport& report) {
+void settleVerdict(const AuditPasses& p, values::AuditReport& report) {
     float minimum = INFINITY, maximum = -INFINITY;
     for (std::size_t i = 0; i < p.n; ++i)
         if (std::isfinite(p.random[1].distances[i])) {
@@ -585,9 +585,10 @@ void settleVerdict(const AuditPasses& p, AuditReport& report) {
     const bool hasSignChange = minimum <= 0.0f && maximum >= 0.0f;
 
     // Most severe first: the verdict is the first.
-    static const Finding severity[] = {Finding::Nan, Finding::Discontinuous, Finding::Truncated, Finding::NonConservative};
-    std::stable_sort(report.flags.begin(), report.flags.end(), [](const AuditFlag& a, const AuditFlag& b) {
-        auto rank = [](Finding finding) {
+    static const values::Finding severity[] = {values::Finding::Nan, values::Finding::Discontinuous, values::Finding::Truncated,
+                                               values::Finding::NonConservative};
+    std::stable_sort(report.flags.begin(), report.flags.end(), [](const values::AuditFlag& a, const values::AuditFlag& b) {
+        auto rank = [](values::Finding finding) {
             return std::find(std::begin(severity), std::end(severity), finding) - std::begin(severity);
         };
         return rank(a.finding) < rank(b.finding);
@@ -597,12 +598,12 @@ void settleVerdict(const AuditPasses& p, AuditReport& report) {
     // The nearest surface sample overestimates the true distance by up to about the sample spacing.
     const float exactTolerance = 3.0f * report.surfaceSpacing + 2e-3f;
     char text[256];
-    const AuditFlag* worst = report.flags.empty() ? nullptr : &report.flags.front();
-    if (worst && (worst->finding == Finding::Nan || worst->finding == Finding::Discontinuous)) {
+    const values::AuditFlag* worst = report.flags.empty() ? nullptr : &report.flags.front();
+    if (worst && (worst->finding == values::Finding::Nan || worst->finding == values::Finding::Discontinuous)) {
         report.verdict = worst->finding;
         report.reason = worst->evidence;
     } else if (report.surfacePoints == 0 && !hasSignChange) {
-        report.verdict = Finding::NoSurface;
+        report.verdict = values::Finding::NoSurface;
         std::snprintf(text, sizeof text, "f never changes sign (%.4g to %.4g over %llu points) and no ray finds a surface",
                       double(minimum), double(maximum), (unsigned long long)p.n);
         report.reason = text;
@@ -610,18 +611,18 @@ void settleVerdict(const AuditPasses& p, AuditReport& report) {
         report.verdict = worst->finding;
         report.reason = worst->evidence;
     } else if (report.surfacePoints < 16) {
-        report.verdict = Finding::Conservative;
+        report.verdict = values::Finding::Conservative;
         std::snprintf(text, sizeof text, "1-Lipschitz, but too few surface points (%llu) to test exactness",
                       (unsigned long long)report.surfacePoints);
         report.reason = text;
     } else if (report.exactnessP99 <= exactTolerance && report.exactnessMax <= 2.0f * exactTolerance) {
-        report.verdict = Finding::Exact;
+        report.verdict = values::Finding::Exact;
         std::snprintf(text, sizeof text,
                       "|f| matches the distance to the surface within %.2g (99th percentile; sampling allows %.2g)",
                       double(report.exactnessP99), double(exactTolerance));
         report.reason = text;
     } else {
-        report.verdict = Finding::Conservative;
+        report.verdict = values::Finding::Conservative;
         std::snprintf(
             text, sizeof text,
             "1-Lipschitz and |f| underestimates the distance (error 99th percentile %.2g, max %.2g; exact allows %.2g, %.2g)",
@@ -633,12 +634,12 @@ void settleVerdict(const AuditPasses& p, AuditReport& report) {
 }
 
 // Findings beside the verdict: a mesh's uncertain sign, and warnings that go with any verdict.
-void addFindingsBesideTheVerdict(const shaders::PreparedSdf& sdf, const AuditPasses& p, AuditReport& report) {
+void addFindingsBesideTheVerdict(const shaders::PreparedSdf& sdf, const AuditPasses& p, values::AuditReport& report) {
     char text[256];
     // A mesh's sign where its winding number is no clear inside or outside: a finding beside the
     // verdict (the field's distances may still be exact).
     if (sdf.mesh) {
-        AuditFlag flag = signUncertainty(*sdf.mesh, p.random[1]);
+        values::AuditFlag flag = signUncertainty(*sdf.mesh, p.random[1]);
         if (flag.count > 0) {
             report.reason += std::string("; also ") + findingName(flag.finding) + ": " + flag.evidence;
             report.flags.push_back(std::move(flag));
@@ -661,9 +662,10 @@ void addFindingsBesideTheVerdict(const shaders::PreparedSdf& sdf, const AuditPas
     }
 }
 
-Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOptions& options, const ProgressSink& progress) {
+Expected<values::AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOptions& options,
+                                        const ProgressSink& progress) {
     auto start = std::chrono::steady_clock::now();
-    AuditReport report;
+    values::AuditReport report;
     report.samples = std::max<std::uint64_t>(options.samples, 64);
     auto passes = drawPasses(sdf, options, progress, report);
     if (!passes) return passes.error();
@@ -683,22 +685,10 @@ Expected<AuditReport> auditOnce(const shaders::PreparedSdf& sdf, const AuditOpti
 
 } // namespace
 
-std::vector<std::pair<const char*, float>> namedFigures(const AuditFlag& flag) {
-    if (flag.finding == Finding::Truncated) return {{"value", flag.value}, {"start", flag.start}};
-    if (flag.finding == Finding::Discontinuous) return {{"jump", flag.value}, {"jump_max", flag.maximum}};
-    if (flag.finding == Finding::NonConservative) return {{"lipschitz", flag.value}, {"lipschitz_max", flag.maximum}};
-    return {};
-}
-
-const AuditFlag* findFlag(const std::vector<AuditFlag>& flags, Finding finding) {
-    for (const AuditFlag& flag : flags)
-        if (flag.finding == finding) return &flag;
-    return nullptr;
-}
-
-Expected<AuditReport> auditField(const shaders::PreparedSdf& sdf, const AuditOptions& options, const ProgressSink& progress) {
+Expected<values::AuditReport> auditField(const shaders::PreparedSdf& sdf, const AuditOptions& options,
+                                         const ProgressSink& progress) {
     if (!sdf.ok()) return makeError("audit: the SDF has errors");
-    std::vector<ConvergencePoint> convergence;
+    std::vector<values::ConvergencePoint> convergence;
     if (options.convergence) {
         for (std::uint64_t divisor : {16u, 4u}) {
             AuditOptions smaller = options;

@@ -36,7 +36,7 @@ struct PlaneScan {
 };
 
 // The grid's points in the box: the readout's range, slopes and histogram, and what the findings need.
-PlaneScan scanPlane(const SampleSet (&sets)[3], int resolution, float side, PlaneReadout& readout) {
+PlaneScan scanPlane(const SampleSet (&sets)[3], int resolution, float side, values::PlaneReadout& readout) {
     readout.histogram.assign(41, 0);
     readout.minimum = std::numeric_limits<float>::infinity();
     readout.maximum = -std::numeric_limits<float>::infinity();
@@ -103,12 +103,13 @@ PlaneScan scanPlane(const SampleSet (&sets)[3], int resolution, float side, Plan
 }
 
 // The findings, as the volume audit's (most severe first).
-void addPlaneFlags(PlaneScan& scan, PlaneReadout& readout) {
+void addPlaneFlags(PlaneScan& scan, values::PlaneReadout& readout) {
     // Examples spread over the grid, not the first rows of it.
     auto spread = [](std::vector<glm::vec3>& points) {
-        if (points.size() <= kMaxExamples) return;
+        if (points.size() <= values::kMaxExamples) return;
         std::vector<glm::vec3> chosen;
-        for (std::size_t k = 0; k < kMaxExamples; ++k) chosen.push_back(points[k * (points.size() - 1) / (kMaxExamples - 1)]);
+        for (std::size_t k = 0; k < values::kMaxExamples; ++k)
+            chosen.push_back(points[k * (points.size() - 1) / (values::kMaxExamples - 1)]);
         points = std::move(chosen);
     };
     spread(scan.nanPoints);
@@ -116,42 +117,42 @@ void addPlaneFlags(PlaneScan& scan, PlaneReadout& readout) {
     spread(scan.flatPoints);
     char text[256];
     if (readout.nanCount > 0) {
-        AuditFlag flag{Finding::Nan,
-                       "",
-                       0.0f,
-                       0.0f,
-                       0.0f,
-                       double(readout.nanCount) / double(std::max<std::uint64_t>(readout.points, 1)),
-                       readout.nanCount,
-                       scan.nanPoints};
+        values::AuditFlag flag{values::Finding::Nan,
+                               "",
+                               0.0f,
+                               0.0f,
+                               0.0f,
+                               double(readout.nanCount) / double(std::max<std::uint64_t>(readout.points, 1)),
+                               readout.nanCount,
+                               scan.nanPoints};
         std::snprintf(text, sizeof text, "%llu of %llu plane points give NaN or Inf", (unsigned long long)readout.nanCount,
                       (unsigned long long)readout.points);
         flag.evidence = text;
         readout.flags.push_back(std::move(flag));
     }
     if (!scan.jumps.empty()) {
-        AuditFlag flag{Finding::Discontinuous,
-                       "",
-                       percentile(scan.jumps, 0.5),
-                       *std::max_element(scan.jumps.begin(), scan.jumps.end()),
-                       0.0f,
-                       double(scan.jumps.size()) / double(std::max<std::size_t>(scan.slopes.size(), 1)),
-                       scan.jumps.size(),
-                       scan.jumpPoints};
+        values::AuditFlag flag{values::Finding::Discontinuous,
+                               "",
+                               percentile(scan.jumps, 0.5),
+                               *std::max_element(scan.jumps.begin(), scan.jumps.end()),
+                               0.0f,
+                               double(scan.jumps.size()) / double(std::max<std::size_t>(scan.slopes.size(), 1)),
+                               scan.jumps.size(),
+                               scan.jumpPoints};
         std::snprintf(text, sizeof text, "f jumps by %.3g (median; largest %.3g) between %llu pairs of neighbouring grid points",
                       double(flag.value), double(flag.maximum), (unsigned long long)flag.count);
         flag.evidence = text;
         readout.flags.push_back(std::move(flag));
     }
     if (readout.truncationDistance) {
-        AuditFlag flag{Finding::Truncated,
-                       "",
-                       *readout.truncationDistance,
-                       percentile(scan.flat, 0.95),
-                       0.0f,
-                       double(scan.flat.size()) / double(scan.positive),
-                       scan.flat.size(),
-                       scan.flatPoints};
+        values::AuditFlag flag{values::Finding::Truncated,
+                               "",
+                               *readout.truncationDistance,
+                               percentile(scan.flat, 0.95),
+                               0.0f,
+                               double(scan.flat.size()) / double(scan.positive),
+                               scan.flat.size(),
+                               scan.flatPoints};
         std::snprintf(text, sizeof text,
                       "the field stops growing at about %.4g: |grad f| < 0.02 on %.3g %% of the plane outside the shape",
                       double(flag.value), 100.0 * flag.share);
@@ -160,9 +161,16 @@ void addPlaneFlags(PlaneScan& scan, PlaneReadout& readout) {
     }
     if (readout.lipschitz99 > 1.05f) {
         std::sort(scan.steep.begin(), scan.steep.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-        AuditFlag flag{Finding::NonConservative, "", readout.lipschitz99, readout.lipschitzMax, 0.0f, readout.shareAboveOne,
-                       scan.steep.size(),        {}};
-        for (std::size_t k = 0; k < scan.steep.size() && k < kMaxExamples; ++k) flag.examples.push_back(scan.steep[k].second);
+        values::AuditFlag flag{values::Finding::NonConservative,
+                               "",
+                               readout.lipschitz99,
+                               readout.lipschitzMax,
+                               0.0f,
+                               readout.shareAboveOne,
+                               scan.steep.size(),
+                               {}};
+        for (std::size_t k = 0; k < scan.steep.size() && k < values::kMaxExamples; ++k)
+            flag.examples.push_back(scan.steep[k].second);
         std::snprintf(text, sizeof text, "|grad f| reaches %.4g (99th percentile; largest %.4g) on the plane: step factor %.3g",
                       double(flag.value), double(flag.maximum), double(readout.safeStepFactor));
         flag.evidence = text;
@@ -172,9 +180,9 @@ void addPlaneFlags(PlaneScan& scan, PlaneReadout& readout) {
 
 } // namespace
 
-Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 normal, float offset, int resolution, float time,
-                                    const std::vector<shaders::ParameterSetting>& sdfParameters,
-                                    std::vector<shaders::Diagnostic>* diagnostics) {
+Expected<values::PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 normal, float offset, int resolution,
+                                            float time, const std::vector<shaders::ParameterSetting>& sdfParameters,
+                                            std::vector<shaders::Diagnostic>* diagnostics) {
     auto start = std::chrono::steady_clock::now();
     if (glm::length(normal) <= 0.0f) return makeError("plane: the normal must not be zero");
     if (resolution < 2 || resolution > 4096) return makeError("plane: resolution must be 2..4096");
@@ -202,7 +210,7 @@ Expected<PlaneReadout> analysePlane(const shaders::PreparedSdf& sdf, glm::vec3 n
         sets[s] = std::move(*result);
     }
 
-    PlaneReadout readout;
+    values::PlaneReadout readout;
     readout.resolution = resolution;
     PlaneScan scan = scanPlane(sets, resolution, side, readout);
     addPlaneFlags(scan, readout);

@@ -116,7 +116,7 @@ TEST(CommandLine, NonFiniteAndOutOfRangeNumbersAreRefusedWhileParsing) {
 // The job kinds' table (values/JobKinds.h) and the CLI's commands agree: every kind, and every
 // former name of one, is a batch command whose help shows the kind's name.
 TEST(CommandLine, EveryJobKindIsABatchCommand) {
-    for (const sdfwb::jobs::JobKind& kind : sdfwb::jobs::kJobKinds)
+    for (const sdfwb::values::JobKind& kind : sdfwb::values::kJobKinds)
         for (const std::string_view name : {kind.name, kind.formerName}) {
             if (name.empty()) continue;
             Result r = run("--batch " + std::string(name) + " --help");

@@ -23,8 +23,8 @@ const char* const kSphere = "float sdf(vec3 p) { return length(p) - 0.5; }\n";
 
 class Probe : public sdfwb::testing::GlTest {
 protected:
-    static jobs::FrameRequest frame(const std::string& source) {
-        jobs::FrameRequest f;
+    static values::FrameRequest frame(const std::string& source) {
+        values::FrameRequest f;
         f.sdf.source = source;
         f.sdf.sdf = "probe-test";
         f.width = kWidth;
@@ -36,11 +36,11 @@ protected:
     }
 
     // What the tracer itself writes for every pixel of the frame (its stats output).
-    static std::vector<renderer::OffscreenRenderer::PixelStats> stats(const jobs::FrameRequest& f) {
+    static std::vector<renderer::OffscreenRenderer::PixelStats> stats(const values::FrameRequest& f) {
         auto opened = jobs::openSdf(f.sdf, "test");
         EXPECT_TRUE(opened);
         renderer::SdfRenderer tracer;
-        renderer::ShadingSettings shading;
+        values::ShadingSettings shading;
         shading.statsOutput = true;
         EXPECT_FALSE(shaders::hasErrors(tracer.setShading(shading)));
         EXPECT_FALSE(shaders::hasErrors(tracer.setTrace(f.trace)));
@@ -52,25 +52,25 @@ protected:
         return pixels;
     }
 
-    static jobs::ProbeReport probe(const jobs::FrameRequest& f, int x, int y) {
-        auto result = jobs::run(jobs::ProbeRequest{f, x, y}, {});
+    static values::ProbeReport probe(const values::FrameRequest& f, int x, int y) {
+        auto result = jobs::run(values::ProbeRequest{f, x, y}, {});
         EXPECT_TRUE(result) << result.error.message;
-        return result ? *result : jobs::ProbeReport{};
+        return result ? *result : values::ProbeReport{};
     }
 
-    static int marchEvaluations(const jobs::ProbeReport& r) {
+    static int marchEvaluations(const values::ProbeReport& r) {
         int count = 0;
         for (const auto& e : r.events)
-            count += e.event == jobs::MarchEvent::Step || e.event == jobs::MarchEvent::RelaxedStep ||
-                     e.event == jobs::MarchEvent::Fallback || e.event == jobs::MarchEvent::Hit ||
-                     e.event == jobs::MarchEvent::NotFinite;
+            count += e.event == values::MarchEvent::Step || e.event == values::MarchEvent::RelaxedStep ||
+                     e.event == values::MarchEvent::Fallback || e.event == values::MarchEvent::Hit ||
+                     e.event == values::MarchEvent::NotFinite;
         return count;
     }
 };
 
 TEST_F(Probe, ReplaysTheMarchTheFrameIsDrawnWith) {
     for (float relaxation : {1.0f, 1.8f}) {
-        jobs::FrameRequest f = frame(kSphere);
+        values::FrameRequest f = frame(kSphere);
         f.trace.overRelaxation = relaxation;
         const auto pixels = stats(f);
         int hits = 0, misses = 0;
@@ -78,25 +78,25 @@ TEST_F(Probe, ReplaysTheMarchTheFrameIsDrawnWith) {
         for (int y = 1; y < kHeight; y += 4)
             for (int x = 1; x < kWidth; x += 4) {
                 const auto& expected = pixels[std::size_t(y) * kWidth + std::size_t(x)];
-                const jobs::ProbeReport r = probe(f, x, y);
+                const values::ProbeReport r = probe(f, x, y);
                 ASSERT_EQ(r.steps, int(expected.steps)) << x << "," << y << " omega " << relaxation;
                 EXPECT_EQ(marchEvaluations(r), r.steps) << x << "," << y;
                 if (expected.hit()) {
                     ++hits;
-                    ASSERT_EQ(r.outcome, jobs::MarchEvent::Hit) << x << "," << y;
+                    ASSERT_EQ(r.outcome, values::MarchEvent::Hit) << x << "," << y;
                     EXPECT_EQ(*r.hitT, expected.t) << x << "," << y; // the same float: the same arithmetic
                     for (const auto& e : r.events)
-                        if (e.event == jobs::MarchEvent::Hit) {
+                        if (e.event == values::MarchEvent::Hit) {
                             EXPECT_LT(std::abs(glm::length(e.position) - 0.5f), 1.01f * r.footprint); // within the hit tolerance
                         }
                 } else {
                     ++misses;
-                    EXPECT_TRUE(r.outcome == jobs::MarchEvent::LeftBox || r.outcome == jobs::MarchEvent::MissedBox)
+                    EXPECT_TRUE(r.outcome == values::MarchEvent::LeftBox || r.outcome == values::MarchEvent::MissedBox)
                         << x << "," << y << ": " << r.reason;
                 }
                 // The march moves by d (times omega when relaxed) from each step's point.
                 for (std::size_t k = 0; k + 1 < r.events.size(); ++k) {
-                    if (r.events[k].event == jobs::MarchEvent::Step && r.events[k + 1].event != jobs::MarchEvent::LeftBox) {
+                    if (r.events[k].event == values::MarchEvent::Step && r.events[k + 1].event != values::MarchEvent::LeftBox) {
                         EXPECT_NEAR(r.events[k].step, r.events[k].f, 1e-5f * (1.0f + r.events[k].t)) << k;
                     }
                 }
@@ -108,16 +108,16 @@ TEST_F(Probe, ReplaysTheMarchTheFrameIsDrawnWith) {
 }
 
 TEST_F(Probe, SaysWhyARayMissed) {
-    jobs::FrameRequest f = frame(kSphere);
+    values::FrameRequest f = frame(kSphere);
     f.trace.maxSteps = 1;
-    jobs::ProbeReport r = probe(f, kWidth / 2, kHeight / 2);
-    EXPECT_EQ(r.outcome, jobs::MarchEvent::OutOfSteps);
-    EXPECT_EQ(r.events.back().event, jobs::MarchEvent::OutOfSteps);
+    values::ProbeReport r = probe(f, kWidth / 2, kHeight / 2);
+    EXPECT_EQ(r.outcome, values::MarchEvent::OutOfSteps);
+    EXPECT_EQ(r.events.back().event, values::MarchEvent::OutOfSteps);
     EXPECT_NE(r.reason.find("step budget of 1"), std::string::npos) << r.reason;
 
     f = frame("float sdf(vec3 p) { return length(p) - 0.5 + 1e-3 * sqrt(p.z - 2.0); }\n"); // NaN inside the box
     r = probe(f, kWidth / 2, kHeight / 2);
-    EXPECT_EQ(r.outcome, jobs::MarchEvent::NotFinite);
+    EXPECT_EQ(r.outcome, values::MarchEvent::NotFinite);
     EXPECT_EQ(r.events.size(), 1u);
     EXPECT_NE(r.reason.find("NaN or Inf"), std::string::npos);
 
@@ -125,14 +125,14 @@ TEST_F(Probe, SaysWhyARayMissed) {
     f.camera.position = {0.0f, 3.0f, 3.0f};
     f.camera.target = {0.0f, 3.0f, 0.0f}; // looking past the box
     r = probe(f, kWidth / 2, kHeight / 2);
-    EXPECT_EQ(r.outcome, jobs::MarchEvent::MissedBox);
+    EXPECT_EQ(r.outcome, values::MarchEvent::MissedBox);
     EXPECT_EQ(r.steps, 0);
 }
 
 TEST_F(Probe, ShowsFallbacksAndOversteps) {
     // A field 1.6 times steeper than a distance: full steps pass the surface.
-    jobs::FrameRequest f = frame("float sdf(vec3 p) { return 1.6 * (length(p) - 0.5); }\n");
-    jobs::ProbeReport r = probe(f, kWidth / 2, kHeight / 2);
+    values::FrameRequest f = frame("float sdf(vec3 p) { return 1.6 * (length(p) - 0.5); }\n");
+    values::ProbeReport r = probe(f, kWidth / 2, kHeight / 2);
     EXPECT_GE(r.oversteps, 1u) << r.reason;
     bool marked = false;
     for (std::size_t k = 0; k + 1 < r.events.size(); ++k)
@@ -147,7 +147,7 @@ TEST_F(Probe, ShowsFallbacksAndOversteps) {
     f.trace.stepFactor = 1.0f / 1.6f;
     r = probe(f, kWidth / 2, kHeight / 2);
     EXPECT_EQ(r.oversteps, 0u);
-    EXPECT_EQ(r.outcome, jobs::MarchEvent::Hit);
+    EXPECT_EQ(r.outcome, values::MarchEvent::Hit);
     // Over-relaxation takes long steps and falls back when they went too far.
     f = frame(kSphere);
     f.trace.overRelaxation = 1.9f;
@@ -159,9 +159,9 @@ TEST_F(Probe, ShowsFallbacksAndOversteps) {
 TEST_F(Probe, CommandLineForm) {
     auto result = sdfwb::testing::runCommand(SDFWB_BINARY, "--batch probe --sdf Sphere --size 64x36 --pixel 32,18 --json");
     ASSERT_EQ(result.exitCode, 0) << result.output;
-    auto report = jobs::reportFromJson<jobs::ProbeReport>(result.standardOutput);
+    auto report = jobs::reportFromJson<values::ProbeReport>(result.standardOutput);
     ASSERT_TRUE(report) << report.error().message << "\n" << result.output;
-    EXPECT_EQ(report->outcome, jobs::MarchEvent::Hit);
+    EXPECT_EQ(report->outcome, values::MarchEvent::Hit);
     EXPECT_EQ(int(report->events.size()) >= report->steps, true);
     result = sdfwb::testing::runCommand(SDFWB_BINARY, "--batch probe --sdf Torus --size 64x36 --pixel 64,0");
     EXPECT_EQ(result.exitCode, 2);

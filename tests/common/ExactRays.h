@@ -1,8 +1,8 @@
 #pragma once
 // Primary rays built by the tests themselves (double precision), so that answers computed from
-// them do not inherit a mistake of the renderer's own helpers (renderer::primaryRayDirection).
+// them do not inherit a mistake of the renderer's own helpers (values::primaryRayDirection).
 
-#include <renderer/Camera.h>
+#include <values/Camera.h>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -14,7 +14,7 @@ namespace sdfwb::testing {
 // The unit direction through the centre of pixel (x, row), rows from the top, of a width x height
 // frame: a pinhole camera at `position` looking at `target`, vertical field of view fovY, square
 // pixels, `up` made orthogonal to the view.
-inline glm::dvec3 pixelRay(const renderer::Camera& camera, int x, int row, int width, int height) {
+inline glm::dvec3 pixelRay(const values::Camera& camera, int x, int row, int width, int height) {
     const glm::dvec3 forward = glm::normalize(glm::dvec3(camera.target) - glm::dvec3(camera.position));
     const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(camera.up)));
     const glm::dvec3 up = glm::cross(right, forward);

@@ -22,13 +22,13 @@ inline shaders::PreparedSdf loadSourceSdf(const std::string& relative) {
     return sdf;
 }
 
-inline sampling::AuditReport auditSourceSdf(const std::string& relative, std::uint64_t samples = 20000) {
+inline values::AuditReport auditSourceSdf(const std::string& relative, std::uint64_t samples = 20000) {
     sampling::AuditOptions options;
     options.samples = samples;
     options.convergence = false;
     auto report = sampling::auditField(loadSourceSdf(relative), options, {});
     EXPECT_TRUE(report.hasValue()) << relative << ": " << (report ? "" : report.error().message);
-    return report ? *report : sampling::AuditReport{};
+    return report ? *report : values::AuditReport{};
 }
 
 } // namespace sdfwb::testing

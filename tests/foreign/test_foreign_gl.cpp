@@ -5,7 +5,6 @@
 // functions, constants, structs, uniforms and macros) composes with every tracer variant and every
 // sampler, and each program compiles and runs.
 
-#include <renderer/Camera.h>
 #include <renderer/NoiseTexture.h>
 #include <renderer/OffscreenRenderer.h>
 #include <renderer/SampleCompute.h>
@@ -16,6 +15,7 @@
 #include <sampling/SamplerLibrary.h>
 #include <shaders/BuiltinShaders.h>
 #include <shaders/SdfSource.h>
+#include <values/Camera.h>
 
 #include "GlTestContext.h"
 #include "common/FirstError.h"
@@ -144,7 +144,7 @@ TEST_P(ForeignCode, OpensRendersSamplesAndGetsItsFlags) {
     // Compiles in the march debugger's program too (the sampler's compute stage is below).
     {
         renderer::SdfRenderer probe;
-        renderer::ShadingSettings probing;
+        values::ShadingSettings probing;
         probing.probe = true;
         ASSERT_FALSE(shaders::hasErrors(probe.setShading(probing)));
         auto probeDiagnostics = probe.setSdf(sdf);
@@ -155,12 +155,12 @@ TEST_P(ForeignCode, OpensRendersSamplesAndGetsItsFlags) {
 
     // Renders: the shape is in view.
     renderer::SdfRenderer sdfRenderer;
-    renderer::ShadingSettings shading;
+    values::ShadingSettings shading;
     shading.statsOutput = true;
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
     auto diagnostics = sdfRenderer.setSdf(sdf);
     ASSERT_FALSE(shaders::hasErrors(diagnostics)) << (diagnostics.empty() ? "" : shaders::formatDiagnostic(diagnostics.front()));
-    renderer::Camera camera;
+    values::Camera camera;
     camera.position = {1.8f, 1.4f, 2.6f};
     camera.target = {0.0f, 0.0f, 0.0f};
     renderer::OffscreenRenderer offscreen;
@@ -173,13 +173,13 @@ TEST_P(ForeignCode, OpensRendersSamplesAndGetsItsFlags) {
     // its main, so the same pixels, but for a few where a driver rounds the stages differently.
     {
         std::vector<renderer::Image> pictures;
-        for (auto tracer : {renderer::TraceSettings::Tracer::Fragment, renderer::TraceSettings::Tracer::Compute}) {
+        for (auto tracer : {values::TraceSettings::Tracer::Fragment, values::TraceSettings::Tracer::Compute}) {
             renderer::SdfRenderer tracerRenderer;
-            renderer::TraceSettings trace;
+            values::TraceSettings trace;
             trace.tracer = tracer;
             ASSERT_FALSE(shaders::hasErrors(tracerRenderer.setTrace(trace)));
             ASSERT_FALSE(shaders::hasErrors(tracerRenderer.setSdf(sdf)));
-            EXPECT_EQ(tracerRenderer.computeTracer(), tracer == renderer::TraceSettings::Tracer::Compute);
+            EXPECT_EQ(tracerRenderer.computeTracer(), tracer == values::TraceSettings::Tracer::Compute);
             pictures.push_back(offscreen.render(tracerRenderer, 64, 48, camera, 0.5f));
             tracerRenderer.releaseGl();
         }
@@ -220,9 +220,9 @@ TEST_P(ForeignCode, OpensRendersSamplesAndGetsItsFlags) {
     auto audit = sampling::auditField(sdf, options, {});
     ASSERT_TRUE(audit.hasValue()) << audit.error().message;
     std::vector<std::string> flags;
-    for (const auto& f : audit->flags) flags.push_back(sampling::findingName(f.finding));
+    for (const auto& f : audit->flags) flags.push_back(values::findingName(f.finding));
     std::sort(flags.begin(), flags.end());
-    EXPECT_EQ(flags, expected.flags) << GetParam() << ": " << sampling::findingName(audit->verdict) << ": " << audit->reason;
+    EXPECT_EQ(flags, expected.flags) << GetParam() << ": " << values::findingName(audit->verdict) << ": " << audit->reason;
     if (!expected.flags.empty()) { EXPECT_EQ(audit->verdict, audit->flags.front().finding); }
 }
 
@@ -256,25 +256,24 @@ TEST_F(UserNames, EveryVariantAndSamplerCompilesAndRunsWithCommonNames) {
         for (const char* common : {"map", "calcNormal", "hash", "smin", "sdBox", "PI", "EPS", "MAX_STEPS", "rot"})
             EXPECT_TRUE(names.count(common)) << common;
     }
-    renderer::Camera camera;
+    values::Camera camera;
     camera.position = {1.5f, 1.2f, 2.5f};
     int programs = 0;
-    for (renderer::ShadingMode mode :
-         {renderer::ShadingMode::Normals, renderer::ShadingMode::Gooch, renderer::ShadingMode::Matcap,
-          renderer::ShadingMode::Curvature, renderer::ShadingMode::Steps})
+    for (shaders::ShadingMode mode : {shaders::ShadingMode::Normals, shaders::ShadingMode::Gooch, shaders::ShadingMode::Matcap,
+                                      shaders::ShadingMode::Curvature, shaders::ShadingMode::Steps})
         for (int ao = 0; ao < 2; ++ao)
             for (int plane = 0; plane < 4; ++plane) // off, on, clipping, clipping + Lipschitz overlay
                 for (int relax = 0; relax < 2; ++relax)
                     for (int stats = 0; stats < 2; ++stats) {
-                        if (stats && mode != renderer::ShadingMode::Normals) continue;
+                        if (stats && mode != shaders::ShadingMode::Normals) continue;
                         renderer::SdfRenderer sdfRenderer;
-                        renderer::ShadingSettings shading;
+                        values::ShadingSettings shading;
                         shading.mode = mode;
                         shading.ambientOcclusion = ao;
                         shading.statsOutput = stats;
-                        renderer::TraceSettings trace;
+                        values::TraceSettings trace;
                         trace.overRelaxation = relax ? 1.5f : 1.0f;
-                        renderer::CuttingPlane cut;
+                        values::CuttingPlane cut;
                         cut.enabled = plane > 0;
                         cut.clipSurface = plane > 1;
                         cut.lipschitzOverlay = plane > 2;
@@ -636,14 +635,14 @@ TEST_P(ShadertoyPictureOf, SilhouetteMatchesSdfwbsTracer) {
     // sdfwb's hits at a hit tolerance of `epsilonScale` pixel footprints.
     auto hitsAt = [&](float epsilonScale) {
         renderer::SdfRenderer sdfRenderer;
-        renderer::ShadingSettings shading;
+        values::ShadingSettings shading;
         shading.statsOutput = true;
         EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
-        renderer::TraceSettings trace;
+        values::TraceSettings trace;
         trace.epsilonScale = epsilonScale;
         EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
         EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(sdf)));
-        renderer::Camera camera;
+        values::Camera camera;
         camera.position = view.eye;
         camera.target = view.target;
         camera.fovYDegrees = float(2.0 * std::atan(1.0 / double(view.focal)) * 180.0 / M_PI);
@@ -656,7 +655,7 @@ TEST_P(ShadertoyPictureOf, SilhouetteMatchesSdfwbsTracer) {
     // columns alone costs 5 % of the IoU. Compared at a like tolerance (the geometry: IoU >= 0.95)
     // and at the shipped one (what a user sees: IoU >= 0.90).
     const auto like = hitsAt(0.05f);
-    const auto shipped = hitsAt(renderer::TraceSettings{}.epsilonScale);
+    const auto shipped = hitsAt(values::TraceSettings{}.epsilonScale);
 
     auto corner = [&](int x, int y, int c) { return float(author.pixel(x, y)[c]); };
     std::size_t authors = 0;

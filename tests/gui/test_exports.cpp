@@ -10,7 +10,7 @@ namespace {
 
 // Starts the video dialog's export with `settings` (a real click) and waits for its end: success,
 // or a failure carrying the dialog's message.
-::testing::AssertionResult exportVideo(app::MainWindow& window, const jobs::AnimateRequest& settings) {
+::testing::AssertionResult exportVideo(app::MainWindow& window, const values::AnimateRequest& settings) {
     window.exports()->videoDialog()->setRequest(settings);
     bool done = false, ok = false;
     auto connection =
@@ -57,7 +57,7 @@ TEST(Export, ScreenshotAtAChosenSizeAndAnMp4) {
     window.exports()->showVideoDialog();
     QString mp4 = QDir::temp().filePath("sdfwb-gui-turntable.mp4");
     QFile::remove(mp4);
-    jobs::AnimateRequest settings;
+    values::AnimateRequest settings;
     settings.output = mp4.toStdString();
     settings.frame.width = 160;
     settings.frame.height = 90;
@@ -91,22 +91,22 @@ TEST(Export, Mp4FrameEqualsAScreenshotOfTheSameUnsavedState) {
     window.editor()->setText(text);
     ASSERT_TRUE(waitFor([&] { return applied; }));
     ASSERT_TRUE(window.editor()->isModified());
-    renderer::ShadingSettings shading = window.viewport()->shading();
-    shading.mode = renderer::ShadingMode::Gooch;
+    values::ShadingSettings shading = window.viewport()->shading();
+    shading.mode = shaders::ShadingMode::Gooch;
     shading.markers = {{0.55f, 0.55f, 0.55f}};
     window.viewport()->setShading(shading);
-    renderer::TraceSettings trace = window.viewport()->trace();
+    values::TraceSettings trace = window.viewport()->trace();
     trace.maxSteps = 24; // few steps: the box's silhouette shows the budget
     trace.stepFactor = 0.6f;
     window.viewport()->setTrace(trace);
-    renderer::CuttingPlane plane = window.document()->plane();
+    values::CuttingPlane plane = window.document()->plane();
     plane.enabled = true;
     plane.normal = {0.3f, 0.2f, 1.0f};
     plane.offset = 0.2f;
     window.document()->setPlane(plane);
     EXPECT_TRUE(window.viewport()->plane() == plane) << "the viewport draws the document's plane";
 
-    jobs::AnimateRequest settings;
+    values::AnimateRequest settings;
     const QString mp4 = QDir::temp().filePath(QString("sdfwb-gui-state-%1.mp4").arg(QCoreApplication::applicationPid()));
     settings.output = mp4.toStdString();
     QFile::remove(mp4);
@@ -115,16 +115,16 @@ TEST(Export, Mp4FrameEqualsAScreenshotOfTheSameUnsavedState) {
     settings.seconds = 0.1f;
     settings.framesPerSecond = 10;
     settings.turntable = true;
-    const jobs::AnimateRequest request = window.exports()->videoRequest(settings);
+    const values::AnimateRequest request = window.exports()->videoRequest(settings);
     EXPECT_TRUE(request.frame.trace == trace);
     EXPECT_TRUE(request.frame.plane == plane);
     EXPECT_TRUE(request.frame.shading == shading);
     EXPECT_TRUE(request.frame.camera == window.viewport()->camera());
     // One frame-settings value: the viewport's, whole, in the video's and the probe's requests.
-    const jobs::FrameSettings& view = window.viewport()->frameSettings();
+    const values::FrameSettings& view = window.viewport()->frameSettings();
     EXPECT_TRUE(view.shading == shading && view.trace == trace);
-    EXPECT_TRUE(static_cast<const jobs::FrameSettings&>(request.frame) == view);
-    EXPECT_TRUE(static_cast<const jobs::FrameSettings&>(window.probe()->request(10, 20, 320, 200).frame) == view);
+    EXPECT_TRUE(static_cast<const values::FrameSettings&>(request.frame) == view);
+    EXPECT_TRUE(static_cast<const values::FrameSettings&>(window.probe()->request(10, 20, 320, 200).frame) == view);
     EXPECT_TRUE(window.probe()->request(10, 20, 320, 200).frame.plane == plane);
     EXPECT_NE(request.frame.sdf.source.find("vec3(0.55)"), std::string::npos) << "the export must run the editor's text";
 
@@ -150,8 +150,8 @@ TEST(Export, Mp4FrameEqualsAScreenshotOfTheSameUnsavedState) {
     plane.enabled = false;
     window.document()->setPlane(plane);
     const QImage withoutPlane = screenshot("sdfwb-gui-state-noplane.png");
-    window.viewport()->setTrace(renderer::TraceSettings{});
-    shading.mode = renderer::ShadingMode::Normals;
+    window.viewport()->setTrace(values::TraceSettings{});
+    shading.mode = shaders::ShadingMode::Normals;
     window.viewport()->setShading(shading);
     const QImage defaults = screenshot("sdfwb-gui-state-defaults.png");
 
@@ -182,7 +182,7 @@ TEST(MeshExport, ExportsTheUnsavedStateAndCancelsCleanly) {
     QTemporaryDir folder;
     const QString path = folder.filePath("torus.ply");
     dialog->findChild<QLineEdit*>("meshOutput")->setText(path);
-    const jobs::MeshRequest request = exporter->request(path, 64);
+    const values::MeshRequest request = exporter->request(path, 64);
     ASSERT_EQ(request.sdf.params.size(), 4u);
     EXPECT_EQ(request.sdf.params[1].value[0], 0.1f) << "the dock's value goes with the export";
     EXPECT_FALSE(request.sdf.source.empty()) << "the viewport's text, not the file";
@@ -350,7 +350,7 @@ TEST(Export, ExrKeepsValuesAboveOneBackgroundImageAndOverlay) {
     window.resize(1200, 700);
     window.show();
     ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
-    window.setShadingMode(renderer::ShadingMode::Gooch);
+    window.setShadingMode(shaders::ShadingMode::Gooch);
     window.setBackgroundColour({3.0f, 2.0f, 0.5f});
     QTemporaryDir folder;
     const QString exr = folder.filePath("frame.exr");

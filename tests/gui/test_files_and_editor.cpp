@@ -43,7 +43,7 @@ TEST(ForeignCode, EntryFieldAndShowWhere) {
     QObject::connect(window.plane(), &app::PlaneController::readoutUpdated, [&] { ++readouts; });
     auto findingsNamed = [&](const char* name) {
         for (const auto& f : window.planePanel()->readout().flags)
-            if (std::string(sampling::findingName(f.finding)) == name) return true;
+            if (std::string(values::findingName(f.finding)) == name) return true;
         return false;
     };
     window.planePanel()->findChild<QPushButton*>("axis_Z")->click();
@@ -56,13 +56,13 @@ TEST(ForeignCode, EntryFieldAndShowWhere) {
     auto showAndCheck = [&](const char* name, const char* screenshot) {
         std::vector<glm::vec3> examples;
         for (const auto& f : window.planePanel()->readout().flags)
-            if (std::string(sampling::findingName(f.finding)) == name) examples = f.examples;
+            if (std::string(values::findingName(f.finding)) == name) examples = f.examples;
         ASSERT_FALSE(examples.empty());
         const QImage before = window.viewport()->grabFramebuffer();
         const int seen = readouts;
         showWhere->click();
         EXPECT_EQ(window.viewport()->shading().markers, examples);
-        const renderer::CuttingPlane plane = window.viewport()->plane();
+        const values::CuttingPlane plane = window.viewport()->plane();
         EXPECT_NEAR(glm::dot(glm::normalize(plane.normal), examples.front()), plane.offset, 1e-4f)
             << "the plane goes through the first point";
         EXPECT_NEAR(window.planePanel()->plane().offset, plane.offset, 1e-3f);
@@ -86,7 +86,7 @@ TEST(ForeignCode, EntryFieldAndShowWhere) {
     EXPECT_EQ(entry->text(), "snake");
     ASSERT_TRUE(waitFor([&] { return applied; }));
     EXPECT_EQ(window.document()->signature().entry, "snake");
-    renderer::CuttingPlane throughOrigin = window.viewport()->plane();
+    values::CuttingPlane throughOrigin = window.viewport()->plane();
     throughOrigin.offset = 0.0f;
     window.planePanel()->setPlane(throughOrigin);
     window.planePanel()->findChild<QPushButton*>("axis_Z")->click(); // emits the panel's plane: z = 0
@@ -268,7 +268,7 @@ TEST(Files, OpenMeshTracesItAndItsJobsSeeTheSameField) {
     EXPECT_EQ(window.document()->meshNormalize(), "unit-cube");
     EXPECT_TRUE(window.windowTitle().contains("mesh: sign winding, normalize unit-cube")) << window.windowTitle().toStdString();
     EXPECT_TRUE(window.editor()->text().contains("sdfwb_meshSdf(p)"));
-    const jobs::SdfInput input = window.document()->input();
+    const values::SdfInput input = window.document()->input();
     EXPECT_EQ(input.sdf, QFileInfo(path).absoluteFilePath().toStdString());
     EXPECT_EQ(input.normalize, "unit-cube");
     // At whatever resolution the viewport settles on for this field on this machine.
@@ -475,7 +475,7 @@ TEST(Shadertoy, PastedShaderTracesItsMapAndShowsItsOwnPicture) {
     if (QString path = screenshotPath("shadertoy_picture.png"); !path.isEmpty()) windowShot(window).save(path);
 
     // A left drag: iMouse follows (pixels from the lower left, zw the press), the camera stays.
-    const renderer::Camera camera = viewport->camera();
+    const values::Camera camera = viewport->camera();
     const QPoint from = centreOf(viewport), to = from + QPoint(120, -40);
     QTest::mousePress(viewport, Qt::LeftButton, Qt::NoModifier, from);
     EXPECT_GT(viewport->shadertoyMouse().z, 0.0f) << "pressed: z is positive";

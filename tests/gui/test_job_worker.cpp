@@ -18,11 +18,11 @@ using namespace sdfwb;
 
 namespace {
 
-jobs::AuditRequest planeRequest(const std::string& source, float offset = 0.0f) {
-    jobs::AuditRequest request;
+values::AuditRequest planeRequest(const std::string& source, float offset = 0.0f) {
+    values::AuditRequest request;
     request.sdf.sdf = "<test>";
     request.sdf.source = source;
-    request.plane = jobs::PlaneSpec{glm::vec3(0.0f, 0.0f, 1.0f), offset};
+    request.plane = values::PlaneSpec{glm::vec3(0.0f, 0.0f, 1.0f), offset};
     request.resolution = 64;
     return request;
 }
@@ -65,7 +65,7 @@ TEST(JobWorker, RequestsShareOneWarmProcess) {
         EXPECT_FALSE(channel.start(planeRequest(kSphere))) << "one request per channel at a time";
         const Outcome outcome = await(channel);
         ASSERT_TRUE(outcome.ok) << outcome.message.toStdString();
-        auto report = jobs::reportFromJson<jobs::AuditJobReport>(outcome.report);
+        auto report = jobs::reportFromJson<values::AuditJobReport>(outcome.report);
         ASSERT_TRUE(report) << report.error().message;
         ASSERT_TRUE(report->readout.has_value());
         // The plane z = offset through a sphere of radius 0.5: the smallest value is offset - 0.5 at
@@ -92,7 +92,7 @@ TEST(JobWorker, TheStructuredErrorCrossesTheProcessBoundary) {
     EXPECT_LE(error.diagnostics.front().line, 3);
     EXPECT_TRUE(outcome.message.contains("<test>:")) << outcome.message.toStdString();
     // A request the child cannot read is a usage error, and the worker answers the next one.
-    jobs::AuditRequest bad = planeRequest(kSphere);
+    values::AuditRequest bad = planeRequest(kSphere);
     bad.resolution = -3;
     ASSERT_TRUE(channel.start(bad));
     EXPECT_FALSE(await(channel).ok);

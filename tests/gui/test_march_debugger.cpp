@@ -26,7 +26,7 @@ TEST(MarchDebugger, ClickingAPixelShowsItsMarchAndHoveringThePlaneShowsTheField)
     ASSERT_TRUE(window.viewport()->probeTool());
 
     widgets::ViewportWidget* viewport = window.viewport();
-    const renderer::Camera camera = viewport->camera();
+    const values::Camera camera = viewport->camera();
     int probes = 0;
     QObject::connect(window.probe(), &app::ProbeController::probed, [&] { ++probes; });
     QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, centreOf(viewport));
@@ -44,18 +44,18 @@ TEST(MarchDebugger, ClickingAPixelShowsItsMarchAndHoveringThePlaneShowsTheField)
             }
         EXPECT_GT(yellow, 20) << "the probed pixel is marked";
     }
-    const jobs::ProbeReport& hit = window.probePanel()->report();
-    EXPECT_EQ(hit.outcome, jobs::MarchEvent::Hit) << hit.reason;
+    const values::ProbeReport& hit = window.probePanel()->report();
+    EXPECT_EQ(hit.outcome, values::MarchEvent::Hit) << hit.reason;
     EXPECT_EQ(hit.x, viewport->width() / 2);
     ASSERT_FALSE(hit.events.empty());
-    EXPECT_EQ(hit.events.front().event, jobs::MarchEvent::Step);
+    EXPECT_EQ(hit.events.front().event, values::MarchEvent::Step);
     EXPECT_TRUE(
-        std::any_of(hit.events.begin(), hit.events.end(), [](const auto& r) { return r.event == jobs::MarchEvent::Hit; }));
+        std::any_of(hit.events.begin(), hit.events.end(), [](const auto& r) { return r.event == values::MarchEvent::Hit; }));
     EXPECT_EQ(hit.oversteps, 0u) << "an exact field never oversteps";
     ASSERT_TRUE(hit.hitT.has_value());
     // The hit lies on the sphere of radius 0.8: the distance from the camera along the ray.
     const auto& last =
-        *std::find_if(hit.events.begin(), hit.events.end(), [](const auto& r) { return r.event == jobs::MarchEvent::Hit; });
+        *std::find_if(hit.events.begin(), hit.events.end(), [](const auto& r) { return r.event == values::MarchEvent::Hit; });
     EXPECT_NEAR(glm::length(last.position), 0.8f, 2e-3f);
     EXPECT_EQ(window.probePanel()->table()->rowCount(), int(hit.events.size()));
     EXPECT_GE(window.probePanel()->plot()->markerCount(), hit.steps);
@@ -67,10 +67,10 @@ TEST(MarchDebugger, ClickingAPixelShowsItsMarchAndHoveringThePlaneShowsTheField)
 
     QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, QPoint(2, 2));
     ASSERT_TRUE(waitFor([&] { return probes == 2; }, 30000));
-    const jobs::ProbeReport& miss = window.probePanel()->report();
-    EXPECT_TRUE(miss.outcome == jobs::MarchEvent::MissedBox || miss.outcome == jobs::MarchEvent::LeftBox)
-        << jobs::marchEventName(miss.outcome);
-    EXPECT_TRUE(window.probePanel()->summary().contains(jobs::marchEventName(miss.outcome)));
+    const values::ProbeReport& miss = window.probePanel()->report();
+    EXPECT_TRUE(miss.outcome == values::MarchEvent::MissedBox || miss.outcome == values::MarchEvent::LeftBox)
+        << values::marchEventName(miss.outcome);
+    EXPECT_TRUE(window.probePanel()->summary().contains(values::marchEventName(miss.outcome)));
 
     // The probe tool off: a drag orbits again.
     QTest::mouseClick(button, Qt::LeftButton);

@@ -40,7 +40,7 @@ TEST(CuttingPlane, PanelDrawsThePlaneAndShowsReadouts) {
     with.save(QDir::temp().filePath("sdfwb-gui-plane.png"));
     ASSERT_TRUE(waitFor([&] { return readout; }, 30000))
         << window.planePanel()->findChild<QLabel*>("readouts")->text().toStdString();
-    const sampling::PlaneReadout& r = window.planePanel()->readout();
+    const values::PlaneReadout& r = window.planePanel()->readout();
     EXPECT_NEAR(r.minimum, -0.8f, 0.03f);
     EXPECT_NEAR(r.lipschitzMax, 1.0f, 0.01f);
     EXPECT_EQ(r.nanCount, 0u);
@@ -57,7 +57,7 @@ TEST(CuttingPlane, PanelDrawsThePlaneAndShowsReadouts) {
     EXPECT_NEAR(window.planePanel()->plane().offset, 0.2f, 1e-3f);
     // The document holds the plane the drag moved to, and the jobs take it from there.
     EXPECT_TRUE(window.document()->plane() == viewport->plane());
-    jobs::AnimateRequest video;
+    values::AnimateRequest video;
     video.frame.width = 64;
     video.frame.height = 48;
     EXPECT_TRUE(window.exports()->videoRequest(video).frame.plane == viewport->plane());
@@ -123,7 +123,7 @@ TEST(Parameters, DockControlsRedrawWithoutRecompilingAndReachJobsAndTheFile) {
     const QImage smaller = frameOf(window);
     EXPECT_GT(meanDifference(before, smaller), 1.0) << "the viewport shows the new radius";
     EXPECT_EQ(window.viewport()->programsBuilt(), programs) << "a parameter change must not recompile";
-    jobs::SdfInput input = window.document()->input();
+    values::SdfInput input = window.document()->input();
     ASSERT_EQ(input.params.size(), 4u);
     EXPECT_EQ(input.params[0].name, "majorRadius");
     EXPECT_EQ(input.params[0].value[0], dragged) << "jobs run with the dock's values";
@@ -152,9 +152,9 @@ TEST(Parameters, DockControlsRedrawWithoutRecompilingAndReachJobsAndTheFile) {
 
     // The clip-end keyframe reaches the MP4 request.
     panel->findChild<QPushButton*>("setClipEnd")->click();
-    jobs::AnimateRequest settings;
+    values::AnimateRequest settings;
     settings.output = "/tmp/clip.mp4";
-    jobs::AnimateRequest request = window.exports()->videoRequest(settings);
+    values::AnimateRequest request = window.exports()->videoRequest(settings);
     ASSERT_EQ(request.paramsEnd.size(), 4u);
     EXPECT_EQ(request.paramsEnd[3].value[0], 1.0f);
     EXPECT_EQ(request.frame.sdf.params[0].value[0], panel->values()[0].value[0]);

@@ -18,7 +18,7 @@ TEST(SamplingDialog, SamplesTheOpenSdfAndCancelsCleanly) {
 
     QString output = QDir::temp().filePath("sdfwb-gui-samples.npz");
     QFile::remove(output);
-    jobs::SampleRequest settings;
+    values::SampleRequest settings;
     settings.pattern = "near";
     settings.count = 20000;
     settings.output = output.toStdString();

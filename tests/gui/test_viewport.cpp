@@ -13,9 +13,8 @@ TEST(Viewport, EveryShadingModeDrawsSomethingDifferent) {
     window.show();
     ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
     std::vector<QImage> frames;
-    for (renderer::ShadingMode mode :
-         {renderer::ShadingMode::Normals, renderer::ShadingMode::Gooch, renderer::ShadingMode::Matcap,
-          renderer::ShadingMode::Curvature, renderer::ShadingMode::Steps}) {
+    for (shaders::ShadingMode mode : {shaders::ShadingMode::Normals, shaders::ShadingMode::Gooch, shaders::ShadingMode::Matcap,
+                                      shaders::ShadingMode::Curvature, shaders::ShadingMode::Steps}) {
         window.setShadingMode(mode);
         frames.push_back(frameOf(window));
         frames.back().save(QDir::temp().filePath(QString("sdfwb-gui-mode-%1.png").arg(shaders::shadingModeName(mode))));
@@ -38,7 +37,7 @@ TEST(Viewport, AmbientOcclusionDarkensCreases) {
     app::MainWindow window;
     window.show();
     ASSERT_TRUE(openFileAndWait(window, path));
-    window.setShadingMode(renderer::ShadingMode::Gooch);
+    window.setShadingMode(shaders::ShadingMode::Gooch);
     window.setAmbientOcclusion(false);
     QImage plain = frameOf(window);
     window.setAmbientOcclusion(true);
@@ -75,7 +74,7 @@ TEST(Viewport, MovingRendersCheaplyThenRefines) {
     ASSERT_TRUE(waitFor([&] { return !viewport->isInteracting(); }, 3000));
     viewport->grabFramebuffer(); // a full-resolution frame: the scale while moving starts from its cost
     ASSERT_EQ(viewport->lastFrameScale(), 1.0f);
-    renderer::Camera before = viewport->camera();
+    values::Camera before = viewport->camera();
     QPoint start(300, 300);
     QMouseEvent press(QEvent::MouseButtonPress, start, viewport->mapToGlobal(start), Qt::LeftButton, Qt::LeftButton,
                       Qt::NoModifier);
@@ -274,7 +273,7 @@ TEST(Viewport, ASlowSdfShowsItsTimingFrameAsItsFirstFrameThenTheFullOne) {
 }
 
 TEST(Viewport, CameraPanelMovesTheCameraAndTheSessionKeepsIt) {
-    renderer::Camera edited;
+    values::Camera edited;
     {
         app::MainWindow window;
         window.show();
@@ -292,7 +291,7 @@ TEST(Viewport, CameraPanelMovesTheCameraAndTheSessionKeepsIt) {
     EXPECT_FLOAT_EQ(again.viewport()->camera().position.y, -2.5f);
     EXPECT_FLOAT_EQ(again.viewport()->camera().fovYDegrees, 30.0f);
     again.viewport()->resetCamera();
-    EXPECT_FLOAT_EQ(again.cameraPanel()->camera().position.y, renderer::Camera{}.position.y);
+    EXPECT_FLOAT_EQ(again.cameraPanel()->camera().position.y, values::Camera{}.position.y);
     again.close();
 }
 
@@ -305,7 +304,7 @@ TEST(Viewport, StatusBarShowsTheFloat32PrecisionFloor) {
     window.viewport()->resetCamera();
     EXPECT_TRUE(label->text().startsWith("float32 floor")) << label->text().toStdString();
     // 1e4 away with a 0.001 degree lens: positions are known to ~1e-3, far coarser than a pixel.
-    renderer::Camera far;
+    values::Camera far;
     far.position = {0.0f, 0.0f, 1e4f};
     far.fovYDegrees = 0.001f;
     far.farPlane = 2e4f;
@@ -360,7 +359,7 @@ TEST(Viewport, SlowShaderIsCappedThenRevertedNeverFreezesTheWindow) {
     EXPECT_TRUE(warnings.back().contains("previous SDF")) << warnings.back().toStdString();
     // Jobs run what the viewport shows: the sphere, not the loop the editor holds (issue 34, point 3).
     ASSERT_TRUE(waitFor([&] { return window.document()->reverted(); }));
-    const jobs::SdfInput input = window.document()->input();
+    const values::SdfInput input = window.document()->input();
     EXPECT_TRUE(QString::fromStdString(input.sdf).endsWith("Sphere.glsl")) << input.sdf;
     EXPECT_EQ(QString::fromStdString(input.source), window.document()->lastGoodText());
     EXPECT_FALSE(QString::fromStdString(input.source).contains("100000000")) << "the loop's text went to the jobs";
@@ -402,7 +401,7 @@ TEST(Viewport, TimeScrubsAnimatedSdfs) {
     EXPECT_FLOAT_EQ(window.viewport()->time(), window.document()->time());
     // Jobs run at the document's time: the probe's frame and a video's first frame.
     EXPECT_FLOAT_EQ(window.document()->frame(64, 48).time, window.document()->time());
-    jobs::AnimateRequest video;
+    values::AnimateRequest video;
     video.frame.width = 64;
     video.frame.height = 48;
     EXPECT_FLOAT_EQ(window.exports()->videoRequest(video).frame.time, window.document()->time());

@@ -73,9 +73,9 @@ TEST(Abuse, AMinuteOfSwitchingDockingResizingDialogsAndTyping) {
     ASSERT_NE(dock, nullptr);
     const char* files[] = {"Geometry/Box.glsl", "Animal/Cat.glsl", "Fractal/Mandelbulb.glsl", "Geometry/Capsule.glsl",
                            "Geometry/Torus.glsl"};
-    const renderer::ShadingMode modes[] = {renderer::ShadingMode::Gooch, renderer::ShadingMode::Matcap,
-                                           renderer::ShadingMode::Curvature, renderer::ShadingMode::Steps,
-                                           renderer::ShadingMode::Normals};
+    const shaders::ShadingMode modes[] = {shaders::ShadingMode::Gooch, shaders::ShadingMode::Matcap,
+                                          shaders::ShadingMode::Curvature, shaders::ShadingMode::Steps,
+                                          shaders::ShadingMode::Normals};
     const char* keystrokes[] = {" ", "+", "0", ".", "1", ")", ";", "\n", "x", "(", "/", "*"};
     int actions = 0, typed = 0, docked = 0, dialogs = 0;
     auto settle = [] {
@@ -142,7 +142,7 @@ TEST(Abuse, AMinuteOfSwitchingDockingResizingDialogsAndTyping) {
     window.resize(1000, 700);
     if (dock->isFloating()) dock->setFloating(false);
     ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
-    window.setShadingMode(renderer::ShadingMode::Normals);
+    window.setShadingMode(shaders::ShadingMode::Normals);
     const QImage last = frameOf(window);
     log::removeSink(sink);
     std::printf("abuse: %d actions (%d keystrokes, %d float/re-docks, %d dialogs) in %.0f s; GL objects %ld -> %ld\n", actions,

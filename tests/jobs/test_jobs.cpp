@@ -16,12 +16,13 @@
 
 using namespace sdfwb;
 using namespace sdfwb::jobs;
+using namespace sdfwb::values;
 
 namespace {
 
 // A frame whose every field differs from its default, with floats that have no short decimal.
-FrameRequest unusualFrame() {
-    FrameRequest f;
+values::FrameRequest unusualFrame() {
+    values::FrameRequest f;
     f.sdf = {"Torus",
              "map",
              "float map(vec3 p) { return length(p) - 0.1; }\n",
@@ -29,7 +30,7 @@ FrameRequest unusualFrame() {
     f.width = 333;
     f.height = 77;
     f.time = 1.0f / 3.0f;
-    f.shading.mode = renderer::ShadingMode::Gooch;
+    f.shading.mode = shaders::ShadingMode::Gooch;
     f.shading.ambientOcclusion = true;
     f.shading.background = {0.1f, 0.2f, 0.30000001f};
     f.shading.lightDirection = {0.0f, 1.0f, 1e-7f};
@@ -41,8 +42,8 @@ FrameRequest unusualFrame() {
     f.trace.epsilonScale = 0.125f;
     f.trace.boxMargin = 0.2f;
     f.trace.overRelaxation = 1.6f;
-    f.trace.cones = renderer::TraceSettings::Cones::On;
-    f.trace.tracer = renderer::TraceSettings::Tracer::Compute;
+    f.trace.cones = values::TraceSettings::Cones::On;
+    f.trace.tracer = values::TraceSettings::Tracer::Compute;
     f.camera.position = {3.0f, -2.0f, 1.0e-3f};
     f.camera.target = {0.1f, 0.2f, 0.3f};
     f.camera.up = {0.0f, 0.0f, 1.0f};
@@ -59,10 +60,10 @@ FrameRequest unusualFrame() {
     return f;
 }
 
-std::vector<Request> unusualRequests() {
-    RenderRequest render{unusualFrame(), "/tmp/out.exr"};
-    AnimateRequest animate{unusualFrame(), "clip.mp4", 2.5f, 24, true, {{"radius", {0.7f}}, {"hollow", {1.0f}}}};
-    SampleRequest sample;
+std::vector<values::Request> unusualRequests() {
+    values::RenderRequest render{unusualFrame(), "/tmp/out.exr"};
+    values::AnimateRequest animate{unusualFrame(), "clip.mp4", 2.5f, 24, true, {{"radius", {0.7f}}, {"hollow", {1.0f}}}};
+    values::SampleRequest sample;
     sample.sdf = {"a/b c.glsl", "scene", "", {}};
     sample.pattern = "metropolis_curvature";
     sample.count = 12345678901ull;
@@ -76,19 +77,19 @@ std::vector<Request> unusualRequests() {
     sample.gradientStep = 1e-4f;
     sample.surfaceTolerance = 3e-6f;
     sample.family.sweeps = {{"radius", {0.1f}, {0.9f}, 5}, {"offset", {0.0f, 0.0f, 0.0f}, {1.0f / 3.0f, 1.0f, 2.0f}, 3}};
-    AuditRequest audit;
+    values::AuditRequest audit;
     audit.sdf = {"Sphere", "", "float sdf(vec3 p) { return length(p) - 0.5; }", {}};
     audit.samples = 4096;
     audit.seed = 9;
     audit.time = 0.5f;
     audit.truncationReach = 1.5f;
-    audit.plane = PlaneSpec{{0.0f, 1.0f, 0.0f}, 0.1f};
+    audit.plane = values::PlaneSpec{{0.0f, 1.0f, 0.0f}, 0.1f};
     audit.resolution = 64;
     audit.family.randomize = 77;
-    MergeRequest merge{"all.ply", "ply", {"p0.ply", "p1.ply", "with \"quotes\" and \\.ply"}};
-    BenchRequest bench{"report", 3, true, true};
-    ParamsRequest params{{"family.glsl", "shape", "", {}}};
-    MeshRequest mesh;
+    values::MergeRequest merge{"all.ply", "ply", {"p0.ply", "p1.ply", "with \"quotes\" and \\.ply"}};
+    values::BenchRequest bench{"report", 3, true, true};
+    values::ParamsRequest params{{"family.glsl", "shape", "", {}}};
+    values::MeshRequest mesh;
     mesh.sdf = {"Torus", "map", "", {{"radius", {0.25f}}}};
     mesh.output = "t.glb";
     mesh.resolution = 333;
@@ -99,23 +100,23 @@ std::vector<Request> unusualRequests() {
     mesh.lipschitz = 1.7f;
     mesh.errorSamples = 1234;
     mesh.seed = 77;
-    EvalRequest eval;
+    values::EvalRequest eval;
     eval.sdf = {"Sphere", "", "", {}};
     eval.mesh = "prediction.obj";
     eval.points = 5000;
     eval.tau = 0.005f;
     eval.occupancyResolution = 0;
     eval.seed = 3;
-    RunRequest run{"a b/shapes.csv", "status.jsonl", 12.5, 2, 5, {}, true, "/opt/sdfwb", "/usr/bin/python3"};
-    RunRequest one{"m.jsonl", "", 0.0, 0, 1, {12345678901ull, 0, 7}, false, "", ""};
-    ListRequest list{"my report.json"};
-    return {render, animate, sample, audit, merge, ListRequest{}, list, bench, params, mesh, eval, run, one};
+    values::RunRequest run{"a b/shapes.csv", "status.jsonl", 12.5, 2, 5, {}, true, "/opt/sdfwb", "/usr/bin/python3"};
+    values::RunRequest one{"m.jsonl", "", 0.0, 0, 1, {12345678901ull, 0, 7}, false, "", ""};
+    values::ListRequest list{"my report.json"};
+    return {render, animate, sample, audit, merge, values::ListRequest{}, list, bench, params, mesh, eval, run, one};
 }
 
 } // namespace
 
 TEST(JobJson, EveryRequestKindSurvivesARoundTrip) {
-    for (const Request& request : unusualRequests()) {
+    for (const values::Request& request : unusualRequests()) {
         for (int indent : {-1, 2}) {
             const std::string json = toJson(request, indent);
             auto back = requestFromJson(json);
@@ -130,10 +131,10 @@ TEST(JobJson, EveryRequestKindSurvivesARoundTrip) {
 TEST(JobJson, DefaultsFillAbsentKeysAndFloatsAreWrittenShort) {
     auto request = requestFromJson(R"({"kind": "render", "sdf": "Torus", "output": "t.png"})");
     ASSERT_TRUE(request) << request.error().message;
-    RenderRequest expected;
+    values::RenderRequest expected;
     expected.frame.sdf.sdf = "Torus";
     expected.output = "t.png";
-    EXPECT_TRUE(std::get<RenderRequest>(*request) == expected);
+    EXPECT_TRUE(std::get<values::RenderRequest>(*request) == expected);
     const std::string json = toJson(*request);
     EXPECT_EQ(json.rfind(R"({"kind":"render")", 0), 0u) << json;       // the kind leads
     EXPECT_NE(json.find(R"("near":0.01)"), std::string::npos) << json; // not 0.009999999776482582
@@ -177,12 +178,12 @@ TEST(JobJson, MalformedRequestsAreRefusedNamingTheKey) {
 }
 
 TEST(JobJson, ReportsSurviveARoundTrip) {
-    RenderReport render{
+    values::RenderReport render{
         "a.png", "/x/Torus.glsl", "sdf", 640, 360, "gooch", 12.5, 0.75, "llvmpipe", {}, {"below float32 precision"}};
-    auto r = reportFromJson<RenderReport>(toJson(render));
+    auto r = reportFromJson<values::RenderReport>(toJson(render));
     ASSERT_TRUE(r) << r.error().message;
     EXPECT_TRUE(*r == render);
-    SampleReport sample;
+    values::SampleReport sample;
     sample.output = "s.bin";
     sample.count = 1ull << 40;
     sample.rows = 5;
@@ -193,34 +194,35 @@ TEST(JobJson, ReportsSurviveARoundTrip) {
                         {"s_00001.bin", {{"radius", {0.9f}}, {"offset", {1.0f, 2.0f, 3.0f}}}, 5, 1, 0.5}};
     sample.index = "s_index.json";
     sample.warnings = {"parameter 'radius' = 2 lies outside its @range 0.1 0.9"};
-    auto s = reportFromJson<SampleReport>(toJson(sample));
+    auto s = reportFromJson<values::SampleReport>(toJson(sample));
     ASSERT_TRUE(s) << s.error().message;
     EXPECT_TRUE(*s == sample);
-    AuditJobReport family;
+    values::AuditJobReport family;
     family.sdf = "blend.glsl";
     family.entry = "map";
     family.truncationReach = 3.0f;
-    using sampling::Finding;
+    using values::Finding;
     family.family = {
         {{{"stretch", {0.5f}}}, Finding::Conservative, "L <= 1", {}, 1.0f, 1.01f, 1e-3f, 0.4},
         {{{"stretch", {2.0f}}}, Finding::NonConservative, "L = 2", {Finding::NonConservative}, 2.0f, 2.1f, 0.3f, 0.2}};
-    auto f = reportFromJson<AuditJobReport>(toJson(family));
+    auto f = reportFromJson<values::AuditJobReport>(toJson(family));
     ASSERT_TRUE(f) << f.error().message;
     EXPECT_EQ(f->family, family.family);
     EXPECT_FALSE(f->volume);
-    // Findings travel by their names (sampling::kFindingNames), and a name no finding has is
+    // Findings travel by their names (values::kFindingNames), and a name no finding has is
     // refused at its key.
-    for (const auto& [finding, name] : sampling::kFindingNames) EXPECT_EQ(valueNamed(sampling::kFindingNames, name), finding);
+    for (const auto& [finding, name] : values::kFindingNames) EXPECT_EQ(valueNamed(values::kFindingNames, name), finding);
     std::string misnamed = toJson(family);
     misnamed.replace(misnamed.find(R"("non-conservative")"), 18, R"("non-conservatory")");
-    auto refusedFinding = reportFromJson<AuditJobReport>(misnamed);
+    auto refusedFinding = reportFromJson<values::AuditJobReport>(misnamed);
     ASSERT_FALSE(refusedFinding);
     EXPECT_NE(refusedFinding.error().message.find("'family[1].verdict'"), std::string::npos) << refusedFinding.error().message;
-    ListReport list{{{"Torus", "Geometry", "exact", "/d/Torus.glsl", "iq", "MIT", "", false}}, {"bad.glsl: no metadata"}, "/d"};
-    auto l = reportFromJson<ListReport>(toJson(list));
+    values::ListReport list{
+        {{"Torus", "Geometry", "exact", "/d/Torus.glsl", "iq", "MIT", "", false}}, {"bad.glsl: no metadata"}, "/d"};
+    auto l = reportFromJson<values::ListReport>(toJson(list));
     ASSERT_TRUE(l) << l.error().message;
     EXPECT_TRUE(*l == list);
-    RunReport run;
+    values::RunReport run;
     run.manifest = "shapes.csv";
     run.status = "shapes.csv.status-1-of-4.jsonl";
     run.rank = 1;
@@ -236,19 +238,19 @@ TEST(JobJson, ReportsSurviveARoundTrip) {
                     "2026-11-24T05:00:00Z"},
                    {5, 8, "deepsdf", "b.glsl", "out/b.npz", "0123456789abcdef", "timeout", 30.0, 0, 0, 0, 137,
                     "killed after \"30 s\"", "2026-11-24T05:00:31Z"}};
-    auto rr = reportFromJson<RunReport>(toJson(run));
+    auto rr = reportFromJson<values::RunReport>(toJson(run));
     ASSERT_TRUE(rr) << rr.error().message;
     EXPECT_TRUE(*rr == run);
-    auto line = reportFromJson<RunItemReport>(toJson(run.results[1], -1));
+    auto line = reportFromJson<values::RunItemReport>(toJson(run.results[1], -1));
     ASSERT_TRUE(line) << line.error().message;
     EXPECT_TRUE(*line == run.results[1]);
     EXPECT_EQ(toJson(run.results[1], -1).find('\n'), std::string::npos); // one status-file line
     // A probe's events and outcome travel by their names (MarchEvent's one table): every event
     // survives, and a name no event has is refused at its key.
-    ProbeReport probe;
-    probe.outcome = MarchEvent::OutOfSteps;
-    for (const auto& [event, name] : kMarchEventNames) {
-        ProbeStep step;
+    values::ProbeReport probe;
+    probe.outcome = values::MarchEvent::OutOfSteps;
+    for (const auto& [event, name] : values::kMarchEventNames) {
+        values::ProbeStep step;
         step.event = event;
         step.t = 0.5f;
         probe.events.push_back(step);
@@ -256,37 +258,32 @@ TEST(JobJson, ReportsSurviveARoundTrip) {
     }
     const std::string probeJson = toJson(probe);
     EXPECT_NE(probeJson.find(R"("refine undone")"), std::string::npos) << probeJson;
-    auto pr = reportFromJson<ProbeReport>(probeJson);
+    auto pr = reportFromJson<values::ProbeReport>(probeJson);
     ASSERT_TRUE(pr) << pr.error().message;
     EXPECT_TRUE(*pr == probe);
     std::string renamed = probeJson;
     renamed.replace(renamed.find(R"("missed the box")"), 16, R"("missed the bus")");
-    auto refused = reportFromJson<ProbeReport>(renamed);
+    auto refused = reportFromJson<values::ProbeReport>(renamed);
     ASSERT_FALSE(refused);
     EXPECT_NE(refused.error().message.find("'events[9].event'"), std::string::npos) << refused.error().message;
     // Reports grow: a key this build does not know is skipped, not refused.
-    auto grown = reportFromJson<MergeReport>(R"({"output": "m.bin", "rows": 7, "parts": 2, "seconds": 0.5, "new_figure": 1})");
+    auto grown =
+        reportFromJson<values::MergeReport>(R"({"output": "m.bin", "rows": 7, "parts": 2, "seconds": 0.5, "new_figure": 1})");
     ASSERT_TRUE(grown) << grown.error().message;
     EXPECT_EQ(grown->rows, 7u);
 }
 
 TEST(JobJson, AuditReportsKeepEveryFindingAndFigure) {
-    AuditJobReport volume;
+    values::AuditJobReport volume;
     volume.sdf = "broken.glsl";
     volume.entry = "map";
     volume.truncationReach = 2.0f;
-    sampling::AuditReport a;
-    a.verdict = sampling::Finding::Discontinuous;
+    values::AuditReport a;
+    a.verdict = values::Finding::Discontinuous;
     a.reason = "f jumps";
-    a.flags.push_back({sampling::Finding::Discontinuous,
-                       "jumps of 0.2",
-                       0.2f,
-                       0.4f,
-                       0.0f,
-                       0.01,
-                       37,
-                       {{0.1f, 0.2f, 0.3f}, {-1.0f, 0.0f, 0.5f}}});
-    a.flags.push_back({sampling::Finding::Truncated, "plateau at 0.3", 0.3f, 0.0f, 0.25f, 0.5, 0, {}});
+    a.flags.push_back(
+        {values::Finding::Discontinuous, "jumps of 0.2", 0.2f, 0.4f, 0.0f, 0.01, 37, {{0.1f, 0.2f, 0.3f}, {-1.0f, 0.0f, 0.5f}}});
+    a.flags.push_back({values::Finding::Truncated, "plateau at 0.3", 0.3f, 0.0f, 0.25f, 0.5, 0, {}});
     a.lipschitz = 1.25f;
     a.truncationDistance = 0.3f;
     a.scales = {{0.02f, 1.0f, 1.1f, 1.2f, 3.0f}};
@@ -295,7 +292,7 @@ TEST(JobJson, AuditReportsKeepEveryFindingAndFigure) {
     volume.volume = a;
     const std::string json = toJson(volume);
     EXPECT_NE(json.find("\"jump_max\": 0.4"), std::string::npos) << json; // the flag's named figures
-    auto back = reportFromJson<AuditJobReport>(json);
+    auto back = reportFromJson<values::AuditJobReport>(json);
     ASSERT_TRUE(back) << back.error().message;
     ASSERT_TRUE(back->volume);
     EXPECT_FALSE(back->readout);
@@ -304,16 +301,16 @@ TEST(JobJson, AuditReportsKeepEveryFindingAndFigure) {
     EXPECT_EQ(back->volume->flags[0].count, 37u);
     EXPECT_EQ(toJson(*back), json);
 
-    AuditJobReport plane;
+    values::AuditJobReport plane;
     plane.sdf = "Sphere";
-    plane.plane = PlaneSpec{{0.0f, 0.0f, 1.0f}, 0.5f};
-    sampling::PlaneReadout readout;
+    plane.plane = values::PlaneSpec{{0.0f, 0.0f, 1.0f}, 0.5f};
+    values::PlaneReadout readout;
     readout.resolution = 64;
     readout.histogram = {1, 2, 3};
     readout.flags = a.flags;
     plane.readout = readout;
     const std::string planeJson = toJson(plane);
-    auto planeBack = reportFromJson<AuditJobReport>(planeJson);
+    auto planeBack = reportFromJson<values::AuditJobReport>(planeJson);
     ASSERT_TRUE(planeBack) << planeBack.error().message;
     ASSERT_TRUE(planeBack->readout);
     EXPECT_FALSE(planeBack->volume);
@@ -340,13 +337,13 @@ TEST(Jobs, TheListCarriesTheDatasetReportsMeasurements) {
     std::fputs("{\"sdfs\": 3", file);
     std::fclose(file);
 
-    auto listed = run(ListRequest{good.string()}, {});
+    auto listed = run(values::ListRequest{good.string()}, {});
     ASSERT_TRUE(listed) << listed.error.message;
     EXPECT_EQ(listed->report, good.string());
     EXPECT_EQ(listed->measuredOn, "test machine");
     EXPECT_EQ(listed->measuredDate, "2026-11-26");
     int measured = 0;
-    for (const ListItem& item : listed->items) {
+    for (const values::ListItem& item : listed->items) {
         if (item.name == "Torus") {
             EXPECT_EQ(item.measuredType, "exact");
             ASSERT_TRUE(item.renderMilliseconds.has_value());
@@ -355,21 +352,21 @@ TEST(Jobs, TheListCarriesTheDatasetReportsMeasurements) {
         measured += !item.measuredType.empty();
     }
     EXPECT_EQ(measured, 1) << "only the entry the report names is measured";
-    auto back = reportFromJson<ListReport>(toJson(*listed));
+    auto back = reportFromJson<values::ListReport>(toJson(*listed));
     ASSERT_TRUE(back) << back.error().message;
     EXPECT_TRUE(*back == *listed);
 
-    auto broken = run(ListRequest{bad.string()}, {});
+    auto broken = run(values::ListRequest{bad.string()}, {});
     ASSERT_TRUE(broken) << "a bad report does not stop the list";
     EXPECT_TRUE(broken->report.empty());
     ASSERT_FALSE(broken->problems.empty());
     EXPECT_NE(broken->problems.back().find("bad.json: not a JSON object"), std::string::npos) << broken->problems.back();
-    for (const ListItem& item : broken->items) EXPECT_TRUE(item.measuredType.empty());
+    for (const values::ListItem& item : broken->items) EXPECT_TRUE(item.measuredType.empty());
     std::filesystem::remove_all(folder);
 }
 
 TEST(Jobs, ValidationNamesTheArgumentBeforeAnyWork) {
-    AnimateRequest animate;
+    values::AnimateRequest animate;
     animate.frame.sdf.sdf = "Torus";
     animate.output = "clip.mp4";
     animate.framesPerSecond = 0;
@@ -378,7 +375,7 @@ TEST(Jobs, ValidationNamesTheArgumentBeforeAnyWork) {
     EXPECT_EQ(error->failure, Failure::Usage);
     EXPECT_NE(error->message.find("'fps'"), std::string::npos) << error->message;
 
-    RenderRequest render;
+    values::RenderRequest render;
     render.frame.sdf.sdf = "Torus";
     render.output = "picture.xyz";
     error = validate(render);
@@ -404,7 +401,7 @@ TEST(Jobs, ValidationNamesTheArgumentBeforeAnyWork) {
     EXPECT_FALSE(validate(render)) << validate(render)->message;
 
     // Source text with no file is valid: the workbench's untitled buffer, Python's strings.
-    AuditRequest audit;
+    values::AuditRequest audit;
     audit.sdf.source = "float sdf(vec3 p) { return length(p) - 0.5; }";
     EXPECT_FALSE(validate(audit));
     audit.samples = 10;
@@ -414,12 +411,12 @@ TEST(Jobs, ValidationNamesTheArgumentBeforeAnyWork) {
 }
 
 TEST(Jobs, OpenSdfUsesTheGivenTextNotTheFile) {
-    SdfInput input{"Torus", "", "float sdf(vec3 p) { return length(p) - 0.25; }\n", {}};
+    values::SdfInput input{"Torus", "", "float sdf(vec3 p) { return length(p) - 0.25; }\n", {}};
     auto opened = openSdf(input, "test");
     ASSERT_TRUE(opened) << opened.error.message;
     EXPECT_NE(opened->label.find("Torus.glsl"), std::string::npos) << opened->label; // labelled by the file
     EXPECT_NE(opened->prepared.source.text.find("0.25"), std::string::npos);         // but the given text
-    opened = openSdf(SdfInput{"", "nothere", "float sdf(vec3 p) { return 1.0; }", {}}, "render");
+    opened = openSdf(values::SdfInput{"", "nothere", "float sdf(vec3 p) { return 1.0; }", {}}, "render");
     ASSERT_FALSE(opened);
     EXPECT_EQ(opened.error.failure, Failure::Work);
     EXPECT_FALSE(opened.error.diagnostics.empty());
@@ -445,13 +442,13 @@ std::string standardOutput(const std::string& arguments) {
 // The CLI's options and the JSON form make the same request: what --print-request prints reads
 // back as the request the options describe, field by field.
 TEST(JobJson, CommandLineOptionsMakeTheSameRequestAsJson) {
-    RenderRequest render;
+    values::RenderRequest render;
     render.frame.sdf = {"Torus", "map", "", {}};
     render.output = "/tmp/x.png";
     render.frame.width = 320;
     render.frame.height = 200;
     render.frame.time = 1.5f;
-    render.frame.shading.mode = renderer::ShadingMode::Gooch;
+    render.frame.shading.mode = shaders::ShadingMode::Gooch;
     render.frame.shading.ambientOcclusion = true;
     render.frame.shading.matcap = "jade";
     render.frame.camera.position = {3.0f, 2.0f, 1.0f};
@@ -470,9 +467,9 @@ TEST(JobJson, CommandLineOptionsMakeTheSameRequestAsJson) {
         "--camera 3,2,1 --target 0.1,0,0 --fov 50 --max-steps 300 --step-factor 0.8 --relaxation 1.5 --plane 0,1,0,0.25 "
         "--plane-no-clip --contour-spacing 0.05 --print-request"));
     ASSERT_TRUE(parsed) << parsed.error().message;
-    EXPECT_TRUE(*parsed == Request(render)) << toJson(*parsed, 2) << "\nexpected\n" << toJson(render, 2);
+    EXPECT_TRUE(*parsed == values::Request(render)) << toJson(*parsed, 2) << "\nexpected\n" << toJson(render, 2);
 
-    AnimateRequest animate;
+    values::AnimateRequest animate;
     animate.frame.sdf.sdf = "Sphere";
     animate.output = "/tmp/x.mp4";
     animate.seconds = 0.5f;
@@ -481,9 +478,9 @@ TEST(JobJson, CommandLineOptionsMakeTheSameRequestAsJson) {
     parsed = requestFromJson(
         standardOutput("--batch animate --sdf Sphere --output /tmp/x.mp4 --seconds 0.5 --fps 12 --turntable --print-request"));
     ASSERT_TRUE(parsed) << parsed.error().message;
-    EXPECT_TRUE(*parsed == Request(animate)) << toJson(*parsed, 2);
+    EXPECT_TRUE(*parsed == values::Request(animate)) << toJson(*parsed, 2);
 
-    SampleRequest sample;
+    values::SampleRequest sample;
     sample.sdf.sdf = "Sphere";
     sample.pattern = "near";
     sample.count = 1000;
@@ -499,21 +496,21 @@ TEST(JobJson, CommandLineOptionsMakeTheSameRequestAsJson) {
         standardOutput("--batch sample --sdf Sphere --pattern near -n 1000 --output /tmp/x.npz --seed 7 --time 0.5 "
                        "--shard 1/4 --chunk 512 --gradient-step 1e-4 --surface-tolerance 1e-6 --print-request"));
     ASSERT_TRUE(parsed) << parsed.error().message;
-    EXPECT_TRUE(*parsed == Request(sample)) << toJson(*parsed, 2);
+    EXPECT_TRUE(*parsed == values::Request(sample)) << toJson(*parsed, 2);
 
-    AuditRequest audit;
+    values::AuditRequest audit;
     audit.sdf = {"Sphere", "sdf", "", {}};
     audit.samples = 1000;
     audit.seed = 3;
     audit.truncationReach = 2.0f;
-    audit.plane = PlaneSpec{{1.0f, 0.0f, 0.0f}, 0.5f};
+    audit.plane = values::PlaneSpec{{1.0f, 0.0f, 0.0f}, 0.5f};
     audit.resolution = 64;
     parsed = requestFromJson(standardOutput("--batch audit --sdf Sphere --entry sdf --samples 1000 --seed 3 --probe-distance 2 "
                                             "--plane 1,0,0,0.5 --resolution 64 --print-request"));
     ASSERT_TRUE(parsed) << parsed.error().message;
-    EXPECT_TRUE(*parsed == Request(audit)) << toJson(*parsed, 2);
+    EXPECT_TRUE(*parsed == values::Request(audit)) << toJson(*parsed, 2);
 
-    RunRequest run;
+    values::RunRequest run;
     run.manifest = "shapes.jsonl";
     run.status = "/tmp/s.jsonl";
     run.itemTimeout = 90.0;
@@ -523,10 +520,10 @@ TEST(JobJson, CommandLineOptionsMakeTheSameRequestAsJson) {
     parsed = requestFromJson(standardOutput("--batch run shapes.jsonl --status /tmp/s.jsonl --item-timeout 90 --rank 3 "
                                             "--world-size 4 --list --print-request"));
     ASSERT_TRUE(parsed) << parsed.error().message;
-    EXPECT_TRUE(*parsed == Request(run)) << toJson(*parsed, 2);
+    EXPECT_TRUE(*parsed == values::Request(run)) << toJson(*parsed, 2);
 
     // And back: the printed JSON, given to `--batch request`, prints the same request again.
-    const std::string printed = toJson(Request(audit), 2);
+    const std::string printed = toJson(values::Request(audit), 2);
     const std::filesystem::path file =
         std::filesystem::temp_directory_path() / ("sdfwb-jobs-" + std::to_string(::getpid()) + ".json");
     {
@@ -603,7 +600,7 @@ TEST(Manifest, CsvAndJsonLinesMakeTheSameItemsWithPathsFromTheManifestsFolder) {
     EXPECT_EQ((*csv)[2].kind, "occnet");
     auto request = requestFromJson((*csv)[0].childInput);
     ASSERT_TRUE(request) << request.error().message;
-    const auto& sample = std::get<SampleRequest>(*request);
+    const auto& sample = std::get<values::SampleRequest>(*request);
     EXPECT_EQ(sample.sdf.entry, "map");
     EXPECT_EQ(sample.seed, 7u);
     ASSERT_EQ(sample.sdf.params.size(), 2u);
@@ -641,8 +638,8 @@ TEST(WorkerProtocol, MessagesReadBackAsTheyWereWritten) {
     EXPECT_EQ(failed.error.diagnostics[1].message, "unused \"r\"\nsecond line");
     for (Failure kind : {Failure::Work, Failure::NoGl, Failure::Cancelled})
         EXPECT_EQ(readWorkerMessage(errorMessage({kind, "m", {}})).error.failure, kind);
-    ListReport list;
-    ListItem torus;
+    values::ListReport list;
+    values::ListItem torus;
     torus.name = "Torus";
     torus.category = "Geometry";
     list.items.push_back(torus);
@@ -652,7 +649,7 @@ TEST(WorkerProtocol, MessagesReadBackAsTheyWereWritten) {
     EXPECT_EQ(line.find('\n'), std::string::npos);
     const WorkerMessage report = readWorkerMessage(line);
     ASSERT_EQ(report.kind, WorkerMessage::Kind::Report);
-    auto back = reportFromJson<ListReport>(report.report);
+    auto back = reportFromJson<values::ListReport>(report.report);
     ASSERT_TRUE(back) << back.error().message;
     EXPECT_EQ(*back, list);
     const WorkerMessage end = readWorkerMessage(endMessage(130));
@@ -687,7 +684,7 @@ TEST(WorkerProtocol, TheCommandLineAnswersEveryRequestInTheProtocol) {
     }
     ASSERT_EQ(messages.size(), 6u) << output;
     EXPECT_EQ(messages[0].kind, WorkerMessage::Kind::Report);
-    auto list = reportFromJson<ListReport>(messages[0].report);
+    auto list = reportFromJson<values::ListReport>(messages[0].report);
     ASSERT_TRUE(list) << list.error().message;
     EXPECT_EQ(list->items.size(), 78u);
     EXPECT_EQ(messages[1].kind, WorkerMessage::Kind::End);
@@ -714,7 +711,7 @@ TEST(JobJson, GradeIsTheMeshGradersNameAndEvalItsAlias) {
     EXPECT_NE(graded.find("\"kind\": \"grade\""), std::string::npos) << graded;
     auto fromOld = requestFromJson(R"({"kind": "eval", "sdf": "torus", "mesh": "/tmp/m.ply"})");
     ASSERT_TRUE(fromOld) << fromOld.error().message;
-    EXPECT_TRUE(std::holds_alternative<EvalRequest>(*fromOld));
+    EXPECT_TRUE(std::holds_alternative<values::EvalRequest>(*fromOld));
     const std::string help = standardOutput("--help");
     EXPECT_NE(help.find("  grade "), std::string::npos);
 }

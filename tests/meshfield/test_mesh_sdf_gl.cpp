@@ -410,7 +410,7 @@ TEST_F(MeshSdfTest, AMeshFileIsAnSdfForEveryJobAndMeshOptionsAreRefusedElsewhere
     fs::create_directories(folder);
     const meshfield::TriangleMesh mesh = testing::torusMesh(0.6f, 0.25f, 48, 16);
     testing::writeObj(folder / "torus.obj", mesh);
-    jobs::SdfInput input;
+    values::SdfInput input;
     input.sdf = (folder / "torus.obj").string();
     input.sign = "pseudonormal";
     input.normalize = "unit-sphere";
@@ -422,7 +422,7 @@ TEST_F(MeshSdfTest, AMeshFileIsAnSdfForEveryJobAndMeshOptionsAreRefusedElsewhere
     EXPECT_EQ(opened->prepared.signature.entry, "sdf");
 
     // A sample job on the mesh: the torus's inside (scaled by 1/0.85) comes out negative.
-    jobs::SampleRequest sample;
+    values::SampleRequest sample;
     sample.sdf = input;
     sample.count = 4096;
     sample.pattern = "rand";
@@ -433,7 +433,7 @@ TEST_F(MeshSdfTest, AMeshFileIsAnSdfForEveryJobAndMeshOptionsAreRefusedElsewhere
     EXPECT_TRUE(fs::exists(folder / "torus.npz"));
 
     // The user's own text over the mesh: an offset surface, the mesh attached.
-    jobs::SdfInput offset = input;
+    values::SdfInput offset = input;
     offset.source = "float sdf(vec3 p) { return sdfwb_meshSdf(p) - 0.05; }\n";
     auto shell = jobs::openSdf(offset, "sample");
     ASSERT_TRUE(bool(shell)) << shell.error.message;
@@ -444,15 +444,15 @@ TEST_F(MeshSdfTest, AMeshFileIsAnSdfForEveryJobAndMeshOptionsAreRefusedElsewhere
     EXPECT_NEAR(plain[0], -0.25f * std::cos(3.14159265f / 16.0f) / 0.85f, 1e-3f);
     EXPECT_NEAR(thicker[0], plain[0] - 0.05f, 1e-5f);
 
-    jobs::SdfInput glsl;
+    values::SdfInput glsl;
     glsl.sdf = "sphere";
     glsl.sign = "parity";
     auto refused = jobs::openSdf(glsl, "sample");
     ASSERT_FALSE(bool(refused));
     EXPECT_NE(refused.error.message.find("'sign'"), std::string::npos) << refused.error.message;
-    jobs::SdfInput badSign = input;
+    values::SdfInput badSign = input;
     badSign.sign = "inside";
-    jobs::SampleRequest badRequest = sample;
+    values::SampleRequest badRequest = sample;
     badRequest.sdf = badSign;
     auto bad = jobs::validate(badRequest);
     ASSERT_TRUE(bad.has_value());
@@ -588,7 +588,7 @@ TEST_F(MeshSdfTest, TheAuditFlagsWhereAnOpenMeshsSignIsAGuess) {
         ASSERT_TRUE(field.hasValue());
         auto report = sampling::auditField(shaders::prepareMeshSdf(*field, (*field)->name), options, {});
         ASSERT_TRUE(report.hasValue()) << report.error().message;
-        const sampling::AuditFlag* flag = sampling::findFlag(report->flags, sampling::Finding::SignUncertain);
+        const values::AuditFlag* flag = values::findFlag(report->flags, values::Finding::SignUncertain);
         if (mesh == &closed) {
             EXPECT_EQ(flag, nullptr) << report->reason;
             continue;
@@ -618,14 +618,14 @@ TEST_F(MeshSdfTest, TheTracerShadesEveryPixelOfAMeshWithItsFacesNormal) {
     renderer::SdfRenderer sdfRenderer;
     const auto diagnostics = sdfRenderer.setSdf(shaders::prepareMeshSdf(*field, "torus.obj"));
     ASSERT_FALSE(shaders::hasErrors(diagnostics)) << (diagnostics.empty() ? "" : shaders::formatDiagnostic(diagnostics[0]));
-    renderer::Camera camera;
+    values::Camera camera;
     camera.position = {1.2f, -1.5f, 1.8f}; // the proxy's hidden edges cross the ring
     constexpr int kW = 192, kH = 144;
     renderer::OffscreenRenderer offscreen;
     const renderer::Image image = offscreen.render(sdfRenderer, kW, kH, camera, 0.0f);
     // The compute tracer's walk draws the same pixels (issue 49).
-    renderer::TraceSettings trace;
-    trace.tracer = renderer::TraceSettings::Tracer::Compute;
+    values::TraceSettings trace;
+    trace.tracer = values::TraceSettings::Tracer::Compute;
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
     EXPECT_TRUE(sdfRenderer.computeTracer());
     const renderer::Image computed = offscreen.render(sdfRenderer, kW, kH, camera, 0.0f);
@@ -690,23 +690,23 @@ TEST_F(MeshSdfTest, TheMeshWalkDrawsWhatTheSphereTracerDraws) {
     auto field = meshfield::makeMeshField(mesh, "torus.obj", {});
     ASSERT_TRUE(field.hasValue());
     const shaders::PreparedSdf prepared = shaders::prepareMeshSdf(*field, "torus.obj");
-    renderer::Camera camera;
+    values::Camera camera;
     camera.position = {1.2f, -1.5f, 1.8f};
     constexpr int kW = 160, kH = 120;
     renderer::OffscreenRenderer offscreen;
     // No plane; the plane with the camera on its cut side (the plane's colours over the whole
     // cross-section); with the camera on the kept side (the shape in front of the plane).
-    auto draw = [&](bool walk, int plane, renderer::ShadingMode mode, std::string& fragment) {
+    auto draw = [&](bool walk, int plane, shaders::ShadingMode mode, std::string& fragment) {
         if (walk)
             unsetenv("SDFWB_MESH_TRACE");
         else
             setenv("SDFWB_MESH_TRACE", "march", 1);
         renderer::SdfRenderer sdfRenderer;
-        renderer::ShadingSettings shading;
+        values::ShadingSettings shading;
         shading.mode = mode;
         (void)sdfRenderer.setShading(shading);
         if (plane) {
-            renderer::CuttingPlane cut;
+            values::CuttingPlane cut;
             cut.enabled = true;
             cut.normal = plane == 1 ? glm::vec3(0.3f, -0.2f, 1.0f) : glm::vec3(-0.3f, 0.2f, -1.0f);
             cut.offset = plane == 1 ? 0.05f : -0.05f;
@@ -722,8 +722,8 @@ TEST_F(MeshSdfTest, TheMeshWalkDrawsWhatTheSphereTracerDraws) {
     };
     for (const int plane : {0, 1, 2}) {
         std::string walkSource, marchSource;
-        const renderer::Image walked = draw(true, plane, renderer::ShadingMode::Normals, walkSource);
-        const renderer::Image marched = draw(false, plane, renderer::ShadingMode::Normals, marchSource);
+        const renderer::Image walked = draw(true, plane, shaders::ShadingMode::Normals, walkSource);
+        const renderer::Image marched = draw(false, plane, shaders::ShadingMode::Normals, marchSource);
         EXPECT_NE(walkSource.find("#define SDFWB_MESH_RAYCAST"), std::string::npos);
         EXPECT_EQ(marchSource.find("#define SDFWB_MESH_RAYCAST"), std::string::npos);
         EXPECT_EQ(walkSource.find("#define SDFWB_PLANE_FIELD") != std::string::npos, plane != 0);
@@ -772,7 +772,7 @@ TEST_F(MeshSdfTest, TheMeshWalkDrawsWhatTheSphereTracerDraws) {
         EXPECT_LT(differ, std::size_t(kW * kH / 200)); // edges between faces, where the march's taps blend them
     }
     std::string heatMap;
-    (void)draw(true, 0, renderer::ShadingMode::Steps, heatMap);
+    (void)draw(true, 0, shaders::ShadingMode::Steps, heatMap);
     EXPECT_EQ(heatMap.find("#define SDFWB_MESH_RAYCAST"), std::string::npos);
 }
 
@@ -785,7 +785,7 @@ TEST_F(MeshSdfTest, EveryOutputOfAJobOnAMeshCarriesTheMeshsProvenance) {
     fs::create_directories(folder);
     const meshfield::TriangleMesh mesh = testing::torusMesh(0.6f, 0.25f, 24, 12);
     testing::writeObj(folder / "torus.obj", mesh);
-    jobs::SdfInput input;
+    values::SdfInput input;
     input.sdf = (folder / "torus.obj").string();
     input.sign = "parity";
     input.normalize = "unit-sphere";
@@ -813,32 +813,32 @@ TEST_F(MeshSdfTest, EveryOutputOfAJobOnAMeshCarriesTheMeshsProvenance) {
         return bytes.substr(start, end - start + 1);
     };
 
-    jobs::FrameRequest frame;
+    values::FrameRequest frame;
     frame.sdf = input;
     frame.width = 48;
     frame.height = 32;
     for (const char* name : {"torus.png", "torus.exr"}) {
-        jobs::RenderRequest render{frame, (folder / name).string()};
+        values::RenderRequest render{frame, (folder / name).string()};
         auto report = jobs::run(render, {});
         ASSERT_TRUE(bool(report)) << report.error.message;
         checkSource(report->meshSource.json, std::string("render report, ") + name);
         checkSource(fileSource(folder / name, "sdfwb_mesh_source"), name);
         // Through JSON and back (the workbench reads its child processes' reports this way).
-        auto back = jobs::reportFromJson<jobs::RenderReport>(jobs::toJson(*report));
+        auto back = jobs::reportFromJson<values::RenderReport>(jobs::toJson(*report));
         ASSERT_TRUE(back.hasValue()) << back.error().message;
         EXPECT_EQ(jobs::toJson(*back), jobs::toJson(*report));
     }
-    jobs::AnimateRequest animate{frame, (folder / "torus.mp4").string(), 0.1f, 30, true, {}};
+    values::AnimateRequest animate{frame, (folder / "torus.mp4").string(), 0.1f, 30, true, {}};
     auto animated = jobs::run(animate, {});
     ASSERT_TRUE(bool(animated)) << animated.error.message;
     checkSource(animated->meshSource.json, "animate report");
     checkSource(fileSource(folder / "torus.mp4", "sdfwb_mesh_source"), "torus.mp4");
-    jobs::ProbeRequest probe{frame, 24, 16};
+    values::ProbeRequest probe{frame, 24, 16};
     auto probed = jobs::run(probe, {});
     ASSERT_TRUE(bool(probed)) << probed.error.message;
     checkSource(probed->meshSource.json, "probe report");
     for (const char* name : {"shell.ply", "shell.obj"}) {
-        jobs::MeshRequest meshRequest;
+        values::MeshRequest meshRequest;
         meshRequest.sdf = input;
         meshRequest.output = (folder / name).string();
         meshRequest.resolution = 24;
@@ -852,7 +852,7 @@ TEST_F(MeshSdfTest, EveryOutputOfAJobOnAMeshCarriesTheMeshsProvenance) {
         ASSERT_TRUE(reread.hasValue()) << reread.error().message;
         EXPECT_EQ(reread->triangleCount(), meshed->triangles);
     }
-    jobs::EvalRequest eval;
+    values::EvalRequest eval;
     eval.sdf = input;
     eval.mesh = (folder / "shell.ply").string();
     eval.points = 1000;
@@ -860,16 +860,16 @@ TEST_F(MeshSdfTest, EveryOutputOfAJobOnAMeshCarriesTheMeshsProvenance) {
     auto evaluated = jobs::run(eval, {});
     ASSERT_TRUE(bool(evaluated)) << evaluated.error.message;
     checkSource(evaluated->meshSource.json, "eval report");
-    jobs::AuditRequest audit;
+    values::AuditRequest audit;
     audit.sdf = input;
     audit.samples = 500;
     auto audited = jobs::run(audit, {});
     ASSERT_TRUE(bool(audited)) << audited.error.message;
     checkSource(audited->meshSource.json, "audit report");
-    auto auditBack = jobs::reportFromJson<jobs::AuditJobReport>(jobs::toJson(*audited));
+    auto auditBack = jobs::reportFromJson<values::AuditJobReport>(jobs::toJson(*audited));
     ASSERT_TRUE(auditBack.hasValue()) << auditBack.error().message;
     EXPECT_EQ(jobs::toJson(*auditBack), jobs::toJson(*audited));
-    jobs::SampleRequest sample;
+    values::SampleRequest sample;
     sample.sdf = input;
     sample.count = 256;
     sample.pattern = "rand";
@@ -879,10 +879,10 @@ TEST_F(MeshSdfTest, EveryOutputOfAJobOnAMeshCarriesTheMeshsProvenance) {
     checkSource(sampled->meshSource.json, "sample report");
 
     // GLSL: no provenance, and null in the JSON.
-    jobs::FrameRequest sphere = frame;
-    sphere.sdf = jobs::SdfInput{};
+    values::FrameRequest sphere = frame;
+    sphere.sdf = values::SdfInput{};
     sphere.sdf.sdf = "sphere";
-    jobs::RenderRequest glsl{sphere, (folder / "sphere.png").string()};
+    values::RenderRequest glsl{sphere, (folder / "sphere.png").string()};
     auto plain = jobs::run(glsl, {});
     ASSERT_TRUE(bool(plain)) << plain.error.message;
     EXPECT_TRUE(plain->meshSource.json.empty());
@@ -900,13 +900,13 @@ TEST_F(MeshSdfTest, ThePlaneOverAMeshIsCleanAlongThePrimitivesEdges) {
     auto field = meshfield::makeMeshField(mesh, "torus.obj", {});
     ASSERT_TRUE(field.hasValue());
     renderer::SdfRenderer sdfRenderer;
-    renderer::CuttingPlane plane;
+    values::CuttingPlane plane;
     plane.enabled = true;
     plane.lipschitzOverlay = false;
     ASSERT_TRUE(sdfRenderer.setPlane(plane).empty());
     const auto diagnostics = sdfRenderer.setSdf(shaders::prepareMeshSdf(*field, "torus.obj"));
     ASSERT_FALSE(shaders::hasErrors(diagnostics)) << (diagnostics.empty() ? "" : shaders::formatDiagnostic(diagnostics[0]));
-    renderer::Camera camera;
+    values::Camera camera;
     camera.position = {0.3f, -0.4f, 2.6f}; // above the plane z = 0, a little off its axis
     constexpr int kW = 160, kH = 120;
     renderer::OffscreenRenderer offscreen;

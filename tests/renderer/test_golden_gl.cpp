@@ -40,25 +40,25 @@ protected:
 };
 
 // The case's picture at 192x108 from the default camera, by the tracer asked for.
-renderer::Image renderCase(const Case& c, renderer::TraceSettings::Tracer tracer) {
+renderer::Image renderCase(const Case& c, values::TraceSettings::Tracer tracer) {
     fs::path source = fs::path(SDFWB_SOURCE_DIR) / "dataset" / c.sdf;
     shaders::IncludeOptions options;
     options.libraryRoots = {fs::path(SDFWB_SOURCE_DIR) / "shaders" / "lib", fs::path(SDFWB_SOURCE_DIR) / "dataset"};
     renderer::SdfRenderer sdfRenderer;
-    renderer::ShadingSettings shading;
-    shading.mode = *renderer::parseShadingMode(c.mode);
+    values::ShadingSettings shading;
+    shading.mode = *shaders::parseShadingMode(c.mode);
     shading.ambientOcclusion = c.ao;
-    renderer::TraceSettings trace;
+    values::TraceSettings trace;
     trace.tracer = tracer;
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
     auto diagnostics = sdfRenderer.setSdf(shaders::prepareSdfFile(source, options));
     EXPECT_FALSE(shaders::hasErrors(diagnostics)) << shaders::formatDiagnostic(diagnostics[0]);
-    EXPECT_EQ(sdfRenderer.computeTracer(), tracer == renderer::TraceSettings::Tracer::Compute);
+    EXPECT_EQ(sdfRenderer.computeTracer(), tracer == values::TraceSettings::Tracer::Compute);
     renderer::Image image;
     {
         renderer::OffscreenRenderer offscreen;
-        image = offscreen.render(sdfRenderer, 192, 108, renderer::Camera{}, 0.0f);
+        image = offscreen.render(sdfRenderer, 192, 108, values::Camera{}, 0.0f);
     }
     sdfRenderer.releaseGl();
     return image;
@@ -68,7 +68,7 @@ renderer::Image renderCase(const Case& c, renderer::TraceSettings::Tracer tracer
 
 TEST_P(GoldenTest, MatchesTheReviewedImage) {
     const Case& c = GetParam();
-    using Tracer = renderer::TraceSettings::Tracer;
+    using Tracer = values::TraceSettings::Tracer;
     const renderer::Image image = renderCase(c, c.compute ? Tracer::Compute : Tracer::Fragment);
     ASSERT_FALSE(HasFailure());
     if (c.compute) {

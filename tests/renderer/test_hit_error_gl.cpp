@@ -9,10 +9,10 @@
 // 1.07e-3, box 2.6e-3). The 99th percentiles come from rays grazing the silhouette, where |t - t*|
 // is the tolerance over a small cosine. docs/benchmarks.md has the same errors against time.
 
-#include <renderer/Camera.h>
 #include <renderer/OffscreenRenderer.h>
 #include <renderer/SdfRenderer.h>
 #include <shaders/SdfSource.h>
+#include <values/Camera.h>
 
 #include "GlTestContext.h"
 #include "common/ExactRays.h"
@@ -109,15 +109,15 @@ struct HitErrors {
 
 class HitErrorTest : public sdfwb::testing::GlTest {
 protected:
-    static HitErrors measure(const Shape& shape, const renderer::TraceSettings& trace) {
+    static HitErrors measure(const Shape& shape, const values::TraceSettings& trace) {
         renderer::SdfRenderer sdfRenderer;
-        renderer::ShadingSettings shading;
+        values::ShadingSettings shading;
         shading.statsOutput = true;
         EXPECT_TRUE(sdfRenderer.setShading(shading).empty());
         EXPECT_TRUE(sdfRenderer.setTrace(trace).empty());
         const auto diagnostics = sdfRenderer.setSdf(shaders::prepareSdf(shape.glsl, shape.name, {}, {}));
         EXPECT_FALSE(shaders::hasErrors(diagnostics)) << shape.name;
-        const renderer::Camera camera;
+        const values::Camera camera;
         renderer::OffscreenRenderer offscreen;
         const auto pixels = offscreen.renderStats(sdfRenderer, kWidth, kHeight, camera, 0.0f);
         sdfRenderer.releaseGl();
@@ -186,7 +186,7 @@ TEST_F(HitErrorTest, DefaultsHitTheExactSurfaceWithinBounds) {
     const double p99Bound[] = {2.6e-2, 2.6e-2, 8e-3};
     int index = 0;
     for (const Shape& shape : kShapes) {
-        const HitErrors e = measure(shape, renderer::TraceSettings{});
+        const HitErrors e = measure(shape, values::TraceSettings{});
         print("defaults", shape, e);
         EXPECT_GT(e.compared, 10000) << shape.name;
         EXPECT_LT(e.median, medianBound[index]) << shape.name;
@@ -201,13 +201,13 @@ TEST_F(HitErrorTest, DefaultsHitTheExactSurfaceWithinBounds) {
 // The cone pass (kept at rest for dear SDFs) and over-relaxation (a GUI and CLI choice) start the
 // pixels' marches elsewhere; the hits they find must be as accurate.
 TEST_F(HitErrorTest, ConePassAndOverRelaxationKeepTheAccuracy) {
-    renderer::TraceSettings cones;
-    cones.cones = renderer::TraceSettings::Cones::On;
-    renderer::TraceSettings relaxed;
+    values::TraceSettings cones;
+    cones.cones = values::TraceSettings::Cones::On;
+    values::TraceSettings relaxed;
     relaxed.overRelaxation = 1.6f;
     for (const Shape& shape : kShapes)
         for (const auto& [what, trace] : {std::pair{"cones", cones}, std::pair{"relaxed", relaxed}}) {
-            const HitErrors reference = measure(shape, renderer::TraceSettings{});
+            const HitErrors reference = measure(shape, values::TraceSettings{});
             const HitErrors e = measure(shape, trace);
             print(what, shape, e);
             // As many pixels compared as the defaults' test asks, and few left out as ambiguous.

@@ -62,7 +62,7 @@ TEST_F(RendererTest, SphereSilhouetteMatchesTheAnalyticProjection) {
     renderer::SdfRenderer sdfRenderer;
     auto diagnostics = sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n"));
     ASSERT_TRUE(diagnostics.empty()) << shaders::formatDiagnostic(diagnostics[0]);
-    renderer::Camera camera;
+    values::Camera camera;
     camera.position = {0.0f, 0.0f, distance};
     camera.fovYDegrees = fov;
     renderer::OffscreenRenderer offscreen;
@@ -81,7 +81,7 @@ TEST_F(RendererTest, RaysAreClippedToTheUnitBox) {
     renderer::SdfRenderer sdfRenderer;
     // A sphere well outside [-1,1]^3: never marched, never drawn.
     ASSERT_TRUE(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p - vec3(0.0, 1.6, 0.0)) - 0.3; }\n")).empty());
-    renderer::Camera camera;
+    values::Camera camera;
     camera.position = {0.0f, 0.0f, 4.0f};
     camera.fovYDegrees = 90.0f;
     renderer::OffscreenRenderer offscreen;
@@ -93,7 +93,7 @@ TEST_F(RendererTest, RaysAreClippedToTheUnitBox) {
 TEST_F(RendererTest, BrokenSdfKeepsTheLastGoodProgramAndMapsDriverErrors) {
     renderer::SdfRenderer sdfRenderer;
     ASSERT_TRUE(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.5; }\n")).empty());
-    renderer::Camera camera;
+    values::Camera camera;
     renderer::OffscreenRenderer offscreen;
     long before = foreground(offscreen.render(sdfRenderer, 160, 90, camera, 0.0f), sdfRenderer.shading().background);
     ASSERT_GT(before, 500);
@@ -120,7 +120,7 @@ TEST_F(RendererTest, EveryDatasetShapeRenders) {
         renderer::SdfRenderer sdfRenderer;
         auto diagnostics = sdfRenderer.setSdf(shaders::prepareSdfFile(entry.path, options));
         ASSERT_FALSE(shaders::hasErrors(diagnostics)) << entry.path << ": " << shaders::formatDiagnostic(diagnostics[0]);
-        renderer::Image image = offscreen.render(sdfRenderer, 160, 90, renderer::Camera{}, 0.0f);
+        renderer::Image image = offscreen.render(sdfRenderer, 160, 90, values::Camera{}, 0.0f);
         long pixels = foreground(image, sdfRenderer.shading().background);
         EXPECT_GT(pixels, 160 * 90 / 100) << entry.metadata.name << " is (nearly) invisible";
         EXPECT_LT(pixels, 160 * 90 * 9 / 10) << entry.metadata.name << " fills the frame";
@@ -140,7 +140,7 @@ TEST_F(RendererTest, BatchRenderWritesAPngWithoutADisplay) {
     EXPECT_EQ(image->height, 360);
     // The torus is drawn: it covers between a twentieth and half of the frame (a blank or a
     // filled frame fails).
-    const glm::vec3 background = renderer::ShadingSettings{}.background;
+    const glm::vec3 background = values::ShadingSettings{}.background;
     const long drawn = foreground(*image, background);
     EXPECT_GT(drawn, 640L * 360 / 20) << "too little of the torus";
     EXPECT_LT(drawn, 640L * 360 / 2) << "too much: not the torus";
@@ -165,7 +165,7 @@ TEST_F(RendererTest, BatchRenderWritesAPngWithoutADisplay) {
 // a smaller factor, the same shape.
 TEST_F(RendererTest, StepFactorOtherThanOneIsOneVariantAndItsValueAUniform) {
     renderer::SdfRenderer sdfRenderer;
-    renderer::ShadingSettings shading;
+    values::ShadingSettings shading;
     shading.statsOutput = true;
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n"))));
@@ -173,7 +173,7 @@ TEST_F(RendererTest, StepFactorOtherThanOneIsOneVariantAndItsValueAUniform) {
     auto meanSteps = [&](long& hits) {
         double steps = 0.0;
         hits = 0;
-        const auto pixels = offscreen.renderStats(sdfRenderer, 64, 48, renderer::Camera{}, 0.0f);
+        const auto pixels = offscreen.renderStats(sdfRenderer, 64, 48, values::Camera{}, 0.0f);
         for (const auto& pixel : pixels) {
             steps += pixel.steps;
             hits += pixel.hit();
@@ -184,7 +184,7 @@ TEST_F(RendererTest, StepFactorOtherThanOneIsOneVariantAndItsValueAUniform) {
     const double atOne = meanSteps(hitsAtOne);
     EXPECT_EQ(sdfRenderer.fragmentSource().find("#define SDFWB_STEP_FACTOR"), std::string::npos);
     const std::uint64_t built = sdfRenderer.programsBuilt();
-    renderer::TraceSettings trace;
+    values::TraceSettings trace;
     trace.stepFactor = 0.7f;
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
     EXPECT_EQ(sdfRenderer.programsBuilt(), built + 1);
@@ -218,18 +218,18 @@ TEST_F(RendererTest, SettleMarchKeepsTheFasterOfTheTwoMarches) {
     const double fast = renderer::SdfRenderer::kTrySeparateMarchBelowMilliseconds / 4;
     renderer::OffscreenRenderer offscreen;
     renderer::SdfRenderer sdfRenderer;
-    renderer::TraceSettings trace;
-    trace.cones = renderer::TraceSettings::Cones::Off;        // the march alone (ConePassIsKeptWhenItMakesFramesFaster)
-    trace.tracer = renderer::TraceSettings::Tracer::Fragment; // (ComputeTracerIsTriedLastAndKeptWhenFaster)
+    values::TraceSettings trace;
+    trace.cones = values::TraceSettings::Cones::Off;        // the march alone (ConePassIsKeptWhenItMakesFramesFaster)
+    trace.tracer = values::TraceSettings::Tracer::Fragment; // (ComputeTracerIsTriedLastAndKeptWhenFaster)
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(longSdf)));
     EXPECT_TRUE(sdfRenderer.fusedMarch());
-    const renderer::Image fused = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
+    const renderer::Image fused = offscreen.render(sdfRenderer, 200, 120, values::Camera{}, 0.0f);
 
     // Faster separately: the separate march stays, and draws the same picture.
     EXPECT_TRUE(sdfRenderer.settleMarch(fast));
     EXPECT_FALSE(sdfRenderer.fusedMarch());
-    const renderer::Image separate = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
+    const renderer::Image separate = offscreen.render(sdfRenderer, 200, 120, values::Camera{}, 0.0f);
     EXPECT_FALSE(sdfRenderer.settleMarch(fast * 0.9));
     EXPECT_FALSE(sdfRenderer.fusedMarch());
     EXPECT_FALSE(sdfRenderer.settleMarch(fast * 0.5)) << "the choice is made once per SDF";
@@ -238,8 +238,8 @@ TEST_F(RendererTest, SettleMarchKeepsTheFasterOfTheTwoMarches) {
     EXPECT_LE(differing, long(fused.rgba.size() / 1000));
 
     // Other settings keep the choice (another variant of the same SDF marches separately too).
-    renderer::ShadingSettings shading;
-    shading.mode = renderer::ShadingMode::Normals;
+    values::ShadingSettings shading;
+    shading.mode = shaders::ShadingMode::Normals;
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
     EXPECT_FALSE(sdfRenderer.fusedMarch());
 
@@ -282,21 +282,21 @@ TEST_F(RendererTest, FusedMarchDrawsWhatTheSeparateMarchDraws) {
     for (const shaders::PreparedSdf& sdf : sdfs) {
         ASSERT_FALSE(shaders::hasErrors(sdf.diagnostics)) << shaders::formatDiagnostic(sdf.diagnostics[0]);
         for (float relaxation : {1.0f, 1.6f})
-            for (renderer::ShadingMode mode :
-                 {renderer::ShadingMode::Normals, renderer::ShadingMode::Gooch, renderer::ShadingMode::Curvature}) {
+            for (shaders::ShadingMode mode :
+                 {shaders::ShadingMode::Normals, shaders::ShadingMode::Gooch, shaders::ShadingMode::Curvature}) {
                 renderer::Image images[2];
                 for (int fused = 0; fused < 2; ++fused) {
                     setenv("SDFWB_FUSED_MARCH", fused ? "1" : "0", 1);
                     renderer::SdfRenderer sdfRenderer;
-                    renderer::ShadingSettings shading;
+                    values::ShadingSettings shading;
                     shading.mode = mode;
                     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
-                    renderer::TraceSettings trace;
+                    values::TraceSettings trace;
                     trace.overRelaxation = relaxation;
                     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
                     auto diagnostics = sdfRenderer.setSdf(sdf);
                     ASSERT_FALSE(shaders::hasErrors(diagnostics)) << shaders::formatDiagnostic(diagnostics[0]);
-                    images[fused] = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
+                    images[fused] = offscreen.render(sdfRenderer, 200, 120, values::Camera{}, 0.0f);
                     sdfRenderer.releaseGl();
                 }
                 long differing = 0;
@@ -304,7 +304,7 @@ TEST_F(RendererTest, FusedMarchDrawsWhatTheSeparateMarchDraws) {
                     differing += std::abs(images[0].rgba[i] - images[1].rgba[i]) > 2;
                 EXPECT_LE(differing, long(images[0].rgba.size() / 1000))
                     << sdf.source.map.fileName(0) << ", relaxation " << relaxation << ", mode " << int(mode);
-                EXPECT_GT(foreground(images[1], renderer::ShadingSettings{}.background), 200 * 120 / 100);
+                EXPECT_GT(foreground(images[1], values::ShadingSettings{}.background), 200 * 120 / 100);
             }
     }
     unsetenv("SDFWB_FUSED_MARCH");
@@ -320,14 +320,14 @@ TEST_F(RendererTest, ConePassFindsTheSameHitsInFewerSteps) {
     options.libraryRoots = {fs::path(SDFWB_SOURCE_DIR) / "shaders" / "lib"};
     struct Case {
         shaders::PreparedSdf sdf;
-        renderer::Camera camera;
+        values::Camera camera;
         float relaxation = 1.0f, stepFactor = 1.0f;
         bool fewerSteps = true;
     };
-    renderer::Camera far;
+    values::Camera far;
     far.position = glm::vec3(0.0f, 0.0f, 40.0f);
     far.fovYDegrees = 4.0f;
-    renderer::Camera inside;
+    values::Camera inside;
     inside.position = glm::vec3(0.0f, 0.0f, 0.2f);
     std::vector<Case> cases = {
         {shaders::prepareSdfFile(foreign / "01_iq_primitives.glsl", options), {}},
@@ -351,13 +351,13 @@ TEST_F(RendererTest, ConePassFindsTheSameHitsInFewerSteps) {
         std::vector<renderer::OffscreenRenderer::PixelStats> stats[2];
         for (int cones = 0; cones < 2; ++cones) {
             renderer::SdfRenderer sdfRenderer;
-            renderer::ShadingSettings shading;
+            values::ShadingSettings shading;
             shading.statsOutput = true;
             EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
-            renderer::TraceSettings trace;
+            values::TraceSettings trace;
             trace.overRelaxation = c.relaxation;
             trace.stepFactor = c.stepFactor;
-            trace.cones = cones ? renderer::TraceSettings::Cones::On : renderer::TraceSettings::Cones::Off;
+            trace.cones = cones ? values::TraceSettings::Cones::On : values::TraceSettings::Cones::Off;
             EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
             auto diagnostics = sdfRenderer.setSdf(c.sdf);
             ASSERT_FALSE(shaders::hasErrors(diagnostics)) << shaders::formatDiagnostic(diagnostics[0]);
@@ -394,15 +394,15 @@ TEST_F(RendererTest, ConePassIsKeptWhenItMakesFramesFaster) {
     const shaders::PreparedSdf sdf = prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n");
     renderer::OffscreenRenderer offscreen;
     renderer::SdfRenderer sdfRenderer;
-    renderer::TraceSettings fragmentOnly; // the compute tracer's trial: ComputeTracerIsTriedLastAndKeptWhenFaster
-    fragmentOnly.tracer = renderer::TraceSettings::Tracer::Fragment;
+    values::TraceSettings fragmentOnly; // the compute tracer's trial: ComputeTracerIsTriedLastAndKeptWhenFaster
+    fragmentOnly.tracer = values::TraceSettings::Tracer::Fragment;
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(fragmentOnly)));
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(sdf)));
     EXPECT_FALSE(sdfRenderer.conePass()) << "a new SDF starts without";
-    const renderer::Image without = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
+    const renderer::Image without = offscreen.render(sdfRenderer, 200, 120, values::Camera{}, 0.0f);
     EXPECT_TRUE(sdfRenderer.settleMarch(40.0));
     EXPECT_TRUE(sdfRenderer.conePass());
-    const renderer::Image with = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
+    const renderer::Image with = offscreen.render(sdfRenderer, 200, 120, values::Camera{}, 0.0f);
     EXPECT_FALSE(sdfRenderer.marchSettled()) << "on trial";
     EXPECT_FALSE(sdfRenderer.settleMarch(30.0)) << "faster: kept";
     EXPECT_TRUE(sdfRenderer.conePass());
@@ -411,7 +411,7 @@ TEST_F(RendererTest, ConePassIsKeptWhenItMakesFramesFaster) {
     long differing = 0;
     for (std::size_t i = 0; i < with.rgba.size(); ++i) differing += std::abs(with.rgba[i] - without.rgba[i]) > 2;
     EXPECT_LE(differing, long(with.rgba.size() / 200));
-    EXPECT_GT(foreground(with, renderer::ShadingSettings{}.background), 200 * 120 / 10);
+    EXPECT_GT(foreground(with, values::ShadingSettings{}.background), 200 * 120 / 10);
 
     // An edit of the same file keeps it (no trial); another file starts without.
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.5; }\n"))));
@@ -428,17 +428,17 @@ TEST_F(RendererTest, ConePassIsKeptWhenItMakesFramesFaster) {
     EXPECT_EQ(sdfRenderer.programsBuilt(), built) << "the program without cones comes from the cache";
     EXPECT_FALSE(sdfRenderer.settleMarch(10.0));
 
-    renderer::TraceSettings trace = fragmentOnly;
-    trace.cones = renderer::TraceSettings::Cones::Off;
+    values::TraceSettings trace = fragmentOnly;
+    trace.cones = values::TraceSettings::Cones::Off;
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(sdf)));
     EXPECT_FALSE(sdfRenderer.conePass());
     EXPECT_FALSE(sdfRenderer.settleMarch(40.0));
     EXPECT_FALSE(sdfRenderer.conePass());
-    trace.cones = renderer::TraceSettings::Cones::On;
+    trace.cones = values::TraceSettings::Cones::On;
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
     EXPECT_TRUE(sdfRenderer.conePass()) << "on: no trial needed";
-    trace.cones = renderer::TraceSettings::Cones::Auto;
+    trace.cones = values::TraceSettings::Cones::Auto;
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
     EXPECT_FALSE(sdfRenderer.conePass()) << "back to auto: without, until tried";
     EXPECT_FALSE(sdfRenderer.marchSettled());
@@ -446,13 +446,13 @@ TEST_F(RendererTest, ConePassIsKeptWhenItMakesFramesFaster) {
     EXPECT_TRUE(sdfRenderer.conePass());
     EXPECT_FALSE(sdfRenderer.settleMarch(20.0));
     EXPECT_TRUE(sdfRenderer.conePass()) << "tried again and kept";
-    trace.cones = renderer::TraceSettings::Cones::On;
+    trace.cones = values::TraceSettings::Cones::On;
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
-    renderer::ShadingSettings shading;
-    shading.mode = renderer::ShadingMode::Steps;
+    values::ShadingSettings shading;
+    shading.mode = shaders::ShadingMode::Steps;
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
     EXPECT_FALSE(sdfRenderer.conePass()) << "the heat map shows each pixel's own steps";
-    shading.mode = renderer::ShadingMode::Normals;
+    shading.mode = shaders::ShadingMode::Normals;
     shading.probe = true;
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
     EXPECT_FALSE(sdfRenderer.conePass()) << "the march debugger records each pixel's own march";
@@ -467,21 +467,21 @@ TEST_F(RendererTest, ComputeTracerIsTriedLastAndKeptWhenFaster) {
     const shaders::PreparedSdf sdf = prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n");
     renderer::OffscreenRenderer offscreen;
     renderer::SdfRenderer sdfRenderer;
-    renderer::TraceSettings trace;
-    trace.cones = renderer::TraceSettings::Cones::Off;
+    values::TraceSettings trace;
+    trace.cones = values::TraceSettings::Cones::Off;
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(sdf)));
     EXPECT_FALSE(sdfRenderer.computeTracer()) << "a new SDF starts with the fragment tracer";
-    const renderer::Image fragment = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
+    const renderer::Image fragment = offscreen.render(sdfRenderer, 200, 120, values::Camera{}, 0.0f);
     EXPECT_TRUE(sdfRenderer.settleMarch(40.0));
     EXPECT_TRUE(sdfRenderer.computeTracer());
     EXPECT_NE(sdfRenderer.fragmentSource().find("#define SDFWB_COMPUTE"), std::string::npos);
     EXPECT_FALSE(sdfRenderer.marchSettled()) << "on trial";
-    const renderer::Image compute = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
+    const renderer::Image compute = offscreen.render(sdfRenderer, 200, 120, values::Camera{}, 0.0f);
     EXPECT_FALSE(sdfRenderer.settleMarch(30.0)) << "faster: kept";
     EXPECT_TRUE(sdfRenderer.computeTracer());
     EXPECT_TRUE(sdfRenderer.marchSettled());
-    EXPECT_GT(foreground(compute, renderer::ShadingSettings{}.background), 200 * 120 / 10);
+    EXPECT_GT(foreground(compute, values::ShadingSettings{}.background), 200 * 120 / 10);
     long differing = 0;
     for (std::size_t i = 0; i < compute.rgba.size(); ++i) differing += compute.rgba[i] != fragment.rgba[i];
     EXPECT_LE(differing, long(compute.rgba.size() / 1000));
@@ -502,7 +502,7 @@ TEST_F(RendererTest, ComputeTracerIsTriedLastAndKeptWhenFaster) {
     EXPECT_FALSE(sdfRenderer.settleMarch(10.0));
 
     // After the cone pass: kept cones, then the compute tracer (without them) tried against them.
-    trace.cones = renderer::TraceSettings::Cones::Auto;
+    trace.cones = values::TraceSettings::Cones::Auto;
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
     ASSERT_FALSE(
         shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n", "third.glsl"))));
@@ -517,11 +517,11 @@ TEST_F(RendererTest, ComputeTracerIsTriedLastAndKeptWhenFaster) {
     EXPECT_TRUE(sdfRenderer.marchSettled());
 
     // Forced: no trial; where it does not apply, the fragment tracer draws.
-    trace.tracer = renderer::TraceSettings::Tracer::Compute;
+    trace.tracer = values::TraceSettings::Tracer::Compute;
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
     EXPECT_TRUE(sdfRenderer.computeTracer()) << "forced on";
     EXPECT_FALSE(sdfRenderer.conePass());
-    renderer::CuttingPlane plane;
+    values::CuttingPlane plane;
     plane.enabled = true;
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setPlane(plane)));
     EXPECT_FALSE(sdfRenderer.computeTracer()) << "the plane's lines need a fragment shader's derivatives";
@@ -529,27 +529,27 @@ TEST_F(RendererTest, ComputeTracerIsTriedLastAndKeptWhenFaster) {
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setPlane(plane)));
     EXPECT_TRUE(sdfRenderer.computeTracer());
     for (int which = 0; which < 2; ++which) {
-        renderer::ShadingSettings shading;
+        values::ShadingSettings shading;
         (which == 0 ? shading.probe : shading.statsOutput) = true;
         EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
         EXPECT_FALSE(sdfRenderer.computeTracer()) << (which == 0 ? "the march debugger" : "the statistics output");
     }
 
     // Markers and a background image: the same picture from both tracers.
-    renderer::ShadingSettings shading;
-    shading.mode = renderer::ShadingMode::Matcap;
+    values::ShadingSettings shading;
+    shading.mode = shaders::ShadingMode::Matcap;
     shading.markers = {{0.0f, 0.0f, 0.6f}, {0.5f, 0.3f, 0.2f}};
     shading.backgroundImage = (fs::path(SDFWB_SOURCE_DIR) / "resources" / "matcaps" / "clay.png").string();
     std::vector<renderer::Image> pictures;
-    for (auto tracer : {renderer::TraceSettings::Tracer::Fragment, renderer::TraceSettings::Tracer::Compute}) {
+    for (auto tracer : {values::TraceSettings::Tracer::Fragment, values::TraceSettings::Tracer::Compute}) {
         renderer::SdfRenderer drawing;
-        renderer::TraceSettings forced;
+        values::TraceSettings forced;
         forced.tracer = tracer;
         EXPECT_FALSE(shaders::hasErrors(drawing.setTrace(forced)));
         EXPECT_FALSE(shaders::hasErrors(drawing.setShading(shading)));
         ASSERT_FALSE(shaders::hasErrors(drawing.setSdf(sdf)));
-        EXPECT_EQ(drawing.computeTracer(), tracer == renderer::TraceSettings::Tracer::Compute);
-        pictures.push_back(offscreen.render(drawing, 200, 120, renderer::Camera{}, 0.0f));
+        EXPECT_EQ(drawing.computeTracer(), tracer == values::TraceSettings::Tracer::Compute);
+        pictures.push_back(offscreen.render(drawing, 200, 120, values::Camera{}, 0.0f));
         drawing.releaseGl();
     }
     differing = 0;
@@ -567,21 +567,21 @@ TEST_F(RendererTest, ConePassLeavesTheMatcapInPlace) {
     renderer::Image images[2];
     for (int cones = 0; cones < 2; ++cones) {
         renderer::SdfRenderer sdfRenderer;
-        renderer::ShadingSettings shading;
-        shading.mode = renderer::ShadingMode::Matcap;
+        values::ShadingSettings shading;
+        shading.mode = shaders::ShadingMode::Matcap;
         EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
-        renderer::TraceSettings trace;
-        trace.cones = cones ? renderer::TraceSettings::Cones::On : renderer::TraceSettings::Cones::Off;
+        values::TraceSettings trace;
+        trace.cones = cones ? values::TraceSettings::Cones::On : values::TraceSettings::Cones::Off;
         EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
         ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(sdf)));
-        (void)offscreen.render(sdfRenderer, 60, 40, renderer::Camera{}, 0.0f);
-        images[cones] = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
+        (void)offscreen.render(sdfRenderer, 60, 40, values::Camera{}, 0.0f);
+        images[cones] = offscreen.render(sdfRenderer, 200, 120, values::Camera{}, 0.0f);
         sdfRenderer.releaseGl();
     }
     long differing = 0;
     for (std::size_t i = 0; i < images[0].rgba.size(); ++i) differing += std::abs(images[0].rgba[i] - images[1].rgba[i]) > 2;
     EXPECT_LE(differing, long(images[0].rgba.size() / 200));
-    EXPECT_GT(foreground(images[1], renderer::ShadingSettings{}.background), 200 * 120 / 10);
+    EXPECT_GT(foreground(images[1], values::ShadingSettings{}.background), 200 * 120 / 10);
 }
 
 // Loading a background image binds it on the active texture unit: it must not be the matcap's.
@@ -589,13 +589,13 @@ TEST_F(RendererTest, ConePassLeavesTheMatcapInPlace) {
 // colours, not black.
 TEST_F(RendererTest, MatcapShowsOnTheFrameThatLoadsABackgroundImage) {
     renderer::SdfRenderer sdfRenderer;
-    renderer::ShadingSettings shading;
-    shading.mode = renderer::ShadingMode::Matcap;
+    values::ShadingSettings shading;
+    shading.mode = shaders::ShadingMode::Matcap;
     shading.backgroundImage = (fs::path(SDFWB_SOURCE_DIR) / "resources" / "matcaps" / "jade.png").string();
     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n"))));
     renderer::OffscreenRenderer offscreen;
-    const renderer::Image image = offscreen.render(sdfRenderer, 120, 80, renderer::Camera{}, 0.0f);
+    const renderer::Image image = offscreen.render(sdfRenderer, 120, 80, values::Camera{}, 0.0f);
     long black = 0;
     for (int y = 30; y < 50; ++y)
         for (int x = 50; x < 70; ++x) {
@@ -626,7 +626,7 @@ TEST_F(RendererTest, TinySdfsWithoutLoopsUnrollTheNormalTaps) {
     renderer::SdfRenderer sdfRenderer;
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare(tiny))));
     EXPECT_TRUE(unrolled(sdfRenderer));
-    const renderer::Image withUnrolled = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
+    const renderer::Image withUnrolled = offscreen.render(sdfRenderer, 200, 120, values::Camera{}, 0.0f);
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare(looped))));
     EXPECT_FALSE(unrolled(sdfRenderer));
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare(longer))));
@@ -637,11 +637,11 @@ TEST_F(RendererTest, TinySdfsWithoutLoopsUnrollTheNormalTaps) {
     padded += "; }\n" + tiny;
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare(padded))));
     EXPECT_FALSE(unrolled(sdfRenderer));
-    const renderer::Image withLoop = offscreen.render(sdfRenderer, 200, 120, renderer::Camera{}, 0.0f);
+    const renderer::Image withLoop = offscreen.render(sdfRenderer, 200, 120, values::Camera{}, 0.0f);
     long differing = 0;
     for (std::size_t i = 0; i < withLoop.rgba.size(); ++i) differing += std::abs(withLoop.rgba[i] - withUnrolled.rgba[i]) > 2;
     EXPECT_LE(differing, long(withLoop.rgba.size() / 1000));
-    EXPECT_GT(foreground(withUnrolled, renderer::ShadingSettings{}.background), 200 * 120 / 10);
+    EXPECT_GT(foreground(withUnrolled, values::ShadingSettings{}.background), 200 * 120 / 10);
     sdfRenderer.releaseGl();
 }
 
@@ -667,14 +667,14 @@ TEST_F(RendererTest, BoxProxyDrawsTheFullFramePicture) {
         shaders::prepareSdfFile(foreign / "21_g3d_random_cells.glsl", options),
         shaders::prepareSdfFile(foreign / "15_nan_superquadric.glsl", options)};
     auto camera = [](glm::vec3 position, glm::vec3 target, float fov = 40.0f) {
-        renderer::Camera c;
+        values::Camera c;
         c.position = position;
         c.target = target;
         c.fovYDegrees = fov;
         return c;
     };
-    const std::vector<renderer::Camera> cameras = {
-        renderer::Camera{},
+    const std::vector<values::Camera> cameras = {
+        values::Camera{},
         camera({1.3f, 0.25f, 0.35f}, {0.0f, 0.1f, 0.0f}, 70.0f), // beside the box: corners behind the camera
         camera({0.6f, 0.5f, 0.7f}, {0.0f, 0.0f, 0.0f}, 80.0f),   // inside it
         camera({0.6f, 0.5f, 0.7f}, {2.0f, 1.5f, 2.0f}),          // inside it, looking out
@@ -692,17 +692,17 @@ TEST_F(RendererTest, BoxProxyDrawsTheFullFramePicture) {
                 renderer::Image images[2];
                 for (int proxy = 0; proxy < 2; ++proxy) {
                     renderer::SdfRenderer sdfRenderer;
-                    renderer::ShadingSettings shading;
-                    shading.mode = renderer::ShadingMode::Gooch;
+                    values::ShadingSettings shading;
+                    shading.mode = shaders::ShadingMode::Gooch;
                     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
-                    renderer::TraceSettings trace;
+                    values::TraceSettings trace;
                     trace.boxProxy = proxy == 1 && variant != 4;
-                    trace.cones = variant == 2 ? renderer::TraceSettings::Cones::On : renderer::TraceSettings::Cones::Off;
-                    trace.tracer = variant == 4 && proxy == 1 ? renderer::TraceSettings::Tracer::Compute
-                                                              : renderer::TraceSettings::Tracer::Fragment;
+                    trace.cones = variant == 2 ? values::TraceSettings::Cones::On : values::TraceSettings::Cones::Off;
+                    trace.tracer = variant == 4 && proxy == 1 ? values::TraceSettings::Tracer::Compute
+                                                              : values::TraceSettings::Tracer::Fragment;
                     EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(trace)));
                     if (variant == 3) {
-                        renderer::CuttingPlane plane;
+                        values::CuttingPlane plane;
                         plane.enabled = true;
                         plane.normal = glm::vec3(0.3f, 0.2f, 1.0f);
                         plane.offset = 0.1f;
@@ -722,7 +722,7 @@ TEST_F(RendererTest, BoxProxyDrawsTheFullFramePicture) {
                 // every shape shows from the default camera.
                 const bool shows = c == 0 || (k < 3 && (c == 1 || c == 5 || (c == 2 && k != 1)));
                 if (shows) {
-                    EXPECT_GT(foreground(images[1], renderer::ShadingSettings{}.background), 100) << label << ", camera " << c;
+                    EXPECT_GT(foreground(images[1], values::ShadingSettings{}.background), 100) << label << ", camera " << c;
                 }
             }
         }
@@ -736,15 +736,15 @@ TEST_F(RendererTest, BoxProxyIsNotUsedWhereThePictureReachesPastTheBox) {
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n"))));
     renderer::OffscreenRenderer offscreen;
     renderer::FrameStats stats;
-    (void)offscreen.render(sdfRenderer, 60, 40, renderer::Camera{}, 0.0f, &stats);
+    (void)offscreen.render(sdfRenderer, 60, 40, values::Camera{}, 0.0f, &stats);
     EXPECT_TRUE(stats.boxProxy);
     for (int setting = 0; setting < 3; ++setting) {
-        renderer::ShadingSettings shading;
+        values::ShadingSettings shading;
         if (setting == 0) shading.backgroundImage = (fs::path(SDFWB_SOURCE_DIR) / "resources" / "matcaps" / "jade.png").string();
         if (setting == 1) shading.markers = {glm::vec3(0.0f)};
-        if (setting == 2) shading.mode = renderer::ShadingMode::Steps;
+        if (setting == 2) shading.mode = shaders::ShadingMode::Steps;
         EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
-        (void)offscreen.render(sdfRenderer, 60, 40, renderer::Camera{}, 0.0f, &stats);
+        (void)offscreen.render(sdfRenderer, 60, 40, values::Camera{}, 0.0f, &stats);
         EXPECT_FALSE(stats.boxProxy) << "setting " << setting;
     }
     sdfRenderer.releaseGl();
@@ -777,11 +777,11 @@ TEST_F(RendererTest, TimedFramesCarryTheirGpuTime) {
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n"))));
     renderer::OffscreenRenderer offscreen;
     renderer::FrameStats stats;
-    (void)offscreen.render(sdfRenderer, 60, 40, renderer::Camera{}, 0.0f, &stats); // the program's first draw
-    (void)offscreen.render(sdfRenderer, 60, 40, renderer::Camera{}, 0.0f, &stats);
+    (void)offscreen.render(sdfRenderer, 60, 40, values::Camera{}, 0.0f, &stats); // the program's first draw
+    (void)offscreen.render(sdfRenderer, 60, 40, values::Camera{}, 0.0f, &stats);
     EXPECT_GE(stats.gpuMilliseconds, 0.0);
     EXPECT_LE(stats.gpuMilliseconds, stats.cpuMilliseconds) << "the commands lie inside the frame's wall time";
-    (void)offscreen.render(sdfRenderer, 60, 40, renderer::Camera{}, 0.0f, &stats, 0.5f);
+    (void)offscreen.render(sdfRenderer, 60, 40, values::Camera{}, 0.0f, &stats, 0.5f);
     EXPECT_GE(stats.gpuMilliseconds, 0.0) << "scaled";
     sdfRenderer.releaseGl();
 }
@@ -799,13 +799,13 @@ TEST_F(RendererTest, QueryTimedFramesComeBackLaterWithoutWaiting) {
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
     renderer::SdfRenderer sdfRenderer;
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n"))));
-    EXPECT_EQ(sdfRenderer.render(64, 48, renderer::Camera{}, 0.0f).serial, 0u) << "off by default";
+    EXPECT_EQ(sdfRenderer.render(64, 48, values::Camera{}, 0.0f).serial, 0u) << "off by default";
     sdfRenderer.setQueryTiming(true);
-    EXPECT_EQ(sdfRenderer.render(64, 48, renderer::Camera{}, 0.0f, true).serial, 0u) << "a finished frame has its own time";
+    EXPECT_EQ(sdfRenderer.render(64, 48, values::Camera{}, 0.0f, true).serial, 0u) << "a finished frame has its own time";
     std::vector<std::uint64_t> serials;
     for (int frame = 0; frame < 5; ++frame)
-        serials.push_back(frame % 2 ? sdfRenderer.renderScaled(64, 48, 0.5f, renderer::Camera{}, 0.0f).serial
-                                    : sdfRenderer.render(64, 48, renderer::Camera{}, 0.0f).serial);
+        serials.push_back(frame % 2 ? sdfRenderer.renderScaled(64, 48, 0.5f, values::Camera{}, 0.0f).serial
+                                    : sdfRenderer.render(64, 48, values::Camera{}, 0.0f).serial);
     for (int frame = 0; frame < 4; ++frame) EXPECT_NE(serials[std::size_t(frame)], 0u);
     EXPECT_EQ(serials[4], 0u) << "four frames are out: the fifth goes untimed";
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.5; }\n"))));
@@ -818,7 +818,7 @@ TEST_F(RendererTest, QueryTimedFramesComeBackLaterWithoutWaiting) {
         EXPECT_FALSE(timed[k].currentProgram) << "drawn by the sphere before the edit";
     }
     EXPECT_TRUE(sdfRenderer.timedFrames().empty()) << "each time is handed over once";
-    const std::uint64_t next = sdfRenderer.render(64, 48, renderer::Camera{}, 0.0f).serial;
+    const std::uint64_t next = sdfRenderer.render(64, 48, values::Camera{}, 0.0f).serial;
     EXPECT_GT(next, serials[3]);
     glFinish();
     const auto after = sdfRenderer.timedFrames();
@@ -838,14 +838,14 @@ TEST_F(RendererTest, ProgramPipelineIsMadeAgainAfterReleaseGl) {
     renderer::SdfRenderer sdfRenderer;
     renderer::OffscreenRenderer offscreen;
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p) - 0.6; }\n"))));
-    const renderer::Image before = offscreen.render(sdfRenderer, 120, 80, renderer::Camera{}, 0.0f);
+    const renderer::Image before = offscreen.render(sdfRenderer, 120, 80, values::Camera{}, 0.0f);
     sdfRenderer.releaseGl();
-    const renderer::Image after = offscreen.render(sdfRenderer, 120, 80, renderer::Camera{}, 0.0f);
+    const renderer::Image after = offscreen.render(sdfRenderer, 120, 80, values::Camera{}, 0.0f);
     EXPECT_EQ(before.rgba, after.rgba);
     ASSERT_FALSE(shaders::hasErrors(sdfRenderer.setSdf(prepare("float sdf(vec3 p) { return length(p.xz) - 0.3; }\n"))));
-    const renderer::Image other = offscreen.render(sdfRenderer, 120, 80, renderer::Camera{}, 0.0f);
+    const renderer::Image other = offscreen.render(sdfRenderer, 120, 80, values::Camera{}, 0.0f);
     EXPECT_NE(before.rgba, other.rgba);
-    EXPECT_GT(foreground(other, renderer::ShadingSettings{}.background), 120 * 80 / 10);
+    EXPECT_GT(foreground(other, values::ShadingSettings{}.background), 120 * 80 / 10);
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
     sdfRenderer.releaseGl();
 }

@@ -21,7 +21,7 @@ namespace {
 class AuditTest : public sdfwb::testing::GlTest {
 protected:
     static shaders::PreparedSdf load(const std::string& relative) { return sdfwb::testing::loadSourceSdf(relative); }
-    static sampling::AuditReport audit(const std::string& relative, std::uint64_t samples = 20000) {
+    static values::AuditReport audit(const std::string& relative, std::uint64_t samples = 20000) {
         return sdfwb::testing::auditSourceSdf(relative, samples);
     }
 };
@@ -31,7 +31,7 @@ protected:
 TEST_F(AuditTest, ExactPrimitivesAreExact) {
     for (const char* file : {"dataset/Geometry/Sphere.glsl", "dataset/Geometry/Torus.glsl", "dataset/Geometry/Box.glsl"}) {
         auto r = audit(file);
-        EXPECT_EQ(std::string(sampling::findingName(r.verdict)), "exact") << file << ": " << r.reason;
+        EXPECT_EQ(std::string(values::findingName(r.verdict)), "exact") << file << ": " << r.reason;
         EXPECT_NEAR(r.lipschitz, 1.0f, 0.01f) << file;
         EXPECT_EQ(r.nanFraction, 0.0);
         EXPECT_LT(r.eikonalMean, 1e-3f);
@@ -50,7 +50,7 @@ TEST_F(AuditTest, EachBrokenFieldGetsItsVerdict) {
                  {"tests/stability/constant.glsl", "no-surface"}};
     for (const Case& c : cases) {
         auto r = audit(c.file);
-        EXPECT_EQ(std::string(sampling::findingName(r.verdict)), c.verdict) << c.file << ": " << r.reason;
+        EXPECT_EQ(std::string(values::findingName(r.verdict)), c.verdict) << c.file << ": " << r.reason;
     }
 }
 
@@ -111,7 +111,7 @@ TEST_F(AuditTest, PlaneReadouts) {
 
 namespace {
 
-sampling::AuditReport auditText(const std::string& glsl, std::uint64_t samples = 20000, float truncationReach = 3.0f) {
+values::AuditReport auditText(const std::string& glsl, std::uint64_t samples = 20000, float truncationReach = 3.0f) {
     auto sdf = shaders::prepareSdf(glsl, "known.glsl", {}, shaders::IncludeOptions{});
     EXPECT_TRUE(sdf.ok()) << glsl;
     sampling::AuditOptions options;
@@ -121,12 +121,12 @@ sampling::AuditReport auditText(const std::string& glsl, std::uint64_t samples =
     options.truncationReach = truncationReach;
     auto report = sampling::auditField(sdf, options, {});
     EXPECT_TRUE(report.hasValue()) << (report ? "" : report.error().message);
-    return report ? *report : sampling::AuditReport{};
+    return report ? *report : values::AuditReport{};
 }
 
-std::vector<std::string> flagNames(const sampling::AuditReport& r) {
+std::vector<std::string> flagNames(const values::AuditReport& r) {
     std::vector<std::string> names;
-    for (const auto& f : r.flags) names.push_back(sampling::findingName(f.finding));
+    for (const auto& f : r.flags) names.push_back(values::findingName(f.finding));
     std::sort(names.begin(), names.end());
     return names;
 }
@@ -140,13 +140,13 @@ TEST_F(AuditTest, KnownFieldsGiveKnownFlagSets) {
     // The paper's snake (its Figure 13): steeper than a distance and capped. Both are reported.
     auto snake = auditText("float sdf(vec3 p) { return min(1.0, 1.9 * (length(p) - 0.5)); }");
     EXPECT_EQ(flagNames(snake), (Names{"non-conservative", "truncated"})) << snake.reason;
-    EXPECT_EQ(std::string(sampling::findingName(snake.verdict)), "truncated");
-    const auto* cap = sampling::findFlag(snake.flags, sampling::Finding::Truncated);
+    EXPECT_EQ(std::string(values::findingName(snake.verdict)), "truncated");
+    const auto* cap = values::findFlag(snake.flags, values::Finding::Truncated);
     ASSERT_TRUE(cap);
     EXPECT_NEAR(cap->value, 1.0f, 1e-3f);
     EXPECT_NEAR(cap->start, 1.0f / 1.9f, 0.08f) << "the plateau starts where 1.9 d reaches 1";
     EXPECT_GT(cap->share, 0.9);
-    const auto* steep = sampling::findFlag(snake.flags, sampling::Finding::NonConservative);
+    const auto* steep = values::findFlag(snake.flags, values::Finding::NonConservative);
     ASSERT_TRUE(steep);
     EXPECT_NEAR(steep->value, 1.9f, 0.02f);
     ASSERT_FALSE(steep->examples.empty());
@@ -154,9 +154,9 @@ TEST_F(AuditTest, KnownFieldsGiveKnownFlagSets) {
 
     auto capped = auditText("float sdf(vec3 p) { return min(0.1, length(p) - 0.5); }");
     EXPECT_EQ(flagNames(capped), (Names{"truncated"})) << capped.reason;
-    ASSERT_TRUE(sampling::findFlag(capped.flags, sampling::Finding::Truncated));
-    EXPECT_NEAR(sampling::findFlag(capped.flags, sampling::Finding::Truncated)->value, 0.1f, 1e-3f);
-    EXPECT_NEAR(sampling::findFlag(capped.flags, sampling::Finding::Truncated)->start, 0.1f, 0.05f);
+    ASSERT_TRUE(values::findFlag(capped.flags, values::Finding::Truncated));
+    EXPECT_NEAR(values::findFlag(capped.flags, values::Finding::Truncated)->value, 0.1f, 1e-3f);
+    EXPECT_NEAR(values::findFlag(capped.flags, values::Finding::Truncated)->start, 0.1f, 0.05f);
 
     // A plateau beyond the unit cube (f reaches 2 at 2.5 from the origin) is found by probing outward.
     auto far = auditText("float sdf(vec3 p) { return min(2.0, length(p) - 0.5); }");
@@ -167,18 +167,18 @@ TEST_F(AuditTest, KnownFieldsGiveKnownFlagSets) {
     // A jump of 0.2 across the plane z = 0.2, located there.
     auto jump = auditText("float sdf(vec3 p) { return length(p) - 0.5 + (p.z > 0.2 ? 0.2 : 0.0); }");
     EXPECT_EQ(flagNames(jump), (Names{"discontinuous"})) << jump.reason;
-    const auto* step = sampling::findFlag(jump.flags, sampling::Finding::Discontinuous);
+    const auto* step = values::findFlag(jump.flags, values::Finding::Discontinuous);
     ASSERT_TRUE(step);
     EXPECT_NEAR(step->value, 0.2f, 0.01f);
     ASSERT_FALSE(step->examples.empty());
-    EXPECT_LE(step->examples.size(), sampling::kMaxExamples);
+    EXPECT_LE(step->examples.size(), values::kMaxExamples);
     for (const glm::vec3& e : step->examples) EXPECT_NEAR(e.z, 0.2f, 1e-3f) << "example off the jump plane";
 
     // Domain repetition whose cell cuts an off-centre sphere: f jumps at the cell walls (x = +-0.25, ...).
     auto repeated =
         auditText("float sdf(vec3 p) { vec3 q = mod(p + 0.25, 0.5) - 0.25; return length(q - vec3(0.1, 0.0, 0.0)) - 0.2; }");
     EXPECT_EQ(flagNames(repeated), (Names{"discontinuous"})) << repeated.reason;
-    for (const glm::vec3& e : sampling::findFlag(repeated.flags, sampling::Finding::Discontinuous)->examples) {
+    for (const glm::vec3& e : values::findFlag(repeated.flags, values::Finding::Discontinuous)->examples) {
         const float wall = std::abs(std::fmod(std::abs(e.x) + 0.25f, 0.5f)); // 0 or 0.5 on a wall x = 0.25 + 0.5 k
         EXPECT_LT(std::min(wall, 0.5f - wall), 2e-3f) << e.x;
     }
@@ -191,8 +191,8 @@ TEST_F(AuditTest, KnownFieldsGiveKnownFlagSets) {
     // NaN where x > 0.5, with the examples there.
     auto broken = auditText("float sdf(vec3 p) { return p.x > 0.5 ? sqrt(-1.0 - p.x) : length(p) - 0.4; }");
     EXPECT_EQ(flagNames(broken), (Names{"nan"})) << broken.reason;
-    EXPECT_NEAR(sampling::findFlag(broken.flags, sampling::Finding::Nan)->share, 0.25, 0.02);
-    for (const glm::vec3& e : sampling::findFlag(broken.flags, sampling::Finding::Nan)->examples) EXPECT_GT(e.x, 0.5f);
+    EXPECT_NEAR(values::findFlag(broken.flags, values::Finding::Nan)->share, 0.25, 0.02);
+    for (const glm::vec3& e : values::findFlag(broken.flags, values::Finding::Nan)->examples) EXPECT_GT(e.x, 0.5f);
 }
 
 TEST_F(AuditTest, PlaneReadoutsGiveTheSameFlags) {
@@ -200,14 +200,14 @@ TEST_F(AuditTest, PlaneReadoutsGiveTheSameFlags) {
     auto r = sampling::analysePlane(snake, {0, 0, 1}, 0.0f, 128, 0.0f);
     ASSERT_TRUE(r.hasValue());
     std::vector<std::string> names;
-    for (const auto& f : r->flags) names.push_back(sampling::findingName(f.finding));
+    for (const auto& f : r->flags) names.push_back(values::findingName(f.finding));
     std::sort(names.begin(), names.end());
     EXPECT_EQ(names, (Names{"non-conservative", "truncated"}));
     auto jump =
         shaders::prepareSdf("float sdf(vec3 p) { return length(p) - 0.5 + (p.x > 0.2 ? 0.2 : 0.0); }", "jump.glsl", {}, {});
     auto j = sampling::analysePlane(jump, {0, 0, 1}, 0.0f, 128, 0.0f);
     ASSERT_TRUE(j.hasValue());
-    const auto* flag = sampling::findFlag(j->flags, sampling::Finding::Discontinuous);
+    const auto* flag = values::findFlag(j->flags, values::Finding::Discontinuous);
     ASSERT_TRUE(flag);
     EXPECT_NEAR(flag->value, 0.2f, 0.03f);
     for (const glm::vec3& e : flag->examples) EXPECT_NEAR(e.x, 0.2f, 0.03f);

@@ -10,6 +10,7 @@
 #include <sstream>
 
 using namespace sdfwb::sampling;
+
 namespace fs = std::filesystem;
 
 namespace {

@@ -3,7 +3,6 @@
 // and label every miss (left the box, out of steps, NaN/Inf), report only hits whose |f| is below
 // the pixel tolerance, keep normals finite, count bad sample rows exactly, and get its verdict.
 
-#include <renderer/Camera.h>
 #include <renderer/OffscreenRenderer.h>
 #include <renderer/SampleCompute.h>
 #include <renderer/SdfRenderer.h>
@@ -11,6 +10,7 @@
 #include <sampling/Sampler.h>
 #include <sampling/SamplerLibrary.h>
 #include <shaders/SdfSource.h>
+#include <values/Camera.h>
 
 #include "GlTestContext.h"
 #include "common/ExactRays.h"
@@ -43,17 +43,17 @@ class StabilityTest : public sdfwb::testing::GlTest {
 protected:
     static shaders::PreparedSdf load(const std::string& relative) { return sdfwb::testing::loadSourceSdf(relative); }
 
-    static renderer::Camera frontCamera(float distance = 3.0f) {
-        renderer::Camera camera;
+    static values::Camera frontCamera(float distance = 3.0f) {
+        values::Camera camera;
         camera.position = {0.0f, 0.0f, distance};
         camera.target = {0.0f, 0.0f, 0.0f};
         camera.fovYDegrees = 40.0f;
         return camera;
     }
 
-    static TraceSummary trace(const std::string& file, const renderer::Camera& camera, renderer::TraceSettings settings = {}) {
+    static TraceSummary trace(const std::string& file, const values::Camera& camera, values::TraceSettings settings = {}) {
         renderer::SdfRenderer sdfRenderer;
-        renderer::ShadingSettings shading;
+        values::ShadingSettings shading;
         shading.statsOutput = true;
         EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setShading(shading)));
         EXPECT_FALSE(shaders::hasErrors(sdfRenderer.setTrace(settings)));
@@ -87,7 +87,7 @@ protected:
 
     // Pixels whose primary ray (built here, common/ExactRays.h) meets a sphere of `radius` at the
     // origin (the analytic silhouette).
-    static int analyticSphereHits(const renderer::Camera& camera, float radius) {
+    static int analyticSphereHits(const values::Camera& camera, float radius) {
         const glm::dvec3 o(camera.position);
         int hits = 0;
         for (int y = 0; y < kHeight; ++y)
@@ -101,8 +101,8 @@ protected:
 
     // The silhouette of a sphere of `radius`: hits count within the hit tolerance (half a pixel's
     // footprint by default), so the traced disc lies between the sphere's and one grown by that much.
-    static void expectSphereSilhouette(int hits, const renderer::Camera& camera, float radius,
-                                       const renderer::TraceSettings& settings) {
+    static void expectSphereSilhouette(int hits, const values::Camera& camera, float radius,
+                                       const values::TraceSettings& settings) {
         const float pixelAngle = 2.0f * std::tan(glm::radians(camera.fovYDegrees) / 2.0f) / float(kHeight);
         const float distance = glm::length(camera.position - camera.target);
         const int inner = analyticSphereHits(camera, radius);
@@ -113,7 +113,7 @@ protected:
 
     // Every ray ended within its budget with a known outcome; every hit is below its tolerance
     // and has a finite unit normal.
-    static void expectHonest(const TraceSummary& s, const renderer::TraceSettings& settings, const std::string& what) {
+    static void expectHonest(const TraceSummary& s, const values::TraceSettings& settings, const std::string& what) {
         EXPECT_LE(s.maxSteps, float(settings.maxSteps)) << what;
         EXPECT_EQ(s.other, 0) << what << ": a miss without a reason";
         EXPECT_EQ(s.hits + s.leftBox + s.outOfSteps + s.notFinite, kWidth * kHeight) << what;
@@ -151,7 +151,7 @@ protected:
         return run;
     }
 
-    static sampling::AuditReport audit(const std::string& relative, std::uint64_t samples = 20000) {
+    static values::AuditReport audit(const std::string& relative, std::uint64_t samples = 20000) {
         return sdfwb::testing::auditSourceSdf(relative, samples);
     }
 };
@@ -162,14 +162,14 @@ TEST_F(StabilityTest, SteepFieldMissesHonestlyAtStepOneAndHitsWithItsStepFactor)
     const auto camera = frontCamera();
     const int expected = analyticSphereHits(camera, 0.5f);
     // f = 100 (|p| - 0.5): steps of f overshoot the surface by 99 times the distance.
-    renderer::TraceSettings plain;
+    values::TraceSettings plain;
     auto overshoot = trace("tests/stability/steep_sphere.glsl", camera, plain);
     expectHonest(overshoot, plain, "step factor 1");
     EXPECT_LT(overshoot.hits, expected / 2) << "most rays jump through the sphere; they must not count as hits";
 
     auto report = audit("tests/stability/steep_sphere.glsl");
-    EXPECT_EQ(std::string(sampling::findingName(report.verdict)), "non-conservative");
-    renderer::TraceSettings safe;
+    EXPECT_EQ(std::string(values::findingName(report.verdict)), "non-conservative");
+    values::TraceSettings safe;
     safe.stepFactor = report.safeStepFactor;
     auto traced = trace("tests/stability/steep_sphere.glsl", camera, safe);
     expectHonest(traced, safe, "audit's step factor");
@@ -186,7 +186,7 @@ TEST_F(StabilityTest, SteepFieldMissesHonestlyAtStepOneAndHitsWithItsStepFactor)
 
 TEST_F(StabilityTest, ThinShellIsFoundWithFiniteNormalsFacingTheCamera) {
     const auto camera = frontCamera();
-    renderer::TraceSettings settings;
+    values::TraceSettings settings;
     auto traced = trace("tests/stability/thin_shell.glsl", camera, settings);
     expectHonest(traced, settings, "thin shell");
     expectSphereSilhouette(traced.hits, camera, 0.6f, settings);
@@ -213,12 +213,12 @@ TEST_F(StabilityTest, ThinShellIsFoundWithFiniteNormalsFacingTheCamera) {
 TEST_F(StabilityTest, CameraFarFromTheOriginSeesTheSameSilhouette) {
     // A camera 1e4 away with a narrow lens frames the unit sphere as one 3 units away does: the
     // tracer marches from the box entry, so steps below float32's spacing at t = 1e4 (~0.001) still count.
-    renderer::Camera far = frontCamera(1e4f);
+    values::Camera far = frontCamera(1e4f);
     far.fovYDegrees = float(glm::degrees(2.0 * std::atan(1.0 / 1e4)));
     far.farPlane = 2e4f;
-    renderer::Camera near = frontCamera(3.0f);
+    values::Camera near = frontCamera(3.0f);
     near.fovYDegrees = float(glm::degrees(2.0 * std::atan(1.0 / 3.0)));
-    renderer::TraceSettings settings;
+    values::TraceSettings settings;
     auto traced = trace("dataset/Geometry/Sphere.glsl", far, settings);
     expectHonest(traced, settings, "camera at 1e4");
     auto reference = trace("dataset/Geometry/Sphere.glsl", near, settings);
@@ -234,15 +234,15 @@ TEST_F(StabilityTest, FieldEvaluatedFarFromTheOriginReportsItsPrecisionFloor) {
     EXPECT_LT(report.noiseFloor, 1e-2f);
     EXPECT_NE(report.reason.find("precision"), std::string::npos) << report.reason;
     // Judged by its shape (an exact sphere), with the noise taken off the quotients.
-    EXPECT_TRUE(report.verdict == sampling::Finding::Exact || report.verdict == sampling::Finding::Conservative)
-        << sampling::findingName(report.verdict) << ": " << report.reason;
+    EXPECT_TRUE(report.verdict == values::Finding::Exact || report.verdict == values::Finding::Conservative)
+        << values::findingName(report.verdict) << ": " << report.reason;
     EXPECT_NEAR(report.lipschitz, 1.0f, 0.05f);
     auto clean = audit("dataset/Geometry/Sphere.glsl");
     EXPECT_LT(clean.noiseFloor, 1e-5f) << "a field computed near the origin is clean";
     EXPECT_EQ(clean.reason.find("precision"), std::string::npos) << clean.reason;
 
     // Tracing it still works at the pixel scale, and the samplers report no bad rows.
-    renderer::TraceSettings settings;
+    values::TraceSettings settings;
     auto traced = trace("tests/stability/far_from_origin.glsl", frontCamera(), settings);
     expectHonest(traced, settings, "far field");
     expectSphereSilhouette(traced.hits, frontCamera(), 0.5f, settings);
@@ -252,16 +252,16 @@ TEST_F(StabilityTest, FieldEvaluatedFarFromTheOriginReportsItsPrecisionFloor) {
 
 TEST_F(StabilityTest, GrazingRaysRunOutOfStepsAndSaySo) {
     // Eye 0.01 above the plane y = -0.3, looking along it: rays near the horizon crawl.
-    renderer::Camera camera;
+    values::Camera camera;
     camera.position = {0.0f, -0.29f, 1.05f};
     camera.target = {0.0f, -0.30f, -1.0f};
     camera.fovYDegrees = 30.0f;
-    renderer::TraceSettings small;
+    values::TraceSettings small;
     small.maxSteps = 24;
     auto starved = trace("tests/stability/grazing_plane.glsl", camera, small);
     expectHonest(starved, small, "budget 24");
     EXPECT_GT(starved.outOfSteps, 0) << "some grazing rays need more than 24 steps";
-    renderer::TraceSettings large;
+    values::TraceSettings large;
     large.maxSteps = 1024;
     auto fed = trace("tests/stability/grazing_plane.glsl", camera, large);
     expectHonest(fed, large, "budget 1024");
@@ -270,7 +270,7 @@ TEST_F(StabilityTest, GrazingRaysRunOutOfStepsAndSaySo) {
 }
 
 TEST_F(StabilityTest, DeepFractalFinishesWithFiniteNormals) {
-    renderer::TraceSettings settings;
+    values::TraceSettings settings;
     auto traced = trace("tests/stability/deep_mandelbulb.glsl", frontCamera(2.5f), settings);
     expectHonest(traced, settings, "Mandelbulb, 64 iterations");
     EXPECT_GT(traced.hits, kWidth * kHeight / 10);
@@ -281,9 +281,9 @@ TEST_F(StabilityTest, DeepFractalFinishesWithFiniteNormals) {
 }
 
 TEST_F(StabilityTest, NanRegionEndsRaysAsNotFiniteAndCountsBadRows) {
-    renderer::Camera camera = frontCamera();
+    values::Camera camera = frontCamera();
     camera.fovYDegrees = 60.0f;
-    renderer::TraceSettings settings;
+    values::TraceSettings settings;
     auto traced = trace("tests/stability/nan_region.glsl", camera, settings);
     expectHonest(traced, settings, "NaN region");
     EXPECT_GT(traced.notFinite, 0) << "rays through x > 0.6 meet NaN";
@@ -293,25 +293,25 @@ TEST_F(StabilityTest, NanRegionEndsRaysAsNotFiniteAndCountsBadRows) {
     EXPECT_EQ(rows.report.badRows, rows.nanRows);
     EXPECT_NEAR(double(rows.nanRows) / 20000.0, 0.2, 0.015) << "x > 0.6 is 20 % of the cube";
     auto report = audit("tests/stability/nan_region.glsl");
-    EXPECT_EQ(std::string(sampling::findingName(report.verdict)), "nan");
+    EXPECT_EQ(std::string(values::findingName(report.verdict)), "nan");
 }
 
 TEST_F(StabilityTest, TruncatedAndDiscontinuousFieldsTraceAndGetTheirVerdicts) {
-    renderer::TraceSettings settings;
+    values::TraceSettings settings;
     const auto camera = frontCamera();
     auto truncated = trace("tests/stability/truncated.glsl", camera, settings);
     expectHonest(truncated, settings, "truncated");
     expectSphereSilhouette(truncated.hits, camera, 0.5f, settings);
-    EXPECT_EQ(std::string(sampling::findingName(audit("tests/stability/truncated.glsl").verdict)), "truncated");
+    EXPECT_EQ(std::string(values::findingName(audit("tests/stability/truncated.glsl").verdict)), "truncated");
 
     auto jump = trace("tests/stability/discontinuous.glsl", camera, settings);
     expectHonest(jump, settings, "discontinuous");
     EXPECT_GT(jump.hits, 0);
-    EXPECT_EQ(std::string(sampling::findingName(audit("tests/stability/discontinuous.glsl").verdict)), "discontinuous");
+    EXPECT_EQ(std::string(values::findingName(audit("tests/stability/discontinuous.glsl").verdict)), "discontinuous");
 }
 
 TEST_F(StabilityTest, ConstantFieldHasNoSurfaceAnywhere) {
-    renderer::TraceSettings settings;
+    values::TraceSettings settings;
     auto traced = trace("tests/stability/constant.glsl", frontCamera(), settings);
     expectHonest(traced, settings, "constant");
     EXPECT_EQ(traced.hits, 0);
@@ -321,18 +321,18 @@ TEST_F(StabilityTest, ConstantFieldHasNoSurfaceAnywhere) {
     EXPECT_EQ(rows.report.badRows, 512u) << "no surface: every surface row is bad and counted";
     EXPECT_EQ(rows.nanRows, 512u);
     auto report = audit("tests/stability/constant.glsl", 8000);
-    EXPECT_EQ(std::string(sampling::findingName(report.verdict)), "no-surface") << report.reason;
+    EXPECT_EQ(std::string(values::findingName(report.verdict)), "no-surface") << report.reason;
 }
 
 TEST_F(StabilityTest, VanishingGradientAtTheSurfaceIsFlagged) {
     // f = (|p| - 0.5)^3: |grad f| = 0 on the zero set, so |f| is tiny well before the surface.
-    renderer::TraceSettings settings;
+    values::TraceSettings settings;
     const auto camera = frontCamera();
     auto traced = trace("tests/stability/cubed_sphere.glsl", camera, settings);
     expectHonest(traced, settings, "cubed sphere");
     EXPECT_GE(traced.hits, analyticSphereHits(camera, 0.5f));
     auto report = audit("tests/stability/cubed_sphere.glsl");
-    EXPECT_EQ(std::string(sampling::findingName(report.verdict)), "non-conservative");
+    EXPECT_EQ(std::string(values::findingName(report.verdict)), "non-conservative");
     EXPECT_LT(report.surfaceGradient, 0.05f) << "the audit measures |grad f| at the surface";
     EXPECT_NE(report.reason.find("vanishes"), std::string::npos) << report.reason;
     auto sphere = audit("dataset/Geometry/Sphere.glsl");
@@ -360,7 +360,7 @@ TEST_F(StabilityTest, EveryCaseCountsItsBadRowsAndGetsItsVerdict) {
         }
         if (c.verdict) {
             auto report = audit(file, 8000);
-            EXPECT_EQ(std::string(sampling::findingName(report.verdict)), c.verdict) << file << ": " << report.reason;
+            EXPECT_EQ(std::string(values::findingName(report.verdict)), c.verdict) << file << ": " << report.reason;
         }
     }
 }

@@ -55,10 +55,10 @@ CameraPanel::CameraPanel(QWidget* parent) : QWidget(parent) {
     for (QDoubleSpinBox* box :
          {m_position[0], m_position[1], m_position[2], m_target[0], m_target[1], m_target[2], m_fov, m_near, m_far})
         connect(box, &QDoubleSpinBox::valueChanged, this, edited);
-    setCamera(renderer::Camera{});
+    setCamera(values::Camera{});
 }
 
-void CameraPanel::setCamera(const renderer::Camera& camera) {
+void CameraPanel::setCamera(const values::Camera& camera) {
     m_updating = true;
     m_camera = camera;
     for (int i = 0; i < 3; ++i) {
@@ -71,8 +71,8 @@ void CameraPanel::setCamera(const renderer::Camera& camera) {
     m_updating = false;
 }
 
-renderer::Camera CameraPanel::camera() const {
-    renderer::Camera camera = m_camera;
+values::Camera CameraPanel::camera() const {
+    values::Camera camera = m_camera;
     for (int i = 0; i < 3; ++i) {
         camera.position[i] = float(m_position[i]->value());
         camera.target[i] = float(m_target[i]->value());

@@ -36,7 +36,7 @@ DatasetBrowser::DatasetBrowser(QWidget* parent) : QWidget(parent) {
     connect(m_tree, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* item) {
         int index = item ? item->data(0, Qt::UserRole).toInt() : -1;
         if (index < 0 || index >= count()) return m_details->clear();
-        const jobs::ListItem& d = m_items[std::size_t(index)];
+        const values::ListItem& d = m_items[std::size_t(index)];
         auto q = [](const std::string& text) { return QString::fromStdString(text); };
         const QString measured = d.measuredType.empty() ? tr("not measured") : tr("measured %1").arg(q(d.measuredType));
         m_details->setText(
@@ -54,14 +54,14 @@ void DatasetBrowser::showEvent(QShowEvent* event) {
     emit shown();
 }
 
-void DatasetBrowser::setItems(const std::vector<jobs::ListItem>& items) {
+void DatasetBrowser::setItems(const std::vector<values::ListItem>& items) {
     m_items = items;
     m_tree->clear();
     m_byPath.clear();
     m_thumbnails.clear();
     QMap<QString, QTreeWidgetItem*> categories;
     for (int i = 0; i < int(items.size()); ++i) {
-        const jobs::ListItem& d = items[std::size_t(i)];
+        const values::ListItem& d = items[std::size_t(i)];
         const QString name = QString::fromStdString(d.name), declared = QString::fromStdString(d.declaredType),
                       measured = QString::fromStdString(d.measuredType);
         QTreeWidgetItem*& category = categories[QString::fromStdString(d.category)];
@@ -91,7 +91,7 @@ int DatasetBrowser::count() const { return int(m_items.size()); }
 
 QStringList DatasetBrowser::paths() const {
     QStringList out;
-    for (const jobs::ListItem& d : m_items) out << QString::fromStdString(d.path);
+    for (const values::ListItem& d : m_items) out << QString::fromStdString(d.path);
     return out;
 }
 
@@ -106,7 +106,7 @@ bool DatasetBrowser::setThumbnail(const QString& sdfPath, const QString& imagePa
 }
 
 bool DatasetBrowser::activate(const QString& name) {
-    for (const jobs::ListItem& d : m_items)
+    for (const values::ListItem& d : m_items)
         if (QString::fromStdString(d.name).compare(name, Qt::CaseInsensitive) == 0) {
             emit openRequested(QString::fromStdString(d.path));
             return true;

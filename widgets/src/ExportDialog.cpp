@@ -66,7 +66,7 @@ ExportDialog::ExportDialog(Kind kind, QWidget* parent) : QDialog(parent), m_kind
     layout->addWidget(m_progress);
     layout->addWidget(m_message);
     layout->addWidget(buttons);
-    setRequest(jobs::AnimateRequest{});
+    setRequest(values::AnimateRequest{});
 
     connect(browse, &QPushButton::clicked, this, [this, video] {
         QString filter = video ? tr("MP4 video (*.mp4)") : tr("Images (*.png *.jpg *.exr)");
@@ -87,7 +87,7 @@ ExportDialog::ExportDialog(Kind kind, QWidget* parent) : QDialog(parent), m_kind
     });
 }
 
-void ExportDialog::setRequest(const jobs::AnimateRequest& r) {
+void ExportDialog::setRequest(const values::AnimateRequest& r) {
     m_output->setText(QString::fromStdString(r.output));
     m_width->setValue(r.frame.width);
     m_height->setValue(r.frame.height);
@@ -96,8 +96,8 @@ void ExportDialog::setRequest(const jobs::AnimateRequest& r) {
     if (m_turntable) m_turntable->setChecked(r.turntable);
 }
 
-jobs::AnimateRequest ExportDialog::request() const {
-    jobs::AnimateRequest r;
+values::AnimateRequest ExportDialog::request() const {
+    values::AnimateRequest r;
     r.output = m_output->text().trimmed().toStdString();
     r.frame.width = m_width->value();
     r.frame.height = m_height->value();

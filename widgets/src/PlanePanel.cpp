@@ -148,14 +148,14 @@ PlanePanel::PlanePanel(QWidget* parent) : QWidget(parent) {
     layout->addWidget(m_apply);
     connect(m_apply, &QPushButton::clicked, this, [this] { emit applyStepFactor(m_readout.safeStepFactor); });
     layout->addStretch(1);
-    setPlane(renderer::CuttingPlane{});
+    setPlane(values::CuttingPlane{});
 }
 
 void PlanePanel::emitEdited() {
     if (!m_updating) emit planeEdited(plane());
 }
 
-void PlanePanel::setPlane(const renderer::CuttingPlane& plane) {
+void PlanePanel::setPlane(const values::CuttingPlane& plane) {
     m_updating = true;
     m_enabled->setChecked(plane.enabled);
     for (int i = 0; i < 3; ++i) m_normal[i]->setValue(plane.normal[i]);
@@ -167,8 +167,8 @@ void PlanePanel::setPlane(const renderer::CuttingPlane& plane) {
     m_updating = false;
 }
 
-renderer::CuttingPlane PlanePanel::plane() const {
-    renderer::CuttingPlane plane;
+values::CuttingPlane PlanePanel::plane() const {
+    values::CuttingPlane plane;
     plane.enabled = m_enabled->isChecked();
     plane.normal = {float(m_normal[0]->value()), float(m_normal[1]->value()), float(m_normal[2]->value())};
     if (plane.normal == glm::vec3(0.0f)) plane.normal = {0.0f, 0.0f, 1.0f};
@@ -182,18 +182,18 @@ renderer::CuttingPlane PlanePanel::plane() const {
 namespace {
 
 // Every finding with its evidence, most severe first; "no findings" when there are none.
-QString findingsHtml(const std::vector<sampling::AuditFlag>& findings) {
+QString findingsHtml(const std::vector<values::AuditFlag>& findings) {
     if (findings.empty()) return QObject::tr("<p>No findings: no NaN/Inf, jump, plateau or |grad f| &gt; 1.05 on the plane.</p>");
     QString html = "<p>";
-    for (const sampling::AuditFlag& finding : findings)
-        html += "<b>" + QString::fromUtf8(sampling::findingName(finding.finding)).toHtmlEscaped() +
+    for (const values::AuditFlag& finding : findings)
+        html += "<b>" + QString::fromUtf8(values::findingName(finding.finding)).toHtmlEscaped() +
                 "</b>: " + QString::fromStdString(finding.evidence).toHtmlEscaped() + "<br>";
     return html + "</p>";
 }
 
 } // namespace
 
-void PlanePanel::setReadout(const sampling::PlaneReadout& r) {
+void PlanePanel::setReadout(const values::PlaneReadout& r) {
     m_readout = r;
     QString truncation = r.truncationDistance ? QString::number(*r.truncationDistance, 'g', 4) : tr("none");
     m_readoutText->setText(tr("<table>"
@@ -218,8 +218,7 @@ void PlanePanel::setReadout(const sampling::PlaneReadout& r) {
                                .arg(r.seconds, 0, 'f', 2)
                                .arg(findingsHtml(r.flags)));
     m_findings->clear();
-    for (const sampling::AuditFlag& finding : r.flags)
-        m_findings->addItem(QString::fromUtf8(sampling::findingName(finding.finding)));
+    for (const values::AuditFlag& finding : r.flags) m_findings->addItem(QString::fromUtf8(values::findingName(finding.finding)));
     m_findings->setEnabled(!r.flags.empty());
     m_showWhere->setEnabled(!r.flags.empty());
     m_histogram->setBins(r.histogram);

@@ -49,14 +49,14 @@ void ProbePanel::setMessage(const QString& message) { m_summary->setText(message
 
 QString ProbePanel::summary() const { return m_summary->text(); }
 
-void ProbePanel::setReport(const jobs::ProbeReport& report) {
+void ProbePanel::setReport(const values::ProbeReport& report) {
     m_report = report;
     QString text = tr("<b>Pixel (%1, %2)</b> of %3x%4: <b>%5</b>. %6<br>%7 steps, %8 oversteps, %9 fallbacks; probed in %10 s.")
                        .arg(report.x)
                        .arg(report.y)
                        .arg(report.width)
                        .arg(report.height)
-                       .arg(QString(jobs::marchEventName(report.outcome)).toHtmlEscaped(),
+                       .arg(QString(values::marchEventName(report.outcome)).toHtmlEscaped(),
                             QString::fromStdString(report.reason).toHtmlEscaped())
                        .arg(report.steps)
                        .arg(qulonglong(report.oversteps))
@@ -68,24 +68,24 @@ void ProbePanel::setReport(const jobs::ProbeReport& report) {
     m_summary->setText(text);
     m_table->setRowCount(int(report.events.size()));
     for (int r = 0; r < int(report.events.size()); ++r) {
-        const jobs::ProbeStep& row = report.events[std::size_t(r)];
-        const QString event = jobs::marchEventName(row.event);
+        const values::ProbeStep& row = report.events[std::size_t(r)];
+        const QString event = values::marchEventName(row.event);
         const QStringList cells = {QString::number(r),
                                    row.overstep ? event + tr(" (overstep)") : event,
                                    number(row.t),
                                    number(row.position.x),
                                    number(row.position.y),
                                    number(row.position.z),
-                                   jobs::evaluatesField(row.event) ? number(row.f) : QString(),
+                                   values::evaluatesField(row.event) ? number(row.f) : QString(),
                                    row.step != 0.0f ? number(row.step) : QString(),
-                                   jobs::evaluatesField(row.event) ? number(row.gradientLength) : QString()};
+                                   values::evaluatesField(row.event) ? number(row.gradientLength) : QString()};
         for (int c = 0; c < cells.size(); ++c) {
             auto* item = new QTableWidgetItem(cells[c]);
             if (row.overstep)
                 item->setForeground(QColor(210, 40, 40));
-            else if (row.event == jobs::MarchEvent::Fallback)
+            else if (row.event == values::MarchEvent::Fallback)
                 item->setForeground(QColor(220, 130, 20));
-            else if (row.event == jobs::MarchEvent::Hit)
+            else if (row.event == values::MarchEvent::Hit)
                 item->setForeground(QColor(30, 150, 60));
             m_table->setItem(r, c, item);
         }
@@ -98,12 +98,12 @@ MarchPlot::MarchPlot(QWidget* parent) : QWidget(parent) {
     setMinimumHeight(120);
 }
 
-void MarchPlot::setEvents(const std::vector<jobs::ProbeStep>& events) {
+void MarchPlot::setEvents(const std::vector<values::ProbeStep>& events) {
     m_points.clear();
     for (int r = 0; r < int(events.size()); ++r) {
-        const jobs::ProbeStep& row = events[std::size_t(r)];
-        if (!jobs::evaluatesField(row.event) || !std::isfinite(row.f) || !std::isfinite(row.t)) continue;
-        using Event = jobs::MarchEvent;
+        const values::ProbeStep& row = events[std::size_t(r)];
+        if (!values::evaluatesField(row.event) || !std::isfinite(row.f) || !std::isfinite(row.t)) continue;
+        using Event = values::MarchEvent;
         const bool refine = row.event == Event::Refine || row.event == Event::RefineUndone;
         QColor colour = row.overstep                   ? QColor(220, 40, 40)
                         : row.event == Event::Fallback ? QColor(235, 140, 20)

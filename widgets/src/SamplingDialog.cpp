@@ -110,8 +110,8 @@ int SamplingDialog::pointSize() const { return m_pointSize->value(); }
 
 void SamplingDialog::setSdfName(const QString& name) { m_sdf->setText(name); }
 
-jobs::SampleRequest SamplingDialog::request() const {
-    jobs::SampleRequest r;
+values::SampleRequest SamplingDialog::request() const {
+    values::SampleRequest r;
     r.pattern = m_pattern->currentText().trimmed().toStdString();
     r.count = m_count->text().toULongLong();
     r.seed = m_seed->text().toULongLong();
@@ -121,7 +121,7 @@ jobs::SampleRequest SamplingDialog::request() const {
     return r;
 }
 
-void SamplingDialog::setRequest(const jobs::SampleRequest& r) {
+void SamplingDialog::setRequest(const values::SampleRequest& r) {
     m_pattern->setCurrentText(QString::fromStdString(r.pattern));
     m_count->setText(QString::number(r.count));
     m_seed->setText(QString::number(r.seed));

@@ -138,7 +138,7 @@ void ViewportWidget::collectTimedFrames() {
 
 bool ViewportWidget::marchSettled() const { return m_renderer->marchSettled(); }
 
-void ViewportWidget::setShading(const renderer::ShadingSettings& shading) {
+void ViewportWidget::setShading(const values::ShadingSettings& shading) {
     m_frame.shading = shading;
     if (context() && isValid()) {
         makeCurrent();
@@ -148,7 +148,7 @@ void ViewportWidget::setShading(const renderer::ShadingSettings& shading) {
     update();
 }
 
-void ViewportWidget::setTrace(const renderer::TraceSettings& trace) {
+void ViewportWidget::setTrace(const values::TraceSettings& trace) {
     m_frame.trace = trace;
     if (context() && isValid()) {
         makeCurrent();
@@ -158,7 +158,7 @@ void ViewportWidget::setTrace(const renderer::TraceSettings& trace) {
     update();
 }
 
-void ViewportWidget::setPlane(const renderer::CuttingPlane& plane) {
+void ViewportWidget::setPlane(const values::CuttingPlane& plane) {
     m_plane = plane;
     if (context() && isValid()) {
         makeCurrent();
@@ -185,13 +185,13 @@ void ViewportWidget::setParameters(const std::vector<shaders::ParameterSetting>&
 
 std::uint64_t ViewportWidget::programsBuilt() const { return m_renderer->programsBuilt(); }
 
-void ViewportWidget::setCamera(const renderer::Camera& camera) {
+void ViewportWidget::setCamera(const values::Camera& camera) {
     m_frame.camera = camera;
     update();
 }
 
 void ViewportWidget::resetCamera() {
-    setCamera(renderer::Camera{});
+    setCamera(values::Camera{});
     emit cameraChanged(m_frame.camera);
 }
 
@@ -267,7 +267,7 @@ bool ViewportWidget::planeValueAt(QPointF position, PlaneValue& out) {
     const int width = int(std::lround(this->width() * ratio)), height = int(std::lround(this->height() * ratio));
     const int x = std::clamp(int(position.x() * ratio), 0, width - 1), y = std::clamp(int(position.y() * ratio), 0, height - 1);
     // The tracer's own ray through the pixel, and the plane the way tracer/plane.glsl meets it.
-    const glm::vec3 direction = glm::vec3(renderer::primaryRayDirection(m_frame.camera, x, y, width, height));
+    const glm::vec3 direction = glm::vec3(values::primaryRayDirection(m_frame.camera, x, y, width, height));
     const glm::vec3 normal = glm::length(m_plane.normal) > 0.0f ? glm::normalize(m_plane.normal) : glm::vec3(0, 0, 1);
     const float denominator = glm::dot(direction, normal);
     if (std::abs(denominator) < 1e-8f) return false;
@@ -596,17 +596,17 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event) {
         setPlane(m_plane);
         emit planeDragged(m_plane);
     } else if (event->buttons() & Qt::LeftButton) {
-        renderer::orbit(m_frame.camera, -float(delta.x()) * 0.01f, float(delta.y()) * 0.01f);
+        values::orbit(m_frame.camera, -float(delta.x()) * 0.01f, float(delta.y()) * 0.01f);
         interacted();
     } else if (event->buttons() & Qt::RightButton) {
-        renderer::turn(m_frame.camera, -float(delta.x()) * 0.005f, -float(delta.y()) * 0.005f);
+        values::turn(m_frame.camera, -float(delta.x()) * 0.005f, -float(delta.y()) * 0.005f);
         interacted();
     }
 }
 
 void ViewportWidget::wheelEvent(QWheelEvent* event) {
     float notches = float(event->angleDelta().y()) / 120.0f;
-    renderer::dolly(m_frame.camera, std::pow(0.9f, notches));
+    values::dolly(m_frame.camera, std::pow(0.9f, notches));
     interacted();
 }
 
@@ -644,7 +644,7 @@ void ViewportWidget::flyStep() {
     if (m_keys.contains(Qt::Key_A)) move.x -= 1.0f;
     if (m_keys.contains(Qt::Key_C)) move.y += 1.0f;
     if (m_keys.contains(Qt::Key_Z)) move.y -= 1.0f;
-    renderer::fly(m_frame.camera, move * speed * float(seconds));
+    values::fly(m_frame.camera, move * speed * float(seconds));
     interacted();
 }
 

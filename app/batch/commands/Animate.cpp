@@ -3,8 +3,8 @@
 
 namespace sdfwb::app {
 
-int runAnimate(const jobs::AnimateRequest& request, const OutputOptions& output) {
-    return runWithGl(request, output, [](const jobs::AnimateReport& r) {
+int runAnimate(const values::AnimateRequest& request, const OutputOptions& output) {
+    return runWithGl(request, output, [](const values::AnimateReport& r) {
         std::printf("wrote %s (%d frames at %d fps, %dx%d, H.264; rendering %.2f s, total %.2f s)\n", r.output.c_str(), r.frames,
                     r.framesPerSecond, r.width, r.height, r.renderSeconds, r.seconds);
     });

@@ -9,10 +9,10 @@
 namespace sdfwb::app {
 namespace {
 
-void printFlags(const std::vector<sampling::AuditFlag>& flags) {
+void printFlags(const std::vector<values::AuditFlag>& flags) {
     if (flags.empty()) std::printf("  findings           none (no NaN/Inf, jump, plateau or |grad f| > 1.05 found)\n");
-    for (const sampling::AuditFlag& f : flags) {
-        std::printf("  %-18s %s\n", sampling::findingName(f.finding), f.evidence.c_str());
+    for (const values::AuditFlag& f : flags) {
+        std::printf("  %-18s %s\n", values::findingName(f.finding), f.evidence.c_str());
         if (f.examples.empty()) continue;
         std::printf("  %-18s", "");
         for (std::size_t k = 0; k < f.examples.size() && k < 4; ++k)
@@ -23,9 +23,9 @@ void printFlags(const std::vector<sampling::AuditFlag>& flags) {
 
 std::string truncation(const std::optional<float>& distance) { return distance ? std::to_string(*distance) : "none"; }
 
-void printPlane(const jobs::AuditJobReport& report) {
-    const sampling::PlaneReadout& r = *report.readout;
-    const jobs::PlaneSpec& p = *report.plane;
+void printPlane(const values::AuditJobReport& report) {
+    const values::PlaneReadout& r = *report.readout;
+    const values::PlaneSpec& p = *report.plane;
     std::printf("plane %.3g,%.3g,%.3g,%.3g of %s: %llu points (%dx%d grid), %.3f s\n", p.normal.x, p.normal.y, p.normal.z,
                 p.offset, report.sdf.c_str(), (unsigned long long)r.points, r.resolution, r.resolution, r.seconds);
     std::printf("  value range        [%.4g, %.4g]\n", r.minimum, r.maximum);
@@ -46,11 +46,11 @@ std::string valuesText(const std::vector<shaders::ParameterValue>& values) {
 
 // One line per instance with a bar of its Lipschitz estimate ('|' marks L = 1: bars past it are
 // not conservative): where along the family the field stops being safe to trace, at a glance.
-void printFamily(const jobs::AuditJobReport& report) {
+void printFamily(const values::AuditJobReport& report) {
     std::printf("%s: %zu instances\n", report.sdf.c_str(), report.family.size());
     float largest = 2.0f;
     std::size_t width = 10;
-    for (const jobs::AuditInstance& i : report.family) {
+    for (const values::AuditInstance& i : report.family) {
         largest = std::max(largest, std::isfinite(i.lipschitz) ? i.lipschitz : 0.0f);
         width = std::max(width, valuesText(i.parameters).size());
     }
@@ -59,23 +59,23 @@ void printFamily(const jobs::AuditJobReport& report) {
     std::printf("  %-*s  %-16s %9s  %-*s  %7s  %s\n", int(width), "parameters", "verdict", "L", kBar + 1, "L (| = 1)", "seconds",
                 "flags");
     double total = 0.0;
-    for (const jobs::AuditInstance& i : report.family) {
+    for (const values::AuditInstance& i : report.family) {
         const int filled = std::isfinite(i.lipschitz) ? int(std::lround(std::min(i.lipschitz, largest) / largest * kBar)) : 0;
         std::string bar(std::size_t(kBar + 1), ' ');
         for (int k = 0; k < filled; ++k) bar[std::size_t(k)] = '#';
         bar[std::size_t(one)] = '|';
         std::string flags;
-        for (sampling::Finding f : i.flags) flags += (flags.empty() ? "" : ",") + std::string(sampling::findingName(f));
+        for (values::Finding f : i.flags) flags += (flags.empty() ? "" : ",") + std::string(values::findingName(f));
         std::printf("  %-*s  %-16s %9.4g  %s  %7.2f  %s\n", int(width), valuesText(i.parameters).c_str(),
-                    sampling::findingName(i.verdict), i.lipschitz, bar.c_str(), i.seconds, flags.empty() ? "-" : flags.c_str());
+                    values::findingName(i.verdict), i.lipschitz, bar.c_str(), i.seconds, flags.empty() ? "-" : flags.c_str());
         total += i.seconds;
     }
     std::printf("  %.2f s in all\n", total);
 }
 
-void printVolume(const jobs::AuditJobReport& report) {
-    const sampling::AuditReport& r = *report.volume;
-    std::printf("%s: %s\n  %s\n\n", report.sdf.c_str(), sampling::findingName(r.verdict), r.reason.c_str());
+void printVolume(const values::AuditJobReport& report) {
+    const values::AuditReport& r = *report.volume;
+    std::printf("%s: %s\n  %s\n\n", report.sdf.c_str(), values::findingName(r.verdict), r.reason.c_str());
     printFlags(r.flags);
     std::printf("\n");
     std::printf("  Lipschitz estimate   %.4g (a lower bound of the true constant; largest quotient seen %.4g, spread %.2g)\n",
@@ -104,8 +104,8 @@ void printVolume(const jobs::AuditJobReport& report) {
 
 } // namespace
 
-int runAudit(const jobs::AuditRequest& request, const OutputOptions& output) {
-    return runWithGl(request, output, [](const jobs::AuditJobReport& r) {
+int runAudit(const values::AuditRequest& request, const OutputOptions& output) {
+    return runWithGl(request, output, [](const values::AuditJobReport& r) {
         if (!r.family.empty())
             printFamily(r);
         else if (r.readout)

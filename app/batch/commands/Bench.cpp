@@ -33,7 +33,7 @@ int runProgram(const std::vector<std::string>& arguments) {
 
 } // namespace
 
-int runBench(const jobs::BenchRequest& request, const OutputOptions& output) {
+int runBench(const values::BenchRequest& request, const OutputOptions& output) {
     if (auto error = jobs::validate(request)) return reportFailure(*error);
     auto context = makeContext();
     if (!context) return kExitNoGl;
@@ -48,7 +48,7 @@ int runBench(const jobs::BenchRequest& request, const OutputOptions& output) {
                           nullptr};
     auto result = jobs::run(request, progress);
     if (!result) return reportFailure(result.error);
-    jobs::BenchReport report = *result;
+    values::BenchReport report = *result;
     if (!request.noPlots) {
         const std::filesystem::path script = paths::dataRoot() / "bench" / "plot_benchmarks.py";
         // Debian's interpreter has matplotlib; a pyenv one first on PATH may not.

@@ -212,31 +212,31 @@ void JobScope::finish() {
     m_drawn = false;
 }
 
-int runRequest(const jobs::Request& request, const OutputOptions& output) {
+int runRequest(const values::Request& request, const OutputOptions& output) {
     return std::visit(
         [&](const auto& r) -> int {
             using T = std::decay_t<decltype(r)>;
-            if constexpr (std::is_same_v<T, jobs::RenderRequest>)
+            if constexpr (std::is_same_v<T, values::RenderRequest>)
                 return runRender(r, output);
-            else if constexpr (std::is_same_v<T, jobs::AnimateRequest>)
+            else if constexpr (std::is_same_v<T, values::AnimateRequest>)
                 return runAnimate(r, output);
-            else if constexpr (std::is_same_v<T, jobs::SampleRequest>)
+            else if constexpr (std::is_same_v<T, values::SampleRequest>)
                 return runSample(r, output);
-            else if constexpr (std::is_same_v<T, jobs::AuditRequest>)
+            else if constexpr (std::is_same_v<T, values::AuditRequest>)
                 return runAudit(r, output);
-            else if constexpr (std::is_same_v<T, jobs::MergeRequest>)
+            else if constexpr (std::is_same_v<T, values::MergeRequest>)
                 return runMerge(r, output);
-            else if constexpr (std::is_same_v<T, jobs::ListRequest>)
+            else if constexpr (std::is_same_v<T, values::ListRequest>)
                 return runList(r, output);
-            else if constexpr (std::is_same_v<T, jobs::ParamsRequest>)
+            else if constexpr (std::is_same_v<T, values::ParamsRequest>)
                 return runParams(r, output);
-            else if constexpr (std::is_same_v<T, jobs::MeshRequest>)
+            else if constexpr (std::is_same_v<T, values::MeshRequest>)
                 return runMesh(r, output);
-            else if constexpr (std::is_same_v<T, jobs::EvalRequest>)
+            else if constexpr (std::is_same_v<T, values::EvalRequest>)
                 return runEval(r, output);
-            else if constexpr (std::is_same_v<T, jobs::RunRequest>)
+            else if constexpr (std::is_same_v<T, values::RunRequest>)
                 return runRun(r, output);
-            else if constexpr (std::is_same_v<T, jobs::ProbeRequest>)
+            else if constexpr (std::is_same_v<T, values::ProbeRequest>)
                 return runProbe(r, output);
             else
                 return runBench(r, output);

@@ -7,15 +7,15 @@
 
 namespace sdfwb::app {
 
-int runList(const jobs::ListRequest& request, const OutputOptions& output) {
+int runList(const values::ListRequest& request, const OutputOptions& output) {
     auto result = jobs::run(request, {});
     if (!result) return reportFailure(result.error);
-    const jobs::ListReport& r = *result;
+    const values::ListReport& r = *result;
     if (output.json) {
         printReport(jobs::toJson(r), output);
         return kExitOk;
     }
-    for (const jobs::ListItem& item : r.items)
+    for (const values::ListItem& item : r.items)
         std::printf("%-28s %-13s %-12s %s\n", item.name.c_str(), item.category.c_str(), item.declaredType.c_str(),
                     item.animated ? "animated" : "");
     if (!output.quiet) std::printf("%zu SDFs in %s\n", r.items.size(), r.root.c_str());

@@ -7,10 +7,10 @@
 
 namespace sdfwb::app {
 
-int runMerge(const jobs::MergeRequest& request, const OutputOptions& output) {
+int runMerge(const values::MergeRequest& request, const OutputOptions& output) {
     auto result = jobs::run(request, {});
     if (!result) return reportFailure(result.error);
-    const jobs::MergeReport& r = *result;
+    const values::MergeReport& r = *result;
     if (output.json)
         printReport(jobs::toJson(r), output);
     else if (!output.quiet)

@@ -3,8 +3,8 @@
 
 namespace sdfwb::app {
 
-int runMesh(const jobs::MeshRequest& request, const OutputOptions& output) {
-    return runWithGl(request, output, [](const jobs::MeshReport& r) {
+int runMesh(const values::MeshRequest& request, const OutputOptions& output) {
+    return runWithGl(request, output, [](const values::MeshReport& r) {
         std::printf("wrote %s: %llu vertices, %llu triangles at resolution %d, %.2f s\n", r.output.c_str(),
                     (unsigned long long)r.vertices, (unsigned long long)r.triangles, r.resolution, r.meshSeconds);
         std::printf("  topology           %s: %llu boundary edges, %llu non-manifold edges, %llu non-manifold vertices, "
@@ -39,8 +39,8 @@ int runMesh(const jobs::MeshRequest& request, const OutputOptions& output) {
 
 namespace sdfwb::app {
 
-int runEval(const jobs::EvalRequest& request, const OutputOptions& output) {
-    return runWithGl(request, output, [](const jobs::EvalReport& r) {
+int runEval(const values::EvalRequest& request, const OutputOptions& output) {
+    return runWithGl(request, output, [](const values::EvalReport& r) {
         std::printf("%s against %s: %llu vertices, %llu triangles (%s), %.2f s\n", r.mesh.c_str(), r.sdf.c_str(),
                     (unsigned long long)r.vertices, (unsigned long long)r.triangles, r.closed ? "closed" : "open", r.seconds);
         std::printf("  Chamfer L1         %.4g  (mean of accuracy %.4g and completeness %.4g; not squared)\n", r.chamferL1,

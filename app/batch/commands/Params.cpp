@@ -17,10 +17,10 @@ std::string number(float value) {
 
 } // namespace
 
-int runParams(const jobs::ParamsRequest& request, const OutputOptions& output) {
+int runParams(const values::ParamsRequest& request, const OutputOptions& output) {
     auto result = jobs::run(request, {});
     if (!result) return reportFailure(result.error);
-    const jobs::ParamsReport& r = *result;
+    const values::ParamsReport& r = *result;
     for (const std::string& warning : r.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
     if (output.json) {
         printReport(jobs::toJson(r), output);
@@ -29,7 +29,7 @@ int runParams(const jobs::ParamsRequest& request, const OutputOptions& output) {
     if (output.quiet) return kExitOk;
     if (r.parameters.empty())
         std::printf("%s declares no parameters (uniform TYPE NAME = DEFAULT; // @range MIN MAX)\n", r.sdf.c_str());
-    for (const jobs::ParamItem& p : r.parameters) {
+    for (const values::ParamItem& p : r.parameters) {
         std::string value;
         for (float v : p.value) value += (value.empty() ? "" : ", ") + number(v);
         std::string range = p.minimum ? "[" + number(*p.minimum) + ", " + number(*p.maximum) + "]" : "(no range)";

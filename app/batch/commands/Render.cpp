@@ -3,8 +3,8 @@
 
 namespace sdfwb::app {
 
-int runRender(const jobs::RenderRequest& request, const OutputOptions& output) {
-    return runWithGl(request, output, [](const jobs::RenderReport& r) {
+int runRender(const values::RenderRequest& request, const OutputOptions& output) {
+    return runWithGl(request, output, [](const values::RenderReport& r) {
         std::printf("wrote %s (%dx%d, %s shading, frame %.1f ms, total %.2f s)\n", r.output.c_str(), r.width, r.height,
                     r.shading.c_str(), r.frameMilliseconds, r.seconds);
     });

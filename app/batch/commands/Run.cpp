@@ -21,11 +21,11 @@ std::string megabytes(std::uint64_t bytes) {
 
 } // namespace
 
-int runRun(const jobs::RunRequest& request, const OutputOptions& output) {
+int runRun(const values::RunRequest& request, const OutputOptions& output) {
     if (auto error = jobs::validate(request)) return reportFailure(*error);
     const bool text = !output.json && !output.quiet;
     JobScope scope(OutputOptions{true, false, output.progressLines}); // Ctrl-C cancels; no bar over the item lines
-    auto result = jobs::run(request, scope.sink(), [&](const jobs::RunItemReport& r) {
+    auto result = jobs::run(request, scope.sink(), [&](const values::RunItemReport& r) {
         const bool failed = r.status == "failed" || r.status == "timeout";
         if (!text && !(output.quiet && failed)) return;
         std::string outcome = r.status;
@@ -42,7 +42,7 @@ int runRun(const jobs::RunRequest& request, const OutputOptions& output) {
     });
     scope.finish();
     if (!result) return reportFailure(result.error);
-    const jobs::RunReport& r = *result;
+    const values::RunReport& r = *result;
     if (output.json) {
         printReport(jobs::toJson(r), output);
     } else if (text && !request.list) {

@@ -3,8 +3,8 @@
 
 namespace sdfwb::app {
 
-int runSample(const jobs::SampleRequest& request, const OutputOptions& output) {
-    return runWithGl(request, output, [](const jobs::SampleReport& r) {
+int runSample(const values::SampleRequest& request, const OutputOptions& output) {
+    return runWithGl(request, output, [](const values::SampleReport& r) {
         if (!r.instances.empty()) {
             std::printf("wrote %zu instances of %s: %llu samples each (%s, seed %llu), index %s, %llu bad rows, %.2f s (%.2f M "
                         "samples/s)\n",
@@ -16,7 +16,7 @@ int runSample(const jobs::SampleRequest& request, const OutputOptions& output) {
                     std::printf("  ... (%zu more in the index)\n", r.instances.size() - 9);
                     k = r.instances.size() - 1;
                 }
-                const jobs::SampleInstance& i = r.instances[k];
+                const values::SampleInstance& i = r.instances[k];
                 std::string values;
                 for (const auto& v : i.parameters) values += " " + shaders::formatParameterValue(v);
                 std::printf("  %s:%s\n", i.output.c_str(), values.c_str());

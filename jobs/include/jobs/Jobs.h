@@ -55,7 +55,7 @@ struct OpenedSdf {
     std::vector<shaders::ParameterSetting> parameters; // every declared parameter, with the input's values
     std::vector<std::string> warnings;                 // values outside a declared @range
 
-    MeshSource meshSource() const; // a mesh file's provenance for the report (empty for GLSL)
+    values::MeshSource meshSource() const; // a mesh file's provenance for the report (empty for GLSL)
     // What image and video files carry beside their pixels: a mesh's provenance as
     // "sdfwb_mesh_source" (nothing for GLSL).
     renderer::FileMetadata fileMetadata() const;
@@ -65,51 +65,51 @@ struct OpenedSdf {
 // takes `source` or reads the file, and prepares it with the entry point (Work, with diagnostics,
 // when it has errors), then resolves the input's parameter values against the declarations
 // (Usage naming the parameter). `what` starts the failure message ("render", "audit", ...).
-JobResult<OpenedSdf> openSdf(const SdfInput& input, const std::string& what);
+JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& what);
 
-std::optional<JobError> validate(const RenderRequest& request);
-std::optional<JobError> validate(const AnimateRequest& request);
-std::optional<JobError> validate(const SampleRequest& request);
-std::optional<JobError> validate(const AuditRequest& request);
-std::optional<JobError> validate(const MergeRequest& request);
-std::optional<JobError> validate(const BenchRequest& request);
-inline std::optional<JobError> validate(const ListRequest&) { return std::nullopt; }
-std::optional<JobError> validate(const ParamsRequest& request);
-std::optional<JobError> validate(const MeshRequest& request);
-std::optional<JobError> validate(const EvalRequest& request);
+std::optional<JobError> validate(const values::RenderRequest& request);
+std::optional<JobError> validate(const values::AnimateRequest& request);
+std::optional<JobError> validate(const values::SampleRequest& request);
+std::optional<JobError> validate(const values::AuditRequest& request);
+std::optional<JobError> validate(const values::MergeRequest& request);
+std::optional<JobError> validate(const values::BenchRequest& request);
+inline std::optional<JobError> validate(const values::ListRequest&) { return std::nullopt; }
+std::optional<JobError> validate(const values::ParamsRequest& request);
+std::optional<JobError> validate(const values::MeshRequest& request);
+std::optional<JobError> validate(const values::EvalRequest& request);
 // Also reads the manifest: a malformed line is a usage error naming it.
-std::optional<JobError> validate(const RunRequest& request);
-std::optional<JobError> validate(const ProbeRequest& request);
+std::optional<JobError> validate(const values::RunRequest& request);
+std::optional<JobError> validate(const values::ProbeRequest& request);
 
-JobResult<RenderReport> run(const RenderRequest& request, const ProgressSink& progress);
+JobResult<values::RenderReport> run(const values::RenderRequest& request, const ProgressSink& progress);
 // Replays one pixel's march through the program that draws the frame (the march debugger).
-JobResult<ProbeReport> run(const ProbeRequest& request, const ProgressSink& progress);
-JobResult<AnimateReport> run(const AnimateRequest& request, const ProgressSink& progress);
-JobResult<SampleReport> run(const SampleRequest& request, const ProgressSink& progress);
-JobResult<AuditJobReport> run(const AuditRequest& request, const ProgressSink& progress);
-JobResult<MergeReport> run(const MergeRequest& request, const ProgressSink& progress);
-JobResult<ListReport> run(const ListRequest& request, const ProgressSink& progress);
-JobResult<ParamsReport> run(const ParamsRequest& request, const ProgressSink& progress);
-JobResult<MeshReport> run(const MeshRequest& request, const ProgressSink& progress);
+JobResult<values::ProbeReport> run(const values::ProbeRequest& request, const ProgressSink& progress);
+JobResult<values::AnimateReport> run(const values::AnimateRequest& request, const ProgressSink& progress);
+JobResult<values::SampleReport> run(const values::SampleRequest& request, const ProgressSink& progress);
+JobResult<values::AuditJobReport> run(const values::AuditRequest& request, const ProgressSink& progress);
+JobResult<values::MergeReport> run(const values::MergeRequest& request, const ProgressSink& progress);
+JobResult<values::ListReport> run(const values::ListRequest& request, const ProgressSink& progress);
+JobResult<values::ParamsReport> run(const values::ParamsRequest& request, const ProgressSink& progress);
+JobResult<values::MeshReport> run(const values::MeshRequest& request, const ProgressSink& progress);
 // The mesh of a request and its report, without writing a file (Python's sdfwb.mesh); the
 // request's output is not used.
 struct MeshedSdf {
     meshing::Mesh mesh;
-    MeshReport report;
+    values::MeshReport report;
 };
-JobResult<MeshedSdf> meshSdf(const MeshRequest& request, const ProgressSink& progress);
-JobResult<EvalReport> run(const EvalRequest& request, const ProgressSink& progress);
+JobResult<MeshedSdf> meshSdf(const values::MeshRequest& request, const ProgressSink& progress);
+JobResult<values::EvalReport> run(const values::EvalRequest& request, const ProgressSink& progress);
 // Every selected manifest item in a child process (RunRequest); `onItem` sees each outcome as it
 // is recorded. Needs no GL context. An item that fails is recorded and the run goes on; the
 // result is an error only for a bad request, an unwritable status file, or a cancel (the running
 // item is killed and recorded as cancelled).
-JobResult<RunReport> run(const RunRequest& request, const ProgressSink& progress,
-                         const std::function<void(const RunItemReport&)>& onItem = {});
+JobResult<values::RunReport> run(const values::RunRequest& request, const ProgressSink& progress,
+                                 const std::function<void(const values::RunItemReport&)>& onItem = {});
 // Writes the report's tables; the plots are drawn by the caller (bench/plot_benchmarks.py).
-JobResult<BenchReport> run(const BenchRequest& request, const ProgressSink& progress);
+JobResult<values::BenchReport> run(const values::BenchRequest& request, const ProgressSink& progress);
 
 // The sampling job a request describes (count, seed, time, shard, chunk, steps, tolerance).
-sampling::SamplingJob samplingJob(const SampleRequest& request);
+sampling::SamplingJob samplingJob(const values::SampleRequest& request);
 // "W:P,W:P,..." (near's mixture of Gaussian widths): the (width, weight) pairs, or what is wrong.
 Expected<std::vector<std::pair<float, float>>> nearMixture(const std::string& text);
 

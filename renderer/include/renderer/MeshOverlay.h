@@ -5,10 +5,10 @@
 // Every method needs the GL context that was current at the first call; releaseGl() before that
 // context goes away.
 
-#include <renderer/Camera.h>
 #include <shaders/Diagnostic.h>
 #include <shaders/Parameters.h>
 #include <shaders/SdfSource.h>
+#include <values/Camera.h>
 
 #include <cstdint>
 #include <memory>
@@ -34,8 +34,8 @@ public:
 
     // Draws over the framebuffer bound now (it needs no depth buffer: the overlay has its own):
     // grey where |f| is 0, red (f > 0) or blue (f < 0) reaching full colour at |f| = scale.
-    void draw(int width, int height, const Camera& camera, float time, const std::vector<shaders::ParameterSetting>& parameters,
-              float scale);
+    void draw(int width, int height, const values::Camera& camera, float time,
+              const std::vector<shaders::ParameterSetting>& parameters, float scale);
 
     void releaseGl();
 

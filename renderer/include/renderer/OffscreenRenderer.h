@@ -2,10 +2,10 @@
 // Renders into an offscreen framebuffer and reads the pixels back: screenshots, MP4 frames,
 // headless renders. Needs a current GL context for every call, including destruction.
 
-#include <renderer/Camera.h>
 #include <renderer/Image.h>
 #include <renderer/SdfRenderer.h>
 #include <renderer/ShadertoyPicture.h>
+#include <values/Camera.h>
 
 #include <glm/vec3.hpp>
 
@@ -24,15 +24,15 @@ public:
 
     // Renders one frame at width x height and returns it (top row first). scale < 1 traces fewer
     // pixels and stretches them, as the viewport does while the camera moves.
-    Image render(SdfRenderer& renderer, int width, int height, const Camera& camera, float time, FrameStats* stats = nullptr,
-                 float scale = 1.0f);
+    Image render(SdfRenderer& renderer, int width, int height, const values::Camera& camera, float time,
+                 FrameStats* stats = nullptr, float scale = 1.0f);
 
     // A whole Shadertoy shader's own picture (its mainImage) at width x height, top row first.
     Image renderPicture(ShadertoyPicture& picture, int width, int height, const ShadertoyInputs& inputs);
 
     // The same frame in floating point (an RGBA32F target): what the shader wrote, values above 1
     // included, for high-dynamic-range files.
-    FloatImage renderFloat(SdfRenderer& renderer, int width, int height, const Camera& camera, float time,
+    FloatImage renderFloat(SdfRenderer& renderer, int width, int height, const values::Camera& camera, float time,
                            FrameStats* stats = nullptr);
 
     // Per-pixel tracing statistics (the renderer's shading must have statsOutput on): for each
@@ -45,7 +45,7 @@ public:
         static constexpr float kNotFinite = -3.0f;  // f was NaN or Inf along the ray
         bool hit() const { return t >= 0.0f; }
     };
-    std::vector<PixelStats> renderStats(SdfRenderer& renderer, int width, int height, const Camera& camera, float time,
+    std::vector<PixelStats> renderStats(SdfRenderer& renderer, int width, int height, const values::Camera& camera, float time,
                                         FrameStats* stats = nullptr);
 
     // One event of a ray's march, as the tracer's SDFWB_RECORD hooks write it (tracer/probe.glsl).
@@ -76,7 +76,7 @@ public:
     // Replays the march of pixel (x, y) (top row 0) of a width x height frame through the very
     // program that draws it: the renderer's shading must have probe and statsOutput on. Records up
     // to `capacity` events.
-    ProbeTrace probe(SdfRenderer& renderer, int width, int height, const Camera& camera, float time, int x, int y,
+    ProbeTrace probe(SdfRenderer& renderer, int width, int height, const values::Camera& camera, float time, int x, int y,
                      int capacity = 65536);
 
 private:

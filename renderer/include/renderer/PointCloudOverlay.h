@@ -5,7 +5,7 @@
 // hide each other by depth (the overlay has its own depth buffer), not the surface.
 // Every method that draws or frees needs the GL context that was current at the first draw.
 
-#include <renderer/Camera.h>
+#include <values/Camera.h>
 
 #include <cstdint>
 #include <memory>
@@ -28,7 +28,7 @@ public:
     std::uint64_t pointCount() const; // points that will be drawn
 
     // Draws over the framebuffer bound now; pointSize in pixels (1..64).
-    void draw(int width, int height, const Camera& camera, float pointSize);
+    void draw(int width, int height, const values::Camera& camera, float pointSize);
 
     void releaseGl();
 

@@ -7,11 +7,11 @@
 // so switching back to a variant is instant. A shader that fails to compile leaves the last good
 // program in place.
 
-#include <renderer/Camera.h>
-#include <renderer/RenderSettings.h>
 #include <shaders/Diagnostic.h>
 #include <shaders/Parameters.h>
 #include <shaders/SdfSource.h>
+#include <values/Camera.h>
+#include <values/RenderSettings.h>
 
 #include <cstdint>
 #include <memory>
@@ -36,7 +36,8 @@ struct TimedFrame {
 
 // The tracer variant these settings select (what SdfRenderer composes and the driver compiles), so
 // a checker can run glslang on exactly that text.
-shaders::TracerFeatures tracerFeatures(const ShadingSettings& shading, const TraceSettings& trace, const CuttingPlane& plane);
+shaders::TracerFeatures tracerFeatures(const values::ShadingSettings& shading, const values::TraceSettings& trace,
+                                       const values::CuttingPlane& plane);
 
 class SdfRenderer {
 public:
@@ -50,21 +51,21 @@ public:
     std::vector<shaders::Diagnostic> setSdf(const shaders::PreparedSdf& sdf);
 
     // Changing settings may compile a new variant (cached). Returns its diagnostics, if any.
-    std::vector<shaders::Diagnostic> setShading(const ShadingSettings& shading);
+    std::vector<shaders::Diagnostic> setShading(const values::ShadingSettings& shading);
     // Over-relaxation on/off and a step factor of 1 or not select another variant; the other
     // fields are uniforms.
-    std::vector<shaders::Diagnostic> setTrace(const TraceSettings& trace);
+    std::vector<shaders::Diagnostic> setTrace(const values::TraceSettings& trace);
 
-    const ShadingSettings& shading() const { return m_shading; }
+    const values::ShadingSettings& shading() const { return m_shading; }
     // Turning the plane, clipping or the overlay on or off selects another variant; the plane's
     // position and contour spacing are uniforms (no recompile while dragging).
-    std::vector<shaders::Diagnostic> setPlane(const CuttingPlane& plane);
-    const CuttingPlane& plane() const { return m_plane; }
+    std::vector<shaders::Diagnostic> setPlane(const values::CuttingPlane& plane);
+    const values::CuttingPlane& plane() const { return m_plane; }
     // The SDF's parameter values (uniforms: no recompile; a slider drag redraws at frame rate).
     // Parameters not listed keep the values their initializers give.
     void setParameters(std::vector<shaders::ParameterSetting> parameters);
     const std::vector<shaders::ParameterSetting>& parameters() const { return m_parameters; }
-    const TraceSettings& trace() const { return m_trace; }
+    const values::TraceSettings& trace() const { return m_trace; }
     bool hasProgram() const;
     // Programs compiled and linked so far (variant cache misses): what a change cost.
     std::uint64_t programsBuilt() const;
@@ -99,11 +100,11 @@ public:
 
     // Draws a width x height frame into the bound framebuffer. Without a good program, clears to
     // the background. `finish` waits for the GPU so the stats measure the whole frame.
-    FrameStats render(int width, int height, const Camera& camera, float time, bool finish = false);
+    FrameStats render(int width, int height, const values::Camera& camera, float time, bool finish = false);
 
     // Renders at `scale` (0 < scale <= 1) of width x height into an internal framebuffer and
     // stretches the result over the bound framebuffer: cheap frames while the camera moves.
-    FrameStats renderScaled(int width, int height, float scale, const Camera& camera, float time, bool finish = false);
+    FrameStats renderScaled(int width, int height, float scale, const values::Camera& camera, float time, bool finish = false);
 
     // With query timing on, a frame drawn without `finish` is timed by a timer query that is read
     // later, once it has come back, so the CPU never waits for the GPU (FrameStats::serial names
@@ -119,9 +120,9 @@ public:
 private:
     struct Impl;
     std::unique_ptr<Impl> m_impl;
-    ShadingSettings m_shading;
-    TraceSettings m_trace;
-    CuttingPlane m_plane;
+    values::ShadingSettings m_shading;
+    values::TraceSettings m_trace;
+    values::CuttingPlane m_plane;
     std::vector<shaders::ParameterSetting> m_parameters;
 };
 

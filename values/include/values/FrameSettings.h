@@ -2,19 +2,19 @@
 // How a picture is made, apart from its SDF, size, time and plane (those are the document's): the
 // shading, the march, the camera and whether the SDF's credits are drawn. The workbench's viewport
 // owns the one on screen and draws with it; screenshots, videos and the probe take that value whole
-// (a jobs::FrameRequest is one, with the document's part beside it).
+// (a FrameRequest is one, with the document's part beside it).
 
-#include <renderer/Camera.h>
-#include <renderer/RenderSettings.h>
+#include <values/Camera.h>
+#include <values/RenderSettings.h>
 
-namespace sdfwb::jobs {
+namespace sdfwb::values {
 
 struct FrameSettings {
-    renderer::ShadingSettings shading;
-    renderer::TraceSettings trace;
-    renderer::Camera camera;
+    values::ShadingSettings shading;
+    values::TraceSettings trace;
+    values::Camera camera;
     bool overlay = false; // the SDF's name, author and license in the lower-left corner (its metadata block)
     bool operator==(const FrameSettings&) const = default;
 };
 
-} // namespace sdfwb::jobs
+} // namespace sdfwb::values

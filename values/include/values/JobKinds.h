@@ -15,7 +15,7 @@
 #include <utility>
 #include <variant>
 
-namespace sdfwb::jobs {
+namespace sdfwb::values {
 
 struct JobKind {
     std::string_view name; // a string literal: name.data() is null-terminated
@@ -77,4 +77,4 @@ template <class Result, class Make> Result withJobKind(std::string_view name, Ma
     (std::make_index_sequence<kJobKinds.size()>{});
 }
 
-} // namespace sdfwb::jobs
+} // namespace sdfwb::values

@@ -4,11 +4,11 @@
 // (jobs/JobJson.h), the workbench writes them as JSON for its child processes and its panels show
 // the reports as they come (widgets include this module, not jobs/), and Python builds them from
 // keyword arguments or dicts; all of them run through jobs/Jobs.h. Plain values: no GL, no Qt, no
-// JSON here. The namespace is the job model's, sdfwb::jobs.
+// JSON here.
 
 #include <core/NameTable.h>
-#include <sampling/FieldAudit.h>
 #include <shaders/Parameters.h>
+#include <values/Audit.h>
 #include <values/FrameSettings.h>
 
 #include <cstdint>
@@ -19,7 +19,7 @@
 #include <variant>
 #include <vector>
 
-namespace sdfwb::jobs {
+namespace sdfwb::values {
 
 // Which SDF a job runs on. `source`, when set, is compiled instead of the file's content (the
 // workbench's unsaved text; Python's GLSL strings); `sdf` then still names it for includes and
@@ -57,7 +57,7 @@ struct FrameRequest : FrameSettings {
     int width = 1280;
     int height = 720;
     float time = 0.0f; // seconds; the start time for animations
-    renderer::CuttingPlane plane;
+    values::CuttingPlane plane;
     bool operator==(const FrameRequest&) const = default;
 };
 
@@ -300,9 +300,9 @@ struct MergeReport {
 // One instance of an audited family: what the volume audit found at these values.
 struct AuditInstance {
     std::vector<shaders::ParameterValue> parameters; // every declared parameter's value
-    sampling::Finding verdict = sampling::Finding::Conservative;
+    values::Finding verdict = values::Finding::Conservative;
     std::string reason;
-    std::vector<sampling::Finding> flags; // most severe first
+    std::vector<values::Finding> flags; // most severe first
     float lipschitz = 0.0f;
     float lipschitzMax = 0.0f;
     float exactnessP99 = 0.0f;
@@ -317,9 +317,9 @@ struct AuditJobReport {
     std::string entry;
     float truncationReach = 0.0f;
     std::vector<shaders::ParameterValue> parameters; // every declared parameter's value (not a family)
-    std::optional<sampling::AuditReport> volume;
+    std::optional<values::AuditReport> volume;
     std::optional<PlaneSpec> plane;
-    std::optional<sampling::PlaneReadout> readout;
+    std::optional<values::PlaneReadout> readout;
     std::vector<AuditInstance> family;
     MeshSource meshSource;
     std::vector<std::string> warnings; // values outside a declared @range
@@ -531,4 +531,4 @@ struct BenchReport {
     bool operator==(const BenchReport&) const = default;
 };
 
-} // namespace sdfwb::jobs
+} // namespace sdfwb::values

@@ -2,7 +2,7 @@
 // Numeric camera editor: position, target, vertical field of view, near and far. Edits emit
 // cameraEdited(); setCamera() updates the fields without emitting. UI thread only.
 
-#include <renderer/Camera.h>
+#include <values/Camera.h>
 
 #include <QWidget>
 
@@ -14,11 +14,11 @@ class CameraPanel : public QWidget {
     Q_OBJECT
 public:
     explicit CameraPanel(QWidget* parent = nullptr);
-    void setCamera(const renderer::Camera& camera);
-    renderer::Camera camera() const;
+    void setCamera(const values::Camera& camera);
+    values::Camera camera() const;
 
 signals:
-    void cameraEdited(const sdfwb::renderer::Camera& camera);
+    void cameraEdited(const sdfwb::values::Camera& camera);
     void resetRequested();
 
 private:
@@ -28,7 +28,7 @@ private:
     QDoubleSpinBox* m_near = nullptr;
     QDoubleSpinBox* m_far = nullptr;
     bool m_updating = false;
-    renderer::Camera m_camera;
+    values::Camera m_camera;
 };
 
 } // namespace sdfwb::widgets

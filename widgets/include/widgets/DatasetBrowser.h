@@ -22,7 +22,7 @@ class DatasetBrowser : public QWidget {
     Q_OBJECT
 public:
     explicit DatasetBrowser(QWidget* parent = nullptr);
-    void setItems(const std::vector<jobs::ListItem>& items); // the list job's entries, measured values included
+    void setItems(const std::vector<values::ListItem>& items); // the list job's entries, measured values included
     // The report's machine line, shown under the tree ("render times on ...").
     void setReportNote(const QString& note);
     int count() const;
@@ -47,7 +47,7 @@ private:
     QTreeWidget* m_tree = nullptr;
     QLabel* m_details = nullptr;
     QLabel* m_note = nullptr;
-    std::vector<jobs::ListItem> m_items;
+    std::vector<values::ListItem> m_items;
     QHash<QString, QTreeWidgetItem*> m_byPath;
     QHash<QString, QString> m_thumbnails; // SDF path -> image shown
 };

@@ -1,6 +1,6 @@
 #pragma once
 // A screenshot (F4) or an animation (F6): file, size and, for video, length, frame rate and
-// turntable, as a jobs::AnimateRequest (values/; a screenshot uses its output and frame size). Shows
+// turntable, as a values::AnimateRequest (values/; a screenshot uses its output and frame size). Shows
 // progress; the controller that owns it fills in the frame and does the work.
 
 #include <values/Requests.h>
@@ -23,15 +23,15 @@ public:
     enum class Kind { Screenshot, Video };
     ExportDialog(Kind kind, QWidget* parent = nullptr);
 
-    void setRequest(const jobs::AnimateRequest& request);
+    void setRequest(const values::AnimateRequest& request);
     // The fields' output, frame size and (video) clip; the frame's SDF, camera and the rest default.
-    jobs::AnimateRequest request() const;
+    values::AnimateRequest request() const;
     void setRunning(bool running);
     void setProgress(quint64 done, quint64 total);
     void setMessage(const QString& message, bool error);
 
 signals:
-    void startRequested(const sdfwb::jobs::AnimateRequest& request);
+    void startRequested(const sdfwb::values::AnimateRequest& request);
     void cancelRequested();
 
 private:

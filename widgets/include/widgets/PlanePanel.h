@@ -4,8 +4,8 @@
 // share above 1, truncation, discontinuities, NaN/Inf, a |grad f| histogram, the safe step factor
 // with a button that applies it to the tracer). UI thread only.
 
-#include <renderer/RenderSettings.h>
 #include <sampling/FieldAudit.h>
+#include <values/RenderSettings.h>
 
 #include <QString>
 #include <QWidget>
@@ -29,15 +29,15 @@ class PlanePanel : public QWidget {
     Q_OBJECT
 public:
     explicit PlanePanel(QWidget* parent = nullptr);
-    void setPlane(const renderer::CuttingPlane& plane); // no signal
-    renderer::CuttingPlane plane() const;
+    void setPlane(const values::CuttingPlane& plane); // no signal
+    values::CuttingPlane plane() const;
     // Shows the plane audit's report as the job returned it (nothing is copied into a view struct).
-    void setReadout(const sampling::PlaneReadout& readout);
+    void setReadout(const values::PlaneReadout& readout);
     void setReadoutMessage(const QString& message);
-    const sampling::PlaneReadout& readout() const { return m_readout; }
+    const values::PlaneReadout& readout() const { return m_readout; }
 
 signals:
-    void planeEdited(const sdfwb::renderer::CuttingPlane& plane);
+    void planeEdited(const sdfwb::values::CuttingPlane& plane);
     void applyStepFactor(float factor);
     // "Show where": the example points of the finding chosen in the list.
     void showWhere(const std::vector<glm::vec3>& examples);
@@ -58,7 +58,7 @@ private:
     QComboBox* m_findings = nullptr;
     QPushButton* m_showWhere = nullptr;
     bool m_updating = false;
-    sampling::PlaneReadout m_readout;
+    values::PlaneReadout m_readout;
 };
 
 } // namespace sdfwb::widgets

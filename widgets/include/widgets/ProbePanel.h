@@ -2,7 +2,7 @@
 // The march debugger's dock: one pixel's ray as a table of every event of its march (position,
 // f, the step taken, |grad f|, oversteps and fallbacks marked) and as a plot of f along the ray
 // with the evaluation points marked; a line above says how the ray ended and why. It shows what
-// the probe job returns (jobs::ProbeReport, from values/). UI thread only.
+// the probe job returns (values::ProbeReport, from values/). UI thread only.
 
 #include <values/Requests.h>
 
@@ -23,10 +23,10 @@ class ProbePanel : public QWidget {
 public:
     explicit ProbePanel(QWidget* parent = nullptr);
 
-    void setReport(const jobs::ProbeReport& report);
+    void setReport(const values::ProbeReport& report);
     // A line instead of a march: "click a pixel", "probing...", or why the probe failed.
     void setMessage(const QString& message);
-    const jobs::ProbeReport& report() const { return m_report; }
+    const values::ProbeReport& report() const { return m_report; }
     QTableWidget* table() const { return m_table; }
     MarchPlot* plot() const { return m_plot; }
     QString summary() const;
@@ -35,7 +35,7 @@ private:
     QLabel* m_summary = nullptr;
     MarchPlot* m_plot = nullptr;
     QTableWidget* m_table = nullptr;
-    jobs::ProbeReport m_report;
+    values::ProbeReport m_report;
 };
 
 // f(t) along the probed ray: the field at every evaluation as a polyline with a marker per
@@ -45,7 +45,7 @@ class MarchPlot : public QWidget {
     Q_OBJECT
 public:
     explicit MarchPlot(QWidget* parent = nullptr);
-    void setEvents(const std::vector<jobs::ProbeStep>& events);
+    void setEvents(const std::vector<values::ProbeStep>& events);
     void setSelected(int row);
     int markerCount() const { return int(m_points.size()); }
     QSize sizeHint() const override { return {360, 180}; }

@@ -1,6 +1,6 @@
 #pragma once
 // The sampling dialog: pattern, count, seed, time, output file and format, with progress and
-// Cancel. It fills a jobs::SampleRequest (values/) and shows progress; the controller that owns it
+// Cancel. It fills a values::SampleRequest (values/) and shows progress; the controller that owns it
 // names the SDF and runs the job. UI thread only.
 
 #include <values/Requests.h>
@@ -27,8 +27,8 @@ public:
 
     void setSdfName(const QString& name);
     // The request the fields make: pattern, count, seed, time, output and format (its SDF empty).
-    jobs::SampleRequest request() const;
-    void setRequest(const jobs::SampleRequest& request);
+    values::SampleRequest request() const;
+    void setRequest(const values::SampleRequest& request);
 
     // Controller feedback.
     void setRunning(bool running);
@@ -40,8 +40,8 @@ public:
     int pointSize() const;
 
 signals:
-    void startRequested(const sdfwb::jobs::SampleRequest& request);
-    void previewRequested(const sdfwb::jobs::SampleRequest& request);
+    void startRequested(const sdfwb::values::SampleRequest& request);
+    void previewRequested(const sdfwb::values::SampleRequest& request);
     void pointSizeChanged(int pixels);
     void cancelRequested();
 

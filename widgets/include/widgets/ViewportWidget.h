@@ -8,14 +8,14 @@
 // while the right button is held, W/A/S/D move, Z/C go down/up, Shift is faster, Alt slower. While the camera moves, frames
 // render at a reduced scale chosen to stay within the frame budget; shortly after it stops, a full-resolution frame follows.
 
-#include <renderer/Camera.h>
 #include <renderer/FrameScaler.h>
 #include <renderer/Image.h>
-#include <renderer/RenderSettings.h>
 #include <shaders/Diagnostic.h>
 #include <shaders/Parameters.h>
 #include <shaders/SdfSource.h>
+#include <values/Camera.h>
 #include <values/FrameSettings.h>
+#include <values/RenderSettings.h>
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -57,19 +57,19 @@ public:
 
     // The frame settings this viewport draws with (shading, trace, camera, whether the credits
     // show): the one value screenshots, videos and the probe take.
-    const jobs::FrameSettings& frameSettings() const { return m_frame; }
-    void setShading(const renderer::ShadingSettings& shading);
-    const renderer::ShadingSettings& shading() const { return m_frame.shading; }
-    void setTrace(const renderer::TraceSettings& trace);
+    const values::FrameSettings& frameSettings() const { return m_frame; }
+    void setShading(const values::ShadingSettings& shading);
+    const values::ShadingSettings& shading() const { return m_frame.shading; }
+    void setTrace(const values::TraceSettings& trace);
     // Ctrl + left drag moves an enabled plane along its normal.
-    void setPlane(const renderer::CuttingPlane& plane);
-    const renderer::CuttingPlane& plane() const { return m_plane; }
+    void setPlane(const values::CuttingPlane& plane);
+    const values::CuttingPlane& plane() const { return m_plane; }
     // The SDF's parameter values: uniforms, no recompile; frames follow at the moving rate.
     void setParameters(const std::vector<shaders::ParameterSetting>& parameters);
     const std::vector<shaders::ParameterSetting>& parameters() const { return m_parameters; }
-    const renderer::TraceSettings& trace() const { return m_frame.trace; }
-    const renderer::Camera& camera() const { return m_frame.camera; }
-    void setCamera(const renderer::Camera& camera);
+    const values::TraceSettings& trace() const { return m_frame.trace; }
+    const values::Camera& camera() const { return m_frame.camera; }
+    void setCamera(const values::Camera& camera);
     void resetCamera();
     void setTime(float seconds);
     // Drops every compiled variant; the next frame rebuilds from the current SDF (F5).
@@ -165,8 +165,8 @@ public:
 
 signals:
     void frameRendered(double milliseconds, float scale);
-    void cameraChanged(const sdfwb::renderer::Camera& camera);
-    void planeDragged(const sdfwb::renderer::CuttingPlane& plane);
+    void cameraChanged(const sdfwb::values::Camera& camera);
+    void planeDragged(const sdfwb::values::CuttingPlane& plane);
     void contextReady(const QString& description);
     // A new SDF passed its timing frame (it stays on screen), or would stall even at 5 % resolution
     // and the last one that passed is back (sdfReverted, after performanceWarning).
@@ -229,8 +229,8 @@ private:
     std::unique_ptr<shaders::PreparedSdf> m_lastGoodSdf; // passed its timing frame
     bool m_needsTiming = false;
     renderer::FrameScaler m_scaler; // resolution while moving, and the cap for slow SDFs
-    jobs::FrameSettings m_frame;
-    renderer::CuttingPlane m_plane;
+    values::FrameSettings m_frame;
+    values::CuttingPlane m_plane;
     std::vector<shaders::ParameterSetting> m_parameters;
     float m_time = 0.0f;
     QPoint m_lastMouse;

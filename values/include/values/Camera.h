@@ -3,7 +3,7 @@
 
 #include <glm/vec3.hpp>
 
-namespace sdfwb::renderer {
+namespace sdfwb::values {
 
 struct Camera {
     glm::vec3 position{2.6f, 1.5f, 1.9f}; // front (+X) three-quarter view from above
@@ -52,4 +52,4 @@ void turn(Camera& camera, float yawRadians, float pitchRadians);
 // target move together.
 void fly(Camera& camera, glm::vec3 rightUpForward);
 
-} // namespace sdfwb::renderer
+} // namespace sdfwb::values

@@ -1,4 +1,4 @@
-#include <renderer/Camera.h>
+#include <values/Camera.h>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sdfwb::renderer {
+namespace sdfwb::values {
 
 PrecisionFloor precisionFloor(const Camera& camera, float epsilonScale, int heightPixels) {
     PrecisionFloor floor;
@@ -76,4 +76,4 @@ void fly(Camera& camera, glm::vec3 rightUpForward) {
     camera.target += move;
 }
 
-} // namespace sdfwb::renderer
+} // namespace sdfwb::values

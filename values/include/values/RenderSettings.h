@@ -12,12 +12,7 @@
 #include <utility>
 #include <vector>
 
-namespace sdfwb::renderer {
-
-using shaders::parseShadingMode;
-using shaders::ShadingMode;
-using shaders::shadingModeName;
-using shaders::shadingModeNames;
+namespace sdfwb::values {
 
 struct TraceSettings {
     int maxSteps = 256;          // step budget per ray; a ray that runs out counts as a miss
@@ -56,7 +51,7 @@ inline const char* conesName(TraceSettings::Cones cones) { return nameOf(kConesN
 inline std::optional<TraceSettings::Cones> parseCones(std::string_view name) { return valueNamed(kConesNames, name); }
 
 struct ShadingSettings {
-    ShadingMode mode = ShadingMode::Normals;
+    shaders::ShadingMode mode = shaders::ShadingMode::Normals;
     bool ambientOcclusion = false;
     glm::vec3 background{0.16f, 0.17f, 0.19f};      // RGB where rays miss (values above 1 reach .exr files)
     std::string backgroundImage;                    // an image file behind the shape instead (cover-fit); empty: none
@@ -81,4 +76,4 @@ struct CuttingPlane {
     bool operator==(const CuttingPlane&) const = default;
 };
 
-} // namespace sdfwb::renderer
+} // namespace sdfwb::values
