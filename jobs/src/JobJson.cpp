@@ -38,6 +38,7 @@ json encode(values::TraceSettings::Cones cones) { return values::conesName(cones
 json encode(values::TraceSettings::Tracer tracer) { return values::tracerName(tracer); }
 json encode(values::MarchEvent event) { return marchEventName(event); }
 json encode(values::Finding finding) { return values::findingName(finding); }
+json encode(values::ItemStatus status) { return values::itemStatusName(status); }
 // A float as the shortest decimal that reads back as the same float (0.01f is 0.01, not
 // 0.009999999776482582): written as that double, it parses back to the same float bits.
 json encode(float value) {
@@ -252,6 +253,12 @@ bool decode(const json& in, values::TraceSettings::Tracer& value, const std::str
 
 bool decode(const json& in, values::MarchEvent& value, const std::string& path, bool, std::string& error) {
     return decodeNamed(in, value, path, error, values::parseMarchEvent, "a march event (step, hit, left the box, ...)");
+}
+
+bool decode(const json& in, values::ItemStatus& value, const std::string& path, bool, std::string& error) {
+    return decodeNamed(
+        in, value, path, error, [](const std::string& name) { return valueNamed(values::kItemStatusNames, name); },
+        "an item status (pending, done, skipped, failed, timeout or cancelled)");
 }
 
 bool decode(const json& in, values::Finding& value, const std::string& path, bool, std::string& error) {

@@ -308,7 +308,7 @@ std::map<std::uint64_t, values::RunItemReport> readStatus(const std::string& pat
 
 bool recordedDone(const values::RunItemReport& record, const ManifestItem& item) {
     std::error_code ec;
-    return record.status == "done" && record.key == item.key && fs::is_regular_file(item.output, ec) &&
+    return record.status == values::ItemStatus::Done && record.key == item.key && fs::is_regular_file(item.output, ec) &&
            fs::file_size(item.output, ec) == record.bytes;
 }
 
@@ -359,7 +359,7 @@ values::RunItemReport runItem(const ManifestItem& item, const values::RunRequest
     const fs::path output(item.output);
     if (!output.parent_path().empty()) fs::create_directories(output.parent_path(), ec);
     if (ec) {
-        report.status = "failed";
+        report.status = values::ItemStatus::Failed;
         report.exitCode = 1;
         report.error = item.output + ": cannot create its folder: " + ec.message();
         report.finished = utcNow();
@@ -381,22 +381,22 @@ values::RunItemReport runItem(const ManifestItem& item, const values::RunRequest
     report.exitCode = child.exitCode;
     report.finished = utcNow();
     if (child.cancelled) {
-        report.status = "cancelled";
+        report.status = values::ItemStatus::Cancelled;
         report.error = "cancelled";
     } else if (child.timedOut) {
-        report.status = "timeout";
+        report.status = values::ItemStatus::Timeout;
         char text[96];
         std::snprintf(text, sizeof text, "killed after the item timeout of %g s", request.itemTimeout);
         report.error = text;
     } else if (child.startFailed || child.exitCode != 0) {
-        report.status = "failed";
+        report.status = values::ItemStatus::Failed;
         report.error = lastMessage(child.err);
         if (report.error.empty()) report.error = "exit code " + std::to_string(child.exitCode);
     } else if (!fs::is_regular_file(output, ec)) {
-        report.status = "failed";
+        report.status = values::ItemStatus::Failed;
         report.error = "the child succeeded but wrote no " + item.output;
     } else {
-        report.status = "done";
+        report.status = values::ItemStatus::Done;
         report.bytes = fs::file_size(output, ec);
         // Sample items print their SampleReport; recipes a JSON line with the same rows and bad_rows keys.
         if (auto written = reportFromJson<values::SampleReport>(child.out)) {
@@ -404,7 +404,7 @@ values::RunItemReport runItem(const ManifestItem& item, const values::RunRequest
             report.badRows = written->badRows;
         }
     }
-    if (report.status != "done") removePartials(output);
+    if (report.status != values::ItemStatus::Done) removePartials(output);
     return report;
 }
 
@@ -473,27 +473,26 @@ JobResult<values::RunReport> run(const values::RunRequest& request, const Progre
         values::RunItemReport result;
         if (record != records.end() && recordedDone(record->second, item)) {
             result = record->second;
-            result.status = request.list ? "done" : "skipped";
+            result.status = request.list ? values::ItemStatus::Done : values::ItemStatus::Skipped;
         } else if (request.list) {
             result = record != records.end() && record->second.key == item.key ? record->second : itemReport(item);
-            if (result.status.empty()) result.status = "pending";
         } else {
             result = runItem(item, request, launch, worker, progress);
             if (auto appended = appendStatus(report.status, result); !appended)
                 return JobError{Failure::Work, appended.error().message, {}};
         }
-        if (result.status == "done" && !request.list) {
+        if (result.status == values::ItemStatus::Done && !request.list) {
             ++report.done;
             report.bytesWritten += result.bytes;
-        } else if (result.status == "skipped" || (request.list && result.status == "done")) {
+        } else if (result.status == values::ItemStatus::Skipped || (request.list && result.status == values::ItemStatus::Done)) {
             ++report.skipped;
-        } else if (result.status != "pending" && result.status != "cancelled") {
+        } else if (result.status != values::ItemStatus::Pending && result.status != values::ItemStatus::Cancelled) {
             ++report.failed;
         }
         report.results.push_back(result);
         if (onItem) onItem(result);
         progress(k + 1, mine.size());
-        if (result.status == "cancelled" || progress.isCancelled())
+        if (result.status == values::ItemStatus::Cancelled || progress.isCancelled())
             return JobError{Failure::Cancelled,
                             "run: cancelled; " + std::to_string(report.done) + " items were done and recorded in " +
                                 report.status,

@@ -240,16 +240,8 @@ void SampleCompute::addMeshCounters(meshfield::QueryCounters& into) const {
 std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf& sdf, const shaders::ShaderPiece& sampler) {
     std::vector<shaders::Diagnostic> diagnostics = sdf.diagnostics;
     if (shaders::hasErrors(diagnostics)) return diagnostics;
-    std::vector<shaders::ShaderPiece> pieces;
-    for (const char* file : {"sampling/bindings.glsl", "sampling/common.glsl"}) {
-        auto piece = shaders::builtinPiece(file);
-        if (!piece) return {{"<sdfwb>", 0, 0, shaders::Severity::Error, piece.error().message}};
-        pieces.push_back(std::move(*piece));
-    }
-    pieces.push_back(sampler);
-    auto stage = shaders::builtinPiece("sampling/sample.comp");
-    if (!stage) return {{"<sdfwb>", 0, 0, shaders::Severity::Error, stage.error().message}};
-    pieces.push_back(std::move(*stage));
+    auto pieces = shaders::samplingStagePieces(sampler);
+    if (!pieces) return {{"<sdfwb>", 0, 0, shaders::Severity::Error, pieces.error().message}};
     // A mesh's own field on a driver that runs shaders on the CPU anyway: the shader computes the
     // positions (so they are the GPU path's, bit for bit) and the native engine the values.
     std::shared_ptr<const meshfield::MeshQuery> query;
@@ -271,7 +263,7 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     const char* count = std::getenv("SDFWB_MESH_COUNT");
     const bool countWalks = sdf.mesh && !query && count && std::string_view(count) == "1";
     if (countWalks) features["SDFWB_MESH_COUNT"] = "1";
-    shaders::ComposedShader composed = shaders::composeSdfShader(sdf, shaders::Stage::Compute, pieces, features);
+    shaders::ComposedShader composed = shaders::composeSdfShader(sdf, shaders::Stage::Compute, *pieces, features);
 
     auto start = std::chrono::steady_clock::now();
     CompiledShader compiled = compileShader(GL_COMPUTE_SHADER, composed);

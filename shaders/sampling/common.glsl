@@ -31,7 +31,7 @@ float sdfwb_valueAndGradient(vec3 p, float h, bool value, bool gradient, bool ta
     result = vec3(0.0);
     if (!gradient || !taps) return f0;
     if (sdfwb_tetrahedralGradient) {
-        const vec3 a = vec3(1.0, -1.0, -1.0), b = vec3(-1.0, -1.0, 1.0), c = vec3(-1.0, 1.0, -1.0), d = vec3(1.0);
+        vec3 a = sdfwb_tetrahedronTap(0), b = sdfwb_tetrahedronTap(1), c = sdfwb_tetrahedronTap(2), d = sdfwb_tetrahedronTap(3);
         vec3 sum = vec3(0.0);
         sum += a * sdfwb_sdf(p + a * h);
         sum += b * sdfwb_sdf(p + b * h);
@@ -54,13 +54,12 @@ float sdfwb_valueAndGradient(vec3 p, float h, bool value, bool gradient, bool ta
     vec3 sum = vec3(0.0); // the taps' offsets times their values
     vec3 exact = vec3(0.0);
     for (int i = value ? 0 : 1; i <= count; ++i) {
-        // Tap i: +x -x +y -y +z -z, or the tetrahedron's corners (1,-1,-1) (-1,-1,1) (-1,1,-1) (1,1,1).
+        // Tap i: +x -x +y -y +z -z, or the tetrahedron's corner i - 1 (common/geometry.glsl).
         int axis = (i - 1) / 2;
         float side = (i & 1) == 1 ? 1.0 : -1.0;
         vec3 offset = vec3(0.0);
         if (i > 0 && !tetrahedral) offset[axis] = side;
-        if (i > 0 && tetrahedral)
-            offset = vec3(i == 1 || i == 4 ? 1.0 : -1.0, i >= 3 ? 1.0 : -1.0, i == 2 || i == 4 ? 1.0 : -1.0);
+        if (i > 0 && tetrahedral) offset = sdfwb_tetrahedronTap(i - 1);
         vec3 q = i == 0 ? p : p + offset * h;
 #if defined(SDFWB_MESH_SURFACE)
         vec3 g;
@@ -152,12 +151,9 @@ float sdfwb_latticeCoordinate(uint k, uint n) { return n > 1u ? -1.0 + 2.0 * flo
 // On a hit, `hit` is the point with |f| < sdfwb_surfaceTolerance (1e-5 unless set).
 bool sdfwb_traceRay(vec3 origin, vec3 direction, out vec3 hit) {
     const float margin = 0.05;
-    vec3 inverse = 1.0 / direction;
-    vec3 t0 = (vec3(-1.0 - margin) - origin) * inverse;
-    vec3 t1 = (vec3(1.0 + margin) - origin) * inverse;
-    vec3 tMin = min(t0, t1), tMax = max(t0, t1);
-    float t = max(max(max(tMin.x, tMin.y), tMin.z), 0.0);
-    float tEnd = min(min(tMax.x, tMax.y), tMax.z);
+    vec2 span = sdfwb_intersectBox(origin, direction, 1.0 + margin);
+    float t = max(span.x, 0.0);
+    float tEnd = span.y;
     hit = vec3(0.0);
     for (int step = 0; step < 512 && t <= tEnd; ++step) {
         float d = sdfwb_sdf(origin + t * direction);

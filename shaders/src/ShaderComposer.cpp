@@ -1,6 +1,9 @@
 #include <shaders/ShaderComposer.h>
 
 #include <shaders/BuiltinShaders.h>
+#include <shaders/SdfSource.h>
+
+#include <core/Regex.h>
 
 #include <cctype>
 #include <cstdio>
@@ -155,6 +158,24 @@ Expected<ShaderPiece> builtinPiece(const std::string& relativePath) {
     auto text = builtinShader(relativePath);
     if (!text) return text.error();
     return ShaderPiece{"sdfwb:" + relativePath, std::move(*text)};
+}
+
+Expected<std::vector<ShaderPiece>> samplingStagePieces(const ShaderPiece& sampler) {
+    std::vector<std::string> before = {"sampling/bindings.glsl", "common/geometry.glsl", "sampling/common.glsl"};
+    // Composed only for a sampler that uses it, so no other stage compiles the chain.
+    static const std::regex call(R"(\bsdfwb_metropolisChain\s*\()", kLinearRegex);
+    if (std::regex_search(stripComments(sampler.text), call)) before.push_back("sampling/metropolis_chain.glsl");
+    std::vector<ShaderPiece> pieces;
+    for (const std::string& file : before) {
+        auto piece = builtinPiece(file);
+        if (!piece) return piece.error();
+        pieces.push_back(std::move(*piece));
+    }
+    pieces.push_back(sampler);
+    auto stage = builtinPiece("sampling/sample.comp");
+    if (!stage) return stage.error();
+    pieces.push_back(std::move(*stage));
+    return pieces;
 }
 
 ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::vector<ShaderPiece>& pieces,

@@ -50,7 +50,8 @@ Expected<ComposedShader> composeTracer(const PreparedSdf& sdf, const TracerFeatu
     std::string upper;
     for (char c : mode) upper += char(std::toupper(static_cast<unsigned char>(c)));
     defines["SDFWB_SHADING_" + upper] = "1";
-    std::vector<std::string> files = {"tracer/trace_core.glsl", "tracer/shading_" + mode + ".glsl", "tracer/trace_main.frag"};
+    std::vector<std::string> files = {"common/geometry.glsl", "tracer/trace_core.glsl", "tracer/shading_" + mode + ".glsl",
+                                      "tracer/trace_main.frag"};
     // The heat map shows tracing cost only: no lighting terms.
     if (features.ambientOcclusion && features.shading != ShadingMode::Steps) {
         defines["SDFWB_AO"] = "1";

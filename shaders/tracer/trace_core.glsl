@@ -93,16 +93,6 @@ struct sdfwb_Hit {
     float value;    // f at position (a hit's; the normal's taps are measured against it)
 };
 
-// Ray against the axis-aligned box [-b, b]^3; returns (tNear, tFar), tNear > tFar when missed.
-vec2 sdfwb_intersectBox(vec3 origin, vec3 direction, float b) {
-    vec3 inverse = 1.0 / direction;
-    vec3 t0 = (vec3(-b) - origin) * inverse;
-    vec3 t1 = (vec3(b) - origin) * inverse;
-    vec3 tMin = min(t0, t1);
-    vec3 tMax = max(t0, t1);
-    return vec2(max(max(tMin.x, tMin.y), tMin.z), min(min(tMax.x, tMax.y), tMax.z));
-}
-
 // Angle one pixel spans: hit tolerances and normal steps grow with distance like a pixel's footprint.
 float sdfwb_pixelAngle() { return 2.0 * sdfwb_tanHalfFovY / sdfwb_resolution.y; }
 
@@ -257,7 +247,7 @@ int sdfwb_probeKindOf(int event) {
 }
 #endif
 
-sdfwb_Hit sdfwb_traceRay(vec3 origin, vec3 direction) {
+sdfwb_Hit sdfwb_marchRay(vec3 origin, vec3 direction) {
     sdfwb_Hit hit = sdfwb_Hit(false, 0.0, 0, origin, sdfwb_kRayLeftBox, 0.0);
     sdfwb_March march;
     if (!sdfwb_startMarch(origin, direction, march)) {
@@ -345,13 +335,10 @@ uniform int sdfwb_gradientTaps = 4;
 #endif
 uniform int sdfwb_thinRetakes = 5; // times the normal's taps are taken again with a smaller step
 
-// Tap i of the tetrahedral gradient: (1,-1,-1), (-1,-1,1), (-1,1,-1), (1,1,1).
-vec3 sdfwb_tap(int i) { return vec3((i == 0 || i == 3) ? 1.0 : -1.0, i >= 2 ? 1.0 : -1.0, (i == 1 || i == 3) ? 1.0 : -1.0); }
-
 // Tetrahedral 4-tap gradient with step h; raw (not normalised).
 vec3 sdfwb_gradientAt(vec3 p, float h) {
     vec3 sum = vec3(0.0);
-    for (int i = 0; i < sdfwb_gradientTaps; ++i) sum += sdfwb_tap(i) * sdfwb_sceneMap(p + sdfwb_tap(i) * h);
+    for (int i = 0; i < sdfwb_gradientTaps; ++i) sum += sdfwb_tetrahedronTap(i) * sdfwb_sceneMap(p + sdfwb_tetrahedronTap(i) * h);
     return sum / (4.0 * h);
 }
 
@@ -392,8 +379,8 @@ vec3 sdfwb_normalAt(vec3 p, float t, float value, vec3 direction) {
         sum = vec3(0.0);
         float valueSum = 0.0;
         for (int i = 0; i < sdfwb_gradientTaps; ++i) {
-            float f = sdfwb_sceneMap(p + sdfwb_tap(i) * h);
-            sum += sdfwb_tap(i) * f;
+            float f = sdfwb_sceneMap(p + sdfwb_tetrahedronTap(i) * h);
+            sum += sdfwb_tetrahedronTap(i) * f;
             valueSum += f;
         }
         if (!(h > steps.y && sdfwb_straddled(valueSum, sum, value))) break;
@@ -403,7 +390,7 @@ vec3 sdfwb_normalAt(vec3 p, float t, float value, vec3 direction) {
 }
 
 // The march, the refining step and the normal's taps (retaken with a smaller step when they
-// straddled a thin feature) as one loop around one call of the SDF: what sdfwb_traceRay()
+// straddled a thin feature) as one loop around one call of the SDF: what sdfwb_marchRay()
 // followed by sdfwb_normalAt() computes (the same steps, hit, refinement and taps), but the driver
 // inlines the SDF once instead of three times, so a heavy SDF's first frame waits a third as long
 // for code generation. Lanes that hit early take their taps while their neighbours still march. The march debugger and the
@@ -430,7 +417,7 @@ sdfwb_Hit sdfwb_traceWithNormal(vec3 origin, vec3 direction, out vec3 normal) {
     for (int iteration = 0; iteration < budget; ++iteration) {
         vec3 at = phase == sdfwb_kPhaseMarch    ? march.entry + march.s * direction
                   : phase == sdfwb_kPhaseRefine ? march.entry + (march.s + hitValue) * direction
-                                                : hit.position + sdfwb_tap(count) * steps.x;
+                                                : hit.position + sdfwb_tetrahedronTap(count) * steps.x;
         float f = sdfwb_sceneMap(at);
         if (phase == sdfwb_kPhaseMarch) {
             hit.steps += 1;
@@ -468,7 +455,7 @@ sdfwb_Hit sdfwb_traceWithNormal(vec3 origin, vec3 direction, out vec3 normal) {
             phase = sdfwb_kPhaseTaps;
             count = 0;
         } else {
-            sum += sdfwb_tap(count) * f;
+            sum += sdfwb_tetrahedronTap(count) * f;
             valueSum += f;
             if (++count >= sdfwb_gradientTaps) {
                 if (sdfwb_straddled(valueSum, sum, hit.value) && retakes < sdfwb_thinRetakes && steps.x > steps.y) {

@@ -28,7 +28,7 @@ vec4 sdfwb_pixel(vec3 direction) {
     vec3 normal;
     sdfwb_Hit hit = sdfwb_meshTrace(sdfwb_cameraPosition, direction, normal);
 #elif defined(SDFWB_OUTPUT_STATS) || defined(SDFWB_PROBE) || defined(SDFWB_SHADING_STEPS) || !defined(SDFWB_FUSED_MARCH)
-    sdfwb_Hit hit = sdfwb_traceRay(sdfwb_cameraPosition, direction);
+    sdfwb_Hit hit = sdfwb_marchRay(sdfwb_cameraPosition, direction);
 #else
     // The picture: march and normal in one loop (one copy of the SDF for the driver to compile).
     vec3 normal;

@@ -1,13 +1,18 @@
 // The command line as a user meets it: bad input gives one clear line, a non-zero exit and no file.
 // These runs fail before any GL work, so they need no GL context.
 
+#include <batch/KeyFlags.h>
 #include <values/JobKinds.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
 #include <string>
 #include <string_view>
 #include <sys/wait.h>
@@ -123,6 +128,64 @@ TEST(CommandLine, EveryJobKindIsABatchCommand) {
             EXPECT_EQ(r.exitCode, 0) << name << ": " << r.output;
             EXPECT_NE(r.output.find("--batch " + std::string(kind.name)), std::string::npos) << r.output; // its usage line
         }
+}
+
+// The keys an object of a request accepts, as the request's JSON error lists them ("'zzz':
+// unknown key (known here: a, b)"), with the keys of the objects nested in it ("trace.max_steps").
+std::set<std::string> requestKeys(const std::string& kind, const std::string& path = {}) {
+    std::string json = "{\"zzz_unknown\": 1}";
+    for (std::string rest = path; !rest.empty();) {
+        const std::size_t dot = rest.rfind('.');
+        json = "{\"" + rest.substr(dot == std::string::npos ? 0 : dot + 1) + "\": " + json + "}";
+        rest = dot == std::string::npos ? "" : rest.substr(0, dot);
+    }
+    json.insert(1, "\"kind\": \"" + kind + "\", ");
+    const fs::path file = outputPath("keys-" + kind + ".json");
+    std::ofstream(file) << json;
+    const Result r = run("--batch request " + file.string());
+    fs::remove(file);
+    static const std::regex listed(R"(unknown key \(known here: ([a-z0-9_, ]*)\))");
+    std::smatch match;
+    std::set<std::string> keys;
+    if (!std::regex_search(r.output, match, listed)) return keys; // not an object
+    std::string names = match[1].str() + ", ";
+    for (std::size_t at = 0, comma; (comma = names.find(", ", at)) != std::string::npos; at = comma + 2) {
+        const std::string key = names.substr(at, comma - at);
+        keys.insert(key);
+        if (path.empty() && key != "kind")
+            for (const std::string& nested : requestKeys(kind, path.empty() ? key : path + "." + key)) keys.insert(nested);
+    }
+    return keys;
+}
+
+// The table that words validation messages in the command line's terms (app/batch/KeyFlags.h)
+// names keys some request accepts and options some command accepts, so it cannot drift from
+// either: a key renamed in the JSON, or an option renamed on the command line, fails here.
+TEST(CommandLine, TheKeyToOptionTableNamesRealKeysAndOptions) {
+    std::set<std::string> keys, options;
+    static const std::regex option(R"((?:^|[\s,\[])(--?[a-z][a-z0-9-]*))");
+    for (const sdfwb::values::JobKind& kind : sdfwb::values::kJobKinds) {
+        for (const std::string& key : requestKeys(std::string(kind.name))) keys.insert(key);
+        const Result help = run("--batch " + std::string(kind.name) + " --help");
+        for (std::sregex_iterator it(help.output.begin(), help.output.end(), option), end; it != end; ++it)
+            options.insert((*it)[1].str());
+    }
+    ASSERT_GT(keys.size(), 60u) << "the requests' keys were not read";
+    ASSERT_TRUE(keys.count("max_steps") && keys.count("width")) << "nested and top-level keys";
+    ASSERT_TRUE(options.count("--size") && options.count("-n")) << "the commands' options were not read";
+    static const std::regex quoted("'([a-z_]+)'");
+    for (const auto& [quotedKeys, flag] : sdfwb::app::kRenamedKeys) {
+        const std::string text = quotedKeys, name = std::string(flag).substr(0, std::string(flag).find(':'));
+        EXPECT_TRUE(options.count(name)) << name << " (for " << text << ") is no command's option";
+        for (std::sregex_iterator it(text.begin(), text.end(), quoted), end; it != end; ++it)
+            EXPECT_TRUE(keys.count((*it)[1].str())) << (*it)[1].str() << " is no request's key";
+    }
+    for (const char* key : sdfwb::app::kSameNamedKeys) {
+        std::string name = std::string("--") + key;
+        std::replace(name.begin(), name.end(), '_', '-');
+        EXPECT_TRUE(keys.count(key)) << key << " is no request's key";
+        EXPECT_TRUE(options.count(name)) << name << " (for '" << key << "') is no command's option";
+    }
 }
 
 TEST(CommandLine, UnknownTracerAndConesAreNamed) {

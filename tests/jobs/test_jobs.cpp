@@ -234,9 +234,9 @@ TEST(JobJson, ReportsSurviveARoundTrip) {
     run.seconds = 2.5;
     run.shapesPerHour = 1440.0;
     run.bytesWritten = 1ull << 33;
-    run.results = {{1, 3, "sample", "torus", "out/t.npz", "00ff00ff00ff00ff", "done", 1.25, 1ull << 33, 100, 2, 0, "",
-                    "2026-11-24T05:00:00Z"},
-                   {5, 8, "deepsdf", "b.glsl", "out/b.npz", "0123456789abcdef", "timeout", 30.0, 0, 0, 0, 137,
+    run.results = {{1, 3, "sample", "torus", "out/t.npz", "00ff00ff00ff00ff", values::ItemStatus::Done, 1.25, 1ull << 33, 100, 2,
+                    0, "", "2026-11-24T05:00:00Z"},
+                   {5, 8, "deepsdf", "b.glsl", "out/b.npz", "0123456789abcdef", values::ItemStatus::Timeout, 30.0, 0, 0, 0, 137,
                     "killed after \"30 s\"", "2026-11-24T05:00:31Z"}};
     auto rr = reportFromJson<values::RunReport>(toJson(run));
     ASSERT_TRUE(rr) << rr.error().message;
@@ -245,6 +245,14 @@ TEST(JobJson, ReportsSurviveARoundTrip) {
     ASSERT_TRUE(line) << line.error().message;
     EXPECT_TRUE(*line == run.results[1]);
     EXPECT_EQ(toJson(run.results[1], -1).find('\n'), std::string::npos); // one status-file line
+    // Item statuses travel by their names (values::kItemStatusNames): a status file's line with a
+    // status no item has is refused at its key.
+    for (const auto& [status, name] : values::kItemStatusNames) EXPECT_EQ(valueNamed(values::kItemStatusNames, name), status);
+    std::string unknownStatus = toJson(run.results[1], -1);
+    unknownStatus.replace(unknownStatus.find(R"("timeout")"), 9, R"("timedout")");
+    auto refusedStatus = reportFromJson<values::RunItemReport>(unknownStatus);
+    ASSERT_FALSE(refusedStatus);
+    EXPECT_NE(refusedStatus.error().message.find("'status'"), std::string::npos) << refusedStatus.error().message;
     // A probe's events and outcome travel by their names (MarchEvent's one table): every event
     // survives, and a name no event has is refused at its key.
     values::ProbeReport probe;

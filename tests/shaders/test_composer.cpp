@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <regex>
 #include <set>
 
@@ -129,8 +130,8 @@ TEST(BuiltinShaders, EveryEmbeddedFileCompilesWithGlslangInItsStage) {
         ASSERT_TRUE(composed.hasValue());
         auto diagnostics = checkWithGlslang(*composed);
         EXPECT_FALSE(hasErrors(diagnostics)) << mode << ": " << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
-        for (const char* file :
-             {"tracer/trace_core.glsl", "tracer/ao.glsl", "tracer/plane.glsl", "tracer/markers.glsl", "tracer/trace_main.frag"})
+        for (const char* file : {"common/geometry.glsl", "tracer/trace_core.glsl", "tracer/ao.glsl", "tracer/plane.glsl",
+                                 "tracer/markers.glsl", "tracer/trace_main.frag"})
             covered.insert(file);
         covered.insert(std::string("tracer/shading_") + mode + ".glsl");
     }
@@ -147,8 +148,15 @@ TEST(BuiltinShaders, EveryEmbeddedFileCompilesWithGlslangInItsStage) {
         covered.insert("tracer/probe.glsl");
     }
     for (const std::string& path : builtinShaderPaths())
-        if (path.rfind("samplers/", 0) == 0 || path.rfind("analysis/", 0) == 0)
-            check(Stage::Compute, {"sampling/bindings.glsl", "sampling/common.glsl", path, "sampling/sample.comp"});
+        if (path.rfind("samplers/", 0) == 0 || path.rfind("analysis/", 0) == 0) {
+            auto sampler = builtinPiece(path);
+            ASSERT_TRUE(sampler.hasValue()) << path;
+            auto pieces = samplingStagePieces(*sampler);
+            ASSERT_TRUE(pieces.hasValue()) << path;
+            std::vector<std::string> files;
+            for (const ShaderPiece& piece : *pieces) files.push_back(piece.name.substr(std::string("sdfwb:").size()));
+            check(Stage::Compute, files);
+        }
     // The mesh deviation overlay: its vertex stage alone, its fragment stage with the SDF, and the
     // composite that lays its frame over the traced one.
     for (const char* file : {"overlay/mesh.vert"}) {
@@ -208,11 +216,9 @@ TEST(BuiltinShaders, EveryEmbeddedFileCompilesWithGlslangInItsStage) {
             auto diagnostics = checkWithGlslang(*traced);
             EXPECT_FALSE(hasErrors(diagnostics))
                 << sdfwb::meshfield::signName(sign) << ": " << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
-            std::vector<ShaderPiece> pieces;
-            for (const char* file :
-                 {"sampling/bindings.glsl", "sampling/common.glsl", "analysis/points.glsl", "sampling/sample.comp"})
-                pieces.push_back(*builtinPiece(file));
-            diagnostics = checkWithGlslang(composeSdfShader(mesh, Stage::Compute, pieces, {}));
+            auto pieces = samplingStagePieces(*builtinPiece("analysis/points.glsl"));
+            ASSERT_TRUE(pieces.hasValue());
+            diagnostics = checkWithGlslang(composeSdfShader(mesh, Stage::Compute, *pieces, {}));
             EXPECT_FALSE(hasErrors(diagnostics))
                 << sdfwb::meshfield::signName(sign) << ": " << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
         }
@@ -366,12 +372,9 @@ TEST(Composer, WholeShadertoyShaderCompilesInEveryStage) {
     EXPECT_EQ(tracer->text.find("#define SDFWB_COMPAT_fwidth"), std::string::npos) << "fragment shaders have derivatives";
     auto diagnostics = checkWithGlslang(*tracer);
     EXPECT_FALSE(hasErrors(diagnostics)) << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
-    auto sampler = builtinPiece("samplers/rand.glsl");
-    auto common = builtinPiece("sampling/common.glsl");
-    auto bindings = builtinPiece("sampling/bindings.glsl");
-    auto main = builtinPiece("sampling/sample.comp");
-    ASSERT_TRUE(sampler.hasValue() && common.hasValue() && bindings.hasValue() && main.hasValue());
-    ComposedShader compute = composeSdfShader(sdf, Stage::Compute, {*bindings, *common, *sampler, *main}, {});
+    auto pieces = samplingStagePieces(*builtinPiece("samplers/rand.glsl"));
+    ASSERT_TRUE(pieces.hasValue());
+    ComposedShader compute = composeSdfShader(sdf, Stage::Compute, *pieces, {});
     EXPECT_NE(compute.text.find("#define SDFWB_COMPAT_fwidth 1"), std::string::npos);
     diagnostics = checkWithGlslang(compute);
     EXPECT_FALSE(hasErrors(diagnostics)) << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
@@ -560,12 +563,9 @@ TEST(CompatNeeds, FragmentOnlyBuiltinsInHelpersCompileInTheComputeStage) {
                               "float map(vec3 p) { return length(p) - 0.5; }\n"
                               "void mainImage(out vec4 c, in vec2 f) { c = vec4(sky(vec3(f, 1.0)) + dither(), 1.0); }\n");
     ASSERT_TRUE(sdf.ok());
-    auto sampler = builtinPiece("samplers/rand.glsl");
-    auto common = builtinPiece("sampling/common.glsl");
-    auto bindings = builtinPiece("sampling/bindings.glsl");
-    auto main = builtinPiece("sampling/sample.comp");
-    ASSERT_TRUE(sampler.hasValue() && common.hasValue() && bindings.hasValue() && main.hasValue());
-    ComposedShader compute = composeSdfShader(sdf, Stage::Compute, {*bindings, *common, *sampler, *main}, {});
+    auto pieces = samplingStagePieces(*builtinPiece("samplers/rand.glsl"));
+    ASSERT_TRUE(pieces.hasValue());
+    ComposedShader compute = composeSdfShader(sdf, Stage::Compute, *pieces, {});
     EXPECT_EQ(compute.text.find("gl_FragCoord.xy"), std::string::npos);
     EXPECT_NE(compute.text.find("hash12(sdfwb_FragCoord.xy)"), std::string::npos);
     EXPECT_NE(compute.text.find("sdfwb_textureBias(iChannel0, rd.xy * .5 + .5, -100.)"), std::string::npos);
@@ -633,6 +633,49 @@ TEST(EntryPoint, StructReturnsOutParametersAndNoiseNamedHelpers) {
     ASSERT_TRUE(reflection.ok());
     EXPECT_EQ(reflection.signature.entry, "map");
     EXPECT_EQ(reflection.entrySource, EntrySource::Convention);
+}
+
+// The Metropolis chain is written once (sampling/metropolis_chain.glsl) and composed for the
+// samplers that call it: both built-in metropolis samplers, and a user's sampler that defines its
+// own target the same way; no other sampler compiles it.
+TEST(SamplingStage, ComposesTheMetropolisChainForTheSamplersThatCallIt) {
+    auto names = [](const std::vector<ShaderPiece>& pieces) {
+        std::vector<std::string> list;
+        for (const ShaderPiece& piece : pieces) list.push_back(piece.name);
+        return list;
+    };
+    const std::string chain = "sdfwb:sampling/metropolis_chain.glsl";
+    for (const char* file : {"samplers/metropolis.glsl", "samplers/metropolis_curvature.glsl"}) {
+        auto pieces = samplingStagePieces(*builtinPiece(file));
+        ASSERT_TRUE(pieces.hasValue()) << file;
+        const auto list = names(*pieces);
+        const auto at = std::find(list.begin(), list.end(), chain);
+        ASSERT_NE(at, list.end()) << file;
+        EXPECT_EQ(*(at + 1), std::string("sdfwb:") + file) << "the chain comes right before its sampler";
+    }
+    for (const char* file : {"samplers/rand.glsl", "samplers/near.glsl", "analysis/points.glsl"}) {
+        auto pieces = samplingStagePieces(*builtinPiece(file));
+        ASSERT_TRUE(pieces.hasValue()) << file;
+        const auto list = names(*pieces);
+        EXPECT_EQ(std::find(list.begin(), list.end(), chain), list.end()) << file;
+    }
+    // A mention in a comment is not a call.
+    auto commented = samplingStagePieces({"mine.glsl", "// unlike sdfwb_metropolisChain(index, p)\n"
+                                                       "bool samplePosition(uint index, out vec3 position) {\n"
+                                                       "    position = vec3(0.0);\n    return true;\n}\n"});
+    ASSERT_TRUE(commented.hasValue());
+    EXPECT_EQ(names(*commented).size(), 5u);
+    // A user's sampler: the chain towards the surface, weighted towards y > 0.
+    PreparedSdf sdf = prepare("float sdf(vec3 p) { return length(p) - 0.5; }\n");
+    ASSERT_TRUE(sdf.ok());
+    auto user = samplingStagePieces({"upper.glsl", "float sdfwb_stateTerm(vec3 p, float f) { return p.y; }\n"
+                                                   "float sdfwb_logTargetRatio(float fx, float tx, float fy, float ty) {\n"
+                                                   "    return (abs(fx) - abs(fy)) / sdfwb_kBand + (ty - tx);\n}\n"
+                                                   "bool samplePosition(uint index, out vec3 position) {\n"
+                                                   "    return sdfwb_metropolisChain(index, position);\n}\n"});
+    ASSERT_TRUE(user.hasValue());
+    auto diagnostics = checkWithGlslang(composeSdfShader(sdf, Stage::Compute, *user, {}));
+    EXPECT_FALSE(hasErrors(diagnostics)) << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
 }
 
 // Issue 46, point 3: a driver inlines a field at every call site, so the sampling stage calls it

@@ -1,5 +1,7 @@
 #include "Common.h"
 
+#include "../KeyFlags.h"
+
 #include <jobs/Protocol.h>
 
 #include <algorithm>
@@ -49,66 +51,6 @@ int endProtocolRequest(int exitCode) {
 }
 
 std::string inFlagTerms(const std::string& message) {
-    // The keys whose option is not "--" + the key with '-' for '_'; then the rest of the keys that
-    // validation messages name.
-    static const std::pair<const char*, const char*> kSpecial[] = {
-        {"'width', 'height'", "--size"},
-        {"'x', 'y'", "--pixel"},
-        {"'shard_index', 'shard_count'", "--shard"},
-        {"'bounds_min', 'bounds_max'", "--bounds"},
-        {"'channels'", "--channel"},
-        {"'params_end'", "--param-end"},
-        {"'params'", "--param"},
-        {"'over_relaxation'", "--relaxation"},
-        {"'near_truncation'", "--near-truncate"},
-        {"'items'", "--item"},
-        {"'n'", "-n"},
-        {"'sdf': ", "--sdf: "}, // only as the message's subject: 'sdf' is also the usual entry point's name
-    };
-    static const char* const kPlain[] = {
-        "entry",
-        "randomize",
-        "sweep",
-        "output",
-        "time",
-        "fov",
-        "max_steps",
-        "step_factor",
-        "cone_tile",
-        "contour_spacing",
-        "plane",
-        "camera",
-        "target",
-        "background_image",
-        "background",
-        "seconds",
-        "fps",
-        "pattern",
-        "gradient_step",
-        "surface_tolerance",
-        "near_widths",
-        "samples",
-        "truncation_reach",
-        "resolution",
-        "refine",
-        "repeats",
-        "world_size",
-        "rank",
-        "item_timeout",
-        "status",
-        "lipschitz",
-        "error_samples",
-        "mesh",
-        "points",
-        "tau",
-        "occupancy_resolution",
-        "edge_radius",
-        "edge_angle",
-        "sign",
-        "normalize",
-        "format",
-        "chunk",
-    };
     // Only a message whose subject is a key (it starts with one): a manifest's line names its
     // own columns ("jobs.csv:2: 'output': ...").
     if (message.empty() || message.front() != '\'') return message;
@@ -117,8 +59,8 @@ std::string inFlagTerms(const std::string& message) {
         for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
             text.replace(at, from.size(), to);
     };
-    for (const auto& [key, flag] : kSpecial) replaceAll(key, flag);
-    for (const char* key : kPlain) {
+    for (const auto& [key, flag] : kRenamedKeys) replaceAll(key, flag);
+    for (const char* key : kSameNamedKeys) {
         std::string flag = std::string("--") + key;
         std::replace(flag.begin(), flag.end(), '_', '-');
         replaceAll("'" + std::string(key) + "'", flag);

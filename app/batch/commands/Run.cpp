@@ -26,12 +26,12 @@ int runRun(const values::RunRequest& request, const OutputOptions& output) {
     const bool text = !output.json && !output.quiet;
     JobScope scope(OutputOptions{true, false, output.progressLines}); // Ctrl-C cancels; no bar over the item lines
     auto result = jobs::run(request, scope.sink(), [&](const values::RunItemReport& r) {
-        const bool failed = r.status == "failed" || r.status == "timeout";
+        const bool failed = r.status == values::ItemStatus::Failed || r.status == values::ItemStatus::Timeout;
         if (!text && !(output.quiet && failed)) return;
-        std::string outcome = r.status;
-        if (r.status == "skipped")
+        std::string outcome = values::itemStatusName(r.status);
+        if (r.status == values::ItemStatus::Skipped)
             outcome += " (done before)";
-        else if (r.status == "done" && !request.list)
+        else if (r.status == values::ItemStatus::Done && !request.list)
             outcome += " in " + std::to_string(int(r.seconds * 1000.0 + 0.5)) + " ms, " + megabytes(r.bytes);
         else if (!r.error.empty())
             outcome += ": " + r.error;

@@ -59,6 +59,11 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
 // Loads a built-in file as a piece named "sdfwb:<path>".
 Expected<ShaderPiece> builtinPiece(const std::string& relativePath);
 
+// The compute sampling stage's pieces around a sampler (or an analysis file), in order: the
+// bindings, the geometry the tracer shares (common/geometry.glsl), the samplers' helpers, the
+// Metropolis chain when the sampler calls sdfwb_metropolisChain, the sampler, the stage's main().
+Expected<std::vector<ShaderPiece>> samplingStagePieces(const ShaderPiece& sampler);
+
 // Composes the SDF with a stage file (path relative to shaders/). Adds SDFWB_ANIMATED when the SDF
 // takes time and SDFWB_COMPAT_<SYMBOL> for each compat symbol it uses.
 Expected<ComposedShader> composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::string& stageFile,

@@ -494,6 +494,15 @@ struct ProbeReport {
     bool operator==(const ProbeReport&) const = default;
 };
 
+// Where a manifest item stands. Skipped: done before (its output is there and its key unchanged);
+// pending: a --list of an item not run yet. The names are the status file's and the reports'.
+enum class ItemStatus { Pending, Done, Skipped, Failed, Timeout, Cancelled };
+inline constexpr std::pair<ItemStatus, const char*> kItemStatusNames[] = {
+    {ItemStatus::Pending, "pending"}, {ItemStatus::Done, "done"},       {ItemStatus::Skipped, "skipped"},
+    {ItemStatus::Failed, "failed"},   {ItemStatus::Timeout, "timeout"}, {ItemStatus::Cancelled, "cancelled"},
+};
+inline const char* itemStatusName(ItemStatus status) { return nameOf(kItemStatusNames, status); }
+
 // One manifest item's outcome, as the status file records it and the run reports it.
 struct RunItemReport {
     std::uint64_t index = 0; // 0-based position among the manifest's items
@@ -501,8 +510,8 @@ struct RunItemReport {
     std::string task;        // "sample" or the recipe's name
     std::string sdf;
     std::string output;
-    std::string key;    // fingerprint of the item's content: a changed line is run again
-    std::string status; // done, skipped (done before), failed, timeout, cancelled; with list: pending or the recorded one
+    std::string key;                         // fingerprint of the item's content: a changed line is run again
+    ItemStatus status = ItemStatus::Pending; // with list: pending or the recorded one
     double seconds = 0.0;
     std::uint64_t bytes = 0; // the output's size
     std::uint64_t rows = 0, badRows = 0;

@@ -1,0 +1,46 @@
+// The Metropolis-Hastings chain the metropolis samplers share, composed before a sampler that
+// calls sdfwb_metropolisChain (SampleCompute looks for the name). Each sample runs its own chain
+// (so samples are independent and any chunking gives the same file) on the cube [-1,1]^3, towards
+// pi(x) ~ exp(-|f(x)| / sdfwb_kBand) times the sampler's own weight. The Gaussian proposal's width
+// follows |f| (wide far from the surface, narrow near it); the Hastings ratio corrects for that,
+// so the chain keeps pi as its stationary distribution. The last state is the sample.
+//
+// The sampler defines:
+//   float sdfwb_stateTerm(vec3 p, float f);  a term the chain keeps with each state, computed once
+//                                            per state (the log of the sampler's weight, or 0.0)
+//   float sdfwb_logTargetRatio(float fx, float termX, float fy, float termY);
+//                                            log pi(y) / pi(x) from the two states' values and terms
+
+const float sdfwb_kBand = 0.01; // pi's length scale: most samples lie within a few bands of f = 0
+const uint sdfwb_kSteps = 160u; // chain length
+
+float sdfwb_stateTerm(vec3 p, float f);
+float sdfwb_logTargetRatio(float fx, float termX, float fy, float termY);
+
+float sdfwb_proposalWidth(float distance) { return clamp(0.5 * abs(distance), 0.004, 0.25); }
+
+bool sdfwb_metropolisChain(uint index, out vec3 position) {
+    vec3 x = sdfwb_randomInCube(index, 0u);
+    float fx = sdfwb_sdf(x);
+    float termX = sdfwb_stateTerm(x, fx);
+    for (uint step = 0u; step < sdfwb_kSteps; ++step) {
+        float widthX = sdfwb_proposalWidth(fx);
+        vec3 y = x + widthX * sdfwb_randomGaussian3(index, 1u + 2u * step);
+        if (any(greaterThan(abs(y), vec3(1.0)))) continue; // outside the support: rejected
+        float fy = sdfwb_sdf(y);
+        if (isnan(fy) || isinf(fy)) continue;
+        float termY = sdfwb_stateTerm(y, fy);
+        float widthY = sdfwb_proposalWidth(fy);
+        float squared = dot(y - x, y - x);
+        // log of pi(y) q(x|y) / (pi(x) q(y|x)) for isotropic Gaussians in 3D
+        float logRatio = sdfwb_logTargetRatio(fx, termX, fy, termY) + 3.0 * log(widthX / widthY) -
+                         squared / (2.0 * widthY * widthY) + squared / (2.0 * widthX * widthX);
+        if (log(max(sdfwb_random01(index, 2u + 2u * step), 1e-30)) < logRatio) {
+            x = y;
+            fx = fy;
+            termX = termY;
+        }
+    }
+    position = x;
+    return !isnan(fx);
+}
