@@ -18,10 +18,9 @@ enum ExitCode : int {
 };
 
 struct OutputOptions {
-    bool quiet = false;         // only errors
-    bool json = false;          // machine-readable report on stdout
-    bool progressLines = false; // "progress DONE TOTAL" lines on stderr, for front ends
-    bool protocol = false;      // the worker protocol (jobs/Protocol.h) on stdout: progress, error, report, end
+    bool quiet = false;    // only errors
+    bool json = false;     // machine-readable report on stdout
+    bool protocol = false; // the worker protocol (jobs/Protocol.h) on stdout: progress, error, report, end
 };
 
 int runRender(const values::RenderRequest& request, const OutputOptions& output);

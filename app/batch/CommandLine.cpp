@@ -225,7 +225,6 @@ void addOutputFlags(CLI::App& app, Ending& ending) {
                  "print the request as JSON (for `sdfwb --batch request`, job files and Python's sdfwb.run) and stop");
     app.add_flag("--quiet,-q", output.quiet, "print errors only");
     app.add_flag("--json", output.json, "print a machine-readable report on stdout");
-    app.add_flag("--progress-lines", output.progressLines, "print 'progress DONE TOTAL' lines on stderr (for front ends)");
     app.add_flag("--protocol", output.protocol,
                  "answer in the worker protocol on stdout: one JSON object per line, {\"progress\":[done,total]}, "
                  "{\"error\":{kind, message, diagnostics}}, {\"report\":{...}}, then {\"end\":exit code} (the workbench's "
@@ -706,8 +705,8 @@ std::optional<std::string> readRequestText(const std::string& source) {
     return text.str();
 }
 
-// `request --each-line`: every line of the input is a request, run in turn; each ends with the
-// line "sdfwb-end CODE" on stdout, so a parent can tell where one item's report ends.
+// `request --each-line`: every line of the input is a request, run in turn. A parent that needs to
+// tell where one request's answer ends adds --protocol: each then ends with {"end":CODE}.
 int runRequestLines(const std::string& source, const Ending& ending, Mode mode) {
     if (mode == Mode::Check) return kExitOk; // the lines are read when it runs
     std::ifstream file;
@@ -732,7 +731,6 @@ int runRequestLines(const std::string& source, const Ending& ending, Mode mode) 
             last = finish(*request, ending, mode); // under --protocol it ends with {"end": code}
         }
         std::fflush(stderr);
-        if (!ending.output.protocol) std::printf("\nsdfwb-end %d\n", last);
         std::fflush(stdout);
     }
     return last;
@@ -746,8 +744,8 @@ int runRequestCommand(const Arguments& arguments, Mode mode) {
     bool eachLine = false;
     app.add_option("file", source, "a .json file holding one request, or - for stdin")->required();
     app.add_flag("--each-line", eachLine,
-                 "read one request per line until the input ends; after each, print the line 'sdfwb-end EXITCODE' on stdout "
-                 "(the worker protocol of `--batch run`: one process and GL context for many items)");
+                 "read one request per line until the input ends (with --protocol, each answer ends with {\"end\":code}: "
+                 "one process and GL context for many requests, as the workbench and `--batch run` use it)");
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch request", arguments)) return *exit;
     if (eachLine) return runRequestLines(source, ending, mode);

@@ -6,6 +6,7 @@
 
 #include <jobs/JobJson.h>
 #include <jobs/Manifest.h>
+#include <jobs/Protocol.h>
 
 #include <core/TextFile.h>
 
@@ -26,6 +27,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 extern char** environ;
@@ -94,9 +96,10 @@ void removePartials(const fs::path& output) {
 }
 
 struct ChildOutcome {
-    int exitCode = 0; // the item's (from the end marker), the process's, or 128 + signal
+    int exitCode = 0; // the item's (from the end message), the process's, or 128 + signal
     bool timedOut = false, cancelled = false, startFailed = false;
-    std::string out, err;
+    std::string out, err;          // out: the worker's report (or a recipe's stdout); err: stderr
+    std::optional<JobError> error; // the worker's error message for the item
     double seconds = 0.0;
 };
 
@@ -107,8 +110,8 @@ void closeFd(int& fd) {
 
 // A child process in its own process group, with pipes on stdin, stdout and stderr; it dies with
 // this process (PR_SET_PDEATHSIG). Two uses: one input, then its exit (recipes through Python);
-// or a worker (`sdfwb --batch request - --each-line`) that answers each request line with its
-// report and the line "sdfwb-end CODE", so one process start and GL context serve many items.
+// or a worker (`sdfwb --batch request - --protocol --each-line`) that answers each request line in
+// the worker protocol (jobs/Protocol.h), so one process start and GL context serve many items.
 class Child {
 public:
     Child(const std::vector<std::string>& argv, const std::vector<std::string>& environment) {
@@ -161,7 +164,7 @@ public:
     bool running() const { return m_pid > 0; }
 
     // Writes `input`. With `toExit`, closes stdin after it and waits for the process to end;
-    // otherwise waits for the worker's "sdfwb-end CODE" line. Past `timeout` seconds (0: none) or
+    // otherwise reads the worker's protocol messages up to the item's {"end":CODE}. Past `timeout` seconds (0: none) or
     // on a cancel, SIGTERM goes to the group and SIGKILL 3 s later; the process is then gone.
     ChildOutcome exchange(const std::string& input, bool toExit, double timeout, const ProgressSink& sink) {
         ChildOutcome outcome;
@@ -190,17 +193,9 @@ public:
             drain(m_out, m_pending);
             drain(m_err, outcome.err);
             if (outcome.err.size() > 65536) outcome.err.erase(0, outcome.err.size() - 32768);
-            if (!toExit) {
-                // The marker ends the item; what came before it is the item's report.
-                const std::size_t marker = m_pending.rfind("sdfwb-end ");
-                if (marker != std::string::npos && (marker == 0 || m_pending[marker - 1] == '\n') &&
-                    m_pending.find('\n', marker) != std::string::npos) {
-                    outcome.out = m_pending.substr(0, marker);
-                    outcome.exitCode = std::atoi(m_pending.c_str() + marker + 10);
-                    m_pending.erase(0, m_pending.find('\n', marker) + 1);
-                    drain(m_err, outcome.err); // written before the marker, so already in the pipe
-                    break;
-                }
+            if (!toExit && takeMessages(outcome)) {
+                drain(m_err, outcome.err); // written before the end message, so already in the pipe
+                break;
             }
             int status = 0;
             if (::waitpid(m_pid, &status, WNOHANG) == m_pid) {
@@ -209,7 +204,7 @@ public:
                 m_pid = -1;
                 outcome.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
                 if (!toExit && outcome.exitCode == 0) outcome.exitCode = 1; // a worker ending mid-item failed it
-                outcome.out = std::move(m_pending);
+                if (toExit) outcome.out = std::move(m_pending);
                 m_pending.clear();
                 end();
                 break;
@@ -242,6 +237,22 @@ public:
     }
 
 private:
+    // Takes the worker's complete lines: the item's report and error, log lines skipped. True once
+    // its end message came (its exit code in `outcome`).
+    bool takeMessages(ChildOutcome& outcome) {
+        for (std::size_t newline = m_pending.find('\n'); newline != std::string::npos; newline = m_pending.find('\n')) {
+            WorkerMessage message = readWorkerMessage(m_pending.substr(0, newline));
+            m_pending.erase(0, newline + 1);
+            if (message.kind == WorkerMessage::Kind::Report) outcome.out = std::move(message.report);
+            if (message.kind == WorkerMessage::Kind::Error) outcome.error = std::move(message.error);
+            if (message.kind == WorkerMessage::Kind::End) {
+                outcome.exitCode = message.exitCode;
+                return true;
+            }
+        }
+        return false;
+    }
+
     static void drain(int& fd, std::string& target) {
         char buffer[65536];
         while (fd >= 0) {
@@ -276,6 +287,17 @@ std::string lastMessage(const std::string& err) {
     for (std::size_t i = lines.size() > 3 ? lines.size() - 3 : 0; i < lines.size(); ++i)
         text += (text.empty() ? "" : " / ") + lines[i];
     return text.size() > 1000 ? "..." + text.substr(text.size() - 997) : text;
+}
+
+// A worker's error for the status file: its message, then the file:line of its first diagnostics
+// (at most 1000 characters).
+std::string errorText(const JobError& error) {
+    std::string text = error.message;
+    for (std::size_t k = 0; k < error.diagnostics.size() && k < 3; ++k) {
+        const shaders::Diagnostic& d = error.diagnostics[k];
+        text += " / " + d.file + ":" + std::to_string(d.line) + ": " + d.message;
+    }
+    return text.size() > 1000 ? text.substr(0, 997) + "..." : text;
 }
 
 Expected<void> appendStatus(const std::string& path, const values::RunItemReport& item) {
@@ -369,9 +391,9 @@ values::RunItemReport runItem(const ManifestItem& item, const values::RunRequest
     ChildOutcome child;
     if (item.kind == "sample") {
         if (!worker || !worker->running())
-            worker = std::make_unique<Child>(
-                std::vector<std::string>{launch.binary.string(), "--batch", "request", "-", "--json", "--each-line"},
-                launch.environment);
+            worker = std::make_unique<Child>(std::vector<std::string>{launch.binary.string(), "--batch", "request", "-",
+                                                                      "--protocol", "--each-line", "--quiet"},
+                                             launch.environment);
         child = worker->exchange(item.childInput + "\n", false, request.itemTimeout, sink);
     } else {
         Child once({launch.python, "-m", "sdfwb", "recipe", "-"}, launch.environment);
@@ -390,7 +412,7 @@ values::RunItemReport runItem(const ManifestItem& item, const values::RunRequest
         report.error = text;
     } else if (child.startFailed || child.exitCode != 0) {
         report.status = values::ItemStatus::Failed;
-        report.error = lastMessage(child.err);
+        report.error = child.error ? errorText(*child.error) : lastMessage(child.err);
         if (report.error.empty()) report.error = "exit code " + std::to_string(child.exitCode);
     } else if (!fs::is_regular_file(output, ec)) {
         report.status = values::ItemStatus::Failed;

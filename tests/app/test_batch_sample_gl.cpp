@@ -298,19 +298,19 @@ TEST(BatchSample, JobFileRunsEveryStepAndStopsAtTheFirstFailure) {
 TEST(BatchSample, CtrlCLeavesNoPartialFile) {
     fs::path out = scratch("interrupted.npz");
     // Long enough to be interrupted: 200 M metropolis samples would take minutes. Ctrl-C comes once
-    // the run has written its first progress line (so the output file is being written), not
+    // the run has sent its first progress message (so the output file is being written), not
     // after a guessed delay; the child must still be running then.
     int fds[2];
     ASSERT_EQ(pipe(fds), 0);
     pid_t child = spawnSdfwb({"--batch", "sample", "--sdf", "torus", "--pattern", "metropolis", "-n", "200000000", "--output",
-                              out.string(), "--chunk", "65536", "--progress-lines"},
+                              out.string(), "--chunk", "65536", "--protocol"},
                              [&] {
-                                 dup2(fds[1], 2);
+                                 dup2(fds[1], 1);
                                  close(fds[0]);
                              });
     close(fds[1]);
-    const std::string errors = sdfwb::testing::readUntil(fds[0], "progress ", std::chrono::seconds(120));
-    ASSERT_NE(errors.find("progress "), std::string::npos) << "no progress line within 120 s:\n" << errors;
+    const std::string messages = sdfwb::testing::readUntil(fds[0], "{\"progress\":", std::chrono::seconds(120));
+    ASSERT_NE(messages.find("{\"progress\":"), std::string::npos) << "no progress message within 120 s:\n" << messages;
     int status = 0;
     ASSERT_EQ(waitpid(child, &status, WNOHANG), 0) << "the child ended before Ctrl-C";
     kill(child, SIGINT);

@@ -95,15 +95,15 @@ TEST(Security, BatchRunsOpenNoNetworkSocket) {
     pid_t child = fork();
     if (child == 0) {
         unsetenv("DISPLAY");
-        dup2(fds[1], 2);
+        dup2(fds[1], 1);
         close(fds[0]);
         execl(SDFWB_BINARY, SDFWB_BINARY, "--batch", "sample", "--sdf", "mandelbulb", "--pattern", "surface", "-n", "2000000",
-              "--chunk", "16384", "--progress-lines", "--output", (folder / "out.npz").c_str(), static_cast<char*>(nullptr));
+              "--chunk", "16384", "--protocol", "--output", (folder / "out.npz").c_str(), static_cast<char*>(nullptr));
         _exit(127);
     }
     close(fds[1]);
-    const std::string errors = sdfwb::testing::readUntil(fds[0], "progress ", std::chrono::seconds(120));
-    ASSERT_NE(errors.find("progress "), std::string::npos) << "no progress line within 120 s:\n" << errors;
+    const std::string messages = sdfwb::testing::readUntil(fds[0], "{\"progress\":", std::chrono::seconds(120));
+    ASSERT_NE(messages.find("{\"progress\":"), std::string::npos) << "no progress message within 120 s:\n" << messages;
     int status = 0;
     ASSERT_EQ(waitpid(child, &status, WNOHANG), 0) << "the run ended before its sockets were read";
     auto sockets = sdfwb::testing::networkSockets(std::to_string(child));

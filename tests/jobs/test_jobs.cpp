@@ -663,7 +663,7 @@ TEST(WorkerProtocol, MessagesReadBackAsTheyWereWritten) {
     const WorkerMessage end = readWorkerMessage(endMessage(130));
     EXPECT_EQ(end.kind, WorkerMessage::Kind::End);
     EXPECT_EQ(end.exitCode, 130);
-    for (const char* other : {"", "progress 3 40", "sdfwb-end 0", "{\"progress\":[1]}", "{\"end\":0,\"x\":1}", "{bad", "[1,2]"})
+    for (const char* other : {"", "progress 3 40", "end 0", "{\"progress\":[1]}", "{\"end\":0,\"x\":1}", "{bad", "[1,2]"})
         EXPECT_EQ(readWorkerMessage(other).kind, WorkerMessage::Kind::Other) << other;
 }
 

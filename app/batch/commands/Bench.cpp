@@ -5,6 +5,7 @@
 #include <core/Log.h>
 #include <core/Paths.h>
 #include <jobs/JobJson.h>
+#include <jobs/Protocol.h>
 
 #include <spawn.h>
 #include <sys/wait.h>
@@ -40,9 +41,10 @@ int runBench(const values::BenchRequest& request, const OutputOptions& output) {
     const char* names[] = {"sphere tracer", "samplers", "gradients", "audit"};
     if (!output.quiet) std::fprintf(stderr, "bench: %s ...\n", names[0]);
     ProgressSink progress{[&](std::uint64_t done, std::uint64_t total) {
-                              if (output.progressLines)
-                                  std::fprintf(stderr, "progress %llu %llu\n", (unsigned long long)done,
-                                               (unsigned long long)total);
+                              if (output.protocol) {
+                                  std::printf("%s\n", jobs::progressMessage(done, total).c_str());
+                                  std::fflush(stdout);
+                              }
                               if (!output.quiet && done < total && done < 4) std::fprintf(stderr, "bench: %s ...\n", names[done]);
                           },
                           nullptr};

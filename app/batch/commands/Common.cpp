@@ -114,7 +114,7 @@ extern "C" void onInterrupt(int) {
 } // namespace
 
 JobScope::JobScope(const OutputOptions& output)
-    : m_bar(!output.quiet && !output.json && !output.protocol && ::isatty(STDERR_FILENO)), m_lines(output.progressLines),
+    : m_bar(!output.quiet && !output.json && !output.protocol && ::isatty(STDERR_FILENO)),
       m_protocol(output.protocol), m_sink{[this](std::uint64_t done, std::uint64_t total) { draw(done, total); }, &m_cancel} {
     g_interruptToken.store(&m_cancel);
     m_previousInt = std::signal(SIGINT, onInterrupt);
@@ -129,7 +129,6 @@ JobScope::~JobScope() {
 }
 
 void JobScope::draw(std::uint64_t done, std::uint64_t total) {
-    if (m_lines) std::fprintf(stderr, "progress %llu %llu\n", (unsigned long long)done, (unsigned long long)total);
     if (m_protocol) {
         std::printf("%s\n", jobs::progressMessage(done, total).c_str());
         std::fflush(stdout);

@@ -29,7 +29,7 @@ void printReport(const std::string& json, const OutputOptions& output);
 std::unique_ptr<renderer::HeadlessContext> makeContext();
 
 // While alive: a one-line progress bar on a terminal's stderr (at most 10 redraws a second, not
-// with --quiet or --json), "progress DONE TOTAL" lines with --progress-lines, and SIGINT/SIGTERM
+// with --quiet or --json), progress messages under the worker protocol, and SIGINT/SIGTERM
 // cancelling the job through sink().
 class JobScope {
 public:
@@ -46,7 +46,6 @@ private:
     void draw(std::uint64_t done, std::uint64_t total);
 
     bool m_bar;
-    bool m_lines;
     bool m_protocol;
     bool m_drawn = false;
     CancelToken m_cancel;

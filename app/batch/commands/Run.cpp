@@ -24,7 +24,7 @@ std::string megabytes(std::uint64_t bytes) {
 int runRun(const values::RunRequest& request, const OutputOptions& output) {
     if (auto error = jobs::validate(request)) return reportFailure(*error);
     const bool text = !output.json && !output.quiet;
-    JobScope scope(OutputOptions{true, false, output.progressLines}); // Ctrl-C cancels; no bar over the item lines
+    JobScope scope(OutputOptions{true, false, output.protocol}); // Ctrl-C cancels; no bar over the item lines
     auto result = jobs::run(request, scope.sink(), [&](const values::RunItemReport& r) {
         const bool failed = r.status == values::ItemStatus::Failed || r.status == values::ItemStatus::Timeout;
         if (!text && !(output.quiet && failed)) return;
