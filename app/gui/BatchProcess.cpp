@@ -12,7 +12,7 @@ QString BatchProcess::defaultExecutable() {
     return chosen.isEmpty() ? QCoreApplication::applicationFilePath() : chosen;
 }
 
-BatchProcess::BatchProcess(QObject* parent) : QObject(parent), m_executable(defaultExecutable()) {}
+BatchProcess::BatchProcess(QObject* parent) : JobClient(parent), m_executable(defaultExecutable()) {}
 
 BatchProcess::~BatchProcess() {
     if (isRunning()) {
@@ -41,8 +41,8 @@ bool BatchProcess::start(const values::Request& request) {
         QProcess* process = m_process;
         m_process = nullptr;
         process->deleteLater();
-        m_lastError = {jobs::Failure::Work, tr("cannot start %1").arg(m_executable).toStdString(), {}};
-        emit finished(false, false, {}, tr("cannot start %1").arg(m_executable));
+        const QString message = tr("cannot start %1").arg(m_executable);
+        conclude(false, false, {}, message, {jobs::Failure::Work, message.toStdString(), {}});
     });
     connect(m_process, &QProcess::finished, this, [this](int exitCode, QProcess::ExitStatus status) {
         readOutput();
@@ -63,8 +63,7 @@ bool BatchProcess::start(const values::Request& request) {
             message = tr("Failed (exit code %1).").arg(exitCode);
             error.message = message.toStdString();
         }
-        m_lastError = ok ? jobs::JobError{} : error;
-        emit finished(ok, cancelled, ok ? m_outcome.report : std::string(), message);
+        conclude(ok, cancelled, ok ? m_outcome.report : std::string(), message, error);
     });
     m_process->start(m_executable, {"--batch", "request", "-", "--protocol"});
     const std::string json = jobs::toJson(request);

@@ -6,12 +6,11 @@
 // worker-protocol messages (jobs/Protocol.h); no text is parsed. Interactive requests go to the
 // persistent JobWorker instead.
 
-#include <jobs/Jobs.h>
+#include "JobClient.h"
+
 #include <jobs/Protocol.h>
-#include <values/Requests.h>
 
 #include <QByteArray>
-#include <QObject>
 #include <QString>
 
 #include <functional>
@@ -37,7 +36,7 @@ struct RequestOutcome {
 // `pending` for the rest).
 void forEachMessage(QProcess& process, QByteArray& pending, const std::function<void(const jobs::WorkerMessage&)>& handle);
 
-class BatchProcess : public QObject {
+class BatchProcess : public JobClient {
     Q_OBJECT
 public:
     explicit BatchProcess(QObject* parent = nullptr);
@@ -49,19 +48,9 @@ public:
     const QString& executable() const { return m_executable; }
 
     // Starts the request in a child. False when one is running.
-    bool start(const values::Request& request);
-    void cancel();
-    bool isRunning() const;
-
-signals:
-    void progress(quint64 done, quint64 total);
-    // ok: exit code 0; report: the report's JSON (read it with jobs::reportFromJson); message: the
-    // child's error (describeFailure), or why it stopped.
-    void finished(bool ok, bool cancelled, const std::string& report, const QString& message);
-
-public:
-    // The last failure as the child reported it (kind, message, the SDF's diagnostics).
-    const jobs::JobError& error() const { return m_lastError; }
+    bool start(const values::Request& request) override;
+    void cancel() override;
+    bool isRunning() const override;
 
 private:
     void readOutput();
@@ -70,7 +59,6 @@ private:
     QProcess* m_process = nullptr;
     QByteArray m_pending;
     RequestOutcome m_outcome;
-    jobs::JobError m_lastError;
 };
 
 } // namespace sdfwb::app

@@ -41,6 +41,8 @@ ExportController::ExportController(QWidget* window, widgets::ViewportWidget* vie
 
 void ExportController::setExecutable(const QString& path) { m_process->setExecutable(path); }
 
+JobClient* ExportController::jobClient() const { return m_process; }
+
 bool ExportController::isExporting() const { return m_process->isRunning(); }
 
 QString ExportController::saveScreenshot(const QString& path, int width, int height) {

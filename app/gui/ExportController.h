@@ -18,6 +18,7 @@ class ViewportWidget;
 namespace sdfwb::app {
 
 class BatchProcess;
+class JobClient;
 class SdfDocument;
 
 class ExportController : public QObject {
@@ -26,6 +27,8 @@ public:
     ExportController(QWidget* window, widgets::ViewportWidget* viewport, SdfDocument* document, QObject* parent = nullptr);
 
     void setExecutable(const QString& path);
+    // Its jobs, for what listens to every job (the Problems panel).
+    JobClient* jobClient() const;
     // Where the clip's last-frame parameter values come from (empty: no keyframe).
     void setClipEnd(std::function<std::vector<shaders::ParameterValue>()> clipEnd) { m_clipEnd = std::move(clipEnd); }
 

@@ -52,8 +52,7 @@ void JobWorker::cancel(JobChannel* channel) {
     const auto queued = std::find_if(m_queue.begin(), m_queue.end(), [&](const Queued& q) { return q.channel == channel; });
     if (queued != m_queue.end()) {
         m_queue.erase(queued);
-        channel->m_running = false;
-        emit channel->finished(false, true, {}, tr("Cancelled; nothing was written."));
+        channel->end(false, true, {}, tr("Cancelled; nothing was written."), {jobs::Failure::Cancelled, {}, {}});
         return;
     }
     if (channel != m_current || !m_process || m_cancelling) return;
@@ -156,9 +155,7 @@ void JobWorker::finishCurrent(int exitCode, const QString& reason) {
         else if (!ok)
             message = m_outcome.hasError ? describeFailure(error) : tr("Failed (exit code %1).").arg(exitCode);
         if (!reason.isEmpty() && !cancelled) error.message = reason.toStdString();
-        channel->m_running = false;
-        channel->m_error = ok ? jobs::JobError{} : error;
-        emit channel->finished(ok, cancelled, ok ? m_outcome.report : std::string(), message);
+        channel->end(ok, cancelled, ok ? m_outcome.report : std::string(), message, error);
     }
     if (m_process && m_process->state() == QProcess::NotRunning) {
         m_process->disconnect(this);
@@ -170,7 +167,12 @@ void JobWorker::finishCurrent(int exitCode, const QString& reason) {
     next();
 }
 
-JobChannel::JobChannel(JobWorker* worker, QObject* parent) : QObject(parent), m_worker(worker) {}
+JobChannel::JobChannel(JobWorker* worker, QObject* parent) : JobClient(parent), m_worker(worker) {}
+
+void JobChannel::end(bool ok, bool cancelled, const std::string& report, const QString& message, const jobs::JobError& error) {
+    m_running = false;
+    conclude(ok, cancelled, report, message, error);
+}
 
 JobChannel::~JobChannel() {
     if (m_worker) m_worker->forget(this);

@@ -9,9 +9,7 @@
 // gets SIGTERM, which its job takes as cancel (it answers {"end":130} and the worker reads on).
 
 #include "BatchProcess.h"
-
-#include <jobs/Jobs.h>
-#include <values/Requests.h>
+#include "JobClient.h"
 
 #include <QObject>
 #include <QPointer>
@@ -76,8 +74,8 @@ private:
     RequestOutcome m_outcome; // the current request's error and report
 };
 
-// One caller's requests to a JobWorker, one at a time, with BatchProcess's signals.
-class JobChannel : public QObject {
+// One caller's requests to a JobWorker, one at a time.
+class JobChannel : public JobClient {
     Q_OBJECT
 public:
     JobChannel(JobWorker* worker, QObject* parent = nullptr);
@@ -85,22 +83,17 @@ public:
 
     JobWorker* worker() const { return m_worker; }
     // Queues the request. False when one of this channel's is queued or running.
-    bool start(const values::Request& request);
-    void cancel();
-    bool isRunning() const { return m_running; }
-    // The last failure as the child reported it (kind, message, the SDF's diagnostics).
-    const jobs::JobError& error() const { return m_error; }
-
-signals:
-    void progress(quint64 done, quint64 total);
-    // As BatchProcess::finished: ok, cancelled, the report's JSON, the failure's message.
-    void finished(bool ok, bool cancelled, const std::string& report, const QString& message);
+    bool start(const values::Request& request) override;
+    void cancel() override;
+    bool isRunning() const override { return m_running; }
 
 private:
     friend class JobWorker;
+    // The worker ends this channel's request.
+    void end(bool ok, bool cancelled, const std::string& report, const QString& message, const jobs::JobError& error);
+
     QPointer<JobWorker> m_worker;
     bool m_running = false;
-    jobs::JobError m_error;
 };
 
 } // namespace sdfwb::app

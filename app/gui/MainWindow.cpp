@@ -200,6 +200,20 @@ void MainWindow::connectFilesAndEditor() {
         }
         m_editor->goToLine(line, column);
     });
+    // What a job reports (a sampler file's error, a stage the editor's check does not compile) joins
+    // the document's diagnostics, named by the job, until that job's next request ends.
+    const std::pair<QString, JobClient*> jobs[] = {{tr("Sampling"), m_sampling->jobClient()},
+                                                   {tr("Video export"), m_exports->jobClient()},
+                                                   {tr("Mesh export"), m_meshExport->jobClient()},
+                                                   {tr("Plane"), m_plane->jobClient()},
+                                                   {tr("Probe"), m_probe->jobClient()}};
+    for (const auto& [name, client] : jobs)
+        connect(client, &JobClient::diagnosticsReported, this, [this, name](const std::vector<shaders::Diagnostic>& diagnostics) {
+            m_problems->setJobDiagnostics(name, diagnostics);
+            if (diagnostics.empty()) return;
+            m_problemsDock->show();
+            m_problemsDock->raise();
+        });
 }
 
 // Completion: the helper libraries' functions once, the file's own after each check.

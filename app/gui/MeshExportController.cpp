@@ -63,6 +63,8 @@ MeshExportController::MeshExportController(QWidget* window, std::function<values
 
 void MeshExportController::setExecutable(const QString& path) { m_process->setExecutable(path); }
 
+JobClient* MeshExportController::jobClient() const { return m_process; }
+
 bool MeshExportController::isRunning() const { return m_process->isRunning(); }
 
 values::MeshRequest MeshExportController::request(const QString& output, int resolution, int refine) const {

@@ -21,6 +21,7 @@ class QWidget;
 namespace sdfwb::app {
 
 class BatchProcess;
+class JobClient;
 
 class MeshExportController : public QObject {
     Q_OBJECT
@@ -28,6 +29,8 @@ public:
     MeshExportController(QWidget* window, std::function<values::SdfInput()> currentSdf, QObject* parent = nullptr);
 
     void setExecutable(const QString& path);
+    // Its jobs, for what listens to every job (the Problems panel).
+    JobClient* jobClient() const;
     void showDialog();
     QDialog* dialog() const { return m_dialog; }
     bool isRunning() const;

@@ -58,6 +58,8 @@ PlaneController::PlaneController(widgets::PlanePanel* panel, widgets::ViewportWi
 
 void PlaneController::setExecutable(const QString& path) { m_process->worker()->setExecutable(path); }
 
+JobClient* PlaneController::jobClient() const { return m_process; }
+
 void PlaneController::refresh() {
     const values::CuttingPlane& plane = m_document->plane();
     if (!plane.enabled) return;

@@ -16,6 +16,7 @@ class ViewportWidget;
 namespace sdfwb::app {
 
 class JobChannel;
+class JobClient;
 class JobWorker;
 class SdfDocument;
 
@@ -31,6 +32,8 @@ public:
     PlaneController(widgets::PlanePanel* panel, widgets::ViewportWidget* viewport, SdfDocument* document, JobWorker* worker,
                     QObject* parent = nullptr);
     void setExecutable(const QString& path);
+    // Its jobs, for what listens to every job (the Problems panel).
+    JobClient* jobClient() const;
     // Recomputes the readouts now (also called when the SDF changes).
     void refresh();
     // Recomputes them after the debounce delay (parameter drags: one child when the drag rests).

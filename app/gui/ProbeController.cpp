@@ -39,6 +39,8 @@ ProbeController::ProbeController(widgets::ProbePanel* panel, widgets::ViewportWi
 
 void ProbeController::setExecutable(const QString& path) { m_process->worker()->setExecutable(path); }
 
+JobClient* ProbeController::jobClient() const { return m_process; }
+
 bool ProbeController::isRunning() const { return m_process->isRunning(); }
 
 values::ProbeRequest ProbeController::request(int x, int y, int width, int height) const {

@@ -19,6 +19,7 @@ class ViewportWidget;
 namespace sdfwb::app {
 
 class JobChannel;
+class JobClient;
 class JobWorker;
 class SdfDocument;
 
@@ -28,6 +29,8 @@ public:
     ProbeController(widgets::ProbePanel* panel, widgets::ViewportWidget* viewport, SdfDocument* document, JobWorker* worker,
                     QObject* parent = nullptr);
     void setExecutable(const QString& path);
+    // Its jobs, for what listens to every job (the Problems panel).
+    JobClient* jobClient() const;
     // Probes pixel (x, y), top row 0, of a width x height frame of the viewport's view.
     void probe(int x, int y, int width, int height);
     // The request such a click sends: the document's frame (the viewport's frame settings whole).

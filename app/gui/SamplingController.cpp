@@ -56,6 +56,8 @@ SamplingController::SamplingController(QWidget* window, std::function<values::Sd
 
 void SamplingController::setExecutable(const QString& path) { m_process->setExecutable(path); }
 
+JobClient* SamplingController::jobClient() const { return m_process; }
+
 bool SamplingController::isRunning() const { return m_process->isRunning(); }
 
 void SamplingController::showDialog() {

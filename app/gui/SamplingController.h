@@ -15,6 +15,7 @@ class SamplingDialog;
 namespace sdfwb::app {
 
 class BatchProcess;
+class JobClient;
 
 class SamplingController : public QObject {
     Q_OBJECT
@@ -24,6 +25,8 @@ public:
     ~SamplingController() override;
 
     void setExecutable(const QString& path);
+    // Its jobs, for what listens to every job (the Problems panel).
+    JobClient* jobClient() const;
 
     void showDialog();
     widgets::SamplingDialog* dialog() const { return m_dialog; }

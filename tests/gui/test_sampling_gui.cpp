@@ -3,6 +3,8 @@
 
 #include "GuiTestSupport.h"
 
+#include <QListWidget>
+
 using namespace sdfwb;
 using namespace sdfwb::guitest;
 
@@ -55,6 +57,81 @@ TEST(SamplingDialog, SamplesTheOpenSdfAndCancelsCleanly) {
     EXPECT_TRUE(dialog->findChild<QLabel*>("message")->text().contains("Cancelled"));
     EXPECT_FALSE(QFile::exists(cancelled));
     QFile::remove(output);
+}
+
+// A job's diagnostics reach the Problems panel: a sampler file of the user's that does not compile
+// (the editor's checks never see it) lists its file:line there, named by the job; a run that
+// succeeds clears the rows; clicking a row opens the sampler at its line.
+TEST(SamplingDialog, ASamplersCompileErrorReachesTheProblemsPanelAndOpensTheSampler) {
+    QTemporaryDir folder;
+    const QString sampler = folder.filePath("my_sampler.glsl");
+    auto writeSampler = [&](const char* body) {
+        QFile file(sampler);
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        file.write(body);
+    };
+    const char* broken = "// Uniform points in the box, with a missing semicolon on line 4.\n"
+                         "bool samplePosition(uint index, out vec3 position) {\n"
+                         "    uint state = index * 747796405u + 2891336453u;\n"
+                         "    position = vec3(float(state % 1000u) / 500.0 - 1.0)\n"
+                         "    return true;\n"
+                         "}\n";
+    writeSampler(broken);
+    app::MainWindow window;
+    window.resize(1200, 700);
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
+    const int documentRows = window.problems()->count();
+    app::SamplingController* sampling = window.sampling();
+    sampling->setExecutable(SDFWB_BINARY);
+    bool done = false, ok = false;
+    QObject::connect(sampling, &app::SamplingController::finished, [&](bool success, const QString&) {
+        done = true;
+        ok = success;
+    });
+    ASSERT_TRUE(activate(window));
+    QTest::keyClick(&window, Qt::Key_M, Qt::ControlModifier | Qt::ShiftModifier);
+    ASSERT_TRUE(waitFor([&] { return sampling->dialog() && sampling->dialog()->isVisible(); }));
+    widgets::SamplingDialog* dialog = sampling->dialog();
+    auto type = [](QLineEdit* field, const QString& text) {
+        field->selectAll();
+        QTest::keyClicks(field, text);
+    };
+    type(dialog->findChild<QLineEdit*>("count"), "1000");
+    type(dialog->findChild<QLineEdit*>("output"), folder.filePath("out.npz"));
+    auto runWith = [&](const QString& pattern) {
+        type(dialog->findChild<QComboBox*>("pattern")->lineEdit(), pattern);
+        done = false;
+        QTest::mouseClick(dialog->findChild<QPushButton*>("start"), Qt::LeftButton);
+        return waitFor([&] { return done; }, 60000);
+    };
+
+    ASSERT_TRUE(runWith(sampler));
+    EXPECT_FALSE(ok);
+    ASSERT_EQ(window.problems()->count(), documentRows + 1);
+    const QString row = window.problems()->rowText(documentRows);
+    EXPECT_TRUE(row.startsWith("Sampling job: ")) << row.toStdString();
+    EXPECT_TRUE(row.contains("my_sampler.glsl:5"))
+        << row.toStdString(); // the statement the semicolon ends is reported where it runs on
+    EXPECT_TRUE(window.findChild<QDockWidget*>("ProblemsDock")->isVisible());
+
+    ASSERT_TRUE(runWith("rand"));
+    EXPECT_TRUE(ok) << dialog->findChild<QLabel*>("message")->text().toStdString();
+    EXPECT_EQ(window.problems()->count(), documentRows) << "a run that succeeds clears its job's rows";
+
+    ASSERT_TRUE(runWith(sampler));
+    ASSERT_EQ(window.problems()->count(), documentRows + 1);
+    dialog->close();
+    auto* list = window.problems()->findChild<QListWidget*>();
+    ASSERT_NE(list, nullptr);
+    const QRect rect = list->visualItemRect(list->item(documentRows));
+    QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, rect.center());
+    ASSERT_TRUE(waitFor([&] { return window.document()->path() == QFileInfo(sampler).absoluteFilePath(); }))
+        << window.document()->path().toStdString();
+    int line = 0, column = 0;
+    window.editor()->getCursorPosition(&line, &column);
+    EXPECT_EQ(line + 1, 5);
+    if (QString path = screenshotPath("job_problems.png"); !path.isEmpty()) windowShot(window).save(path);
 }
 
 // The sampling dialog's Preview draws the run's first points in the viewport, coloured by
