@@ -106,7 +106,7 @@ void ExportController::showVideoDialog() {
 
 values::AnimateRequest ExportController::videoRequest(const values::AnimateRequest& fromDialog) const {
     values::AnimateRequest request = fromDialog;
-    request.frame = m_document->frame(fromDialog.frame.width, fromDialog.frame.height);
+    request.frame = m_document->frame(m_viewport->frameSettings(), fromDialog.frame.width, fromDialog.frame.height);
     if (m_clipEnd) request.paramsEnd = m_clipEnd();
     return request;
 }

@@ -72,7 +72,7 @@ bool FileController::load(const QString& path) {
     {
         const QSignalBlocker blocker(m_editor);
         m_editor->setText(QString::fromStdString(*text));
-        m_editor->setModified(false);
+        markUnmodified();
     }
     m_document->checkNow(m_editor->text());
     watch(canonical);
@@ -105,7 +105,7 @@ bool FileController::loadMesh(const QString& path) {
     {
         const QSignalBlocker blocker(m_editor);
         m_editor->setText(QString::fromStdString((*field)->glslSource()));
-        m_editor->setModified(false);
+        markUnmodified();
     }
     m_document->checkNow(m_editor->text());
     watch(canonical);
@@ -116,10 +116,17 @@ bool FileController::loadMesh(const QString& path) {
     return true;
 }
 
+// The text matches its file: the document's flag and the editor's save point (which its undo
+// history returns to) both clear.
+void FileController::markUnmodified() {
+    m_editor->setModified(false);
+    m_document->setModified(false);
+}
+
 void FileController::newFromTemplate() {
     m_document->setPath(QString());
     m_editor->setText(kTemplate);
-    m_editor->setModified(true);
+    m_document->setModified(true);
     m_document->checkNow(m_editor->text());
     emit pathChanged(QString());
 }
@@ -181,7 +188,7 @@ bool FileController::saveAs(const QString& path) {
     QFile::remove(recoveryPath());
     QString canonical = QFileInfo(path).absoluteFilePath();
     m_document->setPath(canonical);
-    m_editor->setModified(false);
+    markUnmodified();
     watch(canonical);
     addRecent(canonical);
     m_document->checkNow(m_editor->text()); // includes resolve relative to the new folder
@@ -214,7 +221,7 @@ QStringList FileController::recoveryFiles() {
 }
 
 void FileController::autosaveNow() {
-    if (!m_editor->isModified()) return;
+    if (!m_document->isModified()) return;
     QDir().mkpath(recoveryFolder());
     QString header = kRecoveryHeader + (m_document->path().isEmpty() ? QString("untitled") : m_document->path()) + "\n";
     auto written = writeFileAtomically(recoveryPath().toStdString(), (header + m_editor->text()).toStdString());
@@ -230,7 +237,7 @@ bool FileController::restoreRecovery(const QString& recoveryFile) {
     QString original = content.mid(int(std::strlen(kRecoveryHeader)), newline - int(std::strlen(kRecoveryHeader)));
     m_document->setPath(original == "untitled" ? QString() : original);
     m_editor->setText(content.mid(newline + 1));
-    m_editor->setModified(true);
+    m_document->setModified(true);
     m_document->checkNow(m_editor->text());
     if (original != "untitled") watch(original);
     emit pathChanged(m_document->path());
@@ -240,7 +247,7 @@ bool FileController::restoreRecovery(const QString& recoveryFile) {
 }
 
 bool FileController::confirmClose() {
-    if (m_editor->isModified()) {
+    if (m_document->isModified()) {
         Answer answer = m_prompt(
             tr("%1 has unsaved edits. Save them?").arg(m_document->path().isEmpty() ? tr("The new SDF") : m_document->path()));
         if (answer == Answer::Cancel) return false;
@@ -251,14 +258,14 @@ bool FileController::confirmClose() {
 }
 
 void FileController::reloadAll() {
-    if (m_document->isMesh() && !m_editor->isModified()) {
+    if (m_document->isMesh() && !m_document->isModified()) {
         loadMesh(m_document->path());
-    } else if (!m_document->path().isEmpty() && !m_editor->isModified()) {
+    } else if (!m_document->path().isEmpty() && !m_document->isModified()) {
         auto text = readTextFile(m_document->path().toStdString());
         if (text) {
             const QSignalBlocker blocker(m_editor);
             m_editor->setText(QString::fromStdString(*text));
-            m_editor->setModified(false);
+            markUnmodified();
         }
     }
     m_viewport->reloadShaders();
@@ -277,16 +284,17 @@ void FileController::fileChangedOnDisk(const QString& path) {
     QTimer::singleShot(50, this, [this, path] {
         watch(path);
         if (m_document->isMesh()) { // a mesh rewritten on disk: its field again, unless the text over it was edited
-            if (!m_editor->isModified() && loadMesh(path)) emit message(tr("Reloaded %1 (changed on disk)").arg(path));
+            if (!m_document->isModified() && loadMesh(path)) emit message(tr("Reloaded %1 (changed on disk)").arg(path));
             return;
         }
         auto text = readTextFile(path.toStdString());
         if (!text || QString::fromStdString(*text) == m_editor->text()) return;
-        if (m_editor->isModified() && m_prompt(tr("%1 changed on disk. Reload it and lose your edits?").arg(path)) != Answer::Yes)
+        if (m_document->isModified() &&
+            m_prompt(tr("%1 changed on disk. Reload it and lose your edits?").arg(path)) != Answer::Yes)
             return;
         const QSignalBlocker blocker(m_editor);
         m_editor->setText(QString::fromStdString(*text));
-        m_editor->setModified(false);
+        markUnmodified();
         m_document->checkNow(m_editor->text());
         emit message(tr("Reloaded %1 (changed on disk)").arg(path));
     });

@@ -67,6 +67,7 @@ signals:
 
 private:
     bool loadMesh(const QString& path);
+    void markUnmodified();
     QString documentPath() const;
     void watch(const QString& path);
     void fileChangedOnDisk(const QString& path);

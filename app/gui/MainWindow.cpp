@@ -17,6 +17,7 @@
 #include <dataset/Metadata.h>
 #include <jobs/Jobs.h>
 #include <meshing/Mesh.h>
+#include <renderer/SdfRenderer.h>
 #include <widgets/CameraPanel.h>
 #include <widgets/DatasetBrowser.h>
 #include <widgets/GlslEditor.h>
@@ -125,7 +126,23 @@ void MainWindow::createDocks() {
 
 // The document and the controllers that run jobs on it.
 void MainWindow::createControllers() {
-    m_document = new SdfDocument(m_viewport, this);
+    m_document = new SdfDocument(this);
+    // The document knows no view: the viewport draws what it emits and tells it what it drew.
+    m_document->setTime(m_viewport->time());
+    m_document->setPlane(m_viewport->plane());
+    m_document->setTracerFeatures([this](const values::CuttingPlane& plane) {
+        return renderer::tracerFeatures(m_viewport->shading(), m_viewport->trace(), plane);
+    });
+    connect(m_document, &SdfDocument::sdfReady, this,
+            [this](const shaders::PreparedSdf& prepared) { m_document->driverCompiled(m_viewport->setSdf(prepared)); });
+    connect(m_document, &SdfDocument::timeChanged, m_viewport, &widgets::ViewportWidget::setTime);
+    connect(m_document, &SdfDocument::planeChanged, this, [this](const values::CuttingPlane& plane) {
+        if (!(m_viewport->plane() == plane)) m_viewport->setPlane(plane); // not back after a drag in the viewport
+    });
+    connect(m_document, &SdfDocument::parameterValuesChanged, m_viewport, &widgets::ViewportWidget::setParameters);
+    connect(m_viewport, &widgets::ViewportWidget::sdfTimed, m_document, &SdfDocument::shownSdfTimed);
+    connect(m_viewport, &widgets::ViewportWidget::sdfReverted, m_document, &SdfDocument::shownSdfStalled);
+    connect(m_viewport, &widgets::ViewportWidget::planeDragged, m_document, &SdfDocument::setPlane); // Ctrl + drag
     // Every job (sampling, video, plane readouts, probes) runs on the document's input: the text the
     // viewport shows (saved or not), its path for includes, its entry point; and its time and plane.
     auto currentSdf = [this] { return m_document->input(); };
@@ -155,7 +172,7 @@ void MainWindow::createControllers() {
         if (visible) m_thumbnails->request(m_browser->paths());
     });
     connect(m_browser, &widgets::DatasetBrowser::newRequested, this, [this] {
-        if (!m_editor->isModified() || m_files->confirmClose()) m_files->newFromTemplate();
+        if (!m_document->isModified() || m_files->confirmClose()) m_files->newFromTemplate();
     });
 }
 
@@ -188,14 +205,20 @@ void MainWindow::connectFilesAndEditor() {
         updateRecentMenu();
     });
     connect(m_files, &FileController::message, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
-    connect(m_editor, &QsciScintilla::modificationChanged, this, [this] { updateTitle(); });
+    // The document owns the modified flag: the editor's undo history moves it; a save or a load
+    // clears it (FileController), and the editor's save point with it.
+    connect(m_editor, &QsciScintilla::modificationChanged, m_document, &SdfDocument::setModified);
+    connect(m_document, &SdfDocument::modifiedChanged, this, [this](bool modified) {
+        if (!modified && m_editor->isModified()) m_editor->setModified(false);
+        updateTitle();
+    });
     connect(m_browser, &widgets::DatasetBrowser::openRequested, this, [this](const QString& path) {
-        if (!m_editor->isModified() || m_files->confirmClose()) m_files->load(path);
+        if (!m_document->isModified() || m_files->confirmClose()) m_files->load(path);
     });
     connect(m_problems, &widgets::ProblemsPanel::locationActivated, this, [this](const QString& file, int line, int column) {
         bool here = file == m_document->path() || (m_document->path().isEmpty() && file == "<editor>");
         if (!here && QFileInfo::exists(file)) {
-            if (m_editor->isModified() && !m_files->confirmClose()) return;
+            if (m_document->isModified() && !m_files->confirmClose()) return;
             m_files->load(file);
         }
         m_editor->goToLine(line, column);
@@ -566,7 +589,7 @@ void MainWindow::updateTitle() {
             ? tr(" [mesh: sign %1, normalize %2; not saved]").arg(m_document->meshSign(), m_document->meshNormalize())
         : FileController::isShipped(m_document->path()) ? tr(" [shipped, read-only: Save asks for a new name]")
                                                         : QString();
-    setWindowTitle(QString("%1%2%3 - sdfwb").arg(name, m_editor->isModified() ? "*" : "", shipped));
+    setWindowTitle(QString("%1%2%3 - sdfwb").arg(name, m_document->isModified() ? "*" : "", shipped));
 }
 
 bool MainWindow::showMeshDeviation(const QString& path) {

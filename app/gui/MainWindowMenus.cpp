@@ -94,7 +94,7 @@ void MainWindow::updateRecentMenu() {
     m_recentMenu->clear();
     for (const QString& path : m_files->recentFiles())
         m_recentMenu->addAction(path, this, [this, path] {
-            if (!m_editor->isModified() || m_files->confirmClose()) m_files->load(path);
+            if (!m_document->isModified() || m_files->confirmClose()) m_files->load(path);
         });
     m_recentMenu->setEnabled(!m_recentMenu->isEmpty());
 }
@@ -109,11 +109,11 @@ void MainWindow::createMenus() {
 void MainWindow::createFileMenu() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     QAction* create = file->addAction(tr("&New from template"), this, [this] {
-        if (!m_editor->isModified() || m_files->confirmClose()) m_files->newFromTemplate();
+        if (!m_document->isModified() || m_files->confirmClose()) m_files->newFromTemplate();
     });
     create->setShortcut(QKeySequence::New);
     QAction* open = file->addAction(tr("&Open..."), this, [this] {
-        if (m_editor->isModified() && !m_files->confirmClose()) return;
+        if (m_document->isModified() && !m_files->confirmClose()) return;
         QString path =
             QFileDialog::getOpenFileName(this, tr("Open SDF"), QString(), tr("GLSL (*.glsl *.frag *.glslf);;All files (*)"));
         if (!path.isEmpty()) openFile(path);
@@ -121,7 +121,7 @@ void MainWindow::createFileMenu() {
     open->setShortcut(QKeySequence::Open);
     // A triangle mesh as the SDF (meshfield/): traced, sliced, sampled and audited like GLSL.
     file->addAction(tr("Open &mesh..."), this, [this] {
-        if (m_editor->isModified() && !m_files->confirmClose()) return;
+        if (m_document->isModified() && !m_files->confirmClose()) return;
         QString path =
             QFileDialog::getOpenFileName(this, tr("Open a triangle mesh as an SDF"), QString(),
                                          tr("Meshes (*.obj *.ply *.stl *.off *.glb *.gltf *.fbx *.dae *.3ds);;All files (*)"));

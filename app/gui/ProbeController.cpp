@@ -45,7 +45,7 @@ bool ProbeController::isRunning() const { return m_process->isRunning(); }
 
 values::ProbeRequest ProbeController::request(int x, int y, int width, int height) const {
     values::ProbeRequest request;
-    request.frame = m_document->frame(width, height);
+    request.frame = m_document->frame(m_viewport->frameSettings(), width, height);
     request.x = x;
     request.y = y;
     return request;

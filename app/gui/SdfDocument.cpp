@@ -6,7 +6,6 @@
 #include <shaders/GlslChecker.h>
 #include <shaders/LoopLimits.h>
 #include <shaders/TracerComposer.h>
-#include <widgets/ViewportWidget.h>
 
 #include <QCoreApplication>
 #include <QMetaObject>
@@ -15,32 +14,33 @@
 
 namespace sdfwb::app {
 
-SdfDocument::SdfDocument(widgets::ViewportWidget* viewport, QObject* parent) : QObject(parent), m_viewport(viewport) {
+SdfDocument::SdfDocument(QObject* parent) : QObject(parent) {
     m_debounce.setSingleShot(true);
     m_debounce.setTimerType(Qt::PreciseTimer); // a coarse timer may fire 6 ms late
     m_debounce.setInterval(120);
     connect(&m_debounce, &QTimer::timeout, this, [this] { startCheck(m_pendingText); });
-    // The viewport times each new SDF on its first frame: one that passes is the fallback for
-    // the next; one that would stall is replaced by that fallback, in the viewport and in jobs.
-    connect(m_viewport, &widgets::ViewportWidget::sdfTimed, this, [this] { m_timed = m_good; });
-    connect(m_viewport, &widgets::ViewportWidget::sdfReverted, this, [this] {
-        if (m_timed.text.isEmpty()) return;
-        m_good = m_timed;
-        m_reverted = true;
-        emit sdfReverted(m_good.path);
-    });
-    // A Ctrl + drag moves the viewport's plane: the document takes the plane it moved to.
-    connect(m_viewport, &widgets::ViewportWidget::planeDragged, this, [this](const values::CuttingPlane& plane) {
-        m_plane = plane;
-        emit planeChanged(m_plane);
-    });
-    m_time = m_viewport->time();
-    m_plane = m_viewport->plane();
 }
 
-values::FrameRequest SdfDocument::frame(int width, int height) const {
+void SdfDocument::setModified(bool modified) {
+    if (modified == m_modified) return;
+    m_modified = modified;
+    emit modifiedChanged(modified);
+}
+
+// The view times each new SDF on its first frame: one that passes is the fallback for the next;
+// one that would stall is replaced by that fallback, in the view and in jobs.
+void SdfDocument::shownSdfTimed() { m_timed = m_good; }
+
+void SdfDocument::shownSdfStalled() {
+    if (m_timed.text.isEmpty()) return;
+    m_good = m_timed;
+    m_reverted = true;
+    emit sdfReverted(m_good.path);
+}
+
+values::FrameRequest SdfDocument::frame(const values::FrameSettings& view, int width, int height) const {
     values::FrameRequest frame;
-    static_cast<values::FrameSettings&>(frame) = m_viewport->frameSettings(); // the viewport's, whole
+    static_cast<values::FrameSettings&>(frame) = view; // the view's, whole
     frame.sdf = input();
     frame.width = width;
     frame.height = height;
@@ -51,13 +51,11 @@ values::FrameRequest SdfDocument::frame(int width, int height) const {
 
 void SdfDocument::setTime(float seconds) {
     m_time = seconds;
-    m_viewport->setTime(seconds);
     emit timeChanged(seconds);
 }
 
 void SdfDocument::setPlane(const values::CuttingPlane& plane) {
     m_plane = plane;
-    m_viewport->setPlane(plane);
     emit planeChanged(m_plane);
 }
 
@@ -100,7 +98,7 @@ void SdfDocument::setChannel(int channel, const QString& path) {
 
 void SdfDocument::setParameterValues(const std::vector<shaders::ParameterSetting>& values) {
     m_parameterValues = values;
-    m_viewport->setParameters(values);
+    emit parameterValuesChanged(m_parameterValues);
 }
 
 void SdfDocument::textEdited(const QString& text) {
@@ -125,7 +123,8 @@ void SdfDocument::startCheck(const QString& text) {
     const bool mesh = isMesh();
     std::string sign = m_meshSign.toStdString(), normalize = m_meshNormalize.toStdString();
     // glslang checks the variant the viewport will compile (shading, AO, plane, markers, ...).
-    const shaders::TracerFeatures features = renderer::tracerFeatures(m_viewport->shading(), m_viewport->trace(), m_plane);
+    const shaders::TracerFeatures features =
+        m_features ? m_features(m_plane) : renderer::tracerFeatures(values::ShadingSettings{}, values::TraceSettings{}, m_plane);
     QPointer<SdfDocument> self(this);
     QThreadPool::globalInstance()->start([self, generation, source = std::move(source), path = std::move(path),
                                           entry = std::move(entry), features, channels, mesh, sign = std::move(sign),
@@ -180,19 +179,27 @@ void SdfDocument::finishCheck(std::uint64_t generation, shaders::PreparedSdf pre
     emit entryCandidatesChanged(candidates);
     emit diagnosticsChanged(m_diagnostics);
     if (shaders::hasErrors(m_diagnostics)) return;
-    QTimer::singleShot(0, this, [this, generation, prepared = std::move(prepared)] {
+    QTimer::singleShot(0, this, [this, generation, prepared = std::move(prepared)]() mutable {
         if (generation != m_generation) return;
-        auto driver = m_viewport->setSdf(prepared);
-        if (shaders::hasErrors(driver)) {
-            for (const auto& d : driver)
-                if (d.severity == shaders::Severity::Error) m_diagnostics.push_back(d);
-            emit diagnosticsChanged(m_diagnostics);
-            return;
-        }
-        m_good = {m_path, m_checkedText, prepared, prepared.signature};
-        m_reverted = false;
-        emit sdfApplied();
+        m_offered = Offered{generation, std::move(prepared)};
+        emit sdfReady(m_offered->prepared);
     });
+}
+
+void SdfDocument::driverCompiled(const std::vector<shaders::Diagnostic>& driver) {
+    if (!m_offered) return;
+    Offered offered = std::move(*m_offered);
+    m_offered.reset();
+    if (offered.generation != m_generation) return; // newer text was checked meanwhile
+    if (shaders::hasErrors(driver)) {
+        for (const auto& d : driver)
+            if (d.severity == shaders::Severity::Error) m_diagnostics.push_back(d);
+        emit diagnosticsChanged(m_diagnostics);
+        return;
+    }
+    m_good = {m_path, m_checkedText, offered.prepared, offered.prepared.signature};
+    m_reverted = false;
+    emit sdfApplied();
 }
 
 } // namespace sdfwb::app

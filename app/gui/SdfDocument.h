@@ -1,15 +1,17 @@
 #pragma once
-// The SDF being edited, the one place that holds it: its file, its text, the last text that
-// compiled (what the viewport shows), the entry point, the parameter values, the scene time, the
-// cutting plane, and the checking pipeline. The viewport is told each of them and draws with it;
-// jobs read them here. Edits are
-// debounced and checked off the UI thread (include resolution + glslang on the exact tracer
-// variant the viewport compiles); good text goes to the viewport, whose driver compile may add
-// diagnostics. Jobs (sampling, exports, plane readouts) take `input()`: the shown text, not the
-// file on disk. Owns its worker threads; never blocks the UI thread.
+// The SDF being edited, the one place that holds it: its file, its text and whether it has unsaved
+// edits, the last text that compiled (what the viewport shows), the entry point, the parameter
+// values, the scene time, the cutting plane, and the checking pipeline. It knows no view: it
+// emits a signal for each change, and the window passes them to the viewport (MainWindow). Edits
+// are debounced and checked off the UI thread (include resolution + glslang on the tracer variant
+// setTracerFeatures names); text that passes is offered with sdfReady, and whoever compiles it
+// for the driver answers with driverCompiled (its errors become diagnostics). Jobs (sampling,
+// exports, plane readouts) take `input()`: the shown text, not the file on disk. Owns its worker
+// threads; never blocks the UI thread.
 
 #include <shaders/Diagnostic.h>
 #include <shaders/SdfSource.h>
+#include <shaders/TracerComposer.h>
 #include <values/RenderSettings.h>
 #include <values/Requests.h>
 
@@ -20,19 +22,27 @@
 
 #include <array>
 #include <atomic>
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
-
-namespace sdfwb::widgets {
-class ViewportWidget;
-}
 
 namespace sdfwb::app {
 
 class SdfDocument : public QObject {
     Q_OBJECT
 public:
-    SdfDocument(widgets::ViewportWidget* viewport, QObject* parent = nullptr);
+    explicit SdfDocument(QObject* parent = nullptr);
+
+    // The tracer variant a check runs glslang on, for the cutting plane (the viewport's shading
+    // and trace settings); default: the variant of the default settings.
+    void setTracerFeatures(std::function<shaders::TracerFeatures(const values::CuttingPlane&)> features) {
+        m_features = std::move(features);
+    }
+
+    // Unsaved edits. The editor's undo history sets it (through the window), saving and loading clear it.
+    bool isModified() const { return m_modified; }
+    void setModified(bool modified);
 
     const QString& path() const { return m_path; }
     // A new file: until it compiles, jobs run its text (the last good text was another file's).
@@ -71,8 +81,17 @@ public:
     void setPlane(const values::CuttingPlane& plane);
     const values::CuttingPlane& plane() const { return m_plane; }
     // The frame the viewport shows, as a job takes it (the probe, videos): the shown SDF, the
-    // time and the plane from here; the camera, shading, trace settings and overlay from the viewport.
-    values::FrameRequest frame(int width, int height) const;
+    // time and the plane from here; the camera, shading, trace settings and overlay from `view`
+    // (the viewport's frameSettings()).
+    values::FrameRequest frame(const values::FrameSettings& view, int width, int height) const;
+
+    // What the compiler of sdfReady's SDF found (empty: it compiled): with none, that SDF becomes
+    // the shown one (sdfApplied); errors join the diagnostics.
+    void driverCompiled(const std::vector<shaders::Diagnostic>& driver);
+    // The view drew the shown SDF's first frame in time: it is what a later stalling one falls back to.
+    void shownSdfTimed();
+    // The view fell back from the shown SDF to the last timed one (a frame of it would stall).
+    void shownSdfStalled();
 
     // Schedules a check of `text` after the debounce delay; newer text supersedes older.
     void textEdited(const QString& text);
@@ -98,6 +117,10 @@ public:
 signals:
     // After each check: diagnostics from the resolver, glslang and the driver.
     void diagnosticsChanged(const std::vector<shaders::Diagnostic>& diagnostics);
+    // Checked text that passed, to compile for the driver; answer with driverCompiled.
+    void sdfReady(const sdfwb::shaders::PreparedSdf& prepared);
+    void modifiedChanged(bool modified);
+    void parameterValuesChanged(const std::vector<sdfwb::shaders::ParameterSetting>& values);
     // The viewport now shows the new text.
     void sdfApplied();
     // The viewport fell back to the previous SDF, which jobs now run too; `file` is its path.
@@ -115,7 +138,13 @@ private:
     void startCheck(const QString& text);
     void finishCheck(std::uint64_t generation, shaders::PreparedSdf prepared, std::vector<shaders::Diagnostic> diagnostics);
 
-    widgets::ViewportWidget* m_viewport;
+    std::function<shaders::TracerFeatures(const values::CuttingPlane&)> m_features;
+    bool m_modified = false;
+    struct Offered { // the SDF offered with sdfReady, until driverCompiled
+        std::uint64_t generation;
+        shaders::PreparedSdf prepared;
+    };
+    std::optional<Offered> m_offered;
     QString m_path;
     QString m_pendingText;
     QString m_text;

@@ -308,6 +308,40 @@ TEST(Files, OpenMeshTracesItAndItsJobsSeeTheSameField) {
     window.files()->setPrompt([](const QString&) { return app::FileController::Answer::No; });
 }
 
+// The document owns the modified flag: typing sets it (and the title's *), undoing back to the
+// saved text clears it, Ctrl+S clears it in the document and the editor, and a reload from disk
+// leaves it clear.
+TEST(Files, TheDocumentOwnsTheModifiedFlag) {
+    QString path = writeScratch("flag.glsl", "float sdf(vec3 p) { return length(p) - 0.5; }\n");
+    app::MainWindow window;
+    window.show();
+    ASSERT_TRUE(window.openFile(path));
+    EXPECT_FALSE(window.document()->isModified());
+    int changes = 0;
+    QObject::connect(window.document(), &app::SdfDocument::modifiedChanged, [&] { ++changes; });
+    ASSERT_TRUE(activate(window));
+    window.editor()->setFocus();
+    window.editor()->setCursorPosition(0, 0);
+    QTest::keyClicks(window.editor(), "// -");
+    QTest::keyClick(window.editor(), Qt::Key_Return);
+    EXPECT_TRUE(window.document()->isModified());
+    EXPECT_TRUE(window.windowTitle().contains("*"));
+    EXPECT_EQ(changes, 1) << "one change of the flag, not one per key";
+    for (int i = 0; i < 8 && window.editor()->isModified(); ++i) QTest::keyClick(window.editor(), Qt::Key_Z, Qt::ControlModifier);
+    EXPECT_FALSE(window.document()->isModified()) << "undone back to the saved text";
+    EXPECT_FALSE(window.windowTitle().contains("*"));
+    QTest::keyClicks(window.editor(), "// -");
+    QTest::keyClick(window.editor(), Qt::Key_Return);
+    ASSERT_TRUE(window.document()->isModified());
+    QTest::keyClick(window.editor(), Qt::Key_S, Qt::ControlModifier);
+    ASSERT_TRUE(waitFor([&] { return readAll(path).startsWith("// -\n"); }, 5000)) << "Ctrl+S saved";
+    EXPECT_FALSE(window.document()->isModified());
+    EXPECT_FALSE(window.editor()->isModified()) << "the editor's save point moved with it";
+    writeScratch("flag.glsl", "float sdf(vec3 p) { return length(p) - 0.3; }\n");
+    ASSERT_TRUE(waitFor([&] { return window.editor()->text().contains("0.3"); }, 5000));
+    EXPECT_FALSE(window.document()->isModified()) << "a reload from disk is not an edit";
+}
+
 TEST(Files, ReloadsWhenTheFileChangesOnDiskAndAsksWhenEdited) {
     QString path = writeScratch("watched.glsl", "float sdf(vec3 p) { return length(p) - 0.5; }\n");
     app::MainWindow window;

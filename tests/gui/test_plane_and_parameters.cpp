@@ -190,7 +190,7 @@ TEST(Parameters, PlaneReadoutsFollowAndTheSessionKeepsTheValues) {
         ASSERT_TRUE(waitFor([&] { return readouts > before && window.planePanel()->readout().minimum > -0.5f; }, 30000))
             << "the readouts still describe radius 0.8: minimum " << window.planePanel()->readout().minimum;
         EXPECT_NEAR(window.planePanel()->readout().minimum, -0.4f, 0.03f);
-        EXPECT_FALSE(window.editor()->isModified()) << "a parameter is not an edit of the text";
+        EXPECT_FALSE(window.document()->isModified()) << "a parameter is not an edit of the text";
         window.close(); // saves the session
     }
     app::MainWindow again;

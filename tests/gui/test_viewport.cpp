@@ -400,7 +400,7 @@ TEST(Viewport, TimeScrubsAnimatedSdfs) {
     EXPECT_NEAR(window.timeBar()->time(), window.document()->time(), 1e-3);
     EXPECT_FLOAT_EQ(window.viewport()->time(), window.document()->time());
     // Jobs run at the document's time: the probe's frame and a video's first frame.
-    EXPECT_FLOAT_EQ(window.document()->frame(64, 48).time, window.document()->time());
+    EXPECT_FLOAT_EQ(window.document()->frame(window.viewport()->frameSettings(), 64, 48).time, window.document()->time());
     values::AnimateRequest video;
     video.frame.width = 64;
     video.frame.height = 48;
