@@ -289,14 +289,12 @@ std::string lastMessage(const std::string& err) {
     return text.size() > 1000 ? "..." + text.substr(text.size() - 997) : text;
 }
 
-// A worker's error for the status file: its message, then the file:line of its first diagnostics
-// (at most 1000 characters).
+// A worker's error for the status file: its message, then its first diagnostics as the CLI prints
+// them (at most 1000 characters).
 std::string errorText(const JobError& error) {
     std::string text = error.message;
-    for (std::size_t k = 0; k < error.diagnostics.size() && k < 3; ++k) {
-        const shaders::Diagnostic& d = error.diagnostics[k];
-        text += " / " + d.file + ":" + std::to_string(d.line) + ": " + d.message;
-    }
+    for (std::size_t k = 0; k < error.diagnostics.size() && k < 3; ++k)
+        text += " / " + shaders::formatDiagnostic(error.diagnostics[k]);
     return text.size() > 1000 ? text.substr(0, 997) + "..." : text;
 }
 
