@@ -31,8 +31,12 @@ void releaseContext();
 // (a dict, or any collections.abc.Mapping, as the type stubs promise).
 values::SdfInput sdfInput(const std::string& sdf, const std::string& entry, const py::object& params = py::none(),
                           const std::string& sign = {}, const std::string& normalize = {});
-// A job's failure as ValueError (usage, GLSL diagnostics) or RuntimeError.
-[[noreturn]] void raise(const jobs::JobError& error);
+// What the module's functions call the request key at `path`: their keyword argument, "n=" (with
+// near_truncate for near_truncation, bounds for bounds_min and bounds_max).
+std::string keywordTerm(const std::string& path);
+// A job's failure as ValueError (usage, GLSL diagnostics) or RuntimeError, its keys in `terms`
+// (the keyword arguments; sdfwb.run passes none: its request's own JSON keys).
+[[noreturn]] void raise(const jobs::JobError& error, const KeyTerms& terms = keywordTerm);
 jobs::OpenedSdf prepare(const values::SdfInput& input);
 // Parameter values as a dict (bools as bools, scalars as floats, vectors as tuples).
 py::dict parameterDict(const std::vector<shaders::ParameterSetting>& settings);

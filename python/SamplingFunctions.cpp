@@ -34,7 +34,7 @@ py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_
     if (auto error = jobs::validate(request)) raise(*error);
     sampling::SamplingJob job = jobs::samplingJob(request);
     job.indexOffset = firstIndex;
-    if (auto ok = sampling::validate(job); !ok) throw py::value_error(ok.error().message);
+    if (auto ok = sampling::validate(job); !ok) raise(jobs::usageError(ok.error().keyed()));
     const jobs::OpenedSdf opened = prepare(request.sdf);
     const shaders::PreparedSdf& prepared = opened.prepared;
     job.sdfParameters = opened.parameters;
@@ -93,7 +93,7 @@ py::dict evaluate(const std::string& sdf, py::array_t<float, py::array::c_style 
     job.gradientStep = gradientStep == 0.0f ? 1e-3f : gradientStep; // a negative or NaN step fails validate()
     job.meshGradientTaps = gradientStep != 0.0f;
     job.chunkSize = chunk;
-    if (auto ok = sampling::validate(job); n > 0 && !ok) throw py::value_error(ok.error().message);
+    if (auto ok = sampling::validate(job); n > 0 && !ok) raise(jobs::usageError(ok.error().keyed()));
     const jobs::OpenedSdf opened = prepare(sdfInput(sdf, entry, params, sign, normalize));
     sampling::FieldSettings settings;
     settings.time = time;

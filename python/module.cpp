@@ -103,10 +103,17 @@ values::SdfInput sdfInput(const std::string& sdf, const std::string& entry, cons
     return input;
 }
 
-[[noreturn]] void raise(const jobs::JobError& error) {
+std::string keywordTerm(const std::string& path) {
+    std::string name(keyName(path));
+    if (name == "near_truncation") name = "near_truncate";
+    if (name == "bounds_min" || name == "bounds_max") name = "bounds";
+    return name + "=";
+}
+
+[[noreturn]] void raise(const jobs::JobError& error, const KeyTerms& terms) {
     std::string message;
     for (const auto& d : error.diagnostics) message += shaders::formatDiagnostic(d) + "\n";
-    message += error.message;
+    message += terms ? worded(error.message, error.keys, terms) : error.message;
     if (error.failure == jobs::Failure::Usage || !error.diagnostics.empty()) throw py::value_error(message);
     throw std::runtime_error(message);
 }
@@ -246,7 +253,7 @@ py::object run(const py::object& given) {
             *request);
         if (lock.owns_lock()) releaseContext();
     }
-    if (failure) raise(*failure);
+    if (failure) raise(*failure, KeyTerms()); // a request's keys, as its JSON wrote them
     return fromJson(report);
 }
 

@@ -3,6 +3,7 @@
 // and prints its report, as text or as the report's JSON (--json). No Qt, no widgets: EGL for GL.
 // Each returns a process exit code (see ExitCode). One file each under commands/.
 
+#include <core/KeyedText.h>
 #include <values/Requests.h>
 
 #include <string>
@@ -49,5 +50,19 @@ void setProtocolOutput(bool on);
 // Ends a request under the worker protocol: its error message (unless it succeeded), then
 // {"end": exitCode}. Returns exitCode.
 int endProtocolRequest(int exitCode);
+
+// While alive, the failures reportFailure prints name the request keys in `terms` (a command's
+// options: --size for 'width', 'height'); outside one they keep the request's own terms, as a JSON
+// request or job file wrote them. The worker protocol always sends the request's terms.
+class ErrorTerms {
+public:
+    explicit ErrorTerms(KeyTerms terms);
+    ~ErrorTerms();
+    ErrorTerms(const ErrorTerms&) = delete;
+    ErrorTerms& operator=(const ErrorTerms&) = delete;
+
+private:
+    KeyTerms m_previous;
+};
 
 } // namespace sdfwb::app

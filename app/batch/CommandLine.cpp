@@ -1,12 +1,12 @@
 #include "CommandLine.h"
 #include "CommandTable.h"
+#include "OptionText.h"
 
 #include "BatchCommands.h"
 
 #include <jobs/JobJson.h>
 
 #include <core/Log.h>
-#include <core/Regex.h>
 
 #include <CLI/CLI.hpp>
 
@@ -28,27 +28,38 @@
 namespace sdfwb::app {
 namespace {
 
-struct Size {
-    int width = 0, height = 0;
+using namespace detail;
+
+// A command's options, and which request keys each sets: a failure about a key names the option
+// that sets it (--size for 'width', 'height'), in the command line's own terms.
+class Command : public CLI::App {
+public:
+    using CLI::App::App;
+
+    // Records that `option` sets the keys at `paths`, where they are not its name with '_' for '-'
+    // (--max-steps sets trace.max_steps without being told).
+    CLI::Option* sets(CLI::Option* option, std::initializer_list<const char*> paths) {
+        const std::vector<std::string> shortNames = option->get_snames();
+        for (const char* path : paths) {
+            const std::string name(keyName(path));
+            const bool isShort = std::find(shortNames.begin(), shortNames.end(), name) != shortNames.end();
+            m_setters.emplace_back(path, isShort ? "-" + name : "--" + option->get_lnames().front());
+        }
+        return option;
+    }
+
+    // The option that sets the key at `path`; the key as a JSON request writes it when none does.
+    std::string term(const std::string& path) const {
+        for (const auto& [key, option] : m_setters)
+            if (key == path) return option;
+        std::string option = "--" + std::string(keyName(path));
+        std::replace(option.begin(), option.end(), '_', '-');
+        return get_option_no_throw(option) ? option : "'" + std::string(keyName(path)) + "'";
+    }
+
+private:
+    std::vector<std::pair<std::string, std::string>> m_setters; // key path, option
 };
-
-// "640x360" -> 640, 360 (1..16384 each).
-std::optional<Size> parseSize(const std::string& text) {
-    static const std::regex pattern(R"(^\s*(\d{1,5})\s*[xX]\s*(\d{1,5})\s*$)", kLinearRegex);
-    std::smatch match;
-    if (!std::regex_match(text, match, pattern)) return std::nullopt;
-    Size size{std::stoi(match[1].str()), std::stoi(match[2].str())};
-    if (size.width < 1 || size.height < 1 || size.width > 16384 || size.height > 16384) return std::nullopt;
-    return size;
-}
-
-// "1.5,2,-3" -> vec3
-std::optional<glm::vec3> parseVec3(const std::string& text) {
-    float x, y, z;
-    char tail;
-    if (std::sscanf(text.c_str(), " %f , %f , %f %c", &x, &y, &z, &tail) != 3) return std::nullopt;
-    return glm::vec3(x, y, z);
-}
 
 // Numbers that must be finite (times) or positive and finite (steps, tolerances): checked while
 // parsing, so `nan`, `inf` and 0 are usage errors before any work (and in checkCommandLine).
@@ -95,7 +106,7 @@ CLI::Validator entryCheck() {
         "NAME");
 }
 
-void addEntryOption(CLI::App& app, std::string& entry) {
+void addEntryOption(Command& app, std::string& entry) {
     app.add_option(
            "--entry", entry,
            "the SDF's function: float NAME(vec3 p) or NAME(vec3 p, float time), or vec2/vec4 NAME(...) with the distance in .x "
@@ -112,22 +123,23 @@ CLI::Validator parameterCheck() {
         "NAME=VALUE");
 }
 
-// A repeatable NAME=VALUE option, checked and parsed straight into `target`.
-void addParameterOption(CLI::App& app, const std::string& name, std::vector<shaders::ParameterValue>& target,
+// A repeatable NAME=VALUE option for the request's key `key`, checked and parsed straight into `target`.
+void addParameterOption(Command& app, const std::string& name, const char* key, std::vector<shaders::ParameterValue>& target,
                         const std::string& help) {
-    app.add_option_function<std::vector<std::string>>(
-           name,
-           [&target](const std::vector<std::string>& texts) {
-               target.clear();
-               for (const std::string& text : texts)
-                   if (auto value = shaders::parseParameterValue(text)) target.push_back(std::move(*value));
-           },
-           help)
+    app.sets(app.add_option_function<std::vector<std::string>>(
+                 name,
+                 [&target](const std::vector<std::string>& texts) {
+                     target.clear();
+                     for (const std::string& text : texts)
+                         if (auto value = shaders::parseParameterValue(text)) target.push_back(std::move(*value));
+                 },
+                 help),
+             {key})
         ->check(parameterCheck());
 }
 
 // --sdf, --entry and --param NAME=VALUE (repeatable), shared by every command that runs an SDF.
-void addSdfOptions(CLI::App& app, values::SdfInput& input) {
+void addSdfOptions(Command& app, values::SdfInput& input) {
     app.add_option("--sdf", input.sdf, "dataset name, path to a .glsl file, or a triangle mesh (.obj .ply .stl .off .glb)")
         ->required();
     app.add_option("--sign", input.sign,
@@ -139,17 +151,18 @@ void addSdfOptions(CLI::App& app, values::SdfInput& input) {
                    "farthest vertex at 1)")
         ->check(CLI::IsMember({"none", "unit-cube", "unit-sphere"}));
     addEntryOption(app, input.entry);
-    app.add_option_function<std::vector<std::string>>(
-           "--channel",
-           [&input](const std::vector<std::string>& texts) {
-               input.channels.clear();
-               for (const std::string& text : texts) {
-                   const std::size_t n = std::size_t(text[0] - '0');
-                   if (input.channels.size() <= n) input.channels.resize(n + 1);
-                   input.channels[n] = text.substr(2);
-               }
-           },
-           "N=FILE: an image for a Shadertoy's iChannelN (N = 0..3; repeatable; default: a 256x256 RGBA noise texture)")
+    CLI::Option* channel = app.add_option_function<std::vector<std::string>>(
+        "--channel",
+        [&input](const std::vector<std::string>& texts) {
+            input.channels.clear();
+            for (const std::string& text : texts) {
+                const std::size_t n = std::size_t(text[0] - '0');
+                if (input.channels.size() <= n) input.channels.resize(n + 1);
+                input.channels[n] = text.substr(2);
+            }
+        },
+        "N=FILE: an image for a Shadertoy's iChannelN (N = 0..3; repeatable; default: a 256x256 RGBA noise texture)");
+    app.sets(channel, {"channels"})
         ->check(CLI::Validator(
             [](std::string& text) -> std::string {
                 if (text.size() < 3 || text[0] < '0' || text[0] > '3' || text[1] != '=')
@@ -157,13 +170,13 @@ void addSdfOptions(CLI::App& app, values::SdfInput& input) {
                 return {};
             },
             "N=FILE"));
-    addParameterOption(app, "--param", input.params,
+    addParameterOption(app, "--param", "params", input.params,
                        "NAME=VALUE: a value for a parameter the SDF declares (vectors as x,y,z, bools true/false; "
                        "repeatable; `--batch params` lists them)");
 }
 
 // --sweep NAME=FROM:TO:COUNT (repeatable: a grid) and --randomize COUNT: a shape family.
-void addFamilyOptions(CLI::App& app, values::FamilySpec& family, const char* what) {
+void addFamilyOptions(Command& app, values::FamilySpec& family, const char* what) {
     app.add_option_function<std::vector<std::string>>(
            "--sweep",
            [&family](const std::vector<std::string>& texts) {
@@ -186,22 +199,11 @@ void addFamilyOptions(CLI::App& app, values::FamilySpec& family, const char* wha
         ->check(CLI::Range(1u, 100000u));
 }
 
-// "MINX,MINY,MINZ,MAXX,MAXY,MAXZ" into two corners; false when malformed.
-bool parseBounds(const std::string& text, glm::vec3& low, glm::vec3& high) {
-    float v[6];
-    char tail;
-    if (std::sscanf(text.c_str(), " %f , %f , %f , %f , %f , %f %c", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &tail) != 6 ||
-        !(v[3] > v[0] && v[4] > v[1] && v[5] > v[2]))
-        return false;
-    low = {v[0], v[1], v[2]};
-    high = {v[3], v[4], v[5]};
-    return true;
-}
-
 // --bounds MINX,MINY,MINZ,MAXX,MAXY,MAXZ, checked while parsing and read into the two corners.
-void addBoundsOption(CLI::App& app, glm::vec3& low, glm::vec3& high, const std::string& help) {
-    app.add_option_function<std::string>(
-           "--bounds", [&low, &high](const std::string& text) { parseBounds(text, low, high); }, help)
+void addBoundsOption(Command& app, glm::vec3& low, glm::vec3& high, const std::string& help) {
+    app.sets(app.add_option_function<std::string>(
+                 "--bounds", [&low, &high](const std::string& text) { parseBounds(text, low, high); }, help),
+             {"bounds_min", "bounds_max"})
         ->check(CLI::Validator(
             [](std::string& text) -> std::string {
                 glm::vec3 a, b;
@@ -217,9 +219,11 @@ void addBoundsOption(CLI::App& app, glm::vec3& low, glm::vec3& high, const std::
 struct Ending {
     OutputOptions output;
     bool printRequest = false;
+    const Command* command = nullptr; // whose options the failures name; null: a JSON request's keys
 };
 
-void addOutputFlags(CLI::App& app, Ending& ending) {
+void addOutputFlags(Command& app, Ending& ending) {
+    ending.command = &app;
     OutputOptions& output = ending.output;
     app.add_flag("--print-request", ending.printRequest,
                  "print the request as JSON (for `sdfwb --batch request`, job files and Python's sdfwb.run) and stop");
@@ -231,11 +235,8 @@ void addOutputFlags(CLI::App& app, Ending& ending) {
                  "form, jobs/Protocol.h)");
 }
 
-using detail::Arguments;
-using detail::Mode;
-
 // Runs CLI11 on the arguments; returns an exit code when parsing ends the run (help or error).
-std::optional<int> parse(CLI::App& app, const std::string& context, Arguments arguments) {
+std::optional<int> parse(Command& app, const std::string& context, Arguments arguments) {
     std::reverse(arguments.begin(), arguments.end()); // CLI11 takes them last first
     try {
         app.parse(arguments);
@@ -255,9 +256,9 @@ struct FrameOptions {
     bool planeNoClip = false;
 };
 
-void addFrameOptions(CLI::App& app, values::FrameRequest& job, FrameOptions& options) {
+void addFrameOptions(Command& app, values::FrameRequest& job, FrameOptions& options) {
     addSdfOptions(app, job.sdf);
-    app.add_option("--size", options.size, "image size WxH")->capture_default_str();
+    app.sets(app.add_option("--size", options.size, "image size WxH"), {"width", "height"})->capture_default_str();
     app.add_option("--time", job.time, "time in seconds for animated SDFs (start time for animate)")
         ->capture_default_str()
         ->check(numberCheck(false));
@@ -269,7 +270,7 @@ void addFrameOptions(CLI::App& app, values::FrameRequest& job, FrameOptions& opt
     app.add_option("--background-image", job.shading.backgroundImage,
                    "an image behind the shape (cover-fit), instead of the colour");
     app.add_flag("--overlay", job.overlay, "the SDF's name, author and license (its metadata block) in the lower-left corner");
-    app.add_option("--camera", options.camera, "camera position X,Y,Z");
+    app.sets(app.add_option("--camera", options.camera, "camera position X,Y,Z"), {"camera", "camera.position"});
     app.add_option("--target", options.target, "point the camera looks at X,Y,Z (default 0,0,0)");
     app.add_option("--fov", job.camera.fovYDegrees, "vertical field of view in degrees")
         ->capture_default_str()
@@ -280,8 +281,9 @@ void addFrameOptions(CLI::App& app, values::FrameRequest& job, FrameOptions& opt
     app.add_option("--step-factor", job.trace.stepFactor, "scale each step (1/L for an L-Lipschitz field)")
         ->capture_default_str()
         ->check(CLI::Range(0.01f, 2.0f));
-    app.add_option("--relaxation", job.trace.overRelaxation,
-                   "over-relaxation factor (1 = off; 1.2-1.9 takes longer steps, with fallback)")
+    app.sets(app.add_option("--relaxation", job.trace.overRelaxation,
+                            "over-relaxation factor (1 = off; 1.2-1.9 takes longer steps, with fallback)"),
+             {"trace.over_relaxation"})
         ->capture_default_str()
         ->check(CLI::Range(1.0f, 1.95f));
     app.add_option("--cones", options.cones,
@@ -338,16 +340,14 @@ std::optional<int> finishFrameOptions(values::FrameRequest& job, const FrameOpti
         job.camera.position = *position;
     }
     if (!options.plane.empty()) {
-        float nx, ny, nz, offset;
-        char tail;
-        if (std::sscanf(options.plane.c_str(), " %f , %f , %f , %f %c", &nx, &ny, &nz, &offset, &tail) != 4 ||
-            (nx == 0 && ny == 0 && nz == 0)) {
+        const auto plane = parsePlane(options.plane);
+        if (!plane) {
             printError("--plane: expected NX,NY,NZ,OFFSET with a non-zero normal, got '" + options.plane + "'");
             return kExitUsage;
         }
         job.plane.enabled = true;
-        job.plane.normal = {nx, ny, nz};
-        job.plane.offset = offset;
+        job.plane.normal = plane->normal;
+        job.plane.offset = plane->offset;
         job.plane.clipSurface = !options.planeNoClip;
     }
     if (!options.background.empty()) {
@@ -376,6 +376,8 @@ int finish(const values::Request& request, const Ending& ending, Mode mode) {
         return kExitOk;
     }
     if (mode == Mode::Check) return kExitOk;
+    const Command* command = ending.command;
+    ErrorTerms terms(command ? KeyTerms([command](const std::string& path) { return command->term(path); }) : KeyTerms());
     if (ending.output.quiet || (ending.output.json && !std::holds_alternative<values::RenderRequest>(request)))
         log::setMinimumLevel(log::Level::Warning);
     if (!ending.output.protocol) return runRequest(request, ending.output);
@@ -386,7 +388,7 @@ int finish(const values::Request& request, const Ending& ending, Mode mode) {
 }
 
 int runRenderCommand(const Arguments& arguments, Mode mode) {
-    CLI::App app("Sphere-trace an SDF into an image, without a display.", "sdfwb --batch render");
+    Command app("Sphere-trace an SDF into an image, without a display.", "sdfwb --batch render");
     values::RenderRequest request;
     Ending ending;
     FrameOptions options;
@@ -402,7 +404,7 @@ int runRenderCommand(const Arguments& arguments, Mode mode) {
 }
 
 int runAnimateCommand(const Arguments& arguments, Mode mode) {
-    CLI::App app("Render an MP4 (H.264) of an SDF: over time, as a turntable, or both.", "sdfwb --batch animate");
+    Command app("Render an MP4 (H.264) of an SDF: over time, as a turntable, or both.", "sdfwb --batch animate");
     values::AnimateRequest request;
     Ending ending;
     FrameOptions options;
@@ -414,7 +416,7 @@ int runAnimateCommand(const Arguments& arguments, Mode mode) {
         ->check(CLI::Range(0.0f, 3600.0f));
     app.add_option("--fps", request.framesPerSecond, "frames per second")->capture_default_str()->check(CLI::Range(1, 240));
     app.add_flag("--turntable", request.turntable, "orbit the camera once around the Y axis");
-    addParameterOption(app, "--param-end", request.paramsEnd,
+    addParameterOption(app, "--param-end", "params_end", request.paramsEnd,
                        "NAME=VALUE: the parameter's value at the last frame; the clip moves linearly from --param (or the "
                        "default) to it (repeatable)");
     addOutputFlags(app, ending);
@@ -424,15 +426,16 @@ int runAnimateCommand(const Arguments& arguments, Mode mode) {
 }
 
 int runProbeCommand(const Arguments& arguments, Mode mode) {
-    CLI::App app("The march debugger: replay one pixel's ray through the program that draws the frame and print every step "
-                 "(position, f, the step taken, |grad f|, over-relaxation fallbacks, oversteps) and how it ended.",
-                 "sdfwb --batch probe");
+    Command app("The march debugger: replay one pixel's ray through the program that draws the frame and print every step "
+                "(position, f, the step taken, |grad f|, over-relaxation fallbacks, oversteps) and how it ended.",
+                "sdfwb --batch probe");
     values::ProbeRequest request;
     Ending ending;
     FrameOptions options;
     std::string pixel;
     addFrameOptions(app, request.frame, options);
-    app.add_option("--pixel", pixel, "X,Y: the pixel (0,0 is the top left), in the --size frame")->required();
+    app.sets(app.add_option("--pixel", pixel, "X,Y: the pixel (0,0 is the top left), in the --size frame"), {"x", "y"})
+        ->required();
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch probe", arguments)) return *exit;
     if (auto exit = finishFrameOptions(request.frame, options)) return *exit;
@@ -445,25 +448,15 @@ int runProbeCommand(const Arguments& arguments, Mode mode) {
 }
 
 int runListCommand(const Arguments& arguments, Mode mode) {
-    CLI::App app("List the dataset's SDFs.", "sdfwb --batch list");
+    Command app("List the dataset's SDFs.", "sdfwb --batch list");
     Ending ending;
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch list", arguments)) return *exit;
     return finish(values::ListRequest{}, ending, mode);
 }
 
-// "3/8" -> 3, 8
-bool parseShard(const std::string& text, std::uint32_t& index, std::uint32_t& count) {
-    static const std::regex pattern(R"(^\s*(\d{1,9})\s*/\s*(\d{1,9})\s*$)", kLinearRegex);
-    std::smatch match;
-    if (!std::regex_match(text, match, pattern)) return false;
-    index = std::uint32_t(std::stoul(match[1].str()));
-    count = std::uint32_t(std::stoul(match[2].str()));
-    return count > 0 && index < count;
-}
-
 int runSampleCommand(const Arguments& arguments, Mode mode) {
-    CLI::App app("Sample an SDF: N rows of (position, distance, raw gradient).", "sdfwb --batch sample");
+    Command app("Sample an SDF: N rows of (position, distance, raw gradient).", "sdfwb --batch sample");
     values::SampleRequest command;
     Ending ending;
     std::string shard;
@@ -471,7 +464,7 @@ int runSampleCommand(const Arguments& arguments, Mode mode) {
     app.add_option("--pattern,-p", command.pattern,
                    "grid, image, jitter, rand, surface, near, metropolis, metropolis_curvature, or a sampler file")
         ->required();
-    app.add_option("-n,--count", command.count, "number of samples N of the whole run")
+    app.sets(app.add_option("-n,--count", command.count, "number of samples N of the whole run"), {"n"})
         ->required()
         ->check(wholeNumberCheck(true, "-n"));
     app.add_option("--output,-o", command.output, "output file: .bin, .npz or .ply")->required();
@@ -480,7 +473,8 @@ int runSampleCommand(const Arguments& arguments, Mode mode) {
         ->capture_default_str()
         ->check(wholeNumberCheck(false));
     app.add_option("--time", command.time, "time in seconds for animated SDFs")->capture_default_str()->check(numberCheck(false));
-    app.add_option("--shard", shard, "K/COUNT: write only slice K (0-based) of COUNT equal slices of the N-sample run");
+    app.sets(app.add_option("--shard", shard, "K/COUNT: write only slice K (0-based) of COUNT equal slices of the N-sample run"),
+             {"shard_index", "shard_count"});
     app.add_option("--chunk", command.chunkSize,
                    "samples per GPU dispatch (memory: 28 bytes each; default: 262144 on llvmpipe, 16777216 on a GPU)")
         ->check(CLI::Range(1u, 33554432u)); // renderer::SampleCompute::kMaxChunk
@@ -495,8 +489,9 @@ int runSampleCommand(const Arguments& arguments, Mode mode) {
     app.add_option("--near-widths", command.nearWidths,
                    "near only: a mixture of Gaussian offsets W:P,... (standard deviation W, weight P; up to 4), "
                    "e.g. 0.005:0.8,0.05:0.2");
-    app.add_option("--near-truncate", command.nearTruncation,
-                   "near only: truncate each Gaussian at this many standard deviations (redrawn, not clamped)");
+    app.sets(app.add_option("--near-truncate", command.nearTruncation,
+                            "near only: truncate each Gaussian at this many standard deviations (redrawn, not clamped)"),
+             {"near_truncation"});
     addFamilyOptions(app, command.family, "one output per instance (OUTPUT_00000.EXT, ...) and an index OUTPUT_index.json,");
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch sample", arguments)) return *exit;
@@ -508,7 +503,7 @@ int runSampleCommand(const Arguments& arguments, Mode mode) {
 }
 
 int runMergeCommand(const Arguments& arguments, Mode mode) {
-    CLI::App app("Join shard files (from --shard K/COUNT) into the file the single run writes.", "sdfwb --batch merge");
+    Command app("Join shard files (from --shard K/COUNT) into the file the single run writes.", "sdfwb --batch merge");
     values::MergeRequest command;
     Ending ending;
     app.add_option("--output,-o", command.output, "merged file: .bin, .npz or .ply")->required();
@@ -520,8 +515,8 @@ int runMergeCommand(const Arguments& arguments, Mode mode) {
 }
 
 int runAuditCommand(const Arguments& arguments, Mode mode) {
-    CLI::App app("Analyse an SDF's field: exact, conservative, non-conservative, truncated, discontinuous or NaN?",
-                 "sdfwb --batch audit");
+    Command app("Analyse an SDF's field: exact, conservative, non-conservative, truncated, discontinuous or NaN?",
+                "sdfwb --batch audit");
     values::AuditRequest command;
     Ending ending;
     std::string plane;
@@ -546,23 +541,19 @@ int runAuditCommand(const Arguments& arguments, Mode mode) {
     addOutputFlags(app, ending);
     if (auto exit = parse(app, "--batch audit", arguments)) return *exit;
     if (!plane.empty()) {
-        char tail;
-        values::PlaneSpec spec;
-        glm::vec3& n = spec.normal;
-        if (std::sscanf(plane.c_str(), " %f , %f , %f , %f %c", &n.x, &n.y, &n.z, &spec.offset, &tail) != 4 ||
-            n == glm::vec3(0.0f)) {
+        command.plane = parsePlane(plane);
+        if (!command.plane) {
             printError("--plane: expected NX,NY,NZ,OFFSET with a non-zero normal, got '" + plane + "'");
             return kExitUsage;
         }
-        command.plane = spec;
     }
     return finish(command, ending, mode);
 }
 
 int runBenchCommand(const Arguments& arguments, Mode mode) {
-    CLI::App app("Measure error against run time (sphere tracer, surface/near samplers, gradients, audit) on this "
-                 "machine and write a report: benchmarks.md, CSV tables and plots.",
-                 "sdfwb --batch bench");
+    Command app("Measure error against run time (sphere tracer, surface/near samplers, gradients, audit) on this "
+                "machine and write a report: benchmarks.md, CSV tables and plots.",
+                "sdfwb --batch bench");
     values::BenchRequest command;
     Ending ending;
     app.add_option("--output,-o", command.outputDirectory, "report folder (benchmarks.md, *.csv, images/*.png)")
@@ -578,9 +569,9 @@ int runBenchCommand(const Arguments& arguments, Mode mode) {
 }
 
 int runMeshCommand(const Arguments& arguments, Mode mode) {
-    CLI::App app("Extract the SDF's zero set as a mesh by dual contouring (sharp edges and corners kept), and measure its "
-                 "error against the exact field both ways.",
-                 "sdfwb --batch mesh");
+    Command app("Extract the SDF's zero set as a mesh by dual contouring (sharp edges and corners kept), and measure its "
+                "error against the exact field both ways.",
+                "sdfwb --batch mesh");
     values::MeshRequest request;
     Ending ending;
     addSdfOptions(app, request.sdf);
@@ -614,9 +605,9 @@ int runMeshCommand(const Arguments& arguments, Mode mode) {
 }
 
 int runEvalCommand(const Arguments& arguments, Mode mode) {
-    CLI::App app("Grade any mesh against the SDF's exact field: Chamfer L1/L2, F-score at tau, normal consistency, Hausdorff "
-                 "and volume IoU (conventions in the report).",
-                 "sdfwb --batch grade");
+    Command app("Grade any mesh against the SDF's exact field: Chamfer L1/L2, F-score at tau, normal consistency, Hausdorff "
+                "and volume IoU (conventions in the report).",
+                "sdfwb --batch grade");
     values::EvalRequest request;
     Ending ending;
     addSdfOptions(app, request.sdf);
@@ -646,9 +637,9 @@ int runEvalCommand(const Arguments& arguments, Mode mode) {
 }
 
 int runParamsCommand(const Arguments& arguments, Mode mode) {
-    CLI::App app("List the parameters an SDF declares: uniforms with a default, annotated // @range MIN MAX @step S @log "
-                 "@label \"...\" @color.",
-                 "sdfwb --batch params");
+    Command app("List the parameters an SDF declares: uniforms with a default, annotated // @range MIN MAX @step S @log "
+                "@label \"...\" @color.",
+                "sdfwb --batch params");
     values::ParamsRequest request;
     Ending ending;
     app.add_option("--sdf", request.sdf.sdf, "dataset name or path to a .glsl file")->required();
@@ -659,9 +650,9 @@ int runParamsCommand(const Arguments& arguments, Mode mode) {
 }
 
 int runRunCommand(const Arguments& arguments, Mode mode) {
-    CLI::App app("Run every item of a manifest (many shapes): each in a child process of its own, recorded in a status file "
-                 "so a second run skips what is done, with failures isolated and the manifest sliced across processes.",
-                 "sdfwb --batch run");
+    Command app("Run every item of a manifest (many shapes): each in a child process of its own, recorded in a status file "
+                "so a second run skips what is done, with failures isolated and the manifest sliced across processes.",
+                "sdfwb --batch run");
     values::RunRequest request;
     Ending ending;
     app.add_option("manifest", request.manifest,
@@ -680,7 +671,9 @@ int runRunCommand(const Arguments& arguments, Mode mode) {
     app.add_option("--world-size", request.worldSize, "W: the number of processes sharing the manifest")
         ->capture_default_str()
         ->check(CLI::Range(1u, 1000000u));
-    app.add_option("--item", request.items, "run only these items: I (0-based), repeatable or I,J,K (how Dask tasks take theirs)")
+    app.sets(app.add_option("--item", request.items,
+                            "run only these items: I (0-based), repeatable or I,J,K (how Dask tasks take theirs)"),
+             {"items"})
         ->delimiter(',');
     app.add_flag("--list", request.list, "list the items and their recorded state (pending, done, failed, ...); run nothing");
     addOutputFlags(app, ending);
@@ -737,8 +730,8 @@ int runRequestLines(const std::string& source, const Ending& ending, Mode mode) 
 }
 
 int runRequestCommand(const Arguments& arguments, Mode mode) {
-    CLI::App app("Run one request given as JSON (what --print-request prints; the workbench starts its jobs this way).",
-                 "sdfwb --batch request");
+    Command app("Run one request given as JSON (what --print-request prints; the workbench starts its jobs this way).",
+                "sdfwb --batch request");
     std::string source;
     Ending ending;
     bool eachLine = false;
@@ -747,6 +740,7 @@ int runRequestCommand(const Arguments& arguments, Mode mode) {
                  "read one request per line until the input ends (with --protocol, each answer ends with {\"end\":code}: "
                  "one process and GL context for many requests, as the workbench and `--batch run` use it)");
     addOutputFlags(app, ending);
+    ending.command = nullptr; // the request's failures name its keys as its JSON writes them
     if (auto exit = parse(app, "--batch request", arguments)) return *exit;
     if (eachLine) return runRequestLines(source, ending, mode);
     auto text = readRequestText(source);

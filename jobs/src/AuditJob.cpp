@@ -19,7 +19,7 @@ JobResult<values::AuditJobReport> run(const values::AuditRequest& request, const
     if (request.plane) {
         auto readout = sampling::analysePlane(sdf->prepared, request.plane->normal, request.plane->offset, request.resolution,
                                               request.time, sdf->parameters, &diagnostics);
-        if (!readout) return JobError{Failure::Work, readout.error().message, diagnostics};
+        if (!readout) return JobError{Failure::Work, readout.error().message, diagnostics, {}};
         report.parameters = shaders::valuesOf(sdf->parameters);
         report.plane = request.plane;
         report.readout = std::move(*readout);
@@ -34,8 +34,8 @@ JobResult<values::AuditJobReport> run(const values::AuditRequest& request, const
     if (request.family.empty()) {
         options.parameters = sdf->parameters;
         auto volume = sampling::auditField(sdf->prepared, options, progress);
-        if (progress.isCancelled()) return JobError{Failure::Cancelled, "audit: cancelled", {}};
-        if (!volume) return JobError{Failure::Work, volume.error().message, diagnostics};
+        if (progress.isCancelled()) return JobError{Failure::Cancelled, "audit: cancelled", {}, {}};
+        if (!volume) return JobError{Failure::Work, volume.error().message, diagnostics, {}};
         report.parameters = shaders::valuesOf(sdf->parameters);
         report.volume = std::move(*volume);
         return report;
@@ -44,20 +44,19 @@ JobResult<values::AuditJobReport> run(const values::AuditRequest& request, const
     auto instances = shaders::familyInstances(sdf->prepared.parameters, request.sdf.params, request.family.sweeps,
                                               request.family.randomize, request.seed);
     if (!instances)
-        return JobError{
-            Failure::Usage, (request.family.randomize ? "'randomize': " : "'sweep': ") + instances.error().message, {}};
+        return usageError((request.family.randomize ? key("randomize") : key("sweep")) + ": " + instances.error().message);
     options.convergence = false; // one estimate per instance; the convergence study is the single audit's
     for (std::size_t k = 0; k < instances->size(); ++k) {
         auto resolved = shaders::resolveParameters(sdf->prepared.parameters, (*instances)[k]);
-        if (!resolved) return JobError{Failure::Usage, "'params': " + sdf->label + ": " + resolved.error().message, {}};
+        if (!resolved) return usageError(key("params") + ": " + sdf->label + ": " + resolved.error().message);
         options.parameters = resolved->settings;
         ProgressSink step{progress.report
                               ? ProgressFunction([&](std::uint64_t, std::uint64_t) { progress(k, instances->size()); })
                               : ProgressFunction(),
                           progress.cancel};
         auto volume = sampling::auditField(sdf->prepared, options, step);
-        if (progress.isCancelled()) return JobError{Failure::Cancelled, "audit: cancelled", {}};
-        if (!volume) return JobError{Failure::Work, volume.error().message, {}};
+        if (progress.isCancelled()) return JobError{Failure::Cancelled, "audit: cancelled", {}, {}};
+        if (!volume) return workError(volume.error().keyed());
         values::AuditInstance instance;
         instance.parameters = shaders::valuesOf(resolved->settings);
         instance.verdict = volume->verdict;

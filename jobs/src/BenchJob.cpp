@@ -16,7 +16,7 @@ JobResult<values::BenchReport> run(const values::BenchRequest& request, const Pr
     options.commandLine = "sdfwb --batch bench" + std::string(request.quick ? " --quick" : "") + " -o " +
                           request.outputDirectory + " --repeats " + std::to_string(request.repeats);
     auto files = bench::runBenchmarks(options, progress);
-    if (!files) return JobError{Failure::Work, files.error().message, {}};
+    if (!files) return workError(files.error().keyed());
     values::BenchReport report;
     report.markdown = files->markdown.string();
     report.csvDirectory = files->csvDirectory.string();

@@ -20,15 +20,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-JobError usage(const std::string& message) { return {Failure::Usage, message, {}}; }
-
-// "sign: ..." (meshfield's wording, a key then a colon) -> "'sign': ...", as the other messages name keys.
-std::string quotedKey(const std::string& message) {
-    const std::size_t colon = message.find(": ");
-    return colon == std::string::npos ? message : "'" + message.substr(0, colon) + "'" + message.substr(colon);
-}
+JobError usage(const KeyedText& message) { return usageError(message); }
 
 // Resolves `input.sdf` to a file; with source text a name that is not a file is kept as a label.
+// Its errors are about the key 'sdf'.
 Expected<fs::path> resolve(const values::SdfInput& input) {
     if (!input.source.empty()) {
         std::error_code ec;
@@ -37,9 +32,9 @@ Expected<fs::path> resolve(const values::SdfInput& input) {
         auto path = dataset::resolveSdfArgument(input.sdf, paths::datasetRoot());
         return path ? *path : fs::path(input.sdf);
     }
-    if (input.sdf.empty()) return makeError("'sdf': no SDF given (a dataset name or a path to a .glsl file)");
+    if (input.sdf.empty()) return makeError(key("sdf") + ": no SDF given (a dataset name or a path to a .glsl file)");
     auto path = dataset::resolveSdfArgument(input.sdf, paths::datasetRoot());
-    if (!path) return makeError("'sdf': " + path.error().message);
+    if (!path) return makeError(key("sdf") + ": " + path.error().message);
     return *path;
 }
 
@@ -49,12 +44,12 @@ std::optional<JobError> checkSdf(const values::SdfInput& input) {
         for (char c : input.entry) lower += char(std::tolower(static_cast<unsigned char>(c)));
         bool identifier = !input.entry.empty() && !std::isdigit(static_cast<unsigned char>(input.entry[0]));
         for (char c : input.entry) identifier = identifier && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
-        if (!identifier) return usage("'entry': expected a GLSL function name, got '" + input.entry + "'");
+        if (!identifier) return usage(key("entry") + ": expected a GLSL function name, got '" + input.entry + "'");
         if (lower == "main" || lower.rfind("gl_", 0) == 0 || lower.rfind("sdfwb_", 0) == 0)
-            return usage("'entry': '" + input.entry + "' is reserved (main, gl_*, sdfwb_*): name your own function");
+            return usage(key("entry") + ": '" + input.entry + "' is reserved (main, gl_*, sdfwb_*): name your own function");
     }
     if (input.channels.size() > std::size_t(shaders::kShadertoyChannels))
-        return usage("'channels': Shadertoy has iChannel0 to iChannel3, got " + std::to_string(input.channels.size()) +
+        return usage(key("channels") + ": Shadertoy has iChannel0 to iChannel3, got " + std::to_string(input.channels.size()) +
                      " channels");
     for (std::size_t n = 0; n < input.channels.size(); ++n) {
         if (input.channels[n].empty()) continue;
@@ -64,37 +59,39 @@ std::optional<JobError> checkSdf(const values::SdfInput& input) {
         if (auto image = renderer::readImage(input.channels[n]); !image) return usage(what + image.error().message);
     }
     if (auto mesh = meshfield::parseMeshFieldOptions(input.sign, input.normalize); !mesh)
-        return usage(quotedKey(mesh.error().message));
+        return usage(keyedSubject(mesh.error().message));
     for (const shaders::ParameterValue& p : input.params) {
         // The text form checks the name and the values (1 to 4 finite numbers).
         if (auto ok = shaders::parseParameterValue(shaders::formatParameterValue(p)); !ok || !(*ok == p))
-            return usage("'params': '" + shaders::formatParameterValue(p) + "': expected NAME=VALUE with 1 to 4 finite numbers");
+            return usage(key("params") + ": '" + shaders::formatParameterValue(p) +
+                         "': expected NAME=VALUE with 1 to 4 finite numbers");
         for (const shaders::ParameterValue& other : input.params)
-            if (&other != &p && other.name == p.name) return usage("'params': '" + p.name + "' is given twice");
+            if (&other != &p && other.name == p.name) return usage(key("params") + ": '" + p.name + "' is given twice");
     }
-    if (auto path = resolve(input); !path) return usage(path.error().message);
+    if (auto path = resolve(input); !path) return usage(path.error().keyed());
     return std::nullopt;
 }
 
 std::optional<JobError> checkFamily(const values::FamilySpec& family) {
-    if (family.randomize > 100000) return usage("'randomize': at most 100000 instances");
-    if (family.randomize > 0 && !family.sweeps.empty()) return usage("'sweep' and 'randomize' cannot be combined");
+    if (family.randomize > 100000) return usage(key("randomize") + ": at most 100000 instances");
+    if (family.randomize > 0 && !family.sweeps.empty())
+        return usage(key("sweep") + " and " + key("randomize") + " cannot be combined");
     std::uint64_t total = 1;
     for (const shaders::ParameterSweep& sweep : family.sweeps) {
         if (auto ok = shaders::parseParameterSweep(shaders::formatParameterSweep(sweep)); !ok || !(*ok == sweep))
-            return usage("'sweep': '" + shaders::formatParameterSweep(sweep) + "': expected NAME=FROM:TO:COUNT");
+            return usage(key("sweep") + ": '" + shaders::formatParameterSweep(sweep) + "': expected NAME=FROM:TO:COUNT");
         total *= std::uint64_t(sweep.count);
-        if (total > 100000) return usage("'sweep': more than 100000 instances in the grid");
+        if (total > 100000) return usage(key("sweep") + ": more than 100000 instances in the grid");
     }
     return std::nullopt;
 }
 
 std::optional<JobError> checkOutputFolder(const std::string& output) {
-    if (output.empty()) return usage("'output': no output file given");
+    if (output.empty()) return usage(key("output") + ": no output file given");
     fs::path folder = fs::path(output).parent_path().empty() ? fs::path(".") : fs::path(output).parent_path();
     std::error_code ec;
     if (!fs::is_directory(folder, ec))
-        return usage("'output': '" + output + "': folder '" + folder.string() + "' does not exist");
+        return usage(key("output") + ": '" + output + "': folder '" + folder.string() + "' does not exist");
     return std::nullopt;
 }
 
@@ -108,36 +105,41 @@ std::string text(double value) {
 
 std::optional<JobError> checkFrame(const values::FrameRequest& frame) {
     if (frame.width < 1 || frame.height < 1 || frame.width > 16384 || frame.height > 16384)
-        return usage("'width', 'height': expected WxH with integers from 1 to 16384, got '" + std::to_string(frame.width) + "x" +
-                     std::to_string(frame.height) + "'");
-    if (!std::isfinite(frame.time)) return usage("'time': expected a finite number");
+        return usage(keys({"width", "height"}) + ": expected WxH with integers from 1 to 16384, got '" +
+                     std::to_string(frame.width) + "x" + std::to_string(frame.height) + "'");
+    if (!std::isfinite(frame.time)) return usage(key("time") + ": expected a finite number");
     if (!inRange(frame.camera.fovYDegrees, 1.0, 179.0))
-        return usage("'fov': must be 1..179, got " + text(frame.camera.fovYDegrees));
+        return usage(key("camera.fov") + ": must be 1..179, got " + text(frame.camera.fovYDegrees));
     if (frame.trace.maxSteps < 1 || frame.trace.maxSteps > 100000)
-        return usage("'max_steps': must be 1..100000, got " + std::to_string(frame.trace.maxSteps));
+        return usage(key("trace.max_steps") + ": must be 1..100000, got " + std::to_string(frame.trace.maxSteps));
     if (!inRange(frame.trace.stepFactor, 0.01, 2.0))
-        return usage("'step_factor': must be 0.01..2, got " + text(frame.trace.stepFactor));
+        return usage(key("trace.step_factor") + ": must be 0.01..2, got " + text(frame.trace.stepFactor));
     if (!inRange(frame.trace.overRelaxation, 1.0, 1.95))
-        return usage("'over_relaxation': must be 1..1.95, got " + text(frame.trace.overRelaxation));
-    if (!inRange(frame.trace.epsilonScale, 1e-6, 100.0)) return usage("trace.epsilon_scale: must be 1e-6..100");
+        return usage(key("trace.over_relaxation") + ": must be 1..1.95, got " + text(frame.trace.overRelaxation));
+    if (!inRange(frame.trace.epsilonScale, 1e-6, 100.0)) return usage(key("trace.epsilon_scale") + ": must be 1e-6..100");
     if (frame.trace.coneTile < 0 || frame.trace.coneTile > 64)
-        return usage("'cone_tile': must be 0..64 pixels (0: no cone pass), got " + std::to_string(frame.trace.coneTile));
+        return usage(key("trace.cone_tile") + ": must be 0..64 pixels (0: no cone pass), got " +
+                     std::to_string(frame.trace.coneTile));
     if (!inRange(frame.plane.contourSpacing, 1e-5, 10.0))
-        return usage("'contour_spacing': must be 1e-5..10, got " + text(frame.plane.contourSpacing));
+        return usage(key("plane.contour_spacing") + ": must be 1e-5..10, got " + text(frame.plane.contourSpacing));
     if (frame.plane.enabled && frame.plane.normal == glm::vec3(0.0f))
-        return usage("'plane': expected NX,NY,NZ,OFFSET with a non-zero normal");
+        return usage(key("plane") + ": expected NX,NY,NZ,OFFSET with a non-zero normal");
     for (float c : {frame.camera.position.x, frame.camera.position.y, frame.camera.position.z, frame.camera.target.x,
                     frame.camera.target.y, frame.camera.target.z, frame.plane.offset})
-        if (!std::isfinite(c)) return usage("'camera'/'target'/'plane': expected finite numbers");
-    if (frame.shading.markers.size() > 16) return usage("shading.markers: at most 16 points");
+        if (!std::isfinite(c))
+            return usage(key("camera") + "/" + key("camera.target") + "/" + key("plane") + ": expected finite numbers");
+    if (frame.shading.markers.size() > 16) return usage(key("shading.markers") + ": at most 16 points");
     for (float c : {frame.shading.background.r, frame.shading.background.g, frame.shading.background.b})
-        if (!std::isfinite(c) || c < 0.0f) return usage("'background': expected finite values >= 0");
+        if (!std::isfinite(c) || c < 0.0f) return usage(key("shading.background") + ": expected finite values >= 0");
     if (!frame.shading.backgroundImage.empty() && !fs::is_regular_file(frame.shading.backgroundImage))
-        return usage("'background_image': '" + frame.shading.backgroundImage + "': no such file");
+        return usage(key("shading.background_image") + ": '" + frame.shading.backgroundImage + "': no such file");
     return checkSdf(frame.sdf);
 }
 
 } // namespace
+
+JobError usageError(const KeyedText& message) { return {Failure::Usage, message.text(), {}, message.keys()}; }
+JobError workError(const KeyedText& message) { return {Failure::Work, message.text(), {}, message.keys()}; }
 
 values::MeshSource OpenedSdf::meshSource() const {
     return prepared.mesh ? values::MeshSource{prepared.mesh->provenanceJson()} : values::MeshSource{};
@@ -150,20 +152,20 @@ renderer::FileMetadata OpenedSdf::fileMetadata() const {
 
 JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& what) {
     auto path = resolve(input);
-    if (!path) return usage(path.error().message);
+    if (!path) return usage(path.error().keyed());
     shaders::IncludeOptions options;
     options.libraryRoots = {paths::shaderLibraryRoot(), paths::datasetRoot()};
     shaders::PreparedSdf sdf;
     const bool mesh = !path->empty() && meshfield::isMeshPath(*path);
     if (!mesh && (!input.sign.empty() || !input.normalize.empty()))
-        return usage(std::string(input.sign.empty() ? "'normalize'" : "'sign'") +
+        return usage(key(input.sign.empty() ? "normalize" : "sign") +
                      ": applies to mesh files (.obj .ply .stl .off .glb), not '" + path->string() + "'");
     if (mesh) {
         auto meshOptions = meshfield::parseMeshFieldOptions(input.sign, input.normalize);
-        if (!meshOptions) return usage(quotedKey(meshOptions.error().message));
+        if (!meshOptions) return usage(keyedSubject(meshOptions.error().message));
         const meshfield::MeshFieldOptions& options = *meshOptions;
         auto field = meshfield::loadMeshField(*path, options);
-        if (!field) return JobError{Failure::Work, what + ": " + field.error().message, {}};
+        if (!field) return workError(what + ": " + field.error().message);
         log::info(what, (*field)->summary());
         if (options.normalize == meshfield::Normalization::None && !(*field)->bounds.insideUnitBox())
             log::warning(what, path->string() + ": the mesh reaches beyond [-1, 1]^3, the default box; --normalize unit-cube "
@@ -178,11 +180,13 @@ JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& w
     const std::string label = path->empty() ? std::string("<source>") : path->string();
     for (std::size_t n = 0; n < input.channels.size() && n < sdf.channels.size(); ++n) sdf.channels[n] = input.channels[n];
     if (!sdf.ok())
-        return JobError{Failure::Work, what + ": " + label + " has errors" + (what == "audit" ? "" : "; nothing written"),
-                        sdf.diagnostics};
+        return JobError{Failure::Work,
+                        what + ": " + label + " has errors" + (what == "audit" ? "" : "; nothing written"),
+                        sdf.diagnostics,
+                        {}};
     if (sdf.entrySource == shaders::EntrySource::March) log::info(what, label + ": entry automatic: " + sdf.entryReason);
     auto resolved = shaders::resolveParameters(sdf.parameters, input.params);
-    if (!resolved) return usage("'params': " + label + ": " + resolved.error().message);
+    if (!resolved) return usage(key("params") + ": " + label + ": " + resolved.error().message);
     for (const std::string& warning : resolved->warnings) log::warning(what, warning);
     return OpenedSdf{std::move(sdf), label, std::move(resolved->settings), std::move(resolved->warnings)};
 }
@@ -191,26 +195,28 @@ std::optional<JobError> validate(const values::RenderRequest& request) {
     if (auto error = checkFrame(request.frame)) return error;
     const std::string extension = fs::path(request.output).extension().string();
     auto writable = renderer::canWriteImageExtension(extension);
-    if (!writable) return JobError{Failure::Work, "'output': '" + request.output + "': " + writable.error().message, {}};
+    if (!writable) return workError(key("output") + ": '" + request.output + "': " + writable.error().message);
     if (!*writable)
-        return usage("'output': '" + request.output + "': unsupported image type '" + extension + "' (use .png, .jpg or .exr)");
+        return usage(key("output") + ": '" + request.output + "': unsupported image type '" + extension +
+                     "' (use .png, .jpg or .exr)");
     return checkOutputFolder(request.output);
 }
 
 std::optional<JobError> validate(const values::ProbeRequest& request) {
     if (auto error = checkFrame(request.frame)) return error;
     if (request.x < 0 || request.y < 0 || request.x >= request.frame.width || request.y >= request.frame.height)
-        return usage("'x', 'y': " + std::to_string(request.x) + "," + std::to_string(request.y) + " lies outside the " +
-                     std::to_string(request.frame.width) + "x" + std::to_string(request.frame.height) + " frame");
+        return usage(keys({"x", "y"}) + ": " + std::to_string(request.x) + "," + std::to_string(request.y) +
+                     " lies outside the " + std::to_string(request.frame.width) + "x" + std::to_string(request.frame.height) +
+                     " frame");
     return std::nullopt;
 }
 
 std::optional<JobError> validate(const values::AnimateRequest& request) {
     if (auto error = checkFrame(request.frame)) return error;
     if (fs::path(request.output).extension() != ".mp4")
-        return usage("'output': '" + request.output + "': animations are written as .mp4 (H.264)");
-    if (!(request.seconds > 0.0f) || request.seconds > 3600.0f) return usage("'seconds': must be in (0, 3600]");
-    if (request.framesPerSecond < 1 || request.framesPerSecond > 240) return usage("'fps': must be 1..240");
+        return usage(key("output") + ": '" + request.output + "': animations are written as .mp4 (H.264)");
+    if (!(request.seconds > 0.0f) || request.seconds > 3600.0f) return usage(key("seconds") + ": must be in (0, 3600]");
+    if (request.framesPerSecond < 1 || request.framesPerSecond > 240) return usage(key("fps") + ": must be 1..240");
     return checkOutputFolder(request.output);
 }
 
@@ -257,47 +263,51 @@ Expected<std::vector<std::pair<float, float>>> nearMixture(const std::string& te
                 if (used != item.size() - colon - 1) throw std::invalid_argument(item);
             }
         } catch (const std::exception&) {
-            return makeError("'near_widths': '" + item + "' is not WIDTH or WIDTH:WEIGHT (e.g. 0.005:0.8,0.05:0.2)");
+            return makeError(key("near_widths") + ": '" + item + "' is not WIDTH or WIDTH:WEIGHT (e.g. 0.005:0.8,0.05:0.2)");
         }
         if (!(width > 0.0f) || !std::isfinite(width) || !(weight > 0.0f) || !std::isfinite(weight))
-            return makeError("'near_widths': '" + item + "': widths and weights must be positive");
+            return makeError(key("near_widths") + ": '" + item + "': widths and weights must be positive");
         mixture.emplace_back(width, weight);
         start = end + 1;
     }
-    if (mixture.size() > 4) return makeError("'near_widths': at most 4 components, got " + std::to_string(mixture.size()));
+    if (mixture.size() > 4)
+        return makeError(key("near_widths") + ": at most 4 components, got " + std::to_string(mixture.size()));
     return mixture;
 }
 
 std::optional<JobError> validate(const values::SampleRequest& request) {
-    if (request.pattern.empty()) return usage("'pattern': no sampling pattern given");
-    if (!std::isfinite(request.time)) return usage("'time': expected a finite number");
+    if (request.pattern.empty()) return usage(key("pattern") + ": no sampling pattern given");
+    if (!std::isfinite(request.time)) return usage(key("time") + ": expected a finite number");
     if (!(request.gradientStep >= 0.0f) || !std::isfinite(request.gradientStep))
-        return usage("'gradient_step': must be positive (or 0: the default)");
+        return usage(key("gradient_step") + ": must be positive (or 0: the default)");
     if (!(request.surfaceTolerance > 0.0f) || !std::isfinite(request.surfaceTolerance))
-        return usage("'surface_tolerance': must be positive");
+        return usage(key("surface_tolerance") + ": must be positive");
     if (request.shardCount == 0 || request.shardIndex >= request.shardCount)
-        return usage("'shard_index', 'shard_count': expected K/COUNT with 0 <= K < COUNT, got '" +
+        return usage(keys({"shard_index", "shard_count"}) + ": expected K/COUNT with 0 <= K < COUNT, got '" +
                      std::to_string(request.shardIndex) + "/" + std::to_string(request.shardCount) + "'");
-    if (auto mixture = nearMixture(request.nearWidths); !mixture) return usage(mixture.error().message);
+    if (auto mixture = nearMixture(request.nearWidths); !mixture) return usage(mixture.error().keyed());
     if (!request.nearWidths.empty() && request.pattern != "near")
-        return usage("'near_widths': only the near pattern takes widths (the pattern is '" + request.pattern + "')");
+        return usage(key("near_widths") + ": only the near pattern takes widths (the pattern is '" + request.pattern + "')");
     if (!(request.nearTruncation >= 0.0f) || !std::isfinite(request.nearTruncation))
-        return usage("'near_truncation': expected 0 (none) or a positive number of standard deviations");
-    if (request.nearTruncation > 0.0f && request.nearWidths.empty()) return usage("'near_truncation': needs 'near_widths'");
+        return usage(key("near_truncation") + ": expected 0 (none) or a positive number of standard deviations");
+    if (request.nearTruncation > 0.0f && request.nearWidths.empty())
+        return usage(key("near_truncation") + ": needs " + key("near_widths"));
     if (auto error = checkFamily(request.family)) return error;
     if (!request.family.empty() && request.shardCount > 1)
-        return usage("'shard_index', 'shard_count' cannot be combined with 'sweep' or 'randomize'");
+        return usage(keys({"shard_index", "shard_count"}) + " cannot be combined with " + key("sweep") + " or " +
+                     key("randomize"));
     const sampling::SamplingJob job = samplingJob(request);
-    if (auto ok = sampling::validate(job); !ok) return usage(ok.error().message);
+    if (auto ok = sampling::validate(job); !ok) return usage(ok.error().keyed());
     if (!request.output.empty()) {
         std::optional<sampling::SampleFormat> format =
             request.format.empty() ? sampling::formatFromPath(request.output) : sampling::parseFormat(request.format);
         if (!format)
-            return usage(request.format.empty() ? "'output': '" + request.output +
-                                                      "': unknown sample file type (use .bin, .npz or .ply, or --format)"
-                                                : "'format': unknown format '" + request.format + "' (bin, npz, ply)");
+            return usage(request.format.empty()
+                             ? key("output") + ": '" + request.output +
+                                   "': unknown sample file type (use .bin, .npz or .ply, or " + key("format") + ")"
+                             : key("format") + ": unknown format '" + request.format + "' (bin, npz, ply)");
         if (job.rows() > sampling::maxRows(*format))
-            return usage("'n': " + std::to_string(job.rows()) + " rows exceed the ." + sampling::formatName(*format) +
+            return usage(key("n") + ": " + std::to_string(job.rows()) + " rows exceed the ." + sampling::formatName(*format) +
                          " limit of " + std::to_string(sampling::maxRows(*format)));
         if (auto error = checkOutputFolder(request.output)) return error;
     }
@@ -305,18 +315,19 @@ std::optional<JobError> validate(const values::SampleRequest& request) {
 }
 
 std::optional<JobError> validate(const values::AuditRequest& request) {
-    if (request.samples < 64 || request.samples > 100000000) return usage("'samples': must be 64..100000000");
-    if (!std::isfinite(request.time)) return usage("'time': expected a finite number");
-    if (!inRange(request.truncationReach, 0.1, 100.0)) return usage("'truncation_reach': must be 0.1..100");
-    if (request.resolution < 2 || request.resolution > 4096) return usage("'resolution': must be 2..4096");
+    if (request.samples < 64 || request.samples > 100000000) return usage(key("samples") + ": must be 64..100000000");
+    if (!std::isfinite(request.time)) return usage(key("time") + ": expected a finite number");
+    if (!inRange(request.truncationReach, 0.1, 100.0)) return usage(key("truncation_reach") + ": must be 0.1..100");
+    if (request.resolution < 2 || request.resolution > 4096) return usage(key("resolution") + ": must be 2..4096");
     if (request.plane) {
         const values::PlaneSpec& plane = *request.plane;
         if (plane.normal == glm::vec3(0.0f) || !std::isfinite(plane.offset) || !std::isfinite(plane.normal.x) ||
             !std::isfinite(plane.normal.y) || !std::isfinite(plane.normal.z))
-            return usage("'plane': expected NX,NY,NZ,OFFSET with a non-zero normal");
+            return usage(key("plane") + ": expected NX,NY,NZ,OFFSET with a non-zero normal");
     }
     if (auto error = checkFamily(request.family)) return error;
-    if (!request.family.empty() && request.plane) return usage("'plane' cannot be combined with 'sweep' or 'randomize'");
+    if (!request.family.empty() && request.plane)
+        return usage(key("plane") + " cannot be combined with " + key("sweep") + " or " + key("randomize"));
     return checkSdf(request.sdf);
 }
 
@@ -324,10 +335,10 @@ std::optional<JobError> validate(const values::MergeRequest& request) {
     std::optional<sampling::SampleFormat> format =
         request.format.empty() ? sampling::formatFromPath(request.output) : sampling::parseFormat(request.format);
     if (!format)
-        return usage(request.format.empty()
-                         ? "'output': '" + request.output + "': unknown sample file type (use .bin, .npz or .ply, or 'format')"
-                         : "'format': unknown format '" + request.format + "' (bin, npz, ply)");
-    if (request.parts.empty()) return usage("parts: no shard files given");
+        return usage(request.format.empty() ? key("output") + ": '" + request.output +
+                                                  "': unknown sample file type (use .bin, .npz or .ply, or " + key("format") + ")"
+                                            : key("format") + ": unknown format '" + request.format + "' (bin, npz, ply)");
+    if (request.parts.empty()) return usage(key("parts") + ": no shard files given");
     return std::nullopt;
 }
 
@@ -336,17 +347,17 @@ std::optional<JobError> validate(const values::ParamsRequest& request) { return 
 JobResult<values::ParamsReport> run(const values::ParamsRequest& request, const ProgressSink&) {
     if (auto error = validate(request)) return *error;
     auto path = resolve(request.sdf);
-    if (!path) return usage(path.error().message);
+    if (!path) return usage(path.error().keyed());
     const std::string label = path->empty() ? std::string("<source>") : path->string();
     std::string text = request.sdf.source;
     if (text.empty()) {
         auto read = readTextFile(*path);
-        if (!read) return JobError{Failure::Work, read.error().message, {}};
+        if (!read) return workError(read.error().keyed());
         text = std::move(*read);
     }
     shaders::ParameterScan scan = shaders::parseParameters(text, label);
     if (shaders::hasErrors(scan.diagnostics))
-        return JobError{Failure::Work, "params: " + label + " declares parameters with errors", scan.diagnostics};
+        return JobError{Failure::Work, "params: " + label + " declares parameters with errors", scan.diagnostics, {}};
     values::ParamsReport report;
     report.sdf = label;
     for (const shaders::Diagnostic& d : scan.diagnostics) report.warnings.push_back(shaders::formatDiagnostic(d));
@@ -369,8 +380,8 @@ JobResult<values::ParamsReport> run(const values::ParamsRequest& request, const 
 }
 
 std::optional<JobError> validate(const values::BenchRequest& request) {
-    if (request.repeats < 1 || request.repeats > 100) return usage("'repeats': must be 1..100");
-    if (request.outputDirectory.empty()) return usage("'output': no report folder given");
+    if (request.repeats < 1 || request.repeats > 100) return usage(key("repeats") + ": must be 1..100");
+    if (request.outputDirectory.empty()) return usage(key("output") + ": no report folder given");
     return std::nullopt;
 }
 

@@ -19,25 +19,23 @@ namespace {
 std::optional<JobError> checkBoundsAndTime(const glm::vec3& low, const glm::vec3& high, float time) {
     for (int a = 0; a < 3; ++a)
         if (!std::isfinite(low[a]) || !std::isfinite(high[a]) || !(high[a] > low[a]))
-            return JobError{Failure::Usage,
-                            "--bounds: expected finite MINX,MINY,MINZ,MAXX,MAXY,MAXZ with each maximum above its minimum",
-                            {}};
-    if (!std::isfinite(time)) return JobError{Failure::Usage, "'time': expected a finite number", {}};
+            return usageError(keys({"bounds_min", "bounds_max"}) +
+                              ": expected finite MINX,MINY,MINZ,MAXX,MAXY,MAXZ with each maximum above its minimum");
+    if (!std::isfinite(time)) return usageError(key("time") + ": expected a finite number");
     return std::nullopt;
 }
 
 // Everything but the output file.
 std::optional<JobError> validateSettings(const values::MeshRequest& request) {
     if (request.resolution < 2 || request.resolution > 2048)
-        return JobError{Failure::Usage, "'resolution': must be 2..2048, got " + std::to_string(request.resolution), {}};
+        return usageError(key("resolution") + ": must be 2..2048, got " + std::to_string(request.resolution));
     if (request.refine < 0 || request.refine > 4)
-        return JobError{Failure::Usage,
-                        "'refine': must be 0..4 (each level four times the triangles), got " + std::to_string(request.refine),
-                        {}};
+        return usageError(key("refine") + ": must be 0..4 (each level four times the triangles), got " +
+                          std::to_string(request.refine));
     if (auto error = checkBoundsAndTime(request.boundsMin, request.boundsMax, request.time)) return error;
     if (request.lipschitz && (!std::isfinite(*request.lipschitz) || *request.lipschitz < 0.0f))
-        return JobError{Failure::Usage, "'lipschitz': expected a finite number >= 0 (0 skips nothing)", {}};
-    if (request.errorSamples > 10000000) return JobError{Failure::Usage, "'error_samples': at most 10000000", {}};
+        return usageError(key("lipschitz") + ": expected a finite number >= 0 (0 skips nothing)");
+    if (request.errorSamples > 10000000) return usageError(key("error_samples") + ": at most 10000000");
     values::ParamsRequest sdfOnly{request.sdf};
     return validate(sdfOnly); // the SDF's name, entry and parameter values
 }
@@ -46,14 +44,12 @@ std::optional<JobError> validateSettings(const values::MeshRequest& request) {
 
 std::optional<JobError> validate(const values::MeshRequest& request) {
     if (!meshing::canWriteMesh(request.output))
-        return JobError{
-            Failure::Usage, "'output': '" + request.output + "': unsupported mesh type (use .ply, .obj, .stl or .glb)", {}};
+        return usageError(key("output") + ": '" + request.output + "': unsupported mesh type (use .ply, .obj, .stl or .glb)");
     const std::filesystem::path folder =
         std::filesystem::path(request.output).parent_path().empty() ? "." : std::filesystem::path(request.output).parent_path();
     std::error_code ec;
     if (!std::filesystem::is_directory(folder, ec))
-        return JobError{
-            Failure::Usage, "'output': '" + request.output + "': folder '" + folder.string() + "' does not exist", {}};
+        return usageError(key("output") + ": '" + request.output + "': folder '" + folder.string() + "' does not exist");
     return validateSettings(request);
 }
 
@@ -89,7 +85,7 @@ JobResult<MeshedSdf> meshSdf(const values::MeshRequest& request, const ProgressS
         audit.convergence = false;
         audit.parameters = sdf->parameters;
         auto found = sampling::auditField(sdf->prepared, audit, {});
-        if (!found) return JobError{Failure::Work, found.error().message, {}};
+        if (!found) return workError(found.error().keyed());
         verdict = found->verdict;
         if (!request.lipschitz) {
             if (!std::isfinite(found->lipschitzMax) || found->verdict == values::Finding::Nan ||
@@ -113,19 +109,17 @@ JobResult<MeshedSdf> meshSdf(const values::MeshRequest& request, const ProgressS
         options.lipschitz = *request.lipschitz;
         report.boundSource = *request.lipschitz > 0.0f ? "given (--lipschitz)" : "none: every block evaluated (--lipschitz 0)";
     }
-    report.fieldVerdict = verdict ? values::findingName(*verdict) : "";
+    report.fieldVerdict = verdict;
     auto extracted = meshing::extractMesh(sdf->prepared, options, progress);
-    if (progress.isCancelled()) return JobError{Failure::Cancelled, "mesh: cancelled; nothing written", {}};
-    if (!extracted) return JobError{Failure::Work, extracted.error().message, {}};
+    if (progress.isCancelled()) return JobError{Failure::Cancelled, "mesh: cancelled; nothing written", {}, {}};
+    if (!extracted) return workError(extracted.error().keyed());
     MeshedSdf result{std::move(extracted->first), {}};
     const meshing::Mesh& mesh = result.mesh;
     const meshing::MeshStats& stats = extracted->second;
     report.lipschitzBound = stats.lipschitzUsed;
     if (mesh.indices.empty())
-        return JobError{Failure::Work,
-                        "mesh: " + sdf->label + " has no surface inside the bounds at resolution " +
-                            std::to_string(request.resolution) + "; nothing written",
-                        {}};
+        return workError("mesh: " + sdf->label + " has no surface inside the bounds at resolution " +
+                         std::to_string(request.resolution) + "; nothing written");
     report.vertices = mesh.vertices.size();
     report.triangles = mesh.triangleCount();
     const auto topologyStart = std::chrono::steady_clock::now();
@@ -163,7 +157,7 @@ JobResult<MeshedSdf> meshSdf(const values::MeshRequest& request, const ProgressS
         errorOptions.fieldIsExact = verdict == values::Finding::Exact;
         if (stats.boundsCutPoints > 0) errorOptions.cut = meshing::cutBox(options);
         auto error = meshing::measureError(sdf->prepared, mesh, errorOptions);
-        if (!error) return JobError{Failure::Work, error.error().message, {}};
+        if (!error) return workError(error.error().keyed());
         report.meshToSurfaceMean = error->meshToSurfaceMean;
         report.meshToSurfaceMax = error->meshToSurfaceMax;
         report.surfaceToMeshMean = error->surfaceToMeshMean;
@@ -187,7 +181,7 @@ JobResult<values::MeshReport> run(const values::MeshRequest& request, const Prog
     if (!meshed->report.meshSource.json.empty()) comments.push_back("sdfwb_mesh_source " + meshed->report.meshSource.json);
     const auto writeStart = std::chrono::steady_clock::now();
     if (auto written = meshing::writeMesh(request.output, meshed->mesh, comments); !written)
-        return JobError{Failure::Work, written.error().message, {}};
+        return workError(written.error().keyed());
     values::MeshReport report = meshed->report;
     report.phaseSeconds.push_back(
         {"write", std::chrono::duration<double>(std::chrono::steady_clock::now() - writeStart).count()});
@@ -201,19 +195,18 @@ JobResult<values::MeshReport> run(const values::MeshRequest& request, const Prog
 namespace sdfwb::jobs {
 
 std::optional<JobError> validate(const values::EvalRequest& request) {
-    if (request.mesh.empty()) return JobError{Failure::Usage, "'mesh': no mesh file given", {}};
+    if (request.mesh.empty()) return usageError(key("mesh") + ": no mesh file given");
     std::error_code ec;
     if (!std::filesystem::is_regular_file(request.mesh, ec))
-        return JobError{Failure::Usage, "'mesh': '" + request.mesh + "': no such file", {}};
-    if (request.points < 100 || request.points > 10000000) return JobError{Failure::Usage, "'points': must be 100..10000000", {}};
-    if (!(request.tau > 0.0f) || !std::isfinite(request.tau))
-        return JobError{Failure::Usage, "'tau': must be a positive number", {}};
+        return usageError(key("mesh") + ": '" + request.mesh + "': no such file");
+    if (request.points < 100 || request.points > 10000000) return usageError(key("points") + ": must be 100..10000000");
+    if (!(request.tau > 0.0f) || !std::isfinite(request.tau)) return usageError(key("tau") + ": must be a positive number");
     if (request.occupancyResolution < 0 || request.occupancyResolution > 512)
-        return JobError{Failure::Usage, "'occupancy_resolution': must be 0..512 (0: no IoU)", {}};
+        return usageError(key("occupancy_resolution") + ": must be 0..512 (0: no IoU)");
     if (!(request.edgeRadius >= 0.0f) || !std::isfinite(request.edgeRadius))
-        return JobError{Failure::Usage, "'edge_radius': must be 0 (no edge measures) or a positive number", {}};
+        return usageError(key("edge_radius") + ": must be 0 (no edge measures) or a positive number");
     if (!(request.edgeAngle > 0.0f && request.edgeAngle < 180.0f))
-        return JobError{Failure::Usage, "'edge_angle': must be between 0 and 180 degrees", {}};
+        return usageError(key("edge_angle") + ": must be between 0 and 180 degrees");
     if (auto error = checkBoundsAndTime(request.boundsMin, request.boundsMax, request.time)) return error;
     values::ParamsRequest sdfOnly{request.sdf};
     return validate(sdfOnly);
@@ -223,7 +216,7 @@ JobResult<values::EvalReport> run(const values::EvalRequest& request, const Prog
     const auto start = std::chrono::steady_clock::now();
     if (auto error = validate(request)) return *error;
     auto mesh = meshing::readMesh(request.mesh);
-    if (!mesh) return JobError{Failure::Work, "grade: " + mesh.error().message, {}};
+    if (!mesh) return workError("grade: " + mesh.error().message);
     auto sdf = openSdf(request.sdf, "grade");
     if (!sdf) return sdf.error;
     meshing::EvalOptions options;
@@ -238,7 +231,7 @@ JobResult<values::EvalReport> run(const values::EvalRequest& request, const Prog
     options.time = request.time;
     options.parameters = sdf->parameters;
     auto e = meshing::evaluateMesh(sdf->prepared, *mesh, options);
-    if (!e) return JobError{Failure::Work, e.error().message, {}};
+    if (!e) return workError(e.error().keyed());
     values::EvalReport report;
     report.mesh = request.mesh;
     report.sdf = sdf->label;

@@ -93,7 +93,7 @@ std::optional<JobError> setUp(renderer::SdfRenderer& tracer, const values::Frame
     tracer.setParameters(sdf.parameters);
     auto diagnostics = tracer.setSdf(sdf.prepared);
     if (!shaders::hasErrors(diagnostics)) return std::nullopt;
-    return JobError{Failure::Work, what + ": the driver rejected " + sdf.label + "; nothing written", diagnostics};
+    return JobError{Failure::Work, what + ": the driver rejected " + sdf.label + "; nothing written", diagnostics, {}};
 }
 
 } // namespace
@@ -113,8 +113,8 @@ JobResult<values::RenderReport> run(const values::RenderRequest& request, const 
         picture.setParameters(sdf->parameters);
         auto diagnostics = picture.setSdf(sdf->prepared);
         if (shaders::hasErrors(diagnostics))
-            return JobError{Failure::Work, "render: " + sdf->label + " has no Shadertoy picture to draw; nothing written",
-                            diagnostics};
+            return JobError{
+                Failure::Work, "render: " + sdf->label + " has no Shadertoy picture to draw; nothing written", diagnostics, {}};
         const auto drawStart = Clock::now();
         renderer::ShadertoyInputs inputs;
         inputs.time = frame.time;
@@ -125,8 +125,7 @@ JobResult<values::RenderReport> run(const values::RenderRequest& request, const 
         report.frameMilliseconds = secondsSince(drawStart) * 1e3;
         picture.releaseGl();
         image.metadata = sdf->fileMetadata();
-        if (auto written = renderer::writeImage(request.output, image); !written)
-            return JobError{Failure::Work, written.error().message, {}};
+        if (auto written = renderer::writeImage(request.output, image); !written) return workError(written.error().keyed());
         report.output = request.output;
         report.sdf = sdf->label;
         report.entry = "mainImage";
@@ -162,7 +161,7 @@ JobResult<values::RenderReport> run(const values::RenderRequest& request, const 
             : renderAndWrite([&](renderer::OffscreenRenderer& o) {
                   return o.render(tracer, frame.width, frame.height, frame.camera, frame.time, &stats);
               });
-    if (!written) return JobError{Failure::Work, written.error().message, {}};
+    if (!written) return workError(written.error().keyed());
     report.output = request.output;
     report.sdf = sdf->label;
     report.entry = sdf->prepared.signature.entry;
@@ -339,7 +338,7 @@ JobResult<values::AnimateReport> run(const values::AnimateRequest& request, cons
         endValues.push_back(value);
     }
     auto end = shaders::resolveParameters(sdf->prepared.parameters, endValues);
-    if (!end) return JobError{Failure::Usage, "'params_end': " + sdf->label + ": " + end.error().message, {}};
+    if (!end) return usageError(key("params_end") + ": " + sdf->label + ": " + end.error().message);
     report.warnings.insert(report.warnings.end(), end->warnings.begin(), end->warnings.end());
     const bool keyframed = !request.paramsEnd.empty();
     if (!request.turntable && !sdf->prepared.usesTime() && !keyframed) {
@@ -351,7 +350,7 @@ JobResult<values::AnimateReport> run(const values::AnimateRequest& request, cons
     const values::FrameRequest& frame = request.frame;
     auto writer =
         renderer::VideoWriter::open(request.output, frame.width, frame.height, request.framesPerSecond, sdf->fileMetadata());
-    if (!writer) return JobError{Failure::Work, writer.error().message, {}};
+    if (!writer) return workError(writer.error().keyed());
 
     const int frames = std::max(1, int(std::lround(double(request.seconds) * request.framesPerSecond)));
     const std::string label = frame.overlay ? overlayText(frame, *sdf, report.warnings) : std::string();
@@ -378,13 +377,13 @@ JobResult<values::AnimateReport> run(const values::AnimateRequest& request, cons
                                        renderer::FrameScaler::kTimingScale);
                 report.renderSeconds += warm.cpuMilliseconds / 1000.0;
             }
-            if (auto ok = (*writer)->addFrame(image); !ok) return JobError{Failure::Work, ok.error().message, {}};
+            if (auto ok = (*writer)->addFrame(image); !ok) return workError(ok.error().keyed());
             progress(std::uint64_t(i + 1), std::uint64_t(frames));
         }
     }
     tracer.releaseGl();
-    if (progress.isCancelled()) return JobError{Failure::Cancelled, "animate: cancelled; nothing written", {}};
-    if (auto ok = (*writer)->finish(); !ok) return JobError{Failure::Work, ok.error().message, {}};
+    if (progress.isCancelled()) return JobError{Failure::Cancelled, "animate: cancelled; nothing written", {}, {}};
+    if (auto ok = (*writer)->finish(); !ok) return workError(ok.error().keyed());
     report.output = request.output;
     report.sdf = sdf->label;
     report.meshSource = sdf->meshSource();

@@ -38,8 +38,6 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-JobError usage(const std::string& message) { return {Failure::Usage, message, {}}; }
-
 std::string statusPath(const values::RunRequest& request) {
     if (!request.status.empty()) return request.status;
     if (request.worldSize > 1)
@@ -443,30 +441,31 @@ struct IgnoreSigpipe {
 } // namespace
 
 std::optional<JobError> validate(const values::RunRequest& request) {
-    if (request.manifest.empty()) return usage("run: no manifest given");
-    if (request.worldSize < 1) return usage("'world_size': must be at least 1");
+    if (request.manifest.empty()) return usageError("run: no manifest given");
+    if (request.worldSize < 1) return usageError(key("world_size") + ": must be at least 1");
     if (request.rank >= request.worldSize)
-        return usage("'rank': must be below 'world_size' (" + std::to_string(request.worldSize) + "), got " +
-                     std::to_string(request.rank));
+        return usageError(key("rank") + ": must be below " + key("world_size") + " (" + std::to_string(request.worldSize) +
+                          "), got " + std::to_string(request.rank));
     if (!request.items.empty() && request.worldSize > 1)
-        return usage("'items': names the items to run; it cannot be combined with 'world_size'");
+        return usageError(key("items") + ": names the items to run; it cannot be combined with " + key("world_size"));
     if (!std::isfinite(request.itemTimeout) || request.itemTimeout < 0.0)
-        return usage("'item_timeout': expected seconds >= 0 (0: no limit)");
+        return usageError(key("item_timeout") + ": expected seconds >= 0 (0: no limit)");
     const fs::path binary = executable(request);
     std::error_code ec;
     if (request.executable.empty() && binary.filename() != "sdfwb")
-        return usage("run: this process (" + binary.string() + ") is not sdfwb; give \"executable\": the sdfwb binary's path");
-    if (!fs::is_regular_file(binary, ec)) return usage("run: executable '" + binary.string() + "' does not exist");
+        return usageError("run: this process (" + binary.string() +
+                          ") is not sdfwb; give \"executable\": the sdfwb binary's path");
+    if (!fs::is_regular_file(binary, ec)) return usageError("run: executable '" + binary.string() + "' does not exist");
     const fs::path status = statusPath(request);
     const fs::path folder = status.parent_path().empty() ? fs::path(".") : status.parent_path();
     if (!fs::is_directory(folder, ec))
-        return usage("'status': '" + status.string() + "': folder '" + folder.string() + "' does not exist");
+        return usageError(key("status") + ": '" + status.string() + "': folder '" + folder.string() + "' does not exist");
     auto items = readManifest(request.manifest);
-    if (!items) return usage(items.error().message);
+    if (!items) return usageError(items.error().keyed());
     for (std::uint64_t item : request.items)
         if (item >= items->size())
-            return usage("'items': " + std::to_string(item) + " is past the manifest's last item (" +
-                         std::to_string(items->size() - 1) + ")");
+            return usageError(key("items") + ": " + std::to_string(item) + " is past the manifest's last item (" +
+                              std::to_string(items->size() - 1) + ")");
     return std::nullopt;
 }
 
@@ -498,8 +497,7 @@ JobResult<values::RunReport> run(const values::RunRequest& request, const Progre
             result = record != records.end() && record->second.key == item.key ? record->second : itemReport(item);
         } else {
             result = runItem(item, request, launch, worker, progress);
-            if (auto appended = appendStatus(report.status, result); !appended)
-                return JobError{Failure::Work, appended.error().message, {}};
+            if (auto appended = appendStatus(report.status, result); !appended) return workError(appended.error().keyed());
         }
         if (result.status == values::ItemStatus::Done && !request.list) {
             ++report.done;
@@ -516,6 +514,7 @@ JobResult<values::RunReport> run(const values::RunRequest& request, const Progre
             return JobError{Failure::Cancelled,
                             "run: cancelled; " + std::to_string(report.done) + " items were done and recorded in " +
                                 report.status,
+                            {},
                             {}};
     }
     report.seconds = std::chrono::duration<double>(Clock::now() - start).count();

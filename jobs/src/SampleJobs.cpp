@@ -40,9 +40,9 @@ std::string indexPath(const std::string& output) {
 JobResult<values::SampleReport> run(const values::SampleRequest& request, const ProgressSink& progress) {
     const auto start = std::chrono::steady_clock::now();
     if (auto error = validate(request)) return *error;
-    if (request.output.empty()) return JobError{Failure::Usage, "'output': no output file given", {}};
+    if (request.output.empty()) return usageError(key("output") + ": no output file given");
     auto sampler = sampling::findSampler(request.pattern, sampling::samplerFolders());
-    if (!sampler) return JobError{Failure::Usage, "'pattern': " + sampler.error().message, {}};
+    if (!sampler) return usageError(key("pattern") + ": " + sampler.error().message);
     const sampling::SampleFormat format =
         *(request.format.empty() ? sampling::formatFromPath(request.output) : sampling::parseFormat(request.format));
     auto sdf = openSdf(request.sdf, "sample");
@@ -53,8 +53,7 @@ JobResult<values::SampleReport> run(const values::SampleRequest& request, const 
         auto family = shaders::familyInstances(sdf->prepared.parameters, request.sdf.params, request.family.sweeps,
                                                request.family.randomize, request.seed);
         if (!family)
-            return JobError{
-                Failure::Usage, (request.family.randomize ? "'randomize': " : "'sweep': ") + family.error().message, {}};
+            return usageError((request.family.randomize ? key("randomize") : key("sweep")) + ": " + family.error().message);
         instances = std::move(*family);
     }
     std::vector<std::vector<shaders::ParameterSetting>> settings;
@@ -62,7 +61,7 @@ JobResult<values::SampleReport> run(const values::SampleRequest& request, const 
     report.warnings = sdf->warnings;
     for (const auto& values : instances) {
         auto resolved = shaders::resolveParameters(sdf->prepared.parameters, values);
-        if (!resolved) return JobError{Failure::Usage, "'params': " + sdf->label + ": " + resolved.error().message, {}};
+        if (!resolved) return usageError(key("params") + ": " + sdf->label + ": " + resolved.error().message);
         settings.push_back(std::move(resolved->settings));
     }
     renderer::SampleCompute compute;
@@ -70,7 +69,8 @@ JobResult<values::SampleReport> run(const values::SampleRequest& request, const 
     if (shaders::hasErrors(diagnostics))
         return JobError{Failure::Work,
                         "sample: " + sdf->label + " with pattern '" + request.pattern + "' does not compile; nothing written",
-                        diagnostics};
+                        diagnostics,
+                        {}};
     report.setupSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     sampling::SamplingJob job = samplingJob(request);
     sampling::SampleMetadata metadata;
@@ -103,7 +103,7 @@ JobResult<values::SampleReport> run(const values::SampleRequest& request, const 
         if (!result) {
             compute.releaseGl();
             removeWritten();
-            return JobError{Failure::Work, result.error().message, {}};
+            return workError(result.error().keyed());
         }
         if (result->cancelled) {
             compute.releaseGl();
@@ -111,6 +111,7 @@ JobResult<values::SampleReport> run(const values::SampleRequest& request, const 
             return JobError{Failure::Cancelled,
                             "sample: cancelled after " + std::to_string(before + result->rows) + " of " + std::to_string(total) +
                                 " samples; nothing written",
+                            {},
                             {}};
         }
         written.push_back(output);
@@ -138,7 +139,7 @@ JobResult<values::SampleReport> run(const values::SampleRequest& request, const 
         report.index = indexPath(request.output);
         if (auto ok = writeFileAtomically(report.index, toJson(report, 2) + "\n"); !ok) {
             removeWritten();
-            return JobError{Failure::Work, ok.error().message, {}};
+            return workError(ok.error().keyed());
         }
     }
     return report;
@@ -151,7 +152,7 @@ JobResult<values::MergeReport> run(const values::MergeRequest& request, const Pr
     std::vector<std::filesystem::path> parts(request.parts.begin(), request.parts.end());
     const auto start = std::chrono::steady_clock::now();
     auto merged = sampling::mergeSampleFiles(request.output, format, parts);
-    if (!merged) return JobError{Failure::Work, merged.error().message, {}};
+    if (!merged) return workError(merged.error().keyed());
     values::MergeReport report;
     report.output = request.output;
     report.rows = merged->rows;
@@ -171,7 +172,7 @@ JobResult<values::ListReport> run(const values::ListRequest& request, const Prog
         report.items.push_back({m.name, m.category, dataset::declaredTypeName(m.type), entry.path.string(), m.author, m.license,
                                 m.notes, m.animated});
     }
-    if (report.items.empty()) return JobError{Failure::Work, "list: no SDFs found in " + report.root, {}};
+    if (report.items.empty()) return workError("list: no SDFs found in " + report.root);
     // The measured types and render times, from the dataset report when there is one.
     const std::filesystem::path measured =
         request.report.empty() ? paths::datasetRoot() / "report.json" : std::filesystem::path(request.report);

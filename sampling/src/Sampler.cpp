@@ -211,20 +211,21 @@ private:
 } // namespace
 
 Expected<void> validate(const SamplingJob& job) {
-    if (job.count == 0) return makeError("'n': the sample count must be at least 1");
+    if (job.count == 0) return makeError(key("n") + ": the sample count must be at least 1");
     if (job.count > 0xffffffffull)
         return makeError(
-            "-n: " + std::to_string(job.count) +
+            key("n") + ": " + std::to_string(job.count) +
             " samples exceed the limit of 4294967295 per run (shard larger jobs into several runs with different seeds)");
     if (job.indexOffset + job.count > 0x100000000ull)
-        return makeError("first_index: " + std::to_string(job.indexOffset) + " + " + std::to_string(job.count) +
+        return makeError(key("first_index") + ": " + std::to_string(job.indexOffset) + " + " + std::to_string(job.count) +
                          " samples pass the last sample index 4294967295");
     if (job.shardCount == 0 || job.shardIndex >= job.shardCount)
-        return makeError("'shard_index', 'shard_count': " + std::to_string(job.shardIndex) + "/" +
+        return makeError(keys({"shard_index", "shard_count"}) + ": " + std::to_string(job.shardIndex) + "/" +
                          std::to_string(job.shardCount) + " is not a slice (0 <= K < COUNT)");
-    if (!(job.gradientStep > 0.0f) || !std::isfinite(job.gradientStep)) return makeError("'gradient_step': must be positive");
+    if (!(job.gradientStep > 0.0f) || !std::isfinite(job.gradientStep))
+        return makeError(key("gradient_step") + ": must be positive");
     if (!(job.surfaceTolerance > 0.0f) || !std::isfinite(job.surfaceTolerance))
-        return makeError("'surface_tolerance': must be positive");
+        return makeError(key("surface_tolerance") + ": must be positive");
     return {};
 }
 

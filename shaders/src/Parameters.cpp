@@ -583,8 +583,8 @@ Expected<std::vector<std::vector<ParameterValue>>> familyInstances(const std::ve
     };
     std::vector<std::vector<ParameterValue>> instances;
     if (randomize > 0) {
-        if (!sweeps.empty()) return makeError("--sweep and --randomize cannot be combined");
-        if (randomize > kMaxInstances) return makeError("--randomize: at most 100000 instances");
+        if (!sweeps.empty()) return makeError(key("sweep") + " and " + key("randomize") + " cannot be combined");
+        if (randomize > kMaxInstances) return makeError("at most 100000 instances");
         std::vector<const Parameter*> drawn;
         for (const Parameter& p : declared) {
             bool fixed = false;
@@ -592,8 +592,7 @@ Expected<std::vector<std::vector<ParameterValue>>> familyInstances(const std::ve
             if (fixed) continue;
             if (p.type == ParameterType::Bool || (p.minimum && p.maximum)) drawn.push_back(&p);
         }
-        if (drawn.empty())
-            return makeError("--randomize: no parameter has a @range to draw from (" + declaredNames(declared) + ")");
+        if (drawn.empty()) return makeError("no parameter has a @range to draw from (" + declaredNames(declared) + ")");
         std::uint64_t state = seed;
         for (std::uint32_t i = 0; i < randomize; ++i) {
             std::vector<ParameterValue> set;
@@ -625,17 +624,15 @@ Expected<std::vector<std::vector<ParameterValue>>> familyInstances(const std::ve
     std::uint64_t total = 1;
     for (const ParameterSweep& s : sweeps) {
         const Parameter* p = findDeclared(declared, s.name);
-        if (!p)
-            return makeError("--sweep " + s.name + ": parameter '" + s.name + "' is not declared (" + declaredNames(declared) +
-                             ")");
+        if (!p) return makeError("parameter '" + s.name + "' is not declared (" + declaredNames(declared) + ")");
         const int n = componentCount(p->type);
         if (s.from.size() != 1 && int(s.from.size()) != n)
-            return makeError("--sweep " + s.name + ": '" + s.name + "' is a " + parameterTypeName(p->type) + ": give 1 or " +
-                             std::to_string(n) + " numbers at each end");
+            return makeError("'" + s.name + "' is a " + parameterTypeName(p->type) + ": give 1 or " + std::to_string(n) +
+                             " numbers at each end");
         for (const ParameterSweep& other : sweeps)
-            if (&other != &s && other.name == s.name) return makeError("--sweep " + s.name + ": swept twice");
+            if (&other != &s && other.name == s.name) return makeError("'" + s.name + "' is swept twice");
         total *= std::uint64_t(s.count);
-        if (total > kMaxInstances) return makeError("--sweep: more than 100000 instances in the grid");
+        if (total > kMaxInstances) return makeError("more than 100000 instances in the grid");
     }
     for (std::uint64_t i = 0; i < total; ++i) {
         std::vector<ParameterValue> set;

@@ -631,7 +631,7 @@ TEST(WorkerProtocol, MessagesReadBackAsTheyWereWritten) {
     EXPECT_EQ(progress.kind, WorkerMessage::Kind::Progress);
     EXPECT_EQ(progress.done, 3u);
     EXPECT_EQ(progress.total, 40u);
-    JobError error{Failure::Usage, "--size: expected WxH, got 'x'", {}};
+    JobError error{Failure::Usage, "--size: expected WxH, got 'x'", {}, {}};
     error.diagnostics.push_back({"scene.glsl", 12, 7, shaders::Severity::Error, "'q' : undeclared identifier"});
     error.diagnostics.push_back({"scene.glsl", 3, 0, shaders::Severity::Warning, "unused \"r\"\nsecond line"});
     const WorkerMessage failed = readWorkerMessage(errorMessage(error));
@@ -645,7 +645,7 @@ TEST(WorkerProtocol, MessagesReadBackAsTheyWereWritten) {
     EXPECT_EQ(failed.error.diagnostics[1].severity, shaders::Severity::Warning);
     EXPECT_EQ(failed.error.diagnostics[1].message, "unused \"r\"\nsecond line");
     for (Failure kind : {Failure::Work, Failure::NoGl, Failure::Cancelled})
-        EXPECT_EQ(readWorkerMessage(errorMessage({kind, "m", {}})).error.failure, kind);
+        EXPECT_EQ(readWorkerMessage(errorMessage({kind, "m", {}, {}})).error.failure, kind);
     values::ListReport list;
     values::ListItem torus;
     torus.name = "Torus";
@@ -724,9 +724,10 @@ TEST(JobJson, GradeIsTheMeshGradersNameAndEvalItsAlias) {
     EXPECT_NE(help.find("  grade "), std::string::npos);
 }
 
-// A library's usage error names the request's key; the CLI says the option that sets it (one
-// table, app/batch/commands/Common.cpp), and the worker protocol keeps the key (the GUI's terms).
-TEST(Jobs, TheCommandLineSaysItsOptionsWhereTheLibraryNamesKeys) {
+// A library's usage error names the request's key. A JSON request's failure keeps its keys, on
+// stderr and in the worker protocol alike: its writer wrote 'fps', not --fps (the command line's
+// options name their own: tests/app/test_cli.cpp, FailuresNameTheOptionsThatSetTheirKeys).
+TEST(Jobs, AJsonRequestsFailureNamesItsOwnKeys) {
     const std::filesystem::path file = std::filesystem::temp_directory_path() / ("sdfwb-keys-" + std::to_string(::getpid()));
     auto stderrOf = [&](const std::string& request, const std::string& flags) {
         std::FILE* out = std::fopen(file.c_str(), "w");
@@ -742,12 +743,13 @@ TEST(Jobs, TheCommandLineSaysItsOptionsWhereTheLibraryNamesKeys) {
         return output;
     };
     const std::string animate = R"({"kind": "animate", "sdf": "Sphere", "output": "/tmp/x.mp4", "fps": 0})";
-    EXPECT_NE(stderrOf(animate, "").find("sdfwb: --fps: must be 1..240"), std::string::npos) << stderrOf(animate, "");
+    EXPECT_EQ(stderrOf(animate, ""), "sdfwb: 'fps': must be 1..240\n");
     const std::string render = R"({"kind": "render", "sdf": "Sphere", "output": "/tmp/x.png", "width": 0})";
-    EXPECT_NE(stderrOf(render, "").find("sdfwb: --size: expected WxH"), std::string::npos) << stderrOf(render, "");
+    EXPECT_EQ(stderrOf(render, ""), "sdfwb: 'width', 'height': expected WxH with integers from 1 to 16384, got '0x720'\n");
     const std::string sample = R"({"kind": "sample", "sdf": "Sphere", "pattern": "rand", "n": 10, "output": "/tmp/x.npz",
                                    "shard_index": 3, "shard_count": 2})";
-    EXPECT_NE(stderrOf(sample, "").find("--shard"), std::string::npos) << stderrOf(sample, "");
+    EXPECT_EQ(stderrOf(sample, "").find("--shard"), std::string::npos) << stderrOf(sample, "");
+    EXPECT_NE(stderrOf(sample, "").find("'shard_index', 'shard_count': "), std::string::npos) << stderrOf(sample, "");
     const std::string viaProtocol = stderrOf(animate, "--protocol");
     EXPECT_NE(viaProtocol.find("'fps': must be 1..240"), std::string::npos) << viaProtocol;
     EXPECT_EQ(viaProtocol.find("--fps"), std::string::npos) << viaProtocol;

@@ -1,7 +1,5 @@
 #include "Common.h"
 
-#include "../KeyFlags.h"
-
 #include <jobs/Protocol.h>
 
 #include <algorithm>
@@ -10,6 +8,7 @@
 #include <cstdio>
 #include <optional>
 #include <unistd.h>
+#include <utility>
 #include <variant>
 
 namespace sdfwb::app {
@@ -19,14 +18,19 @@ namespace {
 // kind its exit code tells (usage, no GL, cancelled) unless the job said.
 std::atomic<bool> g_protocol{false};
 std::optional<jobs::JobError> g_pendingError;
+KeyTerms g_errorTerms; // empty: the request's own terms
 } // namespace
+
+ErrorTerms::ErrorTerms(KeyTerms terms) : m_previous(std::exchange(g_errorTerms, std::move(terms))) {}
+
+ErrorTerms::~ErrorTerms() { g_errorTerms = std::move(m_previous); }
 
 void setProtocolOutput(bool on) { g_protocol.store(on); }
 
 void printError(const std::string& message) {
     if (g_protocol.load()) {
         if (!g_pendingError)
-            g_pendingError = jobs::JobError{jobs::Failure::Work, message, {}};
+            g_pendingError = jobs::workError(message);
         else
             g_pendingError->message += (g_pendingError->message.empty() ? "" : "; ") + message;
         return;
@@ -50,24 +54,6 @@ int endProtocolRequest(int exitCode) {
     return exitCode;
 }
 
-std::string inFlagTerms(const std::string& message) {
-    // Only a message whose subject is a key (it starts with one): a manifest's line names its
-    // own columns ("jobs.csv:2: 'output': ...").
-    if (message.empty() || message.front() != '\'') return message;
-    std::string text = message;
-    auto replaceAll = [&text](const std::string& from, const std::string& to) {
-        for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
-            text.replace(at, from.size(), to);
-    };
-    for (const auto& [key, flag] : kRenamedKeys) replaceAll(key, flag);
-    for (const char* key : kSameNamedKeys) {
-        std::string flag = std::string("--") + key;
-        std::replace(flag.begin(), flag.end(), '_', '-');
-        replaceAll("'" + std::string(key) + "'", flag);
-    }
-    return text;
-}
-
 void printReport(const std::string& json, const OutputOptions& output) {
     std::printf("%s\n", output.protocol ? jobs::reportMessage(json).c_str() : json.c_str());
     std::fflush(stdout);
@@ -78,7 +64,7 @@ int reportFailure(const jobs::JobError& error) {
         g_pendingError = error;
     } else {
         for (const shaders::Diagnostic& d : error.diagnostics) std::fprintf(stderr, "%s\n", shaders::formatDiagnostic(d).c_str());
-        printError(inFlagTerms(error.message));
+        printError(g_errorTerms ? worded(error.message, error.keys, g_errorTerms) : error.message);
     }
     switch (error.failure) {
     case jobs::Failure::Usage:

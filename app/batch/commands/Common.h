@@ -14,13 +14,9 @@
 
 namespace sdfwb::app {
 
-// Prints the failure (the SDF's diagnostics first, the message in the CLI's terms) and returns its
-// exit code.
+// Prints the failure (the SDF's diagnostics first, then the message, its keys worded by the
+// ErrorTerms in effect: BatchCommands.h) and returns its exit code.
 int reportFailure(const jobs::JobError& error);
-
-// A library's message in the command line's terms: the request keys it names ('output', 'width',
-// 'height') become the options that set them (--output, --size), when the message's subject is a key.
-std::string inFlagTerms(const std::string& message);
 
 // Prints a report's JSON on stdout: as it is, or as the worker protocol's report message.
 void printReport(const std::string& json, const OutputOptions& output);

@@ -31,7 +31,8 @@ int runMesh(const values::MeshRequest& request, const OutputOptions& output) {
                         *r.meshToSurfaceMean, *r.meshToSurfaceMax, *r.surfaceToMeshMean, *r.surfaceToMeshMax, *r.hausdorff,
                         (unsigned long long)r.errorPoints, r.errorSeconds);
         if (r.hausdorff)
-            std::printf("  mesh->surface by    %s; field audited %s\n", r.meshToSurfaceMethod.c_str(), r.fieldVerdict.c_str());
+            std::printf("  mesh->surface by    %s; field audited %s\n", r.meshToSurfaceMethod.c_str(),
+                        r.fieldVerdict ? values::findingName(*r.fieldVerdict) : "not");
     });
 }
 

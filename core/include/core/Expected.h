@@ -2,16 +2,30 @@
 // Expected<T>: a value or an Error. Expected failures (I/O, compile errors, missing GL features)
 // travel as values; exceptions stay at main() and CLI boundaries.
 
+#include <core/KeyedText.h>
+
 #include <cassert>
 #include <string>
 #include <utility>
 #include <variant>
+#include <vector>
 
 namespace sdfwb {
 
 // A failure with a message that names the thing that failed: "module: what failed: detail".
+// Where the message names a request's keys ('n'), `keys` says where, so that each front end can
+// word them its own way (KeyedText.h).
 struct Error {
+    Error() = default;
+    explicit Error(std::string text, std::vector<KeyMention> mentions = {})
+        : message(std::move(text)), keys(std::move(mentions)) {}
+    explicit Error(const char* text) : message(text) {}
+    explicit Error(const KeyedText& text) : message(text.text()), keys(text.keys()) {}
+
+    KeyedText keyed() const { return {message, keys}; }
+
     std::string message;
+    std::vector<KeyMention> keys;
 };
 
 template <class T> class [[nodiscard]] Expected {
@@ -66,6 +80,8 @@ private:
     bool m_failed = false;
 };
 
-inline Error makeError(std::string message) { return Error{std::move(message)}; }
+inline Error makeError(std::string message) { return Error(std::move(message)); }
+inline Error makeError(const char* message) { return Error(message); }
+inline Error makeError(const KeyedText& message) { return Error(message); }
 
 } // namespace sdfwb

@@ -26,7 +26,7 @@ struct SamplingJob;
 namespace sdfwb::jobs {
 
 enum class Failure {
-    Usage,     // the request is malformed: the message names the request's key ('output', 'sdf'; the CLI says --output)
+    Usage,     // the request is malformed: the message names the request's keys ('output'; the CLI words them --output)
     Work,      // the work failed: the SDF does not compile, a file cannot be written
     NoGl,      // no usable GL context
     Cancelled, // cancelled through the progress sink; nothing was written
@@ -36,7 +36,13 @@ struct JobError {
     Failure failure = Failure::Work;
     std::string message;
     std::vector<shaders::Diagnostic> diagnostics; // the SDF's errors, with file and line
+    std::vector<KeyMention> keys;                 // where `message` names request keys, for each front end's words
 };
+
+// A malformed request (Failure::Usage); the message knows the keys it names.
+JobError usageError(const KeyedText& message);
+// As `usageError`, for a failure of the work itself (a key's file cannot be written).
+JobError workError(const KeyedText& message);
 
 template <class Report> struct JobResult {
     std::optional<Report> report;

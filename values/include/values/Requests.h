@@ -380,9 +380,9 @@ struct MeshReport {
     bool manifold = false; // watertight, every vertex one fan, every edge run once each way
     bool watertight = false;
     float lipschitzBound = 0.0f;
-    std::string boundSource;       // where the bound came from
-    std::string fieldVerdict;      // the quick audit's verdict (exact, conservative, ...), run when the error is measured
-    std::uint64_t blocksGrown = 0; // kept blocks the bound skipped but the surface crosses into from a kept one
+    std::string boundSource;             // where the bound came from
+    std::optional<Finding> fieldVerdict; // the quick audit's verdict, run when the error is measured (else null)
+    std::uint64_t blocksGrown = 0;       // kept blocks the bound skipped but the surface crosses into from a kept one
     std::uint64_t blocks = 0, blocksKept = 0, pointsEvaluated = 0, clampedVertices = 0, verticesBesideTheirCell = 0,
                   splitFaces = 0;
     std::uint64_t boundsCutPoints = 0;              // grid points inside the shape beyond the bounds: closed by caps there
