@@ -42,7 +42,7 @@ bool BatchProcess::start(const values::Request& request) {
         m_process = nullptr;
         process->deleteLater();
         const QString message = tr("cannot start %1").arg(m_executable);
-        conclude(false, false, {}, message, {jobs::Failure::Work, message.toStdString(), {}});
+        conclude(false, false, {}, message, jobs::workError(message.toStdString()));
     });
     connect(m_process, &QProcess::finished, this, [this](int exitCode, QProcess::ExitStatus status) {
         readOutput();

@@ -52,7 +52,7 @@ void JobWorker::cancel(JobChannel* channel) {
     const auto queued = std::find_if(m_queue.begin(), m_queue.end(), [&](const Queued& q) { return q.channel == channel; });
     if (queued != m_queue.end()) {
         m_queue.erase(queued);
-        channel->end(false, true, {}, tr("Cancelled; nothing was written."), {jobs::Failure::Cancelled, {}, {}});
+        channel->end(false, true, {}, tr("Cancelled; nothing was written."), {jobs::Failure::Cancelled, {}, {}, {}});
         return;
     }
     if (channel != m_current || !m_process || m_cancelling) return;

@@ -10,11 +10,8 @@ JobResult<values::AuditJobReport> run(const values::AuditRequest& request, const
     auto sdf = openSdf(request.sdf, "audit");
     if (!sdf) return sdf.error;
     values::AuditJobReport report;
-    report.sdf = sdf->label;
-    report.entry = sdf->prepared.signature.entry;
-    report.meshSource = sdf->meshSource();
+    sdf->describe(report);
     report.truncationReach = request.truncationReach;
-    report.warnings = sdf->warnings;
     std::vector<shaders::Diagnostic> diagnostics; // the compiler's, when the SDF does not compile
     if (request.plane) {
         auto readout = sampling::analysePlane(sdf->prepared, request.plane->normal, request.plane->offset, request.resolution,

@@ -215,6 +215,7 @@ template <class V> void fields(V& v, values::ProbeReport& r) {
     v("parameters", r.parameters);
     v("seconds", r.seconds);
     v("mesh_source", r.meshSource);
+    v("warnings", r.warnings);
 }
 
 template <class V> void fields(V& v, values::RunItemReport& r) {
@@ -265,6 +266,7 @@ template <class V> void fields(V& v, values::EvalEdges& e) {
 template <class V> void fields(V& v, values::EvalReport& r) {
     v("mesh", r.mesh);
     v("sdf", r.sdf);
+    v("entry", r.entry);
     v("vertices", r.vertices);
     v("triangles", r.triangles);
     v("closed", r.closed);
@@ -389,6 +391,7 @@ template <class V> void fields(V& v, values::RenderReport& r) {
 template <class V> void fields(V& v, values::AnimateReport& r) {
     v("output", r.output);
     v("sdf", r.sdf);
+    v("entry", r.entry);
     v("frames", r.frames);
     v("fps", r.framesPerSecond);
     v("width", r.width);
@@ -403,6 +406,7 @@ template <class V> void fields(V& v, values::SampleReport& r) {
     v("output", r.output);
     v("format", r.format);
     v("sdf", r.sdf);
+    v("entry", r.entry);
     v("pattern", r.pattern);
     v("n", r.count);
     v("rows", r.rows);

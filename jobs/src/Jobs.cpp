@@ -145,6 +145,10 @@ values::MeshSource OpenedSdf::meshSource() const {
     return prepared.mesh ? values::MeshSource{prepared.mesh->provenanceJson()} : values::MeshSource{};
 }
 
+void OpenedSdf::describe(values::SdfHeader& report) const {
+    report = values::SdfHeader{label, prepared.signature.entry, meshSource(), warnings};
+}
+
 renderer::FileMetadata OpenedSdf::fileMetadata() const {
     if (!prepared.mesh) return {};
     return {{"sdfwb_mesh_source", prepared.mesh->provenanceJson()}};

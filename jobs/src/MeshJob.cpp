@@ -59,13 +59,10 @@ JobResult<MeshedSdf> meshSdf(const values::MeshRequest& request, const ProgressS
     auto sdf = openSdf(request.sdf, "mesh");
     if (!sdf) return sdf.error;
     values::MeshReport report;
-    report.sdf = sdf->label;
-    report.entry = sdf->prepared.signature.entry;
-    report.meshSource = sdf->meshSource();
+    sdf->describe(report);
     report.resolution = request.resolution;
     report.refine = request.refine;
     report.parameters = shaders::valuesOf(sdf->parameters);
-    report.warnings = sdf->warnings;
     meshing::MeshOptions options;
     options.resolution = request.resolution;
     options.refine = request.refine;
@@ -233,9 +230,8 @@ JobResult<values::EvalReport> run(const values::EvalRequest& request, const Prog
     auto e = meshing::evaluateMesh(sdf->prepared, *mesh, options);
     if (!e) return workError(e.error().keyed());
     values::EvalReport report;
+    sdf->describe(report);
     report.mesh = request.mesh;
-    report.sdf = sdf->label;
-    report.meshSource = sdf->meshSource();
     report.vertices = mesh->vertices.size();
     report.triangles = mesh->triangleCount();
     report.closed = e->closed;
@@ -271,7 +267,6 @@ JobResult<values::EvalReport> run(const values::EvalRequest& request, const Prog
         "SDF's units); edges: the same over the points of either set near a crease of the exact field (its normal turns by "
         "more than edge_angle degrees within edge_radius in the tangent plane), null when the exact surface has none";
     report.parameters = shaders::valuesOf(sdf->parameters);
-    report.warnings = sdf->warnings;
     if (!e->closed && e->iou)
         report.warnings.push_back("the mesh has boundary edges: its inside (and the IoU) is not well defined");
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

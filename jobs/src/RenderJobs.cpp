@@ -49,6 +49,13 @@ std::vector<std::string> viewWarnings(const values::FrameRequest& frame) {
     return warnings;
 }
 
+// A frame's report header: the SDF's, with the view's warnings first.
+void describe(values::SdfHeader& report, const OpenedSdf& sdf, const values::FrameRequest& frame) {
+    sdf.describe(report);
+    const std::vector<std::string> view = viewWarnings(frame);
+    report.warnings.insert(report.warnings.begin(), view.begin(), view.end());
+}
+
 // The values a fraction t of the way from `from` to `to` (same parameters, same order): floats and
 // vectors linearly, ints rounded, bools switching halfway.
 std::vector<shaders::ParameterSetting> interpolateParameters(const std::vector<shaders::ParameterSetting>& from,
@@ -104,8 +111,7 @@ JobResult<values::RenderReport> run(const values::RenderRequest& request, const 
     auto sdf = openSdf(request.frame.sdf, "render");
     if (!sdf) return sdf.error;
     values::RenderReport report;
-    report.warnings = viewWarnings(request.frame);
-    report.warnings.insert(report.warnings.end(), sdf->warnings.begin(), sdf->warnings.end());
+    describe(report, *sdf, request.frame);
     const values::FrameRequest& frame = request.frame;
     if (request.shadertoyPicture) {
         // The author's picture: one 8-bit frame from the file's mainImage.
@@ -127,9 +133,7 @@ JobResult<values::RenderReport> run(const values::RenderRequest& request, const 
         image.metadata = sdf->fileMetadata();
         if (auto written = renderer::writeImage(request.output, image); !written) return workError(written.error().keyed());
         report.output = request.output;
-        report.sdf = sdf->label;
         report.entry = "mainImage";
-        report.meshSource = sdf->meshSource();
         report.width = frame.width;
         report.height = frame.height;
         report.shading = "shadertoy picture";
@@ -163,9 +167,6 @@ JobResult<values::RenderReport> run(const values::RenderRequest& request, const 
               });
     if (!written) return workError(written.error().keyed());
     report.output = request.output;
-    report.sdf = sdf->label;
-    report.entry = sdf->prepared.signature.entry;
-    report.meshSource = sdf->meshSource();
     report.width = request.frame.width;
     report.height = request.frame.height;
     report.shading = shaders::shadingModeName(request.frame.shading.mode);
@@ -258,9 +259,7 @@ JobResult<values::ProbeReport> run(const values::ProbeRequest& request, const Pr
     }
     tracer.releaseGl();
     values::ProbeReport report;
-    report.sdf = sdf->label;
-    report.meshSource = sdf->meshSource();
-    report.entry = sdf->prepared.signature.entry;
+    describe(report, *sdf, frame);
     report.width = frame.width;
     report.height = frame.height;
     report.x = request.x;
@@ -330,8 +329,7 @@ JobResult<values::AnimateReport> run(const values::AnimateRequest& request, cons
     auto sdf = openSdf(request.frame.sdf, "animate");
     if (!sdf) return sdf.error;
     values::AnimateReport report;
-    report.warnings = viewWarnings(request.frame);
-    report.warnings.insert(report.warnings.end(), sdf->warnings.begin(), sdf->warnings.end());
+    describe(report, *sdf, request.frame);
     std::vector<shaders::ParameterValue> endValues = request.frame.sdf.params;
     for (const shaders::ParameterValue& value : request.paramsEnd) {
         std::erase_if(endValues, [&](const shaders::ParameterValue& v) { return v.name == value.name; });
@@ -385,8 +383,6 @@ JobResult<values::AnimateReport> run(const values::AnimateRequest& request, cons
     if (progress.isCancelled()) return JobError{Failure::Cancelled, "animate: cancelled; nothing written", {}, {}};
     if (auto ok = (*writer)->finish(); !ok) return workError(ok.error().keyed());
     report.output = request.output;
-    report.sdf = sdf->label;
-    report.meshSource = sdf->meshSource();
     report.frames = frames;
     report.framesPerSecond = request.framesPerSecond;
     report.width = frame.width & ~1;

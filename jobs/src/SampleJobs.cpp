@@ -58,7 +58,8 @@ JobResult<values::SampleReport> run(const values::SampleRequest& request, const 
     }
     std::vector<std::vector<shaders::ParameterSetting>> settings;
     values::SampleReport report;
-    report.warnings = sdf->warnings;
+    sdf->describe(report);
+    report.sdf = request.sdf.sdf; // the name as given (a sample file's metadata says the same)
     for (const auto& values : instances) {
         auto resolved = shaders::resolveParameters(sdf->prepared.parameters, values);
         if (!resolved) return usageError(key("params") + ": " + sdf->label + ": " + resolved.error().message);
@@ -127,8 +128,6 @@ JobResult<values::SampleReport> run(const values::SampleRequest& request, const 
     compute.releaseGl();
     report.output = request.output;
     report.format = sampling::formatName(format);
-    report.sdf = request.sdf.sdf;
-    report.meshSource = sdf->meshSource();
     report.pattern = request.pattern;
     report.count = job.count;
     report.seed = job.seed;

@@ -2,7 +2,7 @@
 # .ci/run stops with a non-zero exit when any of its steps fails, and runs the README's second
 # command as written there. The real .ci/run runs in a scratch folder where each step it calls
 # (scripts/bootstrap, cmake, ctest, scripts/check_includes, scripts/check_architecture, scripts/check_format,
-# scripts/check_docs, scripts/sanitize,
+# scripts/check_sizes, scripts/check_docs, scripts/sanitize,
 # scripts/fuzz) is a stand-in that logs its call and fails when told to; scripts/ci_plant shows the
 # same on a real build with a planted compile error and a planted failing test.
 #
@@ -48,11 +48,11 @@ exit 0
 STUB
 chmod +x "$scratch/bin/cmake"
 stand_in "$scratch/bin/ctest" ctest
-for step in bootstrap check_includes check_architecture check_format check_docs sanitize fuzz; do
+for step in bootstrap check_includes check_architecture check_format check_sizes check_docs sanitize fuzz; do
   stand_in "$scratch/tree/scripts/$step" "$step"
 done
 
-steps=(bootstrap configure build ctest check_includes check_architecture check_format check_docs sanitize fuzz)
+steps=(bootstrap configure build ctest check_includes check_architecture check_format check_sizes check_docs sanitize fuzz)
 run_ci() { # STEP_TO_FAIL (or empty) -> exit code; the log in $scratch/log
   : > "$scratch/log"
   CI_LOG="$scratch/log" STEP_TO_FAIL="$1" PATH="$scratch/bin:$PATH" bash "$scratch/tree/.ci/run" > "$scratch/out" 2>&1

@@ -179,12 +179,13 @@ TEST(JobJson, MalformedRequestsAreRefusedNamingTheKey) {
 
 TEST(JobJson, ReportsSurviveARoundTrip) {
     values::RenderReport render{
-        "a.png", "/x/Torus.glsl", "sdf", 640, 360, "gooch", 12.5, 0.75, "llvmpipe", {}, {"below float32 precision"}};
+        {"/x/Torus.glsl", "sdf", {}, {"below float32 precision"}}, "a.png", 640, 360, "gooch", 12.5, 0.75, "llvmpipe"};
     auto r = reportFromJson<values::RenderReport>(toJson(render));
     ASSERT_TRUE(r) << r.error().message;
     EXPECT_TRUE(*r == render);
     values::SampleReport sample;
     sample.output = "s.bin";
+    sample.entry = "scene"; // the header's four keys travel in every report of one SDF
     sample.count = 1ull << 40;
     sample.rows = 5;
     sample.badRows = 2;

@@ -62,6 +62,9 @@ struct OpenedSdf {
     std::vector<std::string> warnings;                 // values outside a declared @range
 
     values::MeshSource meshSource() const; // a mesh file's provenance for the report (empty for GLSL)
+    // What a report of a job on this SDF says about it first: the label, the function that runs,
+    // the mesh's provenance and the warnings.
+    void describe(values::SdfHeader& report) const;
     // What image and video files carry beside their pixels: a mesh's provenance as
     // "sdfwb_mesh_source" (nothing for GLSL).
     renderer::FileMetadata fileMetadata() const;

@@ -229,30 +229,36 @@ struct MeshSource {
     bool operator==(const MeshSource&) const = default;
 };
 
-struct RenderReport {
+// What every report of a job run on one SDF says about it: the SDF (its resolved path, or the name
+// given with source text; a sample report keeps the name as given), the function that ran, a mesh
+// file's provenance, and the warnings (values outside a declared @range, view settings adjusted).
+// jobs::OpenedSdf::describe fills it; each report's JSON shows these four as "sdf", "entry",
+// "mesh_source" and "warnings".
+struct SdfHeader {
+    std::string sdf;
+    std::string entry;
+    MeshSource meshSource;
+    std::vector<std::string> warnings;
+    bool operator==(const SdfHeader&) const = default;
+};
+
+struct RenderReport : SdfHeader {
     std::string output;
-    std::string sdf;   // the resolved path (or the name given with source text)
-    std::string entry; // the function that was traced
     int width = 0, height = 0;
     std::string shading;
     double frameMilliseconds = 0.0;
     double seconds = 0.0;
     std::string glRenderer;
-    MeshSource meshSource;
-    std::vector<std::string> warnings;
     bool operator==(const RenderReport&) const = default;
 };
 
-struct AnimateReport {
+struct AnimateReport : SdfHeader {
     std::string output;
-    std::string sdf;
     int frames = 0;
     int framesPerSecond = 0;
     int width = 0, height = 0; // as encoded (even)
     double renderSeconds = 0.0;
     double seconds = 0.0;
-    MeshSource meshSource;
-    std::vector<std::string> warnings;
     bool operator==(const AnimateReport&) const = default;
 };
 
@@ -266,10 +272,9 @@ struct SampleInstance {
     bool operator==(const SampleInstance&) const = default;
 };
 
-struct SampleReport {
+struct SampleReport : SdfHeader {
     std::string output;
     std::string format;
-    std::string sdf;
     std::string pattern;
     std::uint64_t count = 0; // N of the whole run
     std::uint64_t rows = 0;  // written by this run (its shard)
@@ -284,8 +289,6 @@ struct SampleReport {
     std::vector<shaders::ParameterValue> parameters; // every declared parameter's value (a single run)
     std::vector<SampleInstance> instances;           // a family: one per output
     std::string index;                               // a family: the index file (this report as JSON)
-    MeshSource meshSource;
-    std::vector<std::string> warnings; // values outside a declared @range
     bool operator==(const SampleReport&) const = default;
 };
 
@@ -312,17 +315,13 @@ struct AuditInstance {
 
 // The volume audit, the plane readouts when the request named a plane, or one line per instance
 // of a family.
-struct AuditJobReport {
-    std::string sdf;
-    std::string entry;
+struct AuditJobReport : SdfHeader {
     float truncationReach = 0.0f;
     std::vector<shaders::ParameterValue> parameters; // every declared parameter's value (not a family)
     std::optional<values::AuditReport> volume;
     std::optional<PlaneSpec> plane;
     std::optional<values::PlaneReadout> readout;
     std::vector<AuditInstance> family;
-    MeshSource meshSource;
-    std::vector<std::string> warnings; // values outside a declared @range
 };
 
 struct ListItem {
@@ -368,10 +367,8 @@ struct PhaseTime { // one step of a job and its wall time
     double seconds = 0.0;
 };
 
-struct MeshReport {
+struct MeshReport : SdfHeader {
     std::string output;
-    std::string sdf;
-    std::string entry;
     int resolution = 0;
     int refine = 0;
     std::uint64_t vertices = 0, triangles = 0;
@@ -400,8 +397,6 @@ struct MeshReport {
     std::uint64_t errorPoints = 0;
     double errorSeconds = 0.0;
     std::vector<shaders::ParameterValue> parameters;
-    MeshSource meshSource;
-    std::vector<std::string> warnings;
     double seconds = 0.0;
     bool operator==(const MeshReport&) const = default;
 };
@@ -414,9 +409,8 @@ struct EvalEdges {
     bool operator==(const EvalEdges&) const = default;
 };
 
-struct EvalReport {
+struct EvalReport : SdfHeader {
     std::string mesh;
-    std::string sdf;
     std::uint64_t vertices = 0, triangles = 0;
     bool closed = false;
     std::uint64_t meshPoints = 0, surfacePoints = 0, occupancyPoints = 0;
@@ -428,8 +422,6 @@ struct EvalReport {
     std::optional<EvalEdges> edges; // none when no point of the exact surface lies near a crease
     std::string conventions;        // what each figure means (squared or not, counts, normalisation)
     std::vector<shaders::ParameterValue> parameters;
-    MeshSource meshSource;
-    std::vector<std::string> warnings;
     double seconds = 0.0;
     bool operator==(const EvalReport&) const = default;
 };
@@ -473,8 +465,7 @@ struct ProbeStep {
     bool operator==(const ProbeStep&) const = default;
 };
 
-struct ProbeReport {
-    std::string sdf, entry;
+struct ProbeReport : SdfHeader {
     int width = 0, height = 0, x = 0, y = 0;
     glm::vec3 origin{0.0f}, direction{0.0f};
     MarchEvent outcome = MarchEvent::MissedBox; // hit, left the box, out of steps, not finite or missed the box
@@ -489,7 +480,6 @@ struct ProbeReport {
     std::vector<ProbeStep> events;
     std::uint64_t dropped = 0; // events past the recorder's capacity
     std::vector<shaders::ParameterValue> parameters;
-    MeshSource meshSource;
     double seconds = 0.0;
     bool operator==(const ProbeReport&) const = default;
 };
