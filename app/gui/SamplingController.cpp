@@ -47,7 +47,11 @@ SamplingController::SamplingController(QWidget* window, std::function<values::Sd
             m_dialog->setProgress(1, 1);
         }
         m_dialog->setRunning(false);
-        m_dialog->setMessage(message, !ok);
+        const jobs::JobError& failure = m_process->error();
+        if (!ok && !failure.keys.empty() && failure.diagnostics.empty())
+            m_dialog->setFailure(failure.message, failure.keys); // in the form's words, the fields marked
+        else
+            m_dialog->setMessage(message, !ok);
         log::write(ok ? log::Level::Info : log::Level::Warning, "sampling", message.toStdString());
         emit finished(ok, message);
         if (ok) emit cloudReady(QString::fromStdString(report->output), tr("written"));

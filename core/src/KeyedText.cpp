@@ -41,7 +41,11 @@ std::string worded(const std::string& text, const std::vector<KeyMention>& keys,
     std::size_t at = 0;
     std::string previous; // the last key's words, while only a separator has followed it
     for (const KeyMention& mention : keys) {
-        if (mention.offset < at || mention.offset + mention.length > text.size()) continue; // not where it says
+        // Only a mention that is where it says, as the key's quoted name (a message read back from a
+        // child could have been changed on the way).
+        if (mention.offset < at || mention.offset > text.size() ||
+            text.compare(mention.offset, mention.length, "'" + std::string(keyName(mention.path)) + "'") != 0)
+            continue;
         const std::string between = text.substr(at, mention.offset - at);
         const std::string words = term(mention.path);
         if (!previous.empty() && words == previous && (between == ", " || between == "/")) {

@@ -508,8 +508,13 @@ std::string errorMessage(const JobError& error) {
                                {"column", d.column},
                                {"severity", shaders::severityName(d.severity)},
                                {"message", d.message}});
-    return json{{"error", {{"kind", failureName(error.failure)}, {"message", error.message}, {"diagnostics", diagnostics}}}}.dump(
-        -1, ' ', false, json::error_handler_t::replace);
+    json body{{"kind", failureName(error.failure)}, {"message", error.message}, {"diagnostics", diagnostics}};
+    if (!error.keys.empty()) { // where the message names request keys, for the reader's own words
+        json keys = json::array();
+        for (const KeyMention& k : error.keys) keys.push_back({{"path", k.path}, {"at", k.offset}, {"length", k.length}});
+        body["keys"] = keys;
+    }
+    return json{{"error", body}}.dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
 std::string reportMessage(const std::string& reportJson) {
@@ -559,6 +564,11 @@ WorkerMessage readWorkerMessage(const std::string& line) {
                 diagnostic.message = d.value("message", std::string());
                 message.error.diagnostics.push_back(std::move(diagnostic));
             }
+        if (const auto it = value.find("keys"); it != value.end() && it->is_array())
+            for (const json& k : *it)
+                if (k.is_object() && k.value("at", json()).is_number_unsigned() && k.value("length", json()).is_number_unsigned())
+                    message.error.keys.push_back(
+                        {k["at"].get<std::size_t>(), k["length"].get<std::size_t>(), k.value("path", std::string())});
     }
     return message;
 }

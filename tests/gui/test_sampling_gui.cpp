@@ -134,6 +134,63 @@ TEST(SamplingDialog, ASamplersCompileErrorReachesTheProblemsPanelAndOpensTheSamp
     if (QString path = screenshotPath("job_problems.png"); !path.isEmpty()) windowShot(window).save(path);
 }
 
+// A failure that names the request's keys speaks the dialog's language: the fields' labels for the
+// keys, the fields marked and the first focused; the marks go with the next run.
+TEST(SamplingDialog, AFailureNamesAndMarksTheFieldsAtFault) {
+    QTemporaryDir folder;
+    app::MainWindow window;
+    window.resize(1200, 700);
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
+    app::SamplingController* sampling = window.sampling();
+    sampling->setExecutable(SDFWB_BINARY);
+    bool done = false, ok = false;
+    QObject::connect(sampling, &app::SamplingController::finished, [&](bool success, const QString&) {
+        done = true;
+        ok = success;
+    });
+    ASSERT_TRUE(activate(window));
+    QTest::keyClick(&window, Qt::Key_M, Qt::ControlModifier | Qt::ShiftModifier);
+    ASSERT_TRUE(waitFor([&] { return sampling->dialog() && sampling->dialog()->isVisible(); }));
+    widgets::SamplingDialog* dialog = sampling->dialog();
+    auto* count = dialog->findChild<QLineEdit*>("count");
+    auto* output = dialog->findChild<QLineEdit*>("output");
+    auto* message = dialog->findChild<QLabel*>("message");
+    auto type = [](QLineEdit* field, const QString& text) {
+        field->selectAll();
+        QTest::keyClicks(field, text);
+    };
+    auto run = [&] {
+        done = false;
+        QTest::mouseClick(dialog->findChild<QPushButton*>("start"), Qt::LeftButton);
+        return waitFor([&] { return done; }, 60000);
+    };
+    type(dialog->findChild<QComboBox*>("pattern")->lineEdit(), "rand");
+    type(count, "0");
+    type(output, "/nonexistent-sdfwb-folder/out.npz");
+    ASSERT_TRUE(run());
+    EXPECT_FALSE(ok);
+    EXPECT_EQ(message->text().toStdString(), "Samples (N): the sample count must be at least 1");
+    EXPECT_TRUE(count->property("fault").toBool());
+    EXPECT_FALSE(output->property("fault").toBool());
+    EXPECT_EQ(dialog->focusWidget(), count) << "the field at fault takes the focus";
+    if (QString path = screenshotPath("sampling_field_fault.png"); !path.isEmpty()) dialog->grab().save(path);
+
+    type(count, "1000");
+    ASSERT_TRUE(run());
+    EXPECT_FALSE(ok);
+    EXPECT_EQ(message->text().toStdString(),
+              "Output file: '/nonexistent-sdfwb-folder/out.npz': folder '/nonexistent-sdfwb-folder' does not exist");
+    EXPECT_FALSE(count->property("fault").toBool()) << "the last failure's mark stays";
+    EXPECT_TRUE(output->property("fault").toBool());
+
+    type(output, folder.filePath("out.npz"));
+    ASSERT_TRUE(run());
+    EXPECT_TRUE(ok) << message->text().toStdString();
+    EXPECT_FALSE(output->property("fault").toBool());
+    EXPECT_TRUE(QFile::exists(folder.filePath("out.npz")));
+}
+
 // The sampling dialog's Preview draws the run's first points in the viewport, coloured by
 // gradient, and its point size spin box (arrow keys) grows them; a sample file with NaN rows
 // shows its cloud with the bad rows counted, not drawn.

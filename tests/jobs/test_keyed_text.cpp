@@ -1,6 +1,7 @@
 // Failures that name request keys know where they name them, so each front end words them its
 // own way (core/KeyedText.h): the text stays the request's, and the words come from the caller.
 #include <jobs/Jobs.h>
+#include <jobs/Protocol.h>
 
 #include <gtest/gtest.h>
 
@@ -15,7 +16,10 @@ namespace {
 std::string optionTerm(const std::string& path) {
     if (path == "width" || path == "height") return "--size";
     if (path == "n") return "-n";
-    return "--" + std::string(keyName(path));
+    std::string option = "--" + std::string(keyName(path));
+    for (char& c : option)
+        if (c == '_') c = '-';
+    return option;
 }
 
 std::vector<std::string> paths(const std::vector<KeyMention>& keys) {
@@ -85,4 +89,20 @@ TEST(KeyedText, ValidationNamesTheKeyPathsAtFault) {
     EXPECT_EQ(error->message, "'fov': must be 1..179, got 200");
     EXPECT_EQ(paths(error->keys), std::vector<std::string>{"camera.fov"});
     EXPECT_EQ(worded(error->message, error->keys, optionTerm), "--fov: must be 1..179, got 200");
+}
+
+// The worker protocol carries where the message names keys, so the workbench words them too.
+TEST(KeyedText, TheWorkerProtocolCarriesTheKeys) {
+    const jobs::JobError sent = jobs::usageError(keys({"width", "height"}) + ": got 0x0 for " + key("trace.max_steps"));
+    const jobs::JobError read = jobs::readWorkerMessage(jobs::errorMessage(sent)).error;
+    EXPECT_EQ(read.failure, jobs::Failure::Usage);
+    EXPECT_EQ(read.message, sent.message);
+    EXPECT_EQ(paths(read.keys), paths(sent.keys));
+    EXPECT_EQ(worded(read.message, read.keys, optionTerm), "--size: got 0x0 for --max-steps");
+    // A mention that no longer points at its key's quoted name is left as the text has it.
+    jobs::JobError moved = sent;
+    moved.keys[2].offset += 1;
+    EXPECT_EQ(worded(moved.message, moved.keys, optionTerm), "--size: got 0x0 for 'max_steps'");
+    // A message that names no key is sent as before, without "keys".
+    EXPECT_EQ(jobs::errorMessage(jobs::workError("plain")).find("keys"), std::string::npos);
 }

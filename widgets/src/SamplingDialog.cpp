@@ -143,8 +143,39 @@ void SamplingDialog::setProgress(std::uint64_t done, std::uint64_t total) {
 }
 
 void SamplingDialog::setMessage(const QString& message, bool error) {
+    for (QWidget* marked : m_marked) {
+        marked->setStyleSheet({});
+        marked->setProperty("fault", false);
+    }
+    m_marked.clear();
     m_message->setText(message);
     m_message->setStyleSheet(error ? "color: #b00020;" : "");
+}
+
+std::pair<QWidget*, QString> SamplingDialog::field(const std::string& path) const {
+    if (path == "pattern") return {m_pattern, tr("Pattern")};
+    if (path == "n") return {m_count, tr("Samples (N)")};
+    if (path == "seed") return {m_seed, tr("Seed")};
+    if (path == "time") return {m_time, tr("Time")};
+    if (path == "output") return {m_output, tr("Output file")};
+    if (path == "format") return {m_format, tr("Format")};
+    return {nullptr, {}};
+}
+
+void SamplingDialog::setFailure(const std::string& message, const std::vector<KeyMention>& keys) {
+    const std::string text = worded(message, keys, [this](const std::string& path) {
+        const QString label = field(path).second;
+        return label.isEmpty() ? "'" + std::string(keyName(path)) + "'" : label.toStdString();
+    });
+    setMessage(QString::fromStdString(text), true);
+    for (const KeyMention& key : keys) {
+        QWidget* widget = field(key.path).first;
+        if (!widget || widget->property("fault").toBool()) continue;
+        widget->setProperty("fault", true);
+        widget->setStyleSheet("border: 2px solid #b00020;");
+        m_marked.push_back(widget);
+    }
+    if (!m_marked.empty()) m_marked.front()->setFocus();
 }
 
 } // namespace sdfwb::widgets

@@ -5,7 +5,10 @@
 // stdout:
 //   {"progress":[done,total]}
 //   {"error":{"kind":"work","message":"...","diagnostics":[{"file":"a.glsl","line":3,"column":5,
-//             "severity":"error","message":"..."}]}}      kinds: usage, work, no-gl, cancelled
+//             "severity":"error","message":"..."}],
+//             "keys":[{"path":"trace.max_steps","at":0,"length":11}]}}   kinds: usage, work, no-gl, cancelled;
+//                     "keys" (only when there are any): where the message names request keys, in
+//                     bytes, so the reader can word them its own way (core/KeyedText.h)
 //   {"report":{...}}    the report of the request's kind, in JobJson.h's form
 //   {"end":0}           the request is done, with the exit code its command would have
 // Anything else on stdout or stderr is not part of the protocol (log lines); a reader skips it.

@@ -3,12 +3,16 @@
 // Cancel. It fills a values::SampleRequest (values/) and shows progress; the controller that owns it
 // names the SDF and runs the job. UI thread only.
 
+#include <core/KeyedText.h>
 #include <values/Requests.h>
 
 #include <QDialog>
 #include <QString>
 
 #include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -34,6 +38,10 @@ public:
     void setRunning(bool running);
     void setProgress(std::uint64_t done, std::uint64_t total);
     void setMessage(const QString& message, bool error);
+    // A failure whose text names request keys (`keys`: where, core/KeyedText.h): each key worded
+    // as this form's label ("Samples (N)" for n), its field marked and the first one focused. The
+    // marks go with the next message.
+    void setFailure(const std::string& message, const std::vector<KeyMention>& keys);
 
     // Preview: the same pattern, seed and time, at most this many points, shown in the viewport.
     static constexpr std::uint64_t kPreviewPoints = 100000;
@@ -59,6 +67,10 @@ private:
     QPushButton* m_preview = nullptr;
     QSpinBox* m_pointSize = nullptr;
     QPushButton* m_cancel = nullptr;
+    std::vector<QWidget*> m_marked; // fields a failure names
+
+    // The field that sets the request key at `path`, with its label; null for the keys no field sets.
+    std::pair<QWidget*, QString> field(const std::string& path) const;
 };
 
 } // namespace sdfwb::widgets
