@@ -37,15 +37,17 @@ public:
     using CLI::App::App;
 
     // Records that `option` sets the keys at `paths`, where they are not its name with '_' for '-'
-    // (--max-steps sets trace.max_steps without being told).
+    // (--max-steps sets trace.max_steps without being told); its help names them "(JSON: ...)".
     CLI::Option* sets(CLI::Option* option, std::initializer_list<const char*> paths) {
         const std::vector<std::string> shortNames = option->get_snames();
+        std::string listed;
         for (const char* path : paths) {
             const std::string name(keyName(path));
             const bool isShort = std::find(shortNames.begin(), shortNames.end(), name) != shortNames.end();
             m_setters.emplace_back(path, isShort ? "-" + name : "--" + option->get_lnames().front());
+            listed += (listed.empty() ? "" : ", ") + std::string(path);
         }
-        return option;
+        return option->description(option->get_description() + " (JSON: " + listed + ")");
     }
 
     // The option that sets the key at `path`; the key as a JSON request writes it when none does.
@@ -270,7 +272,7 @@ void addFrameOptions(Command& app, values::FrameRequest& job, FrameOptions& opti
     app.add_option("--background-image", job.shading.backgroundImage,
                    "an image behind the shape (cover-fit), instead of the colour");
     app.add_flag("--overlay", job.overlay, "the SDF's name, author and license (its metadata block) in the lower-left corner");
-    app.sets(app.add_option("--camera", options.camera, "camera position X,Y,Z"), {"camera", "camera.position"});
+    app.sets(app.add_option("--camera", options.camera, "camera position X,Y,Z"), {"camera.position"});
     app.add_option("--target", options.target, "point the camera looks at X,Y,Z (default 0,0,0)");
     app.add_option("--fov", job.camera.fovYDegrees, "vertical field of view in degrees")
         ->capture_default_str()

@@ -127,7 +127,7 @@ std::optional<JobError> checkFrame(const values::FrameRequest& frame) {
     for (float c : {frame.camera.position.x, frame.camera.position.y, frame.camera.position.z, frame.camera.target.x,
                     frame.camera.target.y, frame.camera.target.z, frame.plane.offset})
         if (!std::isfinite(c))
-            return usage(key("camera") + "/" + key("camera.target") + "/" + key("plane") + ": expected finite numbers");
+            return usage(key("camera.position") + "/" + key("camera.target") + "/" + key("plane") + ": expected finite numbers");
     if (frame.shading.markers.size() > 16) return usage(key("shading.markers") + ": at most 16 points");
     for (float c : {frame.shading.background.r, frame.shading.background.g, frame.shading.background.b})
         if (!std::isfinite(c) || c < 0.0f) return usage(key("shading.background") + ": expected finite values >= 0");

@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
+#include <set>
 #include <string>
 #include <string_view>
 #include <sys/wait.h>
@@ -125,6 +127,58 @@ TEST(CommandLine, EveryJobKindIsABatchCommand) {
             EXPECT_EQ(r.exitCode, 0) << name << ": " << r.output;
             EXPECT_NE(r.output.find("--batch " + std::string(kind.name)), std::string::npos) << r.output; // its usage line
         }
+}
+
+// The keys an object of a request accepts, as the request's JSON error lists them ("'zzz':
+// unknown key (known here: a, b)"), with the key paths of the objects nested in it ("trace.max_steps").
+std::set<std::string> requestKeys(const std::string& kind, const std::string& path = {}) {
+    std::string json = "{\"zzz_unknown\": 1}";
+    for (std::string rest = path; !rest.empty();) {
+        const std::size_t dot = rest.rfind('.');
+        json = "{\"" + rest.substr(dot == std::string::npos ? 0 : dot + 1) + "\": " + json + "}";
+        rest = dot == std::string::npos ? "" : rest.substr(0, dot);
+    }
+    json.insert(1, "\"kind\": \"" + kind + "\", ");
+    const fs::path file = outputPath("keys-" + kind + ".json");
+    std::ofstream(file) << json;
+    const Result r = run("--batch request " + file.string());
+    fs::remove(file);
+    static const std::regex listed(R"(unknown key \(known here: ([a-z0-9_, ]*)\))");
+    std::smatch match;
+    std::set<std::string> keys;
+    if (!std::regex_search(r.output, match, listed)) return keys; // not an object
+    std::string names = match[1].str() + ", ";
+    for (std::size_t at = 0, comma; (comma = names.find(", ", at)) != std::string::npos; at = comma + 2) {
+        const std::string key = path.empty() ? names.substr(at, comma - at) : path + "." + names.substr(at, comma - at);
+        keys.insert(key);
+        if (path.empty() && key != "kind")
+            for (const std::string& nested : requestKeys(kind, key)) keys.insert(nested);
+    }
+    return keys;
+}
+
+// An option whose name is not its key's says in its help which request keys it sets ("--size ...
+// (JSON: width, height)"), and a failure about those keys names it. Each such key is one the
+// command's request accepts: a key renamed in the JSON, or a wrong path, fails here.
+TEST(CommandLine, OptionsNamedApartFromTheirKeysNameRealKeys) {
+    static const std::regex setsKeys(R"(\(JSON: ([a-z0-9_., ]+)\))");
+    std::set<std::string> named;
+    for (const sdfwb::values::JobKind& kind : sdfwb::values::kJobKinds) {
+        const Result help = run("--batch " + std::string(kind.name) + " --help");
+        const std::set<std::string> keys = requestKeys(std::string(kind.name));
+        for (std::sregex_iterator it(help.output.begin(), help.output.end(), setsKeys), end; it != end; ++it) {
+            const std::string list = (*it)[1].str() + ", ";
+            for (std::size_t at = 0, comma; (comma = list.find(", ", at)) != std::string::npos; at = comma + 2) {
+                const std::string path = list.substr(at, comma - at);
+                EXPECT_TRUE(keys.count(path)) << kind.name << ": " << path << " is no key of its request";
+                named.insert(path);
+            }
+        }
+    }
+    ASSERT_TRUE(requestKeys("render").count("trace.over_relaxation")) << "nested keys were not read";
+    for (const char* path : {"width", "height", "n", "items", "x", "y", "shard_index", "near_truncation", "params", "params_end",
+                             "channels", "trace.over_relaxation", "camera.position", "bounds_min"})
+        EXPECT_TRUE(named.count(path)) << path << ": no option's help says it sets it";
 }
 
 // A failure that names request keys names them as each front end writes them: on the command line
