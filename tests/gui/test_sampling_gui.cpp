@@ -8,6 +8,41 @@
 using namespace sdfwb;
 using namespace sdfwb::guitest;
 
+namespace {
+
+// Opens the sampling dialog as a user does (Ctrl+Shift+M on the window); null when it did not show.
+widgets::SamplingDialog* openSamplingDialog(app::MainWindow& window) {
+    if (!activate(window)) return nullptr;
+    QTest::keyClick(&window, Qt::Key_M, Qt::ControlModifier | Qt::ShiftModifier);
+    if (!waitFor([&] { return window.sampling()->dialog() && window.sampling()->dialog()->isVisible(); })) return nullptr;
+    return window.sampling()->dialog();
+}
+
+// Replaces a field's text by typing, as a user does.
+void retype(QLineEdit* field, const QString& text) {
+    field->selectAll();
+    QTest::keyClicks(field, text);
+}
+
+// How the last run the sampling controller started ended.
+struct RunOutcome {
+    bool done = false, ok = false;
+    explicit RunOutcome(app::SamplingController* sampling) {
+        QObject::connect(sampling, &app::SamplingController::finished, [this](bool success, const QString&) {
+            done = true;
+            ok = success;
+        });
+    }
+    // Clicks Sample and waits for the run to end.
+    bool run(widgets::SamplingDialog* dialog) {
+        done = false;
+        QTest::mouseClick(dialog->findChild<QPushButton*>("start"), Qt::LeftButton);
+        return waitFor([this] { return done; }, 60000);
+    }
+};
+
+} // namespace
+
 TEST(SamplingDialog, SamplesTheOpenSdfAndCancelsCleanly) {
     app::MainWindow window;
     window.show();
@@ -84,30 +119,18 @@ TEST(SamplingDialog, ASamplersCompileErrorReachesTheProblemsPanelAndOpensTheSamp
     const int documentRows = window.problems()->count();
     app::SamplingController* sampling = window.sampling();
     sampling->setExecutable(SDFWB_BINARY);
-    bool done = false, ok = false;
-    QObject::connect(sampling, &app::SamplingController::finished, [&](bool success, const QString&) {
-        done = true;
-        ok = success;
-    });
-    ASSERT_TRUE(activate(window));
-    QTest::keyClick(&window, Qt::Key_M, Qt::ControlModifier | Qt::ShiftModifier);
-    ASSERT_TRUE(waitFor([&] { return sampling->dialog() && sampling->dialog()->isVisible(); }));
-    widgets::SamplingDialog* dialog = sampling->dialog();
-    auto type = [](QLineEdit* field, const QString& text) {
-        field->selectAll();
-        QTest::keyClicks(field, text);
-    };
-    type(dialog->findChild<QLineEdit*>("count"), "1000");
-    type(dialog->findChild<QLineEdit*>("output"), folder.filePath("out.npz"));
+    RunOutcome outcome(sampling);
+    widgets::SamplingDialog* dialog = openSamplingDialog(window);
+    ASSERT_NE(dialog, nullptr);
+    retype(dialog->findChild<QLineEdit*>("count"), "1000");
+    retype(dialog->findChild<QLineEdit*>("output"), folder.filePath("out.npz"));
     auto runWith = [&](const QString& pattern) {
-        type(dialog->findChild<QComboBox*>("pattern")->lineEdit(), pattern);
-        done = false;
-        QTest::mouseClick(dialog->findChild<QPushButton*>("start"), Qt::LeftButton);
-        return waitFor([&] { return done; }, 60000);
+        retype(dialog->findChild<QComboBox*>("pattern")->lineEdit(), pattern);
+        return outcome.run(dialog);
     };
 
     ASSERT_TRUE(runWith(sampler));
-    EXPECT_FALSE(ok);
+    EXPECT_FALSE(outcome.ok);
     ASSERT_EQ(window.problems()->count(), documentRows + 1);
     const QString row = window.problems()->rowText(documentRows);
     EXPECT_TRUE(row.startsWith("Sampling job: ")) << row.toStdString();
@@ -116,7 +139,7 @@ TEST(SamplingDialog, ASamplersCompileErrorReachesTheProblemsPanelAndOpensTheSamp
     EXPECT_TRUE(window.findChild<QDockWidget*>("ProblemsDock")->isVisible());
 
     ASSERT_TRUE(runWith("rand"));
-    EXPECT_TRUE(ok) << dialog->findChild<QLabel*>("message")->text().toStdString();
+    EXPECT_TRUE(outcome.ok) << dialog->findChild<QLabel*>("message")->text().toStdString();
     EXPECT_EQ(window.problems()->count(), documentRows) << "a run that succeeds clears its job's rows";
 
     ASSERT_TRUE(runWith(sampler));
@@ -144,49 +167,34 @@ TEST(SamplingDialog, AFailureNamesAndMarksTheFieldsAtFault) {
     ASSERT_TRUE(openAndWait(window, "Geometry/Torus.glsl"));
     app::SamplingController* sampling = window.sampling();
     sampling->setExecutable(SDFWB_BINARY);
-    bool done = false, ok = false;
-    QObject::connect(sampling, &app::SamplingController::finished, [&](bool success, const QString&) {
-        done = true;
-        ok = success;
-    });
-    ASSERT_TRUE(activate(window));
-    QTest::keyClick(&window, Qt::Key_M, Qt::ControlModifier | Qt::ShiftModifier);
-    ASSERT_TRUE(waitFor([&] { return sampling->dialog() && sampling->dialog()->isVisible(); }));
-    widgets::SamplingDialog* dialog = sampling->dialog();
+    RunOutcome outcome(sampling);
+    widgets::SamplingDialog* dialog = openSamplingDialog(window);
+    ASSERT_NE(dialog, nullptr);
     auto* count = dialog->findChild<QLineEdit*>("count");
     auto* output = dialog->findChild<QLineEdit*>("output");
     auto* message = dialog->findChild<QLabel*>("message");
-    auto type = [](QLineEdit* field, const QString& text) {
-        field->selectAll();
-        QTest::keyClicks(field, text);
-    };
-    auto run = [&] {
-        done = false;
-        QTest::mouseClick(dialog->findChild<QPushButton*>("start"), Qt::LeftButton);
-        return waitFor([&] { return done; }, 60000);
-    };
-    type(dialog->findChild<QComboBox*>("pattern")->lineEdit(), "rand");
-    type(count, "0");
-    type(output, "/nonexistent-sdfwb-folder/out.npz");
-    ASSERT_TRUE(run());
-    EXPECT_FALSE(ok);
+    retype(dialog->findChild<QComboBox*>("pattern")->lineEdit(), "rand");
+    retype(count, "0");
+    retype(output, "/nonexistent-sdfwb-folder/out.npz");
+    ASSERT_TRUE(outcome.run(dialog));
+    EXPECT_FALSE(outcome.ok);
     EXPECT_EQ(message->text().toStdString(), "Samples (N): the sample count must be at least 1");
     EXPECT_TRUE(count->property("fault").toBool());
     EXPECT_FALSE(output->property("fault").toBool());
     EXPECT_EQ(dialog->focusWidget(), count) << "the field at fault takes the focus";
     if (QString path = screenshotPath("sampling_field_fault.png"); !path.isEmpty()) dialog->grab().save(path);
 
-    type(count, "1000");
-    ASSERT_TRUE(run());
-    EXPECT_FALSE(ok);
+    retype(count, "1000");
+    ASSERT_TRUE(outcome.run(dialog));
+    EXPECT_FALSE(outcome.ok);
     EXPECT_EQ(message->text().toStdString(),
               "Output file: '/nonexistent-sdfwb-folder/out.npz': folder '/nonexistent-sdfwb-folder' does not exist");
     EXPECT_FALSE(count->property("fault").toBool()) << "the last failure's mark stays";
     EXPECT_TRUE(output->property("fault").toBool());
 
-    type(output, folder.filePath("out.npz"));
-    ASSERT_TRUE(run());
-    EXPECT_TRUE(ok) << message->text().toStdString();
+    retype(output, folder.filePath("out.npz"));
+    ASSERT_TRUE(outcome.run(dialog));
+    EXPECT_TRUE(outcome.ok) << message->text().toStdString();
     EXPECT_FALSE(output->property("fault").toBool());
     EXPECT_TRUE(QFile::exists(folder.filePath("out.npz")));
 }
@@ -203,16 +211,11 @@ TEST(SampleCloud, PreviewDrawsTheRunAndAFileShowsItsCloudCountingNaNRows) {
     // Gooch shading: under normals shading the front points' gradient colours match the surface.
     window.findChild<QAction*>("shading_gooch")->trigger();
     const QImage plain = frameOf(window);
-    ASSERT_TRUE(activate(window));
-    QTest::keyClick(&window, Qt::Key_M, Qt::ControlModifier | Qt::ShiftModifier);
-    ASSERT_TRUE(waitFor([&] { return window.sampling()->dialog() && window.sampling()->dialog()->isVisible(); }));
-    widgets::SamplingDialog* dialog = window.sampling()->dialog();
-    auto* count = dialog->findChild<QLineEdit*>("count");
-    count->selectAll();
-    QTest::keyClicks(count, "20000");
+    widgets::SamplingDialog* dialog = openSamplingDialog(window);
+    ASSERT_NE(dialog, nullptr);
+    retype(dialog->findChild<QLineEdit*>("count"), "20000");
     auto* pattern = dialog->findChild<QComboBox*>("pattern");
-    pattern->lineEdit()->selectAll();
-    QTest::keyClicks(pattern->lineEdit(), "surface");
+    retype(pattern->lineEdit(), "surface");
     QTest::mouseClick(dialog->findChild<QPushButton*>("preview"), Qt::LeftButton);
     ASSERT_TRUE(waitFor([&] { return window.viewport()->pointCloudSize() > 0; }, 60000))
         << dialog->findChild<QLabel*>("message")->text().toStdString();
