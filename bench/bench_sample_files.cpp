@@ -8,7 +8,10 @@
 //   sdfwb    sampling::sampleToFile, as `sdfwb --batch sample` runs it (compute, format, write,
 //            fsync, rename), without process start-up and shader compile.
 // A run that overlapped compute and writing perfectly would take max(compute, write); the ratio
-// printed is max(compute, write) / sdfwb (1.0 = perfect overlap). Medians of 5 runs (compute: 3).
+// printed is max(compute, write) / sdfwb (1.0 = perfect overlap). Medians of 5 repetitions, each
+// measuring the three one after the other (this machine's speed drifts between minutes). Beside
+// them the CPU seconds of each (all threads): where sdfwb's exceed compute's plus write's, the
+// overlap costs work; where its wall time exceeds that sum over the cores, cores stood idle.
 //
 //   build/bench/bench_sample_files [N [FOLDER [PATTERN]]]
 //       (default N = 20,000,000, FOLDER = $TMPDIR or /tmp, PATTERN rand and near)
@@ -32,6 +35,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <sys/resource.h>
 #include <unistd.h>
 #include <vector>
 
@@ -46,14 +50,23 @@ const char* kField = "float box(vec3 p, vec3 b) { vec3 q = abs(p) - b; return le
                      "float sdf(vec3 p) { float d = max(box(p, vec3(0.6)), -(length(p) - 0.75));\n"
                      "  vec2 t = vec2(length(p.xz) - 0.7, p.y); return min(d, length(t) - 0.12); }\n";
 
+// CPU seconds of this process so far, every thread's (the GL driver's, the writer's).
+double cpuSeconds() {
+    rusage usage{};
+    ::getrusage(RUSAGE_SELF, &usage);
+    auto at = [](const timeval& t) { return double(t.tv_sec) + double(t.tv_usec) * 1e-6; };
+    return at(usage.ru_utime) + at(usage.ru_stime);
+}
+
 double seconds(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-template <class M> double median3(M measure) {
-    double runs[3] = {measure(), measure(), measure()};
-    std::sort(runs, runs + 3);
-    return runs[1];
+double median5(double (&runs)[5]) {
+    double sorted[5];
+    std::copy(runs, runs + 5, sorted);
+    std::sort(sorted, sorted + 5);
+    return sorted[2];
 }
 
 // Bare compute, through the same GL path as sdfwb: every chunk dispatched into the ring's buffer
@@ -135,15 +148,14 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "bench_sample_files: %s\n", context.error().message.c_str());
         return 3;
     }
+    std::printf("sampling end to end, N = %llu rows of the CSG field (box - sphere + torus), into %s; GL: %s; medians of 5 "
+                "repetitions\n\n",
+                (unsigned long long)n, folder.c_str(), context.value()->info().renderer.c_str());
     std::printf(
-        "sampling end to end, N = %llu rows of the CSG field (box - sphere + torus), into %s; GL: %s; median of 5 (compute 3) "
-        "runs\n\n",
-        (unsigned long long)n, folder.c_str(), context.value()->info().renderer.c_str());
-    std::printf(
-        "| pattern | format | file MB | compute s | write s | sdfwb s | sdfwb Msamples/s | max(compute, write) / sdfwb | in "
-        "sdfwb's run: kernel s / copy into host buffers s (GPU timers) / writer busy s / GL thread waiting for the writer s "
-        "|\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|\n");
+        "| pattern | format | file MB | compute s | write s | sdfwb s | sdfwb Msamples/s | max(compute, write) / sdfwb | CPU s: "
+        "compute + write / sdfwb | in sdfwb's run: kernel s / copy into host buffers s (GPU timers) / writer busy s / GL "
+        "thread waiting for the writer s |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
     std::vector<std::string> patterns = {"rand", "near"};
     if (argc > 3) patterns = {argv[3]};
     for (const std::string& pattern : patterns) {
@@ -164,21 +176,27 @@ int main(int argc, char** argv) {
         warm.count = 1u << 16;
         computeSeconds(compute, warm, renderer::RowLayout::Separate); // the driver's code generation, outside every figure
         computeSeconds(compute, warm, renderer::RowLayout::Interleaved);
-        const double computeSeparate = median3([&] { return computeSeconds(compute, job, renderer::RowLayout::Separate); });
-        const double computeInterleaved = median3([&] { return computeSeconds(compute, job, renderer::RowLayout::Interleaved); });
         for (sampling::SampleFormat format :
              {sampling::SampleFormat::Bin, sampling::SampleFormat::Npz, sampling::SampleFormat::Ply}) {
             const fs::path path = folder / (std::string("bench_sample_files.") + sampling::formatName(format));
             sampling::SampleMetadata metadata;
             metadata.sdf = "csg";
             metadata.pattern = pattern;
-            // Each repetition writes the file and then the same bytes raw, one after the other, so
-            // both see the disk in the same state (its speed drifts between minutes here).
-            double endToEndRuns[5], writeRuns[5];
+            // .ply's writer takes the rows interleaved as the file stores them (the shader writes them so).
+            const renderer::RowLayout layout =
+                format == sampling::SampleFormat::Ply ? renderer::RowLayout::Interleaved : renderer::RowLayout::Separate;
+            // Each repetition computes, writes the file and then the same bytes raw, one after the
+            // other, so all three see the machine and the disk in the same state.
+            double computeRuns[5], endToEndRuns[5], writeRuns[5], computeCpu[5], endToEndCpu[5], writeCpu[5];
             sampling::SamplingReport reports[5];
             for (int k = 0; k < 5; ++k) {
-                ::sync(); // neither measurement pays for the other's writeback or the last file's removal
+                ::sync(); // no measurement pays for another's writeback or the last file's removal
+                double cpu = cpuSeconds();
+                computeRuns[k] = computeSeconds(compute, job, layout);
+                computeCpu[k] = cpuSeconds() - cpu;
+                cpu = cpuSeconds();
                 auto report = sampling::sampleToFile(compute, job, path, format, metadata, {});
+                endToEndCpu[k] = cpuSeconds() - cpu;
                 if (!report) {
                     std::fprintf(stderr, "bench_sample_files: %s\n", report.error().message.c_str());
                     return 1;
@@ -188,8 +206,10 @@ int main(int argc, char** argv) {
                 endToEndRuns[k] = report->seconds;
                 reports[k] = *report;
                 ::sync();
+                cpu = cpuSeconds();
                 writeRuns[k] =
                     writeSeconds(folder, bytes, std::size_t(job.chunkSize > 0 ? job.chunkSize : compute.preferredChunk()) * 28);
+                writeCpu[k] = cpuSeconds() - cpu;
                 if (k == 0) std::printf("| %s | %s | %.0f ", pattern.c_str(), sampling::formatName(format), double(bytes) / 1e6);
             }
             // The split of the run whose time is the median.
@@ -199,14 +219,11 @@ int main(int argc, char** argv) {
             char copy[32] = "-";
             if (middle.kernelSeconds >= 0.0) std::snprintf(kernel, sizeof kernel, "%.3f", middle.kernelSeconds);
             if (middle.copySeconds >= 0.0) std::snprintf(copy, sizeof copy, "%.3f", middle.copySeconds);
-            std::sort(endToEndRuns, endToEndRuns + 5);
-            std::sort(writeRuns, writeRuns + 5);
-            const double endToEnd = endToEndRuns[2], writeTime = writeRuns[2];
-            // .ply's writer takes the rows interleaved as the file stores them (the shader writes them so).
-            const double computeTime = format == sampling::SampleFormat::Ply ? computeInterleaved : computeSeparate;
+            const double computeTime = median5(computeRuns), endToEnd = median5(endToEndRuns), writeTime = median5(writeRuns);
             const double bound = std::max(computeTime, writeTime);
-            std::printf("| %.3f | %.3f | %.3f | %.1f | %.2f | %s / %s / %.3f / %.3f |\n", computeTime, writeTime, endToEnd,
-                        double(n) / endToEnd / 1e6, bound / endToEnd, kernel, copy, middle.writeSeconds, middle.waitSeconds);
+            std::printf("| %.3f | %.3f | %.3f | %.1f | %.2f | %.2f + %.2f / %.2f | %s / %s / %.3f / %.3f |\n", computeTime,
+                        writeTime, endToEnd, double(n) / endToEnd / 1e6, bound / endToEnd, median5(computeCpu), median5(writeCpu),
+                        median5(endToEndCpu), kernel, copy, middle.writeSeconds, middle.waitSeconds);
             std::fflush(stdout);
         }
         compute.releaseGl();

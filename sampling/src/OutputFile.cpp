@@ -42,6 +42,17 @@ OutputFile::~OutputFile() {
     if (!m_committed && !m_temporary.empty()) ::unlink(m_temporary.c_str());
 }
 
+bool OutputFile::inMemory(const fs::path& folder) {
+#ifdef __linux__
+    struct statfs system {};
+    const fs::path at = folder.empty() ? fs::path(".") : folder;
+    return ::statfs(at.c_str(), &system) == 0 && (system.f_type == TMPFS_MAGIC || system.f_type == RAMFS_MAGIC);
+#else
+    (void)folder;
+    return false;
+#endif
+}
+
 void OutputFile::reserve(std::uint64_t bytes) {
 #ifdef __linux__
     // Not on tmpfs: there it allocates and zeroes every page up front that the writes then fill

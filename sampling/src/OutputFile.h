@@ -33,6 +33,9 @@ public:
                reinterpret_cast<std::uintptr_t>(data) % kDirectAlignment == 0;
     }
     Expected<void> writeDirectAt(std::uint64_t offset, const void* data, std::size_t size);
+    // Whether files in `folder` lie in memory (tmpfs, ramfs): writing one costs the CPU a copy and
+    // no wait for a disk.
+    static bool inMemory(const std::filesystem::path& folder);
     // fsync, close, rename over the target.
     Expected<void> commit();
     const std::filesystem::path& target() const { return m_target; }

@@ -19,10 +19,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <linux/magic.h>
 #include <sstream>
 #include <string_view>
+#include <sys/vfs.h>
 #include <unistd.h>
 
 using namespace sdfwb;
@@ -352,18 +355,32 @@ TEST_F(SamplerTest, SameSeedSameRowsWhateverTheChunkSize) {
 // The ring of buffer sets (issue 49): how many sets, how many chunks go to the GPU before the
 // oldest is collected, and whether the GPU copies the rows into mapped host buffers (a GPU's
 // default, forced on here on llvmpipe) change nothing in the files: not a byte, not a bad-row count.
+// Nor does the writer's spreading over the cores (on llvmpipe, into a file in memory, it appends
+// each chunk in pieces; the reference writes whole chunks to the disk).
 TEST_F(SamplerTest, FilesAreTheSameBitForBitWhateverTheChunkTheRingAndTheStaging) {
     const std::string field = "float sdf(vec3 p) { return p.x > 0.6 ? sqrt(-1.0 - p.y * p.y) : length(p) - 0.5; }\n";
-    const fs::path folder = fs::temp_directory_path() / ("sdfwb-ring-" + std::to_string(::getpid()));
+    const std::string name = "sdfwb-ring-" + std::to_string(::getpid());
+    const fs::path folder = fs::temp_directory_path() / name;
     fs::create_directories(folder);
+    struct statfs shm {};
+    const bool memory = ::statfs("/dev/shm", &shm) == 0 && shm.f_type == TMPFS_MAGIC;
+    const fs::path memoryFolder = fs::path("/dev/shm") / name;
+    if (memory) fs::create_directories(memoryFolder);
     struct Variant {
         std::uint32_t chunk;
         renderer::SamplePipeline ring;
+        bool spread = true;
+        bool inMemory = false; // into /dev/shm, where the writer spreads over the cores
     };
-    const Variant variants[] = {
-        {4096, {4, 1, 0}}, // the reference: one chunk at a time, read in place
-        {1500, {3, 1, 1}}, {777, {8, 6, 0}}, {2048, {4, 2, 1}}, {0, {5, 3, 1}}, // 0: the driver's chunk
+    std::vector<Variant> variants = {
+        {4096, {4, 1, 0}, false}, // the reference: one chunk at a time, read in place, written whole
+        {1500, {3, 1, 1}},        {777, {8, 6, 0}}, {2048, {4, 2, 1}}, {0, {5, 3, 1}}, // 0: the driver's chunk
     };
+    if (memory)
+        variants.insert(variants.end(),
+                        {{8192, {4, 1, 0}, true, true}, {0, {4, 1, 0}, true, true}, {777, {3, 1, 0}, true, true}});
+    else
+        ADD_FAILURE() << "/dev/shm is not a tmpfs here: the writer's spreading is not tested";
     for (const char* pattern : {"rand", "near"}) {
         renderer::SampleCompute compute;
         auto sampler = sampling::findSampler(pattern, {});
@@ -381,14 +398,17 @@ TEST_F(SamplerTest, FilesAreTheSameBitForBitWhateverTheChunkTheRingAndTheStaging
                 EXPECT_EQ(resolved.staging, variant.ring.staging);
                 sampling::SamplingJob j = job(10007, 3);
                 j.chunkSize = variant.chunk;
-                const fs::path path = folder / (std::string(pattern) + "." + sampling::formatName(format));
+                const fs::path path =
+                    (variant.inMemory ? memoryFolder : folder) / (std::string(pattern) + "." + sampling::formatName(format));
+                if (!variant.spread) ::setenv("SDFWB_SPREAD_WRITER", "0", 1);
                 auto report = sampling::sampleToFile(compute, j, path, format, {}, {});
+                ::unsetenv("SDFWB_SPREAD_WRITER");
                 ASSERT_TRUE(report.hasValue()) << report.error().message;
                 const std::string bytes = fileBytes(path);
                 const std::string what = std::string(pattern) + " " + sampling::formatName(format) + ", chunk " +
                                          std::to_string(variant.chunk) + ", ring " + std::to_string(variant.ring.sets) +
                                          ", ahead " + std::to_string(variant.ring.ahead) + ", staging " +
-                                         std::to_string(variant.ring.staging);
+                                         std::to_string(variant.ring.staging) + (variant.inMemory ? ", in memory" : "");
                 if (reference.empty()) {
                     reference = bytes;
                     referenceBad = report->badRows;
@@ -403,6 +423,7 @@ TEST_F(SamplerTest, FilesAreTheSameBitForBitWhateverTheChunkTheRingAndTheStaging
         compute.releaseGl();
     }
     fs::remove_all(folder);
+    if (memory) fs::remove_all(memoryFolder);
 }
 
 // On llvmpipe a dispatch runs before it returns: one chunk at a time, read where the shader wrote
