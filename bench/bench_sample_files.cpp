@@ -11,7 +11,10 @@
 // printed is max(compute, write) / sdfwb (1.0 = perfect overlap). Medians of 5 repetitions, each
 // measuring the three one after the other (this machine's speed drifts between minutes). Beside
 // them the CPU seconds of each (all threads): where sdfwb's exceed compute's plus write's, the
-// overlap costs work; where its wall time exceeds that sum over the cores, cores stood idle.
+// overlap costs work; where its wall time exceeds that sum over the cores, cores stood idle. The
+// ceiling is the best ratio the cores allow: a run must do both parts' CPU work, so on C cores it
+// takes at least (compute CPU + write CPU) / C; ceiling = max(compute, write) / max(compute, write,
+// that least time).
 //
 //   build/bench/bench_sample_files [N [FOLDER [PATTERN]]]
 //       (default N = 20,000,000, FOLDER = $TMPDIR or /tmp, PATTERN rand and near)
@@ -36,6 +39,7 @@
 #include <memory>
 #include <string>
 #include <sys/resource.h>
+#include <thread>
 #include <unistd.h>
 #include <vector>
 
@@ -107,13 +111,15 @@ double computeSeconds(renderer::SampleCompute& compute, const sampling::Sampling
 // sample files: the size allocated up front, whole 4096-byte blocks past the page cache when
 // direct I/O is on, the disk asked to start writing as it goes, fsync, rename): `bytes` written in
 // blocks of `block` bytes from one page-aligned buffer; the file is removed afterwards.
-double writeSeconds(const fs::path& folder, std::uint64_t bytes, std::size_t block) {
+// `cpuSpent`: the CPU seconds of the writing (not of the file's removal afterwards).
+double writeSeconds(const fs::path& folder, std::uint64_t bytes, std::size_t block, double& cpuSpent) {
     const std::size_t alignment = sampling::detail::OutputFile::kDirectAlignment;
     const std::size_t capacity = (block + alignment - 1) / alignment * alignment;
     std::unique_ptr<char, decltype(&std::free)> data(static_cast<char*>(std::aligned_alloc(alignment, capacity)), &std::free);
     std::memset(data.get(), 'x', capacity);
     const fs::path path = folder / "bench_sample_files.write";
     auto start = std::chrono::steady_clock::now();
+    const double cpuStart = cpuSeconds();
     auto file = sampling::detail::OutputFile::create(path);
     if (!file) {
         std::fprintf(stderr, "bench_sample_files: %s\n", file.error().message.c_str());
@@ -133,6 +139,7 @@ double writeSeconds(const fs::path& folder, std::uint64_t bytes, std::size_t blo
         std::exit(1);
     }
     const double elapsed = seconds(start);
+    cpuSpent = cpuSeconds() - cpuStart;
     fs::remove(path);
     return elapsed;
 }
@@ -151,11 +158,11 @@ int main(int argc, char** argv) {
     std::printf("sampling end to end, N = %llu rows of the CSG field (box - sphere + torus), into %s; GL: %s; medians of 5 "
                 "repetitions\n\n",
                 (unsigned long long)n, folder.c_str(), context.value()->info().renderer.c_str());
-    std::printf(
-        "| pattern | format | file MB | compute s | write s | sdfwb s | sdfwb Msamples/s | max(compute, write) / sdfwb | CPU s: "
-        "compute + write / sdfwb | in sdfwb's run: kernel s / copy into host buffers s (GPU timers) / writer busy s / GL "
-        "thread waiting for the writer s |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("| pattern | format | file MB | compute s | write s | sdfwb s | sdfwb Msamples/s | max(compute, write) / sdfwb | "
+                "ceiling | CPU s: "
+                "compute + write / sdfwb | in sdfwb's run: kernel s / copy into host buffers s (GPU timers) / writer busy s / GL "
+                "thread waiting for the writer s |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
     std::vector<std::string> patterns = {"rand", "near"};
     if (argc > 3) patterns = {argv[3]};
     for (const std::string& pattern : patterns) {
@@ -206,10 +213,8 @@ int main(int argc, char** argv) {
                 endToEndRuns[k] = report->seconds;
                 reports[k] = *report;
                 ::sync();
-                cpu = cpuSeconds();
-                writeRuns[k] =
-                    writeSeconds(folder, bytes, std::size_t(job.chunkSize > 0 ? job.chunkSize : compute.preferredChunk()) * 28);
-                writeCpu[k] = cpuSeconds() - cpu;
+                writeRuns[k] = writeSeconds(
+                    folder, bytes, std::size_t(job.chunkSize > 0 ? job.chunkSize : compute.preferredChunk()) * 28, writeCpu[k]);
                 if (k == 0) std::printf("| %s | %s | %.0f ", pattern.c_str(), sampling::formatName(format), double(bytes) / 1e6);
             }
             // The split of the run whose time is the median.
@@ -221,9 +226,12 @@ int main(int argc, char** argv) {
             if (middle.copySeconds >= 0.0) std::snprintf(copy, sizeof copy, "%.3f", middle.copySeconds);
             const double computeTime = median5(computeRuns), endToEnd = median5(endToEndRuns), writeTime = median5(writeRuns);
             const double bound = std::max(computeTime, writeTime);
-            std::printf("| %.3f | %.3f | %.3f | %.1f | %.2f | %.2f + %.2f / %.2f | %s / %s / %.3f / %.3f |\n", computeTime,
-                        writeTime, endToEnd, double(n) / endToEnd / 1e6, bound / endToEnd, median5(computeCpu), median5(writeCpu),
-                        median5(endToEndCpu), kernel, copy, middle.writeSeconds, middle.waitSeconds);
+            const double cores = double(std::max(1u, std::thread::hardware_concurrency()));
+            const double least = (median5(computeCpu) + median5(writeCpu)) / cores;
+            std::printf("| %.3f | %.3f | %.3f | %.1f | %.2f | %.2f | %.2f + %.2f / %.2f | %s / %s / %.3f / %.3f |\n", computeTime,
+                        writeTime, endToEnd, double(n) / endToEnd / 1e6, bound / endToEnd, bound / std::max(bound, least),
+                        median5(computeCpu), median5(writeCpu), median5(endToEndCpu), kernel, copy, middle.writeSeconds,
+                        middle.waitSeconds);
             std::fflush(stdout);
         }
         compute.releaseGl();
