@@ -111,63 +111,55 @@ std::uint32_t chunkFor(const SamplingJob& job, const renderer::SampleCompute& co
     return job.chunkSize > 0 ? job.chunkSize : compute.preferredChunk();
 }
 
-// Moves the calling thread to the next of the process's cores at each call, in turn. llvmpipe
-// splits every dispatch into equal shares, one per worker thread (one per core), fixed before they
-// start, and the dispatch ends with its slowest share. A writer that stays on one core delays that
-// core's worker by all the time it writes while the other cores wait idle at the end: 0.2 of 1.2
-// core-seconds stood idle writing 20 M rows into tmpfs on 2 cores. Writing each chunk in pieces,
-// each on the next core, delays every worker about equally.
-class CoreRotation {
-public:
-    // Off (one piece a chunk, no moves) unless `on` and the process may run on several cores.
-    explicit CoreRotation(bool on) {
+// The cores this process may run on (empty where that cannot be asked).
+std::vector<int> allowedCores() {
+    std::vector<int> cores;
 #ifdef __linux__
-        cpu_set_t allowed;
-        CPU_ZERO(&allowed);
-        if (on && ::sched_getaffinity(0, sizeof allowed, &allowed) == 0)
-            for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu)
-                if (CPU_ISSET(cpu, &allowed)) m_cores.push_back(cpu);
+    cpu_set_t allowed;
+    CPU_ZERO(&allowed);
+    if (::sched_getaffinity(0, sizeof allowed, &allowed) == 0)
+        for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu)
+            if (CPU_ISSET(cpu, &allowed)) cores.push_back(cpu);
+#endif
+    return cores;
+}
+
+// Keeps the calling thread on `core` (a refusal leaves it where it is).
+void pinTo(int core) {
+#ifdef __linux__
+    cpu_set_t one;
+    CPU_ZERO(&one);
+    CPU_SET(core, &one);
+    (void)::sched_setaffinity(0, sizeof one, &one);
 #else
-        (void)on;
+    (void)core;
 #endif
-        if (m_cores.size() < 2) m_cores.clear();
-    }
-    // Rows a piece for a chunk of n rows, in kPieces pieces (the turns go on from chunk to chunk):
-    // whole multiples of 1024 rows (4096-byte multiples in every array), so that pieces keep the
-    // chunk's alignment for direct I/O.
-    std::size_t pieceRows(std::size_t n) const {
-        if (m_cores.empty()) return n;
-        return std::max<std::size_t>(1024, (n / kPieces + 1023) / 1024 * 1024);
-    }
-    void next() {
-#ifdef __linux__
-        if (m_cores.empty()) return;
-        cpu_set_t one;
-        CPU_ZERO(&one);
-        CPU_SET(m_cores[m_turn++ % m_cores.size()], &one);
-        (void)::sched_setaffinity(0, sizeof one, &one); // a refusal leaves the thread where it is
-#endif
-    }
+}
 
-private:
-    // Against one piece a chunk, 8 pieces were faster in 25 of 30 paired runs here (2 pieces: in 18
-    // of 30; 16 and 32 paid more for the moves than they gained).
-    static constexpr std::size_t kPieces = 8;
-    std::vector<int> m_cores;
-    std::size_t m_turn = 0;
-};
-
-// Writes chunk k on its own thread while the GL thread computes the next chunks into the other
-// mapped buffer sets of the ring (SampleCompute::pipeline().sets): the writer reads the rows where
-// the shader (or the GPU's copy) left them. Four slots rather than two absorb the writer's uneven
-// pace (a write that waits on the disk), so the GL thread seldom waits for a free slot.
-// The first write error stops the run at the next chunk.
+// Writes chunk k while the GL thread computes the next chunks into the other mapped buffer sets
+// of the ring (SampleCompute::pipeline().sets): the writer reads the rows where the shader (or the
+// GPU's copy) left them. Four slots rather than two absorb the writer's uneven pace (a write that
+// waits on the disk), so the GL thread seldom waits for a free slot. The first write error stops
+// the run at the next chunk.
+//
+// Spread (the driver computes on the CPU and the file lies in memory, so writing is copying):
+// llvmpipe splits every dispatch into equal shares, one per worker thread (one per core), fixed
+// before they start, and the dispatch ends with its slowest share. A writer on one core delays
+// that core's worker by all the time it writes while the other cores wait idle at the end: 0.2 of
+// 1.2 core-seconds stood idle writing 20 M rows into tmpfs on 2 cores. So the writing goes in
+// pieces to writer threads pinned one to a core, which take them in turn: every worker is
+// delayed about equally. Otherwise one writer thread writes whole chunks.
 class PipelinedWriter {
 public:
-    // `spread`: the rows are computed on the CPU, so the writer spreads its work over the cores
-    // (CoreRotation).
-    PipelinedWriter(SampleWriter& writer, int slots, bool spread)
-        : m_writer(writer), m_slots(slots), m_spread(spread), m_thread([this] { loop(); }) {}
+    PipelinedWriter(SampleWriter& writer, int slots, bool spread) : m_writer(writer), m_slots(slots) {
+        const std::vector<int> cores = spread ? allowedCores() : std::vector<int>();
+        m_laneCount = cores.size() >= 2 ? std::min<std::size_t>(cores.size(), kPieces) : 1;
+        for (std::size_t lane = 0; lane < m_laneCount; ++lane)
+            m_lanes.emplace_back([this, lane, core = m_laneCount > 1 ? cores[lane] : -1] {
+                if (core >= 0) pinTo(core);
+                loop(lane);
+            });
+    }
     PipelinedWriter(const PipelinedWriter&) = delete;
     PipelinedWriter& operator=(const PipelinedWriter&) = delete;
     ~PipelinedWriter() {
@@ -176,7 +168,7 @@ public:
             m_stop = true;
         }
         m_changed.notify_all();
-        m_thread.join();
+        for (std::thread& lane : m_lanes) lane.join();
     }
 
     // The slot the next chunk is computed into, once the writer no longer reads it. Slots are
@@ -191,7 +183,7 @@ public:
         return slot;
     }
 
-    // The GL thread's time waiting in nextSlot(), and the writer's in its appends (after drain()).
+    // The GL thread's time waiting in acquire(), and the writers' in their appends (after drain()).
     double waitSeconds() const { return m_waitSeconds; }
     double writeSeconds() {
         std::lock_guard lock(m_mutex);
@@ -225,49 +217,65 @@ private:
         renderer::MappedRows rows;
         std::size_t n;
         int slot;
+        std::size_t done = 0; // rows appended
     };
 
-    void loop() {
+    // Pieces a chunk when spread: against whole chunks on one thread, 8 pieces were faster in 28 of
+    // 30 paired runs here (median 0.87-0.89 of the time); 4 pieces did as well as 8 (12 of 30
+    // faster), 16 lost 28 of 30 to 8 (each hand-over wakes a thread on another core).
+    static constexpr std::size_t kPieces = 8;
+
+    // Rows a piece for a chunk of n rows: whole multiples of 1024 rows (4096-byte multiples in
+    // every array), so that pieces keep the chunk's alignment for direct I/O.
+    std::size_t pieceRows(std::size_t n) const {
+        if (m_laneCount == 1) return n;
+        return std::max<std::size_t>(1024, (n / kPieces + 1023) / 1024 * 1024);
+    }
+
+    // Writer thread `lane`: takes every m_laneCount-th piece, in order.
+    void loop(std::size_t lane) {
         std::unique_lock lock(m_mutex);
         for (;;) {
-            m_changed.wait(lock, [&] { return m_stop || !m_queue.empty(); });
+            m_changed.wait(lock,
+                           [&] { return (m_stop && m_queue.empty()) || (!m_queue.empty() && m_piece % m_laneCount == lane); });
             if (m_queue.empty()) return; // stopping with nothing left
             const Chunk chunk = m_queue.front();
-            m_queue.pop_front();
+            const std::size_t at = chunk.done, n = std::min(pieceRows(chunk.n), chunk.n - at);
             const bool skip = m_error.has_value();
             lock.unlock();
             Expected<void> ok;
             const auto start = std::chrono::steady_clock::now();
             const renderer::MappedRows& rows = chunk.rows;
-            const std::size_t step = m_spread.pieceRows(chunk.n);
-            for (std::size_t at = 0; !skip && ok && at < chunk.n; at += step) {
-                const std::size_t n = std::min(step, chunk.n - at);
-                m_spread.next();
+            if (!skip)
                 ok = rows.rows ? m_writer.appendRows(rows.rows + 7 * at, n)
                                : m_writer.append(rows.positions + 3 * at, rows.distances + at, rows.gradients + 3 * at, n);
-            }
             const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             lock.lock();
             m_writeSeconds += took;
             if (!ok && !m_error) m_error = ok.error();
-            m_busy[chunk.slot] = false;
+            ++m_piece;
+            if ((m_queue.front().done += n) == chunk.n) {
+                m_busy[chunk.slot] = false;
+                m_queue.pop_front();
+            }
             m_changed.notify_all();
         }
     }
 
     SampleWriter& m_writer;
     const int m_slots;
-    CoreRotation m_spread; // the writer thread's
+    std::size_t m_laneCount = 1;
     bool m_busy[renderer::SampleCompute::kMaxSlots] = {};
     int m_next = 0;              // the slot the GL thread computes into next (its thread only)
     double m_waitSeconds = 0.0;  // GL thread only
     double m_writeSeconds = 0.0; // under m_mutex
-    std::deque<Chunk> m_queue;
+    std::deque<Chunk> m_queue;   // the front chunk is being written, piece by piece
+    std::size_t m_piece = 0;     // pieces written so far: lane m_piece % m_laneCount writes the next
     std::optional<Error> m_error;
     bool m_stop = false;
     std::mutex m_mutex;
     std::condition_variable m_changed;
-    std::thread m_thread; // last: starts after everything it uses
+    std::vector<std::thread> m_lanes; // last: they start after everything they use
 };
 
 } // namespace
