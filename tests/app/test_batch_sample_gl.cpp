@@ -14,8 +14,10 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <linux/magic.h>
 #include <string>
 #include <sys/resource.h>
+#include <sys/vfs.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -124,8 +126,17 @@ std::string readAll(const fs::path& path) { return sdfwb::testing::readBytes(pat
 TEST(ResourceLimits, DiskFullFailsCleanlyAndKeepsTheOldFile) {
     const fs::path out = scratch("full.npz");
     { std::ofstream(out) << "the previous results"; }
+    // Into /dev/shm too, where the writing goes in pieces to writer threads pinned one to a core.
+    const fs::path memory = fs::path("/dev/shm") / ("sdfwb-full-" + std::to_string(::getpid()));
+    struct statfs shm {};
+    const bool inMemory = ::statfs("/dev/shm", &shm) == 0 && shm.f_type == TMPFS_MAGIC && fs::create_directories(memory);
+    EXPECT_TRUE(inMemory) << "/dev/shm is not a tmpfs here: the spread writer's failure is not tested";
+    std::vector<fs::path> targets;
     for (const char* extension : {".npz", ".bin", ".ply"}) {
-        const fs::path target = out.parent_path() / (std::string("full") + extension);
+        targets.push_back(out.parent_path() / (std::string("full") + extension));
+        if (inMemory) targets.push_back(memory / (std::string("full") + extension));
+    }
+    for (const fs::path& target : targets) {
         { std::ofstream(target) << "the previous results"; }
         // 64 KiB per file: the writer's first large write fails with EFBIG, as on a full disk.
         Result r =
@@ -134,9 +145,10 @@ TEST(ResourceLimits, DiskFullFailsCleanlyAndKeepsTheOldFile) {
         EXPECT_EQ(r.exitCode, 1) << r.output;
         EXPECT_NE(r.output.find(target.string()), std::string::npos) << "the message names the file: " << r.output;
         EXPECT_NE(r.output.find("write failed"), std::string::npos) << r.output;
-        EXPECT_TRUE(readAll(target) == "the previous results") << extension << ": the old file was replaced";
-        EXPECT_FALSE(temporariesNextTo(target)) << extension;
+        EXPECT_TRUE(readAll(target) == "the previous results") << target << ": the old file was replaced";
+        EXPECT_FALSE(temporariesNextTo(target)) << target;
     }
+    if (inMemory) fs::remove_all(memory);
     // A render too: the PNG writer fails, the old image stays.
     const fs::path image = scratch("full.png");
     { std::ofstream(image) << "the previous image"; }
