@@ -127,14 +127,12 @@ TEST(ResourceLimits, DiskFullFailsCleanlyAndKeepsTheOldFile) {
     const fs::path out = scratch("full.npz");
     { std::ofstream(out) << "the previous results"; }
     // Into /dev/shm too, where the writing goes in pieces to writer threads pinned one to a core.
-    const fs::path memory = fs::path("/dev/shm") / ("sdfwb-full-" + std::to_string(::getpid()));
-    struct statfs shm {};
-    const bool inMemory = ::statfs("/dev/shm", &shm) == 0 && shm.f_type == TMPFS_MAGIC && fs::create_directories(memory);
-    EXPECT_TRUE(inMemory) << "/dev/shm is not a tmpfs here: the spread writer's failure is not tested";
+    const auto memory = sdfwb::testing::memoryScratchPath("batch-sample", "full.npz");
+    EXPECT_TRUE(memory.has_value()) << "/dev/shm is not a tmpfs here: the spread writer's failure is not tested";
     std::vector<fs::path> targets;
     for (const char* extension : {".npz", ".bin", ".ply"}) {
         targets.push_back(out.parent_path() / (std::string("full") + extension));
-        if (inMemory) targets.push_back(memory / (std::string("full") + extension));
+        if (memory) targets.push_back(memory->parent_path() / (std::string("full") + extension));
     }
     for (const fs::path& target : targets) {
         { std::ofstream(target) << "the previous results"; }
@@ -148,7 +146,7 @@ TEST(ResourceLimits, DiskFullFailsCleanlyAndKeepsTheOldFile) {
         EXPECT_TRUE(readAll(target) == "the previous results") << target << ": the old file was replaced";
         EXPECT_FALSE(temporariesNextTo(target)) << target;
     }
-    if (inMemory) fs::remove_all(memory);
+    if (memory) fs::remove_all(memory->parent_path());
     // A render too: the PNG writer fails, the old image stays.
     const fs::path image = scratch("full.png");
     { std::ofstream(image) << "the previous image"; }

@@ -12,6 +12,7 @@
 #include <shaders/ShaderComposer.h>
 
 #include "GlTestContext.h"
+#include "common/Scratch.h"
 
 #include <gtest/gtest.h>
 
@@ -362,10 +363,9 @@ TEST_F(SamplerTest, FilesAreTheSameBitForBitWhateverTheChunkTheRingAndTheStaging
     const std::string name = "sdfwb-ring-" + std::to_string(::getpid());
     const fs::path folder = fs::temp_directory_path() / name;
     fs::create_directories(folder);
-    struct statfs shm {};
-    const bool memory = ::statfs("/dev/shm", &shm) == 0 && shm.f_type == TMPFS_MAGIC;
-    const fs::path memoryFolder = fs::path("/dev/shm") / name;
-    if (memory) fs::create_directories(memoryFolder);
+    const auto inMemory = sdfwb::testing::memoryScratchPath("ring", "");
+    const bool memory = inMemory.has_value();
+    const fs::path memoryFolder = memory ? inMemory->parent_path() : fs::path();
     struct Variant {
         std::uint32_t chunk;
         renderer::SamplePipeline ring;
