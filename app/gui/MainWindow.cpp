@@ -280,6 +280,10 @@ void MainWindow::connectDocument() {
                                              !s.member.empty()         ? QString(" (.%1)").arg(QString::fromStdString(s.member))
                                              : s.returnType == "float" ? QString()
                                                                        : QString(" (.x)")));
+        // Another host's shader (glslViewer, Bonzomatic, Fragmentarium, ...): say how it was read.
+        const std::string& host = m_document->lastGoodSource().host;
+        if (!host.empty())
+            statusBar()->showMessage(tr("Read as %1").arg(QString::fromStdString(shaders::hostDescription(host))), 8000);
     });
     // A whole shader whose march steps by two functions equally often: the entry box lists them.
     connect(m_document, &SdfDocument::entryCandidatesChanged, this, [this](const QStringList& names) {

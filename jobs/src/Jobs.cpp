@@ -188,6 +188,7 @@ JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& w
                         what + ": " + label + " has errors" + (what == "audit" ? "" : "; nothing written"),
                         sdf.diagnostics,
                         {}};
+    if (!sdf.host.empty()) log::info(what, label + ": read as " + shaders::hostDescription(sdf.host));
     if (sdf.entrySource == shaders::EntrySource::March) log::info(what, label + ": entry automatic: " + sdf.entryReason);
     auto resolved = shaders::resolveParameters(sdf.parameters, input.params);
     if (!resolved) return usage(key("params") + ": " + label + ": " + resolved.error().message);

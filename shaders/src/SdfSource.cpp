@@ -8,6 +8,8 @@
 #include <core/TextFile.h>
 #include <shaders/SourceChecks.h>
 
+#include "ForeignHosts.h"
+
 #include <algorithm>
 #include <iterator>
 #include <map>
@@ -553,13 +555,26 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
 
 } // namespace
 
+std::string hostDescription(const std::string& host) {
+    if (host.empty()) return "";
+    if (host == "Fragmentarium")
+        return "a Fragmentarium fragment: its directives and slider annotations read as parameters, its system includes "
+               "as what the code uses of them, init() run before the field";
+    if (host == "a Shadertoy port") return "a Shadertoy port: its main() wrapper left out, mainImage read as on Shadertoy";
+    return (host.compare(0, 2, "a ") == 0 ? host + "'s" : "a " + host) +
+           " shader: its main() read as Shadertoy's mainImage, its inputs as Shadertoy's";
+}
+
 PreparedSdf prepareSdf(const std::string& text, const std::string& name, const std::filesystem::path& path,
                        const IncludeOptions& options, const std::string& entry) {
     PreparedSdf prepared;
-    prepared.source = resolveIncludes(text, name, path, options);
+    ParameterScan parameters = parseParameters(text, name);
+    // Another host's whole shader (a `void main()`, a Fragmentarium fragment): read in sdfwb's terms.
+    detail::HostAdaptation host = detail::adaptForeignHost(text, parameters.parameters);
+    prepared.host = std::move(host.host);
+    prepared.source = resolveIncludes(prepared.host.empty() ? text : host.text, name, path, options);
     prepared.diagnostics = prepared.source.diagnostics;
     for (Diagnostic& d : checkSourceFiles(prepared.source)) prepared.diagnostics.push_back(std::move(d));
-    ParameterScan parameters = parseParameters(text, name);
     prepared.parameters = std::move(parameters.parameters);
     for (Diagnostic& d : parameters.diagnostics) prepared.diagnostics.push_back(std::move(d));
     std::string stripped = stripComments(prepared.source.text);
@@ -613,6 +628,9 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
     // `capsule(p, a, b, r)` itself): the loop's body run once makes that call as the march does.
     if (!prepared.signature.found && prepared.entrySource == EntrySource::Default && prepared.shadertoyMainImage)
         chooseInlineField(prepared, stripped);
+    // Fragmentarium's init(), which its raytracer calls before the field: the wrapper calls it.
+    if (prepared.signature.found && !host.entryPrelude.empty() && prepared.signature.prelude.empty())
+        prepared.signature.prelude = host.entryPrelude;
     if (!prepared.signature.found) {
         Diagnostic missing = missingEntryDiagnostic(prepared.source, chosen, prepared.entrySource != EntrySource::Default);
         // The march's field, where its parameters after the point could not be traced: why.

@@ -135,7 +135,8 @@ std::string entryWrapper(const PreparedSdf& sdf) {
         locals += signature.outParameters[i] + " sdfwb_out" + std::to_string(i) + "; ";
         arguments += ", sdfwb_out" + std::to_string(i);
     }
-    std::string text = "float sdfwb_sdf(vec3 p) { " + locals + "return " + signature.entry + "(p" +
+    // A prelude alone: statements the field needs first (Fragmentarium's init()).
+    std::string text = "float sdfwb_sdf(vec3 p) { " + signature.prelude + locals + "return " + signature.entry + "(p" +
                        (signature.animated ? ", sdfwb_time" : "") + arguments + ")" + value + "; }\n";
     // The user's macros end with the user's code: what follows is the workbench's.
     for (const std::string& macro : sdf.macros) text += "#undef " + macro + "\n";

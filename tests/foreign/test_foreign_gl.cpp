@@ -127,11 +127,17 @@ TEST_P(ForeignCode, OpensRendersSamplesAndGetsItsFlags) {
     const auto& conventional = shaders::conventionalEntries();
     std::ifstream in(file);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const bool wholeShader = text.find("mainImage") != std::string::npos;
+    // Shadertoy's mainImage, or another host's main() (glslViewer, GLSL Sandbox, Bonzomatic, ...).
+    const std::string code = shaders::stripComments(text);
+    const bool hostMain = std::regex_search(code, std::regex(R"(\bvoid\s+main\s*\()"));
+    const bool wholeShader = code.find("mainImage") != std::string::npos || hostMain;
     const bool findable = wholeShader || expected.entry == "sdf" ||
                           std::find(conventional.begin(), conventional.end(), expected.entry) != conventional.end();
     shaders::PreparedSdf sdf = prepare(file, findable ? std::string() : expected.entry);
     ASSERT_TRUE(sdf.ok()) << firstError(sdf);
+    // Another host's shader is read as that host's (a host's main(), Fragmentarium's annotations).
+    const bool otherHost = hostMain || code.find("slider[") != std::string::npos;
+    EXPECT_EQ(sdf.host.empty(), !otherHost) << sdf.host;
     EXPECT_EQ(sdf.signature.entry, expected.entry);
     EXPECT_EQ(sdf.usesTime(), expected.animated);
     if (sdf.entrySource == shaders::EntrySource::March) {

@@ -9,8 +9,9 @@
 //     uniform vec2  offset = vec2(0.0);       // @range -1 1
 //     uniform float scale  = 1.0;            // @range 0.01 100 @log
 // Only file-scope `uniform` declarations with an initializer (or with annotations, which then
-// need one) are parameters. One parser, pure (no GL, no I/O); problems are diagnostics with the
-// file, line and column.
+// need one) are parameters, and uniforms with Fragmentarium's annotations (slider[MIN,DEFAULT,MAX],
+// checkbox[BOOL], color[R,G,B]; its `#preset Default` block sets defaults too). One parser, pure
+// (no GL, no I/O); problems are diagnostics with the file, line and column.
 
 #include <core/Expected.h>
 #include <shaders/Diagnostic.h>
@@ -44,6 +45,12 @@ struct Parameter {
     int column = 0;
     std::size_t initializerOffset = 0; // the initializer's text in the file (for rewriting defaults)
     std::size_t initializerLength = 0;
+    // How the default is written there: a GLSL initializer, or Fragmentarium's annotation after
+    // the declaration (`uniform float Scale; slider[-3,3,5]`: the middle value, vectors as
+    // `(x,y,z)`) or a line of its `#preset Default` block (`Scale = 2.5`, vectors as `x,y,z`),
+    // which overrides the slider.
+    enum class Syntax : std::uint8_t { Glsl, FragmentariumSlider, FragmentariumPreset };
+    Syntax syntax = Syntax::Glsl;
 };
 
 struct ParameterScan {

@@ -34,6 +34,8 @@ struct SdfSignature {
     // march, shaders/MarchAnalysis.h): the wrapper runs `prelude` (mainImage's code before the
     // march, its parameters declared first), then `bindings`, and calls ENTRY(p`arguments`) in a
     // block that declares `scoped`. Empty otherwise.
+    // A `prelude` alone (no `arguments`): statements the wrapper runs before calling ENTRY(p)
+    // (Fragmentarium's init(), which computes globals from its uniforms).
     std::string prelude, bindings, scoped, arguments;
     // A field a whole shader's march writes inline (shaders::InlineMarch): the wrapper runs
     // `prelude` and then this block, which returns the field at sdfwb_point. Empty otherwise.
@@ -94,6 +96,10 @@ struct PreparedSdf {
     // The file defines Shadertoy's `void mainImage(out vec4, in vec2)`: a whole shader, whose own
     // picture renderer/ShadertoyPicture.h can draw.
     bool shadertoyMainImage = false;
+    // The host a whole shader was written for, where it is not Shadertoy or sdfwb ("glslViewer",
+    // "GLSL Sandbox", "Bonzomatic", "a WebGL page", "Fragmentarium", ...): its text was read in
+    // that host's terms (shaders/src/ForeignHosts.h); empty otherwise.
+    std::string host;
     // A triangle mesh the text's sdfwb_meshSdf() reads (the SDF is a mesh file: prepareMeshSdf).
     // The composer adds shaders/mesh/mesh_field.glsl and the GL side binds its buffers.
     std::shared_ptr<const meshfield::MeshField> mesh;
@@ -105,6 +111,10 @@ struct PreparedSdf {
     // Needs a time value each frame: sdf(vec3, float) or the G3D scene time uniform.
     bool usesTime() const { return signature.animated || compat.usesTimeSymbol(); }
 };
+
+// What reading a shader as `host`'s (PreparedSdf::host) did, for the log and the status bar:
+// "a glslViewer shader: its main() read as Shadertoy's mainImage, its inputs as Shadertoy's".
+std::string hostDescription(const std::string& host);
 
 // Returns `text` with comments replaced by spaces (newlines kept, so line numbers still match).
 std::string stripComments(const std::string& text);

@@ -1,0 +1,451 @@
+// Other hosts' whole shaders in sdfwb's terms (ForeignHosts.h). Every edit stays on its line: a
+// replacement may be longer or shorter than what it replaces, but no newline is added or removed.
+
+#include "ForeignHosts.h"
+
+#include <shaders/SdfSource.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <optional>
+
+namespace sdfwb::shaders::detail {
+namespace {
+
+struct Edit {
+    std::size_t offset = 0, length = 0;
+    std::string replacement;
+};
+
+bool isSpaceChar(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v' || c == '\n'; }
+
+// Applies non-overlapping edits (an edit overlapping one before it is dropped).
+std::string applyEdits(const std::string& text, std::vector<Edit> edits) {
+    std::stable_sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.offset < b.offset; });
+    std::string out;
+    std::size_t from = 0;
+    for (const Edit& e : edits) {
+        if (e.offset < from) continue;
+        out.append(text, from, e.offset - from);
+        out += e.replacement;
+        from = e.offset + e.length;
+    }
+    out.append(text, from, std::string::npos);
+    return out;
+}
+
+// Spaces for text[offset, offset + length), newlines kept.
+Edit blank(const std::string& text, std::size_t offset, std::size_t length) {
+    std::string spaces = text.substr(offset, length);
+    for (char& c : spaces)
+        if (c != '\n') c = ' ';
+    return {offset, length, std::move(spaces)};
+}
+
+// The comment-stripped text with the brace depth at each offset and its words.
+struct Code {
+    const std::string& original;
+    std::string stripped;
+    std::vector<int> depth; // brace depth before each character
+
+    explicit Code(const std::string& text) : original(text), stripped(stripComments(text)), depth(stripped.size() + 1, 0) {
+        int d = 0;
+        for (std::size_t i = 0; i < stripped.size(); ++i) {
+            depth[i] = d;
+            if (stripped[i] == '{') ++d;
+            if (stripped[i] == '}') d = std::max(0, d - 1);
+        }
+        depth[stripped.size()] = d;
+    }
+
+    std::size_t skipSpace(std::size_t i) const {
+        while (i < stripped.size() && isSpaceChar(stripped[i])) ++i;
+        return i;
+    }
+    std::string wordAt(std::size_t& i) const {
+        const std::size_t start = i;
+        while (i < stripped.size() && isWordCharacter(stripped[i])) ++i;
+        return stripped.substr(start, i - start);
+    }
+    // Offsets of every whole-word `word` outside comments, optionally within [from, to).
+    std::vector<std::size_t> occurrences(const std::string& word, std::size_t from = 0,
+                                         std::size_t to = std::string::npos) const {
+        std::vector<std::size_t> out;
+        for (std::size_t at = stripped.find(word, from); at != std::string::npos && at < to;
+             at = stripped.find(word, at + word.size())) {
+            if ((at > 0 && isWordCharacter(stripped[at - 1])) ||
+                (at + word.size() < stripped.size() && isWordCharacter(stripped[at + word.size()])))
+                continue;
+            out.push_back(at);
+        }
+        return out;
+    }
+    // The offset of the `}` closing the `{` at `open`, or npos.
+    std::size_t closing(std::size_t open) const {
+        for (std::size_t k = open + 1; k < stripped.size(); ++k)
+            if (stripped[k] == '}' && depth[k] == depth[open] + 1) return k;
+        return std::string::npos;
+    }
+    // Whether a preprocessor line starts at or before `at` on its line.
+    bool inDirective(std::size_t at) const {
+        std::size_t start = stripped.rfind('\n', at);
+        start = start == std::string::npos ? 0 : start + 1;
+        return stripped.find_first_not_of(" \t", start) < at && stripped[stripped.find_first_not_of(" \t", start)] == '#';
+    }
+};
+
+// A file-scope declaration `[layout(...)] QUALIFIER [precision] TYPE NAME;` (one name, no
+// initializer): where it starts and ends (after the `;`), its type and name.
+struct Declaration {
+    std::size_t begin = 0, end = 0;
+    std::string qualifier, type, name;
+    bool layout = false;
+};
+
+std::vector<Declaration> fileScopeDeclarations(const Code& code, const std::vector<std::string>& qualifiers) {
+    std::vector<Declaration> out;
+    for (const std::string& qualifier : qualifiers)
+        for (std::size_t at : code.occurrences(qualifier)) {
+            if (code.depth[at] != 0 || code.inDirective(at)) continue;
+            Declaration d;
+            d.qualifier = qualifier;
+            d.begin = at;
+            // A layout(...) before the qualifier belongs to the declaration.
+            std::size_t before = at;
+            while (before > 0 && isSpaceChar(code.stripped[before - 1])) --before;
+            if (before > 0 && code.stripped[before - 1] == ')') {
+                const std::size_t open = code.stripped.rfind('(', before - 1);
+                if (open != std::string::npos && open >= 6) {
+                    std::size_t word = open;
+                    while (word > 0 && isSpaceChar(code.stripped[word - 1])) --word;
+                    if (word >= 6 && code.stripped.compare(word - 6, 6, "layout") == 0 &&
+                        (word == 6 || !isWordCharacter(code.stripped[word - 7]))) {
+                        d.begin = word - 6;
+                        d.layout = true;
+                    }
+                }
+            }
+            std::size_t k = code.skipSpace(at + qualifier.size());
+            std::string type = code.wordAt(k);
+            if (type == "lowp" || type == "mediump" || type == "highp") {
+                k = code.skipSpace(k);
+                type = code.wordAt(k);
+            }
+            k = code.skipSpace(k);
+            const std::string name = code.wordAt(k);
+            k = code.skipSpace(k);
+            if (type.empty() || name.empty() || k >= code.stripped.size() || code.stripped[k] != ';') continue;
+            d.type = type;
+            d.name = name;
+            d.end = k + 1;
+            out.push_back(d);
+        }
+    std::sort(out.begin(), out.end(), [](const Declaration& a, const Declaration& b) { return a.begin < b.begin; });
+    return out;
+}
+
+// A top-level definition `void NAME ( [void] ) {`: the offsets of NAME, of the parameter list's
+// `(` and `)`, and of the body's braces; nullopt when there is none.
+struct Definition {
+    std::size_t name = 0, open = 0, close = 0, bodyOpen = 0, bodyClose = 0;
+};
+std::optional<Definition> voidFunction(const Code& code, const std::string& name, bool noParameters) {
+    for (std::size_t at : code.occurrences(name)) {
+        if (code.depth[at] != 0 || code.inDirective(at)) continue;
+        std::size_t before = at;
+        while (before > 0 && isSpaceChar(code.stripped[before - 1])) --before;
+        if (before < 4 || code.stripped.compare(before - 4, 4, "void") != 0) continue;
+        Definition d;
+        d.name = at;
+        d.open = code.skipSpace(at + name.size());
+        if (d.open >= code.stripped.size() || code.stripped[d.open] != '(') continue;
+        d.close = code.stripped.find(')', d.open);
+        if (d.close == std::string::npos) continue;
+        if (noParameters) {
+            std::string inside = code.stripped.substr(d.open + 1, d.close - d.open - 1);
+            inside.erase(std::remove_if(inside.begin(), inside.end(), isSpaceChar), inside.end());
+            if (!inside.empty() && inside != "void") continue;
+        }
+        d.bodyOpen = code.skipSpace(d.close + 1);
+        if (d.bodyOpen >= code.stripped.size() || code.stripped[d.bodyOpen] != '{') continue;
+        d.bodyClose = code.closing(d.bodyOpen);
+        if (d.bodyClose == std::string::npos) continue;
+        return d;
+    }
+    return std::nullopt;
+}
+
+// A name not in the text, from `wanted` (then wanted_, wanted_2, ...).
+std::string freshName(const Code& code, const std::string& wanted) {
+    if (code.occurrences(wanted).empty()) return wanted;
+    for (int n = 1;; ++n) {
+        std::string name = wanted + "_" + (n == 1 ? std::string() : std::to_string(n));
+        if (code.occurrences(name).empty()) return name;
+    }
+}
+
+// Another host's inputs, declared by the file as uniforms: what sdfwb gives them (Shadertoy's).
+struct HostInput {
+    const char* name;
+    const char* type;
+    const char* value; // an expression of Shadertoy's inputs
+    const char* host;
+};
+constexpr std::array<HostInput, 16> kHostInputs{{
+    {"u_time", "float", "iTime", "glslViewer"},
+    {"u_resolution", "vec2", "iResolution.xy", "glslViewer"},
+    {"u_mouse", "vec2", "iMouse.xy", "glslViewer"},
+    {"u_delta", "float", "iTimeDelta", "glslViewer"},
+    {"u_date", "vec4", "iDate", "glslViewer"},
+    {"u_frame", "int", "iFrame", "glslViewer"},
+    {"fGlobalTime", "float", "iTime", "Bonzomatic"},
+    {"v2Resolution", "vec2", "iResolution.xy", "Bonzomatic"},
+    {"fFrameTime", "float", "iTimeDelta", "Bonzomatic"},
+    {"time", "float", "iTime", "GLSL Sandbox"},
+    {"resolution", "vec2", "iResolution.xy", "GLSL Sandbox"},
+    {"mouse", "vec2", "(iMouse.xy / iResolution.xy)", "GLSL Sandbox"}, // normalised there
+    {"frame", "int", "iFrame", "GLSL Sandbox"},
+    {"iGlobalTime", "float", "iTime", "an old Shadertoy port"},
+    {"surfacePosition", "vec2", "vec2(0.0)", "GLSL Sandbox"},
+    {"surfaceSize", "vec2", "vec2(1.0)", "GLSL Sandbox"},
+}};
+
+// Shadertoy's own inputs: a file's declaration of one goes, so sdfwb's (which it sets) is used.
+bool shadertoyInput(const Declaration& d) {
+    static const std::array<std::pair<const char*, const char*>, 8> inputs{{{"iTime", "float"},
+                                                                            {"iResolution", "vec3"},
+                                                                            {"iMouse", "vec4"},
+                                                                            {"iFrame", "int"},
+                                                                            {"iTimeDelta", "float"},
+                                                                            {"iFrameRate", "float"},
+                                                                            {"iDate", "vec4"},
+                                                                            {"iSampleRate", "float"}}};
+    for (const auto& [name, type] : inputs)
+        if (d.name == name && d.type == type) return true;
+    return d.name.size() == 9 && d.name.rfind("iChannel", 0) == 0 && d.name[8] >= '0' && d.name[8] <= '3' &&
+           (d.type == "sampler2D" || d.type == "samplerCube");
+}
+
+// Texture units no texture is bound to: a host's textures sdfwb has no image for read (0, 0, 0, 1)
+// there, one unit a sampler type (a program may not give one unit two types).
+int emptyUnit(const std::string& samplerType) {
+    if (samplerType == "sampler1D") return 12;
+    if (samplerType == "sampler2D") return 13;
+    if (samplerType == "sampler3D") return 14;
+    if (samplerType == "samplerCube") return 15;
+    return -1;
+}
+
+// Fragmentarium's system includes, which come with the program and are not on disk here.
+bool fragmentariumSystemInclude(const std::string& name) {
+    static const std::array<const char*, 20> names{"DE-Raytracer.frag",
+                                                   "DE-Raytracer-v0.9.1.frag",
+                                                   "DE-Raytracer-v0.9.10.frag",
+                                                   "Fast-Raytracer.frag",
+                                                   "Fast-Raytracer-with-Textures.frag",
+                                                   "DE-Kn2.frag",
+                                                   "DE-Kn2cr11.frag",
+                                                   "DE-Kn8.frag",
+                                                   "Soft-Raytracer.frag",
+                                                   "Brute-Raytracer.frag",
+                                                   "IBL-Raytracer.frag",
+                                                   "Path-Raytracer.frag",
+                                                   "Sky-Pathtracer.frag",
+                                                   "Classic-Raytracer.frag",
+                                                   "Subblue-Raytracer.frag",
+                                                   "DE-Raytracer-Slicer.frag",
+                                                   "3D.frag",
+                                                   "MathUtils.frag",
+                                                   "Progressive3D.frag",
+                                                   "ZBuffer3D.frag"};
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// What Fragmentarium's MathUtils.frag gives that fractal code calls: rotations by an angle in
+// degrees, in its convention (its matrices turn by -angle about v, as they multiply row vectors).
+constexpr std::array<std::pair<const char*, const char*>, 3> kMathUtils{{
+    {"rotationMatrix3",
+     "mat3 rotationMatrix3(vec3 v, float angle) { float c = cos(radians(angle)), s = sin(radians(angle)); return c * "
+     "mat3(1.0) + (1.0 - c) * outerProduct(v, v) - s * mat3(0.0, v.z, -v.y, -v.z, 0.0, v.x, v.y, -v.x, 0.0); } "},
+    {"rotationMatrixXYZ",
+     "mat3 rotationMatrixXYZ(vec3 v) { return rotationMatrix3(vec3(1.0, 0.0, 0.0), v.x) * rotationMatrix3(vec3(0.0, "
+     "1.0, 0.0), v.y) * rotationMatrix3(vec3(0.0, 0.0, 1.0), v.z); } "},
+    {"rotationMatrix", "mat4 rotationMatrix(vec3 v, float angle) { return mat4(rotationMatrix3(v, angle)); } "},
+}};
+
+bool definesFunction(const Code& code, const std::string& name) {
+    for (std::size_t at : code.occurrences(name)) {
+        if (code.depth[at] != 0) continue;
+        std::size_t k = code.skipSpace(at + name.size());
+        if (k < code.stripped.size() && code.stripped[k] == '(') {
+            std::size_t close = code.stripped.find(')', k);
+            if (close != std::string::npos) {
+                std::size_t next = code.skipSpace(close + 1);
+                if (next < code.stripped.size() && code.stripped[next] == '{') return true;
+            }
+        }
+    }
+    return false;
+}
+
+// Fragmentarium: directives, annotations, system includes, init().
+void adaptFragmentarium(const Code& code, const std::vector<Parameter>& parameters, std::vector<Edit>& edits,
+                        HostAdaptation& out) {
+    const std::string& text = code.original;
+    bool fragmentarium = false;
+    // Directive lines; #preset ... #endpreset and #vertex ... #endvertex blocks whole.
+    static const std::array<const char*, 9> lineDirectives{
+        "info", "group", "camera", "donotrun", "buffer", "buffershader", "TexParameter", "replace", "FragmentariumUpdate"};
+    std::size_t blockStart = std::string::npos;
+    std::string blockEnd;
+    std::size_t firstInclude = std::string::npos; // the edit blanking the first system include
+    for (std::size_t start = 0; start < text.size();) {
+        std::size_t stop = text.find('\n', start);
+        if (stop == std::string::npos) stop = text.size();
+        const std::size_t hash = code.stripped.find_first_not_of(" \t", start);
+        if (hash < stop && code.stripped[hash] == '#') {
+            std::size_t k = hash + 1;
+            k = code.skipSpace(k) > stop ? stop : code.skipSpace(k);
+            const std::string word = code.wordAt(k);
+            if (blockStart == std::string::npos && (word == "preset" || word == "vertex")) {
+                blockStart = start;
+                blockEnd = "end" + word;
+            } else if (blockStart != std::string::npos && word == blockEnd) {
+                edits.push_back(blank(text, blockStart, stop - blockStart));
+                blockStart = std::string::npos;
+                fragmentarium = true;
+            } else if (blockStart == std::string::npos &&
+                       std::find(lineDirectives.begin(), lineDirectives.end(), word) != lineDirectives.end()) {
+                edits.push_back(blank(text, hash, stop - hash));
+                fragmentarium = true;
+            } else if (blockStart == std::string::npos && word == "include") {
+                const std::size_t open = text.find('"', k);
+                const std::size_t close = open < stop ? text.find('"', open + 1) : std::string::npos;
+                if (close < stop && fragmentariumSystemInclude(text.substr(open + 1, close - open - 1))) {
+                    if (firstInclude == std::string::npos) firstInclude = edits.size();
+                    edits.push_back(blank(text, hash, stop - hash));
+                    fragmentarium = true;
+                }
+            }
+        }
+        start = stop + 1;
+    }
+    if (blockStart != std::string::npos) edits.push_back(blank(text, blockStart, text.size() - blockStart)); // unclosed
+    // Annotations after uniforms: blanked, the default written as the initializer.
+    for (const Parameter& p : parameters) {
+        if (p.syntax == Parameter::Syntax::Glsl) continue;
+        fragmentarium = true;
+        for (const Declaration& d : fileScopeDeclarations(code, {"uniform"})) {
+            if (d.name != p.name) continue;
+            const std::size_t lineEnd = std::min(text.find('\n', d.end), text.size());
+            std::size_t k = code.skipSpace(d.end);
+            const std::size_t close = text.find(']', k);
+            if (close == std::string::npos || close > lineEnd) break;
+            std::size_t after = close + 1;
+            std::size_t word = code.skipSpace(after);
+            std::size_t wordEnd = word;
+            const std::string lock = word < lineEnd ? code.wordAt(wordEnd) : std::string();
+            if (lock == "Locked" || lock == "NotLocked" || lock == "NotLockable") after = wordEnd;
+            edits.push_back({d.end - 1, 1, " = " + glslLiteral(p.type, p.defaultValue) + ";"});
+            edits.push_back(blank(text, d.end, after - d.end));
+            break;
+        }
+    }
+    if (!fragmentarium) return;
+    out.host = "Fragmentarium";
+    // Fragmentarium calls init() once before tracing, where code computes globals from uniforms.
+    if (voidFunction(code, "init", true)) out.entryPrelude = "init();";
+    // What the system includes declare that the code uses, on the first include's line.
+    if (firstInclude == std::string::npos) return;
+    std::string provided;
+    const std::vector<std::size_t> traps = code.occurrences("orbitTrap");
+    if (!traps.empty() && std::none_of(traps.begin(), traps.end(), [&](std::size_t at) { return code.depth[at] == 0; }))
+        provided += "vec4 orbitTrap = vec4(10000.0); ";
+    bool helperNeeded = false;
+    for (const auto& [name, definition] : kMathUtils)
+        helperNeeded |= !code.occurrences(name).empty() && !definesFunction(code, name);
+    if (helperNeeded)
+        for (const auto& [name, definition] : kMathUtils)
+            if (!definesFunction(code, name)) provided += definition;
+    // The system includes declare `uniform float time`: sdfwb's scene time.
+    bool timeDeclared = false;
+    for (const Declaration& d : fileScopeDeclarations(code, {"uniform"})) timeDeclared |= d.name == "time";
+    if (!timeDeclared)
+        for (std::size_t at : code.occurrences("time"))
+            if (at == 0 || code.stripped[at - 1] != '.') edits.push_back({at, 4, "iTime"});
+    edits[firstInclude].replacement = provided + edits[firstInclude].replacement;
+}
+
+// A host's `void main()`: Shadertoy's mainImage.
+void adaptMain(const Code& code, std::vector<Edit>& edits, HostAdaptation& out) {
+    const std::string& text = code.original;
+    auto main = voidFunction(code, "main", true);
+    if (!main) return;
+    const bool hasMainImage = !code.occurrences("mainImage").empty() && voidFunction(code, "mainImage", false).has_value();
+    // A fragment shader's main writes a colour: gl_FragColor, or the file's `out vec4`. Any other
+    // main() is not a host's (SourceChecks says the workbench writes main).
+    bool writesColour = !code.occurrences("gl_FragColor", main->bodyOpen, main->bodyClose).empty();
+    for (const Declaration& d : fileScopeDeclarations(code, {"out"})) writesColour |= d.type == "vec4";
+    if (!writesColour) return;
+    std::string host = "a WebGL page";
+    const std::vector<Declaration> uniforms = fileScopeDeclarations(code, {"uniform"});
+    // Inputs: the host's become Shadertoy's; the file's own Shadertoy inputs go.
+    std::vector<std::pair<std::string, std::string>> renames;
+    for (const Declaration& d : uniforms) {
+        if (shadertoyInput(d)) {
+            edits.push_back(blank(text, d.begin, d.end - d.begin));
+            continue;
+        }
+        for (const HostInput& input : kHostInputs)
+            if (d.name == input.name && d.type == input.type) {
+                edits.push_back(blank(text, d.begin, d.end - d.begin));
+                renames.emplace_back(input.name, input.value);
+                if (host == "a WebGL page") host = input.host;
+            }
+        const int unit = emptyUnit(d.type);
+        if (unit >= 0 && !d.layout && !shadertoyInput(d))
+            edits.push_back({d.begin, 0, "layout(binding = " + std::to_string(unit) + ") "});
+    }
+    for (const auto& [name, value] : renames)
+        for (std::size_t at : code.occurrences(name)) // macros' bodies too
+            if (at == 0 || code.stripped[at - 1] != '.') edits.push_back({at, name.size(), value});
+    // Varyings and inputs: plain globals (zero), as a compute stage has none.
+    std::string colour;
+    for (const Declaration& d : fileScopeDeclarations(code, {"varying", "in", "out"})) {
+        if (d.qualifier == "out" && d.type == "vec4" && colour.empty()) {
+            colour = d.name;
+            edits.push_back(blank(text, d.begin, d.end - d.begin));
+        } else if (d.qualifier != "out") {
+            edits.push_back(blank(text, d.begin, d.qualifier.size() + (code.stripped.find(d.qualifier, d.begin) - d.begin)));
+        }
+    }
+    if (hasMainImage) { // a port's wrapper: mainImage is the shader
+        std::size_t start = main->name;
+        while (start > 0 && isSpaceChar(code.stripped[start - 1])) --start;
+        edits.push_back(blank(text, start - 4, main->bodyClose + 1 - (start - 4))); // from its `void`
+        out.host = host == "a WebGL page" ? "a Shadertoy port" : host;
+        return;
+    }
+    const std::string coordinate = freshName(code, "fragCoord");
+    if (colour.empty()) colour = freshName(code, "fragColor");
+    edits.push_back({main->name, main->close + 1 - main->name, "mainImage(out vec4 " + colour + ", in vec2 " + coordinate + ")"});
+    for (std::size_t at : code.occurrences("gl_FragColor")) edits.push_back({at, 12, colour});
+    for (std::size_t at : code.occurrences("gl_FragCoord", main->bodyOpen, main->bodyClose))
+        edits.push_back({at, 12, "vec4(" + coordinate + ", 0.0, 1.0)"});
+    out.host = host;
+}
+
+} // namespace
+
+HostAdaptation adaptForeignHost(const std::string& text, const std::vector<Parameter>& parameters) {
+    HostAdaptation out;
+    const Code code(text);
+    std::vector<Edit> edits;
+    adaptFragmentarium(code, parameters, edits, out);
+    adaptMain(code, edits, out);
+    out.text = edits.empty() ? text : applyEdits(text, std::move(edits));
+    return out;
+}
+
+} // namespace sdfwb::shaders::detail

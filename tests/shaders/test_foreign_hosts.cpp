@@ -1,0 +1,300 @@
+// Whole shaders written for other hosts than Shadertoy (glslViewer, GLSL Sandbox, Bonzomatic, a
+// WebGL page, a Shadertoy port's main() wrapper, Fragmentarium), read in sdfwb's terms: the field
+// found, the host's inputs and parameters mapped, the user's line numbers kept. The corpus files
+// tests/foreign/75-82 render, sample and audit them on GL (test_foreign_gl.cpp).
+#include <shaders/GlslChecker.h>
+#include <shaders/Parameters.h>
+#include <shaders/SdfSource.h>
+#include <shaders/ShaderComposer.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+using namespace sdfwb::shaders;
+
+namespace {
+
+PreparedSdf prepare(const std::string& text, const std::string& name = "host.frag") {
+    return prepareSdf(text, name, {}, IncludeOptions{});
+}
+
+std::string errors(const std::vector<Diagnostic>& diagnostics) {
+    std::string all;
+    for (const Diagnostic& d : diagnostics)
+        if (d.severity == Severity::Error) all += formatDiagnostic(d) + "\n";
+    return all;
+}
+
+// The user's code with the entry wrapper in a compute stage that calls it, as the samplers
+// compile it, checked by glslang.
+std::string compileErrors(const PreparedSdf& sdf) {
+    const ShaderPiece caller{"caller", "layout(local_size_x = 1) in;\nvoid main() { float d = sdfwb_sdf(vec3(0.0)); }\n"};
+    return errors(checkWithGlslang(composeSdfShader(sdf, Stage::Compute, {caller}, FeatureDefines{})));
+}
+
+// Lines of the root file as sdfwb reads it (after the host's terms), against the user's.
+long lines(const std::string& text) { return long(std::count(text.begin(), text.end(), '\n')); }
+long rootLines(const PreparedSdf& sdf) { return lines(sdf.source.map.files.front().text); }
+
+const Parameter* find(const std::vector<Parameter>& parameters, const std::string& name) {
+    for (const Parameter& p : parameters)
+        if (p.name == name) return &p;
+    return nullptr;
+}
+
+// The Book of Shaders / glslViewer's template around a march whose field has no conventional name.
+const std::string kGlslViewer =
+    "#ifdef GL_ES\n"
+    "precision mediump float;\n"
+    "#endif\n"
+    "uniform vec2 u_resolution;\n"
+    "uniform vec2 u_mouse;\n"
+    "uniform float u_time;\n"
+    "varying vec2 v_texcoord;\n"
+    "float getDist(vec3 p) { return length(p - vec3(0.0, 0.1 * sin(u_time), 0.0)) - 0.5; }\n"
+    "void main() {\n"
+    "    vec2 st = (2.0 * gl_FragCoord.xy - u_resolution) / u_resolution.y;\n"
+    "    vec3 ro = vec3(0.0, 0.0, 3.0), rd = normalize(vec3(st, -1.5));\n"
+    "    float t = 0.0;\n"
+    "    for (int i = 0; i < 64; i++) { float d = getDist(ro + rd * t); if (d < 0.001) break; t += d; }\n"
+    "    gl_FragColor = vec4(vec3(t * 0.1) + 0.0 * u_mouse.x, 1.0);\n"
+    "}\n";
+
+} // namespace
+
+TEST(ForeignHosts, GlslViewerMainIsReadAsMainImageAndItsMarchFindsTheField) {
+    PreparedSdf sdf = prepare(kGlslViewer);
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.host, "glslViewer");
+    EXPECT_TRUE(sdf.shadertoyMainImage);
+    EXPECT_EQ(sdf.signature.entry, "getDist");
+    EXPECT_EQ(sdf.entrySource, EntrySource::March);
+    EXPECT_TRUE(sdf.usesTime()) << "u_time is the scene time";
+    // The same lines: diagnostics name the user's.
+    EXPECT_EQ(rootLines(sdf), lines(kGlslViewer));
+    EXPECT_EQ(compileErrors(sdf), "");
+    EXPECT_NE(hostDescription(sdf.host).find("mainImage"), std::string::npos);
+}
+
+TEST(ForeignHosts, AnErrorInAHostsShaderIsReportedAtTheUsersLine) {
+    std::string text = kGlslViewer;
+    text.replace(text.find("float t = 0.0;"), 14, "float t = undeclaredThing;"); // line 12
+    // Named: a shader that does not compile has no march to read the field from.
+    PreparedSdf sdf = prepareSdf(text, "typo.frag", {}, IncludeOptions{}, "getDist");
+    std::vector<Diagnostic> found = sdf.diagnostics;
+    if (sdf.ok()) found = checkWithGlslang(composeSdfShader(sdf, Stage::Fragment, std::vector<ShaderPiece>{}, FeatureDefines{}));
+    auto it = std::find_if(found.begin(), found.end(), [](const Diagnostic& d) {
+        return d.severity == Severity::Error && d.message.find("undeclaredThing") != std::string::npos;
+    });
+    ASSERT_NE(it, found.end()) << errors(found);
+    EXPECT_EQ(it->file, "typo.frag");
+    EXPECT_EQ(it->line, 12);
+}
+
+TEST(ForeignHosts, SandboxBonzomaticAndWebGlInputsBecomeShadertoys) {
+    const std::string sandbox = "#ifdef GL_ES\nprecision highp float;\n#endif\n"
+                                "#extension GL_OES_standard_derivatives : enable\n"
+                                "uniform float time; uniform vec2 mouse; uniform vec2 resolution;\n"
+                                "float de(vec3 p) { return length(p) - 0.4 - 0.05 * sin(time) * mouse.x; }\n"
+                                "void main( void ) {\n"
+                                "  vec2 uv = (gl_FragCoord.xy * 2.0 - resolution) / min(resolution.x, resolution.y);\n"
+                                "  vec3 ro = vec3(0, 0, -3), rd = normalize(vec3(uv, 1)); float t = 0.;\n"
+                                "  for (int i = 0; i < 80; i++) { float d = de(ro + rd * t); if (d < .001) break; t += d; }\n"
+                                "  gl_FragColor = vec4(vec3(1.0 / (1.0 + t)), 1.0);\n"
+                                "}\n";
+    PreparedSdf s = prepare(sandbox);
+    ASSERT_TRUE(s.ok()) << errors(s.diagnostics);
+    EXPECT_EQ(s.host, "GLSL Sandbox");
+    EXPECT_EQ(s.signature.entry, "de");
+    EXPECT_TRUE(s.usesTime());
+    // Sandbox's mouse is normalised: Shadertoy's pixels over the resolution.
+    EXPECT_NE(s.source.text.find("(iMouse.xy / iResolution.xy).x"), std::string::npos);
+    EXPECT_EQ(compileErrors(s), "");
+
+    const std::string bonzomatic =
+        "#version 410 core\n"
+        "uniform float fGlobalTime;\nuniform vec2 v2Resolution;\n"
+        "uniform sampler1D texFFTSmoothed;\nuniform sampler2D texNoise;\n"
+        "layout(location = 0) out vec4 out_color;\n"
+        "float map(vec3 p) { return length(p) - 0.5 + 0.1 * texture(texFFTSmoothed, 0.1).r; }\n"
+        "void main(void) {\n"
+        "  vec2 uv = gl_FragCoord.xy / v2Resolution - 0.5;\n"
+        "  float t = 0.; for (int i = 0; i < 99; i++) { float d = map(vec3(uv, -3. + t)); if (d < 1e-3) break; t += d; }\n"
+        "  out_color = vec4(t * 0.1 + fGlobalTime * 0.0);\n"
+        "}\n";
+    PreparedSdf b = prepare(bonzomatic);
+    ASSERT_TRUE(b.ok()) << errors(b.diagnostics);
+    EXPECT_EQ(b.host, "Bonzomatic");
+    EXPECT_EQ(b.signature.entry, "map");
+    // The file's `out vec4` is mainImage's colour; its textures read units nothing is bound to.
+    EXPECT_NE(b.source.text.find("mainImage(out vec4 out_color, in vec2 fragCoord)"), std::string::npos);
+    EXPECT_NE(b.source.text.find("layout(binding = 12) uniform sampler1D texFFTSmoothed;"), std::string::npos);
+    EXPECT_NE(b.source.text.find("layout(binding = 13) uniform sampler2D texNoise;"), std::string::npos);
+    EXPECT_EQ(compileErrors(b), "");
+
+    // A WebGL page declares Shadertoy's inputs itself: sdfwb's (which it sets) replace them.
+    const std::string webgl = "#version 300 es\nprecision highp float;\n"
+                              "uniform vec3 iResolution;\nuniform float iTime;\nout vec4 fragColor;\n"
+                              "float scene(vec3 p) { return length(p) - 0.5; }\n"
+                              "void main() {\n"
+                              "  vec2 uv = (gl_FragCoord.xy - 0.5 * iResolution.xy) / iResolution.y;\n"
+                              "  float t = 0.; for (int i = 0; i < 90; i++) { float h = scene(vec3(uv, -2.5) + vec3(0, 0, t)); "
+                              "if (h < 1e-3) break; t += h; }\n"
+                              "  fragColor = vec4(vec3(exp(-0.3 * t)), 1.0);\n"
+                              "}\n";
+    PreparedSdf w = prepare(webgl);
+    ASSERT_TRUE(w.ok()) << errors(w.diagnostics);
+    EXPECT_EQ(w.host, "a WebGL page");
+    EXPECT_EQ(w.signature.entry, "scene");
+    EXPECT_EQ(w.source.text.find("uniform float iTime"), std::string::npos);
+    EXPECT_NE(std::find(w.compat.symbols.begin(), w.compat.symbols.end(), "iResolution"), w.compat.symbols.end());
+    EXPECT_EQ(compileErrors(w), "");
+}
+
+TEST(ForeignHosts, APortsMainWrapperIsLeftOut) {
+    const std::string text =
+        "uniform vec3 iResolution;\nuniform float iTime;\n"
+        "float map(vec3 p) { return length(p) - 0.5; }\n"
+        "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+        "  vec2 uv = (fragCoord - 0.5 * iResolution.xy) / iResolution.y; float t = 0.;\n"
+        "  for (int i = 0; i < 64; i++) { float d = map(vec3(uv, -2.0 + t)); if (d < 1e-3) break; t += d; }\n"
+        "  fragColor = vec4(t);\n"
+        "}\n"
+        "void main() { mainImage(gl_FragColor, gl_FragCoord.xy); }\n";
+    PreparedSdf sdf = prepare(text);
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.host, "a Shadertoy port");
+    EXPECT_TRUE(sdf.shadertoyMainImage);
+    EXPECT_EQ(sdf.signature.entry, "map");
+    EXPECT_EQ(sdf.source.text.find("void main()"), std::string::npos);
+    EXPECT_EQ(compileErrors(sdf), "");
+}
+
+TEST(ForeignHosts, AnSdfFileIsLeftAsItIs) {
+    const std::string text = "uniform float radius = 0.5; // @range 0.1 1\nfloat time = 1.0;\n"
+                             "float sdf(vec3 p) { return length(p) - radius * time; }\n";
+    PreparedSdf sdf = prepare(text);
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.host, "");
+    EXPECT_EQ(sdf.source.text.find("iTime"), std::string::npos);
+    // A main() that writes no colour is no host's: the workbench writes main, and says so.
+    PreparedSdf withMain = prepare("float sdf(vec3 p) { return length(p) - 1.0; }\nvoid main() {}\n");
+    EXPECT_EQ(withMain.host, "");
+    EXPECT_NE(errors(withMain.diagnostics).find("main() is written by the workbench"), std::string::npos);
+}
+
+TEST(ForeignHosts, FragmentariumSlidersPresetsAndSystemIncludes) {
+    const std::string text = "#info Mandelbox (a test)\n"                                // 1
+                             "#define providesInit\n"                                    // 2
+                             "#include \"MathUtils.frag\"\n"                             // 3
+                             "#include \"DE-Raytracer.frag\"\n"                          // 4
+                             "#group Mandelbox\n"                                        // 5
+                             "uniform int Iterations;  slider[0,17,300]\n"               // 6
+                             "uniform float Scale; slider[-3.0,3.0,5.0] Locked\n"        // 7
+                             "uniform vec3 RotVector; slider[(0,0,0),(1,1,1),(1,1,1)]\n" // 8
+                             "uniform bool DoRotate; checkbox[true]\n"                   // 9
+                             "uniform vec3 BaseColor; color[1.0,0.5,0.25]\n"             // 10
+                             "mat3 rot;\n"                                               // 11
+                             "void init() { rot = rotationMatrix3(normalize(RotVector), 30.0); }\n"
+                             "float DE(vec3 pos) {\n"
+                             "  vec3 p = DoRotate ? rot * pos : pos;\n"
+                             "  for (int i = 0; i < Iterations; i++) orbitTrap = min(orbitTrap, vec4(abs(p), 1.0));\n"
+                             "  return (length(p) - 0.5 * abs(Scale) * 0.5) + 0.0 * sin(time);\n"
+                             "}\n"
+                             "#preset Default\n"
+                             "FOV = 0.62536\n"
+                             "Scale = 2.5 Locked\n"
+                             "RotVector = 0,1,0\n"
+                             "#endpreset\n"
+                             "#preset Other\nScale = 1.0\n#endpreset\n";
+    ParameterScan scan = parseParameters(text, "box.frag");
+    EXPECT_TRUE(scan.diagnostics.empty()) << errors(scan.diagnostics);
+    ASSERT_EQ(scan.parameters.size(), 5u);
+    const Parameter* iterations = find(scan.parameters, "Iterations");
+    ASSERT_NE(iterations, nullptr);
+    EXPECT_EQ(iterations->type, ParameterType::Int);
+    EXPECT_EQ(iterations->defaultValue[0], 17.0f);
+    EXPECT_EQ(iterations->minimum, 0.0f);
+    EXPECT_EQ(iterations->maximum, 300.0f);
+    EXPECT_EQ(iterations->line, 6);
+    const Parameter* scale = find(scan.parameters, "Scale");
+    ASSERT_NE(scale, nullptr);
+    EXPECT_EQ(scale->defaultValue[0], 2.5f) << "the Default preset overrides the slider";
+    EXPECT_EQ(scale->syntax, Parameter::Syntax::FragmentariumPreset);
+    const Parameter* axis = find(scan.parameters, "RotVector");
+    ASSERT_NE(axis, nullptr);
+    EXPECT_EQ(axis->defaultValue[0], 0.0f);
+    EXPECT_EQ(axis->defaultValue[1], 1.0f);
+    const Parameter* rotate = find(scan.parameters, "DoRotate");
+    ASSERT_NE(rotate, nullptr);
+    EXPECT_EQ(rotate->defaultValue[0], 1.0f);
+    const Parameter* colour = find(scan.parameters, "BaseColor");
+    ASSERT_NE(colour, nullptr);
+    EXPECT_TRUE(colour->color);
+    EXPECT_EQ(colour->defaultValue[1], 0.5f);
+
+    // Saved defaults go where Fragmentarium reads them, in its syntax, and read back.
+    const std::string saved = withDefaults(text, scan.parameters,
+                                           {{"Iterations", ParameterType::Int, {12, 0, 0, 0}},
+                                            {"Scale", ParameterType::Float, {-1.5f, 0, 0, 0}},
+                                            {"RotVector", ParameterType::Vec3, {1, 0, 0, 0}},
+                                            {"DoRotate", ParameterType::Bool, {0, 0, 0, 0}},
+                                            {"BaseColor", ParameterType::Vec3, {0.25f, 0.5f, 1, 0}}});
+    EXPECT_NE(saved.find("uniform int Iterations;  slider[0,12,300]"), std::string::npos) << saved;
+    EXPECT_NE(saved.find("Scale = -1.5 Locked\n"), std::string::npos) << saved;
+    EXPECT_NE(saved.find("RotVector = 1,0,0\n"), std::string::npos) << saved;
+    EXPECT_NE(saved.find("checkbox[false]"), std::string::npos) << saved;
+    EXPECT_NE(saved.find("color[0.25,0.5,1]"), std::string::npos) << saved;
+    ParameterScan again = parseParameters(saved, "box.frag");
+    EXPECT_EQ(find(again.parameters, "Scale")->defaultValue[0], -1.5f);
+    EXPECT_EQ(find(again.parameters, "Iterations")->defaultValue[0], 12.0f);
+
+    // The fragment itself: the DE found, init() run first, what the includes give provided, the
+    // directives gone, every line where it was, and it compiles.
+    PreparedSdf sdf = prepare(text, "box.frag");
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.host, "Fragmentarium");
+    EXPECT_EQ(sdf.signature.entry, "DE");
+    EXPECT_EQ(sdf.signature.prelude, "init();");
+    EXPECT_EQ(sdf.parameters.size(), 5u);
+    EXPECT_TRUE(sdf.usesTime()) << "Fragmentarium's time is the scene time";
+    EXPECT_EQ(rootLines(sdf), lines(text));
+    EXPECT_EQ(sdf.source.text.find("#info"), std::string::npos);
+    EXPECT_EQ(sdf.source.text.find("slider"), std::string::npos);
+    EXPECT_EQ(sdf.source.text.find("FOV"), std::string::npos);
+    EXPECT_NE(sdf.source.text.find("uniform float Scale = 2.5;"), std::string::npos) << sdf.source.text;
+    EXPECT_NE(sdf.source.text.find("vec4 orbitTrap"), std::string::npos);
+    EXPECT_NE(sdf.source.text.find("mat3 rotationMatrix3(vec3 v, float angle)"), std::string::npos);
+    EXPECT_NE(entryWrapper(sdf).find("{ init();return DE(p"), std::string::npos) << entryWrapper(sdf);
+    EXPECT_EQ(compileErrors(sdf), "");
+}
+
+TEST(ForeignHosts, BadFragmentariumAnnotationsAreNamedAtTheirLine) {
+    struct Case {
+        std::string text, says;
+    };
+    for (const Case& c : std::vector<Case>{
+             {"uniform float Scale; slider[-3.0,3.0\nfloat DE(vec3 p) { return length(p) - Scale; }\n", "no closing ]"},
+             {"uniform float Scale; slider[-3.0,big,5.0]\nfloat DE(vec3 p) { return length(p) - Scale; }\n",
+              "'big' is not a default for a float"},
+             {"uniform bool Julia; slider[0,1,2]\nfloat DE(vec3 p) { return length(p); }\n", "does not fit a bool"},
+             {"uniform float Power; checkbox[true]\nfloat DE(vec3 p) { return length(p); }\n", "does not fit a float"},
+             {"uniform vec3 C; slider[(0,0,0),(1,1),(2,2,2)]\nfloat DE(vec3 p) { return length(p); }\n",
+              "'(1,1)' is not a default for a vec3"},
+         }) {
+        ParameterScan scan = parseParameters(c.text, "bad.frag");
+        ASSERT_FALSE(scan.diagnostics.empty()) << c.text;
+        EXPECT_EQ(scan.diagnostics.front().line, 1) << c.text;
+        EXPECT_NE(scan.diagnostics.front().message.find(c.says), std::string::npos) << scan.diagnostics.front().message;
+    }
+    // A preset value that does not fit keeps the slider's default, with a warning at its line.
+    ParameterScan scan =
+        parseParameters("uniform float Scale; slider[0,2,4]\n#preset Default\nScale = 1,2\n#endpreset\n", "p.frag");
+    ASSERT_EQ(scan.parameters.size(), 1u);
+    EXPECT_EQ(scan.parameters[0].defaultValue[0], 2.0f);
+    ASSERT_EQ(scan.diagnostics.size(), 1u);
+    EXPECT_EQ(scan.diagnostics[0].severity, Severity::Warning);
+    EXPECT_EQ(scan.diagnostics[0].line, 3);
+}
