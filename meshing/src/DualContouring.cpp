@@ -84,6 +84,7 @@ Expected<std::pair<Mesh, MeshStats>> Extraction::run() {
     const auto weldTolerance = float(1e-6 * std::min({grid.step.x, grid.step.y, grid.step.z}));
     detail::weldCoincidentVertices(mesh, weldTolerance);
     stats.collinearFlips = flipCollinearTriangles(mesh);
+    detail::nudgeCollinearVertices(mesh);
     phase("connect");
     if (options.refine > 0) {
         const Topology coarse = checkTopology(mesh);
@@ -99,6 +100,7 @@ Expected<std::pair<Mesh, MeshStats>> Extraction::run() {
         if (countDegenerateTriangles(mesh) > 0) {
             detail::weldCoincidentVertices(mesh, weldTolerance);
             stats.collinearFlips += flipCollinearTriangles(mesh);
+            detail::nudgeCollinearVertices(mesh);
             stats.topology = checkTopology(mesh);
         }
         phase("refine");

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -183,6 +184,73 @@ std::uint64_t flipCollinearTriangles(Mesh& mesh) {
     }
     return flips;
 }
+
+namespace detail {
+
+std::uint64_t nudgeCollinearVertices(Mesh& mesh) {
+    const std::size_t triangles = mesh.triangleCount(), vertexCount = mesh.vertices.size();
+    auto normal = [&](std::size_t t) {
+        const std::uint32_t* v = &mesh.indices[3 * t];
+        const glm::dvec3 p(mesh.vertices[v[0]]), q(mesh.vertices[v[1]]), r(mesh.vertices[v[2]]);
+        return glm::cross(q - p, r - p);
+    };
+    auto zero = [](const glm::dvec3& n) { return n.x == 0.0 && n.y == 0.0 && n.z == 0.0; };
+    // The middle vertex of each collinear triangle (the one strictly between the other two).
+    std::vector<std::uint32_t> middles;
+    for (std::size_t t = 0; t < triangles; ++t) {
+        const std::uint32_t* v = &mesh.indices[3 * t];
+        if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2] || std::max({v[0], v[1], v[2]}) >= vertexCount) continue;
+        if (!zero(normal(t))) continue;
+        for (int k = 0; k < 3; ++k) {
+            const glm::dvec3 a(mesh.vertices[v[(k + 1) % 3]]), b(mesh.vertices[v[(k + 2) % 3]]), c(mesh.vertices[v[k]]);
+            const double length2 = glm::dot(b - a, b - a), s = length2 > 0.0 ? glm::dot(c - a, b - a) / length2 : -1.0;
+            if (s > 0.0 && s < 1.0) middles.push_back(v[k]);
+        }
+    }
+    if (middles.empty()) return 0;
+    std::sort(middles.begin(), middles.end());
+    middles.erase(std::unique(middles.begin(), middles.end()), middles.end());
+    std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> around; // the triangles of each middle vertex
+    for (std::uint32_t v : middles) around.emplace(v, std::vector<std::uint32_t>{});
+    for (std::size_t t = 0; t < triangles; ++t)
+        for (int k = 0; k < 3; ++k)
+            if (auto it = around.find(mesh.indices[3 * t + std::size_t(k)]); it != around.end())
+                it->second.push_back(std::uint32_t(t));
+    std::uint64_t moved = 0;
+    for (std::uint32_t v : middles) {
+        const std::vector<std::uint32_t>& ring = around.at(v);
+        glm::dvec3 centre(0.0);
+        int count = 0;
+        for (std::uint32_t t : ring)
+            for (int k = 0; k < 3; ++k)
+                if (const std::uint32_t w = mesh.indices[3 * std::size_t(t) + std::size_t(k)]; w != v) {
+                    centre += glm::dvec3(mesh.vertices[w]);
+                    ++count;
+                }
+        if (count == 0) continue;
+        centre /= double(count);
+        const glm::vec3 from = mesh.vertices[v];
+        std::vector<glm::dvec3> before;
+        for (std::uint32_t t : ring) before.push_back(normal(t));
+        for (double step : {1e-3, 1e-2, 1e-1, 0.5}) {
+            // Tried where the mesh stores it, and put back unless every triangle around keeps its side.
+            mesh.vertices[v] = glm::vec3(glm::dvec3(from) + step * (centre - glm::dvec3(from)));
+            bool fine = mesh.vertices[v] != from;
+            for (std::size_t i = 0; fine && i < ring.size(); ++i) {
+                const glm::dvec3 after = normal(ring[i]);
+                fine = !zero(after) && (zero(before[i]) || glm::dot(before[i], after) > 0.0);
+            }
+            if (fine) {
+                ++moved;
+                break;
+            }
+            mesh.vertices[v] = from;
+        }
+    }
+    return moved;
+}
+
+} // namespace detail
 
 std::uint64_t countDegenerateTriangles(const Mesh& mesh) {
     const std::size_t triangles = mesh.indices.size() / 3, vertexCount = mesh.vertices.size();

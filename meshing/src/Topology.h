@@ -19,4 +19,11 @@ namespace sdfwb::meshing::detail {
 // parts them. Meshes without such triangles (nearly all) are left as they are.
 void weldCoincidentVertices(Mesh& mesh, float tolerance);
 
+// Triangles of zero area whose three vertices lie on one line that flipCollinearTriangles could not
+// mend (the edge a flip would make exists already: a knot of vertices a ten-thousandth of a cell
+// apart, where a flat cap at the bounds meets a pinch of a fractal): the middle vertex moves a
+// little towards the middle of its neighbours, off the line, where no triangle around it turns
+// over or loses its area. Returns the vertices moved.
+std::uint64_t nudgeCollinearVertices(Mesh& mesh);
+
 } // namespace sdfwb::meshing::detail

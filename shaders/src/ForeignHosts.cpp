@@ -192,7 +192,7 @@ struct HostInput {
     const char* value; // an expression of Shadertoy's inputs
     const char* host;
 };
-constexpr std::array<HostInput, 16> kHostInputs{{
+constexpr std::array<HostInput, 19> kHostInputs{{
     {"u_time", "float", "iTime", "glslViewer"},
     {"u_resolution", "vec2", "iResolution.xy", "glslViewer"},
     {"u_mouse", "vec2", "iMouse.xy", "glslViewer"},
@@ -209,6 +209,9 @@ constexpr std::array<HostInput, 16> kHostInputs{{
     {"iGlobalTime", "float", "iTime", "an old Shadertoy port"},
     {"surfacePosition", "vec2", "vec2(0.0)", "GLSL Sandbox"},
     {"surfaceSize", "vec2", "vec2(1.0)", "GLSL Sandbox"},
+    {"uTime", "float", "iTime", "three.js"},
+    {"uResolution", "vec2", "iResolution.xy", "three.js"},
+    {"uMouse", "vec2", "iMouse.xy", "three.js"},
 }};
 
 // Shadertoy's own inputs: a file's declaration of one goes, so sdfwb's (which it sets) is used.
@@ -410,7 +413,18 @@ void adaptMain(const Code& code, std::vector<Edit>& edits, HostAdaptation& out) 
     for (const auto& [name, value] : renames)
         for (std::size_t at : code.occurrences(name)) // macros' bodies too
             if (at == 0 || code.stripped[at - 1] != '.') edits.push_back({at, name.size(), value});
-    // Varyings and inputs: plain globals (zero), as a compute stage has none.
+    // Varyings and inputs: plain globals (zero), as a compute stage has none; an input block
+    // (KodeLife's `in VertexData { ... } inData;`) a struct and a global of it.
+    for (std::size_t at : code.occurrences("in")) {
+        if (code.depth[at] != 0 || code.inDirective(at)) continue;
+        std::size_t k = code.skipSpace(at + 2);
+        if (code.wordAt(k).empty()) continue;
+        k = code.skipSpace(k);
+        if (k < code.stripped.size() && code.stripped[k] == '{') {
+            edits.push_back({at, 2, "struct"});
+            host = "KodeLife"; // its template's VertexData block
+        }
+    }
     std::string colour;
     for (const Declaration& d : fileScopeDeclarations(code, {"varying", "in", "out"})) {
         if (d.qualifier == "out" && d.type == "vec4" && colour.empty()) {

@@ -2,12 +2,12 @@
 // Whole shaders written for other hosts than Shadertoy, read in sdfwb's terms with every line kept
 // where it was (diagnostics keep their line numbers):
 //  - A `void main()` fragment shader (glslViewer and The Book of Shaders, GLSL Sandbox, Bonzomatic,
-//    KodeLife, a WebGL page): main becomes Shadertoy's mainImage, gl_FragColor (or the file's one
+//    KodeLife, three.js, a WebGL page): main becomes Shadertoy's mainImage, gl_FragColor (or the file's one
 //    `out vec4`) its colour and gl_FragCoord in it its coordinate, so the march analysis finds the
 //    field as in a Shadertoy. The host's inputs (u_time, time, fGlobalTime, u_resolution,
-//    resolution, v2Resolution, u_mouse, mouse, ...) become Shadertoy's, which sdfwb sets; a file's
-//    own declarations of Shadertoy's inputs go (sdfwb declares and sets them); varyings become
-//    plain globals; a host's textures sdfwb has no image for read an empty unit. A file with
+//    resolution, v2Resolution, u_mouse, mouse, uTime, ...) become Shadertoy's, which sdfwb sets; a
+//    file's own declarations of Shadertoy's inputs go (sdfwb declares and sets them); varyings and
+//    input blocks become plain globals; a host's textures sdfwb has no image for read an empty unit. A file with
 //    mainImage and a main() that only calls it (a port's wrapper) loses the wrapper.
 //  - A Fragmentarium fragment: its directives (#info, #group, #camera, #preset blocks, ...) and the
 //    annotations after its uniforms (slider[...], read by Parameters.h) are blanked, each such

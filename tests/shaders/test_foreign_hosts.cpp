@@ -153,6 +153,42 @@ TEST(ForeignHosts, SandboxBonzomaticAndWebGlInputsBecomeShadertoys) {
     EXPECT_EQ(compileErrors(w), "");
 }
 
+TEST(ForeignHosts, KodeLifesInputBlockAndThreeJsUniforms) {
+    const std::string kodelife =
+        "#version 150\n"
+        "uniform float time;\nuniform vec2 resolution;\nuniform vec3 spectrum;\n"
+        "uniform sampler2D prevFrame;\n"
+        "in VertexData\n{\n    vec4 v_position;\n    vec2 v_texcoord;\n} inData;\n"
+        "out vec4 fragColor;\n"
+        "float field(vec3 p) { return length(p) - 0.5 - 0.1 * spectrum.x; }\n"
+        "void main(void) {\n"
+        "  vec2 uv = -1.0 + 2.0 * inData.v_texcoord; uv.x *= resolution.x / resolution.y;\n"
+        "  float t = 0.; for (int i = 0; i < 64; i++) { float d = field(vec3(uv, -2.0 + t)); if (d < 1e-3) break; t += d; }\n"
+        "  fragColor = vec4(vec3(t) + texture(prevFrame, uv).rgb * 0.0, 1.0);\n"
+        "}\n";
+    PreparedSdf k = prepare(kodelife);
+    ASSERT_TRUE(k.ok()) << errors(k.diagnostics);
+    EXPECT_EQ(k.host, "KodeLife");
+    EXPECT_EQ(k.signature.entry, "field");
+    EXPECT_EQ(rootLines(k), lines(kodelife));
+    EXPECT_EQ(compileErrors(k), "");
+
+    const std::string three =
+        "uniform float uTime;\nuniform vec2 uResolution;\nvarying vec2 vUv;\n"
+        "float sdTorus(vec3 p) { vec2 q = vec2(length(p.xz) - 0.5, p.y); return length(q) - 0.2 + 0.0 * uTime; }\n"
+        "void main() {\n"
+        "  vec2 uv = (vUv - 0.5) * vec2(uResolution.x / uResolution.y, 1.0); float t = 0.;\n"
+        "  for (int i = 0; i < 64; i++) { float d = sdTorus(vec3(uv, -2.0) + t * vec3(0, 0, 1)); if (d < 1e-3) break; t += d; }\n"
+        "  gl_FragColor = vec4(vec3(t * 0.2), 1.0);\n"
+        "}\n";
+    PreparedSdf t = prepare(three);
+    ASSERT_TRUE(t.ok()) << errors(t.diagnostics);
+    EXPECT_EQ(t.host, "three.js");
+    EXPECT_EQ(t.signature.entry, "sdTorus");
+    EXPECT_TRUE(t.usesTime());
+    EXPECT_EQ(compileErrors(t), "");
+}
+
 TEST(ForeignHosts, APortsMainWrapperIsLeftOut) {
     const std::string text =
         "uniform vec3 iResolution;\nuniform float iTime;\n"
