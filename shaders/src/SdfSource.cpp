@@ -558,11 +558,10 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
 std::string hostDescription(const std::string& host) {
     if (host.empty()) return "";
     if (host == "Fragmentarium")
-        return "a Fragmentarium fragment: its directives and slider annotations read as parameters, its system includes "
-               "as what the code uses of them, init() run before the field";
-    if (host == "a Shadertoy port") return "a Shadertoy port: its main() wrapper left out, mainImage read as on Shadertoy";
+        return "a Fragmentarium fragment: sliders and presets as parameters, its includes' names provided, init() run first";
+    if (host == "a Shadertoy port") return "a Shadertoy port: its main() wrapper left out";
     return (host.compare(0, 2, "a ") == 0 ? host + "'s" : "a " + host) +
-           " shader: its main() read as Shadertoy's mainImage, its inputs as Shadertoy's";
+           " shader: main() as Shadertoy's mainImage, its inputs as Shadertoy's";
 }
 
 PreparedSdf prepareSdf(const std::string& text, const std::string& name, const std::filesystem::path& path,
@@ -575,6 +574,8 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
     prepared.source = resolveIncludes(prepared.host.empty() ? text : host.text, name, path, options);
     prepared.diagnostics = prepared.source.diagnostics;
     for (Diagnostic& d : checkSourceFiles(prepared.source)) prepared.diagnostics.push_back(std::move(d));
+    // Diagnostics quote the user's lines (the host's reading kept every line where it was).
+    if (!prepared.host.empty()) prepared.source.map.files.front().text = text;
     prepared.parameters = std::move(parameters.parameters);
     for (Diagnostic& d : parameters.diagnostics) prepared.diagnostics.push_back(std::move(d));
     std::string stripped = stripComments(prepared.source.text);

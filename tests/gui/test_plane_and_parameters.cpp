@@ -202,3 +202,55 @@ TEST(Parameters, PlaneReadoutsFollowAndTheSessionKeepsTheValues) {
     again.parametersPanel()->resetAll();
     again.close();
 }
+
+// A Fragmentarium fragment opened unmodified: its slider annotations are the dock's controls, with
+// the Default preset's values; the status bar says how the file was read; the values drive the
+// viewport, and "Save values as defaults" writes them where Fragmentarium reads them (the preset's
+// line for a value the preset sets), in its syntax, so the file still opens there.
+TEST(Parameters, FragmentariumSlidersAndPresetsAreTheDocksControls) {
+    app::MainWindow window;
+    window.resize(1000, 640);
+    window.show();
+    ASSERT_TRUE(openAndWait(window, "../tests/foreign/80_fr_mandelbox.glsl"));
+    widgets::ParametersPanel* panel = window.parametersPanel();
+    ASSERT_TRUE(waitFor([&] { return panel->values().size() == 6; })) << "six annotated uniforms";
+    EXPECT_NE(window.statusBar()->currentMessage().toStdString().find("Fragmentarium"), std::string::npos)
+        << window.statusBar()->currentMessage().toStdString();
+    window.findChild<QDockWidget*>("ParametersDock")->raise();
+    auto* scale = panel->findChild<QSlider*>("slider_Scale");
+    auto* scaleNumber = panel->findChild<QDoubleSpinBox*>("number_Scale");
+    ASSERT_TRUE(scale && scaleNumber);
+    EXPECT_EQ(scaleNumber->value(), -2.5) << "the Default preset's Scale, not the slider's 3.0";
+    for (const shaders::Parameter& p : window.document()->lastGoodSource().parameters)
+        if (p.name == "Scale") {
+            EXPECT_EQ(p.minimum, -3.0f) << "the slider's range";
+            EXPECT_EQ(p.maximum, 5.0f);
+        }
+    ASSERT_TRUE(waitFor([&] { return !window.viewport()->isInteracting(); }, 10000));
+    const QImage before = frameOf(window);
+    const std::uint64_t programs = window.viewport()->programsBuilt();
+    scale->setFocus();
+    for (int i = 0; i < 3; ++i) {
+        QKeyEvent press(QEvent::KeyPress, Qt::Key_PageUp, Qt::NoModifier);
+        QApplication::sendEvent(scale, &press);
+    }
+    const float moved = float(scaleNumber->value());
+    EXPECT_GT(moved, -2.5f);
+    ASSERT_TRUE(waitFor([&] { return !window.viewport()->isInteracting(); }, 10000));
+    EXPECT_GT(meanDifference(before, frameOf(window)), 0.5) << "the viewport shows the new scale";
+    EXPECT_EQ(window.viewport()->programsBuilt(), programs) << "a parameter change must not recompile";
+    if (const char* folder = std::getenv("SDFWB_SCREENSHOT_DIR"))
+        window.grab().save(QDir(folder).filePath("fragmentarium_parameters.png"));
+
+    panel->findChild<QPushButton*>("saveParameterDefaults")->click();
+    const std::string text = window.editor()->text().toStdString();
+    const std::string line = "\nScale = " + shaders::formatParameterValue({"Scale", {moved}}).substr(6) + "\n";
+    EXPECT_NE(text.find(line), std::string::npos) << "the preset's line takes the value: " << line;
+    EXPECT_NE(text.find("uniform float Scale;  slider[-3.0,3.0,5.0]"), std::string::npos) << "the slider keeps its own default";
+    ASSERT_TRUE(waitFor([&] {
+        const auto& parameters = window.document()->lastGoodSource().parameters;
+        return std::any_of(parameters.begin(), parameters.end(),
+                           [&](const shaders::Parameter& p) { return p.name == "Scale" && p.defaultValue[0] == moved; });
+    }));
+    EXPECT_FALSE(panel->findChild<QPushButton*>("reset_Scale")->isEnabled()) << "the saved value is the default now";
+}

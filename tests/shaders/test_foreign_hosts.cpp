@@ -34,9 +34,13 @@ std::string compileErrors(const PreparedSdf& sdf) {
     return errors(checkWithGlslang(composeSdfShader(sdf, Stage::Compute, {caller}, FeatureDefines{})));
 }
 
-// Lines of the root file as sdfwb reads it (after the host's terms), against the user's.
+// Lines of the text sdfwb composes (the root file in the host's terms, after its `#line 1 0`),
+// against the user's; the source map keeps the user's own text, which diagnostics quote.
 long lines(const std::string& text) { return long(std::count(text.begin(), text.end(), '\n')); }
-long rootLines(const PreparedSdf& sdf) { return lines(sdf.source.map.files.front().text); }
+long rootLines(const PreparedSdf& sdf) {
+    EXPECT_EQ(sdf.source.text.rfind("#line 1 0\n", 0), 0u);
+    return lines(sdf.source.text) - 1;
+}
 
 const Parameter* find(const std::vector<Parameter>& parameters, const std::string& name) {
     for (const Parameter& p : parameters)
@@ -74,6 +78,7 @@ TEST(ForeignHosts, GlslViewerMainIsReadAsMainImageAndItsMarchFindsTheField) {
     EXPECT_TRUE(sdf.usesTime()) << "u_time is the scene time";
     // The same lines: diagnostics name the user's.
     EXPECT_EQ(rootLines(sdf), lines(kGlslViewer));
+    EXPECT_EQ(sdf.source.map.files.front().text, kGlslViewer) << "diagnostics quote the user's text";
     EXPECT_EQ(compileErrors(sdf), "");
     EXPECT_NE(hostDescription(sdf.host).find("mainImage"), std::string::npos);
 }
@@ -91,6 +96,7 @@ TEST(ForeignHosts, AnErrorInAHostsShaderIsReportedAtTheUsersLine) {
     ASSERT_NE(it, found.end()) << errors(found);
     EXPECT_EQ(it->file, "typo.frag");
     EXPECT_EQ(it->line, 12);
+    EXPECT_NE(sdf.source.map.lineText(0, 12).find("float t = undeclaredThing;"), std::string::npos);
 }
 
 TEST(ForeignHosts, SandboxBonzomaticAndWebGlInputsBecomeShadertoys) {
