@@ -574,8 +574,6 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
     prepared.source = resolveIncludes(prepared.host.empty() ? text : host.text, name, path, options);
     prepared.diagnostics = prepared.source.diagnostics;
     for (Diagnostic& d : checkSourceFiles(prepared.source)) prepared.diagnostics.push_back(std::move(d));
-    // Diagnostics quote the user's lines (the host's reading kept every line where it was).
-    if (!prepared.host.empty()) prepared.source.map.files.front().text = text;
     prepared.parameters = std::move(parameters.parameters);
     for (Diagnostic& d : parameters.diagnostics) prepared.diagnostics.push_back(std::move(d));
     std::string stripped = stripComments(prepared.source.text);
