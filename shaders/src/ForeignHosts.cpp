@@ -240,8 +240,10 @@ int emptyUnit(const std::string& samplerType) {
     return -1;
 }
 
-// Fragmentarium's system includes, which come with the program and are not on disk here.
-bool fragmentariumSystemInclude(const std::string& name) {
+// Fragmentarium's system includes, which come with the program and are not on disk here (named
+// with or without their folder: "include/DE-Raytracer.frag").
+bool fragmentariumSystemInclude(std::string name) {
+    if (const std::size_t slash = name.find_last_of("/\\"); slash != std::string::npos) name = name.substr(slash + 1);
     static const std::array<const char*, 20> names{"DE-Raytracer.frag",
                                                    "DE-Raytracer-v0.9.1.frag",
                                                    "DE-Raytracer-v0.9.10.frag",
@@ -391,7 +393,26 @@ void adaptMain(const Code& code, std::vector<Edit>& edits, HostAdaptation& out) 
     bool writesColour = !code.occurrences("gl_FragColor", main->bodyOpen, main->bodyClose).empty();
     for (const Declaration& d : fileScopeDeclarations(code, {"out"})) writesColour |= d.type == "vec4";
     if (!writesColour) return;
+    // three.js's shader chunks (`#include <common>`, `#include <tonemapping_fragment>`), which its
+    // renderer splices in: colour management and helpers, nothing a field needs.
+    bool threeChunks = false;
+    for (std::size_t start = 0; start < text.size();) {
+        std::size_t stop = std::min(text.find('\n', start), text.size());
+        const std::size_t hash = code.stripped.find_first_not_of(" \t", start);
+        if (hash < stop && code.stripped[hash] == '#') {
+            std::size_t k = code.stripped.find_first_not_of(" \t", hash + 1);
+            if (k < stop && code.wordAt(k) == "include") {
+                k = code.stripped.find_first_not_of(" \t", k);
+                if (k < stop && code.stripped[k] == '<') {
+                    edits.push_back(blank(text, hash, stop - hash));
+                    threeChunks = true;
+                }
+            }
+        }
+        start = stop + 1;
+    }
     std::string host = "a WebGL page";
+    if (threeChunks) host = "three.js";
     const std::vector<Declaration> uniforms = fileScopeDeclarations(code, {"uniform"});
     // Inputs: the host's become Shadertoy's; the file's own Shadertoy inputs go.
     std::vector<std::pair<std::string, std::string>> renames;
@@ -425,11 +446,23 @@ void adaptMain(const Code& code, std::vector<Edit>& edits, HostAdaptation& out) 
             host = "KodeLife"; // its template's VertexData block
         }
     }
+    // A full-screen quad's texture coordinate (three.js's vUv, glslViewer's v_texcoord, ...) is the
+    // pixel's position over the frame: in main, mainImage's coordinate over iResolution.
+    const std::string coordinate = freshName(code, "fragCoord");
+    static const std::array<const char*, 6> quadCoordinates{"vUv", "v_texcoord", "vTexCoord", "v_uv", "vUV", "out_texcoord"};
     std::string colour;
     for (const Declaration& d : fileScopeDeclarations(code, {"varying", "in", "out"})) {
         if (d.qualifier == "out" && d.type == "vec4" && colour.empty()) {
             colour = d.name;
             edits.push_back(blank(text, d.begin, d.end - d.begin));
+        } else if (d.qualifier != "out" && d.type == "vec2" &&
+                   std::find(quadCoordinates.begin(), quadCoordinates.end(), d.name) != quadCoordinates.end()) {
+            edits.push_back(blank(text, d.begin, d.end - d.begin));
+            for (std::size_t at : code.occurrences(d.name))
+                if (at != code.stripped.find(d.name, d.begin))
+                    edits.push_back({at, d.name.size(),
+                                     at > main->bodyOpen && at < main->bodyClose ? "(" + coordinate + " / iResolution.xy)"
+                                                                                 : "(gl_FragCoord.xy / iResolution.xy)"});
         } else if (d.qualifier != "out") {
             edits.push_back(blank(text, d.begin, d.qualifier.size() + (code.stripped.find(d.qualifier, d.begin) - d.begin)));
         }
@@ -441,7 +474,6 @@ void adaptMain(const Code& code, std::vector<Edit>& edits, HostAdaptation& out) 
         out.host = host == "a WebGL page" ? "a Shadertoy port" : host;
         return;
     }
-    const std::string coordinate = freshName(code, "fragCoord");
     if (colour.empty()) colour = freshName(code, "fragColor");
     edits.push_back({main->name, main->close + 1 - main->name, "mainImage(out vec4 " + colour + ", in vec2 " + coordinate + ")"});
     for (std::size_t at : code.occurrences("gl_FragColor")) edits.push_back({at, 12, colour});

@@ -635,6 +635,20 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
         // The march's field, where its parameters after the point could not be traced: why.
         if (prepared.entrySource == EntrySource::Default && !prepared.entryReason.empty())
             missing.message += " (" + prepared.entryReason + ")";
+        // A whole shader whose march was not read because its code does not compile: the
+        // compiler's errors say why, at the user's lines.
+        if (prepared.entrySource == EntrySource::Default && prepared.shadertoyMainImage && prepared.entryReason.empty() &&
+            prepared.ok()) {
+            PreparedSdf userCode = prepared;
+            userCode.signature.entry.clear(); // the user's code alone
+            int shown = 0;
+            for (Diagnostic& d :
+                 checkWithGlslang(composeSdfShader(userCode, Stage::Fragment, std::vector<ShaderPiece>{}, FeatureDefines{})))
+                if (d.severity == Severity::Error && shown++ < 3) prepared.diagnostics.push_back(std::move(d));
+            if (shown > 0)
+                missing.message +=
+                    " (the shader does not compile, so its march could not be read: see the errors before this one)";
+        }
         prepared.diagnostics.push_back(std::move(missing));
     }
     return prepared;

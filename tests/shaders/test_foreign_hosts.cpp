@@ -87,7 +87,14 @@ TEST(ForeignHosts, GlslViewerMainIsReadAsMainImageAndItsMarchFindsTheField) {
 TEST(ForeignHosts, AnErrorInAHostsShaderIsReportedAtTheUsersLine) {
     std::string text = kGlslViewer;
     text.replace(text.find("float t = 0.0;"), 14, "float t = undeclaredThing;"); // line 12
-    // Named: a shader that does not compile has no march to read the field from.
+    // Unnamed: the march cannot be read, and the compiler's error says why, at the user's line.
+    PreparedSdf unnamed = prepare(text, "typo.frag");
+    ASSERT_FALSE(unnamed.ok());
+    ASSERT_GE(unnamed.diagnostics.size(), 2u) << errors(unnamed.diagnostics);
+    EXPECT_EQ(unnamed.diagnostics.front().line, 12) << errors(unnamed.diagnostics);
+    EXPECT_NE(unnamed.diagnostics.front().message.find("undeclaredThing"), std::string::npos);
+    EXPECT_NE(unnamed.diagnostics.back().message.find("does not compile"), std::string::npos);
+    // Named: the field compiles; the error is the composed shader's.
     PreparedSdf sdf = prepareSdf(text, "typo.frag", {}, IncludeOptions{}, "getDist");
     std::vector<Diagnostic> found = sdf.diagnostics;
     if (sdf.ok()) found = checkWithGlslang(composeSdfShader(sdf, Stage::Fragment, std::vector<ShaderPiece>{}, FeatureDefines{}));
@@ -181,12 +188,13 @@ TEST(ForeignHosts, KodeLifesInputBlockAndThreeJsUniforms) {
     EXPECT_EQ(compileErrors(k), "");
 
     const std::string three =
-        "uniform float uTime;\nuniform vec2 uResolution;\nvarying vec2 vUv;\n"
+        "#include <common>\nuniform float uTime;\nuniform vec2 uResolution;\nvarying vec2 vUv;\n"
         "float sdTorus(vec3 p) { vec2 q = vec2(length(p.xz) - 0.5, p.y); return length(q) - 0.2 + 0.0 * uTime; }\n"
         "void main() {\n"
         "  vec2 uv = (vUv - 0.5) * vec2(uResolution.x / uResolution.y, 1.0); float t = 0.;\n"
         "  for (int i = 0; i < 64; i++) { float d = sdTorus(vec3(uv, -2.0) + t * vec3(0, 0, 1)); if (d < 1e-3) break; t += d; }\n"
         "  gl_FragColor = vec4(vec3(t * 0.2), 1.0);\n"
+        "  #include <tonemapping_fragment>\n"
         "}\n";
     PreparedSdf t = prepare(three);
     ASSERT_TRUE(t.ok()) << errors(t.diagnostics);
