@@ -2,6 +2,7 @@
 // replacement may be longer or shorter than what it replaces, but no newline is added or removed.
 
 #include "ForeignHosts.h"
+#include "ParameterText.h"
 
 #include <shaders/SdfSource.h>
 
@@ -279,6 +280,24 @@ constexpr std::array<std::pair<const char*, const char*>, 3> kMathUtils{{
     {"rotationMatrix", "mat4 rotationMatrix(vec3 v, float angle) { return mat4(rotationMatrix3(v, angle)); } "},
 }};
 
+// DE-Raytracer.frag's colouring sliders, with its defaults (a vec4's alpha last).
+struct RaytracerInput {
+    const char* name;
+    ParameterType type;
+    std::array<float, 4> value;
+};
+const std::array<RaytracerInput, 9> kRaytracerInputs{{
+    {"BaseColor", ParameterType::Vec3, {1.0f, 1.0f, 1.0f, 0.0f}},
+    {"OrbitStrength", ParameterType::Float, {0.8f, 0.0f, 0.0f, 0.0f}},
+    {"X", ParameterType::Vec4, {0.5f, 0.6f, 0.6f, 0.7f}},
+    {"Y", ParameterType::Vec4, {1.0f, 0.6f, 0.0f, 0.4f}},
+    {"Z", ParameterType::Vec4, {0.8f, 0.78f, 1.0f, 0.5f}},
+    {"R", ParameterType::Vec4, {0.4f, 0.7f, 1.0f, 0.12f}},
+    {"BackgroundColor", ParameterType::Vec3, {0.6f, 0.6f, 0.45f, 0.0f}},
+    {"CycleColors", ParameterType::Bool, {0.0f, 0.0f, 0.0f, 0.0f}},
+    {"Cycles", ParameterType::Float, {1.1f, 0.0f, 0.0f, 0.0f}},
+}};
+
 bool definesFunction(const Code& code, const std::string& name) {
     for (std::size_t at : code.occurrences(name)) {
         if (code.depth[at] != 0) continue;
@@ -304,7 +323,8 @@ void adaptFragmentarium(const Code& code, const std::vector<Parameter>& paramete
         "info", "group", "camera", "donotrun", "buffer", "buffershader", "TexParameter", "replace", "FragmentariumUpdate"};
     std::size_t blockStart = std::string::npos;
     std::string blockEnd;
-    std::size_t firstInclude = std::string::npos; // the edit blanking the first system include
+    std::size_t firstInclude = std::string::npos;            // the edit blanking the first system include
+    std::vector<std::pair<std::size_t, std::size_t>> blocks; // #preset and #vertex blocks: not GLSL
     for (std::size_t start = 0; start < text.size();) {
         std::size_t stop = text.find('\n', start);
         if (stop == std::string::npos) stop = text.size();
@@ -317,6 +337,7 @@ void adaptFragmentarium(const Code& code, const std::vector<Parameter>& paramete
                 blockStart = start;
                 blockEnd = "end" + word;
             } else if (blockStart != std::string::npos && word == blockEnd) {
+                blocks.emplace_back(blockStart, stop);
                 edits.push_back(blank(text, blockStart, stop - blockStart));
                 blockStart = std::string::npos;
                 fragmentarium = true;
@@ -352,6 +373,8 @@ void adaptFragmentarium(const Code& code, const std::vector<Parameter>& paramete
             std::size_t wordEnd = word;
             const std::string lock = word < lineEnd ? code.wordAt(wordEnd) : std::string();
             if (lock == "Locked" || lock == "NotLocked" || lock == "NotLockable") after = wordEnd;
+            // `color[1,1,1];`: a semicolon after the annotation too.
+            if (const std::size_t next = code.skipSpace(after); next < lineEnd && code.stripped[next] == ';') after = next + 1;
             edits.push_back({d.end - 1, 1, " = " + glslLiteral(p.type, p.defaultValue) + ";"});
             edits.push_back(blank(text, d.end, after - d.end));
             break;
@@ -373,6 +396,29 @@ void adaptFragmentarium(const Code& code, const std::vector<Parameter>& paramete
     if (helperNeeded)
         for (const auto& [name, definition] : kMathUtils)
             if (!definesFunction(code, name)) provided += definition;
+    // The raytracer's colouring sliders that a fragment's own code reads (a DE mixing OrbitStrength
+    // in, a baseColor()): fixed at the Default preset's value, else at the raytracer's default.
+    const std::vector<std::string> macros = definedMacros(code.stripped);
+    const std::vector<detail::PresetLine> preset = detail::defaultPresetLines(text);
+    for (const RaytracerInput& input : kRaytracerInputs) {
+        const std::vector<std::size_t> uses = code.occurrences(input.name);
+        if (uses.empty() || std::find(macros.begin(), macros.end(), input.name) != macros.end() ||
+            std::any_of(uses.begin(), uses.end(), [&](std::size_t at) {
+                return code.depth[at] == 0 && std::none_of(blocks.begin(), blocks.end(), [at](const auto& block) {
+                           return at >= block.first && at < block.second;
+                       });
+            }))
+            continue; // unused, a macro, or the file's own
+        std::array<float, 4> value = input.value;
+        const int n = componentCount(input.type);
+        for (const detail::PresetLine& line : preset)
+            if (line.name == input.name)
+                if (auto given = detail::parseList(text.substr(line.valueOffset, line.valueLength));
+                    given && int(given->size()) == n)
+                    std::copy(given->begin(), given->end(), value.begin());
+        provided += std::string("uniform ") + parameterTypeName(input.type) + " " + input.name + " = " +
+                    glslLiteral(input.type, value) + "; ";
+    }
     // The system includes declare `uniform float time`: sdfwb's scene time.
     bool timeDeclared = false;
     for (const Declaration& d : fileScopeDeclarations(code, {"uniform"})) timeDeclared |= d.name == "time";

@@ -1,7 +1,8 @@
 #pragma once
 // Reading and writing the numbers of parameter declarations and values (Parameters.cpp,
-// ParameterValues.cpp).
+// ParameterValues.cpp), and Fragmentarium's presets (ForeignHosts.cpp too).
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,5 +17,13 @@ std::optional<float> parseNumber(std::string text, bool integerOnly);
 std::optional<std::vector<float>> parseList(const std::string& text);
 // The shortest decimal that reads back as `value`.
 std::string shortest(float value);
+
+// A `Name = value` line of Fragmentarium's `#preset Default` block (else of its first preset): the
+// value's place in the text, without a trailing Locked or NotLocked.
+struct PresetLine {
+    std::string name;
+    std::size_t valueOffset = 0, valueLength = 0;
+};
+std::vector<PresetLine> defaultPresetLines(const std::string& text);
 
 } // namespace sdfwb::shaders::detail

@@ -185,7 +185,8 @@ std::string glslLiteral(ParameterType type, const std::array<float, 4>& value) {
 std::string fragmentariumLiteral(const Parameter& p, const std::array<float, 4>& value) {
     if (p.type == ParameterType::Bool) return value[0] != 0.0f ? "true" : "false";
     if (p.type == ParameterType::Int) return std::to_string(static_cast<long long>(value[0]));
-    const int n = p.color ? 3 : componentCount(p.type);
+    // A colour annotation holds the colour alone (a vec4's alpha has its own slider there); a preset line every component.
+    const int n = p.color && p.syntax == Parameter::Syntax::FragmentariumSlider ? 3 : componentCount(p.type);
     std::string text;
     for (int k = 0; k < n; ++k) text += (k ? "," : "") + shortest(value[std::size_t(k)]);
     return n > 1 && p.syntax == Parameter::Syntax::FragmentariumSlider && !p.color ? "(" + text + ")" : text;

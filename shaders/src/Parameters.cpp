@@ -439,18 +439,27 @@ struct Scanner {
                    "parameter '" + p.name + "': " + kind + "[...] does not fit a " + parameterTypeName(p.type));
             return false;
         }
-        if (kind == "color") { // three numbers: the colour (a vec4's alpha is 1)
+        if (kind == "color") {
+            // Three numbers, the colour (a vec4's alpha 1); or, for a vec4, Fragmentarium's six:
+            // the alpha's slider (MIN, DEFAULT, MAX), then the colour. New defaults rewrite the colour.
+            const bool withAlpha = p.type == ParameterType::Vec4 && parts.size() == 6;
+            const std::size_t first = withAlpha ? 3 : 0;
             std::string list;
-            for (const auto& [offset, length] : parts) list += (list.empty() ? "" : ",") + text.substr(offset, length);
-            auto value = parts.size() == 3 ? parseList(list) : std::nullopt;
-            if (!value || value->size() != 3) {
-                report(at, Severity::Error, "parameter '" + p.name + "': expected " + form);
+            for (std::size_t k = first; k < parts.size(); ++k)
+                list += (list.empty() ? "" : ",") + text.substr(parts[k].first, parts[k].second);
+            auto value = parts.size() - first == 3 ? parseList(list) : std::nullopt;
+            auto alpha =
+                withAlpha ? parseNumber(text.substr(parts[1].first, parts[1].second), false) : std::optional<float>(1.0f);
+            if (!value || value->size() != 3 || !alpha) {
+                report(at, Severity::Error,
+                       "parameter '" + p.name + "': expected " +
+                           (p.type == ParameterType::Vec4 ? "color[R,G,B] or color[MIN,ALPHA,MAX,R,G,B]" : form));
                 return false;
             }
-            p.defaultValue = std::array<float, 4>{(*value)[0], (*value)[1], (*value)[2], 1.0f};
+            p.defaultValue = std::array<float, 4>{(*value)[0], (*value)[1], (*value)[2], *alpha};
             p.color = true;
-            p.initializerOffset = parts.front().first;
-            p.initializerLength = parts.back().first + parts.back().second - parts.front().first;
+            p.initializerOffset = parts[first].first;
+            p.initializerLength = parts.back().first + parts.back().second - parts[first].first;
         } else {
             const std::size_t index = kind == "slider" ? 1 : 0;
             if (parts.size() != (kind == "slider" ? 3u : 1u)) {
@@ -485,54 +494,60 @@ struct Scanner {
     // Fragmentarium's `#preset Default` block (else its first preset), whose `Name = value` lines
     // set the defaults it loads with: they override the sliders' (and are where new defaults go).
     void applyPreset() {
-        std::size_t begin = std::string::npos;
-        for (std::size_t at = 0; (at = original.find("#preset", at)) != std::string::npos; at += 7) {
-            if (at > 0 && original[at - 1] != '\n' && !isSpace(original[at - 1])) continue;
-            std::size_t k = at + 7;
-            const std::string name = trim(original.substr(k, std::min(original.find('\n', k), original.size()) - k));
-            if (begin == std::string::npos || name == "Default") begin = at;
-            if (name == "Default") break;
-        }
-        if (begin == std::string::npos) return;
-        const std::size_t end = std::min(original.find("#endpreset", begin), original.size());
-        for (std::size_t line = original.find('\n', begin); line != std::string::npos && line < end;
-             line = original.find('\n', line + 1)) {
-            const std::size_t start = line + 1;
-            const std::size_t stop = std::min(original.find('\n', start), end);
-            const std::size_t equals = original.find('=', start);
-            if (equals == std::string::npos || equals >= stop) continue;
-            const std::string name = trim(original.substr(start, equals - start));
+        for (const detail::PresetLine& line : detail::defaultPresetLines(original)) {
             auto it = std::find_if(result.parameters.begin(), result.parameters.end(),
-                                   [&](const Parameter& p) { return p.name == name; });
+                                   [&](const Parameter& p) { return p.name == line.name; });
             if (it == result.parameters.end()) continue;
-            std::size_t a = equals + 1, b = stop;
-            while (a < b && isSpace(original[a])) ++a;
-            while (b > a && isSpace(original[b - 1])) --b;
-            for (const char* lock : {"NotLocked", "Locked"}) { // `Scale = 2.5 Locked`
-                const std::string word = lock;
-                if (b - a > word.size() && original.compare(b - word.size(), word.size(), word) == 0 &&
-                    isSpace(original[b - word.size() - 1])) {
-                    b -= word.size();
-                    while (b > a && isSpace(original[b - 1])) --b;
-                    break;
-                }
-            }
-            auto value = fragmentariumValue(*it, original.substr(a, b - a));
+            const std::string text = original.substr(line.valueOffset, line.valueLength);
+            auto value = fragmentariumValue(*it, text);
             if (!value) {
-                report(a, Severity::Warning,
-                       "preset value '" + original.substr(a, b - a) + "' for '" + name + "' is not a " +
-                           parameterTypeName(it->type) + ": the slider's default is kept");
+                report(line.valueOffset, Severity::Warning,
+                       "preset value '" + text + "' for '" + line.name + "' is not a " + parameterTypeName(it->type) +
+                           ": the slider's default is kept");
                 continue;
             }
             it->defaultValue = *value;
-            it->initializerOffset = a;
-            it->initializerLength = b - a;
+            it->initializerOffset = line.valueOffset;
+            it->initializerLength = line.valueLength;
             it->syntax = Parameter::Syntax::FragmentariumPreset;
         }
     }
 };
 
 } // namespace
+
+std::vector<detail::PresetLine> detail::defaultPresetLines(const std::string& text) {
+    std::vector<PresetLine> lines;
+    std::size_t begin = std::string::npos;
+    for (std::size_t at = 0; (at = text.find("#preset", at)) != std::string::npos; at += 7) {
+        if (at > 0 && text[at - 1] != '\n' && !isSpace(text[at - 1])) continue;
+        const std::size_t k = at + 7;
+        const std::string name = trimmed(text.substr(k, std::min(text.find('\n', k), text.size()) - k));
+        if (begin == std::string::npos || name == "Default") begin = at;
+        if (name == "Default") break;
+    }
+    if (begin == std::string::npos) return lines;
+    const std::size_t end = std::min(text.find("#endpreset", begin), text.size());
+    for (std::size_t line = text.find('\n', begin); line != std::string::npos && line < end; line = text.find('\n', line + 1)) {
+        const std::size_t start = line + 1;
+        const std::size_t stop = std::min(text.find('\n', start), end);
+        const std::size_t equals = text.find('=', start);
+        if (equals == std::string::npos || equals >= stop) continue;
+        std::size_t a = equals + 1, b = stop;
+        while (a < b && isSpace(text[a])) ++a;
+        while (b > a && isSpace(text[b - 1])) --b;
+        for (const std::string word : {"NotLocked", "Locked"}) { // `Scale = 2.5 Locked`
+            if (b - a > word.size() && text.compare(b - word.size(), word.size(), word) == 0 &&
+                isSpace(text[b - word.size() - 1])) {
+                b -= word.size();
+                while (b > a && isSpace(text[b - 1])) --b;
+                break;
+            }
+        }
+        lines.push_back({trimmed(text.substr(start, equals - start)), a, b - a});
+    }
+    return lines;
+}
 
 ParameterScan parseParameters(const std::string& text, const std::string& file) {
     const std::string stripped = stripComments(text);

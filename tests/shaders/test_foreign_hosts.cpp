@@ -237,32 +237,33 @@ TEST(ForeignHosts, AnSdfFileIsLeftAsItIs) {
 }
 
 TEST(ForeignHosts, FragmentariumSlidersPresetsAndSystemIncludes) {
-    const std::string text = "#info Mandelbox (a test)\n"                                // 1
-                             "#define providesInit\n"                                    // 2
-                             "#include \"MathUtils.frag\"\n"                             // 3
-                             "#include \"DE-Raytracer.frag\"\n"                          // 4
-                             "#group Mandelbox\n"                                        // 5
-                             "uniform int Iterations;  slider[0,17,300]\n"               // 6
-                             "uniform float Scale; slider[-3.0,3.0,5.0] Locked\n"        // 7
-                             "uniform vec3 RotVector; slider[(0,0,0),(1,1,1),(1,1,1)]\n" // 8
-                             "uniform bool DoRotate; checkbox[true]\n"                   // 9
-                             "uniform vec3 BaseColor; color[1.0,0.5,0.25]\n"             // 10
-                             "mat3 rot;\n"                                               // 11
+    const std::string text = "#info Mandelbox (a test)\n"                                    // 1
+                             "#define providesInit\n"                                        // 2
+                             "#include \"MathUtils.frag\"\n"                                 // 3
+                             "#include \"DE-Raytracer.frag\"\n"                              // 4
+                             "#group Mandelbox\n"                                            // 5
+                             "uniform int Iterations;  slider[0,17,300]\n"                   // 6
+                             "uniform float Scale; slider[-3.0,3.0,5.0] Locked\n"            // 7
+                             "uniform vec3 RotVector; slider[(0,0,0),(1,1,1),(1,1,1)]\n"     // 8
+                             "uniform bool DoRotate; checkbox[true]\n"                       // 9
+                             "uniform vec3 BaseColor; color[1.0,0.5,0.25]\n"                 // 10
+                             "uniform vec4 Trap; color[-1,0.7,1,0.5,0.6,0.6];\n mat3 rot;\n" // 11, 12
                              "void init() { rot = rotationMatrix3(normalize(RotVector), 30.0); }\n"
                              "float DE(vec3 pos) {\n"
                              "  vec3 p = DoRotate ? rot * pos : pos;\n"
                              "  for (int i = 0; i < Iterations; i++) orbitTrap = min(orbitTrap, vec4(abs(p), 1.0));\n"
-                             "  return (length(p) - 0.5 * abs(Scale) * 0.5) + 0.0 * sin(time);\n"
+                             "  return (length(p) - 0.5 * abs(Scale) * 0.5) + 0.0 * sin(time) * OrbitStrength * Trap.w;\n"
                              "}\n"
                              "#preset Default\n"
                              "FOV = 0.62536\n"
                              "Scale = 2.5 Locked\n"
                              "RotVector = 0,1,0\n"
+                             "OrbitStrength = 0.25\n"
                              "#endpreset\n"
                              "#preset Other\nScale = 1.0\n#endpreset\n";
     ParameterScan scan = parseParameters(text, "box.frag");
     EXPECT_TRUE(scan.diagnostics.empty()) << errors(scan.diagnostics);
-    ASSERT_EQ(scan.parameters.size(), 5u);
+    ASSERT_EQ(scan.parameters.size(), 6u);
     const Parameter* iterations = find(scan.parameters, "Iterations");
     ASSERT_NE(iterations, nullptr);
     EXPECT_EQ(iterations->type, ParameterType::Int);
@@ -285,6 +286,10 @@ TEST(ForeignHosts, FragmentariumSlidersPresetsAndSystemIncludes) {
     ASSERT_NE(colour, nullptr);
     EXPECT_TRUE(colour->color);
     EXPECT_EQ(colour->defaultValue[1], 0.5f);
+    // A vec4 colour in Fragmentarium's six numbers: the alpha's slider, then the colour.
+    const Parameter* trap = find(scan.parameters, "Trap");
+    ASSERT_NE(trap, nullptr);
+    EXPECT_EQ(trap->defaultValue, (std::array<float, 4>{0.5f, 0.6f, 0.6f, 0.7f}));
 
     // Saved defaults go where Fragmentarium reads them, in its syntax, and read back.
     const std::string saved = withDefaults(text, scan.parameters,
@@ -309,7 +314,7 @@ TEST(ForeignHosts, FragmentariumSlidersPresetsAndSystemIncludes) {
     EXPECT_EQ(sdf.host, "Fragmentarium");
     EXPECT_EQ(sdf.signature.entry, "DE");
     EXPECT_EQ(sdf.signature.prelude, "init();");
-    EXPECT_EQ(sdf.parameters.size(), 5u);
+    EXPECT_EQ(sdf.parameters.size(), 6u);
     EXPECT_TRUE(sdf.usesTime()) << "Fragmentarium's time is the scene time";
     EXPECT_EQ(rootLines(sdf), lines(text));
     EXPECT_EQ(sdf.source.text.find("#info"), std::string::npos);
@@ -317,6 +322,8 @@ TEST(ForeignHosts, FragmentariumSlidersPresetsAndSystemIncludes) {
     EXPECT_EQ(sdf.source.text.find("FOV"), std::string::npos);
     EXPECT_NE(sdf.source.text.find("uniform float Scale = 2.5;"), std::string::npos) << sdf.source.text;
     EXPECT_NE(sdf.source.text.find("vec4 orbitTrap"), std::string::npos);
+    // The raytracer's slider the DE reads, at the Default preset's value.
+    EXPECT_NE(sdf.source.text.find("uniform float OrbitStrength = 0.25;"), std::string::npos) << sdf.source.text;
     EXPECT_NE(sdf.source.text.find("mat3 rotationMatrix3(vec3 v, float angle)"), std::string::npos);
     EXPECT_NE(entryWrapper(sdf).find("{ init();return DE(p"), std::string::npos) << entryWrapper(sdf);
     EXPECT_EQ(compileErrors(sdf), "");
