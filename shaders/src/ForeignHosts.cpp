@@ -4,12 +4,14 @@
 #include "ForeignHosts.h"
 #include "ParameterText.h"
 
+#include <core/Regex.h>
 #include <shaders/SdfSource.h>
 
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <optional>
+#include <regex>
 
 namespace sdfwb::shaders::detail {
 namespace {
@@ -245,7 +247,7 @@ int emptyUnit(const std::string& samplerType) {
 // with or without their folder: "include/DE-Raytracer.frag").
 bool fragmentariumSystemInclude(std::string name) {
     if (const std::size_t slash = name.find_last_of("/\\"); slash != std::string::npos) name = name.substr(slash + 1);
-    static const std::array<const char*, 20> names{"DE-Raytracer.frag",
+    static const std::array<const char*, 21> names{"DE-Raytracer.frag",
                                                    "DE-Raytracer-v0.9.1.frag",
                                                    "DE-Raytracer-v0.9.10.frag",
                                                    "Fast-Raytracer.frag",
@@ -263,6 +265,7 @@ bool fragmentariumSystemInclude(std::string name) {
                                                    "DE-Raytracer-Slicer.frag",
                                                    "3D.frag",
                                                    "MathUtils.frag",
+                                                   "matrix.frag",
                                                    "Progressive3D.frag",
                                                    "ZBuffer3D.frag"};
     return std::find(names.begin(), names.end(), name) != names.end();
@@ -270,7 +273,7 @@ bool fragmentariumSystemInclude(std::string name) {
 
 // What Fragmentarium's MathUtils.frag gives that fractal code calls: rotations by an angle in
 // degrees, in its convention (its matrices turn by -angle about v, as they multiply row vectors).
-constexpr std::array<std::pair<const char*, const char*>, 3> kMathUtils{{
+constexpr std::array<std::pair<const char*, const char*>, 5> kMathUtils{{
     {"rotationMatrix3",
      "mat3 rotationMatrix3(vec3 v, float angle) { float c = cos(radians(angle)), s = sin(radians(angle)); return c * "
      "mat3(1.0) + (1.0 - c) * outerProduct(v, v) - s * mat3(0.0, v.z, -v.y, -v.z, 0.0, v.x, v.y, -v.x, 0.0); } "},
@@ -278,6 +281,9 @@ constexpr std::array<std::pair<const char*, const char*>, 3> kMathUtils{{
      "mat3 rotationMatrixXYZ(vec3 v) { return rotationMatrix3(vec3(1.0, 0.0, 0.0), v.x) * rotationMatrix3(vec3(0.0, "
      "1.0, 0.0), v.y) * rotationMatrix3(vec3(0.0, 0.0, 1.0), v.z); } "},
     {"rotationMatrix", "mat4 rotationMatrix(vec3 v, float angle) { return mat4(rotationMatrix3(v, angle)); } "},
+    {"translate", "mat4 translate(vec3 v) { mat4 m = mat4(1.0); m[3] = vec4(v, 1.0); return m; } "},
+    {"scale4", "mat4 scale4(float s) { return mat4(vec4(s, 0.0, 0.0, 0.0), vec4(0.0, s, 0.0, 0.0), vec4(0.0, 0.0, s, 0.0), "
+               "vec4(0.0, 0.0, 0.0, 1.0)); } "},
 }};
 
 // DE-Raytracer.frag's colouring sliders, with its defaults (a vec4's alpha last).
@@ -390,12 +396,23 @@ void adaptFragmentarium(const Code& code, const std::vector<Parameter>& paramete
     const std::vector<std::size_t> traps = code.occurrences("orbitTrap");
     if (!traps.empty() && std::none_of(traps.begin(), traps.end(), [&](std::size_t at) { return code.depth[at] == 0; }))
         provided += "vec4 orbitTrap = vec4(10000.0); ";
-    bool helperNeeded = false;
-    for (const auto& [name, definition] : kMathUtils)
-        helperNeeded |= !code.occurrences(name).empty() && !definesFunction(code, name);
-    if (helperNeeded)
-        for (const auto& [name, definition] : kMathUtils)
-            if (!definesFunction(code, name)) provided += definition;
+    // Those the code calls and does not define, and rotationMatrix3, which the other rotations call.
+    for (const auto& [name, definition] : kMathUtils) {
+        const std::string helper = name;
+        const bool called = !code.occurrences(helper).empty() ||
+                            (helper == "rotationMatrix3" &&
+                             (!code.occurrences("rotationMatrixXYZ").empty() || !code.occurrences("rotationMatrix").empty()));
+        if (called && !definesFunction(code, helper)) provided += definition;
+    }
+    // The historical matrix.frag's rotationMatrix returned a mat3 in some versions: where the code
+    // keeps it in a mat3, that one.
+    static const std::regex intoMat3(R"(\bmat3\s+\w+\s*=\s*rotationMatrix\s*\()", kLinearRegex);
+    if (std::regex_search(code.stripped, intoMat3)) {
+        const std::size_t at = provided.find("mat4 rotationMatrix(");
+        if (at != std::string::npos)
+            provided.replace(at, provided.find("} ", at) + 2 - at,
+                             "mat3 rotationMatrix(vec3 v, float angle) { return rotationMatrix3(v, angle); } ");
+    }
     // The raytracer's colouring sliders that a fragment's own code reads (a DE mixing OrbitStrength
     // in, a baseColor()): fixed at the Default preset's value, else at the raytracer's default.
     const std::vector<std::string> macros = definedMacros(code.stripped);

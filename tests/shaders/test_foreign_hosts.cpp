@@ -356,3 +356,20 @@ TEST(ForeignHosts, BadFragmentariumAnnotationsAreNamedAtTheirLine) {
     EXPECT_EQ(scan.diagnostics[0].severity, Severity::Warning);
     EXPECT_EQ(scan.diagnostics[0].line, 3);
 }
+
+TEST(ForeignHosts, FragmentariumsHistoricalIncludesAndMatrices) {
+    // An old fragment: its includes named with their folder, matrix.frag's rotationMatrix kept in a
+    // mat3 (later versions return a mat4), MathUtils' translate and scale4.
+    const std::string text = "#include \"include/DE-Raytracer.frag\"\n"
+                             "#include \"include/matrix.frag\"\n"
+                             "uniform vec3 Axis; slider[(0,0,0),(0,1,0),(1,1,1)]\n"
+                             "mat3 rot = rotationMatrix(normalize(Axis), 30.0);\n"
+                             "mat4 place = translate(vec3(0.1, 0.0, 0.0)) * scale4(0.5);\n"
+                             "float DE(vec3 p) { p = (place * vec4(rot * p, 1.0)).xyz; return length(p) - 0.3; }\n";
+    PreparedSdf sdf = prepare(text, "old.frag");
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.host, "Fragmentarium");
+    EXPECT_EQ(sdf.signature.entry, "DE");
+    EXPECT_NE(sdf.source.text.find("mat3 rotationMatrix(vec3 v, float angle)"), std::string::npos);
+    EXPECT_EQ(compileErrors(sdf), "");
+}
