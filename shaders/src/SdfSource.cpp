@@ -642,8 +642,8 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
             PreparedSdf userCode = prepared;
             userCode.signature.entry.clear(); // the user's code alone
             int shown = 0;
-            for (Diagnostic& d :
-                 checkWithGlslang(composeSdfShader(userCode, Stage::Fragment, std::vector<ShaderPiece>{}, FeatureDefines{})))
+            const std::vector<ShaderPiece> stage{{"<sdfwb main>", "void main() {}\n"}}; // the stage needs one to link
+            for (Diagnostic& d : checkWithGlslang(composeSdfShader(userCode, Stage::Fragment, stage, FeatureDefines{})))
                 if (d.severity == Severity::Error && shown++ < 3) prepared.diagnostics.push_back(std::move(d));
             if (shown > 0)
                 missing.message +=
