@@ -319,6 +319,36 @@ bool definesFunction(const Code& code, const std::string& name) {
     return false;
 }
 
+// The raytracer's colouring sliders that a fragment's own code reads (a DE mixing OrbitStrength
+// in, a baseColor()), declared at the Default preset's value, else at the raytracer's default.
+// `blocks`: the #preset and #vertex blocks, whose lines are not the file's declarations.
+std::string raytracerInputs(const Code& code, const std::vector<std::pair<std::size_t, std::size_t>>& blocks) {
+    const std::string& text = code.original;
+    std::string provided;
+    const std::vector<std::string> macros = definedMacros(code.stripped);
+    const std::vector<detail::PresetLine> preset = detail::defaultPresetLines(text);
+    for (const RaytracerInput& input : kRaytracerInputs) {
+        const std::vector<std::size_t> uses = code.occurrences(input.name);
+        if (uses.empty() || std::find(macros.begin(), macros.end(), input.name) != macros.end() ||
+            std::any_of(uses.begin(), uses.end(), [&](std::size_t at) {
+                return code.depth[at] == 0 && std::none_of(blocks.begin(), blocks.end(), [at](const auto& block) {
+                           return at >= block.first && at < block.second;
+                       });
+            }))
+            continue; // unused, a macro, or the file's own
+        std::array<float, 4> value = input.value;
+        const int n = componentCount(input.type);
+        for (const detail::PresetLine& line : preset)
+            if (line.name == input.name)
+                if (auto given = detail::parseList(text.substr(line.valueOffset, line.valueLength));
+                    given && int(given->size()) == n)
+                    std::copy(given->begin(), given->end(), value.begin());
+        provided += std::string("uniform ") + parameterTypeName(input.type) + " " + input.name + " = " +
+                    glslLiteral(input.type, value) + "; ";
+    }
+    return provided;
+}
+
 // Fragmentarium: directives, annotations, system includes, init().
 void adaptFragmentarium(const Code& code, const std::vector<Parameter>& parameters, std::vector<Edit>& edits,
                         HostAdaptation& out) {
@@ -413,29 +443,7 @@ void adaptFragmentarium(const Code& code, const std::vector<Parameter>& paramete
             provided.replace(at, provided.find("} ", at) + 2 - at,
                              "mat3 rotationMatrix(vec3 v, float angle) { return rotationMatrix3(v, angle); } ");
     }
-    // The raytracer's colouring sliders that a fragment's own code reads (a DE mixing OrbitStrength
-    // in, a baseColor()): fixed at the Default preset's value, else at the raytracer's default.
-    const std::vector<std::string> macros = definedMacros(code.stripped);
-    const std::vector<detail::PresetLine> preset = detail::defaultPresetLines(text);
-    for (const RaytracerInput& input : kRaytracerInputs) {
-        const std::vector<std::size_t> uses = code.occurrences(input.name);
-        if (uses.empty() || std::find(macros.begin(), macros.end(), input.name) != macros.end() ||
-            std::any_of(uses.begin(), uses.end(), [&](std::size_t at) {
-                return code.depth[at] == 0 && std::none_of(blocks.begin(), blocks.end(), [at](const auto& block) {
-                           return at >= block.first && at < block.second;
-                       });
-            }))
-            continue; // unused, a macro, or the file's own
-        std::array<float, 4> value = input.value;
-        const int n = componentCount(input.type);
-        for (const detail::PresetLine& line : preset)
-            if (line.name == input.name)
-                if (auto given = detail::parseList(text.substr(line.valueOffset, line.valueLength));
-                    given && int(given->size()) == n)
-                    std::copy(given->begin(), given->end(), value.begin());
-        provided += std::string("uniform ") + parameterTypeName(input.type) + " " + input.name + " = " +
-                    glslLiteral(input.type, value) + "; ";
-    }
+    provided += raytracerInputs(code, blocks);
     // The system includes declare `uniform float time`: sdfwb's scene time.
     bool timeDeclared = false;
     for (const Declaration& d : fileScopeDeclarations(code, {"uniform"})) timeDeclared |= d.name == "time";
