@@ -3,6 +3,7 @@
 
 #include "ForeignHosts.h"
 #include "ParameterText.h"
+#include "Words.h"
 
 #include <core/Regex.h>
 #include <shaders/SdfSource.h>
@@ -74,15 +75,7 @@ struct Code {
     // Offsets of every whole-word `word` outside comments, optionally within [from, to).
     std::vector<std::size_t> occurrences(const std::string& word, std::size_t from = 0,
                                          std::size_t to = std::string::npos) const {
-        std::vector<std::size_t> out;
-        for (std::size_t at = stripped.find(word, from); at != std::string::npos && at < to;
-             at = stripped.find(word, at + word.size())) {
-            if ((at > 0 && isWordCharacter(stripped[at - 1])) ||
-                (at + word.size() < stripped.size() && isWordCharacter(stripped[at + word.size()])))
-                continue;
-            out.push_back(at);
-        }
-        return out;
+        return wordOffsets(stripped, word, from, to);
     }
     // The offset of the `}` closing the `{` at `open`, or npos.
     std::size_t closing(std::size_t open) const {

@@ -1,4 +1,5 @@
 #include "InlineField.h"
+#include "Words.h"
 
 #include <core/Regex.h>
 #include <shaders/SdfSource.h>
@@ -10,12 +11,7 @@
 namespace sdfwb::shaders {
 namespace {
 
-bool isWordAt(const std::string& text, std::size_t at, const char* word) {
-    const std::size_t n = std::char_traits<char>::length(word);
-    if (text.compare(at, n, word) != 0) return false;
-    if (at > 0 && isWordCharacter(text[at - 1])) return false;
-    return at + n >= text.size() || !isWordCharacter(text[at + n]);
-}
+using detail::isWordAt;
 
 std::size_t skipSpace(const std::string& text, std::size_t at) {
     while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at]))) ++at;
@@ -171,7 +167,7 @@ std::string expandedMacros(const std::string& code, const std::map<std::string, 
 
 bool holdsLoopKeyword(const std::string& code) {
     for (std::size_t i = 0; i < code.size(); ++i)
-        if ((i == 0 || !isWordCharacter(code[i - 1])) && (isWordAt(code, i, "for") || isWordAt(code, i, "while"))) return true;
+        if (isWordAt(code, i, "for") || isWordAt(code, i, "while")) return true;
     return false;
 }
 

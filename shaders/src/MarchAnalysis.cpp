@@ -1,6 +1,7 @@
 #include <shaders/MarchAnalysis.h>
 
 #include "InlineField.h"
+#include "Words.h"
 
 #include <shaders/GlslChecker.h>
 #include <shaders/SdfSource.h>
@@ -235,10 +236,7 @@ std::vector<std::string> callArguments(const std::string& text, int line, const 
     const std::size_t start = lineStart(text, line);
     if (start == std::string::npos) return {};
     const std::size_t end = std::min(text.find('\n', start), text.size());
-    for (std::size_t at = text.find(name, start); at != std::string::npos && at < end; at = text.find(name, at + 1)) {
-        if ((at > 0 && isWordCharacter(text[at - 1])) ||
-            (at + name.size() < text.size() && isWordCharacter(text[at + name.size()])))
-            continue;
+    for (std::size_t at : detail::wordOffsets(text, name, start, end)) {
         std::size_t open = text.find_first_not_of(" \t\r\n", at + name.size());
         if (open == std::string::npos || text[open] != '(') continue;
         std::vector<std::string> arguments;
@@ -491,12 +489,7 @@ void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* fu
     // The loop's keyword: at glslang's column, else the line's first loop keyword.
     const std::size_t lineEnd = std::min(text.find('\n', line), text.size());
     auto isKeyword = [&](std::size_t at) {
-        if (at >= lineEnd || (at > 0 && isWordCharacter(text[at - 1]))) return false;
-        for (const std::string word : {"for", "while"})
-            if (text.compare(at, word.size(), word) == 0 &&
-                (at + word.size() >= text.size() || !isWordCharacter(text[at + word.size()])))
-                return true;
-        return false;
+        return at < lineEnd && (detail::isWordAt(text, at, "for") || detail::isWordAt(text, at, "while"));
     };
     std::size_t keyword = std::string::npos;
     const std::size_t column = line + std::size_t(std::max(1, loop->getLoc().column));

@@ -17,7 +17,6 @@ namespace {
 
 using detail::parseNumber;
 using detail::shortest;
-std::string trim(const std::string& text) { return detail::trimmed(text); }
 bool isIdentifierStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
 bool isIdentifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
@@ -34,7 +33,8 @@ std::optional<std::vector<float>> detail::parseList(const std::string& text) {
     std::size_t start = 0;
     while (true) {
         const std::size_t comma = text.find(',', start);
-        const std::string item = trim(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+        const std::string item =
+            detail::trimmed(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
         if (item == "true") {
             values.push_back(1.0f);
         } else if (item == "false") {
@@ -94,7 +94,7 @@ Expected<ParameterValue> parseParameterValue(const std::string& text) {
     const std::size_t equals = text.find('=');
     if (equals == std::string::npos) return makeError("'" + text + "': expected NAME=VALUE (vectors as NAME=x,y,z)");
     ParameterValue value;
-    value.name = trim(text.substr(0, equals));
+    value.name = detail::trimmed(text.substr(0, equals));
     if (!isIdentifier(value.name)) return makeError("'" + text + "': '" + value.name + "' is not a parameter name");
     auto list = parseList(text.substr(equals + 1));
     if (!list) return makeError("'" + text + "': the value must be 1 to 4 finite numbers separated by commas (or true/false)");
@@ -211,7 +211,7 @@ Expected<ParameterSweep> parseParameterSweep(const std::string& text) {
     const std::string form = "expected NAME=FROM:TO:COUNT (vectors as x,y,z at FROM and TO)";
     if (equals == std::string::npos) return makeError("'" + text + "': " + form);
     ParameterSweep sweep;
-    sweep.name = trim(text.substr(0, equals));
+    sweep.name = detail::trimmed(text.substr(0, equals));
     if (!isIdentifier(sweep.name)) return makeError("'" + text + "': '" + sweep.name + "' is not a parameter name");
     const std::string rest = text.substr(equals + 1);
     const std::size_t first = rest.find(':'), second = rest.find(':', first == std::string::npos ? 0 : first + 1);

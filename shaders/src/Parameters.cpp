@@ -96,7 +96,6 @@ namespace {
 
 using detail::parseList;
 using detail::parseNumber;
-std::string trim(const std::string& text) { return detail::trimmed(text); }
 
 struct Scanner {
     const std::string& original;
@@ -130,7 +129,7 @@ struct Scanner {
 
     // The initializer `text` into the parameter's default; false after reporting why.
     bool readInitializer(Parameter& p, const std::string& initializer, std::size_t offset) {
-        const std::string value = trim(initializer);
+        const std::string value = detail::trimmed(initializer);
         const int n = componentCount(p.type);
         if (p.type == ParameterType::Bool) {
             if (value == "true" || value == "false") {
@@ -156,7 +155,7 @@ struct Scanner {
         const std::string constructor = parameterTypeName(p.type);
         std::size_t open = value.find('(');
         if (value.rfind(constructor, 0) != 0 || open == std::string::npos ||
-            trim(value.substr(constructor.size(), open - constructor.size())) != "" || value.back() != ')') {
+            detail::trimmed(value.substr(constructor.size(), open - constructor.size())) != "" || value.back() != ')') {
             report(offset, Severity::Error,
                    "parameter '" + p.name + "': the default must be " + constructor + "(...) of numbers, not '" + value + "'");
             return false;
@@ -211,7 +210,7 @@ struct Scanner {
                 } else if (!lo || !hi) {
                     report(at, Severity::Error,
                            "parameter '" + p.name + "': @range takes two " + (integer ? "whole numbers" : "numbers") +
-                               " (@range MIN MAX), got '" + trim(a + " " + b) + "'");
+                               " (@range MIN MAX), got '" + detail::trimmed(a + " " + b) + "'");
                 } else if (!(*lo < *hi)) {
                     report(at, Severity::Error,
                            "parameter '" + p.name + "': @range " + a + " " + b + " is empty (MIN must be below MAX)");
@@ -391,7 +390,7 @@ struct Scanner {
 
     // One value of a Fragmentarium annotation: a number, true/false, or `(x,y,z)` for a vector.
     std::optional<std::array<float, 4>> fragmentariumValue(const Parameter& p, std::string value) const {
-        value = trim(value);
+        value = detail::trimmed(value);
         const int n = componentCount(p.type);
         std::array<float, 4> out{};
         if (p.type == ParameterType::Bool) {

@@ -9,6 +9,7 @@
 #include <shaders/SourceChecks.h>
 
 #include "ForeignHosts.h"
+#include "Words.h"
 
 #include <algorithm>
 #include <iterator>
@@ -49,11 +50,9 @@ bool matchAt(const std::string& text, std::size_t at, const std::regex& pattern,
 bool isWordCharacter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; }
 
 bool mentions(const std::string& text, const std::string& name) {
-    for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1))
-        if ((at == 0 || !isWordCharacter(text[at - 1])) &&
-            (at + name.size() >= text.size() || !isWordCharacter(text[at + name.size()])))
-            return true;
-    return false;
+    bool found = false;
+    detail::forEachOccurrence(text, name, [&](std::size_t) { return !(found = true); });
+    return found;
 }
 
 std::string stripComments(const std::string& text) {
@@ -137,10 +136,7 @@ SdfSignature detectSignature(const std::string& stripped, const std::string& ent
     // Tried only at the word before each occurrence of the name: searching from every position of
     // a long text was the slow part of preparing one (1.8 s for 10 MB).
     std::smatch match;
-    for (std::size_t at = stripped.find(entry); at != std::string::npos; at = stripped.find(entry, at + entry.size())) {
-        if ((at > 0 && isWordCharacter(stripped[at - 1])) ||
-            (at + entry.size() < stripped.size() && isWordCharacter(stripped[at + entry.size()])))
-            continue;
+    for (std::size_t at : detail::wordOffsets(stripped, entry)) {
         std::size_t type = previousWord(stripped, at);
         if (type == std::string::npos || !matchAt(stripped, type, definition, match)) continue;
         const std::string returned = match[1].str();
@@ -280,9 +276,8 @@ template <class Depth> bool declaredInList(const std::string& text, const std::s
     static const std::regex declarationStart(
         R"(^\s*(?:(?:const|uniform|highp|mediump|lowp|precise)\s+)*(?:float|int|uint|bool|double|[iud]?vec[234]|mat[234](?:x[234])?|Point3|Vector3|Color3|float[234])\b)",
         kLinearRegex);
-    for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) {
+    for (std::size_t at : detail::wordOffsets(text, name)) {
         const std::size_t end = at + name.size();
-        if ((at > 0 && isWordCharacter(text[at - 1])) || (end < text.size() && isWordCharacter(text[end]))) continue;
         if (depthAt(at) != 0) continue;
         std::size_t before = at;
         while (before > 0 && std::isspace(static_cast<unsigned char>(text[before - 1]))) --before;
@@ -333,16 +328,8 @@ CompatNeeds detectCompatNeeds(const std::string& stripped) {
     // a regex search per symbol took ~35 ms on a 12 KB SDF with its includes, on every edit.
     std::set<std::string_view> words;
     const std::string_view text(stripped);
-    for (std::size_t i = 0; i < text.size();) {
-        if (!isWordCharacter(text[i])) {
-            ++i;
-            continue;
-        }
-        std::size_t end = i;
-        while (end < text.size() && isWordCharacter(text[end])) ++end;
-        words.insert(text.substr(i, end - i));
-        i = end;
-    }
+    detail::forEachIdentifier(text,
+                              [&](std::size_t at, std::size_t end) { return words.insert(text.substr(at, end - at)), true; });
     // Brace depth at each byte, made only when some used name has a declaration to place.
     std::vector<std::uint8_t> depth;
     auto depthAt = [&](std::size_t at) {
@@ -401,9 +388,7 @@ Diagnostic missingEntryDiagnostic(const ResolvedSource& source, const std::strin
     std::string stripped = stripComments(root);
     const std::regex anyDefinition(R"(\b\w+\s+)" + entry + R"(\s*\([^)]*\))", kLinearRegex);
     std::smatch match;
-    for (std::size_t at = stripped.find(entry); isIdentifier(entry) && at != std::string::npos;
-         at = stripped.find(entry, at + entry.size())) {
-        if (at > 0 && isWordCharacter(stripped[at - 1])) continue;
+    for (std::size_t at : isIdentifier(entry) ? detail::wordOffsets(stripped, entry) : std::vector<std::size_t>()) {
         std::size_t start = previousWord(stripped, at);
         if (start == std::string::npos || !matchAt(stripped, start, anyDefinition, match)) continue;
         int line = 1 + int(std::count(stripped.begin(), stripped.begin() + std::ptrdiff_t(start), '\n'));

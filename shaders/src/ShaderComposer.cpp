@@ -3,6 +3,8 @@
 #include <shaders/BuiltinShaders.h>
 #include <shaders/SdfSource.h>
 
+#include "Words.h"
+
 #include <core/Regex.h>
 
 #include <cctype>
@@ -41,33 +43,16 @@ void appendDefines(ComposedShader& shader, const FeatureDefines& features, bool 
 
 // `text` with every whole-word `word` replaced by `replacement`.
 std::string renameWord(const std::string& text, const std::string& word, const std::string& replacement) {
-    auto wordCharacter = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
     std::string out;
     std::size_t from = 0;
-    for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + word.size())) {
-        if ((at > 0 && wordCharacter(text[at - 1])) || (at + word.size() < text.size() && wordCharacter(text[at + word.size()])))
-            continue;
+    detail::forEachOccurrence(text, word, [&](std::size_t at) {
         out.append(text, from, at - from);
         out += replacement;
         from = at + word.size();
-    }
+        return true;
+    });
     out.append(text, from, std::string::npos);
     return out;
-}
-
-// Calls `visit(at, end)` for each word of `text` (a run of letters, digits and _) in order, until
-// it returns false.
-template <class Visit> void forEachWord(const std::string& text, Visit visit) {
-    for (std::size_t at = 0; at < text.size();) {
-        if (!isWordCharacter(text[at])) {
-            ++at;
-            continue;
-        }
-        std::size_t end = at;
-        while (end < text.size() && isWordCharacter(text[end])) ++end;
-        if (!visit(at, end)) return;
-        at = end;
-    }
 }
 
 // `text` with each call of texture, texture2D or textureCube that passes three arguments (the
@@ -76,7 +61,7 @@ template <class Visit> void forEachWord(const std::string& text, Visit visit) {
 std::string renameBiasLookups(const std::string& text) {
     std::string out;
     std::size_t from = 0;
-    forEachWord(text, [&](std::size_t at, std::size_t end) {
+    detail::forEachIdentifier(text, [&](std::size_t at, std::size_t end) {
         const std::string_view word(text.data() + at, end - at);
         std::size_t open = end;
         while (open < text.size() && std::isspace(static_cast<unsigned char>(text[open]))) ++open;
@@ -105,7 +90,7 @@ std::string renameBiasLookups(const std::string& text) {
 // cheap to inline at every call site (SDFWB_FIELD_WITHOUT_LOOPS, sampling/common.glsl).
 bool hasLoopKeyword(const std::string& text) {
     bool found = false;
-    forEachWord(text, [&](std::size_t at, std::size_t end) {
+    detail::forEachIdentifier(text, [&](std::size_t at, std::size_t end) {
         const std::string_view word(text.data() + at, end - at);
         found = word == "for" || word == "while" || word == "do";
         return !found;

@@ -1,0 +1,59 @@
+#pragma once
+// Whole words of GLSL text: the one place the shader readers (SdfSource, MarchAnalysis,
+// InlineField, ShaderComposer, ForeignHosts) find an identifier without matching it inside a
+// longer one. Private to shaders/.
+
+#include <shaders/SdfSource.h>
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sdfwb::shaders::detail {
+
+// Whether text[at, at + length) is a whole word: no identifier character right before or after.
+inline bool isWholeWord(const std::string& text, std::size_t at, std::size_t length) {
+    return (at == 0 || !isWordCharacter(text[at - 1])) && (at + length >= text.size() || !isWordCharacter(text[at + length]));
+}
+
+// Whether `word` starts at `at` as a whole word.
+inline bool isWordAt(const std::string& text, std::size_t at, std::string_view word) {
+    return text.compare(at, word.size(), word) == 0 && isWholeWord(text, at, word.size());
+}
+
+// Calls `visit(at)` for each whole-word `word` starting in text[from, to), in order, until it
+// returns false.
+template <class Visit>
+void forEachOccurrence(const std::string& text, const std::string& word, Visit visit, std::size_t from = 0,
+                       std::size_t to = std::string::npos) {
+    if (word.empty()) return;
+    for (std::size_t at = text.find(word, from); at != std::string::npos && at < to; at = text.find(word, at + 1))
+        if (isWholeWord(text, at, word.size()) && !visit(at)) return;
+}
+
+// The offsets of every whole-word `word` starting in text[from, to).
+inline std::vector<std::size_t> wordOffsets(const std::string& text, const std::string& word, std::size_t from = 0,
+                                            std::size_t to = std::string::npos) {
+    std::vector<std::size_t> out;
+    forEachOccurrence(
+        text, word, [&](std::size_t at) { return out.push_back(at), true; }, from, to);
+    return out;
+}
+
+// Calls `visit(at, end)` for each identifier-like word of `text` (a run of letters, digits and
+// _) in order, until it returns false.
+template <class Text, class Visit> void forEachIdentifier(const Text& text, Visit visit) {
+    for (std::size_t at = 0; at < text.size();) {
+        if (!isWordCharacter(text[at])) {
+            ++at;
+            continue;
+        }
+        std::size_t end = at;
+        while (end < text.size() && isWordCharacter(text[end])) ++end;
+        if (!visit(at, end)) return;
+        at = end;
+    }
+}
+
+} // namespace sdfwb::shaders::detail
