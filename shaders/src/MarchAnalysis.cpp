@@ -95,7 +95,8 @@ bool isFloatVec3(const glslang::TType& type) {
 
 // A distance's return: float, vec2 or vec4 (a value and a material id or colour). Not vec3: what a
 // march loop calls and returns a vec3 is a normal or a colour (a reflection loop's `ro += nor * eps`
-// grows the point by calcNormal's result), and a field returning vec3 is rare enough to be named.
+// grows the point by calcNormal's result), unless the loop reads only its x
+// (readsFirstComponentOnly).
 bool returnsFloats(const glslang::TType& type) {
     return type.getBasicType() == glslang::EbtFloat && !type.isArray() &&
            (type.isScalar() || (type.isVector() && type.getVectorSize() != 3));
@@ -132,6 +133,40 @@ std::string distanceMember(TIntermNode* loop, TIntermAggregate* call, const std:
     members.holders = &holders;
     loop->traverse(&members);
     return members.found;
+}
+
+// Whether the loop reads only the first component (`.x`, `.r`, `[0]`) of what `call` returns, from
+// the call itself or from a variable assigned the call (`vec3 h = f(p); t += h.x;`): a vec3 field
+// that carries its distance in x and a material or orbit trap in y and z. A normal or a colour is
+// read whole or in all its components.
+bool readsFirstComponentOnly(TIntermNode* loop, TIntermAggregate* call, const std::vector<TIntermBinary*>& assignments) {
+    std::set<long long> holders;
+    for (TIntermBinary* a : assignments)
+        if (a->getOp() == glslang::EOpAssign && a->getRight() == call) holders.insert(assignedSymbol(a->getLeft()));
+    struct Reads : glslang::TIntermTraverser {
+        TIntermAggregate* call = nullptr;
+        const std::set<long long>* holders = nullptr;
+        int first = 0, other = 0;
+        bool visitBinary(glslang::TVisit, TIntermBinary* node) override {
+            const glslang::TOperator op = node->getOp();
+            if (op != glslang::EOpVectorSwizzle && op != glslang::EOpIndexDirect) return true;
+            TIntermTyped* base = node->getLeft();
+            TIntermSymbol* symbol = base->getAsSymbolNode();
+            if (base != call && !(symbol && holders->count(symbol->getId()))) return true;
+            const glslang::TIntermConstantUnion* index = node->getRight()->getAsConstantUnion();
+            const TIntermAggregate* swizzle = node->getRight()->getAsAggregate();
+            if (op == glslang::EOpVectorSwizzle && swizzle && swizzle->getSequence().size() == 1)
+                index = swizzle->getSequence().front()->getAsConstantUnion();
+            else if (op == glslang::EOpVectorSwizzle)
+                index = nullptr;
+            ++(index && index->getConstArray()[0].getIConst() == 0 ? first : other);
+            return true;
+        }
+    } reads;
+    reads.call = call;
+    reads.holders = &holders;
+    loop->traverse(&reads);
+    return reads.first > 0 && reads.other == 0;
 }
 
 struct Assignment {
@@ -608,7 +643,10 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                 if (callee == tree.functions.end() || call->getSequence().empty()) continue;
                 TIntermTyped* point = call->getSequence().front()->getAsTyped();
                 const glslang::TType& returned = callee->second->getType();
-                if (!point || !isFloatVec3(point->getType()) || !(returnsFloats(returned) || returnsStruct(returned))) continue;
+                const bool vec3Field = isFloatVec3(returned) && readsFirstComponentOnly(loop, call, inside.assignments);
+                if (!point || !isFloatVec3(point->getType()) ||
+                    !(returnsFloats(returned) || returnsStruct(returned) || vec3Field))
+                    continue;
                 const std::string name = plainName(call->getName());
                 if (counted.count(name) || !stepsBy(assignments, call)) continue;
                 std::string member;

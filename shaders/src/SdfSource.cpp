@@ -479,9 +479,12 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
     std::string untraced; // why a marched field with parameters after the point could not be wrapped
     for (MarchedFunction& marched :
          marchedFunctions(composeSdfShader(userCode, Stage::Fragment, std::vector<ShaderPiece>{}, FeatureDefines{}))) {
-        // A struct's float member the march steps by (`Hit map(vec3 p)`, `t += h.d`) is the distance.
-        SdfSignature signature =
-            detectSignature(stripped, marched.name, marched.member.empty() ? "float|vec2|vec4" : marched.returnType);
+        // A struct's float member the march steps by (`Hit map(vec3 p)`, `t += h.d`) is the distance;
+        // a vec3 is one when the march reads only its x (marchedFunctions).
+        const std::string returns = !marched.member.empty()       ? marched.returnType
+                                    : marched.valueType == "vec3" ? std::string("vec3")
+                                                                  : std::string("float|vec2|vec4");
+        SdfSignature signature = detectSignature(stripped, marched.name, returns);
         if (!marched.member.empty()) signature.member = marched.member; // the one the march reads
         if (!signature.found && marched.extraParameters > 0 && !marched.arguments.empty() && !marched.valueType.empty()) {
             // Parameters after the point, computed by mainImage: the wrapper computes them the same way.

@@ -584,6 +584,35 @@ TEST(CompatNeeds, FragmentOnlyBuiltinsInHelpersCompileInTheComputeStage) {
 // the distance, else the struct's first float), out parameters (the wrapper passes locals), and
 // helpers named like GLSL's deprecated noise1..4 (renamed: glslang refuses them at 4.30). A vec3
 // a reflection loop grows the point by (calcNormal) is not a field.
+TEST(EntryPoint, AVec3FieldWhoseXTheMarchStepsByIsTheEntry) {
+    // evilryu's style: `vec3 f(vec3 p)` returns (distance, orbit trap, 0); the march reads only .x.
+    const std::string field = "vec3 f(vec3 p) { float d = length(p) - 0.5; return vec3(d, length(p), 0.0); }\n"
+                              "vec3 nor(vec3 p) { vec2 e = vec2(1e-3, 0.0);\n"
+                              "    return normalize(vec3(f(p + e.xyy).x - f(p - e.xyy).x, f(p + e.yxy).x - f(p - e.yxy).x,\n"
+                              "                          f(p + e.yyx).x - f(p - e.yyx).x)); }\n";
+    PreparedSdf held = prepare(wholeShader(field, "    float t = 0.0;\n    vec3 c;\n    for (int i = 0; i < 64; i++) {\n"
+                                                  "        c = f(ro + rd * t);\n        if (c.x < 1e-3) break;\n"
+                                                  "        t += c.x;\n    }\n    return t;\n"));
+    ASSERT_TRUE(held.ok()) << (held.diagnostics.empty() ? "" : formatDiagnostic(held.diagnostics.front()));
+    EXPECT_EQ(held.signature.entry, "f");
+    EXPECT_EQ(held.signature.returnType, "vec3");
+    auto tracer = composeTracer(held, TracerFeatures{});
+    ASSERT_TRUE(tracer.hasValue());
+    EXPECT_FALSE(hasErrors(checkWithGlslang(*tracer)));
+    // Read through the call itself.
+    PreparedSdf direct = prepare(wholeShader(field, "    float t = 0.0;\n    for (int i = 0; i < 64; i++) {\n"
+                                                    "        float d = f(ro + rd * t).x;\n        if (d < 1e-3) break;\n"
+                                                    "        t += d;\n    }\n    return t;\n"));
+    ASSERT_TRUE(direct.ok()) << (direct.diagnostics.empty() ? "" : formatDiagnostic(direct.diagnostics.front()));
+    EXPECT_EQ(direct.signature.entry, "f");
+    // A vec3 the loop reads in more than its x (a normal, a colour) is not a field.
+    PreparedSdf normal = prepare(
+        wholeShader("vec3 bend(vec3 p) { return vec3(p.x, p.y + 0.1, p.z); }\n",
+                    "    float t = 0.0;\n    vec3 q = ro;\n    for (int i = 0; i < 64; i++) {\n        vec3 b = bend(q);\n"
+                    "        q += rd * 0.01 * b.x + rd * 0.01 * b.y;\n    }\n    return t;\n"));
+    EXPECT_FALSE(normal.ok()) << "a vec3 read in x and y is not taken for a distance";
+}
+
 TEST(EntryPoint, StructReturnsOutParametersAndNoiseNamedHelpers) {
     const std::string structField = "struct Hit { float id; float dist; };\n"
                                     "Hit scene(vec3 p) { Hit h; h.id = 1.0; h.dist = length(p) - 0.5; return h; }\n";
