@@ -190,6 +190,8 @@ JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& w
                         {}};
     if (!sdf.host.empty()) log::info(what, label + ": read as " + shaders::hostDescription(sdf.host));
     if (sdf.entrySource == shaders::EntrySource::March) log::info(what, label + ": entry automatic: " + sdf.entryReason);
+    for (const shaders::Diagnostic& d : sdf.diagnostics)
+        if (d.severity == shaders::Severity::Warning) log::warning(what, shaders::formatDiagnostic(d));
     auto resolved = shaders::resolveParameters(sdf.parameters, input.params);
     if (!resolved) return usage(key("params") + ": " + label + ": " + resolved.error().message);
     for (const std::string& warning : resolved->warnings) log::warning(what, warning);

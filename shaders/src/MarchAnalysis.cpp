@@ -267,7 +267,7 @@ std::string trimmed(const std::string& text) {
 
 // The arguments of the first call of `name` on `line` of `text` (comments blanked), split at the
 // call's own commas; `before` receives the line's text before the name. Empty when none is found.
-std::vector<std::string> callArguments(const std::string& text, int line, const std::string& name, std::string* before) {
+std::vector<std::string> callArgumentsOnLine(const std::string& text, int line, const std::string& name, std::string* before) {
     const std::size_t start = lineStart(text, line);
     if (start == std::string::npos) return {};
     const std::size_t end = std::min(text.find('\n', start), text.size());
@@ -295,6 +295,19 @@ std::vector<std::string> callArguments(const std::string& text, int line, const 
             current += c;
         }
         return {};
+    }
+    return {};
+}
+
+// The same for a call glslang places at `line` (the line its argument list ends on): its name may lie
+// a few lines up when the arguments are written one to a line. `nameLine` receives the name's line.
+std::vector<std::string> callArguments(const std::string& text, int line, const std::string& name, std::string* before,
+                                       int* nameLine = nullptr) {
+    for (int at = line; at >= std::max(1, line - 16); --at) {
+        std::vector<std::string> arguments = callArgumentsOnLine(text, at, name, before);
+        if (arguments.empty()) continue;
+        if (nameLine) *nameLine = at;
+        return arguments;
     }
     return {};
 }
@@ -402,8 +415,9 @@ void traceArguments(MarchedFunction& m, TIntermAggregate* call, TIntermAggregate
         break;
     }
     std::string before;
+    int callLineNumber = marcherCall ? marcherCall->getLoc().line : 0;
     const std::vector<std::string> values =
-        marcherCall ? callArguments(text, marcherCall->getLoc().line, plainName(marcher->getName()), &before)
+        marcherCall ? callArguments(text, marcherCall->getLoc().line, plainName(marcher->getName()), &before, &callLineNumber)
                     : std::vector<std::string>();
     if (values.size() != marcherParameters.size() || before.find_first_of(";{}") != std::string::npos) {
         fail("mainImage calls " + plainName(marcher->getName()) + " inside a loop or a condition");
@@ -422,7 +436,7 @@ void traceArguments(MarchedFunction& m, TIntermAggregate* call, TIntermAggregate
     }
     // The prelude: mainImage's body up to the line of that call.
     const std::size_t open = bodyOpen(text, mainImage);
-    const std::size_t callLine = lineStart(text, marcherCall->getLoc().line);
+    const std::size_t callLine = lineStart(text, callLineNumber);
     if (open == std::string::npos || callLine == std::string::npos || open >= callLine ||
         !wholeStatements(text.substr(open + 1, callLine - open - 1))) {
         fail("mainImage's code before the march is not whole statements");

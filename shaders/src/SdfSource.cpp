@@ -12,6 +12,7 @@
 #include "Words.h"
 
 #include <algorithm>
+#include <cctype>
 #include <iterator>
 #include <map>
 #include <memory>
@@ -469,6 +470,57 @@ void chooseInlineField(PreparedSdf& prepared, const std::string& stripped) {
     if (!unresolved.empty() && prepared.entryReason.empty()) prepared.entryReason = unresolved;
 }
 
+// The field's parameters after the point whose values mainImage computes from the pixel (its
+// coordinate, or a name a statement of the prelude computes from one): the wrapper evaluates them
+// at the frame's centre, so the field is that pixel's (a ray direction a field culls by, a uv).
+std::vector<std::string> perPixelParameters(const MarchedFunction& m) {
+    static const std::set<std::string> notNames = {
+        "const", "highp", "mediump", "lowp",  "in",    "out",   "inout", "float", "int",   "uint",  "bool", "vec2", "vec3",
+        "vec4",  "ivec2", "ivec3",   "ivec4", "uvec2", "uvec3", "uvec4", "bvec2", "bvec3", "bvec4", "mat2", "mat3", "mat4"};
+    std::set<std::string> pixel = {m.coordinate.empty() ? std::string("fragCoord") : m.coordinate, "gl_FragCoord"};
+    auto mentionsAny = [&pixel](const std::string& text) {
+        return std::any_of(pixel.begin(), pixel.end(), [&](const std::string& name) { return mentions(text, name); });
+    };
+    const std::string prelude = stripComments(m.prelude);
+    for (std::size_t start = 0; start < prelude.size();) {
+        const std::size_t end = std::min(prelude.find(';', start), prelude.size());
+        const std::string statement = prelude.substr(start, end - start);
+        start = end + 1;
+        if (!mentionsAny(statement)) continue;
+        // What it assigns (the words before its first `=`), or what a call may write (`cam(uv, ro, rd);`).
+        std::size_t assign = std::string::npos;
+        for (std::size_t at = statement.find('='); at != std::string::npos && assign == std::string::npos;
+             at = statement.find('=', at + 1)) {
+            const char next = at + 1 < statement.size() ? statement[at + 1] : ' ';
+            const char previous = at > 0 ? statement[at - 1] : ' ';
+            if (next != '=' && previous != '=' && previous != '!' && previous != '<' && previous != '>') assign = at;
+        }
+        const std::string written = assign == std::string::npos ? statement : statement.substr(0, assign);
+        detail::forEachIdentifier(written, [&](std::size_t at, std::size_t wordEnd) {
+            const std::string word = written.substr(at, wordEnd - at);
+            const std::size_t next = written.find_first_not_of(" \t\r\n", wordEnd);
+            const bool called = next != std::string::npos && written[next] == '(';
+            if (!called && !notNames.count(word) && !std::isdigit(static_cast<unsigned char>(word[0]))) pixel.insert(word);
+            return true;
+        });
+    }
+    // bindings: "TYPE sdfwb_valueK = VALUE;" lines; scoped: "TYPE NAME = sdfwb_valueK;" in the same order.
+    std::vector<std::string> out;
+    std::size_t b = 0, c = 0;
+    while (b < m.bindings.size() && c < m.scoped.size()) {
+        const std::size_t bEnd = std::min(m.bindings.find('\n', b), m.bindings.size());
+        const std::size_t cEnd = std::min(m.scoped.find('\n', c), m.scoped.size());
+        const std::string binding = m.bindings.substr(b, bEnd - b), scoped = m.scoped.substr(c, cEnd - c);
+        b = bEnd + 1, c = cEnd + 1;
+        const std::size_t equals = binding.find('=');
+        if (equals == std::string::npos || !mentionsAny(binding.substr(equals + 1))) continue;
+        const std::size_t nameEnd = scoped.find(" =");
+        const std::size_t nameStart = nameEnd == std::string::npos ? std::string::npos : scoped.rfind(' ', nameEnd - 1);
+        if (nameStart != std::string::npos) out.push_back(scoped.substr(nameStart + 1, nameEnd - nameStart - 1));
+    }
+    return out;
+}
+
 // A whole shader without an `sdf`: the function its own march steps by (marchedFunctions), when
 // it has an entry's form. The one most loops step by wins; a tie is broken by a conventional name,
 // else it is an error naming the candidates (entryCandidates).
@@ -538,7 +590,17 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
     }
     prepared.signature = std::move(valid.front().second);
     prepared.entrySource = EntrySource::March;
-    prepared.entryReason = where(valid.front().first);
+    const MarchedFunction& chosen = valid.front().first;
+    prepared.entryReason = where(chosen);
+    if (const std::vector<std::string> pixel = perPixelParameters(chosen); !pixel.empty()) {
+        std::string names;
+        for (const std::string& name : pixel) names += (names.empty() ? "'" : ", '") + name + "'";
+        prepared.diagnostics.push_back(
+            {chosen.file, chosen.line, 1, Severity::Warning,
+             chosen.name + " reads " + names + ", which mainImage computes for each pixel; sdfwb evaluates the field " +
+                 "with the frame centre's value, so parts the shader draws for other pixels may be missing (to sample " +
+                 "its whole scene, pass a function of the point alone with --entry)"});
+    }
 }
 
 } // namespace

@@ -613,6 +613,52 @@ TEST(EntryPoint, AVec3FieldWhoseXTheMarchStepsByIsTheEntry) {
     EXPECT_FALSE(normal.ok()) << "a vec3 read in x and y is not taken for a distance";
 }
 
+// A field with a parameter after the point that mainImage computes and hands to the march in a call
+// written one argument to a line (glslang places the call at its last line).
+TEST(EntryPoint, ParametersMainImageComputesAreTracedAndThosePerPixelWarned) {
+    auto shader = [](const std::string& second, const std::string& secondValue) {
+        return "float field(vec3 p, " + second +
+               ") { return length(p) - 0.5 - 0.1 * k.x; }\n"
+               "float march(vec3 ro, vec3 rd, " +
+               second +
+               ") {\n"
+               "    float t = 0.0;\n"
+               "    for (int i = 0; i < 64; i++) { float d = field(ro + rd * t, k); if (d < 1e-3) break; t += d; }\n"
+               "    return t;\n"
+               "}\n"
+               "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+               "    vec2 uv = (fragCoord - 0.5 * iResolution.xy) / iResolution.y;\n"
+               "    vec3 dir = normalize(vec3(uv, 1.0));\n"
+               "    float grow = 0.5 + 0.5 * sin(iTime);\n"
+               "    float t = march(vec3(0.0, 0.0, -3.0),\n"
+               "                    dir,\n"
+               "                    " +
+               secondValue +
+               ");\n"
+               "    fragColor = vec4(vec3(t), 1.0);\n"
+               "}\n";
+    };
+    PreparedSdf timed = prepare(shader("vec2 k", "vec2(grow)"));
+    ASSERT_TRUE(timed.ok()) << (timed.diagnostics.empty() ? "" : formatDiagnostic(timed.diagnostics.front()));
+    EXPECT_EQ(timed.signature.entry, "field");
+    EXPECT_EQ(timed.signature.arguments, ", k");
+    EXPECT_TRUE(timed.diagnostics.empty()) << "a value of time alone is the field's own: "
+                                           << formatDiagnostic(timed.diagnostics.front());
+    auto tracer = composeTracer(timed, TracerFeatures{});
+    ASSERT_TRUE(tracer.hasValue());
+    EXPECT_FALSE(hasErrors(checkWithGlslang(*tracer)));
+
+    // The same parameter computed from the pixel (through uv and dir): opens, with a warning at the march.
+    PreparedSdf pixel = prepare(shader("vec3 k", "dir"));
+    ASSERT_TRUE(pixel.ok()) << (pixel.diagnostics.empty() ? "" : formatDiagnostic(pixel.diagnostics.front()));
+    EXPECT_EQ(pixel.signature.entry, "field");
+    ASSERT_EQ(pixel.diagnostics.size(), 1u);
+    EXPECT_EQ(pixel.diagnostics[0].severity, Severity::Warning);
+    EXPECT_EQ(pixel.diagnostics[0].line, 4);
+    EXPECT_NE(pixel.diagnostics[0].message.find("field reads 'k', which mainImage computes for each pixel"), std::string::npos)
+        << pixel.diagnostics[0].message;
+}
+
 TEST(EntryPoint, StructReturnsOutParametersAndNoiseNamedHelpers) {
     const std::string structField = "struct Hit { float id; float dist; };\n"
                                     "Hit scene(vec3 p) { Hit h; h.id = 1.0; h.dist = length(p) - 0.5; return h; }\n";
