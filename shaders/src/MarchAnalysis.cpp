@@ -1,6 +1,8 @@
 #include <shaders/MarchAnalysis.h>
 
+#include "CallText.h"
 #include "InlineField.h"
+#include "ParameterText.h"
 #include "Words.h"
 
 #include <shaders/GlslChecker.h>
@@ -18,6 +20,10 @@
 
 namespace sdfwb::shaders {
 namespace {
+
+using detail::callArguments;
+using detail::lineStart;
+using detail::wholeStatements;
 
 using glslang::TIntermAggregate;
 using glslang::TIntermBinary;
@@ -249,69 +255,6 @@ bool isInParameter(const TIntermSymbol* symbol) {
     return storage == glslang::EvqIn || storage == glslang::EvqConstReadOnly;
 }
 
-std::size_t lineStart(const std::string& text, int line) {
-    std::size_t at = 0;
-    for (int i = 1; i < line; ++i) {
-        at = text.find('\n', at);
-        if (at == std::string::npos) return std::string::npos;
-        ++at;
-    }
-    return at;
-}
-
-std::string trimmed(const std::string& text) {
-    const std::size_t first = text.find_first_not_of(" \t\r\n");
-    if (first == std::string::npos) return {};
-    return text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
-}
-
-// The arguments of the first call of `name` on `line` of `text` (comments blanked), split at the
-// call's own commas; `before` receives the line's text before the name. Empty when none is found.
-std::vector<std::string> callArgumentsOnLine(const std::string& text, int line, const std::string& name, std::string* before) {
-    const std::size_t start = lineStart(text, line);
-    if (start == std::string::npos) return {};
-    const std::size_t end = std::min(text.find('\n', start), text.size());
-    for (std::size_t at : detail::wordOffsets(text, name, start, end)) {
-        std::size_t open = text.find_first_not_of(" \t\r\n", at + name.size());
-        if (open == std::string::npos || text[open] != '(') continue;
-        std::vector<std::string> arguments;
-        std::string current;
-        int depth = 0;
-        for (std::size_t i = open; i < text.size(); ++i) {
-            const char c = text[i];
-            if (c == '(' || c == '[' || c == '{') {
-                if (depth++ == 0) continue;
-            } else if (c == ')' || c == ']' || c == '}') {
-                if (--depth == 0) {
-                    arguments.push_back(trimmed(current));
-                    if (before) *before = text.substr(start, at - start);
-                    return arguments;
-                }
-            } else if (c == ',' && depth == 1) {
-                arguments.push_back(trimmed(current));
-                current.clear();
-                continue;
-            }
-            current += c;
-        }
-        return {};
-    }
-    return {};
-}
-
-// The same for a call glslang places at `line` (the line its argument list ends on): its name may lie
-// a few lines up when the arguments are written one to a line. `nameLine` receives the name's line.
-std::vector<std::string> callArguments(const std::string& text, int line, const std::string& name, std::string* before,
-                                       int* nameLine = nullptr) {
-    for (int at = line; at >= std::max(1, line - 16); --at) {
-        std::vector<std::string> arguments = callArgumentsOnLine(text, at, name, before);
-        if (arguments.empty()) continue;
-        if (nameLine) *nameLine = at;
-        return arguments;
-    }
-    return {};
-}
-
 // The offset of the '{' that opens `function`'s body in `text`, or npos. (A definition's location
 // is its name's or its body's line: the last mention of the name up to it.)
 std::size_t bodyOpen(const std::string& text, TIntermAggregate* function) {
@@ -325,19 +268,6 @@ std::size_t bodyOpen(const std::string& text, TIntermAggregate* function) {
         if (text[i] == ')' && --depth == 0) return text.find('{', i);
     }
     return std::string::npos;
-}
-
-// Whether `code` is whole statements a wrapper can run before its own: balanced, ending with a
-// statement, and neither returning nor discarding.
-bool wholeStatements(const std::string& code) {
-    const std::string end = trimmed(code);
-    int braces = 0, parentheses = 0;
-    for (char c : code) {
-        braces += c == '{' ? 1 : c == '}' ? -1 : 0;
-        parentheses += c == '(' ? 1 : c == ')' ? -1 : 0;
-    }
-    return braces == 0 && parentheses == 0 && (end.empty() || end.back() == ';' || end.back() == '}') &&
-           !mentions(code, "return") && !mentions(code, "discard");
 }
 
 // Traces the values of a field's parameters after the point (see MarchedFunction) from the march's
@@ -500,7 +430,7 @@ std::string enteredBlocks(std::string code, int& opened) {
                         inner += clauses[semicolon] == '(' ? 1 : clauses[semicolon] == ')' ? -1 : 0;
                         ++semicolon;
                     }
-                    const std::string init = trimmed(clauses.substr(0, semicolon));
+                    const std::string init = detail::trimmed(clauses.substr(0, semicolon));
                     if (!init.empty()) inits = init + "; " + inits;
                 }
                 spanStart = wordStart;
