@@ -270,6 +270,84 @@ std::size_t bodyOpen(const std::string& text, TIntermAggregate* function) {
     return std::string::npos;
 }
 
+using Functions = std::map<std::string, TIntermAggregate*>; // definitions by mangled name
+
+// The file-scope variables (not const, not uniforms) a subtree and the functions it calls read and
+// assign, by symbol id with their names.
+struct GlobalUse : glslang::TIntermTraverser {
+    explicit GlobalUse(const Functions& all) : functions(all) {}
+    const Functions& functions;
+    std::set<std::string> entered;
+    std::map<long long, std::string> read, written;
+
+    static bool fileScope(const TIntermSymbol* symbol) { return symbol->getQualifier().storage == glslang::EvqGlobal; }
+    void visitSymbol(TIntermSymbol* node) override {
+        if (fileScope(node)) read.emplace(node->getId(), node->getName().c_str());
+    }
+    bool visitBinary(glslang::TVisit, TIntermBinary* node) override {
+        if (node->getOp() < glslang::EOpAssign || node->getOp() > glslang::EOpRightShiftAssign) return true;
+        TIntermTyped* left = node->getLeft();
+        while (TIntermBinary* access = left->getAsBinaryNode()) left = access->getLeft();
+        if (TIntermSymbol* symbol = left->getAsSymbolNode(); symbol && fileScope(symbol))
+            written.emplace(symbol->getId(), symbol->getName().c_str());
+        return true;
+    }
+    bool visitAggregate(glslang::TVisit, TIntermAggregate* node) override {
+        if (node->getOp() != glslang::EOpFunctionCall || !node->isUserDefined()) return true;
+        auto callee = functions.find(node->getName().c_str());
+        if (callee != functions.end() && entered.insert(callee->first).second) callee->second->traverse(this);
+        return true;
+    }
+};
+
+// A field without parameters after the point that reads file-scope variables mainImage sets before
+// it calls the marching function (`radius = 0.5 + 0.1 * sin(iTime); spin = rot(iTime);`, or in a
+// function it calls first): the wrapper runs those statements of mainImage first, as it does for
+// parameters (traceArguments). Fills `m`'s prelude and globals; leaves them empty when mainImage does
+// not call the marching function at the top of its body.
+void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate* marcher, TIntermAggregate* mainImage,
+                  const ComposedShader& composed, const Functions& functions) {
+    TIntermAggregate* body = mainImage->getSequence().size() > 1 ? mainImage->getSequence()[1]->getAsAggregate() : nullptr;
+    if (marcher == mainImage || !body) return;
+    GlobalUse reads(functions);
+    reads.entered.insert(field->getName().c_str());
+    field->traverse(&reads);
+    GlobalUse sets(functions);
+    TIntermAggregate* marcherCall = nullptr;
+    for (TIntermNode* statement : body->getSequence()) {
+        for (TIntermAggregate* c : contentsOf(statement).calls)
+            if (c->getName() == marcher->getName()) marcherCall = c;
+        if (marcherCall) {
+            if (statement->getAsLoopNode() || statement->getAsSelectionNode() || statement->getAsBranchNode()) return;
+            break;
+        }
+        statement->traverse(&sets);
+    }
+    if (!marcherCall) return;
+    std::set<std::string> shared;
+    for (const auto& [id, name] : sets.written)
+        if (reads.read.count(id)) shared.insert(name);
+    const int file = marcherCall->getLoc().string;
+    if (shared.empty() || file < 0 || file >= int(composed.map.files.size()) || mainImage->getLoc().string != file) return;
+    const std::string text = stripComments(composed.map.files[std::size_t(file)].text);
+    std::string before;
+    int callLineNumber = marcherCall->getLoc().line;
+    if (callArguments(text, callLineNumber, plainName(marcher->getName()), &before, &callLineNumber).empty() ||
+        before.find_first_of(";{}") != std::string::npos)
+        return;
+    const std::size_t open = bodyOpen(text, mainImage), callLine = lineStart(text, callLineNumber);
+    if (open == std::string::npos || callLine == std::string::npos || open >= callLine ||
+        !wholeStatements(text.substr(open + 1, callLine - open - 1)))
+        return;
+    m.prelude = text.substr(open + 1, callLine - open - 1);
+    m.globals.assign(shared.begin(), shared.end());
+    const std::vector<TIntermSymbol*> mainParameters = parametersOf(mainImage);
+    if (mainParameters.size() == 2) {
+        m.colour = mainParameters[0]->getName().c_str();
+        m.coordinate = mainParameters[1]->getName().c_str();
+    }
+}
+
 // Traces the values of a field's parameters after the point (see MarchedFunction) from the march's
 // call in `marcher` back to mainImage's call of `marcher`. Fills `m`'s prelude, bindings and
 // arguments, or its `unresolved`.
@@ -608,6 +686,8 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                                        glslTypeName(returned)});
                     entry = marched.end() - 1;
                     if (mainImage) traceArguments(*entry, call, callee->second, function, mainImage, composed);
+                    if (mainImage && entry->extraParameters <= 0)
+                        traceGlobals(*entry, callee->second, function, mainImage, composed, tree.functions);
                 }
                 ++entry->loops;
             }

@@ -504,8 +504,10 @@ std::vector<std::string> perPixelParameters(const MarchedFunction& m) {
             return true;
         });
     }
-    // bindings: "TYPE sdfwb_valueK = VALUE;" lines; scoped: "TYPE NAME = sdfwb_valueK;" in the same order.
     std::vector<std::string> out;
+    for (const std::string& name : m.globals)
+        if (pixel.count(name)) out.push_back(name);
+    // bindings: "TYPE sdfwb_valueK = VALUE;" lines; scoped: "TYPE NAME = sdfwb_valueK;" in the same order.
     std::size_t b = 0, c = 0;
     while (b < m.bindings.size() && c < m.scoped.size()) {
         const std::size_t bEnd = std::min(m.bindings.find('\n', b), m.bindings.size());
@@ -538,6 +540,10 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
                                                                   : std::string("float|vec2|vec4");
         SdfSignature signature = detectSignature(stripped, marched.name, returns);
         if (!marched.member.empty()) signature.member = marched.member; // the one the march reads
+        if (signature.found && !marched.globals.empty())                // what mainImage sets first, run first
+            signature.prelude = "vec2 " + (marched.coordinate.empty() ? "fragCoord" : marched.coordinate) + " = " +
+                                (mentions(stripped, "iResolution") ? "0.5 * iResolution.xy" : "vec2(0.0)") + "; vec4 " +
+                                (marched.colour.empty() ? "fragColor" : marched.colour) + " = vec4(0.0);\n" + marched.prelude;
         if (!signature.found && marched.extraParameters > 0 && !marched.arguments.empty() && !marched.valueType.empty()) {
             // Parameters after the point, computed by mainImage: the wrapper computes them the same way.
             signature.found = true;
@@ -573,8 +579,11 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
             std::erase_if(valid, [&](const auto& candidate) { return !conventional(candidate); });
     }
     const auto where = [](const MarchedFunction& m) {
+        std::string globals;
+        for (const std::string& name : m.globals) globals += (globals.empty() ? "" : ", ") + name;
         return m.name + " (called by the march at line " + std::to_string(m.line) + ")" +
-               (m.arguments.empty() ? "" : ", with" + m.arguments.substr(1) + " as mainImage computes it");
+               (m.arguments.empty() ? "" : ", with" + m.arguments.substr(1) + " as mainImage computes it") +
+               (globals.empty() ? "" : ", after mainImage sets " + globals);
     };
     if (valid.size() > 1) {
         std::string list;

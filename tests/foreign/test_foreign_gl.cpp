@@ -426,6 +426,20 @@ class ShadertoyPictureOf : public sdfwb::testing::GlTest, public ::testing::With
 // 0.15 sin(1.7) - 0.2 at t = 0; 61's tilt is 0 with iMouse at rest, so its ball's centre reads -0.15.
 class FieldParameters : public sdfwb::testing::GlTest {};
 
+// The field's value at one point at `time`, through the samplers' points program.
+float fieldValueAt(const shaders::PreparedSdf& sdf, glm::vec3 p, float time) {
+    renderer::SampleCompute compute;
+    EXPECT_FALSE(shaders::hasErrors(compute.build(sdf, *shaders::builtinPiece("analysis/points.glsl"))));
+    sampling::SamplingJob job;
+    job.count = 1;
+    job.time = time;
+    job.inputPoints = &p.x;
+    float position[3], distance = 0.0f, gradient[3];
+    EXPECT_TRUE(sampling::sampleInto(compute, job, position, &distance, gradient, {}).hasValue());
+    compute.releaseGl();
+    return distance;
+}
+
 TEST_F(FieldParameters, ThoseMainImageComputesReachTheField) {
     shaders::PreparedSdf breathing = prepare(kFolder / "62_st_breathing_box_parameters.glsl");
     ASSERT_TRUE(breathing.ok()) << firstError(breathing);
@@ -435,18 +449,7 @@ TEST_F(FieldParameters, ThoseMainImageComputesReachTheField) {
     shaders::PreparedSdf plate = prepare(kFolder / "61_st_tilted_plate_parameter.glsl");
     ASSERT_TRUE(plate.ok()) << firstError(plate);
     EXPECT_EQ(plate.signature.arguments, ", tilt");
-    auto valueAt = [](const shaders::PreparedSdf& sdf, glm::vec3 p, float time) {
-        renderer::SampleCompute compute;
-        EXPECT_FALSE(shaders::hasErrors(compute.build(sdf, *shaders::builtinPiece("analysis/points.glsl"))));
-        sampling::SamplingJob job;
-        job.count = 1;
-        job.time = time;
-        job.inputPoints = &p.x;
-        float position[3], distance = 0.0f, gradient[3];
-        EXPECT_TRUE(sampling::sampleInto(compute, job, position, &distance, gradient, {}).hasValue());
-        compute.releaseGl();
-        return distance;
-    };
+    auto valueAt = fieldValueAt;
     const float y1 = 0.1f + 0.15f * std::sin(1.7f);
     EXPECT_NEAR(valueAt(breathing, {0.6f, y1, 0.0f}, 1.0f), -0.2f, 1e-4f);
     EXPECT_NEAR(valueAt(breathing, {0.6f, y1, 0.0f}, 0.0f), 0.15f * std::sin(1.7f) - 0.2f, 1e-4f);
@@ -468,6 +471,42 @@ TEST_F(FieldParameters, ThoseMainImageComputesReachTheField) {
     EXPECT_FALSE(inner.ok());
     EXPECT_NE(firstError(inner).find("'r' is computed inside march"), std::string::npos) << firstError(inner);
     fs::remove_all(folder);
+}
+
+// File-scope variables mainImage sets before the march (a radius from iTime, a rotation): the
+// wrapper runs those statements first. The ball is centred at (0.6, 0, 0) after `p.xz *= spin`
+// with radius 0.5 + 0.1 sin(t); without them radius and spin would read 0 (0.6 at that centre).
+TEST_F(FieldParameters, GlobalsMainImageSetsBeforeTheMarchReachTheField) {
+    const fs::path folder = fs::temp_directory_path() / ("sdfwb-foreign-globals-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    std::ofstream(folder / "globals.glsl")
+        << "float radius;\nmat2 spin;\nvec3 tint;\n"
+           "float map(vec3 p) { p.xz *= spin; return length(p - vec3(0.6, 0.0, 0.0)) - radius + 0.0 * tint.x; }\n"
+           "float march(vec3 ro, vec3 rd) {\n"
+           "    float t = 0.0;\n"
+           "    for (int i = 0; i < 100; i++) { float d = map(ro + rd * t); if (d < 0.001) break; t += d; }\n"
+           "    return t;\n"
+           "}\n"
+           "void setRadius() { radius = 0.5 + 0.1 * sin(iTime); }\n"
+           "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+           "    vec2 uv = (fragCoord - 0.5 * iResolution.xy) / iResolution.y;\n"
+           "    setRadius();\n"
+           "    float a = iTime * 0.3;\n"
+           "    spin = mat2(cos(a), sin(a), -sin(a), cos(a));\n"
+           "    float t = march(vec3(0.0, 0.0, -3.0), normalize(vec3(uv, 1.5)));\n"
+           "    tint = vec3(t);\n"
+           "    fragColor = vec4(tint, 1.0);\n"
+           "}\n";
+    shaders::PreparedSdf sdf = prepare(folder / "globals.glsl");
+    fs::remove_all(folder);
+    ASSERT_TRUE(sdf.ok()) << firstError(sdf);
+    EXPECT_EQ(sdf.signature.entry, "map");
+    EXPECT_NE(sdf.entryReason.find("after mainImage sets radius, spin"), std::string::npos) << sdf.entryReason;
+    EXPECT_EQ(sdf.entryReason.find("tint"), std::string::npos) << "set after the march: not the field's";
+    EXPECT_NEAR(fieldValueAt(sdf, {0.6f, 0.0f, 0.0f}, 0.0f), -0.5f, 1e-5f);
+    const float a = 0.3f, radius = 0.5f + 0.1f * std::sin(1.0f);
+    const float moved = std::hypot(0.6f * std::cos(a) - 0.6f, 0.6f * std::sin(a)) - radius;
+    EXPECT_NEAR(fieldValueAt(sdf, {0.6f, 0.0f, 0.0f}, 1.0f), moved, 1e-5f);
 }
 
 // A field the march writes inline (issue 47): the loop's body run once at the point. 63's ball

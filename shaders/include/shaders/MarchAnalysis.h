@@ -35,6 +35,10 @@ struct MarchedFunction {
     // says why).
     int extraParameters = 0;
     std::string prelude, bindings, scoped, arguments, coordinate, colour, unresolved;
+    // A field that reads file-scope variables mainImage sets before the march (`radius = ...;` from
+    // iTime): their names; `prelude` (with coordinate and colour) then holds mainImage's statements
+    // before the call of the marching function, which the wrapper runs first.
+    std::vector<std::string> globals;
 };
 
 // The functions `composed` (a fragment stage holding the user's code and mainImage; no main is
