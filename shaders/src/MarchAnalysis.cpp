@@ -273,23 +273,27 @@ std::size_t bodyOpen(const std::string& text, TIntermAggregate* function) {
 using Functions = std::map<std::string, TIntermAggregate*>; // definitions by mangled name
 
 // The file-scope variables (not const, not uniforms) a subtree and the functions it calls read and
-// assign, by symbol id with their names.
+// assign, by symbol id with their names. A variable only assigned or updated in place (`glow += x`,
+// `matId = 2.0`) is not read: what the field adds up beside its distance is not its input.
 struct GlobalUse : glslang::TIntermTraverser {
     explicit GlobalUse(const Functions& all) : functions(all) {}
     const Functions& functions;
     std::set<std::string> entered;
     std::map<long long, std::string> read, written;
+    std::set<const TIntermSymbol*> assigned; // symbols on the left of an assignment
 
     static bool fileScope(const TIntermSymbol* symbol) { return symbol->getQualifier().storage == glslang::EvqGlobal; }
     void visitSymbol(TIntermSymbol* node) override {
-        if (fileScope(node)) read.emplace(node->getId(), node->getName().c_str());
+        if (fileScope(node) && !assigned.count(node)) read.emplace(node->getId(), node->getName().c_str());
     }
     bool visitBinary(glslang::TVisit, TIntermBinary* node) override {
         if (node->getOp() < glslang::EOpAssign || node->getOp() > glslang::EOpRightShiftAssign) return true;
         TIntermTyped* left = node->getLeft();
         while (TIntermBinary* access = left->getAsBinaryNode()) left = access->getLeft();
-        if (TIntermSymbol* symbol = left->getAsSymbolNode(); symbol && fileScope(symbol))
+        if (TIntermSymbol* symbol = left->getAsSymbolNode(); symbol && fileScope(symbol)) {
             written.emplace(symbol->getId(), symbol->getName().c_str());
+            assigned.insert(symbol);
+        }
         return true;
     }
     bool visitAggregate(glslang::TVisit, TIntermAggregate* node) override {

@@ -88,7 +88,8 @@ std::optional<float> detail::parseNumber(std::string text, bool integerOnly) {
         if (text.find_first_of("xXnN") != std::string::npos) return std::nullopt; // no hex floats, nan, inf
         value = std::strtod(begin, &end);
     }
-    if (end == begin || *end != '\0' || !std::isfinite(value) || !std::isfinite(float(value))) return std::nullopt;
+    // The whole text, not up to a NUL inside it (strtod stops there).
+    if (end != begin + text.size() || !std::isfinite(value) || !std::isfinite(float(value))) return std::nullopt;
     return float(value);
 }
 

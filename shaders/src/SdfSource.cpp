@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstring>
 #include <iterator>
 #include <map>
 #include <memory>
@@ -487,20 +488,45 @@ std::vector<std::string> perPixelParameters(const MarchedFunction& m) {
         const std::string statement = prelude.substr(start, end - start);
         start = end + 1;
         if (!mentionsAny(statement)) continue;
-        // What it assigns (the words before its first `=`), or what a call may write (`cam(uv, ro, rd);`).
-        std::size_t assign = std::string::npos;
-        for (std::size_t at = statement.find('='); at != std::string::npos && assign == std::string::npos;
-             at = statement.find('=', at + 1)) {
+        // What it assigns (`vec3 ro = ..., rd = ...;`, `uv.x *= ...;`), or what a call may write
+        // (`camera(uv, ro, rd);`): names, not members after a `.`, types or called functions.
+        bool assigns = false;
+        for (std::size_t at = statement.find('='); at != std::string::npos; at = statement.find('=', at + 1)) {
             const char next = at + 1 < statement.size() ? statement[at + 1] : ' ';
             const char previous = at > 0 ? statement[at - 1] : ' ';
-            if (next != '=' && previous != '=' && previous != '!' && previous != '<' && previous != '>') assign = at;
+            if (next == '=' || previous == '=' || previous == '!' ||
+                ((previous == '<' || previous == '>') && (at < 2 || statement[at - 2] != previous)))
+                continue;
+            assigns = true;
+            std::size_t k = at; // back over the operator, then `[...]` and `.member` to the base name
+            while (k > 0 && std::strchr("+-*/%&|^<> \t\r\n", statement[k - 1])) --k;
+            for (;;) {
+                if (k > 0 && statement[k - 1] == ']') {
+                    int depth = 0;
+                    while (k > 0 && !(statement[k - 1] == '[' && depth == 1))
+                        depth += statement[--k] == ']' ? 1 : statement[k] == '[' ? -1 : 0;
+                    if (k > 0) --k;
+                    continue;
+                }
+                std::size_t wordStart = k;
+                while (wordStart > 0 && isWordCharacter(statement[wordStart - 1])) --wordStart;
+                if (wordStart == k) break;
+                if (wordStart > 0 && statement[wordStart - 1] == '.') {
+                    k = wordStart - 1;
+                    continue;
+                }
+                pixel.insert(statement.substr(wordStart, k - wordStart));
+                break;
+            }
         }
-        const std::string written = assign == std::string::npos ? statement : statement.substr(0, assign);
-        detail::forEachIdentifier(written, [&](std::size_t at, std::size_t wordEnd) {
-            const std::string word = written.substr(at, wordEnd - at);
-            const std::size_t next = written.find_first_not_of(" \t\r\n", wordEnd);
-            const bool called = next != std::string::npos && written[next] == '(';
-            if (!called && !notNames.count(word) && !std::isdigit(static_cast<unsigned char>(word[0]))) pixel.insert(word);
+        if (assigns) continue;
+        detail::forEachIdentifier(statement, [&](std::size_t at, std::size_t wordEnd) {
+            const std::string word = statement.substr(at, wordEnd - at);
+            const std::size_t next = statement.find_first_not_of(" \t\r\n", wordEnd);
+            const bool called = next != std::string::npos && statement[next] == '(';
+            const bool member = at > 0 && statement[at - 1] == '.';
+            if (!called && !member && !notNames.count(word) && !std::isdigit(static_cast<unsigned char>(word[0])))
+                pixel.insert(word);
             return true;
         });
     }

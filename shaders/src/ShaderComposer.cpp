@@ -120,9 +120,16 @@ std::string entryWrapper(const PreparedSdf& sdf) {
         locals += signature.outParameters[i] + " sdfwb_out" + std::to_string(i) + "; ";
         arguments += ", sdfwb_out" + std::to_string(i);
     }
-    // A prelude alone: statements the field needs first (Fragmentarium's init()).
-    std::string text = "float sdfwb_sdf(vec3 p) { " + signature.prelude + locals + "return " + signature.entry + "(p" +
-                       (signature.animated ? ", sdfwb_time" : "") + arguments + ")" + value + "; }\n";
+    // A prelude alone: statements the field needs first (Fragmentarium's init(), what mainImage sets
+    // before its march). Run once per invocation, as the shader runs them once per pixel: they may
+    // add to what they set (`ball.y += 0.3;`) and the wrapper is called many times (the gradient's
+    // taps, every step of a ray). In a block of their own, so that their names (mainImage's `vec2 p`)
+    // do not clash with the point's.
+    const bool prelude = !signature.prelude.empty();
+    std::string text = std::string(prelude ? "bool sdfwb_preludeRun = false;\n" : "") + "float sdfwb_sdf(vec3 p) { " +
+                       (prelude ? "if (!sdfwb_preludeRun) { sdfwb_preludeRun = true;\n" + signature.prelude + "\n}\n" : "") +
+                       locals + "return " + signature.entry + "(p" + (signature.animated ? ", sdfwb_time" : "") + arguments +
+                       ")" + value + "; }\n";
     // The user's macros end with the user's code: what follows is the workbench's.
     for (const std::string& macro : sdf.macros) text += "#undef " + macro + "\n";
     return text;

@@ -659,6 +659,43 @@ TEST(EntryPoint, ParametersMainImageComputesAreTracedAndThosePerPixelWarned) {
         << pixel.diagnostics[0].message;
 }
 
+// File-scope variables mainImage sets before the march: named on the entry line, run once in a
+// block of their own; one computed from the pixel (a ray direction) is warned about, a swizzle of
+// the pixel's uv in an earlier statement does not make every later `.x` the pixel's.
+TEST(EntryPoint, GlobalsMainImageSetsFirstAndThoseFromThePixel) {
+    auto shader = [](const std::string& field, const std::string& sets) {
+        return "float radius;\nvec3 dir;\nfloat map(vec3 p) { return " + field +
+               "; }\n"
+               "float march(vec3 ro, vec3 rd) {\n"
+               "    float t = 0.0;\n"
+               "    for (int i = 0; i < 64; i++) { float d = map(ro + rd * t); if (d < 1e-3) break; t += d; }\n"
+               "    return t;\n"
+               "}\n"
+               "void mainImage(out vec4 fragColor, in vec2 p) {\n"
+               "    vec2 uv = (p - 0.5 * iResolution.xy) / iResolution.y;\n"
+               "    uv.x *= 1.5;\n" +
+               sets +
+               "    float t = march(vec3(0.0, 0.0, -3.0), normalize(vec3(uv, 1.0)));\n"
+               "    fragColor = vec4(vec3(t), 1.0);\n"
+               "}\n";
+    };
+    PreparedSdf mouse = prepare(shader("length(p) - radius", "    radius = 0.5 + 0.1 * iMouse.x;\n"));
+    ASSERT_TRUE(mouse.ok()) << (mouse.diagnostics.empty() ? "" : formatDiagnostic(mouse.diagnostics.front()));
+    EXPECT_NE(mouse.entryReason.find("after mainImage sets radius"), std::string::npos) << mouse.entryReason;
+    EXPECT_TRUE(mouse.diagnostics.empty()) << formatDiagnostic(mouse.diagnostics.front());
+    const std::string wrapper = entryWrapper(mouse);
+    EXPECT_NE(wrapper.find("if (!sdfwb_preludeRun) { sdfwb_preludeRun = true;"), std::string::npos) << wrapper;
+    auto tracer = composeTracer(mouse, TracerFeatures{});
+    ASSERT_TRUE(tracer.hasValue());
+    EXPECT_FALSE(hasErrors(checkWithGlslang(*tracer))) << "mainImage's `p` is the pixel; the wrapper's point is its own";
+
+    PreparedSdf pixel = prepare(shader("length(p) - 0.5 + 0.1 * dir.x", "    dir = normalize(vec3(uv, 1.0));\n"));
+    ASSERT_TRUE(pixel.ok()) << (pixel.diagnostics.empty() ? "" : formatDiagnostic(pixel.diagnostics.front()));
+    ASSERT_EQ(pixel.diagnostics.size(), 1u);
+    EXPECT_NE(pixel.diagnostics[0].message.find("map reads 'dir', which mainImage computes for each pixel"), std::string::npos)
+        << pixel.diagnostics[0].message;
+}
+
 TEST(EntryPoint, StructReturnsOutParametersAndNoiseNamedHelpers) {
     const std::string structField = "struct Hit { float id; float dist; };\n"
                                     "Hit scene(vec3 p) { Hit h; h.id = 1.0; h.dist = length(p) - 0.5; return h; }\n";

@@ -134,6 +134,11 @@ TEST(Parameters, HostileTextEndsCleanly) {
         ParameterScan scan = parseParameters(text, "hostile.glsl");
         for (const Diagnostic& d : scan.diagnostics) EXPECT_GE(d.line, 1) << text;
     }
+    // A NUL inside an initializer (found by the parameters fuzzer): the number is the whole text up
+    // to the `;`, not the "1" before the NUL, so it is not a default sdfwb could write back.
+    const std::string nul("uniform float r = 1\0x\n;\nfloat sdf(vec3 p) { return length(p) - r; }\n", 68);
+    ParameterScan withNul = parseParameters(nul, "nul.glsl");
+    EXPECT_TRUE(withNul.parameters.empty());
     std::string many;
     for (int i = 0; i < 5000; ++i)
         many += "uniform float p" + std::to_string(i) + " = " + std::to_string(i) + ".0; // @range -1 99999\n";
