@@ -22,4 +22,10 @@ std::vector<std::string> callArguments(const std::string& text, int line, const 
 // statement, and neither returning nor discarding.
 bool wholeStatements(const std::string& code);
 
+// The code before a loop nested in others (an anti-aliasing loop around the march, a loop over
+// cameras), entered as one pass of each: every block still open at its end keeps its brace, a
+// `for (INIT; ...; ...)` before one becomes `INIT;` (its first pass), and a while, if, else or do
+// header is dropped. `opened` receives how many blocks are left open (-1: the code cannot be read).
+std::string enteredBlocks(std::string code, int& opened);
+
 } // namespace sdfwb::shaders::detail

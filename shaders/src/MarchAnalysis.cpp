@@ -22,6 +22,7 @@ namespace sdfwb::shaders {
 namespace {
 
 using detail::callArguments;
+using detail::enteredBlocks;
 using detail::lineStart;
 using detail::wholeStatements;
 
@@ -464,74 +465,6 @@ void traceArguments(MarchedFunction& m, TIntermAggregate* call, TIntermAggregate
 }
 
 // Fills an inline march's prelude and body from its loop's text (InlineField.h), or its unresolved.
-// The code before a loop nested in others (an anti-aliasing loop around the march, a loop over
-// cameras), entered as one pass of each: every block still open at its end keeps its brace, a
-// `for (INIT; ...; ...)` before one becomes `INIT;` (its first pass), and a while, if, else or do
-// header is dropped. `opened` receives how many blocks are left open (-1: the code cannot be read).
-std::string enteredBlocks(std::string code, int& opened) {
-    std::vector<std::size_t> open;
-    for (std::size_t i = 0; i < code.size(); ++i) {
-        if (code[i] == '{') open.push_back(i);
-        if (code[i] == '}') {
-            if (open.empty()) {
-                opened = -1;
-                return code;
-            }
-            open.pop_back();
-        }
-    }
-    opened = int(open.size());
-    auto spaceBefore = [&code](std::size_t at) {
-        while (at > 0 && std::isspace(static_cast<unsigned char>(code[at - 1]))) --at;
-        return at;
-    };
-    for (auto brace = open.rbegin(); brace != open.rend(); ++brace) {
-        // The headers before the brace, innermost first: `for (...) for (...) {`, `else if (...) {`.
-        std::size_t spanStart = spaceBefore(*brace);
-        const std::size_t spanEnd = spanStart;
-        std::string inits;
-        for (;;) {
-            const std::size_t at = spaceBefore(spanStart);
-            if (at > 0 && code[at - 1] == ')') {
-                int depth = 0;
-                std::size_t paren = at - 1;
-                for (;; --paren) {
-                    depth += code[paren] == ')' ? 1 : code[paren] == '(' ? -1 : 0;
-                    if (depth == 0 || paren == 0) break;
-                }
-                const std::size_t word = spaceBefore(paren);
-                std::size_t wordStart = word;
-                while (wordStart > 0 && isWordCharacter(code[wordStart - 1])) --wordStart;
-                const std::string keyword = code.substr(wordStart, word - wordStart);
-                if (depth != 0 || (keyword != "for" && keyword != "while" && keyword != "if")) break;
-                if (keyword == "for") {
-                    const std::string clauses = code.substr(paren + 1, at - 2 - paren);
-                    int inner = 0;
-                    std::size_t semicolon = 0;
-                    while (semicolon < clauses.size() && !(clauses[semicolon] == ';' && inner == 0)) {
-                        inner += clauses[semicolon] == '(' ? 1 : clauses[semicolon] == ')' ? -1 : 0;
-                        ++semicolon;
-                    }
-                    const std::string init = detail::trimmed(clauses.substr(0, semicolon));
-                    if (!init.empty()) inits = init + "; " + inits;
-                }
-                spanStart = wordStart;
-                continue;
-            }
-            std::size_t wordStart = at;
-            while (wordStart > 0 && isWordCharacter(code[wordStart - 1])) --wordStart;
-            const std::string keyword = code.substr(wordStart, at - wordStart);
-            if (keyword == "else" || keyword == "do") {
-                spanStart = wordStart;
-                continue;
-            }
-            break;
-        }
-        code.replace(spanStart, spanEnd - spanStart, inits);
-    }
-    return code;
-}
-
 void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* function, bool isMainImage,
                      const ComposedShader& composed) {
     const int file = loop->getLoc().string;
