@@ -395,7 +395,7 @@ int runRenderCommand(const Arguments& arguments, Mode mode) {
     Ending ending;
     FrameOptions options;
     addFrameOptions(app, request.frame, options);
-    app.add_option("--output", request.output, "image file: .png, .jpg or .exr")->required();
+    app.add_option("--output,-o", request.output, "image file: .png, .jpg or .exr")->required();
     app.add_flag("--shadertoy-picture", request.shadertoyPicture,
                  "the file's own picture: a whole Shadertoy shader's mainImage at --size and --time (iMouse 0, iFrame 0) "
                  "instead of sdfwb's tracer");
@@ -411,7 +411,7 @@ int runAnimateCommand(const Arguments& arguments, Mode mode) {
     Ending ending;
     FrameOptions options;
     addFrameOptions(app, request.frame, options);
-    app.add_option("--output", request.output, "video file: .mp4")->required();
+    app.add_option("--output,-o", request.output, "video file: .mp4")->required();
     app.add_option("--seconds", request.seconds, "length of the clip (up to 3600)")
         ->capture_default_str()
         ->check(numberCheck(true))

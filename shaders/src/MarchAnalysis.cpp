@@ -111,21 +111,34 @@ bool returnsFloats(const glslang::TType& type) {
 
 bool returnsStruct(const glslang::TType& type) { return type.getBasicType() == glslang::EbtStruct && !type.isArray(); }
 
+// What holds a call's result in a loop: the call itself, or a variable assigned it
+// (`Hit h = map(p);`, `vec4 ds = sdScene(p);`).
+struct CallResult {
+    TIntermAggregate* call = nullptr;
+    std::set<long long> holders;
+    bool holds(TIntermTyped* node) const {
+        TIntermSymbol* symbol = node->getAsSymbolNode();
+        return node == call || (symbol && holders.count(symbol->getId()));
+    }
+};
+
+CallResult resultOf(TIntermAggregate* call, const std::vector<TIntermBinary*>& assignments) {
+    CallResult result{call, {}};
+    for (TIntermBinary* a : assignments)
+        if (a->getOp() == glslang::EOpAssign && a->getRight() == call) result.holders.insert(assignedSymbol(a->getLeft()));
+    return result;
+}
+
 // The float member of the struct `call` returns that the loop reads first, from the call itself
 // or from a variable assigned the call (`Hit h = map(p); ... t += h.d;`); empty when none.
-std::string distanceMember(TIntermNode* loop, TIntermAggregate* call, const std::vector<TIntermBinary*>& assignments) {
-    std::set<long long> holders;
-    for (TIntermBinary* a : assignments)
-        if (a->getOp() == glslang::EOpAssign && a->getRight() == call) holders.insert(assignedSymbol(a->getLeft()));
+std::string distanceMember(TIntermNode* loop, const CallResult& result) {
     struct Members : glslang::TIntermTraverser {
-        TIntermAggregate* call = nullptr;
-        const std::set<long long>* holders = nullptr;
+        const CallResult* result = nullptr;
         std::string found;
         bool visitBinary(glslang::TVisit, TIntermBinary* node) override {
             if (!found.empty() || node->getOp() != glslang::EOpIndexDirectStruct) return true;
             TIntermTyped* base = node->getLeft();
-            TIntermSymbol* symbol = base->getAsSymbolNode();
-            if (base != call && !(symbol && holders->count(symbol->getId()))) return true;
+            if (!result->holds(base)) return true;
             const glslang::TTypeList* members = base->getType().getStruct();
             const glslang::TIntermConstantUnion* index = node->getRight()->getAsConstantUnion();
             if (!members || !index) return true;
@@ -136,44 +149,47 @@ std::string distanceMember(TIntermNode* loop, TIntermAggregate* call, const std:
             return true;
         }
     } members;
-    members.call = call;
-    members.holders = &holders;
+    members.result = &result;
     loop->traverse(&members);
     return members.found;
+}
+
+// How a subtree reads the components of a call's result: one component at a time (`.x`, `.w`,
+// `[1]`), counted per component, or otherwise (`.xyz`, an index not constant).
+struct ComponentReads : glslang::TIntermTraverser {
+    const CallResult* result = nullptr;
+    int single[4] = {0, 0, 0, 0};
+    int other = 0;
+    bool visitBinary(glslang::TVisit, TIntermBinary* node) override {
+        const glslang::TOperator op = node->getOp();
+        if (op != glslang::EOpVectorSwizzle && op != glslang::EOpIndexDirect) return true;
+        if (!result->holds(node->getLeft())) return true;
+        const glslang::TIntermConstantUnion* index = node->getRight()->getAsConstantUnion();
+        const TIntermAggregate* swizzle = node->getRight()->getAsAggregate();
+        if (op == glslang::EOpVectorSwizzle && swizzle && swizzle->getSequence().size() == 1)
+            index = swizzle->getSequence().front()->getAsConstantUnion();
+        else if (op == glslang::EOpVectorSwizzle)
+            index = nullptr;
+        const int i = index ? index->getConstArray()[0].getIConst() : -1;
+        ++(i >= 0 && i < 4 ? single[i] : other);
+        return true;
+    }
+};
+
+ComponentReads componentReads(TIntermNode* node, const CallResult& result) {
+    ComponentReads reads;
+    reads.result = &result;
+    if (node) node->traverse(&reads);
+    return reads;
 }
 
 // Whether the loop reads only the first component (`.x`, `.r`, `[0]`) of what `call` returns, from
 // the call itself or from a variable assigned the call (`vec3 h = f(p); t += h.x;`): a vec3 field
 // that carries its distance in x and a material or orbit trap in y and z. A normal or a colour is
 // read whole or in all its components.
-bool readsFirstComponentOnly(TIntermNode* loop, TIntermAggregate* call, const std::vector<TIntermBinary*>& assignments) {
-    std::set<long long> holders;
-    for (TIntermBinary* a : assignments)
-        if (a->getOp() == glslang::EOpAssign && a->getRight() == call) holders.insert(assignedSymbol(a->getLeft()));
-    struct Reads : glslang::TIntermTraverser {
-        TIntermAggregate* call = nullptr;
-        const std::set<long long>* holders = nullptr;
-        int first = 0, other = 0;
-        bool visitBinary(glslang::TVisit, TIntermBinary* node) override {
-            const glslang::TOperator op = node->getOp();
-            if (op != glslang::EOpVectorSwizzle && op != glslang::EOpIndexDirect) return true;
-            TIntermTyped* base = node->getLeft();
-            TIntermSymbol* symbol = base->getAsSymbolNode();
-            if (base != call && !(symbol && holders->count(symbol->getId()))) return true;
-            const glslang::TIntermConstantUnion* index = node->getRight()->getAsConstantUnion();
-            const TIntermAggregate* swizzle = node->getRight()->getAsAggregate();
-            if (op == glslang::EOpVectorSwizzle && swizzle && swizzle->getSequence().size() == 1)
-                index = swizzle->getSequence().front()->getAsConstantUnion();
-            else if (op == glslang::EOpVectorSwizzle)
-                index = nullptr;
-            ++(index && index->getConstArray()[0].getIConst() == 0 ? first : other);
-            return true;
-        }
-    } reads;
-    reads.call = call;
-    reads.holders = &holders;
-    loop->traverse(&reads);
-    return reads.first > 0 && reads.other == 0;
+bool readsFirstComponentOnly(TIntermNode* loop, const CallResult& result) {
+    const ComponentReads reads = componentReads(loop, result);
+    return reads.single[0] > 0 && reads.single[1] + reads.single[2] + reads.single[3] + reads.other == 0;
 }
 
 struct Assignment {
@@ -181,10 +197,11 @@ struct Assignment {
     glslang::TOperator op;
     std::set<long long> reads;         // symbols of the right-hand side
     std::set<TIntermAggregate*> calls; // calls in the right-hand side
+    TIntermBinary* node = nullptr;
 };
 
-// Whether `loop` steps by `call` (a call inside it): see the header.
-bool stepsBy(const std::vector<Assignment>& assignments, TIntermAggregate* call) {
+// The assignment by which `loop` steps by `call` (a call inside it; see the header), or null.
+const Assignment* stepBy(const std::vector<Assignment>& assignments, TIntermAggregate* call) {
     // The variables the call's point depends on within the loop.
     std::set<long long> point = contentsOf(call->getSequence().front()).symbols;
     // The variables holding the call's result, or values computed from it.
@@ -206,9 +223,28 @@ bool stepsBy(const std::vector<Assignment>& assignments, TIntermAggregate* call)
                            (a.op == glslang::EOpAssign && a.reads.count(a.target));
         if (!grows) continue;
         if (a.calls.count(call) || std::any_of(a.reads.begin(), a.reads.end(), [&](long long s) { return result.count(s) > 0; }))
-            return true;
+            return &a;
     }
-    return false;
+    return nullptr;
+}
+
+// The component of a vector's result the march steps by, read in the step (`t += ds.w;`) or in a
+// float the step reads (`float d = h.y; t += d;`): 1..3 (y, z, w), or 0 for x and where the step
+// reads no one component alone (`t += d.x * .5` and `t += d` alike keep the x a vec2's field has).
+int distanceComponent(const Assignment& step, const std::vector<Assignment>& assignments, const CallResult& result) {
+    ComponentReads reads = componentReads(step.node->getRight(), result);
+    for (const Assignment& a : assignments) {
+        if (a.target < 0 || !step.reads.count(a.target) || !a.node->getType().isScalar()) continue;
+        const ComponentReads held = componentReads(a.node->getRight(), result);
+        for (int i = 0; i < 4; ++i) reads.single[i] += held.single[i];
+    }
+    int found = 0;
+    for (int i = 1; i < 4; ++i)
+        if (reads.single[i] > 0) {
+            if (found > 0 || reads.single[0] > 0) return 0;
+            found = i;
+        }
+    return found;
 }
 
 // A type as GLSL writes it (float, ivec3, mat3, a struct's name); empty for arrays and others.
@@ -360,7 +396,7 @@ void traceArguments(MarchedFunction& m, TIntermAggregate* call, TIntermAggregate
                     TIntermAggregate* mainImage, const ComposedShader& composed) {
     auto fail = [&m](std::string reason) {
         m.unresolved = std::move(reason);
-        m.prelude.clear(), m.bindings.clear(), m.scoped.clear(), m.arguments.clear();
+        m.prelude.clear(), m.traced.clear(), m.arguments.clear();
     };
     const std::vector<TIntermSymbol*> fieldParameters = parametersOf(callee);
     m.extraParameters = int(fieldParameters.size()) - 1;
@@ -444,8 +480,7 @@ void traceArguments(MarchedFunction& m, TIntermAggregate* call, TIntermAggregate
             fail("parameter '" + name + "' has a type the wrapper cannot declare");
             return;
         }
-        m.bindings += type + " sdfwb_value" + std::to_string(k) + " = " + values[k] + ";\n";
-        m.scoped += type + " " + name + " = sdfwb_value" + std::to_string(k) + ";\n";
+        m.traced.push_back({type, name, values[k]});
     }
     // The prelude: mainImage's body up to the line of that call.
     const std::size_t open = bodyOpen(text, mainImage);
@@ -594,7 +629,7 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
             for (TIntermBinary* node : inside.assignments) {
                 Contents right = contentsOf(node->getRight());
                 assignments.push_back({assignedSymbol(node->getLeft()), node->getOp(), right.symbols,
-                                       std::set<TIntermAggregate*>(right.calls.begin(), right.calls.end())});
+                                       std::set<TIntermAggregate*>(right.calls.begin(), right.calls.end()), node});
             }
             std::set<std::string> counted; // each function once per loop
             for (TIntermAggregate* call : inside.calls) {
@@ -602,17 +637,20 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                 if (callee == tree.functions.end() || call->getSequence().empty()) continue;
                 TIntermTyped* point = call->getSequence().front()->getAsTyped();
                 const glslang::TType& returned = callee->second->getType();
-                const bool vec3Field = isFloatVec3(returned) && readsFirstComponentOnly(loop, call, inside.assignments);
+                const CallResult result = resultOf(call, inside.assignments);
+                const bool vec3Field = isFloatVec3(returned) && readsFirstComponentOnly(loop, result);
                 if (!point || !isFloatVec3(point->getType()) ||
                     !(returnsFloats(returned) || returnsStruct(returned) || vec3Field))
                     continue;
                 const std::string name = plainName(call->getName());
-                if (counted.count(name) || !stepsBy(assignments, call)) continue;
+                const Assignment* step = counted.count(name) ? nullptr : stepBy(assignments, call);
+                if (!step) continue;
                 std::string member;
                 if (returnsStruct(returned)) {
-                    member = distanceMember(loop, call, inside.assignments);
+                    member = distanceMember(loop, result);
                     if (member.empty()) continue;
                 }
+                const int component = returned.isVector() ? distanceComponent(*step, assignments, result) : 0;
                 counted.insert(name);
                 auto entry =
                     std::find_if(marched.begin(), marched.end(), [&](const MarchedFunction& m) { return m.name == name; });
@@ -622,6 +660,7 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                                        member.empty() ? std::string() : std::string(returned.getTypeName().c_str()), member,
                                        glslTypeName(returned)});
                     entry = marched.end() - 1;
+                    if (component > 0) entry->component = std::string(1, "xyzw"[component]);
                     if (mainImage) traceArguments(*entry, call, callee->second, function, mainImage, composed);
                     if (mainImage && entry->extraParameters <= 0)
                         traceGlobals(*entry, callee->second, function, mainImage, composed, tree.functions);

@@ -533,19 +533,8 @@ std::vector<std::string> perPixelParameters(const MarchedFunction& m) {
     std::vector<std::string> out;
     for (const std::string& name : m.globals)
         if (pixel.count(name)) out.push_back(name);
-    // bindings: "TYPE sdfwb_valueK = VALUE;" lines; scoped: "TYPE NAME = sdfwb_valueK;" in the same order.
-    std::size_t b = 0, c = 0;
-    while (b < m.bindings.size() && c < m.scoped.size()) {
-        const std::size_t bEnd = std::min(m.bindings.find('\n', b), m.bindings.size());
-        const std::size_t cEnd = std::min(m.scoped.find('\n', c), m.scoped.size());
-        const std::string binding = m.bindings.substr(b, bEnd - b), scoped = m.scoped.substr(c, cEnd - c);
-        b = bEnd + 1, c = cEnd + 1;
-        const std::size_t equals = binding.find('=');
-        if (equals == std::string::npos || !mentionsAny(binding.substr(equals + 1))) continue;
-        const std::size_t nameEnd = scoped.find(" =");
-        const std::size_t nameStart = nameEnd == std::string::npos ? std::string::npos : scoped.rfind(' ', nameEnd - 1);
-        if (nameStart != std::string::npos) out.push_back(scoped.substr(nameStart + 1, nameEnd - nameStart - 1));
-    }
+    for (const TracedValue& traced : m.traced)
+        if (mentionsAny(traced.value)) out.push_back(traced.name);
     return out;
 }
 
@@ -566,6 +555,7 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
                                                                   : std::string("float|vec2|vec4");
         SdfSignature signature = detectSignature(stripped, marched.name, returns);
         if (!marched.member.empty()) signature.member = marched.member; // the one the march reads
+        if (!marched.component.empty()) signature.member = marched.component;
         if (signature.found && !marched.globals.empty())                // what mainImage sets first, run first
             signature.prelude = "vec2 " + (marched.coordinate.empty() ? "fragCoord" : marched.coordinate) + " = " +
                                 (mentions(stripped, "iResolution") ? "0.5 * iResolution.xy" : "vec2(0.0)") + "; vec4 " +
@@ -575,13 +565,12 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
             signature.found = true;
             signature.entry = marched.name;
             signature.returnType = marched.valueType;
-            signature.member = marched.member;
+            signature.member = marched.member.empty() ? marched.component : marched.member;
             const std::string centre = mentions(stripped, "iResolution") ? "0.5 * iResolution.xy" : "vec2(0.0)";
             signature.prelude = "vec2 " + (marched.coordinate.empty() ? "fragCoord" : marched.coordinate) + " = " + centre +
                                 "; vec4 " + (marched.colour.empty() ? "fragColor" : marched.colour) + " = vec4(0.0);\n" +
                                 marched.prelude;
-            signature.bindings = marched.bindings;
-            signature.scoped = marched.scoped;
+            signature.traced = marched.traced;
             signature.arguments = marched.arguments;
         }
         if (!signature.found && marched.extraParameters > 0 && untraced.empty() && !marched.unresolved.empty())

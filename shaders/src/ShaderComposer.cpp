@@ -100,36 +100,50 @@ bool hasLoopKeyword(const std::string& text) {
 
 } // namespace
 
+// `statements` run once per invocation, as a shader runs mainImage's statements once per pixel:
+// they may add to what they set (`ball.y += 0.3;`) and the wrapper is called many times (the
+// gradient's taps, every step of a ray). In a block of their own, so that their names (mainImage's
+// `vec2 p`) do not clash with the point's. Needs `bool sdfwb_preludeRun = false;` at file scope.
+std::string runOnce(const std::string& statements) {
+    return "if (!sdfwb_preludeRun) { sdfwb_preludeRun = true;\n{\n" + statements + "\n}\n}\n";
+}
+
 std::string entryWrapper(const PreparedSdf& sdf) {
     const SdfSignature& signature = sdf.signature;
     const std::string value = !signature.member.empty() ? "." + signature.member : signature.returnType == "float" ? "" : ".x";
-    if (!signature.inlineBody.empty()) { // the march's own loop body, run once at the point
-        std::string text = "float sdfwb_sdf(vec3 sdfwb_point) {\n" + signature.prelude + "\n" + signature.inlineBody + "}\n";
-        for (const std::string& macro : sdf.macros) text += "#undef " + macro + "\n";
-        return text;
+    std::string text;
+    if (!signature.inlineBody.empty()) {
+        // The march's own loop body, run once at the point. Its prelude (the function's statements
+        // before the loop) runs at every call: the body updates the locals it declares.
+        text = "float sdfwb_sdf(vec3 sdfwb_point) {\n" + signature.prelude + "\n" + signature.inlineBody + "}\n";
+    } else if (!signature.arguments.empty()) {
+        // Parameters after the point, computed as mainImage does: once per invocation into globals,
+        // declared at every call under the marching function's names in a block of their own (a
+        // parameter may have the name of a local of mainImage).
+        std::string kept, assigned, declared;
+        for (std::size_t k = 0; k < signature.traced.size(); ++k) {
+            const TracedValue& traced = signature.traced[k];
+            const std::string global = "sdfwb_traced" + std::to_string(k);
+            kept += traced.type + " " + global + ";\n";
+            assigned += global + " = " + traced.value + ";\n";
+            declared += traced.type + " " + traced.name + " = " + global + ";\n";
+        }
+        text = kept + "bool sdfwb_preludeRun = false;\nfloat sdfwb_sdf(vec3 sdfwb_point) {\n" +
+               runOnce(signature.prelude + "\n" + assigned) + "{\n" + declared + "return " + signature.entry +
+               "(sdfwb_point" + signature.arguments + ")" + value + ";\n}\n}\n";
+    } else {
+        // Out parameters get locals; a prelude alone (Fragmentarium's init(), what mainImage sets
+        // before its march) runs once per invocation.
+        std::string locals, arguments;
+        for (std::size_t i = 0; i < signature.outParameters.size(); ++i) {
+            locals += signature.outParameters[i] + " sdfwb_out" + std::to_string(i) + "; ";
+            arguments += ", sdfwb_out" + std::to_string(i);
+        }
+        const bool prelude = !signature.prelude.empty();
+        text = std::string(prelude ? "bool sdfwb_preludeRun = false;\n" : "") + "float sdfwb_sdf(vec3 p) { " +
+               (prelude ? runOnce(signature.prelude) : "") + locals + "return " + signature.entry + "(p" +
+               (signature.animated ? ", sdfwb_time" : "") + arguments + ")" + value + "; }\n";
     }
-    if (!signature.arguments.empty()) { // parameters after the point, computed as mainImage does
-        std::string text = "float sdfwb_sdf(vec3 sdfwb_point) {\n" + signature.prelude + "\n" + signature.bindings + "{\n" +
-                           signature.scoped + "return " + signature.entry + "(sdfwb_point" + signature.arguments + ")" + value +
-                           ";\n}\n}\n";
-        for (const std::string& macro : sdf.macros) text += "#undef " + macro + "\n";
-        return text;
-    }
-    std::string locals, arguments;
-    for (std::size_t i = 0; i < signature.outParameters.size(); ++i) {
-        locals += signature.outParameters[i] + " sdfwb_out" + std::to_string(i) + "; ";
-        arguments += ", sdfwb_out" + std::to_string(i);
-    }
-    // A prelude alone: statements the field needs first (Fragmentarium's init(), what mainImage sets
-    // before its march). Run once per invocation, as the shader runs them once per pixel: they may
-    // add to what they set (`ball.y += 0.3;`) and the wrapper is called many times (the gradient's
-    // taps, every step of a ray). In a block of their own, so that their names (mainImage's `vec2 p`)
-    // do not clash with the point's.
-    const bool prelude = !signature.prelude.empty();
-    std::string text = std::string(prelude ? "bool sdfwb_preludeRun = false;\n" : "") + "float sdfwb_sdf(vec3 p) { " +
-                       (prelude ? "if (!sdfwb_preludeRun) { sdfwb_preludeRun = true;\n" + signature.prelude + "\n}\n" : "") +
-                       locals + "return " + signature.entry + "(p" + (signature.animated ? ", sdfwb_time" : "") + arguments +
-                       ")" + value + "; }\n";
     // The user's macros end with the user's code: what follows is the workbench's.
     for (const std::string& macro : sdf.macros) text += "#undef " + macro + "\n";
     return text;

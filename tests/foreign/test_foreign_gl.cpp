@@ -17,6 +17,7 @@
 #include <shaders/SdfSource.h>
 #include <values/Camera.h>
 
+#include "ForeignTest.h"
 #include "GlTestContext.h"
 #include "common/FirstError.h"
 
@@ -37,11 +38,12 @@
 #include <unistd.h>
 
 using namespace sdfwb;
+using sdfwb::testing::firstError;
+using sdfwb::testing::kFolder;
+using sdfwb::testing::prepare;
 namespace fs = std::filesystem;
 
 namespace {
-
-const fs::path kFolder = fs::path(SDFWB_SOURCE_DIR) / "tests" / "foreign";
 
 struct Expectation {
     std::string entry;
@@ -78,14 +80,6 @@ std::vector<std::string> corpusFiles() {
     std::sort(names.begin(), names.end());
     return names;
 }
-
-shaders::PreparedSdf prepare(const fs::path& file, const std::string& entry = {}) {
-    shaders::IncludeOptions options;
-    options.libraryRoots = {fs::path(SDFWB_SOURCE_DIR) / "shaders" / "lib"};
-    return shaders::prepareSdfFile(file, options, entry);
-}
-
-std::string firstError(const shaders::PreparedSdf& sdf) { return sdfwb::testing::firstErrorText(sdf.diagnostics); }
 
 // A test's name from its file: the stem, with anything but letters and digits as '_'.
 std::string fileTestName(const ::testing::TestParamInfo<std::string>& info) {
@@ -424,105 +418,6 @@ class ShadertoyPictureOf : public sdfwb::testing::GlTest, public ::testing::With
 // mainImage's code before the march at the sampler's time. 62's ball is centred at
 // (0.6, 0.1 + 0.15 sin(1.7 t), 0) with radius 0.2, so its centre at t = 1 reads -0.2 at t = 1 and
 // 0.15 sin(1.7) - 0.2 at t = 0; 61's tilt is 0 with iMouse at rest, so its ball's centre reads -0.15.
-class FieldParameters : public sdfwb::testing::GlTest {};
-
-// The field's value at one point at `time`, through the samplers' points program; `slope` receives
-// its gradient (six taps).
-float fieldValueAt(const shaders::PreparedSdf& sdf, glm::vec3 p, float time, glm::vec3* slope = nullptr) {
-    renderer::SampleCompute compute;
-    EXPECT_FALSE(shaders::hasErrors(compute.build(sdf, *shaders::builtinPiece("analysis/points.glsl"))));
-    sampling::SamplingJob job;
-    job.count = 1;
-    job.time = time;
-    job.inputPoints = &p.x;
-    float position[3], distance = 0.0f, gradient[3];
-    EXPECT_TRUE(sampling::sampleInto(compute, job, position, &distance, gradient, {}).hasValue());
-    compute.releaseGl();
-    if (slope) *slope = {gradient[0], gradient[1], gradient[2]};
-    return distance;
-}
-
-TEST_F(FieldParameters, ThoseMainImageComputesReachTheField) {
-    shaders::PreparedSdf breathing = prepare(kFolder / "62_st_breathing_box_parameters.glsl");
-    ASSERT_TRUE(breathing.ok()) << firstError(breathing);
-    EXPECT_EQ(breathing.signature.arguments, ", grow, offset");
-    EXPECT_NE(breathing.entryReason.find("with grow, offset as mainImage computes it"), std::string::npos)
-        << breathing.entryReason;
-    shaders::PreparedSdf plate = prepare(kFolder / "61_st_tilted_plate_parameter.glsl");
-    ASSERT_TRUE(plate.ok()) << firstError(plate);
-    EXPECT_EQ(plate.signature.arguments, ", tilt");
-    auto valueAt = [](const shaders::PreparedSdf& sdf, glm::vec3 p, float time) { return fieldValueAt(sdf, p, time); };
-    const float y1 = 0.1f + 0.15f * std::sin(1.7f);
-    EXPECT_NEAR(valueAt(breathing, {0.6f, y1, 0.0f}, 1.0f), -0.2f, 1e-4f);
-    EXPECT_NEAR(valueAt(breathing, {0.6f, y1, 0.0f}, 0.0f), 0.15f * std::sin(1.7f) - 0.2f, 1e-4f);
-    EXPECT_NEAR(valueAt(plate, {0.0f, 0.47f, 0.0f}, 0.0f), -0.15f, 1e-4f);
-
-    // A march whose parameter is computed inside the marching function cannot be traced: the file
-    // then does not open, and the error says what to do.
-    const fs::path folder = fs::temp_directory_path() / ("sdfwb-foreign-params-" + std::to_string(::getpid()));
-    fs::create_directories(folder);
-    std::ofstream(folder / "inner.glsl")
-        << "float field(vec3 p, vec2 r) { return length(p) - r.x; }\n"
-           "float march(vec3 ro, vec3 rd) {\n"
-           "    float t = 0.0;\n"
-           "    for (int i = 0; i < 64; i++) { vec2 r = vec2(0.5, float(i)); t += field(ro + rd * t, r); }\n"
-           "    return t;\n"
-           "}\n"
-           "void mainImage(out vec4 c, in vec2 u) { c = vec4(march(vec3(0.0, 0.0, -3.0), vec3(0.0, 0.0, 1.0))); }\n";
-    shaders::PreparedSdf inner = prepare(folder / "inner.glsl");
-    EXPECT_FALSE(inner.ok());
-    EXPECT_NE(firstError(inner).find("'r' is computed inside march"), std::string::npos) << firstError(inner);
-    fs::remove_all(folder);
-}
-
-// File-scope variables mainImage sets before the march (a radius from iTime, a rotation, a centre
-// it adds to): the wrapper runs those statements first, once per invocation. The ball is centred at
-// (0.6, 0, 0) after `p.xz *= spin` with radius 0.5 + 0.1 sin(t); without them radius, spin and ball
-// would read 0 (0.6 at that centre), and run at every call the centre would move at every tap of the
-// gradient. A glow the field only adds to and a tint set after the march are not the field's, and
-// mainImage's `vec2 p` does not clash with the wrapper's point.
-TEST_F(FieldParameters, GlobalsMainImageSetsBeforeTheMarchReachTheField) {
-    const fs::path folder = fs::temp_directory_path() / ("sdfwb-foreign-globals-" + std::to_string(::getpid()));
-    fs::create_directories(folder);
-    std::ofstream(folder / "globals.glsl")
-        << "float radius;\nmat2 spin;\nvec3 tint;\nvec3 ball = vec3(0.3, 0.0, 0.0);\nfloat glow;\n"
-           "float map(vec3 p) { p.xz *= spin; glow += 0.01; return length(p - ball) - radius + 0.0 * tint.x; }\n"
-           "float march(vec3 ro, vec3 rd) {\n"
-           "    float t = 0.0;\n"
-           "    for (int i = 0; i < 100; i++) { float d = map(ro + rd * t); if (d < 0.001) break; t += d; }\n"
-           "    return t;\n"
-           "}\n"
-           "void setRadius() { radius = 0.5 + 0.1 * sin(iTime); }\n"
-           "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
-           "    vec2 p = (2.0 * fragCoord - iResolution.xy) / iResolution.y;\n"
-           "    p.x *= iResolution.x / iResolution.x;\n"
-           "    glow = 0.0;\n"
-           "    setRadius();\n"
-           "    ball.x += 0.3;\n"
-           "    float a = iTime * 0.3;\n"
-           "    spin = mat2(cos(a), sin(a), -sin(a), cos(a));\n"
-           "    float t = march(vec3(0.0, 0.0, -3.0), normalize(vec3(p, 1.5)));\n"
-           "    tint = vec3(t);\n"
-           "    fragColor = vec4(tint + glow, 1.0);\n"
-           "}\n";
-    shaders::PreparedSdf sdf = prepare(folder / "globals.glsl");
-    fs::remove_all(folder);
-    ASSERT_TRUE(sdf.ok()) << firstError(sdf);
-    EXPECT_EQ(sdf.signature.entry, "map");
-    EXPECT_NE(sdf.entryReason.find("after mainImage sets ball, radius, spin"), std::string::npos) << sdf.entryReason;
-    EXPECT_EQ(sdf.entryReason.find("glow"), std::string::npos) << sdf.entryReason;
-    EXPECT_TRUE(sdf.diagnostics.empty()) << "no value the field reads comes from the pixel: "
-                                         << shaders::formatDiagnostic(sdf.diagnostics.front());
-    EXPECT_NEAR(fieldValueAt(sdf, {0.6f, 0.0f, 0.0f}, 0.0f), -0.5f, 1e-5f);
-    glm::vec3 slope(0.0f);
-    EXPECT_NEAR(fieldValueAt(sdf, {1.2f, 0.0f, 0.0f}, 0.0f, &slope), 0.1f, 1e-5f);
-    EXPECT_NEAR(slope.x, 1.0f, 1e-2f) << "the centre stays put between the gradient's taps";
-    EXPECT_NEAR(glm::length(slope), 1.0f, 1e-2f);
-    const float a = 0.3f, radius = 0.5f + 0.1f * std::sin(1.0f);
-    const float moved = std::hypot(0.6f * std::cos(a) - 0.6f, 0.6f * std::sin(a)) - radius;
-    EXPECT_NEAR(fieldValueAt(sdf, {0.6f, 0.0f, 0.0f}, 1.0f), moved, 1e-5f);
-}
-
 // A field the march writes inline (issue 47): the loop's body run once at the point. 63's ball
 // (centre (0, 0.1, 0), radius 0.45) reads -0.45 at its centre; 65's rounded box, in a helper's
 // loop that returns from inside, -0.45 at the origin; 66's torus, stepped in the loop's header,

@@ -326,7 +326,7 @@ TEST(ForeignHosts, FragmentariumSlidersPresetsAndSystemIncludes) {
     EXPECT_NE(sdf.source.text.find("uniform float OrbitStrength = 0.25;"), std::string::npos) << sdf.source.text;
     EXPECT_NE(sdf.source.text.find("mat3 rotationMatrix3(vec3 v, float angle)"), std::string::npos);
     // init() once per invocation, as Fragmentarium runs it once per pixel before its DE calls.
-    EXPECT_NE(entryWrapper(sdf).find("if (!sdfwb_preludeRun) { sdfwb_preludeRun = true;\ninit();\n}\nreturn DE(p"),
+    EXPECT_NE(entryWrapper(sdf).find("if (!sdfwb_preludeRun) { sdfwb_preludeRun = true;\n{\ninit();\n}\n}\nreturn DE(p"),
               std::string::npos)
         << entryWrapper(sdf);
     EXPECT_EQ(compileErrors(sdf), "");

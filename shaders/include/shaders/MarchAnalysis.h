@@ -22,19 +22,21 @@ struct MarchedFunction {
     std::string returnType;
     std::string member;
     std::string valueType; // what it returns: float, vec2, vec4 or the struct's name
+    // A vector return whose distance is not its x (`vec4 sdScene(vec3 p)` returning (colour,
+    // distance), `t += ds.w`): the component the march steps by (y, z or w). Empty otherwise.
+    std::string component;
 
     // A field with `in` parameters after the point (`vec2 Scene(vec3 p, vec3 plateRot)`) whose
     // values mainImage computes and hands to the marching function: how a wrapper gets them.
     //   prelude     mainImage's statements before the one that calls the marching function
-    //   bindings    temporaries holding the values mainImage passes the marching function, and
-    //   scoped      the marching function's parameters the call reads, declared from them in a
-    //               block of their own (a parameter may have the name of a local of mainImage)
+    //   traced      the marching function's parameters the call reads, with what mainImage passes
     //   arguments   the text after the point in the march's call (", plateRot")
     //   coordinate, colour   mainImage's parameter names (the wrapper declares them)
     // Empty `arguments` with extraParameters > 0: the values could not be traced (`unresolved`
     // says why).
     int extraParameters = 0;
-    std::string prelude, bindings, scoped, arguments, coordinate, colour, unresolved;
+    std::string prelude, arguments, coordinate, colour, unresolved;
+    std::vector<TracedValue> traced;
     // A field that reads file-scope variables mainImage sets before the march (`radius = ...;` from
     // iTime): their names; `prelude` (with coordinate and colour) then holds mainImage's statements
     // before the call of the marching function, which the wrapper runs first.

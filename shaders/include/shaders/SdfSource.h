@@ -19,24 +19,32 @@ namespace sdfwb::shaders {
 // the metadata block, the GUI's entry field, Python's entry=), or, when the file defines no sdf(),
 // the first of the names public ray-marching code uses for it (map, scene, sceneSDF, sdScene, de,
 // DE). It returns float, or vec2/vec3/vec4 with the distance in .x (Shadertoy's material ids).
+// A parameter of the marching function that a field's arguments read, and the expression mainImage
+// passes for it (`vec3 rd` = `normalize(vec3(uv, 1.5))`).
+struct TracedValue {
+    std::string type, name, value;
+};
+
 struct SdfSignature {
     bool found = false;    // a definition of ENTRY(vec3) or ENTRY(vec3, float) exists
     bool animated = false; // ENTRY(vec3 p, float time)
     std::string entry = "sdf";
     std::string returnType = "float"; // float | vec2 | vec3 | vec4, or a struct's name (see member)
     // A struct return (`Hit map(vec3 p)`, found from a whole shader's march): the float member the
-    // march steps by is the distance. Empty otherwise.
+    // march steps by is the distance. A vector return whose march steps by its y, z or w
+    // (`t += ds.w`): that component. Empty otherwise.
     std::string member;
     // The types of `out`/`inout` parameters after the point (and the time), in order
     // (`float sdf(vec3 p, out Material m)`): the wrapper passes locals of these types.
     std::vector<std::string> outParameters;
     // A field with parameters after the point whose values mainImage computes (a whole shader's
-    // march, shaders/MarchAnalysis.h): the wrapper runs `prelude` (mainImage's code before the
-    // march, its parameters declared first), then `bindings`, and calls ENTRY(p`arguments`) in a
-    // block that declares `scoped`. Empty otherwise.
-    // A `prelude` alone (no `arguments`): statements the wrapper runs before calling ENTRY(p)
-    // (Fragmentarium's init(), which computes globals from its uniforms).
-    std::string prelude, bindings, scoped, arguments;
+    // march, shaders/MarchAnalysis.h): once per invocation the wrapper runs `prelude` (mainImage's
+    // code before the march, its parameters declared first) and keeps each `traced` value; every
+    // call then declares the traced parameters from them and calls ENTRY(p`arguments`).
+    // A `prelude` alone (no `arguments`): statements the wrapper runs once per invocation before
+    // calling ENTRY(p) (Fragmentarium's init(), which computes globals from its uniforms).
+    std::string prelude, arguments;
+    std::vector<TracedValue> traced;
     // A field a whole shader's march writes inline (shaders::InlineMarch): the wrapper runs
     // `prelude` and then this block, which returns the field at sdfwb_point. Empty otherwise.
     std::string inlineBody;

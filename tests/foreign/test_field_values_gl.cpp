@@ -1,0 +1,205 @@
+// A whole shader's field where mainImage hands the march what the field reads (parameters after
+// the point, globals it sets first) or where the distance is not the first thing the field returns:
+// the field's value and gradient at points, through the samplers' points program.
+
+#include <renderer/SampleCompute.h>
+#include <sampling/Sampler.h>
+#include <shaders/BuiltinShaders.h>
+#include <shaders/SdfSource.h>
+
+#include "ForeignTest.h"
+#include "GlTestContext.h"
+
+#include <glm/glm.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <unistd.h>
+
+using namespace sdfwb;
+using sdfwb::testing::firstError;
+using sdfwb::testing::kFolder;
+using sdfwb::testing::prepare;
+namespace fs = std::filesystem;
+
+namespace {
+
+class FieldParameters : public sdfwb::testing::GlTest {};
+
+// The field's value at one point at `time`, through the samplers' points program; `slope` receives
+// its gradient (six taps).
+float fieldValueAt(const shaders::PreparedSdf& sdf, glm::vec3 p, float time, glm::vec3* slope = nullptr) {
+    renderer::SampleCompute compute;
+    EXPECT_FALSE(shaders::hasErrors(compute.build(sdf, *shaders::builtinPiece("analysis/points.glsl"))));
+    sampling::SamplingJob job;
+    job.count = 1;
+    job.time = time;
+    job.inputPoints = &p.x;
+    float position[3], distance = 0.0f, gradient[3];
+    EXPECT_TRUE(sampling::sampleInto(compute, job, position, &distance, gradient, {}).hasValue());
+    compute.releaseGl();
+    if (slope) *slope = {gradient[0], gradient[1], gradient[2]};
+    return distance;
+}
+
+} // namespace
+
+
+TEST_F(FieldParameters, ThoseMainImageComputesReachTheField) {
+    shaders::PreparedSdf breathing = prepare(kFolder / "62_st_breathing_box_parameters.glsl");
+    ASSERT_TRUE(breathing.ok()) << firstError(breathing);
+    EXPECT_EQ(breathing.signature.arguments, ", grow, offset");
+    EXPECT_NE(breathing.entryReason.find("with grow, offset as mainImage computes it"), std::string::npos)
+        << breathing.entryReason;
+    shaders::PreparedSdf plate = prepare(kFolder / "61_st_tilted_plate_parameter.glsl");
+    ASSERT_TRUE(plate.ok()) << firstError(plate);
+    EXPECT_EQ(plate.signature.arguments, ", tilt");
+    auto valueAt = [](const shaders::PreparedSdf& sdf, glm::vec3 p, float time) { return fieldValueAt(sdf, p, time); };
+    const float y1 = 0.1f + 0.15f * std::sin(1.7f);
+    EXPECT_NEAR(valueAt(breathing, {0.6f, y1, 0.0f}, 1.0f), -0.2f, 1e-4f);
+    EXPECT_NEAR(valueAt(breathing, {0.6f, y1, 0.0f}, 0.0f), 0.15f * std::sin(1.7f) - 0.2f, 1e-4f);
+    EXPECT_NEAR(valueAt(plate, {0.0f, 0.47f, 0.0f}, 0.0f), -0.15f, 1e-4f);
+
+    // A march whose parameter is computed inside the marching function cannot be traced: the file
+    // then does not open, and the error says what to do.
+    const fs::path folder = fs::temp_directory_path() / ("sdfwb-foreign-params-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    std::ofstream(folder / "inner.glsl")
+        << "float field(vec3 p, vec2 r) { return length(p) - r.x; }\n"
+           "float march(vec3 ro, vec3 rd) {\n"
+           "    float t = 0.0;\n"
+           "    for (int i = 0; i < 64; i++) { vec2 r = vec2(0.5, float(i)); t += field(ro + rd * t, r); }\n"
+           "    return t;\n"
+           "}\n"
+           "void mainImage(out vec4 c, in vec2 u) { c = vec4(march(vec3(0.0, 0.0, -3.0), vec3(0.0, 0.0, 1.0))); }\n";
+    shaders::PreparedSdf inner = prepare(folder / "inner.glsl");
+    EXPECT_FALSE(inner.ok());
+    EXPECT_NE(firstError(inner).find("'r' is computed inside march"), std::string::npos) << firstError(inner);
+    fs::remove_all(folder);
+}
+
+// File-scope variables mainImage sets before the march (a radius from iTime, a rotation, a centre
+// it adds to): the wrapper runs those statements first, once per invocation. The ball is centred at
+// (0.6, 0, 0) after `p.xz *= spin` with radius 0.5 + 0.1 sin(t); without them radius, spin and ball
+// would read 0 (0.6 at that centre), and run at every call the centre would move at every tap of the
+// gradient. A glow the field only adds to and a tint set after the march are not the field's, and
+// mainImage's `vec2 p` does not clash with the wrapper's point.
+TEST_F(FieldParameters, GlobalsMainImageSetsBeforeTheMarchReachTheField) {
+    const fs::path folder = fs::temp_directory_path() / ("sdfwb-foreign-globals-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    std::ofstream(folder / "globals.glsl")
+        << "float radius;\nmat2 spin;\nvec3 tint;\nvec3 ball = vec3(0.3, 0.0, 0.0);\nfloat glow;\n"
+           "float map(vec3 p) { p.xz *= spin; glow += 0.01; return length(p - ball) - radius + 0.0 * tint.x; }\n"
+           "float march(vec3 ro, vec3 rd) {\n"
+           "    float t = 0.0;\n"
+           "    for (int i = 0; i < 100; i++) { float d = map(ro + rd * t); if (d < 0.001) break; t += d; }\n"
+           "    return t;\n"
+           "}\n"
+           "void setRadius() { radius = 0.5 + 0.1 * sin(iTime); }\n"
+           "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+           "    vec2 p = (2.0 * fragCoord - iResolution.xy) / iResolution.y;\n"
+           "    p.x *= iResolution.x / iResolution.x;\n"
+           "    glow = 0.0;\n"
+           "    setRadius();\n"
+           "    ball.x += 0.3;\n"
+           "    float a = iTime * 0.3;\n"
+           "    spin = mat2(cos(a), sin(a), -sin(a), cos(a));\n"
+           "    float t = march(vec3(0.0, 0.0, -3.0), normalize(vec3(p, 1.5)));\n"
+           "    tint = vec3(t);\n"
+           "    fragColor = vec4(tint + glow, 1.0);\n"
+           "}\n";
+    shaders::PreparedSdf sdf = prepare(folder / "globals.glsl");
+    fs::remove_all(folder);
+    ASSERT_TRUE(sdf.ok()) << firstError(sdf);
+    EXPECT_EQ(sdf.signature.entry, "map");
+    EXPECT_NE(sdf.entryReason.find("after mainImage sets ball, radius, spin"), std::string::npos) << sdf.entryReason;
+    EXPECT_EQ(sdf.entryReason.find("glow"), std::string::npos) << sdf.entryReason;
+    EXPECT_TRUE(sdf.diagnostics.empty()) << "no value the field reads comes from the pixel: "
+                                         << shaders::formatDiagnostic(sdf.diagnostics.front());
+    EXPECT_NEAR(fieldValueAt(sdf, {0.6f, 0.0f, 0.0f}, 0.0f), -0.5f, 1e-5f);
+    glm::vec3 slope(0.0f);
+    EXPECT_NEAR(fieldValueAt(sdf, {1.2f, 0.0f, 0.0f}, 0.0f, &slope), 0.1f, 1e-5f);
+    EXPECT_NEAR(slope.x, 1.0f, 1e-2f) << "the centre stays put between the gradient's taps";
+    EXPECT_NEAR(glm::length(slope), 1.0f, 1e-2f);
+    const float a = 0.3f, radius = 0.5f + 0.1f * std::sin(1.0f);
+    const float moved = std::hypot(0.6f * std::cos(a) - 0.6f, 0.6f * std::sin(a)) - radius;
+    EXPECT_NEAR(fieldValueAt(sdf, {0.6f, 0.0f, 0.0f}, 1.0f), moved, 1e-5f);
+}
+
+// A field with a parameter after the point, and a centre mainImage moves (`ball.x += 0.3;`) before
+// it calls the march: mainImage's statements run once per invocation on this path too, so the
+// centre stays put between the gradient's taps. The ball, centred at (0.6, 0, 0) with radius
+// 0.4 + 0.1 k.x and k.x = 1, reads -0.5 at its centre and has a unit gradient along x beside it; run at
+// every call, the centre would move 0.3 at every tap.
+TEST_F(FieldParameters, MainImagesStatementsRunOnceWhenTheFieldHasParameters) {
+    const fs::path folder = fs::temp_directory_path() / ("sdfwb-foreign-once-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    std::ofstream(folder / "once.glsl") << "vec3 ball = vec3(0.3, 0.0, 0.0);\n"
+                                           "float field(vec3 p, vec2 k) { return length(p - ball) - 0.4 - 0.1 * k.x; }\n"
+                                           "float march(vec3 ro, vec3 rd, vec2 k) {\n"
+                                           "    float t = 0.0;\n"
+                                           "    for (int i = 0; i < 100; i++) {\n"
+                                           "        float d = field(ro + rd * t, k);\n"
+                                           "        if (d < 0.001) break;\n"
+                                           "        t += d;\n"
+                                           "    }\n"
+                                           "    return t;\n"
+                                           "}\n"
+                                           "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                                           "    vec2 p = (2.0 * fragCoord - iResolution.xy) / iResolution.y;\n"
+                                           "    ball.x += 0.3;\n"
+                                           "    vec2 k = vec2(1.0 + 0.0 * iTime, 0.0);\n"
+                                           "    fragColor = vec4(march(vec3(0.0, 0.0, -3.0), normalize(vec3(p, 1.5)), k));\n"
+                                           "}\n";
+    shaders::PreparedSdf sdf = prepare(folder / "once.glsl");
+    fs::remove_all(folder);
+    ASSERT_TRUE(sdf.ok()) << firstError(sdf);
+    EXPECT_EQ(sdf.signature.arguments, ", k");
+    EXPECT_NEAR(fieldValueAt(sdf, {0.6f, 0.0f, 0.0f}, 0.0f), -0.5f, 1e-5f);
+    glm::vec3 slope(0.0f);
+    EXPECT_NEAR(fieldValueAt(sdf, {1.2f, 0.0f, 0.0f}, 0.0f, &slope), 0.1f, 1e-5f);
+    EXPECT_NEAR(slope.x, 1.0f, 1e-2f) << "the centre stays put between the gradient's taps";
+}
+
+// A vector field whose distance is not its x: `vec4 sdScene(vec3 p)` returning (colour, distance),
+// its march stepping by `.w` (a public atom shader's form), and a vec2 (material, distance) read
+// into a float first. The field is the component the march steps by, not the colour's red.
+TEST_F(FieldParameters, AVectorsDistanceIsTheComponentTheMarchStepsBy) {
+    const fs::path folder = fs::temp_directory_path() / ("sdfwb-foreign-component-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    auto write = [&folder](const std::string& name, const std::string& field, const std::string& loop) {
+        std::ofstream(folder / name) << field << "float march(vec3 ro, vec3 rd) {\n"
+                                     << "    float t = 0.0;\n"
+                                     << "    for (int i = 0; i < 100; i++) {\n"
+                                     << loop << "    }\n"
+                                     << "    return t;\n"
+                                     << "}\n"
+                                     << "void mainImage(out vec4 c, in vec2 u) {\n"
+                                     << "    c = vec4(march(vec3(0.0, 0.0, -3.0), vec3(0.0, 0.0, 1.0)));\n"
+                                     << "}\n";
+    };
+    write("colour.glsl", "vec4 sdScene(vec3 p) { return vec4(0.9, 0.2, 0.1, length(p) - 0.5); }\n",
+          "        vec4 ds = sdScene(ro + rd * t);\n        if (ds.w < 0.001) break;\n        t += ds.w;\n");
+    write("material.glsl", "vec2 scene(vec3 p) { return vec2(3.0, length(p) - 0.25); }\n",
+          "        vec2 h = scene(ro + rd * t);\n        float d = h.y;\n        if (d < 0.001) break;\n        t += d;\n");
+    write("first.glsl", "vec2 scene(vec3 p) { return vec2(length(p) - 0.25, 3.0); }\n",
+          "        vec2 h = scene(ro + rd * t);\n        if (h.y > 2.0 && h.x < 0.001) break;\n        t += h.x;\n");
+    const shaders::PreparedSdf colour = prepare(folder / "colour.glsl");
+    const shaders::PreparedSdf material = prepare(folder / "material.glsl");
+    const shaders::PreparedSdf first = prepare(folder / "first.glsl");
+    fs::remove_all(folder);
+    ASSERT_TRUE(colour.ok()) << firstError(colour);
+    ASSERT_TRUE(material.ok()) << firstError(material);
+    ASSERT_TRUE(first.ok()) << firstError(first);
+    EXPECT_EQ(colour.signature.member, "w");
+    EXPECT_EQ(material.signature.member, "y");
+    EXPECT_EQ(first.signature.member, "") << "a step by .x keeps the x, whatever else the loop reads";
+    EXPECT_NEAR(fieldValueAt(colour, {0.0f, 0.0f, 0.0f}, 0.0f), -0.5f, 1e-5f);
+    EXPECT_NEAR(fieldValueAt(colour, {1.0f, 0.0f, 0.0f}, 0.0f), 0.5f, 1e-5f);
+    EXPECT_NEAR(fieldValueAt(material, {1.0f, 0.0f, 0.0f}, 0.0f), 0.75f, 1e-5f);
+    EXPECT_NEAR(fieldValueAt(first, {1.0f, 0.0f, 0.0f}, 0.0f), 0.75f, 1e-5f);
+}
