@@ -556,7 +556,7 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
         SdfSignature signature = detectSignature(stripped, marched.name, returns);
         if (!marched.member.empty()) signature.member = marched.member; // the one the march reads
         if (!marched.component.empty()) signature.member = marched.component;
-        if (signature.found && !marched.globals.empty())                // what mainImage sets first, run first
+        if (signature.found && !marched.globals.empty()) // what mainImage sets first, run first
             signature.prelude = "vec2 " + (marched.coordinate.empty() ? "fragCoord" : marched.coordinate) + " = " +
                                 (mentions(stripped, "iResolution") ? "0.5 * iResolution.xy" : "vec2(0.0)") + "; vec4 " +
                                 (marched.colour.empty() ? "fragColor" : marched.colour) + " = vec4(0.0);\n" + marched.prelude;

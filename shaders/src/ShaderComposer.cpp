@@ -129,8 +129,8 @@ std::string entryWrapper(const PreparedSdf& sdf) {
             declared += traced.type + " " + traced.name + " = " + global + ";\n";
         }
         text = kept + "bool sdfwb_preludeRun = false;\nfloat sdfwb_sdf(vec3 sdfwb_point) {\n" +
-               runOnce(signature.prelude + "\n" + assigned) + "{\n" + declared + "return " + signature.entry +
-               "(sdfwb_point" + signature.arguments + ")" + value + ";\n}\n}\n";
+               runOnce(signature.prelude + "\n" + assigned) + "{\n" + declared + "return " + signature.entry + "(sdfwb_point" +
+               signature.arguments + ")" + value + ";\n}\n}\n";
     } else {
         // Out parameters get locals; a prelude alone (Fragmentarium's init(), what mainImage sets
         // before its march) runs once per invocation.

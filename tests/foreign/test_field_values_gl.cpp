@@ -48,7 +48,6 @@ float fieldValueAt(const shaders::PreparedSdf& sdf, glm::vec3 p, float time, glm
 
 } // namespace
 
-
 TEST_F(FieldParameters, ThoseMainImageComputesReachTheField) {
     shaders::PreparedSdf breathing = prepare(kFolder / "62_st_breathing_box_parameters.glsl");
     ASSERT_TRUE(breathing.ok()) << firstError(breathing);
