@@ -211,7 +211,10 @@ Args:
         winding numbers; right behind holes, flipped faces and duplicated parts), 'parity' (ray crossings) or
         'pseudonormal' (exact on closed meshes). Default '': winding.
     normalize (str): for a mesh file: 'none', 'unit-cube' (bounding box centred, longest side 2) or
-        'unit-sphere' (box centred, farthest vertex at 1). Default '': none.
+        'unit-sphere' (box centred, farthest vertex at 1). For a GLSL field: 'unit-cube' or 'unit-sphere' frame
+        its surface the same way, its box found by the field's values (a pasted scene built around its own
+        camera), and 'X0,Y0,Z0,X1,Y1,Z1' frames that box; positions and distances are then the framed
+        field's (the field's point is centre + scale * position, logged). Default '': none.
 
 Returns:
     dict: position (n, 3), distance (n,) and gradient (n, 3) as float32 NumPy arrays that own their memory
@@ -250,7 +253,7 @@ Args:
     chunk (int): points per GPU dispatch, 1 to 33554432; does not change the values. Default 0: chosen per
         driver (262144 on llvmpipe, 16777216 on a GPU).
     sign (str): for a mesh file, as for sample(). Default '': winding.
-    normalize (str): for a mesh file, as for sample(). Default '': none.
+    normalize (str): as for sample(). Default '': none.
 
 Returns:
     dict: distance (N,) float32; gradient (N, 3) float32 (raw central differences), or None when
@@ -287,7 +290,7 @@ Args:
         plateau (truncation). Default 3.
     params (Mapping[str, bool | float | Sequence[float]] | None): parameter values, as for sample(). Default None.
     sign (str): for a mesh file, as for sample(). Default '': winding.
-    normalize (str): for a mesh file, as for sample(). Default '': none.
+    normalize (str): as for sample(). Default '': none.
     probe_distance (float | None): truncation_reach's old name, still accepted. Default None.
 
 Returns:

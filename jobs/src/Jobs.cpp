@@ -1,6 +1,8 @@
 // The shared steps of every job: opening the SDF and the pure checks of each request.
 #include <jobs/Jobs.h>
 
+#include "FieldFrame.h"
+
 #include <core/Log.h>
 #include <core/Paths.h>
 #include <core/TextFile.h>
@@ -58,8 +60,11 @@ std::optional<JobError> checkSdf(const values::SdfInput& input) {
         if (!fs::is_regular_file(input.channels[n], ec)) return usage(what + "no such file");
         if (auto image = renderer::readImage(input.channels[n]); !image) return usage(what + image.error().message);
     }
-    if (auto mesh = meshfield::parseMeshFieldOptions(input.sign, input.normalize); !mesh)
+    if (isFrameBox(input.normalize)) {
+        if (auto problem = frameBoxProblem(input.normalize)) return usage(key("normalize") + ": " + *problem);
+    } else if (auto mesh = meshfield::parseMeshFieldOptions(input.sign, input.normalize); !mesh) {
         return usage(keyedSubject(mesh.error().message));
+    }
     for (const shaders::ParameterValue& p : input.params) {
         // The text form checks the name and the values (1 to 4 finite numbers).
         if (auto ok = shaders::parseParameterValue(shaders::formatParameterValue(p)); !ok || !(*ok == p))
@@ -161,9 +166,10 @@ JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& w
     options.libraryRoots = {paths::shaderLibraryRoot(), paths::datasetRoot()};
     shaders::PreparedSdf sdf;
     const bool mesh = !path->empty() && meshfield::isMeshPath(*path);
-    if (!mesh && (!input.sign.empty() || !input.normalize.empty()))
-        return usage(key(input.sign.empty() ? "normalize" : "sign") +
-                     ": applies to mesh files (.obj .ply .stl .off .glb), not '" + path->string() + "'");
+    if (!mesh && !input.sign.empty())
+        return usage(key("sign") + ": applies to mesh files (.obj .ply .stl .off .glb), not '" + path->string() + "'");
+    if (mesh && isFrameBox(input.normalize))
+        return usage(key("normalize") + ": a box frames a GLSL field; a mesh takes none, unit-cube or unit-sphere");
     if (mesh) {
         auto meshOptions = meshfield::parseMeshFieldOptions(input.sign, input.normalize);
         if (!meshOptions) return usage(keyedSubject(meshOptions.error().message));
@@ -195,6 +201,8 @@ JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& w
     auto resolved = shaders::resolveParameters(sdf.parameters, input.params);
     if (!resolved) return usage(key("params") + ": " + label + ": " + resolved.error().message);
     for (const std::string& warning : resolved->warnings) log::warning(what, warning);
+    if (!mesh)
+        if (auto error = frameField(sdf, input.normalize, resolved->settings, label, what)) return *error;
     return OpenedSdf{std::move(sdf), label, std::move(resolved->settings), std::move(resolved->warnings)};
 }
 

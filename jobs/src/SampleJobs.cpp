@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 
 namespace sdfwb::jobs {
@@ -82,6 +83,12 @@ JobResult<values::SampleReport> run(const values::SampleRequest& request, const 
     if (request.nearTruncation > 0.0f) metadata.pattern += " truncate " + std::to_string(request.nearTruncation);
     metadata.version = SDFWB_VERSION;
     metadata.mesh = sdf->meshSource().json;
+    if (const shaders::PreparedSdf::Frame& frame = sdf->prepared.frame; !(frame == shaders::PreparedSdf::Frame{})) {
+        char numbers[160];
+        std::snprintf(numbers, sizeof numbers, "\"centre\": [%.9g, %.9g, %.9g], \"scale\": %.9g", frame.centre[0],
+                      frame.centre[1], frame.centre[2], frame.scale);
+        metadata.frame = "{\"normalize\": \"" + request.sdf.normalize + "\", " + numbers + "}";
+    }
     const bool family = !request.family.empty();
     const std::uint64_t total = job.rows() * instances.size();
     std::vector<std::string> written;

@@ -42,7 +42,8 @@ public:
                              " rows written");
         const std::uint32_t count = std::uint32_t(m_rows);
         if (auto ok = m_file.writeAt(0, &count, 4); !ok) return ok;
-        if (!m_metadata.parameters.empty() || !m_metadata.mesh.empty()) { // the sidecar first: a .bin never appears without it
+        if (!m_metadata.parameters.empty() || !m_metadata.mesh.empty() ||
+            !m_metadata.frame.empty()) { // the sidecar first: a .bin never appears without it
             auto sidecar = OutputFile::create(m_file.target().string() + ".json");
             if (!sidecar) return sidecar.error();
             const std::string text = metadataJson(m_metadata) + "\n";

@@ -209,6 +209,7 @@ public:
                    stringArray("version.npy", metadata.version)};
         if (!metadata.parameters.empty()) m_small.push_back(stringArray("parameters.npy", metadata.parameters));
         if (!metadata.mesh.empty()) m_small.push_back(stringArray("mesh.npy", metadata.mesh));
+        if (!metadata.frame.empty()) m_small.push_back(stringArray("frame.npy", metadata.frame));
     }
 
     Expected<void> append(const float* positions, const float* distances, const float* gradients, std::size_t n) override {
@@ -602,6 +603,7 @@ std::optional<SampleMetadata> readNpzMetadata(const InputFile& file, const std::
     readString("version", metadata.version);
     readString("parameters", metadata.parameters);
     readString("mesh", metadata.mesh);
+    readString("frame", metadata.frame);
     readUnsigned("seed", metadata.seed);
     readUnsigned("first_index", metadata.firstIndex);
     readUnsigned("total_count", metadata.totalCount);

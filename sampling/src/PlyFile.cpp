@@ -34,6 +34,7 @@ std::string header(std::uint64_t rows, const SampleMetadata& m) {
     out += "comment sdfwb version " + singleLine(m.version) + "\n";
     if (!m.parameters.empty()) out += "comment sdfwb parameters " + singleLine(m.parameters) + "\n";
     if (!m.mesh.empty()) out += "comment sdfwb mesh " + singleLine(m.mesh) + "\n";
+    if (!m.frame.empty()) out += "comment sdfwb frame " + singleLine(m.frame) + "\n";
     out += "element vertex " + std::to_string(rows) + "\n";
     for (const char* property : kProperties) out += std::string("property float ") + property + "\n";
     // Large files: rows start at a multiple of 4096 bytes (a comment line of spaces pads the
@@ -172,6 +173,8 @@ bool readMetadataComment(const std::string& comment, SampleMetadata& metadata, s
             metadata.parameters = value;
         else if (key == "mesh")
             metadata.mesh = value;
+        else if (key == "frame")
+            metadata.frame = value;
     } catch (const std::exception&) { return false; }
     return true;
 }

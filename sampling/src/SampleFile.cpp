@@ -63,7 +63,8 @@ std::string metadataJson(const SampleMetadata& m) {
            ", \"first_index\": " + std::to_string(m.firstIndex) + ", \"total_count\": " + std::to_string(m.totalCount) +
            ", \"version\": " + jsonString(m.version) +
            ", \"parameters\": " + (m.parameters.empty() ? std::string("{}") : m.parameters) +
-           (m.mesh.empty() ? std::string() : ", \"mesh\": " + m.mesh) + "}";
+           (m.mesh.empty() ? std::string() : ", \"mesh\": " + m.mesh) +
+           (m.frame.empty() ? std::string() : ", \"frame\": " + m.frame) + "}";
 }
 
 std::uint64_t maxRows(SampleFormat format) {
@@ -195,9 +196,9 @@ Expected<MergeReport> mergeSampleFiles(const fs::path& output, SampleFormat form
             const SampleMetadata& m = *readers[i]->metadata();
             const std::string& name = parts[i].string();
             if (m.sdf != first.sdf || m.pattern != first.pattern || m.seed != first.seed || m.time != first.time ||
-                m.totalCount != first.totalCount || m.mesh != first.mesh)
+                m.totalCount != first.totalCount || m.mesh != first.mesh || m.frame != first.frame)
                 return makeError("merge: " + name +
-                                 " belongs to a different run (sdf, pattern, seed, time, N or mesh options differ from " +
+                                 " belongs to a different run (sdf, pattern, seed, time, N, mesh options or frame differ from " +
                                  parts[order[0]].string() + ")");
             if (m.firstIndex != expected)
                 return makeError("merge: " + name + " starts at sample " + std::to_string(m.firstIndex) + ", expected " +

@@ -344,24 +344,31 @@ struct GlobalUse : glslang::TIntermTraverser {
 // A field without parameters after the point that reads file-scope variables mainImage sets before
 // it calls the marching function (`radius = 0.5 + 0.1 * sin(iTime); spin = rot(iTime);`, or in a
 // function it calls first): the wrapper runs those statements of mainImage first, as it does for
-// parameters (traceArguments). Fills `m`'s prelude and globals; leaves them empty when mainImage does
-// not call the marching function at the top of its body.
-void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate* marcher, TIntermAggregate* mainImage,
-                  const ComposedShader& composed, const Functions& functions) {
+// parameters (traceArguments). Where mainImage marches itself, the statements before its loop
+// (`lights[2].rotMat = rotate(...);`). Fills `m`'s prelude and globals; leaves them empty when
+// mainImage does not call the marching function (or hold its loop) at the top of its body.
+void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate* marcher, TIntermLoop* loop,
+                  TIntermAggregate* mainImage, const ComposedShader& composed, const Functions& functions) {
     TIntermAggregate* body = mainImage->getSequence().size() > 1 ? mainImage->getSequence()[1]->getAsAggregate() : nullptr;
-    if (marcher == mainImage || !body) return;
+    if (!body) return;
     GlobalUse reads(functions);
     reads.entered.insert(field->getName().c_str());
     field->traverse(&reads);
     GlobalUse sets(functions);
-    TIntermAggregate* marcherCall = nullptr;
+    TIntermNode* marcherCall = nullptr; // the call of the marching function, or mainImage's own march loop
     for (TIntermNode* statement : body->getSequence()) {
-        for (TIntermAggregate* c : contentsOf(statement).calls)
-            if (c->getName() == marcher->getName()) marcherCall = c;
-        if (marcherCall) {
-            if (statement->getAsLoopNode() || statement->getAsSelectionNode() || statement->getAsBranchNode()) return;
-            break;
+        if (marcher == mainImage) { // the loop at the top of its body (`for (float t = 0.; ...)` is a sequence)
+            TIntermAggregate* sequence = statement->getAsAggregate();
+            if (statement == loop || (sequence && sequence->getOp() == glslang::EOpSequence && !sequence->getSequence().empty() &&
+                                      sequence->getSequence().back() == loop))
+                marcherCall = loop;
+        } else {
+            for (TIntermAggregate* c : contentsOf(statement).calls)
+                if (c->getName() == marcher->getName()) marcherCall = c;
+            if (marcherCall && (statement->getAsLoopNode() || statement->getAsSelectionNode() || statement->getAsBranchNode()))
+                return;
         }
+        if (marcherCall) break;
         statement->traverse(&sets);
     }
     if (!marcherCall) return;
@@ -373,8 +380,9 @@ void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate*
     const std::string text = stripComments(composed.map.files[std::size_t(file)].text);
     std::string before;
     int callLineNumber = marcherCall->getLoc().line;
-    if (callArguments(text, callLineNumber, plainName(marcher->getName()), &before, &callLineNumber).empty() ||
-        before.find_first_of(";{}") != std::string::npos)
+    if (marcher != mainImage &&
+        (callArguments(text, callLineNumber, plainName(marcher->getName()), &before, &callLineNumber).empty() ||
+         before.find_first_of(";{}") != std::string::npos))
         return;
     const std::size_t open = bodyOpen(text, mainImage), callLine = lineStart(text, callLineNumber);
     if (open == std::string::npos || callLine == std::string::npos || open >= callLine ||
@@ -663,7 +671,7 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                     if (component > 0) entry->component = std::string(1, "xyzw"[component]);
                     if (mainImage) traceArguments(*entry, call, callee->second, function, mainImage, composed);
                     if (mainImage && entry->extraParameters <= 0)
-                        traceGlobals(*entry, callee->second, function, mainImage, composed, tree.functions);
+                        traceGlobals(*entry, callee->second, function, loop, mainImage, composed, tree.functions);
                 }
                 ++entry->loops;
             }

@@ -146,7 +146,19 @@ std::string entryWrapper(const PreparedSdf& sdf) {
     }
     // The user's macros end with the user's code: what follows is the workbench's.
     for (const std::string& macro : sdf.macros) text += "#undef " + macro + "\n";
-    return text;
+    if (sdf.frame == PreparedSdf::Frame{}) return text;
+    // Framed (PreparedSdf::frame): the wrapper above becomes the unframed field.
+    text.replace(text.find("float sdfwb_sdf("), 16, "float sdfwb_unframed(");
+    auto number = [](float value) { // a GLSL float literal: 4 is written 4.0
+        char digits[32];
+        std::snprintf(digits, sizeof digits, "%.9g", value);
+        std::string literal = digits;
+        return literal.find_first_of(".e") == std::string::npos ? literal + ".0" : literal;
+    };
+    const std::string scale = number(sdf.frame.scale);
+    return text + "float sdfwb_sdf(vec3 sdfwb_framed) { return sdfwb_unframed(vec3(" + number(sdf.frame.centre[0]) + ", " +
+           number(sdf.frame.centre[1]) + ", " + number(sdf.frame.centre[2]) + ") + " + scale + " * sdfwb_framed) / " + scale +
+           "; }\n";
 }
 
 const char* stageName(Stage stage) {

@@ -657,6 +657,22 @@ TEST(EntryPoint, ParametersMainImageComputesAreTracedAndThosePerPixelWarned) {
     EXPECT_EQ(pixel.diagnostics[0].line, 4);
     EXPECT_NE(pixel.diagnostics[0].message.find("field reads 'k', which mainImage computes for each pixel"), std::string::npos)
         << pixel.diagnostics[0].message;
+
+    // mainImage that marches itself: the statements before its loop set what the field reads.
+    PreparedSdf own = prepare("float radius;\nfloat map(vec3 p) { return length(p) - radius; }\n"
+                              "void mainImage(out vec4 c, in vec2 u) {\n"
+                              "    radius = 0.5 + 0.1 * sin(iTime);\n"
+                              "    float t = 0.0;\n"
+                              "    for (int i = 0; i < 64; i++) {\n"
+                              "        float d = map(vec3(0.0, 0.0, -3.0) + vec3(0.0, 0.0, 1.0) * t);\n"
+                              "        if (d < 1e-3) break;\n"
+                              "        t += d;\n"
+                              "    }\n"
+                              "    c = vec4(t);\n"
+                              "}\n");
+    ASSERT_TRUE(own.ok()) << (own.diagnostics.empty() ? "" : formatDiagnostic(own.diagnostics.front()));
+    EXPECT_NE(own.entryReason.find("after mainImage sets radius"), std::string::npos) << own.entryReason;
+    EXPECT_NE(entryWrapper(own).find("radius = 0.5 + 0.1 * sin(iTime);"), std::string::npos) << entryWrapper(own);
 }
 
 // File-scope variables mainImage sets before the march: named on the entry line, run once in a

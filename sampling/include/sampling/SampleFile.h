@@ -43,6 +43,11 @@ struct SampleMetadata {
     // (file -> field, column-major 4x4) and the file's bounds ([min xyz, max xyz]); empty for GLSL
     // SDFs. Stored like `parameters` (npz `mesh`, PLY comment, .bin sidecar).
     std::string mesh;
+    // A framed GLSL field (--normalize: shaders::PreparedSdf::frame) as a JSON object
+    // {"normalize": ..., "centre": [x, y, z], "scale": s}: a row's position p is the field's point
+    // centre + scale * p, its distance and gradient the field's divided by scale and as they are.
+    // Empty when the field is not framed. Stored like `mesh` (npz `frame`, PLY comment, sidecar).
+    std::string frame;
 };
 
 // The metadata as one JSON object (the .bin sidecar's content).

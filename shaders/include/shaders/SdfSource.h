@@ -114,6 +114,15 @@ struct PreparedSdf {
     // The SDF is the mesh's own field (its generated text, unedited): its zero set is the mesh's
     // triangles, so the surface and near samplers draw points on them instead of marching rays.
     bool meshIsTheField = false;
+    // A GLSL field seen through a frame (--normalize for a field whose surface lies outside
+    // [-1, 1]^3): the field's point is centre + scale * p and its value is divided by scale, so
+    // the framed field is still a distance and every command sees it in the unit box.
+    struct Frame {
+        std::array<float, 3> centre{0.0f, 0.0f, 0.0f};
+        float scale = 1.0f;
+        bool operator==(const Frame&) const = default;
+    };
+    Frame frame;
 
     bool ok() const { return !hasErrors(diagnostics); }
     // Needs a time value each frame: sdf(vec3, float) or the G3D scene time uniform.

@@ -1,0 +1,96 @@
+#include "FieldFrame.h"
+
+#include <core/Log.h>
+#include <sampling/FieldEvaluator.h>
+#include <sampling/SurfaceBox.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace sdfwb::jobs {
+namespace {
+
+std::vector<float> boxNumbers(const std::string& text) {
+    std::vector<float> numbers;
+    std::stringstream in(text);
+    for (std::string item; std::getline(in, item, ',');) {
+        char* end = nullptr;
+        const float value = std::strtof(item.c_str(), &end);
+        if (item.empty() || end == item.c_str() || *end != '\0' || !std::isfinite(value)) return {};
+        numbers.push_back(value);
+    }
+    return numbers;
+}
+
+std::string formatted(const char* format, double a, double b, double c) {
+    char text[160];
+    std::snprintf(text, sizeof text, format, a, b, c);
+    return text;
+}
+
+} // namespace
+
+bool isFrameBox(const std::string& normalize) { return normalize.find(',') != std::string::npos; }
+
+std::optional<std::string> frameBoxProblem(const std::string& normalize) {
+    const std::vector<float> n = boxNumbers(normalize);
+    if (n.size() != 6)
+        return "'" + normalize + "': expected none, unit-cube, unit-sphere or a box X0,Y0,Z0,X1,Y1,Z1 (six finite numbers)";
+    for (int a = 0; a < 3; ++a)
+        if (!(n[std::size_t(a)] < n[std::size_t(a) + 3]))
+            return "'" + normalize + "': each low corner's number must be below the high corner's";
+    return std::nullopt;
+}
+
+std::optional<JobError> frameField(shaders::PreparedSdf& sdf, const std::string& normalize,
+                                   const std::vector<shaders::ParameterSetting>& parameters, const std::string& label,
+                                   const std::string& what) {
+    if (normalize.empty() || normalize == "none") return std::nullopt;
+    shaders::PreparedSdf::Frame frame;
+    if (isFrameBox(normalize)) {
+        if (auto problem = frameBoxProblem(normalize)) return usageError(key("normalize") + ": " + *problem);
+        const std::vector<float> n = boxNumbers(normalize);
+        frame.scale = 0.0f;
+        for (std::size_t a = 0; a < 3; ++a) {
+            frame.centre[a] = 0.5f * (n[a] + n[a + 3]);
+            frame.scale = std::max(frame.scale, 0.5f * (n[a + 3] - n[a]));
+        }
+    } else {
+        const auto start = std::chrono::steady_clock::now();
+        sampling::FieldEvaluator evaluator;
+        if (shaders::hasErrors(evaluator.build(sdf)))
+            return workError(KeyedText(what + ": " + label + ": the field does not compile for the surface search of ") +
+                             key("normalize"));
+        sampling::FieldSettings settings;
+        settings.parameters = parameters;
+        auto found = sampling::findSurfaceBox(evaluator, settings);
+        evaluator.releaseGl();
+        if (!found) return workError(KeyedText(what + ": " + label + ": ") + key("normalize") + ": " + found.error().message);
+        if (!*found)
+            return workError(KeyedText(what + ": " + label + ": ") + key("normalize") + " " + normalize +
+                             ": no surface within [-64, 64]^3 (no value changes sign between "
+                             "neighbours of a 40^3 lattice); give the box to frame as X0,Y0,Z0,X1,Y1,Z1");
+        const sampling::SurfaceBox& box = **found;
+        frame.centre = box.centre;
+        frame.scale = 0.0f;
+        for (int a = 0; a < 3; ++a)
+            frame.scale = std::max(frame.scale, 0.5f * (box.high[std::size_t(a)] - box.low[std::size_t(a)]));
+        if (normalize == "unit-sphere") frame.scale = box.radius;
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        log::info(what, label + ": the surface lies in [" + formatted("%.4g, %.4g, %.4g", box.low[0], box.low[1], box.low[2]) +
+                            "] - [" + formatted("%.4g, %.4g, %.4g", box.high[0], box.high[1], box.high[2]) + "] (" +
+                            std::to_string(box.points) + " crossings of a 40^3 lattice over [-" +
+                            formatted("%g, %g]^3, %.2f s)", box.searched, box.searched, seconds));
+    }
+    sdf.frame = frame;
+    char line[200];
+    std::snprintf(line, sizeof line, "(%.6g, %.6g, %.6g) + %.6g p, its values divided by %.6g", frame.centre[0], frame.centre[1],
+                  frame.centre[2], frame.scale, frame.scale);
+    log::info(what, label + ": framed (normalize " + normalize + "): [-1, 1]^3 shows the field at " + line);
+    return std::nullopt;
+}
+
+} // namespace sdfwb::jobs

@@ -1,0 +1,28 @@
+#pragma once
+// --normalize for a GLSL field (jobs::openSdf): the frame (shaders::PreparedSdf::frame) a box
+// gives, or the box of the field's surface found by its values (sampling/SurfaceBox.h).
+
+#include <jobs/Jobs.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sdfwb::jobs {
+
+// Whether `normalize` is a box X0,Y0,Z0,X1,Y1,Z1 rather than a word (none, unit-cube, unit-sphere).
+bool isFrameBox(const std::string& normalize);
+
+// What is wrong with a box `normalize` (six finite numbers, each low below its high), for the key
+// 'normalize'; nullopt when it is a good box.
+std::optional<std::string> frameBoxProblem(const std::string& normalize);
+
+// Frames the GLSL field `sdf` as `normalize` asks: nothing for "none"; a box: its longest side onto
+// [-1, 1], centred; unit-cube or unit-sphere: the surface's box (its longest side onto [-1, 1]) or
+// the sphere round its centre that holds it (onto the unit sphere), found at time 0 with
+// `parameters`. Needs a current GL context for the search. Logs the frame under `what`.
+std::optional<JobError> frameField(shaders::PreparedSdf& sdf, const std::string& normalize,
+                                   const std::vector<shaders::ParameterSetting>& parameters, const std::string& label,
+                                   const std::string& what);
+
+} // namespace sdfwb::jobs

@@ -1,0 +1,31 @@
+#pragma once
+// Where a field's surface lies, found by its values: for framing a GLSL field whose surface is not
+// in [-1, 1]^3 (a pasted Shadertoy scene built around its own camera), as --normalize frames a mesh.
+
+#include <core/Expected.h>
+#include <sampling/FieldEvaluator.h>
+
+#include <array>
+#include <optional>
+
+namespace sdfwb::sampling {
+
+struct SurfaceBox {
+    std::array<float, 3> low{}, high{}; // the box of where the surface crosses the lattice, grown by a cell
+    std::array<float, 3> centre{};      // the box's centre
+    float radius = 0.0f;                // the farthest crossing from the centre, plus a cell
+    float searched = 0.0f;              // the half side of the cube the points were found in
+    float cell = 0.0f;                  // that cube's lattice spacing
+    int points = 0;                     // the crossings (lattice edges the surface cuts)
+};
+
+// Cubes centred at the origin of half side 1, 2, 4, ... 64, each on a 40^3 lattice (values only),
+// and in each where the surface crosses the lattice's edges: the zero between neighbours whose values
+// have opposite signs (a glow's density, above 0 everywhere, has none).
+// The first cube whose crossings stay off its faces gives the box (a bounded scene seen whole); where
+// every cube's crossings reach its faces (a floor, an endless repetition), the smallest cube with any.
+// None (nullopt): no surface in the largest cube (a glow's density, a field never 0). `evaluator`
+// is built with the field; a current GL context is needed.
+Expected<std::optional<SurfaceBox>> findSurfaceBox(FieldEvaluator& evaluator, const FieldSettings& settings);
+
+} // namespace sdfwb::sampling
