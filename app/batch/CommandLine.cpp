@@ -93,26 +93,6 @@ CLI::Validator wholeNumberCheck(bool positive, std::string as = {}) {
         positive ? "POSITIVE INTEGER" : "INTEGER >= 0");
 }
 
-// --normalize: a word, or a box of six finite numbers (jobs' checks say more about a bad box).
-CLI::Validator normalizeCheck() {
-    return CLI::Validator(
-        [](std::string& text) -> std::string {
-            if (text == "none" || text == "unit-cube" || text == "unit-sphere") return {};
-            int numbers = 0;
-            std::stringstream in(text);
-            for (std::string item; std::getline(in, item, ',');) {
-                char* end = nullptr;
-                const double value = std::strtod(item.c_str(), &end);
-                if (end == item.c_str() || *end != '\0' || !std::isfinite(value))
-                    return "expected none, unit-cube, unit-sphere or X0,Y0,Z0,X1,Y1,Z1, got '" + text + "'";
-                ++numbers;
-            }
-            if (numbers != 6) return "expected none, unit-cube, unit-sphere or X0,Y0,Z0,X1,Y1,Z1, got '" + text + "'";
-            return {};
-        },
-        "none|unit-cube|unit-sphere|BOX");
-}
-
 // --entry NAME: a GLSL identifier that is not reserved (main, gl_*, sdfwb_*).
 CLI::Validator entryCheck() {
     return CLI::Validator(
@@ -171,8 +151,8 @@ void addSdfOptions(Command& app, values::SdfInput& input) {
     app.add_option("--normalize", input.normalize,
                    "none (default); unit-cube or unit-sphere: a mesh's box centred, longest side 2 (or farthest vertex "
                    "at 1), a GLSL field's surface framed the same way (its box found by the field's values: a pasted "
-                   "scene built around its own camera); X0,Y0,Z0,X1,Y1,Z1 (GLSL): that box framed, longest side 2")
-        ->check(normalizeCheck());
+                   "scene built around its own camera); X0,Y0,Z0,X1,Y1,Z1 (GLSL): that box framed, longest side 2");
+    // (checked with the request: jobs::checkSdf)
     addEntryOption(app, input.entry);
     CLI::Option* channel = app.add_option_function<std::vector<std::string>>(
         "--channel",

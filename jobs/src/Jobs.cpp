@@ -62,6 +62,10 @@ std::optional<JobError> checkSdf(const values::SdfInput& input) {
     }
     if (isFrameBox(input.normalize)) {
         if (auto problem = frameBoxProblem(input.normalize)) return usage(key("normalize") + ": " + *problem);
+    } else if (!input.normalize.empty() && input.normalize != "none" && input.normalize != "unit-cube" &&
+               input.normalize != "unit-sphere") {
+        return usage(key("normalize") + ": expected none, unit-cube, unit-sphere or a box X0,Y0,Z0,X1,Y1,Z1, got '" +
+                     input.normalize + "'");
     } else if (auto mesh = meshfield::parseMeshFieldOptions(input.sign, input.normalize); !mesh) {
         return usage(keyedSubject(mesh.error().message));
     }
