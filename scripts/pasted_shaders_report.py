@@ -55,6 +55,14 @@ def run(command):
 POINT_FUNCTION = re.compile(r"\b(?:float|vec2|vec4|[A-Z]\w*)\s+\w+\s*\(\s*(?:in\s+|const\s+)*vec3\s+\w+")
 
 
+def changes_sign(npz):
+    import numpy
+    with numpy.load(npz) as rows_file:
+        distances = rows_file["distance"]
+    finite = distances[numpy.isfinite(distances)]
+    return bool(finite.size) and bool((finite < 0).any() and (finite > 0).any())
+
+
 def first_error(text):
     return text.replace("|", "\\|")[:160]
 
@@ -79,19 +87,21 @@ with tempfile.TemporaryDirectory() as scratch:
         sampled = sample_code == 0
         # Whether the field changes sign among the 2,000 rows: a surface in the box (a glow's
         # density never does).
-        surface = False
-        if sampled:
-            import numpy
-            with numpy.load(os.path.join(scratch, "rows.npz")) as rows_file:
-                distances = rows_file["distance"]
-            finite = distances[numpy.isfinite(distances)]
-            surface = bool(finite.size) and bool((finite < 0).any() and (finite > 0).any())
+        surface = sampled and changes_sign(os.path.join(scratch, "rows.npz"))
+        # Without one in [-1, 1]^3: the same run framed by the surface's box (--normalize unit-cube),
+        # "yes" when the framed rows change sign, "none" when no surface was found within [-64, 64]^3.
+        framed = ""
+        if sampled and not surface:
+            framed_code, framed_error, _ = run([BINARY, "--batch", "sample", "--sdf", path, "--normalize", "unit-cube",
+                                                "--pattern", "rand", "-n", "2000", "--output", os.path.join(scratch, "framed.npz")])
+            framed = ("yes" if changes_sign(os.path.join(scratch, "framed.npz")) else "no") if framed_code == 0 else (
+                "none" if "no surface within" in framed_error else "failed")
         renders += rendered
         samples += sampled
         both += rendered and sampled
         problem = "" if rendered and sampled else first_error(error if not rendered else sample_error)
         inline = not POINT_FUNCTION.search(open(path, errors="replace").read())
-        rows.append((name, entry, rendered, sampled, problem, inline, surface, host))
+        rows.append((name, entry, rendered, sampled, problem, inline, surface, host, framed))
         print(f"{name}: render {'ok' if rendered else 'FAILED'}, sample {'ok' if sampled else 'FAILED'} {entry} {problem}",
               flush=True)
 
@@ -106,7 +116,12 @@ summary = (f"{len(rows)} shaders: {renders} render ({100 * renders / n:.1f} %), 
            f"write their field inline in a march loop, {len(inline_ok)} "
            f"({100 * len(inline_ok) / max(len(inlines), 1):.1f} %), and the field of "
            f"{sum(1 for row in inline_ok if row[6])} of those changes sign in the box (a surface; a glow's density "
-           f"does not). Surface: the 2,000 sampled values hold both signs")
+           f"does not). Surface: the 2,000 sampled values hold both signs. Of the "
+           f"{sum(1 for row in rows if row[3] and not row[6])} that sample without a surface in [-1, 1]^3, "
+           f"{sum(1 for row in rows if row[8] == 'yes')} have one once framed (`--normalize unit-cube`: the box of "
+           f"their surface, found by their values, framed as the unit box); "
+           f"{sum(1 for row in rows if row[8] == 'none')} have none within [-64, 64]^3 (glows, fields drawn from "
+           f"textures or the pixel)")
 print(summary)
 if DOC:
     renderer = subprocess.run([BINARY, "--batch", "audit", "--sdf", "sphere", "--samples", "64"], capture_output=True, text=True,
@@ -136,11 +151,11 @@ if DOC:
             out.write("Sources (GitHub repositories, files): " +
                       ", ".join(f"{repo} ({count})" for repo, count in sorted(repos.items(), key=lambda kv: -kv[1])) + ".\n\n")
         out.write(summary + ".\n\n| file | " + ("host | " if HOSTS else "") +
-                  "entry | render | sample | surface | first error |\n|---|" + ("---|" if HOSTS else "") +
-                  "---|---|---|---|---|\n")
-        for name, entry, rendered, sampled, problem, inline_field, surface, host in rows:
+                  "entry | render | sample | surface | framed | first error |\n|---|" + ("---|" if HOSTS else "") +
+                  "---|---|---|---|---|---|\n")
+        for name, entry, rendered, sampled, problem, inline_field, surface, host, framed in rows:
             out.write(f"| {name} | " + (f"{host or '-'} | " if HOSTS else "") +
                       f"{entry or ('none: inline field' if inline_field else 'by name')} | "
-                      f"{'yes' if rendered else 'no'} | {'yes' if sampled else 'no'} | {'yes' if surface else 'no'} | "
+                      f"{'yes' if rendered else 'no'} | {'yes' if sampled else 'no'} | {'yes' if surface else 'no'} | {framed or '-'} | "
                       f"{problem or '-'} |\n")
     print(f"wrote {DOC}")
