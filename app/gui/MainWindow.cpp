@@ -260,6 +260,7 @@ void MainWindow::connectDocument() {
         m_document->textEdited(m_editor->text());
         updateTitle();
     });
+    connect(m_document, &SdfDocument::sdfApplied, this, &MainWindow::updateTitle); // the frame is decided with the check
     connect(m_document, &SdfDocument::diagnosticsChanged, this, [this](const std::vector<shaders::Diagnostic>& diagnostics) {
         QString path = m_document->path().isEmpty() ? QString("<editor>") : m_document->path();
         m_editor->setDiagnostics(diagnostics, path);
@@ -592,7 +593,9 @@ void MainWindow::updateTitle() {
         m_document->isMesh()
             ? tr(" [mesh: sign %1, normalize %2; not saved]").arg(m_document->meshSign(), m_document->meshNormalize())
         : FileController::isShipped(m_document->path()) ? tr(" [shipped, read-only: Save asks for a new name]")
-                                                        : QString();
+        : !m_document->frame().isEmpty()
+            ? tr(" [its surface lies outside [-1, 1]^3: framed by the box %1]").arg(m_document->frame())
+            : QString();
     setWindowTitle(QString("%1%2%3 - sdfwb").arg(name, m_document->isModified() ? "*" : "", shipped));
 }
 

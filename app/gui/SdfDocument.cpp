@@ -1,7 +1,10 @@
 #include "SdfDocument.h"
 
+#include <core/Log.h>
 #include <core/Paths.h>
+#include <jobs/Jobs.h>
 #include <meshfield/MeshField.h>
+#include <renderer/HeadlessContext.h>
 #include <renderer/SdfRenderer.h>
 #include <shaders/GlslChecker.h>
 #include <shaders/LoopLimits.h>
@@ -69,6 +72,8 @@ values::SdfInput SdfDocument::input() const {
     if (isMesh()) {
         input.sign = m_meshSign.toStdString();
         input.normalize = m_meshNormalize.toStdString();
+    } else {
+        input.normalize = m_frame.toStdString();
     }
     return input;
 }
@@ -76,6 +81,22 @@ values::SdfInput SdfDocument::input() const {
 bool SdfDocument::isMesh() const { return !m_path.isEmpty() && meshfield::isMeshPath(m_path.toStdString()); }
 
 namespace {
+
+// The frame of a GLSL field (SdfDocument::frame): `kept` when it was decided for this file and entry,
+// else decided now by a search of the field's values in an EGL context of this worker thread. The
+// field is framed by it (jobs::frameField, as --normalize frames it for the jobs).
+std::string decideFrame(shaders::PreparedSdf& prepared, const std::string* kept, const std::string& label) {
+    std::string frame;
+    if (kept) {
+        frame = *kept;
+    } else if (auto context = renderer::HeadlessContext::create()) {
+        frame = jobs::frameBoxOutsideUnitBox(prepared, {});
+        (*context)->doneCurrent();
+        if (!frame.empty()) log::info("app", "the surface lies outside [-1, 1]^3: framed by the box " + frame);
+    }
+    if (!frame.empty()) jobs::frameField(prepared, frame, {}, label, "app"); // a box: no GL, no failure
+    return frame;
+}
 
 // The document's text over its mesh: what the jobs' openSdf builds from the same input.
 shaders::PreparedSdf prepareOverMesh(const std::string& source, const std::string& path, const std::string& entry,
@@ -122,19 +143,24 @@ void SdfDocument::startCheck(const QString& text) {
     const auto channels = m_channels;
     const bool mesh = isMesh();
     std::string sign = m_meshSign.toStdString(), normalize = m_meshNormalize.toStdString();
+    std::string frame = m_frame.toStdString(), decidedFor = m_frameDecidedFor.toStdString();
     // glslang checks the variant the viewport will compile (shading, AO, plane, markers, ...).
     const shaders::TracerFeatures features =
         m_features ? m_features(m_plane) : renderer::tracerFeatures(values::ShadingSettings{}, values::TraceSettings{}, m_plane);
     QPointer<SdfDocument> self(this);
     QThreadPool::globalInstance()->start([self, generation, source = std::move(source), path = std::move(path),
                                           entry = std::move(entry), features, channels, mesh, sign = std::move(sign),
-                                          normalize = std::move(normalize)] {
+                                          normalize = std::move(normalize), frame = std::move(frame),
+                                          decidedFor = std::move(decidedFor)]() mutable {
         shaders::IncludeOptions options;
         options.libraryRoots = {paths::shaderLibraryRoot(), paths::datasetRoot()};
         shaders::PreparedSdf prepared = mesh
                                             ? prepareOverMesh(source, path, entry, sign, normalize)
                                             : shaders::prepareSdf(source, path.empty() ? "<editor>" : path, path, options, entry);
         prepared.channels = channels;
+        const std::string frameFor = path + "\n" + prepared.signature.entry;
+        const bool decided = !mesh && prepared.ok();
+        if (decided) frame = decideFrame(prepared, frameFor == decidedFor ? &frame : nullptr, path.empty() ? "<editor>" : path);
         std::vector<shaders::Diagnostic> diagnostics = prepared.diagnostics;
         if (prepared.ok()) {
             auto composed = shaders::composeTracer(prepared, features);
@@ -150,8 +176,14 @@ void SdfDocument::startCheck(const QString& text) {
         }
         QMetaObject::invokeMethod(
             QCoreApplication::instance(),
-            [self, generation, prepared = std::move(prepared), diagnostics = std::move(diagnostics)]() mutable {
-                if (self) self->finishCheck(generation, std::move(prepared), std::move(diagnostics));
+            [self, generation, prepared = std::move(prepared), diagnostics = std::move(diagnostics), frame, frameFor,
+             decided]() mutable {
+                if (!self) return;
+                if (decided && generation == self->m_generation) {
+                    self->m_frame = QString::fromStdString(frame);
+                    self->m_frameDecidedFor = QString::fromStdString(frameFor);
+                }
+                self->finishCheck(generation, std::move(prepared), std::move(diagnostics));
             },
             Qt::QueuedConnection);
         // Autocompletion entries come second: they are not on the path to the diagnostics.

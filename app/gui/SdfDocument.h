@@ -57,6 +57,11 @@ public:
     }
     const QString& meshSign() const { return m_meshSign; }
     const QString& meshNormalize() const { return m_meshNormalize; }
+    // A GLSL field whose surface lies outside [-1, 1]^3 (a pasted scene built around its own camera):
+    // the box X0,Y0,Z0,X1,Y1,Z1 it is framed by (shaders::PreparedSdf::frame), decided by the first
+    // check of each file and entry function (jobs::frameBoxOutsideUnitBox) and passed to jobs as
+    // --normalize; empty when the field is shown as it is.
+    const QString& frame() const { return m_frame; }
 
     // The editor's latest text, and the text the viewport shows (the last that compiled and
     // passed its timing frame, or the one before when the viewport fell back from a stalling one).
@@ -160,6 +165,7 @@ private:
     bool m_reverted = false;
     QString m_entry;
     QString m_meshSign, m_meshNormalize;
+    QString m_frame, m_frameDecidedFor; // the frame, and the file and entry it was decided for
     std::array<std::string, shaders::kShadertoyChannels> m_channels;
     QTimer m_debounce;
     std::uint64_t m_generation = 0;

@@ -93,4 +93,22 @@ std::optional<JobError> frameField(shaders::PreparedSdf& sdf, const std::string&
     return std::nullopt;
 }
 
+std::string frameBoxOutsideUnitBox(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters) {
+    if (sdf.mesh || !sdf.ok()) return {};
+    sampling::FieldEvaluator evaluator;
+    if (shaders::hasErrors(evaluator.build(sdf))) return {};
+    sampling::FieldSettings settings;
+    settings.parameters = parameters;
+    auto found = sampling::findSurfaceBox(evaluator, settings);
+    evaluator.releaseGl();
+    if (!found || !*found || (*found)->searched <= 1.0f) return {};
+    const sampling::SurfaceBox& box = **found;
+    float half = 0.0f;
+    for (std::size_t a = 0; a < 3; ++a) half = std::max(half, 0.5f * (box.high[a] - box.low[a]));
+    char text[200];
+    std::snprintf(text, sizeof text, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", box.centre[0] - half, box.centre[1] - half,
+                  box.centre[2] - half, box.centre[0] + half, box.centre[1] + half, box.centre[2] + half);
+    return text;
+}
+
 } // namespace sdfwb::jobs

@@ -17,12 +17,9 @@ bool isFrameBox(const std::string& normalize);
 // 'normalize'; nullopt when it is a good box.
 std::optional<std::string> frameBoxProblem(const std::string& normalize);
 
-// Frames the GLSL field `sdf` as `normalize` asks: nothing for "none"; a box: its longest side onto
-// [-1, 1], centred; unit-cube or unit-sphere: the surface's box (its longest side onto [-1, 1]) or
-// the sphere round its centre that holds it (onto the unit sphere), found at time 0 with
-// `parameters`. Needs a current GL context for the search. Logs the frame under `what`.
-std::optional<JobError> frameField(shaders::PreparedSdf& sdf, const std::string& normalize,
-                                   const std::vector<shaders::ParameterSetting>& parameters, const std::string& label,
-                                   const std::string& what);
+// frameField (jobs/Jobs.h) frames the GLSL field as `normalize` asks: nothing for "none"; a box:
+// its longest side onto [-1, 1], centred; unit-cube or unit-sphere: the surface's box (its longest
+// side onto [-1, 1]) or the sphere round its centre that holds it (onto the unit sphere), found at
+// time 0 with the parameters.
 
 } // namespace sdfwb::jobs

@@ -532,3 +532,62 @@ TEST(Shadertoy, PastedShaderTracesItsMapAndShowsItsOwnPicture) {
     EXPECT_FALSE(action->isEnabled());
     EXPECT_TRUE(isBackground(frameOf(window).pixelColor(2, 2)));
 }
+
+// A pasted scene built around its own camera (a ball at z = 5, outside [-1, 1]^3): the workbench
+// frames it by its surface's box, so the ball fills the view instead of an empty box; the title
+// says so and the jobs get the same frame. A dataset file is shown as it is.
+TEST(Shadertoy, ASceneOutsideTheUnitBoxIsFramed) {
+    const QString folder = QDir::temp().filePath(QString("sdfwb-gui-frame-%1").arg(QCoreApplication::applicationPid()));
+    QDir().mkpath(folder);
+    const QString path = folder + "/far_ball.glsl";
+    {
+        QFile file(path);
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+        file.write("float map(vec3 p) { return length(p - vec3(0.0, 0.0, 5.0)) - 1.0; }\n"
+                   "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                   "    vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;\n"
+                   "    vec3 ro = vec3(0.0), rd = normalize(vec3(uv, 1.5));\n"
+                   "    float t = 0.0;\n"
+                   "    for (int i = 0; i < 100; i++) {\n"
+                   "        float d = map(ro + rd * t);\n"
+                   "        if (d < 0.001) break;\n"
+                   "        t += d;\n"
+                   "    }\n"
+                   "    fragColor = vec4(vec3(1.0 / (1.0 + t)), 1.0);\n"
+                   "}\n");
+    }
+    app::MainWindow window;
+    window.resize(1000, 640);
+    window.show();
+    ASSERT_TRUE(activate(window));
+    auto open = [&](const QString& file) {
+        bool applied = false;
+        auto connection = QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
+        const bool ok = window.openFile(file) && waitFor([&] { return applied; });
+        QObject::disconnect(connection);
+        return ok &&
+               waitFor([&] { return window.viewport()->lastFrameMilliseconds() > 0.0 && !window.viewport()->isInteracting(); });
+    };
+    auto isBackground = [](QColor c) {
+        return std::abs(c.redF() - kBackground.redF()) < 0.03 && std::abs(c.greenF() - kBackground.greenF()) < 0.03 &&
+               std::abs(c.blueF() - kBackground.blueF()) < 0.03;
+    };
+    ASSERT_TRUE(open(path));
+    const QString frame = window.document()->frame();
+    ASSERT_FALSE(frame.isEmpty()) << "the ball has no surface in [-1, 1]^3";
+    const QStringList corners = frame.split(',');
+    ASSERT_EQ(corners.size(), 6);
+    EXPECT_NEAR(0.5 * (corners[2].toDouble() + corners[5].toDouble()), 5.0, 0.05) << frame.toStdString();
+    EXPECT_TRUE(window.windowTitle().contains("framed by the box")) << window.windowTitle().toStdString();
+    EXPECT_EQ(window.document()->input().normalize, frame.toStdString()) << "the jobs run the framed field";
+    const QImage framed = fullResolutionFrame(window);
+    if (QString shot = screenshotPath("framed_scene.png"); !shot.isEmpty()) windowShot(window).save(shot);
+    EXPECT_FALSE(isBackground(framed.pixelColor(framed.width() / 2, framed.height() / 2))) << "the ball is drawn";
+    EXPECT_TRUE(isBackground(framed.pixelColor(2, 2)));
+
+    ASSERT_TRUE(open(datasetFile("Geometry/Sphere.glsl")));
+    EXPECT_TRUE(window.document()->frame().isEmpty());
+    EXPECT_TRUE(window.document()->input().normalize.empty());
+    EXPECT_FALSE(window.windowTitle().contains("framed"));
+    QDir(folder).removeRecursively();
+}

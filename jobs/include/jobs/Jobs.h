@@ -76,6 +76,18 @@ struct OpenedSdf {
 // (Usage naming the parameter). `what` starts the failure message ("render", "audit", ...).
 JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& what);
 
+// For the workbench: the box X0,Y0,Z0,X1,Y1,Z1 (as --normalize takes it) that frames a GLSL field
+// with no surface in [-1, 1]^3 but one within [-64, 64]^3 (sampling/SurfaceBox.h), centred on it
+// with its longest side; empty when the surface crosses the unit box, there is none or the search
+// fails. Needs a current GL context.
+std::string frameBoxOutsideUnitBox(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters);
+
+// Frames `sdf` as --normalize `normalize` asks for a GLSL field (shaders::PreparedSdf::frame): a
+// box needs no GL; unit-cube and unit-sphere search (a current GL context). Logs under `what`.
+std::optional<JobError> frameField(shaders::PreparedSdf& sdf, const std::string& normalize,
+                                   const std::vector<shaders::ParameterSetting>& parameters, const std::string& label,
+                                   const std::string& what);
+
 std::optional<JobError> validate(const values::RenderRequest& request);
 std::optional<JobError> validate(const values::AnimateRequest& request);
 std::optional<JobError> validate(const values::SampleRequest& request);
