@@ -87,7 +87,7 @@ Args:
     params (Mapping[str, bool | float | Sequence[float]] | None): parameter values, as for sample(). Default None.
     sign (str): for a mesh file, as for sample() (meshing a broken mesh's winding-number inside gives a
         watertight mesh). Default '': winding.
-    normalize (str): as for sample(). Default '': none.
+    normalize (str): for a mesh file, as for sample(). Default '': none.
     refine (int): 0 to 4: times every triangle is cut into four after extraction, each new vertex stepped onto
         the exact surface. On smooth surfaces each level quarters the error (as doubling the resolution does) at
         far less cost; creases stay where the grid put them. Default 0.
