@@ -106,7 +106,7 @@ std::string frameBoxOutsideUnitBox(const shaders::PreparedSdf& sdf, const std::v
     float half = 0.0f;
     for (std::size_t a = 0; a < 3; ++a) half = std::max(half, 0.5f * (box.high[a] - box.low[a]));
     char text[200];
-    std::snprintf(text, sizeof text, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", box.centre[0] - half, box.centre[1] - half,
+    std::snprintf(text, sizeof text, "%.5g,%.5g,%.5g,%.5g,%.5g,%.5g", box.centre[0] - half, box.centre[1] - half,
                   box.centre[2] - half, box.centre[0] + half, box.centre[1] + half, box.centre[2] + half);
     return text;
 }

@@ -207,6 +207,12 @@ JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& w
     for (const std::string& warning : resolved->warnings) log::warning(what, warning);
     if (!mesh)
         if (auto error = frameField(sdf, input.normalize, resolved->settings, label, what)) return *error;
+    // A pasted Shadertoy scene built around its own camera: without a surface in the unit box its
+    // pictures are empty and its samples never change sign. Said, not changed: the frame is asked for.
+    if (!mesh && sdf.shadertoyMainImage && (input.normalize.empty() || input.normalize == "none"))
+        if (const std::string box = frameBoxOutsideUnitBox(sdf, resolved->settings); !box.empty())
+            log::warning(what, label + ": the field has no surface in [-1, 1]^3; it lies in the box " + box +
+                                   ": --normalize unit-cube frames it (or --normalize " + box + ")");
     return OpenedSdf{std::move(sdf), label, std::move(resolved->settings), std::move(resolved->warnings)};
 }
 

@@ -136,6 +136,28 @@ TEST(BatchFrame, AFieldsSurfaceOutsideTheUnitBoxIsFramedByItsValues) {
     EXPECT_TRUE(fs::exists(picture));
 }
 
+// A whole Shadertoy shader whose surface is outside the unit box: the run says so and names the
+// option, and writes the field as it is. A dataset file, whose surface is in the box, is not searched.
+TEST(BatchFrame, APastedSceneOutsideTheUnitBoxIsWarnedAbout) {
+    const fs::path pasted = writeShader("pasted.glsl", std::string(kBall) + "void mainImage(out vec4 c, in vec2 u) {\n"
+                                                                            "    float t = 0.0;\n"
+                                                                            "    for (int i = 0; i < 64; i++) {\n"
+                                                                            "        float d = sdf(vec3(0.0, 0.0, 1.0) * t);\n"
+                                                                            "        if (d < 0.001) break;\n"
+                                                                            "        t += d;\n"
+                                                                            "    }\n"
+                                                                            "    c = vec4(t);\n"
+                                                                            "}\n");
+    const fs::path out = scratch("pasted.npz");
+    Result r = run("--batch sample --sdf " + pasted.string() + " --pattern rand -n 100 -o " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("the field has no surface in [-1, 1]^3; it lies in the box"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("--normalize unit-cube frames it"), std::string::npos) << r.output;
+    r = run("--batch sample --sdf sphere --pattern rand -n 100 -o " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.output.find("no surface in"), std::string::npos) << r.output;
+}
+
 TEST(BatchFrame, BadBoxesAndFieldsWithoutASurfaceAreNamedAndWriteNothing) {
     const fs::path ball = writeShader("ball2.glsl", kBall);
     const fs::path glow = writeShader("glow.glsl", "float sdf(vec3 p) { return 0.2 + 0.1 * sin(p.x); }\n");
