@@ -119,7 +119,13 @@ std::string keywordTerm(const std::string& path) {
 }
 
 jobs::OpenedSdf prepare(const values::SdfInput& input) {
-    auto opened = jobs::openSdf(input, "sdfwb");
+    // Opening may evaluate the field (a GLSL field's --normalize, the check of a pasted scene's box).
+    auto opened = [&] {
+        py::gil_scoped_release release;
+        std::lock_guard lock(g_glMutex);
+        context();
+        return jobs::openSdf(input, "sdfwb");
+    }();
     if (!opened) raise(opened.error);
     return *opened.report;
 }

@@ -1,6 +1,7 @@
 #include "FieldFrame.h"
 
 #include <core/Log.h>
+#include <renderer/HeadlessContext.h>
 #include <sampling/FieldEvaluator.h>
 #include <sampling/SurfaceBox.h>
 
@@ -60,6 +61,9 @@ std::optional<JobError> frameField(shaders::PreparedSdf& sdf, const std::string&
         }
     } else {
         const auto start = std::chrono::steady_clock::now();
+        if (!renderer::HeadlessContext::anyCurrent())
+            return workError(KeyedText(what + ": " + label + ": ") + key("normalize") + " " + normalize +
+                             " searches the field's values and needs a GL context");
         sampling::FieldEvaluator evaluator;
         if (shaders::hasErrors(evaluator.build(sdf)))
             return workError(KeyedText(what + ": " + label + ": the field does not compile for the surface search of ") +
@@ -94,7 +98,7 @@ std::optional<JobError> frameField(shaders::PreparedSdf& sdf, const std::string&
 }
 
 std::string frameBoxOutsideUnitBox(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters) {
-    if (sdf.mesh || !sdf.ok()) return {};
+    if (sdf.mesh || !sdf.ok() || !renderer::HeadlessContext::anyCurrent()) return {};
     sampling::FieldEvaluator evaluator;
     if (shaders::hasErrors(evaluator.build(sdf))) return {};
     sampling::FieldSettings settings;

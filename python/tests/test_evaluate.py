@@ -34,6 +34,33 @@ def test_evaluate_is_bit_equal_to_the_samplers(sdf, pattern, entry):
     assert np.array_equal(field_only["distance"], rows["distance"], equal_nan=True)
 
 
+# A scene built around its own camera, as pasted from Shadertoy: the ball at z = 5 has no surface
+# in [-1, 1]^3 until it is framed.
+FAR_BALL = """
+float map(vec3 p) { return length(p - vec3(0.0, 0.0, 5.0)) - 1.0; }
+void mainImage(out vec4 c, in vec2 u) {
+    float t = 0.0;
+    for (int i = 0; i < 64; i++) { float d = map(vec3(0.0, 0.0, 1.0) * t); if (d < 0.001) break; t += d; }
+    c = vec4(t);
+}
+"""
+
+
+def test_a_glsl_field_outside_the_unit_box_is_framed():
+    plain = sdfwb.sample(FAR_BALL, "rand", 2000, seed=1)
+    assert (plain["distance"] > 0).all()
+    framed = sdfwb.sample(FAR_BALL, "rand", 2000, seed=1, normalize="-2,-2,3,2,2,7")
+    point = framed["position"].astype(np.float64) * 2.0 + [0.0, 0.0, 5.0]  # centre (0, 0, 5), scale 2
+    exact = (np.linalg.norm(point - [0.0, 0.0, 5.0], axis=1) - 1.0) / 2.0
+    assert np.abs(framed["distance"] - exact).max() < 1e-5
+    assert (framed["distance"] < 0).any()
+    # Framed by its surface's box: the unit box's centre is near the ball's.
+    found = sdfwb.evaluate(FAR_BALL, np.zeros((1, 3), np.float32), normalize="unit-cube")
+    assert found["distance"][0] < -0.5
+    with pytest.raises(ValueError, match="normalize"):
+        sdfwb.sample(FAR_BALL, "rand", 10, normalize="1,2,3")
+
+
 def test_evaluate_matches_the_exact_field_in_float64():
     # The Shadertoy map above, evaluated here in float64 NumPy at 100,000 points of the cube: values
     # to float32 rounding, and the gradients against the same central differences (step 1e-3) in

@@ -144,6 +144,8 @@ HeadlessContext::~HeadlessContext() {
 
 void HeadlessContext::doneCurrent() { eglMakeCurrent(m_display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT); }
 
+bool HeadlessContext::anyCurrent() { return eglGetCurrentContext() != EGL_NO_CONTEXT; }
+
 bool HeadlessContext::makeCurrent() { return eglMakeCurrent(m_display, EGL_NO_SURFACE, EGL_NO_SURFACE, m_context) == EGL_TRUE; }
 
 } // namespace sdfwb::renderer

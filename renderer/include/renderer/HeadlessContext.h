@@ -25,6 +25,9 @@ public:
     bool makeCurrent();
     // Releases the context from the calling thread, so another thread may make it current.
     void doneCurrent();
+    // Whether an EGL context (this class's or another's) is current on the calling thread: GL work
+    // a caller may skip (a search that only informs) checks it rather than abort in the loader.
+    static bool anyCurrent();
 
     const GlInfo& info() const { return m_info; }
     const std::string& platform() const { return m_platform; } // "surfaceless" or "device"
