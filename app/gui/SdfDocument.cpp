@@ -159,8 +159,12 @@ void SdfDocument::startCheck(const QString& text) {
                                             : shaders::prepareSdf(source, path.empty() ? "<editor>" : path, path, options, entry);
         prepared.channels = channels;
         const std::string frameFor = path + "\n" + prepared.signature.entry;
+        // Framed only when a pasted whole shader's surface lies outside the unit box.
         const bool decided = !mesh && prepared.ok();
-        if (decided) frame = decideFrame(prepared, frameFor == decidedFor ? &frame : nullptr, path.empty() ? "<editor>" : path);
+        if (decided)
+            frame = prepared.shadertoyMainImage
+                        ? decideFrame(prepared, frameFor == decidedFor ? &frame : nullptr, path.empty() ? "<editor>" : path)
+                        : std::string();
         std::vector<shaders::Diagnostic> diagnostics = prepared.diagnostics;
         if (prepared.ok()) {
             auto composed = shaders::composeTracer(prepared, features);
