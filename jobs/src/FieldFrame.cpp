@@ -26,6 +26,29 @@ std::vector<float> boxNumbers(const std::string& text) {
     return numbers;
 }
 
+// The field's surface box at time 0 (sampling::findSurfaceBox). With `outsideOnly`, none where the
+// surface crosses [-1, 1]^3: that cube alone is searched first, so a field whose surface crosses it
+// (every dataset file, most pasted scenes) costs one lattice, not one of each size (a floor
+// reaches every cube's faces). One compile either way.
+Expected<std::optional<sampling::SurfaceBox>>
+searchSurface(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters, bool outsideOnly) {
+    sampling::FieldEvaluator evaluator;
+    if (shaders::hasErrors(evaluator.build(sdf))) return makeError("the field does not compile for the surface search");
+    sampling::FieldSettings settings;
+    settings.parameters = parameters;
+    if (outsideOnly)
+        if (auto inside = sampling::findSurfaceBox(evaluator, settings, 1.0f); !inside || *inside)
+            return inside ? Expected<std::optional<sampling::SurfaceBox>>(std::nullopt) : inside;
+    return sampling::findSurfaceBox(evaluator, settings); // the evaluator releases its GL objects
+}
+
+// Half the longest side of `box`: the scale that frames it as [-1, 1]^3.
+float halfSide(const sampling::SurfaceBox& box) {
+    float half = 0.0f;
+    for (std::size_t a = 0; a < 3; ++a) half = std::max(half, 0.5f * (box.high[a] - box.low[a]));
+    return half;
+}
+
 std::string formatted(const char* format, double a, double b, double c) {
     char text[160];
     std::snprintf(text, sizeof text, format, a, b, c);
@@ -64,14 +87,7 @@ std::optional<JobError> frameField(shaders::PreparedSdf& sdf, const std::string&
         if (!renderer::HeadlessContext::anyCurrent())
             return workError(KeyedText(what + ": " + label + ": ") + key("normalize") + " " + normalize +
                              " searches the field's values and needs a GL context");
-        sampling::FieldEvaluator evaluator;
-        if (shaders::hasErrors(evaluator.build(sdf)))
-            return workError(KeyedText(what + ": " + label + ": the field does not compile for the surface search of ") +
-                             key("normalize"));
-        sampling::FieldSettings settings;
-        settings.parameters = parameters;
-        auto found = sampling::findSurfaceBox(evaluator, settings);
-        evaluator.releaseGl();
+        auto found = searchSurface(sdf, parameters, false);
         if (!found) return workError(KeyedText(what + ": " + label + ": ") + key("normalize") + ": " + found.error().message);
         if (!*found)
             return workError(KeyedText(what + ": " + label + ": ") + key("normalize") + " " + normalize +
@@ -79,9 +95,7 @@ std::optional<JobError> frameField(shaders::PreparedSdf& sdf, const std::string&
                              "neighbours of a 40^3 lattice); give the box to frame as X0,Y0,Z0,X1,Y1,Z1");
         const sampling::SurfaceBox& box = **found;
         frame.centre = box.centre;
-        frame.scale = 0.0f;
-        for (int a = 0; a < 3; ++a)
-            frame.scale = std::max(frame.scale, 0.5f * (box.high[std::size_t(a)] - box.low[std::size_t(a)]));
+        frame.scale = halfSide(box);
         if (normalize == "unit-sphere") frame.scale = box.radius;
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         log::info(what, label + ": the surface lies in [" + formatted("%.4g, %.4g, %.4g", box.low[0], box.low[1], box.low[2]) +
@@ -99,16 +113,10 @@ std::optional<JobError> frameField(shaders::PreparedSdf& sdf, const std::string&
 
 std::string frameBoxOutsideUnitBox(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters) {
     if (sdf.mesh || !sdf.ok() || !renderer::HeadlessContext::anyCurrent()) return {};
-    sampling::FieldEvaluator evaluator;
-    if (shaders::hasErrors(evaluator.build(sdf))) return {};
-    sampling::FieldSettings settings;
-    settings.parameters = parameters;
-    auto found = sampling::findSurfaceBox(evaluator, settings);
-    evaluator.releaseGl();
-    if (!found || !*found || (*found)->searched <= 1.0f) return {};
+    auto found = searchSurface(sdf, parameters, true);
+    if (!found || !*found) return {};
     const sampling::SurfaceBox& box = **found;
-    float half = 0.0f;
-    for (std::size_t a = 0; a < 3; ++a) half = std::max(half, 0.5f * (box.high[a] - box.low[a]));
+    const float half = halfSide(box);
     char text[200];
     std::snprintf(text, sizeof text, "%.5g,%.5g,%.5g,%.5g,%.5g,%.5g", box.centre[0] - half, box.centre[1] - half,
                   box.centre[2] - half, box.centre[0] + half, box.centre[1] + half, box.centre[2] + half);

@@ -37,12 +37,11 @@ std::vector<std::array<float, 3>> surfaceCrossings(const std::vector<float>& val
 
 } // namespace
 
-Expected<std::optional<SurfaceBox>> findSurfaceBox(FieldEvaluator& evaluator, const FieldSettings& settings) {
-    constexpr float kLargest = 64.0f;
+Expected<std::optional<SurfaceBox>> findSurfaceBox(FieldEvaluator& evaluator, const FieldSettings& settings, float largest) {
     const std::size_t count = std::size_t(kSide) * kSide * kSide;
     std::vector<float> points(3 * count), values(count);
     std::optional<SurfaceBox> first; // the smallest cube's box, where every cube's touches its faces
-    for (float half = 1.0f; half <= kLargest; half *= 2.0f) {
+    for (float half = 1.0f; half <= largest; half *= 2.0f) {
         const float cell = 2.0f * half / float(kSide - 1);
         for (int k = 0; k < kSide; ++k)
             for (int j = 0; j < kSide; ++j)

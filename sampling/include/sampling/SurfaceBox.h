@@ -24,8 +24,10 @@ struct SurfaceBox {
 // have opposite signs (a glow's density, above 0 everywhere, has none).
 // The first cube whose crossings stay off its faces gives the box (a bounded scene seen whole); where
 // every cube's crossings reach its faces (a floor, an endless repetition), the smallest cube with any.
-// None (nullopt): no surface in the largest cube (a glow's density, a field never 0). `evaluator`
+// None (nullopt): no surface in the largest cube (a glow's density, a field never 0). `largest`
+// (a power of 2) bounds the cubes: 1 asks only whether the surface crosses [-1, 1]^3. `evaluator`
 // is built with the field; a current GL context is needed.
-Expected<std::optional<SurfaceBox>> findSurfaceBox(FieldEvaluator& evaluator, const FieldSettings& settings);
+Expected<std::optional<SurfaceBox>> findSurfaceBox(FieldEvaluator& evaluator, const FieldSettings& settings,
+                                                   float largest = 64.0f);
 
 } // namespace sdfwb::sampling
