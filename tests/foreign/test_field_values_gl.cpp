@@ -46,6 +46,16 @@ float fieldValueAt(const shaders::PreparedSdf& sdf, glm::vec3 p, float time, glm
     return distance;
 }
 
+// `text` opened as a user's file named `name` (in a folder of this process's own, removed after).
+shaders::PreparedSdf prepareText(const std::string& name, const std::string& text) {
+    const fs::path folder = fs::temp_directory_path() / ("sdfwb-field-values-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    std::ofstream(folder / name) << text;
+    shaders::PreparedSdf sdf = prepare(folder / name);
+    fs::remove_all(folder);
+    return sdf;
+}
+
 } // namespace
 
 TEST_F(FieldParameters, ThoseMainImageComputesReachTheField) {
@@ -65,20 +75,16 @@ TEST_F(FieldParameters, ThoseMainImageComputesReachTheField) {
 
     // A march whose parameter is computed inside the marching function cannot be traced: the file
     // then does not open, and the error says what to do.
-    const fs::path folder = fs::temp_directory_path() / ("sdfwb-foreign-params-" + std::to_string(::getpid()));
-    fs::create_directories(folder);
-    std::ofstream(folder / "inner.glsl")
-        << "float field(vec3 p, vec2 r) { return length(p) - r.x; }\n"
-           "float march(vec3 ro, vec3 rd) {\n"
-           "    float t = 0.0;\n"
-           "    for (int i = 0; i < 64; i++) { vec2 r = vec2(0.5, float(i)); t += field(ro + rd * t, r); }\n"
-           "    return t;\n"
-           "}\n"
-           "void mainImage(out vec4 c, in vec2 u) { c = vec4(march(vec3(0.0, 0.0, -3.0), vec3(0.0, 0.0, 1.0))); }\n";
-    shaders::PreparedSdf inner = prepare(folder / "inner.glsl");
+    shaders::PreparedSdf inner = prepareText(
+        "inner.glsl", "float field(vec3 p, vec2 r) { return length(p) - r.x; }\n"
+                      "float march(vec3 ro, vec3 rd) {\n"
+                      "    float t = 0.0;\n"
+                      "    for (int i = 0; i < 64; i++) { vec2 r = vec2(0.5, float(i)); t += field(ro + rd * t, r); }\n"
+                      "    return t;\n"
+                      "}\n"
+                      "void mainImage(out vec4 c, in vec2 u) { c = vec4(march(vec3(0.0, 0.0, -3.0), vec3(0.0, 0.0, 1.0))); }\n");
     EXPECT_FALSE(inner.ok());
     EXPECT_NE(firstError(inner).find("'r' is computed inside march"), std::string::npos) << firstError(inner);
-    fs::remove_all(folder);
 }
 
 // File-scope variables mainImage sets before the march (a radius from iTime, a rotation, a centre
@@ -88,31 +94,27 @@ TEST_F(FieldParameters, ThoseMainImageComputesReachTheField) {
 // gradient. A glow the field only adds to and a tint set after the march are not the field's, and
 // mainImage's `vec2 p` does not clash with the wrapper's point.
 TEST_F(FieldParameters, GlobalsMainImageSetsBeforeTheMarchReachTheField) {
-    const fs::path folder = fs::temp_directory_path() / ("sdfwb-foreign-globals-" + std::to_string(::getpid()));
-    fs::create_directories(folder);
-    std::ofstream(folder / "globals.glsl")
-        << "float radius;\nmat2 spin;\nvec3 tint;\nvec3 ball = vec3(0.3, 0.0, 0.0);\nfloat glow;\n"
-           "float map(vec3 p) { p.xz *= spin; glow += 0.01; return length(p - ball) - radius + 0.0 * tint.x; }\n"
-           "float march(vec3 ro, vec3 rd) {\n"
-           "    float t = 0.0;\n"
-           "    for (int i = 0; i < 100; i++) { float d = map(ro + rd * t); if (d < 0.001) break; t += d; }\n"
-           "    return t;\n"
-           "}\n"
-           "void setRadius() { radius = 0.5 + 0.1 * sin(iTime); }\n"
-           "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
-           "    vec2 p = (2.0 * fragCoord - iResolution.xy) / iResolution.y;\n"
-           "    p.x *= iResolution.x / iResolution.x;\n"
-           "    glow = 0.0;\n"
-           "    setRadius();\n"
-           "    ball.x += 0.3;\n"
-           "    float a = iTime * 0.3;\n"
-           "    spin = mat2(cos(a), sin(a), -sin(a), cos(a));\n"
-           "    float t = march(vec3(0.0, 0.0, -3.0), normalize(vec3(p, 1.5)));\n"
-           "    tint = vec3(t);\n"
-           "    fragColor = vec4(tint + glow, 1.0);\n"
-           "}\n";
-    shaders::PreparedSdf sdf = prepare(folder / "globals.glsl");
-    fs::remove_all(folder);
+    shaders::PreparedSdf sdf = prepareText(
+        "globals.glsl", "float radius;\nmat2 spin;\nvec3 tint;\nvec3 ball = vec3(0.3, 0.0, 0.0);\nfloat glow;\n"
+                        "float map(vec3 p) { p.xz *= spin; glow += 0.01; return length(p - ball) - radius + 0.0 * tint.x; }\n"
+                        "float march(vec3 ro, vec3 rd) {\n"
+                        "    float t = 0.0;\n"
+                        "    for (int i = 0; i < 100; i++) { float d = map(ro + rd * t); if (d < 0.001) break; t += d; }\n"
+                        "    return t;\n"
+                        "}\n"
+                        "void setRadius() { radius = 0.5 + 0.1 * sin(iTime); }\n"
+                        "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                        "    vec2 p = (2.0 * fragCoord - iResolution.xy) / iResolution.y;\n"
+                        "    p.x *= iResolution.x / iResolution.x;\n"
+                        "    glow = 0.0;\n"
+                        "    setRadius();\n"
+                        "    ball.x += 0.3;\n"
+                        "    float a = iTime * 0.3;\n"
+                        "    spin = mat2(cos(a), sin(a), -sin(a), cos(a));\n"
+                        "    float t = march(vec3(0.0, 0.0, -3.0), normalize(vec3(p, 1.5)));\n"
+                        "    tint = vec3(t);\n"
+                        "    fragColor = vec4(tint + glow, 1.0);\n"
+                        "}\n");
     ASSERT_TRUE(sdf.ok()) << firstError(sdf);
     EXPECT_EQ(sdf.signature.entry, "map");
     EXPECT_NE(sdf.entryReason.find("after mainImage sets ball, radius, spin"), std::string::npos) << sdf.entryReason;
@@ -135,27 +137,24 @@ TEST_F(FieldParameters, GlobalsMainImageSetsBeforeTheMarchReachTheField) {
 // 0.4 + 0.1 k.x and k.x = 1, reads -0.5 at its centre and has a unit gradient along x beside it; run at
 // every call, the centre would move 0.3 at every tap.
 TEST_F(FieldParameters, MainImagesStatementsRunOnceWhenTheFieldHasParameters) {
-    const fs::path folder = fs::temp_directory_path() / ("sdfwb-foreign-once-" + std::to_string(::getpid()));
-    fs::create_directories(folder);
-    std::ofstream(folder / "once.glsl") << "vec3 ball = vec3(0.3, 0.0, 0.0);\n"
-                                           "float field(vec3 p, vec2 k) { return length(p - ball) - 0.4 - 0.1 * k.x; }\n"
-                                           "float march(vec3 ro, vec3 rd, vec2 k) {\n"
-                                           "    float t = 0.0;\n"
-                                           "    for (int i = 0; i < 100; i++) {\n"
-                                           "        float d = field(ro + rd * t, k);\n"
-                                           "        if (d < 0.001) break;\n"
-                                           "        t += d;\n"
-                                           "    }\n"
-                                           "    return t;\n"
-                                           "}\n"
-                                           "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
-                                           "    vec2 p = (2.0 * fragCoord - iResolution.xy) / iResolution.y;\n"
-                                           "    ball.x += 0.3;\n"
-                                           "    vec2 k = vec2(1.0 + 0.0 * iTime, 0.0);\n"
-                                           "    fragColor = vec4(march(vec3(0.0, 0.0, -3.0), normalize(vec3(p, 1.5)), k));\n"
-                                           "}\n";
-    shaders::PreparedSdf sdf = prepare(folder / "once.glsl");
-    fs::remove_all(folder);
+    shaders::PreparedSdf sdf =
+        prepareText("once.glsl", "vec3 ball = vec3(0.3, 0.0, 0.0);\n"
+                                 "float field(vec3 p, vec2 k) { return length(p - ball) - 0.4 - 0.1 * k.x; }\n"
+                                 "float march(vec3 ro, vec3 rd, vec2 k) {\n"
+                                 "    float t = 0.0;\n"
+                                 "    for (int i = 0; i < 100; i++) {\n"
+                                 "        float d = field(ro + rd * t, k);\n"
+                                 "        if (d < 0.001) break;\n"
+                                 "        t += d;\n"
+                                 "    }\n"
+                                 "    return t;\n"
+                                 "}\n"
+                                 "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                                 "    vec2 p = (2.0 * fragCoord - iResolution.xy) / iResolution.y;\n"
+                                 "    ball.x += 0.3;\n"
+                                 "    vec2 k = vec2(1.0 + 0.0 * iTime, 0.0);\n"
+                                 "    fragColor = vec4(march(vec3(0.0, 0.0, -3.0), normalize(vec3(p, 1.5)), k));\n"
+                                 "}\n");
     ASSERT_TRUE(sdf.ok()) << firstError(sdf);
     EXPECT_EQ(sdf.signature.arguments, ", k");
     EXPECT_NEAR(fieldValueAt(sdf, {0.6f, 0.0f, 0.0f}, 0.0f), -0.5f, 1e-5f);
@@ -168,29 +167,23 @@ TEST_F(FieldParameters, MainImagesStatementsRunOnceWhenTheFieldHasParameters) {
 // its march stepping by `.w` (a public atom shader's form), and a vec2 (material, distance) read
 // into a float first. The field is the component the march steps by, not the colour's red.
 TEST_F(FieldParameters, AVectorsDistanceIsTheComponentTheMarchStepsBy) {
-    const fs::path folder = fs::temp_directory_path() / ("sdfwb-foreign-component-" + std::to_string(::getpid()));
-    fs::create_directories(folder);
-    auto write = [&folder](const std::string& name, const std::string& field, const std::string& loop) {
-        std::ofstream(folder / name) << field << "float march(vec3 ro, vec3 rd) {\n"
-                                     << "    float t = 0.0;\n"
-                                     << "    for (int i = 0; i < 100; i++) {\n"
-                                     << loop << "    }\n"
-                                     << "    return t;\n"
-                                     << "}\n"
-                                     << "void mainImage(out vec4 c, in vec2 u) {\n"
-                                     << "    c = vec4(march(vec3(0.0, 0.0, -3.0), vec3(0.0, 0.0, 1.0)));\n"
-                                     << "}\n";
+    auto shader = [](const std::string& name, const std::string& field, const std::string& loop) {
+        return prepareText(name, field +
+                                     "float march(vec3 ro, vec3 rd) {\n    float t = 0.0;\n"
+                                     "    for (int i = 0; i < 100; i++) {\n" +
+                                     loop +
+                                     "    }\n    return t;\n}\nvoid mainImage(out vec4 c, in vec2 u) {\n"
+                                     "    c = vec4(march(vec3(0.0, 0.0, -3.0), vec3(0.0, 0.0, 1.0)));\n}\n");
     };
-    write("colour.glsl", "vec4 sdScene(vec3 p) { return vec4(0.9, 0.2, 0.1, length(p) - 0.5); }\n",
-          "        vec4 ds = sdScene(ro + rd * t);\n        if (ds.w < 0.001) break;\n        t += ds.w;\n");
-    write("material.glsl", "vec2 scene(vec3 p) { return vec2(3.0, length(p) - 0.25); }\n",
-          "        vec2 h = scene(ro + rd * t);\n        float d = h.y;\n        if (d < 0.001) break;\n        t += d;\n");
-    write("first.glsl", "vec2 scene(vec3 p) { return vec2(length(p) - 0.25, 3.0); }\n",
-          "        vec2 h = scene(ro + rd * t);\n        if (h.y > 2.0 && h.x < 0.001) break;\n        t += h.x;\n");
-    const shaders::PreparedSdf colour = prepare(folder / "colour.glsl");
-    const shaders::PreparedSdf material = prepare(folder / "material.glsl");
-    const shaders::PreparedSdf first = prepare(folder / "first.glsl");
-    fs::remove_all(folder);
+    const shaders::PreparedSdf colour =
+        shader("colour.glsl", "vec4 sdScene(vec3 p) { return vec4(0.9, 0.2, 0.1, length(p) - 0.5); }\n",
+               "        vec4 ds = sdScene(ro + rd * t);\n        if (ds.w < 0.001) break;\n        t += ds.w;\n");
+    const shaders::PreparedSdf material =
+        shader("material.glsl", "vec2 scene(vec3 p) { return vec2(3.0, length(p) - 0.25); }\n",
+               "        vec2 h = scene(ro + rd * t);\n        float d = h.y;\n        if (d < 0.001) break;\n        t += d;\n");
+    const shaders::PreparedSdf first =
+        shader("first.glsl", "vec2 scene(vec3 p) { return vec2(length(p) - 0.25, 3.0); }\n",
+               "        vec2 h = scene(ro + rd * t);\n        if (h.y > 2.0 && h.x < 0.001) break;\n        t += h.x;\n");
     ASSERT_TRUE(colour.ok()) << firstError(colour);
     ASSERT_TRUE(material.ok()) << firstError(material);
     ASSERT_TRUE(first.ok()) << firstError(first);

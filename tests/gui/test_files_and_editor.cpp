@@ -471,21 +471,31 @@ TEST(Editor, ALoopTheDriverWouldCutShortIsAWarningAtItsLine) {
 // camera in a file that orbits with iMouse) without orbiting sdfwb's camera, and a file without
 // mainImage turns the picture off and the action off. SDFWB_SCREENSHOT_DIR keeps
 // shadertoy_pasted.png and shadertoy_picture.png for docs/foreign-code.md.
+namespace {
+
+// Opens `path` in the window and waits until the document applied it and the viewport drew it at rest.
+bool openApplied(app::MainWindow& window, const QString& path) {
+    bool applied = false;
+    auto connection = QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
+    const bool ok = window.openFile(path) && waitFor([&] { return applied; });
+    QObject::disconnect(connection);
+    return ok && waitFor([&] { return window.viewport()->lastFrameMilliseconds() > 0.0 && !window.viewport()->isInteracting(); });
+}
+
+bool isBackground(QColor c) {
+    return std::abs(c.redF() - kBackground.redF()) < 0.03 && std::abs(c.greenF() - kBackground.greenF()) < 0.03 &&
+           std::abs(c.blueF() - kBackground.blueF()) < 0.03;
+}
+
+} // namespace
+
 TEST(Shadertoy, PastedShaderTracesItsMapAndShowsItsOwnPicture) {
     app::MainWindow window;
     window.resize(1200, 700);
     window.show();
     ASSERT_TRUE(activate(window));
-    auto open = [&](const QString& path) {
-        bool applied = false;
-        auto connection = QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
-        const bool ok = window.openFile(path) && waitFor([&] { return applied; });
-        QObject::disconnect(connection);
-        return ok &&
-               waitFor([&] { return window.viewport()->lastFrameMilliseconds() > 0.0 && !window.viewport()->isInteracting(); });
-    };
     const QString corpus = QDir(SDFWB_SOURCE_DIR "/tests/foreign").absolutePath();
-    ASSERT_TRUE(open(corpus + "/34_st_mouse_lattice.glsl"));
+    ASSERT_TRUE(openApplied(window, corpus + "/34_st_mouse_lattice.glsl"));
     EXPECT_EQ(window.document()->signature().entry, "map");
     EXPECT_TRUE(window.document()->lastGoodSource().shadertoyMainImage);
     auto* action = window.findChild<QAction*>("shadertoy_picture");
@@ -494,10 +504,6 @@ TEST(Shadertoy, PastedShaderTracesItsMapAndShowsItsOwnPicture) {
     widgets::ViewportWidget* viewport = window.viewport();
     const QImage traced = fullResolutionFrame(window);
     if (QString path = screenshotPath("shadertoy_pasted.png"); !path.isEmpty()) windowShot(window).save(path);
-    auto isBackground = [](QColor c) {
-        return std::abs(c.redF() - kBackground.redF()) < 0.03 && std::abs(c.greenF() - kBackground.greenF()) < 0.03 &&
-               std::abs(c.blueF() - kBackground.blueF()) < 0.03;
-    };
     EXPECT_TRUE(isBackground(traced.pixelColor(2, 2))) << "sdfwb's tracer: its own background in the corner";
 
     QTest::keyClick(&window, Qt::Key_Y, Qt::ControlModifier | Qt::ShiftModifier);
@@ -526,7 +532,7 @@ TEST(Shadertoy, PastedShaderTracesItsMapAndShowsItsOwnPicture) {
     EXPECT_GT(meanDifference(picture, frameOf(window)), 2.0) << "this file's author orbits with iMouse";
 
     // A file without mainImage: the tracer comes back, and the action cannot be turned on.
-    ASSERT_TRUE(open(datasetFile("Geometry/Sphere.glsl")));
+    ASSERT_TRUE(openApplied(window, datasetFile("Geometry/Sphere.glsl")));
     EXPECT_FALSE(viewport->shadertoyPicture());
     EXPECT_FALSE(action->isChecked());
     EXPECT_FALSE(action->isEnabled());
@@ -560,19 +566,7 @@ TEST(Shadertoy, ASceneOutsideTheUnitBoxIsFramed) {
     window.resize(1000, 640);
     window.show();
     ASSERT_TRUE(activate(window));
-    auto open = [&](const QString& file) {
-        bool applied = false;
-        auto connection = QObject::connect(window.document(), &app::SdfDocument::sdfApplied, [&] { applied = true; });
-        const bool ok = window.openFile(file) && waitFor([&] { return applied; });
-        QObject::disconnect(connection);
-        return ok &&
-               waitFor([&] { return window.viewport()->lastFrameMilliseconds() > 0.0 && !window.viewport()->isInteracting(); });
-    };
-    auto isBackground = [](QColor c) {
-        return std::abs(c.redF() - kBackground.redF()) < 0.03 && std::abs(c.greenF() - kBackground.greenF()) < 0.03 &&
-               std::abs(c.blueF() - kBackground.blueF()) < 0.03;
-    };
-    ASSERT_TRUE(open(path));
+    ASSERT_TRUE(openApplied(window, path));
     const QString frame = window.document()->frame();
     ASSERT_FALSE(frame.isEmpty()) << "the ball has no surface in [-1, 1]^3";
     const QStringList corners = frame.split(',');
@@ -585,7 +579,7 @@ TEST(Shadertoy, ASceneOutsideTheUnitBoxIsFramed) {
     EXPECT_FALSE(isBackground(framed.pixelColor(framed.width() / 2, framed.height() / 2))) << "the ball is drawn";
     EXPECT_TRUE(isBackground(framed.pixelColor(2, 2)));
 
-    ASSERT_TRUE(open(datasetFile("Geometry/Sphere.glsl")));
+    ASSERT_TRUE(openApplied(window, datasetFile("Geometry/Sphere.glsl")));
     EXPECT_TRUE(window.document()->frame().isEmpty());
     EXPECT_TRUE(window.document()->input().normalize.empty());
     EXPECT_FALSE(window.windowTitle().contains("framed"));
