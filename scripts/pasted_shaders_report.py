@@ -95,13 +95,24 @@ with tempfile.TemporaryDirectory() as scratch:
             framed_code, framed_error, _ = run([BINARY, "--batch", "sample", "--sdf", path, "--normalize", "unit-cube",
                                                 "--pattern", "rand", "-n", "2000", "--output", os.path.join(scratch, "framed.npz")])
             framed = ("yes" if changes_sign(os.path.join(scratch, "framed.npz")) else "no") if framed_code == 0 else (
-                "none" if "no surface within" in framed_error else "failed")
+                "none" if "no surface within" in framed_error or "never negative" in framed_error else "failed")
+        # An unsigned field (never negative, near 0: the run's warning says so): whether the level set
+        # at a usual march hit threshold, --level 0.001, has a surface in the box (framed if needed).
+        level = ""
+        if sampled and not surface and "never negative" in sample_error:
+            level = "no"
+            for extra in ([], ["--normalize", "unit-cube"]):
+                code, _, _ = run([BINARY, "--batch", "sample", "--sdf", path, "--level", "0.001", *extra, "--pattern", "rand",
+                                  "-n", "2000", "--output", os.path.join(scratch, "level.npz")])
+                if code == 0 and changes_sign(os.path.join(scratch, "level.npz")):
+                    level = "yes" if not extra else "yes, framed"
+                    break
         renders += rendered
         samples += sampled
         both += rendered and sampled
         problem = "" if rendered and sampled else first_error(error if not rendered else sample_error)
         inline = not POINT_FUNCTION.search(open(path, errors="replace").read())
-        rows.append((name, entry, rendered, sampled, problem, inline, surface, host, framed))
+        rows.append((name, entry, rendered, sampled, problem, inline, surface, host, framed, level))
         print(f"{name}: render {'ok' if rendered else 'FAILED'}, sample {'ok' if sampled else 'FAILED'} {entry} {problem}",
               flush=True)
 
@@ -121,7 +132,9 @@ summary = (f"{len(rows)} shaders: {renders} render ({100 * renders / n:.1f} %), 
            f"{sum(1 for row in rows if row[8] == 'yes')} have one once framed (`--normalize unit-cube`: the box of "
            f"their surface, found by their values, framed as the unit box); "
            f"{sum(1 for row in rows if row[8] == 'none')} have none within [-64, 64]^3 (glows, fields drawn from "
-           f"textures or the pixel)")
+           f"textures or the pixel). {sum(1 for row in rows if row[9])} are unsigned (never negative, near 0: the run "
+           f"warns and names `--level`); the level set at a usual march hit threshold (`--level 0.001`) gives "
+           f"{sum(1 for row in rows if row[9].startswith('yes'))} of them a surface (column level)")
 print(summary)
 if DOC:
     renderer = subprocess.run([BINARY, "--batch", "audit", "--sdf", "sphere", "--samples", "64"], capture_output=True, text=True,
@@ -151,11 +164,11 @@ if DOC:
             out.write("Sources (GitHub repositories, files): " +
                       ", ".join(f"{repo} ({count})" for repo, count in sorted(repos.items(), key=lambda kv: -kv[1])) + ".\n\n")
         out.write(summary + ".\n\n| file | " + ("host | " if HOSTS else "") +
-                  "entry | render | sample | surface | framed | first error |\n|---|" + ("---|" if HOSTS else "") +
-                  "---|---|---|---|---|---|\n")
-        for name, entry, rendered, sampled, problem, inline_field, surface, host, framed in rows:
+                  "entry | render | sample | surface | framed | level | first error |\n|---|" + ("---|" if HOSTS else "") +
+                  "---|---|---|---|---|---|---|\n")
+        for name, entry, rendered, sampled, problem, inline_field, surface, host, framed, level in rows:
             out.write(f"| {name} | " + (f"{host or '-'} | " if HOSTS else "") +
                       f"{entry or ('none: inline field' if inline_field else 'by name')} | "
                       f"{'yes' if rendered else 'no'} | {'yes' if sampled else 'no'} | {'yes' if surface else 'no'} | {framed or '-'} | "
-                      f"{problem or '-'} |\n")
+                      f"{level or '-'} | {problem or '-'} |\n")
     print(f"wrote {DOC}")

@@ -152,6 +152,9 @@ void addSdfOptions(Command& app, values::SdfInput& input) {
                    "none (default); unit-cube or unit-sphere: a mesh's box centred, longest side 2 (or farthest vertex "
                    "at 1), a GLSL field's surface framed the same way (its box found by the field's values: a pasted "
                    "scene built around its own camera); X0,Y0,Z0,X1,Y1,Z1 (GLSL): that box framed, longest side 2");
+    app.add_option("--level", input.level,
+                   "GLSL: the surface is where the field equals this (it becomes f - level; default 0): an unsigned "
+                   "field, never negative, gets an inside (a pasted shader's march stops at its hit threshold)");
     // (checked with the request: jobs::checkSdf)
     addEntryOption(app, input.entry);
     CLI::Option* channel = app.add_option_function<std::vector<std::string>>(

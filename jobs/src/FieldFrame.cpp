@@ -30,8 +30,9 @@ std::vector<float> boxNumbers(const std::string& text) {
 // surface crosses [-1, 1]^3: that cube alone is searched first, so a field whose surface crosses it
 // (every dataset file, most pasted scenes) costs one lattice, not one of each size (a floor
 // reaches every cube's faces). One compile either way.
-Expected<std::optional<sampling::SurfaceBox>>
-searchSurface(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters, bool outsideOnly) {
+Expected<std::optional<sampling::SurfaceBox>> searchSurface(const shaders::PreparedSdf& sdf,
+                                                            const std::vector<shaders::ParameterSetting>& parameters,
+                                                            bool outsideOnly, sampling::FieldRange* range = nullptr) {
     sampling::FieldEvaluator evaluator;
     if (shaders::hasErrors(evaluator.build(sdf))) return makeError("the field does not compile for the surface search");
     sampling::FieldSettings settings;
@@ -39,7 +40,29 @@ searchSurface(const shaders::PreparedSdf& sdf, const std::vector<shaders::Parame
     if (outsideOnly)
         if (auto inside = sampling::findSurfaceBox(evaluator, settings, 1.0f); !inside || *inside)
             return inside ? Expected<std::optional<sampling::SurfaceBox>>(std::nullopt) : inside;
-    return sampling::findSurfaceBox(evaluator, settings); // the evaluator releases its GL objects
+    return sampling::findSurfaceBox(evaluator, settings, 64.0f, range); // the evaluator releases its GL objects
+}
+
+// Why a field whose search found no surface has none, from the values the lattices held.
+std::string noSurfaceText(const sampling::FieldRange& range) {
+    if (range.finite == 0) return "the field is not finite anywhere within [-64, 64]^3";
+    char text[520];
+    // Near 0 without going below: a distance to thin lines or sheets, floored or taken with abs().
+    // Near means within what the lattice can see (a distance above sqrt(3)/2 of its spacing at
+    // every lattice point has no zero in its cube): a glow's density stays further off.
+    if (!range.negative && range.least <= 0.87f * range.finest)
+        std::snprintf(text, sizeof text,
+                      "the field is never negative within [-64, 64]^3 and its least value is %.3g: an unsigned "
+                      "distance, with no inside, so samples never change sign and there is nothing to mesh; the "
+                      "tracer shows where rays come within its tolerance. --level L takes f = L as the surface "
+                      "(a shader's own march stops where f drops below its hit threshold, often 0.001)",
+                      double(range.least));
+    else
+        std::snprintf(text, sizeof text,
+                      "the field has no surface within [-64, 64]^3: its values run from %.4g to %.4g with no change of "
+                      "sign between neighbours of a 40^3 lattice (a glow's density, or a field drawn from the pixel)",
+                      double(range.least), double(range.most));
+    return text;
 }
 
 // Half the longest side of `box`: the scale that frames it as [-1, 1]^3.
@@ -74,6 +97,7 @@ std::optional<JobError> frameField(shaders::PreparedSdf& sdf, const std::string&
                                    const std::string& what) {
     if (normalize.empty() || normalize == "none") return std::nullopt;
     shaders::PreparedSdf::Frame frame;
+    frame.level = sdf.frame.level; // --level is set first: the search looks for f = level
     if (isFrameBox(normalize)) {
         if (auto problem = frameBoxProblem(normalize)) return usageError(key("normalize") + ": " + *problem);
         const std::vector<float> n = boxNumbers(normalize);
@@ -87,12 +111,12 @@ std::optional<JobError> frameField(shaders::PreparedSdf& sdf, const std::string&
         if (!renderer::HeadlessContext::anyCurrent())
             return workError(KeyedText(what + ": " + label + ": ") + key("normalize") + " " + normalize +
                              " searches the field's values and needs a GL context");
-        auto found = searchSurface(sdf, parameters, false);
+        sampling::FieldRange range;
+        auto found = searchSurface(sdf, parameters, false, &range);
         if (!found) return workError(KeyedText(what + ": " + label + ": ") + key("normalize") + ": " + found.error().message);
         if (!*found)
-            return workError(KeyedText(what + ": " + label + ": ") + key("normalize") + " " + normalize +
-                             ": no surface within [-64, 64]^3 (no value changes sign between "
-                             "neighbours of a 40^3 lattice); give the box to frame as X0,Y0,Z0,X1,Y1,Z1");
+            return workError(KeyedText(what + ": " + label + ": ") + key("normalize") + " " + normalize + ": " +
+                             noSurfaceText(range) + "; or give the box to frame as X0,Y0,Z0,X1,Y1,Z1");
         const sampling::SurfaceBox& box = **found;
         frame.centre = box.centre;
         frame.scale = halfSide(box);
@@ -111,9 +135,12 @@ std::optional<JobError> frameField(shaders::PreparedSdf& sdf, const std::string&
     return std::nullopt;
 }
 
-std::string frameBoxOutsideUnitBox(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters) {
+std::string frameBoxOutsideUnitBox(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters,
+                                   std::string* noSurface) {
     if (sdf.mesh || !sdf.ok() || !renderer::HeadlessContext::anyCurrent()) return {};
-    auto found = searchSurface(sdf, parameters, true);
+    sampling::FieldRange range;
+    auto found = searchSurface(sdf, parameters, true, &range);
+    if (found && !*found && range.finite > 0 && noSurface) *noSurface = noSurfaceText(range);
     if (!found || !*found) return {};
     const sampling::SurfaceBox& box = **found;
     const float half = halfSide(box);
@@ -121,6 +148,13 @@ std::string frameBoxOutsideUnitBox(const shaders::PreparedSdf& sdf, const std::v
     std::snprintf(text, sizeof text, "%.5g,%.5g,%.5g,%.5g,%.5g,%.5g", box.centre[0] - half, box.centre[1] - half,
                   box.centre[2] - half, box.centre[0] + half, box.centre[1] + half, box.centre[2] + half);
     return text;
+}
+
+std::string noSurfaceReason(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters) {
+    if (sdf.mesh || !sdf.ok() || !renderer::HeadlessContext::anyCurrent()) return {};
+    sampling::FieldRange range;
+    auto found = searchSurface(sdf, parameters, false, &range);
+    return found && !*found ? noSurfaceText(range) : std::string();
 }
 
 } // namespace sdfwb::jobs

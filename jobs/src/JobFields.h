@@ -16,6 +16,7 @@ template <class V> void fields(V& v, values::SdfInput& s) {
     v("channels", s.channels);
     v("sign", s.sign);
     v("normalize", s.normalize);
+    v("level", s.level);
 }
 
 template <class V> void fields(V& v, values::ShadingSettings& s) {

@@ -14,6 +14,7 @@
 #include <shaders/Parameters.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <variant>
 
@@ -21,6 +22,12 @@ namespace sdfwb::jobs {
 namespace fs = std::filesystem;
 
 namespace {
+
+std::string formatLevel(float level) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", double(level));
+    return text;
+}
 
 JobError usage(const KeyedText& message) { return usageError(message); }
 
@@ -69,6 +76,7 @@ std::optional<JobError> checkSdf(const values::SdfInput& input) {
     } else if (auto mesh = meshfield::parseMeshFieldOptions(input.sign, input.normalize); !mesh) {
         return usage(keyedSubject(mesh.error().message));
     }
+    if (!std::isfinite(input.level)) return usage(key("level") + ": must be a finite number");
     for (const shaders::ParameterValue& p : input.params) {
         // The text form checks the name and the values (1 to 4 finite numbers).
         if (auto ok = shaders::parseParameterValue(shaders::formatParameterValue(p)); !ok || !(*ok == p))
@@ -172,6 +180,8 @@ JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& w
     const bool mesh = !path->empty() && meshfield::isMeshPath(*path);
     if (!mesh && !input.sign.empty())
         return usage(key("sign") + ": applies to mesh files (.obj .ply .stl .off .glb), not '" + path->string() + "'");
+    if (mesh && input.level != 0.0f)
+        return usage(key("level") + ": sets the surface of a GLSL field; a mesh's surface is its triangles");
     if (mesh && isFrameBox(input.normalize))
         return usage(key("normalize") + ": a box frames a GLSL field; a mesh takes none, unit-cube or unit-sphere");
     if (mesh) {
@@ -205,14 +215,22 @@ JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& w
     auto resolved = shaders::resolveParameters(sdf.parameters, input.params);
     if (!resolved) return usage(key("params") + ": " + label + ": " + resolved.error().message);
     for (const std::string& warning : resolved->warnings) log::warning(what, warning);
-    if (!mesh)
+    if (!mesh) {
+        sdf.frame.level = input.level;
+        if (input.level != 0.0f) log::info(what, label + ": the surface is where the field equals " + formatLevel(input.level));
         if (auto error = frameField(sdf, input.normalize, resolved->settings, label, what)) return *error;
+    }
     // A pasted Shadertoy scene built around its own camera: without a surface in the unit box its
     // pictures are empty and its samples never change sign. Said, not changed: the frame is asked for.
-    if (!mesh && sdf.shadertoyMainImage && (input.normalize.empty() || input.normalize == "none"))
-        if (const std::string box = frameBoxOutsideUnitBox(sdf, resolved->settings); !box.empty())
+    // With a level given the user has chosen the surface (a thin one may escape the search's lattice).
+    if (!mesh && sdf.shadertoyMainImage && (input.normalize.empty() || input.normalize == "none") && input.level == 0.0f) {
+        std::string none;
+        if (const std::string box = frameBoxOutsideUnitBox(sdf, resolved->settings, &none); !box.empty())
             log::warning(what, label + ": the field has no surface in [-1, 1]^3; it lies in the box " + box +
                                    ": --normalize unit-cube frames it (or --normalize " + box + ")");
+        else if (!none.empty())
+            log::warning(what, label + ": " + none);
+    }
     return OpenedSdf{std::move(sdf), label, std::move(resolved->settings), std::move(resolved->warnings)};
 }
 

@@ -114,9 +114,11 @@ JobResult<MeshedSdf> meshSdf(const values::MeshRequest& request, const ProgressS
     const meshing::Mesh& mesh = result.mesh;
     const meshing::MeshStats& stats = extracted->second;
     report.lipschitzBound = stats.lipschitzUsed;
-    if (mesh.indices.empty())
+    if (mesh.indices.empty()) {
+        const std::string why = noSurfaceReason(sdf->prepared, sdf->parameters);
         return workError("mesh: " + sdf->label + " has no surface inside the bounds at resolution " +
-                         std::to_string(request.resolution) + "; nothing written");
+                         std::to_string(request.resolution) + (why.empty() ? "" : ": " + why) + "; nothing written");
+    }
     report.vertices = mesh.vertices.size();
     report.triangles = mesh.triangleCount();
     const auto topologyStart = std::chrono::steady_clock::now();

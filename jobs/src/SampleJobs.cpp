@@ -84,9 +84,9 @@ JobResult<values::SampleReport> run(const values::SampleRequest& request, const 
     metadata.version = SDFWB_VERSION;
     metadata.mesh = sdf->meshSource().json;
     if (const shaders::PreparedSdf::Frame& frame = sdf->prepared.frame; !(frame == shaders::PreparedSdf::Frame{})) {
-        char numbers[160];
-        std::snprintf(numbers, sizeof numbers, "\"centre\": [%.9g, %.9g, %.9g], \"scale\": %.9g", frame.centre[0],
-                      frame.centre[1], frame.centre[2], frame.scale);
+        char numbers[200];
+        std::snprintf(numbers, sizeof numbers, "\"centre\": [%.9g, %.9g, %.9g], \"scale\": %.9g, \"level\": %.9g",
+                      frame.centre[0], frame.centre[1], frame.centre[2], frame.scale, frame.level);
         metadata.frame = "{\"normalize\": \"" + request.sdf.normalize + "\", " + numbers + "}";
     }
     const bool family = !request.family.empty();

@@ -37,7 +37,8 @@ std::vector<std::array<float, 3>> surfaceCrossings(const std::vector<float>& val
 
 } // namespace
 
-Expected<std::optional<SurfaceBox>> findSurfaceBox(FieldEvaluator& evaluator, const FieldSettings& settings, float largest) {
+Expected<std::optional<SurfaceBox>> findSurfaceBox(FieldEvaluator& evaluator, const FieldSettings& settings, float largest,
+                                                   FieldRange* range) {
     const std::size_t count = std::size_t(kSide) * kSide * kSide;
     std::vector<float> points(3 * count), values(count);
     std::optional<SurfaceBox> first; // the smallest cube's box, where every cube's touches its faces
@@ -51,6 +52,15 @@ Expected<std::optional<SurfaceBox>> findSurfaceBox(FieldEvaluator& evaluator, co
                 }
         auto evaluated = evaluator.evaluate(points.data(), count, values.data(), nullptr, settings);
         if (!evaluated) return evaluated.error();
+        if (range && (range->finest == 0.0f || cell < range->finest)) range->finest = cell;
+        if (range)
+            for (const float f : values) {
+                if (!std::isfinite(f)) continue;
+                range->least = range->finite ? std::min(range->least, f) : f;
+                range->most = range->finite ? std::max(range->most, f) : f;
+                range->negative = range->negative || f < 0.0f;
+                ++range->finite;
+            }
         const std::vector<std::array<float, 3>> surface = surfaceCrossings(values);
         if (surface.empty()) continue;
         SurfaceBox box;

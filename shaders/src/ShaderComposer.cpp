@@ -156,9 +156,10 @@ std::string entryWrapper(const PreparedSdf& sdf) {
         return literal.find_first_of(".e") == std::string::npos ? literal + ".0" : literal;
     };
     const std::string scale = number(sdf.frame.scale);
-    return text + "float sdfwb_sdf(vec3 sdfwb_framed) { return sdfwb_unframed(vec3(" + number(sdf.frame.centre[0]) + ", " +
-           number(sdf.frame.centre[1]) + ", " + number(sdf.frame.centre[2]) + ") + " + scale + " * sdfwb_framed) / " + scale +
-           "; }\n";
+    const std::string level = sdf.frame.level == 0.0f ? "" : " - " + number(sdf.frame.level);
+    return text + "float sdfwb_sdf(vec3 sdfwb_framed) { return (sdfwb_unframed(vec3(" + number(sdf.frame.centre[0]) + ", " +
+           number(sdf.frame.centre[1]) + ", " + number(sdf.frame.centre[2]) + ") + " + scale + " * sdfwb_framed)" + level +
+           ") / " + scale + "; }\n";
 }
 
 const char* stageName(Stage stage) {

@@ -1,13 +1,15 @@
 // --normalize on a GLSL field as a user runs it: a scene built around its own camera (a ball at
 // z = 5, outside [-1, 1]^3) framed by its surface's box or by a box given, on the real binary
 // without a display (EGL). Every row is checked against the ball's exact distance through the frame
-// the file records; bad boxes and fields without a surface are named and write nothing.
+// the file records; bad boxes and fields without a surface are named and write nothing. --level
+// gives an unsigned field (a pasted shader's distance to thin lines) the surface its march stops at.
 
 #include "common/ChildProcess.h"
 #include "common/Scratch.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -41,6 +43,7 @@ struct Framed {
     std::vector<float> rows; // x y z distance gx gy gz, from the .bin
     float centre[3] = {0.0f, 0.0f, 0.0f};
     float scale = 0.0f;
+    float level = 0.0f;
     std::string normalize;
 };
 
@@ -65,7 +68,7 @@ Framed readFramed(const fs::path& bin) {
     sidecar << sidecarFile.rdbuf();
     const std::string text = sidecar.str();
     static const std::regex frame(
-        R"re("frame": \{"normalize": "([^"]*)", "centre": \[([-0-9.e+]+), ([-0-9.e+]+), ([-0-9.e+]+)\], "scale": ([-0-9.e+]+)\})re");
+        R"re("frame": \{"normalize": "([^"]*)", "centre": \[([-0-9.e+]+), ([-0-9.e+]+), ([-0-9.e+]+)\], "scale": ([-0-9.e+]+), "level": ([-0-9.e+]+)\})re");
     std::smatch match;
     if (!std::regex_search(text, match, frame)) {
         ADD_FAILURE() << "no frame in " << bin << ".json: " << text;
@@ -74,6 +77,7 @@ Framed readFramed(const fs::path& bin) {
     framed.normalize = match[1].str();
     for (int a = 0; a < 3; ++a) framed.centre[a] = std::stof(match[2 + a].str());
     framed.scale = std::stof(match[5].str());
+    framed.level = std::stof(match[6].str());
     return framed;
 }
 
@@ -176,5 +180,123 @@ TEST(BatchFrame, BadBoxesAndFieldsWithoutASurfaceAreNamedAndWriteNothing) {
         EXPECT_EQ(r.exitCode, c.exitCode) << c.arguments << "\n" << r.output;
         EXPECT_NE(r.output.find(c.culprit), std::string::npos) << c.arguments << "\n" << r.output;
         EXPECT_FALSE(fs::exists(out)) << c.arguments;
+    }
+}
+
+namespace {
+
+// A whole shader in the style of public ones that draw thin lines: the distance to two segments,
+// floored (never negative: an unsigned field), marched until it drops below 0.001.
+const char* kLines = R"glsl(
+float sdSegment(vec3 p, vec3 a, vec3 b) {
+    vec3 pa = p - a, ba = b - a;
+    float h = clamp(dot(pa, ba) / dot(ba, ba), 0.0, 1.0);
+    return length(pa - ba * h);
+}
+float map(vec3 p) {
+    float d = sdSegment(p, vec3(-0.6, 0.0, 0.0), vec3(0.6, 0.0, 0.0));
+    d = min(d, sdSegment(p, vec3(0.0, -0.6, 0.1), vec3(0.0, 0.6, 0.1)));
+    return max(d, 0.0004);
+}
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    vec2 uv = (fragCoord - 0.5 * iResolution.xy) / iResolution.y;
+    vec3 ro = vec3(0.0, 0.0, -3.0), rd = normalize(vec3(uv, 1.5));
+    float t = 0.0;
+    for (int i = 0; i < 120; i++) {
+        float d = map(ro + rd * t);
+        if (d < 0.001 || t > 20.0) break;
+        t += d;
+    }
+    fragColor = vec4(vec3(t < 20.0 ? 1.0 : 0.0), 1.0);
+}
+)glsl";
+
+// The distance from a point to the two segments of kLines.
+float linesDistance(const float* p) {
+    auto segment = [&](const float a[3], const float b[3]) {
+        float pa[3], ba[3], dot = 0.0f, len = 0.0f;
+        for (int i = 0; i < 3; ++i) pa[i] = p[i] - a[i], ba[i] = b[i] - a[i], dot += pa[i] * ba[i], len += ba[i] * ba[i];
+        const float h = std::clamp(dot / len, 0.0f, 1.0f);
+        float d = 0.0f;
+        for (int i = 0; i < 3; ++i) d += (pa[i] - ba[i] * h) * (pa[i] - ba[i] * h);
+        return std::sqrt(d);
+    };
+    const float a0[3] = {-0.6f, 0.0f, 0.0f}, b0[3] = {0.6f, 0.0f, 0.0f};
+    const float a1[3] = {0.0f, -0.6f, 0.1f}, b1[3] = {0.0f, 0.6f, 0.1f};
+    return std::min(segment(a0, b0), segment(a1, b1));
+}
+
+} // namespace
+
+// Without --level the field has no inside: the run says so and names the option; surface samples
+// miss and there is nothing to mesh. With --level 0.02 the surface is the tubes of radius 0.02 the
+// march shows: every surface row lies on them, the mesh is written, and the file records the level.
+TEST(BatchFrame, AnUnsignedFieldGetsTheSurfaceItsMarchStopsAtWithLevel) {
+    const fs::path lines = writeShader("lines.glsl", kLines);
+    const fs::path plain = scratch("lines-plain.npz");
+    Result r = run("--batch sample --sdf " + lines.string() + " --pattern surface -n 500 -o " + plain.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("never negative"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("--level"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("500 bad rows"), std::string::npos) << "no surface sample can be found: " << r.output;
+    const fs::path mesh = scratch("lines.ply");
+    r = run("--batch mesh --sdf " + lines.string() + " --resolution 64 -o " + mesh.string());
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("never negative"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(mesh));
+
+    const fs::path levelled = scratch("lines-level.bin");
+    r = run("--batch sample --sdf " + lines.string() + " --level 0.02 --pattern surface -n 2000 -o " + levelled.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.output.find("never negative"), std::string::npos) << "the levelled field has a surface: " << r.output;
+    const Framed framed = readFramed(levelled);
+    EXPECT_EQ(framed.level, 0.02f);
+    EXPECT_EQ(framed.scale, 1.0f);
+    ASSERT_EQ(framed.rows.size(), 7u * 2000u);
+    // Rays that miss the thin tubes are NaN rows (the surface sampler's misses); the others lie on them.
+    int found = 0, off = 0, wrong = 0;
+    for (std::size_t i = 0; i < 2000; ++i) {
+        const float* row = &framed.rows[7 * i];
+        if (!std::isfinite(row[0])) continue;
+        ++found;
+        off += !(std::abs(linesDistance(row) - 0.02f) < 2e-4f);
+        wrong += !(std::abs(row[3] - (linesDistance(row) - 0.02f)) < 1e-5f);
+    }
+    EXPECT_GT(found, 1600) << "most rays reach the tubes";
+    EXPECT_EQ(off, 0) << "surface rows lie on the tubes of radius 0.02";
+    EXPECT_EQ(wrong, 0) << "the written value is f - level";
+
+    r = run("--batch mesh --sdf " + lines.string() + " --level 0.02 --resolution 96 -o " + mesh.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_GT(fs::file_size(mesh), 10000u);
+
+    // A level and a frame together: the search finds the tubes (of radius 0.05: thicker than the
+    // search lattice's cell), not the floored lines.
+    const fs::path both = scratch("lines-both.bin");
+    r = run("--batch sample --sdf " + lines.string() + " --level 0.05 --normalize unit-cube --pattern rand -n 200 -o " +
+            both.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const Framed framedBoth = readFramed(both);
+    EXPECT_EQ(framedBoth.level, 0.05f);
+    EXPECT_NEAR(framedBoth.scale, 0.65f, 0.06f) << "half the tubes' longest side, 0.6 + 0.05, grown by a lattice cell";
+    for (std::size_t i = 0; i < 200; ++i) {
+        const float* row = &framedBoth.rows[7 * i];
+        float p[3];
+        for (int a = 0; a < 3; ++a) p[a] = framedBoth.centre[a] + framedBoth.scale * row[a];
+        EXPECT_NEAR(row[3], (linesDistance(p) - 0.05f) / framedBoth.scale, 1e-5f) << i;
+    }
+}
+
+TEST(BatchFrame, ALevelThatIsNotANumberOrIsGivenForAMeshIsNamed) {
+    const fs::path lines = writeShader("lines2.glsl", kLines);
+    const fs::path out = scratch("level-bad.npz");
+    const fs::path meshFile =
+        writeShader("tetra.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+    for (const std::string& arguments : {"--sdf " + lines.string() + " --level nan", "--sdf " + lines.string() + " --level x",
+                                         "--sdf " + meshFile.string() + " --level 0.1"}) {
+        Result r = run("--batch sample " + arguments + " --pattern rand -n 10 -o " + out.string());
+        EXPECT_EQ(r.exitCode, 2) << arguments << "\n" << r.output;
+        EXPECT_NE(r.output.find("--level"), std::string::npos) << arguments << "\n" << r.output;
+        EXPECT_FALSE(fs::exists(out)) << arguments;
     }
 }

@@ -79,8 +79,15 @@ JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& w
 // For the workbench: the box X0,Y0,Z0,X1,Y1,Z1 (as --normalize takes it) that frames a GLSL field
 // with no surface in [-1, 1]^3 but one within [-64, 64]^3 (sampling/SurfaceBox.h), centred on it
 // with its longest side; empty when the surface crosses the unit box, there is none or the search
-// fails. Needs a current GL context.
-std::string frameBoxOutsideUnitBox(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters);
+// fails. Needs a current GL context. `noSurface`, when given, gets why there is none anywhere
+// (noSurfaceReason's text) from the same search.
+std::string frameBoxOutsideUnitBox(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters,
+                                   std::string* noSurface = nullptr);
+
+// Why a GLSL field has no surface within [-64, 64]^3, for messages: never negative but near 0 (an
+// unsigned distance: --level gives it a surface), or no change of sign at all, with its values;
+// empty when it has one, for a mesh, or when the search cannot run (no current GL context).
+std::string noSurfaceReason(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters);
 
 // Frames `sdf` as --normalize `normalize` asks for a GLSL field (shaders::PreparedSdf::frame): a
 // box needs no GL; unit-cube and unit-sphere search (a current GL context). Logs under `what`.

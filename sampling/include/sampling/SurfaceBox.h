@@ -6,6 +6,7 @@
 #include <sampling/FieldEvaluator.h>
 
 #include <array>
+#include <cstddef>
 #include <optional>
 
 namespace sdfwb::sampling {
@@ -19,6 +20,17 @@ struct SurfaceBox {
     int points = 0;                     // the crossings (lattice edges the surface cuts)
 };
 
+// The values the search's lattices held (finite ones): a field with no surface is told apart by
+// them (never negative and near 0 somewhere: an unsigned distance; otherwise no surface at all).
+struct FieldRange {
+    float least = 0.0f, most = 0.0f;
+    bool negative = false; // some value below 0
+    std::size_t finite = 0;
+    // The finest lattice's spacing: every point of its cube lies within sqrt(3)/2 of it from a
+    // lattice point, so a distance that stays above that there has no zero in the cube.
+    float finest = 0.0f;
+};
+
 // Cubes centred at the origin of half side 1, 2, 4, ... 64, each on a 40^3 lattice (values only),
 // and in each where the surface crosses the lattice's edges: the zero between neighbours whose values
 // have opposite signs (a glow's density, above 0 everywhere, has none).
@@ -27,7 +39,8 @@ struct SurfaceBox {
 // None (nullopt): no surface in the largest cube (a glow's density, a field never 0). `largest`
 // (a power of 2) bounds the cubes: 1 asks only whether the surface crosses [-1, 1]^3. `evaluator`
 // is built with the field; a current GL context is needed.
+// `range`, when given, gets the values of every lattice searched.
 Expected<std::optional<SurfaceBox>> findSurfaceBox(FieldEvaluator& evaluator, const FieldSettings& settings,
-                                                   float largest = 64.0f);
+                                                   float largest = 64.0f, FieldRange* range = nullptr);
 
 } // namespace sdfwb::sampling

@@ -120,6 +120,7 @@ struct PreparedSdf {
     struct Frame {
         std::array<float, 3> centre{0.0f, 0.0f, 0.0f};
         float scale = 1.0f;
+        float level = 0.0f; // the surface is f = level: the field is (f(centre + scale p) - level) / scale
         bool operator==(const Frame&) const = default;
     };
     Frame frame;

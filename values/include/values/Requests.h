@@ -38,6 +38,11 @@ struct SdfInput {
     // unit-sphere; empty: none). See meshfield/MeshField.h.
     std::string sign;
     std::string normalize;
+    // A GLSL field's surface is where it equals `level` (--level): the field becomes f - level. An
+    // unsigned field (never negative: a pasted shader's distance to thin lines, floored at 0.0004)
+    // has no inside; its own march stops where f drops below a small hit threshold (0.001), and
+    // that level set is the surface its pictures show.
+    float level = 0.0f;
     bool operator==(const SdfInput&) const = default;
 };
 
