@@ -16,9 +16,9 @@ namespace sdfwb::native {
 // extraction's own buffers (no copies), and the report `sdfwb --batch mesh --json` prints.
 py::dict mesh(const std::string& sdf, int resolution, const py::object& bounds, float time, const py::object& lipschitz,
               std::uint64_t errorSamples, std::uint64_t seed, const std::string& entry, const py::object& params,
-              const std::string& sign, const std::string& normalize, int refine) {
+              const std::string& sign, const std::string& normalize, float level, int refine) {
     values::MeshRequest request;
-    request.sdf = sdfInput(sdf, entry, params, sign, normalize);
+    request.sdf = sdfInput(sdf, entry, params, sign, normalize, level);
     request.resolution = resolution;
     request.refine = refine;
     request.time = time;
@@ -68,7 +68,8 @@ py::object evaluateMesh(const std::string& mesh, const std::string& sdf, float t
 void defineMeshing(py::module_& m) {
     m.def("mesh", &mesh, py::arg("sdf"), py::arg("resolution") = 128, py::arg("bounds") = py::none(), py::arg("time") = 0.0f,
           py::arg("lipschitz") = py::none(), py::arg("error_samples") = 0, py::arg("seed") = 0, py::arg("entry") = "",
-          py::arg("params") = py::none(), py::arg("sign") = "", py::arg("normalize") = "", py::arg("refine") = 0,
+          py::arg("params") = py::none(), py::arg("sign") = "", py::arg("normalize") = "", py::arg("level") = 0.0f,
+          py::arg("refine") = 0,
           R"doc(The zero set of `sdf` as a triangle mesh, by dual contouring (sharp edges and corners kept).
 
 Args:
@@ -88,6 +89,7 @@ Args:
     sign (str): for a mesh file, as for sample() (meshing a broken mesh's winding-number inside gives a
         watertight mesh). Default '': winding.
     normalize (str): for a mesh file, as for sample(). Default '': none.
+    level (float): as for sample(): the surface extracted is f = level. Default 0.
     refine (int): 0 to 4: times every triangle is cut into four after extraction, each new vertex stepped onto
         the exact surface. On smooth surfaces each level quarters the error (as doubling the resolution does) at
         far less cost; creases stay where the grid put them. Default 0.

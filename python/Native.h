@@ -30,7 +30,7 @@ void releaseContext();
 // `params`: None or a mapping of parameter values, {"radius": 0.3, "hollow": True, "offset": (1, 2, 0)}
 // (a dict, or any collections.abc.Mapping, as the type stubs promise).
 values::SdfInput sdfInput(const std::string& sdf, const std::string& entry, const py::object& params = py::none(),
-                          const std::string& sign = {}, const std::string& normalize = {});
+                          const std::string& sign = {}, const std::string& normalize = {}, float level = 0.0f);
 // What the module's functions call the request key at `path`: their keyword argument, "n=" (with
 // near_truncate for near_truncation, bounds for bounds_min and bounds_max).
 std::string keywordTerm(const std::string& path);

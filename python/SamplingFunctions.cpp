@@ -19,9 +19,9 @@ namespace sdfwb::native {
 py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_t n, std::uint64_t seed, float time,
                 float gradientStep, std::uint32_t chunk, float surfaceTolerance, const std::string& entry,
                 const py::object& params, std::uint64_t firstIndex, const std::string& nearWidths, float nearTruncation,
-                const std::string& sign, const std::string& normalize) {
+                const std::string& sign, const std::string& normalize, float level) {
     values::SampleRequest request;
-    request.sdf = sdfInput(sdf, entry, params, sign, normalize);
+    request.sdf = sdfInput(sdf, entry, params, sign, normalize, level);
     request.pattern = pattern;
     request.count = n;
     request.seed = seed;
@@ -80,7 +80,7 @@ py::dict sample(const std::string& sdf, const std::string& pattern, std::uint64_
 // sampler writes at those positions. The points are read in place (float32, C order: no copy).
 py::dict evaluate(const std::string& sdf, py::array_t<float, py::array::c_style | py::array::forcecast> points,
                   const py::object& params, float time, bool gradient, float gradientStep, const std::string& entry,
-                  std::uint32_t chunk, const std::string& sign, const std::string& normalize) {
+                  std::uint32_t chunk, const std::string& sign, const std::string& normalize, float level) {
     if (points.ndim() != 2 || points.shape(1) != 3) {
         std::string shape;
         for (py::ssize_t a = 0; a < points.ndim(); ++a) shape += (a ? ", " : "") + std::to_string(points.shape(a));
@@ -94,7 +94,7 @@ py::dict evaluate(const std::string& sdf, py::array_t<float, py::array::c_style 
     job.meshGradientTaps = gradientStep != 0.0f;
     job.chunkSize = chunk;
     if (auto ok = sampling::validate(job); n > 0 && !ok) raise(jobs::usageError(ok.error().keyed()));
-    const jobs::OpenedSdf opened = prepare(sdfInput(sdf, entry, params, sign, normalize));
+    const jobs::OpenedSdf opened = prepare(sdfInput(sdf, entry, params, sign, normalize, level));
     sampling::FieldSettings settings;
     settings.time = time;
     settings.gradientStep = job.gradientStep;
@@ -156,9 +156,9 @@ py::dict evaluate(const std::string& sdf, py::array_t<float, py::array::c_style 
 
 py::object audit(const std::string& sdf, std::uint64_t samples, std::uint64_t seed, float time, const std::string& entry,
                  float truncationReach, const py::object& params, const std::string& sign, const std::string& normalize,
-                 const py::object& probeDistance) {
+                 float level, const py::object& probeDistance) {
     values::AuditRequest request;
-    request.sdf = sdfInput(sdf, entry, params, sign, normalize);
+    request.sdf = sdfInput(sdf, entry, params, sign, normalize, level);
     request.samples = samples;
     request.seed = seed;
     request.time = time;
@@ -175,7 +175,7 @@ void defineSample(py::module_& m) {
     m.def("sample", &sample, py::arg("sdf"), py::arg("pattern"), py::arg("n"), py::arg("seed") = 0, py::arg("time") = 0.0f,
           py::arg_v("gradient_step", 0.0f, "0.0"), py::arg("chunk") = 0u, py::arg_v("surface_tolerance", 1e-5f, "1e-5"),
           py::arg("entry") = "", py::arg("params") = py::none(), py::arg("first_index") = 0, py::arg("near_widths") = "",
-          py::arg("near_truncate") = 0.0f, py::arg("sign") = "", py::arg("normalize") = "",
+          py::arg("near_truncate") = 0.0f, py::arg("sign") = "", py::arg("normalize") = "", py::arg("level") = 0.0f,
           R"doc(Samples `n` points of `sdf` with `pattern`: the same values as `sdfwb --batch sample` with the same seed.
 
 Args:
@@ -215,6 +215,9 @@ Args:
         its surface the same way, its box found by the field's values (a pasted scene built around its own
         camera), and 'X0,Y0,Z0,X1,Y1,Z1' frames that box; positions and distances are then the framed
         field's (the field's point is centre + scale * position, logged). Default '': none.
+    level (float): a GLSL field's surface is where it equals this: the field becomes f - level (an unsigned
+        field, never negative, as many pasted shaders march, gets an inside: give its march's hit threshold,
+        e.g. 0.001). Default 0.
 
 Returns:
     dict: position (n, 3), distance (n,) and gradient (n, 3) as float32 NumPy arrays that own their memory
@@ -235,7 +238,7 @@ The GIL is released while sampling.)doc");
 void defineEvaluate(py::module_& m) {
     m.def("evaluate", &evaluate, py::arg("sdf"), py::arg("points"), py::arg("params") = py::none(), py::arg("time") = 0.0f,
           py::arg("gradient") = true, py::arg_v("gradient_step", 0.0f, "0.0"), py::arg("entry") = "", py::arg("chunk") = 0u,
-          py::arg("sign") = "", py::arg("normalize") = "",
+          py::arg("sign") = "", py::arg("normalize") = "", py::arg("level") = 0.0f,
           R"doc(The field of `sdf` at the caller's points, through the samplers' own stage: bit-equal to what the samplers
 write at the same positions with the same gradient_step.
 
@@ -254,6 +257,7 @@ Args:
         driver (262144 on llvmpipe, 16777216 on a GPU).
     sign (str): for a mesh file, as for sample(). Default '': winding.
     normalize (str): as for sample(). Default '': none.
+    level (float): as for sample(). Default 0.
 
 Returns:
     dict: distance (N,) float32; gradient (N, 3) float32 (raw central differences), or None when
@@ -277,7 +281,7 @@ The GIL is released while the GPU works.)doc");
 void defineAudit(py::module_& m) {
     m.def("audit", &audit, py::arg("sdf"), py::arg("samples") = 100000, py::arg("seed") = 0, py::arg("time") = 0.0f,
           py::arg("entry") = "", py::arg("truncation_reach") = 3.0f, py::arg("params") = py::none(), py::arg("sign") = "",
-          py::arg("normalize") = "", py::arg("probe_distance") = py::none(),
+          py::arg("normalize") = "", py::arg("level") = 0.0f, py::arg("probe_distance") = py::none(),
           R"doc(Audits the field of `sdf`: is it an exact distance, a conservative bound, or worse?
 
 Args:
@@ -291,6 +295,7 @@ Args:
     params (Mapping[str, bool | float | Sequence[float]] | None): parameter values, as for sample(). Default None.
     sign (str): for a mesh file, as for sample(). Default '': winding.
     normalize (str): as for sample(). Default '': none.
+    level (float): as for sample(). Default 0.
     probe_distance (float | None): truncation_reach's old name, still accepted. Default None.
 
 Returns:

@@ -76,7 +76,7 @@ renderer::HeadlessContext& context() {
 }
 
 values::SdfInput sdfInput(const std::string& sdf, const std::string& entry, const py::object& params, const std::string& sign,
-                          const std::string& normalize) {
+                          const std::string& normalize, float level) {
     values::SdfInput input;
     if (sdf.find('{') != std::string::npos && sdf.find('(') != std::string::npos)
         input = {"", entry, sdf, {}};
@@ -84,6 +84,7 @@ values::SdfInput sdfInput(const std::string& sdf, const std::string& entry, cons
         input = {sdf, entry, "", {}};
     input.sign = sign;
     input.normalize = normalize;
+    input.level = level;
     if (params.is_none()) return input;
     if (!py::isinstance<py::dict>(params) && !py::isinstance(params, py::module_::import("collections.abc").attr("Mapping")))
         throw py::type_error("params: expected a dict (a mapping) of parameter values, or None");

@@ -172,6 +172,7 @@ renderer::FileMetadata OpenedSdf::fileMetadata() const {
 }
 
 JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& what) {
+    if (!std::isfinite(input.level)) return usage(key("level") + ": must be a finite number"); // callers that skip checkSdf
     auto path = resolve(input);
     if (!path) return usage(path.error().keyed());
     shaders::IncludeOptions options;

@@ -62,18 +62,18 @@ def _is_torch_tensor(value: object) -> bool:
 @overload
 def evaluate(sdf: str, points: _CpuTensor, params: Mapping[str, ParamValue] | None = None, time: float = 0.0,
              gradient: bool = True, gradient_step: float = 0.0, entry: str = "",
-             chunk: int = 0, sign: str = "", normalize: str = "") -> dict[str, Any]: ...
+             chunk: int = 0, sign: str = "", normalize: str = "", level: float = 0.0) -> dict[str, Any]: ...
 
 
 @overload
 def evaluate(sdf: str, points: npt.ArrayLike, params: Mapping[str, ParamValue] | None = None, time: float = 0.0,
              gradient: bool = True, gradient_step: float = 0.0, entry: str = "",
-             chunk: int = 0, sign: str = "", normalize: str = "") -> EvaluateResult: ...
+             chunk: int = 0, sign: str = "", normalize: str = "", level: float = 0.0) -> EvaluateResult: ...
 
 
 def evaluate(sdf: str, points: Any, params: Mapping[str, ParamValue] | None = None, time: float = 0.0,
              gradient: bool = True, gradient_step: float = 0.0, entry: str = "",
-             chunk: int = 0, sign: str = "", normalize: str = "") -> EvaluateResult | dict[str, Any]:
+             chunk: int = 0, sign: str = "", normalize: str = "", level: float = 0.0) -> EvaluateResult | dict[str, Any]:
     """The field of `sdf` at the caller's points, through the samplers' own stage: bit-equal to what the
     samplers write at the same positions with the same gradient_step.
 
@@ -99,6 +99,8 @@ def evaluate(sdf: str, points: Any, params: Mapping[str, ParamValue] | None = No
             as for sample(). Default '': winding.
         normalize (str): for a mesh file: 'none', 'unit-cube' or 'unit-sphere', as for sample().
             Default '': none.
+        level (float): a GLSL field's surface is where it equals this (the field becomes f - level), as for
+            sample(). Default 0.
 
     Returns:
         dict: distance (N,) float32; gradient (N, 3) float32 (raw central differences), or None when
@@ -120,9 +122,9 @@ def evaluate(sdf: str, points: Any, params: Mapping[str, ParamValue] | None = No
             raise ValueError(f"evaluate: points must be a CPU tensor, not one on {points.device}")
         result: dict[str, Any] = dict(
             _native.evaluate(sdf, points.detach().numpy(), params, time, gradient, gradient_step, entry, chunk, sign,
-                             normalize))
+                             normalize, level))
         result["distance"] = torch.from_numpy(result["distance"])
         if result["gradient"] is not None:
             result["gradient"] = torch.from_numpy(result["gradient"])
         return result
-    return _native.evaluate(sdf, points, params, time, gradient, gradient_step, entry, chunk, sign, normalize)
+    return _native.evaluate(sdf, points, params, time, gradient, gradient_step, entry, chunk, sign, normalize, level)

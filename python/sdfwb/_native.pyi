@@ -122,6 +122,7 @@ def sample(
     near_truncate: float = 0.0,
     sign: str = "",
     normalize: str = "",
+    level: float = 0.0,
 ) -> SampleResult: ...
 def evaluate(
     sdf: str,
@@ -134,6 +135,7 @@ def evaluate(
     chunk: int = 0,
     sign: str = "",
     normalize: str = "",
+    level: float = 0.0,
 ) -> EvaluateResult: ...
 def _forget_context_after_fork() -> None: ...
 def _job_kinds() -> list[tuple[str, bool, str]]: ...
@@ -159,6 +161,7 @@ def audit(
     params: Mapping[str, ParamValue] | None = None,
     sign: str = "",
     normalize: str = "",
+    level: float = 0.0,
     probe_distance: float | None = None,
 ) -> dict[str, Any]: ...
 def run(request: dict[str, Any] | str) -> dict[str, Any]: ...
@@ -175,6 +178,7 @@ def mesh(
     params: Mapping[str, ParamValue] | None = None,
     sign: str = "",
     normalize: str = "",
+    level: float = 0.0,
     refine: int = 0,
 ) -> MeshResult: ...
 def evaluate_mesh(

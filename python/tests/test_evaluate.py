@@ -61,6 +61,26 @@ def test_a_glsl_field_outside_the_unit_box_is_framed():
         sdfwb.sample(FAR_BALL, "rand", 10, normalize="1,2,3")
 
 
+# An unsigned field (never negative), as pasted shaders march thin shells and lines.
+SHELL = "float sdf(vec3 p) { return abs(length(p) - 0.5); }"
+
+
+def test_an_unsigned_field_gets_a_surface_with_level():
+    points = np.random.default_rng(3).uniform(-1.0, 1.0, (4000, 3)).astype(np.float32)
+    shell = np.abs(np.linalg.norm(points.astype(np.float64), axis=1) - 0.5)
+    plain = sdfwb.evaluate(SHELL, points, gradient=False)
+    assert (plain["distance"] >= 0).all()
+    levelled = sdfwb.evaluate(SHELL, points, gradient=False, level=0.1)
+    assert np.abs(levelled["distance"] - (shell - 0.1)).max() < 1e-6
+    assert (levelled["distance"] < 0).sum() > 250  # inside the shell of half thickness 0.1: 8 % of the box
+    rows = sdfwb.sample(SHELL, "surface", 500, level=0.1)
+    assert rows["bad_rows"] == 0
+    radius = np.linalg.norm(rows["position"].astype(np.float64), axis=1)
+    assert np.minimum(np.abs(radius - 0.4), np.abs(radius - 0.6)).max() < 1e-4
+    with pytest.raises(ValueError, match="level"):
+        sdfwb.evaluate(SHELL, points, level=float("nan"))
+
+
 def test_evaluate_matches_the_exact_field_in_float64():
     # The Shadertoy map above, evaluated here in float64 NumPy at 100,000 points of the cube: values
     # to float32 rounding, and the gradients against the same central differences (step 1e-3) in
