@@ -43,14 +43,22 @@ Expected<std::optional<sampling::SurfaceBox>> searchSurface(const shaders::Prepa
     return sampling::findSurfaceBox(evaluator, settings, 64.0f, range); // the evaluator releases its GL objects
 }
 
-// Why a field whose search found no surface has none, from the values the lattices held.
-std::string noSurfaceText(const sampling::FieldRange& range) {
+// Why a field whose search found no surface has none, from the values the lattices held; for an
+// unsigned field, the level its own march stops at where that is known.
+std::string noSurfaceText(const sampling::FieldRange& range, const shaders::PreparedSdf& sdf) {
     if (range.finite == 0) return "the field is not finite anywhere within [-64, 64]^3";
-    char text[520];
+    char text[600];
     // Near 0 without going below: a distance to thin lines or sheets, floored or taken with abs().
     // Near means within what the lattice can see (a distance above sqrt(3)/2 of its spacing at
     // every lattice point has no zero in its cube): a glow's density stays further off.
-    if (!range.negative && range.least <= 0.87f * range.finest)
+    if (!range.negative && range.least <= 0.87f * range.finest && sdf.marchThreshold > 0.0f)
+        std::snprintf(text, sizeof text,
+                      "the field is never negative within [-64, 64]^3 and its least value is %.3g: an unsigned "
+                      "distance, with no inside, so samples never change sign and there is nothing to mesh; the "
+                      "tracer shows where rays come within its tolerance. Its own march stops where the field drops "
+                      "below %.7g (line %d): --level %.7g takes that level set as the surface",
+                      double(range.least), double(sdf.marchThreshold), sdf.marchThresholdLine, double(sdf.marchThreshold));
+    else if (!range.negative && range.least <= 0.87f * range.finest)
         std::snprintf(text, sizeof text,
                       "the field is never negative within [-64, 64]^3 and its least value is %.3g: an unsigned "
                       "distance, with no inside, so samples never change sign and there is nothing to mesh; the "
@@ -116,7 +124,7 @@ std::optional<JobError> frameField(shaders::PreparedSdf& sdf, const std::string&
         if (!found) return workError(KeyedText(what + ": " + label + ": ") + key("normalize") + ": " + found.error().message);
         if (!*found)
             return workError(KeyedText(what + ": " + label + ": ") + key("normalize") + " " + normalize + ": " +
-                             noSurfaceText(range) + "; or give the box to frame as X0,Y0,Z0,X1,Y1,Z1");
+                             noSurfaceText(range, sdf) + "; or give the box to frame as X0,Y0,Z0,X1,Y1,Z1");
         const sampling::SurfaceBox& box = **found;
         frame.centre = box.centre;
         frame.scale = halfSide(box);
@@ -140,7 +148,7 @@ std::string frameBoxOutsideUnitBox(const shaders::PreparedSdf& sdf, const std::v
     if (sdf.mesh || !sdf.ok() || !renderer::HeadlessContext::anyCurrent()) return {};
     sampling::FieldRange range;
     auto found = searchSurface(sdf, parameters, true, &range);
-    if (found && !*found && range.finite > 0 && noSurface) *noSurface = noSurfaceText(range);
+    if (found && !*found && range.finite > 0 && noSurface) *noSurface = noSurfaceText(range, sdf);
     if (!found || !*found) return {};
     const sampling::SurfaceBox& box = **found;
     const float half = halfSide(box);
@@ -154,7 +162,7 @@ std::string noSurfaceReason(const shaders::PreparedSdf& sdf, const std::vector<s
     if (sdf.mesh || !sdf.ok() || !renderer::HeadlessContext::anyCurrent()) return {};
     sampling::FieldRange range;
     auto found = searchSurface(sdf, parameters, false, &range);
-    return found && !*found ? noSurfaceText(range) : std::string();
+    return found && !*found ? noSurfaceText(range, sdf) : std::string();
 }
 
 } // namespace sdfwb::jobs

@@ -2,6 +2,7 @@
 
 #include "CallText.h"
 #include "InlineField.h"
+#include "MarchThreshold.h"
 #include "ParameterText.h"
 #include "Words.h"
 
@@ -674,6 +675,9 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                         traceGlobals(*entry, callee->second, function, loop, mainImage, composed, tree.functions);
                 }
                 ++entry->loops;
+                if (const detail::HitThreshold hit = detail::hitThreshold(loop, call, result.holders);
+                    hit.value > 0.0f && entry->hitThreshold == 0.0f)
+                    entry->hitThreshold = hit.value, entry->hitLine = hit.line;
             }
         }
     }

@@ -616,6 +616,8 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
     prepared.entrySource = EntrySource::March;
     const MarchedFunction& chosen = valid.front().first;
     prepared.entryReason = where(chosen);
+    prepared.marchThreshold = chosen.hitThreshold;
+    prepared.marchThresholdLine = chosen.hitLine;
     if (const std::vector<std::string> pixel = perPixelParameters(chosen); !pixel.empty()) {
         std::string names;
         for (const std::string& name : pixel) names += (names.empty() ? "'" : ", '") + name + "'";

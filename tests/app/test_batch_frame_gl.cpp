@@ -237,7 +237,7 @@ TEST(BatchFrame, AnUnsignedFieldGetsTheSurfaceItsMarchStopsAtWithLevel) {
     Result r = run("--batch sample --sdf " + lines.string() + " --pattern surface -n 500 -o " + plain.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("never negative"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("--level"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("below 0.001 (line 18): --level 0.001"), std::string::npos) << "its march's hit test: " << r.output;
     EXPECT_NE(r.output.find("500 bad rows"), std::string::npos) << "no surface sample can be found: " << r.output;
     const fs::path mesh = scratch("lines.ply");
     r = run("--batch mesh --sdf " + lines.string() + " --resolution 64 -o " + mesh.string());

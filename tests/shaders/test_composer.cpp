@@ -427,24 +427,25 @@ TEST(EntryPoint, AWholeShadersFieldIsTheFunctionItsMarchStepsBy) {
         const char* field;
         const char* march;
         const char* entry;
+        float threshold; // the constant the march stops at (0: none)
     };
     const Case cases[] = {
         {"float Map(vec3 p) { return length(p) - 0.5; }\n",
          "    float t = 0.0;\n    for (int i = 0; i < 128; i++) {\n        float h = Map(ro + rd * t);\n"
          "        if (h < 0.001) break;\n        t += h;\n    }\n    return t;\n",
-         "Map"},
+         "Map", 0.001f},
         {"float GetDist(vec3 p) { return length(p) - 0.5; }\n",
          "    float dO = 0.0;\n    for (int i = 0; i < 100; i++) {\n        vec3 p = ro + rd * dO;\n"
          "        float dS = GetDist(p);\n        dO += dS;\n        if (dO > 100.0 || dS < 0.01) break;\n    }\n"
          "    return dO;\n",
-         "GetDist"},
+         "GetDist", 0.01f},
         {"vec2 sceneDist(vec3 p) { return vec2(length(p) - 0.5, 1.0); }\n",
          "    vec3 p = ro;\n    for (int i = 0; i < 90; i++) {\n        vec2 res = sceneDist(p);\n"
          "        p += rd * res.x;\n    }\n    return length(p - ro);\n",
-         "sceneDist"},
+         "sceneDist", 0.0f},
         {"float field(vec3 p) { return length(p) - 0.5; }\n",
          "    float t = 0.1;\n    for (float h = 1.0; t < 20.0 && h > 1e-3; t += h) h = field(ro + rd * t);\n    return t;\n",
-         "field"},
+         "field", 1e-3f},
     };
     for (const Case& c : cases) {
         const std::string text = wholeShader(c.field, c.march);
@@ -456,6 +457,7 @@ TEST(EntryPoint, AWholeShadersFieldIsTheFunctionItsMarchStepsBy) {
         const std::size_t call = text.find(std::string(c.entry) + "(", text.find("float castRay"));
         const int line = 1 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(call), '\n'));
         EXPECT_EQ(sdf.entryReason, std::string(c.entry) + " (called by the march at line " + std::to_string(line) + ")");
+        EXPECT_EQ(sdf.marchThreshold, c.threshold) << c.entry;
         auto tracer = composeTracer(sdf, TracerFeatures{});
         ASSERT_TRUE(tracer.hasValue());
         EXPECT_FALSE(hasErrors(checkWithGlslang(*tracer))) << c.entry;
@@ -474,6 +476,44 @@ TEST(EntryPoint, AWholeShadersFieldIsTheFunctionItsMarchStepsBy) {
                             "    return t + map(ro);\n"));
     ASSERT_TRUE(preferred.ok());
     EXPECT_EQ(preferred.signature.entry, "Map");
+}
+
+// The constant a march stops at (an unsigned field's surface: --level): through a macro, a const,
+// abs() and a component; the first loop's, not a shadow loop's; none where it is not one constant.
+TEST(EntryPoint, TheConstantAWholeShadersMarchStopsAtIsRead) {
+    struct Case {
+        const char* field;
+        const char* march;
+        float threshold;
+    };
+    const Case cases[] = {
+        {"#define SURF_DIST .02\nfloat GetDist(vec3 p) { return abs(length(p) - 0.5); }\n",
+         "    float dO = 0.0;\n    for (int i = 0; i < 100; i++) {\n        float dS = GetDist(ro + rd * dO);\n"
+         "        dO += dS;\n        if (dO > 100.0 || dS < SURF_DIST) break;\n    }\n    return dO;\n",
+         0.02f},
+        {"const float EPS = 0.0005;\nvec2 map(vec3 p) { return vec2(abs(length(p) - 0.5), 2.0); }\n",
+         "    float t = 0.0;\n    for (int i = 0; i < 100; i++) {\n        vec2 h = map(ro + rd * t);\n"
+         "        if (abs(h.x) < EPS) break;\n        t += h.x;\n    }\n"
+         "    float s = 0.1;\n    for (int i = 0; i < 20; i++) { float e = map(ro + rd * s).x; if (e < 1e-5) break; s += e; }\n"
+         "    return t + s;\n",
+         0.0005f},
+        {"float map(vec3 p) { return abs(length(p) - 0.5); }\n",
+         "    float t = 0.0;\n    for (int i = 0; i < 100; i++) {\n        float d = map(ro + rd * t);\n"
+         "        if (d < 0.001 * t) break;\n        t += d;\n    }\n    return t;\n",
+         0.0f},
+    };
+    for (const Case& c : cases) {
+        const std::string text = wholeShader(c.field, c.march);
+        PreparedSdf sdf = prepare(text);
+        ASSERT_TRUE(sdf.ok()) << c.march;
+        EXPECT_EQ(sdf.marchThreshold, c.threshold) << c.march;
+        if (c.threshold > 0.0f) {
+            // The comparison is on the line of the first loop's break.
+            const std::size_t exit = text.find("break", text.find("float castRay"));
+            EXPECT_EQ(sdf.marchThresholdLine, 1 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(exit), '\n')))
+                << c.march;
+        }
+    }
 }
 
 // Two functions marched equally often (a scene and its reflection): an error naming both, and

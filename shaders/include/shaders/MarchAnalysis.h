@@ -25,6 +25,10 @@ struct MarchedFunction {
     // A vector return whose distance is not its x (`vec4 sdScene(vec3 p)` returning (colour,
     // distance), `t += ds.w`): the component the march steps by (y, z or w). Empty otherwise.
     std::string component;
+    // The constant the march compares the distance with to stop (`if (d < 0.001) break;`), in the
+    // first loop that has one, and that comparison's line; 0 when none is one constant.
+    float hitThreshold = 0.0f;
+    int hitLine = 0;
 
     // A field with `in` parameters after the point (`vec2 Scene(vec3 p, vec3 plateRot)`) whose
     // values mainImage computes and hands to the marching function: how a wrapper gets them.

@@ -114,6 +114,10 @@ struct PreparedSdf {
     // The SDF is the mesh's own field (its generated text, unedited): its zero set is the mesh's
     // triangles, so the surface and near samplers draw points on them instead of marching rays.
     bool meshIsTheField = false;
+    // The constant a whole shader's own march stops at (`if (d < 0.001) break;`, MarchedFunction),
+    // where the entry was found from that march; 0 otherwise. An unsigned field's surface there.
+    float marchThreshold = 0.0f;
+    int marchThresholdLine = 0;
     // A GLSL field seen through a frame (--normalize for a field whose surface lies outside
     // [-1, 1]^3): the field's point is centre + scale * p and its value is divided by scale, so
     // the framed field is still a distance and every command sees it in the unit box.
