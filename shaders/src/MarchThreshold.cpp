@@ -2,6 +2,7 @@
 
 #include <glslang/Include/intermediate.h>
 
+#include <cstddef>
 #include <vector>
 
 namespace sdfwb::shaders::detail {
@@ -78,18 +79,27 @@ HitThreshold hitThreshold(glslang::TIntermLoop* loop, glslang::TIntermAggregate*
     Finder finder;
     finder.call = call;
     finder.holders = std::move(holders);
-    loop->traverse(&finder);
+    if (loop->getBody()) loop->getBody()->traverse(&finder);
+    const std::size_t inBody = finder.comparisons.size();
+    if (loop->getTest()) loop->getTest()->traverse(&finder);
+    if (loop->getTerminal()) loop->getTerminal()->traverse(&finder);
     // `float d = h.x;` reads the distance too (two rounds: a chain of two such assignments).
     for (int round = 0; round < 2; ++round)
         for (TIntermBinary* a : finder.assignments)
             if (glslang::TIntermSymbol* left = a->getLeft()->getAsSymbolNode(); left && finder.isDistance(a->getRight()))
                 finder.holders.insert(left->getId());
     HitThreshold found;
-    for (TIntermBinary* comparison : finder.comparisons) {
+    for (std::size_t i = 0; i < finder.comparisons.size(); ++i) {
+        TIntermBinary* comparison = finder.comparisons[i];
+        // The body stops when the distance is below it (`d < EPS`), the loop's test goes on while it
+        // is above (`h > 1e-3`); the other way round is an escape (`d > 20.`), not a hit.
+        const glslang::TOperator op = comparison->getOp();
+        const bool below = op == glslang::EOpLessThan || op == glslang::EOpLessThanEqual;
+        const bool hitWhenBelow = i < inBody;
         float value = 0.0f;
-        if (finder.isDistance(comparison->getLeft()))
+        if (finder.isDistance(comparison->getLeft()) && below == hitWhenBelow)
             value = positiveConstant(comparison->getRight());
-        else if (finder.isDistance(comparison->getRight()))
+        else if (finder.isDistance(comparison->getRight()) && below != hitWhenBelow)
             value = positiveConstant(comparison->getLeft());
         if (value > 0.0f && (found.value == 0.0f || value < found.value)) found = {value, comparison->getLoc().line};
     }

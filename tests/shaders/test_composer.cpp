@@ -479,7 +479,8 @@ TEST(EntryPoint, AWholeShadersFieldIsTheFunctionItsMarchStepsBy) {
 }
 
 // The constant a march stops at (an unsigned field's surface: --level): through a macro, a const,
-// abs() and a component; the first loop's, not a shadow loop's; none where it is not one constant.
+// abs() and a component; the first loop's, not a shadow loop's; none where it is not one constant
+// (a relative threshold, with an escape test `d > 20.0` beside it that is no hit).
 TEST(EntryPoint, TheConstantAWholeShadersMarchStopsAtIsRead) {
     struct Case {
         const char* field;
@@ -499,7 +500,7 @@ TEST(EntryPoint, TheConstantAWholeShadersMarchStopsAtIsRead) {
          0.0005f},
         {"float map(vec3 p) { return abs(length(p) - 0.5); }\n",
          "    float t = 0.0;\n    for (int i = 0; i < 100; i++) {\n        float d = map(ro + rd * t);\n"
-         "        if (d < 0.001 * t) break;\n        t += d;\n    }\n    return t;\n",
+         "        if (d < 0.001 * t || d > 20.0) break;\n        t += d;\n    }\n    return t;\n",
          0.0f},
     };
     for (const Case& c : cases) {
