@@ -595,6 +595,8 @@ void MainWindow::updateTitle() {
         : FileController::isShipped(m_document->path()) ? tr(" [shipped, read-only: Save asks for a new name]")
         : !m_document->frame().isEmpty()
             ? tr(" [its surface lies outside [-1, 1]^3: framed by the box %1]").arg(m_document->frame())
+        : m_document->level() != 0.0f
+            ? tr(" [an unsigned field: its surface taken at f = %1, where its march stops]").arg(double(m_document->level()))
             : QString();
     setWindowTitle(QString("%1%2%3 - sdfwb").arg(name, m_document->isModified() ? "*" : "", shipped));
 }

@@ -15,6 +15,8 @@
 #include <QPointer>
 #include <QThreadPool>
 
+#include <cstdio>
+
 namespace sdfwb::app {
 
 SdfDocument::SdfDocument(QObject* parent) : QObject(parent) {
@@ -74,6 +76,7 @@ values::SdfInput SdfDocument::input() const {
         input.normalize = m_meshNormalize.toStdString();
     } else {
         input.normalize = m_frame.toStdString();
+        input.level = m_level;
     }
     return input;
 }
@@ -82,20 +85,32 @@ bool SdfDocument::isMesh() const { return !m_path.isEmpty() && meshfield::isMesh
 
 namespace {
 
-// The frame of a GLSL field (SdfDocument::frame): `kept` when it was decided for this file and entry,
-// else decided now by a search of the field's values in an EGL context of this worker thread. The
-// field is framed by it (jobs::frameField, as --normalize frames it for the jobs).
-std::string decideFrame(shaders::PreparedSdf& prepared, const std::string* kept, const std::string& label) {
-    std::string frame;
+// The view of a pasted whole shader (SdfDocument::frame and level): `kept` when it was decided for
+// this file and entry, else decided now by a search of the field's values in an EGL context of this
+// worker thread. The field is framed by the box (jobs::frameField, as --normalize frames it for the
+// jobs), or an unsigned field's surface taken at the level its march stops at (as --level).
+jobs::PastedView decideView(shaders::PreparedSdf& prepared, const jobs::PastedView* kept, const std::string& label) {
+    jobs::PastedView view;
     if (kept) {
-        frame = *kept;
+        view = *kept;
     } else if (auto context = renderer::HeadlessContext::create()) {
-        frame = jobs::frameBoxOutsideUnitBox(prepared, {});
+        view = jobs::decidePastedView(prepared, {});
         (*context)->doneCurrent();
-        if (!frame.empty()) log::info("app", "the surface lies outside [-1, 1]^3: framed by the box " + frame);
+        if (!view.box.empty()) log::info("app", "the surface lies outside [-1, 1]^3: framed by the box " + view.box);
     }
-    if (!frame.empty()) jobs::frameField(prepared, frame, {}, label, "app"); // a box: no GL, no failure
-    return frame;
+    prepared.frame.level = view.level;
+    if (!view.box.empty()) jobs::frameField(prepared, view.box, {}, label, "app"); // a box: no GL, no failure
+    return view;
+}
+
+// What the Problems panel says of a level taken as an unsigned field's surface (decideView).
+shaders::Diagnostic levelNote(const shaders::PreparedSdf& prepared, const std::string& file) {
+    char level[32];
+    std::snprintf(level, sizeof level, "%.7g", double(prepared.frame.level));
+    return {file, prepared.marchThresholdLine, 1, shaders::Severity::Warning,
+            std::string("the field is never negative (an unsigned distance, with no inside): its surface is taken at f = ") +
+                level + ", where this march stops; samples and meshes made here use it (--level " + level +
+                " on the command line)"};
 }
 
 // The document's text over its mesh: what the jobs' openSdf builds from the same input.
@@ -143,14 +158,15 @@ void SdfDocument::startCheck(const QString& text) {
     const auto channels = m_channels;
     const bool mesh = isMesh();
     std::string sign = m_meshSign.toStdString(), normalize = m_meshNormalize.toStdString();
-    std::string frame = m_frame.toStdString(), decidedFor = m_frameDecidedFor.toStdString();
+    jobs::PastedView view{m_frame.toStdString(), m_level};
+    std::string decidedFor = m_frameDecidedFor.toStdString();
     // glslang checks the variant the viewport will compile (shading, AO, plane, markers, ...).
     const shaders::TracerFeatures features =
         m_features ? m_features(m_plane) : renderer::tracerFeatures(values::ShadingSettings{}, values::TraceSettings{}, m_plane);
     QPointer<SdfDocument> self(this);
     QThreadPool::globalInstance()->start([self, generation, source = std::move(source), path = std::move(path),
                                           entry = std::move(entry), features, channels, mesh, sign = std::move(sign),
-                                          normalize = std::move(normalize), frame = std::move(frame),
+                                          normalize = std::move(normalize), view = std::move(view),
                                           decidedFor = std::move(decidedFor)]() mutable {
         shaders::IncludeOptions options;
         options.libraryRoots = {paths::shaderLibraryRoot(), paths::datasetRoot()};
@@ -162,10 +178,11 @@ void SdfDocument::startCheck(const QString& text) {
         // Framed only when a pasted whole shader's surface lies outside the unit box.
         const bool decided = !mesh && prepared.ok();
         if (decided)
-            frame = prepared.shadertoyMainImage
-                        ? decideFrame(prepared, frameFor == decidedFor ? &frame : nullptr, path.empty() ? "<editor>" : path)
-                        : std::string();
+            view = prepared.shadertoyMainImage
+                       ? decideView(prepared, frameFor == decidedFor ? &view : nullptr, path.empty() ? "<editor>" : path)
+                       : jobs::PastedView{};
         std::vector<shaders::Diagnostic> diagnostics = prepared.diagnostics;
+        if (decided && view.level != 0.0f) diagnostics.push_back(levelNote(prepared, path.empty() ? "<editor>" : path));
         if (prepared.ok()) {
             auto composed = shaders::composeTracer(prepared, features);
             if (composed) {
@@ -180,11 +197,12 @@ void SdfDocument::startCheck(const QString& text) {
         }
         QMetaObject::invokeMethod(
             QCoreApplication::instance(),
-            [self, generation, prepared = std::move(prepared), diagnostics = std::move(diagnostics), frame, frameFor,
+            [self, generation, prepared = std::move(prepared), diagnostics = std::move(diagnostics), view, frameFor,
              decided]() mutable {
                 if (!self) return;
                 if (decided && generation == self->m_generation) {
-                    self->m_frame = QString::fromStdString(frame);
+                    self->m_frame = QString::fromStdString(view.box);
+                    self->m_level = view.level;
                     self->m_frameDecidedFor = QString::fromStdString(frameFor);
                 }
                 self->finishCheck(generation, std::move(prepared), std::move(diagnostics));

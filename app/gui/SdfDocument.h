@@ -62,6 +62,10 @@ public:
     // check of each file and entry function (jobs::frameBoxOutsideUnitBox) and passed to jobs as
     // --normalize; empty when the field is shown as it is.
     const QString& frame() const { return m_frame; }
+    // A pasted whole shader whose field is never negative (an unsigned distance) and whose own march
+    // stops at a constant (`d < 0.001`): that constant, its surface here and passed to jobs as
+    // --level (jobs::decidePastedView); 0 otherwise.
+    float level() const { return m_level; }
 
     // The editor's latest text, and the text the viewport shows (the last that compiled and
     // passed its timing frame, or the one before when the viewport fell back from a stalling one).
@@ -166,6 +170,7 @@ private:
     QString m_entry;
     QString m_meshSign, m_meshNormalize;
     QString m_frame, m_frameDecidedFor; // the frame, and the file and entry it was decided for
+    float m_level = 0.0f;               // decided with the frame
     std::array<std::string, shaders::kShadertoyChannels> m_channels;
     QTimer m_debounce;
     std::uint64_t m_generation = 0;

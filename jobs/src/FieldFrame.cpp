@@ -43,22 +43,24 @@ Expected<std::optional<sampling::SurfaceBox>> searchSurface(const shaders::Prepa
     return sampling::findSurfaceBox(evaluator, settings, 64.0f, range); // the evaluator releases its GL objects
 }
 
+// Never negative and near 0 somewhere: a distance to thin lines or sheets, floored or taken with
+// abs(). Near means within what the lattice can see (a distance above sqrt(3)/2 of its spacing at
+// every lattice point has no zero in its cube): a glow's density stays further off.
+bool looksUnsigned(const sampling::FieldRange& range) { return !range.negative && range.least <= 0.87f * range.finest; }
+
 // Why a field whose search found no surface has none, from the values the lattices held; for an
 // unsigned field, the level its own march stops at where that is known.
 std::string noSurfaceText(const sampling::FieldRange& range, const shaders::PreparedSdf& sdf) {
     if (range.finite == 0) return "the field is not finite anywhere within [-64, 64]^3";
     char text[600];
-    // Near 0 without going below: a distance to thin lines or sheets, floored or taken with abs().
-    // Near means within what the lattice can see (a distance above sqrt(3)/2 of its spacing at
-    // every lattice point has no zero in its cube): a glow's density stays further off.
-    if (!range.negative && range.least <= 0.87f * range.finest && sdf.marchThreshold > 0.0f)
+    if (looksUnsigned(range) && sdf.marchThreshold > 0.0f)
         std::snprintf(text, sizeof text,
                       "the field is never negative within [-64, 64]^3 and its least value is %.3g: an unsigned "
                       "distance, with no inside, so samples never change sign and there is nothing to mesh; the "
                       "tracer shows where rays come within its tolerance. Its own march stops where the field drops "
                       "below %.7g (line %d): --level %.7g takes that level set as the surface",
                       double(range.least), double(sdf.marchThreshold), sdf.marchThresholdLine, double(sdf.marchThreshold));
-    else if (!range.negative && range.least <= 0.87f * range.finest)
+    else if (looksUnsigned(range))
         std::snprintf(text, sizeof text,
                       "the field is never negative within [-64, 64]^3 and its least value is %.3g: an unsigned "
                       "distance, with no inside, so samples never change sign and there is nothing to mesh; the "
@@ -78,6 +80,15 @@ float halfSide(const sampling::SurfaceBox& box) {
     float half = 0.0f;
     for (std::size_t a = 0; a < 3; ++a) half = std::max(half, 0.5f * (box.high[a] - box.low[a]));
     return half;
+}
+
+// The box X0,Y0,Z0,X1,Y1,Z1 (as --normalize takes it) centred on `box` with its longest side.
+std::string boxText(const sampling::SurfaceBox& box) {
+    const float half = halfSide(box);
+    char text[200];
+    std::snprintf(text, sizeof text, "%.5g,%.5g,%.5g,%.5g,%.5g,%.5g", box.centre[0] - half, box.centre[1] - half,
+                  box.centre[2] - half, box.centre[0] + half, box.centre[1] + half, box.centre[2] + half);
+    return text;
 }
 
 std::string formatted(const char* format, double a, double b, double c) {
@@ -150,12 +161,20 @@ std::string frameBoxOutsideUnitBox(const shaders::PreparedSdf& sdf, const std::v
     auto found = searchSurface(sdf, parameters, true, &range);
     if (found && !*found && range.finite > 0 && noSurface) *noSurface = noSurfaceText(range, sdf);
     if (!found || !*found) return {};
-    const sampling::SurfaceBox& box = **found;
-    const float half = halfSide(box);
-    char text[200];
-    std::snprintf(text, sizeof text, "%.5g,%.5g,%.5g,%.5g,%.5g,%.5g", box.centre[0] - half, box.centre[1] - half,
-                  box.centre[2] - half, box.centre[0] + half, box.centre[1] + half, box.centre[2] + half);
-    return text;
+    return boxText(**found);
+}
+
+PastedView decidePastedView(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters) {
+    PastedView view;
+    if (sdf.mesh || !sdf.ok() || !renderer::HeadlessContext::anyCurrent()) return view;
+    sampling::FieldRange range;
+    auto found = searchSurface(sdf, parameters, true, &range);
+    if (!found) return view;
+    if (*found)
+        view.box = boxText(**found);
+    else if (range.finite > 0 && looksUnsigned(range))
+        view.level = sdf.marchThreshold;
+    return view;
 }
 
 std::string noSurfaceReason(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters) {

@@ -539,6 +539,69 @@ TEST(Shadertoy, PastedShaderTracesItsMapAndShowsItsOwnPicture) {
     EXPECT_TRUE(isBackground(frameOf(window).pixelColor(2, 2)));
 }
 
+// A pasted shader whose field is never negative (the distance to two thin lines, floored): the
+// workbench takes its surface where its own march stops (d < 0.001), says so in the title and the
+// Problems panel (at the march's test, also after an edit), and the jobs get the same level.
+TEST(Shadertoy, AnUnsignedFieldsSurfaceIsWhereItsMarchStops) {
+    const QString folder = QDir::temp().filePath(QString("sdfwb-gui-level-%1").arg(QCoreApplication::applicationPid()));
+    QDir().mkpath(folder);
+    const QString path = folder + "/lines.glsl";
+    {
+        QFile file(path);
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+        file.write("float segment(vec3 p, vec3 a, vec3 b) {\n"
+                   "    vec3 pa = p - a, ba = b - a;\n"
+                   "    return length(pa - ba * clamp(dot(pa, ba) / dot(ba, ba), 0.0, 1.0));\n"
+                   "}\n"
+                   "float map(vec3 p) {\n"
+                   "    return max(min(segment(p, vec3(-0.6, 0.0, 0.0), vec3(0.6, 0.0, 0.0)),\n"
+                   "                   segment(p, vec3(0.0, -0.6, 0.1), vec3(0.0, 0.6, 0.1))), 0.0004);\n"
+                   "}\n"
+                   "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                   "    vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;\n"
+                   "    vec3 ro = vec3(0.0, 0.0, -3.0), rd = normalize(vec3(uv, 1.5));\n"
+                   "    float t = 0.0;\n"
+                   "    for (int i = 0; i < 120; i++) {\n"
+                   "        float d = map(ro + rd * t);\n"
+                   "        if (d < 0.001 || t > 20.0) break;\n"
+                   "        t += d;\n"
+                   "    }\n"
+                   "    fragColor = vec4(vec3(t < 20.0 ? 1.0 : 0.0), 1.0);\n"
+                   "}\n");
+    }
+    app::MainWindow window;
+    window.resize(1000, 640);
+    window.show();
+    ASSERT_TRUE(activate(window));
+    ASSERT_TRUE(openApplied(window, path));
+    EXPECT_EQ(window.document()->level(), 0.001f);
+    EXPECT_TRUE(window.document()->frame().isEmpty()) << "the lines cross the unit box";
+    EXPECT_TRUE(window.windowTitle().contains("an unsigned field: its surface taken at f = 0.001"))
+        << window.windowTitle().toStdString();
+    EXPECT_EQ(window.document()->input().level, 0.001f) << "the jobs run the levelled field";
+    auto note = [&] {
+        const auto& diagnostics = window.document()->diagnostics();
+        return std::find_if(diagnostics.begin(), diagnostics.end(), [](const shaders::Diagnostic& d) {
+            return d.message.find("its surface is taken at f = 0.001") != std::string::npos;
+        });
+    };
+    ASSERT_NE(note(), window.document()->diagnostics().end());
+    EXPECT_EQ(note()->line, 15) << "the march's test";
+    // After an edit the decision is kept, and said again.
+    int updates = 0;
+    QObject::connect(window.document(), &app::SdfDocument::diagnosticsChanged, [&] { ++updates; });
+    window.editor()->setText(window.editor()->text() + "\n// edited\n");
+    ASSERT_TRUE(waitFor([&] { return updates > 0; }));
+    EXPECT_NE(note(), window.document()->diagnostics().end());
+    EXPECT_EQ(window.document()->level(), 0.001f);
+    if (QString shot = screenshotPath("unsigned_lines.png"); !shot.isEmpty()) windowShot(window).save(shot);
+
+    ASSERT_TRUE(openApplied(window, datasetFile("Geometry/Sphere.glsl")));
+    EXPECT_EQ(window.document()->level(), 0.0f);
+    EXPECT_EQ(window.document()->input().level, 0.0f);
+    QDir(folder).removeRecursively();
+}
+
 // A pasted scene built around its own camera (a ball at z = 5, outside [-1, 1]^3): the workbench
 // frames it by its surface's box, so the ball fills the view instead of an empty box; the title
 // says so and the jobs get the same frame. A dataset file is shown as it is.

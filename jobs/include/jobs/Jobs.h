@@ -84,6 +84,15 @@ JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& w
 std::string frameBoxOutsideUnitBox(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters,
                                    std::string* noSurface = nullptr);
 
+// The level the workbench takes as an unsigned field's surface (a pasted whole shader whose field is
+// never negative and whose own march stops at a constant: PreparedSdf::marchThreshold), decided with
+// frameBoxOutsideUnitBox's search: `box` (as that returns it), else that constant as `level`.
+struct PastedView {
+    std::string box;
+    float level = 0.0f;
+};
+PastedView decidePastedView(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters);
+
 // Why a GLSL field has no surface within [-64, 64]^3, for messages: never negative but near 0 (an
 // unsigned distance: --level gives it a surface), or no change of sign at all, with its values;
 // empty when it has one, for a mesh, or when the search cannot run (no current GL context).
