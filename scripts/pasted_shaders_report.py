@@ -82,7 +82,7 @@ with tempfile.TemporaryDirectory() as scratch:
         inline_match = INLINE_ENTRY.search(log)
         entry = (f"{match.group(1)} (march, line {match.group(2)})" if match else
                  f"{inline_match.group(1)} (inline march, line {inline_match.group(2)})" if inline_match else "")
-        sample_code, sample_error, _ = run([BINARY, "--batch", "sample", "--sdf", path, "--pattern", "rand", "-n", "2000",
+        sample_code, sample_error, sample_log = run([BINARY, "--batch", "sample", "--sdf", path, "--pattern", "rand", "-n", "2000",
                                             "--output", os.path.join(scratch, "rows.npz")])
         sampled = sample_code == 0
         # Whether the field changes sign among the 2,000 rows: a surface in the box (a glow's
@@ -92,14 +92,15 @@ with tempfile.TemporaryDirectory() as scratch:
         # "yes" when the framed rows change sign, "none" when no surface was found within [-64, 64]^3.
         framed = ""
         if sampled and not surface:
-            framed_code, framed_error, _ = run([BINARY, "--batch", "sample", "--sdf", path, "--normalize", "unit-cube",
+            framed_code, _, framed_log = run([BINARY, "--batch", "sample", "--sdf", path, "--normalize", "unit-cube",
                                                 "--pattern", "rand", "-n", "2000", "--output", os.path.join(scratch, "framed.npz")])
             framed = ("yes" if changes_sign(os.path.join(scratch, "framed.npz")) else "no") if framed_code == 0 else (
-                "none" if "no surface within" in framed_error or "never negative" in framed_error else "failed")
+                "none" if any(why in framed_log for why in ("no surface within", "never negative", "not finite anywhere"))
+                else "failed")
         # An unsigned field (never negative, near 0: the run's warning says so): whether the level set
         # at a usual march hit threshold, --level 0.001, has a surface in the box (framed if needed).
         level = ""
-        if sampled and not surface and "never negative" in sample_error:
+        if sampled and not surface and "never negative" in sample_log:
             level = "no"
             for extra in ([], ["--normalize", "unit-cube"]):
                 code, _, _ = run([BINARY, "--batch", "sample", "--sdf", path, "--level", "0.001", *extra, "--pattern", "rand",
