@@ -118,6 +118,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             "files[0] is not the root text (or, read as another host's, has other lines)");
     for (const Diagnostic& diagnostic : prepared.diagnostics) {
         require(!diagnostic.message.empty(), "a diagnostic without a message");
+        if (diagnostic.line < 1) std::fprintf(stderr, "%s\n", formatDiagnostic(diagnostic).c_str());
         require(diagnostic.line >= 1, "a diagnostic before line 1");
         (void)source.map.lineText(0, diagnostic.line);
         (void)formatDiagnostic(diagnostic);

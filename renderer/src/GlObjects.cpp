@@ -61,7 +61,8 @@ CompiledShader compileShader(GLenum type, const shaders::ComposedShader& compose
     CompiledShader result;
     result.shader = GlShader(glCreateShader(type));
     const char* text = composed.text.c_str();
-    glShaderSource(result.shader.id(), 1, &text, nullptr);
+    const GLint length = GLint(composed.text.size()); // all of it: a NUL byte in a comment does not end the code
+    glShaderSource(result.shader.id(), 1, &text, &length);
     glCompileShader(result.shader.id());
     GLint status = 0, logLength = 0;
     glGetShaderiv(result.shader.id(), GL_COMPILE_STATUS, &status);

@@ -34,8 +34,11 @@ std::vector<Diagnostic> checkWithGlslang(const ComposedShader& composed) {
     ensureGlslangInitialised();
     EShLanguage language = toLanguage(composed.stage);
     glslang::TShader shader(language);
+    // With its length: a NUL byte in the code (a pasted file's stray byte) is an error at its line,
+    // not the end of the text.
     const char* text = composed.text.c_str();
-    shader.setStrings(&text, 1);
+    const int length = int(composed.text.size());
+    shader.setStringsWithLengths(&text, &length, 1);
     // No client/target environment: plain desktop GLSL rules, as a GL driver applies them
     // (an OpenGL/SPIR-V environment would demand explicit uniform locations).
     // Cascading errors: report every error, not just the first.

@@ -137,7 +137,11 @@ private:
                     m_out.extensions.push_back(directive);
                 m_out.text += "\n";
             } else {
+                // A NUL byte, which the source checks allow only in comments: a space for the compilers
+                // (Mesa's preprocessor ends the code there).
+                const std::size_t at = m_out.text.size();
                 m_out.text += line;
+                std::replace(m_out.text.begin() + std::ptrdiff_t(at), m_out.text.end(), '\0', ' ');
                 m_out.text += "\n";
             }
         }

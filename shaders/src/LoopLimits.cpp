@@ -213,7 +213,8 @@ std::vector<Diagnostic> parseForLongLoops(const ComposedShader& composed, std::u
     std::call_once(once, [] { glslang::InitializeProcess(); });
     glslang::TShader shader(toLanguage(composed.stage));
     const char* text = composed.text.c_str();
-    shader.setStrings(&text, 1);
+    const int length = int(composed.text.size()); // past a NUL byte in a comment, as the checker reads it
+    shader.setStringsWithLengths(&text, &length, 1);
     if (!shader.parse(GetDefaultResources(), 430, ECoreProfile, false, false, EShMsgDefault)) return {};
     glslang::TIntermediate* intermediate = shader.getIntermediate();
     if (!intermediate || !intermediate->getTreeRoot()) return {};

@@ -590,7 +590,8 @@ struct Reached {
 bool parseReached(const ComposedShader& composed, Reached& tree) {
     ensureGlslangInitialised();
     const char* text = composed.text.c_str();
-    tree.shader.setStrings(&text, 1);
+    const int length = int(composed.text.size()); // past a NUL byte in a comment, as the checker reads it
+    tree.shader.setStringsWithLengths(&text, &length, 1);
     if (!tree.shader.parse(GetDefaultResources(), 430, ECoreProfile, false, false, EShMsgDefault)) return false;
     const glslang::TIntermediate* intermediate = tree.shader.getIntermediate();
     if (!intermediate || !intermediate->getTreeRoot()) return false;

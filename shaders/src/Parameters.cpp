@@ -427,6 +427,11 @@ struct Scanner {
             report(at, Severity::Error, "parameter '" + p.name + "': " + kind + "[...] has no closing ]");
             return false;
         }
+        // `slider[uniform float B; slider[0,1,2]`: the ] closes another annotation, whose numbers are not this one's.
+        if (const std::size_t open = text.find('[', k + 1); open < close) {
+            report(open, Severity::Error, "parameter '" + p.name + "': " + kind + "[...] has no closing ] before this [");
+            return false;
+        }
         const auto parts = items(k + 1, close);
         const std::string form = kind == "slider"     ? "slider[MIN,DEFAULT,MAX]"
                                  : kind == "checkbox" ? "checkbox[true|false]"

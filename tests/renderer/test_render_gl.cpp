@@ -110,6 +110,18 @@ TEST_F(RendererTest, BrokenSdfKeepsTheLastGoodProgramAndMapsDriverErrors) {
     sdfRenderer.releaseGl();
 }
 
+// A pasted file with a NUL byte in a comment: the driver compiles the code after it (Mesa's
+// preprocessor ends the text at a NUL, so the composed text holds a space there).
+TEST_F(RendererTest, ANulByteInACommentRenders) {
+    renderer::SdfRenderer sdfRenderer;
+    const std::string text("// pasted \0 junk\nfloat sdf(vec3 p) { return length(p) - 0.5; }\n", 63);
+    auto diagnostics = sdfRenderer.setSdf(prepare(text, "nul.glsl"));
+    ASSERT_TRUE(diagnostics.empty()) << shaders::formatDiagnostic(diagnostics[0]);
+    renderer::OffscreenRenderer offscreen;
+    EXPECT_GT(foreground(offscreen.render(sdfRenderer, 160, 90, values::Camera{}, 0.0f), sdfRenderer.shading().background), 500);
+    sdfRenderer.releaseGl();
+}
+
 TEST_F(RendererTest, EveryDatasetShapeRenders) {
     dataset::Catalogue catalogue = dataset::Catalogue::scan(fs::path(SDFWB_SOURCE_DIR) / "dataset");
     ASSERT_FALSE(catalogue.entries().empty());

@@ -3,6 +3,7 @@
 
 #include <shaders/GlslChecker.h>
 #include <shaders/SdfSource.h>
+#include <shaders/ShaderComposer.h>
 #include <shaders/TracerComposer.h>
 
 #include "common/FirstError.h"
@@ -19,6 +20,7 @@
 #include <unistd.h>
 
 using namespace sdfwb;
+using namespace std::string_literals;
 namespace fs = std::filesystem;
 
 namespace {
@@ -73,6 +75,24 @@ TEST(Hostile, NonAsciiBytesInCodeAreRefusedButCommentsMayHoldAnything) {
     auto comment = prepare("// caf\xc3\xa9 \xff\xfe Latin-1 and broken UTF-8 in a comment\nfloat sdf(vec3 p) { return length(p) "
                            "- 0.5; } /* \x80 */\n");
     EXPECT_TRUE(comment.ok());
+}
+
+// A NUL byte in a comment is a comment's byte: the compilers read the code past it (glslang and the
+// driver get the text's length, not a C string that ends there).
+TEST(Hostile, ANulByteInACommentDoesNotEndTheCode) {
+    const std::string text = "// pasted \0 junk\nfloat sdf(vec3 p) { return length(p) - 0.5; }\n"s;
+    ASSERT_EQ(text.find('\0'), 10u);
+    auto sdf = prepare(text);
+    ASSERT_TRUE(sdf.ok()) << firstError(sdf).message;
+    const std::vector<shaders::ShaderPiece> stage{{"<test main>", "void main() {}\n"}};
+    EXPECT_TRUE(shaders::checkWithGlslang(shaders::composeSdfShader(sdf, shaders::Stage::Fragment, stage, {})).empty());
+    // A whole shader whose own main() comes after the byte: its march is read, so its field is found.
+    auto whole = prepare("// \0\nfloat map(vec3 p) { return length(p) - 1.0; }\n"
+                         "void mainImage(out vec4 c, in vec2 f) { float t = 0.0;\n"
+                         "  for (int i = 0; i < 64; i++) { float d = map(vec3(0, 0, -3.0 + t)); if (d < 0.001) "
+                         "break; t += d; }\n  c = vec4(t); }\n"s);
+    EXPECT_TRUE(whole.ok()) << firstError(whole).message;
+    EXPECT_EQ(whole.signature.entry, "map");
 }
 
 TEST(Hostile, OwnVersionLineIsAcceptedAndTheCheckerStillPasses) {

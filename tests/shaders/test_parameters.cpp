@@ -113,6 +113,7 @@ TEST(Parameters, MistakesAreNamedAtTheirLineAndColumn) {
         {"uniform float r = 1e39;\n", 1, 19, Severity::Error, "must be a number"},
         {"uniform float r = nan;\n", 1, 19, Severity::Error, "must be a number"},
         {"uniform bool b = false; // @range 0 1\n", 1, 28, Severity::Error, "a bool takes no @range"},
+        {"uniform vec3 v; slider[uniform float s; slider[0,1,2]\n", 1, 47, Severity::Error, "no closing ] before this ["},
     };
     for (const Case& c : cases) {
         ParameterScan scan = parseParameters(c.text, "bad.glsl");
@@ -139,6 +140,12 @@ TEST(Parameters, HostileTextEndsCleanly) {
     const std::string nul("uniform float r = 1\0x\n;\nfloat sdf(vec3 p) { return length(p) - r; }\n", 68);
     ParameterScan withNul = parseParameters(nul, "nul.glsl");
     EXPECT_TRUE(withNul.parameters.empty());
+    // A slider whose ] closes the next declaration's (found by the fuzzer): both claimed the same
+    // default text, so saving defaults wrote it twice ("33,3)"). Only the complete one is a parameter.
+    const std::string shared = "uniform vec3 v; slider[uniform float s; slider[-3.0,3.0,5.0] Locked\n";
+    ParameterScan overlapping = parseParameters(shared, "shared.frag");
+    ASSERT_EQ(overlapping.parameters.size(), 1u);
+    EXPECT_EQ(overlapping.parameters[0].name, "s");
     std::string many;
     for (int i = 0; i < 5000; ++i)
         many += "uniform float p" + std::to_string(i) + " = " + std::to_string(i) + ".0; // @range -1 99999\n";
