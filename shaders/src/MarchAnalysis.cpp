@@ -3,6 +3,7 @@
 #include "CallText.h"
 #include "InlineField.h"
 #include "MarchThreshold.h"
+#include "MarchTree.h"
 #include "ParameterText.h"
 #include "Words.h"
 
@@ -22,6 +23,8 @@
 namespace sdfwb::shaders {
 namespace {
 
+using namespace detail;
+
 using detail::callArguments;
 using detail::enteredBlocks;
 using detail::lineStart;
@@ -32,74 +35,6 @@ using glslang::TIntermBinary;
 using glslang::TIntermLoop;
 using glslang::TIntermSymbol;
 using glslang::TIntermTyped;
-
-std::string plainName(const glslang::TString& mangled) {
-    const std::string name(mangled.c_str());
-    return name.substr(0, name.find('('));
-}
-
-// What a subtree holds: assignments, user function calls, loops, and the symbols it reads.
-struct Contents : glslang::TIntermTraverser {
-    std::vector<TIntermBinary*> assignments;
-    std::vector<TIntermAggregate*> calls;
-    std::vector<TIntermLoop*> loops;
-    std::set<long long> symbols;
-    bool everyMove = false; // every assignment (`*=`, `/=`, ...), not only =, += and -=
-
-    bool visitBinary(glslang::TVisit, TIntermBinary* node) override {
-        if (everyMove && node->getOp() >= glslang::EOpAssign && node->getOp() <= glslang::EOpRightShiftAssign) {
-            assignments.push_back(node);
-            return true;
-        }
-        switch (node->getOp()) {
-        case glslang::EOpAssign:
-        case glslang::EOpAddAssign:
-        case glslang::EOpSubAssign:
-            assignments.push_back(node);
-            break;
-        default:
-            break;
-        }
-        return true;
-    }
-    bool visitAggregate(glslang::TVisit, TIntermAggregate* node) override {
-        if (node->getOp() == glslang::EOpFunctionCall && node->isUserDefined()) calls.push_back(node);
-        return true;
-    }
-    bool visitLoop(glslang::TVisit, TIntermLoop* node) override {
-        loops.push_back(node);
-        return true;
-    }
-    void visitSymbol(TIntermSymbol* node) override { symbols.insert(node->getId()); }
-};
-
-Contents contentsOf(TIntermNode* node) {
-    Contents contents;
-    if (node) node->traverse(&contents);
-    return contents;
-}
-
-// The variable an assignment writes (`p`, `p.xy`, `h[1]`, `hit.t`), or -1.
-long long assignedSymbol(TIntermTyped* left) {
-    while (TIntermBinary* access = left->getAsBinaryNode()) {
-        switch (access->getOp()) {
-        case glslang::EOpVectorSwizzle:
-        case glslang::EOpIndexDirect:
-        case glslang::EOpIndexIndirect:
-        case glslang::EOpIndexDirectStruct:
-            left = access->getLeft();
-            continue;
-        default:
-            return -1;
-        }
-    }
-    TIntermSymbol* symbol = left->getAsSymbolNode();
-    return symbol ? symbol->getId() : -1;
-}
-
-bool isFloatVec3(const glslang::TType& type) {
-    return type.getBasicType() == glslang::EbtFloat && type.isVector() && type.getVectorSize() == 3 && !type.isArray();
-}
 
 // A distance's return: float, vec2 or vec4 (a value and a material id or colour). Not vec3: what a
 // march loop calls and returns a vec3 is a normal or a colour (a reflection loop's `ro += nor * eps`
@@ -193,14 +128,6 @@ bool readsFirstComponentOnly(TIntermNode* loop, const CallResult& result) {
     return reads.single[0] > 0 && reads.single[1] + reads.single[2] + reads.single[3] + reads.other == 0;
 }
 
-struct Assignment {
-    long long target;
-    glslang::TOperator op;
-    std::set<long long> reads;         // symbols of the right-hand side
-    std::set<TIntermAggregate*> calls; // calls in the right-hand side
-    TIntermBinary* node = nullptr;
-};
-
 // The assignment by which `loop` steps by `call` (a call inside it; see the header), or null.
 const Assignment* stepBy(const std::vector<Assignment>& assignments, TIntermAggregate* call) {
     // The variables the call's point depends on within the loop.
@@ -248,67 +175,21 @@ int distanceComponent(const Assignment& step, const std::vector<Assignment>& ass
     return found;
 }
 
-// A type as GLSL writes it (float, ivec3, mat3, a struct's name); empty for arrays and others.
-std::string glslTypeName(const glslang::TType& type) {
-    if (type.isArray()) return {};
-    if (type.getBasicType() == glslang::EbtStruct) return type.getTypeName().c_str();
-    const char* scalar = nullptr;
-    const char* prefix = nullptr;
-    switch (type.getBasicType()) {
-    case glslang::EbtFloat:
-        scalar = "float", prefix = "";
-        break;
-    case glslang::EbtInt:
-        scalar = "int", prefix = "i";
-        break;
-    case glslang::EbtUint:
-        scalar = "uint", prefix = "u";
-        break;
-    case glslang::EbtBool:
-        scalar = "bool", prefix = "b";
-        break;
-    default:
-        return {};
-    }
-    if (type.isScalar()) return scalar;
-    if (type.isVector()) return std::string(prefix) + "vec" + std::to_string(type.getVectorSize());
-    if (type.isMatrix() && type.getBasicType() == glslang::EbtFloat) {
-        const int columns = type.getMatrixCols(), rows = type.getMatrixRows();
-        return "mat" + std::to_string(columns) + (columns == rows ? "" : "x" + std::to_string(rows));
-    }
-    return {};
-}
-
-std::vector<TIntermSymbol*> parametersOf(TIntermAggregate* function) {
-    std::vector<TIntermSymbol*> parameters;
-    if (function->getSequence().empty()) return parameters;
-    if (TIntermAggregate* list = function->getSequence().front()->getAsAggregate())
-        for (TIntermNode* node : list->getSequence())
-            if (TIntermSymbol* symbol = node->getAsSymbolNode()) parameters.push_back(symbol);
-    return parameters;
-}
-
 bool isInParameter(const TIntermSymbol* symbol) {
     const glslang::TStorageQualifier storage = symbol->getQualifier().storage;
     return storage == glslang::EvqIn || storage == glslang::EvqConstReadOnly;
 }
 
-// The offset of the '{' that opens `function`'s body in `text`, or npos. (A definition's location
-// is its name's or its body's line: the last mention of the name up to it.)
-std::size_t bodyOpen(const std::string& text, TIntermAggregate* function) {
-    const std::string name = plainName(function->getName());
-    const std::size_t definition = lineStart(text, function->getLoc().line + 1);
-    const std::size_t named = text.rfind(name, definition == std::string::npos ? text.size() : definition);
-    if (named == std::string::npos) return std::string::npos;
-    int depth = 0;
-    for (std::size_t i = text.find('(', named); i != std::string::npos && i < text.size(); ++i) {
-        if (text[i] == '(') ++depth;
-        if (text[i] == ')' && --depth == 0) return text.find('{', i);
-    }
-    return std::string::npos;
-}
-
 using Functions = std::map<std::string, TIntermAggregate*>; // definitions by mangled name
+
+// Whether the function `from` (mangled) calls `target`, directly or through others.
+bool calls(const std::string& from, const glslang::TString& target, const Functions& functions, std::set<std::string>& seen) {
+    auto it = functions.find(from);
+    if (it == functions.end() || !seen.insert(from).second) return false;
+    for (TIntermAggregate* c : contentsOf(it->second).calls)
+        if (c->getName() == target || calls(c->getName().c_str(), target, functions, seen)) return true;
+    return false;
+}
 
 // The file-scope variables (not const, not uniforms) a subtree and the functions it calls read and
 // assign, by symbol id with their names. A variable only assigned or updated in place (`glow += x`,
@@ -347,7 +228,8 @@ struct GlobalUse : glslang::TIntermTraverser {
 // function it calls first): the wrapper runs those statements of mainImage first, as it does for
 // parameters (traceArguments). Where mainImage marches itself, the statements before its loop
 // (`lights[2].rotMat = rotate(...);`). Fills `m`'s prelude and globals; leaves them empty when
-// mainImage does not call the marching function (or hold its loop) at the top of its body.
+// mainImage does not call the marching function, or one that reaches it, (or hold its loop) at the
+// top of its body.
 void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate* marcher, TIntermLoop* loop,
                   TIntermAggregate* mainImage, const ComposedShader& composed, const Functions& functions) {
     TIntermAggregate* body = mainImage->getSequence().size() > 1 ? mainImage->getSequence()[1]->getAsAggregate() : nullptr;
@@ -356,7 +238,10 @@ void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate*
     reads.entered.insert(field->getName().c_str());
     field->traverse(&reads);
     GlobalUse sets(functions);
-    TIntermNode* marcherCall = nullptr; // the call of the marching function, or mainImage's own march loop
+    // The call of the marching function, or of the function that reaches it (`col = render(ro, rd)`), or
+    // mainImage's own march loop.
+    TIntermNode* marcherCall = nullptr;
+    std::string called;
     for (TIntermNode* statement : body->getSequence()) {
         if (marcher == mainImage) { // the loop at the top of its body (`for (float t = 0.; ...)` is a sequence)
             TIntermAggregate* sequence = statement->getAsAggregate();
@@ -365,7 +250,9 @@ void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate*
                 marcherCall = loop;
         } else {
             for (TIntermAggregate* c : contentsOf(statement).calls)
-                if (c->getName() == marcher->getName()) marcherCall = c;
+                if (std::set<std::string> seen;
+                    c->getName() == marcher->getName() || calls(c->getName().c_str(), marcher->getName(), functions, seen))
+                    marcherCall = c, called = plainName(c->getName());
             if (marcherCall && (statement->getAsLoopNode() || statement->getAsSelectionNode() || statement->getAsBranchNode()))
                 return;
         }
@@ -381,9 +268,8 @@ void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate*
     const std::string text = stripComments(composed.map.files[std::size_t(file)].text);
     std::string before;
     int callLineNumber = marcherCall->getLoc().line;
-    if (marcher != mainImage &&
-        (callArguments(text, callLineNumber, plainName(marcher->getName()), &before, &callLineNumber).empty() ||
-         before.find_first_of(";{}") != std::string::npos))
+    if (marcher != mainImage && (callArguments(text, callLineNumber, called, &before, &callLineNumber).empty() ||
+                                 before.find_first_of(";{}") != std::string::npos))
         return;
     const std::size_t open = bodyOpen(text, mainImage), callLine = lineStart(text, callLineNumber);
     if (open == std::string::npos || callLine == std::string::npos || open >= callLine ||
@@ -508,121 +394,6 @@ void traceArguments(MarchedFunction& m, TIntermAggregate* call, TIntermAggregate
     }
 }
 
-// Fills an inline march's prelude and body from its loop's text (InlineField.h), or its unresolved.
-void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* function, bool isMainImage,
-                     const ComposedShader& composed) {
-    const int file = loop->getLoc().string;
-    if (file < 0 || file >= int(composed.map.files.size()) || function->getLoc().string != file) {
-        march.unresolved = "the loop and its function are in different files";
-        return;
-    }
-    const std::string stripped = stripComments(composed.map.files[std::size_t(file)].text);
-    const std::size_t line = lineStart(stripped, loop->getLoc().line);
-    if (line == std::string::npos) {
-        march.unresolved = "the loop's line could not be read";
-        return;
-    }
-    // A loop a macro writes (golfed `#define c F{...}`): read from the macro's expansion.
-    const std::string text = withLoopMacroExpanded(stripped, line);
-    // The loop's keyword: at glslang's column, else the line's first loop keyword.
-    const std::size_t lineEnd = std::min(text.find('\n', line), text.size());
-    auto isKeyword = [&](std::size_t at) {
-        return at < lineEnd && (detail::isWordAt(text, at, "for") || detail::isWordAt(text, at, "while"));
-    };
-    std::size_t keyword = std::string::npos;
-    const std::size_t column = line + std::size_t(std::max(1, loop->getLoc().column));
-    if (isKeyword(column - 1))
-        keyword = column - 1;
-    else
-        for (std::size_t at = line; at < lineEnd && keyword == std::string::npos; ++at)
-            if (isKeyword(at)) keyword = at;
-    const std::size_t open = bodyOpen(text, function);
-    int enclosing = 0;
-    const std::string before = open == std::string::npos || keyword == std::string::npos || open >= keyword
-                                   ? std::string()
-                                   : enteredBlocks(text.substr(open + 1, keyword - open - 1), enclosing);
-    if (keyword == std::string::npos || open == std::string::npos || open >= keyword ||
-        !wholeStatements(before + std::string(std::size_t(std::max(0, enclosing)), '}'))) {
-        march.unresolved = march.function + "'s code before the loop is not whole statements";
-        return;
-    }
-    std::string why;
-    march.body = march.field.empty() ? inlineFieldBody(text, keyword, march.counter, march.point, march.step, why)
-                                     : pointMarchBody(text, keyword, march.point, march.field, march.step, why);
-    if (march.body.empty()) {
-        march.unresolved = why;
-        return;
-    }
-    const std::vector<TIntermSymbol*> parameters = parametersOf(function);
-    std::string declarations;
-    if (isMainImage && parameters.size() == 2) {
-        march.colour = parameters[0]->getName().c_str();
-        march.coordinate = parameters[1]->getName().c_str();
-    } else {
-        // Another function's parameters (the ray's origin and direction): zero, since the point is given.
-        for (TIntermSymbol* parameter : parameters) {
-            const std::string type = glslTypeName(parameter->getType());
-            if (type.empty()) {
-                march.body.clear();
-                march.unresolved =
-                    "parameter '" + std::string(parameter->getName().c_str()) + "' has a type the wrapper cannot declare";
-                return;
-            }
-            declarations += type + " " + parameter->getName().c_str() + " = " + type + "(0);\n";
-        }
-    }
-    march.prelude = declarations + before;
-    march.body += std::string(std::size_t(enclosing), '}'); // the blocks the prelude entered
-}
-
-} // namespace
-
-namespace {
-
-// A shader's tree and the functions mainImage reaches, mainImage first.
-struct Reached {
-    glslang::TShader shader{EShLangFragment};
-    std::map<std::string, TIntermAggregate*> functions; // definitions by mangled name
-    TIntermAggregate* mainImage = nullptr;
-    std::vector<TIntermAggregate*> reached;
-};
-
-bool parseReached(const ComposedShader& composed, Reached& tree) {
-    ensureGlslangInitialised();
-    const char* text = composed.text.c_str();
-    const int length = int(composed.text.size()); // past a NUL byte in a comment, as the checker reads it
-    tree.shader.setStringsWithLengths(&text, &length, 1);
-    if (!tree.shader.parse(GetDefaultResources(), 430, ECoreProfile, false, false, EShMsgDefault)) return false;
-    const glslang::TIntermediate* intermediate = tree.shader.getIntermediate();
-    if (!intermediate || !intermediate->getTreeRoot()) return false;
-    struct Definitions : glslang::TIntermTraverser {
-        std::map<std::string, TIntermAggregate*>* functions = nullptr;
-        bool visitAggregate(glslang::TVisit, TIntermAggregate* node) override {
-            if (node->getOp() != glslang::EOpFunction) return true;
-            (*functions)[node->getName().c_str()] = node;
-            return false;
-        }
-    } definitions;
-    definitions.functions = &tree.functions;
-    intermediate->getTreeRoot()->traverse(&definitions);
-    std::set<std::string> seen;
-    std::deque<std::string> queue;
-    for (const auto& [mangled, node] : tree.functions)
-        if (plainName(node->getName()) == "mainImage") {
-            queue.push_back(mangled);
-            tree.mainImage = node;
-        }
-    while (!queue.empty()) {
-        const std::string mangled = queue.front();
-        queue.pop_front();
-        auto it = tree.functions.find(mangled);
-        if (it == tree.functions.end() || !seen.insert(mangled).second) continue;
-        tree.reached.push_back(it->second);
-        for (TIntermAggregate* call : contentsOf(it->second).calls) queue.push_back(call->getName().c_str());
-    }
-    return true;
-}
-
 } // namespace
 
 std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
@@ -632,7 +403,8 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
     const std::vector<TIntermAggregate*>& reached = tree.reached;
 
     std::vector<MarchedFunction> marched;
-    for (TIntermAggregate* function : reached) {
+    for (std::size_t index = 0; index < reached.size(); ++index) {
+        TIntermAggregate* function = reached[index];
         for (TIntermLoop* loop : contentsOf(function).loops) {
             Contents inside = contentsOf(loop);
             std::vector<Assignment> assignments;
@@ -670,6 +442,7 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                                        member.empty() ? std::string() : std::string(returned.getTypeName().c_str()), member,
                                        glslTypeName(returned)});
                     entry = marched.end() - 1;
+                    entry->depth = tree.depth[index];
                     if (component > 0) entry->component = std::string(1, "xyzw"[component]);
                     if (mainImage) traceArguments(*entry, call, callee->second, function, mainImage, composed);
                     if (mainImage && entry->extraParameters <= 0)
@@ -683,114 +456,6 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
         }
     }
     return marched;
-}
-
-std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
-    Reached tree;
-    if (!parseReached(composed, tree)) return {};
-    std::vector<InlineMarch> found;
-    for (TIntermAggregate* function : tree.reached) {
-        for (TIntermLoop* loop : contentsOf(function).loops) {
-            Contents inside;
-            inside.everyMove = true; // `d /= o` carries the point into the step as `d = d / o` does
-            loop->traverse(&inside);
-            // A loop nested in this one advances its own march: found when that loop's turn comes.
-            std::set<TIntermBinary*> nested;
-            for (TIntermLoop* inner : inside.loops) {
-                if (inner == loop) continue;
-                Contents innerContents;
-                innerContents.everyMove = true;
-                inner->traverse(&innerContents);
-                nested.insert(innerContents.assignments.begin(), innerContents.assignments.end());
-            }
-            std::vector<Assignment> assignments;
-            for (TIntermBinary* node : inside.assignments) {
-                Contents right = contentsOf(node->getRight());
-                Assignment a{assignedSymbol(node->getLeft()), node->getOp(), right.symbols,
-                             std::set<TIntermAggregate*>(right.calls.begin(), right.calls.end())};
-                if (a.op != glslang::EOpAssign && a.target >= 0) a.reads.insert(a.target);
-                assignments.push_back(std::move(a));
-            }
-            // Names and types of the loop's symbols.
-            struct Symbols : glslang::TIntermTraverser {
-                std::map<long long, TIntermSymbol*> byId;
-                void visitSymbol(TIntermSymbol* node) override { byId.emplace(node->getId(), node); }
-            } symbols;
-            loop->traverse(&symbols);
-            auto typeOf = [&](long long id) -> const glslang::TType* {
-                auto it = symbols.byId.find(id);
-                return it == symbols.byId.end() ? nullptr : &it->second->getType();
-            };
-            bool marched = false;
-            // A point that grows itself (`p += rd * d`) by a float the loop computes from it.
-            for (std::size_t s = 0; s < inside.assignments.size() && !marched; ++s) {
-                const Assignment& stepping = assignments[s];
-                TIntermSymbol* point = inside.assignments[s]->getLeft()->getAsSymbolNode();
-                if ((stepping.op != glslang::EOpAddAssign && stepping.op != glslang::EOpSubAssign) || !point ||
-                    !isFloatVec3(point->getType()) || nested.count(inside.assignments[s]))
-                    continue;
-                for (long long read : stepping.reads) {
-                    const glslang::TType* type = typeOf(read);
-                    if (read == stepping.target || !type || !type->isScalar() || type->getBasicType() != glslang::EbtFloat)
-                        continue;
-                    std::set<long long> from{read};
-                    for (bool grew = true; grew;) {
-                        grew = false;
-                        for (const Assignment& a : assignments)
-                            if (&a != &stepping && a.target >= 0 && from.count(a.target))
-                                for (long long r : a.reads) grew |= from.insert(r).second;
-                    }
-                    if (!from.count(stepping.target)) continue;
-                    InlineMarch march;
-                    march.function = plainName(function->getName());
-                    march.file = composed.map.fileName(loop->getLoc().string);
-                    march.line = loop->getLoc().line;
-                    march.counter = march.point = point->getName().c_str();
-                    march.field = symbols.byId[read]->getName().c_str();
-                    readInlineMarch(march, loop, function, function == tree.mainImage, composed);
-                    found.push_back(std::move(march));
-                    marched = true;
-                    break;
-                }
-            }
-            for (std::size_t s = 0; s < inside.assignments.size() && !marched; ++s) {
-                const Assignment& stepping = assignments[s];
-                TIntermSymbol* counter = inside.assignments[s]->getLeft()->getAsSymbolNode();
-                // `t += d`, or a march backwards (`t -= d`: the field is -d).
-                if ((stepping.op != glslang::EOpAddAssign && stepping.op != glslang::EOpSubAssign) || !counter ||
-                    !counter->getType().isScalar() || counter->getType().getBasicType() != glslang::EbtFloat ||
-                    nested.count(inside.assignments[s]))
-                    continue;
-                // What the step is computed from, through the loop's assignments.
-                std::set<long long> from = stepping.reads;
-                for (bool grew = true; grew;) {
-                    grew = false;
-                    for (const Assignment& a : assignments)
-                        if (a.target >= 0 && a.target != stepping.target && from.count(a.target))
-                            for (long long read : a.reads) grew |= read != stepping.target && from.insert(read).second;
-                }
-                // The point: a vec3 it is computed from that the loop computes from the counter.
-                long long point = -1;
-                for (const Assignment& a : assignments)
-                    if (a.target >= 0 && from.count(a.target) && a.reads.count(stepping.target) && typeOf(a.target) &&
-                        isFloatVec3(*typeOf(a.target))) {
-                        point = a.target;
-                        break;
-                    }
-                if (point < 0) continue;
-                InlineMarch march;
-                march.function = plainName(function->getName());
-                march.file = composed.map.fileName(loop->getLoc().string);
-                march.line = loop->getLoc().line;
-                march.counter = counter->getName().c_str();
-                march.point = symbols.byId[point]->getName().c_str();
-                readInlineMarch(march, loop, function, function == tree.mainImage, composed);
-                found.push_back(std::move(march));
-                break;
-            }
-        }
-    }
-    return found;
 }
 
 } // namespace sdfwb::shaders

@@ -540,7 +540,7 @@ std::vector<std::string> perPixelParameters(const MarchedFunction& m) {
 
 // A whole shader without an `sdf`: the function its own march steps by (marchedFunctions), when
 // it has an entry's form. The one most loops step by wins; a tie is broken by a conventional name,
-// else it is an error naming the candidates (entryCandidates).
+// then by the fewest calls from mainImage, else it is an error naming the candidates (entryCandidates).
 void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
     PreparedSdf userCode = prepared;
     userCode.signature.entry.clear(); // no entry: the user's code alone
@@ -593,6 +593,17 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
         if (std::count_if(valid.begin(), valid.end(), conventional) == 1)
             std::erase_if(valid, [&](const auto& candidate) { return !conventional(candidate); });
     }
+    // Else the march nearest mainImage: the primary ray's (a refraction's or a bounce's march is
+    // called from deeper down). Marches as near as each other stay a tie.
+    std::string deeper;
+    if (valid.size() > 1) {
+        int nearest = valid.front().first.depth;
+        for (const auto& [marched, signature] : valid) nearest = std::min(nearest, marched.depth);
+        for (const auto& [marched, signature] : valid)
+            if (marched.depth > nearest)
+                deeper += (deeper.empty() ? "" : ", ") + marched.name + " (line " + std::to_string(marched.line) + ")";
+        std::erase_if(valid, [nearest](const auto& candidate) { return candidate.first.depth > nearest; });
+    }
     const auto where = [](const MarchedFunction& m) {
         std::string globals;
         for (const std::string& name : m.globals) globals += (globals.empty() ? "" : ", ") + name;
@@ -616,6 +627,8 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
     prepared.entrySource = EntrySource::March;
     const MarchedFunction& chosen = valid.front().first;
     prepared.entryReason = where(chosen);
+    if (!deeper.empty())
+        prepared.entryReason += "; " + deeper + " is marched as often, deeper in mainImage's calls (a secondary ray)";
     prepared.marchThreshold = chosen.hitThreshold;
     prepared.marchThresholdLine = chosen.hitLine;
     if (const std::vector<std::string> pixel = perPixelParameters(chosen); !pixel.empty()) {

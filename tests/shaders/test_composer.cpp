@@ -551,6 +551,38 @@ TEST(EntryPoint, TwoEquallyMarchedFunctionsAreNamedAndOffered) {
     EXPECT_EQ(conventional.entrySource, EntrySource::March);
 }
 
+// A glass shader (mrange's "self reflect" on Shadertoy): the primary ray marches the solid, and each
+// refracted ray marches the inside, once each. The primary ray's march is nearer mainImage in its
+// calls: that field is the scene, and the reason names the other. Its size, a global mainImage sets
+// before it calls render(), is set first for the field too.
+TEST(EntryPoint, ATieIsBrokenByThePrimaryRaysMarch) {
+    const std::string text =
+        "float g_r;\nfloat outside(vec3 p) { return length(p) - g_r; }\n"
+        "float inside(vec3 p) { return 0.45 - length(p); }\n"
+        "float marchInside(vec3 ro, vec3 rd) {\n"
+        "    float t = 0.0;\n"
+        "    for (int i = 0; i < 64; i++) { float d = inside(ro + rd * t); if (d < 0.001) break; t += d; }\n"
+        "    return t;\n}\n"
+        "vec3 refracted(vec3 p, vec3 rd) { return vec3(marchInside(p, refract(rd, normalize(p), 0.7))); }\n"
+        "vec3 render(vec3 ro, vec3 rd) {\n"
+        "    float t = 0.0;\n"
+        "    for (int i = 0; i < 64; i++) { float d = outside(ro + rd * t); if (d < 0.001) break; t += d; }\n"
+        "    return refracted(ro + rd * t, rd);\n}\n"
+        "void mainImage(out vec4 c, in vec2 f) {\n"
+        "    vec3 rd = normalize(vec3((f - 0.5 * iResolution.xy) / iResolution.y, -2.0));\n"
+        "    g_r = 0.5 + 0.1 * sin(iTime);\n"
+        "    c = vec4(render(vec3(0.0, 0.0, 3.0), rd), 1.0);\n}\n";
+    PreparedSdf glass = prepare(text);
+    ASSERT_TRUE(glass.ok()) << glass.diagnostics.back().message;
+    EXPECT_EQ(glass.signature.entry, "outside");
+    EXPECT_EQ(glass.entrySource, EntrySource::March);
+    EXPECT_TRUE(glass.entryCandidates.empty());
+    EXPECT_NE(glass.entryReason.find("inside (line 6) is marched as often, deeper in mainImage's calls"), std::string::npos)
+        << glass.entryReason;
+    EXPECT_NE(glass.entryReason.find("after mainImage sets g_r"), std::string::npos) << glass.entryReason;
+    EXPECT_NE(glass.signature.prelude.find("g_r = 0.5 + 0.1 * sin(iTime);"), std::string::npos) << glass.signature.prelude;
+}
+
 // Issue 47, point 2: a macro whose body names itself wraps the input; the input is still provided
 // (for time, as a uniform the renderer sets) and the composed shader compiles. A macro that
 // replaces the name outright still declares it.

@@ -29,6 +29,7 @@ struct MarchedFunction {
     // first loop that has one, and that comparison's line; 0 when none is one constant.
     float hitThreshold = 0.0f;
     int hitLine = 0;
+    int depth = 0; // calls from mainImage to the function holding its first march (a primary ray's is nearer)
 
     // A field with `in` parameters after the point (`vec2 Scene(vec3 p, vec3 plateRot)`) whose
     // values mainImage computes and hands to the marching function: how a wrapper gets them.

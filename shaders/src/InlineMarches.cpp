@@ -1,0 +1,197 @@
+#include <shaders/MarchAnalysis.h>
+
+#include "CallText.h"
+#include "InlineField.h"
+#include "MarchTree.h"
+#include "Words.h"
+
+#include <shaders/SdfSource.h>
+
+#include <algorithm>
+
+// Marches that write their field inline (InlineMarch): the loops mainImage's functions run that
+// grow a point, or a distance along a ray, by a float the loop computes from it.
+
+namespace sdfwb::shaders {
+namespace {
+
+using namespace detail;
+
+// Fills an inline march's prelude and body from its loop's text (InlineField.h), or its unresolved.
+void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* function, bool isMainImage,
+                     const ComposedShader& composed) {
+    const int file = loop->getLoc().string;
+    if (file < 0 || file >= int(composed.map.files.size()) || function->getLoc().string != file) {
+        march.unresolved = "the loop and its function are in different files";
+        return;
+    }
+    const std::string stripped = stripComments(composed.map.files[std::size_t(file)].text);
+    const std::size_t line = lineStart(stripped, loop->getLoc().line);
+    if (line == std::string::npos) {
+        march.unresolved = "the loop's line could not be read";
+        return;
+    }
+    // A loop a macro writes (golfed `#define c F{...}`): read from the macro's expansion.
+    const std::string text = withLoopMacroExpanded(stripped, line);
+    // The loop's keyword: at glslang's column, else the line's first loop keyword.
+    const std::size_t lineEnd = std::min(text.find('\n', line), text.size());
+    auto isKeyword = [&](std::size_t at) {
+        return at < lineEnd && (detail::isWordAt(text, at, "for") || detail::isWordAt(text, at, "while"));
+    };
+    std::size_t keyword = std::string::npos;
+    const std::size_t column = line + std::size_t(std::max(1, loop->getLoc().column));
+    if (isKeyword(column - 1))
+        keyword = column - 1;
+    else
+        for (std::size_t at = line; at < lineEnd && keyword == std::string::npos; ++at)
+            if (isKeyword(at)) keyword = at;
+    const std::size_t open = bodyOpen(text, function);
+    int enclosing = 0;
+    const std::string before = open == std::string::npos || keyword == std::string::npos || open >= keyword
+                                   ? std::string()
+                                   : enteredBlocks(text.substr(open + 1, keyword - open - 1), enclosing);
+    if (keyword == std::string::npos || open == std::string::npos || open >= keyword ||
+        !wholeStatements(before + std::string(std::size_t(std::max(0, enclosing)), '}'))) {
+        march.unresolved = march.function + "'s code before the loop is not whole statements";
+        return;
+    }
+    std::string why;
+    march.body = march.field.empty() ? inlineFieldBody(text, keyword, march.counter, march.point, march.step, why)
+                                     : pointMarchBody(text, keyword, march.point, march.field, march.step, why);
+    if (march.body.empty()) {
+        march.unresolved = why;
+        return;
+    }
+    const std::vector<TIntermSymbol*> parameters = parametersOf(function);
+    std::string declarations;
+    if (isMainImage && parameters.size() == 2) {
+        march.colour = parameters[0]->getName().c_str();
+        march.coordinate = parameters[1]->getName().c_str();
+    } else {
+        // Another function's parameters (the ray's origin and direction): zero, since the point is given.
+        for (TIntermSymbol* parameter : parameters) {
+            const std::string type = glslTypeName(parameter->getType());
+            if (type.empty()) {
+                march.body.clear();
+                march.unresolved =
+                    "parameter '" + std::string(parameter->getName().c_str()) + "' has a type the wrapper cannot declare";
+                return;
+            }
+            declarations += type + " " + parameter->getName().c_str() + " = " + type + "(0);\n";
+        }
+    }
+    march.prelude = declarations + before;
+    march.body += std::string(std::size_t(enclosing), '}'); // the blocks the prelude entered
+}
+
+} // namespace
+
+std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
+    Reached tree;
+    if (!parseReached(composed, tree)) return {};
+    std::vector<InlineMarch> found;
+    for (TIntermAggregate* function : tree.reached) {
+        for (TIntermLoop* loop : contentsOf(function).loops) {
+            Contents inside;
+            inside.everyMove = true; // `d /= o` carries the point into the step as `d = d / o` does
+            loop->traverse(&inside);
+            // A loop nested in this one advances its own march: found when that loop's turn comes.
+            std::set<TIntermBinary*> nested;
+            for (TIntermLoop* inner : inside.loops) {
+                if (inner == loop) continue;
+                Contents innerContents;
+                innerContents.everyMove = true;
+                inner->traverse(&innerContents);
+                nested.insert(innerContents.assignments.begin(), innerContents.assignments.end());
+            }
+            std::vector<Assignment> assignments;
+            for (TIntermBinary* node : inside.assignments) {
+                Contents right = contentsOf(node->getRight());
+                Assignment a{assignedSymbol(node->getLeft()), node->getOp(), right.symbols,
+                             std::set<TIntermAggregate*>(right.calls.begin(), right.calls.end())};
+                if (a.op != glslang::EOpAssign && a.target >= 0) a.reads.insert(a.target);
+                assignments.push_back(std::move(a));
+            }
+            // Names and types of the loop's symbols.
+            struct Symbols : glslang::TIntermTraverser {
+                std::map<long long, TIntermSymbol*> byId;
+                void visitSymbol(TIntermSymbol* node) override { byId.emplace(node->getId(), node); }
+            } symbols;
+            loop->traverse(&symbols);
+            auto typeOf = [&](long long id) -> const glslang::TType* {
+                auto it = symbols.byId.find(id);
+                return it == symbols.byId.end() ? nullptr : &it->second->getType();
+            };
+            bool marched = false;
+            // A point that grows itself (`p += rd * d`) by a float the loop computes from it.
+            for (std::size_t s = 0; s < inside.assignments.size() && !marched; ++s) {
+                const Assignment& stepping = assignments[s];
+                TIntermSymbol* point = inside.assignments[s]->getLeft()->getAsSymbolNode();
+                if ((stepping.op != glslang::EOpAddAssign && stepping.op != glslang::EOpSubAssign) || !point ||
+                    !isFloatVec3(point->getType()) || nested.count(inside.assignments[s]))
+                    continue;
+                for (long long read : stepping.reads) {
+                    const glslang::TType* type = typeOf(read);
+                    if (read == stepping.target || !type || !type->isScalar() || type->getBasicType() != glslang::EbtFloat)
+                        continue;
+                    std::set<long long> from{read};
+                    for (bool grew = true; grew;) {
+                        grew = false;
+                        for (const Assignment& a : assignments)
+                            if (&a != &stepping && a.target >= 0 && from.count(a.target))
+                                for (long long r : a.reads) grew |= from.insert(r).second;
+                    }
+                    if (!from.count(stepping.target)) continue;
+                    InlineMarch march;
+                    march.function = plainName(function->getName());
+                    march.file = composed.map.fileName(loop->getLoc().string);
+                    march.line = loop->getLoc().line;
+                    march.counter = march.point = point->getName().c_str();
+                    march.field = symbols.byId[read]->getName().c_str();
+                    readInlineMarch(march, loop, function, function == tree.mainImage, composed);
+                    found.push_back(std::move(march));
+                    marched = true;
+                    break;
+                }
+            }
+            for (std::size_t s = 0; s < inside.assignments.size() && !marched; ++s) {
+                const Assignment& stepping = assignments[s];
+                TIntermSymbol* counter = inside.assignments[s]->getLeft()->getAsSymbolNode();
+                // `t += d`, or a march backwards (`t -= d`: the field is -d).
+                if ((stepping.op != glslang::EOpAddAssign && stepping.op != glslang::EOpSubAssign) || !counter ||
+                    !counter->getType().isScalar() || counter->getType().getBasicType() != glslang::EbtFloat ||
+                    nested.count(inside.assignments[s]))
+                    continue;
+                // What the step is computed from, through the loop's assignments.
+                std::set<long long> from = stepping.reads;
+                for (bool grew = true; grew;) {
+                    grew = false;
+                    for (const Assignment& a : assignments)
+                        if (a.target >= 0 && a.target != stepping.target && from.count(a.target))
+                            for (long long read : a.reads) grew |= read != stepping.target && from.insert(read).second;
+                }
+                // The point: a vec3 it is computed from that the loop computes from the counter.
+                long long point = -1;
+                for (const Assignment& a : assignments)
+                    if (a.target >= 0 && from.count(a.target) && a.reads.count(stepping.target) && typeOf(a.target) &&
+                        isFloatVec3(*typeOf(a.target))) {
+                        point = a.target;
+                        break;
+                    }
+                if (point < 0) continue;
+                InlineMarch march;
+                march.function = plainName(function->getName());
+                march.file = composed.map.fileName(loop->getLoc().string);
+                march.line = loop->getLoc().line;
+                march.counter = counter->getName().c_str();
+                march.point = symbols.byId[point]->getName().c_str();
+                readInlineMarch(march, loop, function, function == tree.mainImage, composed);
+                found.push_back(std::move(march));
+                break;
+            }
+        }
+    }
+    return found;
+}
+
+} // namespace sdfwb::shaders

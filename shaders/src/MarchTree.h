@@ -1,0 +1,100 @@
+#pragma once
+// The glslang tree of a whole shader as the march analysis reads it (MarchAnalysis.cpp,
+// InlineMarches.cpp): the functions mainImage reaches, what a subtree holds, and small readers of
+// types, parameters and bodies. Private to shaders/.
+
+#include <shaders/ShaderComposer.h>
+
+#include <glslang/Include/intermediate.h>
+#include <glslang/Public/ShaderLang.h>
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace sdfwb::shaders::detail {
+
+using glslang::TIntermAggregate;
+using glslang::TIntermBinary;
+using glslang::TIntermLoop;
+using glslang::TIntermSymbol;
+using glslang::TIntermTyped;
+
+// A function's name without glslang's mangled parameter types.
+std::string plainName(const glslang::TString& mangled);
+
+// What a subtree holds: assignments, user function calls, loops, and the symbols it reads.
+struct Contents : glslang::TIntermTraverser {
+    std::vector<TIntermBinary*> assignments;
+    std::vector<TIntermAggregate*> calls;
+    std::vector<TIntermLoop*> loops;
+    std::set<long long> symbols;
+    bool everyMove = false; // every assignment (`*=`, `/=`, ...), not only =, += and -=
+
+    bool visitBinary(glslang::TVisit, TIntermBinary* node) override {
+        if (everyMove && node->getOp() >= glslang::EOpAssign && node->getOp() <= glslang::EOpRightShiftAssign) {
+            assignments.push_back(node);
+            return true;
+        }
+        switch (node->getOp()) {
+        case glslang::EOpAssign:
+        case glslang::EOpAddAssign:
+        case glslang::EOpSubAssign:
+            assignments.push_back(node);
+            break;
+        default:
+            break;
+        }
+        return true;
+    }
+    bool visitAggregate(glslang::TVisit, TIntermAggregate* node) override {
+        if (node->getOp() == glslang::EOpFunctionCall && node->isUserDefined()) calls.push_back(node);
+        return true;
+    }
+    bool visitLoop(glslang::TVisit, TIntermLoop* node) override {
+        loops.push_back(node);
+        return true;
+    }
+    void visitSymbol(TIntermSymbol* node) override { symbols.insert(node->getId()); }
+};
+
+Contents contentsOf(TIntermNode* node);
+
+// The variable an assignment writes (`p`, `p.xy`, `h[1]`, `hit.t`), or -1.
+long long assignedSymbol(TIntermTyped* left);
+
+bool isFloatVec3(const glslang::TType& type);
+
+struct Assignment {
+    long long target;
+    glslang::TOperator op;
+    std::set<long long> reads;         // symbols of the right-hand side
+    std::set<TIntermAggregate*> calls; // calls in the right-hand side
+    TIntermBinary* node = nullptr;
+};
+
+// A type as GLSL writes it (float, ivec3, mat3, a struct's name); empty for arrays and others.
+std::string glslTypeName(const glslang::TType& type);
+
+// The parameters of a function definition, in order.
+std::vector<TIntermSymbol*> parametersOf(TIntermAggregate* function);
+
+// The offset of the '{' that opens `function`'s body in `text`, or npos. (A definition's location
+// is its name's or its body's line: the last mention of the name up to it.)
+std::size_t bodyOpen(const std::string& text, TIntermAggregate* function);
+
+// A shader's tree and the functions mainImage reaches, mainImage first.
+struct Reached {
+    glslang::TShader shader{EShLangFragment};
+    std::map<std::string, TIntermAggregate*> functions; // definitions by mangled name
+    TIntermAggregate* mainImage = nullptr;
+    std::vector<TIntermAggregate*> reached;
+    std::vector<int> depth; // of each reached function: calls from mainImage (breadth first)
+};
+
+// Parses `composed` (a fragment stage holding the user's code and mainImage) and fills `tree`;
+// false when it does not parse.
+bool parseReached(const ComposedShader& composed, Reached& tree);
+
+} // namespace sdfwb::shaders::detail
