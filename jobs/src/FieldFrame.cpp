@@ -46,14 +46,22 @@ Expected<std::optional<sampling::SurfaceBox>> searchSurface(const shaders::Prepa
 // Never negative and near 0 somewhere: a distance to thin lines or sheets, floored or taken with
 // abs(). Near means within what the lattice can see (a distance above sqrt(3)/2 of its spacing at
 // every lattice point has no zero in its cube): a glow's density stays further off.
-bool looksUnsigned(const sampling::FieldRange& range) { return !range.negative && range.least <= 0.87f * range.finest; }
+// A constant (a stub `map` returning 0, the shader's picture drawn by other code) is no distance.
+bool looksUnsigned(const sampling::FieldRange& range) {
+    return !range.negative && range.least <= 0.87f * range.finest && range.most > range.least;
+}
 
 // Why a field whose search found no surface has none, from the values the lattices held; for an
 // unsigned field, the level its own march stops at where that is known.
 std::string noSurfaceText(const sampling::FieldRange& range, const shaders::PreparedSdf& sdf) {
     if (range.finite == 0) return "the field is not finite anywhere within [-64, 64]^3";
     char text[600];
-    if (looksUnsigned(range) && sdf.marchThreshold > 0.0f)
+    if (range.most == range.least)
+        std::snprintf(text, sizeof text,
+                      "the field is %.4g everywhere within [-64, 64]^3: a constant, with no surface (is %s the "
+                      "function the shader draws? --entry NAME picks another)",
+                      double(range.least), sdf.signature.entry.c_str());
+    else if (looksUnsigned(range) && sdf.marchThreshold > 0.0f)
         std::snprintf(text, sizeof text,
                       "the field is never negative within [-64, 64]^3 and its least value is %.3g: an unsigned "
                       "distance, with no inside, so samples never change sign and there is nothing to mesh; the "

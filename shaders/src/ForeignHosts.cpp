@@ -13,6 +13,7 @@
 #include <cctype>
 #include <optional>
 #include <regex>
+#include <set>
 
 namespace sdfwb::shaders::detail {
 namespace {
@@ -342,6 +343,22 @@ std::string raytracerInputs(const Code& code, const std::vector<std::pair<std::s
     return provided;
 }
 
+// Orbit traps older system includes declared (`minDist2 = min(minDist2, r*r);` in a DE, with no
+// declaration in the fragment): floats starting far away, declared once each.
+std::string trapAccumulators(const Code& code) {
+    static const std::regex smallest(R"(\b([A-Za-z_]\w*)\s*=\s*min\s*\(\s*([A-Za-z_]\w*)\s*,)", kLinearRegex);
+    std::set<std::string> names;
+    for (auto it = std::sregex_iterator(code.stripped.begin(), code.stripped.end(), smallest); it != std::sregex_iterator(); ++it)
+        if ((*it)[1].str() == (*it)[2].str() && (*it)[1].str() != "orbitTrap") names.insert((*it)[1].str()); // a vec4, above
+    std::string provided;
+    for (const std::string& name : names) {
+        // Declared by the fragment: a type, then the name before any ; { } ( or ) (`float r, minDist2;`).
+        const std::regex declared(R"(\b(float|double|int|vec[234]|dvec[234])\b[^;{}()]*\b)" + name + R"(\b)", kLinearRegex);
+        if (!std::regex_search(code.stripped, declared)) provided += "float " + name + " = 10000.0; ";
+    }
+    return provided;
+}
+
 // Fragmentarium: directives, annotations, system includes, init().
 void adaptFragmentarium(const Code& code, const std::vector<Parameter>& parameters, std::vector<Edit>& edits,
                         HostAdaptation& out) {
@@ -419,6 +436,7 @@ void adaptFragmentarium(const Code& code, const std::vector<Parameter>& paramete
     const std::vector<std::size_t> traps = code.occurrences("orbitTrap");
     if (!traps.empty() && std::none_of(traps.begin(), traps.end(), [&](std::size_t at) { return code.depth[at] == 0; }))
         provided += "vec4 orbitTrap = vec4(10000.0); ";
+    provided += trapAccumulators(code);
     // Those the code calls and does not define, and rotationMatrix3, which the other rotations call.
     for (const auto& [name, definition] : kMathUtils) {
         const std::string helper = name;

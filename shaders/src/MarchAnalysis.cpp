@@ -284,11 +284,74 @@ void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate*
     }
 }
 
+// The call that gives the marching function its arguments: mainImage's own, at the top of its body
+// (the statements before it are the prelude), else the first call in the function nearest mainImage
+// that calls it (`col = render(ro, rd)`, whose `castRay(ro, rd, mat, 1.0, true)` casts the primary
+// ray), whose values the wrapper can use where they are constants. Null with why when neither is.
+struct MarcherCall {
+    TIntermAggregate* call = nullptr;
+    bool fromMainImage = false;
+    std::string why;
+    std::string in; // the function that makes the call
+};
+
+MarcherCall findMarcherCall(TIntermAggregate* marcher, const Reached& tree) {
+    TIntermAggregate* mainImage = tree.mainImage;
+    TIntermAggregate* body = mainImage->getSequence().size() > 1 ? mainImage->getSequence()[1]->getAsAggregate() : nullptr;
+    if (!body) return {nullptr, false, "mainImage has no body"};
+    const std::string name = plainName(marcher->getName());
+    for (TIntermNode* statement : body->getSequence())
+        for (TIntermAggregate* c : contentsOf(statement).calls)
+            if (c->getName() == marcher->getName()) {
+                if (statement->getAsLoopNode() || statement->getAsSelectionNode() || statement->getAsBranchNode())
+                    return {nullptr, false, "mainImage calls " + name + " inside a loop or a condition"};
+                return {c, true, {}, "mainImage"};
+            }
+    for (TIntermAggregate* function : tree.reached)
+        for (TIntermAggregate* c : contentsOf(function).calls)
+            if (function != mainImage && c->getName() == marcher->getName())
+                return {c, false, {}, plainName(function->getName())};
+    return {nullptr, false, "mainImage does not call " + name};
+}
+
+// Whether an argument reads no variable: literals, constants and uniforms only.
+bool isConstantArgument(TIntermNode* argument) {
+    struct Variables : glslang::TIntermTraverser {
+        bool found = false;
+        void visitSymbol(TIntermSymbol* node) override {
+            const glslang::TStorageQualifier storage = node->getQualifier().storage;
+            found = found || (storage != glslang::EvqConst && storage != glslang::EvqUniform);
+        }
+    } variables;
+    argument->traverse(&variables);
+    return !variables.found;
+}
+
+// The field's out parameters after the point (`out Material mat`): the variables the march passes
+// there, as locals the wrapper declares (a TracedValue without a value). False with why when one
+// is not a variable of a type the wrapper can declare.
+bool outArguments(TIntermAggregate* call, const std::vector<TIntermSymbol*>& fieldParameters, std::vector<TracedValue>& outs,
+                  std::string& why) {
+    for (std::size_t i = 1; i < fieldParameters.size() && i < call->getSequence().size(); ++i) {
+        if (isInParameter(fieldParameters[i])) continue;
+        TIntermSymbol* argument = call->getSequence()[i]->getAsSymbolNode();
+        const std::string type = glslTypeName(fieldParameters[i]->getType());
+        if (!argument || type.empty()) {
+            why = "its out parameter '" + std::string(fieldParameters[i]->getName().c_str()) +
+                  "' is not given a variable of a type the wrapper can declare";
+            return false;
+        }
+        outs.push_back({type, argument->getName().c_str(), {}});
+    }
+    return true;
+}
+
 // Traces the values of a field's parameters after the point (see MarchedFunction) from the march's
-// call in `marcher` back to mainImage's call of `marcher`. Fills `m`'s prelude, bindings and
-// arguments, or its `unresolved`.
+// call in `marcher` back to mainImage's call of `marcher` (or to the nearest function's, see
+// findMarcherCall). Fills `m`'s prelude, bindings and arguments, or its `unresolved`.
 void traceArguments(MarchedFunction& m, TIntermAggregate* call, TIntermAggregate* callee, TIntermAggregate* marcher,
-                    TIntermAggregate* mainImage, const ComposedShader& composed) {
+                    const Reached& tree, const ComposedShader& composed) {
+    TIntermAggregate* mainImage = tree.mainImage;
     auto fail = [&m](std::string reason) {
         m.unresolved = std::move(reason);
         m.prelude.clear(), m.traced.clear(), m.arguments.clear();
@@ -296,15 +359,9 @@ void traceArguments(MarchedFunction& m, TIntermAggregate* call, TIntermAggregate
     const std::vector<TIntermSymbol*> fieldParameters = parametersOf(callee);
     m.extraParameters = int(fieldParameters.size()) - 1;
     if (m.extraParameters <= 0) return;
-    for (std::size_t i = 1; i < fieldParameters.size(); ++i)
-        if (!isInParameter(fieldParameters[i])) {
-            fail("its parameter '" + std::string(fieldParameters[i]->getName().c_str()) + "' is out or inout");
-            return;
-        }
-    if (marcher == mainImage) {
-        fail("mainImage marches it itself");
-        return;
-    }
+    std::vector<TracedValue> outs;
+    if (std::string why; !outArguments(call, fieldParameters, outs, why)) return fail(why);
+    if (marcher == mainImage) return fail("mainImage marches it itself");
     // The march's arguments after the point read only the marching function's parameters and
     // file-scope names (not its locals: what computes those runs inside the march).
     const std::vector<TIntermSymbol*> marcherParameters = parametersOf(marcher);
@@ -314,79 +371,56 @@ void traceArguments(MarchedFunction& m, TIntermAggregate* call, TIntermAggregate
         void visitSymbol(TIntermSymbol* node) override { found.push_back(node); }
     };
     for (std::size_t i = 1; i < call->getSequence().size(); ++i) {
+        if (i < fieldParameters.size() && !isInParameter(fieldParameters[i])) continue; // an out local
         Symbols symbols;
         call->getSequence()[i]->traverse(&symbols);
         for (TIntermSymbol* symbol : symbols.found) {
             const bool parameter = std::any_of(marcherParameters.begin(), marcherParameters.end(),
                                                [&](TIntermSymbol* p) { return p->getId() == symbol->getId(); });
-            if (parameter) {
+            if (parameter)
                 read.insert(symbol->getName().c_str());
-            } else if (symbol->getQualifier().storage == glslang::EvqTemporary) {
-                fail("'" + std::string(symbol->getName().c_str()) + "' is computed inside " + plainName(marcher->getName()));
-                return;
-            }
+            else if (symbol->getQualifier().storage == glslang::EvqTemporary)
+                return fail("'" + std::string(symbol->getName().c_str()) + "' is computed inside " +
+                            plainName(marcher->getName()));
         }
     }
     const int file = call->getLoc().string;
+    const MarcherCall found = findMarcherCall(marcher, tree);
+    if (!found.call) return fail(found.why);
     if (file < 0 || file >= int(composed.map.files.size()) || mainImage->getLoc().string != file ||
-        marcher->getLoc().string != file) {
-        fail("the march and mainImage are in different files");
-        return;
-    }
+        marcher->getLoc().string != file || found.call->getLoc().string != file)
+        return fail("the march and mainImage are in different files");
     const std::string text = stripComments(composed.map.files[std::size_t(file)].text);
     const std::vector<std::string> fieldArguments = callArguments(text, call->getLoc().line, m.name, nullptr);
-    if (fieldArguments.size() != fieldParameters.size()) {
-        fail("its call's arguments could not be read");
-        return;
-    }
+    if (fieldArguments.size() != fieldParameters.size()) return fail("its call's arguments could not be read");
     for (std::size_t i = 1; i < fieldArguments.size(); ++i) m.arguments += ", " + fieldArguments[i];
-    // mainImage's statement that calls the marching function: at the top of its body, so that the
-    // statements before it are the prelude.
-    TIntermAggregate* body = mainImage->getSequence().size() > 1 ? mainImage->getSequence()[1]->getAsAggregate() : nullptr;
-    TIntermAggregate* marcherCall = nullptr;
-    if (!body) {
-        fail("mainImage has no body");
-        return;
-    }
-    for (TIntermNode* statement : body->getSequence()) {
-        for (TIntermAggregate* c : contentsOf(statement).calls)
-            if (c->getName() == marcher->getName()) {
-                marcherCall = c;
-                break;
-            }
-        if (!marcherCall) continue;
-        if (statement->getAsLoopNode() || statement->getAsSelectionNode() || statement->getAsBranchNode()) marcherCall = nullptr;
-        break;
-    }
     std::string before;
-    int callLineNumber = marcherCall ? marcherCall->getLoc().line : 0;
-    const std::vector<std::string> values =
-        marcherCall ? callArguments(text, marcherCall->getLoc().line, plainName(marcher->getName()), &before, &callLineNumber)
-                    : std::vector<std::string>();
-    if (values.size() != marcherParameters.size() || before.find_first_of(";{}") != std::string::npos) {
-        fail("mainImage calls " + plainName(marcher->getName()) + " inside a loop or a condition");
-        return;
-    }
+    int callLineNumber = found.call->getLoc().line;
+    const std::string marcherName = plainName(marcher->getName());
+    const std::vector<std::string> values = callArguments(text, callLineNumber, marcherName, &before, &callLineNumber);
+    if (values.size() != marcherParameters.size() || (found.fromMainImage && before.find_first_of(";{}") != std::string::npos))
+        return fail("mainImage calls " + marcherName + " inside a loop or a condition");
     for (std::size_t k = 0; k < marcherParameters.size(); ++k) {
         const std::string name = marcherParameters[k]->getName().c_str();
         if (!read.count(name)) continue;
         const std::string type = glslTypeName(marcherParameters[k]->getType());
-        if (type.empty()) {
-            fail("parameter '" + name + "' has a type the wrapper cannot declare");
-            return;
-        }
+        if (type.empty()) return fail("parameter '" + name + "' has a type the wrapper cannot declare");
+        if (!found.fromMainImage && (k >= found.call->getSequence().size() || !isConstantArgument(found.call->getSequence()[k])))
+            return fail(marcherName + "'s '" + name + "' is " + values[k] + " where " + found.in +
+                        " calls it, not a constant (mainImage does not call it)");
         m.traced.push_back({type, name, values[k]});
     }
+    m.caller = found.in;
+    for (const TracedValue& out : outs)
+        if (std::none_of(m.traced.begin(), m.traced.end(), [&](const TracedValue& t) { return t.name == out.name; }))
+            m.traced.push_back(out);
     // The prelude: mainImage's body up to the line of that call.
     const std::size_t open = bodyOpen(text, mainImage);
     const std::size_t callLine = lineStart(text, callLineNumber);
-    if (open == std::string::npos || callLine == std::string::npos || open >= callLine ||
-        !wholeStatements(text.substr(open + 1, callLine - open - 1))) {
-        fail("mainImage's code before the march is not whole statements");
-        return;
-    }
-    const std::string prelude = text.substr(open + 1, callLine - open - 1);
-    m.prelude = prelude;
+    if (found.fromMainImage && (open == std::string::npos || callLine == std::string::npos || open >= callLine ||
+                                !wholeStatements(text.substr(open + 1, callLine - open - 1))))
+        return fail("mainImage's code before the march is not whole statements");
+    if (found.fromMainImage) m.prelude = text.substr(open + 1, callLine - open - 1);
     const std::vector<TIntermSymbol*> mainParameters = parametersOf(mainImage);
     if (mainParameters.size() == 2) {
         m.colour = mainParameters[0]->getName().c_str();
@@ -444,7 +478,7 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                     entry = marched.end() - 1;
                     entry->depth = tree.depth[index];
                     if (component > 0) entry->component = std::string(1, "xyzw"[component]);
-                    if (mainImage) traceArguments(*entry, call, callee->second, function, mainImage, composed);
+                    if (mainImage) traceArguments(*entry, call, callee->second, function, tree, composed);
                     if (mainImage && entry->extraParameters <= 0)
                         traceGlobals(*entry, callee->second, function, loop, mainImage, composed, tree.functions);
                 }

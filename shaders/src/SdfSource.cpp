@@ -608,7 +608,7 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
         std::string globals;
         for (const std::string& name : m.globals) globals += (globals.empty() ? "" : ", ") + name;
         return m.name + " (called by the march at line " + std::to_string(m.line) + ")" +
-               (m.arguments.empty() ? "" : ", with" + m.arguments.substr(1) + " as mainImage computes it") +
+               (m.arguments.empty() ? "" : ", with" + m.arguments.substr(1) + " as " + m.caller + " computes it") +
                (globals.empty() ? "" : ", after mainImage sets " + globals);
     };
     if (valid.size() > 1) {

@@ -123,6 +123,10 @@ std::string entryWrapper(const PreparedSdf& sdf) {
         std::string kept, assigned, declared;
         for (std::size_t k = 0; k < signature.traced.size(); ++k) {
             const TracedValue& traced = signature.traced[k];
+            if (traced.value.empty()) { // a local the field's out parameter writes
+                declared += traced.type + " " + traced.name + ";\n";
+                continue;
+            }
             const std::string global = "sdfwb_traced" + std::to_string(k);
             kept += traced.type + " " + global + ";\n";
             assigned += global + " = " + traced.value + ";\n";

@@ -287,6 +287,23 @@ TEST(BatchFrame, AnUnsignedFieldGetsTheSurfaceItsMarchStopsAtWithLevel) {
     }
 }
 
+// A pasted shader whose `map` is a stub returning 0 (its picture is a glow mainImage draws
+// itself): a constant, named as one, not an unsigned distance with a level to take.
+TEST(BatchFrame, AConstantFieldIsNamedAsOne) {
+    const fs::path stub = writeShader("stub.glsl", "float map(vec3 p) { return 0.0; }\n"
+                                                   "void mainImage(out vec4 O, in vec2 I) {\n"
+                                                   "    vec2 uv = I / iResolution.xy - 0.5; float g = 0.0;\n"
+                                                   "    for (float i = 0.0; i < 10.0; i++) g += 0.01 / length(uv + 0.01 * i);\n"
+                                                   "    O = vec4(g);\n}\n");
+    const fs::path out = scratch("stub.npz");
+    Result r = run("--batch sample --sdf " + stub.string() + " --pattern rand -n 100 -o " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("the field is 0 everywhere within [-64, 64]^3: a constant, with no surface (is map the"),
+              std::string::npos)
+        << r.output;
+    EXPECT_EQ(r.output.find("--level"), std::string::npos) << r.output;
+}
+
 TEST(BatchFrame, ALevelThatIsNotANumberOrIsGivenForAMeshIsNamed) {
     const fs::path lines = writeShader("lines2.glsl", kLines);
     const fs::path out = scratch("level-bad.npz");

@@ -583,6 +583,46 @@ TEST(EntryPoint, ATieIsBrokenByThePrimaryRaysMarch) {
     EXPECT_NE(glass.signature.prelude.find("g_r = 0.5 + 0.1 * sin(iTime);"), std::string::npos) << glass.signature.prelude;
 }
 
+// A field with an out parameter and a flag (a tea cup scene on Shadertoy: `map(pt, mat,
+// includeDielectrics)`), marched by castRay, which render calls, not mainImage: the flag is the
+// constant render passes for the primary ray, the out parameter a local of the wrapper's. A flag
+// render computes per pixel cannot be traced, and the reason says so.
+TEST(EntryPoint, AnOutParameterIsALocalAndAConstantFromTheNearestCallerIsTraced) {
+    auto shader = [](const std::string& flag) {
+        return "struct Material { float id; };\n"
+               "float map(in vec3 p, out Material mat, in bool withGlass) {\n"
+               "    mat.id = 1.0; float d = length(p) - 0.5;\n"
+               "    return withGlass ? min(d, length(p - vec3(0.6, 0.0, 0.0)) - 0.2) : d;\n}\n"
+               "float castRay(vec3 ro, vec3 rd, out Material mat, bool withGlass) {\n"
+               "    float t = 0.0;\n"
+               "    for (int i = 0; i < 64; i++) { float h = map(ro + rd * t, mat, withGlass); if (h < 0.001) break; t += h; }\n"
+               "    return t;\n}\n"
+               "vec3 render(vec3 ro, vec3 rd) { Material mat; float t = castRay(ro, rd, mat, " +
+               flag +
+               "); return vec3(t * mat.id); }\n"
+               "void mainImage(out vec4 c, in vec2 f) {\n"
+               "    vec3 rd = normalize(vec3((f - 0.5 * iResolution.xy) / iResolution.y, -2.0));\n"
+               "    c = vec4(render(vec3(0.0, 0.0, 3.0), rd), 1.0);\n}\n";
+    };
+    PreparedSdf cup = prepare(shader("true"));
+    ASSERT_TRUE(cup.ok()) << cup.diagnostics.back().message;
+    EXPECT_EQ(cup.signature.entry, "map");
+    EXPECT_NE(cup.entryReason.find("with mat, withGlass as render computes it"), std::string::npos) << cup.entryReason;
+    ASSERT_EQ(cup.signature.traced.size(), 2u);
+    EXPECT_EQ(cup.signature.traced[0].value, "true");
+    EXPECT_EQ(cup.signature.traced[1].type, "Material");
+    EXPECT_TRUE(cup.signature.traced[1].value.empty());
+    const std::vector<ShaderPiece> stage{{"<test main>", "void main() { float d = sdfwb_sdf(vec3(0.6, 0.0, 0.0)); }\n"}};
+    const std::vector<Diagnostic> found = checkWithGlslang(composeSdfShader(cup, Stage::Fragment, stage, {}));
+    EXPECT_TRUE(found.empty()) << formatDiagnostic(found.front());
+
+    PreparedSdf perPixel = prepare(shader("rd.y > 0.0"));
+    EXPECT_FALSE(perPixel.ok());
+    EXPECT_NE(perPixel.entryReason.find("castRay's 'withGlass' is rd.y > 0.0 where render calls it, not a constant"),
+              std::string::npos)
+        << perPixel.entryReason;
+}
+
 // Issue 47, point 2: a macro whose body names itself wraps the input; the input is still provided
 // (for time, as a uniform the renderer sets) and the composed shader compiles. A macro that
 // replaces the name outright still declares it.

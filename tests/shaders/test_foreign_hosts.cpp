@@ -376,3 +376,24 @@ TEST(ForeignHosts, FragmentariumsHistoricalIncludesAndMatrices) {
     EXPECT_NE(sdf.source.text.find("mat3 rotationMatrix(vec3 v, float angle)"), std::string::npos);
     EXPECT_EQ(compileErrors(sdf), "");
 }
+
+// Orbit traps older system includes declared (Fragmentarium's Mandelbulb with `minDist2 = min(minDist2,
+// r*r)`, an octahedron's `mDist`): provided once each as floats; one the fragment declares is left alone.
+TEST(ForeignHosts, FragmentariumsUndeclaredOrbitTrapsAreProvided) {
+    const std::string text = "#include \"DE-Raytracer.frag\"\n"
+                             "uniform int Iterations; slider[0,9,100]\n"
+                             "float own = 1.0, kept;\n"
+                             "float DE(vec3 p) {\n"
+                             "  float r = length(p);\n"
+                             "  for (int i = 0; i < Iterations; i++) {\n"
+                             "    minDist2 = min(minDist2, r * r); mDist = min(mDist, r); kept = min(kept, r); p *= 0.9;\n"
+                             "  }\n"
+                             "  return r - 0.5;\n"
+                             "}\n";
+    PreparedSdf sdf = prepare(text, "traps.frag");
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.host, "Fragmentarium");
+    EXPECT_NE(sdf.source.text.find("float mDist = 10000.0; float minDist2 = 10000.0;"), std::string::npos) << sdf.source.text;
+    EXPECT_EQ(sdf.source.text.find("float kept = 10000.0"), std::string::npos) << "kept is the fragment's own";
+    EXPECT_EQ(compileErrors(sdf), "");
+}

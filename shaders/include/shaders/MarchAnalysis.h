@@ -41,6 +41,7 @@ struct MarchedFunction {
     // says why).
     int extraParameters = 0;
     std::string prelude, arguments, coordinate, colour, unresolved;
+    std::string caller; // whose call of the marching function gives the values: mainImage, or the nearest function's
     std::vector<TracedValue> traced;
     // A field that reads file-scope variables mainImage sets before the march (`radius = ...;` from
     // iTime): their names; `prelude` (with coordinate and colour) then holds mainImage's statements
