@@ -95,15 +95,19 @@ with tempfile.TemporaryDirectory() as scratch:
             framed_code, _, framed_log = run([BINARY, "--batch", "sample", "--sdf", path, "--normalize", "unit-cube",
                                                 "--pattern", "rand", "-n", "2000", "--output", os.path.join(scratch, "framed.npz")])
             framed = ("yes" if changes_sign(os.path.join(scratch, "framed.npz")) else "no") if framed_code == 0 else (
-                "none" if any(why in framed_log for why in ("no surface within", "never negative", "not finite anywhere"))
+                "none" if any(why in framed_log for why in ("no surface within", "never negative", "not finite anywhere",
+                                                    "a constant, with no surface"))
                 else "failed")
         # An unsigned field (never negative, near 0: the run's warning says so): whether the level set
-        # at a usual march hit threshold, --level 0.001, has a surface in the box (framed if needed).
+        # its own march stops at (the threshold the warning names, read from the shader; else a usual
+        # one, 0.001) has a surface in the box (framed if needed).
         level = ""
         if sampled and not surface and "never negative" in sample_log:
             level = "no"
+            named = re.search(r"--level ([0-9.eE+-]+) takes that level set", sample_log)
             for extra in ([], ["--normalize", "unit-cube"]):
-                code, _, _ = run([BINARY, "--batch", "sample", "--sdf", path, "--level", "0.001", *extra, "--pattern", "rand",
+                code, _, _ = run([BINARY, "--batch", "sample", "--sdf", path, "--level", named.group(1) if named else "0.001",
+                                  *extra, "--pattern", "rand",
                                   "-n", "2000", "--output", os.path.join(scratch, "level.npz")])
                 if code == 0 and changes_sign(os.path.join(scratch, "level.npz")):
                     level = "yes" if not extra else "yes, framed"
@@ -133,8 +137,9 @@ summary = (f"{len(rows)} shaders: {renders} render ({100 * renders / n:.1f} %), 
            f"{sum(1 for row in rows if row[8] == 'yes')} have one once framed (`--normalize unit-cube`: the box of "
            f"their surface, found by their values, framed as the unit box); "
            f"{sum(1 for row in rows if row[8] == 'none')} have none within [-64, 64]^3 (glows, fields drawn from "
-           f"textures or the pixel). {sum(1 for row in rows if row[9])} are unsigned (never negative, near 0: the run "
-           f"warns and names `--level`); the level set at a usual march hit threshold (`--level 0.001`) gives "
+           f"textures or the pixel, constants). {sum(1 for row in rows if row[9])} are unsigned (never negative, near 0: the run "
+           f"warns and names `--level`); the level set where its own march stops (`--level` at the threshold read "
+           f"from the shader, else 0.001) gives "
            f"{sum(1 for row in rows if row[9].startswith('yes'))} of them a surface (column level)")
 print(summary)
 if DOC:
