@@ -2,12 +2,14 @@
 
 #include "CallText.h"
 #include "InlineField.h"
+#include "MarchThreshold.h"
 #include "MarchTree.h"
 #include "Words.h"
 
 #include <shaders/SdfSource.h>
 
 #include <algorithm>
+#include <set>
 
 // Marches that write their field inline (InlineMarch): the loops mainImage's functions run that
 // grow a point, or a distance along a ray, by a float the loop computes from it.
@@ -84,6 +86,11 @@ void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* fu
     march.body += std::string(std::size_t(enclosing), '}'); // the blocks the prelude entered
 }
 
+void setHitThreshold(InlineMarch& march, TIntermLoop* loop, std::set<long long> distances) {
+    const detail::HitThreshold hit = detail::hitThreshold(loop, nullptr, std::move(distances));
+    march.hitThreshold = hit.value, march.hitLine = hit.line;
+}
+
 } // namespace
 
 std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
@@ -149,6 +156,7 @@ std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
                     march.counter = march.point = point->getName().c_str();
                     march.field = symbols.byId[read]->getName().c_str();
                     readInlineMarch(march, loop, function, function == tree.mainImage, composed);
+                    setHitThreshold(march, loop, {read});
                     found.push_back(std::move(march));
                     marched = true;
                     break;
@@ -186,6 +194,12 @@ std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
                 march.counter = counter->getName().c_str();
                 march.point = symbols.byId[point]->getName().c_str();
                 readInlineMarch(march, loop, function, function == tree.mainImage, composed);
+                std::set<long long> floats; // the step's floats (`t += d`, `t += d * .5`)
+                for (long long read : stepping.reads)
+                    if (const glslang::TType* type = typeOf(read);
+                        read != stepping.target && type && type->isScalar() && type->getBasicType() == glslang::EbtFloat)
+                        floats.insert(read);
+                setHitThreshold(march, loop, std::move(floats));
                 found.push_back(std::move(march));
                 break;
             }

@@ -459,6 +459,8 @@ void chooseInlineField(PreparedSdf& prepared, const std::string& stripped) {
         signature.prelude += march.prelude;
         signature.inlineBody = march.body;
         prepared.entrySource = EntrySource::March;
+        prepared.marchThreshold = march.hitThreshold;
+        prepared.marchThresholdLine = march.hitLine;
         // A march backwards (`t -= d`) has the step -(d): said as the shader writes it.
         const bool backwards =
             march.field.empty() && march.step.size() > 3 && march.step.compare(0, 2, "-(") == 0 && march.step.back() == ')';

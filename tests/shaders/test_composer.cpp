@@ -502,6 +502,15 @@ TEST(EntryPoint, TheConstantAWholeShadersMarchStopsAtIsRead) {
          "    float t = 0.0;\n    for (int i = 0; i < 100; i++) {\n        float d = map(ro + rd * t);\n"
          "        if (d < 0.001 * t || d > 20.0) break;\n        t += d;\n    }\n    return t;\n",
          0.0f},
+        // Marches that write their field inline: a distance along the ray, and the point itself.
+        {"",
+         "    float t = 0.0;\n    for (int i = 0; i < 100; i++) {\n        vec3 p = ro + rd * t;\n"
+         "        float d = abs(length(p) - 0.5);\n        if (d < 0.002) break;\n        t += d;\n    }\n    return t;\n",
+         0.002f},
+        {"",
+         "    vec3 p = ro;\n    for (int i = 0; i < 100; i++) {\n        float d = abs(length(p) - 0.5);\n"
+         "        if (d < 3e-3) break;\n        p += rd * d;\n    }\n    return length(p - ro);\n",
+         0.003f},
     };
     for (const Case& c : cases) {
         const std::string text = wholeShader(c.field, c.march);

@@ -70,6 +70,10 @@ struct InlineMarch {
     // colour name them: the caller declares those), its statements before the loop, then `body`.
     std::string prelude, body, coordinate, colour;
     std::string unresolved; // why the loop's text could not be used (prelude and body empty)
+    // The constant the loop compares its step's float with to stop (`if (d < .001) break;`), as
+    // MarchedFunction's; 0 when none is one constant.
+    float hitThreshold = 0.0f;
+    int hitLine = 0;
 };
 
 // The inline marches of `composed` (as marchedFunctions reads it), in the order of their loops.
