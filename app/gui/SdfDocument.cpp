@@ -158,7 +158,7 @@ void SdfDocument::startCheck(const QString& text) {
     const auto channels = m_channels;
     const bool mesh = isMesh();
     std::string sign = m_meshSign.toStdString(), normalize = m_meshNormalize.toStdString();
-    jobs::PastedView view{m_frame.toStdString(), m_level};
+    jobs::PastedView view{m_frame.toStdString(), {}, m_level};
     std::string decidedFor = m_frameDecidedFor.toStdString();
     // glslang checks the variant the viewport will compile (shading, AO, plane, markers, ...).
     const shaders::TracerFeatures features =

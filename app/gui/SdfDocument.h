@@ -59,7 +59,7 @@ public:
     const QString& meshNormalize() const { return m_meshNormalize; }
     // A pasted whole shader whose surface lies outside [-1, 1]^3 (a scene built around its own camera):
     // the box X0,Y0,Z0,X1,Y1,Z1 it is framed by (shaders::PreparedSdf::frame), decided by the first
-    // check of each file and entry function (jobs::frameBoxOutsideUnitBox) and passed to jobs as
+    // check of each file and entry function (jobs::decidePastedView) and passed to jobs as
     // --normalize; empty when the field is shown as it is.
     const QString& frame() const { return m_frame; }
     // A pasted whole shader whose field is never negative (an unsigned distance) and whose own march

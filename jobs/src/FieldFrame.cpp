@@ -162,26 +162,18 @@ std::optional<JobError> frameField(shaders::PreparedSdf& sdf, const std::string&
     return std::nullopt;
 }
 
-std::string frameBoxOutsideUnitBox(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters,
-                                   std::string* noSurface) {
-    if (sdf.mesh || !sdf.ok() || !renderer::HeadlessContext::anyCurrent()) return {};
-    sampling::FieldRange range;
-    auto found = searchSurface(sdf, parameters, true, &range);
-    if (found && !*found && range.finite > 0 && noSurface) *noSurface = noSurfaceText(range, sdf);
-    if (!found || !*found) return {};
-    return boxText(**found);
-}
-
 PastedView decidePastedView(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters) {
     PastedView view;
     if (sdf.mesh || !sdf.ok() || !renderer::HeadlessContext::anyCurrent()) return view;
     sampling::FieldRange range;
     auto found = searchSurface(sdf, parameters, true, &range);
     if (!found) return view;
-    if (*found)
+    if (*found) {
         view.box = boxText(**found);
-    else if (range.finite > 0 && looksUnsigned(range))
-        view.level = sdf.marchThreshold;
+    } else if (range.finite > 0) {
+        view.noSurface = noSurfaceText(range, sdf);
+        if (looksUnsigned(range)) view.level = sdf.marchThreshold;
+    }
     return view;
 }
 

@@ -225,12 +225,12 @@ JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& w
     // pictures are empty and its samples never change sign. Said, not changed: the frame is asked for.
     // With a level given the user has chosen the surface (a thin one may escape the search's lattice).
     if (!mesh && sdf.shadertoyMainImage && (input.normalize.empty() || input.normalize == "none") && input.level == 0.0f) {
-        std::string none;
-        if (const std::string box = frameBoxOutsideUnitBox(sdf, resolved->settings, &none); !box.empty())
-            log::warning(what, label + ": the field has no surface in [-1, 1]^3; it lies in the box " + box +
-                                   ": --normalize unit-cube frames it (or --normalize " + box + ")");
-        else if (!none.empty())
-            log::warning(what, label + ": " + none);
+        const PastedView view = decidePastedView(sdf, resolved->settings);
+        if (!view.box.empty())
+            log::warning(what, label + ": the field has no surface in [-1, 1]^3; it lies in the box " + view.box +
+                                   ": --normalize unit-cube frames it (or --normalize " + view.box + ")");
+        else if (!view.noSurface.empty())
+            log::warning(what, label + ": " + view.noSurface);
     }
     return OpenedSdf{std::move(sdf), label, std::move(resolved->settings), std::move(resolved->warnings)};
 }

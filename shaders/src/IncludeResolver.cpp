@@ -11,6 +11,26 @@
 namespace sdfwb::shaders {
 namespace fs = std::filesystem;
 
+namespace {
+
+// `#define B(1-fract(t*2))`: a ( right after the macro's name that does not begin a parameter list
+// (names separated by commas). GLSL reads a function-like macro and fails; NVIDIA's driver, where
+// such shaders were written (Bonzomatic, golfed code), reads the value `(1-fract(t*2))`. The offset
+// of that (, or npos.
+std::size_t malformedMacroParenthesis(const std::string& line) {
+    static const std::regex define(R"(^\s*#\s*define\s+[A-Za-z_]\w*\()", kLinearRegex);
+    static const std::regex parameters(R"(\s*([A-Za-z_]\w*\s*(,\s*[A-Za-z_]\w*\s*)*)?)", kLinearRegex);
+    std::smatch match;
+    if (!std::regex_search(line, match, define)) return std::string::npos;
+    const std::size_t open = std::size_t(match.length(0)) - 1, close = line.find(')', open);
+    if (close == std::string::npos ||
+        std::regex_match(line.begin() + std::ptrdiff_t(open) + 1, line.begin() + std::ptrdiff_t(close), parameters))
+        return std::string::npos;
+    return open;
+}
+
+} // namespace
+
 std::string_view SourceMap::lineText(int index, int line) const {
     if (index < 0 || index >= int(files.size()) || line < 1) return {};
     std::string_view text = files[std::size_t(index)].text;
@@ -136,6 +156,14 @@ private:
                 if (!es && std::find(m_out.extensions.begin(), m_out.extensions.end(), directive) == m_out.extensions.end())
                     m_out.extensions.push_back(directive);
                 m_out.text += "\n";
+            } else if (const std::size_t open = directiveAllowed ? malformedMacroParenthesis(line) : std::string::npos;
+                       open != std::string::npos) {
+                const std::string macro = line.substr(line.find("define") + 6, open - line.find("define") - 6);
+                m_out.diagnostics.push_back({name, lineNumber, int(open) + 1, Severity::Warning,
+                                             "this ( does not begin a parameter list, so #define" + macro +
+                                                 "( is no function-like macro: read as the value of" + macro +
+                                                 ", as NVIDIA's driver reads it (a space before the ( says so in GLSL)"});
+                m_out.text += line.substr(0, open) + " " + line.substr(open) + "\n";
             } else {
                 // A NUL byte, which the source checks allow only in comments: a space for the compilers
                 // (Mesa's preprocessor ends the code there).

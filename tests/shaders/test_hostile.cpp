@@ -136,3 +136,19 @@ TEST(Hostile, HugeSourceIsRefusedQuicklyWithItsSize) {
         comments += "// a long comment line that takes room but is no code at all ......\n";
     EXPECT_TRUE(prepare(comments + "float sdf(vec3 p) { return length(p) - 0.5; }\n").ok());
 }
+
+// Golfed code written for NVIDIA's driver (a Bonzomatic shader's `#define B(1-fract(t*2))`): a ( after
+// a macro's name that begins no parameter list is read as the macro's value, with a warning at the (.
+// A real parameter list stays a function-like macro.
+TEST(Hostile, AMacroWhoseParenthesisIsNoParameterListIsItsValue) {
+    auto sdf = prepare("#define R(0.25+0.25)\n#define F(a, b) ((a) + (b))\n"
+                       "float sdf(vec3 p) { return length(p) - F(R, 0.0); }\n");
+    ASSERT_TRUE(sdf.ok()) << firstError(sdf).message;
+    ASSERT_EQ(sdf.diagnostics.size(), 1u);
+    EXPECT_EQ(sdf.diagnostics[0].severity, shaders::Severity::Warning);
+    EXPECT_EQ(sdf.diagnostics[0].line, 1);
+    EXPECT_EQ(sdf.diagnostics[0].column, 10);
+    EXPECT_NE(sdf.diagnostics[0].message.find("read as the value of R"), std::string::npos) << sdf.diagnostics[0].message;
+    const std::vector<shaders::ShaderPiece> stage{{"<test main>", "void main() {}\n"}};
+    EXPECT_TRUE(shaders::checkWithGlslang(shaders::composeSdfShader(sdf, shaders::Stage::Fragment, stage, {})).empty());
+}

@@ -76,19 +76,16 @@ struct OpenedSdf {
 // (Usage naming the parameter). `what` starts the failure message ("render", "audit", ...).
 JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& what);
 
-// For the workbench: the box X0,Y0,Z0,X1,Y1,Z1 (as --normalize takes it) that frames a GLSL field
-// with no surface in [-1, 1]^3 but one within [-64, 64]^3 (sampling/SurfaceBox.h), centred on it
-// with its longest side; empty when the surface crosses the unit box, there is none or the search
-// fails. Needs a current GL context. `noSurface`, when given, gets why there is none anywhere
-// (noSurfaceReason's text) from the same search.
-std::string frameBoxOutsideUnitBox(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters,
-                                   std::string* noSurface = nullptr);
-
-// The level the workbench takes as an unsigned field's surface (a pasted whole shader whose field is
-// never negative and whose own march stops at a constant: PreparedSdf::marchThreshold), decided with
-// frameBoxOutsideUnitBox's search: `box` (as that returns it), else that constant as `level`.
+// What the workbench and the commands make of a pasted whole shader with no surface in [-1, 1]^3,
+// from one search over [-64, 64]^3 (sampling/SurfaceBox.h). Needs a current GL context; all empty
+// when the surface crosses the unit box, for a mesh, or when the search fails.
+//   box        X0,Y0,Z0,X1,Y1,Z1 (as --normalize takes it): the surface's box, centred on it with its
+//              longest side, where the field has one outside the unit box
+//   noSurface  why it has none anywhere (noSurfaceReason's text)
+//   level      an unsigned field's surface (never negative, its own march stopping at a constant:
+//              PreparedSdf::marchThreshold): that constant, which the workbench takes as --level
 struct PastedView {
-    std::string box;
+    std::string box, noSurface;
     float level = 0.0f;
 };
 PastedView decidePastedView(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters);
