@@ -594,7 +594,7 @@ void MainWindow::updateTitle() {
             ? tr(" [mesh: sign %1, normalize %2; not saved]").arg(m_document->meshSign(), m_document->meshNormalize())
         : FileController::isShipped(m_document->path()) ? tr(" [shipped, read-only: Save asks for a new name]")
         : !m_document->frame().isEmpty()
-            ? tr(" [its surface lies outside [-1, 1]^3: framed by the box %1]").arg(m_document->frame())
+            ? tr(" [[-1, 1]^3 does not hold its scene whole: framed by the box %1]").arg(m_document->frame())
         : m_document->level() != 0.0f
             ? tr(" [an unsigned field: its surface taken at f = %1, where its march stops]").arg(double(m_document->level()))
             : QString();

@@ -96,7 +96,9 @@ jobs::PastedView decideView(shaders::PreparedSdf& prepared, const jobs::PastedVi
     } else if (auto context = renderer::HeadlessContext::create()) {
         view = jobs::decidePastedView(prepared, {});
         (*context)->doneCurrent();
-        if (!view.box.empty()) log::info("app", "the surface lies outside [-1, 1]^3: framed by the box " + view.box);
+        if (!view.box.empty())
+            log::info("app", std::string(view.cut ? "[-1, 1]^3 cuts the scene" : "the surface lies outside [-1, 1]^3") +
+                                 ": framed by the box " + view.box);
     }
     prepared.frame.level = view.level;
     if (!view.box.empty()) jobs::frameField(prepared, view.box, {}, label, "app"); // a box: no GL, no failure

@@ -57,7 +57,7 @@ public:
     }
     const QString& meshSign() const { return m_meshSign; }
     const QString& meshNormalize() const { return m_meshNormalize; }
-    // A pasted whole shader whose surface lies outside [-1, 1]^3 (a scene built around its own camera):
+    // A pasted whole shader whose scene [-1, 1]^3 does not hold whole (one built around its own camera):
     // the box X0,Y0,Z0,X1,Y1,Z1 it is framed by (shaders::PreparedSdf::frame), decided by the first
     // check of each file and entry function (jobs::decidePastedView) and passed to jobs as
     // --normalize; empty when the field is shown as it is.

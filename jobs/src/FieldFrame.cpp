@@ -32,14 +32,11 @@ std::vector<float> boxNumbers(const std::string& text) {
 // reaches every cube's faces). One compile either way.
 Expected<std::optional<sampling::SurfaceBox>> searchSurface(const shaders::PreparedSdf& sdf,
                                                             const std::vector<shaders::ParameterSetting>& parameters,
-                                                            bool outsideOnly, sampling::FieldRange* range = nullptr) {
+                                                            sampling::FieldRange* range = nullptr) {
     sampling::FieldEvaluator evaluator;
     if (shaders::hasErrors(evaluator.build(sdf))) return makeError("the field does not compile for the surface search");
     sampling::FieldSettings settings;
     settings.parameters = parameters;
-    if (outsideOnly)
-        if (auto inside = sampling::findSurfaceBox(evaluator, settings, 1.0f); !inside || *inside)
-            return inside ? Expected<std::optional<sampling::SurfaceBox>>(std::nullopt) : inside;
     return sampling::findSurfaceBox(evaluator, settings, 64.0f, range); // the evaluator releases its GL objects
 }
 
@@ -139,7 +136,7 @@ std::optional<JobError> frameField(shaders::PreparedSdf& sdf, const std::string&
             return workError(KeyedText(what + ": " + label + ": ") + key("normalize") + " " + normalize +
                              " searches the field's values and needs a GL context");
         sampling::FieldRange range;
-        auto found = searchSurface(sdf, parameters, false, &range);
+        auto found = searchSurface(sdf, parameters, &range);
         if (!found) return workError(KeyedText(what + ": " + label + ": ") + key("normalize") + ": " + found.error().message);
         if (!*found)
             return workError(KeyedText(what + ": " + label + ": ") + key("normalize") + " " + normalize + ": " +
@@ -166,10 +163,16 @@ PastedView decidePastedView(const shaders::PreparedSdf& sdf, const std::vector<s
     PastedView view;
     if (sdf.mesh || !sdf.ok() || !renderer::HeadlessContext::anyCurrent()) return view;
     sampling::FieldRange range;
-    auto found = searchSurface(sdf, parameters, true, &range);
+    auto found = searchSurface(sdf, parameters, &range);
     if (!found) return view;
     if (*found) {
-        view.box = boxText(**found);
+        // Held whole by a cube larger than [-1, 1]^3 (searched > 1): none inside the unit box, or a
+        // scene the unit box cuts. One [-1, 1]^3 holds whole, or a floor every cube cuts, is shown as it is.
+        if (const sampling::SurfaceBox& box = **found; box.searched > 1.0f) {
+            view.box = boxText(box);
+            view.cut = true;
+            for (std::size_t a = 0; a < 3; ++a) view.cut = view.cut && box.low[a] < 1.0f && box.high[a] > -1.0f;
+        }
     } else if (range.finite > 0) {
         view.noSurface = noSurfaceText(range, sdf);
         if (looksUnsigned(range)) view.level = sdf.marchThreshold;
@@ -180,7 +183,7 @@ PastedView decidePastedView(const shaders::PreparedSdf& sdf, const std::vector<s
 std::string noSurfaceReason(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters) {
     if (sdf.mesh || !sdf.ok() || !renderer::HeadlessContext::anyCurrent()) return {};
     sampling::FieldRange range;
-    auto found = searchSurface(sdf, parameters, false, &range);
+    auto found = searchSurface(sdf, parameters, &range);
     return found && !*found ? noSurfaceText(range, sdf) : std::string();
 }
 

@@ -227,8 +227,10 @@ JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& w
     if (!mesh && sdf.shadertoyMainImage && (input.normalize.empty() || input.normalize == "none") && input.level == 0.0f) {
         const PastedView view = decidePastedView(sdf, resolved->settings);
         if (!view.box.empty())
-            log::warning(what, label + ": the field has no surface in [-1, 1]^3; it lies in the box " + view.box +
-                                   ": --normalize unit-cube frames it (or --normalize " + view.box + ")");
+            log::warning(what, label +
+                                   (view.cut ? ": [-1, 1]^3 cuts the scene; it lies whole in the box "
+                                             : ": the field has no surface in [-1, 1]^3; it lies in the box ") +
+                                   view.box + ": --normalize unit-cube frames it (or --normalize " + view.box + ")");
         else if (!view.noSurface.empty())
             log::warning(what, label + ": " + view.noSurface);
     }

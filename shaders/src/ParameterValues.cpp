@@ -202,7 +202,13 @@ std::string withDefaults(const std::string& text, const std::vector<Parameter>& 
     std::sort(edits.begin(), edits.end(),
               [](const auto& a, const auto& b) { return a.first->initializerOffset > b.first->initializerOffset; });
     std::string out = text;
-    for (const auto& [p, literal] : edits) out.replace(p->initializerOffset, p->initializerLength, literal);
+    for (const auto& [p, literal] : edits) {
+        // An initializer written over lines (`vec3(\n 1, 0.5, 0.2)`) keeps its line breaks after the
+        // new one: every other line keeps its number (and a Fragmentarium annotation its line).
+        const auto breaks = std::count(text.begin() + std::ptrdiff_t(p->initializerOffset),
+                                       text.begin() + std::ptrdiff_t(p->initializerOffset + p->initializerLength), '\n');
+        out.replace(p->initializerOffset, p->initializerLength, literal + std::string(std::size_t(breaks), '\n'));
+    }
     return out;
 }
 

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -160,6 +161,26 @@ TEST(BatchFrame, APastedSceneOutsideTheUnitBoxIsWarnedAbout) {
     r = run("--batch sample --sdf sphere --pattern rand -n 100 -o " + out.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(r.output.find("no surface in"), std::string::npos) << r.output;
+
+    // A scene the unit box cuts (a ball of radius 1.5 at the origin): named as cut, with its whole box.
+    const fs::path big = writeShader("big.glsl", "float map(vec3 p) { return length(p) - 1.5; }\n"
+                                                 "void mainImage(out vec4 c, in vec2 u) {\n"
+                                                 "    float t = 0.0;\n"
+                                                 "    for (int i = 0; i < 64; i++) { float d = map(vec3(0.0, 0.0, -4.0 + t)); "
+                                                 "if (d < 0.001) break; t += d; }\n"
+                                                 "    c = vec4(t);\n}\n");
+    r = run("--batch sample --sdf " + big.string() + " --pattern rand -n 100 -o " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const std::size_t said = r.output.find("[-1, 1]^3 cuts the scene; it lies whole in the box ");
+    ASSERT_NE(said, std::string::npos) << r.output;
+    float box[6];
+    ASSERT_EQ(
+        std::sscanf(r.output.c_str() + said + 51, "%f,%f,%f,%f,%f,%f", &box[0], &box[1], &box[2], &box[3], &box[4], &box[5]), 6)
+        << r.output.substr(said);
+    for (int a = 0; a < 3; ++a) {
+        EXPECT_NEAR(box[a], -1.5f, 0.15f) << r.output.substr(said);
+        EXPECT_NEAR(box[a + 3], 1.5f, 0.15f) << r.output.substr(said);
+    }
 }
 
 TEST(BatchFrame, BadBoxesAndFieldsWithoutASurfaceAreNamedAndWriteNothing) {

@@ -238,6 +238,15 @@ TEST(ParameterValues, SavedAsDefaultsTheFileReadsBackTheSameValues) {
     EXPECT_EQ(again[0].minimum, params[0].minimum);
     EXPECT_EQ(parametersJson(values->settings), R"({"radius":0.25,"count":9,"hollow":true,"offset":[1,-0.5,0.125],"scale":1})");
     EXPECT_EQ(glslLiteral(ParameterType::Float, {3.0f}), "3.0"); // a float literal, not the int 3
+
+    // An initializer written over lines keeps its line breaks: the lines after it keep their
+    // numbers (found by the fuzzer: joined, a slider's ] on a later line came onto its line).
+    const std::string split = "uniform vec3 tint = vec3(\n    0.1, 0.5,\n    0.25);\nuniform float r = 0.5;\n";
+    const auto splitParams = declared(split);
+    ASSERT_EQ(splitParams.size(), 2u);
+    const std::string rewritten = withDefaults(split, splitParams, {{"tint", ParameterType::Vec3, {0.2f, 0.5f, 0.25f, 0.0f}}});
+    EXPECT_EQ(std::count(rewritten.begin(), rewritten.end(), '\n'), std::count(split.begin(), split.end(), '\n')) << rewritten;
+    EXPECT_EQ(declared(rewritten)[1].line, 4);
 }
 
 TEST(ParameterFamilies, SweepsMakeAGridWithExactEndpoints) {

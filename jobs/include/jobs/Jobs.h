@@ -76,17 +76,20 @@ struct OpenedSdf {
 // (Usage naming the parameter). `what` starts the failure message ("render", "audit", ...).
 JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& what);
 
-// What the workbench and the commands make of a pasted whole shader with no surface in [-1, 1]^3,
-// from one search over [-64, 64]^3 (sampling/SurfaceBox.h). Needs a current GL context; all empty
-// when the surface crosses the unit box, for a mesh, or when the search fails.
+// What the workbench and the commands make of a pasted whole shader whose scene [-1, 1]^3 does not
+// hold whole, from one search over [-64, 64]^3 (sampling/SurfaceBox.h). Needs a current GL context;
+// all empty when the unit box holds the surface whole (or cuts a floor every larger box cuts too),
+// for a mesh, or when the search fails.
 //   box        X0,Y0,Z0,X1,Y1,Z1 (as --normalize takes it): the surface's box, centred on it with its
-//              longest side, where the field has one outside the unit box
+//              longest side, where a larger cube holds it whole
+//   cut        that box overlaps [-1, 1]^3: the unit box cuts the scene (else nothing is in it)
 //   noSurface  why it has none anywhere (noSurfaceReason's text)
 //   level      an unsigned field's surface (never negative, its own march stopping at a constant:
 //              PreparedSdf::marchThreshold): that constant, which the workbench takes as --level
 struct PastedView {
     std::string box, noSurface;
     float level = 0.0f;
+    bool cut = false;
 };
 PastedView decidePastedView(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters);
 
