@@ -158,7 +158,8 @@ private:
                 m_out.text += "\n";
             } else if (const std::size_t open = directiveAllowed ? malformedMacroParenthesis(line) : std::string::npos;
                        open != std::string::npos) {
-                const std::string macro = line.substr(line.find("define") + 6, open - line.find("define") - 6);
+                const std::size_t macroStart = line.find("define") + 6;
+                const std::string macro = line.substr(macroStart, open - macroStart);
                 m_out.diagnostics.push_back({name, lineNumber, int(open) + 1, Severity::Warning,
                                              "this ( does not begin a parameter list, so #define" + macro +
                                                  "( is no function-like macro: read as the value of" + macro +

@@ -182,13 +182,42 @@ bool isInParameter(const TIntermSymbol* symbol) {
 
 using Functions = std::map<std::string, TIntermAggregate*>; // definitions by mangled name
 
-// Whether the function `from` (mangled) calls `target`, directly or through others.
-bool calls(const std::string& from, const glslang::TString& target, const Functions& functions, std::set<std::string>& seen) {
-    auto it = functions.find(from);
-    if (it == functions.end() || !seen.insert(from).second) return false;
-    for (TIntermAggregate* c : contentsOf(it->second).calls)
-        if (c->getName() == target || calls(c->getName().c_str(), target, functions, seen)) return true;
-    return false;
+// The body of a function definition (null for a prototype).
+TIntermAggregate* bodyOf(TIntermAggregate* function) {
+    return function->getSequence().size() > 1 ? function->getSequence()[1]->getAsAggregate() : nullptr;
+}
+
+// The mangled names of `target` and of every function that calls it, directly or through others:
+// the callers found once, walked back from `target`.
+std::set<std::string> functionsReaching(const glslang::TString& target, const Functions& functions) {
+    std::map<std::string, std::vector<std::string>> callers;
+    for (const auto& [name, definition] : functions)
+        for (TIntermAggregate* c : contentsOf(definition).calls) callers[c->getName().c_str()].push_back(name);
+    std::set<std::string> reaching{target.c_str()};
+    for (std::vector<std::string> next{target.c_str()}; !next.empty();) {
+        const std::string callee = next.back();
+        next.pop_back();
+        for (const std::string& caller : callers[callee])
+            if (reaching.insert(caller).second) next.push_back(caller);
+    }
+    return reaching;
+}
+
+// The first statement of `body` that calls a function in `reaching`, with that call.
+struct ReachingStatement {
+    TIntermNode* statement = nullptr;
+    TIntermAggregate* call = nullptr;
+};
+ReachingStatement statementReaching(TIntermAggregate* body, const std::set<std::string>& reaching) {
+    for (TIntermNode* statement : body->getSequence())
+        for (TIntermAggregate* c : contentsOf(statement).calls)
+            if (reaching.count(c->getName().c_str())) return {statement, c};
+    return {};
+}
+
+// Whether a statement runs its calls conditionally or repeatedly.
+bool isControlFlow(TIntermNode* statement) {
+    return statement->getAsLoopNode() || statement->getAsSelectionNode() || statement->getAsBranchNode();
 }
 
 // The file-scope variables (not const, not uniforms) a subtree and the functions it calls read and
@@ -232,34 +261,38 @@ struct GlobalUse : glslang::TIntermTraverser {
 // top of its body.
 void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate* marcher, TIntermLoop* loop,
                   TIntermAggregate* mainImage, const ComposedShader& composed, const Functions& functions) {
-    TIntermAggregate* body = mainImage->getSequence().size() > 1 ? mainImage->getSequence()[1]->getAsAggregate() : nullptr;
+    TIntermAggregate* body = bodyOf(mainImage);
     if (!body) return;
     GlobalUse reads(functions);
     reads.entered.insert(field->getName().c_str());
     field->traverse(&reads);
-    GlobalUse sets(functions);
     // The call of the marching function, or of the function that reaches it (`col = render(ro, rd)`), or
-    // mainImage's own march loop.
+    // mainImage's own march loop, and the statements before it.
     TIntermNode* marcherCall = nullptr;
     std::string called;
-    for (TIntermNode* statement : body->getSequence()) {
-        if (marcher == mainImage) { // the loop at the top of its body (`for (float t = 0.; ...)` is a sequence)
+    std::vector<TIntermNode*> earlier;
+    if (marcher == mainImage) { // the loop at the top of its body (`for (float t = 0.; ...)` is a sequence)
+        for (TIntermNode* statement : body->getSequence()) {
             TIntermAggregate* sequence = statement->getAsAggregate();
             if (statement == loop || (sequence && sequence->getOp() == glslang::EOpSequence && !sequence->getSequence().empty() &&
-                                      sequence->getSequence().back() == loop))
+                                      sequence->getSequence().back() == loop)) {
                 marcherCall = loop;
-        } else {
-            for (TIntermAggregate* c : contentsOf(statement).calls)
-                if (std::set<std::string> seen;
-                    c->getName() == marcher->getName() || calls(c->getName().c_str(), marcher->getName(), functions, seen))
-                    marcherCall = c, called = plainName(c->getName());
-            if (marcherCall && (statement->getAsLoopNode() || statement->getAsSelectionNode() || statement->getAsBranchNode()))
-                return;
+                break;
+            }
+            earlier.push_back(statement);
         }
-        if (marcherCall) break;
-        statement->traverse(&sets);
+    } else {
+        const ReachingStatement found = statementReaching(body, functionsReaching(marcher->getName(), functions));
+        if (!found.call || isControlFlow(found.statement)) return;
+        marcherCall = found.call, called = plainName(found.call->getName());
+        for (TIntermNode* statement : body->getSequence()) {
+            if (statement == found.statement) break;
+            earlier.push_back(statement);
+        }
     }
     if (!marcherCall) return;
+    GlobalUse sets(functions);
+    for (TIntermNode* statement : earlier) statement->traverse(&sets);
     std::set<std::string> shared;
     for (const auto& [id, name] : sets.written)
         if (reads.read.count(id)) shared.insert(name);
@@ -297,16 +330,13 @@ struct MarcherCall {
 
 MarcherCall findMarcherCall(TIntermAggregate* marcher, const Reached& tree) {
     TIntermAggregate* mainImage = tree.mainImage;
-    TIntermAggregate* body = mainImage->getSequence().size() > 1 ? mainImage->getSequence()[1]->getAsAggregate() : nullptr;
-    if (!body) return {nullptr, false, "mainImage has no body"};
+    TIntermAggregate* body = bodyOf(mainImage);
+    if (!body) return {nullptr, false, "mainImage has no body", {}};
     const std::string name = plainName(marcher->getName());
-    for (TIntermNode* statement : body->getSequence())
-        for (TIntermAggregate* c : contentsOf(statement).calls)
-            if (c->getName() == marcher->getName()) {
-                if (statement->getAsLoopNode() || statement->getAsSelectionNode() || statement->getAsBranchNode())
-                    return {nullptr, false, "mainImage calls " + name + " inside a loop or a condition"};
-                return {c, true, {}, "mainImage"};
-            }
+    if (const ReachingStatement found = statementReaching(body, {marcher->getName().c_str()}); found.call) {
+        if (isControlFlow(found.statement)) return {nullptr, false, "mainImage calls " + name + " inside a loop or a condition"};
+        return {found.call, true, {}, "mainImage"};
+    }
     for (TIntermAggregate* function : tree.reached)
         for (TIntermAggregate* c : contentsOf(function).calls)
             if (function != mainImage && c->getName() == marcher->getName())
