@@ -19,9 +19,46 @@ namespace {
 
 using namespace detail;
 
+// The parameters of `function`, which holds an inline march, with the values mainImage passes at
+// the top of its body (`t = raymarch(ro, rd, torusParams, angle)`): its statements before that
+// call become the march's prelude, run once, as for a marched function's parameters
+// (MarchedFunction::traced). False, with nothing set, where mainImage makes no such call or a
+// parameter's type cannot be declared: the caller then gives the parameters zeros.
+bool traceParameters(InlineMarch& march, TIntermAggregate* function, const std::vector<TIntermSymbol*>& parameters,
+                     const Reached& tree, const std::string& text) {
+    const MarcherCall found = findMarcherCall(function, tree);
+    if (!found.call || !found.fromMainImage || found.call->getLoc().string != function->getLoc().string ||
+        tree.mainImage->getLoc().string != function->getLoc().string)
+        return false;
+    std::string before;
+    int callLineNumber = found.call->getLoc().line;
+    const std::vector<std::string> values =
+        callArguments(text, callLineNumber, plainName(function->getName()), &before, &callLineNumber);
+    if (values.size() != parameters.size() || before.find_first_of(";{}") != std::string::npos) return false;
+    const std::size_t open = bodyOpen(text, tree.mainImage), callLine = lineStart(text, callLineNumber);
+    if (open == std::string::npos || callLine == std::string::npos || open >= callLine ||
+        !wholeStatements(text.substr(open + 1, callLine - open - 1)))
+        return false;
+    std::vector<TracedValue> traced;
+    for (std::size_t k = 0; k < parameters.size(); ++k) {
+        const std::string type = glslTypeName(parameters[k]->getType());
+        if (type.empty() || !isInParameter(parameters[k])) return false;
+        traced.push_back({type, parameters[k]->getName().c_str(), values[k]});
+    }
+    march.prelude = text.substr(open + 1, callLine - open - 1);
+    march.traced = std::move(traced);
+    const std::vector<TIntermSymbol*> mainParameters = parametersOf(tree.mainImage);
+    if (mainParameters.size() == 2) {
+        march.colour = mainParameters[0]->getName().c_str();
+        march.coordinate = mainParameters[1]->getName().c_str();
+    }
+    return true;
+}
+
 // Fills an inline march's prelude and body from its loop's text (InlineField.h), or its unresolved.
-void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* function, bool isMainImage,
+void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* function, const Reached& tree,
                      const ComposedShader& composed) {
+    const bool isMainImage = function == tree.mainImage;
     const int file = loop->getLoc().string;
     if (file < 0 || file >= int(composed.map.files.size()) || function->getLoc().string != file) {
         march.unresolved = "the loop and its function are in different files";
@@ -69,6 +106,9 @@ void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* fu
     if (isMainImage && parameters.size() == 2) {
         march.colour = parameters[0]->getName().c_str();
         march.coordinate = parameters[1]->getName().c_str();
+    } else if (traceParameters(march, function, parameters, tree, text)) {
+        march.body = before + march.body + std::string(std::size_t(enclosing), '}');
+        return;
     } else {
         // Another function's parameters (the ray's origin and direction): zero, since the point is given.
         for (TIntermSymbol* parameter : parameters) {
@@ -155,7 +195,7 @@ std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
                     march.line = loop->getLoc().line;
                     march.counter = march.point = point->getName().c_str();
                     march.field = symbols.byId[read]->getName().c_str();
-                    readInlineMarch(march, loop, function, function == tree.mainImage, composed);
+                    readInlineMarch(march, loop, function, tree, composed);
                     setHitThreshold(march, loop, {read});
                     found.push_back(std::move(march));
                     marched = true;
@@ -193,7 +233,7 @@ std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
                 march.line = loop->getLoc().line;
                 march.counter = counter->getName().c_str();
                 march.point = symbols.byId[point]->getName().c_str();
-                readInlineMarch(march, loop, function, function == tree.mainImage, composed);
+                readInlineMarch(march, loop, function, tree, composed);
                 std::set<long long> floats; // the step's floats (`t += d`, `t += d * .5`)
                 for (long long read : stepping.reads)
                     if (const glslang::TType* type = typeOf(read);

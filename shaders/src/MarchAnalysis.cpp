@@ -175,50 +175,7 @@ int distanceComponent(const Assignment& step, const std::vector<Assignment>& ass
     return found;
 }
 
-bool isInParameter(const TIntermSymbol* symbol) {
-    const glslang::TStorageQualifier storage = symbol->getQualifier().storage;
-    return storage == glslang::EvqIn || storage == glslang::EvqConstReadOnly;
-}
-
 using Functions = std::map<std::string, TIntermAggregate*>; // definitions by mangled name
-
-// The body of a function definition (null for a prototype).
-TIntermAggregate* bodyOf(TIntermAggregate* function) {
-    return function->getSequence().size() > 1 ? function->getSequence()[1]->getAsAggregate() : nullptr;
-}
-
-// The mangled names of `target` and of every function that calls it, directly or through others:
-// the callers found once, walked back from `target`.
-std::set<std::string> functionsReaching(const glslang::TString& target, const Functions& functions) {
-    std::map<std::string, std::vector<std::string>> callers;
-    for (const auto& [name, definition] : functions)
-        for (TIntermAggregate* c : contentsOf(definition).calls) callers[c->getName().c_str()].push_back(name);
-    std::set<std::string> reaching{target.c_str()};
-    for (std::vector<std::string> next{target.c_str()}; !next.empty();) {
-        const std::string callee = next.back();
-        next.pop_back();
-        for (const std::string& caller : callers[callee])
-            if (reaching.insert(caller).second) next.push_back(caller);
-    }
-    return reaching;
-}
-
-// The first statement of `body` that calls a function in `reaching`, with that call.
-struct ReachingStatement {
-    TIntermNode* statement = nullptr;
-    TIntermAggregate* call = nullptr;
-};
-ReachingStatement statementReaching(TIntermAggregate* body, const std::set<std::string>& reaching) {
-    for (TIntermNode* statement : body->getSequence())
-        for (TIntermAggregate* c : contentsOf(statement).calls)
-            if (reaching.count(c->getName().c_str())) return {statement, c};
-    return {};
-}
-
-// Whether a statement runs its calls conditionally or repeatedly.
-bool isControlFlow(TIntermNode* statement) {
-    return statement->getAsLoopNode() || statement->getAsSelectionNode() || statement->getAsBranchNode();
-}
 
 // The file-scope variables (not const, not uniforms) a subtree and the functions it calls read and
 // assign, by symbol id with their names. A variable only assigned or updated in place (`glow += x`,
@@ -315,46 +272,6 @@ void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate*
         m.colour = mainParameters[0]->getName().c_str();
         m.coordinate = mainParameters[1]->getName().c_str();
     }
-}
-
-// The call that gives the marching function its arguments: mainImage's own, at the top of its body
-// (the statements before it are the prelude), else the first call in the function nearest mainImage
-// that calls it (`col = render(ro, rd)`, whose `castRay(ro, rd, mat, 1.0, true)` casts the primary
-// ray), whose values the wrapper can use where they are constants. Null with why when neither is.
-struct MarcherCall {
-    TIntermAggregate* call = nullptr;
-    bool fromMainImage = false;
-    std::string why;
-    std::string in; // the function that makes the call
-};
-
-MarcherCall findMarcherCall(TIntermAggregate* marcher, const Reached& tree) {
-    TIntermAggregate* mainImage = tree.mainImage;
-    TIntermAggregate* body = bodyOf(mainImage);
-    if (!body) return {nullptr, false, "mainImage has no body", {}};
-    const std::string name = plainName(marcher->getName());
-    if (const ReachingStatement found = statementReaching(body, {marcher->getName().c_str()}); found.call) {
-        if (isControlFlow(found.statement)) return {nullptr, false, "mainImage calls " + name + " inside a loop or a condition"};
-        return {found.call, true, {}, "mainImage"};
-    }
-    for (TIntermAggregate* function : tree.reached)
-        for (TIntermAggregate* c : contentsOf(function).calls)
-            if (function != mainImage && c->getName() == marcher->getName())
-                return {c, false, {}, plainName(function->getName())};
-    return {nullptr, false, "mainImage does not call " + name};
-}
-
-// Whether an argument reads no variable: literals, constants and uniforms only.
-bool isConstantArgument(TIntermNode* argument) {
-    struct Variables : glslang::TIntermTraverser {
-        bool found = false;
-        void visitSymbol(TIntermSymbol* node) override {
-            const glslang::TStorageQualifier storage = node->getQualifier().storage;
-            found = found || (storage != glslang::EvqConst && storage != glslang::EvqUniform);
-        }
-    } variables;
-    argument->traverse(&variables);
-    return !variables.found;
 }
 
 // The field's out parameters after the point (`out Material mat`): the variables the march passes
@@ -502,7 +419,7 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                     std::find_if(marched.begin(), marched.end(), [&](const MarchedFunction& m) { return m.name == name; });
                 if (entry == marched.end()) {
                     const glslang::TSourceLoc& loc = call->getLoc();
-                    marched.push_back({name, composed.map.fileName(loc.string), loc.line, 0,
+                    marched.push_back({name, composed.map.fileName(loc.string), loc.line, 0, loop->getLoc().line,
                                        member.empty() ? std::string() : std::string(returned.getTypeName().c_str()), member,
                                        glslTypeName(returned)});
                     entry = marched.end() - 1;

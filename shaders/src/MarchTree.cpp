@@ -136,4 +136,69 @@ bool parseReached(const ComposedShader& composed, Reached& tree) {
     return true;
 }
 
+TIntermAggregate* bodyOf(TIntermAggregate* function) {
+    return function->getSequence().size() > 1 ? function->getSequence()[1]->getAsAggregate() : nullptr;
+}
+
+// The callers found once, walked back from `target`.
+std::set<std::string> functionsReaching(const glslang::TString& target,
+                                        const std::map<std::string, TIntermAggregate*>& functions) {
+    std::map<std::string, std::vector<std::string>> callers;
+    for (const auto& [name, definition] : functions)
+        for (TIntermAggregate* c : contentsOf(definition).calls) callers[c->getName().c_str()].push_back(name);
+    std::set<std::string> reaching{target.c_str()};
+    for (std::vector<std::string> next{target.c_str()}; !next.empty();) {
+        const std::string callee = next.back();
+        next.pop_back();
+        for (const std::string& caller : callers[callee])
+            if (reaching.insert(caller).second) next.push_back(caller);
+    }
+    return reaching;
+}
+
+ReachingStatement statementReaching(TIntermAggregate* body, const std::set<std::string>& reaching) {
+    for (TIntermNode* statement : body->getSequence())
+        for (TIntermAggregate* c : contentsOf(statement).calls)
+            if (reaching.count(c->getName().c_str())) return {statement, c};
+    return {};
+}
+
+bool isControlFlow(TIntermNode* statement) {
+    return statement->getAsLoopNode() || statement->getAsSelectionNode() || statement->getAsBranchNode();
+}
+
+MarcherCall findMarcherCall(TIntermAggregate* marcher, const Reached& tree) {
+    TIntermAggregate* mainImage = tree.mainImage;
+    TIntermAggregate* body = bodyOf(mainImage);
+    if (!body) return {nullptr, false, "mainImage has no body", {}};
+    const std::string name = plainName(marcher->getName());
+    if (const ReachingStatement found = statementReaching(body, {marcher->getName().c_str()}); found.call) {
+        if (isControlFlow(found.statement))
+            return {nullptr, false, "mainImage calls " + name + " inside a loop or a condition", {}};
+        return {found.call, true, {}, "mainImage"};
+    }
+    for (TIntermAggregate* function : tree.reached)
+        for (TIntermAggregate* c : contentsOf(function).calls)
+            if (function != mainImage && c->getName() == marcher->getName())
+                return {c, false, {}, plainName(function->getName())};
+    return {nullptr, false, "mainImage does not call " + name, {}};
+}
+
+bool isInParameter(const TIntermSymbol* symbol) {
+    const glslang::TStorageQualifier storage = symbol->getQualifier().storage;
+    return storage == glslang::EvqIn || storage == glslang::EvqConstReadOnly;
+}
+
+bool isConstantArgument(TIntermNode* argument) {
+    struct Variables : glslang::TIntermTraverser {
+        bool found = false;
+        void visitSymbol(TIntermSymbol* node) override {
+            const glslang::TStorageQualifier storage = node->getQualifier().storage;
+            found = found || (storage != glslang::EvqConst && storage != glslang::EvqUniform);
+        }
+    } variables;
+    argument->traverse(&variables);
+    return !variables.found;
+}
+
 } // namespace sdfwb::shaders::detail

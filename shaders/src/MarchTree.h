@@ -97,4 +97,39 @@ struct Reached {
 // false when it does not parse.
 bool parseReached(const ComposedShader& composed, Reached& tree);
 
+// The body of a function definition (null for a prototype).
+TIntermAggregate* bodyOf(TIntermAggregate* function);
+
+// The mangled names of `target` and of every function that calls it, directly or through others.
+std::set<std::string> functionsReaching(const glslang::TString& target,
+                                        const std::map<std::string, TIntermAggregate*>& functions);
+
+// The first statement of `body` that calls a function in `reaching` (mangled names), with that call.
+struct ReachingStatement {
+    TIntermNode* statement = nullptr;
+    TIntermAggregate* call = nullptr;
+};
+ReachingStatement statementReaching(TIntermAggregate* body, const std::set<std::string>& reaching);
+
+// Whether a statement runs its calls conditionally or repeatedly.
+bool isControlFlow(TIntermNode* statement);
+
+// The call that gives the marching function its arguments: mainImage's own, at the top of its body
+// (the statements before it are the prelude), else the first call in the function nearest mainImage
+// that calls it (`col = render(ro, rd)`, whose `castRay(ro, rd, mat, 1.0, true)` casts the primary
+// ray), whose values the wrapper can use where they are constants. Null with why when neither is.
+struct MarcherCall {
+    TIntermAggregate* call = nullptr;
+    bool fromMainImage = false;
+    std::string why;
+    std::string in; // the function that makes the call
+};
+MarcherCall findMarcherCall(TIntermAggregate* marcher, const Reached& tree);
+
+// Whether a parameter is an `in` one (`in`, `const in` or none).
+bool isInParameter(const TIntermSymbol* symbol);
+
+// Whether an argument reads no variable: literals, constants and uniforms only.
+bool isConstantArgument(TIntermNode* argument);
+
 } // namespace sdfwb::shaders::detail

@@ -9,6 +9,7 @@
 #include <shaders/SourceChecks.h>
 
 #include "ForeignHosts.h"
+#include "MarchEntry.h"
 #include "Words.h"
 
 #include <algorithm>
@@ -435,215 +436,6 @@ void chooseCubeChannels(PreparedSdf& prepared) {
     }
 }
 
-// A whole shader whose march writes its field inline (shaders::InlineMarch), with no function the
-// march steps by and no conventional name: the first such loop whose text the wrapper can run.
-void chooseInlineField(PreparedSdf& prepared, const std::string& stripped) {
-    PreparedSdf userCode = prepared;
-    userCode.signature.entry.clear(); // no entry: the user's code alone
-    std::string unresolved;
-    for (InlineMarch& march :
-         inlineMarches(composeSdfShader(userCode, Stage::Fragment, std::vector<ShaderPiece>{}, FeatureDefines{}))) {
-        if (march.body.empty()) {
-            if (unresolved.empty())
-                unresolved =
-                    "the march at line " + std::to_string(march.line) + " writes its field inline, but " + march.unresolved;
-            continue;
-        }
-        SdfSignature& signature = prepared.signature;
-        signature = SdfSignature{};
-        signature.found = true;
-        signature.entry = march.function;
-        const std::string centre = mentions(stripped, "iResolution") ? "0.5 * iResolution.xy" : "vec2(0.0)";
-        if (!march.coordinate.empty())
-            signature.prelude = "vec2 " + march.coordinate + " = " + centre + "; vec4 " + march.colour + " = vec4(0.0);\n";
-        signature.prelude += march.prelude;
-        signature.inlineBody = march.body;
-        prepared.entrySource = EntrySource::March;
-        prepared.marchThreshold = march.hitThreshold;
-        prepared.marchThresholdLine = march.hitLine;
-        // A march backwards (`t -= d`) has the step -(d): said as the shader writes it.
-        const bool backwards =
-            march.field.empty() && march.step.size() > 3 && march.step.compare(0, 2, "-(") == 0 && march.step.back() == ')';
-        prepared.entryReason = march.function + " (its march at line " + std::to_string(march.line) +
-                               " writes the field inline: " + (march.field.empty() ? "" : march.field + ", ") + "the step " +
-                               march.counter +
-                               (backwards ? " -= " + march.step.substr(2, march.step.size() - 3) : " += " + march.step) + ")";
-        return;
-    }
-    if (!unresolved.empty() && prepared.entryReason.empty()) prepared.entryReason = unresolved;
-}
-
-// The field's parameters after the point whose values mainImage computes from the pixel (its
-// coordinate, or a name a statement of the prelude computes from one): the wrapper evaluates them
-// at the frame's centre, so the field is that pixel's (a ray direction a field culls by, a uv).
-std::vector<std::string> perPixelParameters(const MarchedFunction& m) {
-    static const std::set<std::string> notNames = {
-        "const", "highp", "mediump", "lowp",  "in",    "out",   "inout", "float", "int",   "uint",  "bool", "vec2", "vec3",
-        "vec4",  "ivec2", "ivec3",   "ivec4", "uvec2", "uvec3", "uvec4", "bvec2", "bvec3", "bvec4", "mat2", "mat3", "mat4"};
-    std::set<std::string> pixel = {m.coordinate.empty() ? std::string("fragCoord") : m.coordinate, "gl_FragCoord"};
-    auto mentionsAny = [&pixel](const std::string& text) {
-        return std::any_of(pixel.begin(), pixel.end(), [&](const std::string& name) { return mentions(text, name); });
-    };
-    const std::string prelude = stripComments(m.prelude);
-    for (std::size_t start = 0; start < prelude.size();) {
-        const std::size_t end = std::min(prelude.find(';', start), prelude.size());
-        const std::string statement = prelude.substr(start, end - start);
-        start = end + 1;
-        if (!mentionsAny(statement)) continue;
-        // What it assigns (`vec3 ro = ..., rd = ...;`, `uv.x *= ...;`), or what a call may write
-        // (`camera(uv, ro, rd);`): names, not members after a `.`, types or called functions.
-        bool assigns = false;
-        for (std::size_t at = statement.find('='); at != std::string::npos; at = statement.find('=', at + 1)) {
-            const char next = at + 1 < statement.size() ? statement[at + 1] : ' ';
-            const char previous = at > 0 ? statement[at - 1] : ' ';
-            if (next == '=' || previous == '=' || previous == '!' ||
-                ((previous == '<' || previous == '>') && (at < 2 || statement[at - 2] != previous)))
-                continue;
-            assigns = true;
-            std::size_t k = at; // back over the operator, then `[...]` and `.member` to the base name
-            while (k > 0 && std::strchr("+-*/%&|^<> \t\r\n", statement[k - 1])) --k;
-            for (;;) {
-                if (k > 0 && statement[k - 1] == ']') {
-                    int depth = 0;
-                    while (k > 0 && !(statement[k - 1] == '[' && depth == 1))
-                        depth += statement[--k] == ']' ? 1 : statement[k] == '[' ? -1 : 0;
-                    if (k > 0) --k;
-                    continue;
-                }
-                std::size_t wordStart = k;
-                while (wordStart > 0 && isWordCharacter(statement[wordStart - 1])) --wordStart;
-                if (wordStart == k) break;
-                if (wordStart > 0 && statement[wordStart - 1] == '.') {
-                    k = wordStart - 1;
-                    continue;
-                }
-                pixel.insert(statement.substr(wordStart, k - wordStart));
-                break;
-            }
-        }
-        if (assigns) continue;
-        detail::forEachIdentifier(statement, [&](std::size_t at, std::size_t wordEnd) {
-            const std::string word = statement.substr(at, wordEnd - at);
-            const std::size_t next = statement.find_first_not_of(" \t\r\n", wordEnd);
-            const bool called = next != std::string::npos && statement[next] == '(';
-            const bool member = at > 0 && statement[at - 1] == '.';
-            if (!called && !member && !notNames.count(word) && !std::isdigit(static_cast<unsigned char>(word[0])))
-                pixel.insert(word);
-            return true;
-        });
-    }
-    std::vector<std::string> out;
-    for (const std::string& name : m.globals)
-        if (pixel.count(name)) out.push_back(name);
-    for (const TracedValue& traced : m.traced)
-        if (mentionsAny(traced.value)) out.push_back(traced.name);
-    return out;
-}
-
-// A whole shader without an `sdf`: the function its own march steps by (marchedFunctions), when
-// it has an entry's form. The one most loops step by wins; a tie is broken by a conventional name,
-// then by the fewest calls from mainImage, else it is an error naming the candidates (entryCandidates).
-void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
-    PreparedSdf userCode = prepared;
-    userCode.signature.entry.clear(); // no entry: the user's code alone
-    std::vector<std::pair<MarchedFunction, SdfSignature>> valid;
-    std::string untraced; // why a marched field with parameters after the point could not be wrapped
-    for (MarchedFunction& marched :
-         marchedFunctions(composeSdfShader(userCode, Stage::Fragment, std::vector<ShaderPiece>{}, FeatureDefines{}))) {
-        // A struct's float member the march steps by (`Hit map(vec3 p)`, `t += h.d`) is the distance;
-        // a vec3 is one when the march reads only its x (marchedFunctions).
-        const std::string returns = !marched.member.empty()       ? marched.returnType
-                                    : marched.valueType == "vec3" ? std::string("vec3")
-                                                                  : std::string("float|vec2|vec4");
-        SdfSignature signature = detectSignature(stripped, marched.name, returns);
-        if (!marched.member.empty()) signature.member = marched.member; // the one the march reads
-        if (!marched.component.empty()) signature.member = marched.component;
-        if (signature.found && !marched.globals.empty()) // what mainImage sets first, run first
-            signature.prelude = "vec2 " + (marched.coordinate.empty() ? "fragCoord" : marched.coordinate) + " = " +
-                                (mentions(stripped, "iResolution") ? "0.5 * iResolution.xy" : "vec2(0.0)") + "; vec4 " +
-                                (marched.colour.empty() ? "fragColor" : marched.colour) + " = vec4(0.0);\n" + marched.prelude;
-        if (!signature.found && marched.extraParameters > 0 && !marched.arguments.empty() && !marched.valueType.empty()) {
-            // Parameters after the point, computed by mainImage: the wrapper computes them the same way.
-            signature.found = true;
-            signature.entry = marched.name;
-            signature.returnType = marched.valueType;
-            signature.member = marched.member.empty() ? marched.component : marched.member;
-            const std::string centre = mentions(stripped, "iResolution") ? "0.5 * iResolution.xy" : "vec2(0.0)";
-            signature.prelude = "vec2 " + (marched.coordinate.empty() ? "fragCoord" : marched.coordinate) + " = " + centre +
-                                "; vec4 " + (marched.colour.empty() ? "fragColor" : marched.colour) + " = vec4(0.0);\n" +
-                                marched.prelude;
-            signature.traced = marched.traced;
-            signature.arguments = marched.arguments;
-        }
-        if (!signature.found && marched.extraParameters > 0 && untraced.empty() && !marched.unresolved.empty())
-            untraced = "the march steps by " + marched.name + " (line " + std::to_string(marched.line) +
-                       "), whose parameters after the point sdfwb cannot compute: " + marched.unresolved;
-        if (signature.found) valid.emplace_back(std::move(marched), std::move(signature));
-    }
-    if (valid.empty()) {
-        if (!untraced.empty()) prepared.entryReason = untraced;
-        return;
-    }
-    int most = 0;
-    for (const auto& [marched, signature] : valid) most = std::max(most, marched.loops);
-    std::erase_if(valid, [most](const auto& candidate) { return candidate.first.loops < most; });
-    if (valid.size() > 1) {
-        const auto& names = conventionalEntries();
-        auto conventional = [&names](const auto& candidate) {
-            return std::find(names.begin(), names.end(), candidate.first.name) != names.end();
-        };
-        if (std::count_if(valid.begin(), valid.end(), conventional) == 1)
-            std::erase_if(valid, [&](const auto& candidate) { return !conventional(candidate); });
-    }
-    // Else the march nearest mainImage: the primary ray's (a refraction's or a bounce's march is
-    // called from deeper down). Marches as near as each other stay a tie.
-    std::string deeper;
-    if (valid.size() > 1) {
-        int nearest = valid.front().first.depth;
-        for (const auto& [marched, signature] : valid) nearest = std::min(nearest, marched.depth);
-        for (const auto& [marched, signature] : valid)
-            if (marched.depth > nearest)
-                deeper += (deeper.empty() ? "" : ", ") + marched.name + " (line " + std::to_string(marched.line) + ")";
-        std::erase_if(valid, [nearest](const auto& candidate) { return candidate.first.depth > nearest; });
-    }
-    const auto where = [](const MarchedFunction& m) {
-        std::string globals;
-        for (const std::string& name : m.globals) globals += (globals.empty() ? "" : ", ") + name;
-        return m.name + " (called by the march at line " + std::to_string(m.line) + ")" +
-               (m.arguments.empty() ? "" : ", with" + m.arguments.substr(1) + " as " + m.caller + " computes it") +
-               (globals.empty() ? "" : ", after mainImage sets " + globals);
-    };
-    if (valid.size() > 1) {
-        std::string list;
-        for (const auto& [marched, signature] : valid) {
-            list += (list.empty() ? "" : ", ") + where(marched);
-            prepared.entryCandidates.push_back(marched.name);
-        }
-        prepared.signature.entry = valid.front().first.name;
-        prepared.diagnostics.push_back({valid.front().first.file, valid.front().first.line, 1, Severity::Error,
-                                        "this shader marches " + std::to_string(valid.size()) + " functions equally often: " +
-                                            list + "; choose the field with --entry NAME (or an `entry: NAME` metadata line)"});
-        return;
-    }
-    prepared.signature = std::move(valid.front().second);
-    prepared.entrySource = EntrySource::March;
-    const MarchedFunction& chosen = valid.front().first;
-    prepared.entryReason = where(chosen);
-    if (!deeper.empty())
-        prepared.entryReason += "; " + deeper + " is marched as often, deeper in mainImage's calls (a secondary ray)";
-    prepared.marchThreshold = chosen.hitThreshold;
-    prepared.marchThresholdLine = chosen.hitLine;
-    if (const std::vector<std::string> pixel = perPixelParameters(chosen); !pixel.empty()) {
-        std::string names;
-        for (const std::string& name : pixel) names += (names.empty() ? "'" : ", '") + name + "'";
-        prepared.diagnostics.push_back(
-            {chosen.file, chosen.line, 1, Severity::Warning,
-             chosen.name + " reads " + names + ", which mainImage computes for each pixel; sdfwb evaluates the field " +
-                 "with the frame centre's value, so parts the shader draws for other pixels may be missing (to sample " +
-                 "its whole scene, pass a function of the point alone with --entry)"});
-    }
-}
-
 } // namespace
 
 std::string hostDescription(const std::string& host) {
@@ -702,7 +494,7 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
     }
     prepared.signature = detectSignature(stripped, chosen);
     if (!prepared.signature.found && prepared.entrySource == EntrySource::Default && prepared.shadertoyMainImage) {
-        chooseMarchedEntry(prepared, stripped);
+        detail::chooseMarchedEntry(prepared, stripped);
         if (!prepared.entryCandidates.empty()) return prepared;
     }
     if (!prepared.signature.found && prepared.entrySource == EntrySource::Default) {
@@ -717,7 +509,7 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
     // Also where the march calls a field whose parameters cannot be traced (mainImage marches
     // `capsule(p, a, b, r)` itself): the loop's body run once makes that call as the march does.
     if (!prepared.signature.found && prepared.entrySource == EntrySource::Default && prepared.shadertoyMainImage)
-        chooseInlineField(prepared, stripped);
+        detail::chooseInlineField(prepared, stripped);
     // Fragmentarium's init(), which its raytracer calls before the field: the wrapper calls it.
     if (prepared.signature.found && !host.entryPrelude.empty() && prepared.signature.prelude.empty())
         prepared.signature.prelude = host.entryPrelude;

@@ -112,14 +112,15 @@ std::string entryWrapper(const PreparedSdf& sdf) {
     const SdfSignature& signature = sdf.signature;
     const std::string value = !signature.member.empty() ? "." + signature.member : signature.returnType == "float" ? "" : ".x";
     std::string text;
-    if (!signature.inlineBody.empty()) {
+    if (!signature.inlineBody.empty() && signature.traced.empty()) {
         // The march's own loop body, run once at the point. Its prelude (the function's statements
         // before the loop) runs at every call: the body updates the locals it declares.
         text = "float sdfwb_sdf(vec3 sdfwb_point) {\n" + signature.prelude + "\n" + signature.inlineBody + "}\n";
-    } else if (!signature.arguments.empty()) {
-        // Parameters after the point, computed as mainImage does: once per invocation into globals,
-        // declared at every call under the marching function's names in a block of their own (a
-        // parameter may have the name of a local of mainImage).
+    } else if (!signature.arguments.empty() || !signature.inlineBody.empty()) {
+        // Parameters after the point (or of the function holding an inline march), computed as
+        // mainImage does: once per invocation into globals, declared at every call under the
+        // function's names in a block of their own (a parameter may have the name of a local of
+        // mainImage). Then the call, or the march's statements.
         std::string kept, assigned, declared;
         for (std::size_t k = 0; k < signature.traced.size(); ++k) {
             const TracedValue& traced = signature.traced[k];
@@ -132,9 +133,11 @@ std::string entryWrapper(const PreparedSdf& sdf) {
             assigned += global + " = " + traced.value + ";\n";
             declared += traced.type + " " + traced.name + " = " + global + ";\n";
         }
+        const std::string field = !signature.inlineBody.empty()
+                                      ? signature.inlineBody + "\n"
+                                      : "return " + signature.entry + "(sdfwb_point" + signature.arguments + ")" + value + ";\n";
         text = kept + "bool sdfwb_preludeRun = false;\nfloat sdfwb_sdf(vec3 sdfwb_point) {\n" +
-               runOnce(signature.prelude + "\n" + assigned) + "{\n" + declared + "return " + signature.entry + "(sdfwb_point" +
-               signature.arguments + ")" + value + ";\n}\n}\n";
+               runOnce(signature.prelude + "\n" + assigned) + "{\n" + declared + field + "}\n}\n";
     } else {
         // Out parameters get locals; a prelude alone (Fragmentarium's init(), what mainImage sets
         // before its march) runs once per invocation.

@@ -195,3 +195,71 @@ TEST_F(FieldParameters, AVectorsDistanceIsTheComponentTheMarchStepsBy) {
     EXPECT_NEAR(fieldValueAt(material, {1.0f, 0.0f, 0.0f}, 0.0f), 0.75f, 1e-5f);
     EXPECT_NEAR(fieldValueAt(first, {1.0f, 0.0f, 0.0f}, 0.0f), 0.75f, 1e-5f);
 }
+
+// One loop stepping by two functions together (`dist = min(torusSDF(p, ...), planeSDF(p, ...));
+// t += dist;`, a public torus-over-a-floor shader's form) in a function mainImage calls with the
+// torus's size and the floor's height, under the same names as its own locals: the field is the
+// loop's step (their union), not one of them, and the parameters are what mainImage passes. With
+// zeros for them the ring's tube would read 0, not -0.2.
+TEST_F(FieldParameters, FunctionsOneLoopStepsByTogetherAreTheField) {
+    const shaders::PreparedSdf sdf = prepareText(
+        "union.glsl", "float torusSDF(vec3 p, vec2 t, float angle) {\n"
+                      "    p.xz = mat2(cos(angle), -sin(angle), sin(angle), cos(angle)) * p.xz;\n"
+                      "    vec2 q = vec2(length(p.xz) - t.x, p.y);\n    return length(q) - t.y;\n}\n"
+                      "float planeSDF(vec3 p, float height) { return p.y - height; }\n"
+                      "float raymarch(vec3 ro, vec3 rd, vec2 torusParams, float planeHeight, float angle) {\n"
+                      "    float t = 0.0;\n"
+                      "    for (int i = 0; i < 100; ++i) {\n"
+                      "        vec3 p = ro + rd * t;\n"
+                      "        float distTorus = torusSDF(p, torusParams, angle);\n"
+                      "        float distPlane = planeSDF(p, planeHeight);\n"
+                      "        float dist = min(distTorus, distPlane);\n"
+                      "        if (dist < 0.001) return t;\n"
+                      "        t += dist;\n"
+                      "        if (t > 20.0) break;\n"
+                      "    }\n    return -1.0;\n}\n"
+                      "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                      "    vec2 uv = (fragCoord - 0.5 * iResolution.xy) / iResolution.y;\n"
+                      "    float angle = iTime * 0.5;\n"
+                      "    vec2 torusParams = vec2(0.6, 0.2);\n"
+                      "    float planeHeight = -0.5;\n"
+                      "    float t = raymarch(vec3(0.0, 0.0, 3.0), normalize(vec3(uv, -1.0)), torusParams, planeHeight, angle);\n"
+                      "    fragColor = vec4(vec3(t > 0.0 ? 1.0 : 0.0), 1.0);\n}\n");
+    ASSERT_TRUE(sdf.ok()) << firstError(sdf);
+    EXPECT_EQ(sdf.signature.entry, "raymarch");
+    EXPECT_FALSE(sdf.signature.inlineBody.empty());
+    EXPECT_TRUE(sdf.entryCandidates.empty());
+    EXPECT_NE(sdf.entryReason.find("it steps by torusSDF and planeSDF together"), std::string::npos) << sdf.entryReason;
+    EXPECT_NE(sdf.entryReason.find("with ro, rd, torusParams, planeHeight, angle as mainImage computes it"), std::string::npos)
+        << sdf.entryReason;
+    EXPECT_NEAR(fieldValueAt(sdf, {0.6f, 0.0f, 0.0f}, 0.0f), -0.2f, 1e-5f) << "inside the tube";
+    EXPECT_NEAR(fieldValueAt(sdf, {0.0f, -0.7f, 0.0f}, 0.0f), -0.2f, 1e-5f) << "under the floor";
+    EXPECT_NEAR(fieldValueAt(sdf, {0.0f, 0.5f, 0.0f}, 0.0f), std::sqrt(0.36f + 0.25f) - 0.2f, 1e-5f) << "above the ring";
+
+    // A loop whose text the wrapper cannot run (a public shader reflecting its rays off the box: the
+    // point moves by `ro = ro + rd * min(dbox, dsphere)` in one branch of an if): the function of a
+    // point that calls both, which its normals are taken from, is their union.
+    const shaders::PreparedSdf reflecting = prepareText(
+        "reflect.glsl", "float sphere(vec3 p) { return length(p - vec3(0.0, 0.4, 0.0)) - 0.3; }\n"
+                        "float box(vec3 p) { vec3 q = abs(p + vec3(0.0, 0.5, 0.0)) - vec3(0.4); "
+                        "return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0); }\n"
+                        "float df(vec3 p) { float d1 = sphere(p); float d2 = box(p); return min(d1, d2); }\n"
+                        "vec3 calNormal(vec3 p) { vec2 e = vec2(1e-4, 0.0); return normalize(vec3(df(p + e.xyy) - df(p - "
+                        "e.xyy), df(p + e.yxy) - df(p - e.yxy), df(p + e.yyx) - df(p - e.yyx))); }\n"
+                        "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                        "    vec3 ro = vec3(0.0, 0.0, 3.0), rd = normalize(vec3(fragCoord / iResolution.xy - 0.5, -1.0));\n"
+                        "    vec3 col = vec3(0.3);\n    int refNum = 0;\n"
+                        "    for (int i = 0; i < 128; i++) {\n"
+                        "        float dbox = refNum == 0 ? box(ro) : 2000.0;\n"
+                        "        float dsphere = sphere(ro);\n"
+                        "        if (abs(dbox) < 1e-4) { rd = reflect(rd, calNormal(ro)); refNum = 1; continue; }\n"
+                        "        if (abs(dsphere) < 1e-4) { col = calNormal(ro); break; }\n"
+                        "        if (refNum == 0) { ro = ro + rd * min(dbox, dsphere); } else { ro = ro + rd * dsphere; }\n"
+                        "    }\n    fragColor = vec4(col, 1.0);\n}\n");
+    ASSERT_TRUE(reflecting.ok()) << firstError(reflecting);
+    EXPECT_EQ(reflecting.signature.entry, "df");
+    EXPECT_NE(reflecting.entryReason.find("df (it calls box and sphere, which the march at line"), std::string::npos)
+        << reflecting.entryReason;
+    EXPECT_NEAR(fieldValueAt(reflecting, {0.0f, 0.4f, 0.0f}, 0.0f), -0.3f, 1e-5f) << "the sphere's centre";
+    EXPECT_NEAR(fieldValueAt(reflecting, {0.0f, -0.5f, 0.0f}, 0.0f), -0.4f, 1e-5f) << "the box's centre";
+}

@@ -18,6 +18,7 @@ struct MarchedFunction {
     std::string file; // where its first march call is (the composed map's file name)
     int line = 0;     // that call's line
     int loops = 0;    // loops that step by it
+    int loopLine = 0; // the line of the first loop that steps by it (two functions one loop steps by share it)
     // A struct return: the struct's name and the float member the march reads (the distance).
     std::string returnType;
     std::string member;
@@ -69,6 +70,11 @@ struct InlineMarch {
     // The wrapper's body: the function's parameters declared (mainImage's as coordinate and
     // colour name them: the caller declares those), its statements before the loop, then `body`.
     std::string prelude, body, coordinate, colour;
+    // Where the loop is in another function that mainImage calls at the top of its body
+    // (`t = raymarch(ro, rd, torusParams, angle)`): `prelude` is mainImage's statements before that
+    // call, run once, and `traced` the function's parameters with what mainImage passes (as
+    // MarchedFunction's); `body` then begins with the function's statements before the loop.
+    std::vector<TracedValue> traced;
     std::string unresolved; // why the loop's text could not be used (prelude and body empty)
     // The constant the loop compares its step's float with to stop (`if (d < .001) break;`), as
     // MarchedFunction's; 0 when none is one constant.

@@ -1,0 +1,18 @@
+#pragma once
+// How prepareSdf chooses a whole shader's field from its own march (MarchEntry.cpp). Private to
+// shaders/.
+
+#include <shaders/SdfSource.h>
+
+#include <string>
+
+namespace sdfwb::shaders::detail {
+
+// The function the march steps by (or the loop's inline field where it steps by several
+// together), into `prepared`'s signature, entry source and reason; an error naming the candidates
+// on a tie. `stripped`: the resolved text without comments.
+void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped);
+// The first march loop that writes its field inline and whose text the wrapper can run.
+void chooseInlineField(PreparedSdf& prepared, const std::string& stripped);
+
+} // namespace sdfwb::shaders::detail
