@@ -123,8 +123,7 @@ std::vector<std::string> functionsCallingAll(const PreparedSdf& prepared, const 
     PreparedSdf userCode = prepared;
     userCode.signature.entry.clear(); // no entry: the user's code alone
     Reached tree;
-    if (!parseReached(composeSdfShader(userCode, Stage::Fragment, std::vector<ShaderPiece>{}, FeatureDefines{}), tree))
-        return {};
+    if (!parseReached(composeSdfShader(userCode, Stage::Fragment, std::vector<ShaderPiece>{}, FeatureDefines{}), tree)) return {};
     std::vector<std::string> found;
     for (TIntermAggregate* function : tree.reached) {
         if (function == tree.mainImage) continue;
