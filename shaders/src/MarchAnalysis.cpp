@@ -293,11 +293,64 @@ bool outArguments(TIntermAggregate* call, const std::vector<TIntermSymbol*>& fie
     return true;
 }
 
+// The field's arguments after the point where mainImage marches it itself (`float a = iTime;` ...
+// `float c = g(t, a, m, p);` in its loop): its locals set before the loop, or constants, the values
+// the wrapper keeps after running mainImage's statements before the loop; out locals as in
+// traceArguments. `fail` says why not.
+template <class Fail>
+void traceOwnLocals(MarchedFunction& m, TIntermAggregate* call, const std::vector<TIntermSymbol*>& fieldParameters,
+                    std::vector<TracedValue> outs, TIntermLoop* loop, const Reached& tree, const ComposedShader& composed,
+                    Fail fail) {
+    TIntermAggregate* mainImage = tree.mainImage;
+    const int file = call->getLoc().string;
+    if (file < 0 || file >= int(composed.map.files.size()) || mainImage->getLoc().string != file || loop->getLoc().string != file)
+        return fail("the march and mainImage are in different files");
+    std::set<long long> earlier; // the symbols of mainImage's statements before the one holding the loop
+    if (TIntermAggregate* body = bodyOf(mainImage))
+        for (TIntermNode* statement : body->getSequence()) {
+            Contents contents = contentsOf(statement);
+            if (std::find(contents.loops.begin(), contents.loops.end(), loop) != contents.loops.end()) break;
+            earlier.insert(contents.symbols.begin(), contents.symbols.end());
+        }
+    for (std::size_t i = 1; i < fieldParameters.size() && i < call->getSequence().size(); ++i) {
+        if (!isInParameter(fieldParameters[i])) continue;
+        TIntermNode* argument = call->getSequence()[i];
+        TIntermSymbol* local = argument->getAsSymbolNode();
+        const bool before = local && local->getQualifier().storage == glslang::EvqTemporary && earlier.count(local->getId());
+        if (!before && !isConstantArgument(argument))
+            return fail("mainImage marches it itself with '" + std::string(fieldParameters[i]->getName().c_str()) +
+                        "' computed in its loop");
+        if (!local || !before) continue; // a constant stays in the call's text
+        const std::string type = glslTypeName(local->getType()), name = local->getName().c_str();
+        if (type.empty()) return fail("'" + name + "' has a type the wrapper cannot declare");
+        if (std::none_of(m.traced.begin(), m.traced.end(), [&](const TracedValue& t) { return t.name == name; }))
+            m.traced.push_back({type, name, name});
+    }
+    const std::string text = stripComments(composed.map.files[std::size_t(file)].text);
+    const std::vector<std::string> fieldArguments = callArguments(text, call->getLoc().line, m.name, nullptr);
+    if (fieldArguments.size() != fieldParameters.size()) return fail("its call's arguments could not be read");
+    const std::size_t open = bodyOpen(text, mainImage), loopLine = lineStart(text, loop->getLoc().line);
+    if (open == std::string::npos || loopLine == std::string::npos || open >= loopLine ||
+        !wholeStatements(text.substr(open + 1, loopLine - open - 1)))
+        return fail("mainImage's code before its march is not whole statements");
+    for (std::size_t i = 1; i < fieldArguments.size(); ++i) m.arguments += ", " + fieldArguments[i];
+    for (TracedValue& out : outs)
+        if (std::none_of(m.traced.begin(), m.traced.end(), [&](const TracedValue& t) { return t.name == out.name; }))
+            m.traced.push_back(std::move(out));
+    m.prelude = text.substr(open + 1, loopLine - open - 1);
+    m.caller = "mainImage";
+    const std::vector<TIntermSymbol*> mainParameters = parametersOf(mainImage);
+    if (mainParameters.size() == 2) {
+        m.colour = mainParameters[0]->getName().c_str();
+        m.coordinate = mainParameters[1]->getName().c_str();
+    }
+}
+
 // Traces the values of a field's parameters after the point (see MarchedFunction) from the march's
 // call in `marcher` back to mainImage's call of `marcher` (or to the nearest function's, see
 // findMarcherCall). Fills `m`'s prelude, bindings and arguments, or its `unresolved`.
 void traceArguments(MarchedFunction& m, TIntermAggregate* call, TIntermAggregate* callee, TIntermAggregate* marcher,
-                    const Reached& tree, const ComposedShader& composed) {
+                    TIntermLoop* loop, const Reached& tree, const ComposedShader& composed) {
     TIntermAggregate* mainImage = tree.mainImage;
     auto fail = [&m](std::string reason) {
         m.unresolved = std::move(reason);
@@ -308,7 +361,7 @@ void traceArguments(MarchedFunction& m, TIntermAggregate* call, TIntermAggregate
     if (m.extraParameters <= 0) return;
     std::vector<TracedValue> outs;
     if (std::string why; !outArguments(call, fieldParameters, outs, why)) return fail(why);
-    if (marcher == mainImage) return fail("mainImage marches it itself");
+    if (marcher == mainImage) return traceOwnLocals(m, call, fieldParameters, std::move(outs), loop, tree, composed, fail);
     // The march's arguments after the point read only the marching function's parameters and
     // file-scope names (not its locals: what computes those runs inside the march).
     const std::vector<TIntermSymbol*> marcherParameters = parametersOf(marcher);
@@ -425,7 +478,7 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                     entry = marched.end() - 1;
                     entry->depth = tree.depth[index];
                     if (component > 0) entry->component = std::string(1, "xyzw"[component]);
-                    if (mainImage) traceArguments(*entry, call, callee->second, function, tree, composed);
+                    if (mainImage) traceArguments(*entry, call, callee->second, function, loop, tree, composed);
                     if (mainImage && entry->extraParameters <= 0)
                         traceGlobals(*entry, callee->second, function, loop, mainImage, composed, tree.functions);
                 }

@@ -3,12 +3,15 @@
 #include <shaders/MarchAnalysis.h>
 #include <shaders/ShaderComposer.h>
 
+#include <core/Regex.h>
+
 #include "MarchTree.h"
 #include "Words.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cstring>
+#include <regex>
 #include <set>
 
 // A whole shader's field chosen by its own march: the function it steps by, or the loop's inline
@@ -136,7 +139,26 @@ std::vector<std::string> functionsCallingAll(const PreparedSdf& prepared, const 
     return found;
 }
 
+// The name of the float after the point in `name`'s definition (`float map(vec3 p, float s)`: s).
+std::string floatParameter(const std::string& stripped, const std::string& name) {
+    const std::regex definition(
+        R"(\b)" + name + R"(\s*\(\s*(?:(?:in|const|highp|mediump)\s+)*\w+\s+\w+\s*,\s*(?:(?:in|const|highp)\s+)*float\s+(\w+))",
+        kLinearRegex);
+    std::smatch match;
+    return std::regex_search(stripped, match, definition) ? match[1].str() : std::string();
+}
+
+// Whether a parameter's name says it is the time (`time`, `iTime`, `fTime`, `t`, `tm`, `tt`).
+bool namesTime(std::string name) {
+    for (char& c : name) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return name.find("time") != std::string::npos || name == "t" || name == "tm" || name == "tt";
+}
+
 } // namespace
+
+bool floatIsNotTime(const SdfSignature& signature, const std::string& stripped) {
+    return signature.animated && !namesTime(floatParameter(stripped, signature.entry));
+}
 
 // A whole shader whose march writes its field inline (shaders::InlineMarch), with no function the
 // march steps by and no conventional name: the first such loop whose text the wrapper can run.
@@ -178,6 +200,13 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
             signature.prelude = "vec2 " + (marched.coordinate.empty() ? "fragCoord" : marched.coordinate) + " = " +
                                 (mentions(stripped, "iResolution") ? "0.5 * iResolution.xy" : "vec2(0.0)") + "; vec4 " +
                                 (marched.colour.empty() ? "fragColor" : marched.colour) + " = vec4(0.0);\n" + marched.prelude;
+        // `float map(vec3 p, float s)` has the form of ENTRY(p, time), but the march says what it
+        // passes: that, where mainImage's values can be traced. Where they cannot, the time stands in
+        // only for a float named as one (IQ's Apollonian's `s`, which mainImage hands to render and
+        // render to trace, read 0 at time 0 and the field NaN everywhere).
+        if (signature.found && signature.animated && marched.extraParameters > 0 &&
+            (!marched.arguments.empty() || !namesTime(floatParameter(stripped, marched.name))))
+            signature.found = signature.animated = false;
         if (!signature.found && marched.extraParameters > 0 && !marched.arguments.empty() && !marched.valueType.empty()) {
             // Parameters after the point, computed by mainImage: the wrapper computes them the same way.
             signature.found = true;
@@ -193,7 +222,9 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
         }
         if (!signature.found && marched.extraParameters > 0 && untraced.empty() && !marched.unresolved.empty())
             untraced = "the march steps by " + marched.name + " (line " + std::to_string(marched.line) +
-                       "), whose parameters after the point sdfwb cannot compute: " + marched.unresolved;
+                       "), whose parameters after the point sdfwb cannot compute: " + marched.unresolved +
+                       "; to open it with values of your choosing, add `float sdf(vec3 p) { return " + marched.name +
+                       "(p, ...); }`";
         if (signature.found) valid.emplace_back(std::move(marched), std::move(signature));
     }
     if (valid.empty()) {

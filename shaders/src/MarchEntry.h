@@ -12,6 +12,9 @@ namespace sdfwb::shaders::detail {
 // together), into `prepared`'s signature, entry source and reason; an error naming the candidates
 // on a tie. `stripped`: the resolved text without comments.
 void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped);
+// Whether `signature` has the form ENTRY(p, time) with a float not named as the time (`float
+// map(vec3 p, float s)`): in a whole shader, what its march passes, not the time.
+bool floatIsNotTime(const SdfSignature& signature, const std::string& stripped);
 // The first march loop that writes its field inline and whose text the wrapper can run.
 void chooseInlineField(PreparedSdf& prepared, const std::string& stripped);
 

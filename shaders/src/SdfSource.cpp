@@ -500,7 +500,7 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
     if (!prepared.signature.found && prepared.entrySource == EntrySource::Default) {
         for (const std::string& conventional : conventionalEntries()) {
             SdfSignature candidate = detectSignature(stripped, conventional);
-            if (!candidate.found) continue;
+            if (!candidate.found || (prepared.shadertoyMainImage && detail::floatIsNotTime(candidate, stripped))) continue;
             prepared.signature = candidate;
             prepared.entrySource = EntrySource::Convention;
             break;

@@ -263,3 +263,48 @@ TEST_F(FieldParameters, FunctionsOneLoopStepsByTogetherAreTheField) {
     EXPECT_NEAR(fieldValueAt(reflecting, {0.0f, 0.4f, 0.0f}, 0.0f), -0.3f, 1e-5f) << "the sphere's centre";
     EXPECT_NEAR(fieldValueAt(reflecting, {0.0f, -0.5f, 0.0f}, 0.0f), -0.4f, 1e-5f) << "the box's centre";
 }
+
+// `float map(vec3 p, float s)` has the form of a field of the point and the time, but in a whole
+// shader its march says what the float is. Where mainImage marches it itself with a local it sets
+// before the loop (`float s = 0.25 + 0.1 * cos(iTime);`), that local, traced: 0.35 at time 0, not
+// the time (0). Where the value comes through functions sdfwb cannot trace (IQ's Apollonian hands
+// mainImage's `anim` to render, and render to trace), the file does not open: the time would make
+// s 0 and the field NaN; the error says how to give a value.
+TEST_F(FieldParameters, AFloatAfterThePointIsWhatTheMarchPassesNotTheTime) {
+    const std::string field = "float map(vec3 p, float s) { return length(p) - s; }\n";
+    const shaders::PreparedSdf own = prepareText(
+        "own.glsl", field + "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                            "    float s = 0.25 + 0.1 * cos(iTime);\n"
+                            "    vec3 ro = vec3(0.0, 0.0, 3.0), rd = normalize(vec3(fragCoord / iResolution.y - 0.5, -1.0));\n"
+                            "    float t = 0.0;\n"
+                            "    for (int i = 0; i < 64; i++) { float d = map(ro + rd * t, s); if (d < 0.001) break; t += d; }\n"
+                            "    fragColor = vec4(t);\n}\n");
+    ASSERT_TRUE(own.ok()) << firstError(own);
+    EXPECT_EQ(own.signature.entry, "map");
+    EXPECT_FALSE(own.signature.animated);
+    EXPECT_NE(own.entryReason.find("with s as mainImage computes it"), std::string::npos) << own.entryReason;
+    EXPECT_NEAR(fieldValueAt(own, {0.0f, 0.0f, 0.0f}, 0.0f), -0.35f, 1e-5f);
+
+    const shaders::PreparedSdf through =
+        prepareText("through.glsl",
+                    field + "float trace(vec3 ro, vec3 rd, float s) {\n"
+                            "    float t = 0.0;\n"
+                            "    for (int i = 0; i < 64; i++) { float h = map(ro + rd * t, s); if (h < 0.001) break; t += h; }\n"
+                            "    return t;\n}\n"
+                            "vec3 render(vec3 ro, vec3 rd, float anim) { return vec3(trace(ro, rd, anim)); }\n"
+                            "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                            "    float anim = 1.1 + 0.5 * smoothstep(-0.3, 0.3, cos(0.1 * iTime));\n"
+                            "    {\n        vec3 rd = normalize(vec3(fragCoord / iResolution.y - 0.5, -1.0));\n"
+                            "        fragColor = vec4(render(vec3(0.0, 0.0, 3.0), rd, anim), 1.0);\n    }\n}\n");
+    EXPECT_FALSE(through.ok());
+    EXPECT_NE(firstError(through).find("trace's 's' is anim where render calls it"), std::string::npos) << firstError(through);
+    EXPECT_NE(firstError(through).find("add `float sdf(vec3 p) { return map(p, ...); }`"), std::string::npos)
+        << firstError(through);
+    // The same untraceable march of a field whose float is named as the time: read as the time.
+    std::string timed = "float map(vec3 p, float time) { return length(p) - 0.2 - 0.1 * sin(time); }\n" +
+                        through.source.map.files.front().text.substr(field.size());
+    const shaders::PreparedSdf named = prepareText("timed.glsl", timed);
+    ASSERT_TRUE(named.ok()) << firstError(named);
+    EXPECT_TRUE(named.signature.animated);
+    EXPECT_NEAR(fieldValueAt(named, {0.0f, 0.0f, 0.0f}, 1.0f), -0.2f - 0.1f * std::sin(1.0f), 1e-5f);
+}
