@@ -154,6 +154,41 @@ bool namesTime(std::string name) {
     return name.find("time") != std::string::npos || name == "t" || name == "tm" || name == "tt";
 }
 
+// Functions one loop steps by together (`d = min(torus(p), plane(p)); t += d;`): the field is what
+// the loop steps by, its inline field, not either function. True when it chose one.
+bool chooseLoopsUnion(PreparedSdf& prepared, const std::vector<std::pair<MarchedFunction, SdfSignature>>& valid,
+                      const std::string& stripped) {
+    const MarchedFunction& first = valid.front().first;
+    if (valid.size() < 2 || !std::all_of(valid.begin(), valid.end(), [&](const auto& candidate) {
+            return candidate.first.file == first.file && candidate.first.loopLine == first.loopLine;
+        }))
+        return false;
+    std::string names;
+    std::vector<std::string> tied;
+    for (const auto& [marched, signature] : valid) {
+        names += (names.empty() ? "" : " and ") + marched.name;
+        tied.push_back(marched.name);
+    }
+    for (const InlineMarch& march : userInlineMarches(prepared))
+        if (!march.body.empty() && march.file == first.file && march.line == first.loopLine) {
+            useInlineMarch(prepared, march, stripped);
+            prepared.entryReason += "; it steps by " + names + " together";
+            return true;
+        }
+    // A loop whose text the wrapper cannot run (a reflection's branches): a function of a point that
+    // calls each of them, the scene its normals are taken from (`df(p) { return min(sphere(p),
+    // box(p)); }`), is their union.
+    for (const std::string& name : functionsCallingAll(prepared, tied))
+        if (SdfSignature signature = detectSignature(stripped, name); signature.found) {
+            prepared.signature = std::move(signature);
+            prepared.entrySource = EntrySource::March;
+            prepared.entryReason = name + " (it calls " + names + ", which the march at line " + std::to_string(first.loopLine) +
+                                   " steps by together)";
+            return true;
+        }
+    return false;
+}
+
 } // namespace
 
 bool floatIsNotTime(const SdfSignature& signature, const std::string& stripped) {
@@ -234,35 +269,7 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
     int most = 0;
     for (const auto& [marched, signature] : valid) most = std::max(most, marched.loops);
     std::erase_if(valid, [most](const auto& candidate) { return candidate.first.loops < most; });
-    // Functions one loop steps by together (`d = min(torus(p), plane(p)); t += d;`): the field is
-    // what the loop steps by, its inline field, not either function.
-    if (valid.size() > 1 && std::all_of(valid.begin(), valid.end(), [&](const auto& candidate) {
-            return candidate.first.file == valid.front().first.file && candidate.first.loopLine == valid.front().first.loopLine;
-        })) {
-        std::string names;
-        std::vector<std::string> tied;
-        for (const auto& [marched, signature] : valid) {
-            names += (names.empty() ? "" : " and ") + marched.name;
-            tied.push_back(marched.name);
-        }
-        for (const InlineMarch& march : userInlineMarches(prepared))
-            if (!march.body.empty() && march.file == valid.front().first.file && march.line == valid.front().first.loopLine) {
-                useInlineMarch(prepared, march, stripped);
-                prepared.entryReason += "; it steps by " + names + " together";
-                return;
-            }
-        // A loop whose text the wrapper cannot run (a reflection's branches): a function of a point
-        // that calls each of them, the scene its normals are taken from (`df(p) { return min(sphere(p),
-        // box(p)); }`), is their union.
-        for (const std::string& name : functionsCallingAll(prepared, tied))
-            if (SdfSignature signature = detectSignature(stripped, name); signature.found) {
-                prepared.signature = std::move(signature);
-                prepared.entrySource = EntrySource::March;
-                prepared.entryReason = name + " (it calls " + names + ", which the march at line " +
-                                       std::to_string(valid.front().first.loopLine) + " steps by together)";
-                return;
-            }
-    }
+    if (chooseLoopsUnion(prepared, valid, stripped)) return;
     if (valid.size() > 1) {
         const auto& names = conventionalEntries();
         auto conventional = [&names](const auto& candidate) {
