@@ -64,7 +64,11 @@ def changes_sign(npz):
 
 
 def first_error(text):
-    return text.replace("|", "\\|")[:160]
+    # "no SDF here: define ... metadata line (WHY)": the why, which is each file's own.
+    marker = "metadata line ("
+    if text.startswith("no SDF here") and marker in text:
+        text = "no SDF here: " + text.split(marker, 1)[1].rstrip(")")
+    return text.replace("|", "\\|")[:240]
 
 
 rows = []
