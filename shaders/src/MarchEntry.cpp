@@ -191,6 +191,10 @@ bool chooseLoopsUnion(PreparedSdf& prepared, const std::vector<std::pair<Marched
 
 } // namespace
 
+std::string timeParameter(const SdfSignature& signature, const std::string& stripped) {
+    return signature.animated ? floatParameter(stripped, signature.entry) : std::string();
+}
+
 bool floatIsNotTime(const SdfSignature& signature, const std::string& stripped) {
     return signature.animated && !namesTime(floatParameter(stripped, signature.entry));
 }

@@ -15,6 +15,8 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped);
 // Whether `signature` has the form ENTRY(p, time) with a float not named as the time (`float
 // map(vec3 p, float s)`): in a whole shader, what its march passes, not the time.
 bool floatIsNotTime(const SdfSignature& signature, const std::string& stripped);
+// The name of the float after the point of an ENTRY(p, time) signature (empty for others).
+std::string timeParameter(const SdfSignature& signature, const std::string& stripped);
 // The first march loop that writes its field inline and whose text the wrapper can run.
 void chooseInlineField(PreparedSdf& prepared, const std::string& stripped);
 

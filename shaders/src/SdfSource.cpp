@@ -510,6 +510,22 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
     // `capsule(p, a, b, r)` itself): the loop's body run once makes that call as the march does.
     if (!prepared.signature.found && prepared.entrySource == EntrySource::Default && prepared.shadertoyMainImage)
         detail::chooseInlineField(prepared, stripped);
+    // `float sdSphere(vec3 p, float r)` named as the entry: its float gets the time, which its name
+    // does not say it is (a radius 0 at --time 0). Said at the definition, with what to do instead.
+    if (prepared.signature.found && prepared.signature.inlineBody.empty() &&
+        detail::floatIsNotTime(prepared.signature, stripped)) {
+        const std::string& root = prepared.source.map.files.front().text;
+        const std::string entry = prepared.signature.entry, name = detail::timeParameter(prepared.signature, stripped);
+        const std::string rootStripped = stripComments(root);
+        std::smatch definition;
+        const int line = std::regex_search(rootStripped, definition, std::regex(R"(\b\w+\s+)" + entry + R"(\s*\()", kLinearRegex))
+                             ? 1 + int(std::count(rootStripped.begin(), definition[0].first, '\n'))
+                             : 1;
+        prepared.diagnostics.push_back({prepared.source.map.files.front().name, line, 1, Severity::Warning,
+                                        entry + "'s '" + name + "' after the point is given the scene time (0 at --time 0), " +
+                                            "as a float after the point is read; to give it a value, open a file holding " +
+                                            "`float sdf(vec3 p) { return " + entry + "(p, VALUE); }`"});
+    }
     // Fragmentarium's init(), which its raytracer calls before the field: the wrapper calls it.
     if (prepared.signature.found && !host.entryPrelude.empty() && prepared.signature.prelude.empty())
         prepared.signature.prelude = host.entryPrelude;

@@ -977,3 +977,25 @@ TEST(EntryPoint, AnInlineFieldWithAVeryLongStatementOpens) {
     EXPECT_FALSE(sdf.signature.inlineBody.empty());
     EXPECT_NE(sdf.entryReason.find("writes the field inline"), std::string::npos) << sdf.entryReason;
 }
+
+// A float after the point is read as the time. Named as the entry, a function whose float is a
+// radius (`sdSphere(vec3 p, float r)`) opens with a warning at its definition saying so and how to
+// give a value; a float named as the time does not warn.
+TEST(EntryPoint, AFloatAfterThePointNotNamedAsTheTimeIsWarnedAbout) {
+    const std::string text = "// a primitive\nfloat sdSphere(vec3 p, float r) { return length(p) - r; }\n"
+                             "float spin(vec3 p, float time) { return length(p.xz) - 0.5 + 0.1 * sin(time); }\n";
+    PreparedSdf radius = prepareSdf(text, "<test>", {}, IncludeOptions{}, "sdSphere");
+    ASSERT_TRUE(radius.ok());
+    EXPECT_TRUE(radius.signature.animated);
+    const auto warning = std::find_if(radius.diagnostics.begin(), radius.diagnostics.end(),
+                                      [](const Diagnostic& d) { return d.severity == Severity::Warning; });
+    ASSERT_NE(warning, radius.diagnostics.end());
+    EXPECT_EQ(warning->line, 2);
+    EXPECT_NE(warning->message.find("sdSphere's 'r' after the point is given the scene time"), std::string::npos)
+        << warning->message;
+    EXPECT_NE(warning->message.find("return sdSphere(p, VALUE);"), std::string::npos) << warning->message;
+    PreparedSdf timed = prepareSdf(text, "<test>", {}, IncludeOptions{}, "spin");
+    ASSERT_TRUE(timed.ok());
+    EXPECT_TRUE(std::none_of(timed.diagnostics.begin(), timed.diagnostics.end(),
+                             [](const Diagnostic& d) { return d.severity == Severity::Warning; }));
+}
