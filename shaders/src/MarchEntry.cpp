@@ -239,12 +239,12 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
             signature.prelude = "vec2 " + (marched.coordinate.empty() ? "fragCoord" : marched.coordinate) + " = " +
                                 (mentions(stripped, "iResolution") ? "0.5 * iResolution.xy" : "vec2(0.0)") + "; vec4 " +
                                 (marched.colour.empty() ? "fragColor" : marched.colour) + " = vec4(0.0);\n" + marched.prelude;
-        // `float map(vec3 p, float s)` has the form of ENTRY(p, time), but the march says what it
-        // passes: that, where mainImage's values can be traced. Where they cannot, the time stands in
-        // only for a float named as one (IQ's Apollonian's `s`, which mainImage hands to render and
-        // render to trace, read 0 at time 0 and the field NaN everywhere).
+        // `float map(vec3 p, float s)` has the form of ENTRY(p, time), but a float not named as the
+        // time is what the march passes: mainImage's values where they can be traced, else no field
+        // (IQ's Apollonian's `s`, which mainImage hands to render and render to trace, read 0 at
+        // time 0 and the field NaN everywhere).
         if (signature.found && signature.animated && marched.extraParameters > 0 &&
-            (!marched.arguments.empty() || !namesTime(floatParameter(stripped, marched.name))))
+            !namesTime(floatParameter(stripped, marched.name)))
             signature.found = signature.animated = false;
         if (!signature.found && marched.extraParameters > 0 && !marched.arguments.empty() && !marched.valueType.empty()) {
             // Parameters after the point, computed by mainImage: the wrapper computes them the same way.
@@ -312,6 +312,15 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
                                             list + "; choose the field with --entry NAME (or an `entry: NAME` metadata line)"});
         return;
     }
+    // mainImage's own march of a field with parameters after the point: the loop's inline field
+    // first, which holds what the loop adds to the field's distance (`d = min(d, ...)`), else the
+    // field with mainImage's values (a point moved by `p = p + rd * d`, which no inline field reads).
+    if (const MarchedFunction& own = valid.front().first; own.depth == 0 && !valid.front().second.arguments.empty())
+        for (const InlineMarch& march : userInlineMarches(prepared))
+            if (!march.body.empty() && march.file == own.file && march.line == own.loopLine) {
+                useInlineMarch(prepared, march, stripped);
+                return;
+            }
     prepared.signature = std::move(valid.front().second);
     prepared.entrySource = EntrySource::March;
     const MarchedFunction& chosen = valid.front().first;
