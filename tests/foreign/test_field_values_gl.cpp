@@ -284,6 +284,21 @@ TEST_F(FieldParameters, AFloatAfterThePointIsWhatTheMarchPassesNotTheTime) {
     EXPECT_FALSE(own.signature.animated);
     EXPECT_NE(own.entryReason.find("with s as mainImage computes it"), std::string::npos) << own.entryReason;
     EXPECT_NEAR(fieldValueAt(own, {0.0f, 0.0f, 0.0f}, 0.0f), -0.35f, 1e-5f);
+    // A point moved by `p = p + rd * d` (no inline field reads it) and a file-scope constant: the
+    // constant (a public repeated-boxes shader's `df(rayPos, size)`).
+    const shaders::PreparedSdf constant =
+        prepareText("constant.glsl", field + "const float size = 0.4;\n"
+                                             "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                                             "    vec3 rayDir = normalize(vec3(fragCoord / iResolution.y - 0.5, -1.0));\n"
+                                             "    vec3 rayPos = vec3(0.0, 0.0, 3.0);\n"
+                                             "    for (int i = 0; i < 100; i++) {\n"
+                                             "        float dist = map(rayPos, size);\n"
+                                             "        if (dist < 0.001) break;\n"
+                                             "        rayPos = rayPos + rayDir * dist;\n"
+                                             "    }\n    fragColor = vec4(rayPos, 1.0);\n}\n");
+    ASSERT_TRUE(constant.ok()) << firstError(constant);
+    EXPECT_EQ(constant.signature.entry, "map");
+    EXPECT_NEAR(fieldValueAt(constant, {0.0f, 0.0f, 0.0f}, 0.0f), -0.4f, 1e-5f);
 
     const shaders::PreparedSdf through =
         prepareText("through.glsl",
