@@ -140,12 +140,17 @@ std::vector<std::string> functionsCallingAll(const PreparedSdf& prepared, const 
 }
 
 // The name of the float after the point in `name`'s definition (`float map(vec3 p, float s)`: s).
+// Tried only at each occurrence of the name, as detectSignature does: a search from every position
+// of a long text is slow, and this runs at every prepare of an animated field.
 std::string floatParameter(const std::string& stripped, const std::string& name) {
-    const std::regex definition(
-        R"(\b)" + name + R"(\s*\(\s*(?:(?:in|const|highp|mediump)\s+)*\w+\s+\w+\s*,\s*(?:(?:in|const|highp)\s+)*float\s+(\w+))",
-        kLinearRegex);
+    static const std::regex definition(
+        R"(\w+\s*\(\s*(?:(?:in|const|highp|mediump)\s+)*\w+\s+\w+\s*,\s*(?:(?:in|const|highp)\s+)*float\s+(\w+))", kLinearRegex);
     std::smatch match;
-    return std::regex_search(stripped, match, definition) ? match[1].str() : std::string();
+    for (std::size_t at : detail::wordOffsets(stripped, name))
+        if (std::regex_search(stripped.begin() + std::ptrdiff_t(at), stripped.end(), match, definition,
+                              std::regex_constants::match_continuous))
+            return match[1].str();
+    return {};
 }
 
 // Whether a parameter's name says it is the time (`time`, `iTime`, `fTime`, `t`, `tm`, `tt`).
