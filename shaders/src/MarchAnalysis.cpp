@@ -346,6 +346,65 @@ void traceOwnLocals(MarchedFunction& m, TIntermAggregate* call, const std::vecto
     }
 }
 
+// What mainImage hands the function that calls the marching function (IQ's `tot += render(ro, rd,
+// anim)` in his anti-aliasing loops, where render calls `trace(ro, rd, anim)`): the marching
+// function's arguments that are that caller's unchanged parameters, traced one call further to
+// mainImage's own call of the caller. `values` receives, for each of the marching function's
+// parameters, the expression mainImage passes ("" where the argument is not such a parameter), and
+// `prelude` mainImage's code before that call, entered as its loops' first pass (enteredBlocks),
+// that copies each expression into a local the wrapper reads after the blocks close. False with
+// `why` when mainImage does not call the caller itself or the code cannot be run so.
+bool passedByMainImage(TIntermAggregate* marcherCall, const MarcherCall& found, const Reached& tree, const std::string& text,
+                       const std::vector<TIntermSymbol*>& marcherParameters, std::vector<std::string>& values,
+                       std::string& prelude, std::string& why) {
+    TIntermAggregate* caller = nullptr;
+    for (TIntermAggregate* function : tree.reached)
+        if (function != tree.mainImage && plainName(function->getName()) == found.in) caller = function;
+    TIntermAggregate* body = bodyOf(tree.mainImage);
+    const ReachingStatement reaching =
+        caller && body ? statementReaching(body, {caller->getName().c_str()}) : ReachingStatement{};
+    if (!reaching.call || reaching.call->getLoc().string != tree.mainImage->getLoc().string) {
+        why = "mainImage does not call " + found.in;
+        return false;
+    }
+    const std::vector<TIntermSymbol*> callerParameters = parametersOf(caller);
+    Contents writes;
+    writes.everyMove = true;
+    bodyOf(caller)->traverse(&writes);
+    std::set<long long> written;
+    for (TIntermBinary* assignment : writes.assignments) written.insert(assignedSymbol(assignment->getLeft()));
+    std::string before;
+    int callLineNumber = reaching.call->getLoc().line;
+    const std::vector<std::string> passed =
+        callArguments(text, callLineNumber, found.in, &before, &callLineNumber);
+    const std::size_t open = bodyOpen(text, tree.mainImage), callLine = lineStart(text, callLineNumber);
+    int opened = 0;
+    const std::string entered = open == std::string::npos || callLine == std::string::npos || open >= callLine
+                                    ? std::string()
+                                    : enteredBlocks(text.substr(open + 1, callLine - open - 1), opened);
+    if (passed.size() != callerParameters.size() || before.find_first_of(";{}") != std::string::npos || opened < 0 ||
+        !wholeStatements(entered + std::string(std::size_t(opened), '}'))) {
+        why = "mainImage's call of " + found.in + " could not be read";
+        return false;
+    }
+    std::string declared, copied;
+    values.assign(marcherParameters.size(), std::string());
+    for (std::size_t k = 0; k < marcherParameters.size() && k < marcherCall->getSequence().size(); ++k) {
+        TIntermSymbol* argument = marcherCall->getSequence()[k]->getAsSymbolNode();
+        if (!argument || written.count(argument->getId())) continue;
+        for (std::size_t j = 0; j < callerParameters.size(); ++j) {
+            if (callerParameters[j]->getId() != argument->getId() || !isInParameter(callerParameters[j])) continue;
+            const std::string type = glslTypeName(callerParameters[j]->getType()), local = "sdfwb_passed" + std::to_string(k);
+            if (type.empty()) continue;
+            declared += type + " " + local + ";\n";
+            copied += local + " = " + passed[j] + ";\n";
+            values[k] = local;
+        }
+    }
+    prelude = declared + entered + "\n" + copied + std::string(std::size_t(opened), '}') + "\n";
+    return true;
+}
+
 // Traces the values of a field's parameters after the point (see MarchedFunction) from the march's
 // call in `marcher` back to mainImage's call of `marcher` (or to the nearest function's, see
 // findMarcherCall). Fills `m`'s prelude, bindings and arguments, or its `unresolved`.
@@ -400,15 +459,24 @@ void traceArguments(MarchedFunction& m, TIntermAggregate* call, TIntermAggregate
     const std::vector<std::string> values = callArguments(text, callLineNumber, marcherName, &before, &callLineNumber);
     if (values.size() != marcherParameters.size() || (found.fromMainImage && before.find_first_of(";{}") != std::string::npos))
         return fail("mainImage calls " + marcherName + " inside a loop or a condition");
+    std::vector<std::string> passed; // what mainImage hands found.in, where the march reads that (passedByMainImage)
+    std::string passedPrelude, passedWhy;
     for (std::size_t k = 0; k < marcherParameters.size(); ++k) {
         const std::string name = marcherParameters[k]->getName().c_str();
         if (!read.count(name)) continue;
         const std::string type = glslTypeName(marcherParameters[k]->getType());
         if (type.empty()) return fail("parameter '" + name + "' has a type the wrapper cannot declare");
-        if (!found.fromMainImage && (k >= found.call->getSequence().size() || !isConstantArgument(found.call->getSequence()[k])))
-            return fail(marcherName + "'s '" + name + "' is " + values[k] + " where " + found.in +
-                        " calls it, not a constant (mainImage does not call it)");
-        m.traced.push_back({type, name, values[k]});
+        std::string value = values[k];
+        if (!found.fromMainImage && (k >= found.call->getSequence().size() || !isConstantArgument(found.call->getSequence()[k]))) {
+            if (passed.empty() && passedWhy.empty() &&
+                !passedByMainImage(found.call, found, tree, text, marcherParameters, passed, passedPrelude, passedWhy))
+                passed.clear();
+            if (k >= passed.size() || passed[k].empty())
+                return fail(marcherName + "'s '" + name + "' is " + values[k] + " where " + found.in +
+                            " calls it, not a constant" + (passedWhy.empty() ? "" : " (" + passedWhy + ")"));
+            value = passed[k];
+        }
+        m.traced.push_back({type, name, value});
     }
     m.caller = found.in;
     for (const TracedValue& out : outs)
@@ -421,6 +489,7 @@ void traceArguments(MarchedFunction& m, TIntermAggregate* call, TIntermAggregate
                                 !wholeStatements(text.substr(open + 1, callLine - open - 1))))
         return fail("mainImage's code before the march is not whole statements");
     if (found.fromMainImage) m.prelude = text.substr(open + 1, callLine - open - 1);
+    if (!passedPrelude.empty()) m.prelude = passedPrelude, m.caller = "mainImage";
     const std::vector<TIntermSymbol*> mainParameters = parametersOf(mainImage);
     if (mainParameters.size() == 2) {
         m.colour = mainParameters[0]->getName().c_str();

@@ -300,24 +300,45 @@ TEST_F(FieldParameters, AFloatAfterThePointIsWhatTheMarchPassesNotTheTime) {
     EXPECT_EQ(constant.signature.entry, "map");
     EXPECT_NEAR(fieldValueAt(constant, {0.0f, 0.0f, 0.0f}, 0.0f), -0.4f, 1e-5f);
 
+    // IQ's Apollonian: mainImage computes `anim` once, hands it to render in its anti-aliasing loops,
+    // render to trace and trace to map. The wrapper runs mainImage's code up to that call.
+    const std::string marcher = "float trace(vec3 ro, vec3 rd, float s) {\n"
+                                "    float t = 0.0;\n"
+                                "    for (int i = 0; i < 64; i++) { float h = map(ro + rd * t, s); if (h < 0.001) break; t += h; }\n"
+                                "    return t;\n}\n"
+                                "vec3 render(vec3 ro, vec3 rd, float anim) { return vec3(trace(ro, rd, anim)); }\n";
     const shaders::PreparedSdf through =
-        prepareText("through.glsl",
-                    field + "float trace(vec3 ro, vec3 rd, float s) {\n"
-                            "    float t = 0.0;\n"
-                            "    for (int i = 0; i < 64; i++) { float h = map(ro + rd * t, s); if (h < 0.001) break; t += h; }\n"
-                            "    return t;\n}\n"
-                            "vec3 render(vec3 ro, vec3 rd, float anim) { return vec3(trace(ro, rd, anim)); }\n"
-                            "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
-                            "    float anim = 1.1 + 0.5 * smoothstep(-0.3, 0.3, cos(0.1 * iTime));\n"
-                            "    {\n        vec3 rd = normalize(vec3(fragCoord / iResolution.y - 0.5, -1.0));\n"
-                            "        fragColor = vec4(render(vec3(0.0, 0.0, 3.0), rd, anim), 1.0);\n    }\n}\n");
-    EXPECT_FALSE(through.ok());
-    EXPECT_NE(firstError(through).find("trace's 's' is anim where render calls it"), std::string::npos) << firstError(through);
-    EXPECT_NE(firstError(through).find("add `float sdf(vec3 p) { return map(p, ...); }`"), std::string::npos)
-        << firstError(through);
+        prepareText("through.glsl", field + marcher +
+                                        "#define AA 2\n"
+                                        "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                                        "    float anim = 1.1 + 0.5 * smoothstep(-0.3, 0.3, cos(0.1 * iTime));\n"
+                                        "    vec3 tot = vec3(0.0);\n"
+                                        "    #if AA>1\n    for (int jj = 0; jj < AA; jj++)\n    for (int ii = 0; ii < AA; ii++)\n"
+                                        "    #else\n    int ii = 1, jj = 1;\n    #endif\n"
+                                        "    {\n        vec2 q = fragCoord + vec2(float(ii), float(jj)) / float(AA);\n"
+                                        "        vec3 rd = normalize(vec3(q / iResolution.y - 0.5, -1.0));\n"
+                                        "        tot += render(vec3(0.0, 0.0, 3.0), rd, anim);\n    }\n"
+                                        "    fragColor = vec4(tot / float(AA * AA), 1.0);\n}\n");
+    ASSERT_TRUE(through.ok()) << firstError(through);
+    EXPECT_EQ(through.signature.entry, "map");
+    EXPECT_NE(through.entryReason.find("with s as mainImage computes it"), std::string::npos) << through.entryReason;
+    EXPECT_NEAR(fieldValueAt(through, {0.0f, 0.0f, 0.0f}, 0.0f), -1.6f, 1e-5f);             // cos(0) = 1: anim = 1.6
+    EXPECT_NEAR(fieldValueAt(through, {0.0f, 0.0f, 0.0f}, 15.70796f), -1.35f, 1e-4f); // cos(pi / 2) = 0: 1.35
+    // One call further (mainImage -> image -> render -> trace): no value, and the error says what to write.
+    const shaders::PreparedSdf deeper =
+        prepareText("deeper.glsl", field + marcher +
+                                       "vec3 image(vec2 uv, float anim) { return render(vec3(0.0, 0.0, 3.0), normalize(vec3(uv, "
+                                       "-1.0)), anim); }\n"
+                                       "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                                       "    float anim = 1.1 + 0.5 * smoothstep(-0.3, 0.3, cos(0.1 * iTime));\n"
+                                       "    fragColor = vec4(image(fragCoord / iResolution.y - 0.5, anim), 1.0);\n}\n");
+    EXPECT_FALSE(deeper.ok());
+    EXPECT_NE(firstError(deeper).find("trace's 's' is anim where render calls it"), std::string::npos) << firstError(deeper);
+    EXPECT_NE(firstError(deeper).find("add `float sdf(vec3 p) { return map(p, ...); }`"), std::string::npos)
+        << firstError(deeper);
     // The same untraceable march of a field whose float is named as the time: read as the time.
     std::string timed = "float map(vec3 p, float time) { return length(p) - 0.2 - 0.1 * sin(time); }\n" +
-                        through.source.map.files.front().text.substr(field.size());
+                        deeper.source.map.files.front().text.substr(field.size());
     const shaders::PreparedSdf named = prepareText("timed.glsl", timed);
     ASSERT_TRUE(named.ok()) << firstError(named);
     EXPECT_TRUE(named.signature.animated);
