@@ -375,8 +375,7 @@ bool passedByMainImage(TIntermAggregate* marcherCall, const MarcherCall& found, 
     for (TIntermBinary* assignment : writes.assignments) written.insert(assignedSymbol(assignment->getLeft()));
     std::string before;
     int callLineNumber = reaching.call->getLoc().line;
-    const std::vector<std::string> passed =
-        callArguments(text, callLineNumber, found.in, &before, &callLineNumber);
+    const std::vector<std::string> passed = callArguments(text, callLineNumber, found.in, &before, &callLineNumber);
     const std::size_t open = bodyOpen(text, tree.mainImage), callLine = lineStart(text, callLineNumber);
     int opened = 0;
     const std::string entered = open == std::string::npos || callLine == std::string::npos || open >= callLine
@@ -467,7 +466,8 @@ void traceArguments(MarchedFunction& m, TIntermAggregate* call, TIntermAggregate
         const std::string type = glslTypeName(marcherParameters[k]->getType());
         if (type.empty()) return fail("parameter '" + name + "' has a type the wrapper cannot declare");
         std::string value = values[k];
-        if (!found.fromMainImage && (k >= found.call->getSequence().size() || !isConstantArgument(found.call->getSequence()[k]))) {
+        if (!found.fromMainImage &&
+            (k >= found.call->getSequence().size() || !isConstantArgument(found.call->getSequence()[k]))) {
             if (passed.empty() && passedWhy.empty() &&
                 !passedByMainImage(found.call, found, tree, text, marcherParameters, passed, passedPrelude, passedWhy))
                 passed.clear();

@@ -302,11 +302,12 @@ TEST_F(FieldParameters, AFloatAfterThePointIsWhatTheMarchPassesNotTheTime) {
 
     // IQ's Apollonian: mainImage computes `anim` once, hands it to render in its anti-aliasing loops,
     // render to trace and trace to map. The wrapper runs mainImage's code up to that call.
-    const std::string marcher = "float trace(vec3 ro, vec3 rd, float s) {\n"
-                                "    float t = 0.0;\n"
-                                "    for (int i = 0; i < 64; i++) { float h = map(ro + rd * t, s); if (h < 0.001) break; t += h; }\n"
-                                "    return t;\n}\n"
-                                "vec3 render(vec3 ro, vec3 rd, float anim) { return vec3(trace(ro, rd, anim)); }\n";
+    const std::string marcher =
+        "float trace(vec3 ro, vec3 rd, float s) {\n"
+        "    float t = 0.0;\n"
+        "    for (int i = 0; i < 64; i++) { float h = map(ro + rd * t, s); if (h < 0.001) break; t += h; }\n"
+        "    return t;\n}\n"
+        "vec3 render(vec3 ro, vec3 rd, float anim) { return vec3(trace(ro, rd, anim)); }\n";
     const shaders::PreparedSdf through =
         prepareText("through.glsl", field + marcher +
                                         "#define AA 2\n"
@@ -322,7 +323,7 @@ TEST_F(FieldParameters, AFloatAfterThePointIsWhatTheMarchPassesNotTheTime) {
     ASSERT_TRUE(through.ok()) << firstError(through);
     EXPECT_EQ(through.signature.entry, "map");
     EXPECT_NE(through.entryReason.find("with s as mainImage computes it"), std::string::npos) << through.entryReason;
-    EXPECT_NEAR(fieldValueAt(through, {0.0f, 0.0f, 0.0f}, 0.0f), -1.6f, 1e-5f);             // cos(0) = 1: anim = 1.6
+    EXPECT_NEAR(fieldValueAt(through, {0.0f, 0.0f, 0.0f}, 0.0f), -1.6f, 1e-5f);       // cos(0) = 1: anim = 1.6
     EXPECT_NEAR(fieldValueAt(through, {0.0f, 0.0f, 0.0f}, 15.70796f), -1.35f, 1e-4f); // cos(pi / 2) = 0: 1.35
     // One call further (mainImage -> image -> render -> trace): no value, and the error says what to write.
     const shaders::PreparedSdf deeper =
