@@ -564,6 +564,21 @@ void adaptMain(const Code& code, std::vector<Edit>& edits, HostAdaptation& out) 
     out.host = host;
 }
 
+// Shadertoy named its time iGlobalTime until 2017: shaders downloaded then (and sites that mirror
+// them) use it undeclared, or declare it as the ports of then did. It is iTime.
+void adaptOldShadertoy(const Code& code, std::vector<Edit>& edits, HostAdaptation& out) {
+    if (!out.host.empty() || code.occurrences("mainImage").empty()) return;
+    bool renamed = false;
+    for (const Declaration& d : fileScopeDeclarations(code, {"uniform"}))
+        if (d.name == "iGlobalTime") edits.push_back(blank(code.original, d.begin, d.end - d.begin));
+    for (std::size_t at : code.occurrences("iGlobalTime"))
+        if (at == 0 || code.stripped[at - 1] != '.') {
+            edits.push_back({at, 11, "iTime"});
+            renamed = true;
+        }
+    if (renamed) out.host = "an old Shadertoy shader";
+}
+
 } // namespace
 
 HostAdaptation adaptForeignHost(const std::string& text, const std::vector<Parameter>& parameters) {
@@ -572,6 +587,7 @@ HostAdaptation adaptForeignHost(const std::string& text, const std::vector<Param
     std::vector<Edit> edits;
     adaptFragmentarium(code, parameters, edits, out);
     adaptMain(code, edits, out);
+    adaptOldShadertoy(code, edits, out);
     out.text = edits.empty() ? text : applyEdits(text, std::move(edits));
     return out;
 }

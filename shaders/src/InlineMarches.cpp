@@ -112,14 +112,14 @@ void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* fu
     } else {
         // Another function's parameters (the ray's origin and direction): zero, since the point is given.
         for (TIntermSymbol* parameter : parameters) {
-            const std::string type = glslTypeName(parameter->getType());
-            if (type.empty()) {
+            const std::string type = glslTypeName(parameter->getType()), zero = zeroValue(parameter->getType());
+            if (type.empty() || zero.empty()) {
                 march.body.clear();
                 march.unresolved =
                     "parameter '" + std::string(parameter->getName().c_str()) + "' has a type the wrapper cannot declare";
                 return;
             }
-            declarations += type + " " + parameter->getName().c_str() + " = " + type + "(0);\n";
+            declarations += type + " " + parameter->getName().c_str() + " = " + zero + ";\n";
         }
     }
     march.prelude = declarations + before;

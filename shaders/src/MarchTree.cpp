@@ -45,6 +45,30 @@ bool isFloatVec3(const glslang::TType& type) {
 }
 
 // A type as GLSL writes it (float, ivec3, mat3, a struct's name); empty for arrays and others.
+std::string zeroValue(const glslang::TType& type) {
+    if (type.isArray()) {
+        const glslang::TArraySizes* sizes = type.getArraySizes();
+        if (!sizes || sizes->getNumDims() != 1 || sizes->getOuterSize() <= 0) return {};
+        const glslang::TType element(type, 0);
+        const std::string name = glslTypeName(element), zero = zeroValue(element);
+        if (name.empty() || zero.empty()) return {};
+        std::string value = name + "[" + std::to_string(sizes->getOuterSize()) + "](";
+        for (int i = 0; i < sizes->getOuterSize(); ++i) value += (i ? ", " : "") + zero;
+        return value + ")";
+    }
+    const std::string name = glslTypeName(type);
+    if (name.empty()) return {};
+    if (type.getBasicType() != glslang::EbtStruct) return name + "(0)";
+    std::string value = name + "(";
+    const glslang::TTypeList* members = type.getStruct();
+    for (std::size_t i = 0; members && i < members->size(); ++i) {
+        const std::string zero = zeroValue(*(*members)[i].type);
+        if (zero.empty()) return {};
+        value += (i ? ", " : "") + zero;
+    }
+    return value + ")";
+}
+
 std::string glslTypeName(const glslang::TType& type) {
     if (type.isArray()) return {};
     if (type.getBasicType() == glslang::EbtStruct) return type.getTypeName().c_str();

@@ -77,6 +77,10 @@ struct Assignment {
 // A type as GLSL writes it (float, ivec3, mat3, a struct's name); empty for arrays and others.
 std::string glslTypeName(const glslang::TType& type);
 
+// A value of `type` whose every component is zero, as GLSL writes it (`vec3(0)`, a struct's
+// constructor of its members' zeros, `float[3](float(0), ...)`); empty where none can be written.
+std::string zeroValue(const glslang::TType& type);
+
 // The parameters of a function definition, in order.
 std::vector<TIntermSymbol*> parametersOf(TIntermAggregate* function);
 

@@ -345,3 +345,48 @@ TEST_F(FieldParameters, AFloatAfterThePointIsWhatTheMarchPassesNotTheTime) {
     EXPECT_TRUE(named.signature.animated);
     EXPECT_NEAR(fieldValueAt(named, {0.0f, 0.0f, 0.0f}, 1.0f), -0.2f - 0.1f * std::sin(1.0f), 1e-5f);
 }
+
+TEST_F(FieldParameters, AStructParameterMainImageDoesNotGiveIsItsMembersZeros) {
+    // A heightfield's march in a function whose ray is a struct (a public snow-terrain shader's
+    // `float castRay(ray r, float tmin, float tmax)`), called from render, not at mainImage's top:
+    // the point is given, the ray's members are zeros (`ray(vec3(0), vec3(0))`, not `ray(0)`).
+    const shaders::PreparedSdf terrain = prepareText(
+        "terrain.glsl", "struct ray { vec3 origin; vec3 direction; };\n"
+                        "float terrainH(vec2 xz) { return 0.25 * sin(xz.x); }\n"
+                        "float castRay(ray r, float tmin, float tmax) {\n"
+                        "    float t = tmin;\n"
+                        "    for (int i = 0; i < 128; i++) {\n"
+                        "        vec3 pos = r.origin + r.direction * t;\n"
+                        "        float h = pos.y - terrainH(pos.xz);\n"
+                        "        if (abs(h) < 0.0015 * t || t > tmax) break;\n"
+                        "        t += 0.5 * h;\n"
+                        "    }\n    return t;\n}\n"
+                        "vec3 render(vec3 ro, vec3 rd) { ray r = ray(ro, rd); return vec3(castRay(r, 0.01, 50.0)); }\n"
+                        "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                        "    vec3 rd = normalize(vec3(fragCoord / iResolution.y - 0.5, -1.0));\n"
+                        "    if (fragCoord.x > 1.0) fragColor = vec4(render(vec3(0.0, 1.0, 3.0), rd), 1.0);\n}\n");
+    ASSERT_TRUE(terrain.ok()) << firstError(terrain);
+    EXPECT_EQ(terrain.signature.entry, "castRay");
+    // An inline field is the march's step: half the height above the terrain here.
+    EXPECT_NEAR(fieldValueAt(terrain, {1.0f, 0.5f, 0.0f}, 0.0f), 0.5f * (0.5f - 0.25f * std::sin(1.0f)), 1e-5f);
+}
+
+TEST_F(FieldParameters, AnOldShadertoysIGlobalTimeIsTheTime) {
+    // Shadertoy's time was iGlobalTime until 2017; shaders downloaded then use it undeclared, and
+    // ports of then declare it.
+    const std::string shader = "float map(vec3 p) { return length(p) - 0.5 - 0.2 * sin(iGlobalTime); }\n"
+                               "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                               "    float t = iGlobalTime * 0.5;\n"
+                               "    vec3 ro = vec3(3.0 * sin(t), 0.0, 3.0 * cos(t)), rd = -normalize(ro);\n"
+                               "    float d = 0.0;\n"
+                               "    for (int i = 0; i < 64; i++) d += map(ro + rd * d);\n"
+                               "    fragColor = vec4(d);\n}\n";
+    for (const std::string& text : {shader, "uniform float iGlobalTime;\n" + shader}) {
+        const shaders::PreparedSdf old = prepareText("old.glsl", text);
+        ASSERT_TRUE(old.ok()) << firstError(old);
+        EXPECT_EQ(old.host, "an old Shadertoy shader");
+        EXPECT_EQ(old.signature.entry, "map");
+        EXPECT_NEAR(fieldValueAt(old, {0.0f, 0.0f, 0.0f}, 1.0f), -0.5f - 0.2f * std::sin(1.0f), 1e-5f);
+        EXPECT_NEAR(fieldValueAt(old, {0.0f, 0.0f, 0.0f}, 2.0f), -0.5f - 0.2f * std::sin(2.0f), 1e-5f);
+    }
+}
