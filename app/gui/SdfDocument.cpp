@@ -97,7 +97,9 @@ jobs::PastedView decideView(shaders::PreparedSdf& prepared, const jobs::PastedVi
         view = jobs::decidePastedView(prepared, {});
         (*context)->doneCurrent();
         if (!view.box.empty())
-            log::info("app", std::string(view.cut ? "[-1, 1]^3 cuts the scene" : "the surface lies outside [-1, 1]^3") +
+            log::info("app", std::string(!view.floor.empty() ? "[-1, 1]^3 holds only the plane " + view.floor + " of the scene"
+                                         : view.cut          ? "[-1, 1]^3 cuts the scene"
+                                                             : "the surface lies outside [-1, 1]^3") +
                                  ": framed by the box " + view.box);
     }
     prepared.frame.level = view.level;

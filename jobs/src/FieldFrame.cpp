@@ -80,6 +80,20 @@ std::string noSurfaceText(const sampling::FieldRange& range, const shaders::Prep
     return text;
 }
 
+// What stands on a floor (SurfaceBox::onFloor) as a box of its own; `box` itself where there is none.
+sampling::SurfaceBox framedPart(const sampling::SurfaceBox& box) {
+    if (!box.onFloor) return box;
+    sampling::SurfaceBox part = box;
+    part.low = box.onFloorLow, part.high = box.onFloorHigh;
+    float squared = 0.0f;
+    for (std::size_t a = 0; a < 3; ++a) {
+        part.centre[a] = 0.5f * (part.low[a] + part.high[a]);
+        squared += 0.25f * (part.high[a] - part.low[a]) * (part.high[a] - part.low[a]);
+    }
+    part.radius = std::sqrt(squared);
+    return part;
+}
+
 // Half the longest side of `box`: the scale that frames it as [-1, 1]^3.
 float halfSide(const sampling::SurfaceBox& box) {
     float half = 0.0f;
@@ -141,7 +155,7 @@ std::optional<JobError> frameField(shaders::PreparedSdf& sdf, const std::string&
         if (!*found)
             return workError(KeyedText(what + ": " + label + ": ") + key("normalize") + " " + normalize + ": " +
                              noSurfaceText(range, sdf) + "; or give the box to frame as X0,Y0,Z0,X1,Y1,Z1");
-        const sampling::SurfaceBox& box = **found;
+        const sampling::SurfaceBox box = framedPart(**found);
         frame.centre = box.centre;
         frame.scale = halfSide(box);
         if (normalize == "unit-sphere") frame.scale = box.radius;
@@ -149,7 +163,10 @@ std::optional<JobError> frameField(shaders::PreparedSdf& sdf, const std::string&
         log::info(what, label + ": the surface lies in [" + formatted("%.4g, %.4g, %.4g", box.low[0], box.low[1], box.low[2]) +
                             "] - [" + formatted("%.4g, %.4g, %.4g", box.high[0], box.high[1], box.high[2]) + "] (" +
                             std::to_string(box.points) + " crossings of a 40^3 lattice over [-" +
-                            formatted("%g, %g]^3, %.2f s)", box.searched, box.searched, seconds));
+                            formatted("%g, %g]^3, %.2f s)", box.searched, box.searched, seconds) +
+                            (box.onFloor ? ": what stands on the plane " + std::string(1, "xyz"[box.floorAxis]) + " = " +
+                                               formatted("%.4g", box.floorAt, 0.0, 0.0) + " that [-1, 1]^3 holds alone"
+                                         : std::string()));
     }
     sdf.frame = frame;
     char line[200];
@@ -172,6 +189,9 @@ PastedView decidePastedView(const shaders::PreparedSdf& sdf, const std::vector<s
             view.box = boxText(box);
             view.cut = true;
             for (std::size_t a = 0; a < 3; ++a) view.cut = view.cut && box.low[a] < 1.0f && box.high[a] > -1.0f;
+        } else if (box.onFloor) { // [-1, 1]^3 holds only the floor the scene stands on
+            view.box = boxText(framedPart(box));
+            view.floor = std::string(1, "xyz"[box.floorAxis]) + " = " + formatted("%.4g", box.floorAt, 0.0, 0.0);
         }
     } else if (range.finite > 0) {
         view.noSurface = noSurfaceText(range, sdf);

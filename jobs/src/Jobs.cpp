@@ -226,7 +226,11 @@ JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& w
     // With a level given the user has chosen the surface (a thin one may escape the search's lattice).
     if (!mesh && sdf.shadertoyMainImage && (input.normalize.empty() || input.normalize == "none") && input.level == 0.0f) {
         const PastedView view = decidePastedView(sdf, resolved->settings);
-        if (!view.box.empty())
+        if (!view.floor.empty())
+            log::warning(what, label + ": [-1, 1]^3 holds only the plane " + view.floor +
+                                   " of this scene; what stands on it lies in the box " + view.box +
+                                   ": --normalize unit-cube frames it (or --normalize " + view.box + ")");
+        else if (!view.box.empty())
             log::warning(what, label +
                                    (view.cut ? ": [-1, 1]^3 cuts the scene; it lies whole in the box "
                                              : ": the field has no surface in [-1, 1]^3; it lies in the box ") +

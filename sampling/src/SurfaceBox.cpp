@@ -35,6 +35,42 @@ std::vector<std::array<float, 3>> surfaceCrossings(const std::vector<float>& val
     return crossings;
 }
 
+// The axis across which the crossings form one layer (at most two cells thick) while they reach
+// the cube's faces along the other two, or -1.
+int floorAxis(const std::array<float, 3>& low, const std::array<float, 3>& high) {
+    for (int a = 0; a < 3; ++a) {
+        bool across = high[std::size_t(a)] - low[std::size_t(a)] <= 2.0f;
+        for (int b = 0; b < 3; ++b)
+            if (b != a) across = across && low[std::size_t(b)] < 1.0f && high[std::size_t(b)] > float(kSide - 2);
+        if (across) return a;
+    }
+    return -1;
+}
+
+// Whether this larger cube's crossings off `box`'s floor layer (further than two of its cells from
+// it) stay off its faces: then they are what stands on the floor, and `box` gets their box.
+bool standsOnFloor(SurfaceBox& box, const std::vector<std::array<float, 3>>& surface, float half, float cell) {
+    const std::size_t axis = std::size_t(box.floorAxis);
+    std::array<float, 3> low{}, high{};
+    bool any = false;
+    for (const auto& p : surface) {
+        std::array<float, 3> world;
+        for (std::size_t a = 0; a < 3; ++a) world[a] = -half + cell * p[a];
+        if (std::abs(world[axis] - box.floorAt) <= 2.0f * cell) continue;
+        if (p[0] < 1.0f || p[1] < 1.0f || p[2] < 1.0f || p[0] > float(kSide - 2) || p[1] > float(kSide - 2) ||
+            p[2] > float(kSide - 2))
+            return false; // reaches this cube's faces: an endless scene, or one a larger cube may hold
+        for (std::size_t a = 0; a < 3; ++a)
+            low[a] = any ? std::min(low[a], world[a]) : world[a], high[a] = any ? std::max(high[a], world[a]) : world[a];
+        any = true;
+    }
+    if (!any) return false;
+    for (std::size_t a = 0; a < 3; ++a) low[a] -= cell, high[a] += cell; // as the box, grown by a cell
+    low[axis] = std::min(low[axis], box.floorAt), high[axis] = std::max(high[axis], box.floorAt);
+    box.onFloor = true, box.onFloorLow = low, box.onFloorHigh = high;
+    return true;
+}
+
 } // namespace
 
 Expected<std::optional<SurfaceBox>> findSurfaceBox(FieldEvaluator& evaluator, const FieldSettings& settings, float largest,
@@ -82,7 +118,13 @@ Expected<std::optional<SurfaceBox>> findSurfaceBox(FieldEvaluator& evaluator, co
         box.cell = cell;
         box.points = int(surface.size());
         if (!touches) return std::optional<SurfaceBox>(box);
-        if (!first) first = box;
+        if (!first) {
+            first = box;
+            first->floorAxis = floorAxis(low, high);
+            if (first->floorAxis >= 0) first->floorAt = -half + cell * 0.5f * (low[first->floorAxis] + high[first->floorAxis]);
+        } else if (first->floorAxis >= 0 && standsOnFloor(*first, surface, half, cell)) {
+            return first;
+        }
     }
     return first;
 }

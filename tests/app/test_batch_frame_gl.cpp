@@ -183,6 +183,59 @@ TEST(BatchFrame, APastedSceneOutsideTheUnitBoxIsWarnedAbout) {
     }
 }
 
+// The tutorials' first scene (a ball of radius 1 at (0, 1, 6) on the plane y = 0, the camera at
+// (0, 1, 0)): [-1, 1]^3 holds only the floor. The run names the plane and the box of what stands on
+// it, and --normalize unit-cube frames that box (the ball whole, down to the floor), not the floor.
+TEST(BatchFrame, AFloorAloneInTheUnitBoxIsNamedAndWhatStandsOnItIsFramed) {
+    const fs::path floor = writeShader("floor.glsl", "float GetDist(vec3 p) {\n"
+                                                     "    vec4 s = vec4(0, 1, 6, 1);\n"
+                                                     "    float sphereDist = length(p - s.xyz) - s.w;\n"
+                                                     "    float planeDist = p.y;\n"
+                                                     "    return min(sphereDist, planeDist);\n}\n"
+                                                     "float RayMarch(vec3 ro, vec3 rd) {\n"
+                                                     "    float dO = 0.;\n"
+                                                     "    for (int i = 0; i < 100; i++) {\n"
+                                                     "        vec3 p = ro + rd * dO;\n"
+                                                     "        float dS = GetDist(p);\n"
+                                                     "        dO += dS;\n"
+                                                     "        if (dO > 100. || dS < .01) break;\n"
+                                                     "    }\n    return dO;\n}\n"
+                                                     "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                                                     "    vec2 uv = (fragCoord - .5 * iResolution.xy) / iResolution.y;\n"
+                                                     "    float d = RayMarch(vec3(0, 1, 0), normalize(vec3(uv.x, uv.y, 1)));\n"
+                                                     "    fragColor = vec4(vec3(d / 6.), 1.0);\n}\n");
+    const fs::path out = scratch("floor.bin");
+    Result r = run("--batch sample --sdf " + floor.string() + " --pattern rand -n 100 -o " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const std::size_t said =
+        r.output.find("[-1, 1]^3 holds only the plane y = 0 of this scene; what stands on it lies in the box ");
+    ASSERT_NE(said, std::string::npos) << r.output;
+    r = run("--batch sample --sdf " + floor.string() + " --normalize unit-cube --pattern rand -n 4000 -o " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const Framed framed = readFramed(out);
+    // The ball spans y 0-2 and z 5-7 and meets the floor: the box's centre is near (0, 1, 6) and
+    // its half side near 1, grown by the finding lattice's cell (16/39) and the floor's level.
+    EXPECT_NEAR(framed.centre[0], 0.0f, 0.1f);
+    EXPECT_NEAR(framed.centre[1], 1.0f, 0.5f);
+    EXPECT_NEAR(framed.centre[2], 6.0f, 0.1f);
+    EXPECT_GT(framed.scale, 1.0f);
+    EXPECT_LT(framed.scale, 1.0f + 2.0f * 16.0f / 39.0f + 0.05f);
+    int inside = 0;
+    for (std::size_t i = 0; i < framed.rows.size() / 7; ++i) inside += framed.rows[7 * i + 3] < 0.0f;
+    EXPECT_GT(inside, 400) << "the framed box holds the ball and the floor under it";
+    // A plane alone is not a scene standing on it: no box is named.
+    const fs::path plane = writeShader("plane.glsl", "float map(vec3 p) { return p.y + 0.5; }\n"
+                                                     "void mainImage(out vec4 c, in vec2 u) {\n"
+                                                     "    float t = 0.0;\n"
+                                                     "    for (int i = 0; i < 64; i++) { float d = map(vec3(0.0, 1.0, 0.0) + "
+                                                     "normalize(vec3(u, -1.0)) * t); if (d < 0.001) break; t += d; }\n"
+                                                     "    c = vec4(t);\n}\n");
+    r = run("--batch sample --sdf " + plane.string() + " --pattern rand -n 100 -o " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.output.find("holds only the plane"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("in the box"), std::string::npos) << r.output;
+}
+
 TEST(BatchFrame, BadBoxesAndFieldsWithoutASurfaceAreNamedAndWriteNothing) {
     const fs::path ball = writeShader("ball2.glsl", kBall);
     const fs::path glow = writeShader("glow.glsl", "float sdf(vec3 p) { return 0.2 + 0.1 * sin(p.x); }\n");

@@ -83,6 +83,7 @@ JobResult<OpenedSdf> openSdf(const values::SdfInput& input, const std::string& w
 //   box        X0,Y0,Z0,X1,Y1,Z1 (as --normalize takes it): the surface's box, centred on it with its
 //              longest side, where a larger cube holds it whole
 //   cut        that box overlaps [-1, 1]^3: the unit box cuts the scene (else nothing is in it)
+//   floor      where [-1, 1]^3 holds only a plane across it ("y = 0") and the box is what stands on it
 //   noSurface  why it has none anywhere (noSurfaceReason's text)
 //   level      an unsigned field's surface (never negative, its own march stopping at a constant:
 //              PreparedSdf::marchThreshold): that constant, which the workbench takes as --level
@@ -90,6 +91,7 @@ struct PastedView {
     std::string box, noSurface;
     float level = 0.0f;
     bool cut = false;
+    std::string floor;
 };
 PastedView decidePastedView(const shaders::PreparedSdf& sdf, const std::vector<shaders::ParameterSetting>& parameters);
 

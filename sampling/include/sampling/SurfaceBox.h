@@ -18,6 +18,14 @@ struct SurfaceBox {
     float searched = 0.0f;              // the half side of the cube the points were found in
     float cell = 0.0f;                  // that cube's lattice spacing
     int points = 0;                     // the crossings (lattice edges the surface cuts)
+    // A floor: where this (smallest) cube's crossings are one layer across it, perpendicular to axis
+    // `floorAxis` at `floorAt` (-1: none), and a larger cube holds surface away from that layer that
+    // stays off its faces (objects standing on a floor outside [-1, 1]^3, as in many tutorials' scenes):
+    // that surface's box, reaching to the floor's level.
+    int floorAxis = -1;
+    float floorAt = 0.0f;
+    bool onFloor = false;
+    std::array<float, 3> onFloorLow{}, onFloorHigh{};
 };
 
 // The values the search's lattices held (finite ones): a field with no surface is told apart by
@@ -35,7 +43,8 @@ struct FieldRange {
 // and in each where the surface crosses the lattice's edges: the zero between neighbours whose values
 // have opposite signs (a glow's density, above 0 everywhere, has none).
 // The first cube whose crossings stay off its faces gives the box (a bounded scene seen whole); where
-// every cube's crossings reach its faces (a floor, an endless repetition), the smallest cube with any.
+// every cube's crossings reach its faces (a floor, an endless repetition), the smallest cube with any,
+// and where that is a floor, what stands on it (SurfaceBox::onFloor).
 // None (nullopt): no surface in the largest cube (a glow's density, a field never 0). `largest`
 // (a power of 2) bounds the cubes: 1 asks only whether the surface crosses [-1, 1]^3. `evaluator`
 // is built with the field; a current GL context is needed.
