@@ -95,6 +95,11 @@ with tempfile.TemporaryDirectory() as scratch:
         # Without one in [-1, 1]^3: the same run framed by the surface's box (--normalize unit-cube),
         # "yes" when the framed rows change sign, "none" when no surface was found within [-64, 64]^3.
         framed = ""
+        floor_only = sampled and surface and "holds only the plane" in sample_log
+        if floor_only:  # [-1, 1]^3 holds only its floor: framed, what stands on it ("on floor" when that has a surface)
+            framed_code, _, _ = run([BINARY, "--batch", "sample", "--sdf", path, "--normalize", "unit-cube", "--pattern",
+                                     "rand", "-n", "2000", "--output", os.path.join(scratch, "framed.npz")])
+            framed = "on floor" if framed_code == 0 and changes_sign(os.path.join(scratch, "framed.npz")) else "failed"
         if sampled and not surface:
             framed_code, _, framed_log = run([BINARY, "--batch", "sample", "--sdf", path, "--normalize", "unit-cube",
                                                 "--pattern", "rand", "-n", "2000", "--output", os.path.join(scratch, "framed.npz")])
@@ -141,7 +146,9 @@ summary = (f"{len(rows)} shaders: {renders} render ({100 * renders / n:.1f} %), 
            f"{sum(1 for row in rows if row[8] == 'yes')} have one once framed (`--normalize unit-cube`: the box of "
            f"their surface, found by their values, framed as the unit box); "
            f"{sum(1 for row in rows if row[8] == 'none')} have none within [-64, 64]^3 (glows, fields drawn from "
-           f"textures or the pixel, constants). {sum(1 for row in rows if row[9])} are unsigned (never negative, near 0: the run "
+           f"textures or the pixel, constants). Of those with a surface there, {sum(1 for row in rows if row[8] == 'on floor')} "
+           f"hold only their floor (a plane across the box) and what stands on it lies outside: the run names that "
+           f"box, and framed by it the rows change sign (column framed: on floor). {sum(1 for row in rows if row[9])} are unsigned (never negative, near 0: the run "
            f"warns and names `--level`); the level set where its own march stops (`--level` at the threshold read "
            f"from the shader, else 0.001) gives "
            f"{sum(1 for row in rows if row[9].startswith('yes'))} of them a surface (column level)")
