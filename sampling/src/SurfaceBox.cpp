@@ -57,9 +57,11 @@ bool standsOnFloor(SurfaceBox& box, const std::vector<std::array<float, 3>>& sur
         std::array<float, 3> world;
         for (std::size_t a = 0; a < 3; ++a) world[a] = -half + cell * p[a];
         if (std::abs(world[axis] - box.floorAt) <= 2.0f * cell) continue;
-        if (p[0] < 1.0f || p[1] < 1.0f || p[2] < 1.0f || p[0] > float(kSide - 2) || p[1] > float(kSide - 2) ||
-            p[2] > float(kSide - 2))
-            return false; // reaches this cube's faces: an endless scene, or one a larger cube may hold
+        // Within two cells of this cube's faces: an endless scene (its surface may skip a coarse
+        // lattice's outer layer), or one a larger cube may hold.
+        if (p[0] < 2.0f || p[1] < 2.0f || p[2] < 2.0f || p[0] > float(kSide - 3) || p[1] > float(kSide - 3) ||
+            p[2] > float(kSide - 3))
+            return false;
         for (std::size_t a = 0; a < 3; ++a)
             low[a] = any ? std::min(low[a], world[a]) : world[a], high[a] = any ? std::max(high[a], world[a]) : world[a];
         any = true;

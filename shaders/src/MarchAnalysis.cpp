@@ -368,9 +368,14 @@ bool passedByMainImage(TIntermAggregate* marcherCall, const MarcherCall& found, 
         return false;
     }
     const std::vector<TIntermSymbol*> callerParameters = parametersOf(caller);
+    TIntermAggregate* callerBody = bodyOf(caller);
+    if (!callerBody) {
+        why = found.in + " has no body";
+        return false;
+    }
     Contents writes;
     writes.everyMove = true;
-    bodyOf(caller)->traverse(&writes);
+    callerBody->traverse(&writes);
     std::set<long long> written;
     for (TIntermBinary* assignment : writes.assignments) written.insert(assignedSymbol(assignment->getLeft()));
     std::string before;
