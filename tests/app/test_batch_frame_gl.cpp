@@ -234,6 +234,22 @@ TEST(BatchFrame, AFloorAloneInTheUnitBoxIsNamedAndWhatStandsOnItIsFramed) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(r.output.find("holds only the plane"), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find("in the box"), std::string::npos) << r.output;
+    // Nor a floor with blocks repeated without end (a city: 6 x 8 x 6 blocks every 11 units, none in
+    // [-1, 1]^3), which every larger cube cuts.
+    const fs::path blocks = writeShader(
+        "city.glsl", "float map(vec3 p) {\n"
+                     "    vec3 q = p;\n"
+                     "    q.xz = mod(q.xz, 11.0) - 5.5;\n"
+                     "    vec3 d = abs(q - vec3(0.0, 4.0, 0.0)) - vec3(3.0, 4.0, 3.0);\n"
+                     "    return min(p.y, length(max(d, 0.0)) + min(max(d.x, max(d.y, d.z)), 0.0));\n}\n"
+                     "void mainImage(out vec4 c, in vec2 u) {\n"
+                     "    float t = 0.0;\n"
+                     "    for (int i = 0; i < 64; i++) { float d = map(vec3(0.0, 1.0, 0.0) + normalize(vec3(u, -1.0)) * t); "
+                     "if (d < 0.001) break; t += d; }\n"
+                     "    c = vec4(t);\n}\n");
+    r = run("--batch sample --sdf " + blocks.string() + " --pattern rand -n 100 -o " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.output.find("holds only the plane"), std::string::npos) << r.output;
 }
 
 TEST(BatchFrame, BadBoxesAndFieldsWithoutASurfaceAreNamedAndWriteNothing) {
