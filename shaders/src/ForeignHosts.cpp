@@ -2,6 +2,7 @@
 // replacement may be longer or shorter than what it replaces, but no newline is added or removed.
 
 #include "ForeignHosts.h"
+#include "IsfHeader.h"
 #include "ParameterText.h"
 #include "Words.h"
 
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <map>
 #include <optional>
 #include <regex>
 #include <set>
@@ -564,6 +566,50 @@ void adaptMain(const Code& code, std::vector<Edit>& edits, HostAdaptation& out) 
     out.host = host;
 }
 
+// An ISF shader (VDMX, Resolume, Millumin, editor.isf.video), after adaptMain has made its main()
+// mainImage: its header's INPUTS declared as uniforms after the header, on its last line (values
+// are parameters, Parameters.cpp; images and audio samplers on the empty unit), and its built-ins in
+// Shadertoy's terms.
+void adaptIsf(const Code& code, std::vector<Edit>& edits, HostAdaptation& out) {
+    const IsfHeader header = readIsfHeader(code.original);
+    if (!header.found || out.host.empty()) return;
+    static const std::map<std::string, std::string> types{
+        {"float", "float"},  {"long", "int"},        {"bool", "bool"},       {"event", "bool"},        {"color", "vec4"},
+        {"point2D", "vec2"}, {"image", "sampler2D"}, {"audio", "sampler2D"}, {"audioFFT", "sampler2D"}};
+    std::string declared;
+    for (const IsfInput& input : header.inputs)
+        if (auto type = types.find(input.type); type != types.end())
+            declared += (type->second == "sampler2D" ? "layout(binding = " + std::to_string(emptyUnit("sampler2D")) + ") " : "") +
+                        "uniform " + type->second + " " + input.name + "; ";
+    static const std::array<std::pair<const char*, const char*>, 12> builtins{{
+        {"TIME", "iTime"},
+        {"TIMEDELTA", "iTimeDelta"},
+        {"RENDERSIZE", "iResolution.xy"},
+        {"FRAMEINDEX", "iFrame"},
+        {"DATE", "iDate"},
+        {"PASSINDEX", "0"},
+        {"isf_FragNormCoord", "(gl_FragCoord.xy / iResolution.xy)"},
+        {"IMG_NORM_PIXEL", "texture"},
+        {"IMG_THIS_NORM_PIXEL", "sdfwb_isfThisPixel"},
+        {"IMG_THIS_PIXEL", "sdfwb_isfThisPixel"},
+        {"IMG_PIXEL", "sdfwb_isfPixel"},
+        {"IMG_SIZE", "sdfwb_isfSize"},
+    }};
+    bool images = false;
+    for (const auto& [name, value] : builtins)
+        for (std::size_t at : code.occurrences(name))
+            if (at == 0 || code.stripped[at - 1] != '.') {
+                edits.push_back({at, std::char_traits<char>::length(name), value});
+                images = images || std::string(value).rfind("sdfwb_isf", 0) == 0;
+            }
+    if (images)
+        declared += "vec4 sdfwb_isfPixel(sampler2D s, vec2 c) { return texture(s, c / vec2(textureSize(s, 0))); } "
+                    "vec4 sdfwb_isfThisPixel(sampler2D s) { return texture(s, gl_FragCoord.xy / iResolution.xy); } "
+                    "vec2 sdfwb_isfSize(sampler2D s) { return vec2(textureSize(s, 0)); } ";
+    if (!declared.empty()) edits.push_back({header.end, 0, " " + declared});
+    out.host = "ISF";
+}
+
 // Shadertoy named its time iGlobalTime until 2017: shaders downloaded then (and sites that mirror
 // them) use it undeclared, or declare it as the ports of then did. It is iTime.
 void adaptOldShadertoy(const Code& code, std::vector<Edit>& edits, HostAdaptation& out) {
@@ -587,6 +633,7 @@ HostAdaptation adaptForeignHost(const std::string& text, const std::vector<Param
     std::vector<Edit> edits;
     adaptFragmentarium(code, parameters, edits, out);
     adaptMain(code, edits, out);
+    adaptIsf(code, edits, out);
     adaptOldShadertoy(code, edits, out);
     out.text = edits.empty() ? text : applyEdits(text, std::move(edits));
     return out;

@@ -192,13 +192,26 @@ std::string fragmentariumLiteral(const Parameter& p, const std::array<float, 4>&
     return n > 1 && p.syntax == Parameter::Syntax::FragmentariumSlider && !p.color ? "(" + text + ")" : text;
 }
 
+// A default as an ISF header writes it: JSON (`0.5`, `true`, `[0.5, 0.5, 0.8, 1]`).
+std::string isfLiteral(const Parameter& p, const std::array<float, 4>& value) {
+    if (p.type == ParameterType::Bool) return value[0] != 0.0f ? "true" : "false";
+    if (p.type == ParameterType::Int) return std::to_string(static_cast<long long>(value[0]));
+    if (p.type == ParameterType::Float) return shortest(value[0]);
+    std::string text = "[";
+    for (int k = 0; k < componentCount(p.type); ++k) text += (k ? ", " : "") + shortest(value[std::size_t(k)]);
+    return text + "]";
+}
+
 std::string withDefaults(const std::string& text, const std::vector<Parameter>& declared,
                          const std::vector<ParameterSetting>& values) {
     std::vector<std::pair<const Parameter*, std::string>> edits;
     for (const ParameterSetting& s : values)
-        if (const Parameter* p = findDeclared(declared, s.name); p && p->initializerOffset + p->initializerLength <= text.size())
-            edits.emplace_back(p, p->syntax == Parameter::Syntax::Glsl ? glslLiteral(p->type, s.value)
-                                                                       : fragmentariumLiteral(*p, s.value));
+        if (const Parameter* p = findDeclared(declared, s.name);
+            p && p->initializerOffset + p->initializerLength <= text.size() &&
+            !(p->syntax == Parameter::Syntax::Isf && p->initializerLength == 0))
+            edits.emplace_back(p, p->syntax == Parameter::Syntax::Glsl  ? glslLiteral(p->type, s.value)
+                                  : p->syntax == Parameter::Syntax::Isf ? isfLiteral(*p, s.value)
+                                                                        : fragmentariumLiteral(*p, s.value));
     std::sort(edits.begin(), edits.end(),
               [](const auto& a, const auto& b) { return a.first->initializerOffset > b.first->initializerOffset; });
     std::string out = text;

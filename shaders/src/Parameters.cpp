@@ -4,6 +4,7 @@
 
 #include <shaders/SdfSource.h>
 
+#include "IsfHeader.h"
 #include "ParameterText.h"
 
 #include <algorithm>
@@ -554,11 +555,59 @@ std::vector<detail::PresetLine> detail::defaultPresetLines(const std::string& te
     return lines;
 }
 
+namespace {
+
+// An ISF header's INPUTS that are values (not images or audio), as parameters: the host declares
+// them as uniforms (ForeignHosts.cpp declares them in sdfwb's text). Ranges from MIN and MAX (a
+// point2D's widest), a colour's alpha 1 where its DEFAULT leaves it out.
+std::vector<Parameter> isfParameters(const std::string& text) {
+    std::vector<Parameter> out;
+    for (const detail::IsfInput& input : detail::readIsfHeader(text).inputs) {
+        Parameter p;
+        p.name = input.name;
+        p.label = input.label;
+        if (input.type == "float")
+            p.type = ParameterType::Float;
+        else if (input.type == "long")
+            p.type = ParameterType::Int;
+        else if (input.type == "bool" || input.type == "event")
+            p.type = ParameterType::Bool;
+        else if (input.type == "color")
+            p.type = ParameterType::Vec4, p.color = true, p.defaultValue[3] = 1.0f;
+        else if (input.type == "point2D")
+            p.type = ParameterType::Vec2;
+        else
+            continue;
+        const int n = componentCount(p.type);
+        for (int k = 0; k < n && !input.value.empty(); ++k)
+            if (input.value.size() == 1 || std::size_t(k) < input.value.size())
+                p.defaultValue[std::size_t(k)] = float(input.value[input.value.size() == 1 ? 0 : std::size_t(k)]);
+        if (!input.low.empty() && !input.high.empty() && p.type != ParameterType::Bool && !p.color) {
+            p.minimum = float(*std::min_element(input.low.begin(), input.low.end()));
+            p.maximum = float(*std::max_element(input.high.begin(), input.high.end()));
+            if (!(*p.minimum < *p.maximum)) p.minimum.reset(), p.maximum.reset();
+        }
+        p.line = 1 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(input.nameOffset), '\n'));
+        p.column = 1 + int(input.nameOffset - (text.rfind('\n', input.nameOffset) + 1));
+        p.initializerOffset = input.valueLength ? input.valueOffset : 0;
+        p.initializerLength = input.valueLength;
+        p.syntax = Parameter::Syntax::Isf;
+        out.push_back(std::move(p));
+    }
+    return out;
+}
+
+} // namespace
+
 ParameterScan parseParameters(const std::string& text, const std::string& file) {
     const std::string stripped = stripComments(text);
     Scanner scanner{text, stripped, file, {}, {}};
     scanner.scan();
     scanner.applyPreset();
+    for (Parameter& p : isfParameters(text))
+        if (std::none_of(scanner.result.parameters.begin(), scanner.result.parameters.end(),
+                         [&](const Parameter& other) { return other.name == p.name; }))
+            scanner.result.parameters.push_back(std::move(p));
     return std::move(scanner.result);
 }
 

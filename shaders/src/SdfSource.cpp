@@ -444,6 +444,9 @@ std::string hostDescription(const std::string& host) {
         return "a Fragmentarium fragment: sliders and presets as parameters, its includes' names provided, init() run first";
     if (host == "a Shadertoy port") return "a Shadertoy port: its main() wrapper left out";
     if (host == "an old Shadertoy shader") return "an old Shadertoy shader: its iGlobalTime is iTime";
+    if (host == "ISF")
+        return "an ISF shader (VDMX, Resolume, editor.isf.video): its INPUTS as parameters, TIME and RENDERSIZE as "
+               "Shadertoy's inputs, main() as Shadertoy's mainImage";
     return (host.compare(0, 2, "a ") == 0 ? host + "'s" : "a " + host) +
            " shader: main() as Shadertoy's mainImage, its inputs as Shadertoy's";
 }

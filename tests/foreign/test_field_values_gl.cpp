@@ -39,6 +39,8 @@ float fieldValueAt(const shaders::PreparedSdf& sdf, glm::vec3 p, float time, glm
     job.count = 1;
     job.time = time;
     job.inputPoints = &p.x;
+    // The parameters' defaults, as the commands resolve them (a host's inputs have no initializer).
+    if (auto resolved = shaders::resolveParameters(sdf.parameters, {})) job.sdfParameters = resolved->settings;
     float position[3], distance = 0.0f, gradient[3];
     EXPECT_TRUE(sampling::sampleInto(compute, job, position, &distance, gradient, {}).hasValue());
     compute.releaseGl();
@@ -389,4 +391,24 @@ TEST_F(FieldParameters, AnOldShadertoysIGlobalTimeIsTheTime) {
         EXPECT_NEAR(fieldValueAt(old, {0.0f, 0.0f, 0.0f}, 1.0f), -0.5f - 0.2f * std::sin(1.0f), 1e-5f);
         EXPECT_NEAR(fieldValueAt(old, {0.0f, 0.0f, 0.0f}, 2.0f), -0.5f - 0.2f * std::sin(2.0f), 1e-5f);
     }
+}
+
+TEST_F(FieldParameters, AnIsfShadersInputsHaveTheirDefaultsAndTimeIsTheTime) {
+    // An ISF generator (VDMX, Resolume): its INPUTS are uniforms the host sets, its DEFAULTs what
+    // sdfwb sets when nothing else is given; TIME is the scene time.
+    const shaders::PreparedSdf isf = prepareText(
+        "ball.fs", "/*{\n  \"ISFVSN\": \"2\",\n  \"INPUTS\": [\n"
+                   "    { \"NAME\": \"radius\", \"TYPE\": \"float\", \"DEFAULT\": 0.6, \"MIN\": 0.1, \"MAX\": 1.0 },\n"
+                   "    { \"NAME\": \"offset\", \"TYPE\": \"point2D\", \"DEFAULT\": [0.25, 0.0] }\n"
+                   "  ]\n}*/\n"
+                   "float map(vec3 p) { return length(p - vec3(offset, 0.0)) - radius - 0.1 * sin(TIME); }\n"
+                   "void main() {\n"
+                   "    vec3 rd = normalize(vec3((2.0 * gl_FragCoord.xy - RENDERSIZE) / RENDERSIZE.y, -1.5));\n"
+                   "    float t = 0.0;\n"
+                   "    for (int i = 0; i < 64; i++) t += map(vec3(0.0, 0.0, 3.0) + rd * t);\n"
+                   "    gl_FragColor = vec4(vec3(t * 0.1), 1.0);\n}\n");
+    ASSERT_TRUE(isf.ok()) << firstError(isf);
+    EXPECT_EQ(isf.host, "ISF");
+    EXPECT_NEAR(fieldValueAt(isf, {0.25f, 0.0f, 0.0f}, 0.0f), -0.6f, 1e-5f);
+    EXPECT_NEAR(fieldValueAt(isf, {0.25f, 0.0f, 0.0f}, 1.0f), -0.6f - 0.1f * std::sin(1.0f), 1e-5f);
 }

@@ -397,3 +397,84 @@ TEST(ForeignHosts, FragmentariumsUndeclaredOrbitTrapsAreProvided) {
     EXPECT_EQ(sdf.source.text.find("float kept = 10000.0"), std::string::npos) << "kept is the fragment's own";
     EXPECT_EQ(compileErrors(sdf), "");
 }
+
+// An ISF shader as VDMX, Resolume or editor.isf.video run it (and as its public collections write
+// them, often converted from Shadertoy): a JSON header whose INPUTS the host declares, TIME and
+// RENDERSIZE, gl_FragColor in main(). Its value inputs are parameters (range, label, colour), an image
+// input a sampler, the built-ins Shadertoy's; saved defaults go into the header's DEFAULTs as JSON.
+TEST(ForeignHosts, AnIsfShadersInputsAreParametersAndItsBuiltinsShadertoys) {
+    const std::string text =
+        "/*\n{\n  \"CATEGORIES\" : [ \"Generator\" ],\n  \"ISFVSN\": \"2\",\n  \"INPUTS\" : [\n"
+        "    { \"NAME\": \"boxSize\", \"LABEL\": \"Box Size\", \"TYPE\": \"float\", \"DEFAULT\": 0.5,"
+        " \"MIN\": 0.1, \"MAX\": 2 },\n"
+        "    { \"NAME\": \"tint\", \"TYPE\": \"color\", \"DEFAULT\": [0.5, 0.4, 0.6, 1] },\n"
+        "    { \"NAME\": \"hollow\", \"TYPE\": \"bool\", \"DEFAULT\": false },\n"
+        "    { \"NAME\": \"steps\", \"TYPE\": \"long\", \"VALUES\": [16, 32, 64], \"LABELS\": [\"a\", "
+        "\"b\", \"c\"], \"DEFAULT\": 32 },\n"
+        "    { \"NAME\": \"centre\", \"TYPE\": \"point2D\", \"DEFAULT\": [0, 0], \"MIN\": [-1, -2], \"MAX\": [1, 2] },\n"
+        "    { \"NAME\": \"inputImage\", \"TYPE\": \"image\" },\n"
+        "    { \"NAME\": \"spin\", \"TYPE\": \"float\" },\n"
+        "  ]\n}\n*/\n"
+        "float sdBox(vec3 p, vec3 b) { vec3 q = abs(p) - b; return length(max(q, 0.0)) + min(max(q.x, "
+        "max(q.y, q.z)), 0.0); }\n"
+        "float scene(vec3 p) { float d = sdBox(p, vec3(boxSize)) + 0.1 * sin(TIME); return hollow ? abs(d) "
+        ": d; }\n"
+        "void main() {\n"
+        "    vec2 uv = (2.0 * gl_FragCoord.xy - RENDERSIZE) / RENDERSIZE.y + centre;\n"
+        "    vec3 ro = vec3(0.0, 0.0, 3.0), rd = normalize(vec3(uv, -1.5));\n"
+        "    float t = 0.0;\n"
+        "    for (int i = 0; i < steps; i++) { float d = scene(ro + rd * t); if (d < 0.001) break; t += d; }\n"
+        "    gl_FragColor = vec4(tint.rgb * t * 0.1, 1.0) + 0.0 * IMG_NORM_PIXEL(inputImage, "
+        "isf_FragNormCoord);\n}\n";
+    ParameterScan scan = parseParameters(text, "box.fs");
+    EXPECT_TRUE(scan.diagnostics.empty()) << errors(scan.diagnostics);
+    ASSERT_EQ(scan.parameters.size(), 6u) << "the image input is no parameter";
+    const Parameter* size = find(scan.parameters, "boxSize");
+    ASSERT_NE(size, nullptr);
+    EXPECT_EQ(size->type, ParameterType::Float);
+    EXPECT_EQ(size->defaultValue[0], 0.5f);
+    EXPECT_EQ(size->minimum, 0.1f);
+    EXPECT_EQ(size->maximum, 2.0f);
+    EXPECT_EQ(size->label, "Box Size");
+    EXPECT_EQ(size->line, 6);
+    EXPECT_EQ(size->syntax, Parameter::Syntax::Isf);
+    const Parameter* tint = find(scan.parameters, "tint");
+    ASSERT_NE(tint, nullptr);
+    EXPECT_TRUE(tint->color);
+    EXPECT_EQ(tint->defaultValue, (std::array<float, 4>{0.5f, 0.4f, 0.6f, 1.0f}));
+    const Parameter* steps = find(scan.parameters, "steps");
+    ASSERT_NE(steps, nullptr);
+    EXPECT_EQ(steps->type, ParameterType::Int);
+    EXPECT_EQ(steps->minimum, 16.0f) << "a long's VALUES give its range";
+    EXPECT_EQ(steps->maximum, 64.0f);
+    const Parameter* centre = find(scan.parameters, "centre");
+    ASSERT_NE(centre, nullptr);
+    EXPECT_EQ(centre->type, ParameterType::Vec2);
+    EXPECT_EQ(centre->minimum, -2.0f) << "a point2D's widest range";
+    EXPECT_EQ(find(scan.parameters, "hollow")->type, ParameterType::Bool);
+
+    const PreparedSdf sdf = prepare(text, "box.fs");
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.host, "ISF");
+    EXPECT_EQ(sdf.signature.entry, "scene");
+    EXPECT_EQ(rootLines(sdf), lines(text)) << "every line keeps its number";
+    EXPECT_NE(sdf.source.text.find("uniform float boxSize;"), std::string::npos);
+    EXPECT_NE(sdf.source.text.find("uniform sampler2D inputImage;"), std::string::npos);
+    EXPECT_NE(sdf.source.text.find("sin(iTime)"), std::string::npos);
+    EXPECT_EQ(compileErrors(sdf), "");
+
+    // Saved defaults: JSON in the header, read back; an input without DEFAULT is left out.
+    const std::string saved = withDefaults(text, scan.parameters,
+                                           {{"boxSize", ParameterType::Float, {0.75f, 0, 0, 0}},
+                                            {"tint", ParameterType::Vec4, {1, 0.5f, 0.25f, 1}},
+                                            {"hollow", ParameterType::Bool, {1, 0, 0, 0}},
+                                            {"spin", ParameterType::Float, {3, 0, 0, 0}}});
+    EXPECT_NE(saved.find("\"DEFAULT\": 0.75,"), std::string::npos) << saved;
+    EXPECT_NE(saved.find("\"DEFAULT\": [1, 0.5, 0.25, 1]"), std::string::npos) << saved;
+    EXPECT_NE(saved.find("\"DEFAULT\": true"), std::string::npos) << saved;
+    EXPECT_EQ(lines(saved), lines(text));
+    const ParameterScan again = parseParameters(saved, "box.fs");
+    EXPECT_EQ(find(again.parameters, "boxSize")->defaultValue[0], 0.75f);
+    EXPECT_EQ(find(again.parameters, "hollow")->defaultValue[0], 1.0f);
+    EXPECT_EQ(find(again.parameters, "spin")->defaultValue[0], 0.0f);
+}

@@ -10,7 +10,8 @@
 //     uniform float scale  = 1.0;            // @range 0.01 100 @log
 // Only file-scope `uniform` declarations with an initializer (or with annotations, which then
 // need one) are parameters, and uniforms with Fragmentarium's annotations (slider[MIN,DEFAULT,MAX],
-// checkbox[BOOL], color[R,G,B]; its `#preset Default` block sets defaults too). One parser, pure
+// checkbox[BOOL], color[R,G,B]; its `#preset Default` block sets defaults too), and an ISF
+// shader's JSON INPUTS (float, long, bool, event, color, point2D). One parser, pure
 // (no GL, no I/O); problems are diagnostics with the file, line and column.
 
 #include <core/Expected.h>
@@ -48,8 +49,9 @@ struct Parameter {
     // How the default is written there: a GLSL initializer, or Fragmentarium's annotation after
     // the declaration (`uniform float Scale; slider[-3,3,5]`: the middle value, vectors as
     // `(x,y,z)`) or a line of its `#preset Default` block (`Scale = 2.5`, vectors as `x,y,z`),
-    // which overrides the slider.
-    enum class Syntax : std::uint8_t { Glsl, FragmentariumSlider, FragmentariumPreset };
+    // which overrides the slider), or an ISF header's INPUTS entry (its DEFAULT, JSON: `0.5`,
+    // `[0.5, 0.5]`, `true`; none: the initializer's length is 0 and saving leaves it out).
+    enum class Syntax : std::uint8_t { Glsl, FragmentariumSlider, FragmentariumPreset, Isf };
     Syntax syntax = Syntax::Glsl;
 };
 
