@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 
 namespace sdfwb::shaders::detail {
@@ -13,8 +14,9 @@ struct Value {
     enum class Kind { Null, Bool, Number, String, Array, Object } kind = Kind::Null;
     double number = 0.0;
     std::string string;
-    std::vector<Value> items;                           // an array's
-    std::vector<std::pair<std::string, Value>> members; // an object's, in order
+    std::vector<Value> items;      // an array's
+    std::vector<std::string> keys; // an object's members, in order: their keys and values
+    std::vector<Value> members;
     std::size_t offset = 0, length = 0;
     std::size_t keyOffset = 0; // of the key naming this member's value
 };
@@ -43,7 +45,8 @@ public:
                 Value member;
                 if (!value(member, depth + 1)) return false;
                 member.keyOffset = key.offset;
-                out.members.emplace_back(key.string, std::move(member));
+                out.keys.push_back(key.string);
+                out.members.push_back(std::move(member));
                 skip();
                 if (m_at < m_end && m_text[m_at] == ',')
                     ++m_at; // a comma before `}` too
@@ -73,10 +76,11 @@ public:
             out.kind = m_text[out.offset] == 'n' ? Value::Kind::Null : Value::Kind::Bool;
             out.number = m_text[out.offset] == 't' ? 1.0 : 0.0;
         } else {
+            if (c != '-' && !std::isdigit(static_cast<unsigned char>(c))) return false; // JSON's numbers only
             char* stop = nullptr;
             const std::string digits = m_text.substr(m_at, std::min<std::size_t>(64, m_end - m_at));
             out.number = std::strtod(digits.c_str(), &stop);
-            if (stop == digits.c_str()) return false;
+            if (stop == digits.c_str() || !std::isfinite(out.number)) return false;
             out.kind = Value::Kind::Number;
             m_at += std::size_t(stop - digits.c_str());
         }
@@ -113,8 +117,8 @@ private:
 };
 
 const Value* member(const Value& object, const std::string& key) {
-    for (const auto& [name, value] : object.members)
-        if (name == key) return &value;
+    for (std::size_t i = 0; i < object.keys.size(); ++i)
+        if (object.keys[i] == key) return &object.members[i];
     return nullptr;
 }
 
@@ -126,6 +130,14 @@ std::vector<double> numbers(const Value* value) {
         for (const Value& item : value->items)
             if (item.kind == Value::Kind::Number || item.kind == Value::Kind::Bool) out.push_back(item.number);
     return out;
+}
+
+// A GLSL identifier (a NAME the host declares as a uniform).
+bool identifier(const std::string& name) {
+    if (name.empty() || name.size() > 64 || std::isdigit(static_cast<unsigned char>(name[0]))) return false;
+    for (char c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+    return true;
 }
 
 } // namespace
@@ -150,7 +162,7 @@ IsfHeader readIsfHeader(const std::string& text) {
     for (const Value& item : inputs->items) {
         const Value* name = member(item, "NAME");
         const Value* type = member(item, "TYPE");
-        if (!name || !type || name->kind != Value::Kind::String || type->kind != Value::Kind::String || name->string.empty())
+        if (!name || !type || name->kind != Value::Kind::String || type->kind != Value::Kind::String || !identifier(name->string))
             continue;
         IsfInput input;
         input.name = name->string, input.type = type->string;

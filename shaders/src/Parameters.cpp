@@ -582,10 +582,17 @@ std::vector<Parameter> isfParameters(const std::string& text) {
         for (int k = 0; k < n && !input.value.empty(); ++k)
             if (input.value.size() == 1 || std::size_t(k) < input.value.size())
                 p.defaultValue[std::size_t(k)] = float(input.value[input.value.size() == 1 ? 0 : std::size_t(k)]);
+        for (float& v : p.defaultValue)
+            if (!std::isfinite(v)) v = 0.0f; // a double beyond a float's range
+        // As saving writes them back: a long's default a whole number, a bool's true or false.
+        if (p.type == ParameterType::Int)
+            p.defaultValue[0] = std::abs(p.defaultValue[0]) < 1e9f ? std::trunc(p.defaultValue[0]) : 0.0f;
+        if (p.type == ParameterType::Bool) p.defaultValue[0] = p.defaultValue[0] != 0.0f ? 1.0f : 0.0f;
         if (!input.low.empty() && !input.high.empty() && p.type != ParameterType::Bool && !p.color) {
             p.minimum = float(*std::min_element(input.low.begin(), input.low.end()));
             p.maximum = float(*std::max_element(input.high.begin(), input.high.end()));
-            if (!(*p.minimum < *p.maximum)) p.minimum.reset(), p.maximum.reset();
+            if (!(*p.minimum < *p.maximum) || !std::isfinite(*p.minimum) || !std::isfinite(*p.maximum))
+                p.minimum.reset(), p.maximum.reset();
         }
         p.line = 1 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(input.nameOffset), '\n'));
         p.column = 1 + int(input.nameOffset - (text.rfind('\n', input.nameOffset) + 1));
