@@ -116,6 +116,13 @@ std::string formatted(const char* format, double a, double b, double c) {
     return text;
 }
 
+// The plane a floor lies in (SurfaceBox::onFloor), as messages name it: "y = 0".
+std::string floorText(const sampling::SurfaceBox& box) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%c = %.4g", "xyz"[box.floorAxis], double(box.floorAt));
+    return text;
+}
+
 } // namespace
 
 bool isFrameBox(const std::string& normalize) { return normalize.find(',') != std::string::npos; }
@@ -160,13 +167,12 @@ std::optional<JobError> frameField(shaders::PreparedSdf& sdf, const std::string&
         frame.scale = halfSide(box);
         if (normalize == "unit-sphere") frame.scale = box.radius;
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        log::info(what, label + ": the surface lies in [" + formatted("%.4g, %.4g, %.4g", box.low[0], box.low[1], box.low[2]) +
-                            "] - [" + formatted("%.4g, %.4g, %.4g", box.high[0], box.high[1], box.high[2]) + "] (" +
-                            std::to_string(box.points) + " crossings of a 40^3 lattice over [-" +
-                            formatted("%g, %g]^3, %.2f s)", box.searched, box.searched, seconds) +
-                            (box.onFloor ? ": what stands on the plane " + std::string(1, "xyz"[box.floorAxis]) + " = " +
-                                               formatted("%.4g", box.floorAt, 0.0, 0.0) + " that [-1, 1]^3 holds alone"
-                                         : std::string()));
+        log::info(
+            what,
+            label + ": the surface lies in [" + formatted("%.4g, %.4g, %.4g", box.low[0], box.low[1], box.low[2]) + "] - [" +
+                formatted("%.4g, %.4g, %.4g", box.high[0], box.high[1], box.high[2]) + "] (" + std::to_string(box.points) +
+                " crossings of a 40^3 lattice over [-" + formatted("%g, %g]^3, %.2f s)", box.searched, box.searched, seconds) +
+                (box.onFloor ? ": what stands on the plane " + floorText(box) + " that [-1, 1]^3 holds alone" : std::string()));
     }
     sdf.frame = frame;
     char line[200];
@@ -191,7 +197,7 @@ PastedView decidePastedView(const shaders::PreparedSdf& sdf, const std::vector<s
             for (std::size_t a = 0; a < 3; ++a) view.cut = view.cut && box.low[a] < 1.0f && box.high[a] > -1.0f;
         } else if (box.onFloor) { // [-1, 1]^3 holds only the floor the scene stands on
             view.box = boxText(framedPart(box));
-            view.floor = std::string(1, "xyz"[box.floorAxis]) + " = " + formatted("%.4g", box.floorAt, 0.0, 0.0);
+            view.floor = floorText(box);
         }
     } else if (range.finite > 0) {
         view.noSurface = noSurfaceText(range, sdf);

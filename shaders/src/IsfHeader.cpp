@@ -18,7 +18,6 @@ struct Value {
     std::vector<std::string> keys; // an object's members, in order: their keys and values
     std::vector<Value> members;
     std::size_t offset = 0, length = 0;
-    std::size_t keyOffset = 0; // of the key naming this member's value
 };
 
 class Reader {
@@ -30,7 +29,6 @@ public:
         if (m_at >= m_end || depth > 32) return false;
         out.offset = m_at;
         const char c = m_text[m_at];
-        bool ok = true;
         if (c == '{') {
             out.kind = Value::Kind::Object;
             ++m_at;
@@ -44,7 +42,6 @@ public:
                 ++m_at;
                 Value member;
                 if (!value(member, depth + 1)) return false;
-                member.keyOffset = key.offset;
                 out.keys.push_back(key.string);
                 out.members.push_back(std::move(member));
                 skip();
@@ -71,7 +68,7 @@ public:
             }
             ++m_at;
         } else if (c == '"') {
-            ok = string(out);
+            return string(out);
         } else if (word("true") || word("false") || word("null")) {
             out.kind = m_text[out.offset] == 'n' ? Value::Kind::Null : Value::Kind::Bool;
             out.number = m_text[out.offset] == 't' ? 1.0 : 0.0;
@@ -85,7 +82,7 @@ public:
             m_at += std::size_t(stop - digits.c_str());
         }
         out.length = m_at - out.offset;
-        return ok;
+        return true;
     }
 
 private:

@@ -3,7 +3,9 @@
 // editor.isf.video): the first comment of the file, `/*{ "ISFVSN": "2", "INPUTS": [...] }*/`, whose
 // INPUTS the host declares as uniforms. Read leniently (a comma too many, comments before it) with
 // each value's place in the text, for Parameters.cpp (inputs as parameters) and ForeignHosts.cpp
-// (their declarations). Private to shaders/.
+// (their declarations). Its own reader rather than nlohmann-json: saving a parameter's default
+// rewrites DEFAULT in place, which needs each value's offset, and ISF headers in the wild carry
+// trailing commas Debian's nlohmann-json (3.11) refuses. Private to shaders/.
 
 #include <cstddef>
 #include <string>
