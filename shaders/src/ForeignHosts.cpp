@@ -625,6 +625,88 @@ void adaptOldShadertoy(const Code& code, std::vector<Edit>& edits, HostAdaptatio
     if (renamed) out.host = "an old Shadertoy shader";
 }
 
+// Where declarations for a directive inside a function at `at` go (the VS Code extension hoists its
+// uniforms): before that function, after the `;` or `}` that ends what comes before it at file
+// scope, else at the first line that is not a directive.
+std::size_t fileScopeBefore(const Code& code, std::size_t at) {
+    for (std::size_t p = at; p-- > 0;)
+        if ((code.stripped[p] == ';' || code.stripped[p] == '}') && code.depth[p + 1] == 0 && !code.inDirective(p)) return p + 1;
+    for (std::size_t start = 0; start < at;) {
+        const std::size_t first = code.stripped.find_first_not_of(" \t\r\n", start);
+        if (first >= at || code.stripped[first] != '#') return first >= at ? at : first;
+        start = std::min(code.stripped.find('\n', first), code.stripped.size());
+    }
+    return at;
+}
+
+// The VS Code Shader Toy extension (stevensona.shader-toy): its directives blanked (`#iChannel0
+// "file://..."` and its `::` settings, #iKeyboard, #iFirstPersonControls, #StrictCompatibility,
+// #iVertex) and its `#iUniform TYPE NAME = VALUE in {MIN, MAX}` declared as uniforms (parameters,
+// Parameters.cpp); #iKeyboard's functions answer no key, iViewMatrix (its fly camera) is the
+// identity it starts as, and its iGlobalTime is iTime.
+void adaptVscodeShaderToy(const Code& code, std::vector<Edit>& edits, HostAdaptation& out) {
+    const std::string& text = code.original;
+    std::map<std::size_t, std::string> declared; // at an offset, declarations
+    std::size_t firstPlace = std::string::npos;
+    bool keyboard = false;
+    for (std::size_t start = 0; start < code.stripped.size();) {
+        const std::size_t stop = std::min(code.stripped.find('\n', start), code.stripped.size());
+        const std::size_t hash = code.stripped.find_first_not_of(" \t", start);
+        if (hash < stop && code.stripped[hash] == '#') {
+            std::size_t k = code.skipSpace(hash + 1);
+            const std::string word = code.wordAt(k);
+            const bool channel = word.rfind("iChannel", 0) == 0 && word.size() > 8 &&
+                                 std::all_of(word.begin() + 8, word.end(), [](char c) { return c >= '0' && c <= '9'; });
+            if (channel || word == "iKeyboard" || word == "iFirstPersonControls" || word == "StrictCompatibility" ||
+                word == "iVertex" || word == "iUniform") {
+                // After the blanked line at file scope (an insertion at its start would be dropped).
+                const std::size_t place = code.depth[hash] == 0 ? stop : fileScopeBefore(code, hash);
+                firstPlace = std::min(firstPlace, place);
+                edits.push_back(blank(text, hash, stop - hash));
+                keyboard = keyboard || word == "iKeyboard";
+                k = code.skipSpace(k);
+                std::string type = code.wordAt(k);
+                k = code.skipSpace(k);
+                const std::string name = code.wordAt(k);
+                if (type == "color3") type = "vec3";
+                if (type == "color4") type = "vec4";
+                if (word == "iUniform" && !name.empty() && !type.empty())
+                    declared[place] += "uniform " + type + " " + name + "; ";
+            }
+        }
+        start = stop + 1;
+    }
+    if (firstPlace == std::string::npos) return;
+    std::string provided;
+    if (keyboard) {
+        provided += "bool isKeyPressed(int k) { return false; } bool isKeyReleased(int k) { return false; } "
+                    "bool isKeyDown(int k) { return false; } bool isKeyToggled(int k) { return false; } ";
+        std::set<std::string> keys;
+        forEachIdentifier(code.stripped, [&](std::size_t at, std::size_t end) {
+            const std::string word = code.stripped.substr(at, end - at);
+            if (word.rfind("Key_", 0) == 0 && word.size() > 4 && keys.insert(word).second) {
+                static const std::map<std::string, int> named{
+                    {"Backspace", 8}, {"Tab", 9},    {"Enter", 13},     {"Shift", 16},   {"Ctrl", 17},       {"Alt", 18},
+                    {"Escape", 27},   {"Space", 32}, {"LeftArrow", 37}, {"UpArrow", 38}, {"RightArrow", 39}, {"DownArrow", 40}};
+                const std::string key = word.substr(4);
+                const int value = key.size() == 1 ? int(std::toupper(static_cast<unsigned char>(key[0])))
+                                                  : (named.count(key) ? named.at(key) : 0);
+                provided += "const int " + word + " = " + std::to_string(value) + "; ";
+            }
+            return true;
+        });
+    }
+    bool viewMatrixDeclared = false;
+    for (const Declaration& d : fileScopeDeclarations(code, {"uniform"})) viewMatrixDeclared |= d.name == "iViewMatrix";
+    if (!viewMatrixDeclared && !code.occurrences("iViewMatrix").empty()) provided += "const mat4 iViewMatrix = mat4(1.0); ";
+    if (!code.occurrences("iMouseButton").empty()) provided += "const vec2 iMouseButton = vec2(0.0); ";
+    if (!provided.empty()) declared[firstPlace] += provided;
+    for (const auto& [at, text] : declared) edits.push_back({at, 0, text});
+    for (std::size_t at : code.occurrences("iGlobalTime"))
+        if (at == 0 || code.stripped[at - 1] != '.') edits.push_back({at, 11, "iTime"});
+    out.host = "the VS Code Shader Toy extension";
+}
+
 } // namespace
 
 HostAdaptation adaptForeignHost(const std::string& text, const std::vector<Parameter>& parameters) {
@@ -634,6 +716,7 @@ HostAdaptation adaptForeignHost(const std::string& text, const std::vector<Param
     adaptFragmentarium(code, parameters, edits, out);
     adaptMain(code, edits, out);
     adaptIsf(code, edits, out);
+    adaptVscodeShaderToy(code, edits, out);
     adaptOldShadertoy(code, edits, out);
     out.text = edits.empty() ? text : applyEdits(text, std::move(edits));
     return out;

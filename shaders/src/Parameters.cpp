@@ -4,6 +4,8 @@
 
 #include <shaders/SdfSource.h>
 
+#include <core/Regex.h>
+
 #include "IsfHeader.h"
 #include "ParameterText.h"
 
@@ -13,6 +15,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <map>
+#include <regex>
 
 namespace sdfwb::shaders {
 
@@ -604,6 +608,75 @@ std::vector<Parameter> isfParameters(const std::string& text) {
     return out;
 }
 
+// The VS Code Shader Toy extension's `#iUniform TYPE NAME = VALUE [in { MIN, MAX }] [step S]` lines
+// (ForeignHosts.cpp declares the uniforms): float, int, vec2-4 and its colours color3/color4. VALUE
+// is a number or a constructor, one argument filling every component; saving rewrites it as GLSL.
+std::vector<Parameter> vscodeParameters(const std::string& text) {
+    static const std::regex directive(R"(^[ \t]*#[ \t]*iUniform[ \t]+(\w+)[ \t]+(\w+)[ \t]*=[ \t]*)", kLinearRegex);
+    static const std::regex range(R"([ \t]in[ \t]*\{([^}]*)\})", kLinearRegex);
+    static const std::regex step(R"([ \t]step[ \t]+([^ \t;\r]+))", kLinearRegex);
+    static const std::map<std::string, std::pair<ParameterType, bool>, std::less<>> types{
+        {"float", {ParameterType::Float, false}}, {"int", {ParameterType::Int, false}},   {"vec2", {ParameterType::Vec2, false}},
+        {"vec3", {ParameterType::Vec3, false}},   {"vec4", {ParameterType::Vec4, false}}, {"color3", {ParameterType::Vec3, true}},
+        {"color4", {ParameterType::Vec4, true}}};
+    auto numbers = [](std::string list) {
+        std::vector<float> out;
+        for (std::size_t start = 0; start <= list.size();) {
+            std::size_t stop = std::min(list.find(',', start), list.size());
+            std::string piece = list.substr(start, stop - start);
+            piece.erase(0, piece.find_first_not_of(" \t"));
+            piece.erase(piece.find_last_not_of(" \t") + 1);
+            char* end = nullptr;
+            const float v = std::strtof(piece.c_str(), &end);
+            if (piece.empty() || end != piece.c_str() + piece.size() || !std::isfinite(v)) return std::vector<float>{};
+            out.push_back(v);
+            start = stop + 1;
+        }
+        return out;
+    };
+    const std::string stripped = stripComments(text);
+    std::vector<Parameter> out;
+    for (std::size_t lineStart = 0, lineNumber = 1; lineStart < stripped.size(); ++lineNumber) {
+        const std::size_t lineEnd = std::min(stripped.find('\n', lineStart), stripped.size());
+        const std::string line = stripped.substr(lineStart, lineEnd - lineStart);
+        std::smatch match;
+        auto type = types.end();
+        if (line.find("iUniform") != std::string::npos && std::regex_search(line, match, directive) &&
+            (type = types.find(match[1].str())) != types.end()) {
+            Parameter p;
+            p.name = match[2].str();
+            p.type = type->second.first;
+            p.color = type->second.second;
+            p.line = int(lineNumber);
+            p.column = 1 + int(match.position(2));
+            // VALUE runs to ` in {`, ` step` or the line's end (a `;` and spaces left out).
+            const std::string rest = match.suffix().str();
+            std::smatch inRange, inStep;
+            const bool hasRange = std::regex_search(rest, inRange, range), hasStep = std::regex_search(rest, inStep, step);
+            std::size_t valueEnd = std::min(hasRange ? std::size_t(inRange.position(0)) : rest.size(),
+                                            hasStep ? std::size_t(inStep.position(0)) : rest.size());
+            while (valueEnd > 0 && std::strchr(" \t;\r", rest[valueEnd - 1])) --valueEnd;
+            std::string value = rest.substr(0, valueEnd);
+            p.initializerOffset = lineStart + std::size_t(match.length(0));
+            p.initializerLength = valueEnd;
+            const std::size_t open = value.find('('), close = value.rfind(')');
+            if (open != std::string::npos && close == value.size() - 1) value = value.substr(open + 1, close - open - 1);
+            const std::vector<float> given = numbers(value);
+            for (int k = 0; k < componentCount(p.type) && !given.empty(); ++k)
+                p.defaultValue[std::size_t(k)] = given[std::min(std::size_t(k), given.size() - 1)];
+            if (p.type == ParameterType::Int) p.defaultValue[0] = std::trunc(p.defaultValue[0]);
+            if (const std::vector<float> bounds = numbers(hasRange ? inRange[1].str() : "");
+                bounds.size() == 2 && bounds[0] < bounds[1])
+                p.minimum = bounds[0], p.maximum = bounds[1];
+            if (const std::vector<float> by = numbers(hasStep ? inStep[1].str() : ""); by.size() == 1 && by[0] > 0.0f)
+                p.step = by[0];
+            out.push_back(std::move(p));
+        }
+        lineStart = lineEnd + 1;
+    }
+    return out;
+}
+
 } // namespace
 
 ParameterScan parseParameters(const std::string& text, const std::string& file) {
@@ -611,7 +684,9 @@ ParameterScan parseParameters(const std::string& text, const std::string& file) 
     Scanner scanner{text, stripped, file, {}, {}};
     scanner.scan();
     scanner.applyPreset();
-    for (Parameter& p : isfParameters(text))
+    std::vector<Parameter> hosts = isfParameters(text);
+    for (Parameter& p : vscodeParameters(text)) hosts.push_back(std::move(p));
+    for (Parameter& p : hosts)
         if (std::none_of(scanner.result.parameters.begin(), scanner.result.parameters.end(),
                          [&](const Parameter& other) { return other.name == p.name; }))
             scanner.result.parameters.push_back(std::move(p));

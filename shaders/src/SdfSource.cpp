@@ -48,6 +48,51 @@ bool matchAt(const std::string& text, std::size_t at, const std::regex& pattern,
     return std::regex_search(text.begin() + std::ptrdiff_t(at), text.end(), match, pattern, flags);
 }
 
+// Shrunk and golfed code names its types through macros (GLSL Shader Shrinker's `#define v3 vec3`,
+// `#define _f float`). The text analyses that read a definition's types (the entry's signature, the
+// march's field, mainImage's form) read `stripped` with those names expanded. Directive lines are
+// kept as they are; every line keeps its number (only its columns move).
+std::string expandTypeAliases(const std::string& stripped) {
+    static const std::regex builtinType(R"((?:float|double|int|uint|bool|[biud]?vec[234]|d?mat[234](?:x[234])?))", kLinearRegex);
+    std::map<std::string, std::string, std::less<>> aliases;
+    for (const MacroDirective& d : macroDirectives(stripped)) {
+        if (d.undefine) continue;
+        const std::size_t nameEnd = d.offset + d.name.size();
+        const std::size_t lineEnd = std::min(stripped.find('\n', nameEnd), stripped.size());
+        if (nameEnd < lineEnd && stripped[nameEnd] == '(') continue; // a function-like macro
+        const std::size_t body = stripped.find_first_not_of(" \t", nameEnd);
+        if (body >= lineEnd) continue;
+        std::size_t bodyEnd = stripped.find_last_not_of(" \t\r", lineEnd - 1) + 1;
+        const std::string type = stripped.substr(body, bodyEnd - body);
+        if (std::regex_match(type, builtinType)) aliases.emplace(d.name, type);
+    }
+    if (aliases.empty()) return stripped;
+    std::string out;
+    out.reserve(stripped.size() + stripped.size() / 8);
+    std::size_t copied = 0;
+    for (std::size_t lineStart = 0; lineStart < stripped.size();) {
+        const std::size_t lineEnd = std::min(stripped.find('\n', lineStart), stripped.size());
+        const std::size_t first = stripped.find_first_not_of(" \t", lineStart);
+        for (std::size_t at = lineStart; at < lineEnd && !(first < lineEnd && stripped[first] == '#');) {
+            std::size_t end = at;
+            while (end < lineEnd && isWordCharacter(stripped[end])) ++end;
+            if (end == at) {
+                ++at;
+                continue;
+            }
+            if (auto alias = aliases.find(std::string_view(stripped).substr(at, end - at)); alias != aliases.end()) {
+                out.append(stripped, copied, at - copied);
+                out += alias->second;
+                copied = end;
+            }
+            at = end;
+        }
+        lineStart = lineEnd + 1;
+    }
+    out.append(stripped, copied, std::string::npos);
+    return out;
+}
+
 } // namespace
 
 bool isWordCharacter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; }
@@ -447,6 +492,9 @@ std::string hostDescription(const std::string& host) {
     if (host == "ISF")
         return "an ISF shader (VDMX, Resolume, editor.isf.video): its INPUTS as parameters, TIME and RENDERSIZE as "
                "Shadertoy's inputs, main() as Shadertoy's mainImage";
+    if (host == "the VS Code Shader Toy extension")
+        return "a shader of the VS Code Shader Toy extension: its #iUniform lines as parameters, its #iChannel and "
+               "#iKeyboard lines left out (channels read the empty unit, no key is down), iViewMatrix the identity";
     return (host.compare(0, 2, "a ") == 0 ? host + "'s" : "a " + host) +
            " shader: main() as Shadertoy's mainImage, its inputs as Shadertoy's";
 }
@@ -463,7 +511,7 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
     for (Diagnostic& d : checkSourceFiles(prepared.source)) prepared.diagnostics.push_back(std::move(d));
     prepared.parameters = std::move(parameters.parameters);
     for (Diagnostic& d : parameters.diagnostics) prepared.diagnostics.push_back(std::move(d));
-    std::string stripped = stripComments(prepared.source.text);
+    std::string stripped = expandTypeAliases(stripComments(prepared.source.text));
     prepared.compat = detectCompatNeeds(stripped);
     prepared.macros = definedMacros(stripped);
     chooseCubeChannels(prepared);

@@ -412,3 +412,25 @@ TEST_F(FieldParameters, AnIsfShadersInputsHaveTheirDefaultsAndTimeIsTheTime) {
     EXPECT_NEAR(fieldValueAt(isf, {0.25f, 0.0f, 0.0f}, 0.0f), -0.6f, 1e-5f);
     EXPECT_NEAR(fieldValueAt(isf, {0.25f, 0.0f, 0.0f}, 1.0f), -0.6f - 0.1f * std::sin(1.0f), 1e-5f);
 }
+
+TEST_F(FieldParameters, TheVscodeExtensionsUniformsHaveTheirDefaultsAlsoWhenDeclaredInAFunction) {
+    // The VS Code Shader Toy extension: `#iUniform` values are what sdfwb sets when nothing else is
+    // given, one declared inside the field too; iGlobalTime is the scene time.
+    const shaders::PreparedSdf ball =
+        prepareText("ball.glsl", "#iChannel0 \"file://noise.png\"\n"
+                                 "#iUniform float radius = 0.6 in { 0.1, 1.0 }\n"
+                                 "#iUniform vec2 offset = vec2(0.25, 0.0)\n"
+                                 "float map(vec3 p) {\n"
+                                 "    #iUniform float wobble = 0.1 in { 0.0, 1.0 } step 0.01\n"
+                                 "    return length(p - vec3(offset, 0.0)) - radius - wobble * sin(iGlobalTime);\n"
+                                 "}\n"
+                                 "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                                 "    vec3 rd = normalize(vec3((2.0 * fragCoord - iResolution.xy) / iResolution.y, -1.5));\n"
+                                 "    float t = 0.0;\n"
+                                 "    for (int i = 0; i < 64; i++) t += map(vec3(0.0, 0.0, 3.0) + rd * t);\n"
+                                 "    fragColor = vec4(vec3(t * 0.1), 1.0);\n}\n");
+    ASSERT_TRUE(ball.ok()) << firstError(ball);
+    EXPECT_EQ(ball.host, "the VS Code Shader Toy extension");
+    EXPECT_NEAR(fieldValueAt(ball, {0.25f, 0.0f, 0.0f}, 0.0f), -0.6f, 1e-5f);
+    EXPECT_NEAR(fieldValueAt(ball, {0.25f, 0.0f, 0.0f}, 1.0f), -0.6f - 0.1f * std::sin(1.0f), 1e-5f);
+}

@@ -999,3 +999,58 @@ TEST(EntryPoint, AFloatAfterThePointNotNamedAsTheTimeIsWarnedAbout) {
     EXPECT_TRUE(std::none_of(timed.diagnostics.begin(), timed.diagnostics.end(),
                              [](const Diagnostic& d) { return d.severity == Severity::Warning; }));
 }
+
+// Shrunk and golfed code (GLSL Shader Shrinker's output) names its types through macros: the march's
+// field is found through them, a struct's and a vec2's, and the reason keeps the file's line. A
+// macro whose body is not one type (a colour, a function-like macro) is left as it is.
+TEST(EntryPoint, TypesNamedThroughMacrosAreReadAsTheirTypes) {
+    const std::string head =
+        "#define v3\tvec3\n#define v2 vec2\n#define _f  float\n#define W v3(.6, .8, .9)\n"
+        "#define R(a) mat2(cos(a), sin(a), -sin(a), cos(a))\n"
+        "_f box(v3 p, v3 r) { p = abs(p) - r; return length(max(p, 0.)) + min(max(p.x, max(p.y, p.z)), 0.); }\n";
+    const std::string march = "void mainImage(out vec4 o, v2 w) {\n"
+                              "    v2 uv = (w - .5 * iResolution.xy) / iResolution.y;\n"
+                              "    v3 ro = v3(0, 0, -3), rd = normalize(v3(uv, 1.5)), p = ro;\n"
+                              "    for (int i = 0; i < 80; i++) {\n"
+                              "        FIELD\n"
+                              "        p += d * rd;\n"
+                              "    }\n"
+                              "    o = vec4(W * length(p - ro) / 5., 1);\n"
+                              "}\n";
+    struct Case {
+        const char* field;
+        const char* step;
+        const char* entry;
+        const char* returnType;
+    };
+    const Case cases[] = {
+        {"struct Hit { _f d; int id; };\n"
+         "Hit E(v3 p) { p.xz *= R(.3); Hit h = Hit(box(p, v3(.4)), 1); _f s = length(p) - .5;\n"
+         "    if (s < h.d) h = Hit(s, 2); return h; }\n",
+         "Hit h = E(p); _f d = h.d; if (d < .001) break;", "E", "Hit"},
+        {"v2 B(v3 p) { v2 z = v2(box(p, v3(.4)), 1); _f g = p.y + 1.; if (g < z.x) z = v2(g, 2); return z; }\n",
+         "_f d = B(p).x; if (d < .001) break;", "B", "vec2"},
+    };
+    for (const Case& c : cases) {
+        std::string text = head + c.field + march;
+        text.replace(text.find("FIELD"), 5, c.step);
+        PreparedSdf sdf = prepare(text);
+        ASSERT_TRUE(sdf.ok()) << c.entry << ": " << (sdf.diagnostics.empty() ? "" : formatDiagnostic(sdf.diagnostics.back()));
+        EXPECT_EQ(sdf.signature.entry, c.entry);
+        EXPECT_EQ(sdf.signature.returnType, c.returnType);
+        EXPECT_EQ(sdf.entrySource, EntrySource::March);
+        EXPECT_TRUE(sdf.shadertoyMainImage) << "mainImage(out vec4 o, v2 w) is Shadertoy's form";
+        const std::size_t call = text.find(std::string(c.entry) + "(p)", text.find("void mainImage"));
+        const int line = 1 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(call), '\n'));
+        EXPECT_EQ(sdf.entryReason, std::string(c.entry) + " (called by the march at line " + std::to_string(line) + ")");
+        auto tracer = composeTracer(sdf, TracerFeatures{});
+        ASSERT_TRUE(tracer.hasValue());
+        EXPECT_FALSE(hasErrors(checkWithGlslang(*tracer))) << c.entry;
+    }
+    // The same shader with its aliases removed from the definitions reads the same way, and one
+    // with no `#define v3 vec3` has no field: the names are what the macros say, nothing guessed.
+    std::string undefined = head + cases[1].field + march;
+    undefined.replace(undefined.find("FIELD"), 5, cases[1].step);
+    undefined.replace(undefined.find("#define v3\tvec3"), 15, "struct v3 { float x; }");
+    EXPECT_FALSE(prepare(undefined).ok());
+}

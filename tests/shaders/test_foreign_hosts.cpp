@@ -478,3 +478,81 @@ TEST(ForeignHosts, AnIsfShadersInputsAreParametersAndItsBuiltinsShadertoys) {
     EXPECT_EQ(find(again.parameters, "hollow")->defaultValue[0], 1.0f);
     EXPECT_EQ(find(again.parameters, "spin")->defaultValue[0], 0.0f);
 }
+
+// The VS Code Shader Toy extension (stevensona.shader-toy): `#iUniform` lines are parameters, also
+// inside a function (the extension hoists them: sdfwb declares them before that function); its
+// #iChannel, #iKeyboard and #iFirstPersonControls lines go, its key functions answer no key and
+// iViewMatrix is the identity it starts as. Saving rewrites VALUE in place.
+TEST(ForeignHosts, TheVscodeExtensionsDirectivesAreParametersAndItsInputs) {
+    const std::string text = "#iChannel0 \"file://noise.png\"\n"
+                             "#iChannel0::WrapMode \"Repeat\"\n"
+                             "#iKeyboard\n"
+                             "#iFirstPersonControls\n"
+                             "#iUniform float radius = 0.5 in { 0.1, 2.0 } step 0.05 // a slider\n"
+                             "#iUniform color3 tint = color3(0.8, 0.5, 0.2)\n"
+                             "#iUniform int steps = 96 in{16, 256 };\n"
+                             "#iUniform vec2 offset = vec2(0.25)\n"
+                             "float map(vec3 p) {\n"
+                             "    #iUniform float wobble = 0.1 in {0.0, 1.0}\n"
+                             "    return length(p - vec3(offset, 0.0)) - radius - wobble * sin(iGlobalTime);\n"
+                             "}\n"
+                             "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                             "    vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;\n"
+                             "    vec3 ro = iViewMatrix[3].xyz + vec3(0.0, 0.0, 3.0), rd = normalize(vec3(uv, -1.5));\n"
+                             "    if (isKeyPressed(Key_Space) || isKeyToggled(Key_A)) ro.z += 1.0;\n"
+                             "    float t = 0.0;\n"
+                             "    for (int i = 0; i < steps; i++) { float d = map(ro + rd * t); if (d < 0.001) break; t += d; }\n"
+                             "    fragColor = vec4(tint * t * 0.1, 1.0) + 0.0 * texture(iChannel0, uv);\n"
+                             "}\n";
+    ParameterScan scan = parseParameters(text, "ball.glsl");
+    EXPECT_TRUE(scan.diagnostics.empty()) << errors(scan.diagnostics);
+    ASSERT_EQ(scan.parameters.size(), 5u);
+    const Parameter* radius = find(scan.parameters, "radius");
+    ASSERT_NE(radius, nullptr);
+    EXPECT_EQ(radius->type, ParameterType::Float);
+    EXPECT_EQ(radius->defaultValue[0], 0.5f);
+    EXPECT_EQ(radius->minimum, 0.1f);
+    EXPECT_EQ(radius->maximum, 2.0f);
+    EXPECT_EQ(radius->step, 0.05f);
+    EXPECT_EQ(radius->line, 5);
+    const Parameter* tint = find(scan.parameters, "tint");
+    ASSERT_NE(tint, nullptr);
+    EXPECT_EQ(tint->type, ParameterType::Vec3);
+    EXPECT_TRUE(tint->color);
+    EXPECT_EQ(tint->defaultValue, (std::array<float, 4>{0.8f, 0.5f, 0.2f, 0.0f}));
+    const Parameter* steps = find(scan.parameters, "steps");
+    ASSERT_NE(steps, nullptr);
+    EXPECT_EQ(steps->type, ParameterType::Int);
+    EXPECT_EQ(steps->defaultValue[0], 96.0f);
+    EXPECT_EQ(steps->maximum, 256.0f);
+    EXPECT_EQ(find(scan.parameters, "offset")->defaultValue, (std::array<float, 4>{0.25f, 0.25f, 0.0f, 0.0f}))
+        << "one argument fills every component";
+    EXPECT_EQ(find(scan.parameters, "wobble")->line, 10);
+
+    const PreparedSdf sdf = prepare(text, "ball.glsl");
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.host, "the VS Code Shader Toy extension");
+    EXPECT_EQ(sdf.signature.entry, "map");
+    EXPECT_EQ(rootLines(sdf), lines(text)) << "every line keeps its number";
+    EXPECT_NE(sdf.source.text.find("uniform float wobble;"), std::string::npos);
+    EXPECT_LT(sdf.source.text.find("uniform float wobble;"), sdf.source.text.find("float map(")) << "declared before use";
+    EXPECT_NE(sdf.source.text.find("uniform vec3 tint;"), std::string::npos);
+    EXPECT_EQ(sdf.source.text.find("#i"), std::string::npos) << sdf.source.text;
+    EXPECT_NE(sdf.source.text.find("sin(iTime)"), std::string::npos);
+    EXPECT_EQ(compileErrors(sdf), "");
+
+    const std::string saved = withDefaults(text, scan.parameters,
+                                           {{"radius", ParameterType::Float, {0.75f, 0, 0, 0}},
+                                            {"tint", ParameterType::Vec3, {1, 0.5f, 0.25f, 0}},
+                                            {"wobble", ParameterType::Float, {0.3f, 0, 0, 0}}});
+    EXPECT_NE(saved.find("#iUniform float radius = 0.75 in { 0.1, 2.0 } step 0.05 // a slider\n"), std::string::npos) << saved;
+    EXPECT_NE(saved.find("#iUniform color3 tint = vec3(1.0, 0.5, 0.25)\n"), std::string::npos) << saved;
+    EXPECT_EQ(lines(saved), lines(text));
+    const ParameterScan again = parseParameters(saved, "ball.glsl");
+    EXPECT_EQ(find(again.parameters, "radius")->defaultValue[0], 0.75f);
+    EXPECT_EQ(find(again.parameters, "wobble")->defaultValue[0], 0.3f);
+    EXPECT_EQ(find(again.parameters, "tint")->defaultValue, (std::array<float, 4>{1.0f, 0.5f, 0.25f, 0.0f}));
+
+    // A `#iUniform` of a type the extension has not (a mat3) is no parameter.
+    EXPECT_TRUE(parseParameters("#iUniform mat3 m = mat3(1.0)\n", "m.glsl").parameters.empty());
+}
