@@ -74,9 +74,11 @@ def first_error(text):
 rows = []
 renders = samples = both = 0
 with tempfile.TemporaryDirectory() as scratch:
-    files = sorted(f for f in os.listdir(FOLDER) if f.endswith(".glsl"))
+    # A Synesthesia scene is a folder (NAME.synScene: main.glsl and the scene.json declaring its controls).
+    files = sorted(f for f in os.listdir(FOLDER) if f.endswith(".glsl") or
+                   (f.endswith(".synScene") and os.path.isfile(os.path.join(FOLDER, f, "main.glsl"))))
     for name in files:
-        path = os.path.join(FOLDER, name)
+        path = os.path.join(FOLDER, name, "main.glsl") if name.endswith(".synScene") else os.path.join(FOLDER, name)
         code, error, log = run([BINARY, "--batch", "render", "--sdf", path, "--size", "320x180", "--output",
                                 os.path.join(scratch, "picture.png")])
         rendered = code == 0

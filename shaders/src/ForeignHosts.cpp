@@ -4,6 +4,7 @@
 #include "ForeignHosts.h"
 #include "IsfHeader.h"
 #include "ParameterText.h"
+#include "Synesthesia.h"
 #include "Words.h"
 
 #include <core/Regex.h>
@@ -408,7 +409,7 @@ void adaptFragmentarium(const Code& code, const std::vector<Parameter>& paramete
     if (blockStart != std::string::npos) edits.push_back(blank(text, blockStart, text.size() - blockStart)); // unclosed
     // Annotations after uniforms: blanked, the default written as the initializer.
     for (const Parameter& p : parameters) {
-        if (p.syntax == Parameter::Syntax::Glsl) continue;
+        if (p.syntax == Parameter::Syntax::Glsl || p.syntax == Parameter::Syntax::Isf) continue; // not its own
         fragmentarium = true;
         for (const Declaration& d : fileScopeDeclarations(code, {"uniform"})) {
             if (d.name != p.name) continue;
@@ -718,6 +719,12 @@ HostAdaptation adaptForeignHost(const std::string& text, const std::vector<Param
     adaptIsf(code, edits, out);
     adaptVscodeShaderToy(code, edits, out);
     adaptOldShadertoy(code, edits, out);
+    if (out.host.empty() && edits.empty())
+        if (std::optional<std::string> synesthesia = adaptSynesthesia(text, parameters)) {
+            out.text = std::move(*synesthesia);
+            out.host = "Synesthesia";
+            return out;
+        }
     out.text = edits.empty() ? text : applyEdits(text, std::move(edits));
     return out;
 }

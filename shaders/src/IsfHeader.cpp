@@ -137,6 +137,33 @@ bool identifier(const std::string& name) {
     return true;
 }
 
+// The entries of an INPUTS (or CONTROLS) array that have a NAME and a TYPE.
+std::vector<IsfInput> readInputs(const Value& inputs) {
+    std::vector<IsfInput> out;
+    for (const Value& item : inputs.items) {
+        const Value* name = member(item, "NAME");
+        const Value* type = member(item, "TYPE");
+        if (!name || !type || name->kind != Value::Kind::String || type->kind != Value::Kind::String || !identifier(name->string))
+            continue;
+        IsfInput input;
+        input.name = name->string, input.type = type->string;
+        input.nameOffset = name->offset;
+        if (const Value* label = member(item, "LABEL"); label && label->kind == Value::Kind::String) input.label = label->string;
+        if (const Value* value = member(item, "DEFAULT")) {
+            input.value = numbers(value);
+            input.valueOffset = value->offset, input.valueLength = value->length;
+        }
+        input.low = numbers(member(item, "MIN")), input.high = numbers(member(item, "MAX"));
+        if (const std::vector<double> values = numbers(member(item, "VALUES")); !values.empty() && input.low.empty()) {
+            double least = values.front(), most = values.front();
+            for (double v : values) least = std::min(least, v), most = std::max(most, v);
+            input.low = {least}, input.high = {most};
+        }
+        out.push_back(std::move(input));
+    }
+    return out;
+}
+
 } // namespace
 
 IsfHeader readIsfHeader(const std::string& text) {
@@ -156,28 +183,16 @@ IsfHeader readIsfHeader(const std::string& text) {
     header.found = true;
     header.end = close + 2;
     if (!inputs || inputs->kind != Value::Kind::Array) return header;
-    for (const Value& item : inputs->items) {
-        const Value* name = member(item, "NAME");
-        const Value* type = member(item, "TYPE");
-        if (!name || !type || name->kind != Value::Kind::String || type->kind != Value::Kind::String || !identifier(name->string))
-            continue;
-        IsfInput input;
-        input.name = name->string, input.type = type->string;
-        input.nameOffset = name->offset;
-        if (const Value* label = member(item, "LABEL"); label && label->kind == Value::Kind::String) input.label = label->string;
-        if (const Value* value = member(item, "DEFAULT")) {
-            input.value = numbers(value);
-            input.valueOffset = value->offset, input.valueLength = value->length;
-        }
-        input.low = numbers(member(item, "MIN")), input.high = numbers(member(item, "MAX"));
-        if (const std::vector<double> values = numbers(member(item, "VALUES")); !values.empty() && input.low.empty()) {
-            double least = values.front(), most = values.front();
-            for (double v : values) least = std::min(least, v), most = std::max(most, v);
-            input.low = {least}, input.high = {most};
-        }
-        header.inputs.push_back(std::move(input));
-    }
+    header.inputs = readInputs(*inputs);
     return header;
+}
+
+std::vector<IsfInput> readSceneControls(const std::string& json) {
+    const std::size_t open = json.find('{');
+    Value root;
+    if (open == std::string::npos || !Reader(json, open, json.size()).value(root) || root.kind != Value::Kind::Object) return {};
+    const Value* controls = member(root, "CONTROLS");
+    return controls && controls->kind == Value::Kind::Array ? readInputs(*controls) : std::vector<IsfInput>{};
 }
 
 } // namespace sdfwb::shaders::detail

@@ -30,4 +30,8 @@ struct IsfHeader {
 
 IsfHeader readIsfHeader(const std::string& text);
 
+// A Synesthesia scene's scene.json (beside its main.glsl): its CONTROLS, read as ISF's INPUTS are
+// (TYPE "slider", "knob smooth", "xy", "color", ...); none where the text is no JSON object.
+std::vector<IsfInput> readSceneControls(const std::string& json);
+
 } // namespace sdfwb::shaders::detail

@@ -5,6 +5,7 @@
 #include <shaders/SdfSource.h>
 
 #include <core/Regex.h>
+#include <core/TextFile.h>
 
 #include "IsfHeader.h"
 #include "ParameterText.h"
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <map>
 #include <regex>
 
@@ -677,6 +679,50 @@ std::vector<Parameter> vscodeParameters(const std::string& text) {
     return out;
 }
 
+// A Synesthesia scene's controls: its main.glsl (a `vec4 renderMain()`) reads them, its scene.json
+// beside it declares them (CONTROLS: sliders, knobs, toggles and bangs are floats, an xy pad a
+// vec2, a colour a vec3). ForeignHosts.cpp declares them as uniforms. scene.json is another file:
+// its defaults are read, not rewritten (saving leaves them out, as an ISF input without DEFAULT).
+std::vector<Parameter> synesthesiaParameters(const std::string& text, const std::string& file) {
+    static const std::regex renderMain(R"(\bvec4\s+renderMain\s*\(\s*\)\s*\{)", kLinearRegex);
+    if (file.empty() || file.front() == '<' || text.find("renderMain") == std::string::npos ||
+        !std::regex_search(stripComments(text), renderMain))
+        return {};
+    std::error_code error;
+    const std::filesystem::path scene = std::filesystem::path(file).parent_path() / "scene.json";
+    if (!std::filesystem::is_regular_file(scene, error)) return {};
+    const auto json = readTextFile(scene);
+    if (!json) return {};
+    std::vector<Parameter> out;
+    for (const detail::IsfInput& input : detail::readSceneControls(*json)) {
+        Parameter p;
+        p.name = input.name;
+        const std::string kind = input.type.substr(0, input.type.find(' '));
+        if (kind == "slider" || kind == "knob" || kind == "toggle" || kind == "bang" || kind == "dropdown")
+            p.type = ParameterType::Float;
+        else if (kind == "xy")
+            p.type = ParameterType::Vec2;
+        else if (kind == "color")
+            p.type = ParameterType::Vec3, p.color = true;
+        else
+            continue;
+        for (int k = 0; k < componentCount(p.type) && !input.value.empty(); ++k)
+            p.defaultValue[std::size_t(k)] = float(input.value[std::min(std::size_t(k), input.value.size() - 1)]);
+        for (float& v : p.defaultValue)
+            if (!std::isfinite(v)) v = 0.0f;
+        if (!input.low.empty() && !input.high.empty() && !p.color) {
+            p.minimum = float(*std::min_element(input.low.begin(), input.low.end()));
+            p.maximum = float(*std::max_element(input.high.begin(), input.high.end()));
+            if (!(*p.minimum < *p.maximum) || !std::isfinite(*p.minimum) || !std::isfinite(*p.maximum))
+                p.minimum.reset(), p.maximum.reset();
+        }
+        p.label = input.name + " (scene.json)";
+        p.syntax = Parameter::Syntax::Isf; // initializerLength 0: saving leaves it out
+        out.push_back(std::move(p));
+    }
+    return out;
+}
+
 } // namespace
 
 ParameterScan parseParameters(const std::string& text, const std::string& file) {
@@ -686,6 +732,7 @@ ParameterScan parseParameters(const std::string& text, const std::string& file) 
     scanner.applyPreset();
     std::vector<Parameter> hosts = isfParameters(text);
     for (Parameter& p : vscodeParameters(text)) hosts.push_back(std::move(p));
+    for (Parameter& p : synesthesiaParameters(text, file)) hosts.push_back(std::move(p));
     for (Parameter& p : hosts)
         if (std::none_of(scanner.result.parameters.begin(), scanner.result.parameters.end(),
                          [&](const Parameter& other) { return other.name == p.name; }))

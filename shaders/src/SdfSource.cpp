@@ -492,6 +492,9 @@ std::string hostDescription(const std::string& host) {
     if (host == "ISF")
         return "an ISF shader (VDMX, Resolume, editor.isf.video): its INPUTS as parameters, TIME and RENDERSIZE as "
                "Shadertoy's inputs, main() as Shadertoy's mainImage";
+    if (host == "Synesthesia")
+        return "a Synesthesia scene: renderMain() as Shadertoy's mainImage, its controls from the scene.json beside it, "
+               "its audio silent (its audio clocks run as the time)";
     if (host == "the VS Code Shader Toy extension")
         return "a shader of the VS Code Shader Toy extension: its #iUniform lines as parameters, its #iChannel and "
                "#iKeyboard lines left out (channels read the empty unit, no key is down), iViewMatrix the identity";
@@ -509,6 +512,14 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
     prepared.source = resolveIncludes(prepared.host.empty() ? text : host.text, name, path, options);
     prepared.diagnostics = prepared.source.diagnostics;
     for (Diagnostic& d : checkSourceFiles(prepared.source)) prepared.diagnostics.push_back(std::move(d));
+    if (prepared.host == "Synesthesia" && std::none_of(parameters.parameters.begin(), parameters.parameters.end(),
+                                                       [](const Parameter& p) { return p.syntax == Parameter::Syntax::Isf; }))
+        prepared.diagnostics.push_back(
+            {name, 1, 1, Severity::Warning,
+             "a Synesthesia scene's controls are declared by the scene.json beside its main.glsl, and none was read (" +
+                 (path.empty() ? std::string("the text is no file's")
+                               : (path.parent_path() / "scene.json").string() + ": missing or no CONTROLS") +
+                 "): a control the code reads is an undeclared identifier"});
     prepared.parameters = std::move(parameters.parameters);
     for (Diagnostic& d : parameters.diagnostics) prepared.diagnostics.push_back(std::move(d));
     std::string stripped = expandTypeAliases(stripComments(prepared.source.text));

@@ -434,3 +434,25 @@ TEST_F(FieldParameters, TheVscodeExtensionsUniformsHaveTheirDefaultsAlsoWhenDecl
     EXPECT_NEAR(fieldValueAt(ball, {0.25f, 0.0f, 0.0f}, 0.0f), -0.6f, 1e-5f);
     EXPECT_NEAR(fieldValueAt(ball, {0.25f, 0.0f, 0.0f}, 1.0f), -0.6f - 0.1f * std::sin(1.0f), 1e-5f);
 }
+
+TEST_F(FieldParameters, ASynesthesiaScenesControlsHaveTheirSceneJsonDefaults) {
+    // main.glsl in its .synScene folder: the field reads a slider and an xy pad scene.json declares,
+    // and Synesthesia's TIME, which is the scene time.
+    const fs::path folder = fs::temp_directory_path() / ("sdfwb-synscene-gl-" + std::to_string(::getpid())) / "b.synScene";
+    fs::create_directories(folder);
+    std::ofstream(folder / "main.glsl")
+        << "float ball(vec3 p) { return length(p - vec3(centre, 0.0)) - size - 0.1 * sin(TIME); }\n"
+           "vec4 renderMain() {\n"
+           "    vec3 rd = normalize(vec3(_uvc, 1.0));\n"
+           "    float t = 0.0;\n"
+           "    for (int i = 0; i < 64; i++) t += ball(vec3(0.0, 0.0, -3.0) + rd * t);\n"
+           "    return vec4(vec3(t * 0.1), 1.0);\n}\n";
+    std::ofstream(folder / "scene.json") << "{ \"CONTROLS\": [ { \"NAME\": \"size\", \"TYPE\": \"slider\", \"DEFAULT\": 0.6 },\n"
+                                            "  { \"NAME\": \"centre\", \"TYPE\": \"xy\", \"DEFAULT\": [0.25, 0] } ] }\n";
+    const shaders::PreparedSdf scene = prepare(folder / "main.glsl");
+    fs::remove_all(folder.parent_path());
+    ASSERT_TRUE(scene.ok()) << firstError(scene);
+    EXPECT_EQ(scene.host, "Synesthesia");
+    EXPECT_NEAR(fieldValueAt(scene, {0.25f, 0.0f, 0.0f}, 0.0f), -0.6f, 1e-5f);
+    EXPECT_NEAR(fieldValueAt(scene, {0.25f, 0.0f, 0.0f}, 1.0f), -0.6f - 0.1f * std::sin(1.0f), 1e-5f);
+}

@@ -10,7 +10,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <string>
+
+#include <unistd.h>
 
 using namespace sdfwb::shaders;
 
@@ -555,4 +559,69 @@ TEST(ForeignHosts, TheVscodeExtensionsDirectivesAreParametersAndItsInputs) {
 
     // A `#iUniform` of a type the extension has not (a mat3) is no parameter.
     EXPECT_TRUE(parseParameters("#iUniform mat3 m = mat3(1.0)\n", "m.glsl").parameters.empty());
+}
+
+// A Synesthesia scene (a .synScene folder): main.glsl's `vec4 renderMain()` is the shader, the
+// scene.json beside it declares its controls (parameters, read not rewritten), its inputs are
+// Shadertoy's and its built-in functions are provided where used and not defined. Without
+// scene.json the run says where it looked, and a control is an undeclared identifier.
+TEST(ForeignHosts, ASynesthesiaScenesControlsComeFromItsSceneJson) {
+    namespace fs = std::filesystem;
+    const fs::path folder = fs::temp_directory_path() / ("sdfwb-synscene-" + std::to_string(::getpid())) / "ball.synScene";
+    fs::create_directories(folder);
+    const std::string text = "// a ball that breathes\n"
+                             "float ball(vec3 p) {\n"
+                             "    p.xz = _rotate(p.xz, spin * PI);\n"
+                             "    return length(p - vec3(centre, 0.0)) - size - 0.05 * _nsin(TIME) - 0.01 * syn_BassLevel;\n"
+                             "}\n"
+                             "vec4 renderMainImage() {\n"
+                             "    vec3 rd = normalize(vec3(_uvc, 1.0)), o = vec3(0.0, 0.0, -3.0);\n"
+                             "    float t = 0.0;\n"
+                             "    for (int i = 0; i < 64; i++) { float d = ball(o + rd * t); if (d < 0.001) break; t += d; }\n"
+                             "    return vec4(tint * t * 0.2, 1.0) + 0.0 * texture(syn_Spectrum, _uv);\n"
+                             "}\n"
+                             "vec4 renderMain() {\n"
+                             "    if (PASSINDEX == 0) return renderMainImage();\n"
+                             "}\n";
+    std::ofstream(folder / "main.glsl") << text;
+    std::ofstream(folder / "scene.json")
+        << "{\n\t\"CONTROLS\" : [\n"
+           "\t\t{ \"NAME\" : \"size\", \"TYPE\" : \"slider smooth\", \"DEFAULT\" : 0.5, \"MIN\" : 0.1, \"MAX\" : 1 },\n"
+           "\t\t{ \"NAME\" : \"spin\", \"TYPE\" : \"knob\", \"DEFAULT\" : 0.25 },\n"
+           "\t\t{ \"NAME\" : \"centre\", \"TYPE\" : \"xy smooth\", \"DEFAULT\" : [0.1, 0.2], \"MIN\" : [-1, -2], \"MAX\" : [1, "
+           "2] },\n"
+           "\t\t{ \"NAME\" : \"tint\", \"TYPE\" : \"color\", \"DEFAULT\" : [1, 0.5, 0] },\n"
+           "\t],\n\t\"TITLE\" : \"Ball\"\n}\n";
+    const std::string path = (folder / "main.glsl").string();
+    const ParameterScan scan = parseParameters(text, path);
+    ASSERT_EQ(scan.parameters.size(), 4u);
+    EXPECT_EQ(find(scan.parameters, "size")->defaultValue[0], 0.5f);
+    EXPECT_EQ(find(scan.parameters, "size")->maximum, 1.0f);
+    EXPECT_EQ(find(scan.parameters, "centre")->type, ParameterType::Vec2);
+    EXPECT_EQ(find(scan.parameters, "centre")->minimum, -2.0f) << "an xy pad's widest range";
+    EXPECT_TRUE(find(scan.parameters, "tint")->color);
+    EXPECT_EQ(find(scan.parameters, "tint")->defaultValue, (std::array<float, 4>{1.0f, 0.5f, 0.0f, 0.0f}));
+    EXPECT_EQ(withDefaults(text, scan.parameters, {{"size", ParameterType::Float, {0.7f, 0, 0, 0}}}), text)
+        << "scene.json is not the text: saving leaves the controls out";
+
+    const PreparedSdf sdf = prepareSdf(text, path, folder / "main.glsl", IncludeOptions{});
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.host, "Synesthesia");
+    EXPECT_EQ(sdf.signature.entry, "ball");
+    EXPECT_EQ(sdf.parameters.size(), 4u);
+    EXPECT_EQ(rootLines(sdf), lines(text) + 1) << "every line keeps its number; mainImage comes after the last";
+    EXPECT_NE(sdf.source.text.find("uniform vec2 centre;"), std::string::npos);
+    EXPECT_NE(sdf.source.text.find("vec2 _rotate("), std::string::npos);
+    EXPECT_EQ(sdf.source.text.find("_hsv2rgb"), std::string::npos) << "only what the scene uses";
+    EXPECT_EQ(compileErrors(sdf), "");
+
+    fs::remove(folder / "scene.json");
+    const PreparedSdf alone = prepareSdf(text, path, folder / "main.glsl", IncludeOptions{});
+    EXPECT_EQ(alone.host, "Synesthesia");
+    EXPECT_FALSE(alone.ok());
+    const auto warned = std::find_if(alone.diagnostics.begin(), alone.diagnostics.end(), [](const Diagnostic& d) {
+        return d.severity == Severity::Warning && d.message.find("scene.json: missing or no CONTROLS") != std::string::npos;
+    });
+    EXPECT_NE(warned, alone.diagnostics.end()) << errors(alone.diagnostics);
+    fs::remove_all(folder.parent_path());
 }
