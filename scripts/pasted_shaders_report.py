@@ -6,7 +6,8 @@ writes a Markdown table with its date and machine line.
 
     /usr/bin/python3 scripts/pasted_shaders_report.py FOLDER [--binary build/app/sdfwb] [--doc docs/pasted-shaders.md]
         [--hosts]   (the folder holds whole shaders of other hosts: glslViewer, GLSL Sandbox, Bonzomatic,
-                     KodeLife, three.js, WebGL pages, ports, Fragmentarium, ISF, Processing; the doc says so and names the host
+                     KodeLife, three.js, WebGL pages, ports, Fragmentarium, ISF, Processing, the VS Code Shader Toy
+                     extension, Synesthesia (a NAME.synScene folder); the doc says so and names the host
                      sdfwb read each file as)
 
 Per file: render (320x180, the default camera), sample (`rand`, 2,000 rows) and how the entry was

@@ -163,6 +163,11 @@ layout(binding = SDFWB_CHANNEL3_UNIT) uniform sampler2D iChannel3;
 #ifdef SDFWB_COMPAT_gl_FragCoord
 const vec4 sdfwb_FragCoord = vec4(0.0, 0.0, 0.0, 1.0);
 #endif
+// discard exists in fragment shaders only (the composer renames it elsewhere, a keyword no macro
+// may take): a statement that does nothing, in the mainImage no other stage calls.
+#ifdef SDFWB_COMPAT_discard
+void sdfwb_discard() {}
+#endif
 // texture()'s bias form exists in fragment shaders only; elsewhere the composer renames the code's
 // three-argument texture, texture2D and textureCube calls to these (overloading texture itself
 // would hide its built-in forms on Mesa): the level-0 lookup, what texture() does there anyway.

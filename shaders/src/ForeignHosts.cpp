@@ -5,6 +5,7 @@
 #include "IsfHeader.h"
 #include "ParameterText.h"
 #include "Synesthesia.h"
+#include "Twigl.h"
 #include "Words.h"
 
 #include <core/Regex.h>
@@ -641,15 +642,16 @@ std::size_t fileScopeBefore(const Code& code, std::size_t at) {
 }
 
 // The VS Code Shader Toy extension (stevensona.shader-toy): its directives blanked (`#iChannel0
-// "file://..."` and its `::` settings, #iKeyboard, #iFirstPersonControls, #StrictCompatibility,
-// #iVertex) and its `#iUniform TYPE NAME = VALUE in {MIN, MAX}` declared as uniforms (parameters,
-// Parameters.cpp); #iKeyboard's functions answer no key, iViewMatrix (its fly camera) is the
-// identity it starts as, and its iGlobalTime is iTime.
+// "file://..."` and its `::` settings, iChannel4-9 declared on the empty unit, #iKeyboard,
+// #iFirstPersonControls, #StrictCompatibility, #iVertex) and its `#iUniform TYPE NAME = VALUE in {MIN, MAX}` declared as uniforms
+// (parameters, Parameters.cpp); #iKeyboard's functions answer no key, iViewMatrix (its fly camera) is the identity it starts as,
+// and its iGlobalTime is iTime.
 void adaptVscodeShaderToy(const Code& code, std::vector<Edit>& edits, HostAdaptation& out) {
     const std::string& text = code.original;
     std::map<std::size_t, std::string> declared; // at an offset, declarations
     std::size_t firstPlace = std::string::npos;
     bool keyboard = false;
+    std::set<std::string> extraChannels;
     for (std::size_t start = 0; start < code.stripped.size();) {
         const std::size_t stop = std::min(code.stripped.find('\n', start), code.stripped.size());
         const std::size_t hash = code.stripped.find_first_not_of(" \t", start);
@@ -658,6 +660,7 @@ void adaptVscodeShaderToy(const Code& code, std::vector<Edit>& edits, HostAdapta
             const std::string word = code.wordAt(k);
             const bool channel = word.rfind("iChannel", 0) == 0 && word.size() > 8 &&
                                  std::all_of(word.begin() + 8, word.end(), [](char c) { return c >= '0' && c <= '9'; });
+            if (channel && word.size() == 9 && word[8] >= '4') extraChannels.insert(word);
             if (channel || word == "iKeyboard" || word == "iFirstPersonControls" || word == "StrictCompatibility" ||
                 word == "iVertex" || word == "iUniform") {
                 // After the blanked line at file scope (an insertion at its start would be dropped).
@@ -697,6 +700,10 @@ void adaptVscodeShaderToy(const Code& code, std::vector<Edit>& edits, HostAdapta
             return true;
         });
     }
+    // Channels past Shadertoy's four (the extension has iChannel0-9): a unit nothing is bound to.
+    for (const Declaration& d : fileScopeDeclarations(code, {"uniform"})) extraChannels.erase(d.name);
+    for (const std::string& channel : extraChannels)
+        provided += "layout(binding = " + std::to_string(emptyUnit("sampler2D")) + ") uniform sampler2D " + channel + "; ";
     bool viewMatrixDeclared = false;
     for (const Declaration& d : fileScopeDeclarations(code, {"uniform"})) viewMatrixDeclared |= d.name == "iViewMatrix";
     if (!viewMatrixDeclared && !code.occurrences("iViewMatrix").empty()) provided += "const mat4 iViewMatrix = mat4(1.0); ";
@@ -723,6 +730,12 @@ HostAdaptation adaptForeignHost(const std::string& text, const std::vector<Param
         if (std::optional<std::string> synesthesia = adaptSynesthesia(text, parameters)) {
             out.text = std::move(*synesthesia);
             out.host = "Synesthesia";
+            return out;
+        }
+    if (out.host.empty() && edits.empty())
+        if (std::optional<std::string> twigl = adaptTwigl(text)) {
+            out.text = std::move(*twigl);
+            out.host = "twigl";
             return out;
         }
     out.text = edits.empty() ? text : applyEdits(text, std::move(edits));

@@ -225,6 +225,17 @@ void chooseInlineField(PreparedSdf& prepared, const std::string& stripped) {
 // it has an entry's form. The one most loops step by wins; functions one loop steps by together
 // make that loop's inline field; a tie is broken by a conventional name, then by the fewest calls
 // from mainImage, else it is an error naming the candidates (entryCandidates).
+namespace {
+
+// The definition the march calls: for FIELD(p) alone, of overloads, the one without a float after
+// the point (a cloud layer's getDist(p, radius) beside the planet's getDist(p)).
+SdfSignature marchedSignature(const std::string& stripped, const MarchedFunction& marched, const std::string& returns) {
+    return marched.extraParameters == 0 ? detectSignatureOfForm(stripped, marched.name, returns, false)
+                                        : detectSignature(stripped, marched.name, returns);
+}
+
+} // namespace
+
 void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
     PreparedSdf userCode = prepared;
     userCode.signature.entry.clear(); // no entry: the user's code alone
@@ -237,7 +248,7 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
         const std::string returns = !marched.member.empty()       ? marched.returnType
                                     : marched.valueType == "vec3" ? std::string("vec3")
                                                                   : std::string("float|vec2|vec4");
-        SdfSignature signature = detectSignature(stripped, marched.name, returns);
+        SdfSignature signature = marchedSignature(stripped, marched, returns);
         if (!marched.member.empty()) signature.member = marched.member; // the one the march reads
         if (!marched.component.empty()) signature.member = marched.component;
         if (signature.found && !marched.globals.empty()) // what mainImage sets first, run first

@@ -12,6 +12,10 @@ namespace sdfwb::shaders::detail {
 // together), into `prepared`'s signature, entry source and reason; an error naming the candidates
 // on a tie. `stripped`: the resolved text without comments.
 void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped);
+// detectSignature, among overloads only the one with (animated) or without (!animated) the float
+// after the point: the march calls `getDist(p)` where `getDist(vec3 p, float radius)` is defined too.
+SdfSignature detectSignatureOfForm(const std::string& stripped, const std::string& entry, const std::string& returnTypes,
+                                   bool animated);
 // Whether `signature` has the form ENTRY(p, time) with a float not named as the time (`float
 // map(vec3 p, float s)`): in a whole shader, what its march passes, not the time.
 bool floatIsNotTime(const SdfSignature& signature, const std::string& stripped);

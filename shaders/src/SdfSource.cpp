@@ -19,6 +19,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <regex>
 #include <set>
 #include <string_view>
@@ -171,7 +172,10 @@ std::string firstFloatMember(const std::string& stripped, const std::string& nam
 
 } // namespace
 
-SdfSignature detectSignature(const std::string& stripped, const std::string& entry, const std::string& returnTypes) {
+namespace {
+
+SdfSignature detectSignatureOf(const std::string& stripped, const std::string& entry, const std::string& returnTypes,
+                               std::optional<bool> form) {
     SdfSignature signature;
     signature.entry = entry;
     if (!isIdentifier(entry)) return signature;
@@ -187,6 +191,7 @@ SdfSignature detectSignature(const std::string& stripped, const std::string& ent
     for (std::size_t at : detail::wordOffsets(stripped, entry)) {
         std::size_t type = previousWord(stripped, at);
         if (type == std::string::npos || !matchAt(stripped, type, definition, match)) continue;
+        if (form && *form != match[4].matched) continue; // the other overload
         const std::string returned = match[1].str();
         std::string member;
         if (returned != "float" && returned != "vec2" && returned != "vec3" && returned != "vec4") {
@@ -206,6 +211,17 @@ SdfSignature detectSignature(const std::string& stripped, const std::string& ent
             signature.outParameters.push_back((*it)[1].str());
     }
     return signature;
+}
+
+} // namespace
+
+SdfSignature detectSignature(const std::string& stripped, const std::string& entry, const std::string& returnTypes) {
+    return detectSignatureOf(stripped, entry, returnTypes, std::nullopt);
+}
+
+SdfSignature detail::detectSignatureOfForm(const std::string& stripped, const std::string& entry, const std::string& returnTypes,
+                                           bool animated) {
+    return detectSignatureOf(stripped, entry, returnTypes, animated);
 }
 
 std::string metadataEntry(const std::string& text) {
@@ -297,8 +313,9 @@ const std::vector<std::string>& compatCandidates() {
         // composer maps them onto zero (a Shadertoy's mainImage uses them, and it is never called).
         "dFdx", "dFdy", "fwidth",
         // Fragment-only too, in the helpers mainImage calls: the pixel's position (a dither's or a
-        // jitter's seed; zero elsewhere) and texture()'s bias form (the level-0 lookup elsewhere).
-        "gl_FragCoord", "texture"};
+        // jitter's seed; zero elsewhere), texture()'s bias form (the level-0 lookup elsewhere) and
+        // discard (mainImage's own, `if (t > tmax) discard;`: nothing elsewhere).
+        "gl_FragCoord", "texture", "discard"};
     return names;
 }
 
@@ -492,12 +509,15 @@ std::string hostDescription(const std::string& host) {
     if (host == "ISF")
         return "an ISF shader (VDMX, Resolume, editor.isf.video): its INPUTS as parameters, TIME and RENDERSIZE as "
                "Shadertoy's inputs, main() as Shadertoy's mainImage";
+    if (host == "twigl")
+        return "a twigl shader (geeker/geekest mode): its text as the body of mainImage, FC its pixel, r the resolution, "
+               "t the time, o its colour";
     if (host == "Synesthesia")
         return "a Synesthesia scene: renderMain() as Shadertoy's mainImage, its controls from the scene.json beside it, "
                "its audio silent (its audio clocks run as the time)";
     if (host == "the VS Code Shader Toy extension")
-        return "a shader of the VS Code Shader Toy extension: its #iUniform lines as parameters, its #iChannel and "
-               "#iKeyboard lines left out (channels read the empty unit, no key is down), iViewMatrix the identity";
+        return "a VS Code Shader Toy extension shader: its #iUniform lines as parameters, its #iChannel, #iKeyboard and "
+               "#iFirstPersonControls lines left out (no key is down, iViewMatrix is the identity)";
     return (host.compare(0, 2, "a ") == 0 ? host + "'s" : "a " + host) +
            " shader: main() as Shadertoy's mainImage, its inputs as Shadertoy's";
 }

@@ -212,8 +212,8 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
     if (sdf.usesTime()) all["SDFWB_USES_TIME"] = "1";
     for (const std::string& symbol : sdf.compat.symbols) {
         // Fragment shaders have derivatives; the prelude stands in for them in other stages only.
-        const bool derivative =
-            symbol == "dFdx" || symbol == "dFdy" || symbol == "fwidth" || symbol == "gl_FragCoord" || symbol == "texture";
+        const bool derivative = symbol == "dFdx" || symbol == "dFdy" || symbol == "fwidth" || symbol == "gl_FragCoord" ||
+                                symbol == "texture" || symbol == "discard";
         if (!(derivative && stage == Stage::Fragment)) all["SDFWB_COMPAT_" + symbol] = "1";
     }
     for (const std::string& symbol : sdf.compat.wrapped) all["SDFWB_COMPAT_WRAPPED_" + symbol] = "1";
@@ -276,12 +276,19 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
     std::string userText = sdf.source.text;
     for (const std::string& name : sdf.compat.renamed) userText = renameWord(userText, name, "sdfwb_" + name);
     if (all.count("SDFWB_COMPAT_gl_FragCoord")) userText = renameWord(userText, "gl_FragCoord", "sdfwb_FragCoord");
+    if (all.count("SDFWB_COMPAT_discard")) userText = renameWord(userText, "discard", "sdfwb_discard()");
     // So are texture()'s bias form (g3d_compat.glsl).
     if (all.count("SDFWB_COMPAT_texture")) userText = renameBiasLookups(userText);
     shader.text += userText;
     if (!sdf.source.text.empty() && sdf.source.text.back() != '\n') shader.text += '\n';
     // No entry yet (the entry's search reads the user's code alone): no wrapper.
-    if (!sdf.signature.entry.empty()) appendFile(shader, "<sdfwb entry point>", entryWrapper(sdf));
+    if (!sdf.signature.entry.empty()) {
+        // The wrapper runs statements copied from mainImage (an inline field's prelude): renamed alike.
+        std::string wrapper = entryWrapper(sdf);
+        if (all.count("SDFWB_COMPAT_gl_FragCoord")) wrapper = renameWord(wrapper, "gl_FragCoord", "sdfwb_FragCoord");
+        if (all.count("SDFWB_COMPAT_discard")) wrapper = renameWord(wrapper, "discard", "sdfwb_discard()");
+        appendFile(shader, "<sdfwb entry point>", wrapper);
+    }
     for (const ShaderPiece& piece : pieces) appendFile(shader, piece.name, piece.text);
     return shader;
 }

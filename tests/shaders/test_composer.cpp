@@ -1054,3 +1054,45 @@ TEST(EntryPoint, TypesNamedThroughMacrosAreReadAsTheirTypes) {
     undefined.replace(undefined.find("#define v3\tvec3"), 15, "struct v3 { float x; }");
     EXPECT_FALSE(prepare(undefined).ok());
 }
+
+// mainImage's own `discard` (glslCanvas's `if (t > tmax) discard;`) is a fragment shader's: in the
+// sampler's compute stage it is a call that does nothing, and the fragment stage keeps it.
+TEST(CompatNeeds, DiscardInMainImageCompilesInTheComputeStage) {
+    PreparedSdf sdf = prepare("float map(vec3 p) { return length(p) - 0.5; }\n"
+                              "void mainImage(out vec4 c, in vec2 f) {\n"
+                              "    vec3 ro = vec3(0.0, 0.0, 3.0), rd = normalize(vec3(f / iResolution.xy - 0.5, -1.5));\n"
+                              "    float t = 0.0;\n"
+                              "    for (int i = 0; i < 64; i++) t += map(ro + rd * t);\n"
+                              "    if (t > 10.0) discard;\n"
+                              "    c = vec4(vec3(t * 0.1), 1.0);\n"
+                              "}\n");
+    ASSERT_TRUE(sdf.ok()) << (sdf.diagnostics.empty() ? "" : formatDiagnostic(sdf.diagnostics.back()));
+    auto pieces = samplingStagePieces(*builtinPiece("samplers/rand.glsl"));
+    ASSERT_TRUE(pieces.hasValue());
+    ComposedShader compute = composeSdfShader(sdf, Stage::Compute, *pieces, {});
+    EXPECT_NE(compute.text.find("if (t > 10.0) sdfwb_discard();"), std::string::npos);
+    auto diagnostics = checkWithGlslang(compute);
+    EXPECT_FALSE(hasErrors(diagnostics)) << (diagnostics.empty() ? "" : formatDiagnostic(diagnostics[0]));
+    auto tracer = composeTracer(sdf, TracerFeatures{});
+    ASSERT_TRUE(tracer.hasValue());
+    EXPECT_NE(tracer->text.find("if (t > 10.0) discard;"), std::string::npos);
+    EXPECT_FALSE(hasErrors(checkWithGlslang(*tracer)));
+}
+
+// A field overloaded with a float after the point (a cloud layer's `getDist(p, radius)` beside the
+// planet's `getDist(p)`): the march that calls it with the point alone chose the overload without
+// the float, not the one that would read the time as its radius.
+TEST(EntryPoint, TheOverloadTheMarchCallsIsTheField) {
+    PreparedSdf sdf = prepare(wholeShader("vec2 getDist(vec3 p) { return vec2(length(p) - 0.5, 1.0); }\n"
+                                          "vec2 getDist(vec3 p, float radius) { return vec2(length(p) - radius, 2.0); }\n",
+                                          "    float t = 0.0;\n    for (int i = 0; i < 64; i++) t += getDist(ro + rd * t).x;\n"
+                                          "    return t;\n"));
+    ASSERT_TRUE(sdf.ok()) << (sdf.diagnostics.empty() ? "" : formatDiagnostic(sdf.diagnostics.back()));
+    EXPECT_EQ(sdf.signature.entry, "getDist");
+    EXPECT_FALSE(sdf.signature.animated) << "getDist(p), not getDist(p, time)";
+    EXPECT_TRUE(std::none_of(sdf.diagnostics.begin(), sdf.diagnostics.end(),
+                             [](const Diagnostic& d) { return d.message.find("radius") != std::string::npos; }));
+    auto tracer = composeTracer(sdf, TracerFeatures{});
+    ASSERT_TRUE(tracer.hasValue());
+    EXPECT_FALSE(hasErrors(checkWithGlslang(*tracer)));
+}

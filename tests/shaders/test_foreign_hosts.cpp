@@ -625,3 +625,24 @@ TEST(ForeignHosts, ASynesthesiaScenesControlsComeFromItsSceneJson) {
     EXPECT_NE(warned, alone.diagnostics.end()) << errors(alone.diagnostics);
     fs::remove_all(folder.parent_path());
 }
+
+// twigl.app's geeker and geekest modes: the text is main's body (FC, r, t in, o out), with twigl's
+// rotate2D, rotate3D and hsv. It is read inside a mainImage on its first line, and its march's inline
+// field is the field. A text that defines a function is no such body.
+TEST(ForeignHosts, ATwiglBodyIsMainImagesBody) {
+    const std::string text = "vec3 p=vec3(0,0,-3),d=normalize(vec3((FC.xy*2.-r)/r.y,1.));float e=1.,g=0.;\n"
+                             "for(int i=0;i<64;i++){vec3 q=p;q.xz*=rotate2D(t);e=length(q)-.5;p+=d*e;g+=.01/abs(e);}\n"
+                             "o=vec4(hsv(g,.5,1.),1);\n";
+    const PreparedSdf sdf = prepare(text, "twigl.glsl");
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.host, "twigl");
+    EXPECT_EQ(sdf.signature.entry, "mainImage");
+    EXPECT_FALSE(sdf.signature.inlineBody.empty()) << "the march's inline field";
+    EXPECT_EQ(rootLines(sdf), lines(text) + 1) << "every line keeps its number; the closing brace comes after the last";
+    EXPECT_NE(sdf.source.text.find("mat2 rotate2D(float a)"), std::string::npos);
+    EXPECT_EQ(sdf.source.text.find("rotate3D"), std::string::npos) << "only the helpers it calls";
+    EXPECT_EQ(compileErrors(sdf), "");
+
+    const PreparedSdf function = prepare("float f(vec2 c) { return c.x; }\no = vec4(f(FC.xy));\n", "notwigl.glsl");
+    EXPECT_NE(function.host, "twigl");
+}
