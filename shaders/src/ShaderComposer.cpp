@@ -4,6 +4,7 @@
 #include <shaders/SdfSource.h>
 
 #include "Words.h"
+#include "ZeroInit.h"
 
 #include <core/Regex.h>
 
@@ -273,7 +274,8 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
     }
     // gl_FragCoord is a fragment shader's: elsewhere the code reads the prelude's stand-in (a macro
     // may not take a gl_ name). No line moves, so the source map holds.
-    std::string userText = sdf.source.text;
+    // Variables declared without a value are zero, as WebGL has them (ZeroInit.h): columns move, not lines.
+    std::string userText = detail::zeroInitialised(sdf.source.text);
     for (const std::string& name : sdf.compat.renamed) userText = renameWord(userText, name, "sdfwb_" + name);
     if (all.count("SDFWB_COMPAT_gl_FragCoord")) userText = renameWord(userText, "gl_FragCoord", "sdfwb_FragCoord");
     if (all.count("SDFWB_COMPAT_discard")) userText = renameWord(userText, "discard", "sdfwb_discard()");
@@ -284,7 +286,7 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
     // No entry yet (the entry's search reads the user's code alone): no wrapper.
     if (!sdf.signature.entry.empty()) {
         // The wrapper runs statements copied from mainImage (an inline field's prelude): renamed alike.
-        std::string wrapper = entryWrapper(sdf);
+        std::string wrapper = detail::zeroInitialised(entryWrapper(sdf));
         if (all.count("SDFWB_COMPAT_gl_FragCoord")) wrapper = renameWord(wrapper, "gl_FragCoord", "sdfwb_FragCoord");
         if (all.count("SDFWB_COMPAT_discard")) wrapper = renameWord(wrapper, "discard", "sdfwb_discard()");
         appendFile(shader, "<sdfwb entry point>", wrapper);

@@ -122,7 +122,10 @@ std::optional<std::string> adaptSynesthesia(const std::string& text, const std::
         }
         start = stop + 1;
     }
-    if (!declared.empty()) edits.push_back({first, 0, declared});
+    // mainImage returns renderMain (declared ahead, defined where the text has it), on that line too.
+    declared += "vec4 renderMain(); void mainImage(out vec4 synesthesiaColour, in vec2 synesthesiaPixel) { "
+                "synesthesiaColour = renderMain(); } ";
+    edits.push_back({first, 0, declared});
     std::sort(edits.begin(), edits.end(), [](const Replacement& a, const Replacement& b) {
         return a.offset != b.offset ? a.offset < b.offset : a.length < b.length; // an insertion first
     });
@@ -135,7 +138,6 @@ std::optional<std::string> adaptSynesthesia(const std::string& text, const std::
         from = e.offset + e.length;
     }
     out.append(text, from, std::string::npos);
-    out += " void mainImage(out vec4 synesthesiaColour, in vec2 synesthesiaPixel) { synesthesiaColour = renderMain(); }\n";
     return out;
 }
 

@@ -10,7 +10,7 @@
 
 namespace sdfwb::shaders::detail {
 
-// The text with renderMain called from a mainImage added after its last line, Synesthesia's inputs
+// The text with renderMain called from a mainImage added before its first line of code, Synesthesia's inputs
 // (TIME, RENDERSIZE, _xy, _uv, _uvc, the mouse's) as Shadertoy's, its audio levels silent (its audio
 // clocks the time), its built-in functions that the text uses and does not define (_rotate,
 // _smin, _nsin, _hsv2rgb, ...) and PI declared before the first line of code, and `controls`

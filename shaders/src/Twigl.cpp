@@ -40,7 +40,13 @@ std::optional<std::string> adaptTwigl(const std::string& text) {
     prefix += "void mainImage(out vec4 o, in vec2 twiglPixel) { vec2 r = iResolution.xy; float t = iTime; "
               "vec4 FC = gl_FragCoord; o = vec4(0.0); ";
     if (!wordOffsets(stripped, "m").empty()) prefix += "vec2 m = iMouse.xy / iResolution.xy; ";
-    return prefix + text + (text.empty() || text.back() == '\n' ? "}\n" : "\n}\n");
+    // The closing brace after the last code on the last line of code (its comment after it), so
+    // every line keeps its number; a text ending in a directive (`#endif`) is left as it is.
+    const std::size_t last = stripped.find_last_not_of(" \t\r\n\f\v");
+    if (last == std::string::npos) return std::nullopt;
+    const std::size_t lineStart = stripped.rfind('\n', last) == std::string::npos ? 0 : stripped.rfind('\n', last) + 1;
+    if (stripped[stripped.find_first_not_of(" \t", lineStart)] == '#') return std::nullopt;
+    return prefix + text.substr(0, last + 1) + " }" + text.substr(last + 1);
 }
 
 } // namespace sdfwb::shaders::detail

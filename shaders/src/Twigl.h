@@ -9,8 +9,8 @@
 namespace sdfwb::shaders::detail {
 
 // The text inside a mainImage that declares twigl's inputs in Shadertoy's terms, the helpers it
-// calls before it (all on the first line), and the closing brace after its last line. Nothing where
-// the text defines a function, or reads no `FC` or writes no `o`.
+// calls before it (all on the first line), and the closing brace after its last code (same lines).
+// Nothing where the text defines a function, reads no `FC`, writes no `o` or ends in a directive.
 std::optional<std::string> adaptTwigl(const std::string& text);
 
 } // namespace sdfwb::shaders::detail

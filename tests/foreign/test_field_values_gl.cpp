@@ -456,3 +456,17 @@ TEST_F(FieldParameters, ASynesthesiaScenesControlsHaveTheirSceneJsonDefaults) {
     EXPECT_NEAR(fieldValueAt(scene, {0.25f, 0.0f, 0.0f}, 0.0f), -0.6f, 1e-5f);
     EXPECT_NEAR(fieldValueAt(scene, {0.25f, 0.0f, 0.0f}, 1.0f), -0.6f - 0.1f * std::sin(1.0f), 1e-5f);
 }
+
+TEST_F(FieldParameters, AVariableDeclaredWithoutAValueIsZeroAsInWebGl) {
+    // Golfed WebGL code (twigl, Shadertoy) counts on zero: `float r, i; vec3 q; r += 0.5;`. Desktop GL
+    // leaves such a variable undefined; sdfwb writes WebGL's zero into the declaration.
+    const shaders::PreparedSdf golfed =
+        prepareText("golfed.glsl", "float sdf(vec3 p) {\n"
+                                   "    float r, i; vec3 q; mat2 m;\n"
+                                   "    for (float j; j < 2.; j++) for (; i++ < 4.;) r += 0.125;\n"
+                                   "    q.x += 0.25 + m[0][0];\n"
+                                   "    return length(p - q) - r;\n}\n");
+    ASSERT_TRUE(golfed.ok()) << firstError(golfed);
+    EXPECT_NEAR(fieldValueAt(golfed, {0.25f, 0.0f, 0.0f}, 0.0f), -0.5f, 1e-6f);
+    EXPECT_NEAR(fieldValueAt(golfed, {0.25f, 1.0f, 0.0f}, 0.0f), 0.5f, 1e-6f);
+}

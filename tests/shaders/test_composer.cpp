@@ -1096,3 +1096,36 @@ TEST(EntryPoint, TheOverloadTheMarchCallsIsTheField) {
     ASSERT_TRUE(tracer.hasValue());
     EXPECT_FALSE(hasErrors(checkWithGlslang(*tracer)));
 }
+
+// WebGL's zero for a variable declared without a value (ZeroInit.h): locals, a for loop's own and
+// globals get `= T(0)`; a struct's members, parameters, arrays, qualified declarations, functions,
+// directives and declarations that already have values do not; lines stay.
+TEST(Composer, VariablesDeclaredWithoutAValueAreZeroAsInWebGl) {
+    const std::string text = "#define F(x) \\\n    float y; x\n"
+                             "struct Hit { float d; vec3 n; };\n"
+                             "uniform float speed;\nconst float K = 1.0;\nfloat glow;\n"
+                             "float f(float a, vec3 b);\n"
+                             "float sdf(vec3 p) {\n"
+                             "    float r, i; vec3 q; vec4 acc[2]; mat2 m; int n = 3, k;\n"
+                             "    for (float j, g = 1.0; j < 4.; j++) r += 0.125 * g;\n"
+                             "    /* float hidden; */ q.x += 0.25;\n"
+                             "    return length(p - q) - r;\n"
+                             "}\n";
+    PreparedSdf sdf = prepare(text);
+    ASSERT_TRUE(sdf.ok()) << (sdf.diagnostics.empty() ? "" : formatDiagnostic(sdf.diagnostics.back()));
+    auto tracer = composeTracer(sdf, TracerFeatures{});
+    ASSERT_TRUE(tracer.hasValue());
+    EXPECT_FALSE(hasErrors(checkWithGlslang(*tracer)));
+    const std::string& out = tracer->text;
+    EXPECT_NE(out.find("float r = float(0), i = float(0); vec3 q = vec3(0); vec4 acc[2]; mat2 m = mat2(0); "
+                       "int n = 3, k = int(0);"),
+              std::string::npos)
+        << out;
+    EXPECT_NE(out.find("for (float j = float(0), g = 1.0; j < 4.; j++)"), std::string::npos) << out;
+    EXPECT_NE(out.find("float glow = float(0);"), std::string::npos) << out;
+    EXPECT_NE(out.find("struct Hit { float d; vec3 n; };"), std::string::npos) << out;
+    EXPECT_NE(out.find("uniform float speed;\nconst float K = 1.0;"), std::string::npos) << out;
+    EXPECT_NE(out.find("float f(float a, vec3 b);"), std::string::npos) << out;
+    EXPECT_NE(out.find("    float y; x\n"), std::string::npos) << "a macro's continued line is the directive's" << out;
+    EXPECT_NE(out.find("/* float hidden; */"), std::string::npos) << out;
+}

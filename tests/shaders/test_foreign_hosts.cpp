@@ -609,7 +609,7 @@ TEST(ForeignHosts, ASynesthesiaScenesControlsComeFromItsSceneJson) {
     EXPECT_EQ(sdf.host, "Synesthesia");
     EXPECT_EQ(sdf.signature.entry, "ball");
     EXPECT_EQ(sdf.parameters.size(), 4u);
-    EXPECT_EQ(rootLines(sdf), lines(text) + 1) << "every line keeps its number; mainImage comes after the last";
+    EXPECT_EQ(rootLines(sdf), lines(text)) << "every line keeps its number";
     EXPECT_NE(sdf.source.text.find("uniform vec2 centre;"), std::string::npos);
     EXPECT_NE(sdf.source.text.find("vec2 _rotate("), std::string::npos);
     EXPECT_EQ(sdf.source.text.find("_hsv2rgb"), std::string::npos) << "only what the scene uses";
@@ -638,7 +638,7 @@ TEST(ForeignHosts, ATwiglBodyIsMainImagesBody) {
     EXPECT_EQ(sdf.host, "twigl");
     EXPECT_EQ(sdf.signature.entry, "mainImage");
     EXPECT_FALSE(sdf.signature.inlineBody.empty()) << "the march's inline field";
-    EXPECT_EQ(rootLines(sdf), lines(text) + 1) << "every line keeps its number; the closing brace comes after the last";
+    EXPECT_EQ(rootLines(sdf), lines(text)) << "every line keeps its number";
     EXPECT_NE(sdf.source.text.find("mat2 rotate2D(float a)"), std::string::npos);
     EXPECT_EQ(sdf.source.text.find("rotate3D"), std::string::npos) << "only the helpers it calls";
     EXPECT_EQ(compileErrors(sdf), "");

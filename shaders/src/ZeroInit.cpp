@@ -1,0 +1,122 @@
+#include "ZeroInit.h"
+
+#include <shaders/SdfSource.h>
+
+#include <core/Regex.h>
+
+#include <algorithm>
+#include <cctype>
+#include <regex>
+#include <vector>
+
+namespace sdfwb::shaders::detail {
+namespace {
+
+bool isWord(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; }
+
+bool isValueType(const std::string& word) {
+    static const std::regex types(R"((?:float|int|uint|bool|[biu]?vec[234]|mat[234](?:x[234])?))", kLinearRegex);
+    return std::regex_match(word, types);
+}
+
+} // namespace
+
+std::string zeroInitialised(const std::string& text) {
+    const std::string s = stripComments(text); // same offsets, comments blanked
+    // Directive lines are no code.
+    std::vector<bool> directive(s.size() + 1, false);
+    bool continued = false; // the line before was a directive ending in a backslash
+    for (std::size_t start = 0; start < s.size();) {
+        std::size_t stop = s.find('\n', start);
+        if (stop == std::string::npos) stop = s.size();
+        const std::size_t first = s.find_first_not_of(" \t\r", start);
+        const bool isDirective = continued || (first < stop && s[first] == '#');
+        for (std::size_t k = start; k < stop && isDirective; ++k) directive[k] = true;
+        const std::size_t last = stop > start ? s.find_last_not_of(" \t\r", stop - 1) : std::string::npos;
+        continued = isDirective && last != std::string::npos && last >= start && s[last] == '\\';
+        start = stop + 1;
+    }
+    std::vector<std::pair<std::size_t, std::string>> inserts;
+    std::vector<bool> structBody; // per open brace: a struct's (its members get no values)
+    int parens = 0;
+    bool statementStart = true, afterFor = false, afterStruct = false;
+    for (std::size_t i = 0; i < s.size();) {
+        const char c = s[i];
+        if (directive[i] || c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v') {
+            ++i;
+            continue;
+        }
+        if (!isWord(c)) {
+            if (c == '(') {
+                ++parens;
+                statementStart = afterFor; // a for loop's init clause declares
+            } else {
+                if (c == ')') parens = std::max(0, parens - 1);
+                if (c == '{') structBody.push_back(afterStruct);
+                if (c == '}' && !structBody.empty()) structBody.pop_back();
+                statementStart = parens == 0 && (c == ';' || c == '{' || c == '}');
+            }
+            afterFor = false;
+            if (c == '{' || c == ';') afterStruct = false;
+            ++i;
+            continue;
+        }
+        std::size_t end = i;
+        while (end < s.size() && isWord(s[end])) ++end;
+        const std::string word = s.substr(i, end - i);
+        const bool declares = statementStart && isValueType(word) && (structBody.empty() || !structBody.back());
+        afterFor = word == "for";
+        afterStruct = afterStruct || word == "struct";
+        statementStart = false;
+        i = end;
+        if (!declares) continue;
+        // TYPE NAME [= VALUE] [, NAME [= VALUE]]... ; (or the for clause's `;`). Not `TYPE NAME(`
+        // (a function), `TYPE[N] NAME` or `TYPE NAME[N]` (arrays), `TYPE(...)` (an expression).
+        std::size_t k = i;
+        while (k < s.size() && (s[k] == ' ' || s[k] == '\t' || s[k] == '\n' || s[k] == '\r')) ++k;
+        if (k >= s.size() || !isWord(s[k]) || std::isdigit(static_cast<unsigned char>(s[k]))) continue;
+        std::vector<std::pair<std::size_t, std::string>> mine;
+        bool ok = true;
+        while (ok) {
+            std::size_t nameEnd = k;
+            while (nameEnd < s.size() && isWord(s[nameEnd])) ++nameEnd;
+            std::size_t after = nameEnd;
+            while (after < s.size() && (s[after] == ' ' || s[after] == '\t' || s[after] == '\n' || s[after] == '\r')) ++after;
+            if (nameEnd == k || after >= s.size() || s[after] == '(' || s[after] == '[' || directive[after]) {
+                ok = false;
+                break;
+            }
+            if (s[after] != '=') mine.emplace_back(nameEnd, " = " + word + "(0)");
+            // To the declarator's end: a `,` or `;` outside parentheses and brackets.
+            int depth = 0;
+            std::size_t j = after;
+            for (; j < s.size(); ++j) {
+                if (s[j] == '(' || s[j] == '[') ++depth;
+                if (s[j] == ')' || s[j] == ']') --depth;
+                if (depth < 0 || (depth == 0 && (s[j] == ',' || s[j] == ';')) || s[j] == '{' || s[j] == '}') break;
+            }
+            if (j >= s.size() || depth < 0 || s[j] == '{' || s[j] == '}') {
+                ok = false;
+                break;
+            }
+            if (s[j] == ';') break;
+            k = j + 1;
+            while (k < s.size() && (s[k] == ' ' || s[k] == '\t' || s[k] == '\n' || s[k] == '\r')) ++k;
+            if (k >= s.size() || !isWord(s[k])) ok = false;
+        }
+        if (ok) inserts.insert(inserts.end(), mine.begin(), mine.end());
+    }
+    if (inserts.empty()) return text;
+    std::string out;
+    out.reserve(text.size() + inserts.size() * 12);
+    std::size_t from = 0;
+    for (const auto& [at, insert] : inserts) {
+        out.append(text, from, at - from);
+        out += insert;
+        from = at;
+    }
+    out.append(text, from, std::string::npos);
+    return out;
+}
+
+} // namespace sdfwb::shaders::detail

@@ -1,0 +1,15 @@
+#pragma once
+// WebGL (Shadertoy, twigl, GLSL Sandbox, three.js) gives a variable declared without a value zero,
+// and golfed shaders count on it (`float i, d; vec3 p; p.z -= 4.;`, `for (float i, g; ...)`); desktop
+// GL leaves it undefined (Mesa's llvmpipe reads what the register held). Private to shaders/.
+
+#include <string>
+
+namespace sdfwb::shaders::detail {
+
+// `text` (comments kept) with `= T(0)` written after each scalar, vector or matrix variable declared
+// without a value: locals, a for loop's own, and globals; not a struct's members, parameters,
+// arrays, or anything with a qualifier (uniform, in, out, const, shared). Every line keeps its number.
+std::string zeroInitialised(const std::string& text);
+
+} // namespace sdfwb::shaders::detail
