@@ -37,9 +37,12 @@ std::string zeroInitialised(const std::string& text) {
         start = stop + 1;
     }
     std::vector<std::pair<std::size_t, std::string>> inserts;
-    std::vector<bool> structBody; // per open brace: a struct's (its members get no values)
+    // Per open brace: data rather than code (a struct's or an interface block's members, an
+    // initializer list: no values written). At file scope only a function's body, after its `)`, is code.
+    std::vector<bool> dataBody;
     int parens = 0;
-    bool statementStart = true, afterFor = false, afterStruct = false;
+    char previous = ';'; // the last character of code before this one
+    bool statementStart = true, afterFor = false;
     for (std::size_t i = 0; i < s.size();) {
         const char c = s[i];
         if (directive[i] || c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v') {
@@ -52,21 +55,21 @@ std::string zeroInitialised(const std::string& text) {
                 statementStart = afterFor; // a for loop's init clause declares
             } else {
                 if (c == ')') parens = std::max(0, parens - 1);
-                if (c == '{') structBody.push_back(afterStruct);
-                if (c == '}' && !structBody.empty()) structBody.pop_back();
+                if (c == '{') dataBody.push_back(dataBody.empty() ? previous != ')' : dataBody.back());
+                if (c == '}' && !dataBody.empty()) dataBody.pop_back();
                 statementStart = parens == 0 && (c == ';' || c == '{' || c == '}');
             }
             afterFor = false;
-            if (c == '{' || c == ';') afterStruct = false;
+            previous = c;
             ++i;
             continue;
         }
         std::size_t end = i;
         while (end < s.size() && isWord(s[end])) ++end;
         const std::string word = s.substr(i, end - i);
-        const bool declares = statementStart && isValueType(word) && (structBody.empty() || !structBody.back());
+        const bool declares = statementStart && isValueType(word) && (dataBody.empty() || !dataBody.back());
         afterFor = word == "for";
-        afterStruct = afterStruct || word == "struct";
+        previous = 'w';
         statementStart = false;
         i = end;
         if (!declares) continue;

@@ -1103,6 +1103,8 @@ TEST(EntryPoint, TheOverloadTheMarchCallsIsTheField) {
 TEST(Composer, VariablesDeclaredWithoutAValueAreZeroAsInWebGl) {
     const std::string text = "#define F(x) \\\n    float y; x\n"
                              "struct Hit { float d; vec3 n; };\n"
+                             "layout(std140) uniform Block { vec2 size; float scale; };\n"
+                             "const float table[2] = float[2](1.0, 2.0);\n"
                              "uniform float speed;\nconst float K = 1.0;\nfloat glow;\n"
                              "float f(float a, vec3 b);\n"
                              "float sdf(vec3 p) {\n"
@@ -1124,6 +1126,7 @@ TEST(Composer, VariablesDeclaredWithoutAValueAreZeroAsInWebGl) {
     EXPECT_NE(out.find("for (float j = float(0), g = 1.0; j < 4.; j++)"), std::string::npos) << out;
     EXPECT_NE(out.find("float glow = float(0);"), std::string::npos) << out;
     EXPECT_NE(out.find("struct Hit { float d; vec3 n; };"), std::string::npos) << out;
+    EXPECT_NE(out.find("uniform Block { vec2 size; float scale; };"), std::string::npos) << out;
     EXPECT_NE(out.find("uniform float speed;\nconst float K = 1.0;"), std::string::npos) << out;
     EXPECT_NE(out.find("float f(float a, vec3 b);"), std::string::npos) << out;
     EXPECT_NE(out.find("    float y; x\n"), std::string::npos) << "a macro's continued line is the directive's" << out;
