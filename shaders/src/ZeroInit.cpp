@@ -67,7 +67,9 @@ std::string zeroInitialised(const std::string& text) {
         std::size_t end = i;
         while (end < s.size() && isWord(s[end])) ++end;
         const std::string word = s.substr(i, end - i);
-        const bool declares = statementStart && isValueType(word) && (dataBody.empty() || !dataBody.back());
+        // Locals only: a global is zero already, and one mainImage sets before the march (dr2's
+        // `float dstFar;`) must stay a plain global for the march analysis to see it set.
+        const bool declares = statementStart && isValueType(word) && !dataBody.empty() && !dataBody.back();
         afterFor = word == "for";
         previous = 'w';
         statementStart = false;
