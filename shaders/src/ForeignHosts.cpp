@@ -5,6 +5,7 @@
 #include "IsfHeader.h"
 #include "ParameterText.h"
 #include "Synesthesia.h"
+#include "TextEdits.h"
 #include "Twigl.h"
 #include "Words.h"
 
@@ -22,27 +23,7 @@
 namespace sdfwb::shaders::detail {
 namespace {
 
-struct Edit {
-    std::size_t offset = 0, length = 0;
-    std::string replacement;
-};
-
 bool isSpaceChar(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v' || c == '\n'; }
-
-// Applies non-overlapping edits (an edit overlapping one before it is dropped).
-std::string applyEdits(const std::string& text, std::vector<Edit> edits) {
-    std::stable_sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.offset < b.offset; });
-    std::string out;
-    std::size_t from = 0;
-    for (const Edit& e : edits) {
-        if (e.offset < from) continue;
-        out.append(text, from, e.offset - from);
-        out += e.replacement;
-        from = e.offset + e.length;
-    }
-    out.append(text, from, std::string::npos);
-    return out;
-}
 
 // Spaces for text[offset, offset + length), newlines kept.
 Edit blank(const std::string& text, std::size_t offset, std::size_t length) {

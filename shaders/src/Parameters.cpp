@@ -563,6 +563,23 @@ std::vector<detail::PresetLine> detail::defaultPresetLines(const std::string& te
 
 namespace {
 
+// An ISF input's (or a scene control's) DEFAULT on p's components (one number fills them all, a
+// shorter list leaves the rest, such as a colour's alpha), a non-finite one 0; its MIN and MAX as p's
+// range (a vector's widest), none for a bool or a colour or where they are empty or not finite.
+void setDefaultAndRange(Parameter& p, const detail::IsfInput& input) {
+    for (int k = 0; k < componentCount(p.type) && !input.value.empty(); ++k)
+        if (input.value.size() == 1 || std::size_t(k) < input.value.size())
+            p.defaultValue[std::size_t(k)] = float(input.value[input.value.size() == 1 ? 0 : std::size_t(k)]);
+    for (float& v : p.defaultValue)
+        if (!std::isfinite(v)) v = 0.0f; // a double beyond a float's range
+    if (!input.low.empty() && !input.high.empty() && p.type != ParameterType::Bool && !p.color) {
+        p.minimum = float(*std::min_element(input.low.begin(), input.low.end()));
+        p.maximum = float(*std::max_element(input.high.begin(), input.high.end()));
+        if (!(*p.minimum < *p.maximum) || !std::isfinite(*p.minimum) || !std::isfinite(*p.maximum))
+            p.minimum.reset(), p.maximum.reset();
+    }
+}
+
 // An ISF header's INPUTS that are values (not images or audio), as parameters: the host declares
 // them as uniforms (ForeignHosts.cpp declares them in sdfwb's text). Ranges from MIN and MAX (a
 // point2D's widest), a colour's alpha 1 where its DEFAULT leaves it out.
@@ -584,22 +601,11 @@ std::vector<Parameter> isfParameters(const std::string& text) {
             p.type = ParameterType::Vec2;
         else
             continue;
-        const int n = componentCount(p.type);
-        for (int k = 0; k < n && !input.value.empty(); ++k)
-            if (input.value.size() == 1 || std::size_t(k) < input.value.size())
-                p.defaultValue[std::size_t(k)] = float(input.value[input.value.size() == 1 ? 0 : std::size_t(k)]);
-        for (float& v : p.defaultValue)
-            if (!std::isfinite(v)) v = 0.0f; // a double beyond a float's range
+        setDefaultAndRange(p, input);
         // As saving writes them back: a long's default a whole number, a bool's true or false.
         if (p.type == ParameterType::Int)
             p.defaultValue[0] = std::abs(p.defaultValue[0]) < 1e9f ? std::trunc(p.defaultValue[0]) : 0.0f;
         if (p.type == ParameterType::Bool) p.defaultValue[0] = p.defaultValue[0] != 0.0f ? 1.0f : 0.0f;
-        if (!input.low.empty() && !input.high.empty() && p.type != ParameterType::Bool && !p.color) {
-            p.minimum = float(*std::min_element(input.low.begin(), input.low.end()));
-            p.maximum = float(*std::max_element(input.high.begin(), input.high.end()));
-            if (!(*p.minimum < *p.maximum) || !std::isfinite(*p.minimum) || !std::isfinite(*p.maximum))
-                p.minimum.reset(), p.maximum.reset();
-        }
         p.line = 1 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(input.nameOffset), '\n'));
         p.column = 1 + int(input.nameOffset - (text.rfind('\n', input.nameOffset) + 1));
         p.initializerOffset = input.valueLength ? input.valueOffset : 0;
@@ -706,16 +712,7 @@ std::vector<Parameter> synesthesiaParameters(const std::string& text, const std:
             p.type = ParameterType::Vec3, p.color = true;
         else
             continue;
-        for (int k = 0; k < componentCount(p.type) && !input.value.empty(); ++k)
-            p.defaultValue[std::size_t(k)] = float(input.value[std::min(std::size_t(k), input.value.size() - 1)]);
-        for (float& v : p.defaultValue)
-            if (!std::isfinite(v)) v = 0.0f;
-        if (!input.low.empty() && !input.high.empty() && !p.color) {
-            p.minimum = float(*std::min_element(input.low.begin(), input.low.end()));
-            p.maximum = float(*std::max_element(input.high.begin(), input.high.end()));
-            if (!(*p.minimum < *p.maximum) || !std::isfinite(*p.minimum) || !std::isfinite(*p.maximum))
-                p.minimum.reset(), p.maximum.reset();
-        }
+        setDefaultAndRange(p, input);
         p.label = input.name + " (scene.json)";
         p.syntax = Parameter::Syntax::Isf; // initializerLength 0: saving leaves it out
         out.push_back(std::move(p));

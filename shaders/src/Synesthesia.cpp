@@ -4,6 +4,7 @@
 
 #include <core/Regex.h>
 
+#include "TextEdits.h"
 #include "Words.h"
 
 #include <algorithm>
@@ -13,11 +14,6 @@
 
 namespace sdfwb::shaders::detail {
 namespace {
-
-struct Replacement {
-    std::size_t offset = 0, length = 0;
-    std::string text;
-};
 
 // Synesthesia's built-in functions (its documented forms), written here: each is declared only
 // where the text calls it and defines no function of that name.
@@ -86,7 +82,7 @@ std::optional<std::string> adaptSynesthesia(const std::string& text, const std::
     if (stripped.find("renderMain") == std::string::npos || !std::regex_search(stripped, renderMain) ||
         std::regex_search(stripped, hostMain))
         return std::nullopt;
-    std::vector<Replacement> edits;
+    std::vector<Edit> edits;
     auto notMember = [&](std::size_t at) { return at == 0 || stripped[at - 1] != '.'; };
     for (const auto& [name, value] : kInputs)
         for (std::size_t at : declares(stripped, name) ? std::vector<std::size_t>{} : wordOffsets(stripped, name))
@@ -125,20 +121,9 @@ std::optional<std::string> adaptSynesthesia(const std::string& text, const std::
     // mainImage returns renderMain (declared ahead, defined where the text has it), on that line too.
     declared += "vec4 renderMain(); void mainImage(out vec4 synesthesiaColour, in vec2 synesthesiaPixel) { "
                 "synesthesiaColour = renderMain(); } ";
-    edits.push_back({first, 0, declared});
-    std::sort(edits.begin(), edits.end(), [](const Replacement& a, const Replacement& b) {
-        return a.offset != b.offset ? a.offset < b.offset : a.length < b.length; // an insertion first
-    });
-    std::string out;
-    std::size_t from = 0;
-    for (const Replacement& e : edits) {
-        if (e.offset < from) continue;
-        out.append(text, from, e.offset - from);
-        out += e.text;
-        from = e.offset + e.length;
-    }
-    out.append(text, from, std::string::npos);
-    return out;
+    // An insertion before any replacement at that offset (applyEdits keeps the given order there).
+    edits.insert(edits.begin(), {first, 0, declared});
+    return applyEdits(text, std::move(edits));
 }
 
 } // namespace sdfwb::shaders::detail

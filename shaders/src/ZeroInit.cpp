@@ -1,4 +1,5 @@
 #include "ZeroInit.h"
+#include "TextEdits.h"
 
 #include <shaders/SdfSource.h>
 
@@ -36,7 +37,7 @@ std::string zeroInitialised(const std::string& text) {
         continued = isDirective && last != std::string::npos && last >= start && s[last] == '\\';
         start = stop + 1;
     }
-    std::vector<std::pair<std::size_t, std::string>> inserts;
+    std::vector<Edit> inserts;
     // Per open brace: data rather than code (a struct's or an interface block's members, an
     // initializer list: no values written). At file scope only a function's body, after its `)`, is code.
     std::vector<bool> dataBody;
@@ -80,7 +81,7 @@ std::string zeroInitialised(const std::string& text) {
         std::size_t k = i;
         while (k < s.size() && (s[k] == ' ' || s[k] == '\t' || s[k] == '\n' || s[k] == '\r')) ++k;
         if (k >= s.size() || !isWord(s[k]) || std::isdigit(static_cast<unsigned char>(s[k]))) continue;
-        std::vector<std::pair<std::size_t, std::string>> mine;
+        std::vector<Edit> mine;
         bool ok = true;
         while (ok) {
             std::size_t nameEnd = k;
@@ -91,7 +92,7 @@ std::string zeroInitialised(const std::string& text) {
                 ok = false;
                 break;
             }
-            if (s[after] != '=') mine.emplace_back(nameEnd, " = " + word + "(0)");
+            if (s[after] != '=') mine.push_back({nameEnd, 0, " = " + word + "(0)"});
             // To the declarator's end: a `,` or `;` outside parentheses and brackets.
             int depth = 0;
             std::size_t j = after;
@@ -111,17 +112,7 @@ std::string zeroInitialised(const std::string& text) {
         }
         if (ok) inserts.insert(inserts.end(), mine.begin(), mine.end());
     }
-    if (inserts.empty()) return text;
-    std::string out;
-    out.reserve(text.size() + inserts.size() * 12);
-    std::size_t from = 0;
-    for (const auto& [at, insert] : inserts) {
-        out.append(text, from, at - from);
-        out += insert;
-        from = at;
-    }
-    out.append(text, from, std::string::npos);
-    return out;
+    return inserts.empty() ? text : applyEdits(text, std::move(inserts));
 }
 
 } // namespace sdfwb::shaders::detail
