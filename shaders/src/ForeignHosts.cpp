@@ -226,7 +226,7 @@ int emptyUnit(const std::string& samplerType) {
 // with or without their folder: "include/DE-Raytracer.frag").
 bool fragmentariumSystemInclude(std::string name) {
     if (const std::size_t slash = name.find_last_of("/\\"); slash != std::string::npos) name = name.substr(slash + 1);
-    static const std::array<const char*, 21> names{"DE-Raytracer.frag",
+    static const std::array<const char*, 24> names{"DE-Raytracer.frag",
                                                    "DE-Raytracer-v0.9.1.frag",
                                                    "DE-Raytracer-v0.9.10.frag",
                                                    "Fast-Raytracer.frag",
@@ -246,7 +246,10 @@ bool fragmentariumSystemInclude(std::string name) {
                                                    "MathUtils.frag",
                                                    "matrix.frag",
                                                    "Progressive3D.frag",
-                                                   "ZBuffer3D.frag"};
+                                                   "ZBuffer3D.frag",
+                                                   "common-camera-3d.frag", // FragmentariumWeb's own three
+                                                   "common-primitives.frag",
+                                                   "common-fractal-utils.frag"};
     return std::find(names.begin(), names.end(), name) != names.end();
 }
 
@@ -263,6 +266,23 @@ constexpr std::array<std::pair<const char*, const char*>, 5> kMathUtils{{
     {"translate", "mat4 translate(vec3 v) { mat4 m = mat4(1.0); m[3] = vec4(v, 1.0); return m; } "},
     {"scale4", "mat4 scale4(float s) { return mat4(vec4(s, 0.0, 0.0, 0.0), vec4(0.0, s, 0.0, 0.0), vec4(0.0, 0.0, s, 0.0), "
                "vec4(0.0, 0.0, 0.0, 1.0)); } "},
+}};
+
+// What FragmentariumWeb's common-primitives.frag and common-fractal-utils.frag give: its
+// rotationMatrix takes radians and an axis of any length and returns a mat3 (the turn of
+// MathUtils.frag's, by -angle), and powN1 is a Mandelbulb step with its running derivative.
+constexpr std::array<std::pair<const char*, const char*>, 5> kWebIncludes{{
+    {"sdSphere", "float sdSphere(vec3 p, float r) { return length(p) - r; } "},
+    {"sdBox",
+     "float sdBox(vec3 p, vec3 b) { vec3 q = abs(p) - b; return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0); } "},
+    {"sdRoundBox", "float sdRoundBox(vec3 p, vec3 b, float r) { vec3 q = abs(p) - b; "
+                   "return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0) - r; } "},
+    {"rotationMatrix",
+     "mat3 rotationMatrix(vec3 axis, float angle) { vec3 v = normalize(axis); float c = cos(angle), s = sin(angle); "
+     "return c * mat3(1.0) + (1.0 - c) * outerProduct(v, v) - s * mat3(0.0, v.z, -v.y, -v.z, 0.0, v.x, v.y, -v.x, 0.0); } "},
+    {"powN1", "vec3 powN1(vec3 z, float power, inout float dr) { float r = length(z); float theta = acos(z.z / max(r, 1.0e-6)) "
+              "* power, phi = atan(z.y, z.x) * power; dr = pow(r, power - 1.0) * power * dr + 1.0; "
+              "return pow(r, power) * vec3(sin(theta) * cos(phi), sin(phi) * sin(theta), cos(theta)); } "},
 }};
 
 // DE-Raytracer.frag's colouring sliders, with its defaults (a vec4's alpha last).
@@ -355,6 +375,7 @@ void adaptFragmentarium(const Code& code, const std::vector<Parameter>& paramete
     std::size_t blockStart = std::string::npos;
     std::string blockEnd;
     std::size_t firstInclude = std::string::npos;            // the edit blanking the first system include
+    bool webIncludes = false;                                // FragmentariumWeb's primitives or fractal utilities
     std::vector<std::pair<std::size_t, std::size_t>> blocks; // #preset and #vertex blocks: not GLSL
     for (std::size_t start = 0; start < text.size();) {
         std::size_t stop = text.find('\n', start);
@@ -379,7 +400,10 @@ void adaptFragmentarium(const Code& code, const std::vector<Parameter>& paramete
             } else if (blockStart == std::string::npos && word == "include") {
                 const std::size_t open = text.find('"', k);
                 const std::size_t close = open < stop ? text.find('"', open + 1) : std::string::npos;
-                if (close < stop && fragmentariumSystemInclude(text.substr(open + 1, close - open - 1))) {
+                const std::string name = close < stop ? text.substr(open + 1, close - open - 1) : std::string();
+                if (close < stop && fragmentariumSystemInclude(name)) {
+                    webIncludes |= name.find("common-primitives") != std::string::npos ||
+                                   name.find("common-fractal-utils") != std::string::npos;
                     if (firstInclude == std::string::npos) firstInclude = edits.size();
                     edits.push_back(blank(text, hash, stop - hash));
                     fragmentarium = true;
@@ -423,8 +447,12 @@ void adaptFragmentarium(const Code& code, const std::vector<Parameter>& paramete
         provided += "vec4 orbitTrap = vec4(10000.0); ";
     provided += trapAccumulators(code);
     // Those the code calls and does not define, and rotationMatrix3, which the other rotations call.
+    if (webIncludes)
+        for (const auto& [name, definition] : kWebIncludes)
+            if (!code.occurrences(name).empty() && !definesFunction(code, name)) provided += definition;
     for (const auto& [name, definition] : kMathUtils) {
         const std::string helper = name;
+        if (webIncludes && helper == "rotationMatrix") continue; // the web one above
         const bool called = !code.occurrences(helper).empty() ||
                             (helper == "rotationMatrix3" &&
                              (!code.occurrences("rotationMatrixXYZ").empty() || !code.occurrences("rotationMatrix").empty()));

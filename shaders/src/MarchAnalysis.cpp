@@ -215,10 +215,11 @@ struct GlobalUse : glslang::TIntermTraverser {
 // parameters (traceArguments). Where mainImage marches itself, the statements before its loop
 // (`lights[2].rotMat = rotate(...);`). Fills `m`'s prelude and globals; leaves them empty when
 // mainImage does not call the marching function, or one that reaches it, (or hold its loop) at the
-// top of its body.
+// top of its body. `host` is mainImage, or a function without parameters that marches after setting
+// them (Synesthesia's `vec3 render3D()`, which renderMain calls).
 void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate* marcher, TIntermLoop* loop,
-                  TIntermAggregate* mainImage, const ComposedShader& composed, const Functions& functions) {
-    TIntermAggregate* body = bodyOf(mainImage);
+                  TIntermAggregate* host, const ComposedShader& composed, const Functions& functions) {
+    TIntermAggregate* body = bodyOf(host);
     if (!body) return;
     GlobalUse reads(functions);
     reads.entered.insert(field->getName().c_str());
@@ -228,7 +229,7 @@ void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate*
     TIntermNode* marcherCall = nullptr;
     std::string called;
     std::vector<TIntermNode*> earlier;
-    if (marcher == mainImage) { // the loop at the top of its body (`for (float t = 0.; ...)` is a sequence)
+    if (marcher == host) { // the loop at the top of its body (`for (float t = 0.; ...)` is a sequence)
         for (TIntermNode* statement : body->getSequence()) {
             TIntermAggregate* sequence = statement->getAsAggregate();
             if (statement == loop || (sequence && sequence->getOp() == glslang::EOpSequence && !sequence->getSequence().empty() &&
@@ -254,20 +255,21 @@ void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate*
     for (const auto& [id, name] : sets.written)
         if (reads.read.count(id)) shared.insert(name);
     const int file = marcherCall->getLoc().string;
-    if (shared.empty() || file < 0 || file >= int(composed.map.files.size()) || mainImage->getLoc().string != file) return;
+    if (shared.empty() || file < 0 || file >= int(composed.map.files.size()) || host->getLoc().string != file) return;
     const std::string text = stripComments(composed.map.files[std::size_t(file)].text);
     std::string before;
     int callLineNumber = marcherCall->getLoc().line;
-    if (marcher != mainImage && (callArguments(text, callLineNumber, called, &before, &callLineNumber).empty() ||
-                                 before.find_first_of(";{}") != std::string::npos))
+    if (marcher != host && (callArguments(text, callLineNumber, called, &before, &callLineNumber).empty() ||
+                            before.find_first_of(";{}") != std::string::npos))
         return;
-    const std::size_t open = bodyOpen(text, mainImage), callLine = lineStart(text, callLineNumber);
+    const std::size_t open = bodyOpen(text, host), callLine = lineStart(text, callLineNumber);
     if (open == std::string::npos || callLine == std::string::npos || open >= callLine ||
         !wholeStatements(text.substr(open + 1, callLine - open - 1)))
         return;
     m.prelude = text.substr(open + 1, callLine - open - 1);
     m.globals.assign(shared.begin(), shared.end());
-    const std::vector<TIntermSymbol*> mainParameters = parametersOf(mainImage);
+    m.setter = plainName(host->getName());
+    const std::vector<TIntermSymbol*> mainParameters = parametersOf(host);
     if (mainParameters.size() == 2) {
         m.colour = mainParameters[0]->getName().c_str();
         m.coordinate = mainParameters[1]->getName().c_str();
@@ -553,8 +555,12 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                     entry->depth = tree.depth[index];
                     if (component > 0) entry->component = std::string(1, "xyzw"[component]);
                     if (mainImage) traceArguments(*entry, call, callee->second, function, loop, tree, composed);
-                    if (mainImage && entry->extraParameters <= 0)
+                    if (mainImage && entry->extraParameters <= 0) {
                         traceGlobals(*entry, callee->second, function, loop, mainImage, composed, tree.functions);
+                        for (TIntermAggregate* host : reached)
+                            if (entry->prelude.empty() && host != mainImage && parametersOf(host).empty())
+                                traceGlobals(*entry, callee->second, function, loop, host, composed, tree.functions);
+                    }
                 }
                 ++entry->loops;
                 if (const detail::HitThreshold hit = detail::hitThreshold(loop, call, result.holders);

@@ -234,6 +234,13 @@ SdfSignature marchedSignature(const std::string& stripped, const MarchedFunction
                                         : detectSignature(stripped, marched.name, returns);
 }
 
+// A function's name in the user's text: the composer renames a word later GLSL took (sdfwb_sample).
+std::string nameInUserText(const PreparedSdf& prepared, const std::string& name) {
+    const auto& renamed = prepared.compat.renamed;
+    const bool ours = name.rfind("sdfwb_", 0) == 0 && std::find(renamed.begin(), renamed.end(), name.substr(6)) != renamed.end();
+    return ours ? name.substr(6) : name;
+}
+
 } // namespace
 
 void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
@@ -243,6 +250,7 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
     std::string untraced; // why a marched field with parameters after the point could not be wrapped
     for (MarchedFunction& marched :
          marchedFunctions(composeSdfShader(userCode, Stage::Fragment, std::vector<ShaderPiece>{}, FeatureDefines{}))) {
+        marched.name = nameInUserText(prepared, marched.name);
         // A struct's float member the march steps by (`Hit map(vec3 p)`, `t += h.d`) is the distance;
         // a vec3 is one when the march reads only its x (marchedFunctions).
         const std::string returns = !marched.member.empty()       ? marched.returnType
@@ -314,7 +322,7 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
         for (const std::string& name : m.globals) globals += (globals.empty() ? "" : ", ") + name;
         return m.name + " (called by the march at line " + std::to_string(m.line) + ")" +
                (m.arguments.empty() ? "" : ", with" + m.arguments.substr(1) + " as " + m.caller + " computes it") +
-               (globals.empty() ? "" : ", after mainImage sets " + globals);
+               (globals.empty() ? "" : ", after " + m.setter + " sets " + globals);
     };
     if (valid.size() > 1) {
         std::string list;

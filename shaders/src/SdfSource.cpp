@@ -420,6 +420,22 @@ CompatNeeds detectCompatNeeds(const std::string& stripped) {
                 break;
             }
     }
+    // Words later GLSL made keywords that GLSL 1.10 and WebGL 1 code (GLSL Sandbox, three.js,
+    // Processing, glslCanvas) uses as names (`float smooth`, `vec3 sample(...)`): renamed like the
+    // noise functions where the file never uses one as a qualifier, which a word follows (`smooth in`).
+    for (const char* keyword :
+         {"smooth", "sample", "buffer", "shared", "patch", "centroid", "precise", "coherent", "restrict", "readonly", "writeonly",
+          "resource", "common", "partition", "active", "filter", "noperspective"}) {
+        if (!words.count(keyword)) continue;
+        bool qualifier = false;
+        detail::forEachOccurrence(stripped, keyword, [&](std::size_t at) {
+            std::size_t k = at + std::strlen(keyword);
+            while (k < stripped.size() && std::isspace(static_cast<unsigned char>(stripped[k]))) ++k;
+            qualifier = k < stripped.size() && (std::isalpha(static_cast<unsigned char>(stripped[k])) || stripped[k] == '_');
+            return !qualifier;
+        });
+        if (!qualifier) needs.renamed.push_back(keyword);
+    }
     for (std::size_t i = 0; i < candidates.size(); ++i) {
         if (!words.count(candidates[i])) continue;
         bool declaredHere = false, wraps = false;

@@ -287,6 +287,7 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
     if (!sdf.signature.entry.empty()) {
         // The wrapper runs statements copied from mainImage (an inline field's prelude): renamed alike.
         std::string wrapper = detail::zeroInitialised(entryWrapper(sdf));
+        for (const std::string& name : sdf.compat.renamed) wrapper = renameWord(wrapper, name, "sdfwb_" + name);
         if (all.count("SDFWB_COMPAT_gl_FragCoord")) wrapper = renameWord(wrapper, "gl_FragCoord", "sdfwb_FragCoord");
         if (all.count("SDFWB_COMPAT_discard")) wrapper = renameWord(wrapper, "discard", "sdfwb_discard()");
         appendFile(shader, "<sdfwb entry point>", wrapper);

@@ -17,7 +17,7 @@ namespace {
 
 // Synesthesia's built-in functions (its documented forms), written here: each is declared only
 // where the text calls it and defines no function of that name.
-const std::array<std::pair<const char*, const char*>, 17> kFunctions{{
+const std::array<std::pair<const char*, const char*>, 21> kFunctions{{
     {"_rotate",
      "vec2 _rotate(vec2 v, float a) { float c = cos(a), s = sin(a); return vec2(c * v.x - s * v.y, s * v.x + c * v.y); }"},
     {"_scale", "float _scale(float v, float lo, float hi) { return lo + v * (hi - lo); }"},
@@ -41,6 +41,11 @@ const std::array<std::pair<const char*, const char*>, 17> kFunctions{{
     {"_rgb2hsv", "vec3 _rgb2hsv(vec3 c) { float hi = max(c.r, max(c.g, c.b)), lo = min(c.r, min(c.g, c.b)), d = hi - lo; "
                  "float h = d == 0.0 ? 0.0 : hi == c.r ? mod((c.g - c.b) / d, 6.0) : hi == c.g ? (c.b - c.r) / d + 2.0 "
                  ": (c.r - c.g) / d + 4.0; return vec3(h / 6.0, hi == 0.0 ? 0.0 : d / hi, hi); }"},
+    // Its media (a video or image the user drops in, and the user image): none loaded, black.
+    {"_loadMedia", "vec4 _loadMedia() { return vec4(0.0); } vec4 _loadMedia(vec2 offset) { return vec4(0.0); }"},
+    {"_textureMedia", "vec4 _textureMedia(vec2 uv) { return vec4(0.0); }"},
+    {"_loadUserImage", "vec4 _loadUserImage() { return vec4(0.0); }"},
+    {"_textureUserImage", "vec4 _textureUserImage(vec2 uv) { return vec4(0.0); }"},
 }};
 
 // Its inputs in Shadertoy's terms.

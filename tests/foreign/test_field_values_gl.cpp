@@ -470,3 +470,58 @@ TEST_F(FieldParameters, AVariableDeclaredWithoutAValueIsZeroAsInWebGl) {
     EXPECT_NEAR(fieldValueAt(golfed, {0.25f, 0.0f, 0.0f}, 0.0f), -0.5f, 1e-6f);
     EXPECT_NEAR(fieldValueAt(golfed, {0.25f, 1.0f, 0.0f}, 0.0f), 0.5f, 1e-6f);
 }
+
+TEST_F(FieldParameters, FragmentariumWebsRotationTakesRadiansAndItsPrimitivesMeasure) {
+    // FragmentariumWeb's rotationMatrix(axis, angle): radians, any axis length, M * (1,0,0) turned to
+    // (0,-1,0) by a quarter turn about z (the transpose of the right-handed turn, as its matrix is written).
+    const shaders::PreparedSdf web = prepareText(
+        "web.frag", "#include \"common-primitives.frag\"\n"
+                    "float DE(vec3 p) {\n"
+                    "  vec3 q = rotationMatrix(vec3(0.0, 0.0, 2.0), radians(90.0)) * p;\n"
+                    "  return min(sdSphere(q - vec3(0.0, -1.0, 0.0), 0.25), sdBox(q - vec3(0.0, 0.0, 5.0), vec3(0.5)));\n"
+                    "}\n");
+    ASSERT_TRUE(web.ok()) << firstError(web);
+    EXPECT_NEAR(fieldValueAt(web, {1.0f, 0.0f, 0.0f}, 0.0f), -0.25f, 1e-5f);
+    EXPECT_NEAR(fieldValueAt(web, {-1.0f, 0.0f, 0.0f}, 0.0f), 1.75f, 1e-5f);
+    EXPECT_NEAR(fieldValueAt(web, {0.0f, 0.0f, 6.0f}, 0.0f), 0.5f, 1e-5f);
+}
+
+TEST_F(FieldParameters, ANameLaterGlslTookKeepsItsValue) {
+    // `float smooth` and a function named `sample` (GLSL 1.10 and WebGL 1 code), renamed where compiled.
+    const shaders::PreparedSdf old =
+        prepareText("old.glsl", "float sample(float smooth) { return smooth * 0.5; }\n"
+                                "float sdf(vec3 p) { float shared = sample(1.0); return length(p) - shared; }\n");
+    ASSERT_TRUE(old.ok()) << firstError(old);
+    EXPECT_NEAR(fieldValueAt(old, {2.0f, 0.0f, 0.0f}, 0.0f), 1.5f, 1e-6f);
+}
+
+TEST_F(FieldParameters, GlobalsAFunctionWithoutParametersSetsBeforeItMarchesReachTheField) {
+    // Synesthesia's style (mainImage, or renderMain, calls `vec3 render3D()`, which sets the globals
+    // the field reads and then marches): that function's statements before its march run first.
+    shaders::PreparedSdf sdf = prepareText(
+        "render3d.glsl", "float radius;\nmat2 spin;\n"
+                         "float map(vec3 p) { p.xz *= spin; return length(p - vec3(0.6, 0.0, 0.0)) - radius; }\n"
+                         "float march(vec3 ro, vec3 rd) {\n"
+                         "    float t = 0.0;\n"
+                         "    for (int i = 0; i < 100; i++) { float d = map(ro + rd * t); if (d < 0.001) break; t += d; }\n"
+                         "    return t;\n"
+                         "}\n"
+                         "vec3 render3D() {\n"
+                         "    float T = iTime, a = 0.3 * T;\n"
+                         "    vec2 p = (2.0 * gl_FragCoord.xy - iResolution.xy) / iResolution.y;\n"
+                         "    radius = 0.5 + 0.1 * sin(T);\n"
+                         "    spin = mat2(cos(a), sin(a), -sin(a), cos(a));\n"
+                         "    float t = march(vec3(0.0, 0.0, -3.0), normalize(vec3(p, 1.5)));\n"
+                         "    return vec3(t * 0.1);\n"
+                         "}\n"
+                         "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                         "    if (iResolution.x > 0.0) fragColor = vec4(render3D(), 1.0);\n"
+                         "}\n");
+    ASSERT_TRUE(sdf.ok()) << firstError(sdf);
+    EXPECT_EQ(sdf.signature.entry, "map");
+    EXPECT_NE(sdf.entryReason.find("after render3D sets radius, spin"), std::string::npos) << sdf.entryReason;
+    EXPECT_NEAR(fieldValueAt(sdf, {0.6f, 0.0f, 0.0f}, 0.0f), -0.5f, 1e-5f);
+    const float a = 0.3f, radius = 0.5f + 0.1f * std::sin(1.0f);
+    const float moved = std::hypot(0.6f * std::cos(a) - 0.6f, 0.6f * std::sin(a)) - radius;
+    EXPECT_NEAR(fieldValueAt(sdf, {0.6f, 0.0f, 0.0f}, 1.0f), moved, 1e-5f);
+}

@@ -578,7 +578,7 @@ TEST(ForeignHosts, ASynesthesiaScenesControlsComeFromItsSceneJson) {
                              "    vec3 rd = normalize(vec3(_uvc, 1.0)), o = vec3(0.0, 0.0, -3.0);\n"
                              "    float t = 0.0;\n"
                              "    for (int i = 0; i < 64; i++) { float d = ball(o + rd * t); if (d < 0.001) break; t += d; }\n"
-                             "    return vec4(tint * t * 0.2, 1.0) + 0.0 * texture(syn_Spectrum, _uv);\n"
+                             "    return vec4(tint * t * 0.2, 1.0) + 0.0 * texture(syn_Spectrum, _uv) + 0.1 * _loadMedia();\n"
                              "}\n"
                              "vec4 renderMain() {\n"
                              "    if (PASSINDEX == 0) return renderMainImage();\n"
@@ -645,4 +645,58 @@ TEST(ForeignHosts, ATwiglBodyIsMainImagesBody) {
 
     const PreparedSdf function = prepare("float f(vec2 c) { return c.x; }\no = vec4(f(FC.xy));\n", "notwigl.glsl");
     EXPECT_NE(function.host, "twigl");
+}
+
+// FragmentariumWeb's own includes (its web app's examples and its guide's "preferred include
+// strategy"): the camera's uniforms, its primitives and its Mandelbulb step, none on disk.
+TEST(ForeignHosts, FragmentariumWebsIncludesGiveItsPrimitives) {
+    const std::string text = "#include \"common-camera-3d.frag\"\n"
+                             "#include \"common-primitives.frag\"\n"
+                             "#include \"common-fractal-utils.frag\"\n"
+                             "#group Shape\n"
+                             "uniform float Angle; slider[-180.0,25.0,180.0]\n"
+                             "float DE(vec3 p) {\n"
+                             "  vec3 q = rotationMatrix(vec3(0.0, 1.0, 0.0), radians(Angle)) * p;\n"
+                             "  float dr = 1.0;\n"
+                             "  vec3 z = powN1(q, 8.0, dr);\n"
+                             "  return max(sdRoundBox(q, vec3(1.0), 0.1), -sdSphere(q, 0.5)) + 0.0 * z.x * dr;\n"
+                             "}\n"
+                             "#preset Default\n"
+                             "Angle = 30\n"
+                             "#endpreset\n";
+    PreparedSdf sdf = prepare(text, "web.frag");
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.host, "Fragmentarium");
+    EXPECT_EQ(sdf.signature.entry, "DE");
+    EXPECT_NE(sdf.source.text.find("mat3 rotationMatrix(vec3 axis, float angle)"), std::string::npos) << sdf.source.text;
+    EXPECT_EQ(sdf.source.text.find("mat4 rotationMatrix"), std::string::npos) << "MathUtils.frag's is not this include's";
+    EXPECT_EQ(sdf.source.text.find("float sdBox("), std::string::npos) << "only what the code calls";
+    EXPECT_EQ(rootLines(sdf), lines(text));
+    EXPECT_EQ(compileErrors(sdf), "");
+}
+
+// GLSL 1.10 and WebGL 1 code names things with words later GLSL made keywords (Processing's
+// Landscape example: `vec3 smoothmix(vec3 a, vec3 b, float base, float smooth, float source)`).
+TEST(ForeignHosts, NamesLaterGlslTookAreRenamedWhereTheyAreNames) {
+    const std::string text =
+        "uniform float time;\n"
+        "uniform vec2 resolution;\n"
+        "float blend(float a, float b, float smooth) { return mix(a, b, smoothstep(0.0, smooth, a - b)); }\n"
+        "float sample(vec3 p) { float filter = 0.5, common = 0.25; return blend(length(p) - filter, p.y + common, 0.1); }\n"
+        "void main() {\n"
+        "  vec3 rd = normalize(vec3((gl_FragCoord.xy - 0.5 * resolution) / resolution.y, 1.0)), ro = vec3(0.0, 0.0, -3.0);\n"
+        "  float t = 0.0;\n"
+        "  for (int i = 0; i < 64; i++) { float d = sample(ro + rd * t); if (d < 0.001) break; t += d; }\n"
+        "  gl_FragColor = vec4(vec3(t * 0.1), 1.0);\n"
+        "}\n";
+    PreparedSdf sdf = prepare(text, "landscape.glsl");
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.signature.entry, "sample");
+    for (const char* word : {"smooth", "sample", "filter", "common"})
+        EXPECT_NE(std::find(sdf.compat.renamed.begin(), sdf.compat.renamed.end(), word), sdf.compat.renamed.end()) << word;
+    EXPECT_EQ(compileErrors(sdf), "");
+    // A qualifier stays one: `smooth` followed by a word is GLSL's, and the file's code is left alone.
+    PreparedSdf qualified = prepare("smooth in vec3 normal;\nfloat sdf(vec3 p) { return length(p) - 0.5; }\n", "qualified.glsl");
+    EXPECT_EQ(std::find(qualified.compat.renamed.begin(), qualified.compat.renamed.end(), "smooth"),
+              qualified.compat.renamed.end());
 }

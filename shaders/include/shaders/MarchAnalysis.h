@@ -48,6 +48,7 @@ struct MarchedFunction {
     // iTime): their names; `prelude` (with coordinate and colour) then holds mainImage's statements
     // before the call of the marching function, which the wrapper runs first.
     std::vector<std::string> globals;
+    std::string setter; // whose statements those are: mainImage, or a function without parameters that marches
 };
 
 // The functions `composed` (a fragment stage holding the user's code and mainImage; no main is
