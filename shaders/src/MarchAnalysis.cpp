@@ -530,7 +530,13 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                 TIntermTyped* point = call->getSequence().front()->getAsTyped();
                 const glslang::TType& returned = callee->second->getType();
                 const CallResult result = resultOf(call, inside.assignments);
-                const bool vec3Field = isFloatVec3(returned) && readsFirstComponentOnly(loop, result);
+                // A vec3 is a field where every call of it in the loop is read for its x alone (not a
+                // path's offset, `p -= path(p)`, of which the loop also reads `path(p).x`).
+                const bool vec3Field =
+                    isFloatVec3(returned) && std::all_of(inside.calls.begin(), inside.calls.end(), [&](auto* other) {
+                        return other->getName() != call->getName() ||
+                               readsFirstComponentOnly(loop, resultOf(other, inside.assignments));
+                    });
                 if (!point || !isFloatVec3(point->getType()) ||
                     !(returnsFloats(returned) || returnsStruct(returned) || vec3Field))
                     continue;

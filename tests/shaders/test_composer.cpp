@@ -733,6 +733,14 @@ TEST(EntryPoint, AVec3FieldWhoseXTheMarchStepsByIsTheEntry) {
                     "    float t = 0.0;\n    vec3 q = ro;\n    for (int i = 0; i < 64; i++) {\n        vec3 b = bend(q);\n"
                     "        q += rd * 0.01 * b.x + rd * 0.01 * b.y;\n    }\n    return t;\n"));
     EXPECT_FALSE(normal.ok()) << "a vec3 read in x and y is not taken for a distance";
+    // A tunnel's path (totetmatt's cable tunnel): the loop moves the point by the whole vec3 and
+    // reads its x elsewhere; the distance is written inline after it, and that is the field.
+    PreparedSdf tunnel =
+        prepare(wholeShader("vec3 path(vec3 p) { return vec3(sin(p.z * 0.1), cos(p.z * 0.1), 0.0); }\n",
+                            "    float g = 0.0, e;\n    for (int i = 0; i < 64; i++) {\n        vec3 p = ro + rd * g;\n"
+                            "        p -= path(p);\n        float h = length(p.xy) - 0.5 - 0.1 * path(p).x;\n"
+                            "        g += e = max(0.001, h);\n    }\n    return g;\n"));
+    EXPECT_NE(tunnel.signature.entry, "path") << "a path the point is moved by is not a field";
 }
 
 // A field with a parameter after the point that mainImage computes and hands to the march in a call
