@@ -7,7 +7,7 @@ writes a Markdown table with its date and machine line.
     /usr/bin/python3 scripts/pasted_shaders_report.py FOLDER [--binary build/app/sdfwb] [--doc docs/pasted-shaders.md]
         [--hosts]   (the folder holds whole shaders of other hosts: glslViewer, GLSL Sandbox, Bonzomatic,
                      KodeLife, three.js, WebGL pages, ports, Fragmentarium, ISF, Processing, the VS Code Shader Toy
-                     extension, Synesthesia (a NAME.synScene folder); the doc says so and names the host
+                     extension, Synesthesia (a NAME.synScene folder), TouchDesigner, p5.js; the doc says so and names the host
                      sdfwb read each file as)
 
 Per file: render (320x180, the default camera), sample (`rand`, 2,000 rows) and how the entry was
@@ -168,7 +168,7 @@ if DOC:
                   f"{gl.group(1).strip() if gl else 'unknown renderer'}.\n\n")
         out.write(("Each file a whole fragment shader written for another host than Shadertoy (glslViewer and The Book of "
                    "Shaders, GLSL Sandbox, Bonzomatic, KodeLife, three.js, a WebGL page, a Shadertoy port, Fragmentarium, ISF, "
-                   "Processing and openFrameworks, SHADERed, Synesthesia), from "
+                   "Processing and openFrameworks, SHADERed, Synesthesia, TouchDesigner, p5.js), from "
                    "public repositories, opened as is with no `--entry` (the files are not in this repository); host: what sdfwb "
                    "read it as (docs/foreign-code.md, 'Shaders from other hosts'). " if HOSTS else
                    "Each file a whole single-pass Shadertoy image shader from public repositories, pasted as is and opened with "

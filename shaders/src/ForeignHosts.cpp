@@ -6,6 +6,7 @@
 #include "ParameterText.h"
 #include "Synesthesia.h"
 #include "TextEdits.h"
+#include "TouchDesigner.h"
 #include "Twigl.h"
 #include "Words.h"
 
@@ -732,6 +733,11 @@ HostAdaptation adaptForeignHost(const std::string& text, const std::vector<Param
     std::vector<Edit> edits;
     adaptFragmentarium(code, parameters, edits, out);
     adaptMain(code, edits, out);
+    if (!out.host.empty())
+        if (std::vector<Edit> touch = touchDesignerEdits(code.stripped); !touch.empty()) {
+            edits.insert(edits.begin(), touch.begin(), touch.end()); // its insertion before a blanked uniform there
+            out.host = "TouchDesigner";
+        }
     adaptIsf(code, edits, out);
     adaptVscodeShaderToy(code, edits, out);
     adaptOldShadertoy(code, edits, out);

@@ -113,16 +113,7 @@ std::optional<std::string> adaptSynesthesia(const std::string& text, const std::
         if (p.syntax == Parameter::Syntax::Isf)
             declared += "uniform " + std::string(parameterTypeName(p.type)) + " " + p.name + "; ";
     // Before the first line of code (not a directive, not blank once comments are gone).
-    std::size_t first = 0;
-    for (std::size_t start = 0; start < stripped.size();) {
-        const std::size_t stop = std::min(stripped.find('\n', start), stripped.size());
-        const std::size_t k = stripped.find_first_not_of(" \t\r", start);
-        if (k < stop && stripped[k] != '#') {
-            first = k;
-            break;
-        }
-        start = stop + 1;
-    }
+    const std::size_t found = firstCodeOffset(stripped), first = found < stripped.size() ? found : 0;
     // mainImage returns renderMain (declared ahead, defined where the text has it), on that line too.
     declared += "vec4 renderMain(); void mainImage(out vec4 synesthesiaColour, in vec2 synesthesiaPixel) { "
                 "synesthesiaColour = renderMain(); } ";

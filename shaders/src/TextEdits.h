@@ -1,6 +1,6 @@
 #pragma once
 // Edits of a shader's text by offset, for the host adaptations (ForeignHosts.cpp, Synesthesia.cpp)
-// and the composer's rewrites (ZeroInit.cpp). Private to shaders/.
+// and the composer's rewrites (ZeroInit.cpp), and where a host's declarations go. Private to shaders/.
 
 #include <algorithm>
 #include <string>
@@ -28,6 +28,18 @@ inline std::string applyEdits(const std::string& text, std::vector<Edit> edits) 
     }
     out.append(text, from, std::string::npos);
     return out;
+}
+
+// The offset of the first line of code in `stripped` (comments blanked): not blank, not a directive;
+// the text's size when there is none.
+inline std::size_t firstCodeOffset(const std::string& stripped) {
+    for (std::size_t start = 0; start < stripped.size();) {
+        const std::size_t stop = std::min(stripped.find('\n', start), stripped.size());
+        const std::size_t k = stripped.find_first_not_of(" \t\r", start);
+        if (k < stop && stripped[k] != '#') return k;
+        start = stop + 1;
+    }
+    return stripped.size();
 }
 
 } // namespace sdfwb::shaders::detail

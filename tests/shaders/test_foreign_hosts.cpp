@@ -700,3 +700,29 @@ TEST(ForeignHosts, NamesLaterGlslTookAreRenamedWhereTheyAreNames) {
     EXPECT_EQ(std::find(qualified.compat.renamed.begin(), qualified.compat.renamed.end(), "smooth"),
               qualified.compat.renamed.end());
 }
+
+// A TouchDesigner GLSL TOP pixel shader: TouchDesigner declares vUV, uTDOutputInfo and the TD
+// functions; the user adds uTime and uResolution on the TOP's Vectors page.
+TEST(ForeignHosts, ATouchDesignerPixelShadersBuiltinsAreProvided) {
+    const std::string text = "uniform float uTime;\n"
+                             "out vec4 fragColor;\n"
+                             "float scene(vec3 p) { return length(p - vec3(0.0, 0.0, 0.1 * sin(uTime))) - 0.5; }\n"
+                             "void main()\n"
+                             "{\n"
+                             "    vec2 res = uTDOutputInfo.res.zw;\n"
+                             "    vec2 uv = vUV.st * 2.0 - 1.0;\n"
+                             "    uv.x *= res.x / res.y;\n"
+                             "    vec3 ro = vec3(0.0, 0.0, -3.0), rd = normalize(vec3(uv, 1.5));\n"
+                             "    float t = 0.0;\n"
+                             "    for (int i = 0; i < 64; i++) { float d = scene(ro + rd * t); if (d < 0.001) break; t += d; }\n"
+                             "    vec3 col = TDHSVToRGB(vec3(t * 0.1, 0.5, 1.0));\n"
+                             "    fragColor = TDOutputSwizzle(TDDither(vec4(col, 1.0)));\n"
+                             "}\n";
+    PreparedSdf sdf = prepare(text, "raymarch_pixel.frag");
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.host, "TouchDesigner");
+    EXPECT_EQ(sdf.signature.entry, "scene");
+    EXPECT_EQ(sdf.source.text.find("TDRGBToHSV"), std::string::npos) << "only what the code calls";
+    EXPECT_EQ(rootLines(sdf), lines(text));
+    EXPECT_EQ(compileErrors(sdf), "");
+}
