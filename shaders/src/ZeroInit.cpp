@@ -77,7 +77,7 @@ std::string zeroInitialised(const std::string& text) {
         i = end;
         if (!declares) continue;
         // TYPE NAME [= VALUE] [, NAME [= VALUE]]... ; (or the for clause's `;`). Not `TYPE NAME(`
-        // (a function), `TYPE[N] NAME` or `TYPE NAME[N]` (arrays), `TYPE(...)` (an expression).
+        // (a function), `TYPE[N] NAME` or an array among other names, `TYPE(...)` (an expression).
         std::size_t k = i;
         while (k < s.size() && (s[k] == ' ' || s[k] == '\t' || s[k] == '\n' || s[k] == '\r')) ++k;
         if (k >= s.size() || !isWord(s[k]) || std::isdigit(static_cast<unsigned char>(s[k]))) continue;
@@ -88,6 +88,19 @@ std::string zeroInitialised(const std::string& text) {
             while (nameEnd < s.size() && isWord(s[nameEnd])) ++nameEnd;
             std::size_t after = nameEnd;
             while (after < s.size() && (s[after] == ' ' || s[after] == '\t' || s[after] == '\n' || s[after] == '\r')) ++after;
+            // An array alone in its declaration, in a body (`vec4 acc[N];`, not a for clause's):
+            // zeroed by a loop after it, on its line, whatever N is (a macro, a constant).
+            if (mine.empty() && parens == 0 && after < s.size() && s[after] == '[' && !directive[after]) {
+                std::size_t close = s.find(']', after), semicolon = close;
+                if (close != std::string::npos) semicolon = s.find_first_not_of(" \t\r\n", close + 1);
+                if (semicolon != std::string::npos && s[semicolon] == ';' && s.find('[', after + 1) > close) {
+                    const std::string name = s.substr(k, nameEnd - k);
+                    mine.push_back({semicolon + 1, 0,
+                                    " for (int sdfwb_zero = 0; sdfwb_zero < " + name + ".length(); ++sdfwb_zero) " + name +
+                                        "[sdfwb_zero] = " + word + "(0);"});
+                    break;
+                }
+            }
             if (nameEnd == k || after >= s.size() || s[after] == '(' || s[after] == '[' || directive[after]) {
                 ok = false;
                 break;

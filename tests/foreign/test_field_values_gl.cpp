@@ -469,6 +469,15 @@ TEST_F(FieldParameters, AVariableDeclaredWithoutAValueIsZeroAsInWebGl) {
     ASSERT_TRUE(golfed.ok()) << firstError(golfed);
     EXPECT_NEAR(fieldValueAt(golfed, {0.25f, 0.0f, 0.0f}, 0.0f), -0.5f, 1e-6f);
     EXPECT_NEAR(fieldValueAt(golfed, {0.25f, 1.0f, 0.0f}, 0.0f), 0.5f, 1e-6f);
+    // An array too, whatever its size is written with: a sum over one starts at zero.
+    const shaders::PreparedSdf summed = prepareText("summed.glsl", "#define N 3\n"
+                                                                   "float sdf(vec3 p) {\n"
+                                                                   "    float r[N]; vec2 o[2];\n"
+                                                                   "    for (int j = 0; j < N; j++) r[j] += 0.25;\n"
+                                                                   "    o[1].x += 0.5;\n"
+                                                                   "    return length(p) - r[0] - r[2] - o[1].x - o[0].y;\n}\n");
+    ASSERT_TRUE(summed.ok()) << firstError(summed);
+    EXPECT_NEAR(fieldValueAt(summed, {2.0f, 0.0f, 0.0f}, 0.0f), 1.0f, 1e-6f);
 }
 
 TEST_F(FieldParameters, FragmentariumWebsRotationTakesRadiansAndItsPrimitivesMeasure) {

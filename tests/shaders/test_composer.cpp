@@ -1127,12 +1127,14 @@ TEST(Composer, VariablesDeclaredWithoutAValueAreZeroAsInWebGl) {
     ASSERT_TRUE(tracer.hasValue());
     EXPECT_FALSE(hasErrors(checkWithGlslang(*tracer)));
     const std::string& out = tracer->text;
-    EXPECT_NE(out.find("float r = float(0), i = float(0); vec3 q = vec3(0); vec4 acc[2]; mat2 m = mat2(0); "
+    EXPECT_NE(out.find("float r = float(0), i = float(0); vec3 q = vec3(0); vec4 acc[2]; for (int sdfwb_zero = 0; "
+                       "sdfwb_zero < acc.length(); ++sdfwb_zero) acc[sdfwb_zero] = vec4(0); mat2 m = mat2(0); "
                        "int n = 3, k = int(0);"),
               std::string::npos)
         << out;
     EXPECT_NE(out.find("for (float j = float(0), g = 1.0; j < 4.; j++)"), std::string::npos) << out;
     EXPECT_NE(out.find("float glow;"), std::string::npos) << "a global is zero already" << out;
+    EXPECT_NE(out.find("const float table[2] = float[2](1.0, 2.0);\n"), std::string::npos) << out;
     EXPECT_NE(out.find("struct Hit { float d; vec3 n; };"), std::string::npos) << out;
     EXPECT_NE(out.find("uniform Block { vec2 size; float scale; };"), std::string::npos) << out;
     EXPECT_NE(out.find("uniform float speed;\nconst float K = 1.0;"), std::string::npos) << out;
