@@ -256,6 +256,34 @@ void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate*
         if (reads.read.count(id)) shared.insert(name);
     const int file = marcherCall->getLoc().string;
     if (shared.empty() || file < 0 || file >= int(composed.map.files.size()) || host->getLoc().string != file) return;
+    // A host with parameters (`vec3 render(vec3 ro, vec3 rd)` setting its lights before its march):
+    // the wrapper gives them zeros, so no global the field reads may come from them, directly or
+    // through what a statement reading them assigns (its locals, and globals in what it calls).
+    const std::vector<TIntermSymbol*> hostParameters = parametersOf(host);
+    std::string declared;
+    const bool ofMainImage = plainName(host->getName()) == "mainImage";
+    if (!ofMainImage && !hostParameters.empty()) {
+        std::set<long long> tainted;
+        for (TIntermSymbol* parameter : hostParameters) {
+            const std::string type = glslTypeName(parameter->getType());
+            if (type.empty()) return;
+            tainted.insert(parameter->getId());
+            declared += type + " " + parameter->getName().c_str() + " = " + zeroValue(parameter->getType()) + "; ";
+        }
+        for (TIntermNode* statement : earlier) {
+            Contents inside;
+            inside.everyMove = true;
+            statement->traverse(&inside);
+            if (std::none_of(inside.symbols.begin(), inside.symbols.end(), [&](long long id) { return tainted.count(id) > 0; }))
+                continue;
+            GlobalUse writes(functions);
+            statement->traverse(&writes);
+            for (const auto& [id, name] : writes.written) tainted.insert(id);
+            for (TIntermBinary* assignment : inside.assignments) tainted.insert(assignedSymbol(assignment->getLeft()));
+        }
+        for (const auto& [id, name] : sets.written)
+            if (shared.count(name) && tainted.count(id)) return;
+    }
     const std::string text = stripComments(composed.map.files[std::size_t(file)].text);
     std::string before;
     int callLineNumber = marcherCall->getLoc().line;
@@ -266,14 +294,13 @@ void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate*
     if (open == std::string::npos || callLine == std::string::npos || open >= callLine ||
         !wholeStatements(text.substr(open + 1, callLine - open - 1)))
         return;
-    m.prelude = text.substr(open + 1, callLine - open - 1);
+    m.prelude = declared + text.substr(open + 1, callLine - open - 1);
     m.globals.assign(shared.begin(), shared.end());
     m.setter = plainName(host->getName());
-    const std::vector<TIntermSymbol*> mainParameters = parametersOf(host);
-    if (mainParameters.size() == 2) {
-        m.colour = mainParameters[0]->getName().c_str();
-        m.coordinate = mainParameters[1]->getName().c_str();
-    }
+    if (!ofMainImage) // not mainImage's: its pixel and colour under names of ours
+        m.coordinate = "sdfwb_hostPixel", m.colour = "sdfwb_hostColour";
+    else if (hostParameters.size() == 2)
+        m.colour = hostParameters[0]->getName().c_str(), m.coordinate = hostParameters[1]->getName().c_str();
 }
 
 // The field's out parameters after the point (`out Material mat`): the variables the march passes
@@ -564,7 +591,7 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                     if (mainImage && entry->extraParameters <= 0) {
                         traceGlobals(*entry, callee->second, function, loop, mainImage, composed, tree.functions);
                         for (TIntermAggregate* host : reached)
-                            if (entry->prelude.empty() && host != mainImage && parametersOf(host).empty())
+                            if (entry->prelude.empty() && host != mainImage)
                                 traceGlobals(*entry, callee->second, function, loop, host, composed, tree.functions);
                     }
                 }

@@ -534,3 +534,39 @@ TEST_F(FieldParameters, GlobalsAFunctionWithoutParametersSetsBeforeItMarchesReac
     const float moved = std::hypot(0.6f * std::cos(a) - 0.6f, 0.6f * std::sin(a)) - radius;
     EXPECT_NEAR(fieldValueAt(sdf, {0.6f, 0.0f, 0.0f}, 1.0f), moved, 1e-5f);
 }
+
+TEST_F(FieldParameters, GlobalsAFunctionWithParametersSetsFromOtherValuesReachTheField) {
+    // The magic lamp's style: `vec3 render(vec3 ro, vec3 rd)` sets the rotation the field reads,
+    // computes its background from the ray, then marches. The ray is not the field's: its statements
+    // run first with the ray zero. A global computed from the ray would be the pixel's, and is not run.
+    const std::string common = "mat2 spin;\nvec3 centre;\n"
+                               "float map(vec3 p) { p.xz *= spin; return length(p - centre) - 0.5; }\n"
+                               "vec3 render(vec3 ro, vec3 rd) {\n"
+                               "    float a = 0.3 * iTime;\n"
+                               "    spin = mat2(cos(a), sin(a), -sin(a), cos(a));\n"
+                               "    vec3 sky = 0.5 + 0.5 * rd;\n"
+                               "    vec3 seen = ro * 0.0;\n"
+                               "    CENTRE\n"
+                               "    for (float t = 0.0; t < 8.0;) { float d = map(ro + rd * t); if (d < 0.001) break; t += d; }\n"
+                               "    return sky;\n"
+                               "}\n"
+                               "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                               "    vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;\n"
+                               "    fragColor = vec4(render(vec3(0.0, 0.0, -3.0), normalize(vec3(uv, 1.5))), 1.0);\n"
+                               "}\n";
+    auto with = [&](const std::string& centre) {
+        std::string text = common;
+        text.replace(text.find("CENTRE"), 6, centre);
+        return prepareText("render.glsl", text);
+    };
+    const shaders::PreparedSdf fixed = with("centre = vec3(0.6, 0.0, 0.0);");
+    ASSERT_TRUE(fixed.ok()) << firstError(fixed);
+    EXPECT_EQ(fixed.signature.entry, "map");
+    EXPECT_NE(fixed.entryReason.find("after render sets centre, spin"), std::string::npos) << fixed.entryReason;
+    EXPECT_NEAR(fieldValueAt(fixed, {0.6f, 0.0f, 0.0f}, 0.0f), -0.5f, 1e-5f);
+    const float a = 0.3f, moved = std::hypot(0.6f * std::cos(a) - 0.6f, 0.6f * std::sin(a)) - 0.5f;
+    EXPECT_NEAR(fieldValueAt(fixed, {0.6f, 0.0f, 0.0f}, 1.0f), moved, 1e-5f);
+    const shaders::PreparedSdf fromRay = with("centre = seen + vec3(0.6, 0.0, 0.0);");
+    ASSERT_TRUE(fromRay.ok()) << firstError(fromRay);
+    EXPECT_EQ(fromRay.entryReason.find("after render sets"), std::string::npos) << fromRay.entryReason;
+}
