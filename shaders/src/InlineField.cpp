@@ -5,6 +5,7 @@
 #include <shaders/SdfSource.h>
 
 #include <map>
+#include <optional>
 #include <regex>
 #include <set>
 
@@ -271,6 +272,25 @@ bool readLoop(const std::string& text, std::size_t keyword, std::string& init, s
     return true;
 }
 
+// The statement that sets the point (`vec3 A = p + q * k, b = A;`) with the point's own value the
+// point given, so that what the statement copies from the point after it (b) sees the point given;
+// nothing where it does not set the whole point with a plain `=`.
+std::optional<std::string> pointGivenInPlace(const std::string& statement, const std::string& point) {
+    const std::regex sets(R"((^|[^\w.])()" + point + R"()\s*=)", kLinearRegex);
+    std::smatch match;
+    if (!std::regex_search(statement, match, sets)) return std::nullopt;
+    const std::size_t from = std::size_t(match.position(0) + match.length(0));
+    if (from < statement.size() && statement[from] == '=') return std::nullopt; // `==`
+    int depth = 0;
+    for (std::size_t k = from; k < statement.size(); ++k) {
+        const char c = statement[k];
+        if (c == '(' || c == '[' || c == '{') ++depth;
+        if ((c == ')' || c == ']' || c == '}') && --depth < 0) return std::nullopt;
+        if (depth == 0 && (c == ',' || c == ';')) return statement.substr(0, from) + " sdfwb_point" + statement.substr(k);
+    }
+    return std::nullopt;
+}
+
 } // namespace
 
 std::string inlineFieldBody(const std::string& text, std::size_t keyword, const std::string& counter, const std::string& point,
@@ -332,9 +352,10 @@ std::string inlineFieldBody(const std::string& text, std::size_t keyword, const 
     }
     std::string out = "{\n";
     if (!init.empty()) out += init + ";\n";
+    const std::optional<std::string> inPlace = setAt == pointAt ? pointGivenInPlace(statements[pointAt], point) : std::nullopt;
     for (std::size_t i = 0; i < std::min(stepAt, statements.size()); ++i) {
-        out += withoutLoopExits(statements[i]) + "\n";
-        if (i == setAt) out += point + " = sdfwb_point;\n";
+        out += withoutLoopExits(i == pointAt && inPlace ? *inPlace : statements[i]) + "\n";
+        if (i == setAt && !inPlace) out += point + " = sdfwb_point;\n";
     }
     out += "return float(" + step + ");\n}\n";
     return out;

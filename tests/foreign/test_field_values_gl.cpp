@@ -570,3 +570,24 @@ TEST_F(FieldParameters, GlobalsAFunctionWithParametersSetsFromOtherValuesReachTh
     ASSERT_TRUE(fromRay.ok()) << firstError(fromRay);
     EXPECT_EQ(fromRay.entryReason.find("after render sets"), std::string::npos) << fromRay.entryReason;
 }
+
+TEST_F(FieldParameters, AnInlineFieldsPointCopiedInItsOwnDeclarationIsThePointGiven) {
+    // Golfed style: `vec3 A = p + q * k, b = A;` sets the point and copies it in one declaration; the
+    // field works on the copy. Given a point, the copy is of that point, not of the camera's.
+    const shaders::PreparedSdf sdf = prepareText("copied.glsl", "void mainImage(out vec4 G, in vec2 I) {\n"
+                                                                "  vec2 J = (I - .5 * iResolution.xy) / iResolution.y;\n"
+                                                                "  vec3 p = vec3(0., 0., -3.), q = normalize(vec3(J, 1.));\n"
+                                                                "  float k = 0.;\n"
+                                                                "  for (int c = 0; c < 64; c++) {\n"
+                                                                "    vec3 A = p + q * k, b = A;\n"
+                                                                "    b.x -= .25;\n"
+                                                                "    float a = length(b) - .5;\n"
+                                                                "    if (abs(a) < .0015 || k > 16.) break;\n"
+                                                                "    k += a;\n"
+                                                                "  }\n"
+                                                                "  G = vec4(k * .1);\n"
+                                                                "}\n");
+    ASSERT_TRUE(sdf.ok()) << firstError(sdf);
+    EXPECT_NEAR(fieldValueAt(sdf, {0.25f, 0.0f, 0.0f}, 0.0f), -0.5f, 1e-5f);
+    EXPECT_NEAR(fieldValueAt(sdf, {1.25f, 0.0f, 0.0f}, 0.0f), 0.5f, 1e-5f);
+}
