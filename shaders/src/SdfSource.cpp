@@ -182,7 +182,7 @@ SdfSignature detectSignatureOf(const std::string& stripped, const std::string& e
     // A definition (with a body), not a prototype. vec3 synonyms of the G3D dialect count.
     const std::regex& definition =
         compiledOnce(R"(\b()" + returnTypes + R"()\s+)" + entry +
-                     R"(\s*\(\s*((?:in\s+|const\s+|highp\s+|mediump\s+)*)(vec3|Point3|Vector3|float3)\s+\w+\s*)"
+                     R"(\s*\(\s*((?:in\s+|out\s+|inout\s+|const\s+|highp\s+|mediump\s+)*)(vec3|Point3|Vector3|float3)\s+\w+\s*)"
                      R"((,\s*((?:in\s+|const\s+|highp\s+)*)float\s+\w+\s*)?)"
                      R"(((?:,\s*(?:out|inout)\s+(?:highp\s+|mediump\s+|lowp\s+)?\w+\s+\w+\s*)*)\)\s*\{)");
     // Tried only at the word before each occurrence of the name: searching from every position of
@@ -202,6 +202,8 @@ SdfSignature detectSignatureOf(const std::string& stripped, const std::string& e
         signature.returnType = returned;
         signature.member = member;
         if (match[4].matched) signature.animated = true;
+        static const std::regex outPoint(R"(\bout\b)", kLinearRegex);
+        signature.pointOut = std::regex_search(match[2].str(), outPoint);
         // Out parameters after the point (`out float id`, `out Material m`): the wrapper passes
         // locals of their types and drops what they receive.
         signature.outParameters.clear();

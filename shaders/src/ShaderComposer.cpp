@@ -8,6 +8,7 @@
 
 #include <core/Regex.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 
@@ -50,6 +51,27 @@ std::string renameWord(const std::string& text, const std::string& word, const s
         out.append(text, from, at - from);
         out += replacement;
         from = at + word.size();
+        return true;
+    });
+    out.append(text, from, std::string::npos);
+    return out;
+}
+
+// `text` with every parameter declared `out` declared `inout`. For a file whose field declares its
+// point `out` (`float DE(out vec3 p) { return fold(p); }` with `fold(out vec3 z)`): such code was
+// written on a driver where an out parameter holds the caller's value, and reads it before writing.
+std::string parametersInout(const std::string& text) {
+    const std::string stripped = stripComments(text); // same offsets
+    std::string out;
+    std::size_t from = 0;
+    detail::forEachOccurrence(stripped, "out", [&](std::size_t at) {
+        std::size_t before = at;
+        while (before > 0 && std::isspace(static_cast<unsigned char>(stripped[before - 1]))) --before;
+        if (before > 0 && (stripped[before - 1] == '(' || stripped[before - 1] == ',')) {
+            out.append(text, from, at - from);
+            out += "inout";
+            from = at + 3;
+        }
         return true;
     });
     out.append(text, from, std::string::npos);
@@ -281,6 +303,7 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
     if (all.count("SDFWB_COMPAT_discard")) userText = renameWord(userText, "discard", "sdfwb_discard()");
     // So are texture()'s bias form (g3d_compat.glsl).
     if (all.count("SDFWB_COMPAT_texture")) userText = renameBiasLookups(userText);
+    if (sdf.signature.pointOut) userText = parametersInout(userText);
     shader.text += userText;
     if (!sdf.source.text.empty() && sdf.source.text.back() != '\n') shader.text += '\n';
     // No entry yet (the entry's search reads the user's code alone): no wrapper.

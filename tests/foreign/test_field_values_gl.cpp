@@ -591,3 +591,25 @@ TEST_F(FieldParameters, AnInlineFieldsPointCopiedInItsOwnDeclarationIsThePointGi
     EXPECT_NEAR(fieldValueAt(sdf, {0.25f, 0.0f, 0.0f}, 0.0f), -0.5f, 1e-5f);
     EXPECT_NEAR(fieldValueAt(sdf, {1.25f, 0.0f, 0.0f}, 0.0f), 0.5f, 1e-5f);
 }
+
+TEST_F(FieldParameters, AFieldWhosePointIsDeclaredOutReadsThePointGiven) {
+    // `float DE(out vec3 p)` passing p on to `fold(out vec3 z)`, both read before written: written on
+    // a driver where an out parameter holds the caller's value (GLSL leaves it undefined; llvmpipe
+    // read a constant field). Composed inout, every out parameter of the file.
+    const shaders::PreparedSdf sdf = prepareText(
+        "outpoint.glsl", "float fold(out vec3 z) { z = abs(z); return length(z - vec3(0.5, 0.0, 0.0)) - 0.25; }\n"
+                         "float DE(out vec3 p) { p.x += 0.0; return fold(p); }\n"
+                         "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                         "    vec3 rd = normalize(vec3((fragCoord - 0.5 * iResolution.xy) / iResolution.y, 1.5));\n"
+                         "    float t = 0.0;\n"
+                         "    for (int i = 0; i < 64; i++) { vec3 p = vec3(0.0, 0.0, -3.0) + rd * t; float d = DE(p);\n"
+                         "        if (d < 0.001) break; t += d; }\n"
+                         "    fragColor = vec4(t * 0.1);\n"
+                         "}\n");
+    ASSERT_TRUE(sdf.ok()) << firstError(sdf);
+    EXPECT_EQ(sdf.signature.entry, "DE");
+    EXPECT_TRUE(sdf.signature.pointOut);
+    EXPECT_NEAR(fieldValueAt(sdf, {0.5f, 0.0f, 0.0f}, 0.0f), -0.25f, 1e-5f);
+    EXPECT_NEAR(fieldValueAt(sdf, {-0.5f, 0.0f, 0.0f}, 0.0f), -0.25f, 1e-5f);
+    EXPECT_NEAR(fieldValueAt(sdf, {1.5f, 0.0f, 0.0f}, 0.0f), 0.75f, 1e-5f);
+}

@@ -37,6 +37,9 @@ struct SdfSignature {
     // The types of `out`/`inout` parameters after the point (and the time), in order
     // (`float sdf(vec3 p, out Material m)`): the wrapper passes locals of these types.
     std::vector<std::string> outParameters;
+    // The point itself declared `out` (`float DE(out vec3 p)`, read before it is written): such code
+    // was written on a driver where an out parameter holds the caller's value; composed `inout`.
+    bool pointOut = false;
     // A field with parameters after the point whose values mainImage computes (a whole shader's
     // march, shaders/MarchAnalysis.h): once per invocation the wrapper runs `prelude` (mainImage's
     // code before the march, its parameters declared first) and keeps each `traced` value; every
