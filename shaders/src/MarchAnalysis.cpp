@@ -227,6 +227,7 @@ void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate*
     // The call of the marching function, or of the function that reaches it (`col = render(ro, rd)`), or
     // mainImage's own march loop, and the statements before it.
     TIntermNode* marcherCall = nullptr;
+    int heldFrom = 0; // the line of the loop or `if` that holds the call, where one does
     std::string called;
     std::vector<TIntermNode*> earlier;
     if (marcher == host) { // the loop at the top of its body (`for (float t = 0.; ...)` is a sequence)
@@ -241,8 +242,18 @@ void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate*
         }
     } else {
         const ReachingStatement found = statementReaching(body, functionsReaching(marcher->getName(), functions));
-        if (!found.call || isControlFlow(found.statement)) return;
+        if (!found.call) return;
+        // The call in a loop or an `if` (dr2's `for (float a = 0.; a < naa; a ++) col += ShowScene (ro, rd);`,
+        // antialiasing): the statements before that statement.
+        TIntermAggregate* sequence = found.statement->getAsAggregate();
+        const bool held =
+            isControlFlow(found.statement) || (sequence && sequence->getOp() == glslang::EOpSequence &&
+                                               !sequence->getSequence().empty() && isControlFlow(sequence->getSequence().back()));
         marcherCall = found.call, called = plainName(found.call->getName());
+        if (held)
+            heldFrom = std::min(found.statement->getLoc().line, sequence && !sequence->getSequence().empty()
+                                                                    ? sequence->getSequence().front()->getLoc().line
+                                                                    : found.statement->getLoc().line);
         for (TIntermNode* statement : body->getSequence()) {
             if (statement == found.statement) break;
             earlier.push_back(statement);
@@ -287,8 +298,10 @@ void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate*
     const std::string text = stripComments(composed.map.files[std::size_t(file)].text);
     std::string before;
     int callLineNumber = marcherCall->getLoc().line;
-    if (marcher != host && (callArguments(text, callLineNumber, called, &before, &callLineNumber).empty() ||
-                            before.find_first_of(";{}") != std::string::npos))
+    if (heldFrom > 0)
+        callLineNumber = heldFrom;
+    else if (marcher != host && (callArguments(text, callLineNumber, called, &before, &callLineNumber).empty() ||
+                                 before.find_first_of(";{}") != std::string::npos))
         return;
     const std::size_t open = bodyOpen(text, host), callLine = lineStart(text, callLineNumber);
     if (open == std::string::npos || callLine == std::string::npos || open >= callLine ||

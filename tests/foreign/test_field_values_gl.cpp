@@ -613,3 +613,30 @@ TEST_F(FieldParameters, AFieldWhosePointIsDeclaredOutReadsThePointGiven) {
     EXPECT_NEAR(fieldValueAt(sdf, {-0.5f, 0.0f, 0.0f}, 0.0f), -0.25f, 1e-5f);
     EXPECT_NEAR(fieldValueAt(sdf, {1.5f, 0.0f, 0.0f}, 0.0f), 0.75f, 1e-5f);
 }
+
+TEST_F(FieldParameters, GlobalsMainImageSetsBeforeTheLoopThatHoldsTheCallReachTheField) {
+    // dr2's form: mainImage sets the globals, then calls the scene in an antialiasing loop.
+    const shaders::PreparedSdf sdf = prepareText(
+        "aa.glsl",
+        "float dstFar, radius;\n"
+        "float ObjDf(vec3 p) { return min(dstFar, length(p) - radius); }\n"
+        "vec3 ShowScene(vec3 ro, vec3 rd) {\n"
+        "  float t = 0.;\n"
+        "  for (int j = 0; j < 64; j ++) { float d = ObjDf(ro + t * rd); if (d < 0.001 || t > dstFar) break; t += d; }\n"
+        "  return vec3(t);\n"
+        "}\n"
+        "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+        "  vec2 uv = 2. * fragCoord / iResolution.xy - 1.;\n"
+        "  vec3 col = vec3(0.);\n"
+        "  dstFar = 200.;\n"
+        "  radius = 0.5 + 0.1 * sin(iTime);\n"
+        "  for (float a = 0.; a < 3.; a ++)\n"
+        "    col += ShowScene(vec3(0., 0., -3.), normalize(vec3(uv + 0.001 * a, 1.5))) / 3.;\n"
+        "  fragColor = vec4(col, 1.);\n"
+        "}\n");
+    ASSERT_TRUE(sdf.ok()) << firstError(sdf);
+    EXPECT_EQ(sdf.signature.entry, "ObjDf");
+    EXPECT_NE(sdf.entryReason.find("after mainImage sets dstFar, radius"), std::string::npos) << sdf.entryReason;
+    EXPECT_NEAR(fieldValueAt(sdf, {2.0f, 0.0f, 0.0f}, 0.0f), 1.5f, 1e-5f);
+    EXPECT_NEAR(fieldValueAt(sdf, {2.0f, 0.0f, 0.0f}, 1.0f), 1.5f - 0.1f * std::sin(1.0f), 1e-5f);
+}
