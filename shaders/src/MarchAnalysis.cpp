@@ -215,8 +215,8 @@ struct GlobalUse : glslang::TIntermTraverser {
 // parameters (traceArguments). Where mainImage marches itself, the statements before its loop
 // (`lights[2].rotMat = rotate(...);`). Fills `m`'s prelude and globals; leaves them empty when
 // mainImage does not call the marching function, or one that reaches it, (or hold its loop) at the
-// top of its body. `host` is mainImage, or a function without parameters that marches after setting
-// them (Synesthesia's `vec3 render3D()`, which renderMain calls).
+// top of its body. `host` is mainImage, or else a function that marches after setting them
+// (Synesthesia's `vec3 render3D()`; `vec3 render(vec3 ro, vec3 rd)`, its parameters then zero).
 void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate* marcher, TIntermLoop* loop,
                   TIntermAggregate* host, const ComposedShader& composed, const Functions& functions) {
     TIntermAggregate* body = bodyOf(host);

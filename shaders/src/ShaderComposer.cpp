@@ -3,6 +3,7 @@
 #include <shaders/BuiltinShaders.h>
 #include <shaders/SdfSource.h>
 
+#include "TextEdits.h"
 #include "Words.h"
 #include "ZeroInit.h"
 
@@ -62,20 +63,14 @@ std::string renameWord(const std::string& text, const std::string& word, const s
 // written on a driver where an out parameter holds the caller's value, and reads it before writing.
 std::string parametersInout(const std::string& text) {
     const std::string stripped = stripComments(text); // same offsets
-    std::string out;
-    std::size_t from = 0;
+    std::vector<detail::Edit> edits;
     detail::forEachOccurrence(stripped, "out", [&](std::size_t at) {
         std::size_t before = at;
         while (before > 0 && std::isspace(static_cast<unsigned char>(stripped[before - 1]))) --before;
-        if (before > 0 && (stripped[before - 1] == '(' || stripped[before - 1] == ',')) {
-            out.append(text, from, at - from);
-            out += "inout";
-            from = at + 3;
-        }
+        if (before > 0 && (stripped[before - 1] == '(' || stripped[before - 1] == ',')) edits.push_back({at, 3, "inout"});
         return true;
     });
-    out.append(text, from, std::string::npos);
-    return out;
+    return detail::applyEdits(text, std::move(edits));
 }
 
 // `text` with each call of texture, texture2D or textureCube that passes three arguments (the

@@ -48,7 +48,7 @@ struct MarchedFunction {
     // iTime): their names; `prelude` (with coordinate and colour) then holds mainImage's statements
     // before the call of the marching function, which the wrapper runs first.
     std::vector<std::string> globals;
-    std::string setter; // whose statements those are: mainImage, or a function without parameters that marches
+    std::string setter; // whose statements those are: mainImage, or the function that marches (its parameters zero)
 };
 
 // The functions `composed` (a fragment stage holding the user's code and mainImage; no main is
