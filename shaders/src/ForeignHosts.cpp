@@ -304,21 +304,6 @@ const std::array<RaytracerInput, 9> kRaytracerInputs{{
     {"Cycles", ParameterType::Float, {1.1f, 0.0f, 0.0f, 0.0f}},
 }};
 
-bool definesFunction(const Code& code, const std::string& name) {
-    for (std::size_t at : code.occurrences(name)) {
-        if (code.depth[at] != 0) continue;
-        std::size_t k = code.skipSpace(at + name.size());
-        if (k < code.stripped.size() && code.stripped[k] == '(') {
-            std::size_t close = code.stripped.find(')', k);
-            if (close != std::string::npos) {
-                std::size_t next = code.skipSpace(close + 1);
-                if (next < code.stripped.size() && code.stripped[next] == '{') return true;
-            }
-        }
-    }
-    return false;
-}
-
 // The raytracer's colouring sliders that a fragment's own code reads (a DE mixing OrbitStrength
 // in, a baseColor()), declared at the Default preset's value, else at the raytracer's default.
 // `blocks`: the #preset and #vertex blocks, whose lines are not the file's declarations.
@@ -450,14 +435,14 @@ void adaptFragmentarium(const Code& code, const std::vector<Parameter>& paramete
     // Those the code calls and does not define, and rotationMatrix3, which the other rotations call.
     if (webIncludes)
         for (const auto& [name, definition] : kWebIncludes)
-            if (!code.occurrences(name).empty() && !definesFunction(code, name)) provided += definition;
+            if (!code.occurrences(name).empty() && !definesFunction(code.stripped, name)) provided += definition;
     for (const auto& [name, definition] : kMathUtils) {
         const std::string helper = name;
         if (webIncludes && helper == "rotationMatrix") continue; // the web one above
         const bool called = !code.occurrences(helper).empty() ||
                             (helper == "rotationMatrix3" &&
                              (!code.occurrences("rotationMatrixXYZ").empty() || !code.occurrences("rotationMatrix").empty()));
-        if (called && !definesFunction(code, helper)) provided += definition;
+        if (called && !definesFunction(code.stripped, helper)) provided += definition;
     }
     // The historical matrix.frag's rotationMatrix returned a mat3 in some versions: where the code
     // keeps it in a mat3, that one.

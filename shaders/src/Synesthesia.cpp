@@ -67,7 +67,7 @@ const std::array<std::pair<const char*, const char*>, 11> kInputs{{
 const std::array<const char*, 5> kTextures{"syn_Spectrum", "syn_LevelTrail", "syn_Media", "syn_FinalPass", "syn_UserImage"};
 
 bool defines(const std::string& stripped, const std::string& name) {
-    return std::regex_search(stripped, std::regex(R"(\b\w+\s+)" + name + R"(\s*\()", kLinearRegex)) ||
+    return definesFunction(stripped, name) ||
            std::regex_search(stripped, std::regex(R"(#\s*define\s+)" + name + R"(\b)", kLinearRegex)) ||
            std::regex_search(stripped, std::regex(R"(\b(?:float|const\s+float)\s+)" + name + R"(\s*=)", kLinearRegex));
 }

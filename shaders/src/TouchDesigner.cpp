@@ -21,10 +21,6 @@ const std::array<std::pair<const char*, const char*>, 4> kFunctions{{
                    "(c.r - c.g) / d + 4.0; return vec3(h / 6.0, hi == 0.0 ? 0.0 : d / hi, hi); } "},
 }};
 
-bool defines(const std::string& stripped, const std::string& name) {
-    return std::regex_search(stripped, std::regex(R"(\b\w+\s+)" + name + R"(\s*\([^)]*\)\s*\{)", kLinearRegex));
-}
-
 } // namespace
 
 std::vector<Edit> touchDesignerEdits(const std::string& stripped) {
@@ -35,7 +31,7 @@ std::vector<Edit> touchDesignerEdits(const std::string& stripped) {
     std::vector<Edit> edits;
     std::string declared;
     for (const auto& [name, definition] : kFunctions)
-        if (!wordOffsets(stripped, name).empty() && !defines(stripped, name)) declared += definition;
+        if (!wordOffsets(stripped, name).empty() && !definesFunction(stripped, name)) declared += definition;
     const std::size_t first = firstCodeOffset(stripped);
     if (!declared.empty()) edits.push_back({first < stripped.size() ? first : 0, 0, declared});
     for (std::size_t at : wordOffsets(stripped, "vUV"))

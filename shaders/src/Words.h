@@ -56,4 +56,29 @@ template <class Text, class Visit> void forEachIdentifier(const Text& text, Visi
     }
 }
 
+// Whether `stripped` (comments blanked) defines a function `name`: `TYPE name(...) {`, not only
+// declares or calls it. The hosts' adapters (ForeignHosts, Synesthesia, TouchDesigner) provide a
+// helper only where the file has none of its own.
+inline bool definesFunction(const std::string& stripped, const std::string& name) {
+    auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+    auto skipSpace = [&](std::size_t k) {
+        while (k < stripped.size() && space(stripped[k])) ++k;
+        return k;
+    };
+    bool found = false;
+    forEachOccurrence(stripped, name, [&](std::size_t at) {
+        std::size_t type = at;
+        while (type > 0 && space(stripped[type - 1])) --type;
+        if (type == at || type == 0 || !isWordCharacter(stripped[type - 1])) return true;
+        std::size_t open = skipSpace(at + name.size());
+        if (open >= stripped.size() || stripped[open] != '(') return true;
+        std::size_t close = stripped.find(')', open);
+        if (close == std::string::npos) return true;
+        std::size_t body = skipSpace(close + 1);
+        found = body < stripped.size() && stripped[body] == '{';
+        return !found;
+    });
+    return found;
+}
+
 } // namespace sdfwb::shaders::detail

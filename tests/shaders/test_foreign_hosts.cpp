@@ -726,3 +726,27 @@ TEST(ForeignHosts, ATouchDesignerPixelShadersBuiltinsAreProvided) {
     EXPECT_EQ(rootLines(sdf), lines(text));
     EXPECT_EQ(compileErrors(sdf), "");
 }
+
+// A pixel shader that writes its own TDDither (the TD functions are only declared by the host when
+// the file does not define them) keeps it, and only the one it calls but lacks is provided.
+TEST(ForeignHosts, ATouchDesignerShadersOwnHelperIsKept) {
+    const std::string text = "out vec4 fragColor;\n"
+                             "vec4 TDDither (vec4 c)\n"
+                             "{ return c + 0.002; }\n"
+                             "float scene(vec3 p) { return length(p) - 0.5; }\n"
+                             "void main()\n"
+                             "{\n"
+                             "    vec2 uv = vUV.st * 2.0 - 1.0;\n"
+                             "    vec3 ro = vec3(0.0, 0.0, -3.0), rd = normalize(vec3(uv, 1.5));\n"
+                             "    float t = 0.0;\n"
+                             "    for (int i = 0; i < 64; i++) { float d = scene(ro + rd * t); if (d < 0.001) break; t += d; }\n"
+                             "    if (TDDither(vec4(t)).x > 0.0) fragColor = TDOutputSwizzle(TDDither(vec4(t * 0.1)));\n"
+                             "}\n";
+    PreparedSdf sdf = prepare(text, "own_dither.frag");
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.host, "TouchDesigner");
+    const std::string& composed = sdf.source.text;
+    EXPECT_EQ(composed.find("TDDither(vec4 c)"), std::string::npos) << "the file's own TDDither, not a second one";
+    EXPECT_NE(composed.find("TDOutputSwizzle(vec4 c)"), std::string::npos);
+    EXPECT_EQ(compileErrors(sdf), "");
+}
