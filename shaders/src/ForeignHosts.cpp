@@ -213,16 +213,6 @@ bool shadertoyInput(const Declaration& d) {
            (d.type == "sampler2D" || d.type == "samplerCube");
 }
 
-// Texture units no texture is bound to: a host's textures sdfwb has no image for read (0, 0, 0, 1)
-// there, one unit a sampler type (a program may not give one unit two types).
-int emptyUnit(const std::string& samplerType) {
-    if (samplerType == "sampler1D") return 12;
-    if (samplerType == "sampler2D") return 13;
-    if (samplerType == "sampler3D") return 14;
-    if (samplerType == "samplerCube") return 15;
-    return -1;
-}
-
 // Fragmentarium's system includes, which come with the program and are not on disk here (named
 // with or without their folder: "include/DE-Raytracer.frag").
 bool fragmentariumSystemInclude(std::string name) {
@@ -453,6 +443,10 @@ void adaptFragmentarium(const Code& code, const std::vector<Parameter>& paramete
             provided.replace(at, provided.find("} ", at) + 2 - at,
                              "mat3 rotationMatrix(vec3 v, float angle) { return rotationMatrix3(v, angle); } ");
     }
+    // MathUtils.frag's `#define PI`, where the code uses PI and has none of its own.
+    static const std::regex ownPi(R"((?:#\s*define\s+PI|\bPI\s*=)\b)", kLinearRegex);
+    if (!code.occurrences("PI").empty() && !std::regex_search(code.stripped, ownPi))
+        provided += "const float PI = 3.14159265358979; ";
     provided += raytracerInputs(code, blocks);
     // The system includes declare `uniform float time`: sdfwb's scene time.
     bool timeDeclared = false;
@@ -471,7 +465,11 @@ void adaptMain(const Code& code, std::vector<Edit>& edits, HostAdaptation& out) 
     const bool hasMainImage = !code.occurrences("mainImage").empty() && voidFunction(code, "mainImage", false).has_value();
     // A fragment shader's main writes a colour: gl_FragColor, or the file's `out vec4`. Any other
     // main() is not a host's (SourceChecks says the workbench writes main).
-    bool writesColour = !code.occurrences("gl_FragColor", main->bodyOpen, main->bodyClose).empty();
+    // Through a macro too (`#define O gl_FragColor`, golfed and preview-extension code).
+    const std::vector<std::size_t> colourWrites = code.occurrences("gl_FragColor");
+    bool writesColour = std::any_of(colourWrites.begin(), colourWrites.end(), [&](std::size_t at) {
+        return (at > main->bodyOpen && at < main->bodyClose) || code.inDirective(at);
+    });
     for (const Declaration& d : fileScopeDeclarations(code, {"out"})) writesColour |= d.type == "vec4";
     if (!writesColour) return;
     // three.js's shader chunks (`#include <common>`, `#include <tonemapping_fragment>`), which its
@@ -512,6 +510,12 @@ void adaptMain(const Code& code, std::vector<Edit>& edits, HostAdaptation& out) 
         if (unit >= 0 && !d.layout && !shadertoyInput(d))
             edits.push_back({d.begin, 0, "layout(binding = " + std::to_string(unit) + ") "});
     }
+    // A layer that copies the host's inputs into Shadertoy's names at file scope (Processing's
+    // `vec3 iResolution = vec3(resolution, 0.0);`): sdfwb declares and sets those.
+    static const std::regex layer(R"(\b(?:vec3\s+iResolution|vec4\s+iMouse|float\s+iTime)\s*=[^;{}]*;)", kLinearRegex);
+    for (auto it = std::sregex_iterator(code.stripped.begin(), code.stripped.end(), layer); it != std::sregex_iterator(); ++it)
+        if (const std::size_t at = std::size_t(it->position(0)); code.depth[at] == 0)
+            edits.push_back(blank(text, at, std::size_t(it->length(0))));
     for (const auto& [name, value] : renames)
         for (std::size_t at : code.occurrences(name)) // macros' bodies too
             if (at == 0 || code.stripped[at - 1] != '.') edits.push_back({at, name.size(), value});
@@ -558,8 +562,9 @@ void adaptMain(const Code& code, std::vector<Edit>& edits, HostAdaptation& out) 
     if (colour.empty()) colour = freshName(code, "fragColor");
     edits.push_back({main->name, main->close + 1 - main->name, "mainImage(out vec4 " + colour + ", in vec2 " + coordinate + ")"});
     for (std::size_t at : code.occurrences("gl_FragColor")) edits.push_back({at, 12, colour});
-    for (std::size_t at : code.occurrences("gl_FragCoord", main->bodyOpen, main->bodyClose))
-        edits.push_back({at, 12, "vec4(" + coordinate + ", 0.0, 1.0)"});
+    for (std::size_t at : code.occurrences("gl_FragCoord"))
+        if ((at > main->bodyOpen && at < main->bodyClose) || code.inDirective(at)) // `#define U gl_FragCoord.xy`
+            edits.push_back({at, 12, "vec4(" + coordinate + ", 0.0, 1.0)"});
     out.host = host;
 }
 

@@ -28,6 +28,16 @@ struct HostAdaptation {
     std::string entryPrelude; // statements the entry wrapper runs before calling the field ("init();")
 };
 
+// Texture units no texture is bound to: a host's textures sdfwb has no image for read (0, 0, 0, 1)
+// there, one unit a sampler type (a program may not give one unit two types); -1 for others.
+inline int emptyUnit(const std::string& samplerType) {
+    if (samplerType == "sampler1D") return 12;
+    if (samplerType == "sampler2D") return 13;
+    if (samplerType == "sampler3D") return 14;
+    if (samplerType == "samplerCube") return 15;
+    return -1;
+}
+
 // `parameters`: parseParameters(text)'s (Fragmentarium's defaults become initializers).
 HostAdaptation adaptForeignHost(const std::string& text, const std::vector<Parameter>& parameters);
 

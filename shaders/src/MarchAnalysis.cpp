@@ -2,6 +2,7 @@
 
 #include "CallText.h"
 #include "InlineField.h"
+#include "MarchOrder.h"
 #include "MarchThreshold.h"
 #include "MarchTree.h"
 #include "ParameterText.h"
@@ -553,6 +554,7 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
     const std::vector<TIntermAggregate*>& reached = tree.reached;
 
     std::vector<MarchedFunction> marched;
+    std::vector<MarchSite> sites; // each one's first loop
     for (std::size_t index = 0; index < reached.size(); ++index) {
         TIntermAggregate* function = reached[index];
         for (TIntermLoop* loop : contentsOf(function).loops) {
@@ -598,6 +600,7 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                                        member.empty() ? std::string() : std::string(returned.getTypeName().c_str()), member,
                                        glslTypeName(returned)});
                     entry = marched.end() - 1;
+                    sites.push_back({loop, function});
                     entry->depth = tree.depth[index];
                     if (component > 0) entry->component = std::string(1, "xyzw"[component]);
                     if (mainImage) traceArguments(*entry, call, callee->second, function, loop, tree, composed);
@@ -615,6 +618,9 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
             }
         }
     }
+    for (std::size_t second = 0; second < marched.size(); ++second)
+        for (std::size_t first = 0; first < marched.size() && marched[second].after.empty(); ++first)
+            if (first != second && runsOnlyAfter(sites[second], sites[first], tree)) marched[second].after = marched[first].name;
     return marched;
 }
 

@@ -317,6 +317,17 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
                 deeper += (deeper.empty() ? "" : ", ") + marched.name + " (line " + std::to_string(marched.line) + ")";
         std::erase_if(valid, [nearest](const auto& candidate) { return candidate.first.depth > nearest; });
     }
+    // Else the march that runs whatever the others found: one that runs only where another's result
+    // lets it (a refraction inside `if (t.x > 0.)`, a second pass in an `else`) follows a primary ray.
+    if (valid.size() > 1) {
+        std::set<std::string> names;
+        for (const auto& [marched, signature] : valid) names.insert(marched.name);
+        for (const auto& [marched, signature] : valid)
+            if (names.count(marched.after))
+                deeper += (deeper.empty() ? "" : ", ") + marched.name + " (line " + std::to_string(marched.line) +
+                          ", run only where " + marched.after + "'s march lets it)";
+        std::erase_if(valid, [&names](const auto& candidate) { return names.count(candidate.first.after) > 0; });
+    }
     const auto where = [](const MarchedFunction& m) {
         std::string globals;
         for (const std::string& name : m.globals) globals += (globals.empty() ? "" : ", ") + name;
@@ -350,7 +361,8 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
     const MarchedFunction& chosen = valid.front().first;
     prepared.entryReason = where(chosen);
     if (!deeper.empty())
-        prepared.entryReason += "; " + deeper + " is marched as often, deeper in mainImage's calls (a secondary ray)";
+        prepared.entryReason +=
+            "; " + deeper + " is marched as often, deeper in mainImage's calls or after the primary ray (a secondary ray)";
     prepared.marchThreshold = chosen.hitThreshold;
     prepared.marchThresholdLine = chosen.hitLine;
     if (const std::vector<std::string> pixel = perPixelParameters(chosen); !pixel.empty()) {

@@ -463,6 +463,15 @@ CompatNeeds detectCompatNeeds(const std::string& stripped) {
 
 namespace {
 
+// Whether `d` is the reserved-name check's error for a name a host's adaptation wrote (ISF's
+// sdfwb_isfThisPixel, TouchDesigner's sdfwb_sTD2DInputs), which the user's `text` does not hold.
+bool adapterName(const Diagnostic& d, const std::string& host, const std::string& text) {
+    static constexpr std::string_view reserved = "': names beginning with sdfwb_";
+    const std::size_t end = d.message.find(reserved);
+    if (host.empty() || d.message.empty() || d.message[0] != '\'' || end == std::string::npos) return false;
+    return detail::wordOffsets(text, d.message.substr(1, end - 1)).empty();
+}
+
 // Points at a function named `entry` whose parameters are wrong, if any, else at line 1.
 Diagnostic missingEntryDiagnostic(const ResolvedSource& source, const std::string& entry, bool requested) {
     const std::string& root = source.map.files.front().text;
@@ -536,7 +545,7 @@ std::string hostDescription(const std::string& host) {
     if (host == "the VS Code Shader Toy extension")
         return "a VS Code Shader Toy extension shader: its #iUniform lines as parameters, its #iChannel, #iKeyboard and "
                "#iFirstPersonControls lines left out (no key is down, iViewMatrix is the identity)";
-    return (host.compare(0, 2, "a ") == 0 ? host + "'s" : "a " + host) +
+    return (host.compare(0, 2, "a ") == 0 || host.compare(0, 3, "an ") == 0 ? host + "'s" : "a " + host) +
            " shader: main() as Shadertoy's mainImage, its inputs as Shadertoy's";
 }
 
@@ -549,7 +558,8 @@ PreparedSdf prepareSdf(const std::string& text, const std::string& name, const s
     prepared.host = std::move(host.host);
     prepared.source = resolveIncludes(prepared.host.empty() ? text : host.text, name, path, options);
     prepared.diagnostics = prepared.source.diagnostics;
-    for (Diagnostic& d : checkSourceFiles(prepared.source)) prepared.diagnostics.push_back(std::move(d));
+    for (Diagnostic& d : checkSourceFiles(prepared.source))
+        if (!adapterName(d, prepared.host, text)) prepared.diagnostics.push_back(std::move(d));
     if (prepared.host == "Synesthesia" && std::none_of(parameters.parameters.begin(), parameters.parameters.end(),
                                                        [](const Parameter& p) { return p.syntax == Parameter::Syntax::Isf; }))
         prepared.diagnostics.push_back(

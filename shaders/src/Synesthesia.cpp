@@ -4,6 +4,7 @@
 
 #include <core/Regex.h>
 
+#include "ForeignHosts.h"
 #include "TextEdits.h"
 #include "Words.h"
 
@@ -63,7 +64,7 @@ const std::array<std::pair<const char*, const char*>, 11> kInputs{{
     {"_click", "vec3(0.0)"},
 }};
 
-// Its audio textures (read from the empty unit, ForeignHosts.cpp's emptyUnit("sampler2D")).
+// Its audio textures (read from the empty unit, ForeignHosts.h's emptyUnit("sampler2D")).
 const std::array<const char*, 5> kTextures{"syn_Spectrum", "syn_LevelTrail", "syn_Media", "syn_FinalPass", "syn_UserImage"};
 
 bool defines(const std::string& stripped, const std::string& name) {
@@ -96,7 +97,8 @@ std::optional<std::string> adaptSynesthesia(const std::string& text, const std::
     std::string declared;
     for (const char* texture : kTextures)
         if (!wordOffsets(stripped, texture).empty())
-            declared += "layout(binding = 13) uniform sampler2D " + std::string(texture) + "; ";
+            declared += "layout(binding = " + std::to_string(emptyUnit("sampler2D")) + ") uniform sampler2D " +
+                        std::string(texture) + "; ";
     forEachIdentifier(stripped, [&](std::size_t at, std::size_t end) {
         const std::string word = stripped.substr(at, end - at);
         if (word.rfind("syn_", 0) != 0 || !notMember(at) ||

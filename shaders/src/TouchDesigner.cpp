@@ -1,10 +1,13 @@
 #include "TouchDesigner.h"
 
+#include "ForeignHosts.h"
 #include "Words.h"
 
 #include <core/Regex.h>
 
 #include <array>
+#include <cctype>
+#include <cstring>
 #include <regex>
 
 namespace sdfwb::shaders::detail {
@@ -21,17 +24,39 @@ const std::array<std::pair<const char*, const char*>, 4> kFunctions{{
                    "(c.r - c.g) / d + 4.0; return vec3(h / 6.0, hi == 0.0 ? 0.0 : d / hi, hi); } "},
 }};
 
+// The samplers of the TOP's inputs, arrays TouchDesigner declares, and their types.
+const std::array<std::pair<const char*, const char*>, 3> kInputs{{
+    {"sTD2DInputs", "sampler2D"},
+    {"sTD3DInputs", "sampler3D"},
+    {"sTDCubeInputs", "samplerCube"},
+}};
+
 } // namespace
 
 std::vector<Edit> touchDesignerEdits(const std::string& stripped) {
     static const std::regex ownUv(R"(\b(?:in|varying)\s+vec[234]\s+vUV\b)", kLinearRegex);
     const bool swizzle = !wordOffsets(stripped, "TDOutputSwizzle").empty(),
                info = !wordOffsets(stripped, "uTDOutputInfo").empty();
-    if ((!swizzle && !info) || std::regex_search(stripped, ownUv)) return {};
+    bool inputs = false;
+    for (const auto& [name, type] : kInputs) inputs |= !wordOffsets(stripped, name).empty();
+    if ((!swizzle && !info && !inputs) || std::regex_search(stripped, ownUv)) return {};
     std::vector<Edit> edits;
+    // The TOP's inputs, `sTD2DInputs[0]`: none is connected here, so each array element is the one
+    // sampler of its type on the empty unit (an array would run over the next type's unit).
+    for (const auto& [name, type] : kInputs)
+        for (std::size_t at : wordOffsets(stripped, name)) {
+            std::size_t open = at + std::strlen(name);
+            while (open < stripped.size() && std::isspace(static_cast<unsigned char>(stripped[open]))) ++open;
+            const std::size_t close =
+                open < stripped.size() && stripped[open] == '[' ? stripped.find(']', open) : std::string::npos;
+            if (close != std::string::npos) edits.push_back({at, close + 1 - at, std::string("sdfwb_") + name});
+        }
     std::string declared;
     for (const auto& [name, definition] : kFunctions)
         if (!wordOffsets(stripped, name).empty() && !definesFunction(stripped, name)) declared += definition;
+    for (const auto& [name, type] : kInputs)
+        if (!wordOffsets(stripped, name).empty())
+            declared += "layout(binding = " + std::to_string(emptyUnit(type)) + ") uniform " + type + " sdfwb_" + name + "; ";
     const std::size_t first = firstCodeOffset(stripped);
     if (!declared.empty()) edits.push_back({first < stripped.size() ? first : 0, 0, declared});
     for (std::size_t at : wordOffsets(stripped, "vUV"))

@@ -592,6 +592,60 @@ TEST(EntryPoint, ATieIsBrokenByThePrimaryRaysMarch) {
     EXPECT_NE(glass.signature.prelude.find("g_r = 0.5 + 0.1 * sin(iTime);"), std::string::npos) << glass.signature.prelude;
 }
 
+// Two marches as near mainImage as each other, where the second runs only where the first one's
+// result lets it: a glass's refraction inside `if (hit.x > 0.)` (a glslify-bundled icosahedron on
+// GitHub), or a second pass in the `else` of a test on a colour the first pass decided (Twenkid's
+// Hackafe logo). The first is the scene; a second march that runs whatever the first found stays a
+// tie (TwoEquallyMarchedFunctionsAreNamedAndOffered).
+TEST(EntryPoint, AMarchThatRunsOnlyAfterTheFirstOnesHitIsASecondaryRay) {
+    const std::string fields =
+        "vec2 glass(vec3 p) { return vec2(length(p) - 0.6, 1.0); }\n"
+        "vec2 solid(vec3 p) { return vec2(length(p) - 0.3, 2.0); }\n"
+        "vec2 castGlass(vec3 ro, vec3 rd) {\n"
+        "    float t = 0.0;\n"
+        "    for (int i = 0; i < 64; i++) { vec2 h = glass(ro + rd * t); if (h.x < 0.001) return vec2(t, h.y); t += h.x; }\n"
+        "    return vec2(-1.0);\n}\n"
+        "vec2 castSolid(vec3 ro, vec3 rd) {\n"
+        "    float t = 0.0;\n"
+        "    for (int i = 0; i < 64; i++) { vec2 h = solid(ro + rd * t); if (h.x < 0.001) return vec2(t, h.y); t += h.x; }\n"
+        "    return vec2(-1.0);\n}\n";
+    const std::string refraction =
+        fields + "void mainImage(out vec4 c, in vec2 f) {\n"
+                 "    vec3 ro = vec3(0.0, 0.0, 3.0), rd = normalize(vec3((f - 0.5 * iResolution.xy) / iResolution.y, -2.0));\n"
+                 "    vec2 hit = castGlass(ro, rd);\n"
+                 "    c = vec4(0.0);\n"
+                 "    if (hit.x > 0.0) {\n"
+                 "        vec3 pos = ro + rd * hit.x, ref = refract(rd, normalize(pos), 0.9);\n"
+                 "        vec2 inner = castSolid(pos + ref * 0.1, ref);\n"
+                 "        c = vec4(inner, 0.0, 1.0);\n"
+                 "    }\n}\n";
+    PreparedSdf glass = prepare(refraction);
+    ASSERT_TRUE(glass.ok()) << glass.diagnostics.back().message;
+    EXPECT_EQ(glass.signature.entry, "glass");
+    EXPECT_NE(glass.entryReason.find("solid (line 10, run only where glass's march lets it)"), std::string::npos)
+        << glass.entryReason;
+    // The second pass in the else of a test on what the first decided through a branch.
+    const std::string passes =
+        fields + "void mainImage(out vec4 c, in vec2 f) {\n"
+                 "    vec3 ro = vec3(0.0, 0.0, 3.0), rd = normalize(vec3((f - 0.5 * iResolution.xy) / iResolution.y, -2.0));\n"
+                 "    vec2 first = castGlass(ro, rd);\n"
+                 "    int m;\n"
+                 "    if (first.x > 0.0) { m = 0; } else { m = 1; }\n"
+                 "    vec3 colour = vec3(0.2);\n"
+                 "    if (m == 1) colour = vec3(0.0);\n"
+                 "    else { vec2 second = castSolid(ro, rd); colour += second.y; }\n"
+                 "    c = vec4(colour, 1.0);\n}\n";
+    PreparedSdf twoPass = prepare(passes);
+    ASSERT_TRUE(twoPass.ok()) << twoPass.diagnostics.back().message;
+    EXPECT_EQ(twoPass.signature.entry, "glass");
+    // A test on what the first march did not compute leaves the tie.
+    std::string unrelated = passes;
+    unrelated.replace(unrelated.find("if (m == 1)"), 11, "if (f.x > 9.)");
+    PreparedSdf tied = prepare(unrelated);
+    EXPECT_FALSE(tied.ok());
+    EXPECT_EQ(tied.entryCandidates, (std::vector<std::string>{"glass", "solid"}));
+}
+
 // A field with an out parameter and a flag (a tea cup scene on Shadertoy: `map(pt, mat,
 // includeDielectrics)`), marched by castRay, which render calls, not mainImage: the flag is the
 // constant render passes for the primary ray, the out parameter a local of the wrapper's. A flag

@@ -429,7 +429,7 @@ TEST(ForeignHosts, AnIsfShadersInputsAreParametersAndItsBuiltinsShadertoys) {
         "    float t = 0.0;\n"
         "    for (int i = 0; i < steps; i++) { float d = scene(ro + rd * t); if (d < 0.001) break; t += d; }\n"
         "    gl_FragColor = vec4(tint.rgb * t * 0.1, 1.0) + 0.0 * IMG_NORM_PIXEL(inputImage, "
-        "isf_FragNormCoord);\n}\n";
+        "isf_FragNormCoord) + 0.0 * IMG_THIS_PIXEL(inputImage);\n}\n";
     ParameterScan scan = parseParameters(text, "box.fs");
     EXPECT_TRUE(scan.diagnostics.empty()) << errors(scan.diagnostics);
     ASSERT_EQ(scan.parameters.size(), 6u) << "the image input is no parameter";
@@ -748,5 +748,112 @@ TEST(ForeignHosts, ATouchDesignerShadersOwnHelperIsKept) {
     const std::string& composed = sdf.source.text;
     EXPECT_EQ(composed.find("TDDither(vec4 c)"), std::string::npos) << "the file's own TDDither, not a second one";
     EXPECT_NE(composed.find("TDOutputSwizzle(vec4 c)"), std::string::npos);
+    EXPECT_EQ(compileErrors(sdf), "");
+}
+
+// A TouchDesigner TOP's inputs (an iq terrain reading its noise from `sTD2DInputs[0]`, written
+// without the TD output functions): the host is recognised from them, and each input, connected to
+// nothing here, reads the empty unit. The names sdfwb writes for them are not the user's, so the
+// reserved-name check leaves them alone.
+TEST(ForeignHosts, ATouchDesignerTopsInputsReadTheEmptyUnit) {
+    const std::string text =
+        "uniform vec4 iResolution;\n"
+        "uniform float iGlobalTime;\n"
+        "out vec4 fragColor;\n"
+        "float terrain(vec2 x) { return texture(sTD2DInputs[0], x / 256.0, -100.0).x\n"
+        "    + texture( sTD2DInputs [ 1 ], x).y + texture(sTD3DInputs[0], vec3(x, 0.0)).x; }\n"
+        "float map(vec3 p) { return p.y - terrain(p.xz); }\n"
+        "void main() {\n"
+        "    vec2 uv = (2.0 * gl_FragCoord.xy - iResolution.xy) / iResolution.y;\n"
+        "    vec3 ro = vec3(0.0, 1.0, iGlobalTime), rd = normalize(vec3(uv, 1.5));\n"
+        "    float t = 0.0;\n"
+        "    for (int i = 0; i < 64; i++) { float d = map(ro + rd * t); if (d < 0.001) break; t += 0.5 * d; }\n"
+        "    fragColor = vec4(vec3(t * 0.1), 1.0);\n"
+        "}\n";
+    PreparedSdf sdf = prepare(text, "mountains_fragment.glsl");
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.host, "TouchDesigner");
+    EXPECT_EQ(sdf.signature.entry, "map");
+    EXPECT_NE(sdf.source.text.find("layout(binding = 13) uniform sampler2D sdfwb_sTD2DInputs;"), std::string::npos);
+    EXPECT_NE(sdf.source.text.find("layout(binding = 14) uniform sampler3D sdfwb_sTD3DInputs;"), std::string::npos);
+    EXPECT_EQ(sdf.source.text.find("sTD2DInputs["), std::string::npos);
+    EXPECT_EQ(rootLines(sdf), lines(text));
+    EXPECT_EQ(compileErrors(sdf), "");
+    // The user's own name with the reserved prefix is still refused.
+    std::string own = text;
+    own.replace(own.find("float terrain"), 13, "float sdfwb_terrain");
+    own.replace(own.find("- terrain("), 10, "- sdfwb_terrain(");
+    const PreparedSdf refused = prepare(own, "mountains_fragment.glsl");
+    EXPECT_FALSE(refused.ok());
+    EXPECT_NE(errors(refused.diagnostics).find("'sdfwb_terrain': names beginning with sdfwb_"), std::string::npos);
+}
+
+// Fragmentarium's MathUtils.frag defines PI, which fragments use without defining it (DarkBeam's knot
+// in FragM's examples); a fragment's own PI is kept.
+TEST(ForeignHosts, FragmentariumsMathUtilsGivesPi) {
+    const std::string text =
+        "#include \"MathUtils.frag\"\n"
+        "#include \"DE-Raytracer.frag\"\n"
+        "uniform float Turns; slider[1,3,8]\n"
+        "float DE(vec3 p) { float a = Turns / (2.0 * PI) * atan(p.y, p.x); return length(p) - 0.5 - 0.01 * sin(a); }\n";
+    PreparedSdf sdf = prepare(text, "knot.frag");
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.host, "Fragmentarium");
+    EXPECT_NE(sdf.source.text.find("const float PI = 3.14159265358979;"), std::string::npos);
+    EXPECT_EQ(compileErrors(sdf), "");
+    const std::string own = "#define PI 3.14159\n" + text;
+    PreparedSdf kept = prepare(own, "knot.frag");
+    ASSERT_TRUE(kept.ok()) << errors(kept.diagnostics);
+    EXPECT_EQ(kept.source.text.find("const float PI"), std::string::npos);
+}
+
+// A Processing sketch's port layer (SableRaf's Processing experiments): Shadertoy's names declared
+// as globals copied from Processing's uniforms, which sdfwb declares and sets itself.
+TEST(ForeignHosts, AProcessingPortsLayerOfShadertoyNamesGoes) {
+    const std::string text = "#define PROCESSING_COLOR_SHADER\n"
+                             "uniform float time;\n"
+                             "uniform vec2 resolution;\n"
+                             "uniform vec2 mouse;\n"
+                             "vec3 iResolution = vec3(resolution, 0.0);\n"
+                             "float iGlobalTime = time;\n"
+                             "uniform vec2 mousePressed;\n"
+                             "vec4 iMouse = vec4(mouse.xy, mousePressed.xy);\n"
+                             "float scene(vec3 p) { return length(p) - 0.5 - 0.1 * sin(iGlobalTime); }\n"
+                             "void main() {\n"
+                             "    vec2 uv = (2.0 * gl_FragCoord.xy - iResolution.xy) / iResolution.y + iMouse.xy * 0.0;\n"
+                             "    vec3 ro = vec3(0.0, 0.0, -3.0), rd = normalize(vec3(uv, 1.5));\n"
+                             "    float t = 0.0;\n"
+                             "    for (int i = 0; i < 64; i++) { float d = scene(ro + rd * t); if (d < 0.001) break; t += d; }\n"
+                             "    gl_FragColor = vec4(vec3(t * 0.1), 1.0);\n"
+                             "}\n";
+    PreparedSdf sdf = prepare(text, "shader.glsl");
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.signature.entry, "scene");
+    EXPECT_EQ(sdf.source.text.find("vec3 iResolution ="), std::string::npos);
+    EXPECT_EQ(sdf.source.text.find("vec4 iMouse ="), std::string::npos);
+    EXPECT_EQ(rootLines(sdf), lines(text));
+    EXPECT_EQ(compileErrors(sdf), "");
+}
+
+// A main() that writes its colour and reads its pixel through macros (`#define O gl_FragColor`,
+// `#define U gl_FragCoord.xy`: darkeclipz's temple for the VS Code preview) is the host's main.
+TEST(ForeignHosts, AMainWritingThroughMacrosIsTheHostsMain) {
+    const std::string text = "#define O gl_FragColor\n"
+                             "#define U gl_FragCoord.xy\n"
+                             "#define R iResolution.xy\n"
+                             "float map(vec3 p) { return length(p) - 0.5; }\n"
+                             "void main() {\n"
+                             "    vec2 uv = (2.0 * U - R) / R.y;\n"
+                             "    vec3 ro = vec3(0.0, 0.0, -3.0), rd = normalize(vec3(uv, 1.5));\n"
+                             "    float t = 0.0;\n"
+                             "    for (int i = 0; i < 64; i++) { float d = map(ro + rd * t); if (d < 0.001) break; t += d; }\n"
+                             "    O = vec4(vec3(t * 0.1), 1.0);\n"
+                             "}\n";
+    PreparedSdf sdf = prepare(text, "raymarch_temple.glsl");
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.signature.entry, "map");
+    EXPECT_EQ(sdf.source.text.find("gl_FragColor"), std::string::npos);
+    EXPECT_EQ(sdf.source.text.find("gl_FragCoord"), std::string::npos);
+    EXPECT_EQ(rootLines(sdf), lines(text));
     EXPECT_EQ(compileErrors(sdf), "");
 }

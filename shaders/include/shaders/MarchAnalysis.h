@@ -49,6 +49,9 @@ struct MarchedFunction {
     // before the call of the marching function, which the wrapper runs first.
     std::vector<std::string> globals;
     std::string setter; // whose statements those are: mainImage, or the function that marches (its parameters zero)
+    // Another marched function whose march's result decides whether this one's runs (a refraction's
+    // march inside `if (t.x > 0.)` of the primary hit): its name, or empty.
+    std::string after;
 };
 
 // The functions `composed` (a fragment stage holding the user's code and mainImage; no main is
