@@ -241,6 +241,33 @@ std::string nameInUserText(const PreparedSdf& prepared, const std::string& name)
     return ours ? name.substr(6) : name;
 }
 
+// Among marches stepped by equally often, the primary ray's: the march nearest mainImage (a
+// refraction's or a bounce's march is called from deeper down), else the one that runs whatever the
+// others found (one that runs only where another's result lets it, a refraction inside
+// `if (t.x > 0.)` or a second pass in an `else`, follows a primary ray). Marches as near as each
+// other that run alike stay a tie. Returns those left out, for the reason.
+std::string keepPrimaryRays(std::vector<std::pair<MarchedFunction, SdfSignature>>& valid) {
+    std::string deeper;
+    if (valid.size() > 1) {
+        int nearest = valid.front().first.depth;
+        for (const auto& [marched, signature] : valid) nearest = std::min(nearest, marched.depth);
+        for (const auto& [marched, signature] : valid)
+            if (marched.depth > nearest)
+                deeper += (deeper.empty() ? "" : ", ") + marched.name + " (line " + std::to_string(marched.line) + ")";
+        std::erase_if(valid, [nearest](const auto& candidate) { return candidate.first.depth > nearest; });
+    }
+    if (valid.size() > 1) {
+        std::set<std::string> names;
+        for (const auto& [marched, signature] : valid) names.insert(marched.name);
+        for (const auto& [marched, signature] : valid)
+            if (names.count(marched.after))
+                deeper += (deeper.empty() ? "" : ", ") + marched.name + " (line " + std::to_string(marched.line) +
+                          ", run only where " + marched.after + "'s march lets it)";
+        std::erase_if(valid, [&names](const auto& candidate) { return names.count(candidate.first.after) > 0; });
+    }
+    return deeper;
+}
+
 } // namespace
 
 void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
@@ -306,28 +333,7 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
         if (std::count_if(valid.begin(), valid.end(), conventional) == 1)
             std::erase_if(valid, [&](const auto& candidate) { return !conventional(candidate); });
     }
-    // Else the march nearest mainImage: the primary ray's (a refraction's or a bounce's march is
-    // called from deeper down). Marches as near as each other stay a tie.
-    std::string deeper;
-    if (valid.size() > 1) {
-        int nearest = valid.front().first.depth;
-        for (const auto& [marched, signature] : valid) nearest = std::min(nearest, marched.depth);
-        for (const auto& [marched, signature] : valid)
-            if (marched.depth > nearest)
-                deeper += (deeper.empty() ? "" : ", ") + marched.name + " (line " + std::to_string(marched.line) + ")";
-        std::erase_if(valid, [nearest](const auto& candidate) { return candidate.first.depth > nearest; });
-    }
-    // Else the march that runs whatever the others found: one that runs only where another's result
-    // lets it (a refraction inside `if (t.x > 0.)`, a second pass in an `else`) follows a primary ray.
-    if (valid.size() > 1) {
-        std::set<std::string> names;
-        for (const auto& [marched, signature] : valid) names.insert(marched.name);
-        for (const auto& [marched, signature] : valid)
-            if (names.count(marched.after))
-                deeper += (deeper.empty() ? "" : ", ") + marched.name + " (line " + std::to_string(marched.line) +
-                          ", run only where " + marched.after + "'s march lets it)";
-        std::erase_if(valid, [&names](const auto& candidate) { return names.count(candidate.first.after) > 0; });
-    }
+    const std::string deeper = keepPrimaryRays(valid);
     const auto where = [](const MarchedFunction& m) {
         std::string globals;
         for (const std::string& name : m.globals) globals += (globals.empty() ? "" : ", ") + name;
