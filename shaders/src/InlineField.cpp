@@ -361,14 +361,13 @@ std::string inlineFieldBody(const std::string& text, std::size_t keyword, const 
     return out;
 }
 
-std::string pointMarchBody(const std::string& text, std::size_t keyword, const std::string& point, const std::string& field,
+std::string pointMarchBody(const std::string& text, std::size_t keyword, const std::string& point, std::string& field, int factor,
                            std::string& step, std::string& why) {
     std::string init, increment;
     std::vector<std::string> statements;
     if (!readLoop(text, keyword, init, increment, statements, why)) return {};
     // The step: `p += rd * d;`, or `q = p += ...;` that also copies the point.
     const std::regex steps(R"(^\s*((?:\w+\s*=\s*)?)()" + point + R"()\s*[-+]=\s*([\s\S]*);\s*$)", kLinearRegex);
-    const std::regex assigns(R"((^|[^\w.])()" + field + R"()\s*[-+*/]?=[^=])", kLinearRegex);
     std::smatch match;
     std::size_t stepAt = statements.size();
     std::string copy;
@@ -391,10 +390,20 @@ std::string pointMarchBody(const std::string& text, std::size_t keyword, const s
         why = "the statement that advances '" + point + "' is not one of its loop's own statements";
         return {};
     }
-    // The field computed before the step (`d = ...; p += rd * d;`): the body up to the step. Else
-    // (`p += rd * d; ... d = ...;`) the whole body, the step replaced by the point given.
-    bool before = false;
-    for (std::size_t i = 0; i < stepAt; ++i) before = before || std::regex_search(statements[i], assigns);
+    // The field computed before the step (`d = ...; p += rd * d;`), or in it: the body up to the
+    // step. Else (`p += rd * d; ... d = ...;`) the whole body, the step replaced by the point given.
+    bool before = factor >= 0;
+    if (before) {
+        const std::vector<std::string> factors = splitOutside(step, '*');
+        if (factors.size() != 2) {
+            why = "the step of '" + point + "' is not one product of the field and a direction: " + step;
+            return {};
+        }
+        field = trimmedText(factors[std::size_t(factor)]);
+    } else {
+        const std::regex assigns(R"((^|[^\w.])()" + field + R"()\s*[-+*/]?=[^=])", kLinearRegex);
+        for (std::size_t i = 0; i < stepAt; ++i) before = before || std::regex_search(statements[i], assigns);
+    }
     std::string out = "{\n";
     if (!init.empty()) out += init + ";\n";
     out += point + " = sdfwb_point;\n";

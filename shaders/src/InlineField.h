@@ -39,7 +39,9 @@ std::string inlineFieldBody(const std::string& text, std::size_t keyword, const 
 // float `field` computed from it: the body with `point` set to sdfwb_point at its start, up to the
 // step when the field is computed before it, else all of it with the step left out (a copy it
 // makes, `p = c`, kept); then `return float(field);`. `step` receives what the point grows by.
-std::string pointMarchBody(const std::string& text, std::size_t keyword, const std::string& point, const std::string& field,
+// With `factor` 0 or 1 the field is that factor of the step's product (`p += (.1 - length(o.xy)) *
+// d`): the body up to the step, and `field` receives the factor's text.
+std::string pointMarchBody(const std::string& text, std::size_t keyword, const std::string& point, std::string& field, int factor,
                            std::string& step, std::string& why);
 
 } // namespace sdfwb::shaders

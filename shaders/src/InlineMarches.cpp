@@ -95,8 +95,9 @@ void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* fu
         return;
     }
     std::string why;
-    march.body = march.field.empty() ? inlineFieldBody(text, keyword, march.counter, march.point, march.step, why)
-                                     : pointMarchBody(text, keyword, march.point, march.field, march.step, why);
+    march.body = march.field.empty() && march.fieldFactor < 0
+                     ? inlineFieldBody(text, keyword, march.counter, march.point, march.step, why)
+                     : pointMarchBody(text, keyword, march.point, march.field, march.fieldFactor, march.step, why);
     if (march.body.empty()) {
         march.unresolved = why;
         return;
@@ -200,6 +201,32 @@ std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
                     found.push_back(std::move(march));
                     marched = true;
                     break;
+                }
+                // Or by a float expression of itself in the step (`p += (.1 - length(o.xy)) * d`).
+                TIntermBinary* product = inside.assignments[s]->getRight()->getAsBinaryNode();
+                if (marched || !product ||
+                    (product->getOp() != glslang::EOpVectorTimesScalar && product->getOp() != glslang::EOpMul))
+                    continue;
+                for (int factor = 0; factor < 2 && !marched; ++factor) {
+                    TIntermTyped* operand = factor == 0 ? product->getLeft() : product->getRight();
+                    if (!operand->getType().isScalar() || operand->getType().getBasicType() != glslang::EbtFloat) continue;
+                    std::set<long long> from = contentsOf(operand).symbols;
+                    for (bool grew = true; grew;) {
+                        grew = false;
+                        for (const Assignment& a : assignments)
+                            if (&a != &stepping && a.target >= 0 && from.count(a.target))
+                                for (long long r : a.reads) grew |= from.insert(r).second;
+                    }
+                    if (!from.count(stepping.target)) continue;
+                    InlineMarch march;
+                    march.function = plainName(function->getName());
+                    march.file = composed.map.fileName(loop->getLoc().string);
+                    march.line = loop->getLoc().line;
+                    march.counter = march.point = point->getName().c_str();
+                    march.fieldFactor = factor;
+                    readInlineMarch(march, loop, function, tree, composed);
+                    found.push_back(std::move(march));
+                    marched = true;
                 }
             }
             for (std::size_t s = 0; s < inside.assignments.size() && !marched; ++s) {

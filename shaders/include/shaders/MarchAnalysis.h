@@ -70,7 +70,10 @@ struct InlineMarch {
     int line = 0;               // the loop's line
     std::string counter, point; // `t` and `p` (the same where the loop marches the point itself)
     std::string field;          // where the point itself grows (`p += rd * d`): the float it grows by
-    std::string step;           // what the counter grows by (`d`, `e * .7`)
+    // Where it grows by a float expression of itself in the step (`p += (.1 - length(o.xy)) * d`,
+    // golfed): that factor's index (0 or 1) in the step's product, and `field` its text once read.
+    int fieldFactor = -1;
+    std::string step; // what the counter grows by (`d`, `e * .7`)
     // The wrapper's body: the function's parameters declared (mainImage's as coordinate and
     // colour name them: the caller declares those), its statements before the loop, then `body`.
     std::string prelude, body, coordinate, colour;
