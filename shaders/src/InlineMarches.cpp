@@ -132,6 +132,27 @@ void setHitThreshold(InlineMarch& march, TIntermLoop* loop, std::set<long long> 
     march.hitThreshold = hit.value, march.hitLine = hit.line;
 }
 
+// `from` with every symbol the loop's assignments to its members read, through each other (but
+// `except`'s).
+std::set<long long> readThrough(std::set<long long> from, const std::vector<Assignment>& assignments,
+                                const Assignment* except = nullptr) {
+    for (bool grew = true; grew;) {
+        grew = false;
+        for (const Assignment& a : assignments)
+            if (&a != except && a.target >= 0 && from.count(a.target))
+                for (long long r : a.reads) grew |= from.insert(r).second;
+    }
+    return from;
+}
+
+InlineMarch marchAt(TIntermAggregate* function, TIntermLoop* loop, const ComposedShader& composed) {
+    InlineMarch march;
+    march.function = plainName(function->getName());
+    march.file = composed.map.fileName(loop->getLoc().string);
+    march.line = loop->getLoc().line;
+    return march;
+}
+
 } // namespace
 
 std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
@@ -182,18 +203,8 @@ std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
                     const glslang::TType* type = typeOf(read);
                     if (read == stepping.target || !type || !type->isScalar() || type->getBasicType() != glslang::EbtFloat)
                         continue;
-                    std::set<long long> from{read};
-                    for (bool grew = true; grew;) {
-                        grew = false;
-                        for (const Assignment& a : assignments)
-                            if (&a != &stepping && a.target >= 0 && from.count(a.target))
-                                for (long long r : a.reads) grew |= from.insert(r).second;
-                    }
-                    if (!from.count(stepping.target)) continue;
-                    InlineMarch march;
-                    march.function = plainName(function->getName());
-                    march.file = composed.map.fileName(loop->getLoc().string);
-                    march.line = loop->getLoc().line;
+                    if (!readThrough({read}, assignments, &stepping).count(stepping.target)) continue;
+                    InlineMarch march = marchAt(function, loop, composed);
                     march.counter = march.point = point->getName().c_str();
                     march.field = symbols.byId[read]->getName().c_str();
                     readInlineMarch(march, loop, function, tree, composed);
@@ -210,18 +221,8 @@ std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
                 for (int factor = 0; factor < 2 && !marched; ++factor) {
                     TIntermTyped* operand = factor == 0 ? product->getLeft() : product->getRight();
                     if (!operand->getType().isScalar() || operand->getType().getBasicType() != glslang::EbtFloat) continue;
-                    std::set<long long> from = contentsOf(operand).symbols;
-                    for (bool grew = true; grew;) {
-                        grew = false;
-                        for (const Assignment& a : assignments)
-                            if (&a != &stepping && a.target >= 0 && from.count(a.target))
-                                for (long long r : a.reads) grew |= from.insert(r).second;
-                    }
-                    if (!from.count(stepping.target)) continue;
-                    InlineMarch march;
-                    march.function = plainName(function->getName());
-                    march.file = composed.map.fileName(loop->getLoc().string);
-                    march.line = loop->getLoc().line;
+                    if (!readThrough(contentsOf(operand).symbols, assignments, &stepping).count(stepping.target)) continue;
+                    InlineMarch march = marchAt(function, loop, composed);
                     march.counter = march.point = point->getName().c_str();
                     march.fieldFactor = factor;
                     readInlineMarch(march, loop, function, tree, composed);
@@ -254,10 +255,7 @@ std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
                         break;
                     }
                 if (point < 0) continue;
-                InlineMarch march;
-                march.function = plainName(function->getName());
-                march.file = composed.map.fileName(loop->getLoc().string);
-                march.line = loop->getLoc().line;
+                InlineMarch march = marchAt(function, loop, composed);
                 march.counter = counter->getName().c_str();
                 march.point = symbols.byId[point]->getName().c_str();
                 readInlineMarch(march, loop, function, tree, composed);
