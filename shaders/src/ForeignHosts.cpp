@@ -2,6 +2,7 @@
 // replacement may be longer or shorter than what it replaces, but no newline is added or removed.
 
 #include "ForeignHosts.h"
+#include "GlslDialects.h"
 #include "IsfHeader.h"
 #include "ParameterText.h"
 #include "Synesthesia.h"
@@ -717,8 +718,10 @@ void adaptVscodeShaderToy(const Code& code, std::vector<Edit>& edits, HostAdapta
 
 } // namespace
 
-HostAdaptation adaptForeignHost(const std::string& text, const std::vector<Parameter>& parameters) {
+HostAdaptation adaptForeignHost(const std::string& original, const std::vector<Parameter>& parameters) {
     HostAdaptation out;
+    const DialectText dialect = readGlslDialect(original);
+    const std::string& text = dialect.text.empty() ? original : dialect.text;
     const Code code(text);
     std::vector<Edit> edits;
     adaptFragmentarium(code, parameters, edits, out);
@@ -744,6 +747,7 @@ HostAdaptation adaptForeignHost(const std::string& text, const std::vector<Param
             return out;
         }
     out.text = edits.empty() ? text : applyEdits(text, std::move(edits));
+    if (!out.host.empty() && !dialect.dialect.empty()) out.host = dialect.dialect;
     return out;
 }
 

@@ -857,3 +857,77 @@ TEST(ForeignHosts, AMainWritingThroughMacrosIsTheHostsMain) {
     EXPECT_EQ(rootLines(sdf), lines(text));
     EXPECT_EQ(compileErrors(sdf), "");
 }
+
+// sokol-shdc's annotated file (sokol_gp's SDF sample): the vertex stage and the annotations go, the
+// fragment stage is the shader, and its uniform block without an instance name (`uniform sdf_uniform
+// { vec2 iResolution; float iTime; };`) gives plain uniforms, read as Shadertoy's inputs.
+TEST(ForeignHosts, ASokolShdcFilesFragmentStageIsTheShader) {
+    const std::string text =
+        "@ctype vec2 sgp_vec2\n"
+        "@vs sdf_vs\n"
+        "in vec4 coord;\n"
+        "out vec2 fragUV;\n"
+        "void main() { gl_Position = vec4(coord.xy, 0.0, 1.0); fragUV = coord.zw; }\n"
+        "@end\n"
+        "@fs sdf_fs\n"
+        "uniform sdf_uniform {\n"
+        "    vec2 iResolution;\n"
+        "    float iTime;\n"
+        "};\n"
+        "in vec2 fragUV;\n"
+        "out vec4 fragColor;\n"
+        "float get_sdf(vec3 p) { return length(p - vec3(0.0, 0.1 * sin(iTime), 0.0)) - 0.5; }\n"
+        "void main() {\n"
+        "    vec2 uv = (fragUV * iResolution - 0.5 * iResolution) / iResolution.y;\n"
+        "    vec3 ro = vec3(0.0, 0.0, -3.0), rd = normalize(vec3(uv, 1.5));\n"
+        "    float t = 0.0;\n"
+        "    for (int i = 0; i < 64; i++) { float d = get_sdf(ro + rd * t); if (d < 0.001) break; t += d; }\n"
+        "    fragColor = vec4(vec3(t * 0.1), 1.0);\n"
+        "}\n"
+        "@end\n"
+        "@program sdf sdf_vs sdf_fs\n";
+    PreparedSdf sdf = prepare(text, "sample-sdf.glsl");
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.host, "sokol-shdc");
+    EXPECT_EQ(sdf.signature.entry, "get_sdf");
+    EXPECT_TRUE(sdf.usesTime()) << "iTime from the block is sdfwb's time";
+    EXPECT_EQ(sdf.source.text.find("gl_Position"), std::string::npos);
+    EXPECT_EQ(sdf.source.text.find("@"), std::string::npos);
+    EXPECT_EQ(rootLines(sdf), lines(text));
+    EXPECT_EQ(compileErrors(sdf), "");
+}
+
+// Vulkan GLSL (a vulkano raymarcher): a push-constant block is a struct and a global of it, and
+// `set = N` leaves the layouts; an error is still reported at the user's line.
+TEST(ForeignHosts, VulkanPushConstantsAndDescriptorSetsAreReadAsOpenGls) {
+    const std::string text = "#version 450\n"
+                             "layout(push_constant) uniform PushConstants {\n"
+                             "    mat4 view;\n"
+                             "    vec2 resolution;\n"
+                             "} push;\n"
+                             "layout(set = 0, binding = 1) uniform sampler2D tex;\n"
+                             "layout(set = 1) uniform Extra { float radius; } extra;\n"
+                             "layout(location = 0) out vec4 f_color;\n"
+                             "float f(vec3 p) { return length(p) - 0.5 - 0.0 * texture(tex, p.xy).x - extra.radius; }\n"
+                             "void main() {\n"
+                             "    vec2 uv = (gl_FragCoord.xy - 0.5 * push.resolution) / max(push.resolution.y, 1.0);\n"
+                             "    vec3 ro = vec3(0.0, 0.0, -3.0), rd = normalize(vec3(uv, 1.5));\n"
+                             "    float t = 0.0;\n"
+                             "    for (int i = 0; i < 64; i++) { float d = f(ro + rd * t); if (d < 0.001) break; t += d; }\n"
+                             "    f_color = vec4(vec3(t * 0.1), 1.0);\n"
+                             "}\n";
+    PreparedSdf sdf = prepare(text, "raymarching-3d.frag");
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.host, "Vulkan GLSL");
+    EXPECT_EQ(sdf.signature.entry, "f");
+    EXPECT_NE(sdf.source.text.find("struct PushConstants"), std::string::npos);
+    EXPECT_EQ(sdf.source.text.find("push_constant"), std::string::npos);
+    EXPECT_EQ(sdf.source.text.find("set ="), std::string::npos);
+    EXPECT_EQ(rootLines(sdf), lines(text));
+    EXPECT_EQ(compileErrors(sdf), "");
+    std::string broken = text;
+    broken.replace(broken.find("- extra.radius"), 14, "- extra.radius + undefinedName");
+    const PreparedSdf bad = prepare(broken, "raymarching-3d.frag");
+    EXPECT_FALSE(bad.ok());
+    EXPECT_NE(errors(bad.diagnostics).find("raymarching-3d.frag:9:"), std::string::npos) << errors(bad.diagnostics);
+}

@@ -1,0 +1,113 @@
+#include "GlslDialects.h"
+
+#include <shaders/SdfSource.h>
+
+#include <core/Regex.h>
+
+#include "TextEdits.h"
+
+#include <regex>
+#include <vector>
+
+namespace sdfwb::shaders::detail {
+namespace {
+
+// text[at, at + length) as spaces, its line breaks kept.
+Edit blanked(const std::string& text, std::size_t at, std::size_t length) {
+    std::string spaces = text.substr(at, length);
+    for (char& c : spaces)
+        if (c != '\n' && c != '\r') c = ' ';
+    return {at, length, spaces};
+}
+
+// sokol-shdc: the annotation lines blanked, and the vertex stages and every fragment stage after
+// the first with them.
+bool sokolEdits(const std::string& text, std::vector<Edit>& edits) {
+    bool annotated = false, dropping = false, fragment = false;
+    for (std::size_t start = 0; start < text.size();) {
+        const std::size_t stop = std::min(text.find('\n', start), text.size());
+        const std::size_t k = text.find_first_not_of(" \t", start);
+        std::string word;
+        if (k < stop && text[k] == '@') {
+            std::size_t end = k + 1;
+            while (end < stop && (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_')) ++end;
+            word = text.substr(k + 1, end - k - 1);
+        }
+        static const std::regex known("vs|fs|end|block|program|ctype|module|include_block|header|glsl_options|"
+                                      "hlsl_options|msl_options|image_sample_type|sampler_type|cs",
+                                      kLinearRegex);
+        if (!word.empty() && std::regex_match(word, known)) {
+            annotated = true;
+            if (word == "vs" || word == "cs" || (word == "fs" && fragment)) dropping = true;
+            if (word == "fs") fragment = true;
+            edits.push_back(blanked(text, start, stop - start));
+            if (word == "end") dropping = false;
+        } else if (dropping) {
+            edits.push_back(blanked(text, start, stop - start));
+        }
+        start = stop + 1;
+    }
+    if (!annotated) edits.clear();
+    return annotated;
+}
+
+// Vulkan's push constants (a struct and a global) and descriptor sets (gone from the layout).
+bool vulkanEdits(const std::string& text, const std::string& stripped, std::vector<Edit>& edits) {
+    static const std::regex layout(R"(\blayout\s*\(([^()]*)\))", kLinearRegex);
+    static const std::regex set(R"(\bset\s*=\s*\d+\s*,?\s*)", kLinearRegex);
+    static const std::regex pushed(R"(^\s*uniform\b)", kLinearRegex);
+    bool vulkan = false;
+    for (auto it = std::sregex_iterator(stripped.begin(), stripped.end(), layout); it != std::sregex_iterator(); ++it) {
+        const std::size_t at = std::size_t(it->position(0)), length = std::size_t(it->length(0));
+        const std::string inside = (*it)[1].str();
+        std::smatch uniform;
+        const std::string after = stripped.substr(at + length, 40);
+        if (inside.find("push_constant") != std::string::npos && std::regex_search(after, uniform, pushed)) {
+            edits.push_back(blanked(text, at, length));
+            edits.push_back({at + length + std::size_t(uniform.position(0) + uniform.length(0)) - 7, 7, "struct"});
+            vulkan = true;
+        } else if (std::regex_search(inside, set)) {
+            const std::string kept = std::regex_replace(inside, set, "");
+            const bool empty = kept.find_first_not_of(" \t,") == std::string::npos;
+            edits.push_back({at, length, empty ? std::string(length, ' ') : "layout(" + kept + ")"});
+            vulkan = true;
+        }
+    }
+    return vulkan;
+}
+
+// A uniform block without an instance name: its members plain uniforms.
+void namelessBlockEdits(const std::string& text, const std::string& stripped, std::vector<Edit>& edits) {
+    static const std::regex block(R"((?:\blayout\s*\([^()]*\)\s*)?\buniform\s+\w+\s*\{([^{}]*)\}\s*;)", kLinearRegex);
+    for (auto it = std::sregex_iterator(stripped.begin(), stripped.end(), block); it != std::sregex_iterator(); ++it) {
+        const std::size_t at = std::size_t(it->position(0)), open = stripped.find('{', at);
+        const std::size_t close = at + std::size_t(it->length(0)) - 1; // the ';'
+        const std::size_t brace = stripped.rfind('}', close);
+        edits.push_back(blanked(text, at, open + 1 - at));
+        for (std::size_t member = open + 1; member < brace;) {
+            const std::size_t k = stripped.find_first_not_of(" \t\r\n", member);
+            if (k >= brace) break;
+            edits.push_back({k, 0, "uniform "});
+            member = std::min(stripped.find(';', k), brace) + 1;
+        }
+        edits.push_back(blanked(text, brace, close + 1 - brace));
+    }
+}
+
+} // namespace
+
+DialectText readGlslDialect(const std::string& text) {
+    DialectText out;
+    std::vector<Edit> edits;
+    if (sokolEdits(text, edits)) out.dialect = "sokol-shdc";
+    const std::string sokol = applyEdits(text, std::move(edits));
+    edits = {};
+    const std::string stripped = stripComments(sokol);
+    if (vulkanEdits(sokol, stripped, edits) && out.dialect.empty()) out.dialect = "Vulkan GLSL";
+    namelessBlockEdits(sokol, stripped, edits);
+    if (out.dialect.empty() && edits.empty()) return out;
+    out.text = applyEdits(sokol, std::move(edits));
+    return out;
+}
+
+} // namespace sdfwb::shaders::detail
