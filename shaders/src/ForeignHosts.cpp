@@ -4,6 +4,7 @@
 #include "ForeignHosts.h"
 #include "GlslDialects.h"
 #include "IsfHeader.h"
+#include "MadMapper.h"
 #include "ParameterText.h"
 #include "Synesthesia.h"
 #include "TextEdits.h"
@@ -577,8 +578,8 @@ void adaptIsf(const Code& code, std::vector<Edit>& edits, HostAdaptation& out) {
     const IsfHeader header = readIsfHeader(code.original);
     if (!header.found || out.host.empty()) return;
     static const std::map<std::string, std::string> types{
-        {"float", "float"},  {"long", "int"},        {"bool", "bool"},       {"event", "bool"},        {"color", "vec4"},
-        {"point2D", "vec2"}, {"image", "sampler2D"}, {"audio", "sampler2D"}, {"audioFFT", "sampler2D"}};
+        {"float", "float"}, {"long", "int"},     {"int", "int"},         {"bool", "bool"},       {"event", "bool"},
+        {"color", "vec4"},  {"point2D", "vec2"}, {"image", "sampler2D"}, {"audio", "sampler2D"}, {"audioFFT", "sampler2D"}};
     std::string declared;
     for (const IsfInput& input : header.inputs)
         if (auto type = types.find(input.type); type != types.end())
@@ -610,7 +611,7 @@ void adaptIsf(const Code& code, std::vector<Edit>& edits, HostAdaptation& out) {
                     "vec4 sdfwb_isfThisPixel(sampler2D s) { return texture(s, gl_FragCoord.xy / iResolution.xy); } "
                     "vec2 sdfwb_isfSize(sampler2D s) { return vec2(textureSize(s, 0)); } ";
     if (!declared.empty()) edits.push_back({header.end, 0, " " + declared});
-    out.host = "ISF";
+    if (out.host != "MadMapper") out.host = "ISF";
 }
 
 // Shadertoy named its time iGlobalTime until 2017: shaders downloaded then (and sites that mirror
@@ -726,6 +727,11 @@ HostAdaptation adaptForeignHost(const std::string& original, const std::vector<P
     std::vector<Edit> edits;
     adaptFragmentarium(code, parameters, edits, out);
     adaptMain(code, edits, out);
+    if (out.host.empty())
+        if (std::vector<Edit> material = madMapperEdits(text, code.stripped); !material.empty()) {
+            edits.insert(edits.end(), material.begin(), material.end());
+            out.host = "MadMapper";
+        }
     if (!out.host.empty())
         if (std::vector<Edit> touch = touchDesignerEdits(code.stripped); !touch.empty()) {
             edits.insert(edits.begin(), touch.begin(), touch.end()); // its insertion before a blanked uniform there

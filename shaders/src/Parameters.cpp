@@ -591,7 +591,7 @@ std::vector<Parameter> isfParameters(const std::string& text) {
         p.label = input.label;
         if (input.type == "float")
             p.type = ParameterType::Float;
-        else if (input.type == "long")
+        else if (input.type == "long" || input.type == "int") // int: MadMapper's materials
             p.type = ParameterType::Int;
         else if (input.type == "bool" || input.type == "event")
             p.type = ParameterType::Bool;

@@ -542,6 +542,9 @@ std::string hostDescription(const std::string& host) {
     if (host == "Synesthesia")
         return "a Synesthesia scene: renderMain() as Shadertoy's mainImage, its controls from the scene.json beside it, "
                "its audio silent (its audio clocks run as the time)";
+    if (host == "MadMapper")
+        return "a MadMapper material: materialColorForPixel as Shadertoy's mainImage, its INPUTS as parameters, a "
+               "time_base generator the time";
     if (host == "the VS Code Shader Toy extension")
         return "a VS Code Shader Toy extension shader: its #iUniform lines as parameters, its #iChannel, #iKeyboard and "
                "#iFirstPersonControls lines left out (no key is down, iViewMatrix is the identity)";

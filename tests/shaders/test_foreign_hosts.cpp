@@ -931,3 +931,49 @@ TEST(ForeignHosts, VulkanPushConstantsAndDescriptorSetsAreReadAsOpenGls) {
     EXPECT_FALSE(bad.ok());
     EXPECT_NE(errors(bad.diagnostics).find("raymarching-3d.frag:9:"), std::string::npos) << errors(bad.diagnostics);
 }
+
+// A MadMapper material (its Raymarching Template): an ISF-like header with an `int` input and a
+// time_base generator, `#include "MadCommon.glsl"` (MadMapper's own, giving PI), the ray handed
+// over by its vertex stage (`flat in vec3 vro;`), and `vec4 materialColorForPixel(vec2 texCoord)`
+// instead of main.
+TEST(ForeignHosts, AMadMapperMaterialsInputsGeneratorsAndColourFunction) {
+    const std::string text =
+        "/*{\n"
+        "    \"RESOURCE_TYPE\": \"Material For MadMapper\",\n"
+        "    \"INPUTS\": [\n"
+        "        { \"LABEL\": \"Quality\", \"NAME\": \"mat_quality\", \"TYPE\": \"int\", \"MIN\": 10, \"MAX\": "
+        "100, \"DEFAULT\": 64 },\n"
+        "        { \"LABEL\": \"Speed\", \"NAME\": \"mat_speed\", \"TYPE\": \"float\", \"MIN\": 0.0, \"MAX\": "
+        "2.0, \"DEFAULT\": 1. },\n"
+        "    ],\n"
+        "    \"GENERATORS\": [\n"
+        "        {\"NAME\": \"mat_time\", \"TYPE\": \"time_base\", \"PARAMS\": {\"speed\": \"mat_speed\",}},\n"
+        "    ],\n"
+        "}*/\n"
+        "#include \"MadCommon.glsl\"\n"
+        "flat in vec3 vro;\n"
+        "in vec3 vrd;\n"
+        "float map(vec3 p) { return length(p) - 0.5 - 0.05 * sin(mat_time + PI * p.y); }\n"
+        "float intersect(vec3 ro, vec3 rd) {\n"
+        "    float t = 0.0;\n"
+        "    for (int i = 0; i < mat_quality; i++) { float h = map(ro + rd * t); if (h < 0.001) break; t += h; }\n"
+        "    return t;\n"
+        "}\n"
+        "vec4 materialColorForPixel(vec2 texCoord) {\n"
+        "    vec3 ro = vro, rd = normalize(vrd + vec3(texCoord * 2.0 - 1.0, 0.0));\n"
+        "    return vec4(vec3(intersect(ro, rd) * 0.1), 1.0);\n"
+        "}\n";
+    PreparedSdf sdf = prepare(text, "Raymarching Template.fs");
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.host, "MadMapper");
+    EXPECT_EQ(sdf.signature.entry, "map");
+    EXPECT_TRUE(sdf.usesTime()) << "the time_base generator is the time";
+    const Parameter* quality = find(sdf.parameters, "mat_quality");
+    ASSERT_NE(quality, nullptr);
+    EXPECT_EQ(quality->type, ParameterType::Int);
+    EXPECT_EQ(quality->defaultValue[0], 64.0f);
+    EXPECT_NE(sdf.source.text.find("const float PI"), std::string::npos);
+    EXPECT_EQ(sdf.source.text.find("MadCommon"), std::string::npos);
+    EXPECT_EQ(rootLines(sdf), lines(text));
+    EXPECT_EQ(compileErrors(sdf), "");
+}
