@@ -76,7 +76,8 @@ rows = []
 renders = samples = both = 0
 with tempfile.TemporaryDirectory() as scratch:
     # A Synesthesia scene is a folder (NAME.synScene: main.glsl and the scene.json declaring its controls).
-    files = sorted(f for f in os.listdir(FOLDER) if f.endswith(".glsl") or
+    # A Max/Jitter shader is its .jxs file (XML holding the programs).
+    files = sorted(f for f in os.listdir(FOLDER) if f.endswith(".glsl") or f.endswith(".jxs") or
                    (f.endswith(".synScene") and os.path.isfile(os.path.join(FOLDER, f, "main.glsl"))))
     for name in files:
         path = os.path.join(FOLDER, name, "main.glsl") if name.endswith(".synScene") else os.path.join(FOLDER, name)
@@ -168,7 +169,8 @@ if DOC:
                   f"{gl.group(1).strip() if gl else 'unknown renderer'}.\n\n")
         out.write(("Each file a whole fragment shader written for another host than Shadertoy (glslViewer and The Book of "
                    "Shaders, GLSL Sandbox, Bonzomatic, KodeLife, three.js, a WebGL page, a Shadertoy port, Fragmentarium, ISF, "
-                   "Processing and openFrameworks, SHADERed, Synesthesia, TouchDesigner, p5.js), from "
+                   "Processing and openFrameworks, SHADERed, Synesthesia, TouchDesigner, p5.js, MadMapper, Max/Jitter, sokol-shdc, "
+                   "Vulkan GLSL), from "
                    "public repositories, opened as is with no `--entry` (the files are not in this repository); host: what sdfwb "
                    "read it as (docs/foreign-code.md, 'Shaders from other hosts'). " if HOSTS else
                    "Each file a whole single-pass Shadertoy image shader from public repositories, pasted as is and opened with "

@@ -114,8 +114,8 @@ void MainWindow::createFileMenu() {
     create->setShortcut(QKeySequence::New);
     QAction* open = file->addAction(tr("&Open..."), this, [this] {
         if (m_document->isModified() && !m_files->confirmClose()) return;
-        QString path =
-            QFileDialog::getOpenFileName(this, tr("Open SDF"), QString(), tr("GLSL (*.glsl *.frag *.glslf);;All files (*)"));
+        QString path = QFileDialog::getOpenFileName(this, tr("Open SDF"), QString(),
+                                                    tr("Shaders (*.glsl *.frag *.glslf *.fs *.fsh *.jxs);;All files (*)"));
         if (!path.isEmpty()) openFile(path);
     });
     open->setShortcut(QKeySequence::Open);

@@ -177,7 +177,7 @@ struct HostInput {
     const char* value; // an expression of Shadertoy's inputs
     const char* host;
 };
-constexpr std::array<HostInput, 19> kHostInputs{{
+constexpr std::array<HostInput, 20> kHostInputs{{
     {"u_time", "float", "iTime", "glslViewer"},
     {"u_resolution", "vec2", "iResolution.xy", "glslViewer"},
     {"u_mouse", "vec2", "iMouse.xy", "glslViewer"},
@@ -197,6 +197,7 @@ constexpr std::array<HostInput, 19> kHostInputs{{
     {"uTime", "float", "iTime", "three.js"},
     {"uResolution", "vec2", "iResolution.xy", "three.js"},
     {"uMouse", "vec2", "iMouse.xy", "three.js"},
+    {"iResolution", "vec2", "iResolution.xy", "a WebGL page"}, // Max/Jitter's, sokol's
 }};
 
 // Shadertoy's own inputs: a file's declaration of one goes, so sdfwb's (which it sets) is used.

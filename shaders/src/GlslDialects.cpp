@@ -51,6 +51,20 @@ bool sokolEdits(const std::string& text, std::vector<Edit>& edits) {
     return annotated;
 }
 
+// A Max/Jitter shader file (`<jittershader>` XML): the text of its first fragment program's CDATA
+// kept, everything else blanked.
+bool jitterEdits(const std::string& text, std::vector<Edit>& edits) {
+    if (text.find("<jittershader") == std::string::npos) return false;
+    static const std::regex fragment(R"(<program\b[^>]*\btype\s*=\s*"fragment"[^>]*>\s*<!\[CDATA\[)", kLinearRegex);
+    std::smatch program;
+    if (!std::regex_search(text, program, fragment)) return false;
+    const std::size_t begin = std::size_t(program.position(0) + program.length(0));
+    const std::size_t end = std::min(text.find("]]>", begin), text.size());
+    edits.push_back(blanked(text, 0, begin));
+    edits.push_back(blanked(text, end, text.size() - end));
+    return true;
+}
+
 // Vulkan's push constants (a struct and a global) and descriptor sets (gone from the layout).
 bool vulkanEdits(const std::string& text, const std::string& stripped, std::vector<Edit>& edits) {
     static const std::regex layout(R"(\blayout\s*\(([^()]*)\))", kLinearRegex);
@@ -99,7 +113,10 @@ void namelessBlockEdits(const std::string& text, const std::string& stripped, st
 DialectText readGlslDialect(const std::string& text) {
     DialectText out;
     std::vector<Edit> edits;
-    if (sokolEdits(text, edits)) out.dialect = "sokol-shdc";
+    if (jitterEdits(text, edits))
+        out.dialect = "Max/Jitter";
+    else if (sokolEdits(text, edits))
+        out.dialect = "sokol-shdc";
     const std::string sokol = applyEdits(text, std::move(edits));
     edits = {};
     const std::string stripped = stripComments(sokol);

@@ -977,3 +977,50 @@ TEST(ForeignHosts, AMadMapperMaterialsInputsGeneratorsAndColourFunction) {
     EXPECT_EQ(rootLines(sdf), lines(text));
     EXPECT_EQ(compileErrors(sdf), "");
 }
+
+// A Max/Jitter shader file (a .jxs: XML holding the vertex and fragment programs in CDATA, the
+// parameters as <param> elements): the fragment program is the shader, its `uniform vec2
+// iResolution` (Jitter's RESOLUTION state) sdfwb's frame size.
+TEST(ForeignHosts, AMaxJitterShaderFilesFragmentProgramIsTheShader) {
+    const std::string text =
+        "<jittershader name=\"Raymarching Template\">\n"
+        "<param name=\"iTime\" type=\"float\" default=\"0.0\" />\n"
+        "<param name=\"iResolution\" type=\"vec2\" state=\"RESOLUTION\" />\n"
+        "<language name=\"glsl\" version=\"1.5\">\n"
+        "<bind param=\"iTime\" program=\"fp\" />\n"
+        "<program name=\"vp\" type=\"vertex\">\n"
+        "<![CDATA[\n"
+        "#version 330 core\n"
+        "in vec3 position;\n"
+        "void main(void) { gl_Position = vec4(position, 1.0); }\n"
+        "]]>\n"
+        "</program>\n"
+        "<program name=\"fp\" type=\"fragment\">\n"
+        "<![CDATA[\n"
+        "#version 330 core\n"
+        "in jit_PerVertex { vec2 texcoord; } jit_in;\n"
+        "layout (location = 0) out vec4 outColor;\n"
+        "uniform float iTime;\n"
+        "uniform vec2 iResolution;\n"
+        "float getDist(vec3 p) { return length(p - vec3(0.0, 0.0, 0.1 * sin(iTime))) - 0.5; }\n"
+        "void main() {\n"
+        "    vec2 uv = (gl_FragCoord.xy - 0.5 * iResolution) / iResolution.y;\n"
+        "    vec3 ro = vec3(0.0, 0.0, -3.0), rd = normalize(vec3(uv, 1.5));\n"
+        "    float t = 0.0;\n"
+        "    for (int i = 0; i < 64; i++) { float d = getDist(ro + rd * t); if (d < 0.001) break; t += d; }\n"
+        "    outColor = vec4(vec3(t * 0.1), 1.0);\n"
+        "}\n"
+        "]]>\n"
+        "</program>\n"
+        "</language>\n"
+        "</jittershader>\n";
+    PreparedSdf sdf = prepare(text, "raymarching-template.jxs");
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.host, "Max/Jitter");
+    EXPECT_EQ(sdf.signature.entry, "getDist");
+    EXPECT_TRUE(sdf.usesTime());
+    EXPECT_EQ(sdf.source.text.find("jittershader"), std::string::npos);
+    EXPECT_EQ(sdf.source.text.find("gl_Position"), std::string::npos);
+    EXPECT_EQ(rootLines(sdf), lines(text));
+    EXPECT_EQ(compileErrors(sdf), "");
+}
