@@ -170,7 +170,7 @@ if DOC:
         out.write(("Each file a whole fragment shader written for another host than Shadertoy (glslViewer and The Book of "
                    "Shaders, GLSL Sandbox, Bonzomatic, KodeLife, three.js, a WebGL page, a Shadertoy port, Fragmentarium, ISF, "
                    "Processing and openFrameworks, SHADERed, Synesthesia, TouchDesigner, p5.js, MadMapper, Max/Jitter, sokol-shdc, "
-                   "Vulkan GLSL), from "
+                   "RetroArch, Vulkan GLSL, raylib, bgfx), from "
                    "public repositories, opened as is with no `--entry` (the files are not in this repository); host: what sdfwb "
                    "read it as (docs/foreign-code.md, 'Shaders from other hosts'). " if HOSTS else
                    "Each file a whole single-pass Shadertoy image shader from public repositories, pasted as is and opened with "

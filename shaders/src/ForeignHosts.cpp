@@ -515,10 +515,13 @@ void adaptMain(const Code& code, std::vector<Edit>& edits, HostAdaptation& out) 
     }
     // A layer that copies the host's inputs into Shadertoy's names at file scope (Processing's
     // `vec3 iResolution = vec3(resolution, 0.0);`): sdfwb declares and sets those.
-    static const std::regex layer(R"(\b(?:vec3\s+iResolution|vec4\s+iMouse|float\s+iTime)\s*=[^;{}]*;)", kLinearRegex);
+    // A vec2 frame size (RetroArch's `vec2 iResolution = OutputSize.xy;`) is sdfwb's `.xy`.
+    static const std::regex layer(R"(\b(?:vec([23])\s+iResolution|vec4\s+iMouse|float\s+iTime)\s*=[^;{}]*;)", kLinearRegex);
     for (auto it = std::sregex_iterator(code.stripped.begin(), code.stripped.end(), layer); it != std::sregex_iterator(); ++it)
-        if (const std::size_t at = std::size_t(it->position(0)); code.depth[at] == 0)
+        if (const std::size_t at = std::size_t(it->position(0)); code.depth[at] == 0) {
             edits.push_back(blank(text, at, std::size_t(it->length(0))));
+            if ((*it)[1].str() == "2") renames.emplace_back("iResolution", "iResolution.xy");
+        }
     for (const auto& [name, value] : renames)
         for (std::size_t at : code.occurrences(name)) // macros' bodies too
             if (at == 0 || code.stripped[at - 1] != '.') edits.push_back({at, name.size(), value});

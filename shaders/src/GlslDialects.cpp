@@ -65,6 +65,40 @@ bool jitterEdits(const std::string& text, std::vector<Edit>& edits) {
     return true;
 }
 
+// RetroArch's GLSL shaders hold both stages in one file (`#if defined(VERTEX) ... #elif
+// defined(FRAGMENT) ... #endif`): the vertex part and the three directive lines blanked.
+bool retroArchEdits(const std::string& text, const std::string& stripped, std::vector<Edit>& edits) {
+    static const std::regex vertex(R"(^[ \t]*#[ \t]*if[ \t]+defined[ \t]*\([ \t]*VERTEX[ \t]*\))", kLinearRegex);
+    static const std::regex fragment(R"(^[ \t]*#[ \t]*elif[ \t]+defined[ \t]*\([ \t]*FRAGMENT[ \t]*\))", kLinearRegex);
+    static const std::regex opens(R"(^[ \t]*#[ \t]*if)", kLinearRegex), closes(R"(^[ \t]*#[ \t]*endif\b)", kLinearRegex);
+    std::size_t start = std::string::npos, middle = std::string::npos;
+    int depth = 0;
+    for (std::size_t line = 0; line < stripped.size();) {
+        const std::size_t stop = std::min(stripped.find('\n', line), stripped.size());
+        const std::string text1 = stripped.substr(line, stop - line);
+        if (start == std::string::npos) {
+            if (std::regex_search(text1, vertex)) start = line;
+        } else if (depth == 0 && middle == std::string::npos && std::regex_search(text1, fragment)) {
+            middle = stop;
+        } else if (std::regex_search(text1, opens)) {
+            ++depth;
+        } else if (std::regex_search(text1, closes) && depth-- == 0) {
+            if (middle == std::string::npos) return false;
+            edits.push_back(blanked(text, start, middle - start));
+            edits.push_back(blanked(text, line, stop - line));
+            // Its inputs declared through its macro (`COMPAT_VARYING vec4 TEX0;`, `in` in a fragment
+            // stage): plain globals, as a compute stage has no inputs.
+            static const std::regex varying(R"((?:^|\n)[ \t]*(COMPAT_VARYING)[ \t]+\w+[ \t]+\w+[ \t]*;)", kLinearRegex);
+            const std::string part = stripped.substr(middle, line - middle);
+            for (auto it = std::sregex_iterator(part.begin(), part.end(), varying); it != std::sregex_iterator(); ++it)
+                edits.push_back(blanked(text, middle + std::size_t(it->position(1)), std::size_t(it->length(1))));
+            return true;
+        }
+        line = stop + 1;
+    }
+    return false;
+}
+
 // Vulkan's push constants (a struct and a global) and descriptor sets (gone from the layout).
 bool vulkanEdits(const std::string& text, const std::string& stripped, std::vector<Edit>& edits) {
     static const std::regex layout(R"(\blayout\s*\(([^()]*)\))", kLinearRegex);
@@ -121,6 +155,7 @@ DialectText readGlslDialect(const std::string& text) {
     edits = {};
     const std::string stripped = stripComments(sokol);
     if (vulkanEdits(sokol, stripped, edits) && out.dialect.empty()) out.dialect = "Vulkan GLSL";
+    if (retroArchEdits(sokol, stripped, edits) && out.dialect.empty()) out.dialect = "RetroArch";
     namelessBlockEdits(sokol, stripped, edits);
     if (out.dialect.empty() && edits.empty()) return out;
     out.text = applyEdits(sokol, std::move(edits));

@@ -6,6 +6,8 @@
 //    and the annotation lines blanked.
 //  - Max/Jitter's shader files (`<jittershader>` XML with `<program type="fragment"><![CDATA[...]]>`):
 //    the fragment program's text kept, the XML and the vertex program blanked.
+//  - RetroArch's GLSL shaders (libretro's glsl-shaders: both stages in one file, `#if defined(VERTEX)
+//    ... #elif defined(FRAGMENT) ... #endif`): the fragment part kept.
 //  - Vulkan GLSL (vulkano, ash, wgpu): a `layout(push_constant) uniform Block { ... } name;` is a
 //    struct and a global of it (zero: nothing pushes here), `set = N` leaves its layout.
 //  - A uniform block without an instance name (`uniform Params { vec2 iResolution; float iTime; };`,
@@ -19,7 +21,7 @@ namespace sdfwb::shaders::detail {
 
 struct DialectText {
     std::string text;    // the text read as OpenGL's GLSL: the same lines
-    std::string dialect; // "Max/Jitter", "sokol-shdc", "Vulkan GLSL", or empty where nothing was changed
+    std::string dialect; // "Max/Jitter", "sokol-shdc", "Vulkan GLSL", "RetroArch", or empty where nothing was changed
 };
 
 DialectText readGlslDialect(const std::string& text);

@@ -2,11 +2,14 @@
 
 #include <shaders/SdfSource.h>
 
+#include <core/Regex.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <regex>
 #include <set>
 #include <string>
 #include <string_view>
@@ -222,6 +225,16 @@ std::vector<Diagnostic> checkSourceFiles(const ResolvedSource& source) {
             if (f.function && f.name == "main")
                 report(f.offset, "main() is written by the workbench (the tracer's and the samplers' own); an SDF file defines "
                                  "float sdf(vec3 p) and its helpers: remove this main()");
+        // glslify's imports (three.js and stack.gl code): its bundler resolves them, not a compiler.
+        static const std::regex glslify(R"((?:^|\n)[ \t]*#[ \t]*pragma[ \t]+glslify[ \t]*:[ \t]*(\w+)[ \t]*=[ \t]*require\b)",
+                                        kLinearRegex);
+        for (auto it = std::sregex_iterator(stripped.begin(), stripped.end(), glslify); it != std::sregex_iterator(); ++it) {
+            const std::string name = (*it)[1].str();
+            out.push_back({file.name, position(stripped, std::size_t(it->position(1))).first, 1, Severity::Warning,
+                           "glslify's import of '" + name + "': the glslify bundler resolves `#pragma glslify: ... require`, " +
+                               "sdfwb does not, so '" + name + "' is not defined here (bundle the file first, `npx glslify " +
+                               "FILE > bundled.glsl`, and open the result)"});
+        }
         for (std::size_t offset : reservedDefinitions(stripped, tokens)) {
             std::size_t end = offset;
             while (end < stripped.size() && isWord(stripped[end])) ++end;

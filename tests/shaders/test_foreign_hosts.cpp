@@ -46,6 +46,13 @@ long rootLines(const PreparedSdf& sdf) {
     return lines(sdf.source.text) - 1;
 }
 
+// The march a host's main runs: a ray through `uv` stepped by `field`, its length written to `colour`.
+std::string marchTo(const std::string& field, const std::string& colour) {
+    return "    vec3 ro = vec3(0.0, 0.0, -3.0), rd = normalize(vec3(uv, 1.5));\n    float t = 0.0;\n"
+           "    for (int i = 0; i < 64; i++) { float d = " +
+           field + "(ro + rd * t); if (d < 0.001) break; t += d; }\n    " + colour + " = vec4(vec3(t * 0.1), 1.0);\n";
+}
+
 const Parameter* find(const std::vector<Parameter>& parameters, const std::string& name) {
     for (const Parameter& p : parameters)
         if (p.name == name) return &p;
@@ -820,12 +827,8 @@ TEST(ForeignHosts, AProcessingPortsLayerOfShadertoyNamesGoes) {
                              "vec4 iMouse = vec4(mouse.xy, mousePressed.xy);\n"
                              "float scene(vec3 p) { return length(p) - 0.5 - 0.1 * sin(iGlobalTime); }\n"
                              "void main() {\n"
-                             "    vec2 uv = (2.0 * gl_FragCoord.xy - iResolution.xy) / iResolution.y + iMouse.xy * 0.0;\n"
-                             "    vec3 ro = vec3(0.0, 0.0, -3.0), rd = normalize(vec3(uv, 1.5));\n"
-                             "    float t = 0.0;\n"
-                             "    for (int i = 0; i < 64; i++) { float d = scene(ro + rd * t); if (d < 0.001) break; t += d; }\n"
-                             "    gl_FragColor = vec4(vec3(t * 0.1), 1.0);\n"
-                             "}\n";
+                             "    vec2 uv = (2.0 * gl_FragCoord.xy - iResolution.xy) / iResolution.y + iMouse.xy * 0.0;\n" +
+                             marchTo("scene", "gl_FragColor") + "}\n";
     PreparedSdf sdf = prepare(text, "shader.glsl");
     ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
     EXPECT_EQ(sdf.signature.entry, "scene");
@@ -843,12 +846,8 @@ TEST(ForeignHosts, AMainWritingThroughMacrosIsTheHostsMain) {
                              "#define R iResolution.xy\n"
                              "float map(vec3 p) { return length(p) - 0.5; }\n"
                              "void main() {\n"
-                             "    vec2 uv = (2.0 * U - R) / R.y;\n"
-                             "    vec3 ro = vec3(0.0, 0.0, -3.0), rd = normalize(vec3(uv, 1.5));\n"
-                             "    float t = 0.0;\n"
-                             "    for (int i = 0; i < 64; i++) { float d = map(ro + rd * t); if (d < 0.001) break; t += d; }\n"
-                             "    O = vec4(vec3(t * 0.1), 1.0);\n"
-                             "}\n";
+                             "    vec2 uv = (2.0 * U - R) / R.y;\n" +
+                             marchTo("map", "O") + "}\n";
     PreparedSdf sdf = prepare(text, "raymarch_temple.glsl");
     ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
     EXPECT_EQ(sdf.signature.entry, "map");
@@ -862,30 +861,26 @@ TEST(ForeignHosts, AMainWritingThroughMacrosIsTheHostsMain) {
 // fragment stage is the shader, and its uniform block without an instance name (`uniform sdf_uniform
 // { vec2 iResolution; float iTime; };`) gives plain uniforms, read as Shadertoy's inputs.
 TEST(ForeignHosts, ASokolShdcFilesFragmentStageIsTheShader) {
-    const std::string text =
-        "@ctype vec2 sgp_vec2\n"
-        "@vs sdf_vs\n"
-        "in vec4 coord;\n"
-        "out vec2 fragUV;\n"
-        "void main() { gl_Position = vec4(coord.xy, 0.0, 1.0); fragUV = coord.zw; }\n"
-        "@end\n"
-        "@fs sdf_fs\n"
-        "uniform sdf_uniform {\n"
-        "    vec2 iResolution;\n"
-        "    float iTime;\n"
-        "};\n"
-        "in vec2 fragUV;\n"
-        "out vec4 fragColor;\n"
-        "float get_sdf(vec3 p) { return length(p - vec3(0.0, 0.1 * sin(iTime), 0.0)) - 0.5; }\n"
-        "void main() {\n"
-        "    vec2 uv = (fragUV * iResolution - 0.5 * iResolution) / iResolution.y;\n"
-        "    vec3 ro = vec3(0.0, 0.0, -3.0), rd = normalize(vec3(uv, 1.5));\n"
-        "    float t = 0.0;\n"
-        "    for (int i = 0; i < 64; i++) { float d = get_sdf(ro + rd * t); if (d < 0.001) break; t += d; }\n"
-        "    fragColor = vec4(vec3(t * 0.1), 1.0);\n"
-        "}\n"
-        "@end\n"
-        "@program sdf sdf_vs sdf_fs\n";
+    const std::string text = "@ctype vec2 sgp_vec2\n"
+                             "@vs sdf_vs\n"
+                             "in vec4 coord;\n"
+                             "out vec2 fragUV;\n"
+                             "void main() { gl_Position = vec4(coord.xy, 0.0, 1.0); fragUV = coord.zw; }\n"
+                             "@end\n"
+                             "@fs sdf_fs\n"
+                             "uniform sdf_uniform {\n"
+                             "    vec2 iResolution;\n"
+                             "    float iTime;\n"
+                             "};\n"
+                             "in vec2 fragUV;\n"
+                             "out vec4 fragColor;\n"
+                             "float get_sdf(vec3 p) { return length(p - vec3(0.0, 0.1 * sin(iTime), 0.0)) - 0.5; }\n"
+                             "void main() {\n"
+                             "    vec2 uv = (fragUV * iResolution - 0.5 * iResolution) / iResolution.y;\n" +
+                             marchTo("get_sdf", "fragColor") +
+                             "}\n"
+                             "@end\n"
+                             "@program sdf sdf_vs sdf_fs\n";
     PreparedSdf sdf = prepare(text, "sample-sdf.glsl");
     ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
     EXPECT_EQ(sdf.host, "sokol-shdc");
@@ -910,12 +905,8 @@ TEST(ForeignHosts, VulkanPushConstantsAndDescriptorSetsAreReadAsOpenGls) {
                              "layout(location = 0) out vec4 f_color;\n"
                              "float f(vec3 p) { return length(p) - 0.5 - 0.0 * texture(tex, p.xy).x - extra.radius; }\n"
                              "void main() {\n"
-                             "    vec2 uv = (gl_FragCoord.xy - 0.5 * push.resolution) / max(push.resolution.y, 1.0);\n"
-                             "    vec3 ro = vec3(0.0, 0.0, -3.0), rd = normalize(vec3(uv, 1.5));\n"
-                             "    float t = 0.0;\n"
-                             "    for (int i = 0; i < 64; i++) { float d = f(ro + rd * t); if (d < 0.001) break; t += d; }\n"
-                             "    f_color = vec4(vec3(t * 0.1), 1.0);\n"
-                             "}\n";
+                             "    vec2 uv = (gl_FragCoord.xy - 0.5 * push.resolution) / max(push.resolution.y, 1.0);\n" +
+                             marchTo("f", "f_color") + "}\n";
     PreparedSdf sdf = prepare(text, "raymarching-3d.frag");
     ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
     EXPECT_EQ(sdf.host, "Vulkan GLSL");
@@ -982,38 +973,34 @@ TEST(ForeignHosts, AMadMapperMaterialsInputsGeneratorsAndColourFunction) {
 // parameters as <param> elements): the fragment program is the shader, its `uniform vec2
 // iResolution` (Jitter's RESOLUTION state) sdfwb's frame size.
 TEST(ForeignHosts, AMaxJitterShaderFilesFragmentProgramIsTheShader) {
-    const std::string text =
-        "<jittershader name=\"Raymarching Template\">\n"
-        "<param name=\"iTime\" type=\"float\" default=\"0.0\" />\n"
-        "<param name=\"iResolution\" type=\"vec2\" state=\"RESOLUTION\" />\n"
-        "<language name=\"glsl\" version=\"1.5\">\n"
-        "<bind param=\"iTime\" program=\"fp\" />\n"
-        "<program name=\"vp\" type=\"vertex\">\n"
-        "<![CDATA[\n"
-        "#version 330 core\n"
-        "in vec3 position;\n"
-        "void main(void) { gl_Position = vec4(position, 1.0); }\n"
-        "]]>\n"
-        "</program>\n"
-        "<program name=\"fp\" type=\"fragment\">\n"
-        "<![CDATA[\n"
-        "#version 330 core\n"
-        "in jit_PerVertex { vec2 texcoord; } jit_in;\n"
-        "layout (location = 0) out vec4 outColor;\n"
-        "uniform float iTime;\n"
-        "uniform vec2 iResolution;\n"
-        "float getDist(vec3 p) { return length(p - vec3(0.0, 0.0, 0.1 * sin(iTime))) - 0.5; }\n"
-        "void main() {\n"
-        "    vec2 uv = (gl_FragCoord.xy - 0.5 * iResolution) / iResolution.y;\n"
-        "    vec3 ro = vec3(0.0, 0.0, -3.0), rd = normalize(vec3(uv, 1.5));\n"
-        "    float t = 0.0;\n"
-        "    for (int i = 0; i < 64; i++) { float d = getDist(ro + rd * t); if (d < 0.001) break; t += d; }\n"
-        "    outColor = vec4(vec3(t * 0.1), 1.0);\n"
-        "}\n"
-        "]]>\n"
-        "</program>\n"
-        "</language>\n"
-        "</jittershader>\n";
+    const std::string text = "<jittershader name=\"Raymarching Template\">\n"
+                             "<param name=\"iTime\" type=\"float\" default=\"0.0\" />\n"
+                             "<param name=\"iResolution\" type=\"vec2\" state=\"RESOLUTION\" />\n"
+                             "<language name=\"glsl\" version=\"1.5\">\n"
+                             "<bind param=\"iTime\" program=\"fp\" />\n"
+                             "<program name=\"vp\" type=\"vertex\">\n"
+                             "<![CDATA[\n"
+                             "#version 330 core\n"
+                             "in vec3 position;\n"
+                             "void main(void) { gl_Position = vec4(position, 1.0); }\n"
+                             "]]>\n"
+                             "</program>\n"
+                             "<program name=\"fp\" type=\"fragment\">\n"
+                             "<![CDATA[\n"
+                             "#version 330 core\n"
+                             "in jit_PerVertex { vec2 texcoord; } jit_in;\n"
+                             "layout (location = 0) out vec4 outColor;\n"
+                             "uniform float iTime;\n"
+                             "uniform vec2 iResolution;\n"
+                             "float getDist(vec3 p) { return length(p - vec3(0.0, 0.0, 0.1 * sin(iTime))) - 0.5; }\n"
+                             "void main() {\n"
+                             "    vec2 uv = (gl_FragCoord.xy - 0.5 * iResolution) / iResolution.y;\n" +
+                             marchTo("getDist", "outColor") +
+                             "}\n"
+                             "]]>\n"
+                             "</program>\n"
+                             "</language>\n"
+                             "</jittershader>\n";
     PreparedSdf sdf = prepare(text, "raymarching-template.jxs");
     ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
     EXPECT_EQ(sdf.host, "Max/Jitter");
@@ -1023,4 +1010,56 @@ TEST(ForeignHosts, AMaxJitterShaderFilesFragmentProgramIsTheShader) {
     EXPECT_EQ(sdf.source.text.find("gl_Position"), std::string::npos);
     EXPECT_EQ(rootLines(sdf), lines(text));
     EXPECT_EQ(compileErrors(sdf), "");
+}
+
+// A RetroArch shader (libretro's glsl-shaders/procedural: Shadertoy ports): both stages in one file
+// under `#if defined(VERTEX) ... #elif defined(FRAGMENT) ... #endif`, the port's layer
+// `vec2 iResolution = OutputSize.xy;` and a main() that wraps mainImage. The fragment part is the
+// shader, its vec2 frame size sdfwb's iResolution.xy.
+TEST(ForeignHosts, ARetroArchShadersFragmentPartIsTheShader) {
+    const std::string text = "#if defined(VERTEX)\n"
+                             "#if __VERSION__ >= 130\n"
+                             "#define COMPAT_VARYING out\n"
+                             "#endif\n"
+                             "COMPAT_VARYING vec4 TEX0;\n"
+                             "void main() { gl_Position = vec4(0.0); }\n"
+                             "#elif defined(FRAGMENT)\n"
+                             "#define COMPAT_VARYING in\n"
+                             "COMPAT_VARYING vec4 TEX0;\n"
+                             "out vec4 FragColor;\n"
+                             "uniform int FrameCount;\n"
+                             "uniform vec2 OutputSize;\n"
+                             "vec2 iResolution = OutputSize.xy;\n"
+                             "float map(vec3 p) { return length(p) - 0.5; }\n"
+                             "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                             "    vec2 uv = (fragCoord - 0.5 * iResolution) / iResolution.y;\n" +
+                             marchTo("map", "fragColor") +
+                             "}\n"
+                             "void main(void) { mainImage(FragColor, gl_FragCoord.xy); }\n"
+                             "#endif\n";
+    PreparedSdf sdf = prepare(text, "leon-mam-stairs.glsl");
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.host, "RetroArch");
+    EXPECT_EQ(sdf.signature.entry, "map");
+    EXPECT_EQ(sdf.source.text.find("gl_Position"), std::string::npos);
+    EXPECT_EQ(sdf.source.text.find("defined(FRAGMENT)"), std::string::npos);
+    EXPECT_EQ(rootLines(sdf), lines(text));
+    EXPECT_EQ(compileErrors(sdf), "");
+}
+
+// glslify's imports (`#pragma glslify: rotate = require(../common/rotate)`, three.js projects):
+// sdfwb does not bundle, and says so at the line, naming the function left undefined.
+TEST(ForeignHosts, AGlslifyImportIsNamedAtItsLine) {
+    const std::string text = "uniform float u_time;\n"
+                             "#pragma glslify: rotate = require(../../common/rotate)\n"
+                             "float scene(vec3 p) { return length(rotate(p, vec3(0.0, 1.0, 0.0), u_time)) - 0.5; }\n"
+                             "void main() { gl_FragColor = vec4(scene(vec3(0.0))); }\n";
+    const PreparedSdf sdf = prepare(text, "frag.glsl");
+    const auto warning = std::find_if(sdf.diagnostics.begin(), sdf.diagnostics.end(), [](const Diagnostic& d) {
+        return d.message.find("glslify's import of 'rotate'") != std::string::npos;
+    });
+    ASSERT_NE(warning, sdf.diagnostics.end()) << errors(sdf.diagnostics);
+    EXPECT_EQ(warning->line, 2);
+    EXPECT_EQ(warning->severity, Severity::Warning);
+    EXPECT_NE(warning->message.find("npx glslify"), std::string::npos);
 }
