@@ -460,6 +460,18 @@ void adaptFragmentarium(const Code& code, const std::vector<Parameter>& paramete
     edits[firstInclude].replacement = provided + edits[firstInclude].replacement;
 }
 
+// The depth a host's main writes (raylib's hybrid example writes gl_FragDepth): a global of its
+// own, declared before the `void` of the main whose name is at `mainName`, as a compute stage has none.
+void writtenDepth(const Code& code, std::size_t mainName, std::vector<Edit>& edits) {
+    const std::vector<std::size_t> depths = code.occurrences("gl_FragDepth");
+    if (depths.empty()) return;
+    const std::string depth = freshName(code, "fragDepth");
+    std::size_t start = mainName;
+    while (start > 0 && isSpaceChar(code.stripped[start - 1])) --start;
+    edits.push_back({start >= 4 ? start - 4 : 0, 0, "float " + depth + "; "});
+    for (std::size_t at : depths) edits.push_back({at, 12, depth});
+}
+
 // A host's `void main()`: Shadertoy's mainImage.
 void adaptMain(const Code& code, std::vector<Edit>& edits, HostAdaptation& out) {
     const std::string& text = code.original;
@@ -565,6 +577,7 @@ void adaptMain(const Code& code, std::vector<Edit>& edits, HostAdaptation& out) 
         out.host = host == "a WebGL page" ? "a Shadertoy port" : host;
         return;
     }
+    writtenDepth(code, main->name, edits);
     if (colour.empty()) colour = freshName(code, "fragColor");
     edits.push_back({main->name, main->close + 1 - main->name, "mainImage(out vec4 " + colour + ", in vec2 " + coordinate + ")"});
     for (std::size_t at : code.occurrences("gl_FragColor")) edits.push_back({at, 12, colour});

@@ -394,12 +394,15 @@ std::string pointMarchBody(const std::string& text, std::size_t keyword, const s
     // step. Else (`p += rd * d; ... d = ...;`) the whole body, the step replaced by the point given.
     bool before = factor >= 0;
     if (before) {
+        // `a * b * c` is `(a * b) * c`: the right factor is the last, the left all before it.
         const std::vector<std::string> factors = splitOutside(step, '*');
-        if (factors.size() != 2) {
-            why = "the step of '" + point + "' is not one product of the field and a direction: " + step;
+        if (factors.size() < 2) {
+            why = "the step of '" + point + "' is not a product of the field and a direction: " + step;
             return {};
         }
-        field = trimmedText(factors[std::size_t(factor)]);
+        std::string left;
+        for (std::size_t i = 0; i + 1 < factors.size(); ++i) left += (i ? "*" : "") + factors[i];
+        field = trimmedText(factor == 1 ? factors.back() : "(" + trimmedText(left) + ")");
     } else {
         const std::regex assigns(R"((^|[^\w.])()" + field + R"()\s*[-+*/]?=[^=])", kLinearRegex);
         for (std::size_t i = 0; i < stepAt; ++i) before = before || std::regex_search(statements[i], assigns);

@@ -129,8 +129,57 @@ bool readsFirstComponentOnly(TIntermNode* loop, const CallResult& result) {
     return reads.single[0] > 0 && reads.single[1] + reads.single[2] + reads.single[3] + reads.other == 0;
 }
 
+// Assignments a loop's body makes under a condition or in a loop nested in it.
+std::set<TIntermBinary*> conditionalAssignments(TIntermLoop* loop) {
+    struct Walk : glslang::TIntermTraverser {
+        std::set<TIntermBinary*> found;
+        int nesting = 0;
+        bool visitSelection(glslang::TVisit, glslang::TIntermSelection* node) override {
+            ++nesting;
+            if (node->getTrueBlock()) node->getTrueBlock()->traverse(this);
+            if (node->getFalseBlock()) node->getFalseBlock()->traverse(this);
+            --nesting;
+            return false;
+        }
+        bool visitLoop(glslang::TVisit, TIntermLoop* node) override {
+            ++nesting;
+            if (node->getBody()) node->getBody()->traverse(this);
+            --nesting;
+            return false;
+        }
+        bool visitBinary(glslang::TVisit, TIntermBinary* node) override {
+            if (nesting > 0) found.insert(node);
+            return true;
+        }
+    } walk;
+    if (loop->getBody()) loop->getBody()->traverse(&walk);
+    return walk.found;
+}
+
+// Whether the value `call` gives a variable after the step is overwritten before the step reads it
+// again: `h = Map(p); ... t += clamp(.5 * h, ...); h = MapClouds(p);` (a terrain that reuses h for
+// its clouds) steps by Map alone.
+bool overwrittenBeforeTheStep(const std::vector<Assignment>& assignments, TIntermAggregate* call, const Assignment& step,
+                              const std::set<TIntermBinary*>& conditional) {
+    auto before = [](const glslang::TSourceLoc& a, const glslang::TSourceLoc& b) {
+        return a.line < b.line || (a.line == b.line && a.column < b.column);
+    };
+    for (const Assignment& given : assignments) {
+        if (!given.calls.count(call) || given.op != glslang::EOpAssign || given.target < 0 ||
+            !before(step.node->getLoc(), given.node->getLoc()))
+            continue;
+        for (const Assignment& other : assignments)
+            if (&other != &given && other.target == given.target && other.op == glslang::EOpAssign &&
+                !other.reads.count(other.target) && !conditional.count(other.node) &&
+                before(other.node->getLoc(), step.node->getLoc()))
+                return true;
+    }
+    return false;
+}
+
 // The assignment by which `loop` steps by `call` (a call inside it; see the header), or null.
-const Assignment* stepBy(const std::vector<Assignment>& assignments, TIntermAggregate* call) {
+const Assignment* stepBy(const std::vector<Assignment>& assignments, TIntermAggregate* call,
+                         const std::set<TIntermBinary*>& conditional) {
     // The variables the call's point depends on within the loop.
     std::set<long long> point = contentsOf(call->getSequence().front()).symbols;
     // The variables holding the call's result, or values computed from it.
@@ -152,7 +201,7 @@ const Assignment* stepBy(const std::vector<Assignment>& assignments, TIntermAggr
                            (a.op == glslang::EOpAssign && a.reads.count(a.target));
         if (!grows) continue;
         if (a.calls.count(call) || std::any_of(a.reads.begin(), a.reads.end(), [&](long long s) { return result.count(s) > 0; }))
-            return &a;
+            return a.calls.count(call) || !overwrittenBeforeTheStep(assignments, call, a, conditional) ? &a : nullptr;
     }
     return nullptr;
 }
@@ -566,6 +615,7 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                                        std::set<TIntermAggregate*>(right.calls.begin(), right.calls.end()), node});
             }
             std::set<std::string> counted; // each function once per loop
+            const std::set<TIntermBinary*> conditional = conditionalAssignments(loop);
             for (TIntermAggregate* call : inside.calls) {
                 auto callee = tree.functions.find(call->getName().c_str());
                 if (callee == tree.functions.end() || call->getSequence().empty()) continue;
@@ -583,7 +633,7 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                     !(returnsFloats(returned) || returnsStruct(returned) || vec3Field))
                     continue;
                 const std::string name = plainName(call->getName());
-                const Assignment* step = counted.count(name) ? nullptr : stepBy(assignments, call);
+                const Assignment* step = counted.count(name) ? nullptr : stepBy(assignments, call, conditional);
                 if (!step) continue;
                 std::string member;
                 if (returnsStruct(returned)) {

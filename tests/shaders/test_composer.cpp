@@ -646,6 +646,58 @@ TEST(EntryPoint, AMarchThatRunsOnlyAfterTheFirstOnesHitIsASecondaryRay) {
     EXPECT_EQ(tied.entryCandidates, (std::vector<std::string>{"glass", "solid"}));
 }
 
+// A terrain that reuses its distance's variable for the clouds after the step (David Hoskins'
+// "Alps": `h = Map(p); ... t += clamp(.5 * h, ...); h = MapClouds(p);`): the clouds' value is
+// overwritten before the step reads h again, so the march steps by Map alone. Where nothing
+// overwrites it first, both step the loop together, as before.
+TEST(EntryPoint, AValueOverwrittenBeforeTheStepReadsItDoesNotStepTheMarch) {
+    auto shader = [](const std::string& top) {
+        return "float Map(vec3 p) { return p.y + 0.5 - 0.1 * sin(3.0 * p.x); }\n"
+               "float MapClouds(vec3 p) { return length(p - vec3(0.0, 8.0, 0.0)) - 3.0; }\n"
+               "void mainImage(out vec4 c, in vec2 f) {\n"
+               "    vec3 ro = vec3(0.0, 0.0, -3.0), rd = normalize(vec3((f - 0.5 * iResolution.xy) / iResolution.y, 1.5));\n"
+               "    float t = 0.0, h = 0.0, glow = 0.0;\n"
+               "    vec3 p = ro;\n"
+               "    for (int j = 0; j < 100; j++) {\n"
+               "        p = ro + t * rd;\n" +
+               top +
+               "        if (h < 0.01) break;\n"
+               "        t += clamp(0.5 * h, 0.002, 20.0) + t * 0.004;\n"
+               "        h = MapClouds(p);\n"
+               "        glow += max(-h, 0.0);\n"
+               "    }\n"
+               "    c = vec4(t, glow, 0.0, 1.0);\n}\n";
+    };
+    PreparedSdf terrain = prepare(shader("        h = Map(p);\n"));
+    ASSERT_TRUE(terrain.ok()) << terrain.diagnostics.back().message;
+    EXPECT_EQ(terrain.signature.entry, "Map");
+    EXPECT_EQ(terrain.entrySource, EntrySource::March);
+    PreparedSdf conditional = prepare(shader("        if (j == 0) h = Map(p); else h = min(h, Map(p));\n"));
+    ASSERT_TRUE(conditional.ok()) << conditional.diagnostics.back().message;
+    EXPECT_NE(conditional.entryReason.find("together"), std::string::npos) << conditional.entryReason;
+}
+
+// A size-coded march that keeps no float for its distance: the point grows by the direction times
+// the field (`p += r * .1 * min(...)`, Chromaney's Glorb Tunnel): the product's float factor, the
+// last of `a * b * c`, is the field, and the body runs up to the step.
+TEST(EntryPoint, AFieldWrittenInThePointsStepIsThatStepsFactor) {
+    const std::string text = "void mainImage(out vec4 o, vec2 c) {\n"
+                             "    vec3 p = vec3(0.0, 0.0, -3.0), r = normalize(vec3(c / iResolution.xy - 0.5, 1.0));\n"
+                             "    for (int i = 0; i < 99; i++) {\n"
+                             "        vec3 q = p;\n"
+                             "        q.xz *= mat2(0.8, 0.6, -0.6, 0.8);\n"
+                             "        p += r * .5 * min(length(q) - .5, q.y + 1.);\n"
+                             "    }\n"
+                             "    o = vec4(p, 1.0);\n}\n";
+    PreparedSdf sdf = prepare(text);
+    ASSERT_TRUE(sdf.ok()) << sdf.diagnostics.back().message;
+    EXPECT_EQ(sdf.signature.entry, "mainImage");
+    EXPECT_NE(sdf.entryReason.find("writes the field inline: min(length(q) - .5, q.y + 1.)"), std::string::npos)
+        << sdf.entryReason;
+    EXPECT_NE(sdf.signature.inlineBody.find("return float(min(length(q) - .5, q.y + 1.));"), std::string::npos)
+        << sdf.signature.inlineBody;
+}
+
 // A field with an out parameter and a flag (a tea cup scene on Shadertoy: `map(pt, mat,
 // includeDielectrics)`), marched by castRay, which render calls, not mainImage: the flag is the
 // constant render passes for the primary ray, the out parameter a local of the wrapper's. A flag

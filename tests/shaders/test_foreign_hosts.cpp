@@ -1063,3 +1063,23 @@ TEST(ForeignHosts, AGlslifyImportIsNamedAtItsLine) {
     EXPECT_EQ(warning->severity, Severity::Warning);
     EXPECT_NE(warning->message.find("npx glslify"), std::string::npos);
 }
+
+// raylib's hybrid ray marching example (`in vec2 fragTexCoord;`, gl_FragColor and gl_FragDepth
+// written in main): the depth is a global of its own, as a compute stage has no gl_FragDepth.
+TEST(ForeignHosts, AMainWritingItsDepthOpensAndSamples) {
+    const std::string text = "#version 330\n"
+                             "in vec2 fragTexCoord;\n"
+                             "uniform vec2 resolution;\n"
+                             "float map(vec3 p) { return length(p) - 0.5; }\n"
+                             "void main() {\n"
+                             "    vec2 uv = (2.0 * gl_FragCoord.xy - resolution) / resolution.y;\n" +
+                             marchTo("map", "gl_FragColor") +
+                             "    gl_FragDepth = t / 100.0;\n"
+                             "}\n";
+    PreparedSdf sdf = prepare(text, "hybrid_raymarch.fs");
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    EXPECT_EQ(sdf.signature.entry, "map");
+    EXPECT_EQ(sdf.source.text.find("gl_FragDepth"), std::string::npos);
+    EXPECT_EQ(rootLines(sdf), lines(text));
+    EXPECT_EQ(compileErrors(sdf), "");
+}
