@@ -46,6 +46,16 @@ long rootLines(const PreparedSdf& sdf) {
     return lines(sdf.source.text) - 1;
 }
 
+// What every host test checks: the text opens, read as `host` (any, where empty) with `entry` as
+// the field, every line where it was, and the compute stage the samplers compile has no errors.
+void expectOpens(const PreparedSdf& sdf, const std::string& text, const std::string& host, const std::string& entry) {
+    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
+    if (!host.empty()) EXPECT_EQ(sdf.host, host);
+    EXPECT_EQ(sdf.signature.entry, entry);
+    EXPECT_EQ(rootLines(sdf), lines(text));
+    EXPECT_EQ(compileErrors(sdf), "");
+}
+
 // The march a host's main runs: a ray through `uv` stepped by `field`, its length written to `colour`.
 std::string marchTo(const std::string& field, const std::string& colour) {
     return "    vec3 ro = vec3(0.0, 0.0, -3.0), rd = normalize(vec3(uv, 1.5));\n    float t = 0.0;\n"
@@ -778,14 +788,10 @@ TEST(ForeignHosts, ATouchDesignerTopsInputsReadTheEmptyUnit) {
         "    fragColor = vec4(vec3(t * 0.1), 1.0);\n"
         "}\n";
     PreparedSdf sdf = prepare(text, "mountains_fragment.glsl");
-    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
-    EXPECT_EQ(sdf.host, "TouchDesigner");
-    EXPECT_EQ(sdf.signature.entry, "map");
+    expectOpens(sdf, text, "TouchDesigner", "map");
     EXPECT_NE(sdf.source.text.find("layout(binding = 13) uniform sampler2D sdfwb_sTD2DInputs;"), std::string::npos);
     EXPECT_NE(sdf.source.text.find("layout(binding = 14) uniform sampler3D sdfwb_sTD3DInputs;"), std::string::npos);
     EXPECT_EQ(sdf.source.text.find("sTD2DInputs["), std::string::npos);
-    EXPECT_EQ(rootLines(sdf), lines(text));
-    EXPECT_EQ(compileErrors(sdf), "");
     // The user's own name with the reserved prefix is still refused.
     std::string own = text;
     own.replace(own.find("float terrain"), 13, "float sdfwb_terrain");
@@ -830,12 +836,9 @@ TEST(ForeignHosts, AProcessingPortsLayerOfShadertoyNamesGoes) {
                              "    vec2 uv = (2.0 * gl_FragCoord.xy - iResolution.xy) / iResolution.y + iMouse.xy * 0.0;\n" +
                              marchTo("scene", "gl_FragColor") + "}\n";
     PreparedSdf sdf = prepare(text, "shader.glsl");
-    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
-    EXPECT_EQ(sdf.signature.entry, "scene");
+    expectOpens(sdf, text, "", "scene");
     EXPECT_EQ(sdf.source.text.find("vec3 iResolution ="), std::string::npos);
     EXPECT_EQ(sdf.source.text.find("vec4 iMouse ="), std::string::npos);
-    EXPECT_EQ(rootLines(sdf), lines(text));
-    EXPECT_EQ(compileErrors(sdf), "");
 }
 
 // A main() that writes its colour and reads its pixel through macros (`#define O gl_FragColor`,
@@ -849,12 +852,9 @@ TEST(ForeignHosts, AMainWritingThroughMacrosIsTheHostsMain) {
                              "    vec2 uv = (2.0 * U - R) / R.y;\n" +
                              marchTo("map", "O") + "}\n";
     PreparedSdf sdf = prepare(text, "raymarch_temple.glsl");
-    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
-    EXPECT_EQ(sdf.signature.entry, "map");
+    expectOpens(sdf, text, "", "map");
     EXPECT_EQ(sdf.source.text.find("gl_FragColor"), std::string::npos);
     EXPECT_EQ(sdf.source.text.find("gl_FragCoord"), std::string::npos);
-    EXPECT_EQ(rootLines(sdf), lines(text));
-    EXPECT_EQ(compileErrors(sdf), "");
 }
 
 // sokol-shdc's annotated file (sokol_gp's SDF sample): the vertex stage and the annotations go, the
@@ -882,14 +882,10 @@ TEST(ForeignHosts, ASokolShdcFilesFragmentStageIsTheShader) {
                              "@end\n"
                              "@program sdf sdf_vs sdf_fs\n";
     PreparedSdf sdf = prepare(text, "sample-sdf.glsl");
-    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
-    EXPECT_EQ(sdf.host, "sokol-shdc");
-    EXPECT_EQ(sdf.signature.entry, "get_sdf");
+    expectOpens(sdf, text, "sokol-shdc", "get_sdf");
     EXPECT_TRUE(sdf.usesTime()) << "iTime from the block is sdfwb's time";
     EXPECT_EQ(sdf.source.text.find("gl_Position"), std::string::npos);
     EXPECT_EQ(sdf.source.text.find("@"), std::string::npos);
-    EXPECT_EQ(rootLines(sdf), lines(text));
-    EXPECT_EQ(compileErrors(sdf), "");
 }
 
 // Vulkan GLSL (a vulkano raymarcher): a push-constant block is a struct and a global of it, and
@@ -908,14 +904,10 @@ TEST(ForeignHosts, VulkanPushConstantsAndDescriptorSetsAreReadAsOpenGls) {
                              "    vec2 uv = (gl_FragCoord.xy - 0.5 * push.resolution) / max(push.resolution.y, 1.0);\n" +
                              marchTo("f", "f_color") + "}\n";
     PreparedSdf sdf = prepare(text, "raymarching-3d.frag");
-    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
-    EXPECT_EQ(sdf.host, "Vulkan GLSL");
-    EXPECT_EQ(sdf.signature.entry, "f");
+    expectOpens(sdf, text, "Vulkan GLSL", "f");
     EXPECT_NE(sdf.source.text.find("struct PushConstants"), std::string::npos);
     EXPECT_EQ(sdf.source.text.find("push_constant"), std::string::npos);
     EXPECT_EQ(sdf.source.text.find("set ="), std::string::npos);
-    EXPECT_EQ(rootLines(sdf), lines(text));
-    EXPECT_EQ(compileErrors(sdf), "");
     std::string broken = text;
     broken.replace(broken.find("- extra.radius"), 14, "- extra.radius + undefinedName");
     const PreparedSdf bad = prepare(broken, "raymarching-3d.frag");
@@ -955,9 +947,7 @@ TEST(ForeignHosts, AMadMapperMaterialsInputsGeneratorsAndColourFunction) {
         "    return vec4(vec3(intersect(ro, rd) * 0.1), 1.0);\n"
         "}\n";
     PreparedSdf sdf = prepare(text, "Raymarching Template.fs");
-    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
-    EXPECT_EQ(sdf.host, "MadMapper");
-    EXPECT_EQ(sdf.signature.entry, "map");
+    expectOpens(sdf, text, "MadMapper", "map");
     EXPECT_TRUE(sdf.usesTime()) << "the time_base generator is the time";
     const Parameter* quality = find(sdf.parameters, "mat_quality");
     ASSERT_NE(quality, nullptr);
@@ -965,8 +955,6 @@ TEST(ForeignHosts, AMadMapperMaterialsInputsGeneratorsAndColourFunction) {
     EXPECT_EQ(quality->defaultValue[0], 64.0f);
     EXPECT_NE(sdf.source.text.find("const float PI"), std::string::npos);
     EXPECT_EQ(sdf.source.text.find("MadCommon"), std::string::npos);
-    EXPECT_EQ(rootLines(sdf), lines(text));
-    EXPECT_EQ(compileErrors(sdf), "");
 }
 
 // A Max/Jitter shader file (a .jxs: XML holding the vertex and fragment programs in CDATA, the
@@ -1002,14 +990,10 @@ TEST(ForeignHosts, AMaxJitterShaderFilesFragmentProgramIsTheShader) {
                              "</language>\n"
                              "</jittershader>\n";
     PreparedSdf sdf = prepare(text, "raymarching-template.jxs");
-    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
-    EXPECT_EQ(sdf.host, "Max/Jitter");
-    EXPECT_EQ(sdf.signature.entry, "getDist");
+    expectOpens(sdf, text, "Max/Jitter", "getDist");
     EXPECT_TRUE(sdf.usesTime());
     EXPECT_EQ(sdf.source.text.find("jittershader"), std::string::npos);
     EXPECT_EQ(sdf.source.text.find("gl_Position"), std::string::npos);
-    EXPECT_EQ(rootLines(sdf), lines(text));
-    EXPECT_EQ(compileErrors(sdf), "");
 }
 
 // A RetroArch shader (libretro's glsl-shaders/procedural: Shadertoy ports): both stages in one file
@@ -1038,13 +1022,9 @@ TEST(ForeignHosts, ARetroArchShadersFragmentPartIsTheShader) {
                              "void main(void) { mainImage(FragColor, gl_FragCoord.xy); }\n"
                              "#endif\n";
     PreparedSdf sdf = prepare(text, "leon-mam-stairs.glsl");
-    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
-    EXPECT_EQ(sdf.host, "RetroArch");
-    EXPECT_EQ(sdf.signature.entry, "map");
+    expectOpens(sdf, text, "RetroArch", "map");
     EXPECT_EQ(sdf.source.text.find("gl_Position"), std::string::npos);
     EXPECT_EQ(sdf.source.text.find("defined(FRAGMENT)"), std::string::npos);
-    EXPECT_EQ(rootLines(sdf), lines(text));
-    EXPECT_EQ(compileErrors(sdf), "");
 }
 
 // glslify's imports (`#pragma glslify: rotate = require(../common/rotate)`, three.js projects):
@@ -1077,9 +1057,6 @@ TEST(ForeignHosts, AMainWritingItsDepthOpensAndSamples) {
                              "    gl_FragDepth = t / 100.0;\n"
                              "}\n";
     PreparedSdf sdf = prepare(text, "hybrid_raymarch.fs");
-    ASSERT_TRUE(sdf.ok()) << errors(sdf.diagnostics);
-    EXPECT_EQ(sdf.signature.entry, "map");
+    expectOpens(sdf, text, "", "map");
     EXPECT_EQ(sdf.source.text.find("gl_FragDepth"), std::string::npos);
-    EXPECT_EQ(rootLines(sdf), lines(text));
-    EXPECT_EQ(compileErrors(sdf), "");
 }
