@@ -123,7 +123,7 @@ if(SDFWB_BUILD_PYTHON)
   set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA ${SDFWB_RESOURCES}/debian/postinst ${SDFWB_RESOURCES}/debian/prerm)
 endif()
 list(JOIN SDFWB_DEB_DEPENDS ", " CPACK_DEBIAN_PACKAGE_DEPENDS)
-# The render overlay's font; the plots of `--batch bench`.
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS fonts-dejavu-core)
+# The render overlay's font; the editor's Chinese and Japanese glyphs (comments in pasted shaders).
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "fonts-dejavu-core, fonts-wqy-microhei")
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "python3-matplotlib, python3-torch")
 include(CPack)
