@@ -98,9 +98,13 @@ std::string withoutLoopExits(const std::string& text) {
     std::string out = text;
     for (std::size_t i = 0; i < out.size(); ++i) {
         if (i > 0 && isWordCharacter(out[i - 1])) continue;
-        if (isLoopKeyword(out, i)) { // a nested loop keeps its own exits
+        if (isLoopKeyword(out, i)) { // a nested loop keeps its own break and continue, not a return
             const std::size_t end = statementEnd(out, i);
             if (end == std::string::npos) return out;
+            for (std::size_t k = i; k < end; ++k)
+                for (const char* exit : {"return", "discard"})
+                    if ((k == 0 || !isWordCharacter(out[k - 1])) && isWordAt(out, k, exit))
+                        out.replace(k, std::char_traits<char>::length(exit), std::char_traits<char>::length(exit), ' ');
             i = end - 1;
             continue;
         }

@@ -16,8 +16,9 @@ std::size_t statementEnd(const std::string& text, std::size_t at);
 // The statements of a block's inside, in order (empty when one does not end).
 std::vector<std::string> splitStatements(const std::string& text);
 
-// `text` with the break, continue, return and discard that leave the enclosing loop blanked (those
-// of loops and switches nested in it stay): the loop's body run once must reach its step.
+// `text` with the break, continue, return and discard that leave the enclosing loop blanked (the
+// break and continue of loops and switches nested in it stay; their return and discard, which
+// would leave the field, go too): the loop's body run once must reach its step.
 std::string withoutLoopExits(const std::string& text);
 
 // `text` with the line that starts at `line` rewritten when it holds no loop keyword but uses an

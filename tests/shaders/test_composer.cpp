@@ -698,6 +698,39 @@ TEST(EntryPoint, AFieldWrittenInThePointsStepIsThatStepsFactor) {
         << sdf.signature.inlineBody;
 }
 
+// A march over several balls that returns the hit's colour from inside its loop over them (a raycast
+// that marches the point itself by the nearest ball's distance): that return would leave the field
+// with a vec4, so it goes like the march's own exits, and the loop over the balls is the field's
+// minimum. The composed tracer compiles; before, the driver rejected the entry wrapper.
+TEST(EntryPoint, AReturnInsideALoopNestedInTheMarchLeavesTheField) {
+    const std::string text =
+        "vec3 centres[3] = vec3[3](vec3(-0.5, 0.0, 0.0), vec3(0.5, 0.0, 0.0), vec3(0.0, 0.5, 0.0));\n"
+        "float ball(vec3 p, int i) { return distance(p, centres[i]) - 0.3; }\n"
+        "vec4 raycast(vec3 pos, vec3 dir) {\n"
+        "    float total = 0.0;\n"
+        "    for (int n = 0; n < 100; n++) {\n"
+        "        float len = 100.0;\n"
+        "        for (int s = 0; s < 3; s++) {\n"
+        "            float d = ball(pos, s);\n"
+        "            if (d < 0.001) return vec4(float(s) / 3.0, total * 0.1, 0.0, 1.0);\n"
+        "            if (d < len) len = d;\n"
+        "        }\n"
+        "        total += len;\n"
+        "        pos += dir * len;\n"
+        "    }\n"
+        "    return vec4(0.0);\n}\n"
+        "void mainImage(out vec4 c, in vec2 f) {\n"
+        "    c = raycast(vec3(0.0, 0.0, -3.0), normalize(vec3((f - 0.5 * iResolution.xy) / iResolution.y, 1.5)));\n"
+        "}\n";
+    PreparedSdf sdf = prepare(text);
+    ASSERT_TRUE(sdf.ok()) << sdf.diagnostics.back().message;
+    EXPECT_EQ(sdf.signature.entry, "raycast");
+    EXPECT_EQ(sdf.signature.inlineBody.find("return vec4"), std::string::npos) << sdf.signature.inlineBody;
+    auto composed = composeTracer(sdf, TracerFeatures{});
+    ASSERT_TRUE(composed.hasValue());
+    EXPECT_FALSE(hasErrors(checkWithGlslang(*composed)));
+}
+
 // A field with an out parameter and a flag (a tea cup scene on Shadertoy: `map(pt, mat,
 // includeDielectrics)`), marched by castRay, which render calls, not mainImage: the flag is the
 // constant render passes for the primary ray, the out parameter a local of the wrapper's. A flag
