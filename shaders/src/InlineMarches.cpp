@@ -9,6 +9,7 @@
 #include <shaders/SdfSource.h>
 
 #include <algorithm>
+#include <cctype>
 #include <set>
 
 // Marches that write their field inline (InlineMarch): the loops mainImage's functions run that
@@ -55,6 +56,55 @@ bool traceParameters(InlineMarch& march, TIntermAggregate* function, const std::
     return true;
 }
 
+// `code` with its preprocessor lines blanked: what is left of it must be whole statements.
+std::string withoutDirectives(std::string code) {
+    for (std::size_t at = 0; at < code.size();) {
+        const std::size_t stop = std::min(code.find('\n', at), code.size());
+        if (const std::size_t k = code.find_first_not_of(" \t", at); k < stop && code[k] == '#')
+            std::fill(code.begin() + std::ptrdiff_t(at), code.begin() + std::ptrdiff_t(stop), ' ');
+        at = stop + 1;
+    }
+    return code;
+}
+
+// The code before a loop with the branches of preprocessor conditionals still open at the loop
+// blanked up to the branch that holds it (`#if NAIVE ... #else` before the march, whose `#endif`
+// follows it): the loop is in the active branch, so the ones before it are not. Conditionals
+// closed before the loop are left to the preprocessor.
+std::string withoutInactiveBranches(std::string code) {
+    std::vector<std::size_t> open, branchEnd; // where each conditional still open began, its last #else's end
+    auto directive = [&](std::size_t at, std::size_t stop) {
+        std::size_t k = code.find_first_not_of(" \t", at);
+        if (k >= stop || code[k] != '#') return std::string();
+        k = code.find_first_not_of(" \t", k + 1);
+        std::size_t end = k;
+        while (end < stop && std::isalpha(static_cast<unsigned char>(code[end]))) ++end;
+        return k < stop ? code.substr(k, end - k) : std::string();
+    };
+    for (std::size_t at = 0; at < code.size();) {
+        const std::size_t stop = std::min(code.find('\n', at), code.size());
+        const std::string word = directive(at, stop);
+        if (word == "if" || word == "ifdef" || word == "ifndef") {
+            open.push_back(at);
+            branchEnd.push_back(std::string::npos);
+        } else if ((word == "else" || word == "elif") && !open.empty()) {
+            branchEnd.back() = stop;
+        } else if (word == "endif" && !open.empty()) {
+            open.pop_back();
+            branchEnd.pop_back();
+        }
+        at = stop + 1;
+    }
+    for (std::size_t i = 0; i < open.size(); ++i) {
+        // Unclosed without an #else before the loop: only its #if line goes.
+        const std::size_t end =
+            branchEnd[i] != std::string::npos ? branchEnd[i] : std::min(code.find('\n', open[i]), code.size());
+        for (std::size_t k = open[i]; k < end; ++k)
+            if (code[k] != '\n') code[k] = ' ';
+    }
+    return code;
+}
+
 // Fills an inline march's prelude and body from its loop's text (InlineField.h), or its unresolved.
 void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* function, const Reached& tree,
                      const ComposedShader& composed) {
@@ -88,9 +138,9 @@ void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* fu
     int enclosing = 0;
     const std::string before = open == std::string::npos || keyword == std::string::npos || open >= keyword
                                    ? std::string()
-                                   : enteredBlocks(text.substr(open + 1, keyword - open - 1), enclosing);
+                                   : enteredBlocks(withoutInactiveBranches(text.substr(open + 1, keyword - open - 1)), enclosing);
     if (keyword == std::string::npos || open == std::string::npos || open >= keyword ||
-        !wholeStatements(before + std::string(std::size_t(std::max(0, enclosing)), '}'))) {
+        !wholeStatements(withoutDirectives(before) + std::string(std::size_t(std::max(0, enclosing)), '}'))) {
         march.unresolved = march.function + "'s code before the loop is not whole statements";
         return;
     }

@@ -731,6 +731,41 @@ TEST(EntryPoint, AReturnInsideALoopNestedInTheMarchLeavesTheField) {
     EXPECT_FALSE(hasErrors(checkWithGlslang(*composed)));
 }
 
+// A march in the `#else` of a preprocessor option (`#if NAIVE_RAYMARCHING` fixed steps `#else` a
+// sphere tracer `#endif`, with NAIVE_RAYMARCHING 0): the branches before the one holding the march
+// are left out of the code run before it, and so are the directives still open at the loop.
+TEST(EntryPoint, AMarchInAPreprocessorOptionsElseOpens) {
+    const std::string text =
+        "#define NAIVE 0\n"
+        "float ball(vec3 p) { return length(p) - 0.5; }\n"
+        "vec4 raycast(vec3 pos, vec3 dir) {\n"
+        "    float total = 0.0;\n"
+        "#if NAIVE\n"
+        "    for (float t = 0.0; t < 10.0; t += 0.1) if (ball(pos + dir * t) < 0.1) return vec4(t);\n"
+        "#else\n"
+        "#ifdef SHOW_STEPS\n"
+        "    total = 1.0;\n"
+        "#endif\n"
+        "    for (int n = 0; n < 100; n++) {\n"
+        "        float len = length(pos) - 0.5;\n"
+        "        total += len;\n"
+        "        pos += dir * len;\n"
+        "    }\n"
+        "#endif\n"
+        "    return vec4(total);\n}\n"
+        "void mainImage(out vec4 c, in vec2 f) {\n"
+        "    c = raycast(vec3(0.0, 0.0, -3.0), normalize(vec3((f - 0.5 * iResolution.xy) / iResolution.y, 1.5)));\n"
+        "}\n";
+    PreparedSdf sdf = prepare(text);
+    ASSERT_TRUE(sdf.ok()) << sdf.diagnostics.back().message;
+    EXPECT_EQ(sdf.signature.entry, "raycast") << sdf.entryReason;
+    EXPECT_NE(sdf.signature.inlineBody.find("#ifdef SHOW_STEPS"), std::string::npos) << sdf.signature.inlineBody;
+    EXPECT_EQ(sdf.signature.inlineBody.find("#if NAIVE"), std::string::npos) << sdf.signature.inlineBody;
+    auto composed = composeTracer(sdf, TracerFeatures{});
+    ASSERT_TRUE(composed.hasValue());
+    EXPECT_FALSE(hasErrors(checkWithGlslang(*composed)));
+}
+
 // A field with an out parameter and a flag (a tea cup scene on Shadertoy: `map(pt, mat,
 // includeDielectrics)`), marched by castRay, which render calls, not mainImage: the flag is the
 // constant render passes for the primary ray, the out parameter a local of the wrapper's. A flag
