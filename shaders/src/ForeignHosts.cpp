@@ -446,10 +446,7 @@ void adaptFragmentarium(const Code& code, const std::vector<Parameter>& paramete
             provided.replace(at, provided.find("} ", at) + 2 - at,
                              "mat3 rotationMatrix(vec3 v, float angle) { return rotationMatrix3(v, angle); } ");
     }
-    // MathUtils.frag's `#define PI`, where the code uses PI and has none of its own.
-    static const std::regex ownPi(R"((?:#\s*define\s+PI|\bPI\s*=)\b)", kLinearRegex);
-    if (!code.occurrences("PI").empty() && !std::regex_search(code.stripped, ownPi))
-        provided += "const float PI = 3.14159265358979; ";
+    provided += piWhereUsed(code.stripped); // MathUtils.frag's `#define PI`
     provided += raytracerInputs(code, blocks);
     // The system includes declare `uniform float time`: sdfwb's scene time.
     bool timeDeclared = false;

@@ -33,12 +33,8 @@ std::vector<Edit> madMapperEdits(const std::string& text, const std::string& str
     // MadMapper's own MadCommon.glsl, which comes with the program: of what it gives, PI (the files
     // use it undefined), on its line.
     static const std::regex common(R"((?:^|\n)([ \t]*#[ \t]*include[ \t]*"MadCommon\.glsl"[^\n]*))", kLinearRegex);
-    static const std::regex ownPi(R"((?:#\s*define\s+PI|\bPI\s*=)\b)", kLinearRegex);
-    if (std::smatch include; std::regex_search(stripped, include, common)) {
-        const bool pi = !wordOffsets(stripped, "PI").empty() && !std::regex_search(stripped, ownPi);
-        edits.push_back(
-            {std::size_t(include.position(1)), std::size_t(include.length(1)), pi ? "const float PI = 3.14159265358979;" : ""});
-    }
+    if (std::smatch include; std::regex_search(stripped, include, common))
+        edits.push_back({std::size_t(include.position(1)), std::size_t(include.length(1)), piWhereUsed(stripped)});
     // The pixel over the frame, as MadMapper gives it, after the last function's body on its line.
     edits.push_back({stripped.rfind('}') + 1, 0,
                      " void mainImage(out vec4 materialColour, in vec2 materialPixel) { materialColour = "

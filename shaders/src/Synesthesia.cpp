@@ -108,7 +108,7 @@ std::optional<std::string> adaptSynesthesia(const std::string& text, const std::
         edits.push_back({at, word.size(), clock ? "iTime" : word == "syn_BPM" ? "120.0" : "0.0"});
         return true;
     });
-    if (!wordOffsets(stripped, "PI").empty() && !defines(stripped, "PI")) declared += "const float PI = 3.14159265358979; ";
+    declared += piWhereUsed(stripped);
     for (const auto& [name, definition] : kFunctions)
         if (!wordOffsets(stripped, name).empty() && !defines(stripped, name)) declared += std::string(definition) + " ";
     for (const Parameter& p : controls)

@@ -5,6 +5,7 @@
 
 #include <shaders/SdfSource.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -79,6 +80,23 @@ inline bool definesFunction(const std::string& stripped, const std::string& name
         return !found;
     });
     return found;
+}
+
+// `const float PI = ...; ` where `stripped` (comments blanked) uses PI and defines none of its own
+// (`#define PI ...`, `float PI = ...`), else empty: what a host's own includes give (Fragmentarium's
+// MathUtils.frag, MadMapper's MadCommon.glsl, Synesthesia's built-ins).
+inline std::string piWhereUsed(const std::string& stripped) {
+    const std::vector<std::size_t> uses = wordOffsets(stripped, "PI");
+    auto defines = [&](std::size_t at) {
+        std::size_t before = at;
+        while (before > 0 && (stripped[before - 1] == ' ' || stripped[before - 1] == '\t')) --before;
+        std::size_t after = at + 2;
+        while (after < stripped.size() && (stripped[after] == ' ' || stripped[after] == '\t')) ++after;
+        return (before >= 6 && stripped.compare(before - 6, 6, "define") == 0) ||
+               (after < stripped.size() && stripped[after] == '=' &&
+                (after + 1 >= stripped.size() || stripped[after + 1] != '='));
+    };
+    return uses.empty() || std::any_of(uses.begin(), uses.end(), defines) ? std::string() : "const float PI = 3.14159265358979; ";
 }
 
 } // namespace sdfwb::shaders::detail
