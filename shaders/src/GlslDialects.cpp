@@ -5,6 +5,7 @@
 #include <core/Regex.h>
 
 #include "TextEdits.h"
+#include "Words.h"
 
 #include <regex>
 #include <vector>
@@ -71,6 +72,7 @@ bool retroArchEdits(const std::string& text, const std::string& stripped, std::v
     static const std::regex vertex(R"(^[ \t]*#[ \t]*if[ \t]+defined[ \t]*\([ \t]*VERTEX[ \t]*\))", kLinearRegex);
     static const std::regex fragment(R"(^[ \t]*#[ \t]*elif[ \t]+defined[ \t]*\([ \t]*FRAGMENT[ \t]*\))", kLinearRegex);
     static const std::regex opens(R"(^[ \t]*#[ \t]*if)", kLinearRegex), closes(R"(^[ \t]*#[ \t]*endif\b)", kLinearRegex);
+    if (stripped.find("VERTEX") == std::string::npos) return false; // (a line-by-line search is slow on MBs)
     std::size_t start = std::string::npos, middle = std::string::npos;
     int depth = 0;
     for (std::size_t line = 0; line < stripped.size();) {
@@ -105,6 +107,7 @@ bool vulkanEdits(const std::string& text, const std::string& stripped, std::vect
     static const std::regex set(R"(\bset\s*=\s*\d+\s*,?\s*)", kLinearRegex);
     static const std::regex pushed(R"(^\s*uniform\b)", kLinearRegex);
     bool vulkan = false;
+    if (stripped.find("layout") == std::string::npos) return false;
     for (auto it = std::sregex_iterator(stripped.begin(), stripped.end(), layout); it != std::sregex_iterator(); ++it) {
         const std::size_t at = std::size_t(it->position(0)), length = std::size_t(it->length(0));
         const std::string inside = (*it)[1].str();
@@ -124,13 +127,31 @@ bool vulkanEdits(const std::string& text, const std::string& stripped, std::vect
     return vulkan;
 }
 
-// A uniform block without an instance name: its members plain uniforms.
+// A uniform block without an instance name: its members plain uniforms. Each `uniform` word is
+// tried where it stands (a regex search over MBs of code takes seconds).
 void namelessBlockEdits(const std::string& text, const std::string& stripped, std::vector<Edit>& edits) {
-    static const std::regex block(R"((?:\blayout\s*\([^()]*\)\s*)?\buniform\s+\w+\s*\{([^{}]*)\}\s*;)", kLinearRegex);
-    for (auto it = std::sregex_iterator(stripped.begin(), stripped.end(), block); it != std::sregex_iterator(); ++it) {
-        const std::size_t at = std::size_t(it->position(0)), open = stripped.find('{', at);
-        const std::size_t close = at + std::size_t(it->length(0)) - 1; // the ';'
-        const std::size_t brace = stripped.rfind('}', close);
+    static const std::regex block(R"(\buniform\s+\w+\s*\{([^{}]*)\}\s*;)", kLinearRegex);
+    static const std::regex layout(R"(\blayout\s*\([^()]*\)\s*$)", kLinearRegex);
+    for (std::size_t word = stripped.find("uniform"), next = 0; word != std::string::npos;
+         word = stripped.find("uniform", next)) {
+        next = word + 7;
+        const std::size_t closing = stripped.find('}', word);
+        if (closing == std::string::npos) break;
+        const std::size_t semicolon = stripped.find_first_not_of(" \t\r\n", closing + 1);
+        const std::string candidate =
+            stripped.substr(word, (semicolon == std::string::npos ? stripped.size() : semicolon + 1) - word);
+        std::smatch match;
+        if (!std::regex_search(candidate, match, block, std::regex_constants::match_continuous)) continue;
+        if (word > 0 && isWordCharacter(stripped[word - 1])) continue;
+        // `layout(std140) uniform Params { ... };`: the layout goes with it.
+        std::size_t at = word;
+        const std::size_t lookBack = std::min<std::size_t>(word, 200);
+        const std::string before = stripped.substr(word - lookBack, lookBack);
+        std::smatch qualifier;
+        if (std::regex_search(before, qualifier, layout)) at = word - lookBack + std::size_t(qualifier.position(0));
+        const std::size_t open = stripped.find('{', word);
+        const std::size_t close = word + std::size_t(match.length(0)) - 1; // the ';'
+        const std::size_t brace = closing;
         edits.push_back(blanked(text, at, open + 1 - at));
         for (std::size_t member = open + 1; member < brace;) {
             const std::size_t k = stripped.find_first_not_of(" \t\r\n", member);
@@ -139,6 +160,7 @@ void namelessBlockEdits(const std::string& text, const std::string& stripped, st
             member = std::min(stripped.find(';', k), brace) + 1;
         }
         edits.push_back(blanked(text, brace, close + 1 - brace));
+        next = close + 1;
     }
 }
 

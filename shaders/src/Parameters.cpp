@@ -327,7 +327,13 @@ struct Scanner {
             initializerOffset = skipSpace(j + 1);
             std::size_t k = j + 1;
             int parens = 0;
-            while (k < text.size() && !(text[k] == ';' && parens == 0) && text[k] != '{' && text[k] != '}') {
+            // A directive line ends it: what follows is no initializer we read (a `#iUniform` line,
+            // then another uniform's `;`, would take that uniform with it).
+            auto directiveLine = [&](std::size_t at) {
+                return text[at] == '\n' && text.find_first_not_of(" \t\r", at + 1) < text.size() &&
+                       text[text.find_first_not_of(" \t\r", at + 1)] == '#';
+            };
+            while (k < text.size() && !(text[k] == ';' && parens == 0) && text[k] != '{' && text[k] != '}' && !directiveLine(k)) {
                 if (text[k] == '(') ++parens;
                 if (text[k] == ')') --parens;
                 ++k;

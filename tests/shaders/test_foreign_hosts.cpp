@@ -888,6 +888,23 @@ TEST(ForeignHosts, ASokolShdcFilesFragmentStageIsTheShader) {
     EXPECT_EQ(sdf.source.text.find("@"), std::string::npos);
 }
 
+// The same block with a layout, and a second block right after it (`};uniform`), in a raw OpenGL
+// program's fragment shader: both blocks' members are plain uniforms.
+TEST(ForeignHosts, UniformBlocksWithoutNamesAndWithLayoutsGivePlainUniforms) {
+    const std::string text = "#version 330 core\n"
+                             "layout(std140) uniform Frame { vec2 iResolution; };uniform Clock { float iTime; };\n"
+                             "out vec4 color;\n"
+                             "float scene(vec3 p) { return length(p) - 0.5 - 0.1 * sin(iTime); }\n"
+                             "void main() {\n"
+                             "    vec2 uv = (gl_FragCoord.xy - 0.5 * iResolution) / iResolution.y;\n" +
+                             marchTo("scene", "color") + "}\n";
+    PreparedSdf sdf = prepare(text, "raymarch.frag");
+    expectOpens(sdf, text, "", "scene");
+    EXPECT_TRUE(sdf.usesTime()) << sdf.source.text;
+    EXPECT_EQ(sdf.source.text.find("std140"), std::string::npos) << sdf.source.text;
+    EXPECT_EQ(sdf.source.text.find("Clock"), std::string::npos) << sdf.source.text;
+}
+
 // Vulkan GLSL (a vulkano raymarcher): a push-constant block is a struct and a global of it, and
 // `set = N` leaves the layouts; an error is still reported at the user's line.
 TEST(ForeignHosts, VulkanPushConstantsAndDescriptorSetsAreReadAsOpenGls) {

@@ -247,6 +247,20 @@ TEST(ParameterValues, SavedAsDefaultsTheFileReadsBackTheSameValues) {
     const std::string rewritten = withDefaults(split, splitParams, {{"tint", ParameterType::Vec3, {0.2f, 0.5f, 0.25f, 0.0f}}});
     EXPECT_EQ(std::count(rewritten.begin(), rewritten.end(), '\n'), std::count(split.begin(), split.end(), '\n')) << rewritten;
     EXPECT_EQ(declared(rewritten)[1].line, 4);
+
+    // A uniform whose `;` is missing before a directive line (found by the fuzzer): its
+    // initializer stops at the directive, so the next uniform is not taken into it, whatever the
+    // directive's line holds before and after saving (an unclosed `(` before, a closed one after).
+    const std::string unended = "uniform float radius = c1 0.05 // a slider\n"
+                                "#iUniform color3 tint = color3(0.8, 0.5, 0x \"file://noise.png\"\n"
+                                "uniform bool Julia; checkbox[false]\n";
+    const auto unendedParams = declared(unended);
+    ASSERT_EQ(unendedParams.size(), 2u);
+    std::vector<ParameterSetting> defaults;
+    for (const Parameter& p : unendedParams) defaults.push_back({p.name, p.type, p.defaultValue});
+    const auto saved2 = declared(withDefaults(unended, unendedParams, defaults));
+    ASSERT_EQ(saved2.size(), 2u);
+    for (std::size_t i = 0; i < saved2.size(); ++i) EXPECT_EQ(saved2[i].name, unendedParams[i].name);
 }
 
 TEST(ParameterFamilies, SweepsMakeAGridWithExactEndpoints) {
