@@ -670,7 +670,10 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
     }
     for (std::size_t second = 0; second < marched.size(); ++second)
         for (std::size_t first = 0; first < marched.size() && marched[second].after.empty(); ++first)
-            if (first != second && runsOnlyAfter(sites[second], sites[first], tree)) marched[second].after = marched[first].name;
+            if (std::string how = first != second ? runsOnlyAfter(sites[second], sites[first], tree) : ""; !how.empty())
+                marched[second].after = marched[first].name,
+                marched[second].afterHow = how == "where" ? "where " + marched[first].name + "'s march lets it"
+                                                          : "given what " + marched[first].name + "'s march found";
     return marched;
 }
 

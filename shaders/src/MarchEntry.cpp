@@ -261,8 +261,8 @@ std::string keepPrimaryRays(std::vector<std::pair<MarchedFunction, SdfSignature>
         for (const auto& [marched, signature] : valid) names.insert(marched.name);
         for (const auto& [marched, signature] : valid)
             if (names.count(marched.after))
-                deeper += (deeper.empty() ? "" : ", ") + marched.name + " (line " + std::to_string(marched.line) +
-                          ", run only where " + marched.after + "'s march lets it)";
+                deeper += (deeper.empty() ? "" : ", ") + marched.name + " (line " + std::to_string(marched.line) + ", run only " +
+                          marched.afterHow + ")";
         std::erase_if(valid, [&names](const auto& candidate) { return names.count(candidate.first.after) > 0; });
     }
     return deeper;

@@ -83,8 +83,8 @@ std::set<long long> computedBy(TIntermNode* anchor, TIntermAggregate* body, cons
 
 } // namespace
 
-bool runsOnlyAfter(const MarchSite& second, const MarchSite& first, const Reached& tree) {
-    if (!second.loop || !first.loop || !second.holder || !first.holder) return false;
+std::string runsOnlyAfter(const MarchSite& second, const MarchSite& first, const Reached& tree) {
+    if (!second.loop || !first.loop || !second.holder || !first.holder) return "";
     const std::set<std::string> reachFirst = functionsReaching(first.holder->getName(), tree.functions),
                                 reachSecond = functionsReaching(second.holder->getName(), tree.functions);
     TIntermAggregate* context = nullptr;
@@ -96,7 +96,7 @@ bool runsOnlyAfter(const MarchSite& second, const MarchSite& first, const Reache
     TIntermAggregate* body = context ? bodyOf(context) : nullptr;
     TIntermNode* from = body ? anchorIn(context, first, tree) : nullptr;
     TIntermNode* to = body ? anchorIn(context, second, tree) : nullptr;
-    if (!from || !to || from == to || !before(from->getLoc(), to->getLoc())) return false;
+    if (!from || !to || from == to || !before(from->getLoc(), to->getLoc())) return "";
     // What the first march computed, then what follows from it, by value or by a branch it decides.
     std::set<long long> derived = computedBy(from, body, tree);
     const Moves moves = movesOf(body);
@@ -113,9 +113,24 @@ bool runsOnlyAfter(const MarchSite& second, const MarchSite& first, const Reache
                 for (TIntermBinary* assignment : movesOf(branch).assignments)
                     grew |= derived.insert(assignedSymbol(assignment->getLeft())).second;
     }
-    return std::any_of(moves.selections.begin(), moves.selections.end(), [&](TIntermSelection* branch) {
-        return decided(branch) && (holds(branch->getTrueBlock(), to) || holds(branch->getFalseBlock(), to));
-    });
+    if (std::any_of(moves.selections.begin(), moves.selections.end(), [&](TIntermSelection* branch) {
+            return decided(branch) && (holds(branch->getTrueBlock(), to) || holds(branch->getFalseBlock(), to));
+        }))
+        return "where";
+    // Handed to the call: by values assigned between the two (a value the first march's result
+    // changes only after the call, `ro += rd * dstCave` below it, is not handed).
+    std::set<long long> given = computedBy(from, body, tree);
+    for (bool grew = true; grew;) {
+        grew = false;
+        for (TIntermBinary* assignment : moves.assignments)
+            if (!before(assignment->getLoc(), from->getLoc()) && before(assignment->getLoc(), to->getLoc()) &&
+                readsAny(assignment->getRight(), given))
+                grew |= given.insert(assignedSymbol(assignment->getLeft())).second;
+    }
+    if (TIntermAggregate* call = to->getAsAggregate())
+        for (TIntermNode* argument : call->getSequence())
+            if (readsAny(argument, given)) return "given";
+    return "";
 }
 
 } // namespace sdfwb::shaders::detail

@@ -14,10 +14,12 @@ struct MarchSite {
     TIntermAggregate* holder = nullptr;
 };
 
-// Whether `second` runs only where a test on what `first` computed lets it: in the deepest function
-// that reaches both, the statement that reaches `second` lies in a branch (an if, an else, a ?:)
-// whose condition reads a value that the statement reaching `first` computed, directly, through
-// assignments after it, or through assignments made in branches that such a value decides.
-bool runsOnlyAfter(const MarchSite& second, const MarchSite& first, const Reached& tree);
+// Whether `second` runs only after `first` has answered, and how, for the reason: in the deepest
+// function that reaches both, the statement that reaches `second` lies in a branch (an if, an else,
+// a ?:) whose condition reads a value that the statement reaching `first` computed, directly,
+// through assignments after it, or through assignments made in branches that such a value decides
+// ("where"); or the call that reaches `second` is handed such a value (a smoke's march given the
+// scene's distance: "given"). Empty when neither.
+std::string runsOnlyAfter(const MarchSite& second, const MarchSite& first, const Reached& tree);
 
 } // namespace sdfwb::shaders::detail

@@ -126,8 +126,30 @@ std::string runOnce(const std::string& statements) {
     return "if (!sdfwb_preludeRun) { sdfwb_preludeRun = true;\n{\n" + statements + "\n}\n}\n";
 }
 
+// The `#endif`s a prelude needs: it is mainImage's text up to the march, which may stand in the
+// branch of an `#ifdef` (Otavio Good's iceberg: `#else localTime = iGlobalTime; RayTrace(...)`).
+std::string closedConditionals(const std::string& prelude) {
+    static const std::regex opens(R"(^[ \t]*#[ \t]*if(?:n?def)?\b)", kLinearRegex),
+        closes(R"(^[ \t]*#[ \t]*endif\b)", kLinearRegex);
+    int open = 0;
+    for (std::size_t start = 0; start < prelude.size();) {
+        const std::size_t stop = std::min(prelude.find('\n', start), prelude.size());
+        const std::size_t k = prelude.find_first_not_of(" \t", start);
+        if (k < stop && prelude[k] == '#') {
+            const std::string line = prelude.substr(start, stop - start);
+            if (std::regex_search(line, opens)) ++open;
+            if (std::regex_search(line, closes)) open = std::max(0, open - 1);
+        }
+        start = stop + 1;
+    }
+    std::string out = prelude;
+    for (int i = 0; i < open; ++i) out += "\n#endif";
+    return out;
+}
+
 std::string entryWrapper(const PreparedSdf& sdf) {
-    const SdfSignature& signature = sdf.signature;
+    SdfSignature signature = sdf.signature;
+    signature.prelude = closedConditionals(signature.prelude);
     const std::string value = !signature.member.empty() ? "." + signature.member : signature.returnType == "float" ? "" : ".x";
     std::string text;
     if (!signature.inlineBody.empty() && signature.traced.empty()) {

@@ -133,6 +133,36 @@ TEST_F(FieldParameters, GlobalsMainImageSetsBeforeTheMarchReachTheField) {
     EXPECT_NEAR(fieldValueAt(sdf, {0.6f, 0.0f, 0.0f}, 1.0f), moved, 1e-5f);
 }
 
+// mainImage's statements before the march inside a preprocessor option's `#else` (Otavio Good's
+// iceberg: `#ifdef NON_REALTIME_HQ_RENDER ... #else localTime = iGlobalTime; RayTrace(...)
+// #endif`): the prelude ends inside the `#else`, and the wrapper closes it. The branch taken is the
+// `#else`'s, as in the shader: the radius is 0.5, not the option's 0.25.
+TEST_F(FieldParameters, APreludeEndingInsideAnOptionsElseRunsThatBranch) {
+    shaders::PreparedSdf sdf =
+        prepareText("option.glsl", "float radius;\n"
+                                   "float map(vec3 p) { return length(p) - radius; }\n"
+                                   "vec3 render(vec2 uv) {\n"
+                                   "    float t = 0.0;\n"
+                                   "    for (int i = 0; i < 100; i++) { float d = map(vec3(uv, -3.0) + vec3(0, 0, 1) * t); "
+                                   "if (d < 0.001) break; t += d; }\n"
+                                   "    return vec3(t);\n"
+                                   "}\n"
+                                   "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                                   "#ifdef HIGH_QUALITY\n"
+                                   "    radius = 0.25;\n"
+                                   "    vec3 c = render(fragCoord / iResolution.xy);\n"
+                                   "#else\n"
+                                   "    radius = 0.5;\n"
+                                   "    vec3 c = render(fragCoord / iResolution.xy);\n"
+                                   "#endif\n"
+                                   "    fragColor = vec4(c, 1.0);\n"
+                                   "}\n");
+    ASSERT_TRUE(sdf.ok()) << firstError(sdf);
+    EXPECT_EQ(sdf.signature.entry, "map");
+    EXPECT_NE(sdf.entryReason.find("after mainImage sets radius"), std::string::npos) << sdf.entryReason;
+    EXPECT_NEAR(fieldValueAt(sdf, {0.0f, 0.0f, 0.0f}, 0.0f), -0.5f, 1e-5f);
+}
+
 // A field with a parameter after the point, and a centre mainImage moves (`ball.x += 0.3;`) before
 // it calls the march: mainImage's statements run once per invocation on this path too, so the
 // centre stays put between the gradient's taps. The ball, centred at (0.6, 0, 0) with radius

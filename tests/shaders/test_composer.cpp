@@ -644,6 +644,31 @@ TEST(EntryPoint, AMarchThatRunsOnlyAfterTheFirstOnesHitIsASecondaryRay) {
     PreparedSdf tied = prepare(unrelated);
     EXPECT_FALSE(tied.ok());
     EXPECT_EQ(tied.entryCandidates, (std::vector<std::string>{"glass", "solid"}));
+    // dr2's smoke: the second march's function is handed what the first found (`SmokeCol(ro, rd,
+    // dstObj)`, through a value computed from it), and runs in no branch. A value changed by the
+    // first's result only after the call (`ro += rd * hit.x` below it) hands it nothing: a tie.
+    const std::string smoke =
+        fields + "vec4 smokeCol(vec3 ro, vec3 rd, float far) {\n"
+                 "    float t = 0.0;\n"
+                 "    for (int i = 0; i < 64; i++) { float h = solid(ro + rd * t).x; if (h < 0.001) break; t += h; }\n"
+                 "    return vec4(t < far ? 1.0 : 0.0);\n}\n"
+                 "void mainImage(out vec4 c, in vec2 f) {\n"
+                 "    vec3 ro = vec3(0.0, 0.0, 3.0), rd = normalize(vec3((f - 0.5 * iResolution.xy) / iResolution.y, -2.0));\n"
+                 "    vec2 hit = castGlass(ro, rd);\n"
+                 "    float dstObj = hit.x < 0.0 ? 50.0 : hit.x;\n"
+                 "    c = smokeCol(ro, rd, dstObj);\n"
+                 "}\n";
+    PreparedSdf given = prepare(smoke);
+    ASSERT_TRUE(given.ok()) << given.diagnostics.back().message;
+    EXPECT_EQ(given.signature.entry, "glass");
+    EXPECT_NE(given.entryReason.find("solid (line 15, run only given what glass's march found)"), std::string::npos)
+        << given.entryReason;
+    std::string later = smoke;
+    later.replace(later.find("    c = smokeCol(ro, rd, dstObj);\n"), 34,
+                  "    c = smokeCol(ro, rd, 50.0);\n    ro += rd * hit.x;\n");
+    PreparedSdf stillTied = prepare(later);
+    EXPECT_FALSE(stillTied.ok());
+    EXPECT_EQ(stillTied.entryCandidates, (std::vector<std::string>{"glass", "solid"}));
 }
 
 // A terrain that reuses its distance's variable for the clouds after the step (David Hoskins'

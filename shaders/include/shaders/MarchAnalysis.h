@@ -50,8 +50,9 @@ struct MarchedFunction {
     std::vector<std::string> globals;
     std::string setter; // whose statements those are: mainImage, or the function that marches (its parameters zero)
     // Another marched function whose march's result decides whether this one's runs (a refraction's
-    // march inside `if (t.x > 0.)` of the primary hit): its name, or empty.
-    std::string after;
+    // march inside `if (t.x > 0.)` of the primary hit), or is handed to the function that runs it
+    // (dr2's `SmokeCol(ro, rd, dstObj)`): its name, or empty; `afterHow` says which, for the reason.
+    std::string after, afterHow;
 };
 
 // The functions `composed` (a fragment stage holding the user's code and mainImage; no main is
