@@ -366,6 +366,34 @@ void traceGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate*
         m.colour = hostParameters[0]->getName().c_str(), m.coordinate = hostParameters[1]->getName().c_str();
 }
 
+// traceGlobals through mainImage, then through the first function between it and the march that
+// sets more of what the field reads (dr2's ShowScene: `twRad = 3.; bmHt = 17.;` before its march,
+// after mainImage set dstFar): its statements run after mainImage's, in a block of their own.
+void traceAllGlobals(MarchedFunction& m, TIntermAggregate* field, TIntermAggregate* marcher, TIntermLoop* loop,
+                     TIntermAggregate* mainImage, const std::vector<TIntermAggregate*>& reached, const ComposedShader& composed,
+                     const Functions& functions) {
+    traceGlobals(m, field, marcher, loop, mainImage, composed, functions);
+    for (TIntermAggregate* host : reached) {
+        if (host == mainImage) continue;
+        MarchedFunction deeper = m;
+        deeper.prelude.clear(), deeper.globals.clear();
+        traceGlobals(deeper, field, marcher, loop, host, composed, functions);
+        if (deeper.prelude.empty()) continue;
+        if (m.prelude.empty()) {
+            m = std::move(deeper);
+            return;
+        }
+        std::vector<std::string> more;
+        for (const std::string& name : deeper.globals)
+            if (std::find(m.globals.begin(), m.globals.end(), name) == m.globals.end()) more.push_back(name);
+        if (more.empty()) return;
+        m.prelude += "\n{\n" + deeper.prelude + "\n}\n";
+        m.globals.insert(m.globals.end(), more.begin(), more.end());
+        m.setter += " and " + deeper.setter;
+        return;
+    }
+}
+
 // The field's out parameters after the point (`out Material mat`): the variables the march passes
 // there, as locals the wrapper declares (a TracedValue without a value). False with why when one
 // is not a variable of a type the wrapper can declare.
@@ -654,12 +682,8 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                     entry->depth = tree.depth[index];
                     if (component > 0) entry->component = std::string(1, "xyzw"[component]);
                     if (mainImage) traceArguments(*entry, call, callee->second, function, loop, tree, composed);
-                    if (mainImage && entry->extraParameters <= 0) {
-                        traceGlobals(*entry, callee->second, function, loop, mainImage, composed, tree.functions);
-                        for (TIntermAggregate* host : reached)
-                            if (entry->prelude.empty() && host != mainImage)
-                                traceGlobals(*entry, callee->second, function, loop, host, composed, tree.functions);
-                    }
+                    if (mainImage && entry->extraParameters <= 0)
+                        traceAllGlobals(*entry, callee->second, function, loop, mainImage, reached, composed, tree.functions);
                 }
                 ++entry->loops;
                 if (const detail::HitThreshold hit = detail::hitThreshold(loop, call, result.holders);

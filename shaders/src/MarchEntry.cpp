@@ -246,6 +246,57 @@ std::string nameInUserText(const PreparedSdf& prepared, const std::string& name)
 // others found (one that runs only where another's result lets it, a refraction inside
 // `if (t.x > 0.)` or a second pass in an `else`, follows a primary ray). Marches as near as each
 // other that run alike stay a tie. Returns those left out, for the reason.
+std::string where(const MarchedFunction& m) {
+    std::string globals;
+    for (const std::string& name : m.globals) globals += (globals.empty() ? "" : ", ") + name;
+    return m.name + " (called by the march at line " + std::to_string(m.line) + ")" +
+           (m.arguments.empty() ? "" : ", with" + m.arguments.substr(1) + " as " + m.caller + " computes it") +
+           (globals.empty()
+                ? ""
+                : ", after " + m.setter + (m.setter.find(" and ") == std::string::npos ? " sets " : " set ") + globals);
+}
+
+// Primary marches as often (keepPrimaryRays left them) of functions of a point alone: nothing after
+// the point but the time, no out parameters, and the same statements of mainImage run first. The
+// shader draws the nearer hit of each (dr2's cave and boats): the scene is their union. Leaves the
+// first candidate holding the others (SdfSignature::unionWith) and returns the reason; leaves a tie
+// it cannot unite as it was, and returns nothing.
+std::string uniteTiedMarches(std::vector<std::pair<MarchedFunction, SdfSignature>>& valid) {
+    if (valid.size() < 2) return "";
+    const SdfSignature& first = valid.front().second;
+    std::string prelude;
+    for (const auto& [marched, signature] : valid) {
+        if (!signature.arguments.empty() || !signature.traced.empty() || !signature.inlineBody.empty() ||
+            !signature.outParameters.empty() || signature.pointOut || signature.animated != first.animated ||
+            !signature.unionWith.empty())
+            return "";
+        if (marched.globals.empty()) continue;
+        // The statements run first: one the other's beginning (mainImage's, then those of the
+        // function that calls both marches, up to the later one), the longer run for both.
+        auto open = [](std::string text) {
+            if (text.size() >= 3 && text.compare(text.size() - 3, 3, "\n}\n") == 0) text.resize(text.size() - 3);
+            return text;
+        };
+        const std::string mine = open(signature.prelude), theirs = open(prelude);
+        if (mine.compare(0, theirs.size(), theirs) == 0)
+            prelude = signature.prelude;
+        else if (theirs.compare(0, mine.size(), mine) != 0)
+            return "";
+    }
+    SdfSignature& united = valid.front().second;
+    united.prelude = prelude;
+    std::string reason = "the union of " + where(valid.front().first);
+    for (std::size_t i = 1; i < valid.size(); ++i) {
+        const SdfSignature& other = valid[i].second;
+        united.unionWith.emplace_back(other.entry, !other.member.empty()         ? "." + other.member
+                                                   : other.returnType == "float" ? std::string()
+                                                                                 : std::string(".x"));
+        reason += (i + 1 == valid.size() ? "; and " : "; ") + where(valid[i].first);
+    }
+    valid.resize(1);
+    return reason + ": the primary ray marches each as often and the shader draws the nearer hit (--entry NAME opens one)";
+}
+
 std::string keepPrimaryRays(std::vector<std::pair<MarchedFunction, SdfSignature>>& valid) {
     std::string deeper;
     if (valid.size() > 1) {
@@ -334,13 +385,7 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
             std::erase_if(valid, [&](const auto& candidate) { return !conventional(candidate); });
     }
     const std::string deeper = keepPrimaryRays(valid);
-    const auto where = [](const MarchedFunction& m) {
-        std::string globals;
-        for (const std::string& name : m.globals) globals += (globals.empty() ? "" : ", ") + name;
-        return m.name + " (called by the march at line " + std::to_string(m.line) + ")" +
-               (m.arguments.empty() ? "" : ", with" + m.arguments.substr(1) + " as " + m.caller + " computes it") +
-               (globals.empty() ? "" : ", after " + m.setter + " sets " + globals);
-    };
+    const std::string united = uniteTiedMarches(valid);
     if (valid.size() > 1) {
         std::string list;
         for (const auto& [marched, signature] : valid) {
@@ -365,7 +410,7 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
     prepared.signature = std::move(valid.front().second);
     prepared.entrySource = EntrySource::March;
     const MarchedFunction& chosen = valid.front().first;
-    prepared.entryReason = where(chosen);
+    prepared.entryReason = united.empty() ? where(chosen) : united;
     if (!deeper.empty())
         prepared.entryReason +=
             "; " + deeper + " is marched as often, deeper in mainImage's calls or after the primary ray (a secondary ray)";

@@ -187,9 +187,12 @@ std::string entryWrapper(const PreparedSdf& sdf) {
             arguments += ", sdfwb_out" + std::to_string(i);
         }
         const bool prelude = !signature.prelude.empty();
+        const std::string time = signature.animated ? ", sdfwb_time" : "";
+        std::string field = signature.entry + "(p" + time + arguments + ")" + value;
+        for (const auto& [name, read] : signature.unionWith)
+            field = "min(" + field + ", " + name + "(p" + time + ")" + read + ")";
         text = std::string(prelude ? "bool sdfwb_preludeRun = false;\n" : "") + "float sdfwb_sdf(vec3 p) { " +
-               (prelude ? runOnce(signature.prelude) : "") + locals + "return " + signature.entry + "(p" +
-               (signature.animated ? ", sdfwb_time" : "") + arguments + ")" + value + "; }\n";
+               (prelude ? runOnce(signature.prelude) : "") + locals + "return " + field + "; }\n";
     }
     // The user's macros end with the user's code: what follows is the workbench's.
     for (const std::string& macro : sdf.macros) text += "#undef " + macro + "\n";

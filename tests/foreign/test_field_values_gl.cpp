@@ -163,6 +163,45 @@ TEST_F(FieldParameters, APreludeEndingInsideAnOptionsElseRunsThatBranch) {
     EXPECT_NEAR(fieldValueAt(sdf, {0.0f, 0.0f, 0.0f}, 0.0f), -0.5f, 1e-5f);
 }
 
+// dr2's scenes: mainImage sets dstFar, then ShowScene sets the tower's radius before it marches the
+// solid and then the glass, and draws the nearer. Both globals are set first (mainImage's
+// statements, then ShowScene's in a block), and the field is the union of the two marches'.
+TEST_F(FieldParameters, TwoPrimaryMarchesAreUnitedAfterMainImageAndTheSceneSetTheirGlobals) {
+    shaders::PreparedSdf sdf = prepareText(
+        "scene.glsl",
+        "float dstFar, twRad;\n"
+        "float ObjDf(vec3 p) { return min(dstFar, length(p) - twRad); }\n"
+        "float TransObjDf(vec3 p) { return min(dstFar, length(p - vec3(1.0, 0.0, 0.0)) - 0.25); }\n"
+        "float ObjRay(vec3 ro, vec3 rd) {\n"
+        "    float t = 0.0;\n"
+        "    for (int j = 0; j < 120; j++) { float d = ObjDf(ro + t * rd); t += d; if (d < 0.001 || t > dstFar) break; }\n"
+        "    return t;\n"
+        "}\n"
+        "float TransObjRay(vec3 ro, vec3 rd) {\n"
+        "    float t = 0.0;\n"
+        "    for (int j = 0; j < 120; j++) { float d = TransObjDf(ro + t * rd); t += d; if (d < 0.001 || t > dstFar) break; }\n"
+        "    return t;\n"
+        "}\n"
+        "vec3 ShowScene(vec3 ro, vec3 rd) {\n"
+        "    twRad = 0.5;\n"
+        "    float dstObj = ObjRay(ro, rd);\n"
+        "    float dstTrans = TransObjRay(ro, rd);\n"
+        "    return vec3(min(dstObj, dstTrans) / dstFar);\n"
+        "}\n"
+        "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+        "    vec2 uv = (2.0 * fragCoord - iResolution.xy) / iResolution.y;\n"
+        "    dstFar = 100.0;\n"
+        "    fragColor = vec4(ShowScene(vec3(0.0, 0.0, -5.0), normalize(vec3(uv, 2.0))), 1.0);\n"
+        "}\n");
+    ASSERT_TRUE(sdf.ok()) << firstError(sdf);
+    EXPECT_EQ(sdf.signature.entry, "ObjDf");
+    EXPECT_NE(sdf.entryReason.find("the union of ObjDf"), std::string::npos) << sdf.entryReason;
+    EXPECT_NE(sdf.entryReason.find("after mainImage and ShowScene set dstFar, twRad"), std::string::npos) << sdf.entryReason;
+    EXPECT_NEAR(fieldValueAt(sdf, {0.0f, 0.0f, 0.0f}, 0.0f), -0.5f, 1e-5f);
+    EXPECT_NEAR(fieldValueAt(sdf, {1.0f, 0.0f, 0.0f}, 0.0f), -0.25f, 1e-5f);
+    EXPECT_NEAR(fieldValueAt(sdf, {3.0f, 0.0f, 0.0f}, 0.0f), 1.75f, 1e-5f);
+}
+
 // A field with a parameter after the point, and a centre mainImage moves (`ball.x += 0.3;`) before
 // it calls the march: mainImage's statements run once per invocation on this path too, so the
 // centre stays put between the gradient's taps. The ball, centred at (0.6, 0, 0) with radius

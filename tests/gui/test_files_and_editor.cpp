@@ -104,9 +104,10 @@ TEST(ForeignCode, EntryFieldAndShowWhere) {
 }
 
 // Issue 47, point 1: a pasted whole shader's field is the function its own march steps by: the
-// entry box says which and why. When its marches step by two functions equally often, the file
-// does not open, the error names both, the entry box offers them, and picking one (typed, Return)
-// opens it.
+// entry box says which and why. Two functions of the point alone that the primary ray marches
+// equally often are its scene together: their union. When one of them cannot join a union (a
+// material written through an out parameter), the file does not open, the error names both, the
+// entry box offers them, and picking one (typed, Return) opens it.
 TEST(ForeignCode, TheEntryBoxSaysWhatTheMarchChoseAndOffersATie) {
     const std::string caster =
         "void mainImage(out vec4 c, in vec2 f) {\n"
@@ -116,14 +117,20 @@ TEST(ForeignCode, TheEntryBoxSaysWhatTheMarchChoseAndOffersATie) {
                                                                "    float t = 0.0;\n"
                                                                "    for (int i = 0; i < 64; i++) t += Map(ro + rd * t);\n"
                                                                "    c = vec4(vec3(t * 0.1), 1.0);\n}\n"));
-    const QString tied =
-        writeScratch("tied.glsl", QByteArray::fromStdString("float Solid(vec3 p) { return length(p) - 0.5; }\n"
-                                                            "float Water(vec3 p) { return p.y + 0.4; }\n" +
-                                                            caster +
-                                                            "    float t = 0.0, s = 0.0;\n"
-                                                            "    for (int i = 0; i < 64; i++) t += Solid(ro + rd * t);\n"
-                                                            "    for (int i = 0; i < 64; i++) s += Water(ro + rd * s);\n"
-                                                            "    c = vec4(vec3(min(t, s) * 0.1), 1.0);\n}\n"));
+    const std::string marches = "    float t = 0.0, s = 0.0, id = 0.0;\n"
+                                "    for (int i = 0; i < 64; i++) t += Solid(ro + rd * t);\n"
+                                "    for (int i = 0; i < 64; i++) s += Water(ro + rd * s);\n"
+                                "    c = vec4(vec3(min(t, s) * 0.1), 1.0);\n}\n";
+    const QString united =
+        writeScratch("united.glsl", QByteArray::fromStdString("float Solid(vec3 p) { return length(p) - 0.5; }\n"
+                                                              "float Water(vec3 p) { return p.y + 0.4; }\n" +
+                                                              caster + marches));
+    std::string tiedMarches = marches;
+    tiedMarches.replace(tiedMarches.find("Water(ro + rd * s)"), 18, "Water(ro + rd * s, id)");
+    const QString tied = writeScratch(
+        "tied.glsl", QByteArray::fromStdString("float Solid(vec3 p) { return length(p) - 0.5; }\n"
+                                               "float Water(vec3 p, out float id) { id = 1.0; return p.y + 0.4; }\n" +
+                                               caster + tiedMarches));
     app::MainWindow window;
     window.resize(1000, 640);
     window.show();
@@ -137,6 +144,11 @@ TEST(ForeignCode, TheEntryBoxSaysWhatTheMarchChoseAndOffersATie) {
     EXPECT_TRUE(entry->placeholderText().contains("Map (called by the march at line 5)"))
         << entry->placeholderText().toStdString();
     EXPECT_EQ(entry->completer(), nullptr);
+    applied = false;
+    ASSERT_TRUE(window.openFile(united));
+    ASSERT_TRUE(waitFor([&] { return applied; })) << "the union did not open";
+    EXPECT_TRUE(entry->placeholderText().contains("the union of Solid (called by the march at line 6)"))
+        << entry->placeholderText().toStdString();
 
     bool failed = false;
     QObject::connect(window.document(), &app::SdfDocument::diagnosticsChanged,

@@ -528,14 +528,34 @@ TEST(EntryPoint, TheConstantAWholeShadersMarchStopsAtIsRead) {
 
 // Two functions marched equally often (a scene and its reflection): an error naming both, and
 // both offered; a conventional name among them breaks the tie.
-TEST(EntryPoint, TwoEquallyMarchedFunctionsAreNamedAndOffered) {
+TEST(EntryPoint, TwoEquallyMarchedFunctionsAreUnitedOrNamedAndOffered) {
     const std::string marches = "    float t = 0.0, s = 0.0;\n"
                                 "    for (int i = 0; i < 64; i++) t += Solid(ro + rd * t);\n"
                                 "    for (int i = 0; i < 64; i++) s += Water(ro + rd * s);\n"
                                 "    return min(t, s);\n";
+    // Functions of the point alone: the scene the shader draws is their union.
+    std::string unitedMarches = marches;
+    unitedMarches.replace(unitedMarches.find("Water(ro + rd * s)"), 18, "Water(ro + rd * s).x");
+    PreparedSdf united = prepare(wholeShader("float Solid(vec3 p) { return length(p) - 0.5; }\n"
+                                             "vec2 Water(vec3 p) { return vec2(p.y + 0.4, 2.0); }\n",
+                                             unitedMarches));
+    ASSERT_TRUE(united.ok()) << united.diagnostics.back().message;
+    EXPECT_EQ(united.signature.entry, "Solid");
+    EXPECT_EQ(united.signature.unionWith, (std::vector<std::pair<std::string, std::string>>{{"Water", ".x"}}));
+    EXPECT_NE(united.entryReason.find("the union of Solid (called by the march at line"), std::string::npos)
+        << united.entryReason;
+    EXPECT_NE(united.entryReason.find("; and Water (called by the march at line"), std::string::npos) << united.entryReason;
+    auto tracer = composeTracer(united, TracerFeatures{});
+    ASSERT_TRUE(tracer.hasValue());
+    EXPECT_NE(tracer->text.find("return min(Solid(p), Water(p).x);"), std::string::npos);
+    EXPECT_FALSE(hasErrors(checkWithGlslang(*tracer)));
+    // One with an out parameter (a material written through it): no union, a tie to choose from.
+    std::string withOut = marches;
+    withOut.replace(withOut.find("s += Water(ro + rd * s)"), 23, "s += Water(ro + rd * s, id)");
+    withOut = "    float id = 0.0;\n" + withOut;
     PreparedSdf tied = prepare(wholeShader("float Solid(vec3 p) { return length(p) - 0.5; }\n"
-                                           "float Water(vec3 p) { return p.y + 0.4; }\n",
-                                           marches));
+                                           "float Water(vec3 p, out float id) { id = 1.0; return p.y + 0.4; }\n",
+                                           withOut));
     ASSERT_FALSE(tied.ok());
     EXPECT_EQ(tied.entryCandidates, (std::vector<std::string>{"Solid", "Water"}));
     const std::string& message = tied.diagnostics.back().message;
@@ -544,8 +564,8 @@ TEST(EntryPoint, TwoEquallyMarchedFunctionsAreNamedAndOffered) {
     EXPECT_NE(message.find("--entry NAME"), std::string::npos) << message;
     // Named, either opens.
     PreparedSdf named = prepareSdf(wholeShader("float Solid(vec3 p) { return length(p) - 0.5; }\n"
-                                               "float Water(vec3 p) { return p.y + 0.4; }\n",
-                                               marches),
+                                               "float Water(vec3 p, out float id) { id = 1.0; return p.y + 0.4; }\n",
+                                               withOut),
                                    "<test>", {}, IncludeOptions{}, "Water");
     EXPECT_TRUE(named.ok());
     EXPECT_EQ(named.entrySource, EntrySource::Requested);
@@ -595,8 +615,8 @@ TEST(EntryPoint, ATieIsBrokenByThePrimaryRaysMarch) {
 // Two marches as near mainImage as each other, where the second runs only where the first one's
 // result lets it: a glass's refraction inside `if (hit.x > 0.)` (a glslify-bundled icosahedron on
 // GitHub), or a second pass in the `else` of a test on a colour the first pass decided (Twenkid's
-// Hackafe logo). The first is the scene; a second march that runs whatever the first found stays a
-// tie (TwoEquallyMarchedFunctionsAreNamedAndOffered).
+// Hackafe logo). The first is the scene; a second march that runs whatever the first found is
+// primary too, and the scene their union (TwoEquallyMarchedFunctionsAreUnitedOrNamedAndOffered).
 TEST(EntryPoint, AMarchThatRunsOnlyAfterTheFirstOnesHitIsASecondaryRay) {
     const std::string fields =
         "vec2 glass(vec3 p) { return vec2(length(p) - 0.6, 1.0); }\n"
@@ -638,15 +658,16 @@ TEST(EntryPoint, AMarchThatRunsOnlyAfterTheFirstOnesHitIsASecondaryRay) {
     PreparedSdf twoPass = prepare(passes);
     ASSERT_TRUE(twoPass.ok()) << twoPass.diagnostics.back().message;
     EXPECT_EQ(twoPass.signature.entry, "glass");
-    // A test on what the first march did not compute leaves the tie.
+    // A test on what the first march did not compute leaves both primary rays: their union.
     std::string unrelated = passes;
     unrelated.replace(unrelated.find("if (m == 1)"), 11, "if (f.x > 9.)");
-    PreparedSdf tied = prepare(unrelated);
-    EXPECT_FALSE(tied.ok());
-    EXPECT_EQ(tied.entryCandidates, (std::vector<std::string>{"glass", "solid"}));
+    PreparedSdf both = prepare(unrelated);
+    ASSERT_TRUE(both.ok()) << both.diagnostics.back().message;
+    EXPECT_EQ(both.signature.entry, "glass");
+    EXPECT_EQ(both.signature.unionWith, (std::vector<std::pair<std::string, std::string>>{{"solid", ".x"}}));
     // dr2's smoke: the second march's function is handed what the first found (`SmokeCol(ro, rd,
     // dstObj)`, through a value computed from it), and runs in no branch. A value changed by the
-    // first's result only after the call (`ro += rd * hit.x` below it) hands it nothing: a tie.
+    // first's result only after the call (`ro += rd * hit.x` below it) hands it nothing: both primary.
     const std::string smoke =
         fields + "vec4 smokeCol(vec3 ro, vec3 rd, float far) {\n"
                  "    float t = 0.0;\n"
@@ -666,9 +687,9 @@ TEST(EntryPoint, AMarchThatRunsOnlyAfterTheFirstOnesHitIsASecondaryRay) {
     std::string later = smoke;
     later.replace(later.find("    c = smokeCol(ro, rd, dstObj);\n"), 34,
                   "    c = smokeCol(ro, rd, 50.0);\n    ro += rd * hit.x;\n");
-    PreparedSdf stillTied = prepare(later);
-    EXPECT_FALSE(stillTied.ok());
-    EXPECT_EQ(stillTied.entryCandidates, (std::vector<std::string>{"glass", "solid"}));
+    PreparedSdf primaries = prepare(later);
+    ASSERT_TRUE(primaries.ok()) << primaries.diagnostics.back().message;
+    EXPECT_EQ(primaries.signature.unionWith, (std::vector<std::pair<std::string, std::string>>{{"solid", ".x"}}));
 }
 
 // A terrain that reuses its distance's variable for the clouds after the step (David Hoskins'

@@ -11,6 +11,7 @@
 #include <array>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sdfwb::shaders {
@@ -51,6 +52,10 @@ struct SdfSignature {
     // A field a whole shader's march writes inline (shaders::InlineMarch): the wrapper runs
     // `prelude` and then this block, which returns the field at sdfwb_point. Empty otherwise.
     std::string inlineBody;
+    // A whole shader whose primary ray marches two functions of a point as often (dr2's cave and
+    // boats, each marched by the scene it draws, the nearer hit shown): the others, each a name
+    // and how its distance is read (".x", ".d" or empty); the wrapper returns the least of all.
+    std::vector<std::pair<std::string, std::string>> unionWith;
 };
 
 // Where the entry point came from: `sdf` (Default), --entry or the GUI (Requested), an `entry:`
