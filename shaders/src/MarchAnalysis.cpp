@@ -190,15 +190,24 @@ const Assignment* stepBy(const std::vector<Assignment>& assignments, TIntermAggr
             if (a.target < 0) continue;
             if (point.count(a.target))
                 for (long long read : a.reads) grew |= point.insert(read).second;
-            const bool fromResult = a.calls.count(call) ||
-                                    std::any_of(a.reads.begin(), a.reads.end(), [&](long long s) { return result.count(s) > 0; });
+            // What the call's value reaches, but not through the march's state rewritten from itself
+            // (a material that bends the ray, `ray.dir = refract(ray.dir, n, mat.refr)`, does not make
+            // the ray's step the material's; `dist = res.x` still carries the value).
+            const bool rewritten = point.count(a.target) && a.reads.count(a.target) && a.op == glslang::EOpAssign;
+            const bool fromResult =
+                a.calls.count(call) ||
+                (!rewritten && std::any_of(a.reads.begin(), a.reads.end(), [&](long long s) { return result.count(s) > 0; }));
             if (fromResult && a.target >= 0) grew |= result.insert(a.target).second;
         }
     }
     for (const Assignment& a : assignments) {
         if (a.target < 0 || !point.count(a.target)) continue;
+        // `t += d`, `t = t + d`: a step adds. A value rewritten from itself otherwise (a refracted
+        // direction, `ray.dir = refract(ray.dir, n, mat.refr)`) is not stepped.
+        const TIntermBinary* sum = a.node->getRight()->getAsBinaryNode();
         const bool grows = a.op == glslang::EOpAddAssign || a.op == glslang::EOpSubAssign ||
-                           (a.op == glslang::EOpAssign && a.reads.count(a.target));
+                           (a.op == glslang::EOpAssign && a.reads.count(a.target) && sum &&
+                            (sum->getOp() == glslang::EOpAdd || sum->getOp() == glslang::EOpSub));
         if (!grows) continue;
         if (a.calls.count(call) || std::any_of(a.reads.begin(), a.reads.end(), [&](long long s) { return result.count(s) > 0; }))
             return a.calls.count(call) || !overwrittenBeforeTheStep(assignments, call, a, conditional) ? &a : nullptr;
@@ -672,9 +681,18 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                 counted.insert(name);
                 auto entry =
                     std::find_if(marched.begin(), marched.end(), [&](const MarchedFunction& m) { return m.name == name; });
+                // An overload of the point alone (`map(p)` in a shadow's march beside `map(p, factor)`
+                // in the main one): its march is the one the field is read by.
+                int loopsBefore = 0;
+                if (entry != marched.end() && entry->extraParameters > 0 && parametersOf(callee->second).size() == 1) {
+                    loopsBefore = entry->loops;
+                    sites.erase(sites.begin() + (entry - marched.begin()));
+                    marched.erase(entry);
+                    entry = marched.end();
+                }
                 if (entry == marched.end()) {
                     const glslang::TSourceLoc& loc = call->getLoc();
-                    marched.push_back({name, composed.map.fileName(loc.string), loc.line, 0, loop->getLoc().line,
+                    marched.push_back({name, composed.map.fileName(loc.string), loc.line, loopsBefore, loop->getLoc().line,
                                        member.empty() ? std::string() : std::string(returned.getTypeName().c_str()), member,
                                        glslTypeName(returned)});
                     entry = marched.end() - 1;

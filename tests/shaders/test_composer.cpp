@@ -692,6 +692,53 @@ TEST(EntryPoint, AMarchThatRunsOnlyAfterTheFirstOnesHitIsASecondaryRay) {
     EXPECT_EQ(primaries.signature.unionWith, (std::vector<std::pair<std::string, std::string>>{{"solid", ".x"}}));
 }
 
+// Xafer's SDF platform (a RetroArch port): a Ray struct marched by `map(ray.pos, factor)` with a
+// factor computed at each step, a shadow marched by the overload `map(p)`, and a refraction loop
+// that reads `getMaterial(ray.pos)` and bends the ray with it (`ray.dir = refract(ray.dir, n,
+// mat.refr)`, then fixed steps along it). The field is map, by its point-only overload; the
+// material bends the ray but steps no march.
+TEST(EntryPoint, AMaterialThatBendsTheRayStepsNoMarchAndAPointOnlyOverloadIsTheField) {
+    const std::string text =
+        "struct Ray { vec3 pos, dir; float near, dist; };\n"
+        "struct Material { vec3 color; float refr; float opacity; };\n"
+        "float map(vec3 p, float factor) { return length(p) - 0.5 + 0.0 * factor; }\n"
+        "float map(vec3 p) { return map(p, 0.0); }\n"
+        "Material getMaterial(vec3 p) { Material m; m.color = p; m.refr = 0.8; m.opacity = 0.7; return m; }\n"
+        "Ray march(Ray ray) {\n"
+        "    for (int i = 0; i < 64; i++) {\n"
+        "        ray.near = map(ray.pos, sqrt(ray.dist) * 0.01);\n"
+        "        if (ray.near < 0.001) break;\n"
+        "        float n = ray.near * 0.9; ray.pos += ray.dir * n; ray.dist += n;\n"
+        "    }\n"
+        "    return ray;\n}\n"
+        "float shadow(vec3 p, vec3 dir) {\n"
+        "    float dist = 0.0;\n"
+        "    for (int i = 0; i < 32; i++) { float near = map(p); if (near < 0.001) break; float n = abs(near * 0.1); "
+        "p += n * dir; dist += n; }\n"
+        "    return dist;\n}\n"
+        "vec3 refraction(Ray ray) {\n"
+        "    float intensity = 1.0, total = 0.0;\n"
+        "    Material mat = getMaterial(ray.pos);\n"
+        "    for (int i = 0; i < 4; i++) {\n"
+        "        ray.dir = refract(ray.dir, normalize(ray.pos), mat.refr);\n"
+        "        ray.pos += ray.dir * 0.002;\n"
+        "        ray = march(ray);\n"
+        "        mat = getMaterial(ray.pos);\n"
+        "        total += intensity; intensity *= 1.0 - mat.opacity;\n"
+        "    }\n"
+        "    return vec3(total) + shadow(ray.pos, vec3(0, 1, 0));\n}\n"
+        "void mainImage(out vec4 c, in vec2 f) {\n"
+        "    Ray ray; ray.pos = vec3(0.0, 0.0, -3.0); ray.dir = normalize(vec3(f / iResolution.xy - 0.5, 1.0));\n"
+        "    ray.near = 1.0; ray.dist = 0.0;\n"
+        "    c = vec4(refraction(ray), 1.0);\n}\n";
+    PreparedSdf sdf = prepare(text);
+    ASSERT_TRUE(sdf.ok()) << sdf.diagnostics.back().message;
+    EXPECT_EQ(sdf.signature.entry, "map");
+    EXPECT_EQ(sdf.entrySource, EntrySource::March);
+    EXPECT_EQ(sdf.entryReason.find("map (called by the march at line"), 0u) << sdf.entryReason;
+    EXPECT_FALSE(sdf.signature.animated) << "the overload of the point alone";
+}
+
 // A terrain that reuses its distance's variable for the clouds after the step (David Hoskins'
 // "Alps": `h = Map(p); ... t += clamp(.5 * h, ...); h = MapClouds(p);`): the clouds' value is
 // overwritten before the step reads h again, so the march steps by Map alone. Where nothing
