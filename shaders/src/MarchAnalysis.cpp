@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <deque>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -175,6 +176,21 @@ bool overwrittenBeforeTheStep(const std::vector<Assignment>& assignments, TInter
                 return true;
     }
     return false;
+}
+
+// Whether two calls pass the same arguments: the same variables, the same constants (`scene(p)`
+// twice, once to step and once for the sign of the next steps, is one field).
+bool sameArguments(TIntermAggregate* a, TIntermAggregate* b) {
+    std::function<bool(TIntermNode*, TIntermNode*)> same = [&](TIntermNode* x, TIntermNode* y) {
+        if (TIntermSymbol* s = x->getAsSymbolNode(), *t = y->getAsSymbolNode(); s || t) return s && t && s->getId() == t->getId();
+        if (auto* c = x->getAsConstantUnion(), *d = y->getAsConstantUnion(); c || d)
+            return c && d && c->getConstArray() == d->getConstArray();
+        return false;
+    };
+    if (a->getSequence().size() != b->getSequence().size()) return false;
+    for (std::size_t i = 0; i < a->getSequence().size(); ++i)
+        if (!same(a->getSequence()[i], b->getSequence()[i])) return false;
+    return true;
 }
 
 // The assignment by which `loop` steps by `call` (a call inside it; see the header), or null.
@@ -651,7 +667,8 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                 assignments.push_back({assignedSymbol(node->getLeft()), node->getOp(), right.symbols,
                                        std::set<TIntermAggregate*>(right.calls.begin(), right.calls.end()), node});
             }
-            std::set<std::string> counted; // each function once per loop
+            std::set<std::string> counted;                                  // each function once per loop
+            std::map<std::string, std::vector<TIntermAggregate*>> stepping; // its calls that step this loop
             const std::set<TIntermBinary*> conditional = conditionalAssignments(loop);
             for (TIntermAggregate* call : inside.calls) {
                 auto callee = tree.functions.find(call->getName().c_str());
@@ -670,8 +687,17 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                     !(returnsFloats(returned) || returnsStruct(returned) || vec3Field))
                     continue;
                 const std::string name = plainName(call->getName());
-                const Assignment* step = counted.count(name) ? nullptr : stepBy(assignments, call, conditional);
+                const Assignment* step = stepBy(assignments, call, conditional);
                 if (!step) continue;
+                if (counted.count(name)) { // another call of it this loop steps by, at another point or with other values
+                    std::vector<TIntermAggregate*>& seen = stepping[name];
+                    if (std::none_of(seen.begin(), seen.end(), [&](TIntermAggregate* c) { return sameArguments(c, call); }))
+                        for (MarchedFunction& m : marched)
+                            if (m.name == name && m.loopLine == loop->getLoc().line) ++m.stepCalls;
+                    seen.push_back(call);
+                    continue;
+                }
+                stepping[name].push_back(call);
                 std::string member;
                 if (returnsStruct(returned)) {
                     member = distanceMember(loop, result);
@@ -704,6 +730,7 @@ std::vector<MarchedFunction> marchedFunctions(const ComposedShader& composed) {
                         traceAllGlobals(*entry, callee->second, function, loop, mainImage, reached, composed, tree.functions);
                 }
                 ++entry->loops;
+                if (entry->loopLine == loop->getLoc().line) ++entry->stepCalls;
                 if (const detail::HitThreshold hit = detail::hitThreshold(loop, call, result.holders);
                     hit.value > 0.0f && entry->hitThreshold == 0.0f)
                     entry->hitThreshold = hit.value, entry->hitLine = hit.line;

@@ -401,7 +401,10 @@ void chooseMarchedEntry(PreparedSdf& prepared, const std::string& stripped) {
     // mainImage's own march of a field with parameters after the point: the loop's inline field
     // first, which holds what the loop adds to the field's distance (`d = min(d, ...)`), else the
     // field with mainImage's values (a point moved by `p = p + rd * d`, which no inline field reads).
-    if (const MarchedFunction& own = valid.front().first; own.depth == 0 && !valid.front().second.arguments.empty())
+    // So too where the loop steps by more than one call of it (two spheres by one sdSphere(p, centre,
+    // radius)): the loop's field is what it steps by, not the first call's.
+    if (const MarchedFunction& own = valid.front().first;
+        (own.depth == 0 && !valid.front().second.arguments.empty()) || own.stepCalls > 1)
         for (const InlineMarch& march : userInlineMarches(prepared))
             if (!march.body.empty() && march.file == own.file && march.line == own.loopLine) {
                 useInlineMarch(prepared, march, stripped);

@@ -739,6 +739,45 @@ TEST(EntryPoint, AMaterialThatBendsTheRayStepsNoMarchAndAPointOnlyOverloadIsTheF
     EXPECT_FALSE(sdf.signature.animated) << "the overload of the point alone";
 }
 
+// A loop that steps by two calls of one function with other values (yuanlin2008's shadertoy
+// repository: a plane and two spheres, `sdSphere(pos, centre, radius)` twice, in a Ray-struct march
+// function): the scene is the loop's inline field, not the first sphere. The same call twice
+// (`scene(p)` to step and `sign(scene(p))` to go on inside, blackle's x-ray) is one field.
+TEST(EntryPoint, ALoopSteppingByTwoCallsOfOneFunctionIsItsInlineField) {
+    const std::string text =
+        "struct Ray { vec3 ori; vec3 dir; };\n"
+        "float sdSphere(vec3 p, vec3 c, float r) { return length(p - c) - r; }\n"
+        "float rayMarch(in Ray ray) {\n"
+        "    float dist = 0.0;\n"
+        "    for (int i = 0; i < 100; i++) {\n"
+        "        vec3 pos = ray.ori + ray.dir * dist;\n"
+        "        float d0 = pos.y;\n"
+        "        float d1 = sdSphere(pos, vec3(0, 0, 0), 1.0);\n"
+        "        float d2 = sdSphere(pos, vec3(0.5, 0, 1), 0.5);\n"
+        "        float d = min(d0, min(d1, d2));\n"
+        "        if (abs(d) < 0.0001) break;\n"
+        "        dist += d;\n"
+        "    }\n"
+        "    return dist;\n}\n"
+        "void mainImage(out vec4 c, in vec2 f) {\n"
+        "    Ray ray = Ray(vec3(2, 1, 0), normalize(vec3((f - 0.5 * iResolution.xy) / iResolution.y, -1.0)));\n"
+        "    c = vec4(vec3(rayMarch(ray) * 0.1), 1.0);\n}\n";
+    PreparedSdf sdf = prepare(text);
+    ASSERT_TRUE(sdf.ok()) << sdf.diagnostics.back().message;
+    EXPECT_EQ(sdf.signature.entry, "rayMarch");
+    EXPECT_FALSE(sdf.signature.inlineBody.empty());
+    EXPECT_NE(sdf.entryReason.find("its march at line 5 writes the field inline"), std::string::npos) << sdf.entryReason;
+    auto tracer = composeTracer(sdf, TracerFeatures{});
+    ASSERT_TRUE(tracer.hasValue());
+    EXPECT_FALSE(hasErrors(checkWithGlslang(*tracer)));
+    std::string once = text;
+    once.replace(once.find("sdSphere(pos, vec3(0.5, 0, 1), 0.5)"), 35, "sign(sdSphere(pos, vec3(0, 0, 0), 1.0))");
+    PreparedSdf same = prepare(once);
+    ASSERT_TRUE(same.ok()) << same.diagnostics.back().message;
+    EXPECT_TRUE(same.signature.inlineBody.empty());
+    EXPECT_EQ(same.entryReason.find("sdSphere (called by the march at line 8)"), 0u) << same.entryReason;
+}
+
 // A terrain that reuses its distance's variable for the clouds after the step (David Hoskins'
 // "Alps": `h = Map(p); ... t += clamp(.5 * h, ...); h = MapClouds(p);`): the clouds' value is
 // overwritten before the step reads h again, so the march steps by Map alone. Where nothing

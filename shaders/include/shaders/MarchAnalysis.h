@@ -31,6 +31,9 @@ struct MarchedFunction {
     float hitThreshold = 0.0f;
     int hitLine = 0;
     int depth = 0; // calls from mainImage to the function holding its first march (a primary ray's is nearer)
+    // Its calls whose values reach the step of its first loop (`min(sdSphere(p, c1, r1), sdSphere(p,
+    // c2, r2))`: 2); more than one makes that loop's inline field the scene, not one call's.
+    int stepCalls = 0;
 
     // A field with `in` parameters after the point (`vec2 Scene(vec3 p, vec3 plateRot)`) whose
     // values mainImage computes and hands to the marching function: how a wrapper gets them.
