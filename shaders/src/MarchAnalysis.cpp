@@ -18,7 +18,6 @@
 
 #include <algorithm>
 #include <deque>
-#include <functional>
 #include <map>
 #include <set>
 
@@ -181,7 +180,7 @@ bool overwrittenBeforeTheStep(const std::vector<Assignment>& assignments, TInter
 // Whether two calls pass the same arguments: the same variables, the same constants (`scene(p)`
 // twice, once to step and once for the sign of the next steps, is one field).
 bool sameArguments(TIntermAggregate* a, TIntermAggregate* b) {
-    std::function<bool(TIntermNode*, TIntermNode*)> same = [&](TIntermNode* x, TIntermNode* y) {
+    auto same = [](TIntermNode* x, TIntermNode* y) {
         if (TIntermSymbol* s = x->getAsSymbolNode(), *t = y->getAsSymbolNode(); s || t) return s && t && s->getId() == t->getId();
         if (auto* c = x->getAsConstantUnion(), *d = y->getAsConstantUnion(); c || d)
             return c && d && c->getConstArray() == d->getConstArray();

@@ -241,11 +241,7 @@ std::string nameInUserText(const PreparedSdf& prepared, const std::string& name)
     return ours ? name.substr(6) : name;
 }
 
-// Among marches stepped by equally often, the primary ray's: the march nearest mainImage (a
-// refraction's or a bounce's march is called from deeper down), else the one that runs whatever the
-// others found (one that runs only where another's result lets it, a refraction inside
-// `if (t.x > 0.)` or a second pass in an `else`, follows a primary ray). Marches as near as each
-// other that run alike stay a tie. Returns those left out, for the reason.
+// How a marched function was found, for the reason.
 std::string where(const MarchedFunction& m) {
     std::string globals;
     for (const std::string& name : m.globals) globals += (globals.empty() ? "" : ", ") + name;
@@ -297,6 +293,11 @@ std::string uniteTiedMarches(std::vector<std::pair<MarchedFunction, SdfSignature
     return reason + ": the primary ray marches each as often and the shader draws the nearer hit (--entry NAME opens one)";
 }
 
+// Among marches stepped by equally often, the primary ray's: the march nearest mainImage (a
+// refraction's or a bounce's march is called from deeper down), else the one that runs whatever the
+// others found (one that runs only where another's result lets it, a refraction inside
+// `if (t.x > 0.)` or a second pass in an `else`, follows a primary ray). Marches as near as each
+// other that run alike stay a tie (uniteTiedMarches may join them). Returns those left out, for the reason.
 std::string keepPrimaryRays(std::vector<std::pair<MarchedFunction, SdfSignature>>& valid) {
     std::string deeper;
     if (valid.size() > 1) {
