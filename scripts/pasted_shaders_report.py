@@ -41,6 +41,7 @@ ENTRY = re.compile(r"entry automatic: (\S+) \(called by the march at line (\d+)\
 UNION_ENTRY = re.compile(r"entry automatic: the union of (.*?): the primary ray marches each")
 UNION_PART = re.compile(r"(\S+) \(called by the march at line (\d+)\)")
 INLINE_ENTRY = re.compile(r"entry automatic: (\S+) \(its march at line (\d+) writes the field inline")
+LEVEL_ENTRY = re.compile(r"entry automatic: (\S+) \(its march at line (\d+) steps .*? and stops where")
 
 
 def run(command):
@@ -90,11 +91,13 @@ with tempfile.TemporaryDirectory() as scratch:
         host = host_match.group(1) if host_match else ""
         match = ENTRY.search(log)
         inline_match = INLINE_ENTRY.search(log)
+        level_match = LEVEL_ENTRY.search(log)
         union_match = UNION_ENTRY.search(log)
         united = UNION_PART.findall(union_match.group(1)) if union_match else []
         entry = (f"{match.group(1)} (march, line {match.group(2)})" if match else
                  "union of " + " and ".join(f"{name} (march, line {line})" for name, line in united) if united else
-                 f"{inline_match.group(1)} (inline march, line {inline_match.group(2)})" if inline_match else "")
+                 f"{inline_match.group(1)} (inline march, line {inline_match.group(2)})" if inline_match else
+                 f"{level_match.group(1)} (level march, line {level_match.group(2)})" if level_match else "")
         sample_code, sample_error, sample_log = run([BINARY, "--batch", "sample", "--sdf", path, "--pattern", "rand", "-n", "2000",
                                             "--output", os.path.join(scratch, "rows.npz")])
         sampled = sample_code == 0
@@ -181,7 +184,9 @@ if DOC:
                    "Each file a whole single-pass Shadertoy image shader from public repositories, pasted as is and opened with "
                    "no `--entry` (the files are not in this repository). ") + "Render: `sdfwb --batch render --size 320x180`; "
                   "sample: `sdfwb --batch sample --pattern rand -n 2000`. Entry: the function the shader's march steps by "
-                  "where that chose it (the union of two a primary ray marches as often), the function whose march loop writes the field inline (inline march), else a conventional name.\n\n")
+                  "where that chose it (the union of two a primary ray marches as often), the function whose march loop writes the field inline (inline march), the function whose loop steps a fixed amount and "
+                  "stops where a value of its point crosses a level, a height field's `p.y < h` (level march: the field is that "
+                  "difference, not a distance), else a conventional name.\n\n")
         sources = os.path.join(FOLDER, "SOURCES.txt")  # local name, repository, path, commit (tab-separated)
         if os.path.exists(sources):
             repos = {}

@@ -235,10 +235,10 @@ std::vector<std::string> expandedCommas(const std::vector<std::string>& statemen
     return out;
 }
 
-// A loop's initialisation, increment and body statements, from its keyword at `keyword`; false,
-// with `why`, when they cannot be read.
+// A loop's initialisation, increment and body statements (and its test, when asked), from its
+// keyword at `keyword`; false, with `why`, when they cannot be read.
 bool readLoop(const std::string& text, std::size_t keyword, std::string& init, std::string& increment,
-              std::vector<std::string>& statements, std::string& why) {
+              std::vector<std::string>& statements, std::string& why, std::string* test = nullptr) {
     std::size_t bodyAt = std::string::npos;
     if (isWordAt(text, keyword, "for")) {
         const std::size_t open = skipSpace(text, keyword + 3);
@@ -254,9 +254,12 @@ bool readLoop(const std::string& text, std::size_t keyword, std::string& init, s
         }
         init = trimmedText(clauses[0]);
         increment = clauses[2];
+        if (test) *test = trimmedText(clauses[1]);
         bodyAt = close;
     } else if (isWordAt(text, keyword, "while")) {
+        const std::size_t open = skipSpace(text, keyword + 5);
         bodyAt = pastParentheses(text, keyword + 5);
+        if (test && bodyAt != std::string::npos) *test = trimmedText(text.substr(open + 1, bodyAt - open - 2));
     } else {
         why = "its loop is not a for or while loop";
         return false;
@@ -295,32 +298,42 @@ std::optional<std::string> pointGivenInPlace(const std::string& statement, const
     return std::nullopt;
 }
 
-} // namespace
+// `t += STEP`, or backwards `t -= STEP`: matched whole.
+std::regex stepPattern(const std::string& counter) {
+    return std::regex(R"(^\s*)" + counter + R"(\s*([-+])=\s*([\s\S]*);\s*$)", kLinearRegex);
+}
 
-std::string inlineFieldBody(const std::string& text, std::size_t keyword, const std::string& counter, const std::string& point,
-                            std::string& step, std::string& why) {
-    std::string init, increment;
-    std::vector<std::string> statements;
-    if (!readLoop(text, keyword, init, increment, statements, why)) return {};
-    // The point: the first statement that assigns it from the counter (`vec3 p = ro + rd * t;`).
+// What a match of stepPattern steps by: STEP, or -(STEP) backwards.
+std::string stepOf(const std::smatch& m) {
+    const std::string by = trimmedText(m[2].str());
+    return m[1].str() == "-" ? "-(" + by + ")" : by;
+}
+
+// The step in a for loop's increment (`i++, t += d`), or empty.
+std::string stepInIncrement(const std::string& increment, const std::regex& steps) {
+    std::string step;
+    std::smatch match;
+    for (const std::string& part : splitOutside(increment, ',')) {
+        const std::string statement = part + ";";
+        if (std::regex_match(statement, match, steps)) step = stepOf(match);
+    }
+    return step;
+}
+
+// Where a loop's statements compute its point from the counter: the first statement that assigns
+// it from the counter (`vec3 p = ro + rd * t;`; statements.size() when none does), and the last of
+// the statements right after it that only move or turn the point (`p.z -= 3.;`, `p.xz *=
+// rot(iTime)`: +=, -= or *= by what reads neither the point nor the counter). Those place the
+// camera: the given point is set after them, so that the scene sits where the shader's camera
+// looks, not at the camera's distance from the origin.
+struct PointPlacement {
+    std::size_t pointAt, setAt;
+};
+PointPlacement placePoint(const std::vector<std::string>& statements, const std::string& counter, const std::string& point) {
     const std::regex assigns(R"((^|[^\w.])()" + point + R"()\s*(\.\s*\w+|\[[^\]]*\])?\s*[-+*/]?=[^=])", kLinearRegex);
-    // `t += STEP`, or backwards `t -= STEP` (the field is then -STEP).
-    const std::regex steps(R"(^\s*)" + counter + R"(\s*([-+])=\s*([\s\S]*);\s*$)", kLinearRegex);
-    auto stepOf = [](const std::smatch& m) {
-        const std::string by = trimmedText(m[2].str());
-        return m[1].str() == "-" ? "-(" + by + ")" : by;
-    };
     std::size_t pointAt = statements.size();
     for (std::size_t i = 0; i < statements.size() && pointAt == statements.size(); ++i)
         if (mentions(statements[i], counter) && std::regex_search(statements[i], assigns)) pointAt = i;
-    if (pointAt == statements.size()) {
-        why = "the statement that computes '" + point + "' from '" + counter + "' was not found";
-        return {};
-    }
-    // Statements right after it that only move or turn the ray's point (`p.z -= 3.;`,
-    // `p.xz *= rot(iTime)`: +=, -= or *= by what reads neither the point nor the counter) place the
-    // camera: the given point is set after them, so that the scene sits where the shader's camera
-    // looks, not at the camera's distance from the origin.
     const std::regex moves(R"(^\s*)" + point + R"(\s*(\.\s*[xyzrgbstpq]+)?\s*[-+*]=([\s\S]*);\s*$)", kLinearRegex);
     const std::regex unitMove(R"(^\s*(?:(?:--|\+\+)\s*)" + point + R"(|)" + point + R"(\s*(?:--|\+\+))\s*;\s*$)", kLinearRegex);
     std::size_t setAt = pointAt;
@@ -335,34 +348,53 @@ std::string inlineFieldBody(const std::string& text, std::size_t keyword, const 
             break;
         setAt = i;
     }
+    return {pointAt, setAt};
+}
+
+// The statements before `end` but `skip`, their loop exits blanked, with the point the point given
+// where `placed` says.
+std::string givenStatements(const std::vector<std::string>& statements, const PointPlacement& placed, const std::string& point,
+                            std::size_t skip, std::size_t end) {
+    const std::optional<std::string> inPlace = placed.setAt == placed.pointAt && placed.pointAt < statements.size()
+                                                   ? pointGivenInPlace(statements[placed.pointAt], point)
+                                                   : std::nullopt;
+    std::string out;
+    for (std::size_t i = 0; i < std::min(end, statements.size()); ++i) {
+        if (i == skip) continue;
+        out += withoutLoopExits(i == placed.pointAt && inPlace ? *inPlace : statements[i]) + "\n";
+        if (i == placed.setAt && !inPlace) out += point + " = sdfwb_point;\n";
+    }
+    return out;
+}
+
+} // namespace
+
+std::string inlineFieldBody(const std::string& text, std::size_t keyword, const std::string& counter, const std::string& point,
+                            std::string& step, std::string& why) {
+    std::string init, increment;
+    std::vector<std::string> statements;
+    if (!readLoop(text, keyword, init, increment, statements, why)) return {};
+    const PointPlacement placed = placePoint(statements, counter, point);
+    if (placed.pointAt == statements.size()) {
+        why = "the statement that computes '" + point + "' from '" + counter + "' was not found";
+        return {};
+    }
+    const std::regex steps = stepPattern(counter);
     std::size_t stepAt = statements.size();
     std::smatch match;
-    for (std::size_t i = pointAt + 1; i < statements.size(); ++i)
+    for (std::size_t i = placed.pointAt + 1; i < statements.size(); ++i)
         if (std::regex_match(statements[i], match, steps)) {
             step = stepOf(match);
             stepAt = i;
             break;
         }
-    if (stepAt == statements.size()) {
-        // `for (...; ...; i++, t += d)`: the step ends the body.
-        for (const std::string& part : splitOutside(increment, ',')) {
-            const std::string statement = part + ";";
-            if (std::regex_match(statement, match, steps)) step = stepOf(match);
-        }
-    }
+    if (stepAt == statements.size()) step = stepInIncrement(increment, steps); // `for (...; ...; i++, t += d)`
     if (step.empty()) {
         why = "the statement that advances '" + counter + "' is not one of its loop's own statements";
         return {};
     }
-    std::string out = "{\n";
-    if (!init.empty()) out += init + ";\n";
-    const std::optional<std::string> inPlace = setAt == pointAt ? pointGivenInPlace(statements[pointAt], point) : std::nullopt;
-    for (std::size_t i = 0; i < std::min(stepAt, statements.size()); ++i) {
-        out += withoutLoopExits(i == pointAt && inPlace ? *inPlace : statements[i]) + "\n";
-        if (i == setAt && !inPlace) out += point + " = sdfwb_point;\n";
-    }
-    out += "return float(" + step + ");\n}\n";
-    return out;
+    return "{\n" + (init.empty() ? "" : init + ";\n") + givenStatements(statements, placed, point, statements.size(), stepAt) +
+           "return float(" + step + ");\n}\n";
 }
 
 std::string pointMarchBody(const std::string& text, std::size_t keyword, const std::string& point, std::string& field, int factor,
@@ -423,6 +455,152 @@ std::string pointMarchBody(const std::string& text, std::size_t keyword, const s
     }
     out += "return float(" + field + ");\n}\n";
     return out;
+}
+
+namespace {
+
+// `text` without the parentheses that enclose all of it.
+std::string withoutOuterParentheses(std::string text) {
+    for (text = trimmedText(text); text.size() > 1 && text.front() == '(' && pastMatching(text, 0) == text.size();)
+        text = trimmedText(text.substr(1, text.size() - 2));
+    return text;
+}
+
+// A comparison `left op right`, op one of <, <=, > and >=.
+struct Comparison {
+    std::string left, op, right;
+    std::string text() const { return left + " " + op + " " + right; }
+};
+
+// The parts of a condition that && and || join outside parentheses, each read as a comparison at
+// its top level (parts that are none left out).
+std::vector<Comparison> comparisonsOf(const std::string& condition) {
+    std::vector<std::string> parts(1);
+    int depth = 0;
+    for (std::size_t i = 0; i < condition.size(); ++i) {
+        const char c = condition[i];
+        depth += (c == '(' || c == '[') ? 1 : (c == ')' || c == ']') ? -1 : 0;
+        if (depth == 0 && (c == '&' || c == '|') && i + 1 < condition.size() && condition[i + 1] == c) {
+            parts.emplace_back();
+            ++i;
+            continue;
+        }
+        parts.back() += c;
+    }
+    std::vector<Comparison> out;
+    for (const std::string& part : parts) {
+        const std::string text = withoutOuterParentheses(part);
+        depth = 0;
+        for (std::size_t i = 0; i < text.size(); ++i) {
+            const char c = text[i];
+            depth += (c == '(' || c == '[') ? 1 : (c == ')' || c == ']') ? -1 : 0;
+            if (depth != 0 || (c != '<' && c != '>')) continue;
+            if (i + 1 < text.size() && text[i + 1] == c) break; // a shift, not a comparison
+            const std::size_t width = i + 1 < text.size() && text[i + 1] == '=' ? 2 : 1;
+            out.push_back({trimmedText(text.substr(0, i)), text.substr(i, width), trimmedText(text.substr(i + width))});
+            break;
+        }
+    }
+    return out;
+}
+
+// An operand of a difference: as written where it is one name, member, number or call, else in
+// parentheses.
+std::string operand(const std::string& text) {
+    static const std::regex simple(R"(^[\w.]+(\s*\([^()]*\))?$)", kLinearRegex);
+    return std::regex_match(text, simple) ? text : "(" + text + ")";
+}
+
+// The first comparison of `condition` with a side that mentions one of `levels`, as the difference
+// that is negative where the march stops: left - right when it stops where left is below right
+// (`stops` and < or <=, or going on while left is above it). False when none does.
+bool levelOf(const std::string& condition, bool stops, const std::set<std::string>& levels, std::string& field,
+             std::string& level) {
+    for (const Comparison& comparison : comparisonsOf(condition))
+        for (const std::string& name : levels)
+            if (mentions(comparison.left, name) || mentions(comparison.right, name)) {
+                const bool leftBelow = (comparison.op[0] == '<') == stops;
+                field = leftBelow ? operand(comparison.left) + " - " + operand(comparison.right)
+                                  : operand(comparison.right) + " - " + operand(comparison.left);
+                level = comparison.text();
+                return true;
+            }
+    return false;
+}
+
+// An `if (C) { ... }` statement (with no else unless `orElse`): its condition and the block C runs;
+// false when it is none.
+bool readIf(const std::string& statement, std::string& condition, std::string& block, bool orElse = false) {
+    const std::size_t at = skipSpace(statement, 0);
+    if (!isWordAt(statement, at, "if")) return false;
+    const std::size_t open = skipSpace(statement, at + 2), close = pastParentheses(statement, at + 2);
+    if (close == std::string::npos) return false;
+    const std::size_t end = statementEnd(statement, close);
+    if (end == std::string::npos || (!orElse && skipSpace(statement, end) != statement.size())) return false;
+    condition = statement.substr(open + 1, close - open - 2);
+    block = trimmedText(statement.substr(close, end - close));
+    if (!block.empty() && block.front() == '{') block = block.substr(1, block.size() - 2);
+    return true;
+}
+
+} // namespace
+
+std::string levelFieldBody(const std::string& text, std::size_t keyword, const std::string& counter, const std::string& point,
+                           const std::set<std::string>& levels, std::string& field, std::string& level, std::string& step,
+                           std::string& why) {
+    std::string init, increment, test;
+    std::vector<std::string> statements;
+    if (!readLoop(text, keyword, init, increment, statements, why, &test)) return {};
+    const std::regex steps = stepPattern(counter);
+    std::smatch match;
+    std::size_t stepAt = statements.size();
+    for (std::size_t i = 0; i < statements.size() && stepAt == statements.size(); ++i)
+        if (std::regex_match(statements[i], match, steps)) step = stepOf(match), stepAt = i;
+    // What keeps the march going: the loop's test, or an if that holds the step (`if (h < p.y) { t
+    // += dt; p = ro + rd * t; h = f(p.xz); }`), whose block is then the loop's body.
+    std::vector<std::string> going{test};
+    if (stepAt == statements.size()) step = stepInIncrement(increment, steps);
+    for (std::size_t i = 0; i < statements.size() && step.empty(); ++i) {
+        std::string condition, block;
+        if (!readIf(statements[i], condition, block)) continue;
+        const std::vector<std::string> inner = expandedCommas(splitStatements(block));
+        for (std::size_t k = 0; k < inner.size() && step.empty(); ++k)
+            if (std::regex_match(inner[k], match, steps)) {
+                step = stepOf(match), stepAt = k;
+                going.push_back(condition);
+                statements = inner;
+            }
+    }
+    if (step.empty()) {
+        why = "the statement that advances '" + counter + "' is not one of its loop's own statements";
+        return {};
+    }
+    // The point: given at the start where the loop steps it itself (`p += rd * .05`), else where
+    // the loop computes it from the counter.
+    const bool marchesPoint = counter == point;
+    const PointPlacement placed =
+        marchesPoint ? PointPlacement{statements.size(), statements.size()} : placePoint(statements, counter, point);
+    if (!marchesPoint && placed.pointAt == statements.size()) {
+        why = "the statement that computes '" + point + "' from '" + counter + "' was not found";
+        return {};
+    }
+    const std::string start = "{\n" + (init.empty() ? "" : init + ";\n") + (marchesPoint ? point + " = sdfwb_point;\n" : "");
+    // A test after the point that stops the march (`if (p.y < h) break;`): the field is computed by
+    // the statements before it. One before the point reads the last pass's values: all of them.
+    for (std::size_t i = 0; i < statements.size(); ++i) {
+        std::string condition, then;
+        if (!readIf(statements[i], condition, then, true) || withoutLoopExits(then) == then || mentions(then, "continue") ||
+            !levelOf(condition, true, levels, field, level))
+            continue;
+        const std::size_t end = marchesPoint || i > placed.pointAt ? i : statements.size();
+        return start + givenStatements(statements, placed, point, stepAt, end) + "return float(" + field + ");\n}\n";
+    }
+    for (const std::string& condition : going)
+        if (levelOf(condition, false, levels, field, level))
+            return start + givenStatements(statements, placed, point, stepAt, statements.size()) + "return float(" + field +
+                   ");\n}\n";
+    why = "no test of its loop compares a value of '" + point + "' with a level";
+    return {};
 }
 
 } // namespace sdfwb::shaders

@@ -4,6 +4,7 @@
 // given point. MarchAnalysis finds the loop, its counter and its point from glslang's tree; this
 // file reads the loop's text.
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -44,5 +45,17 @@ std::string inlineFieldBody(const std::string& text, std::size_t keyword, const 
 // d`): the body up to the step, and `field` receives the factor's text.
 std::string pointMarchBody(const std::string& text, std::size_t keyword, const std::string& point, std::string& field, int factor,
                            std::string& step, std::string& why);
+
+// The same for a loop that steps a fixed amount (`t += .05`, `p += rd * .05` with `counter` the
+// point) and stops where a value of the point crosses a level: an if after the point that leaves
+// the loop (`if (p.y < h) break;`, `if (v > 0.) return t;`), else the loop's test or an if that
+// holds the step (`if (h < p.y) { t += dt; p = ...; h = f(p.xz); }`). The comparison's side must
+// mention one of `levels` (what the loop computes from the point through the shader's functions,
+// and those functions). The body computes the point's value as the loop does (the statements
+// before that if, or all of them), then returns `field`: the sides' difference, negative where the
+// march stops (`p.y - h`, `0.0 - v`); `level` receives the comparison as written.
+std::string levelFieldBody(const std::string& text, std::size_t keyword, const std::string& counter, const std::string& point,
+                           const std::set<std::string>& levels, std::string& field, std::string& level, std::string& step,
+                           std::string& why);
 
 } // namespace sdfwb::shaders

@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <map>
+#include <optional>
 #include <set>
 
 // Marches that write their field inline (InlineMarch): the loops mainImage's functions run that
@@ -107,7 +109,7 @@ std::string withoutInactiveBranches(std::string code) {
 
 // Fills an inline march's prelude and body from its loop's text (InlineField.h), or its unresolved.
 void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* function, const Reached& tree,
-                     const ComposedShader& composed) {
+                     const ComposedShader& composed, const std::set<std::string>* levels = nullptr) {
     const bool isMainImage = function == tree.mainImage;
     const int file = loop->getLoc().string;
     if (file < 0 || file >= int(composed.map.files.size()) || function->getLoc().string != file) {
@@ -145,9 +147,11 @@ void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* fu
         return;
     }
     std::string why;
-    march.body = march.field.empty() && march.fieldFactor < 0
-                     ? inlineFieldBody(text, keyword, march.counter, march.point, march.step, why)
-                     : pointMarchBody(text, keyword, march.point, march.field, march.fieldFactor, march.step, why);
+    march.body =
+        levels ? levelFieldBody(text, keyword, march.counter, march.point, *levels, march.field, march.level, march.step, why)
+        : march.field.empty() && march.fieldFactor < 0
+            ? inlineFieldBody(text, keyword, march.counter, march.point, march.step, why)
+            : pointMarchBody(text, keyword, march.point, march.field, march.fieldFactor, march.step, why);
     if (march.body.empty()) {
         march.unresolved = why;
         return;
@@ -195,12 +199,135 @@ std::set<long long> readThrough(std::set<long long> from, const std::vector<Assi
     return from;
 }
 
+// What leaves a loop from a branch of an if in it (break, return, discard; not in a loop nested in
+// it), or holds the loop's step.
+struct LeavesOrSteps : glslang::TIntermTraverser {
+    TIntermBinary* step = nullptr;
+    bool found = false;
+    bool visitBranch(glslang::TVisit, glslang::TIntermBranch* node) override {
+        const glslang::TOperator op = node->getFlowOp();
+        found |= op == glslang::EOpBreak || op == glslang::EOpReturn || op == glslang::EOpKill;
+        return true;
+    }
+    bool visitBinary(glslang::TVisit, TIntermBinary* node) override {
+        found |= node == step;
+        return true;
+    }
+    bool visitLoop(glslang::TVisit, TIntermLoop*) override { return false; }
+    bool visitSwitch(glslang::TVisit, glslang::TIntermSwitch*) override { return false; }
+};
+
+// The comparisons (<, <=, >, >=) a loop's test holds, and those of its ifs whose branch leaves
+// the loop or holds `step`: where a march that steps a fixed amount stops.
+struct StopTests : glslang::TIntermTraverser {
+    TIntermBinary* step = nullptr;
+    std::vector<TIntermBinary*> comparisons;
+    bool inTest = false;
+    bool visitSelection(glslang::TVisit, glslang::TIntermSelection* node) override {
+        LeavesOrSteps branch;
+        branch.step = step;
+        if (node->getTrueBlock()) node->getTrueBlock()->traverse(&branch);
+        if (branch.found && node->getCondition()) {
+            inTest = true;
+            node->getCondition()->traverse(this);
+            inTest = false;
+        }
+        return true;
+    }
+    bool visitBinary(glslang::TVisit, TIntermBinary* node) override {
+        const glslang::TOperator op = node->getOp();
+        if (inTest && (op == glslang::EOpLessThan || op == glslang::EOpLessThanEqual || op == glslang::EOpGreaterThan ||
+                       op == glslang::EOpGreaterThanEqual))
+            comparisons.push_back(node);
+        return true;
+    }
+    bool visitLoop(glslang::TVisit, TIntermLoop*) override { return false; }
+};
+
+// A march that steps a fixed amount and stops where a value of the point crosses a level
+// (InlineMarch::level): `counter` (a float, or the vec3 point itself) grows by what reads no value
+// of the point, and a stop test compares a value the loop computes from the point through the
+// shader's functions (`h = terrain(p.xz)`, not accumulated) or such a call itself. The names of
+// those values and functions go to `levels`; the point's symbol is returned, or -1.
+long long levelMarchPoint(TIntermLoop* loop, const Assignment& stepping, TIntermBinary* stepNode,
+                          const std::vector<Assignment>& assignments, const std::map<long long, TIntermSymbol*>& byId,
+                          std::set<std::string>& levels) {
+    auto typeOf = [&](long long id) -> const glslang::TType* {
+        auto it = byId.find(id);
+        return it == byId.end() ? nullptr : &it->second->getType();
+    };
+    const glslang::TType* counterType = typeOf(stepping.target);
+    if (!counterType ||
+        (!isFloatVec3(*counterType) && (!counterType->isScalar() || counterType->getBasicType() != glslang::EbtFloat)))
+        return -1;
+    long long point = isFloatVec3(*counterType) ? stepping.target : -1;
+    for (const Assignment& a : assignments)
+        if (point < 0 && a.target >= 0 && a.target != stepping.target && a.reads.count(stepping.target) && typeOf(a.target) &&
+            isFloatVec3(*typeOf(a.target)))
+            point = a.target;
+    if (point < 0) return -1;
+    auto readsPoint = [&](const std::set<long long>& symbols) {
+        return symbols.count(point) || readThrough(symbols, assignments, &stepping).count(point);
+    };
+    std::set<long long> values; // computed from the point through a call, not added up
+    for (const Assignment& a : assignments)
+        if (a.target >= 0 && a.target != point && a.target != stepping.target && !a.calls.empty() && a.op == glslang::EOpAssign &&
+            !a.reads.count(a.target) && readsPoint(a.reads))
+            values.insert(a.target);
+    for (const Assignment& a : assignments) // a value added up is no level
+        if (a.op != glslang::EOpAssign || a.reads.count(a.target)) values.erase(a.target);
+    if (readThrough(stepping.reads, assignments, &stepping).count(point) && stepping.target != point) return -1;
+    StopTests tests;
+    tests.step = stepNode;
+    if (loop->getBody()) loop->getBody()->traverse(&tests);
+    if (loop->getTest()) {
+        tests.inTest = true;
+        loop->getTest()->traverse(&tests);
+    }
+    for (TIntermBinary* comparison : tests.comparisons) {
+        const Contents read = contentsOf(comparison);
+        for (long long symbol : read.symbols)
+            if (values.count(symbol)) levels.insert(byId.at(symbol)->getName().c_str());
+        for (TIntermAggregate* call : read.calls)
+            if (readsPoint(contentsOf(call).symbols)) levels.insert(plainName(call->getName()));
+    }
+    return levels.empty() ? -1 : point;
+}
+
 InlineMarch marchAt(TIntermAggregate* function, TIntermLoop* loop, const ComposedShader& composed) {
     InlineMarch march;
     march.function = plainName(function->getName());
     march.file = composed.map.fileName(loop->getLoc().string);
     march.line = loop->getLoc().line;
     return march;
+}
+
+// The symbols a subtree reads or writes, by id.
+struct SymbolsById : glslang::TIntermTraverser {
+    std::map<long long, TIntermSymbol*> byId;
+    void visitSymbol(TIntermSymbol* node) override { byId.emplace(node->getId(), node); }
+};
+
+// The march of `loop` that steps a fixed amount and stops at a level (levelMarchPoint), read.
+std::optional<InlineMarch> levelMarch(TIntermAggregate* function, TIntermLoop* loop, const Contents& inside,
+                                      const std::vector<Assignment>& assignments, const std::set<TIntermBinary*>& nested,
+                                      const std::map<long long, TIntermSymbol*>& byId, const Reached& tree,
+                                      const ComposedShader& composed) {
+    for (std::size_t s = 0; s < inside.assignments.size(); ++s) {
+        const Assignment& stepping = assignments[s];
+        if ((stepping.op != glslang::EOpAddAssign && stepping.op != glslang::EOpSubAssign) || stepping.target < 0 ||
+            nested.count(inside.assignments[s]) || !inside.assignments[s]->getLeft()->getAsSymbolNode())
+            continue;
+        std::set<std::string> levels;
+        const long long point = levelMarchPoint(loop, stepping, inside.assignments[s], assignments, byId, levels);
+        if (point < 0) continue;
+        InlineMarch march = marchAt(function, loop, composed);
+        march.counter = byId.at(stepping.target)->getName().c_str();
+        march.point = byId.at(point)->getName().c_str();
+        readInlineMarch(march, loop, function, tree, composed, &levels);
+        return march;
+    }
+    return std::nullopt;
 }
 
 } // namespace
@@ -231,11 +358,7 @@ std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
                 if (a.op != glslang::EOpAssign && a.target >= 0) a.reads.insert(a.target);
                 assignments.push_back(std::move(a));
             }
-            // Names and types of the loop's symbols.
-            struct Symbols : glslang::TIntermTraverser {
-                std::map<long long, TIntermSymbol*> byId;
-                void visitSymbol(TIntermSymbol* node) override { byId.emplace(node->getId(), node); }
-            } symbols;
+            SymbolsById symbols; // names and types of the loop's symbols
             loop->traverse(&symbols);
             auto typeOf = [&](long long id) -> const glslang::TType* {
                 auto it = symbols.byId.find(id);
@@ -316,8 +439,13 @@ std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
                         floats.insert(read);
                 setHitThreshold(march, loop, std::move(floats));
                 found.push_back(std::move(march));
+                marched = true;
                 break;
             }
+            // A march that steps a fixed amount and stops at a level of the point's value.
+            if (std::optional<InlineMarch> march;
+                !marched && (march = levelMarch(function, loop, inside, assignments, nested, symbols.byId, tree, composed)))
+                found.push_back(std::move(*march));
         }
     }
     return found;

@@ -36,15 +36,24 @@ void useInlineMarch(PreparedSdf& prepared, const InlineMarch& march, const std::
     prepared.marchThreshold = march.hitThreshold;
     prepared.marchThresholdLine = march.hitLine;
     // A march backwards (`t -= d`) has the step -(d): said as the shader writes it.
-    const bool backwards =
-        march.field.empty() && march.step.size() > 3 && march.step.compare(0, 2, "-(") == 0 && march.step.back() == ')';
+    const bool backwards = (march.field.empty() || !march.level.empty()) && march.step.size() > 3 &&
+                           march.step.compare(0, 2, "-(") == 0 && march.step.back() == ')';
     std::string traced;
     for (const TracedValue& value : march.traced) traced += (traced.empty() ? "" : ", ") + value.name;
+    const std::string stepText =
+        march.counter + (backwards ? " -= " + march.step.substr(2, march.step.size() - 3) : " += " + march.step);
     prepared.entryReason = march.function + " (its march at line " + std::to_string(march.line) +
-                           " writes the field inline: " + (march.field.empty() ? "" : march.field + ", ") + "the step " +
-                           march.counter +
-                           (backwards ? " -= " + march.step.substr(2, march.step.size() - 3) : " += " + march.step) + ")" +
-                           (traced.empty() ? "" : ", with " + traced + " as mainImage computes it");
+                           (march.level.empty() ? " writes the field inline: " + (march.field.empty() ? "" : march.field + ", ") +
+                                                      "the step " + stepText
+                                                : " steps " + stepText + " and stops where " + march.level + ": the field is " +
+                                                      march.field + ", a level of the shader's values, not a distance") +
+                           ")" + (traced.empty() ? "" : ", with " + traced + " as mainImage computes it");
+    if (!march.level.empty())
+        prepared.diagnostics.push_back({march.file, march.line, 1, Severity::Warning,
+                                        "this march steps a fixed amount and stops where " + march.level + ": sdfwb's field is " +
+                                            march.field +
+                                            ", whose values are not distances; sphere tracing may step past "
+                                            "thin parts of it (the audit gives a safe --step-factor)"});
 }
 
 // The inline marches of the user's code alone.
@@ -205,19 +214,25 @@ bool floatIsNotTime(const SdfSignature& signature, const std::string& stripped) 
 }
 
 // A whole shader whose march writes its field inline (shaders::InlineMarch), with no function the
-// march steps by and no conventional name: the first such loop whose text the wrapper can run.
+// march steps by and no conventional name: the first such loop whose text the wrapper can run, one
+// that steps by its field before one that stops at a level (a fixed-step shadow or fog loop).
 void chooseInlineField(PreparedSdf& prepared, const std::string& stripped) {
     std::string unresolved;
-    for (const InlineMarch& march : userInlineMarches(prepared)) {
-        if (march.body.empty()) {
-            if (unresolved.empty())
-                unresolved =
-                    "the march at line " + std::to_string(march.line) + " writes its field inline, but " + march.unresolved;
-            continue;
+    const std::vector<InlineMarch> marches = userInlineMarches(prepared);
+    for (const bool levels : {false, true})
+        for (const InlineMarch& march : marches) {
+            if (march.level.empty() == levels) continue;
+            if (march.body.empty()) {
+                if (unresolved.empty())
+                    unresolved =
+                        "the march at line " + std::to_string(march.line) +
+                        (levels ? " steps a fixed amount to a level of its point's values" : " writes its field inline") +
+                        ", but " + march.unresolved;
+                continue;
+            }
+            useInlineMarch(prepared, march, stripped);
+            return;
         }
-        useInlineMarch(prepared, march, stripped);
-        return;
-    }
     if (!unresolved.empty() && prepared.entryReason.empty()) prepared.entryReason = unresolved;
 }
 

@@ -228,6 +228,82 @@ TEST_P(ForeignCode, OpensRendersSamplesAndGetsItsFlags) {
 
 INSTANTIATE_TEST_SUITE_P(Corpus, ForeignCode, ::testing::ValuesIn(corpusFiles()), fileTestName);
 
+// A march that steps a fixed amount and stops where a value of its point crosses a level: the
+// field is that difference (issue 47's fixed-step marches). 84 stops where p.y < h under a height
+// field, 85 where a potential turns positive; a loop that goes on while the terrain is below its
+// point (`if (h < p.y) { t += dt; p = ...; h = ...; }`) stops where that ends; a loop that adds up
+// a density is no level.
+class LevelFields : public sdfwb::testing::GlTest {};
+
+TEST_F(LevelFields, TheComparedDifferenceIsTheField) {
+    auto valueAt = [](const fs::path& name, glm::vec3 p) {
+        shaders::PreparedSdf sdf = prepare(kFolder / name);
+        EXPECT_TRUE(sdf.ok()) << firstError(sdf);
+        renderer::SampleCompute compute;
+        EXPECT_FALSE(shaders::hasErrors(compute.build(sdf, *shaders::builtinPiece("analysis/points.glsl"))));
+        sampling::SamplingJob job;
+        job.count = 1;
+        job.inputPoints = &p.x;
+        float position[3], distance = 0.0f, gradient[3];
+        EXPECT_TRUE(sampling::sampleInto(compute, job, position, &distance, gradient, {}).hasValue());
+        compute.releaseGl();
+        return distance;
+    };
+    auto terrain = [](float x, float z) {
+        return 0.25f * std::sin(1.7f * x) * std::cos(1.3f * z) + 0.1f * std::sin(3.1f * x + 2.3f * z) - 0.2f;
+    };
+    for (const glm::vec3 p : {glm::vec3(0.3f, 0.5f, 0.2f), glm::vec3(-0.7f, -0.6f, 0.4f)})
+        EXPECT_NEAR(valueAt("84_st_terrain_height_march.glsl", p), p.y - terrain(p.x, p.z), 1e-5f);
+    auto blob = [](glm::vec3 p, glm::vec3 c, float e, float r) {
+        const float x = std::clamp(glm::length(p - c) / r, 0.0f, 1.0f);
+        return e * std::pow(1.0f - x * x, 3.0f);
+    };
+    for (const glm::vec3 p : {glm::vec3(-0.35f, 0.0f, 0.0f), glm::vec3(0.2f, 0.3f, 0.1f), glm::vec3(1.5f, 0.0f, 0.0f)}) {
+        const float potential = blob(p, {-0.35f, 0.0f, 0.0f}, 1.0f, 0.9f) + blob(p, {0.35f, 0.1f, 0.0f}, 1.0f, 0.8f) +
+                                blob(p, {0.0f, -0.25f, 0.3f}, 0.8f, 0.7f) - 0.45f;
+        EXPECT_NEAR(valueAt("85_st_potential_fixed_step.glsl", p), 0.0f - potential, 1e-5f);
+    }
+    const shaders::PreparedSdf heights = prepare(kFolder / "84_st_terrain_height_march.glsl");
+    EXPECT_NE(heights.entryReason.find("steps t += dt and stops where p.y < h: the field is p.y - h"), std::string::npos)
+        << heights.entryReason;
+    EXPECT_TRUE(std::any_of(heights.diagnostics.begin(), heights.diagnostics.end(), [](const shaders::Diagnostic& d) {
+        return d.severity == shaders::Severity::Warning && d.message.find("not distances") != std::string::npos;
+    }));
+
+    const fs::path folder = fs::temp_directory_path() / ("sdfwb-foreign-level-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    std::ofstream(folder / "going.glsl") << "float height(vec2 q) { return 0.3 * sin(2.0 * q.x) - 0.1; }\n"
+                                            "void mainImage(out vec4 c, in vec2 f) {\n"
+                                            "    vec3 ro = vec3(0.0, 1.0, -3.0), rd = normalize(vec3(0.0, -0.2, 1.0));\n"
+                                            "    float t = 0.0, h = 0.0;\n"
+                                            "    vec3 at = ro;\n"
+                                            "    for (int i = 0; i < 200; i++) {\n"
+                                            "        if (h < at.y) {\n"
+                                            "            t += 0.05;\n"
+                                            "            at = ro + rd * t;\n"
+                                            "            h = height(at.xz);\n"
+                                            "        }\n"
+                                            "    }\n"
+                                            "    c = vec4(t);\n"
+                                            "}\n";
+    std::ofstream(folder / "density.glsl") << "float density(vec3 p) { return max(0.0, 0.5 - length(p)); }\n"
+                                              "void mainImage(out vec4 c, in vec2 f) {\n"
+                                              "    vec3 ro = vec3(0.0, 0.0, -3.0), rd = vec3(0.0, 0.0, 1.0);\n"
+                                              "    float sum = 0.0;\n"
+                                              "    for (float t = 0.0; t < 6.0; t += 0.05) {\n"
+                                              "        vec3 p = ro + rd * t;\n"
+                                              "        sum += density(p) * 0.05;\n"
+                                              "        if (sum > 0.95) break;\n"
+                                              "    }\n"
+                                              "    c = vec4(sum);\n"
+                                              "}\n";
+    EXPECT_NEAR(valueAt(folder / "going.glsl", {0.4f, 0.2f, 0.0f}), 0.2f - (0.3f * std::sin(0.8f) - 0.1f), 1e-5f);
+    const shaders::PreparedSdf going = prepare(folder / "going.glsl");
+    EXPECT_NE(going.entryReason.find("stops where h < at.y: the field is at.y - h"), std::string::npos) << going.entryReason;
+    EXPECT_FALSE(prepare(folder / "density.glsl").ok()) << "a density added up is no level";
+    fs::remove_all(folder);
+}
+
 namespace {
 class UserNames : public sdfwb::testing::GlTest {};
 } // namespace

@@ -78,6 +78,11 @@ struct InlineMarch {
     // golfed): that factor's index (0 or 1) in the step's product, and `field` its text once read.
     int fieldFactor = -1;
     std::string step; // what the counter grows by (`d`, `e * .7`)
+    // A march that steps a fixed amount and stops where a value of the point crosses a level (a
+    // height field's `if (p.y < h) break;`, a potential's `if (v > 0.) break;`): that comparison as
+    // written, `field` the difference that is negative where it stops (`p.y - h`), a level of the
+    // shader's values and not a distance. Empty for the other marches.
+    std::string level;
     // The wrapper's body: the function's parameters declared (mainImage's as coordinate and
     // colour name them: the caller declares those), its statements before the loop, then `body`.
     std::string prelude, body, coordinate, colour;
