@@ -354,15 +354,16 @@ PointPlacement placePoint(const std::vector<std::string>& statements, const std:
 // The statements before `end` but `skip`, their loop exits blanked, with the point the point given
 // where `placed` says.
 std::string givenStatements(const std::vector<std::string>& statements, const PointPlacement& placed, const std::string& point,
-                            std::size_t skip, std::size_t end) {
-    const std::optional<std::string> inPlace = placed.setAt == placed.pointAt && placed.pointAt < statements.size()
-                                                   ? pointGivenInPlace(statements[placed.pointAt], point)
-                                                   : std::nullopt;
+                            std::size_t skip, std::size_t end, int pointSize = 3) {
+    const std::optional<std::string> inPlace =
+        placed.setAt == placed.pointAt && placed.pointAt < statements.size() && pointSize == 3
+            ? pointGivenInPlace(statements[placed.pointAt], point)
+            : std::nullopt;
     std::string out;
     for (std::size_t i = 0; i < std::min(end, statements.size()); ++i) {
         if (i == skip) continue;
         out += withoutLoopExits(i == placed.pointAt && inPlace ? *inPlace : statements[i]) + "\n";
-        if (i == placed.setAt && !inPlace) out += point + " = sdfwb_point;\n";
+        if (i == placed.setAt && !inPlace) out += point + (pointSize == 4 ? ".xyz" : "") + " = sdfwb_point;\n";
     }
     return out;
 }
@@ -370,16 +371,26 @@ std::string givenStatements(const std::vector<std::string>& statements, const Po
 } // namespace
 
 std::string inlineFieldBody(const std::string& text, std::size_t keyword, const std::string& counter, const std::string& point,
-                            std::string& step, std::string& why) {
+                            std::string& step, std::string& why, int pointSize) {
     std::string init, increment;
     std::vector<std::string> statements;
     if (!readLoop(text, keyword, init, increment, statements, why)) return {};
+    const std::regex steps = stepPattern(counter);
+    // What the for header does after the step (golfed: `z += d, q = vec4(dir * z, .2), ..., d =
+    // ...`) runs before the next pass's body: it comes first.
+    const std::vector<std::string> parts = splitOutside(increment, ',');
+    for (std::size_t k = 0; k + 1 < parts.size(); ++k)
+        if (std::regex_match(parts[k] + ";", steps)) {
+            std::vector<std::string> after;
+            for (std::size_t j = k + 1; j < parts.size(); ++j) after.push_back(trimmedText(parts[j]) + ";");
+            statements.insert(statements.begin(), after.begin(), after.end());
+            break;
+        }
     const PointPlacement placed = placePoint(statements, counter, point);
     if (placed.pointAt == statements.size()) {
         why = "the statement that computes '" + point + "' from '" + counter + "' was not found";
         return {};
     }
-    const std::regex steps = stepPattern(counter);
     std::size_t stepAt = statements.size();
     std::smatch match;
     for (std::size_t i = placed.pointAt + 1; i < statements.size(); ++i)
@@ -393,8 +404,8 @@ std::string inlineFieldBody(const std::string& text, std::size_t keyword, const 
         why = "the statement that advances '" + counter + "' is not one of its loop's own statements";
         return {};
     }
-    return "{\n" + (init.empty() ? "" : init + ";\n") + givenStatements(statements, placed, point, statements.size(), stepAt) +
-           "return float(" + step + ");\n}\n";
+    return "{\n" + (init.empty() ? "" : init + ";\n") +
+           givenStatements(statements, placed, point, statements.size(), stepAt, pointSize) + "return float(" + step + ");\n}\n";
 }
 
 std::string pointMarchBody(const std::string& text, std::size_t keyword, const std::string& point, std::string& field, int factor,

@@ -33,9 +33,9 @@ std::string withLoopMacroExpanded(const std::string& text, std::size_t line);
 // `counter` (`counter += STEP;`) with `point` set to sdfwb_point after the statement that computes
 // it from `counter` and those right after it that only move or turn it (the camera's placement),
 // then `return float(STEP);`. `step` receives STEP. Empty, with `why`,
-// when the loop does not have that form.
+// when the loop does not have that form. With `pointSize` 4 the point is a vec4 whose xyz is set.
 std::string inlineFieldBody(const std::string& text, std::size_t keyword, const std::string& counter, const std::string& point,
-                            std::string& step, std::string& why);
+                            std::string& step, std::string& why, int pointSize = 3);
 
 // The same for a loop that marches the point itself (`p += rd * d;`, `p = c += e * dir;`) by a
 // float `field` computed from it: the body with `point` set to sdfwb_point at its start, up to the

@@ -150,7 +150,7 @@ void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* fu
     march.body =
         levels ? levelFieldBody(text, keyword, march.counter, march.point, *levels, march.field, march.level, march.step, why)
         : march.field.empty() && march.fieldFactor < 0
-            ? inlineFieldBody(text, keyword, march.counter, march.point, march.step, why)
+            ? inlineFieldBody(text, keyword, march.counter, march.point, march.step, why, march.pointSize)
             : pointMarchBody(text, keyword, march.point, march.field, march.fieldFactor, march.step, why);
     if (march.body.empty()) {
         march.unresolved = why;
@@ -330,6 +330,25 @@ std::optional<InlineMarch> levelMarch(TIntermAggregate* function, TIntermLoop* l
     return std::nullopt;
 }
 
+// The point of a march that steps `counter` by what `from` holds: a vec3 in it that the loop
+// computes from the counter, else such a vec4 whose xyz is the point (golfed: `p = vec4(z *
+// normalize(...), .1 * iTime)`); -1 when none. `size` receives 3 or 4.
+long long marchedPoint(const std::vector<Assignment>& assignments, const std::set<long long>& from, long long counter,
+                       const std::map<long long, TIntermSymbol*>& byId, int& size) {
+    for (const int wanted : {3, 4})
+        for (const Assignment& a : assignments) {
+            auto symbol = byId.find(a.target);
+            if (symbol == byId.end() || !from.count(a.target) || !a.reads.count(counter)) continue;
+            const glslang::TType& type = symbol->second->getType();
+            if (type.getBasicType() == glslang::EbtFloat && type.isVector() && !type.isArray() &&
+                type.getVectorSize() == wanted) {
+                size = wanted;
+                return a.target;
+            }
+        }
+    return -1;
+}
+
 } // namespace
 
 std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
@@ -419,18 +438,13 @@ std::vector<InlineMarch> inlineMarches(const ComposedShader& composed) {
                         if (a.target >= 0 && a.target != stepping.target && from.count(a.target))
                             for (long long read : a.reads) grew |= read != stepping.target && from.insert(read).second;
                 }
-                // The point: a vec3 it is computed from that the loop computes from the counter.
-                long long point = -1;
-                for (const Assignment& a : assignments)
-                    if (a.target >= 0 && from.count(a.target) && a.reads.count(stepping.target) && typeOf(a.target) &&
-                        isFloatVec3(*typeOf(a.target))) {
-                        point = a.target;
-                        break;
-                    }
+                int pointSize = 3;
+                const long long point = marchedPoint(assignments, from, stepping.target, symbols.byId, pointSize);
                 if (point < 0) continue;
                 InlineMarch march = marchAt(function, loop, composed);
                 march.counter = counter->getName().c_str();
                 march.point = symbols.byId[point]->getName().c_str();
+                march.pointSize = pointSize;
                 readInlineMarch(march, loop, function, tree, composed);
                 std::set<long long> floats; // the step's floats (`t += d`, `t += d * .5`)
                 for (long long read : stepping.reads)

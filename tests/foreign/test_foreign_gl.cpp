@@ -587,6 +587,31 @@ TEST_F(InlineFields, TheLoopBodyRunOnceIsTheField) {
            "    c = vec4(d);\n"
            "}\n";
     EXPECT_NEAR(valueAt(folder / "header.glsl", {0.2f, 0.0f, 0.0f}), -0.5f, 1e-5f);
+    // Golfed vec4 points, whose xyz is the point: the whole march in the for header, after the
+    // step (`z += d, p = vec4(...), p.z -= 3., d = ...`), and in the body.
+    std::ofstream(folder / "vec4header.glsl")
+        << "void mainImage(out vec4 O, vec2 C) {\n"
+           "    float i, d, z;\n"
+           "    vec4 o, p;\n"
+           "    for (vec2 r = iResolution.xy; ++i < 60.; z += d, p = vec4(normalize(vec3(C - .5 * r, r.y)) * z, .5),\n"
+           "         p.z -= 3., d = length(p.xyz - vec3(.2, 0, 0)) - p.w)\n"
+           "        o += 1. / max(d, 1e-3);\n"
+           "    O = tanh(o / 1e3);\n"
+           "}\n";
+    std::ofstream(folder / "vec4body.glsl") << "void mainImage(out vec4 O, vec2 C) {\n"
+                                               "    vec3 ro = vec3(0, 0, -3), rd = vec3(0, 0, 1);\n"
+                                               "    float t = 0., d;\n"
+                                               "    for (int i = 0; i < 60; i++) {\n"
+                                               "        vec4 q = vec4(ro + rd * t, .3);\n"
+                                               "        d = length(q.xyz) - q.w;\n"
+                                               "        t += d;\n"
+                                               "    }\n"
+                                               "    O = vec4(t);\n"
+                                               "}\n";
+    EXPECT_NEAR(valueAt(folder / "vec4header.glsl", {0.2f, 0.0f, 0.0f}), -0.5f, 1e-5f);
+    EXPECT_NEAR(valueAt(folder / "vec4header.glsl", {0.2f, 1.0f, 0.0f}), 0.5f, 1e-5f);
+    EXPECT_NEAR(valueAt(folder / "vec4body.glsl", {0.0f, 0.0f, 0.0f}), -0.3f, 1e-5f);
+    EXPECT_NEAR(valueAt(folder / "vec4body.glsl", {0.0f, 0.0f, 1.0f}), 0.7f, 1e-5f);
     shaders::PreparedSdf conditional = prepare(folder / "conditional.glsl");
     EXPECT_FALSE(conditional.ok());
     EXPECT_NE(firstError(conditional).find("writes its field inline, but the statement that advances 't'"), std::string::npos)

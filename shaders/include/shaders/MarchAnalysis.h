@@ -73,6 +73,7 @@ struct InlineMarch {
     std::string file;           // the composed map's file name of the loop
     int line = 0;               // the loop's line
     std::string counter, point; // `t` and `p` (the same where the loop marches the point itself)
+    int pointSize = 3;          // 4: a vec4 whose xyz is the point (golfed `p = vec4(z * dir, .1 * iTime)`)
     std::string field;          // where the point itself grows (`p += rd * d`): the float it grows by
     // Where it grows by a float expression of itself in the step (`p += (.1 - length(o.xy)) * d`,
     // golfed): that factor's index (0 or 1) in the step's product, and `field` its text once read.
