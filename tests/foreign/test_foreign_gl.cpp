@@ -235,20 +235,25 @@ INSTANTIATE_TEST_SUITE_P(Corpus, ForeignCode, ::testing::ValuesIn(corpusFiles())
 // a density is no level.
 class LevelFields : public sdfwb::testing::GlTest {};
 
+namespace {
+// The field a whole shader's march writes inline (its loop's body run once), at `p`.
+float valueAt(const fs::path& name, glm::vec3 p) {
+    shaders::PreparedSdf sdf = prepare(kFolder / name); // an absolute `name` stands for itself
+    EXPECT_TRUE(sdf.ok()) << firstError(sdf);
+    EXPECT_FALSE(sdf.signature.inlineBody.empty()) << name;
+    renderer::SampleCompute compute;
+    EXPECT_FALSE(shaders::hasErrors(compute.build(sdf, *shaders::builtinPiece("analysis/points.glsl"))));
+    sampling::SamplingJob job;
+    job.count = 1;
+    job.inputPoints = &p.x;
+    float position[3], distance = 0.0f, gradient[3];
+    EXPECT_TRUE(sampling::sampleInto(compute, job, position, &distance, gradient, {}).hasValue());
+    compute.releaseGl();
+    return distance;
+}
+} // namespace
+
 TEST_F(LevelFields, TheComparedDifferenceIsTheField) {
-    auto valueAt = [](const fs::path& name, glm::vec3 p) {
-        shaders::PreparedSdf sdf = prepare(kFolder / name);
-        EXPECT_TRUE(sdf.ok()) << firstError(sdf);
-        renderer::SampleCompute compute;
-        EXPECT_FALSE(shaders::hasErrors(compute.build(sdf, *shaders::builtinPiece("analysis/points.glsl"))));
-        sampling::SamplingJob job;
-        job.count = 1;
-        job.inputPoints = &p.x;
-        float position[3], distance = 0.0f, gradient[3];
-        EXPECT_TRUE(sampling::sampleInto(compute, job, position, &distance, gradient, {}).hasValue());
-        compute.releaseGl();
-        return distance;
-    };
     auto terrain = [](float x, float z) {
         return 0.25f * std::sin(1.7f * x) * std::cos(1.3f * z) + 0.1f * std::sin(3.1f * x + 2.3f * z) - 0.2f;
     };
@@ -502,20 +507,6 @@ class ShadertoyPictureOf : public sdfwb::testing::GlTest, public ::testing::With
 class InlineFields : public sdfwb::testing::GlTest {};
 
 TEST_F(InlineFields, TheLoopBodyRunOnceIsTheField) {
-    auto valueAt = [](const fs::path& name, glm::vec3 p) {
-        shaders::PreparedSdf sdf = prepare(kFolder / name); // an absolute `name` stands for itself
-        EXPECT_TRUE(sdf.ok()) << firstError(sdf);
-        EXPECT_FALSE(sdf.signature.inlineBody.empty()) << name;
-        renderer::SampleCompute compute;
-        EXPECT_FALSE(shaders::hasErrors(compute.build(sdf, *shaders::builtinPiece("analysis/points.glsl"))));
-        sampling::SamplingJob job;
-        job.count = 1;
-        job.inputPoints = &p.x;
-        float position[3], distance = 0.0f, gradient[3];
-        EXPECT_TRUE(sampling::sampleInto(compute, job, position, &distance, gradient, {}).hasValue());
-        compute.releaseGl();
-        return distance;
-    };
     EXPECT_NEAR(valueAt("63_st_inline_sphere_on_floor.glsl", {0.0f, 0.1f, 0.0f}), -0.45f, 1e-5f);
     EXPECT_NEAR(valueAt("63_st_inline_sphere_on_floor.glsl", {0.0f, 2.0f, 0.0f}), 1.45f, 1e-5f);
     EXPECT_NEAR(valueAt("65_st_inline_trace_function.glsl", {0.0f, 0.0f, 0.0f}), -0.45f, 1e-5f);
