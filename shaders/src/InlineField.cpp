@@ -4,6 +4,7 @@
 #include <core/Regex.h>
 #include <shaders/SdfSource.h>
 
+#include <algorithm>
 #include <map>
 #include <optional>
 #include <regex>
@@ -522,20 +523,24 @@ std::string operand(const std::string& text) {
     return std::regex_match(text, simple) ? text : "(" + text + ")";
 }
 
-// The first comparison of `condition` with a side that mentions one of `levels`, as the difference
+// Whether `text` mentions one of `names`.
+bool mentionsAny(const std::string& text, const std::set<std::string>& names) {
+    return std::any_of(names.begin(), names.end(), [&](const std::string& name) { return mentions(text, name); });
+}
+
+// The first comparison of `condition` that `levels` makes a level (LevelNames), as the difference
 // that is negative where the march stops: left - right when it stops where left is below right
 // (`stops` and < or <=, or going on while left is above it). False when none does.
-bool levelOf(const std::string& condition, bool stops, const std::set<std::string>& levels, std::string& field,
-             std::string& level) {
+bool levelOf(const std::string& condition, bool stops, const LevelNames& levels, std::string& field, std::string& level) {
     for (const Comparison& comparison : comparisonsOf(condition))
-        for (const std::string& name : levels)
-            if (mentions(comparison.left, name) || mentions(comparison.right, name)) {
-                const bool leftBelow = (comparison.op[0] == '<') == stops;
-                field = leftBelow ? operand(comparison.left) + " - " + operand(comparison.right)
-                                  : operand(comparison.right) + " - " + operand(comparison.left);
-                level = comparison.text();
-                return true;
-            }
+        if (mentionsAny(comparison.left, levels.values) || mentionsAny(comparison.right, levels.values) ||
+            (mentionsAny(comparison.left, levels.sides) && mentionsAny(comparison.right, levels.sides))) {
+            const bool leftBelow = (comparison.op[0] == '<') == stops;
+            field = leftBelow ? operand(comparison.left) + " - " + operand(comparison.right)
+                              : operand(comparison.right) + " - " + operand(comparison.left);
+            level = comparison.text();
+            return true;
+        }
     return false;
 }
 
@@ -557,7 +562,7 @@ bool readIf(const std::string& statement, std::string& condition, std::string& b
 } // namespace
 
 std::string levelFieldBody(const std::string& text, std::size_t keyword, const std::string& counter, const std::string& point,
-                           const std::set<std::string>& levels, std::string& field, std::string& level, std::string& step,
+                           const LevelNames& levels, std::string& field, std::string& level, std::string& step,
                            std::string& why) {
     std::string init, increment, test;
     std::vector<std::string> statements;

@@ -50,12 +50,16 @@ std::string pointMarchBody(const std::string& text, std::size_t keyword, const s
 // point) and stops where a value of the point crosses a level: an if after the point that leaves
 // the loop (`if (p.y < h) break;`, `if (v > 0.) return t;`), else the loop's test or an if that
 // holds the step (`if (h < p.y) { t += dt; p = ...; h = f(p.xz); }`). The comparison's side must
-// mention one of `levels` (what the loop computes from the point through the shader's functions,
-// and those functions). The body computes the point's value as the loop does (the statements
+// mention one of `levels.values` (what the loop computes from the point through the shader's
+// functions, and those functions), or both its sides one of `levels.sides` (the point and what the
+// loop computes from it: a height written inline). The body computes the point's value as the loop does (the statements
 // before that if, or all of them), then returns `field`: the sides' difference, negative where the
 // march stops (`p.y - h`, `0.0 - v`); `level` receives the comparison as written.
+struct LevelNames {
+    std::set<std::string> values; // a side that mentions one makes the comparison the level
+    std::set<std::string> sides;  // two sides that each mention one do (`cos(p.z) - abs(sin(p.x)) < p.y`)
+};
 std::string levelFieldBody(const std::string& text, std::size_t keyword, const std::string& counter, const std::string& point,
-                           const std::set<std::string>& levels, std::string& field, std::string& level, std::string& step,
-                           std::string& why);
+                           const LevelNames& levels, std::string& field, std::string& level, std::string& step, std::string& why);
 
 } // namespace sdfwb::shaders

@@ -109,7 +109,7 @@ std::string withoutInactiveBranches(std::string code) {
 
 // Fills an inline march's prelude and body from its loop's text (InlineField.h), or its unresolved.
 void readInlineMarch(InlineMarch& march, TIntermLoop* loop, TIntermAggregate* function, const Reached& tree,
-                     const ComposedShader& composed, const std::set<std::string>* levels = nullptr) {
+                     const ComposedShader& composed, const LevelNames* levels = nullptr) {
     const bool isMainImage = function == tree.mainImage;
     const int file = loop->getLoc().string;
     if (file < 0 || file >= int(composed.map.files.size()) || function->getLoc().string != file) {
@@ -247,11 +247,12 @@ struct StopTests : glslang::TIntermTraverser {
 // A march that steps a fixed amount and stops where a value of the point crosses a level
 // (InlineMarch::level): `counter` (a float, or the vec3 point itself) grows by what reads no value
 // of the point, and a stop test compares a value the loop computes from the point through the
-// shader's functions (`h = terrain(p.xz)`, not accumulated) or such a call itself. The names of
-// those values and functions go to `levels`; the point's symbol is returned, or -1.
+// shader's functions (`h = terrain(p.xz)`, not accumulated) or such a call itself, or both its
+// sides read the point (a height written inline: `cos(p.z) - abs(sin(p.x)) < p.y`). The names
+// go to `levels` (LevelNames); the point's symbol is returned, or -1.
 long long levelMarchPoint(TIntermLoop* loop, const Assignment& stepping, TIntermBinary* stepNode,
                           const std::vector<Assignment>& assignments, const std::map<long long, TIntermSymbol*>& byId,
-                          std::set<std::string>& levels) {
+                          LevelNames& levels) {
     auto typeOf = [&](long long id) -> const glslang::TType* {
         auto it = byId.find(id);
         return it == byId.end() ? nullptr : &it->second->getType();
@@ -284,14 +285,32 @@ long long levelMarchPoint(TIntermLoop* loop, const Assignment& stepping, TInterm
         tests.inTest = true;
         loop->getTest()->traverse(&tests);
     }
+    std::set<long long> derived{point}; // the point and what the loop computes from it, not added up
+    for (const Assignment& a : assignments)
+        if (a.target >= 0 && a.target != stepping.target && a.op == glslang::EOpAssign && readsPoint(a.reads))
+            derived.insert(a.target);
+    for (const Assignment& a : assignments)
+        if (a.target != point && (a.op != glslang::EOpAssign || a.reads.count(a.target))) derived.erase(a.target);
+    auto name = [&](long long symbol) { return std::string(byId.at(symbol)->getName().c_str()); };
     for (TIntermBinary* comparison : tests.comparisons) {
         const Contents read = contentsOf(comparison);
         for (long long symbol : read.symbols)
-            if (values.count(symbol)) levels.insert(byId.at(symbol)->getName().c_str());
+            if (values.count(symbol)) levels.values.insert(name(symbol));
         for (TIntermAggregate* call : read.calls)
-            if (readsPoint(contentsOf(call).symbols)) levels.insert(plainName(call->getName()));
+            if (readsPoint(contentsOf(call).symbols)) levels.values.insert(plainName(call->getName()));
+        auto sideReads = [&](TIntermTyped* side, bool keep) {
+            bool found = false;
+            for (long long symbol : contentsOf(side).symbols)
+                if (derived.count(symbol)) {
+                    found = true;
+                    if (keep) levels.sides.insert(name(symbol));
+                }
+            return found;
+        };
+        if (sideReads(comparison->getLeft(), false) && sideReads(comparison->getRight(), false))
+            sideReads(comparison->getLeft(), true), sideReads(comparison->getRight(), true);
     }
-    return levels.empty() ? -1 : point;
+    return levels.values.empty() && levels.sides.empty() ? -1 : point;
 }
 
 InlineMarch marchAt(TIntermAggregate* function, TIntermLoop* loop, const ComposedShader& composed) {
@@ -313,21 +332,23 @@ std::optional<InlineMarch> levelMarch(TIntermAggregate* function, TIntermLoop* l
                                       const std::vector<Assignment>& assignments, const std::set<TIntermBinary*>& nested,
                                       const std::map<long long, TIntermSymbol*>& byId, const Reached& tree,
                                       const ComposedShader& composed) {
+    std::optional<InlineMarch> first; // the first such march, if none can be read
     for (std::size_t s = 0; s < inside.assignments.size(); ++s) {
         const Assignment& stepping = assignments[s];
         if ((stepping.op != glslang::EOpAddAssign && stepping.op != glslang::EOpSubAssign) || stepping.target < 0 ||
             nested.count(inside.assignments[s]) || !inside.assignments[s]->getLeft()->getAsSymbolNode())
             continue;
-        std::set<std::string> levels;
+        LevelNames levels;
         const long long point = levelMarchPoint(loop, stepping, inside.assignments[s], assignments, byId, levels);
         if (point < 0) continue;
         InlineMarch march = marchAt(function, loop, composed);
         march.counter = byId.at(stepping.target)->getName().c_str();
         march.point = byId.at(point)->getName().c_str();
         readInlineMarch(march, loop, function, tree, composed, &levels);
-        return march;
+        if (!march.body.empty()) return march;
+        if (!first) first = std::move(march);
     }
-    return std::nullopt;
+    return first;
 }
 
 // The point of a march that steps `counter` by what `from` holds: a vec3 in it that the loop

@@ -231,8 +231,9 @@ INSTANTIATE_TEST_SUITE_P(Corpus, ForeignCode, ::testing::ValuesIn(corpusFiles())
 // A march that steps a fixed amount and stops where a value of its point crosses a level: the
 // field is that difference (issue 47's fixed-step marches). 84 stops where p.y < h under a height
 // field, 85 where a potential turns positive; a loop that goes on while the terrain is below its
-// point (`if (h < p.y) { t += dt; p = ...; h = ...; }`) stops where that ends; a loop that adds up
-// a density is no level.
+// point (`if (h < p.y) { t += dt; p = ...; h = ...; }`) stops where that ends, as does a golfed
+// loop whose test compares a height written inline with p.y; a loop that adds up a density, or
+// stops only when it leaves a ball, is no level.
 class LevelFields : public sdfwb::testing::GlTest {};
 
 namespace {
@@ -302,6 +303,26 @@ TEST_F(LevelFields, TheComparedDifferenceIsTheField) {
                                               "    }\n"
                                               "    c = vec4(sum);\n"
                                               "}\n";
+    // Golfed: the height written inline in the loop's test, both sides of the point; a fixed-step
+    // loop whose only test is an escape (a value of the point against a constant) is none.
+    std::ofstream(folder / "golfed.glsl") << "void mainImage(out vec4 f, in vec2 w) {\n"
+                                             "    vec3 d = vec3(w / iResolution.xy - .5, 1), o = vec3(0, 1, 0), p;\n"
+                                             "    float i = 0.;\n"
+                                             "    for (; i < 9. && sin(p.x) * .3 < p.y; i += .01) p = o + d * i;\n"
+                                             "    f = vec4(i / 9.);\n"
+                                             "}\n";
+    std::ofstream(folder / "escape.glsl") << "void mainImage(out vec4 c, in vec2 f) {\n"
+                                             "    vec3 ro = vec3(0.0, 0.0, -3.0), rd = vec3(0.0, 0.0, 1.0);\n"
+                                             "    float glow = 0.0;\n"
+                                             "    for (float t = 0.0; t < 8.0; t += 0.05) {\n"
+                                             "        vec3 p = ro + rd * t;\n"
+                                             "        if (length(p) > 4.0) break;\n"
+                                             "        glow += 0.01 / (0.01 + dot(p, p));\n"
+                                             "    }\n"
+                                             "    c = vec4(glow);\n"
+                                             "}\n";
+    EXPECT_NEAR(valueAt(folder / "golfed.glsl", {0.5f, 0.2f, 0.0f}), 0.2f - 0.3f * std::sin(0.5f), 1e-5f);
+    EXPECT_FALSE(prepare(folder / "escape.glsl").ok()) << "an escape test is no level";
     EXPECT_NEAR(valueAt(folder / "going.glsl", {0.4f, 0.2f, 0.0f}), 0.2f - (0.3f * std::sin(0.8f) - 0.1f), 1e-5f);
     const shaders::PreparedSdf going = prepare(folder / "going.glsl");
     EXPECT_NE(going.entryReason.find("stops where h < at.y: the field is at.y - h"), std::string::npos) << going.entryReason;
