@@ -3,7 +3,9 @@
 #include <renderer/GlInfo.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <vector>
 
 namespace sdfwb::renderer {
 
@@ -185,6 +187,54 @@ void SampleCompute::releaseGl() {
     if (m_impl->values) m_impl->values->releaseGl();
     for (auto& host : m_impl->hostRows)
         for (std::vector<float>& rows : host) std::vector<float>().swap(rows);
+}
+
+Expected<CopyRate> measureCopyToHost(std::size_t bytes, int repeats) {
+    while (glGetError() != GL_NO_ERROR) {}
+    GLuint ids[2] = {0, 0};
+    glGenBuffers(2, ids);
+    GlBuffer device(ids[0]), host(ids[1]);
+    glBindBuffer(GL_COPY_READ_BUFFER, device.id());
+    glBufferStorage(GL_COPY_READ_BUFFER, GLsizeiptr(bytes), nullptr, 0);
+    glBindBuffer(GL_COPY_WRITE_BUFFER, host.id());
+    const GLbitfield access = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+    glBufferStorage(GL_COPY_WRITE_BUFFER, GLsizeiptr(bytes), nullptr, access | GL_CLIENT_STORAGE_BIT);
+    const void* mapped = glMapBufferRange(GL_COPY_WRITE_BUFFER, 0, GLsizeiptr(bytes), access);
+    if (const GLenum error = glGetError(); error != GL_NO_ERROR || !mapped) {
+        glBindBuffer(GL_COPY_READ_BUFFER, 0);
+        glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+        return makeError("copy rate: cannot allocate two buffers of " + std::to_string(bytes) + " bytes (" +
+                         (error != GL_NO_ERROR ? glErrorName(error) : std::string("mapping failed")) + ")");
+    }
+    std::vector<double> timed, walls;
+    GpuTimer timer;
+    for (int k = 0; k <= repeats; ++k) {
+        const auto start = std::chrono::steady_clock::now();
+        timer.begin();
+        glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, GLsizeiptr(bytes));
+        timer.end();
+        GLsync fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+        glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, GLuint64(60) * 1000000000u);
+        glDeleteSync(fence);
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double milliseconds = timer.milliseconds(wall * 1e3 + 1.0);
+        if (k == 0) continue; // the warm-up: first touches of the pages
+        walls.push_back(double(bytes) / wall);
+        if (milliseconds > 0.0 && !softwareRasteriser()) timed.push_back(double(bytes) / (milliseconds * 1e-3));
+    }
+    timer.reset();
+    glBindBuffer(GL_COPY_WRITE_BUFFER, host.id());
+    glUnmapBuffer(GL_COPY_WRITE_BUFFER);
+    glBindBuffer(GL_COPY_READ_BUFFER, 0);
+    glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+    auto median = [](std::vector<double>& v) {
+        std::sort(v.begin(), v.end());
+        return v.empty() ? -1.0 : v[v.size() / 2];
+    };
+    CopyRate rate;
+    rate.wallBytesPerSecond = median(walls);
+    rate.timerBytesPerSecond = median(timed);
+    return rate;
 }
 
 } // namespace sdfwb::renderer

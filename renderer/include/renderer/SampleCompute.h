@@ -147,6 +147,16 @@ private:
     std::unique_ptr<Impl> m_impl;
 };
 
+// The ceiling for rows a GPU hands back (issue 49): `bytes` copied by the GPU (glCopyBufferSubData)
+// from GPU memory into a persistently mapped host buffer, `repeats` times after one warm-up copy;
+// the median rate in bytes/s by the GPU's timer (-1 where the timer cannot be trusted) and by the
+// wall clock up to the copy's fence. Fails with a message when the buffers cannot be had.
+struct CopyRate {
+    double timerBytesPerSecond = -1.0;
+    double wallBytesPerSecond = 0.0;
+};
+Expected<CopyRate> measureCopyToHost(std::size_t bytes, int repeats = 5);
+
 // Smallest n with n^3 >= count, and with n^2 >= count (exact integer arithmetic).
 std::uint32_t cubeSide(std::uint64_t count);
 std::uint32_t squareSide(std::uint64_t count);
