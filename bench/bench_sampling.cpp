@@ -110,7 +110,7 @@ Best bestReference(bench::ReferenceField field, std::size_t n, std::vector<float
     return best;
 }
 
-// On a GPU, issue 49's goals at a scale that fills it: 2^25 rows of each field (two 2^24-row chunks)
+// On a GPU, issue 49's goals at a scale that fills it: 2^25 rows of each field (in the driver's chunks)
 // into host memory, the whole sampleInto() call timed (median of 3), beside the GPU's own copy rate
 // into mapped host memory measured here (the ceiling for rows handed back; 28 bytes a row).
 // (SDFWB_GOAL_ROWS=N runs the section anywhere with N rows: how it is tried on llvmpipe.)

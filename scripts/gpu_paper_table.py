@@ -92,7 +92,7 @@ def main():
         gl,
         "",
         "The paper: \"Render is the time to sphere trace that SDF at 1280x720 resolution on an NVIDIA RTX Titan\" (a",
-        "2018 Turing card; the run above is on the GPU it names). The shapes are matched by name: the two datasets",
+        "2018 Turing card; the run above names its own GPU). The shapes are matched by name: the two datasets",
         "wrote their own GLSL for them, so a row compares the same shape, not the same code. sdfwb's frame: the",
         "tracer bench's full-resolution frame at 1280x720 (Gooch shading, the march the viewport settles on), its",
         "wall time to glFinish (median of 3) and, where the driver's timer is trusted, the GPU time of the frame's",

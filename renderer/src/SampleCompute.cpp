@@ -253,10 +253,13 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
         if (sdf.meshIsTheField && chosen == meshfield::MeshEngine::Cpu) query = meshfield::meshQuery(sdf.mesh);
     }
     shaders::FeatureDefines features;
-    // The GPU engine on a mesh's own field: positions here, values in Morton order by a second
-    // program (SDFWB_MESH_MORTON=0: one pass, the rows in their sampler's order; for benchmarks).
+    // The GLSL engine on a mesh's own field: where the driver runs shaders on the CPU, positions
+    // here and values in Morton order by a second program (neighbouring lanes walk the same nodes);
+    // on a GPU one pass in the sampler's order, which the H200 ran faster (2026-11-30, docs/gpu.md:
+    // the bunny's rand 12.2 against 4.9 M rows/s, near 7.7 against 4.6). SDFWB_MESH_MORTON=0 or 1
+    // forces one or two passes (benchmarks).
     const char* morton = std::getenv("SDFWB_MESH_MORTON");
-    const bool sorted = !(morton && std::string_view(morton) == "0");
+    const bool sorted = morton && *morton ? std::string_view(morton) != "0" : softwareRasteriser();
     const bool twoPass = sdf.mesh && sdf.meshIsTheField && !query && sorted && sampler.name != "sdfwb:analysis/points.glsl";
     if (query || twoPass) features["SDFWB_POSITIONS_ONLY"] = "1";
     // Benchmarks: the GLSL mesh field counts the nodes its walks visit (a count no driver changes).

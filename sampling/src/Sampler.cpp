@@ -299,8 +299,64 @@ Expected<void> validate(const SamplingJob& job) {
     return {};
 }
 
+// SDFWB_SAMPLE_RING=0: arrays in memory one chunk at a time through SampleCompute::run(), the
+// path the ring replaced for them (tests compare the two bit for bit; benchmarks).
+bool sampleIntoInOrder() {
+    const char* setting = std::getenv("SDFWB_SAMPLE_RING");
+    return setting && setting[0] == '0';
+}
+
+// Copies `n` rows of a mapped chunk into the caller's arrays at row `at`: on one thread where the
+// driver computes on the cores (its threads need them), on every core where a GPU does.
+void copyOut(const renderer::MappedRows& rows, std::size_t n, std::uint64_t at, float* positions, float* distances,
+             float* gradients) {
+    auto part = [&](std::size_t begin, std::size_t end) {
+        std::copy(rows.positions + 3 * begin, rows.positions + 3 * end, positions + 3 * (at + begin));
+        std::copy(rows.distances + begin, rows.distances + end, distances + at + begin);
+        std::copy(rows.gradients + 3 * begin, rows.gradients + 3 * end, gradients + 3 * (at + begin));
+    };
+    const std::size_t cores = renderer::softwareRasteriser() ? 1 : std::max(1u, std::thread::hardware_concurrency());
+    const std::size_t parts = std::min(cores, std::max<std::size_t>(1, n / 65536));
+    if (parts <= 1) return part(0, n);
+    std::vector<std::thread> threads;
+    for (std::size_t k = 1; k < parts; ++k) threads.emplace_back(part, n * k / parts, n * (k + 1) / parts);
+    part(0, n / parts);
+    for (std::thread& thread : threads) thread.join();
+}
+
+// Every array asked for: the ring, as a file takes its rows (chunks computed ahead, each read
+// where the shader or the GPU's copy left it once its fence has signalled), copied out here.
+Expected<SamplingReport> sampleIntoRing(renderer::SampleCompute& compute, const SamplingJob& job, float* positions,
+                                        float* distances, float* gradients, const ProgressSink& progress) {
+    const renderer::SamplePipeline ring = compute.pipeline();
+    std::deque<std::uint64_t> offsets; // where each chunk in flight goes, oldest first
+    int next = 0;
+    auto submit = [&](const renderer::SampleUniforms& uniforms, std::uint32_t first, std::uint64_t done,
+                      std::uint32_t count) -> Expected<int> {
+        const int slot = next;
+        if (auto ok = compute.submitMapped(uniforms, first, count, slot); !ok) return ok.error();
+        next = (next + 1) % ring.sets;
+        offsets.push_back(done);
+        return slot;
+    };
+    auto collect = [&](int slot) { return compute.collectMapped(slot); };
+    auto consume = [&](const renderer::MappedRows& rows, std::size_t n, int) -> Expected<void> {
+        copyOut(rows, n, offsets.front(), positions, distances, gradients);
+        offsets.pop_front();
+        return {};
+    };
+    const double kernelBefore = compute.kernelMilliseconds(), copyBefore = compute.copyMilliseconds();
+    auto report = run(job, chunkFor(job, compute), ring.ahead, submit, collect, consume, progress);
+    const double kernelAfter = compute.kernelMilliseconds(), copyAfter = compute.copyMilliseconds();
+    if (report && kernelBefore >= 0.0 && kernelAfter >= 0.0) report->kernelSeconds = (kernelAfter - kernelBefore) / 1000.0;
+    if (report && copyBefore >= 0.0 && copyAfter >= 0.0) report->copySeconds = (copyAfter - copyBefore) / 1000.0;
+    return report;
+}
+
 Expected<SamplingReport> sampleInto(renderer::SampleCompute& compute, const SamplingJob& job, float* positions, float* distances,
                                     float* gradients, const ProgressSink& progress) {
+    if (positions && gradients && !sampleIntoInOrder())
+        return sampleIntoRing(compute, job, positions, distances, gradients, progress);
     // One chunk at a time, each finished before the next (the rows go to the caller's arrays).
     std::uint32_t lastBad = 0;
     auto submit = [&](const renderer::SampleUniforms& uniforms, std::uint32_t first, std::uint64_t done,

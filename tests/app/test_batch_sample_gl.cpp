@@ -184,8 +184,14 @@ TEST(ResourceLimits, UnwritableOutputIsNamedBeforeAnyWork) {
 TEST(ResourceLimits, OutOfMemoryContinuesInSmallerChunksWithTheSameRows) {
     // Reference rows with small chunks, no limit.
     const fs::path reference = scratch("oom-reference.bin");
-    ASSERT_EQ(
-        run("--batch sample --sdf sphere --pattern rand -n 4194240 --chunk 65536 -q --output " + reference.string()).exitCode, 0);
+    const Result first =
+        run("--batch sample --sdf sphere --pattern rand -n 4194240 --chunk 65536 --output " + reference.string());
+    ASSERT_EQ(first.exitCode, 0) << first.output;
+    // A GPU's buffers live in its own memory, where an address-space limit does not reach them
+    // (NVIDIA's H200 ran every limit below to the end in one chunk): the premise holds only where
+    // the driver keeps them in the process.
+    if (first.output.find("llvmpipe") == std::string::npos && first.output.find("softpipe") == std::string::npos)
+        GTEST_SKIP() << "the GL driver is a GPU's: an address-space limit does not bind its buffers";
     // One dispatch of 4 194 240 samples needs ~117 MB of buffers in llvmpipe: under an address
     // space limit it fails with GL_OUT_OF_MEMORY. The run halves its chunks and goes on; the rows
     // depend only on their index, so the file is the same. The limit that shows it depends on the

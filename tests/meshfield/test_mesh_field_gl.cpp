@@ -4,6 +4,8 @@
 // the Morton pass and the CPU engine bit for bit, and the gradient exact or by taps.
 #include "MeshSdfTesting.h"
 
+#include <renderer/GlInfo.h>
+
 namespace sdfwb::meshsdftest {
 namespace {
 
@@ -160,8 +162,9 @@ TEST_F(MeshSdfTest, TheGlslFieldReturnsEachPointsValueInTheCallersOrder) {
     }
 }
 
-// On the GPU engine a mesh's own field is sampled in two passes: the sampler's positions, then the
-// values in Morton order (SampleCompute's values program); SDFWB_MESH_MORTON=0 keeps one pass in the
+// The GLSL engine samples a mesh's own field in two passes (SDFWB_MESH_MORTON=1; the default where
+// the driver runs shaders on the CPU): the sampler's positions, then the values in Morton order
+// (SampleCompute's values program); SDFWB_MESH_MORTON=0 (a GPU's default) keeps one pass in the
 // sampler's order. The same rows bit for bit, the gradient exact or by taps.
 TEST_F(MeshSdfTest, TheGlslFieldsMortonPassWritesTheOnePassRowsBitForBit) {
     auto field = meshfield::makeMeshField(testing::torusMesh(0.6f, 0.25f, 48, 16), "torus.obj", {});
@@ -174,8 +177,9 @@ TEST_F(MeshSdfTest, TheGlslFieldsMortonPassWritesTheOnePassRowsBitForBit) {
             if (taps && std::string_view(pattern) == "metropolis") continue;
             setenv("SDFWB_MESH_MORTON", "0", 1);
             const Rows one = sampleRows(sdf, pattern, 3000, "gpu", taps);
-            unsetenv("SDFWB_MESH_MORTON");
+            setenv("SDFWB_MESH_MORTON", "1", 1);
             const Rows two = sampleRows(sdf, pattern, 3000, "gpu", taps);
+            unsetenv("SDFWB_MESH_MORTON");
             EXPECT_FALSE(one.positionsOnly);
             EXPECT_TRUE(two.positionsOnly) << "the values pass runs";
             auto differing = [](const std::vector<float>& a, const std::vector<float>& b) {
@@ -188,6 +192,8 @@ TEST_F(MeshSdfTest, TheGlslFieldsMortonPassWritesTheOnePassRowsBitForBit) {
             EXPECT_EQ(differing(one.gradients, two.gradients), 0) << pattern << " taps " << taps;
             EXPECT_LT(*std::max_element(two.distances.begin(), two.distances.end()), 2.0f) << pattern;
         }
+    EXPECT_EQ(sampleRows(sdf, "rand", 300, "gpu", false).positionsOnly, renderer::softwareRasteriser())
+        << "by default two passes only where the driver runs shaders on the CPU";
 }
 
 TEST_F(MeshSdfTest, TheCpuEngineWritesTheGlslFieldsValuesAtTheSamePositionsBitForBit) {

@@ -2,6 +2,7 @@
 // against closed forms on a sphere, plus determinism across chunk sizes, shards and merges.
 
 #include <core/Log.h>
+#include <renderer/GlInfo.h>
 #include <renderer/HeadlessContext.h>
 #include <renderer/SampleCompute.h>
 #include <renderer/SamplingBindings.h>
@@ -21,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <linux/magic.h>
@@ -337,17 +339,28 @@ TEST_F(SamplerTest, TheGpuBadRowCountEqualsTheRowsWrittenForEveryPatternAndForma
     EXPECT_TRUE(warnings.empty()) << warnings.front();
 }
 
+// Arrays in memory go through the ring (chunks ahead, read where they were left, copied out):
+// the rows of SampleCompute::run()'s one chunk at a time (SDFWB_SAMPLE_RING=0), and the bad-row
+// count too, with the ring wrapping around several times.
 TEST_F(SamplerTest, SameSeedSameRowsWhateverTheChunkSize) {
-    for (const char* pattern : {"rand", "near", "metropolis"}) {
-        sampling::SampleSet a, b, c;
+    for (const char* pattern : {"rand", "near", "metropolis", "surface"}) {
+        sampling::SampleSet a, b, c, inOrder;
         sampling::SamplingJob j = job(5000, 42);
         j.chunkSize = 5000;
         sample(kSphere, pattern, j, a);
         j.chunkSize = 777;
-        sample(kSphere, pattern, j, b);
+        const sampling::SamplingReport ring = sample(kSphere, pattern, j, b);
+        setenv("SDFWB_SAMPLE_RING", "0", 1);
+        const sampling::SamplingReport plain = sample(kSphere, pattern, j, inOrder);
+        unsetenv("SDFWB_SAMPLE_RING");
         EXPECT_EQ(a.positions, b.positions) << pattern;
         EXPECT_EQ(a.distances, b.distances) << pattern;
         EXPECT_EQ(a.gradients, b.gradients) << pattern;
+        EXPECT_EQ(std::memcmp(b.positions.data(), inOrder.positions.data(), b.positions.size() * 4), 0) << pattern;
+        EXPECT_EQ(std::memcmp(b.distances.data(), inOrder.distances.data(), b.distances.size() * 4), 0) << pattern;
+        EXPECT_EQ(std::memcmp(b.gradients.data(), inOrder.gradients.data(), b.gradients.size() * 4), 0) << pattern;
+        EXPECT_EQ(ring.badRows, plain.badRows) << pattern;
+        EXPECT_EQ(ring.rows, 5000u) << pattern;
         sample(kSphere, pattern, job(5000, 43), c);
         EXPECT_NE(a.positions, c.positions) << pattern << ": another seed must give other points";
     }
@@ -427,23 +440,25 @@ TEST_F(SamplerTest, FilesAreTheSameBitForBitWhateverTheChunkTheRingAndTheStaging
 }
 
 // On llvmpipe a dispatch runs before it returns: one chunk at a time, read where the shader wrote
-// it, 2^18 rows; the settings a caller gives are kept within their bounds.
+// it, 2^18 rows. On a GPU all but two sets on the GPU ahead, rows copied by the GPU into mapped
+// host buffers, 2^21 rows. The settings a caller gives are kept within their bounds.
 TEST_F(SamplerTest, TheRingIsChosenPerDriverAndKeptWithinItsBounds) {
     renderer::SampleCompute compute;
     auto sampler = sampling::findSampler("rand", {});
     ASSERT_TRUE(sampler.hasValue());
     ASSERT_FALSE(shaders::hasErrors(compute.build(prepare(kSphere), *sampler)));
+    const bool software = renderer::softwareRasteriser();
     const renderer::SamplePipeline chosen = compute.pipeline();
     EXPECT_EQ(chosen.sets, 4);
-    EXPECT_EQ(chosen.ahead, 1);
-    EXPECT_EQ(chosen.staging, 0);
-    EXPECT_EQ(compute.preferredChunk(), renderer::SampleCompute::kSoftwareChunk);
+    EXPECT_EQ(chosen.ahead, software ? 1 : 2);
+    EXPECT_EQ(chosen.staging, software ? 0 : 1);
+    EXPECT_EQ(compute.preferredChunk(), software ? renderer::SampleCompute::kSoftwareChunk : renderer::SampleCompute::kGpuChunk);
     compute.setPipeline({2, 9, 1}); // too few slots, too many ahead
     EXPECT_EQ(compute.pipeline().sets, 3);
     EXPECT_EQ(compute.pipeline().ahead, 1);
     compute.setPipeline({20, 0, -1});
     EXPECT_EQ(compute.pipeline().sets, renderer::SampleCompute::kMaxSlots);
-    EXPECT_EQ(compute.pipeline().ahead, 1) << "per driver";
+    EXPECT_EQ(compute.pipeline().ahead, software ? 1 : renderer::SampleCompute::kMaxSlots - 2) << "per driver";
     // Submitted ahead and collected in turn: the same rows as one chunk at a time.
     renderer::SampleUniforms uniforms;
     uniforms.sampleCount = 3000;

@@ -97,7 +97,7 @@ struct SampleRequest {
     float time = 0.0f;
     std::uint32_t shardIndex = 0;
     std::uint32_t shardCount = 1;
-    std::uint32_t chunkSize = 0; // rows per dispatch; 0: chosen per driver (2^18 on llvmpipe, 2^24 on a GPU)
+    std::uint32_t chunkSize = 0; // rows per dispatch; 0: chosen per driver (2^18 on llvmpipe, 2^21 on a GPU)
     // Central-difference step of the written gradient. 0 (the default): 1e-3, except that a mesh's
     // own field writes its exact gradient (from the closest point); a step given asks for taps.
     float gradientStep = 0.0f;

@@ -1,0 +1,98 @@
+#!/usr/bin/env python3
+"""docs/gpu.md from what the lent GPU machine printed, kept as it came back in docs/data/gpu/:
+scripts/device_check's report (device-check.md, its log gzipped beside it) and the outputs of the
+commands run after it on the same machine (tracer.md, bad-rows.txt, meshes.md, test-meshing.txt),
+each under the command that made it; then the issues' goals against those figures. Nothing is
+typed by hand: a figure below is a line of those files or computed from them here.
+
+    /usr/bin/python3 scripts/gpu_doc.py && scripts/check_docs --stamp docs/gpu.md
+"""
+import os
+import re
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+DATA = os.path.join(ROOT, "docs", "data", "gpu")
+OUT = os.path.join(ROOT, "docs", "gpu.md")
+BUNDLE = "/tmp/b"  # where the commands below unpacked .device/bundle.tar.xz
+
+# What came after device_check's run, in the order it ran, with the command that made each file
+# (the environment was device_check's: the bundle's libraries, NVIDIA's EGL vendor file,
+# SDFWB_EGL_PLATFORM=device, the repository at /work/main).
+LATER = [
+    ("tracer.md", "Tracer against the reference tracer (bench/bench_tracer.cpp), every dataset SDF",
+     f"timeout -k 3 105 {BUNDLE}/bin/bench_tracer > tracer.md", "text"),
+    ("bad-rows.txt", "Bad-row counts: the GPU's against the host's recount (scripts/check_bad_rows)",
+     f"scripts/check_bad_rows {BUNDLE}/bin/sdfwb {BUNDLE}/bin/count_bad_rows tests/foreign/15_nan_superquadric.glsl 2000000; "
+     f"scripts/check_bad_rows ... {BUNDLE}/meshes/stanford-bunny.obj 1000000 rand near surface", "code"),
+    ("meshes.md", "The other shared meshes: sampling on the GPU, two passes",
+     f"for each mesh: {BUNDLE}/bin/sdfwb --batch sample --sdf MESH --normalize unit-cube -p rand -n 10000000 (and -p near "
+     "-n 2000000) -o /tmp/m.npz; columns: mesh, pattern, passes, samples, process seconds, what sdfwb printed", "table"),
+    ("test-meshing.txt", "test_meshing, which device_check's 80 s cut (55 s here)",
+     f"timeout -k 2 55 {BUNDLE}/bin/test_meshing: the tests that ended, then the one still running", "code"),
+]
+
+
+def read(name):
+    with open(os.path.join(DATA, name), encoding="utf-8") as f:
+        return f.read()
+
+
+def rates(text, mesh, pattern, passes):
+    # "| mesh | pattern | passes | samples | bad rows | seconds | wrote ...: ... (4.87 M samples/s) |"
+    for line in text.splitlines():
+        cells = [c.strip() for c in line.strip("|").split("|")]
+        if len(cells) >= 4 and cells[0] == mesh and cells[1] == pattern and cells[2] == passes:
+            found = re.search(r"\(([0-9.]+) M samples/s\)", line)
+            if found:
+                return float(found.group(1))
+    return None
+
+
+def goals(report, tracer):
+    lines = ["## Against the issues' goals", ""]
+    for line in report.splitlines():
+        cells = [c.strip() for c in line.strip("|").split("|")]
+        if len(cells) == 8 and cells[-1] in ("yes", "**no**"):
+            lines.append(f"- Issue 49, sampling into host memory, {cells[0]}: {cells[2].split(' ')[0]} rows/s against a goal "
+                         f"of {cells[6]}: {'met' if cells[-1] == 'yes' else '**not met**'}.")
+    sphere = re.search(r"^\| Sphere \| [^|]+ \| ([0-9.]+);", tracer, re.M)
+    if sphere:
+        ms = float(sphere.group(1))
+        lines.append(f"- Issue 49, the Sphere at 1280x720: {ms:.3f} ms of GPU time a frame against at most 0.1 ms: "
+                     f"{'met' if ms <= 0.1 else '**not met**'}.")
+    for pattern, goal in (("rand", 50.0), ("near", 20.0)):
+        best = max((r for r in (rates(report, "stanford-bunny.obj", pattern, p) for p in ("one", "two")) if r), default=None)
+        if best is not None:
+            lines.append(f"- Issue 46, the bunny's `{pattern}` on the GPU: {best:.2f} M rows/s at best (value, exact gradient "
+                         f"and winding sign) against {goal:.0f} M: {'met' if best >= goal else '**not met**'}.")
+    lines.append("- Issue 46 on the bunny subdivided twice (1.1 M triangles): no figure; the run hung there (above).")
+    return lines
+
+
+def main():
+    report = read("device-check.md").rstrip("\n")
+    out = [report, "", "## After scripts/device_check, on the same machine", "",
+           "The device call's 600 s ran out while `scripts/device_check` sampled the bunny subdivided twice (1.1 M triangles):",
+           "that `sdfwb` process outlived its `timeout` (a SIGTERM, with no kill after it; the script now sends SIGKILL 5 s",
+           "later and runs that mesh last), so the mesh table above stops before it and the script's last steps did not run.",
+           "They ran next as separate commands on the same machine, the shader cache warm from the first run:", ""]
+    tracer = read("tracer.md")
+    for name, title, command, kind in LATER:
+        body = read(name).rstrip("\n")
+        out += [f"### {title}", "", f"`{command}`", ""]
+        if kind == "code":
+            out += ["```", body, "```"]
+        elif kind == "table":
+            out += ["| mesh | pattern | passes | samples | process seconds | what sdfwb printed |", "|---|---|---|---|---|---|", body]
+        else:
+            out += [line for line in body.splitlines() if not line.startswith("[")]
+        out.append("")
+    out += goals(report, tracer)
+    out.append("")
+    with open(OUT, "w", encoding="utf-8") as f:
+        f.write("\n".join(out))
+    print(f"wrote {OUT}")
+
+
+if __name__ == "__main__":
+    main()
