@@ -192,7 +192,7 @@ Args:
     gradient_step (float): > 0, world units: the step of the central differences of `gradient`. Default 0:
         1e-3, except that a mesh's own field writes its exact gradient (from the closest point).
     chunk (int): rows per GPU dispatch (memory: 28 bytes a row), 1 to 33554432; does not change the values.
-        Default 0: chosen per driver (262144 on llvmpipe, 16777216 on a GPU).
+        Default 0: chosen per driver (262144 on llvmpipe, 2097152 on a GPU).
     surface_tolerance (float): > 0: |f| at which the rays of surface, near and metropolis stop (accuracy
         against time; see docs/benchmarks.md). Default 1e-5.
     entry (str): the SDF's function when it is not `sdf`, a GLSL identifier other than main, gl_* and sdfwb_*
@@ -254,7 +254,7 @@ Args:
         that a mesh's own field gives its exact gradient (from the closest point).
     entry (str): the SDF's function when it is not `sdf`, as for sample(). Default ''.
     chunk (int): points per GPU dispatch, 1 to 33554432; does not change the values. Default 0: chosen per
-        driver (262144 on llvmpipe, 16777216 on a GPU).
+        driver (262144 on llvmpipe, 2097152 on a GPU).
     sign (str): for a mesh file, as for sample(). Default '': winding.
     normalize (str): as for sample(). Default '': none.
     level (float): as for sample(). Default 0.

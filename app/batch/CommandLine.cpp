@@ -482,7 +482,7 @@ int runSampleCommand(const Arguments& arguments, Mode mode) {
     app.sets(app.add_option("--shard", shard, "K/COUNT: write only slice K (0-based) of COUNT equal slices of the N-sample run"),
              {"shard_index", "shard_count"});
     app.add_option("--chunk", command.chunkSize,
-                   "samples per GPU dispatch (memory: 28 bytes each; default: 262144 on llvmpipe, 16777216 on a GPU)")
+                   "samples per GPU dispatch (memory: 28 bytes each; default: 262144 on llvmpipe, 2097152 on a GPU)")
         ->check(CLI::Range(1u, 33554432u)); // renderer::SampleCompute::kMaxChunk
     app.add_option("--gradient-step", command.gradientStep,
                    "central-difference step of the written gradient (default 1e-3; a mesh's own field writes its exact "

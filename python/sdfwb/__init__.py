@@ -94,7 +94,7 @@ def evaluate(sdf: str, points: Any, params: Mapping[str, ParamValue] | None = No
             except that a mesh's own field gives its exact gradient (from the closest point).
         entry (str): the SDF's function when it is not `sdf` (e.g. 'map'), as for sample(). Default ''.
         chunk (int): points per GPU dispatch, 1 to 33554432; does not change the values. Default 0: chosen
-            per driver (262144 on llvmpipe, 16777216 on a GPU).
+            per driver (262144 on llvmpipe, 2097152 on a GPU).
         sign (str): for a mesh file: 'winding' (generalized winding numbers), 'parity' or 'pseudonormal',
             as for sample(). Default '': winding.
         normalize (str): for a mesh file: 'none', 'unit-cube' or 'unit-sphere', as for sample().
