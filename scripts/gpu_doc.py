@@ -52,9 +52,9 @@ def goals(report, tracer):
     lines = ["## Against the issues' goals", ""]
     for line in report.splitlines():
         cells = [c.strip() for c in line.strip("|").split("|")]
-        if len(cells) == 8 and cells[-1] in ("yes", "**no**"):
+        if len(cells) >= 8 and cells[7] in ("yes", "**no**"):
             lines.append(f"- Issue 49, sampling into host memory, {cells[0]}: {cells[2].split(' ')[0]} rows/s against a goal "
-                         f"of {cells[6]}: {'met' if cells[-1] == 'yes' else '**not met**'}.")
+                         f"of {cells[6]}: {'met' if cells[7] == 'yes' else '**not met**'}.")
     sphere = re.search(r"^\| Sphere \| [^|]+ \| ([0-9.]+);", tracer, re.M)
     if sphere:
         ms = float(sphere.group(1))
