@@ -30,8 +30,8 @@ constexpr std::uint32_t kSmallestChunk = 4096;
 // Runs the job chunk by chunk, `chunk` rows at a time. `submit(uniforms, first, done, count)`
 // starts rows [done, done + count) of this run (global index first) and returns a token;
 // `collect(token)` returns them as renderer::MappedRows once they are made; `consume(rows, count,
-// token)` receives each chunk's rows in order. Up to `ahead` chunks are submitted before the
-// oldest is collected, so a GPU computes the next while the host takes the last.
+// token, done)` receives each chunk's rows in order, with the row of this run where they start. Up to `ahead` chunks are
+// submitted before the oldest is collected, so a GPU computes the next while the host takes the last.
 template <class Submit, class Collect, class Consume>
 Expected<SamplingReport> run(const SamplingJob& job, std::uint32_t chunk, int ahead, Submit submit, Collect collect,
                              Consume consume, const ProgressSink& progress) {
@@ -66,7 +66,7 @@ Expected<SamplingReport> run(const SamplingJob& job, std::uint32_t chunk, int ah
         if (!chunkRows) return chunkRows.error();
         if (!keep) return {};
         report.badRows += chunkRows->badRows;
-        if (auto ok = consume(*chunkRows, oldest.count, oldest.token); !ok) return ok.error();
+        if (auto ok = consume(*chunkRows, oldest.count, oldest.token, oldest.done); !ok) return ok.error();
         report.rows = oldest.done + oldest.count;
         progress(report.rows, rows);
         return {};
@@ -299,6 +299,18 @@ Expected<void> validate(const SamplingJob& job) {
     return {};
 }
 
+// The GPU time of a run's dispatches and staging copies (SampleCompute's running totals, read
+// before and after it; unset where the driver's timer cannot be trusted).
+struct GpuTimes {
+    const renderer::SampleCompute& compute;
+    double kernel = compute.kernelMilliseconds(), copy = compute.copyMilliseconds();
+    void into(SamplingReport& report) const {
+        const double kernelAfter = compute.kernelMilliseconds(), copyAfter = compute.copyMilliseconds();
+        if (kernel >= 0.0 && kernelAfter >= 0.0) report.kernelSeconds = (kernelAfter - kernel) / 1000.0;
+        if (copy >= 0.0 && copyAfter >= 0.0) report.copySeconds = (copyAfter - copy) / 1000.0;
+    }
+};
+
 // SDFWB_SAMPLE_RING=0: arrays in memory one chunk at a time through SampleCompute::run(), the
 // path the ring replaced for them (tests compare the two bit for bit; benchmarks).
 bool sampleIntoInOrder() {
@@ -309,13 +321,12 @@ bool sampleIntoInOrder() {
 // Copies `n` rows of a mapped chunk into the caller's arrays at row `at`: on one thread where the
 // driver computes on the cores (its threads need them), on every core where a GPU does.
 void copyOut(const renderer::MappedRows& rows, std::size_t n, std::uint64_t at, float* positions, float* distances,
-             float* gradients) {
+             float* gradients, std::size_t cores) {
     auto part = [&](std::size_t begin, std::size_t end) {
         std::copy(rows.positions + 3 * begin, rows.positions + 3 * end, positions + 3 * (at + begin));
         std::copy(rows.distances + begin, rows.distances + end, distances + at + begin);
         std::copy(rows.gradients + 3 * begin, rows.gradients + 3 * end, gradients + 3 * (at + begin));
     };
-    const std::size_t cores = renderer::softwareRasteriser() ? 1 : std::max(1u, std::thread::hardware_concurrency());
     const std::size_t parts = std::min(cores, std::max<std::size_t>(1, n / 65536));
     if (parts <= 1) return part(0, n);
     std::vector<std::thread> threads;
@@ -329,27 +340,23 @@ void copyOut(const renderer::MappedRows& rows, std::size_t n, std::uint64_t at, 
 Expected<SamplingReport> sampleIntoRing(renderer::SampleCompute& compute, const SamplingJob& job, float* positions,
                                         float* distances, float* gradients, const ProgressSink& progress) {
     const renderer::SamplePipeline ring = compute.pipeline();
-    std::deque<std::uint64_t> offsets; // where each chunk in flight goes, oldest first
-    int next = 0;
-    auto submit = [&](const renderer::SampleUniforms& uniforms, std::uint32_t first, std::uint64_t done,
+    const std::size_t cores = renderer::softwareRasteriser() ? 1 : std::max(1u, std::thread::hardware_concurrency());
+    int next = 0; // a chunk is consumed before its slot comes round again (ahead <= sets - 2)
+    auto submit = [&](const renderer::SampleUniforms& uniforms, std::uint32_t first, std::uint64_t,
                       std::uint32_t count) -> Expected<int> {
         const int slot = next;
         if (auto ok = compute.submitMapped(uniforms, first, count, slot); !ok) return ok.error();
         next = (next + 1) % ring.sets;
-        offsets.push_back(done);
         return slot;
     };
     auto collect = [&](int slot) { return compute.collectMapped(slot); };
-    auto consume = [&](const renderer::MappedRows& rows, std::size_t n, int) -> Expected<void> {
-        copyOut(rows, n, offsets.front(), positions, distances, gradients);
-        offsets.pop_front();
+    auto consume = [&](const renderer::MappedRows& rows, std::size_t n, int, std::uint64_t done) -> Expected<void> {
+        copyOut(rows, n, done, positions, distances, gradients, cores);
         return {};
     };
-    const double kernelBefore = compute.kernelMilliseconds(), copyBefore = compute.copyMilliseconds();
+    const GpuTimes times{compute};
     auto report = run(job, chunkFor(job, compute), ring.ahead, submit, collect, consume, progress);
-    const double kernelAfter = compute.kernelMilliseconds(), copyAfter = compute.copyMilliseconds();
-    if (report && kernelBefore >= 0.0 && kernelAfter >= 0.0) report->kernelSeconds = (kernelAfter - kernelBefore) / 1000.0;
-    if (report && copyBefore >= 0.0 && copyAfter >= 0.0) report->copySeconds = (copyAfter - copyBefore) / 1000.0;
+    if (report) times.into(*report);
     return report;
 }
 
@@ -370,11 +377,10 @@ Expected<SamplingReport> sampleInto(renderer::SampleCompute& compute, const Samp
     auto collect = [&](int) -> Expected<renderer::MappedRows> {
         return renderer::MappedRows{nullptr, nullptr, nullptr, lastBad};
     };
-    auto consume = [](const renderer::MappedRows&, std::size_t, int) -> Expected<void> { return {}; };
-    const double kernelBefore = compute.kernelMilliseconds();
+    auto consume = [](const renderer::MappedRows&, std::size_t, int, std::uint64_t) -> Expected<void> { return {}; };
+    const GpuTimes times{compute};
     auto report = run(job, chunkFor(job, compute), 1, submit, collect, consume, progress);
-    const double kernelAfter = compute.kernelMilliseconds();
-    if (report && kernelBefore >= 0.0 && kernelAfter >= 0.0) report->kernelSeconds = (kernelAfter - kernelBefore) / 1000.0;
+    if (report) times.into(*report);
     return report;
 }
 
@@ -406,8 +412,10 @@ Expected<SamplingReport> sampleToFile(renderer::SampleCompute& compute, const Sa
         return slot;
     };
     auto collect = [&](int slot) { return compute.collectMapped(slot); };
-    auto consume = [&](const renderer::MappedRows& rows, std::size_t n, int slot) { return pipeline.submit(rows, n, slot); };
-    const double kernelBefore = compute.kernelMilliseconds(), copyBefore = compute.copyMilliseconds();
+    auto consume = [&](const renderer::MappedRows& rows, std::size_t n, int slot, std::uint64_t) {
+        return pipeline.submit(rows, n, slot);
+    };
+    const GpuTimes times{compute};
     const std::uint32_t chunk = chunkFor(job, compute);
     log::info("sampling", "chunks of " + std::to_string(std::min<std::uint64_t>(chunk, job.rows())) + " rows, " +
                               std::to_string(ring.ahead) + " on the GPU ahead of the one collected, a ring of " +
@@ -415,9 +423,7 @@ Expected<SamplingReport> sampleToFile(renderer::SampleCompute& compute, const Sa
     auto report = run(job, chunk, ring.ahead, submit, collect, consume, progress);
     if (auto ok = pipeline.drain(); !ok) return ok.error();
     if (!report) return report;
-    const double kernelAfter = compute.kernelMilliseconds(), copyAfter = compute.copyMilliseconds();
-    if (kernelBefore >= 0.0 && kernelAfter >= 0.0) report->kernelSeconds = (kernelAfter - kernelBefore) / 1000.0;
-    if (copyBefore >= 0.0 && copyAfter >= 0.0) report->copySeconds = (copyAfter - copyBefore) / 1000.0;
+    times.into(*report);
     report->writeSeconds = pipeline.writeSeconds();
     report->waitSeconds = pipeline.waitSeconds();
     if (!report->cancelled)
