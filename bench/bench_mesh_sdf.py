@@ -231,10 +231,14 @@ def speed_row(name, vertices, faces):
         add(f"sdfwb, value + gradient, {method}", f"CPU engine, {THREADS[-1]} thread(s)", seconds, len(points),
             sdfwb.evaluate(mesh_path, points, sign=method)["distance"])
     glsl_points = points[:GLSL_POINTS]
-    seconds = with_environment({"SDFWB_MESH_ENGINE": "gpu"}, lambda: best_of(lambda: sdfwb.evaluate(mesh_path, glsl_points), 1))
-    values = with_environment({"SDFWB_MESH_ENGINE": "gpu"}, lambda: sdfwb.evaluate(mesh_path, glsl_points)["distance"])
-    add("sdfwb, value + gradient, winding", f"GLSL field on llvmpipe (SDFWB_MESH_ENGINE=gpu), {len(glsl_points):,} points",
-        seconds, len(glsl_points), values)
+    # The GLSL field (what a GPU runs) with its rows grouped by cell on the GPU (the default) and in
+    # the caller's order (SDFWB_MESH_MORTON=0): llvmpipe's eight lanes gain from the grouping too.
+    for morton, how in (("1", "rows sorted by cell"), ("0", "rows in the caller's order, SDFWB_MESH_MORTON=0")):
+        environment = {"SDFWB_MESH_ENGINE": "gpu", "SDFWB_MESH_MORTON": morton}
+        seconds = with_environment(environment, lambda: best_of(lambda: sdfwb.evaluate(mesh_path, glsl_points), 1))
+        values = with_environment(environment, lambda: sdfwb.evaluate(mesh_path, glsl_points)["distance"])
+        add("sdfwb, value + gradient, winding", f"GLSL field on llvmpipe (SDFWB_MESH_ENGINE=gpu), {how}, "
+            f"{len(glsl_points):,} points", seconds, len(glsl_points), values)
     for pattern in ["rand", "near"]:
         seconds = best_of(lambda: sdfwb.sample(mesh_path, pattern, SPEED_POINTS))
         row[pattern] = SPEED_POINTS / seconds

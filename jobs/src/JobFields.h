@@ -418,6 +418,7 @@ template <class V> void fields(V& v, values::SampleReport& r) {
     v("seconds", r.seconds);
     v("setup_seconds", r.setupSeconds);
     v("samples_per_second", r.samplesPerSecond);
+    v("kernel_seconds", r.kernelSeconds);
     v("gl_renderer", r.glRenderer);
     v("parameters", r.parameters);
     v("instances", r.instances);

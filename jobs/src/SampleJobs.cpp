@@ -126,6 +126,9 @@ JobResult<values::SampleReport> run(const values::SampleRequest& request, const 
         report.rows += result->rows;
         report.badRows += result->badRows;
         report.seconds += result->seconds;
+        report.kernelSeconds = result->kernelSeconds < 0.0 || (k > 0 && report.kernelSeconds < 0.0)
+                                   ? -1.0
+                                   : std::max(report.kernelSeconds, 0.0) + result->kernelSeconds;
         report.firstIndex = result->firstIndex;
         if (family)
             report.instances.push_back({output, shaders::valuesOf(settings[k]), result->rows, result->badRows, result->seconds});

@@ -206,7 +206,7 @@ def cli_json(*arguments):
 
 
 def without_timings(report):
-    return {k: v for k, v in report.items() if k not in ("seconds", "setup_seconds", "frame_ms", "render_seconds", "samples_per_second")}
+    return {k: v for k, v in report.items() if k not in ("seconds", "setup_seconds", "frame_ms", "render_seconds", "samples_per_second", "kernel_seconds")}
 
 
 def test_requests_are_the_clis_json_and_reports_match_it():

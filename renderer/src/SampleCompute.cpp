@@ -66,47 +66,6 @@ bool waitFor(GLsync fence) {
     }
 }
 
-Expected<std::uint32_t> SampleCompute::Impl::runSorted(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count,
-                                                       float* positions, float* distances, float* gradients) {
-    const float* in = uniforms.inputPoints + 3 * std::size_t(first);
-    // Over the points' own bounding cube (finite ones), or the mesh's when there are none.
-    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-    for (std::size_t i = 0; i < 3 * std::size_t(count); ++i)
-        if (std::isfinite(in[i])) {
-            lo[int(i % 3)] = std::min(lo[int(i % 3)], double(in[i]));
-            hi[int(i % 3)] = std::max(hi[int(i % 3)], double(in[i]));
-        }
-    const double side = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
-    const bool own = side > 0.0 && std::isfinite(side);
-    const std::vector<std::uint64_t> order =
-        meshfield::mortonOrder(in, 3, count, own ? lo : mortonLo, own ? side * (1.0 + 1e-6) : mortonSide);
-    std::vector<float> sorted(3 * std::size_t(count));
-    for (std::size_t i = 0; i < count; ++i) {
-        const std::size_t row = std::size_t(order[i] & 0xffffffffu);
-        std::copy(in + 3 * row, in + 3 * row + 3, sorted.data() + 3 * i);
-    }
-    if (auto ok = reserve(plain, count, BufferKind::ReadBack); !ok) return ok.error();
-    auto bad = dispatch(uniforms, first, count, plain, false, gradients != nullptr, sorted.data());
-    if (!bad) return bad;
-    std::vector<float> values(count), slopes(gradients ? 3 * std::size_t(count) : 0);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, plain.buffers[1].id());
-    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(count) * 4, values.data());
-    if (gradients) {
-        glBindBuffer(GL_SHADER_STORAGE_BUFFER, plain.buffers[2].id());
-        glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(count) * 12, slopes.data());
-    }
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-    if (GLenum error = glGetError(); error != GL_NO_ERROR)
-        return makeError("sampling: reading back " + std::to_string(count) + " samples failed (" + glErrorName(error) + ")");
-    for (std::size_t i = 0; i < count; ++i) {
-        const std::size_t row = std::size_t(order[i] & 0xffffffffu);
-        distances[row] = values[i];
-        if (gradients) std::copy(slopes.data() + 3 * i, slopes.data() + 3 * i + 3, gradients + 3 * row);
-    }
-    if (positions) std::copy(in, in + 3 * std::size_t(count), positions);
-    return checkedBadRows(MappedRows{positions, distances, gradients, *bad}, count);
-}
-
 Expected<void> SampleCompute::Impl::reserve(BufferSet& set, std::uint32_t count, BufferKind kind, bool interleaved) {
     if (count <= set.capacity && interleaved == set.interleaved && kind == set.kind) return {};
     set.reset();
@@ -207,6 +166,7 @@ SampleCompute::~SampleCompute() {
     }
     m_impl->counts.release();
     m_impl->inputs.release();
+    m_impl->sortWords.release();
     m_impl->textures.release();
     m_impl->kernelTimer.release();
 }
@@ -215,17 +175,11 @@ const std::string& SampleCompute::source() const { return m_impl->source; }
 
 const char* SampleCompute::meshEngine() const { return m_impl->engine; }
 
-double SampleCompute::kernelMilliseconds() const {
-    const double own = m_impl->kernelMilliseconds;
-    const double values = m_impl->values ? m_impl->values->kernelMilliseconds() : 0.0;
-    return own < 0.0 || values < 0.0 ? -1.0 : own + values;
-}
+double SampleCompute::kernelMilliseconds() const { return m_impl->kernelMilliseconds; }
 
 double SampleCompute::copyMilliseconds() const { return m_impl->copyMilliseconds; }
 
-bool SampleCompute::countsMeshWalks() const {
-    return m_impl->countWalks || (m_impl->values && m_impl->values->countsMeshWalks());
-}
+bool SampleCompute::countsMeshWalks() const { return m_impl->countWalks; }
 
 void SampleCompute::addMeshCounters(meshfield::QueryCounters& into) const {
     const meshfield::QueryCounters& c = m_impl->counters;
@@ -234,7 +188,6 @@ void SampleCompute::addMeshCounters(meshfield::QueryCounters& into) const {
     into.cachedSigns += c.cachedSigns;
     into.crossedSigns += c.crossedSigns;
     into.segmentNodes += c.segmentNodes;
-    if (m_impl->values) m_impl->values->addMeshCounters(into);
 }
 
 std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf& sdf, const shaders::ShaderPiece& sampler) {
@@ -253,15 +206,18 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
         if (sdf.meshIsTheField && chosen == meshfield::MeshEngine::Cpu) query = meshfield::meshQuery(sdf.mesh);
     }
     shaders::FeatureDefines features;
-    // The GLSL engine on a mesh's own field: where the driver runs shaders on the CPU, positions
-    // here and values in Morton order by a second program (neighbouring lanes walk the same nodes);
-    // on a GPU one pass in the sampler's order, which the H200 ran faster (2026-11-30, docs/gpu.md:
-    // the bunny's rand 12.2 against 4.9 M rows/s, near 7.7 against 4.6). SDFWB_MESH_MORTON=0 or 1
-    // forces one or two passes (benchmarks).
+    // The GLSL engine on a mesh's own field: each chunk's rows grouped by where they lie, on the GPU
+    // (Impl::sortRows). SDFWB_MESH_MORTON=0 keeps one pass in the sampler's order (benchmarks).
+    // The H200 ran the earlier form, a Morton sort on the host between two programs, slower than
+    // one pass (2026-11-30, docs/gpu.md: the bunny's rand 4.9 against 12.2 M rows/s): the host's
+    // sort and copies, not the GPU, set its pace.
     const char* morton = std::getenv("SDFWB_MESH_MORTON");
-    const bool sorted = morton && *morton ? std::string_view(morton) != "0" : softwareRasteriser();
-    const bool twoPass = sdf.mesh && sdf.meshIsTheField && !query && sorted && sampler.name != "sdfwb:analysis/points.glsl";
-    if (query || twoPass) features["SDFWB_POSITIONS_ONLY"] = "1";
+    const bool sortRows = sdf.mesh && sdf.meshIsTheField && !query && !(morton && std::string_view(morton) == "0");
+    if (query) features["SDFWB_POSITIONS_ONLY"] = "1";
+    if (sortRows) {
+        features["SDFWB_SORT_ROWS"] = "1";
+        features["SDFWB_SORT_PARTS"] = std::to_string(Impl::kSortParts) + "u";
+    }
     // Benchmarks: the GLSL mesh field counts the nodes its walks visit (a count no driver changes).
     const char* count = std::getenv("SDFWB_MESH_COUNT");
     const bool countWalks = sdf.mesh && !query && count && std::string_view(count) == "1";
@@ -297,20 +253,15 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     const bool software = softwareRasteriser();
     m_impl->kernelMilliseconds = software ? -1.0 : 0.0;
     m_impl->copyMilliseconds = software ? -1.0 : 0.0;
-    m_impl->mortonInputs = sdf.mesh && !m_impl->query && sorted;
-    m_impl->values.reset();
-    if (twoPass) {
-        auto points = shaders::builtinPiece("analysis/points.glsl");
-        if (!points) return {{"<sdfwb>", 0, 0, shaders::Severity::Error, points.error().message}};
-        auto values = std::make_unique<SampleCompute>();
-        std::vector<shaders::Diagnostic> more = values->build(sdf, *points);
-        if (shaders::hasErrors(more)) {
-            m_impl->program.reset();
-            return more;
-        }
-        m_impl->values = std::move(values);
+    m_impl->sortRows = sortRows;
+    if (sortRows) {
+        double side = 0.0;
+        const glm::dvec3 lo = meshfield::mortonBoxCorner(*sdf.mesh, side);
+        m_impl->sortCube[0] = float(lo.x);
+        m_impl->sortCube[1] = float(lo.y);
+        m_impl->sortCube[2] = float(lo.z);
+        m_impl->sortCube[3] = float(side);
     }
-    if (m_impl->mortonInputs) m_impl->mortonLo = meshfield::mortonBoxCorner(*sdf.mesh, m_impl->mortonSide);
     m_impl->pointsSampler = sampler.name == "sdfwb:analysis/points.glsl";
     return diagnostics;
 }
@@ -369,11 +320,66 @@ Expected<void> SampleCompute::Impl::issue(const SampleUniforms& uniforms, std::u
     // gx; sample.comp numbers the invocations across them.
     const std::uint32_t groups = (count + 63u) / 64u;
     const std::uint32_t gx = std::clamp(groups, 1u, 65535u);
-    glDispatchCompute(gx, (groups + gx - 1u) / gx, 1);
+    if (sortRows) {
+        if (auto ok = dispatchSorted(count, gx, (groups + gx - 1u) / gx); !ok) {
+            glUseProgram(0);
+            return ok;
+        }
+    } else {
+        glDispatchCompute(gx, (groups + gx - 1u) / gx, 1);
+    }
     glUseProgram(0);
     if (GLenum error = glGetError(); error != GL_NO_ERROR)
         return makeError("sampling: dispatch of " + std::to_string(count) + " samples failed (" + glErrorName(error) +
                          "); try a smaller --chunk");
+    return {};
+}
+
+Expected<void> SampleCompute::Impl::dispatchSorted(std::uint32_t count, std::uint32_t gx, std::uint32_t gy) {
+    // About a row a cell over the cube, at most 64 cells an axis: on llvmpipe (the bunny, 200,000
+    // rows, median of 3) 64 cells an axis ran rand 1.6x and near 1.7x as fast as one pass, 16 an
+    // axis 1.4x and 1.7x. SDFWB_SORT_BITS=1..6 sets the bits an axis.
+    std::uint32_t bits = 1;
+    while (bits < kMostBits && (std::uint64_t(1) << (3 * (bits + 1))) <= std::uint64_t(count) * 2) ++bits;
+    if (const char* forced = std::getenv("SDFWB_SORT_BITS"); forced && *forced)
+        bits = std::clamp<std::uint32_t>(std::uint32_t(std::atoi(forced)), 1, kMostBits);
+    const GLsizeiptr cellWords = GLsizeiptr(kSortParts) + (GLsizeiptr(1) << (3 * kMostBits));
+    if (count > sortCapacity || !sortWords) {
+        while (glGetError() != GL_NO_ERROR) {}
+        GLuint id = 0;
+        glGenBuffers(1, &id);
+        sortWords = GlBuffer(id);
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
+        // Per row: its cell, its slot's row and its position.
+        glBufferStorage(GL_SHADER_STORAGE_BUFFER, (cellWords + GLsizeiptr(count) * 5) * 4, nullptr, 0);
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+        sortCapacity = count;
+        if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
+            sortWords.reset();
+            sortCapacity = 0;
+            return makeError("sampling: cannot allocate the sort buffer for " + std::to_string(count) + " samples (" +
+                             glErrorName(error) + "); try a smaller --chunk");
+        }
+    }
+    // The last chunk's passes have read the buffer before its counts are zeroed.
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    const GLuint zero = 0;
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, sortWords.id());
+    glClearBufferSubData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GLintptr(kSortParts) * 4, (GLsizeiptr(1) << (3 * bits)) * 4,
+                         GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingSort, sortWords.id());
+    glUniform1ui(location("sdfwb_sortBits"), bits);
+    glUniform4fv(location("sdfwb_sortCube"), 1, sortCube);
+    glUniform1ui(location("sdfwb_sortCapacity"), sortCapacity);
+    for (GLuint pass = 1; pass <= 5; ++pass) {
+        glUniform1ui(location("sdfwb_sortPass"), pass);
+        if (pass == 2 || pass == 3)
+            glDispatchCompute(kSortParts / 64, 1, 1); // an invocation a part of the cells
+        else
+            glDispatchCompute(gx, gy, 1);
+        if (pass < 5) glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
     return {};
 }
 
@@ -407,18 +413,15 @@ Expected<std::uint32_t> SampleCompute::run(const SampleUniforms& uniforms, std::
         if (positions) std::copy(in, in + 3 * std::size_t(count), positions);
         return m_impl->evaluateRows(uniforms, in, 3, distances, 1, gradients, 3, count);
     }
-    if (m_impl->mortonInputs && m_impl->positionsAreInputs(uniforms) && distances)
-        return m_impl->runSorted(uniforms, first, count, positions, distances, gradients);
     if (auto ok = m_impl->reserve(m_impl->plain, count, BufferKind::ReadBack); !ok) return ok.error();
     std::vector<float> scratch;
-    const bool valuesElsewhere = m_impl->query || m_impl->values;
-    if (valuesElsewhere && !positions) { // the engine needs the positions even where the caller does not
+    if (m_impl->query && !positions) { // the engine needs the positions even where the caller does not
         scratch.resize(std::size_t(count) * 3);
         positions = scratch.data();
     }
     auto bad = m_impl->dispatch(uniforms, first, count, m_impl->plain, positions, gradients);
     if (!bad) return bad;
-    if (valuesElsewhere) {
+    if (m_impl->query) {
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, m_impl->plain.buffers[0].id());
         glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(count) * 12, positions);
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);

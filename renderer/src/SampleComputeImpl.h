@@ -64,7 +64,7 @@ struct PendingChunk {
     bool staged = false; // the rows are in the staging set
     std::array<std::uint32_t, 3> shift{};
     const float* inputs = nullptr; // the caller's points (the CPU engine: nothing was dispatched)
-    SampleUniforms uniforms;       // for the values computed on collection (CPU engine, values program)
+    SampleUniforms uniforms;       // for the values computed on collection (CPU engine)
     GLsync fence = nullptr;
     GpuTimer timer;     // the dispatch
     GpuTimer copyTimer; // staging: the GPU's copies into the mapped buffers
@@ -131,61 +131,33 @@ struct SampleCompute::Impl {
     bool positionsAreInputs(const SampleUniforms& uniforms) const {
         return pointsSampler && uniforms.inputPoints && uniforms.inputTableFloats == 0;
     }
-    // The values and gradients at positions this program computed: the CPU engine's, or `values`'s.
+    // The CPU engine's values and gradients at positions this program computed.
     Expected<std::uint32_t> evaluateRows(const SampleUniforms& uniforms, const float* positions, std::size_t positionStride,
                                          float* distances, std::size_t distanceStride, float* gradients,
                                          std::size_t gradientStride, std::uint32_t count) {
-        if (query) {
-            meshfield::RowView rows{positions, positionStride, distances, distanceStride, gradients, gradientStride};
-            meshfield::GradientMode mode{!uniforms.meshGradientTaps, uniforms.gradientStep};
-            return std::uint32_t(query->evaluate(rows, count, mode, 0, &counters));
-        }
-        // Contiguous positions go as they are; interleaved rows (.ply) are gathered first.
-        std::vector<float> gathered, d(count), g(gradients ? 3 * std::size_t(count) : 0);
-        if (positionStride != 3) {
-            gathered.resize(3 * std::size_t(count));
-            for (std::size_t i = 0; i < count; ++i)
-                std::copy(positions + i * positionStride, positions + i * positionStride + 3, &gathered[3 * i]);
-        }
-        const float* xyz = positionStride == 3 ? positions : gathered.data();
-        SampleUniforms at = uniforms;
-        at.inputPoints = xyz;
-        at.inputTableFloats = 0;
-        auto bad = values->run(at, 0, count, nullptr, d.data(), gradients ? g.data() : nullptr);
-        if (!bad) return bad;
-        // A row whose position is not finite (a sampler's miss) is a NaN row, as on the one-pass path.
-        std::uint32_t nonFinite = 0;
-        const float nan = std::numeric_limits<float>::quiet_NaN();
-        for (std::size_t i = 0; i < count; ++i) {
-            const bool placed = std::isfinite(xyz[3 * i]) && std::isfinite(xyz[3 * i + 1]) && std::isfinite(xyz[3 * i + 2]);
-            if (!placed) d[i] = nan;
-            if (distances) distances[i * distanceStride] = d[i];
-            if (gradients) {
-                if (!placed) g[3 * i] = g[3 * i + 1] = g[3 * i + 2] = nan;
-                std::copy(&g[3 * i], &g[3 * i] + 3, gradients + i * gradientStride);
-            }
-            const bool finite =
-                placed && std::isfinite(d[i]) &&
-                (!gradients || (std::isfinite(g[3 * i]) && std::isfinite(g[3 * i + 1]) && std::isfinite(g[3 * i + 2])));
-            nonFinite += finite ? 0u : 1u;
-        }
-        return nonFinite;
+        meshfield::RowView rows{positions, positionStride, distances, distanceStride, gradients, gradientStride};
+        meshfield::GradientMode mode{!uniforms.meshGradientTaps, uniforms.gradientStep};
+        return std::uint32_t(query->evaluate(rows, count, mode, 0, &counters));
     }
     // issue() into run()'s region, then waits for it: the bad rows.
     Expected<std::uint32_t> dispatch(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, BufferSet& set,
                                      bool positions, bool gradients, const float* inputRows = nullptr);
-    // The GLSL mesh field at the caller's points (analysis/points.glsl): a mesh's walks diverge
-    // less between neighbouring invocations, so the points go up in Morton order over the mesh's
-    // box and the results come back to the caller's order. 1.4-1.7x the points/s on llvmpipe's
-    // eight lanes (spot, teapot, bunny; 200,000 uniform points); wider GPU lanes gain more.
-    bool mortonInputs = false;
-    // A mesh's own field on the GPU engine: this program computes the positions, `values` (the
-    // same SDF through analysis/points.glsl) the values in Morton order (runSorted).
-    std::unique_ptr<SampleCompute> values;
-    glm::dvec3 mortonLo{0.0};
-    double mortonSide = 0.0;
-    Expected<std::uint32_t> runSorted(const SampleUniforms& uniforms, std::uint32_t first, std::uint32_t count, float* positions,
-                                      float* distances, float* gradients);
+    // A mesh's own field on the GLSL engine: neighbouring invocations whose points lie far apart
+    // walk different nodes, so a chunk's rows are evaluated grouped by the cell of a lattice over
+    // the mesh's Morton cube they lie in (sample.comp's SDFWB_SORT_ROWS: five dispatches a chunk,
+    // all on the GPU) and written back in their own order. SDFWB_MESH_MORTON=0: one pass in the
+    // sampler's order.
+    bool sortRows = false;
+    // Cells an axis: 2^1 .. 2^kMostBits. The cells' counts are added up in kSortParts parts, an
+    // invocation each (sample.comp's SDFWB_SORT_PARTS): on a GPU a part's cells are read one
+    // after another, so a few long parts would hold up the chunk.
+    static constexpr std::uint32_t kMostBits = 6;
+    static constexpr std::uint32_t kSortParts = 1024;
+    float sortCube[4] = {}; // low corner, side
+    GlBuffer sortWords;
+    std::uint32_t sortCapacity = 0; // rows
+    // The five passes of a chunk of `count` rows dispatched as gx by gy groups (issue()).
+    Expected<void> dispatchSorted(std::uint32_t count, std::uint32_t gx, std::uint32_t gy);
 };
 
 } // namespace sdfwb::renderer

@@ -46,7 +46,7 @@ Expected<void> SampleCompute::submitMapped(const SampleUniforms& uniforms, std::
     chunk.shift = shift;
     chunk.inputs =
         m_impl->query && m_impl->positionsAreInputs(uniforms) ? uniforms.inputPoints + 3 * std::size_t(first) : nullptr;
-    if (m_impl->query || m_impl->values) chunk.uniforms = uniforms;
+    if (m_impl->query) chunk.uniforms = uniforms;
     if (chunk.inputs) { // the CPU engine at the caller's points: nothing for the GL to do
         chunk.active = true;
         return {};
@@ -116,7 +116,7 @@ Expected<MappedRows> SampleCompute::collectMapped(int slot) {
         bad = m_impl->takeCounts(at);
         if (chunk.staged) mapped = m_impl->staging[at].mapped;
     }
-    if (m_impl->query || m_impl->values) {
+    if (m_impl->query) {
         // The mapping is read-only: the rows are completed in this slot's host arrays, at the
         // same shifts, and the caller reads them there.
         std::vector<float>(&host)[3] = m_impl->hostRows[at];
@@ -181,10 +181,11 @@ void SampleCompute::releaseGl() {
     m_impl->counts.reset();
     m_impl->countWords = nullptr;
     m_impl->inputs.reset();
+    m_impl->sortWords.reset();
+    m_impl->sortCapacity = 0;
     m_impl->textures.reset();
     m_impl->kernelTimer.reset();
     m_impl->query.reset();
-    if (m_impl->values) m_impl->values->releaseGl();
     for (auto& host : m_impl->hostRows)
         for (std::vector<float>& rows : host) std::vector<float>().swap(rows);
 }

@@ -5,3 +5,4 @@
 #define SDFWB_BINDING_GRADIENTS 2
 #define SDFWB_BINDING_INPUTS 3
 #define SDFWB_BINDING_BAD_ROWS 4
+#define SDFWB_BINDING_SORT 8 // after the mesh's 5..7 (shaders::kMesh*Binding)

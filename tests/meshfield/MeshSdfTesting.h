@@ -81,10 +81,11 @@ struct Rows {
     std::vector<float> positions, distances, gradients;
     std::string engine;
     bool positionsOnly = false; // the sampler's program computed positions only (the values elsewhere)
+    bool sortedRows = false;    // the GLSL field evaluated each chunk's rows grouped by cell
 };
 
 inline Rows sampleRows(const shaders::PreparedSdf& sdf, const std::string& pattern, std::uint64_t n, const char* engine,
-                       bool taps = false) {
+                       bool taps = false, std::uint32_t chunk = 0) {
     EngineScope scope(engine);
     renderer::SampleCompute compute;
     auto sampler = sampling::findSampler(pattern, sampling::samplerFolders());
@@ -95,8 +96,13 @@ inline Rows sampleRows(const shaders::PreparedSdf& sdf, const std::string& patte
     job.count = n;
     job.seed = 5;
     job.meshGradientTaps = taps;
-    Rows rows{std::vector<float>(3 * n), std::vector<float>(n), std::vector<float>(3 * n), compute.meshEngine(),
-              compute.source().find("#define SDFWB_POSITIONS_ONLY") != std::string::npos};
+    job.chunkSize = chunk;
+    Rows rows{std::vector<float>(3 * n),
+              std::vector<float>(n),
+              std::vector<float>(3 * n),
+              compute.meshEngine(),
+              compute.source().find("#define SDFWB_POSITIONS_ONLY") != std::string::npos,
+              compute.source().find("#define SDFWB_SORT_ROWS") != std::string::npos};
     auto report = sampling::sampleInto(compute, job, rows.positions.data(), rows.distances.data(), rows.gradients.data(), {});
     EXPECT_TRUE(report.hasValue()) << (report ? "" : report.error().message);
     EXPECT_EQ(report ? report->badRows : 1u, 0u) << pattern << ' ' << engine;

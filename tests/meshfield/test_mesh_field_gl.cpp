@@ -138,7 +138,7 @@ TEST_F(MeshSdfTest, TheGlslFieldTakesNearSignsFromSegmentCrossingsAndKeepsEveryS
     unsetenv("SDFWB_MESH_COUNT");
 }
 
-// The GLSL field evaluates the caller's points in Morton order (neighbouring invocations walk
+// The GLSL field evaluates the caller's points grouped by cell (neighbouring invocations walk
 // alike) and returns each value to its point: the same values whatever order the points come in.
 TEST_F(MeshSdfTest, TheGlslFieldReturnsEachPointsValueInTheCallersOrder) {
     auto field = meshfield::makeMeshField(testing::torusMesh(0.6f, 0.25f, 48, 16), "torus.obj", {});
@@ -162,38 +162,41 @@ TEST_F(MeshSdfTest, TheGlslFieldReturnsEachPointsValueInTheCallersOrder) {
     }
 }
 
-// The GLSL engine samples a mesh's own field in two passes (SDFWB_MESH_MORTON=1; the default where
-// the driver runs shaders on the CPU): the sampler's positions, then the values in Morton order
-// (SampleCompute's values program); SDFWB_MESH_MORTON=0 (a GPU's default) keeps one pass in the
-// sampler's order. The same rows bit for bit, the gradient exact or by taps.
-TEST_F(MeshSdfTest, TheGlslFieldsMortonPassWritesTheOnePassRowsBitForBit) {
+// The GLSL engine evaluates a mesh's own field with each chunk's rows grouped by cell, on the GPU
+// (SDFWB_MESH_MORTON=1, the default on every driver): the sampler's positions, the cells' counts
+// and slots, then the values in cell order, written at each row's own place. SDFWB_MESH_MORTON=0
+// keeps one pass in the sampler's order. The same rows bit for bit, the gradient exact or by
+// taps, in one chunk and in chunks of 700 (the ring, the sort buffer reused).
+TEST_F(MeshSdfTest, TheGlslFieldsRowsSortedByCellAreTheOnePassRowsBitForBit) {
     auto field = meshfield::makeMeshField(testing::torusMesh(0.6f, 0.25f, 48, 16), "torus.obj", {});
     ASSERT_TRUE(field.hasValue());
     const shaders::PreparedSdf sdf = shaders::prepareMeshSdf(*field, "torus.obj");
+    auto differing = [](const std::vector<float>& a, const std::vector<float>& b) {
+        int n = 0;
+        for (std::size_t i = 0; i < a.size(); ++i) n += std::memcmp(&a[i], &b[i], sizeof(float)) != 0 ? 1 : 0;
+        return n;
+    };
     // Metropolis with taps is left out: in one pass its chain and six taps can spend llvmpipe's loop
-    // budget (10 NaN rows of 3,000 here), which the values pass, with a budget of its own, does not.
+    // budget (10 NaN rows of 3,000 here), which the sorted passes, a budget each, do not.
     for (const char* pattern : {"rand", "near", "surface", "metropolis"})
-        for (bool taps : {false, true}) {
-            if (taps && std::string_view(pattern) == "metropolis") continue;
-            setenv("SDFWB_MESH_MORTON", "0", 1);
-            const Rows one = sampleRows(sdf, pattern, 3000, "gpu", taps);
-            setenv("SDFWB_MESH_MORTON", "1", 1);
-            const Rows two = sampleRows(sdf, pattern, 3000, "gpu", taps);
-            unsetenv("SDFWB_MESH_MORTON");
-            EXPECT_FALSE(one.positionsOnly);
-            EXPECT_TRUE(two.positionsOnly) << "the values pass runs";
-            auto differing = [](const std::vector<float>& a, const std::vector<float>& b) {
-                int n = 0;
-                for (std::size_t i = 0; i < a.size(); ++i) n += std::memcmp(&a[i], &b[i], sizeof(float)) != 0 ? 1 : 0;
-                return n;
-            };
-            EXPECT_EQ(differing(one.positions, two.positions), 0) << pattern << " taps " << taps;
-            EXPECT_EQ(differing(one.distances, two.distances), 0) << pattern << " taps " << taps;
-            EXPECT_EQ(differing(one.gradients, two.gradients), 0) << pattern << " taps " << taps;
-            EXPECT_LT(*std::max_element(two.distances.begin(), two.distances.end()), 2.0f) << pattern;
-        }
-    EXPECT_EQ(sampleRows(sdf, "rand", 300, "gpu", false).positionsOnly, renderer::softwareRasteriser())
-        << "by default two passes only where the driver runs shaders on the CPU";
+        for (bool taps : {false, true})
+            for (std::uint32_t chunk : {0u, 700u}) {
+                if (taps && std::string_view(pattern) == "metropolis") continue;
+                setenv("SDFWB_MESH_MORTON", "0", 1);
+                const Rows one = sampleRows(sdf, pattern, 3000, "gpu", taps, chunk);
+                setenv("SDFWB_MESH_MORTON", "1", 1);
+                const Rows sorted = sampleRows(sdf, pattern, 3000, "gpu", taps, chunk);
+                unsetenv("SDFWB_MESH_MORTON");
+                EXPECT_FALSE(one.sortedRows);
+                EXPECT_TRUE(sorted.sortedRows) << "the rows are sorted by cell";
+                EXPECT_FALSE(sorted.positionsOnly) << "one program computes positions and values";
+                EXPECT_EQ(differing(one.positions, sorted.positions), 0) << pattern << " taps " << taps << " chunk " << chunk;
+                EXPECT_EQ(differing(one.distances, sorted.distances), 0) << pattern << " taps " << taps << " chunk " << chunk;
+                EXPECT_EQ(differing(one.gradients, sorted.gradients), 0) << pattern << " taps " << taps << " chunk " << chunk;
+                EXPECT_LT(*std::max_element(sorted.distances.begin(), sorted.distances.end()), 2.0f) << pattern;
+            }
+    EXPECT_TRUE(sampleRows(sdf, "rand", 300, "gpu", false).sortedRows) << "sorted by default on every driver";
+    EXPECT_FALSE(sampleRows(sdf, "rand", 300, "cpu", false).sortedRows) << "the CPU engine sorts rows its own way";
 }
 
 TEST_F(MeshSdfTest, TheCpuEngineWritesTheGlslFieldsValuesAtTheSamePositionsBitForBit) {

@@ -22,11 +22,14 @@ int runSample(const values::SampleRequest& request, const OutputOptions& output)
                 std::printf("  %s:%s\n", i.output.c_str(), values.c_str());
             }
         } else {
+            // A GPU's timer queries: how much of the run the dispatches took (none on llvmpipe).
+            char kernel[64] = "";
+            if (r.kernelSeconds >= 0.0) std::snprintf(kernel, sizeof kernel, "; GPU kernels %.3f s", r.kernelSeconds);
             std::printf(
-                "wrote %s: %llu samples (%s, seed %llu, rows %llu..%llu of %llu), %llu bad rows, %.2f s (%.2f M samples/s)\n",
+                "wrote %s: %llu samples (%s, seed %llu, rows %llu..%llu of %llu), %llu bad rows, %.2f s (%.2f M samples/s)%s\n",
                 r.output.c_str(), (unsigned long long)r.rows, r.pattern.c_str(), (unsigned long long)r.seed,
                 (unsigned long long)r.firstIndex, (unsigned long long)(r.firstIndex + r.rows), (unsigned long long)r.count,
-                (unsigned long long)r.badRows, r.seconds, r.samplesPerSecond / 1e6);
+                (unsigned long long)r.badRows, r.seconds, r.samplesPerSecond / 1e6, kernel);
         }
         if (r.badRows > 0)
             std::fprintf(

@@ -134,8 +134,9 @@ public:
     // field's when SDFWB_MESH_COUNT=1 was set at build() (nearest and winding nodes, and signs the
     // lattice gave, per field evaluation); zero otherwise.
     bool countsMeshWalks() const;
-    // The GPU time of this program's dispatches since build(), by timer queries (the values
-    // program's included); -1 when a dispatch's timer read more than the wall time around it.
+    // The GPU time of this program's dispatches since build(), by timer queries (the five
+    // passes of a chunk sorted by cell included); -1 when a dispatch's timer read more than the
+    // wall time around it.
     double kernelMilliseconds() const;
     // The GPU time of the staging copies into mapped host buffers since build() (0 without
     // staging; -1 where the driver's timer cannot be trusted, as kernelMilliseconds()).

@@ -9,5 +9,6 @@ inline constexpr int kBindingDistances = 1;
 inline constexpr int kBindingGradients = 2;
 inline constexpr int kBindingInputs = 3;
 inline constexpr int kBindingBadRows = 4;
+inline constexpr int kBindingSort = 8; // after the mesh's 5..7 (shaders::kMesh*Binding)
 
 } // namespace sdfwb::renderer

@@ -290,6 +290,7 @@ struct SampleReport : SdfHeader {
     double seconds = 0.0;      // sampling and writing (every instance's)
     double setupSeconds = 0.0; // before that: the request checked, the SDF opened, its sampler compiled
     double samplesPerSecond = 0.0;
+    double kernelSeconds = -1.0; // the GPU time of the dispatches (timer queries); -1: not timed (llvmpipe)
     std::string glRenderer;
     std::vector<shaders::ParameterValue> parameters; // every declared parameter's value (a single run)
     std::vector<SampleInstance> instances;           // a family: one per output
