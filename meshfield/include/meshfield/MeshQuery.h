@@ -92,8 +92,7 @@ public:
     // rounded up; +inf where the ball reaches the boundary): the crossing sign's bound. Filled on
     // `threads` threads (0: every core); only the header, with 0 points a side, when the sign is
     // not winding numbers.
-    static constexpr int kGpuSignLevel = 5;
-    std::vector<float> signLattice(int level = kGpuSignLevel, unsigned threads = 0) const;
+    std::vector<float> signLattice(int level, unsigned threads = 0) const;
 
     // Bytes the CPU layout and the sign cache take.
     std::size_t bytes() const;
