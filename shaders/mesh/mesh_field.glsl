@@ -402,52 +402,62 @@ float sdfwb_meshLatticeInside(vec3 p, float d) {
 bool sdfwb_meshSegmentCrossings(vec3 q, vec3 p, out int net) {
     net = 0;
     vec3 direction = p - q;
-    vec3 inverse = 1.0 / direction;
+    // A zero component's slab test is left to the boxes' other axes (as the CPU engine's walk).
+    vec3 inverse = 1.0 / mix(vec3(1e-30), direction, greaterThan(abs(direction), vec3(1e-30)));
     float scale = max(max(abs(q.x), abs(q.y)), max(abs(q.z), 1.0));
     float slack = 1e-5 * scale;     // boxes widened by more than the float rounding of the ends
     float tolerance = 1e-6 * scale; // an end this near a triangle's plane is on it
     const float edge = 1e-4;        // a crossing this near an edge (barycentric) is on it
-    uint stack[2 * SDFWB_MESH_STACK];
+    // The four-wide hierarchy, as sdfwb_meshNearestWithin walks it: a step tests a node's four
+    // children's boxes at once (half the steps of the two-child walk); an entry is an inner node or
+    // a leaf (top bit set, its first triangle times 8 plus its count).
+    uint stack[SDFWB_MESH_WIDE_STACK];
     int top = 0;
     stack[top++] = 0u;
     while (top > 0) {
-        uint n = stack[--top];
-        SDFWB_MESH_COUNTS(sdfwb_meshSegmentCount);
-        vec4 lo = sdfwb_meshNodes[SDFWB_MESH_NODE * n];
-        vec4 hi = sdfwb_meshNodes[SDFWB_MESH_NODE * n + 1u];
-        vec3 t0 = (lo.xyz - slack - q) * inverse;
-        vec3 t1 = (hi.xyz + slack - q) * inverse;
-        vec3 tmin = min(t0, t1);
-        vec3 tmax = max(t0, t1);
-        if (max(max(tmin.x, tmin.y), max(tmin.z, 0.0)) > min(min(tmax.x, tmax.y), min(tmax.z, 1.0)) * 1.00001 + 1e-5) continue;
-        uint first = floatBitsToUint(lo.w);
-        uint count = floatBitsToUint(hi.w);
-        if (count == 0u) {
-            stack[top++] = first;
-            stack[top++] = first + 1u;
+        uint entry = stack[--top];
+        if ((entry & 0x80000000u) != 0u) {
+            uint first = (entry & 0x7fffffffu) >> 3u;
+            uint count = entry & 7u;
+            for (uint k = 0u; k < SDFWB_MESH_LEAF; ++k) {
+                if (k >= count) break;
+                uint s = first + k;
+                vec3 a = sdfwb_meshTriangles[3u * s].xyz;
+                vec3 b = sdfwb_meshTriangles[3u * s + 1u].xyz;
+                vec3 c = sdfwb_meshTriangles[3u * s + 2u].xyz;
+                vec3 normal = cross(b - a, c - a);
+                float area2 = dot(normal, normal);
+                if (!(area2 > 0.0)) continue; // no area: its solid angle is zero everywhere
+                float unit = inversesqrt(area2);
+                float sq = dot(q - a, normal) * unit;
+                float sp = dot(p - a, normal) * unit;
+                if ((sq > tolerance && sp > tolerance) || (sq < -tolerance && sp < -tolerance)) continue;
+                if (abs(sq) <= tolerance || abs(sp) <= tolerance) return false;
+                vec3 x = q + direction * (sq / (sq - sp));
+                float la = dot(cross(c - b, x - b), normal) / area2;
+                float lb = dot(cross(a - c, x - c), normal) / area2;
+                float lc = dot(cross(b - a, x - a), normal) / area2;
+                if (la < -edge || lb < -edge || lc < -edge) continue; // beside the triangle
+                if (la <= edge || lb <= edge || lc <= edge) return false;
+                net += dot(direction, normal) > 0.0 ? -1 : 1;
+            }
             continue;
         }
-        for (uint k = 0u; k < SDFWB_MESH_LEAF; ++k) {
-            if (k >= count) break;
-            uint s = first + k;
-            vec3 a = sdfwb_meshTriangles[3u * s].xyz;
-            vec3 b = sdfwb_meshTriangles[3u * s + 1u].xyz;
-            vec3 c = sdfwb_meshTriangles[3u * s + 2u].xyz;
-            vec3 normal = cross(b - a, c - a);
-            float area2 = dot(normal, normal);
-            if (!(area2 > 0.0)) continue; // no area: its solid angle is zero everywhere
-            float unit = inversesqrt(area2);
-            float sq = dot(q - a, normal) * unit;
-            float sp = dot(p - a, normal) * unit;
-            if ((sq > tolerance && sp > tolerance) || (sq < -tolerance && sp < -tolerance)) continue;
-            if (abs(sq) <= tolerance || abs(sp) <= tolerance) return false;
-            vec3 x = q + direction * (sq / (sq - sp));
-            float la = dot(cross(c - b, x - b), normal) / area2;
-            float lb = dot(cross(a - c, x - c), normal) / area2;
-            float lc = dot(cross(b - a, x - a), normal) / area2;
-            if (la < -edge || lb < -edge || lc < -edge) continue; // beside the triangle
-            if (la <= edge || lb <= edge || lc <= edge) return false;
-            net += dot(direction, normal) > 0.0 ? -1 : 1;
+        uint at = SDFWB_MESH_WIDE + 8u * entry;
+        SDFWB_MESH_COUNTS(sdfwb_meshSegmentCount);
+        vec4 loX = sdfwb_meshNodes[at], loY = sdfwb_meshNodes[at + 1u], loZ = sdfwb_meshNodes[at + 2u];
+        vec4 hiX = sdfwb_meshNodes[at + 3u], hiY = sdfwb_meshNodes[at + 4u], hiZ = sdfwb_meshNodes[at + 5u];
+        vec4 t0x = (loX - slack - q.x) * inverse.x, t1x = (hiX + slack - q.x) * inverse.x;
+        vec4 t0y = (loY - slack - q.y) * inverse.y, t1y = (hiY + slack - q.y) * inverse.y;
+        vec4 t0z = (loZ - slack - q.z) * inverse.z, t1z = (hiZ + slack - q.z) * inverse.z;
+        vec4 enter = max(max(min(t0x, t1x), min(t0y, t1y)), max(min(t0z, t1z), vec4(0.0)));
+        vec4 leave = min(min(max(t0x, t1x), max(t0y, t1y)), min(max(t0z, t1z), vec4(1.0)));
+        uvec4 child = floatBitsToUint(sdfwb_meshNodes[at + 6u]);
+        uvec4 count = floatBitsToUint(sdfwb_meshNodes[at + 7u]);
+        for (int k = 0; k < 4; ++k) {
+            if (loX[k] > hiX[k] || enter[k] > leave[k] * 1.00001 + 1e-5) continue; // an empty slot, or missed
+            if (top >= SDFWB_MESH_WIDE_STACK) return false;
+            stack[top++] = count[k] > 0u ? (0x80000000u | (child[k] << 3u) | count[k]) : child[k];
         }
     }
     return top == 0;
