@@ -249,7 +249,7 @@ def speed_row(name, vertices, faces):
         nodes = with_environment({"SDFWB_MESH_ENGINE": "cpu"}, lambda: sdfwb.evaluate(mesh_path, at)["mesh_nodes"])
         row["nodes_" + pattern] = {k: v / nodes["rows"] for k, v in nodes.items() if k != "rows"}
         print(name, pattern, "nodes per row", row["nodes_" + pattern], flush=True)
-        # The GLSL field's walks (what a GPU runs, its 65^3 sign lattice included), counted by the shader
+        # The GLSL field's walks (what a GPU runs in a long run, its 65^3 sign lattice), counted by the shader
         # on the first GLSL_POINTS.
         nodes = with_environment({"SDFWB_MESH_ENGINE": "gpu", "SDFWB_MESH_COUNT": "1", "SDFWB_MESH_SIGN_LEVEL": "6"},
                                  lambda: sdfwb.evaluate(mesh_path, at[:GLSL_POINTS])["mesh_nodes"])
@@ -511,9 +511,9 @@ with open(OUT, "w") as out:
               f"{SPEED_POINTS:,} points of `sdfwb.sample(path, 'near')`.\n\n"
               "The GLSL field (what a GPU runs; `SDFWB_MESH_ENGINE=gpu SDFWB_MESH_COUNT=1`, the shader counts its "
               f"own walks) on the first {GLSL_POINTS:,} of the same points: one nearest walk and one sign a row, "
-              "the same ball test and segment walks from a lattice of winding numbers of 65^3 points, as on a GPU "
-              "(`SDFWB_MESH_SIGN_LEVEL=6`; where the driver runs shaders on the CPU it has 33^3), and its "
-              "segments walk the two-child hierarchy.\n\n"
+              "the same ball test and segment walks from a lattice of winding numbers of 65^3 points, as in a "
+              "GPU's runs of 4 M rows or more (`SDFWB_MESH_SIGN_LEVEL=6`; otherwise 33^3), and each walk seeded "
+              "by its nearest lattice point's nearest triangle.\n\n"
               "| mesh | points | engine | nearest | winding | segment | cached | crossed |\n"
               "|---|---|---|---|---|---|---|---|\n")
     for r in speed_rows:

@@ -736,18 +736,26 @@ std::vector<float> MeshQuery::signLattice(int level, unsigned threads) const {
     const std::size_t points = latticePoints(level);
     const bool open = !m_boundary.empty();
     out[6] = open ? 1.0f : 0.0f;
-    out.resize(8 + (open ? 2 : 1) * points);
+    out[7] = 1.0f;
+    const std::size_t seeds = 8 + (open ? 2 : 1) * points;
+    out.resize(seeds + points);
     const double reach = double(stepF) * std::sqrt(3.0) * 0.5 * (1.0 + 1e-6); // the half diagonal, and float slack
     std::atomic<std::size_t> next{0};
     auto work = [&] {
-        for (std::size_t i; (i = next.fetch_add(256)) < points;)
+        for (std::size_t i; (i = next.fetch_add(256)) < points;) {
+            std::uint32_t slot = kNoSeed; // each nearest walk starts from the last point's triangle
             for (std::size_t j = i; j < std::min(points, i + 256); ++j) {
                 const std::size_t x = j % std::size_t(side), y = (j / std::size_t(side)) % std::size_t(side),
                                   z = j / (std::size_t(side) * std::size_t(side));
                 const dvec3 q(lo + glm::vec3(float(x), float(y), float(z)) * stepF);
                 out[8 + j] = float(winding(q));
                 if (open) out[8 + points + j] = roundedUp(boundarySlope(q, reach));
+                int feature = 0;
+                dvec3 closest;
+                nearest(q, slot, feature, closest, nullptr, slot);
+                out[seeds + j] = detail::asFloat(slot);
             }
+        }
     };
     std::vector<std::thread> pool;
     const unsigned workers = std::min<unsigned>(threadCount(threads), unsigned(points / 256 + 1));

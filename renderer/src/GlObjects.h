@@ -149,6 +149,10 @@ struct SdfTextures {
     GlBuffer meshNodes;
     GlBuffer meshTriangles;
     GlBuffer meshPseudonormals;
+    // The GLSL field's sign lattice (MeshQuery::signLattice): the level a caller asks for (0: the
+    // default, 5), and the level uploaded with the nodes.
+    int meshSignLevel = 0;
+    int uploadedSignLevel = 0;
     void reset();
     void release();
 };

@@ -6,7 +6,6 @@
 
 #include <core/Hash.h>
 #include <core/Log.h>
-#include <renderer/GlInfo.h>
 #include <renderer/ImageIO.h>
 #include <shaders/ShaderComposer.h>
 
@@ -133,25 +132,24 @@ GlBuffer storageBuffer(const std::vector<float>& data) {
     return buffer;
 }
 
-// The GLSL field's sign lattice (MeshQuery::signLattice): 65^3 points on a GPU, where the bunny's
-// near rows then walk 24 % fewer nodes than with 33^3 (57 against 76 a row, counted by the shader
-// on llvmpipe: fewer rows fall back to the winding walk); 33^3 where the driver runs shaders on the
-// CPU, whose two cores here build it at every bind (the bunny: 0.35 s against 0.05 s) and where
-// the CPU engine evaluates a mesh's own field anyway. SDFWB_MESH_SIGN_LEVEL=2..7 sets it.
-int glslSignLevel() {
+// The GLSL field's sign lattice (MeshQuery::signLattice): `wanted`, or 33^3 points (level 5).
+// SDFWB_MESH_SIGN_LEVEL=2..7 sets it for every caller.
+int glslSignLevel(int wanted) {
     if (const char* level = std::getenv("SDFWB_MESH_SIGN_LEVEL"); level && *level) return std::clamp(std::atoi(level), 2, 7);
-    return softwareRasteriser() ? 5 : 6;
+    return wanted > 0 ? std::clamp(wanted, 2, 7) : 5;
 }
 
 void bindMesh(SdfTextures& textures, const std::shared_ptr<const meshfield::MeshField>& mesh) {
-    if (textures.mesh != mesh) {
+    const int level = glslSignLevel(textures.meshSignLevel);
+    if (textures.mesh != mesh || textures.uploadedSignLevel != level) {
         textures.mesh = mesh;
+        textures.uploadedSignLevel = level;
         // The binary hierarchy, then the four-wide one (SDFWB_MESH_WIDE: where it starts).
         std::vector<float> nodes = mesh->nodes;
         nodes.insert(nodes.end(), mesh->wideNodes.begin(), mesh->wideNodes.end());
         // Winding numbers: then the sign lattice (SDFWB_MESH_SIGNS: where it starts).
         if (mesh->options.sign == meshfield::SignMethod::Winding) {
-            const std::vector<float> signs = meshfield::meshQuery(mesh)->signLattice(glslSignLevel());
+            const std::vector<float> signs = meshfield::meshQuery(mesh)->signLattice(level);
             nodes.insert(nodes.end(), signs.begin(), signs.end());
         }
         textures.meshNodes = storageBuffer(nodes);

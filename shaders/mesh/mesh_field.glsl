@@ -124,10 +124,7 @@ void sdfwb_meshOrder(inout ivec4 order, vec4 d2, int i, int j) {
 // eight vec4 and tests its four children's boxes at once, nearest child walked next; a stack entry
 // is an inner node, or a leaf (top bit set, its first triangle times 8 plus its count), with the
 // distance of its box, so that an entry a nearer triangle has since put out of reach costs no read.
-float sdfwb_meshNearestWithin(vec3 p, float bound2, out uint triangle, out int feature, out vec3 closest) {
-    triangle = 0u;
-    feature = 0;
-    closest = p;
+float sdfwb_meshNearestWalk(vec3 p, float bound2, inout uint triangle, inout int feature, inout vec3 closest) {
     if (sdfwb_meshIdleLane()) return 1.0;
     uint stack[SDFWB_MESH_WIDE_STACK];
     float reach[SDFWB_MESH_WIDE_STACK];
@@ -187,7 +184,43 @@ float sdfwb_meshNearestWithin(vec3 p, float bound2, out uint triangle, out int f
     return top > 0 ? sdfwb_meshCut() : best;
 }
 
+float sdfwb_meshNearestWithin(vec3 p, float bound2, out uint triangle, out int feature, out vec3 closest) {
+    triangle = 0u;
+    feature = 0;
+    closest = p;
+    return sdfwb_meshNearestWalk(p, bound2, triangle, feature, closest);
+}
+
+#if defined(SDFWB_MESH_SIGN_WINDING) && defined(SDFWB_MESH_SIGNS)
+// The nearest triangle of the sign lattice's point nearest p (MeshQuery::signLattice's seeds,
+// after its winding numbers and slopes), or 0xffffffff where there is none: its distance bounds
+// p's nearest walk from the start, as the CPU engine's walk starts from the last row's triangle.
+uint sdfwb_meshLatticeSeed(vec3 p) {
+    vec4 origin = sdfwb_meshNodes[SDFWB_MESH_SIGNS];
+    vec4 header = sdfwb_meshNodes[SDFWB_MESH_SIGNS + 1u];
+    const uint exponent = 0x7f800000u;
+    if (header.x < 2.0 || header.w < 0.5 || any(equal(floatBitsToUint(p) & exponent, uvec3(exponent)))) return 0xffffffffu;
+    vec3 at = clamp(floor((p - origin.xyz) / origin.w + 0.5), vec3(0.0), vec3(header.x - 1.0));
+    uint n = uint(header.x);
+    uint i = 8u + n * n * n * (header.z > 0.5 ? 2u : 1u) + (uint(at.z) * n + uint(at.y)) * n + uint(at.x);
+    uint seed = floatBitsToUint(sdfwb_meshNodes[SDFWB_MESH_SIGNS + i / 4u][i % 4u]);
+    return seed < uint(sdfwb_meshTriangles.length()) / 3u ? seed : 0xffffffffu;
+}
+#endif
+
+// The nearest triangle (see sdfwb_meshNearestWithin), the walk bounded from the start by the
+// lattice's seed where the field has one. Among equally near triangles the seed may win where the
+// walk alone took another: the same distance.
 float sdfwb_meshNearest(vec3 p, out uint triangle, out int feature, out vec3 closest) {
+#if defined(SDFWB_MESH_SIGN_WINDING) && defined(SDFWB_MESH_SIGNS)
+    uint seed = sdfwb_meshLatticeSeed(p);
+    if (seed != 0xffffffffu) {
+        triangle = seed;
+        closest = sdfwb_meshClosest(p, sdfwb_meshTriangles[3u * seed].xyz, sdfwb_meshTriangles[3u * seed + 1u].xyz,
+                                    sdfwb_meshTriangles[3u * seed + 2u].xyz, feature);
+        return sdfwb_meshNearestWalk(p, dot(p - closest, p - closest), triangle, feature, closest);
+    }
+#endif
     return sdfwb_meshNearestWithin(p, 3.0e38, triangle, feature, closest);
 }
 

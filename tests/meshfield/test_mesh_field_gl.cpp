@@ -90,7 +90,7 @@ TEST_F(MeshSdfTest, TheGlslFieldTakesFarSignsFromTheLatticeAndKeepsEverySign) {
 // segment walk instead of a winding walk), bounded by the open boundary's slope there. The same
 // signs as the CPU's exact reference, most near rows on a closed mesh served that way, and far
 // fewer winding nodes a row; on an open mesh only where the boundary's slope allows. With the
-// lattice of 33^3 points (where the driver runs shaders on the CPU) and of 65^3 (a GPU's).
+// lattice of 33^3 points (the default) and of 65^3 (a GPU's runs of 4 M rows or more).
 TEST_F(MeshSdfTest, TheGlslFieldTakesNearSignsFromSegmentCrossingsAndKeepsEverySign) {
     const meshfield::TriangleMesh torus = testing::torusMesh(0.6f, 0.25f, 48, 16);
     EngineScope scope("gpu");
@@ -115,7 +115,7 @@ TEST_F(MeshSdfTest, TheGlslFieldTakesNearSignsFromSegmentCrossingsAndKeepsEveryS
             for (int a = 0; a < 3; ++a) points.push_back(on[a] + off[a]);
         }
         const std::size_t n = points.size() / 3;
-        // The lattice of 33^3 points (llvmpipe's) and of 65^3 (a GPU's): the finer decides more rows.
+        // The lattice of 33^3 points and of 65^3: the finer decides more rows.
         std::uint64_t decidedAt33 = 0; // rows signed without a winding walk
         for (const char* level : {"5", "6"}) {
             setenv("SDFWB_MESH_SIGN_LEVEL", level, 1);

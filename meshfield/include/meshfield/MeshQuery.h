@@ -87,11 +87,12 @@ public:
     // The sign cache's level of 2^level + 1 points a side (level 2 .. 7) for the GLSL field
     // (shaders/mesh/mesh_field.glsl reads it after the hierarchy): a header of eight floats (the
     // lattice's first point x y z, its step, its points a side, the open boundary's length, 1 when
-    // boundary slopes follow, 0), then every point's winding number (x fastest), then, on an open
-    // mesh, every point's boundary slope over the ball of half a cell's diagonal (boundarySlope,
-    // rounded up; +inf where the ball reaches the boundary): the crossing sign's bound. Filled on
-    // `threads` threads (0: every core); only the header, with 0 points a side, when the sign is
-    // not winding numbers.
+    // boundary slopes follow, 1 when seeds follow), then every point's winding number (x fastest),
+    // then, on an open mesh, every point's boundary slope over the ball of half a cell's diagonal
+    // (boundarySlope, rounded up; +inf where the ball reaches the boundary): the crossing sign's
+    // bound; then every point's nearest triangle slot (as float bits): a row's nearest walk starts
+    // bounded by its nearest lattice point's triangle. Filled on `threads` threads (0: every core);
+    // only the header, with 0 points a side, when the sign is not winding numbers.
     std::vector<float> signLattice(int level, unsigned threads = 0) const;
 
     // Bytes the CPU layout and the sign cache take.
