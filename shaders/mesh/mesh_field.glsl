@@ -117,6 +117,13 @@ void sdfwb_meshOrder(inout ivec4 order, vec4 d2, int i, int j) {
     }
 }
 
+// A stack entry of the four-wide walks: an inner node's index, or a leaf (top bit set, its first
+// triangle times 8 plus its count), from a wide node's child slot.
+uint sdfwb_meshWideEntry(uint child, uint count) { return count > 0u ? (0x80000000u | (child << 3u) | count) : child; }
+bool sdfwb_meshIsLeafEntry(uint entry) { return (entry & 0x80000000u) != 0u; }
+uint sdfwb_meshLeafFirst(uint entry) { return (entry & 0x7fffffffu) >> 3u; }
+uint sdfwb_meshLeafCount(uint entry) { return entry & 7u; }
+
 // The squared distance to the nearest triangle, which triangle (leaf order), its feature and point;
 // `bound2` when no triangle is nearer than its root (then triangle 0 and closest p): a walk that
 // needs the distance only below a bound prunes every box beyond it. It walks the four-wide
@@ -137,9 +144,9 @@ float sdfwb_meshNearestWalk(vec3 p, float bound2, inout uint triangle, inout int
         --top;
         if (reach[top] >= best) continue;
         uint entry = stack[top];
-        if ((entry & 0x80000000u) != 0u) {
-            uint first = (entry & 0x7fffffffu) >> 3u;
-            uint count = entry & 7u;
+        if (sdfwb_meshIsLeafEntry(entry)) {
+            uint first = sdfwb_meshLeafFirst(entry);
+            uint count = sdfwb_meshLeafCount(entry);
             // A constant bound: the driver unrolls the leaf, so that its triangles cost no loop budget.
             for (uint k = 0u; k < SDFWB_MESH_LEAF; ++k) {
                 if (k >= count) break;
@@ -176,7 +183,7 @@ float sdfwb_meshNearestWalk(vec3 p, float bound2, inout uint triangle, inout int
         for (int j = 0; j < 4; ++j) {
             int k = order[j];
             if (!(d2[k] < best) || top >= SDFWB_MESH_WIDE_STACK) continue;
-            stack[top] = count[k] > 0u ? (0x80000000u | (child[k] << 3u) | count[k]) : child[k];
+            stack[top] = sdfwb_meshWideEntry(child[k], count[k]);
             reach[top] = d2[k];
             ++top;
         }
@@ -441,17 +448,16 @@ bool sdfwb_meshSegmentCrossings(vec3 q, vec3 p, out int net) {
     float slack = 1e-5 * scale;     // boxes widened by more than the float rounding of the ends
     float tolerance = 1e-6 * scale; // an end this near a triangle's plane is on it
     const float edge = 1e-4;        // a crossing this near an edge (barycentric) is on it
-    // The four-wide hierarchy, as sdfwb_meshNearestWithin walks it: a step tests a node's four
-    // children's boxes at once (half the steps of the two-child walk); an entry is an inner node or
-    // a leaf (top bit set, its first triangle times 8 plus its count).
+    // The four-wide hierarchy, as sdfwb_meshNearestWalk walks it: a step tests a node's four
+    // children's boxes at once (half the steps of the two-child walk; sdfwb_meshWideEntry).
     uint stack[SDFWB_MESH_WIDE_STACK];
     int top = 0;
     stack[top++] = 0u;
     while (top > 0) {
         uint entry = stack[--top];
-        if ((entry & 0x80000000u) != 0u) {
-            uint first = (entry & 0x7fffffffu) >> 3u;
-            uint count = entry & 7u;
+        if (sdfwb_meshIsLeafEntry(entry)) {
+            uint first = sdfwb_meshLeafFirst(entry);
+            uint count = sdfwb_meshLeafCount(entry);
             for (uint k = 0u; k < SDFWB_MESH_LEAF; ++k) {
                 if (k >= count) break;
                 uint s = first + k;
@@ -490,7 +496,7 @@ bool sdfwb_meshSegmentCrossings(vec3 q, vec3 p, out int net) {
         for (int k = 0; k < 4; ++k) {
             if (loX[k] > hiX[k] || enter[k] > leave[k] * 1.00001 + 1e-5) continue; // an empty slot, or missed
             if (top >= SDFWB_MESH_WIDE_STACK) return false;
-            stack[top++] = count[k] > 0u ? (0x80000000u | (child[k] << 3u) | count[k]) : child[k];
+            stack[top++] = sdfwb_meshWideEntry(child[k], count[k]);
         }
     }
     return top == 0;
