@@ -140,7 +140,8 @@ int glslSignLevel(int wanted) {
 }
 
 void bindMesh(SdfTextures& textures, const std::shared_ptr<const meshfield::MeshField>& mesh) {
-    const int level = glslSignLevel(textures.meshSignLevel);
+    const bool winding = mesh->options.sign == meshfield::SignMethod::Winding;
+    const int level = winding ? glslSignLevel(textures.meshSignLevel) : 0; // only winding numbers have the lattice
     if (textures.mesh != mesh || textures.uploadedSignLevel != level) {
         textures.mesh = mesh;
         textures.uploadedSignLevel = level;
@@ -148,10 +149,11 @@ void bindMesh(SdfTextures& textures, const std::shared_ptr<const meshfield::Mesh
         std::vector<float> nodes = mesh->nodes;
         nodes.insert(nodes.end(), mesh->wideNodes.begin(), mesh->wideNodes.end());
         // Winding numbers: then the sign lattice (SDFWB_MESH_SIGNS: where it starts).
-        if (mesh->options.sign == meshfield::SignMethod::Winding) {
+        if (winding) {
             const std::vector<float> signs = meshfield::meshQuery(mesh)->signLattice(level);
             nodes.insert(nodes.end(), signs.begin(), signs.end());
         }
+        nodes.resize((nodes.size() + 3) / 4 * 4, 0.0f); // whole vec4s: the shader reads the last one whole
         textures.meshNodes = storageBuffer(nodes);
         textures.meshTriangles = storageBuffer(mesh->triangles);
         textures.meshPseudonormals = storageBuffer(mesh->pseudonormals);

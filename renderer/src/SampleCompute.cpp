@@ -349,8 +349,9 @@ Expected<void> SampleCompute::Impl::dispatchSorted(std::uint32_t count, std::uin
     if (const char* forced = std::getenv("SDFWB_SORT_BITS"); forced && *forced)
         bits = std::clamp<std::uint32_t>(std::uint32_t(std::atoi(forced)), 1, kMostBits);
     const GLsizeiptr cellWords = GLsizeiptr(kSortParts) + (GLsizeiptr(1) << (3 * kMostBits));
+    if (const GLenum error = glGetError(); error != GL_NO_ERROR) // from issue()'s own calls before this
+        return makeError("sampling: dispatch of " + std::to_string(count) + " samples failed (" + glErrorName(error) + ")");
     if (count > sortCapacity || !sortWords) {
-        while (glGetError() != GL_NO_ERROR) {}
         GLuint id = 0;
         glGenBuffers(1, &id);
         sortWords = GlBuffer(id);
@@ -366,8 +367,9 @@ Expected<void> SampleCompute::Impl::dispatchSorted(std::uint32_t count, std::uin
                              glErrorName(error) + "); try a smaller --chunk");
         }
     }
-    // The last chunk's passes have read the buffer before its counts are zeroed.
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    // The last chunk's passes have written and read the buffer before its counts are zeroed (a
+    // buffer command after shader writes: the update bit).
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     const GLuint zero = 0;
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, sortWords.id());
     glClearBufferSubData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GLintptr(kSortParts) * 4, (GLsizeiptr(1) << (3 * bits)) * 4,

@@ -126,7 +126,8 @@ uint sdfwb_meshLeafCount(uint entry) { return entry & 7u; }
 
 // The squared distance to the nearest triangle, which triangle (leaf order), its feature and point;
 // `bound2` when no triangle is nearer than its root (then triangle 0 and closest p): a walk that
-// needs the distance only below a bound prunes every box beyond it. It walks the four-wide
+// needs the distance only below a bound prunes every box beyond it. Among equally near triangles
+// the lowest slot wins, so a walk started from any triangle's distance ends at the same one. It walks the four-wide
 // hierarchy (meshfield::kWideNodeFloats, from vec4 SDFWB_MESH_WIDE on): one step reads a node's
 // eight vec4 and tests its four children's boxes at once, nearest child walked next; a stack entry
 // is an inner node, or a leaf (top bit set, its first triangle times 8 plus its count), with the
@@ -142,7 +143,7 @@ float sdfwb_meshNearestWalk(vec3 p, float bound2, inout uint triangle, inout int
     float best = bound2;
     while (top > 0) {
         --top;
-        if (reach[top] >= best) continue;
+        if (reach[top] > best) continue;
         uint entry = stack[top];
         if (sdfwb_meshIsLeafEntry(entry)) {
             uint first = sdfwb_meshLeafFirst(entry);
@@ -155,7 +156,7 @@ float sdfwb_meshNearestWalk(vec3 p, float bound2, inout uint triangle, inout int
                 vec3 q = sdfwb_meshClosest(p, sdfwb_meshTriangles[3u * s].xyz, sdfwb_meshTriangles[3u * s + 1u].xyz,
                                            sdfwb_meshTriangles[3u * s + 2u].xyz, f);
                 float d2 = dot(p - q, p - q);
-                if (d2 < best) {
+                if (d2 < best || (d2 == best && s < triangle)) { // ties: the lowest slot, as the CPU engine
                     best = d2;
                     triangle = s;
                     feature = f;
@@ -182,7 +183,7 @@ float sdfwb_meshNearestWalk(vec3 p, float bound2, inout uint triangle, inout int
         sdfwb_meshOrder(order, d2, 1, 2);
         for (int j = 0; j < 4; ++j) {
             int k = order[j];
-            if (!(d2[k] < best) || top >= SDFWB_MESH_WIDE_STACK) continue;
+            if (!(d2[k] <= best) || top >= SDFWB_MESH_WIDE_STACK) continue;
             stack[top] = sdfwb_meshWideEntry(child[k], count[k]);
             reach[top] = d2[k];
             ++top;
@@ -216,8 +217,8 @@ uint sdfwb_meshLatticeSeed(vec3 p) {
 #endif
 
 // The nearest triangle (see sdfwb_meshNearestWithin), the walk bounded from the start by the
-// lattice's seed where the field has one. Among equally near triangles the seed may win where the
-// walk alone took another: the same distance.
+// lattice's seed where the field has one: the same triangle as without it (among equally near
+// triangles the lowest slot wins, as in the CPU engine's walk).
 float sdfwb_meshNearest(vec3 p, out uint triangle, out int feature, out vec3 closest) {
 #if defined(SDFWB_MESH_SIGN_WINDING) && defined(SDFWB_MESH_SIGNS)
     uint seed = sdfwb_meshLatticeSeed(p);

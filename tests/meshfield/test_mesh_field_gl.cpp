@@ -117,6 +117,7 @@ TEST_F(MeshSdfTest, TheGlslFieldTakesNearSignsFromSegmentCrossingsAndKeepsEveryS
         const std::size_t n = points.size() / 3;
         // The lattice of 33^3 points and of 65^3: the finer decides more rows.
         std::uint64_t decidedAt33 = 0; // rows signed without a winding walk
+        std::vector<float> valuesAt33;
         for (const char* level : {"5", "6"}) {
             setenv("SDFWB_MESH_SIGN_LEVEL", level, 1);
             meshfield::QueryCounters counters;
@@ -142,11 +143,17 @@ TEST_F(MeshSdfTest, TheGlslFieldTakesNearSignsFromSegmentCrossingsAndKeepsEveryS
             EXPECT_GT(counters.segmentNodes, counters.crossedSigns) << "each crossing sign walks its segment";
             if (!open) { EXPECT_LT(double(counters.windingNodes) / double(n), 5.0) << "few near rows walk the winding numbers"; }
             const std::uint64_t decided = counters.crossedSigns + counters.cachedSigns;
-            if (std::string_view(level) == "5")
+            if (std::string_view(level) == "5") {
                 decidedAt33 = decided;
-            else
+                valuesAt33 = values;
+            } else {
                 EXPECT_GE(decided, decidedAt33)
                     << (open ? "open" : "closed") << ": the finer lattice left more rows to the winding walk";
+                // Each lattice seeds the nearest walks with its own points' triangles: the same
+                // triangle wins either way, so the same values bit for bit.
+                EXPECT_EQ(0, std::memcmp(values.data(), valuesAt33.data(), values.size() * sizeof(float)))
+                    << (open ? "open" : "closed");
+            }
         }
     }
     unsetenv("SDFWB_MESH_COUNT");
