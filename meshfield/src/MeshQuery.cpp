@@ -719,6 +719,13 @@ std::uint64_t MeshQuery::evaluate(const RowView& rows, std::size_t count, const 
 
 std::vector<float> MeshQuery::signLattice(int level, unsigned threads) const {
     level = std::clamp(level, 2, 7);
+    std::lock_guard lock(m_latticeMutex); // one thread builds a level; the others wait for it
+    std::vector<float>& kept = m_lattices[std::size_t(level)];
+    if (kept.empty()) kept = buildSignLattice(level, threads);
+    return kept;
+}
+
+std::vector<float> MeshQuery::buildSignLattice(int level, unsigned threads) const {
     const double step = m_cacheStep * double(m_cacheSide >> level);
     const int side = m_useCache ? (1 << level) + 1 : 0;
     std::vector<float> out = {float(m_cacheLo.x),

@@ -6,16 +6,19 @@
 // there one nearest walk and one sign walk a row in C++ beat eight-lane divergent shader loops.
 //
 // Thread safety: a MeshQuery is immutable after construction except for its sign cache, which is
-// filled lock-free and holds only values that are pure functions of the mesh; any number of
-// threads may query one MeshQuery at once, and results never depend on the order or the threads.
+// filled lock-free and holds only values that are pure functions of the mesh, and the GLSL field's
+// sign lattices, each built once under a lock; any number of threads may query one MeshQuery at
+// once, and results never depend on the order or the threads.
 
 #include <meshfield/MeshField.h>
 
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace sdfwb::meshfield {
@@ -92,7 +95,8 @@ public:
     // (boundarySlope, rounded up; +inf where the ball reaches the boundary): the crossing sign's
     // bound; then every point's nearest triangle slot (as float bits): a row's nearest walk starts
     // bounded by its nearest lattice point's triangle. Filled on `threads` threads (0: every core);
-    // only the header, with 0 points a side, when the sign is not winding numbers.
+    // only the header, with 0 points a side, when the sign is not winding numbers. Built once a
+    // level and kept (a GPU program binds it at every build: each sdfwb.evaluate call).
     std::vector<float> signLattice(int level, unsigned threads = 0) const;
 
     // Bytes the CPU layout and the sign cache take.
@@ -108,6 +112,7 @@ private:
     // The sign cache's level `level` point nearest p (clamped to the lattice) in `q`; its index in
     // the level. And the winding number at cache slot `slot` (point q), computed on first use.
     std::size_t nearestLatticePoint(const glm::dvec3& p, int level, glm::dvec3& q) const;
+    std::vector<float> buildSignLattice(int level, unsigned threads) const;
     float latticeWinding(std::size_t slot, const glm::dvec3& q, std::uint64_t* visits) const;
     // The winding sign from the nearest lattice point of the crossing level and the triangles the
     // segment between them crosses; false when that cannot decide (see the .cpp).
@@ -140,6 +145,9 @@ private:
     };
     std::vector<BoundaryEdge> m_boundary;
     mutable std::unique_ptr<std::atomic<float>[]> m_slopes[2];
+    // signLattice's arrays, each level's once built (levels 2 .. 7).
+    mutable std::mutex m_latticeMutex;
+    mutable std::array<std::vector<float>, 8> m_lattices;
 };
 
 // Rows [0, count) of `xyz` (row i's x y z at xyz[i * stride]) in Morton order, 10 bits an axis
