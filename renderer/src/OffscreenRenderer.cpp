@@ -20,44 +20,46 @@ template <class T> std::vector<T> readTopDown(int width, int height, GLenum type
     return topDown;
 }
 
+// A w x h texture of the format (one level, storage that never changes) in a framebuffer of
+// its own, left bound.
+void makeTarget(int w, int h, GLenum format, GlTexture& texture, GlFramebuffer& framebuffer) {
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    texture = GlTexture(id);
+    GLint bound = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+    glBindTexture(GL_TEXTURE_2D, id);
+    glTexStorage2D(GL_TEXTURE_2D, 1, format, w, h);
+    glBindTexture(GL_TEXTURE_2D, GLuint(bound));
+    glGenFramebuffers(1, &id);
+    framebuffer = GlFramebuffer(id);
+    glBindFramebuffer(GL_FRAMEBUFFER, id);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture.id(), 0);
+}
+
 } // namespace
 
 struct OffscreenRenderer::Impl {
+    // Textures, not renderbuffers: the compute tracer stores into them directly.
     GlFramebuffer framebuffer;
-    GlRenderbuffer color;
+    GlTexture color;
     int width = 0;
     int height = 0;
     GlFramebuffer floatFramebuffer;
-    GlRenderbuffer floatColor;
+    GlTexture floatColor;
     int floatWidth = 0;
     int floatHeight = 0;
 
     void ensureFloatSize(int w, int h) {
         if (floatFramebuffer && w == floatWidth && h == floatHeight) return;
-        GLuint id = 0;
-        glGenRenderbuffers(1, &id);
-        floatColor = GlRenderbuffer(id);
-        glBindRenderbuffer(GL_RENDERBUFFER, id);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA32F, w, h);
-        glGenFramebuffers(1, &id);
-        floatFramebuffer = GlFramebuffer(id);
-        glBindFramebuffer(GL_FRAMEBUFFER, id);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, floatColor.id());
+        makeTarget(w, h, GL_RGBA32F, floatColor, floatFramebuffer);
         floatWidth = w;
         floatHeight = h;
     }
 
     void ensureSize(int w, int h) {
         if (framebuffer && w == width && h == height) return;
-        GLuint id = 0;
-        glGenRenderbuffers(1, &id);
-        color = GlRenderbuffer(id);
-        glBindRenderbuffer(GL_RENDERBUFFER, color.id());
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, w, h);
-        glGenFramebuffers(1, &id);
-        framebuffer = GlFramebuffer(id);
-        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color.id());
+        makeTarget(w, h, GL_RGBA8, color, framebuffer);
         width = w;
         height = h;
     }

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 
 namespace sdfwb::renderer {
 
@@ -48,7 +49,10 @@ glm::mat4 proxyClip(const values::Camera& camera, const values::CameraBasis& bas
         glm::mat4(row(basis.right / (aspect * tanHalf)), row(basis.up / tanHalf), w - glm::vec4(0, 0, 0, wNear), w));
 }
 
-SdfRenderer::SdfRenderer() : m_impl(std::make_unique<Impl>()) {}
+SdfRenderer::SdfRenderer() : m_impl(std::make_unique<Impl>()) {
+    const char* blit = std::getenv("SDFWB_COMPUTE_BLIT");
+    m_impl->computeViaBlit = blit && blit[0] == '1';
+}
 
 SdfRenderer::~SdfRenderer() {
     // GL names cannot be freed without the context; the owner calls releaseGl() first.
@@ -445,6 +449,63 @@ void SdfRenderer::Impl::ensureComputeTarget(int width, int height) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(reading));
 }
 
+namespace {
+
+// The bound draw framebuffer's colour texture, when the compute tracer can store into it as an
+// image: a single-sampled 2D texture (or a layer of one) of a format whose stores round as a draw
+// would (RGBA8, RGBA16F, RGBA32F). format 0: none (the default framebuffer, a renderbuffer, a
+// multisampled or sRGB target, or a driver without the queries), and the frame goes through the
+// float image and a blit.
+struct ImageTarget {
+    GLuint texture = 0;
+    GLint level = 0, layer = 0;
+    GLenum format = 0;
+};
+
+ImageTarget drawTargetImage() {
+    GLint framebuffer = 0, samples = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    if (framebuffer == 0) return {};
+    static const bool queries = epoxy_gl_version() >= 45 || epoxy_has_gl_extension("GL_ARB_direct_state_access");
+    if (!queries) return {};
+    glGetIntegerv(GL_SAMPLES, &samples);
+    GLint type = 0, name = 0, layered = 0, cubeFace = 0;
+    auto attachment = [](GLenum what, GLint* value) {
+        glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, what, value);
+    };
+    attachment(GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    if (samples != 0 || type != GL_TEXTURE) return {};
+    ImageTarget image;
+    attachment(GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &name);
+    attachment(GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL, &image.level);
+    attachment(GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER, &image.layer);
+    attachment(GL_FRAMEBUFFER_ATTACHMENT_LAYERED, &layered);
+    attachment(GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE, &cubeFace);
+    GLint target = 0, format = 0, immutable = 0, filter = 0;
+    glGetTextureParameteriv(GLuint(name), GL_TEXTURE_TARGET, &target);
+    glGetTextureLevelParameteriv(GLuint(name), image.level, GL_TEXTURE_INTERNAL_FORMAT, &format);
+    // Stores into a texture that is not complete do nothing: one of immutable storage, or one
+    // whose filter reads no mipmaps (a framebuffer library's usual texture).
+    glGetTextureParameteriv(GLuint(name), GL_TEXTURE_IMMUTABLE_FORMAT, &immutable);
+    glGetTextureParameteriv(GLuint(name), GL_TEXTURE_MIN_FILTER, &filter);
+    const bool complete = immutable || filter == GL_NEAREST || filter == GL_LINEAR;
+    const bool planar = (target == GL_TEXTURE_2D || target == GL_TEXTURE_2D_ARRAY) && !layered && cubeFace == 0;
+    if (!planar || !complete || (format != GL_RGBA8 && format != GL_RGBA16F && format != GL_RGBA32F)) return {};
+    image.texture = GLuint(name);
+    image.format = GLenum(format);
+    return image;
+}
+
+// The compute tracer's frame stored straight into the draw framebuffer's texture.
+void traceInto(const ImageTarget& image, int width, int height) {
+    glBindImageTexture(0, image.texture, image.level, GL_FALSE, image.layer, GL_WRITE_ONLY, image.format);
+    glDispatchCompute(GLuint((width + 7) / 8), GLuint((height + 7) / 8), 1);
+    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+}
+
+} // namespace
+
 void SdfRenderer::Impl::traceCompute(int width, int height) {
     GLint target = 0, reading = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
@@ -485,12 +546,19 @@ FrameStats SdfRenderer::render(int width, int height, const values::Camera& came
         }
         const values::CameraBasis basis = cameraBasis(camera);
         if (v->compute) {
-            m_impl->ensureComputeTarget(width, height); // first: making it rebinds the active texture unit
+            // The float image, when the frame needs one, is made first: making it rebinds the
+            // active texture unit.
+            const ImageTarget image = m_impl->computeViaBlit ? ImageTarget{} : drawTargetImage();
+            if (!image.format) m_impl->ensureComputeTarget(width, height);
             glBindProgramPipeline(0);
             glUseProgram(v->program.id());
             m_impl->setFrameUniforms(*v, {m_shading, m_trace, m_plane, m_parameters}, width, height, camera, basis, time);
             m_impl->bindShadingTextures(*v, m_shading, width, height);
-            m_impl->traceCompute(width, height);
+            stats.storedInTarget = image.format != 0;
+            if (image.format)
+                traceInto(image, width, height);
+            else
+                m_impl->traceCompute(width, height);
             glUseProgram(0);
         } else {
             // The variant's fragment program with the shared vertex program; glUniform* reach the
@@ -550,7 +618,7 @@ FrameStats SdfRenderer::renderScaled(int width, int height, float scale, const v
     // compile every SDF twice, once for the timing frame and once for the full one.)
     glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
     impl.insideScaled = true;
-    const bool boxProxy = render(lowWidth, lowHeight, camera, time, false).boxProxy;
+    const FrameStats low = render(lowWidth, lowHeight, camera, time, false);
     impl.insideScaled = false;
     glBindTexture(GL_TEXTURE_2D, impl.lowColor.id());
     glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, lowWidth, lowHeight);
@@ -566,7 +634,8 @@ FrameStats SdfRenderer::renderScaled(int width, int height, float scale, const v
     }
     if (serial) m_impl->frameQueries.end();
     FrameStats stats;
-    stats.boxProxy = boxProxy;
+    stats.boxProxy = low.boxProxy;
+    stats.storedInTarget = low.storedInTarget;
     stats.serial = serial;
     stats.cpuMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (finish) stats.gpuMilliseconds = m_impl->frameTimer.milliseconds(stats.cpuMilliseconds);

@@ -161,7 +161,10 @@ struct SdfRenderer::Impl {
     GlTexture lowColor;
     int lowWidth = 0, lowHeight = 0;
     GlTexture coneStarts; // the cone pass's starts, copied out of the target
-    // The compute tracer's image (RGBA32F, grown, never shrunk) and a framebuffer to blit it from.
+    // The compute tracer's image (RGBA32F, grown, never shrunk) and a framebuffer to blit it from,
+    // for targets it cannot store into (a frame into a texture target is stored there directly;
+    // SDFWB_COMPUTE_BLIT=1 at the renderer's making always blits, for tests and benchmarks).
+    bool computeViaBlit = false;
     GlTexture computeColor;
     GlFramebuffer computeFramebuffer;
     int computeWidth = 0, computeHeight = 0;

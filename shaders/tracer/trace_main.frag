@@ -73,9 +73,10 @@ vec4 sdfwb_pixel(vec3 direction) {
 
 #ifdef SDFWB_COMPUTE
 layout(local_size_x = 8, local_size_y = 8) in;
-// Floats, so that the blit into the caller's framebuffer rounds (or keeps, in a float target for
-// .exr) exactly what the fragment tracer's output would. Row 0 at the bottom, as a framebuffer's.
-layout(rgba32f, binding = 0) uniform writeonly image2D sdfwb_target;
+// The caller's target itself where it is a texture of RGBA8, RGBA16F or RGBA32F (stores round as
+// the fragment tracer's output would), else a float image blitted over it. No format: a
+// write-only image takes the format it is bound with. Row 0 at the bottom, as a framebuffer's.
+layout(binding = 0) uniform writeonly image2D sdfwb_target;
 
 // One invocation a pixel; the tiles past the frame's edge have idle lanes. A ray that misses the
 // box ends at its entry test (sdfwb_intersectBox), which is what the fragment tracer's proxy box

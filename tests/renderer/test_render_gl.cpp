@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -568,6 +569,77 @@ TEST_F(RendererTest, ComputeTracerIsTriedLastAndKeptWhenFaster) {
     for (std::size_t i = 0; i < pictures[0].rgba.size(); ++i) differing += pictures[0].rgba[i] != pictures[1].rgba[i];
     EXPECT_LE(differing, long(pictures[0].rgba.size() / 1000));
     sdfRenderer.releaseGl();
+}
+
+// The compute tracer stores into the target's own texture (no float image, no blit) where the
+// target is a single-sampled RGBA8 or RGBA32F texture, as the offscreen renderer's are: the
+// pictures equal the blitted ones bit for bit (full and scaled frames, 8-bit and float), and a
+// renderbuffer target, which cannot be stored into, still gets the blit.
+TEST_F(RendererTest, TheComputeTracerStoresIntoATextureTargetExactlyAsItsBlitWould) {
+    const shaders::PreparedSdf sdf = prepare("float sdf(vec3 p) { return max(length(p) - 0.7, abs(p.y) - 0.4); }\n");
+    values::ShadingSettings shading;
+    shading.mode = shaders::ShadingMode::Matcap;
+    shading.markers = {{0.2f, 0.1f, 0.6f}};
+    values::TraceSettings trace;
+    trace.tracer = values::TraceSettings::Tracer::Compute;
+    values::Camera camera;
+    camera.position = {1.2f, 0.9f, 2.6f};
+    struct Pictures {
+        renderer::Image full, scaled, renderbuffer;
+        renderer::FloatImage floats;
+        bool stored[4] = {false, false, false, false};
+    } pictures[2];
+    renderer::OffscreenRenderer offscreen;
+    for (int blit = 0; blit < 2; ++blit) {
+        if (blit) ::setenv("SDFWB_COMPUTE_BLIT", "1", 1);
+        renderer::SdfRenderer drawing; // reads SDFWB_COMPUTE_BLIT when made
+        ::unsetenv("SDFWB_COMPUTE_BLIT");
+        EXPECT_FALSE(shaders::hasErrors(drawing.setTrace(trace)));
+        EXPECT_FALSE(shaders::hasErrors(drawing.setShading(shading)));
+        ASSERT_FALSE(shaders::hasErrors(drawing.setSdf(sdf)));
+        ASSERT_TRUE(drawing.computeTracer());
+        Pictures& p = pictures[blit];
+        renderer::FrameStats stats;
+        p.full = offscreen.render(drawing, 203, 117, camera, 0.0f, &stats);
+        p.stored[0] = stats.storedInTarget;
+        p.scaled = offscreen.render(drawing, 203, 117, camera, 0.0f, &stats, 0.5f);
+        p.stored[1] = stats.storedInTarget;
+        p.floats = offscreen.renderFloat(drawing, 97, 61, camera, 0.0f, &stats);
+        p.stored[2] = stats.storedInTarget;
+        // A framebuffer around a renderbuffer (as a window system's may be).
+        GLuint buffers[2] = {0, 0};
+        glGenRenderbuffers(1, &buffers[0]);
+        glBindRenderbuffer(GL_RENDERBUFFER, buffers[0]);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 203, 117);
+        glGenFramebuffers(1, &buffers[1]);
+        glBindFramebuffer(GL_FRAMEBUFFER, buffers[1]);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, buffers[0]);
+        p.stored[3] = drawing.render(203, 117, camera, 0.0f, true).storedInTarget;
+        p.renderbuffer = {203, 117, std::vector<std::uint8_t>(203 * 117 * 4), {}};
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, 203, 117, GL_RGBA, GL_UNSIGNED_BYTE, p.renderbuffer.rgba.data());
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glDeleteFramebuffers(1, &buffers[1]);
+        glDeleteRenderbuffers(1, &buffers[0]);
+        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+        drawing.releaseGl();
+    }
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_TRUE(pictures[0].stored[k]) << "frame " << k << ": a texture target is stored into";
+        EXPECT_FALSE(pictures[1].stored[k]) << "frame " << k << ": SDFWB_COMPUTE_BLIT=1 blits";
+    }
+    EXPECT_FALSE(pictures[0].stored[3]) << "a renderbuffer cannot be stored into";
+    EXPECT_GT(foreground(pictures[0].full, shading.background), 203 * 117 / 8);
+    EXPECT_TRUE(pictures[0].full.rgba == pictures[1].full.rgba);
+    EXPECT_TRUE(pictures[0].scaled.rgba == pictures[1].scaled.rgba);
+    EXPECT_TRUE(pictures[0].floats.rgba == pictures[1].floats.rgba);
+    // Row order aside (the readback here is bottom-up), the renderbuffer's frame is the same picture.
+    long differing = 0;
+    for (int y = 0; y < 117; ++y)
+        for (int x = 0; x < 203; ++x)
+            differing += !std::equal(pictures[0].full.pixel(x, y), pictures[0].full.pixel(x, y) + 4,
+                                     pictures[1].renderbuffer.rgba.data() + (std::size_t(116 - y) * 203 + x) * 4);
+    EXPECT_EQ(differing, 0);
 }
 
 // The cone pass's texture grows with the frame; making it must leave the matcap (texture unit 0)

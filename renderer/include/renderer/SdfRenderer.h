@@ -24,6 +24,7 @@ struct FrameStats {
     double cpuMilliseconds = 0.0;  // time spent in render(), including glFinish when asked
     double gpuMilliseconds = -1.0; // the frame's GPU time (a timer query) when glFinish was asked, else -1
     bool boxProxy = false;         // only the pixels whose ray meets the box ran the tracer
+    bool storedInTarget = false;   // the compute tracer stored into the target's own texture (no blit)
     std::uint64_t serial = 0;      // a frame timed by a query read later (setQueryTiming): its number, else 0
 };
 
