@@ -150,7 +150,8 @@ struct SdfTextures {
     GlBuffer meshTriangles;
     GlBuffer meshPseudonormals;
     // The GLSL field's sign lattice (MeshQuery::signLattice): the level a caller asks for (0: the
-    // default, 5), and the level uploaded with the nodes.
+    // default, 5), and the level uploaded with the nodes. -1: none (a program that only places
+    // points on the mesh, the CPU engine computing their values, reads no sign).
     int meshSignLevel = 0;
     int uploadedSignLevel = 0;
     void reset();

@@ -141,7 +141,8 @@ int glslSignLevel(int wanted) {
 
 void bindMesh(SdfTextures& textures, const std::shared_ptr<const meshfield::MeshField>& mesh) {
     const bool winding = mesh->options.sign == meshfield::SignMethod::Winding;
-    const int level = winding ? glslSignLevel(textures.meshSignLevel) : 0; // only winding numbers have the lattice
+    // Only winding numbers have the lattice, and only a program that computes signs reads it.
+    const int level = winding && textures.meshSignLevel >= 0 ? glslSignLevel(textures.meshSignLevel) : 0;
     if (textures.mesh != mesh || textures.uploadedSignLevel != level) {
         textures.mesh = mesh;
         textures.uploadedSignLevel = level;
@@ -149,7 +150,7 @@ void bindMesh(SdfTextures& textures, const std::shared_ptr<const meshfield::Mesh
         std::vector<float> nodes = mesh->nodes;
         nodes.insert(nodes.end(), mesh->wideNodes.begin(), mesh->wideNodes.end());
         // Winding numbers: then the sign lattice (SDFWB_MESH_SIGNS: where it starts).
-        if (winding) {
+        if (level > 0) {
             const std::vector<float> signs = meshfield::meshQuery(mesh)->signLattice(level);
             nodes.insert(nodes.end(), signs.begin(), signs.end());
         }
