@@ -19,15 +19,38 @@ float sdfwb_logTargetRatio(float fx, float termX, float fy, float termY);
 
 float sdfwb_proposalWidth(float distance) { return clamp(0.5 * abs(distance), 0.004, 0.25); }
 
+#if defined(SDFWB_CHAIN_MAGNITUDE) && defined(SDFWB_MESH_SURFACE)
+// A sampler that reads only |f| (it declares sdfwb_chainReadsMagnitude; SampleCompute defines
+// SDFWB_CHAIN_MAGNITUDE) on a mesh's own field: |f| is the nearest distance, and no sign is
+// computed. Each state's walk starts bounded by the distance to the last state's triangle: the
+// same triangle and distance as a walk from the root (ties go to the lowest slot).
+float sdfwb_chainValue(vec3 p, inout uint triangle) {
+    int feature = 0;
+    vec3 closest = p;
+    float bound2 = 3.0e38;
+    if (triangle == 0xffffffffu) {
+        triangle = 0u;
+    } else {
+        closest = sdfwb_meshClosest(p, sdfwb_meshTriangles[3u * triangle].xyz, sdfwb_meshTriangles[3u * triangle + 1u].xyz,
+                                    sdfwb_meshTriangles[3u * triangle + 2u].xyz, feature);
+        bound2 = dot(p - closest, p - closest);
+    }
+    return sqrt(sdfwb_meshNearestWalk(p, bound2, triangle, feature, closest));
+}
+#else
+float sdfwb_chainValue(vec3 p, inout uint triangle) { return sdfwb_sdf(p); }
+#endif
+
 bool sdfwb_metropolisChain(uint index, out vec3 position) {
+    uint triangle = 0xffffffffu;
     vec3 x = sdfwb_randomInCube(index, 0u);
-    float fx = sdfwb_sdf(x);
+    float fx = sdfwb_chainValue(x, triangle);
     float termX = sdfwb_stateTerm(x, fx);
     for (uint step = 0u; step < sdfwb_kSteps; ++step) {
         float widthX = sdfwb_proposalWidth(fx);
         vec3 y = x + widthX * sdfwb_randomGaussian3(index, 1u + 2u * step);
         if (any(greaterThan(abs(y), vec3(1.0)))) continue; // outside the support: rejected
-        float fy = sdfwb_sdf(y);
+        float fy = sdfwb_chainValue(y, triangle);
         if (isnan(fy) || isinf(fy)) continue;
         float termY = sdfwb_stateTerm(y, fy);
         float widthY = sdfwb_proposalWidth(fy);

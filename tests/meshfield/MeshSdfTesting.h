@@ -84,13 +84,12 @@ struct Rows {
     bool sortedRows = false;    // the GLSL field evaluated each chunk's rows grouped by cell
 };
 
-inline Rows sampleRows(const shaders::PreparedSdf& sdf, const std::string& pattern, std::uint64_t n, const char* engine,
+inline Rows sampleRows(const shaders::PreparedSdf& sdf, const shaders::ShaderPiece& sampler, std::uint64_t n, const char* engine,
                        bool taps = false, std::uint32_t chunk = 0) {
+    const std::string& pattern = sampler.name;
     EngineScope scope(engine);
     renderer::SampleCompute compute;
-    auto sampler = sampling::findSampler(pattern, sampling::samplerFolders());
-    EXPECT_TRUE(sampler.hasValue());
-    auto diagnostics = compute.build(sdf, *sampler);
+    auto diagnostics = compute.build(sdf, sampler);
     EXPECT_FALSE(shaders::hasErrors(diagnostics));
     sampling::SamplingJob job;
     job.count = n;
@@ -108,6 +107,14 @@ inline Rows sampleRows(const shaders::PreparedSdf& sdf, const std::string& patte
     EXPECT_EQ(report ? report->badRows : 1u, 0u) << pattern << ' ' << engine;
     compute.releaseGl();
     return rows;
+}
+
+inline Rows sampleRows(const shaders::PreparedSdf& sdf, const std::string& pattern, std::uint64_t n, const char* engine,
+                       bool taps = false, std::uint32_t chunk = 0) {
+    auto sampler = sampling::findSampler(pattern, sampling::samplerFolders());
+    EXPECT_TRUE(sampler.hasValue());
+    if (!sampler) return {};
+    return sampleRows(sdf, *sampler, n, engine, taps, chunk);
 }
 
 } // namespace sdfwb::meshsdftest

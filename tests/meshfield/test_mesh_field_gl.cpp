@@ -220,6 +220,48 @@ TEST_F(MeshSdfTest, TheGlslFieldsRowsSortedByCellAreTheOnePassRowsBitForBit) {
     EXPECT_FALSE(sampleRows(sdf, "rand", 300, "cpu", false).sortedRows) << "the CPU engine sorts rows its own way";
 }
 
+// The metropolis sampler reads only |f| (it declares sdfwb_chainReadsMagnitude): on a mesh's own
+// field its chain walks for the nearest distance alone, each state's walk bounded by the last
+// state's triangle, and computes no sign. The same rows bit for bit as the chain on the signed
+// field (the sampler without the declaration), on both engines.
+TEST_F(MeshSdfTest, TheMetropolisChainOnAMeshWalksForTheNearestDistanceAloneAndKeepsTheSignedChainsRows) {
+    auto field = meshfield::makeMeshField(testing::torusMesh(0.6f, 0.25f, 48, 16), "torus.obj", {});
+    ASSERT_TRUE(field.hasValue());
+    const shaders::PreparedSdf sdf = shaders::prepareMeshSdf(*field, "torus.obj");
+    auto magnitude = sampling::findSampler("metropolis", sampling::samplerFolders());
+    ASSERT_TRUE(magnitude.hasValue());
+    shaders::ShaderPiece signedChain = *magnitude;
+    const std::string declaration = "const bool sdfwb_chainReadsMagnitude = true;";
+    const std::size_t at = signedChain.text.find(declaration);
+    ASSERT_NE(at, std::string::npos);
+    signedChain.text.erase(at, declaration.size());
+    auto chainMagnitude = [&](const shaders::ShaderPiece& sampler) {
+        renderer::SampleCompute compute;
+        EXPECT_FALSE(shaders::hasErrors(compute.build(sdf, sampler)));
+        const bool defined = compute.source().find("#define SDFWB_CHAIN_MAGNITUDE") != std::string::npos;
+        compute.releaseGl();
+        return defined;
+    };
+    EXPECT_TRUE(chainMagnitude(*magnitude));
+    EXPECT_FALSE(chainMagnitude(signedChain));
+    auto same = [](const std::vector<float>& a, const std::vector<float>& b) {
+        return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+    };
+    const Rows fast = sampleRows(sdf, *magnitude, 3000, "gpu");
+    const Rows slow = sampleRows(sdf, signedChain, 3000, "gpu");
+    EXPECT_TRUE(same(fast.positions, slow.positions));
+    EXPECT_TRUE(same(fast.distances, slow.distances));
+    EXPECT_TRUE(same(fast.gradients, slow.gradients));
+    // The rows gather near the surface (pi ~ exp(-|f| / 0.01)).
+    int near = 0;
+    for (float d : fast.distances) near += std::abs(d) < 0.05f ? 1 : 0;
+    EXPECT_GT(near, 3000 * 8 / 10);
+    // The CPU engine's positions come from the same chain (its program keeps the sign lattice).
+    const Rows cpu = sampleRows(sdf, *magnitude, 3000, "cpu");
+    EXPECT_TRUE(cpu.positionsOnly);
+    EXPECT_TRUE(same(cpu.positions, fast.positions));
+}
+
 TEST_F(MeshSdfTest, TheCpuEngineWritesTheGlslFieldsValuesAtTheSamePositionsBitForBit) {
     const meshfield::TriangleMesh torus = testing::torusMesh(0.6f, 0.25f, 48, 16);
     const std::pair<const char*, meshfield::TriangleMesh> meshes[] = {
