@@ -1,6 +1,7 @@
 #include <meshfield/MeshQuery.h>
 
 #include "FloatBits.h"
+#include "QueryShared.h"
 
 #include <glm/geometric.hpp>
 
@@ -25,10 +26,6 @@ constexpr int kStack = 128; // the hierarchy's depth is at most 60 (MeshField.cp
 // The sign cache's levels whose points start the crossing segments, tried in this order: 2^6 + 1
 // points a side, then the finest, whose shorter segments pass nearer an open boundary.
 constexpr int kCrossingLevels[2] = {6, 7};
-constexpr std::size_t latticePoints(int level) {
-    const std::size_t side = (std::size_t(1) << level) + 1;
-    return side * side * side;
-}
 // Where level k (2 .. 7, 2^k + 1 points a side) of the sign cache starts in its one array.
 constexpr std::size_t levelOffset(int k) {
     std::size_t offset = 0;
@@ -37,6 +34,9 @@ constexpr std::size_t levelOffset(int k) {
 }
 
 using detail::asBits;
+using detail::latticePoints;
+using detail::roundedUp;
+using detail::threadCount;
 
 // Squared distance from p to triangle t (three corners at t[0..2], t[4..6], t[8..10]) in float:
 // Ericson's regions, as closestPointOnTriangle, for a quick test before the double one.
@@ -104,21 +104,6 @@ double segmentDistance(const dvec3& x, const dvec3& a, const dvec3& b) {
     const double length2 = glm::dot(ab, ab);
     const double t = length2 > 0.0 ? std::clamp(glm::dot(x - a, ab) / length2, 0.0, 1.0) : 0.0;
     return glm::length(x - (a + t * ab));
-}
-
-// A float no smaller than `value` (>= 0, or NaN).
-inline float roundedUp(double value) {
-    const float f = float(value);
-    return double(f) < value ? std::bit_cast<float>(std::bit_cast<std::uint32_t>(f) + 1u) : f; // the next float up
-}
-
-unsigned threadCount(unsigned asked) {
-    if (asked > 0) return asked;
-    if (const char* text = std::getenv("SDFWB_MESH_THREADS")) {
-        const int n = std::atoi(text);
-        if (n > 0) return unsigned(n);
-    }
-    return std::max(1u, std::thread::hardware_concurrency());
 }
 
 } // namespace
@@ -709,61 +694,6 @@ std::uint64_t MeshQuery::evaluate(const RowView& rows, std::size_t count, const 
     work();
     for (std::thread& thread : pool) thread.join();
     return bad.load();
-}
-
-std::vector<float> MeshQuery::signLattice(int level, unsigned threads) const {
-    level = std::clamp(level, 2, 7);
-    std::lock_guard lock(m_latticeMutex); // one thread builds a level; the others wait for it
-    std::vector<float>& kept = m_lattices[std::size_t(level)];
-    if (kept.empty()) kept = buildSignLattice(level, threads);
-    return kept;
-}
-
-std::vector<float> MeshQuery::buildSignLattice(int level, unsigned threads) const {
-    const double step = m_cacheStep * double(m_cacheSide >> level);
-    const int side = m_useCache ? (1 << level) + 1 : 0;
-    std::vector<float> out = {float(m_cacheLo.x),
-                              float(m_cacheLo.y),
-                              float(m_cacheLo.z),
-                              float(step),
-                              float(side),
-                              float(m_boundaryLength),
-                              0.0f,
-                              0.0f};
-    if (side == 0) return out;
-    // The GLSL field rounds p to the float lattice point the header gives: computed there.
-    const glm::vec3 lo(out[0], out[1], out[2]);
-    const float stepF = out[3];
-    const std::size_t points = latticePoints(level);
-    const bool open = !m_boundary.empty();
-    out[6] = open ? 1.0f : 0.0f;
-    out[7] = 1.0f;
-    const std::size_t seeds = 8 + (open ? 2 : 1) * points;
-    out.resize(seeds + points);
-    const double reach = double(stepF) * std::sqrt(3.0) * 0.5 * (1.0 + 1e-6); // the half diagonal, and float slack
-    std::atomic<std::size_t> next{0};
-    auto work = [&] {
-        for (std::size_t i; (i = next.fetch_add(256)) < points;) {
-            std::uint32_t slot = kNoSeed; // each nearest walk starts from the last point's triangle
-            for (std::size_t j = i; j < std::min(points, i + 256); ++j) {
-                const std::size_t x = j % std::size_t(side), y = (j / std::size_t(side)) % std::size_t(side),
-                                  z = j / (std::size_t(side) * std::size_t(side));
-                const dvec3 q(lo + glm::vec3(float(x), float(y), float(z)) * stepF);
-                out[8 + j] = float(winding(q));
-                if (open) out[8 + points + j] = roundedUp(boundarySlope(q, reach));
-                int feature = 0;
-                dvec3 closest;
-                nearest(q, slot, feature, closest, nullptr, slot);
-                out[seeds + j] = detail::asFloat(slot);
-            }
-        }
-    };
-    std::vector<std::thread> pool;
-    const unsigned workers = std::min<unsigned>(threadCount(threads), unsigned(points / 256 + 1));
-    for (unsigned t = 1; t < workers; ++t) pool.emplace_back(work);
-    work();
-    for (std::thread& thread : pool) thread.join();
-    return out;
 }
 
 } // namespace sdfwb::meshfield

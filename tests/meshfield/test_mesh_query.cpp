@@ -101,6 +101,52 @@ TEST(MeshQueryCpu, TheSignCacheServesAnOpenMeshWhereItsBoundHoldsAndNeverChanges
     EXPECT_EQ(differ, 0);
 }
 
+// The GLSL field's sign lattice: on a closed mesh the points that paths clear of the surface join
+// share one winding number, computed once; on an open one each point has its own. Either way every
+// point's value is within the hierarchy's 1/4 of its own walk's, on the same side of 1/2, and the
+// header says what follows. The two shells (a torus and a small sphere-like torus inside its hole)
+// are separate sets: each keeps its own value.
+TEST(MeshQueryCpu, TheSignLatticeSharesAClosedMeshsWindingNumbersAcrossClearPathsAndKeepsEverySide) {
+    TriangleMesh closed = testing::torusMesh(0.6f, 0.25f, 48, 16);
+    const TriangleMesh inner = testing::torusMesh(0.15f, 0.08f, 24, 12);
+    for (const glm::vec3& v : inner.vertices) closed.vertices.push_back(v + glm::vec3(0.0f, 0.5f, 0.0f));
+    const std::uint32_t base = std::uint32_t(closed.vertices.size() - inner.vertices.size());
+    for (std::uint32_t i : inner.indices) closed.indices.push_back(base + i);
+    TriangleMesh open = closed;
+    open.indices.erase(open.indices.begin(), open.indices.begin() + 6);
+    for (const auto& [name, mesh] : {std::pair{"closed", closed}, std::pair{"open", open}}) {
+        auto query = meshQuery(makeField(mesh, SignMethod::Winding));
+        const int level = 4;
+        const std::vector<float> lattice = query->signLattice(level);
+        ASSERT_GE(lattice.size(), 8u);
+        const std::size_t side = std::size_t(lattice[4]), points = side * side * side;
+        ASSERT_EQ(side, 17u);
+        EXPECT_EQ(lattice[6], std::string(name) == "open" ? 1.0f : 0.0f) << name << ": boundary slopes follow";
+        int wrongSide = 0, inside = 0, bitEqual = 0;
+        double worst = 0.0;
+        for (std::size_t j = 0; j < points; ++j) {
+            const glm::vec3 q = glm::vec3(lattice[0], lattice[1], lattice[2]) +
+                                glm::vec3(float(j % side), float((j / side) % side), float(j / (side * side))) * lattice[3];
+            const double own = query->winding(dvec3(q));
+            const float stored = lattice[8 + j];
+            worst = std::max(worst, std::abs(double(stored) - own));
+            wrongSide += (stored > 0.5f) != (own > 0.5) ? 1 : 0;
+            inside += stored > 0.5f ? 1 : 0;
+            bitEqual += stored == float(own) ? 1 : 0;
+        }
+        std::printf("%s: %d of %zu lattice points inside, %d equal to their own walk bit for bit, largest difference %.2e\n",
+                    name, inside, points, bitEqual, worst);
+        EXPECT_EQ(wrongSide, 0) << name;
+        EXPECT_LT(worst, 0.25) << name;
+        EXPECT_GT(inside, 0) << name;
+        if (std::string(name) == "open") {
+            EXPECT_EQ(bitEqual, int(points)) << "an open mesh's points each get their own walk";
+        } else {
+            EXPECT_LT(bitEqual, int(points)) << "a closed mesh's points share their sets' values";
+        }
+    }
+}
+
 // Points within a few triangle sizes of the surface, where no lattice point fits inside the empty
 // ball around a row: random points on random triangles, moved off along random directions by
 // 1e-5 to 3e-2, and some exactly on corners and edges' midpoints moved by 1e-6.
