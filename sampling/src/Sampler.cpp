@@ -320,19 +320,85 @@ bool sampleIntoInOrder() {
 
 // Copies `n` rows of a mapped chunk into the caller's arrays at row `at`: on one thread where the
 // driver computes on the cores (its threads need them), on every core where a GPU does.
-void copyOut(const renderer::MappedRows& rows, std::size_t n, std::uint64_t at, float* positions, float* distances,
-             float* gradients, std::size_t cores) {
-    auto part = [&](std::size_t begin, std::size_t end) {
-        std::copy(rows.positions + 3 * begin, rows.positions + 3 * end, positions + 3 * (at + begin));
-        std::copy(rows.distances + begin, rows.distances + end, distances + at + begin);
-        std::copy(rows.gradients + 3 * begin, rows.gradients + 3 * end, gradients + 3 * (at + begin));
-    };
-    const std::size_t parts = std::min(cores, std::max<std::size_t>(1, n / 65536));
-    if (parts <= 1) return part(0, n);
-    std::vector<std::thread> threads;
-    for (std::size_t k = 1; k < parts; ++k) threads.emplace_back(part, n * k / parts, n * (k + 1) / parts);
-    part(0, n / parts);
-    for (std::thread& thread : threads) thread.join();
+// Copies each chunk's rows out of the mapped buffers into the caller's arrays, split over
+// `threads` threads kept for the whole run: on a GPU a chunk's copy takes a few milliseconds, and
+// starting fifteen threads for each would cost a tenth of that. With one thread the caller copies.
+class CopyCrew {
+public:
+    CopyCrew(std::size_t threads, float* positions, float* distances, float* gradients)
+        : m_positions(positions), m_distances(distances), m_gradients(gradients) {
+        for (std::size_t k = 1; k < threads; ++k) m_crew.emplace_back([this, k] { loop(k); });
+    }
+    CopyCrew(const CopyCrew&) = delete;
+    CopyCrew& operator=(const CopyCrew&) = delete;
+    ~CopyCrew() {
+        {
+            std::lock_guard lock(m_mutex);
+            m_stop = true;
+        }
+        m_start.notify_all();
+        for (std::thread& thread : m_crew) thread.join();
+    }
+
+    // Rows [0, n) of `rows` to rows [at, at + n) of the arrays; returns when all are copied.
+    void copy(const renderer::MappedRows& rows, std::size_t n, std::uint64_t at) {
+        const std::size_t parts = std::min(m_crew.size() + 1, std::max<std::size_t>(1, n / 65536));
+        {
+            std::lock_guard lock(m_mutex);
+            m_rows = rows;
+            m_count = n;
+            m_at = at;
+            m_parts = parts;
+            m_left = parts - 1;
+            ++m_round;
+        }
+        if (parts > 1) m_start.notify_all();
+        part(0);
+        std::unique_lock lock(m_mutex);
+        m_done.wait(lock, [&] { return m_left == 0; });
+    }
+
+private:
+    void part(std::size_t k) {
+        const std::size_t begin = m_count * k / m_parts, end = m_count * (k + 1) / m_parts;
+        std::copy(m_rows.positions + 3 * begin, m_rows.positions + 3 * end, m_positions + 3 * (m_at + begin));
+        std::copy(m_rows.distances + begin, m_rows.distances + end, m_distances + m_at + begin);
+        std::copy(m_rows.gradients + 3 * begin, m_rows.gradients + 3 * end, m_gradients + 3 * (m_at + begin));
+    }
+    void loop(std::size_t k) {
+        std::uint64_t seen = 0;
+        for (;;) {
+            {
+                std::unique_lock lock(m_mutex);
+                m_start.wait(lock, [&] { return m_stop || m_round != seen; });
+                if (m_stop) return;
+                seen = m_round;
+                if (k >= m_parts) continue; // a small chunk: fewer parts than threads
+            }
+            part(k); // the fields are not written again before m_left reaches 0
+            std::lock_guard lock(m_mutex);
+            if (--m_left == 0) m_done.notify_one();
+        }
+    }
+
+    float* m_positions;
+    float* m_distances;
+    float* m_gradients;
+    std::vector<std::thread> m_crew;
+    std::mutex m_mutex;
+    std::condition_variable m_start, m_done;
+    renderer::MappedRows m_rows{};
+    std::size_t m_count = 0, m_parts = 1, m_left = 0;
+    std::uint64_t m_at = 0, m_round = 0;
+    bool m_stop = false;
+};
+
+// The copying threads of sampleInto's ring: every core on a GPU, one where the driver computes on
+// the cores (they are busy with the next chunk); SDFWB_COPY_THREADS=N sets it (tests).
+std::size_t copyThreads() {
+    if (const char* forced = std::getenv("SDFWB_COPY_THREADS"); forced && std::atoi(forced) > 0)
+        return std::size_t(std::atoi(forced));
+    return renderer::softwareRasteriser() ? 1 : std::max(1u, std::thread::hardware_concurrency());
 }
 
 // Every array asked for: the ring, as a file takes its rows (chunks computed ahead, each read
@@ -340,7 +406,7 @@ void copyOut(const renderer::MappedRows& rows, std::size_t n, std::uint64_t at, 
 Expected<SamplingReport> sampleIntoRing(renderer::SampleCompute& compute, const SamplingJob& job, float* positions,
                                         float* distances, float* gradients, const ProgressSink& progress) {
     const renderer::SamplePipeline ring = compute.pipeline();
-    const std::size_t cores = renderer::softwareRasteriser() ? 1 : std::max(1u, std::thread::hardware_concurrency());
+    CopyCrew crew(copyThreads(), positions, distances, gradients);
     int next = 0; // a chunk is consumed before its slot comes round again (ahead <= sets - 2)
     auto submit = [&](const renderer::SampleUniforms& uniforms, std::uint32_t first, std::uint64_t,
                       std::uint32_t count) -> Expected<int> {
@@ -351,7 +417,7 @@ Expected<SamplingReport> sampleIntoRing(renderer::SampleCompute& compute, const 
     };
     auto collect = [&](int slot) { return compute.collectMapped(slot); };
     auto consume = [&](const renderer::MappedRows& rows, std::size_t n, int, std::uint64_t done) -> Expected<void> {
-        copyOut(rows, n, done, positions, distances, gradients, cores);
+        crew.copy(rows, n, done);
         return {};
     };
     const GpuTimes times{compute};

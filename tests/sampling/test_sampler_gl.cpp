@@ -367,6 +367,30 @@ TEST_F(SamplerTest, SameSeedSameRowsWhateverTheChunkSize) {
     }
 }
 
+// A GPU's ring copies each chunk out on every core, threads kept for the whole call
+// (SDFWB_COPY_THREADS forces that here): the same rows as one thread and as one chunk at a time,
+// chunks of 150,000 rows cut in two or three parts, the last chunk shorter.
+TEST_F(SamplerTest, RowsCopiedOutOnSeveralThreadsAreTheOneThreadsRows) {
+    sampling::SamplingJob j = job(400000, 7);
+    j.chunkSize = 150000;
+    sampling::SampleSet one, several, inOrder;
+    sample(kSphere, "rand", j, one);
+    for (const char* threads : {"3", "2"}) {
+        setenv("SDFWB_COPY_THREADS", threads, 1);
+        sample(kSphere, "rand", j, several);
+        unsetenv("SDFWB_COPY_THREADS");
+        EXPECT_EQ(std::memcmp(one.positions.data(), several.positions.data(), one.positions.size() * 4), 0) << threads;
+        EXPECT_EQ(std::memcmp(one.distances.data(), several.distances.data(), one.distances.size() * 4), 0) << threads;
+        EXPECT_EQ(std::memcmp(one.gradients.data(), several.gradients.data(), one.gradients.size() * 4), 0) << threads;
+    }
+    setenv("SDFWB_SAMPLE_RING", "0", 1);
+    sample(kSphere, "rand", j, inOrder);
+    unsetenv("SDFWB_SAMPLE_RING");
+    EXPECT_EQ(std::memcmp(one.positions.data(), inOrder.positions.data(), one.positions.size() * 4), 0);
+    EXPECT_EQ(std::memcmp(one.gradients.data(), inOrder.gradients.data(), one.gradients.size() * 4), 0);
+    EXPECT_NE(several.distances[399999], 0.0f) << "the last row was written";
+}
+
 // The ring of buffer sets (issue 49): how many sets, how many chunks go to the GPU before the
 // oldest is collected, and whether the GPU copies the rows into mapped host buffers (a GPU's
 // default, forced on here on llvmpipe) change nothing in the files: not a byte, not a bad-row count.
