@@ -217,9 +217,17 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     const bool sortRows = sdf.mesh && sdf.meshIsTheField && !query && !(morton && std::string_view(morton) == "0");
     if (query) features["SDFWB_POSITIONS_ONLY"] = "1";
     // A Metropolis sampler that reads only |f| walks a mesh's own field for its nearest distance alone.
+    const std::string samplerCode = shaders::stripComments(sampler.text);
     static const std::regex magnitude(R"(\bconst\s+bool\s+sdfwb_chainReadsMagnitude\s*=\s*true\b)", std::regex::ECMAScript);
-    if (sdf.mesh && sdf.meshIsTheField && std::regex_search(shaders::stripComments(sampler.text), magnitude))
-        features["SDFWB_CHAIN_MAGNITUDE"] = "1";
+    const bool chainMagnitude = sdf.mesh && sdf.meshIsTheField && std::regex_search(samplerCode, magnitude);
+    if (chainMagnitude) features["SDFWB_CHAIN_MAGNITUDE"] = "1";
+    // The CPU engine's positions-only program computes no sign unless its sampler evaluates the
+    // field itself (a Metropolis chain on the signed field): then it is composed without the sign
+    // lattice, which is neither built nor uploaded (33^3 took 0.14 s of a 0.65 s run of 200,000
+    // bunny rows on two cores). A field call the pattern below misses stays right, only slower.
+    static const std::regex call(R"(\b(sdfwb_sdf|sdfwb_metropolisChain|sdfwb_valueAndGradient)\s*\()", std::regex::ECMAScript);
+    const bool lattice = !query || (!chainMagnitude && std::regex_search(samplerCode, call));
+    if (!lattice) features["SDFWB_MESH_NO_LATTICE"] = "1";
     if (sortRows) {
         features["SDFWB_SORT_ROWS"] = "1";
         features["SDFWB_SORT_PARTS"] = std::to_string(Impl::kSortParts) + "u";
@@ -269,9 +277,7 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
         m_impl->sortCube[3] = float(side);
     }
     m_impl->pointsSampler = sampler.name == "sdfwb:analysis/points.glsl";
-    // Whether the positions depend on the field (a Metropolis chain's acceptance reads it).
-    static const std::regex call(R"(\b(sdfwb_sdf|sdfwb_metropolisChain|sdfwb_valueAndGradient)\s*\()", std::regex::ECMAScript);
-    m_impl->samplerCallsField = std::regex_search(shaders::stripComments(sampler.text), call);
+    m_impl->meshLattice = lattice;
     return diagnostics;
 }
 
@@ -292,11 +298,8 @@ Expected<void> SampleCompute::Impl::issue(const SampleUniforms& uniforms, std::u
     // nodes than with 33^3 (30.7 against 48.1 a row, rand 46.8 against 50.9; counted by the shader
     // on llvmpipe), for 0.8 s of two cores (0.1 s of sixteen) at the first chunk: worth it past a
     // few million rows, not for a DeepSDF-sized 500,000 (the default's 33^3 takes 0.1 s here).
-    // The CPU engine's positions-only program reads none unless its sampler calls the field (the
-    // Metropolis chains): building 33^3 cost 0.14 s of a 0.65 s run of 200,000 bunny rows on two cores.
-    textures.meshSignLevel = query && !samplerCallsField                                   ? -1
-                             : !softwareRasteriser() && uniforms.sampleCount >= (1u << 22) ? 6
-                                                                                           : 0;
+    // A program composed without it (SDFWB_MESH_NO_LATTICE, see build()) gets none.
+    textures.meshSignLevel = !meshLattice ? -1 : !softwareRasteriser() && uniforms.sampleCount >= (1u << 22) ? 6 : 0;
     bindSdfTextures(program.id(), textures, channels, mesh);
     if (GLint at = location("sdfwb_parameters"); at >= 0) glUniform4fv(at, 4, uniforms.parameters);
     if (GLint at = location("sdfwb_surfaceTolerance"); at >= 0) glUniform1f(at, uniforms.surfaceTolerance);

@@ -128,7 +128,7 @@ struct SampleCompute::Impl {
     // The sampler is analysis/points.glsl: its positions are the caller's points one for one (the
     // mesher's lattice also reads per-sample inputs when B = 0, but those are grid indices).
     bool pointsSampler = false;
-    bool samplerCallsField = false; // the sampler itself evaluates the field (SampleCompute::build)
+    bool meshLattice = true; // composed with the GLSL field's sign lattice (SampleCompute::build)
     bool positionsAreInputs(const SampleUniforms& uniforms) const {
         return pointsSampler && uniforms.inputPoints && uniforms.inputTableFloats == 0;
     }

@@ -469,6 +469,10 @@ ImageTarget drawTargetImage() {
     static const bool queries = epoxy_gl_version() >= 45 || epoxy_has_gl_extension("GL_ARB_direct_state_access");
     if (!queries) return {};
     glGetIntegerv(GL_SAMPLES, &samples);
+    // The blit writes where glDrawBuffers points; the store writes attachment 0.
+    GLint drawBuffer = 0;
+    glGetIntegerv(GL_DRAW_BUFFER0, &drawBuffer);
+    if (drawBuffer != GL_COLOR_ATTACHMENT0) return {};
     GLint type = 0, name = 0, layered = 0, cubeFace = 0;
     auto attachment = [](GLenum what, GLint* value) {
         glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, what, value);
@@ -481,14 +485,15 @@ ImageTarget drawTargetImage() {
     attachment(GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER, &image.layer);
     attachment(GL_FRAMEBUFFER_ATTACHMENT_LAYERED, &layered);
     attachment(GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE, &cubeFace);
-    GLint target = 0, format = 0, immutable = 0, filter = 0;
+    GLint target = 0, format = 0, immutable = 0, filter = 0, base = 0;
     glGetTextureParameteriv(GLuint(name), GL_TEXTURE_TARGET, &target);
     glGetTextureLevelParameteriv(GLuint(name), image.level, GL_TEXTURE_INTERNAL_FORMAT, &format);
     // Stores into a texture that is not complete do nothing: one of immutable storage, or one
-    // whose filter reads no mipmaps (a framebuffer library's usual texture).
+    // whose filter reads no mipmaps (a framebuffer library's usual texture) drawn at its base level.
     glGetTextureParameteriv(GLuint(name), GL_TEXTURE_IMMUTABLE_FORMAT, &immutable);
     glGetTextureParameteriv(GLuint(name), GL_TEXTURE_MIN_FILTER, &filter);
-    const bool complete = immutable || filter == GL_NEAREST || filter == GL_LINEAR;
+    glGetTextureParameteriv(GLuint(name), GL_TEXTURE_BASE_LEVEL, &base);
+    const bool complete = immutable || ((filter == GL_NEAREST || filter == GL_LINEAR) && image.level == base);
     const bool planar = (target == GL_TEXTURE_2D || target == GL_TEXTURE_2D_ARRAY) && !layered && cubeFace == 0;
     if (!planar || !complete || (format != GL_RGBA8 && format != GL_RGBA16F && format != GL_RGBA32F)) return {};
     image.texture = GLuint(name);

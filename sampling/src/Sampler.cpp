@@ -318,8 +318,6 @@ bool sampleIntoInOrder() {
     return setting && setting[0] == '0';
 }
 
-// Copies `n` rows of a mapped chunk into the caller's arrays at row `at`: on one thread where the
-// driver computes on the cores (its threads need them), on every core where a GPU does.
 // Copies each chunk's rows out of the mapped buffers into the caller's arrays, split over
 // `threads` threads kept for the whole run: on a GPU a chunk's copy takes a few milliseconds, and
 // starting fifteen threads for each would cost a tenth of that. With one thread the caller copies.
@@ -327,18 +325,16 @@ class CopyCrew {
 public:
     CopyCrew(std::size_t threads, float* positions, float* distances, float* gradients)
         : m_positions(positions), m_distances(distances), m_gradients(gradients) {
-        for (std::size_t k = 1; k < threads; ++k) m_crew.emplace_back([this, k] { loop(k); });
+        try {
+            for (std::size_t k = 1; k < threads; ++k) m_crew.emplace_back([this, k] { loop(k); });
+        } catch (...) { // no thread to be had: the ones started end, and the caller hears why
+            stop();
+            throw;
+        }
     }
     CopyCrew(const CopyCrew&) = delete;
     CopyCrew& operator=(const CopyCrew&) = delete;
-    ~CopyCrew() {
-        {
-            std::lock_guard lock(m_mutex);
-            m_stop = true;
-        }
-        m_start.notify_all();
-        for (std::thread& thread : m_crew) thread.join();
-    }
+    ~CopyCrew() { stop(); }
 
     // Rows [0, n) of `rows` to rows [at, at + n) of the arrays; returns when all are copied.
     void copy(const renderer::MappedRows& rows, std::size_t n, std::uint64_t at) {
@@ -359,6 +355,14 @@ public:
     }
 
 private:
+    void stop() {
+        {
+            std::lock_guard lock(m_mutex);
+            m_stop = true;
+        }
+        m_start.notify_all();
+        for (std::thread& thread : m_crew) thread.join();
+    }
     void part(std::size_t k) {
         const std::size_t begin = m_count * k / m_parts, end = m_count * (k + 1) / m_parts;
         std::copy(m_rows.positions + 3 * begin, m_rows.positions + 3 * end, m_positions + 3 * (m_at + begin));
@@ -394,11 +398,13 @@ private:
 };
 
 // The copying threads of sampleInto's ring: every core on a GPU, one where the driver computes on
-// the cores (they are busy with the next chunk); SDFWB_COPY_THREADS=N sets it (tests).
-std::size_t copyThreads() {
+// the cores (they are busy with the next chunk), SDFWB_COPY_THREADS=N where set (tests); no more
+// than a chunk has parts of 65,536 rows.
+std::size_t copyThreads(std::uint64_t rows, std::uint32_t chunk) {
+    std::size_t threads = renderer::softwareRasteriser() ? 1 : std::max(1u, std::thread::hardware_concurrency());
     if (const char* forced = std::getenv("SDFWB_COPY_THREADS"); forced && std::atoi(forced) > 0)
-        return std::size_t(std::atoi(forced));
-    return renderer::softwareRasteriser() ? 1 : std::max(1u, std::thread::hardware_concurrency());
+        threads = std::size_t(std::atoi(forced));
+    return std::min<std::size_t>(threads, std::max<std::uint64_t>(1, std::min<std::uint64_t>(rows, chunk) / 65536));
 }
 
 // Every array asked for: the ring, as a file takes its rows (chunks computed ahead, each read
@@ -406,7 +412,7 @@ std::size_t copyThreads() {
 Expected<SamplingReport> sampleIntoRing(renderer::SampleCompute& compute, const SamplingJob& job, float* positions,
                                         float* distances, float* gradients, const ProgressSink& progress) {
     const renderer::SamplePipeline ring = compute.pipeline();
-    CopyCrew crew(copyThreads(), positions, distances, gradients);
+    CopyCrew crew(copyThreads(job.rows(), chunkFor(job, compute)), positions, distances, gradients);
     int next = 0; // a chunk is consumed before its slot comes round again (ahead <= sets - 2)
     auto submit = [&](const renderer::SampleUniforms& uniforms, std::uint32_t first, std::uint64_t,
                       std::uint32_t count) -> Expected<int> {

@@ -22,8 +22,10 @@ float sdfwb_proposalWidth(float distance) { return clamp(0.5 * abs(distance), 0.
 #if defined(SDFWB_CHAIN_MAGNITUDE) && defined(SDFWB_MESH_SURFACE)
 // A sampler that reads only |f| (it declares sdfwb_chainReadsMagnitude; SampleCompute defines
 // SDFWB_CHAIN_MAGNITUDE) on a mesh's own field: |f| is the nearest distance, and no sign is
-// computed. Each state's walk starts bounded by the distance to the last state's triangle: the
-// same triangle and distance as a walk from the root (ties go to the lowest slot).
+// computed. Each walk starts bounded by the distance to the last point walked's triangle (the
+// last proposal's, taken or not): the same triangle and distance as a walk from the root (ties go
+// to the lowest slot). So the chain is the signed field's, except where a sign walk of that one
+// would have been cut (a NaN state rejected; on llvmpipe, past its loop budget on large meshes).
 float sdfwb_chainValue(vec3 p, inout uint triangle) {
     int feature = 0;
     vec3 closest = p;

@@ -287,7 +287,9 @@ ComposedShader composeSdfShader(const PreparedSdf& sdf, Stage stage, const std::
         switch (sdf.mesh->options.sign) {
         case meshfield::SignMethod::Winding:
             all["SDFWB_MESH_SIGN_WINDING"] = "1";
-            all["SDFWB_MESH_SIGNS"] = std::to_string((sdf.mesh->nodes.size() + sdf.mesh->wideNodes.size()) / 4) + "u";
+            // The sign lattice after the nodes, unless the caller uploads none (SDFWB_MESH_NO_LATTICE).
+            if (!all.count("SDFWB_MESH_NO_LATTICE"))
+                all["SDFWB_MESH_SIGNS"] = std::to_string((sdf.mesh->nodes.size() + sdf.mesh->wideNodes.size()) / 4) + "u";
             break;
         case meshfield::SignMethod::Parity:
             all["SDFWB_MESH_SIGN_PARITY"] = "1";

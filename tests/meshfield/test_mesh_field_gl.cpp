@@ -256,10 +256,24 @@ TEST_F(MeshSdfTest, TheMetropolisChainOnAMeshWalksForTheNearestDistanceAloneAndK
     int near = 0;
     for (float d : fast.distances) near += std::abs(d) < 0.05f ? 1 : 0;
     EXPECT_GT(near, 3000 * 8 / 10);
-    // The CPU engine's positions come from the same chain (its program keeps the sign lattice).
+    // The CPU engine's positions come from the same chain, in a program without the sign lattice
+    // (it computes no sign); the signed chain's program keeps it.
     const Rows cpu = sampleRows(sdf, *magnitude, 3000, "cpu");
     EXPECT_TRUE(cpu.positionsOnly);
     EXPECT_TRUE(same(cpu.positions, fast.positions));
+    auto lattice = [&](const shaders::ShaderPiece& sampler) {
+        meshsdftest::EngineScope scope("cpu");
+        renderer::SampleCompute compute;
+        EXPECT_FALSE(shaders::hasErrors(compute.build(sdf, sampler)));
+        const bool composed = compute.source().find("#define SDFWB_MESH_SIGNS") != std::string::npos;
+        compute.releaseGl();
+        return composed;
+    };
+    EXPECT_FALSE(lattice(*magnitude));
+    EXPECT_TRUE(lattice(signedChain));
+    auto rand = sampling::findSampler("rand", sampling::samplerFolders());
+    ASSERT_TRUE(rand.hasValue());
+    EXPECT_FALSE(lattice(*rand)) << "the CPU engine's rand program places points only";
 }
 
 TEST_F(MeshSdfTest, TheCpuEngineWritesTheGlslFieldsValuesAtTheSamePositionsBitForBit) {

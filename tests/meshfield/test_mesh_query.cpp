@@ -104,8 +104,8 @@ TEST(MeshQueryCpu, TheSignCacheServesAnOpenMeshWhereItsBoundHoldsAndNeverChanges
 // The GLSL field's sign lattice: on a closed mesh the points that paths clear of the surface join
 // share one winding number, computed once; on an open one each point has its own. Either way every
 // point's value is within the hierarchy's 1/4 of its own walk's, on the same side of 1/2, and the
-// header says what follows. The two shells (a torus and a small sphere-like torus inside its hole)
-// are separate sets: each keeps its own value.
+// header says what follows. The mesh is two closed shells, a torus and a smaller torus through
+// its tube (where both enclose a point its winding number is 2).
 TEST(MeshQueryCpu, TheSignLatticeSharesAClosedMeshsWindingNumbersAcrossClearPathsAndKeepsEverySide) {
     TriangleMesh closed = testing::torusMesh(0.6f, 0.25f, 48, 16);
     const TriangleMesh inner = testing::torusMesh(0.15f, 0.08f, 24, 12);
