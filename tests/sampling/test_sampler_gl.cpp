@@ -319,7 +319,7 @@ TEST_F(SamplerTest, TheGpuBadRowCountEqualsTheRowsWrittenForEveryPatternAndForma
                 host += finite ? 0 : 1;
             }
             EXPECT_EQ(report->badRows, host) << pattern << ' ' << sampling::formatName(format);
-            if (pattern == "rand") EXPECT_GT(host, 0u) << "rand's points reach x > 0.6";
+            if (pattern == "rand") { EXPECT_GT(host, 0u) << "rand's points reach x > 0.6"; }
         }
         sampling::SampleSet arrays;
         arrays.resize(std::size_t(j.rows()));
@@ -462,7 +462,7 @@ TEST_F(SamplerTest, FilesAreTheSameBitForBitWhateverTheChunkTheRingAndTheStaging
                 if (reference.empty()) {
                     reference = bytes;
                     referenceBad = report->badRows;
-                    if (std::string_view(pattern) == "rand") EXPECT_GT(referenceBad, 0u) << "rand's points reach x > 0.6";
+                    if (std::string_view(pattern) == "rand") { EXPECT_GT(referenceBad, 0u) << "rand's points reach x > 0.6"; }
                     continue;
                 }
                 EXPECT_EQ(bytes.size(), reference.size()) << what;
