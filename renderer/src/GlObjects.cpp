@@ -32,6 +32,26 @@ void logGlErrors(const char* where) {
     }
 }
 
+GlTexture makeColorTexture(int width, int height, GLenum filter, GLenum format) {
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    glBindTexture(GL_TEXTURE_2D, id);
+    glTexImage2D(GL_TEXTURE_2D, 0, format, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return GlTexture(id);
+}
+
+void makeColorTarget(int width, int height, GLenum filter, GlTexture& texture, GlFramebuffer& framebuffer, GLenum format) {
+    texture = makeColorTexture(width, height, filter, format);
+    GLuint id = 0;
+    glGenFramebuffers(1, &id);
+    framebuffer = GlFramebuffer(id);
+    glBindFramebuffer(GL_FRAMEBUFFER, id);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture.id(), 0);
+}
+
 void deleteProgram(GLuint id) { glDeleteProgram(id); }
 void deleteShader(GLuint id) { glDeleteShader(id); }
 void deleteVertexArray(GLuint id) { glDeleteVertexArrays(1, &id); }

@@ -80,6 +80,12 @@ using GlBuffer = GlName<deleteBuffer>;
 using GlProgramPipeline = GlName<deleteProgramPipeline>;
 using GlQuery = GlName<deleteQuery>;
 
+// A width x height texture (RGBA8 unless asked), one level, `filter` both ways; left unbound.
+GlTexture makeColorTexture(int width, int height, GLenum filter, GLenum format = GL_RGBA8);
+// Such a texture and a framebuffer around it (colour attachment 0), left bound.
+void makeColorTarget(int width, int height, GLenum filter, GlTexture& texture, GlFramebuffer& framebuffer,
+                     GLenum format = GL_RGBA8);
+
 // GPU time of the commands between begin() and end() (a GL_TIME_ELAPSED query; queries of one
 // target do not nest): milliseconds() waits for the result, -1 when none was taken or when it
 // exceeds `wall`, the wall time that brackets the commands and the wait for them (llvmpipe's

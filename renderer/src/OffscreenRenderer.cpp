@@ -20,23 +20,6 @@ template <class T> std::vector<T> readTopDown(int width, int height, GLenum type
     return topDown;
 }
 
-// A w x h texture of the format (one level, storage that never changes) in a framebuffer of
-// its own, left bound.
-void makeTarget(int w, int h, GLenum format, GlTexture& texture, GlFramebuffer& framebuffer) {
-    GLuint id = 0;
-    glGenTextures(1, &id);
-    texture = GlTexture(id);
-    GLint bound = 0;
-    glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
-    glBindTexture(GL_TEXTURE_2D, id);
-    glTexStorage2D(GL_TEXTURE_2D, 1, format, w, h);
-    glBindTexture(GL_TEXTURE_2D, GLuint(bound));
-    glGenFramebuffers(1, &id);
-    framebuffer = GlFramebuffer(id);
-    glBindFramebuffer(GL_FRAMEBUFFER, id);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture.id(), 0);
-}
-
 } // namespace
 
 struct OffscreenRenderer::Impl {
@@ -52,14 +35,14 @@ struct OffscreenRenderer::Impl {
 
     void ensureFloatSize(int w, int h) {
         if (floatFramebuffer && w == floatWidth && h == floatHeight) return;
-        makeTarget(w, h, GL_RGBA32F, floatColor, floatFramebuffer);
+        makeColorTarget(w, h, GL_NEAREST, floatColor, floatFramebuffer, GL_RGBA32F);
         floatWidth = w;
         floatHeight = h;
     }
 
     void ensureSize(int w, int h) {
         if (framebuffer && w == width && h == height) return;
-        makeTarget(w, h, GL_RGBA8, color, framebuffer);
+        makeColorTarget(w, h, GL_NEAREST, color, framebuffer);
         width = w;
         height = h;
     }

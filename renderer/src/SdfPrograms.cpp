@@ -95,28 +95,6 @@ shaders::TracerFeatures tracerFeatures(const values::ShadingSettings& shading, c
     return features;
 }
 
-// A width x height texture (RGBA8 unless asked), one level.
-GlTexture SdfRenderer::Impl::makeTexture(int width, int height, GLenum filter, GLenum format) {
-    GLuint id = 0;
-    glGenTextures(1, &id);
-    glBindTexture(GL_TEXTURE_2D, id);
-    glTexImage2D(GL_TEXTURE_2D, 0, format, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    return GlTexture(id);
-}
-
-// Such a texture and a framebuffer around it.
-void SdfRenderer::Impl::makeTarget(int width, int height, GLenum filter, GlTexture& texture, GlFramebuffer& framebuffer) {
-    texture = makeTexture(width, height, filter);
-    GLuint id = 0;
-    glGenFramebuffers(1, &id);
-    framebuffer = GlFramebuffer(id);
-    glBindFramebuffer(GL_FRAMEBUFFER, id);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture.id(), 0);
-}
-
 // An image as a linear-filtered, edge-clamped texture.
 GlTexture SdfRenderer::Impl::uploadTexture(const Image& image) {
     GLuint id = 0;

@@ -374,7 +374,7 @@ void SdfRenderer::Impl::drawConePass(Variant& variant, const values::TraceSettin
     if (!coneStarts || coneWidth < tilesWide || coneHeight < tilesHigh) { // grown, never shrunk
         coneWidth = std::max(coneWidth, tilesWide);
         coneHeight = std::max(coneHeight, tilesHigh);
-        coneStarts = makeTexture(coneWidth, coneHeight, GL_NEAREST);
+        coneStarts = makeColorTexture(coneWidth, coneHeight, GL_NEAREST);
     }
     glBindTexture(GL_TEXTURE_2D, coneStarts.id());
     glActiveTexture(GL_TEXTURE0);
@@ -440,7 +440,7 @@ void SdfRenderer::Impl::ensureComputeTarget(int width, int height) {
     glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &reading);
     computeWidth = std::max(computeWidth, width);
     computeHeight = std::max(computeHeight, height);
-    computeColor = makeTexture(computeWidth, computeHeight, GL_NEAREST, GL_RGBA32F);
+    computeColor = makeColorTexture(computeWidth, computeHeight, GL_NEAREST, GL_RGBA32F);
     GLuint id = 0;
     glGenFramebuffers(1, &id);
     computeFramebuffer = GlFramebuffer(id);
@@ -612,7 +612,7 @@ FrameStats SdfRenderer::renderScaled(int width, int height, float scale, const v
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
     Impl& impl = *m_impl;
     if (!impl.lowFramebuffer || impl.lowWidth != lowWidth || impl.lowHeight != lowHeight) {
-        Impl::makeTarget(lowWidth, lowHeight, GL_LINEAR, impl.lowColor, impl.lowFramebuffer);
+        makeColorTarget(lowWidth, lowHeight, GL_LINEAR, impl.lowColor, impl.lowFramebuffer);
         impl.lowWidth = lowWidth;
         impl.lowHeight = lowHeight;
     }

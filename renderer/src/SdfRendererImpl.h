@@ -178,10 +178,6 @@ struct SdfRenderer::Impl {
     glm::vec3 planeFieldOrigin{0.0f}, planeFieldU{0.0f}, planeFieldV{0.0f};
     void ensurePlaneField(const glm::vec3& normal, float offset, float margin);
 
-    // A width x height RGBA8 texture, and such a texture with a framebuffer around it.
-    static GlTexture makeTexture(int width, int height, GLenum filter, GLenum format = GL_RGBA8);
-    static void makeTarget(int width, int height, GLenum filter, GlTexture& texture, GlFramebuffer& framebuffer);
-
     // render()'s steps, each one named thing.
     struct FrameInputs {
         const values::ShadingSettings& shading;
