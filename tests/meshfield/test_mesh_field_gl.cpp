@@ -235,15 +235,17 @@ TEST_F(MeshSdfTest, TheMetropolisChainOnAMeshWalksForTheNearestDistanceAloneAndK
     const std::size_t at = signedChain.text.find(declaration);
     ASSERT_NE(at, std::string::npos);
     signedChain.text.erase(at, declaration.size());
-    auto chainMagnitude = [&](const shaders::ShaderPiece& sampler) {
+    // Whether the CPU engine's program for `sampler` defines `name`.
+    auto defines = [&](const shaders::ShaderPiece& sampler, const std::string& name) {
+        meshsdftest::EngineScope scope("cpu");
         renderer::SampleCompute compute;
         EXPECT_FALSE(shaders::hasErrors(compute.build(sdf, sampler)));
-        const bool defined = compute.source().find("#define SDFWB_CHAIN_MAGNITUDE") != std::string::npos;
+        const bool defined = compute.source().find("#define " + name + " ") != std::string::npos;
         compute.releaseGl();
         return defined;
     };
-    EXPECT_TRUE(chainMagnitude(*magnitude));
-    EXPECT_FALSE(chainMagnitude(signedChain));
+    EXPECT_TRUE(defines(*magnitude, "SDFWB_CHAIN_MAGNITUDE"));
+    EXPECT_FALSE(defines(signedChain, "SDFWB_CHAIN_MAGNITUDE"));
     auto same = [](const std::vector<float>& a, const std::vector<float>& b) {
         return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
     };
@@ -261,19 +263,11 @@ TEST_F(MeshSdfTest, TheMetropolisChainOnAMeshWalksForTheNearestDistanceAloneAndK
     const Rows cpu = sampleRows(sdf, *magnitude, 3000, "cpu");
     EXPECT_TRUE(cpu.positionsOnly);
     EXPECT_TRUE(same(cpu.positions, fast.positions));
-    auto lattice = [&](const shaders::ShaderPiece& sampler) {
-        meshsdftest::EngineScope scope("cpu");
-        renderer::SampleCompute compute;
-        EXPECT_FALSE(shaders::hasErrors(compute.build(sdf, sampler)));
-        const bool composed = compute.source().find("#define SDFWB_MESH_SIGNS") != std::string::npos;
-        compute.releaseGl();
-        return composed;
-    };
-    EXPECT_FALSE(lattice(*magnitude));
-    EXPECT_TRUE(lattice(signedChain));
+    EXPECT_FALSE(defines(*magnitude, "SDFWB_MESH_SIGNS"));
+    EXPECT_TRUE(defines(signedChain, "SDFWB_MESH_SIGNS"));
     auto rand = sampling::findSampler("rand", sampling::samplerFolders());
     ASSERT_TRUE(rand.hasValue());
-    EXPECT_FALSE(lattice(*rand)) << "the CPU engine's rand program places points only";
+    EXPECT_FALSE(defines(*rand, "SDFWB_MESH_SIGNS")) << "the CPU engine's rand program places points only";
 }
 
 TEST_F(MeshSdfTest, TheCpuEngineWritesTheGlslFieldsValuesAtTheSamePositionsBitForBit) {
