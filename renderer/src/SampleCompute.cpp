@@ -222,11 +222,14 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     const bool chainMagnitude = sdf.mesh && sdf.meshIsTheField && std::regex_search(samplerCode, magnitude);
     if (chainMagnitude) features["SDFWB_CHAIN_MAGNITUDE"] = "1";
     // The CPU engine's positions-only program computes no sign unless its sampler evaluates the
-    // field itself (a Metropolis chain on the signed field): then it is composed without the sign
-    // lattice, which is neither built nor uploaded (33^3 took 0.14 s of a 0.65 s run of 200,000
-    // bunny rows on two cores). A field call the pattern below misses stays right, only slower.
-    static const std::regex call(R"(\b(sdfwb_sdf|sdfwb_metropolisChain|sdfwb_valueAndGradient)\s*\()", std::regex::ECMAScript);
-    const bool lattice = !query || (!chainMagnitude && std::regex_search(samplerCode, call));
+    // signed field itself (a call of its own, or a Metropolis chain on the signed field): else it
+    // is composed without the sign lattice, which is neither built nor uploaded (33^3 took 0.14 s
+    // of a 0.65 s run of 200,000 bunny rows on two cores). A field call the patterns below miss
+    // stays right, only slower.
+    static const std::regex call(R"(\b(sdfwb_sdf|sdfwb_valueAndGradient)\s*\()", std::regex::ECMAScript);
+    static const std::regex chain(R"(\bsdfwb_metropolisChain\s*\()", std::regex::ECMAScript);
+    const bool lattice =
+        !query || std::regex_search(samplerCode, call) || (!chainMagnitude && std::regex_search(samplerCode, chain));
     if (!lattice) features["SDFWB_MESH_NO_LATTICE"] = "1";
     if (sortRows) {
         features["SDFWB_SORT_ROWS"] = "1";
@@ -253,6 +256,16 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     log::info("sampling", "compiled " + sdf.source.map.fileName(0) + " with " + sampler.name + " in " +
                               std::to_string(int(milliseconds)) + " ms" +
                               (*engine ? std::string("; mesh engine: ") + engine : std::string()));
+    // llvmpipe's loop budget (metropolis_chain.glsl): there a chain runs 8 steps a pass, which kept
+    // metropolis_curvature's chains uncut on every shared mesh where one pass cut all of them
+    // (spot after 41 steps). A GPU's driver has no such budget: one pass. SDFWB_CHAIN_PASS_STEPS
+    // sets the steps a pass (0: one pass).
+    m_impl->chainSteps = 0;
+    if (GLint at = glGetUniformLocation(program.id(), "sdfwb_chainTo"); at >= 0)
+        glGetUniformiv(program.id(), at, &m_impl->chainSteps);
+    m_impl->chainPassSteps = softwareRasteriser() ? 8 : 0;
+    if (const char* steps = std::getenv("SDFWB_CHAIN_PASS_STEPS"); steps && *steps)
+        m_impl->chainPassSteps = std::max(0, std::atoi(steps));
     m_impl->program = std::move(program);
     m_impl->locations.clear();
     m_impl->source = std::move(composed.text);
@@ -341,6 +354,10 @@ Expected<void> SampleCompute::Impl::issue(const SampleUniforms& uniforms, std::u
     // gx; sample.comp numbers the invocations across them.
     const std::uint32_t groups = (count + 63u) / 64u;
     const std::uint32_t gx = std::clamp(groups, 1u, 65535u);
+    if (auto ok = dispatchChainPasses(count, gx, (groups + gx - 1u) / gx); !ok) {
+        glUseProgram(0);
+        return ok;
+    }
     if (sortRows) {
         if (auto ok = dispatchSorted(count, gx, (groups + gx - 1u) / gx); !ok) {
             glUseProgram(0);
@@ -403,6 +420,41 @@ Expected<void> SampleCompute::Impl::dispatchSorted(std::uint32_t count, std::uin
             glDispatchCompute(gx, gy, 1);
         if (pass < 5) glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
+    return {};
+}
+
+Expected<void> SampleCompute::Impl::dispatchChainPasses(std::uint32_t count, std::uint32_t gx, std::uint32_t gy) {
+    if (chainSteps <= 0) return {};
+    const GLint from = location("sdfwb_chainFrom");
+    const GLint to = location("sdfwb_chainTo");
+    int first = -1; // the first state is step -1
+    if (chainPassSteps > 0 && chainPassSteps <= chainSteps) {
+        if (count > chainCapacity || !chainStates) {
+            GLuint id = 0;
+            glGenBuffers(1, &id);
+            chainStates = GlBuffer(id);
+            glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
+            glBufferStorage(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(count) * 32, nullptr, 0); // two uvec4 a row
+            glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+            chainCapacity = count;
+            if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
+                chainStates.reset();
+                chainCapacity = 0;
+                return makeError("sampling: cannot allocate the chains' states for " + std::to_string(count) + " samples (" +
+                                 glErrorName(error) + "); try a smaller --chunk");
+            }
+        }
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); // the last chunk's passes are done with the states
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingChain, chainStates.id());
+        for (; first + chainPassSteps < chainSteps; first += chainPassSteps) {
+            glUniform1i(from, first);
+            glUniform1i(to, first + chainPassSteps);
+            glDispatchCompute(gx, gy, 1);
+            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        }
+    }
+    glUniform1i(from, first);
+    glUniform1i(to, chainSteps);
     return {};
 }
 

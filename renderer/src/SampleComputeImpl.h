@@ -159,6 +159,14 @@ struct SampleCompute::Impl {
     std::uint32_t sortCapacity = 0; // rows
     // The five passes of a chunk of `count` rows dispatched as gx by gy groups (issue()).
     Expected<void> dispatchSorted(std::uint32_t count, std::uint32_t gx, std::uint32_t gy);
+    // A Metropolis sampler's chains (sampling/metropolis_chain.glsl): their steps (the initial
+    // value of sdfwb_chainTo; 0 for other samplers) and the steps of each pass (0: one pass).
+    int chainSteps = 0;
+    int chainPassSteps = 0;
+    GlBuffer chainStates;
+    std::uint32_t chainCapacity = 0; // rows
+    // The passes of a chunk's chains before their last, which the chunk's own dispatch runs.
+    Expected<void> dispatchChainPasses(std::uint32_t count, std::uint32_t gx, std::uint32_t gy);
 };
 
 } // namespace sdfwb::renderer

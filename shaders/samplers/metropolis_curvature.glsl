@@ -4,10 +4,55 @@
 // has unit length). Curved regions (edges, tips, small features) get more samples; flat regions
 // keep some through the 0.2 floor. The chain is sampling/metropolis_chain.glsl's.
 
+// The chain may hand this sampler |f| for f: on a mesh's own field it then computes no sign where
+// the taps below do not need one.
+const bool sdfwb_chainReadsMagnitude = true;
+
+const float sdfwb_kCurvatureStep = 0.01; // the taps' distance from the state
+
+// Tap i of the Laplacian's stencil around p: p + h e_x, p - h e_x, p + h e_y, ... (p itself for -1).
+vec3 sdfwb_curvatureTap(vec3 p, int i) {
+    const float h = sdfwb_kCurvatureStep;
+    if (i < 0) return p;
+    vec3 along = vec3(i / 2 == 0 ? h : 0.0, i / 2 == 1 ? h : 0.0, i / 2 == 2 ? h : 0.0);
+    return i % 2 == 0 ? p + along : p - along;
+}
+
+// The Laplacian's numerator: f at the six taps, less 6 f(p) (or all of that negated, which leaves
+// |H| as it is). `fp` is f(p), or |f(p)| where the chain reads magnitudes. One loop calls the
+// field: each call is a copy of its code in the compiled program.
+float sdfwb_tapSum(vec3 p, float fp) {
+    float sum = 0.0;
+#if defined(SDFWB_CHAIN_MAGNITUDE) && defined(SDFWB_MESH_SURFACE)
+    // A distance field changes by at most h from p to a tap: farther than h from the surface every
+    // tap lies on p's side (no segment p -> tap meets a triangle), so the magnitudes' sum is the
+    // signed one times p's sign, bit for bit. Nearer, p and the taps take the signed field
+    // (sdfwb_meshSdf's values). Each walk starts from p's nearest triangle.
+    bool signs = !(fp > sdfwb_kCurvatureStep * 1.001);
+    for (int i = signs ? -1 : 0; i < 6; ++i) {
+        vec3 q = sdfwb_curvatureTap(p, i);
+        uint triangle = sdfwb_chainTriangle;
+        int feature;
+        vec3 closest;
+        float value = sdfwb_chainNearest(q, triangle, feature, closest);
+        if (signs) {
+            float inside = sdfwb_meshInside(q, triangle, feature, closest);
+            value = isnan(inside) ? inside : (inside > 0.5 ? -value : value);
+        }
+        if (i < 0)
+            fp = value;
+        else
+            sum += value;
+    }
+#else
+    for (int i = 0; i < 6; ++i) sum += sdfwb_sdf(sdfwb_curvatureTap(p, i));
+#endif
+    return sum - 6.0 * fp;
+}
+
 float sdfwb_absoluteMeanCurvature(vec3 p, float fp) {
-    const float h = 0.01;
-    float laplacian = (sdfwb_sdf(p + vec3(h, 0.0, 0.0)) + sdfwb_sdf(p - vec3(h, 0.0, 0.0)) + sdfwb_sdf(p + vec3(0.0, h, 0.0)) +
-                       sdfwb_sdf(p - vec3(0.0, h, 0.0)) + sdfwb_sdf(p + vec3(0.0, 0.0, h)) + sdfwb_sdf(p - vec3(0.0, 0.0, h)) - 6.0 * fp) / (h * h);
+    const float h = sdfwb_kCurvatureStep;
+    float laplacian = sdfwb_tapSum(p, fp) / (h * h);
     return min(abs(0.5 * laplacian), 50.0);
 }
 

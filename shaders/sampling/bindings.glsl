@@ -6,3 +6,4 @@
 #define SDFWB_BINDING_INPUTS 3
 #define SDFWB_BINDING_BAD_ROWS 4
 #define SDFWB_BINDING_SORT 8 // after the mesh's 5..7 (shaders::kMesh*Binding)
+#define SDFWB_BINDING_CHAIN 9 // the Metropolis chains' states between passes (metropolis_chain.glsl)

@@ -104,6 +104,14 @@ void sdfwb_sortScan(uint part) {
 void main() {
     // Chunks past 65,535 groups dispatch their groups in rows (renderer::SampleCompute).
     uint local = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * gl_WorkGroupSize.x);
+#ifdef SDFWB_CHAIN_PASSES
+    if (sdfwb_chainTo < int(sdfwb_kSteps)) { // a pass of the chains before their last: no row yet
+        vec3 unplaced;
+        if (local < sdfwb_chunkCount) sdfwb_samplePosition(sdfwb_chunkFirst + local, unplaced);
+        sdfwb_addMeshCounts();
+        return;
+    }
+#endif
 #ifdef SDFWB_SORT_ROWS
     if (sdfwb_sortPass == 2u || sdfwb_sortPass == 3u) {
         sdfwb_sortScan(local);

@@ -220,21 +220,17 @@ TEST_F(MeshSdfTest, TheGlslFieldsRowsSortedByCellAreTheOnePassRowsBitForBit) {
     EXPECT_FALSE(sampleRows(sdf, "rand", 300, "cpu", false).sortedRows) << "the CPU engine sorts rows its own way";
 }
 
-// The metropolis sampler reads only |f| (it declares sdfwb_chainReadsMagnitude): on a mesh's own
-// field its chain walks for the nearest distance alone, each state's walk bounded by the last
-// state's triangle, and computes no sign. The same rows bit for bit as the chain on the signed
-// field (the sampler without the declaration), on both engines.
-TEST_F(MeshSdfTest, TheMetropolisChainOnAMeshWalksForTheNearestDistanceAloneAndKeepsTheSignedChainsRows) {
+// The metropolis samplers read only |f| (they declare sdfwb_chainReadsMagnitude): on a mesh's own
+// field their chain walks for the nearest distance alone, each state's walk bounded by the last
+// state's triangle, and computes no sign; metropolis_curvature's taps take one only nearer the
+// surface than their step. The same rows bit for bit as the chain on the signed field (the sampler
+// without the declaration), on both engines. On llvmpipe the chains run in passes of a few steps
+// (SampleCompute): in one pass the signed chains of metropolis_curvature (seven signed walks a
+// state) ran out of the driver's loop budget.
+TEST_F(MeshSdfTest, TheMetropolisChainsOnAMeshWalkForTheNearestDistanceAloneAndKeepTheSignedChainsRows) {
     auto field = meshfield::makeMeshField(testing::torusMesh(0.6f, 0.25f, 48, 16), "torus.obj", {});
     ASSERT_TRUE(field.hasValue());
     const shaders::PreparedSdf sdf = shaders::prepareMeshSdf(*field, "torus.obj");
-    auto magnitude = sampling::findSampler("metropolis", sampling::samplerFolders());
-    ASSERT_TRUE(magnitude.hasValue());
-    shaders::ShaderPiece signedChain = *magnitude;
-    const std::string declaration = "const bool sdfwb_chainReadsMagnitude = true;";
-    const std::size_t at = signedChain.text.find(declaration);
-    ASSERT_NE(at, std::string::npos);
-    signedChain.text.erase(at, declaration.size());
     // Whether the CPU engine's program for `sampler` defines `name`.
     auto defines = [&](const shaders::ShaderPiece& sampler, const std::string& name) {
         meshsdftest::EngineScope scope("cpu");
@@ -244,30 +240,102 @@ TEST_F(MeshSdfTest, TheMetropolisChainOnAMeshWalksForTheNearestDistanceAloneAndK
         compute.releaseGl();
         return defined;
     };
-    EXPECT_TRUE(defines(*magnitude, "SDFWB_CHAIN_MAGNITUDE"));
-    EXPECT_FALSE(defines(signedChain, "SDFWB_CHAIN_MAGNITUDE"));
     auto same = [](const std::vector<float>& a, const std::vector<float>& b) {
         return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
     };
-    const Rows fast = sampleRows(sdf, *magnitude, 3000, "gpu");
-    const Rows slow = sampleRows(sdf, signedChain, 3000, "gpu");
-    EXPECT_TRUE(same(fast.positions, slow.positions));
-    EXPECT_TRUE(same(fast.distances, slow.distances));
-    EXPECT_TRUE(same(fast.gradients, slow.gradients));
-    // The rows gather near the surface (pi ~ exp(-|f| / 0.01)).
-    int near = 0;
-    for (float d : fast.distances) near += std::abs(d) < 0.05f ? 1 : 0;
-    EXPECT_GT(near, 3000 * 8 / 10);
-    // The CPU engine's positions come from the same chain, in a program without the sign lattice
-    // (it computes no sign); the signed chain's program keeps it.
-    const Rows cpu = sampleRows(sdf, *magnitude, 3000, "cpu");
-    EXPECT_TRUE(cpu.positionsOnly);
-    EXPECT_TRUE(same(cpu.positions, fast.positions));
-    EXPECT_FALSE(defines(*magnitude, "SDFWB_MESH_SIGNS"));
-    EXPECT_TRUE(defines(signedChain, "SDFWB_MESH_SIGNS"));
+    for (const char* pattern : {"metropolis", "metropolis_curvature"}) {
+        SCOPED_TRACE(pattern);
+        const bool curvature = std::string_view(pattern) == "metropolis_curvature";
+        auto magnitude = sampling::findSampler(pattern, sampling::samplerFolders());
+        ASSERT_TRUE(magnitude.hasValue());
+        shaders::ShaderPiece signedChain = *magnitude;
+        const std::string declaration = "const bool sdfwb_chainReadsMagnitude = true;";
+        const std::size_t at = signedChain.text.find(declaration);
+        ASSERT_NE(at, std::string::npos);
+        signedChain.text.erase(at, declaration.size());
+        EXPECT_TRUE(defines(*magnitude, "SDFWB_CHAIN_MAGNITUDE"));
+        EXPECT_FALSE(defines(signedChain, "SDFWB_CHAIN_MAGNITUDE"));
+        const std::uint64_t n = curvature ? 1500 : 3000;
+        const Rows fast = sampleRows(sdf, *magnitude, n, "gpu");
+        const Rows slow = sampleRows(sdf, signedChain, n, "gpu");
+        EXPECT_TRUE(same(fast.positions, slow.positions));
+        EXPECT_TRUE(same(fast.distances, slow.distances));
+        EXPECT_TRUE(same(fast.gradients, slow.gradients));
+        // The rows gather near the surface (pi ~ exp(-|f| / 0.01)), and metropolis_curvature's
+        // chains reach states both nearer than their taps' step and farther (either kind of tap).
+        int near = 0;
+        int beyondStep = 0;
+        for (float d : fast.distances) {
+            near += std::abs(d) < 0.05f ? 1 : 0;
+            beyondStep += std::abs(d) > 0.0101f ? 1 : 0;
+        }
+        EXPECT_GT(near, int(n) * 8 / 10);
+        EXPECT_GT(beyondStep, int(n) / 20);
+        EXPECT_LT(beyondStep, int(n) * 9 / 10);
+        // The CPU engine's positions come from the same chain. Its program takes the sign lattice
+        // only where the sampler evaluates the signed field itself (metropolis_curvature's near
+        // taps); the signed chain's program keeps it.
+        const Rows cpu = sampleRows(sdf, *magnitude, n, "cpu");
+        EXPECT_TRUE(cpu.positionsOnly);
+        EXPECT_TRUE(same(cpu.positions, fast.positions));
+        EXPECT_EQ(defines(*magnitude, "SDFWB_MESH_SIGNS"), curvature);
+        EXPECT_TRUE(defines(signedChain, "SDFWB_MESH_SIGNS"));
+    }
     auto rand = sampling::findSampler("rand", sampling::samplerFolders());
     ASSERT_TRUE(rand.hasValue());
     EXPECT_FALSE(defines(*rand, "SDFWB_MESH_SIGNS")) << "the CPU engine's rand program places points only";
+}
+
+// llvmpipe ends every loop of an invocation once its loops together have run 65,535 iterations,
+// without an error. SampleCompute runs the Metropolis chains there in passes of a few steps (a pass
+// resumes from the states the last one stored): the same rows bit for bit as one pass wherever one
+// pass is not cut, whatever the steps a pass. A chain cut anyway is a NaN row, counted, never a
+// sample of a shorter chain: in one pass llvmpipe cuts metropolis_curvature's chains on this mesh.
+TEST_F(MeshSdfTest, MetropolisChainsRunInPassesWithTheOnePassRowsAndACutChainIsABadRow) {
+    struct PassSteps {
+        explicit PassSteps(const char* steps) { setenv("SDFWB_CHAIN_PASS_STEPS", steps, 1); }
+        ~PassSteps() { unsetenv("SDFWB_CHAIN_PASS_STEPS"); }
+    };
+    auto field = meshfield::makeMeshField(testing::torusMesh(0.6f, 0.25f, 48, 16), "torus.obj", {});
+    ASSERT_TRUE(field.hasValue());
+    const shaders::PreparedSdf sdf = shaders::prepareMeshSdf(*field, "torus.obj");
+    auto same = [](const std::vector<float>& a, const std::vector<float>& b) {
+        return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+    };
+    Rows onePass;
+    {
+        PassSteps steps("0");
+        onePass = sampleRows(sdf, "metropolis", 2000, "gpu");
+    }
+    for (const char* perPass : {"1", "7", "8", "160", "161"}) {
+        SCOPED_TRACE(perPass);
+        PassSteps steps(perPass);
+        const Rows passes = sampleRows(sdf, "metropolis", 2000, "gpu");
+        EXPECT_TRUE(same(passes.positions, onePass.positions));
+        EXPECT_TRUE(same(passes.distances, onePass.distances));
+    }
+    auto curvature = sampling::findSampler("metropolis_curvature", sampling::samplerFolders());
+    ASSERT_TRUE(curvature.hasValue());
+    for (const char* engine : {"gpu", "cpu"}) {
+        SCOPED_TRACE(engine);
+        meshsdftest::EngineScope scope(engine);
+        PassSteps steps("0");
+        renderer::SampleCompute compute;
+        EXPECT_FALSE(shaders::hasErrors(compute.build(sdf, *curvature)));
+        sampling::SamplingJob job;
+        job.count = 1000;
+        std::vector<float> positions(3 * job.count), distances(job.count), gradients(3 * job.count);
+        auto report = sampling::sampleInto(compute, job, positions.data(), distances.data(), gradients.data(), {});
+        ASSERT_TRUE(report.hasValue()) << report.error().message;
+        std::uint64_t nanRows = 0;
+        for (float d : distances) nanRows += std::isnan(d) ? 1 : 0;
+        EXPECT_EQ(report->badRows, nanRows);
+        if (renderer::softwareRasteriser())
+            EXPECT_GT(report->badRows, job.count / 2) << "llvmpipe cuts these chains in one pass";
+        else
+            EXPECT_EQ(report->badRows, 0u) << "a GPU's driver cuts no loop";
+        compute.releaseGl();
+    }
 }
 
 TEST_F(MeshSdfTest, TheCpuEngineWritesTheGlslFieldsValuesAtTheSamePositionsBitForBit) {

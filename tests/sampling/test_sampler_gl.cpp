@@ -91,6 +91,7 @@ TEST(SamplingBindings, CppConstantsMatchTheGlslFile) {
     EXPECT_NE(text.str().find("SDFWB_BINDING_INPUTS " + std::to_string(renderer::kBindingInputs)), std::string::npos);
     EXPECT_NE(text.str().find("SDFWB_BINDING_BAD_ROWS " + std::to_string(renderer::kBindingBadRows)), std::string::npos);
     EXPECT_NE(text.str().find("SDFWB_BINDING_SORT " + std::to_string(renderer::kBindingSort)), std::string::npos);
+    EXPECT_NE(text.str().find("SDFWB_BINDING_CHAIN " + std::to_string(renderer::kBindingChain)), std::string::npos);
 }
 
 // The host's count, used when the GPU's counter reads back an impossible number: a row is bad when

@@ -32,9 +32,10 @@ int runSample(const values::SampleRequest& request, const OutputOptions& output)
                 (unsigned long long)r.badRows, r.seconds, r.samplesPerSecond / 1e6, kernel);
         }
         if (r.badRows > 0)
-            std::fprintf(
-                stderr, "sdfwb: note: %llu rows are NaN/Inf (rays that missed for surface/near, or a field that is not finite)\n",
-                (unsigned long long)r.badRows);
+            std::fprintf(stderr,
+                         "sdfwb: note: %llu rows are NaN/Inf (rays that missed for surface/near, Metropolis chains the driver "
+                         "cut short, or a field that is not finite)\n",
+                         (unsigned long long)r.badRows);
     });
 }
 
