@@ -427,31 +427,34 @@ Expected<void> SampleCompute::Impl::dispatchChainPasses(std::uint32_t count, std
     if (chainSteps <= 0) return {};
     const GLint from = location("sdfwb_chainFrom");
     const GLint to = location("sdfwb_chainTo");
+    const bool passes = chainPassSteps > 0 && chainPassSteps <= chainSteps;
+    // One pass keeps no states, but the block the program declares gets a buffer all the same.
+    const std::uint32_t rows = passes ? count : 1u;
+    if (rows > chainCapacity || !chainStates) {
+        if (const GLenum error = glGetError(); error != GL_NO_ERROR) // from issue()'s own calls before this
+            return makeError("sampling: dispatch of " + std::to_string(count) + " samples failed (" + glErrorName(error) + ")");
+        GLuint id = 0;
+        glGenBuffers(1, &id);
+        chainStates = GlBuffer(id);
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
+        glBufferStorage(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(rows) * 32, nullptr, 0); // two uvec4 a row
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+        chainCapacity = rows;
+        if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
+            chainStates.reset();
+            chainCapacity = 0;
+            return makeError("sampling: cannot allocate the chains' states for " + std::to_string(count) + " samples (" +
+                             glErrorName(error) + "); try a smaller --chunk");
+        }
+    }
+    if (passes) glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); // the last chunk's passes are done with the states
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingChain, chainStates.id());
     int first = -1; // the first state is step -1
-    if (chainPassSteps > 0 && chainPassSteps <= chainSteps) {
-        if (count > chainCapacity || !chainStates) {
-            GLuint id = 0;
-            glGenBuffers(1, &id);
-            chainStates = GlBuffer(id);
-            glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
-            glBufferStorage(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(count) * 32, nullptr, 0); // two uvec4 a row
-            glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-            chainCapacity = count;
-            if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
-                chainStates.reset();
-                chainCapacity = 0;
-                return makeError("sampling: cannot allocate the chains' states for " + std::to_string(count) + " samples (" +
-                                 glErrorName(error) + "); try a smaller --chunk");
-            }
-        }
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); // the last chunk's passes are done with the states
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingChain, chainStates.id());
-        for (; first + chainPassSteps < chainSteps; first += chainPassSteps) {
-            glUniform1i(from, first);
-            glUniform1i(to, first + chainPassSteps);
-            glDispatchCompute(gx, gy, 1);
-            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        }
+    for (; passes && first + chainPassSteps < chainSteps; first += chainPassSteps) {
+        glUniform1i(from, first);
+        glUniform1i(to, first + chainPassSteps);
+        glDispatchCompute(gx, gy, 1);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
     glUniform1i(from, first);
     glUniform1i(to, chainSteps);
