@@ -169,6 +169,7 @@ SampleCompute::~SampleCompute() {
     m_impl->counts.release();
     m_impl->inputs.release();
     m_impl->sortWords.release();
+    m_impl->chainStates.release();
     m_impl->textures.release();
     m_impl->kernelTimer.release();
 }
@@ -226,7 +227,8 @@ std::vector<shaders::Diagnostic> SampleCompute::build(const shaders::PreparedSdf
     // is composed without the sign lattice, which is neither built nor uploaded (33^3 took 0.14 s
     // of a 0.65 s run of 200,000 bunny rows on two cores). A field call the patterns below miss
     // stays right, only slower.
-    static const std::regex call(R"(\b(sdfwb_sdf|sdfwb_valueAndGradient)\s*\()", std::regex::ECMAScript);
+    static const std::regex call(R"(\b(sdfwb_sdf|sdfwb_valueAndGradient|sdfwb_meshSdf|sdfwb_meshInside)\s*\()",
+                                 std::regex::ECMAScript);
     static const std::regex chain(R"(\bsdfwb_metropolisChain\s*\()", std::regex::ECMAScript);
     const bool lattice =
         !query || std::regex_search(samplerCode, call) || (!chainMagnitude && std::regex_search(samplerCode, chain));

@@ -183,6 +183,8 @@ void SampleCompute::releaseGl() {
     m_impl->inputs.reset();
     m_impl->sortWords.reset();
     m_impl->sortCapacity = 0;
+    m_impl->chainStates.reset();
+    m_impl->chainCapacity = 0;
     m_impl->textures.reset();
     m_impl->kernelTimer.reset();
     m_impl->query.reset();

@@ -24,10 +24,13 @@ vec3 sdfwb_curvatureTap(vec3 p, int i) {
 float sdfwb_tapSum(vec3 p, float fp) {
     float sum = 0.0;
 #if defined(SDFWB_CHAIN_MAGNITUDE) && defined(SDFWB_MESH_SURFACE)
-    // A distance field changes by at most h from p to a tap: farther than h from the surface every
-    // tap lies on p's side (no segment p -> tap meets a triangle), so the magnitudes' sum is the
-    // signed one times p's sign, bit for bit. Nearer, p and the taps take the signed field
-    // (sdfwb_meshSdf's values). Each walk starts from p's nearest triangle.
+    // A distance field changes by at most h from p to a tap: farther than h from the surface no
+    // segment p -> tap meets a triangle, so on a closed mesh every tap lies on p's side and the
+    // magnitudes' sum is the signed one times p's sign, bit for bit. Nearer, p and the taps take the
+    // signed field (sdfwb_meshSdf's values). Each walk starts from p's nearest triangle. On an open
+    // mesh the winding number's sign also flips across the sheet that spans a hole, away from every
+    // triangle: signed taps read that jump over h^2 as a curvature (up to the cap), magnitudes read
+    // none, and the rows differ from the signed chain's.
     bool signs = !(fp > sdfwb_kCurvatureStep * 1.001);
     for (int i = signs ? -1 : 0; i < 6; ++i) {
         vec3 q = sdfwb_curvatureTap(p, i);

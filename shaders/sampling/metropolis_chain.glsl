@@ -88,9 +88,16 @@ bool sdfwb_metropolisChain(uint index, out vec3 position) {
         widthX = uintBitsToFloat(more.y);
         sdfwb_setChainHint(more.z);
         cutBefore = more.w != 0u;
-        if (cutBefore) step = sdfwb_chainTo;
+        if (cutBefore) step = sdfwb_chainTo + 1;
     }
-    for (; step < sdfwb_chainTo; ++step) {
+    // One iteration past the pass's last step sets `finished`: llvmpipe checks its budget at the end
+    // of an iteration, so a budget spent in the last step's walks ends the loop before it.
+    bool finished = false;
+    for (; step <= sdfwb_chainTo; ++step) {
+        if (step == sdfwb_chainTo) {
+            finished = true;
+            continue;
+        }
         vec3 y = x;
         if (step >= 0) {
             y = x + widthX * sdfwb_randomGaussian3(index, uint(1 + 2 * step));
@@ -117,8 +124,8 @@ bool sdfwb_metropolisChain(uint index, out vec3 position) {
             widthX = widthY;
         }
     }
-    // The loop ended before its last step only where the driver cut it (or an earlier pass did).
-    bool cut = cutBefore || step < sdfwb_chainTo;
+    // The loop ends early only where the driver cut it (or an earlier pass did).
+    bool cut = cutBefore || !finished;
     position = x;
     if (sdfwb_chainTo < int(sdfwb_kSteps)) { // a pass before the last
         sdfwb_chainStates[row] = uvec4(floatBitsToUint(x), floatBitsToUint(fx));

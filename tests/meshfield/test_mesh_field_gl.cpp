@@ -223,8 +223,8 @@ TEST_F(MeshSdfTest, TheGlslFieldsRowsSortedByCellAreTheOnePassRowsBitForBit) {
 // The metropolis samplers read only |f| (they declare sdfwb_chainReadsMagnitude): on a mesh's own
 // field their chain walks for the nearest distance alone, each state's walk bounded by the last
 // state's triangle, and computes no sign; metropolis_curvature's taps take one only nearer the
-// surface than their step. The same rows bit for bit as the chain on the signed field (the sampler
-// without the declaration), on both engines. On llvmpipe the chains run in passes of a few steps
+// surface than their step. On a closed mesh, the same rows bit for bit as the chain on the signed
+// field (the sampler without the declaration), on both engines. On llvmpipe the chains run in passes of a few steps
 // (SampleCompute): in one pass the signed chains of metropolis_curvature (seven signed walks a
 // state) ran out of the driver's loop budget.
 TEST_F(MeshSdfTest, TheMetropolisChainsOnAMeshWalkForTheNearestDistanceAloneAndKeepTheSignedChainsRows) {
