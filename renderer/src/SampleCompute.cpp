@@ -375,6 +375,31 @@ Expected<void> SampleCompute::Impl::issue(const SampleUniforms& uniforms, std::u
     return {};
 }
 
+namespace {
+
+// A scratch buffer of the GPU's own (no host access) grown to hold `rows` rows in `bytes`: kept
+// while it is large enough, else made anew; a failed allocation leaves it empty and names `what`.
+Expected<void> growScratch(GlBuffer& buffer, std::uint32_t& capacity, std::uint32_t rows, GLsizeiptr bytes, const char* what,
+                           std::uint32_t count) {
+    if (rows <= capacity && buffer) return {};
+    GLuint id = 0;
+    glGenBuffers(1, &id);
+    buffer = GlBuffer(id);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
+    glBufferStorage(GL_SHADER_STORAGE_BUFFER, bytes, nullptr, 0);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    capacity = rows;
+    if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
+        buffer.reset();
+        capacity = 0;
+        return makeError("sampling: cannot allocate " + std::string(what) + " for " + std::to_string(count) + " samples (" +
+                         glErrorName(error) + "); try a smaller --chunk");
+    }
+    return {};
+}
+
+} // namespace
+
 Expected<void> SampleCompute::Impl::dispatchSorted(std::uint32_t count, std::uint32_t gx, std::uint32_t gy) {
     // About a row a cell over the cube, at most 64 cells an axis: on llvmpipe (the bunny, 200,000
     // rows, median of 3) 64 cells an axis ran rand 1.6x and near 1.7x as fast as one pass, 16 an
@@ -386,22 +411,10 @@ Expected<void> SampleCompute::Impl::dispatchSorted(std::uint32_t count, std::uin
     const GLsizeiptr cellWords = GLsizeiptr(kSortParts) + (GLsizeiptr(1) << (3 * kMostBits));
     if (const GLenum error = glGetError(); error != GL_NO_ERROR) // from issue()'s own calls before this
         return makeError("sampling: dispatch of " + std::to_string(count) + " samples failed (" + glErrorName(error) + ")");
-    if (count > sortCapacity || !sortWords) {
-        GLuint id = 0;
-        glGenBuffers(1, &id);
-        sortWords = GlBuffer(id);
-        glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
-        // Per row: its cell, its slot's row and its position.
-        glBufferStorage(GL_SHADER_STORAGE_BUFFER, (cellWords + GLsizeiptr(count) * 5) * 4, nullptr, 0);
-        glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-        sortCapacity = count;
-        if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
-            sortWords.reset();
-            sortCapacity = 0;
-            return makeError("sampling: cannot allocate the sort buffer for " + std::to_string(count) + " samples (" +
-                             glErrorName(error) + "); try a smaller --chunk");
-        }
-    }
+    // Per row: its cell, its slot's row and its position.
+    if (auto ok = growScratch(sortWords, sortCapacity, count, (cellWords + GLsizeiptr(count) * 5) * 4, "the sort buffer", count);
+        !ok)
+        return ok;
     // The last chunk's passes have written and read the buffer before its counts are zeroed (a
     // buffer command after shader writes: the update bit).
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -432,23 +445,11 @@ Expected<void> SampleCompute::Impl::dispatchChainPasses(std::uint32_t count, std
     const bool passes = chainPassSteps > 0 && chainPassSteps <= chainSteps;
     // One pass keeps no states, but the block the program declares gets a buffer all the same.
     const std::uint32_t rows = passes ? count : 1u;
-    if (rows > chainCapacity || !chainStates) {
-        if (const GLenum error = glGetError(); error != GL_NO_ERROR) // from issue()'s own calls before this
-            return makeError("sampling: dispatch of " + std::to_string(count) + " samples failed (" + glErrorName(error) + ")");
-        GLuint id = 0;
-        glGenBuffers(1, &id);
-        chainStates = GlBuffer(id);
-        glBindBuffer(GL_SHADER_STORAGE_BUFFER, id);
-        glBufferStorage(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(rows) * 32, nullptr, 0); // two uvec4 a row
-        glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-        chainCapacity = rows;
-        if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
-            chainStates.reset();
-            chainCapacity = 0;
-            return makeError("sampling: cannot allocate the chains' states for " + std::to_string(count) + " samples (" +
-                             glErrorName(error) + "); try a smaller --chunk");
-        }
-    }
+    if (const GLenum error = glGetError(); error != GL_NO_ERROR) // from issue()'s own calls before this
+        return makeError("sampling: dispatch of " + std::to_string(count) + " samples failed (" + glErrorName(error) + ")");
+    // Two uvec4 a row.
+    if (auto ok = growScratch(chainStates, chainCapacity, rows, GLsizeiptr(rows) * 32, "the chains' states", count); !ok)
+        return ok;
     if (passes) glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); // the last chunk's passes are done with the states
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindingChain, chainStates.id());
     int first = -1; // the first state is step -1
