@@ -277,7 +277,8 @@ TEST(SampleFiles, Zip64NpzIsReadByNumpyAndByUs) {
     // Debian's Python with NumPy, or SDFWB_TEST_PYTHON's (the GPU machine's has NumPy elsewhere).
     const char* python = std::getenv("SDFWB_TEST_PYTHON");
     std::string check =
-        std::string(python && *python ? python : "/usr/bin/python3") + " -c \"import numpy as np; z = np.load('" + path.string() +
+        "'" + std::string(python && *python ? python : "/usr/bin/python3") + "' -c \"import numpy as np; z = np.load('" +
+        path.string() +
         "', allow_pickle=False); assert z['position'].shape == (100, 3); assert float(z['distance'][99]) == 49.5\"";
     EXPECT_EQ(std::system(check.c_str()), 0) << "numpy could not read the ZIP64 archive";
     fs::remove(path);
